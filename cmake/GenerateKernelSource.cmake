@@ -1,0 +1,28 @@
+# Script mode helper for EmbedKernels.cmake: writes OUT, a C++ source defining
+# svgm::embedded_kernels(), from the .cl files listed in FILES.
+string(REPLACE "|" ";" FILES "${FILES}")
+set(body "// Generated from kernels/*.cl by cmake/GenerateKernelSource.cmake: do not edit.\n")
+string(APPEND body "#include \"opencl/kernel_sources.h\"\nnamespace svgm {\n")
+string(APPEND body "const std::vector<KernelSource>& embedded_kernels() {\n")
+string(APPEND body "  static const std::vector<KernelSource> k = {\n")
+foreach(f IN LISTS FILES)
+  get_filename_component(name "${f}" NAME)
+  file(READ "${f}" text)
+  # A raw string with a delimiter no kernel uses; sources are split into 16 KB pieces because
+  # compilers limit the length of one literal.
+  string(LENGTH "${text}" len)
+  set(pieces "")
+  set(pos 0)
+  while(pos LESS len)
+    string(SUBSTRING "${text}" ${pos} 16000 piece)
+    string(APPEND pieces "R\"svgmcl(${piece})svgmcl\" ")
+    math(EXPR pos "${pos} + 16000")
+  endwhile()
+  if(pieces STREQUAL "")
+    set(pieces "\"\"")
+  endif()
+  string(APPEND body "    {\"${name}\", ${pieces}},\n")
+endforeach()
+string(APPEND body "  };\n  return k;\n}\n}  // namespace svgm\n")
+file(WRITE "${OUT}.tmp" "${body}")
+file(RENAME "${OUT}.tmp" "${OUT}")

@@ -1,0 +1,82 @@
+// The scene model: what an SVG becomes after reading, and what the renderer and fitter consume.
+//
+// Everything is in canvas space: the SVG's intrinsic pixel size (width x height after units and
+// the viewBox mapping), with every transform up the tree already applied. Every path is a list
+// of subpaths of cubic Bézier segments (lines, quadratics and arcs were converted at read time),
+// so the rasteriser and the fitter deal with one primitive. Each path keeps its source element's
+// id and a locator plus its full transform to canvas, so results can be written back into the
+// user's own document.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "svgmotion/affine.h"
+
+namespace svgm {
+
+// Straight (not premultiplied) sRGB colour, components in [0, 1].
+struct Rgba {
+  float r = 0, g = 0, b = 0, a = 1;
+  friend bool operator==(const Rgba&, const Rgba&) = default;
+};
+
+enum class FillRule : uint8_t { NonZero, EvenOdd };
+enum class LineJoin : uint8_t { Miter, MiterClip, Round, Bevel };
+enum class LineCap : uint8_t { Butt, Round, Square };
+
+// One subpath: points = {p0, c1, c2, p1, c1, c2, p2, ...}, i.e. 1 + 3n points for n cubics.
+// A subpath with a single point (a lone "M" or a zero-length "M x y Z") has no segments but
+// still matters for round and square caps.
+struct Subpath {
+  std::vector<Vec2> points;
+  bool closed = false;
+  size_t segment_count() const { return points.empty() ? 0 : (points.size() - 1) / 3; }
+};
+
+struct Stroke {
+  Rgba color;              // colour with stroke-opacity folded into a
+  double width = 1;        // in canvas units (user width times the transform's mean scale)
+  LineJoin join = LineJoin::Miter;
+  LineCap cap = LineCap::Butt;
+  double miter_limit = 4;  // SVG default
+};
+
+struct Path {
+  std::string id;          // the element's id, or a generated "path-N" (stable across reads)
+  std::string locator;     // where it came from, e.g. "/svg/g[2]/rect[1]" (element index paths)
+  std::string tag;         // source element name: path, rect, circle, ...
+  std::vector<Subpath> subpaths;  // canvas space
+  bool has_fill = true;
+  Rgba fill;               // colour with fill-opacity folded into a
+  FillRule fill_rule = FillRule::NonZero;
+  bool has_stroke = false;
+  Stroke stroke;
+  float opacity = 1;       // the element's opacity times every ancestor group's opacity
+  int group = -1;          // index into Scene::groups, or -1
+  Affine to_canvas;        // the element's local user space -> canvas (includes the viewBox map)
+};
+
+// A group of paths that move together: today the SVG's top-level <g> elements.
+struct Group {
+  std::string id;
+  std::vector<int> paths;  // indices into Scene::paths, in paint order
+};
+
+struct Scene {
+  double width = 0, height = 0;  // canvas size in pixels (CSS px)
+  std::vector<Path> paths;       // in paint order (first is drawn first, i.e. at the bottom)
+  std::vector<Group> groups;
+  std::vector<std::string> warnings;  // one line each: element and what was done
+
+  // Total number of cubic segments over all paths (a size the renderer plans with).
+  size_t segment_count() const {
+    size_t n = 0;
+    for (const auto& p : paths)
+      for (const auto& s : p.subpaths) n += s.segment_count();
+    return n;
+  }
+};
+
+}  // namespace svgm

@@ -1,0 +1,23 @@
+// The one place the OpenCL C++ bindings are included, with the project's settings.
+//
+// Exceptions are enabled so that every failing call surfaces; engine code catches cl::Error at
+// the routine boundary and rethrows svgm::Error with a sentence a user can act on.
+#pragma once
+
+#ifndef CL_HPP_ENABLE_EXCEPTIONS
+#define CL_HPP_ENABLE_EXCEPTIONS
+#endif
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wignored-attributes"
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+#include <CL/opencl.hpp>
+#pragma GCC diagnostic pop
+
+#include <string>
+
+namespace svgm {
+
+// "CL_OUT_OF_RESOURCES (-5)" style name for an OpenCL status code.
+std::string cl_status_name(int status);
+
+}  // namespace svgm

@@ -1,0 +1,92 @@
+// Discovery and selection of OpenCL devices.
+#include "svgmotion/device.h"
+
+#include <algorithm>
+#include <cctype>
+#include <optional>
+
+#include "opencl/cl.h"
+#include "svgmotion/error.h"
+
+namespace svgm {
+
+namespace {
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+std::string type_name(cl_device_type t) {
+  if (t & CL_DEVICE_TYPE_GPU) return "gpu";
+  if (t & CL_DEVICE_TYPE_CPU) return "cpu";
+  if (t & CL_DEVICE_TYPE_ACCELERATOR) return "accelerator";
+  return "other";
+}
+
+constexpr const char* kNoPlatform =
+    "no OpenCL platform found: install one (on Debian/Ubuntu: apt-get install pocl-opencl-icd "
+    "for CPUs, or your GPU vendor's OpenCL driver)";
+
+}  // namespace
+
+std::vector<DeviceInfo> list_devices() {
+  std::vector<cl::Platform> platforms;
+  try {
+    cl::Platform::get(&platforms);
+  } catch (const cl::Error&) {
+    throw Error(kNoPlatform);
+  }
+  std::vector<DeviceInfo> out;
+  for (const auto& p : platforms) {
+    std::vector<cl::Device> devs;
+    try {
+      p.getDevices(CL_DEVICE_TYPE_ALL, &devs);
+    } catch (const cl::Error&) {
+      continue;  // a platform without devices is not an error while another one has some
+    }
+    for (const auto& d : devs) {
+      DeviceInfo i;
+      i.platform = p.getInfo<CL_PLATFORM_NAME>();
+      i.name = d.getInfo<CL_DEVICE_NAME>();
+      i.type = type_name(d.getInfo<CL_DEVICE_TYPE>());
+      i.version = d.getInfo<CL_DEVICE_VERSION>();
+      i.driver = d.getInfo<CL_DRIVER_VERSION>();
+      i.compute_units = d.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
+      i.global_mem_bytes = d.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
+      out.push_back(std::move(i));
+    }
+  }
+  if (out.empty()) throw Error(kNoPlatform);
+  return out;
+}
+
+size_t select_device(const std::vector<DeviceInfo>& devices, const std::string& spec) {
+  const std::string s = lower(spec.empty() ? "auto" : spec);
+  auto first_of = [&](const std::string& type) -> std::optional<size_t> {
+    for (size_t i = 0; i < devices.size(); ++i)
+      if (devices[i].type == type) return i;
+    return std::nullopt;
+  };
+  std::optional<size_t> hit;
+  if (s == "auto") {
+    hit = first_of("gpu");
+    if (!hit) hit = first_of("cpu");
+    if (!hit && !devices.empty()) hit = 0;
+  } else if (s == "cpu" || s == "gpu") {
+    hit = first_of(s);
+  } else {
+    for (size_t i = 0; i < devices.size() && !hit; ++i)
+      if (lower(devices[i].name).find(s) != std::string::npos ||
+          lower(devices[i].platform).find(s) != std::string::npos)
+        hit = i;
+  }
+  if (!hit) {
+    std::string names;
+    for (const auto& d : devices) names += (names.empty() ? "" : ", ") + d.name + " (" + d.type + ")";
+    throw Error("no OpenCL device matches --device " + spec + "; available: " + names);
+  }
+  return *hit;
+}
+
+}  // namespace svgm

@@ -1,0 +1,142 @@
+// The OpenCL runtime: device selection, context/queue creation, program build and disk cache.
+#include "opencl/runtime.h"
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "opencl/kernel_sources.h"
+#include "svgmotion/error.h"
+
+namespace svgm {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+uint64_t fnv1a(std::string_view s) {
+  uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+fs::path cache_dir() {
+  if (const char* d = std::getenv("SVGMOTION_CACHE_DIR"); d && *d) return fs::path(d);
+  if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d) return fs::path(d) / "svgmotion";
+  if (const char* d = std::getenv("HOME"); d && *d) return fs::path(d) / ".cache" / "svgmotion";
+  return {};
+}
+
+std::string read_file(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::ostringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+// Writes through a temporary name and a rename, so a concurrent reader never sees half a file.
+void write_file_atomic(const fs::path& p, const std::string& bytes) {
+  std::error_code ec;
+  fs::create_directories(p.parent_path(), ec);
+  const fs::path tmp = p.string() + ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream f(tmp, std::ios::binary);
+    if (!f) return;
+    f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (!f) { fs::remove(tmp, ec); return; }
+  }
+  fs::rename(tmp, p, ec);
+  if (ec) fs::remove(tmp, ec);
+}
+
+}  // namespace
+
+ClRuntime::ClRuntime(const std::string& device_spec) {
+  const auto devices = list_devices();
+  const size_t pick = select_device(devices, device_spec);
+  info_ = devices[pick];
+  // list_devices() enumerates in the same platform/device order; walk it again for the handle.
+  std::vector<cl::Platform> platforms;
+  cl::Platform::get(&platforms);
+  size_t n = 0;
+  for (const auto& p : platforms) {
+    std::vector<cl::Device> devs;
+    try {
+      p.getDevices(CL_DEVICE_TYPE_ALL, &devs);
+    } catch (const cl::Error&) {
+      continue;
+    }
+    for (const auto& d : devs)
+      if (n++ == pick) device_ = d;
+  }
+  try {
+    context_ = cl::Context(device_);
+    queue_ = cl::CommandQueue(context_, device_);
+  } catch (const cl::Error& e) {
+    throw Error("cannot use OpenCL device " + info_.name + ": " + e.what() + " " +
+                cl_status_name(e.err()));
+  }
+}
+
+cl::Program& ClRuntime::program(const std::vector<std::string>& files,
+                                const std::string& options) {
+  std::string source(kernel_source("prelude.cl"));
+  std::string key_files;
+  for (const auto& f : files) {
+    source += "\n#line 1\n";
+    source += kernel_source(f);
+    key_files += f + ";";
+  }
+  const std::string mem_key = key_files + "|" + options;
+  if (auto it = programs_.find(mem_key); it != programs_.end()) return it->second;
+
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::string disk_key = info_.platform + "|" + info_.name + "|" + info_.driver + "|" +
+                               options + "|" + source;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(disk_key)));
+  const fs::path dir = cache_dir();
+  const fs::path cached = dir.empty() ? fs::path() : dir / "kernels" / (std::string(hex) + ".bin");
+
+  cl::Program prog;
+  bool built = false;
+  std::error_code ec;
+  if (!cached.empty() && fs::exists(cached, ec)) {
+    try {
+      const std::string bin = read_file(cached);
+      cl::Program::Binaries bins{std::vector<unsigned char>(bin.begin(), bin.end())};
+      prog = cl::Program(context_, {device_}, bins);
+      prog.build({device_}, options.c_str());
+      built = true;
+    } catch (const cl::Error&) {
+      built = false;  // stale or foreign binary: fall back to source
+    }
+  }
+  if (!built) {
+    prog = cl::Program(context_, source);
+    try {
+      prog.build({device_}, options.c_str());
+    } catch (const cl::Error&) {
+      const std::string log = prog.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device_);
+      throw Error("OpenCL build of " + key_files + " failed on " + info_.name + ":\n" + log);
+    }
+    if (!cached.empty()) {
+      try {
+        const auto bins = prog.getInfo<CL_PROGRAM_BINARIES>();
+        if (!bins.empty() && !bins[0].empty())
+          write_file_atomic(cached, std::string(bins[0].begin(), bins[0].end()));
+      } catch (const cl::Error&) {
+        // A device that cannot return binaries just compiles every time.
+      }
+    }
+  }
+  compile_seconds_ +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return programs_.emplace(mem_key, std::move(prog)).first->second;
+}
+
+}  // namespace svgm

@@ -1,0 +1,46 @@
+// The OpenCL runtime: one context, device and in-order queue, and the compiled programs.
+//
+// Programs are built from embedded kernel files (prelude.cl first) plus -D tunables, and cached
+// on disk by (platform, device, driver, source hash, options): PoCL takes seconds to compile,
+// and a second run of the CLI should not pay that again. The cache lives in
+// $SVGMOTION_CACHE_DIR, else $XDG_CACHE_HOME/svgmotion, else ~/.cache/svgmotion; an unusable
+// cache directory only costs compile time, never an error.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "opencl/cl.h"
+#include "svgmotion/device.h"
+
+namespace svgm {
+
+class ClRuntime {
+ public:
+  // Selects a device by spec (see select_device) and creates the context and queue.
+  explicit ClRuntime(const std::string& device_spec = "auto");
+
+  const DeviceInfo& info() const { return info_; }
+  cl::Context& context() { return context_; }
+  cl::CommandQueue& queue() { return queue_; }
+  const cl::Device& device() const { return device_; }
+
+  // The program made of prelude.cl + `files` built with `options` (cached in memory and on
+  // disk). Throws svgm::Error with the build log on failure.
+  cl::Program& program(const std::vector<std::string>& files, const std::string& options);
+
+  // Seconds spent compiling or loading programs so far (benchmarks report time without it).
+  double compile_seconds() const { return compile_seconds_; }
+
+ private:
+  DeviceInfo info_;
+  cl::Device device_;
+  cl::Context context_;
+  cl::CommandQueue queue_;
+  std::map<std::string, cl::Program> programs_;
+  double compile_seconds_ = 0;
+};
+
+}  // namespace svgm

@@ -1,0 +1,86 @@
+// The raster plan: the fixed topology of a scene's rendering, built once on the host.
+//
+// The plan fixes everything that does not change from frame to frame: how many line segments
+// each cubic flattens into (and the Bernstein weights of every flattened vertex), how each
+// stroke expands into outline points, which two points make each line, and the draws (a path's
+// fill, then its stroke) in paint order with colour and fill rule. Frames then differ only in
+// their control points, which is what lets the fitter batch K frames in one launch and carry
+// gradients back through the same tables. The CPU reference and the OpenCL routine both
+// execute a plan, so they agree by construction on topology and are compared on numbers.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "svgmotion/affine.h"
+#include "svgmotion/scene.h"
+
+namespace svgm {
+
+// Must match kernels/prelude.cl.
+enum : uint8_t { kJoinMiter = 0, kJoinMiterClip = 1, kJoinRound = 2, kJoinBevel = 3,
+                 kJoinInterior = 4 };
+enum : int { kCapButt = 0, kCapRound = 1, kCapSquare = 2 };
+enum : int { kRuleNonZero = 0, kRuleEvenOdd = 1 };
+inline constexpr int kBandHeight = 16;  // rows per bin band (BAND_H in the kernels)
+
+struct RasterPlanOptions {
+  double flatten_tolerance_px = 0.1;  // max distance of a flattened chord from its curve
+  int max_segments_per_cubic = 64;
+};
+
+struct StrokeSubpath {
+  int first_vertex = 0;  // index of its polyline's first flattened vertex
+  int vertex_count = 0;  // N
+  int first_out = 0;     // where its outline points start in the point buffer
+  int closed = 0;
+  int cap = kCapButt;
+  int join_points = 1;   // J
+  int cap_points = 0;    // C
+  int join = kJoinMiter; // the path's join kind
+  float half_width = 0;  // pixels
+  float miter_limit = 4;
+};
+
+struct Draw {
+  int path = 0;          // index into Scene::paths
+  bool is_stroke = false;
+  float rgba[4] = {0, 0, 0, 1};  // straight colour; alpha already times the path's opacity
+  int rule = kRuleNonZero;
+  int first_line = 0, line_count = 0;
+};
+
+struct RasterPlan {
+  int width = 0, height = 0, bands = 0;
+
+  // Control points of the rest pose in pixel space, (x, y) pairs; 3 zero points of padding at
+  // the end so a vertex's 4-point window never reads past the array.
+  int n_cp = 0;
+  std::vector<float> rest_cp;
+  // Per path: its first control point index and count (for motion and export later).
+  std::vector<int> path_cp_first, path_cp_count;
+
+  // Flattening: vertex v = sum_j w[4v + j] * cp[vert_cp[v] + j].
+  int n_flat = 0;
+  std::vector<int> vert_cp;
+  std::vector<float> vert_w;
+  std::vector<uint8_t> vert_join;  // join kind at each vertex (kJoinInterior inside a cubic)
+
+  std::vector<StrokeSubpath> strokes;
+  int n_pts = 0;  // flattened vertices followed by stroke outline points
+
+  int n_lines = 0;
+  std::vector<int> line_ab;    // point index pairs
+  std::vector<int> line_draw;  // draw index of each line (non-decreasing)
+  std::vector<Draw> draws;
+};
+
+// Plans the rendering of `scene` at width x height pixels, with `view` mapping canvas space to
+// pixel space.
+RasterPlan plan_raster(const Scene& scene, const Affine& view, int width, int height,
+                       const RasterPlanOptions& options = {});
+
+// Number of outline points a stroke subpath writes (the formula stroke.cl follows).
+int stroke_point_count(const StrokeSubpath& s);
+
+}  // namespace svgm

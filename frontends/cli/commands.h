@@ -1,0 +1,14 @@
+// The svgmotion subcommands; each takes the arguments after its name and returns an exit code.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace svgm::cli {
+
+int cmd_render(const std::vector<std::string>& args);
+int cmd_devices(const std::vector<std::string>& args);
+int cmd_bench(const std::vector<std::string>& args);
+
+
+}  // namespace svgm::cli

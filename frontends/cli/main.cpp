@@ -1,0 +1,49 @@
+// The svgmotion command-line tool: dispatches subcommands and turns every error into one line.
+//
+// Errors (svgm::Error and anything else) print "svgmotion: <message>" on stderr and exit 1;
+// usage mistakes exit 2. Nothing is written by a command that fails (outputs are atomic).
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "cli/commands.h"
+#include "svgmotion/error.h"
+
+namespace {
+
+constexpr const char* kUsage = R"(svgmotion: an editable animated SVG from a static SVG and a motion
+
+usage:
+  svgmotion render IN.svg -o OUT.png [--size W] [--background white|transparent] [--device D]
+  svgmotion devices
+  svgmotion bench render IN.svg [--frames K] [--size N] [--json] [--device D]
+  svgmotion help
+
+--device picks the OpenCL device: auto (default), cpu, gpu, or part of its name.
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
+    std::fputs(kUsage, args.empty() ? stderr : stdout);
+    return args.empty() ? 2 : 0;
+  }
+  const std::string cmd = args[0];
+  args.erase(args.begin());
+  try {
+    if (cmd == "render") return svgm::cli::cmd_render(args);
+    if (cmd == "devices") return svgm::cli::cmd_devices(args);
+    if (cmd == "bench") return svgm::cli::cmd_bench(args);
+    std::fprintf(stderr, "svgmotion: unknown command '%s' (try svgmotion help)\n", cmd.c_str());
+    return 2;
+  } catch (const svgm::Error& e) {
+    std::fprintf(stderr, "svgmotion: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "svgmotion: internal error: %s\n", e.what());
+    return 1;
+  }
+}

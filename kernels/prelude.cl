@@ -1,0 +1,37 @@
+/* prelude.cl: definitions shared by every svgmotion kernel; prepended to each program.
+ *
+ * Tunables arrive as -D options chosen per device by the host (engine/src/opencl/tuning.cpp);
+ * the defaults below are what PoCL on a CPU gets. Kernels know nothing of the host: every size
+ * and offset is an argument.
+ */
+#ifndef BAND_H
+#define BAND_H 16 /* rows per bin band, also the work-group height of raster kernels */
+#endif
+
+/* Draw kinds' fill rules (must match engine/src/raster/raster_plan.h). */
+#define RULE_NONZERO 0
+#define RULE_EVENODD 1
+
+/* Join kinds per stroke vertex (must match raster_plan.h). INTERIOR marks vertices inside one
+ * flattened cubic, where the true offset curve is smooth: a miter there (bevel past a ratio of
+ * 4) is within a hair of the exact offset and costs one point. */
+#define JOIN_MITER 0
+#define JOIN_MITER_CLIP 1
+#define JOIN_ROUND 2
+#define JOIN_BEVEL 3
+#define JOIN_INTERIOR 4
+
+#define CAP_BUTT 0
+#define CAP_ROUND 1
+#define CAP_SQUARE 2
+
+inline float cross2(float2 a, float2 b) { return a.x * b.y - a.y * b.x; }
+
+/* Coverage from the winding integral a of one pixel (the box-filtered winding number). */
+inline float fill_rule_coverage(float a, int rule) {
+  if (rule == RULE_EVENODD) {
+    float m = fabs(a - 2.0f * rint(0.5f * a)); /* fold: 0 at even, 1 at odd windings */
+    return fmin(m, 1.0f);
+  }
+  return fmin(fabs(a), 1.0f);
+}
