@@ -13,7 +13,8 @@
  * length plus covered span, no supersampling, no random samples (the font-rs / stb_truetype
  * accumulation idea; see third_party_notes.md). Then nonzero gives min(1, |a|) and evenodd the
  * fold of a (prelude's fill_rule_coverage). Edges left of the canvas are projected onto x = 0
- * (they add cover only); pieces right of it are dropped and the span is extended to the edge.
+ * (they add cover only); pieces right of it are dropped, and a winding integral left nonzero
+ * after the last touched cell covers the rest of the row.
  *
  * Compositing. Draws (a path's fill, then its stroke) arrive in the band list in paint order.
  * When the draw changes, the previous draw's span is swept once: prefix sum, coverage, and
@@ -26,8 +27,12 @@
  *       for x: s += acc[x]; c = coverage(s); out[x] = c * col_d + (1 - c * a_d) * out[x]
  */
 
+/* Below this, a coverage left over after a draw's last edge is rounding noise of a closed
+ * contour (float sums of dy), not geometry: 1e-5 is far under one 8-bit step. */
+#define RESIDUAL_COVERAGE 1e-5f
+
 /* Adds one line's contribution inside row `row` to the accumulation cells. Tracks the span of
- * cells touched in [*xlo, *xhi]; *xhi = width means "extends to the right edge". */
+ * cells touched in [*xlo, *xhi]. The part of a line right of the canvas is dropped. */
 inline void accumulate_line(float4 l, int row, int width, __global float* acc, int* xlo,
                             int* xhi) {
   float x0 = l.x, y0 = l.y - (float)row, x1 = l.z, y1 = l.w - (float)row;
@@ -45,7 +50,6 @@ inline void accumulate_line(float4 l, int row, int width, __global float* acc, i
   float xa = fmin(x0, x1);
   const float xb = fmax(x0, x1), w = (float)width;
   if (xa >= w) return;
-  if (xb > w) *xhi = width; /* the part right of the canvas is dropped; span reaches the edge */
   if (xb == xa) { /* vertical: one cell */
     const int i = (int)fmax(xa, 0.0f);
     const float xm = fmax(xa, 0.0f) - (float)i;
@@ -77,21 +81,24 @@ inline void accumulate_line(float4 l, int row, int width, __global float* acc, i
   *xhi = max(*xhi, i);
 }
 
-/* Sweeps cells [xlo, xhi] (clamped to the row), compositing draw `d` over `out`. */
+/* Sweeps cells [xlo, xhi] (clamped to the row), compositing one draw over `out`. Past xhi the
+ * cells are zero, so a winding integral still nonzero there (the draw's closing edges lie right
+ * of the canvas) is a constant coverage for the rest of the row. */
 inline void composite_span(__global float* acc, __global float4* out, int xlo, int xhi,
                            int width, float4 color, int rule) {
   float s = 0.0f;
   const int xe = min(xhi, width - 1);
+  const float4 premul = (float4)(color.xyz, 1.0f);
   for (int x = xlo; x <= xe; ++x) {
     s += acc[x];
     acc[x] = 0.0f;
     const float a = fill_rule_coverage(s, rule) * color.w;
-    if (a > 0.0f) {
-      const float4 src = (float4)(color.xyz, 1.0f) * a;
-      out[x] = src + out[x] * (1.0f - a);
-    }
+    if (a > 0.0f) out[x] = premul * a + out[x] * (1.0f - a);
   }
   acc[xe + 1] = 0.0f; /* the spill cell of the last pixel */
+  const float a = fill_rule_coverage(s, rule) * color.w;
+  if (a > RESIDUAL_COVERAGE)
+    for (int x = xe + 1; x < width; ++x) out[x] = premul * a + out[x] * (1.0f - a);
 }
 
 __kernel void raster(__global const float4* lines,     /* [K][n_lines] */

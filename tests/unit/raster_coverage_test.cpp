@@ -7,6 +7,7 @@
 #include "opencl/runtime.h"
 #include "raster/raster_cl.h"
 #include "raster/raster_plan.h"
+#include "raster_test_support.h"
 #include "scene_builders.h"
 
 using namespace svgm;
@@ -14,29 +15,12 @@ using namespace svgm::test;
 
 namespace {
 
-ClRuntime& runtime() {
-  static ClRuntime rt("auto");
-  return rt;
-}
-
-// Renders frame images (premultiplied float RGBA) of `scene` at its own size.
 std::vector<float> render(const Scene& scene, int frames = 1, RasterPlanOptions opt = {}) {
-  const int w = static_cast<int>(scene.width), h = static_cast<int>(scene.height);
-  const RasterPlan plan = plan_raster(scene, Affine{}, w, h, opt);
-  ClRaster r(runtime(), plan, frames);
-  r.set_rest_pose();
-  r.forward();
-  return r.read_image();
+  return render_cl(scene, frames, opt);
 }
 
 float alpha_at(const std::vector<float>& img, int w, int x, int y, int frame = 0, int h = 0) {
   return img[((static_cast<size_t>(frame) * h + y) * w + x) * 4 + 3];
-}
-
-double alpha_sum(const std::vector<float>& img) {
-  double s = 0;
-  for (size_t i = 3; i < img.size(); i += 4) s += img[i];
-  return s;
 }
 
 }  // namespace
