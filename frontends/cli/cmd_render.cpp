@@ -1,4 +1,5 @@
 // `svgmotion render`: rasterise an SVG to a PNG through the OpenCL renderer.
+#include <array>
 #include <cstdio>
 
 #include "cli/cli_args.h"
@@ -36,9 +37,9 @@ int cmd_render(const std::vector<std::string>& argv) {
   ClRuntime rt(a.get("--device").value_or("auto"));
   ClRaster raster(rt, plan, 1);
   raster.set_rest_pose();
-  raster.forward();
-  const float white[4] = {1, 1, 1, 1}, clear[4] = {0, 0, 0, 0};
-  RgbaImage img{size.width, size.height, raster.read_rgba8(bg == "white" ? white : clear)};
+  const std::array<float, 4> white{1, 1, 1, 1}, clear{0, 0, 0, 0};
+  raster.forward(ClRaster::Output::Rgba8, bg == "white" ? white : clear);
+  RgbaImage img{size.width, size.height, raster.read_rgba8()};
   write_png(*out, img);
   std::fprintf(stderr, "svgmotion: wrote %s (%dx%d)\n", out->c_str(), size.width, size.height);
   return 0;

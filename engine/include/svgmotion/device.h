@@ -15,6 +15,7 @@ struct DeviceInfo {
   std::string driver;     // driver version
   unsigned compute_units = 0;
   uint64_t global_mem_bytes = 0;
+  uint64_t local_mem_bytes = 0;   // per work-group
 };
 
 // Every device of every platform, in platform order. Throws svgm::Error when no OpenCL platform

@@ -54,6 +54,7 @@ std::vector<DeviceInfo> list_devices() {
       i.driver = d.getInfo<CL_DRIVER_VERSION>();
       i.compute_units = d.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
       i.global_mem_bytes = d.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
+      i.local_mem_bytes = d.getInfo<CL_DEVICE_LOCAL_MEM_SIZE>();
       out.push_back(std::move(i));
     }
   }

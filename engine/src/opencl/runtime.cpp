@@ -55,7 +55,7 @@ void write_file_atomic(const fs::path& p, const std::string& bytes) {
 
 }  // namespace
 
-ClRuntime::ClRuntime(const std::string& device_spec) {
+ClRuntime::ClRuntime(const std::string& device_spec, bool profiling) : profiling_(profiling) {
   const auto devices = list_devices();
   const size_t pick = select_device(devices, device_spec);
   info_ = devices[pick];
@@ -75,7 +75,8 @@ ClRuntime::ClRuntime(const std::string& device_spec) {
   }
   try {
     context_ = cl::Context(device_);
-    queue_ = cl::CommandQueue(context_, device_);
+    queue_ = cl::CommandQueue(context_, device_,
+                              profiling ? cl::QueueProperties::Profiling : cl::QueueProperties::None);
   } catch (const cl::Error& e) {
     throw Error("cannot use OpenCL device " + info_.name + ": " + e.what() + " " +
                 cl_status_name(e.err()));

@@ -20,7 +20,9 @@ namespace svgm {
 class ClRuntime {
  public:
   // Selects a device by spec (see select_device) and creates the context and queue.
-  explicit ClRuntime(const std::string& device_spec = "auto");
+  // With `profiling`, the queue records kernel start/end times (bench --profile).
+  explicit ClRuntime(const std::string& device_spec = "auto", bool profiling = false);
+  bool profiling() const { return profiling_; }
 
   const DeviceInfo& info() const { return info_; }
   cl::Context& context() { return context_; }
@@ -41,6 +43,7 @@ class ClRuntime {
   cl::CommandQueue queue_;
   std::map<std::string, cl::Program> programs_;
   double compile_seconds_ = 0;
+  bool profiling_ = false;
 };
 
 }  // namespace svgm

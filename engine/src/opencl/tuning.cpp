@@ -1,14 +1,27 @@
 // The tunables table (see tuning.h).
 #include "opencl/tuning.h"
 
-#include "raster/raster_plan.h"
+#include <algorithm>
 
 namespace svgm {
 
-std::string kernel_build_options(const DeviceInfo& /*device*/) {
+RasterTuning raster_tuning(const DeviceInfo& device, int width) {
+  RasterTuning t;
+  // Default row: 16 rows per band (enough work per item to amortise the per-draw culling). A
+  // band keeps (W + 2) floats of accumulation and W float4 colours per row in local memory;
+  // halve the band until that fits in 3/4 of the device's local memory.
+  const uint64_t per_row = static_cast<uint64_t>(width + 2) * 4 + static_cast<uint64_t>(width) * 16;
+  const uint64_t budget = device.local_mem_bytes ? device.local_mem_bytes * 3 / 4 : 32768;
+  while (t.band_height > 1 && per_row * t.band_height > budget) t.band_height /= 2;
+  // On PoCL a group of 1 is fastest (measured: 64 items per group cost 1.8x, from barrier
+  // bookkeeping); GPUs need many items to hide memory latency.
+  t.group_size = device.type == "gpu" ? 64 : 1;
+  return t;
+}
+
+std::string kernel_build_options(const RasterTuning& t) {
   // -cl-fast-relaxed-math is deliberately absent: coverage must be exact and deterministic.
-  std::string opts = "-cl-std=CL1.2 -DBAND_H=" + std::to_string(kBandHeight);
-  return opts;
+  return "-cl-std=CL1.2 -DBAND_H=" + std::to_string(t.band_height);
 }
 
 }  // namespace svgm

@@ -12,6 +12,13 @@ namespace {
 
 size_t round_up(size_t n, size_t m) { return (n + m - 1) / m * m; }
 
+
+template <class... A>
+void set_args(cl::Kernel& k, const A&... args) {
+  cl_uint i = 0;
+  (k.setArg(i++, args), ...);
+}
+
 }  // namespace
 
 cl::Buffer ClRaster::make(size_t bytes, const void* host) {
@@ -28,15 +35,18 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames)
   if (frames < 1) throw Error("frame count must be at least 1");
   const auto& p = plan_;
   const size_t K = static_cast<size_t>(frames);
+  const RasterTuning tuning = raster_tuning(rt_.info(), p.width);
+  band_h_ = tuning.band_height;
+  group_ = tuning.group_size;
+  bands_ = (p.height + band_h_ - 1) / band_h_;
   try {
-    cl::Program& prog = rt_.program({"flatten.cl", "stroke.cl", "lines.cl", "bin.cl", "raster.cl"},
-                                    kernel_build_options(rt_.info()));
+    cl::Program& prog = rt_.program({"flatten.cl", "stroke.cl", "lines.cl", "raster.cl"},
+                                    kernel_build_options(tuning));
     k_flatten_ = cl::Kernel(prog, "flatten");
     k_stroke_ = cl::Kernel(prog, "stroke");
     k_lines_ = cl::Kernel(prog, "gather_lines");
-    k_bin_ = cl::Kernel(prog, "bin_lines");
+    k_bounds_ = cl::Kernel(prog, "chunk_bounds");
     k_raster_ = cl::Kernel(prog, "raster");
-    k_rgba8_ = cl::Kernel(prog, "to_rgba8");
 
     std::vector<int> a, b;
     std::vector<float> f;
@@ -46,10 +56,11 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames)
       f.insert(f.end(), {s.half_width, s.miter_limit});
     }
     std::vector<float> dcol;
-    std::vector<int> drule;
+    std::vector<int> drule, dchunks;
     for (const auto& d : p.draws) {
       dcol.insert(dcol.end(), d.rgba, d.rgba + 4);
       drule.push_back(d.rule);
+      dchunks.insert(dchunks.end(), {d.first_chunk, d.chunk_count});
     }
     cp_ = make(K * p.n_cp * 2 * sizeof(float));
     vert_cp_ = make(p.vert_cp.size() * sizeof(int), p.vert_cp.data());
@@ -61,14 +72,30 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames)
     pts_ = make(K * p.n_pts * 2 * sizeof(float));
     line_ab_ = make(p.line_ab.size() * sizeof(int), p.line_ab.data());
     lines_ = make(K * p.n_lines * 4 * sizeof(float));
-    line_draw_ = make(p.line_draw.size() * sizeof(int), p.line_draw.data());
     draw_color_ = make(dcol.size() * sizeof(float), dcol.data());
     draw_rule_ = make(drule.size() * sizeof(int), drule.data());
-    bins_ = make(K * p.bands * static_cast<size_t>(p.n_lines) * sizeof(int));
-    bin_count_ = make(K * p.bands * sizeof(int));
-    acc_ = make(K * p.height * static_cast<size_t>(p.width + 2) * sizeof(float));
-    image_ = make(K * p.height * static_cast<size_t>(p.width) * 4 * sizeof(float));
-    rgba_ = make(K * p.height * static_cast<size_t>(p.width) * 4);
+    draw_chunks_ = make(dchunks.size() * sizeof(int), dchunks.data());
+    chunk_lines_ = make(p.chunk_lines.size() * sizeof(int), p.chunk_lines.data());
+    bounds_ = make(K * (p.chunk_lines.size() / 2) * 4 * sizeof(float));
+    // The output buffers are made on first use: a render needs only the 8-bit one.
+
+    // Arguments never change between batches: set them once.
+    const int n_strokes = static_cast<int>(p.strokes.size());
+    set_args(k_flatten_, cp_, vert_cp_, vert_w_, pts_, p.n_cp, p.n_flat, p.n_pts);
+    set_args(k_stroke_, pts_, sp_a_, sp_b_, sp_f_, vert_join_, n_strokes, p.n_pts);
+    set_args(k_lines_, pts_, line_ab_, lines_, p.n_pts, p.n_lines);
+    const int n_draws = static_cast<int>(p.draws.size());
+    const int n_chunks = static_cast<int>(p.chunk_lines.size() / 2);
+    set_args(k_bounds_, lines_, chunk_lines_, bounds_, p.n_lines, n_chunks);
+    set_args(k_raster_, lines_, draw_chunks_, chunk_lines_, draw_color_, draw_rule_, bounds_,
+             cl::Local(static_cast<size_t>(band_h_) * (p.width + 2) * sizeof(float)),
+             cl::Local(static_cast<size_t>(band_h_) * p.width * 4 * sizeof(float)));
+    // Arguments 8..11 (outputs) are set by forward().
+    k_raster_.setArg(12, p.n_lines);
+    k_raster_.setArg(13, n_chunks);
+    k_raster_.setArg(14, n_draws);
+    k_raster_.setArg(15, p.width);
+    k_raster_.setArg(16, p.height);
   } catch (const cl::Error& e) {
     throw Error(std::string("OpenCL setup of the rasteriser failed on ") + rt_.info().name +
                 ": " + e.what() + " " + cl_status_name(e.err()));
@@ -91,66 +118,66 @@ void ClRaster::set_rest_pose() {
   set_control_points(all);
 }
 
-void ClRaster::forward() {
+void ClRaster::forward(Output output, const std::array<float, 4>& background) {
   const auto& p = plan_;
-  auto& q = rt_.queue();
   const size_t K = static_cast<size_t>(frames_);
-  const size_t wg = 64;
+  const size_t wg = 64;  // a multiple of every device's preferred work-group granularity
+  const size_t pixels = K * p.height * static_cast<size_t>(p.width);
+  events_.clear();
   try {
-    if (p.n_flat > 0) {
-      k_flatten_.setArg(0, cp_); k_flatten_.setArg(1, vert_cp_); k_flatten_.setArg(2, vert_w_);
-      k_flatten_.setArg(3, pts_); k_flatten_.setArg(4, p.n_cp); k_flatten_.setArg(5, p.n_flat);
-      k_flatten_.setArg(6, p.n_pts);
-      q.enqueueNDRangeKernel(k_flatten_, cl::NullRange, cl::NDRange(round_up(p.n_flat, wg), K),
-                             cl::NullRange);
-    }
-    if (!p.strokes.empty()) {
-      const int n = static_cast<int>(p.strokes.size());
-      k_stroke_.setArg(0, pts_); k_stroke_.setArg(1, sp_a_); k_stroke_.setArg(2, sp_b_);
-      k_stroke_.setArg(3, sp_f_); k_stroke_.setArg(4, vert_join_); k_stroke_.setArg(5, n);
-      k_stroke_.setArg(6, p.n_pts);
-      q.enqueueNDRangeKernel(k_stroke_, cl::NullRange, cl::NDRange(round_up(n, 8), K),
-                             cl::NullRange);
-    }
-    if (p.n_lines > 0) {
-      k_lines_.setArg(0, pts_); k_lines_.setArg(1, line_ab_); k_lines_.setArg(2, lines_);
-      k_lines_.setArg(3, p.n_pts); k_lines_.setArg(4, p.n_lines);
-      q.enqueueNDRangeKernel(k_lines_, cl::NullRange, cl::NDRange(round_up(p.n_lines, wg), K),
-                             cl::NullRange);
-    }
-    k_bin_.setArg(0, lines_); k_bin_.setArg(1, bins_); k_bin_.setArg(2, bin_count_);
-    k_bin_.setArg(3, p.n_lines); k_bin_.setArg(4, p.bands); k_bin_.setArg(5, p.width);
-    q.enqueueNDRangeKernel(k_bin_, cl::NullRange, cl::NDRange(round_up(p.bands, 8), K),
-                           cl::NullRange);
-    k_raster_.setArg(0, lines_); k_raster_.setArg(1, line_draw_); k_raster_.setArg(2, draw_color_);
-    k_raster_.setArg(3, draw_rule_); k_raster_.setArg(4, bins_); k_raster_.setArg(5, bin_count_);
-    k_raster_.setArg(6, acc_); k_raster_.setArg(7, image_); k_raster_.setArg(8, p.n_lines);
-    k_raster_.setArg(9, p.bands); k_raster_.setArg(10, p.width); k_raster_.setArg(11, p.height);
-    q.enqueueNDRangeKernel(k_raster_, cl::NullRange,
-                           cl::NDRange(round_up(p.height, kBandHeight), K),
-                           cl::NDRange(kBandHeight, 1));
+    // Arguments 8..11: where the band results go (the unused output gets any valid buffer).
+    if (output == Output::Float && !image_()) image_ = make(pixels * 4 * sizeof(float));
+    if (output == Output::Rgba8 && !rgba_()) rgba_ = make(pixels * 4);
+    k_raster_.setArg(8, image_() ? image_ : rgba_);
+    k_raster_.setArg(9, rgba_() ? rgba_ : image_);
+    k_raster_.setArg(10, cl_float4{{background[0], background[1], background[2], background[3]}});
+    k_raster_.setArg(11, output == Output::Rgba8 ? 1 : 0);
+
+    if (p.n_flat > 0) launch("flatten", k_flatten_, cl::NDRange(round_up(p.n_flat, wg), K));
+    if (!p.strokes.empty()) launch("stroke", k_stroke_, cl::NDRange(round_up(p.strokes.size(), 8), K));
+    if (p.n_lines > 0) launch("gather_lines", k_lines_, cl::NDRange(round_up(p.n_lines, wg), K));
+    if (!p.chunk_lines.empty())
+      launch("chunk_bounds", k_bounds_, cl::NDRange(round_up(p.chunk_lines.size() / 2, wg), K));
+    // One work-group per (band, frame); see raster.cl for how its work-items share the work.
+    launch("raster", k_raster_, cl::NDRange(bands_ * group_, K), cl::NDRange(group_, 1));
   } catch (const cl::Error& e) {
     throw Error(std::string("OpenCL rasteriser launch failed on ") + rt_.info().name + ": " +
                 e.what() + " " + cl_status_name(e.err()));
   }
 }
 
+void ClRaster::launch(const char* name, cl::Kernel& k, const cl::NDRange& global,
+                      const cl::NDRange& local) {
+  if (!rt_.profiling()) {
+    rt_.queue().enqueueNDRangeKernel(k, cl::NullRange, global, local);
+    return;
+  }
+  cl::Event e;
+  rt_.queue().enqueueNDRangeKernel(k, cl::NullRange, global, local, nullptr, &e);
+  events_.emplace_back(name, e);
+}
+
+std::vector<std::pair<std::string, double>> ClRaster::kernel_times() const {
+  std::vector<std::pair<std::string, double>> out;
+  for (const auto& [name, e] : events_) {
+    const double ns = static_cast<double>(e.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
+                                          e.getProfilingInfo<CL_PROFILING_COMMAND_START>());
+    out.emplace_back(name, ns * 1e-6);
+  }
+  return out;
+}
+
 void ClRaster::finish() { rt_.queue().finish(); }
 
-std::vector<uint8_t> ClRaster::read_rgba8(const float background[4]) {
-  const size_t n = static_cast<size_t>(frames_) * plan_.height * plan_.width;
-  std::vector<uint8_t> out(n * 4);
-  k_rgba8_.setArg(0, image_);
-  k_rgba8_.setArg(1, rgba_);
-  k_rgba8_.setArg(2, cl_float4{{background[0], background[1], background[2], background[3]}});
-  k_rgba8_.setArg(3, static_cast<int>(n));
-  rt_.queue().enqueueNDRangeKernel(k_rgba8_, cl::NullRange, cl::NDRange(round_up(n, 256)),
-                                   cl::NullRange);
+std::vector<uint8_t> ClRaster::read_rgba8() {
+  if (!rgba_()) throw Error("internal: read_rgba8 before an Rgba8 forward pass");
+  std::vector<uint8_t> out(static_cast<size_t>(frames_) * plan_.height * plan_.width * 4);
   rt_.queue().enqueueReadBuffer(rgba_, CL_TRUE, 0, out.size(), out.data());
   return out;
 }
 
 std::vector<float> ClRaster::read_image() {
+  if (!image_()) throw Error("internal: read_image before a Float forward pass");
   std::vector<float> out(static_cast<size_t>(frames_) * plan_.height * plan_.width * 4);
   rt_.queue().enqueueReadBuffer(image_, CL_TRUE, 0, out.size() * sizeof(float), out.data());
   return out;

@@ -63,7 +63,6 @@ RasterPlan plan_raster(const Scene& scene, const Affine& view, int width, int he
   RasterPlan plan;
   plan.width = width;
   plan.height = height;
-  plan.bands = (height + kBandHeight - 1) / kBandHeight;
   const double tol = opt.flatten_tolerance_px;
   const double view_scale = view.mean_scale();
 
@@ -176,6 +175,14 @@ RasterPlan plan_raster(const Scene& scene, const Affine& view, int width, int he
       plan.draws.back().line_count = plan.n_lines - plan.draws.back().first_line;
       if (plan.draws.back().line_count == 0) plan.draws.pop_back();
     }
+  }
+  // Chunks: consecutive lines of one draw, kChunkLines at most.
+  for (Draw& d : plan.draws) {
+    d.first_chunk = static_cast<int>(plan.chunk_lines.size() / 2);
+    for (int j = d.first_line; j < d.first_line + d.line_count; j += kChunkLines)
+      plan.chunk_lines.insert(plan.chunk_lines.end(),
+                              {j, std::min(kChunkLines, d.first_line + d.line_count - j)});
+    d.chunk_count = static_cast<int>(plan.chunk_lines.size() / 2) - d.first_chunk;
   }
   return plan;
 }

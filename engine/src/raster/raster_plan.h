@@ -22,7 +22,6 @@ enum : uint8_t { kJoinMiter = 0, kJoinMiterClip = 1, kJoinRound = 2, kJoinBevel 
                  kJoinInterior = 4 };
 enum : int { kCapButt = 0, kCapRound = 1, kCapSquare = 2 };
 enum : int { kRuleNonZero = 0, kRuleEvenOdd = 1 };
-inline constexpr int kBandHeight = 16;  // rows per bin band (BAND_H in the kernels)
 
 struct RasterPlanOptions {
   double flatten_tolerance_px = 0.1;  // max distance of a flattened chord from its curve
@@ -42,16 +41,21 @@ struct StrokeSubpath {
   float miter_limit = 4;
 };
 
+// Lines are grouped in chunks of consecutive lines of one draw (at most kChunkLines): their
+// bounding boxes let a band skip most lines it cannot touch with one test per chunk.
+inline constexpr int kChunkLines = 16;
+
 struct Draw {
   int path = 0;          // index into Scene::paths
   bool is_stroke = false;
   float rgba[4] = {0, 0, 0, 1};  // straight colour; alpha already times the path's opacity
   int rule = kRuleNonZero;
   int first_line = 0, line_count = 0;
+  int first_chunk = 0, chunk_count = 0;
 };
 
 struct RasterPlan {
-  int width = 0, height = 0, bands = 0;
+  int width = 0, height = 0;
 
   // Control points of the rest pose in pixel space, (x, y) pairs; 3 zero points of padding at
   // the end so a vertex's 4-point window never reads past the array.
@@ -73,6 +77,7 @@ struct RasterPlan {
   std::vector<int> line_ab;    // point index pairs
   std::vector<int> line_draw;  // draw index of each line (non-decreasing)
   std::vector<Draw> draws;
+  std::vector<int> chunk_lines;  // (first line, count) pairs
 };
 
 // Plans the rendering of `scene` at width x height pixels, with `view` mapping canvas space to

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# The README's two set-up commands in one script:
+#   bash .ci/setup.sh example   installs what is missing, builds, renders the bundled example
+#   bash .ci/setup.sh test      installs what is missing, builds, runs the whole test suite
+# Works as root or through sudo on Debian 12; installs only packages that are not there yet.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+mode=${1:-}
+case "$mode" in example|test) ;; *) echo "usage: bash .ci/setup.sh example|test" >&2; exit 2 ;; esac
+
+packages=(
+  cmake ninja-build g++ pkg-config ccache
+  ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd
+  libclblast-dev libeigen3-dev libpugixml-dev libopencv-dev libspdlog-dev libyaml-cpp-dev
+  libpng-dev doctest-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  if [[ $(id -u) -eq 0 ]]; then as_root=(); else as_root=(sudo); fi
+  "${as_root[@]}" apt-get update -q
+  DEBIAN_FRONTEND=noninteractive "${as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+jobs=$(nproc 2>/dev/null || echo 2)
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build build -j "$jobs"
+
+if [[ $mode == example ]]; then
+  ./build/frontends/svgmotion devices
+  ./build/frontends/svgmotion render tests/data/examples/man.svg -o build/man.png --size 512
+  echo "setup: the example is rendered at $(pwd)/build/man.png"
+else
+  # Tests share the one OpenCL device; two at a time keeps both cores busy.
+  ctest --test-dir build --output-on-failure -j 2
+fi

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# CLI integration tests: cli_test.sh GROUP SVGMOTION_BINARY TEST_DATA_DIR
+# Each check prints "ok - ..." or "not ok - ..."; the script ends with "N passed, M failed" and
+# exits non-zero on any failure.
+set -u
+group=$1 bin=$2 data=$3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+pass=0 fail=0
+ok() { echo "ok - $1"; pass=$((pass + 1)); }
+bad() { echo "not ok - $1"; fail=$((fail + 1)); }
+check() { if eval "$2"; then ok "$1"; else bad "$1"; fi; }
+
+# expect_error NAME EXPECTED_SUBSTRING OUTPUT_FILE ARGS...: non-zero exit, exactly one stderr
+# line containing the substring, and OUTPUT_FILE (and any temporary of it) not written.
+expect_error() {
+  local name=$1 want=$2 out=$3; shift 3
+  "$bin" "$@" >"$tmp/stdout" 2>"$tmp/stderr"
+  local rc=$?
+  local lines; lines=$(grep -c '' "$tmp/stderr")
+  if [[ $rc -ne 0 && $lines -eq 1 ]] && grep -qF -- "$want" "$tmp/stderr" && ! ls "$out"* >/dev/null 2>&1; then
+    ok "$name"
+  else
+    bad "$name (exit $rc, stderr: $(head -c 300 "$tmp/stderr"))"
+  fi
+}
+
+case $group in
+render)
+  "$bin" render "$data/examples/man.svg" -o "$tmp/man.png" --size 128 2>"$tmp/err"
+  check "render writes a PNG" '[[ -s $tmp/man.png ]] && [[ $(head -c 8 "$tmp/man.png" | od -An -tx1 | tr -d " \n") == 89504e470d0a1a0a ]]'
+  check "render leaves no temporary file" '[[ $(ls "$tmp" | grep -c part) -eq 0 ]]'
+  "$bin" render "$data/examples/man.svg" -o "$tmp/t.png" --size 64 --background transparent 2>/dev/null
+  check "transparent background renders" '[[ -s $tmp/t.png ]]'
+  "$bin" render "$data/examples/man.svg" -o "$tmp/a.png" --size 100 2>/dev/null
+  "$bin" render "$data/examples/man.svg" -o "$tmp/b.png" --size 100 2>/dev/null
+  check "rendering is deterministic (same bytes twice)" 'cmp -s "$tmp/a.png" "$tmp/b.png"'
+  ;;
+bad_input)
+  printf '<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"><g><rect width="5" height="5"></svg>' >"$tmp/broken.svg"
+  expect_error "broken XML" "broken.svg" "$tmp/o1.png" render "$tmp/broken.svg" -o "$tmp/o1.png"
+  printf '<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"><rect width="nan" height="5"/></svg>' >"$tmp/nan.svg"
+  expect_error "NaN number" "nan.svg" "$tmp/o2.png" render "$tmp/nan.svg" -o "$tmp/o2.png"
+  printf '<svg xmlns="http://www.w3.org/2000/svg" width="1e9" height="10"/>' >"$tmp/huge.svg"
+  expect_error "absurd size" "huge.svg" "$tmp/o3.png" render "$tmp/huge.svg" -o "$tmp/o3.png"
+  { printf '<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10">'; for i in $(seq 5000); do printf '<g>'; done
+    for i in $(seq 5000); do printf '</g>'; done; printf '</svg>'; } >"$tmp/deep.svg"
+  expect_error "deep nesting" "deep.svg" "$tmp/o4.png" render "$tmp/deep.svg" -o "$tmp/o4.png"
+  printf '<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" width="10" height="10"><g id="a"><use xlink:href="#b"/></g><g id="b"><use xlink:href="#a"/></g></svg>' >"$tmp/cycle.svg"
+  expect_error "use cycle" "cycle.svg" "$tmp/o5.png" render "$tmp/cycle.svg" -o "$tmp/o5.png"
+  expect_error "missing file" "nothere.svg" "$tmp/o6.png" render "$tmp/nothere.svg" -o "$tmp/o6.png"
+  printf '<html><body/></html>' >"$tmp/html.svg"
+  expect_error "not an SVG" "html.svg" "$tmp/o7.png" render "$tmp/html.svg" -o "$tmp/o7.png"
+  head -c 70000000 /dev/zero | tr '\0' ' ' >"$tmp/big.svg"
+  expect_error "oversized file" "big.svg" "$tmp/o8.png" render "$tmp/big.svg" -o "$tmp/o8.png"
+  expect_error "unknown option" "--frobnicate" "$tmp/o9.png" render "$data/examples/man.svg" -o "$tmp/o9.png" --frobnicate
+  expect_error "bad --size" "--size" "$tmp/o10.png" render "$data/examples/man.svg" -o "$tmp/o10.png" --size 0
+  expect_error "unwritable output" "nodir" "$tmp/nodir/x.png" render "$data/examples/man.svg" -o "$tmp/nodir/x.png"
+  expect_error "unknown device" "--device" "$tmp/o11.png" render "$data/examples/man.svg" -o "$tmp/o11.png" --device nosuchdevice
+  ;;
+devices)
+  "$bin" devices >"$tmp/dev" 2>&1
+  check "devices lists at least one device and marks the auto pick" 'grep -q "^\*" "$tmp/dev"'
+  ;;
+bench)
+  "$bin" bench render "$data/examples/man.svg" --frames 3 --size 64 --repeat 2 --json >"$tmp/b.json" 2>"$tmp/err"
+  check "bench render --json prints one JSON object with the promised keys" \
+    '[[ $(grep -c "" "$tmp/b.json") -eq 1 ]] && grep -q "^{.*}$" "$tmp/b.json" && grep -Eq "\"ms_per_frame\": [0-9.]+" "$tmp/b.json" && grep -Eq "\"peak_rss_mb\": [0-9.]+" "$tmp/b.json" && grep -q "\"device\": \"" "$tmp/b.json"'
+  ;;
+*) echo "unknown group $group"; exit 2 ;;
+esac
+echo "$pass passed, $fail failed"
+[[ $fail -eq 0 ]]
