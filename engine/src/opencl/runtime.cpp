@@ -90,7 +90,7 @@ cl::Program& ClRuntime::program(const std::vector<std::string>& files,
   for (const auto& f : files) {
     source += "\n#line 1\n";
     source += kernel_source(f);
-    key_files += f + ";";
+    key_files += (key_files.empty() ? "" : ", ") + f;
   }
   const std::string mem_key = key_files + "|" + options;
   if (auto it = programs_.find(mem_key); it != programs_.end()) return it->second;
