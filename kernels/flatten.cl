@@ -21,3 +21,22 @@ __kernel void flatten(__global const float2* cp,       /* [K][n_cp] control poin
   const float4 w = vert_w[v];
   pts[(size_t)k * n_pts + v] = w.x * c[0] + w.y * c[1] + w.z * c[2] + w.w * c[3];
 }
+
+/* The transpose: ∂L/∂cp[c] = Σ_v B[v][c] · ∂L/∂flat[v], over the fixed list of vertices whose
+ * window contains c (CSR built at plan time; entry = 4 * v + j, j the position of c in v's
+ * 4-point window), summed in order. One work-item per (control point, frame). */
+__kernel void flatten_backward(__global const float2* grad_pts, /* [K][n_pts] */
+                               __global const float4* vert_w, __global const int* cp_first,
+                               __global const int* cp_entries, __global float2* grad_cp,
+                               int n_cp, int n_pts) {
+  const int c = get_global_id(0), k = get_global_id(1);
+  if (c >= n_cp) return;
+  float2 g = (float2)(0.0f);
+  for (int e = cp_first[c]; e < cp_first[c + 1]; ++e) {
+    const int v = cp_entries[e] >> 2, j = cp_entries[e] & 3;
+    const float4 w = vert_w[v];
+    const float wj = j == 0 ? w.x : j == 1 ? w.y : j == 2 ? w.z : w.w;
+    g += wj * grad_pts[(size_t)k * n_pts + v];
+  }
+  grad_cp[(size_t)k * n_cp + c] = g;
+}

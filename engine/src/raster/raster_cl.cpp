@@ -40,8 +40,14 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames)
   group_ = tuning.group_size;
   bands_ = (p.height + band_h_ - 1) / band_h_;
   try {
-    cl::Program& prog = rt_.program({"flatten.cl", "stroke.cl", "lines.cl", "raster.cl"},
-                                    kernel_build_options(tuning));
+    // One program for the forward and backward kernels: PoCL compiles it once, then the
+    // binary comes from the cache.
+    cl::Program& prog =
+        rt_.program({"flatten.cl", "stroke.cl", "lines.cl", "raster.cl", "raster_backward.cl",
+                     "loss.cl"},
+                    kernel_build_options(tuning));
+    program_ = &prog;
+    local_budget_ = tuning.local_budget;
     k_flatten_ = cl::Kernel(prog, "flatten");
     k_stroke_ = cl::Kernel(prog, "stroke");
     k_lines_ = cl::Kernel(prog, "gather_lines");

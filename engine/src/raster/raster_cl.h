@@ -44,6 +44,26 @@ class ClRaster {
   // With a profiling runtime: milliseconds each kernel of the last forward() took on the device.
   std::vector<std::pair<std::string, double>> kernel_times() const;
 
+  // ---- Gradients (raster_cl_backward.cpp) ----
+  // Uploads the K target frames: frames * height * width RGBA floats (straight RGB, A unused).
+  void set_targets(const std::vector<float>& rgba);
+  // Forward pass, blurred-MSE loss against the targets (kernels/loss.cl) and the backward pass
+  // down to the control points, all on the device; returns the loss (reading one scalar).
+  // `weight` multiplies the mean of the squared blurred residual; the frames are composited
+  // over `background` (premultiplied).
+  float loss_and_gradient(float weight, const std::array<float, 4>& background);
+  // Per-frame losses of the last loss_and_gradient (each already weighted).
+  std::vector<float> read_frame_losses();
+  // ∂L/∂(control points): frames * n_cp (x, y) pairs, of the last loss_and_gradient.
+  std::vector<float> read_cp_gradient();
+  // ∂L/∂(composited image) RGBA floats, and ∂L/∂(points) pairs, for tests.
+  std::vector<float> read_image_gradient();
+  std::vector<float> read_point_gradient();
+  cl::Buffer& cp_gradient_buffer() { return grad_cp_; }
+  // Largest tape a band needed beyond its capacity in the last backward pass (0: none). The
+  // gradient of an overflowing band misses the pixels past the capacity.
+  int tape_overflow();
+
   // Bytes of device memory this routine allocated.
   size_t device_bytes() const { return device_bytes_; }
 
@@ -51,6 +71,7 @@ class ClRaster {
   cl::Buffer make(size_t bytes, const void* host = nullptr);
   void launch(const char* name, cl::Kernel& k, const cl::NDRange& global,
               const cl::NDRange& local = cl::NullRange);
+  void init_backward();
 
   ClRuntime& rt_;
   RasterPlan plan_;
@@ -58,6 +79,16 @@ class ClRaster {
   int band_h_ = 16, bands_ = 0, group_ = 1;
   size_t device_bytes_ = 0;
   std::vector<std::pair<std::string, cl::Event>> events_;
+  size_t local_budget_ = 0;
+  cl::Program* program_ = nullptr;
+
+  bool backward_ready_ = false;
+  int tape_cap_ = 0;
+  cl::Kernel k_residual_, k_blur_h_, k_blur_v_, k_blur_h2_, k_blur_v2_, k_loss_rows_,
+      k_loss_total_, k_backward_, k_gather_lines_, k_gather_points_, k_flatten_back_;
+  cl::Buffer target_, diff_, tmp_, resid_, dimage_, row_sums_, loss_, partial_, overflow_,
+      line_grad_, grad_pts_, grad_cp_, line_chunk_, pt_first_, pt_entries_, cp_first_,
+      cp_entries_;
   cl::Kernel k_flatten_, k_stroke_, k_lines_, k_bounds_, k_raster_;
   cl::Buffer cp_, vert_cp_, vert_w_, vert_join_, sp_a_, sp_b_, sp_f_, pts_, line_ab_, lines_,
       draw_chunks_, chunk_lines_, draw_color_, draw_rule_, bounds_, acc_, image_, rgba_;

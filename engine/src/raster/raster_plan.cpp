@@ -184,6 +184,32 @@ RasterPlan plan_raster(const Scene& scene, const Affine& view, int width, int he
                               {j, std::min(kChunkLines, d.first_line + d.line_count - j)});
     d.chunk_count = static_cast<int>(plan.chunk_lines.size() / 2) - d.first_chunk;
   }
+  plan.line_chunk.resize(plan.n_lines);
+  for (size_t c = 0; c < plan.chunk_lines.size() / 2; ++c)
+    for (int j = 0; j < plan.chunk_lines[2 * c + 1]; ++j)
+      plan.line_chunk[plan.chunk_lines[2 * c] + j] = static_cast<int>(c);
+
+  // Transposes, in increasing entry order so that sums are taken in a fixed order.
+  auto csr = [](int n, const std::vector<std::pair<int, int>>& pairs, std::vector<int>& first,
+                std::vector<int>& entries) {
+    first.assign(n + 1, 0);
+    for (const auto& [row, e] : pairs) ++first[row + 1];
+    for (int i = 0; i < n; ++i) first[i + 1] += first[i];
+    entries.assign(pairs.size(), 0);
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for (const auto& [row, e] : pairs) entries[fill[row]++] = e;
+  };
+  std::vector<std::pair<int, int>> pairs;
+  for (int j = 0; j < plan.n_lines; ++j) {
+    pairs.emplace_back(plan.line_ab[2 * j], 2 * j);
+    pairs.emplace_back(plan.line_ab[2 * j + 1], 2 * j + 1);
+  }
+  csr(plan.n_pts, pairs, plan.pt_first, plan.pt_entries);
+  pairs.clear();
+  for (int v = 0; v < plan.n_flat; ++v)
+    for (int j = 0; j < 4; ++j)
+      if (plan.vert_w[4 * v + j] != 0.f) pairs.emplace_back(plan.vert_cp[v] + j, 4 * v + j);
+  csr(plan.n_cp, pairs, plan.cp_first, plan.cp_entries);
   return plan;
 }
 

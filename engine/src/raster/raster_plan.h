@@ -78,6 +78,13 @@ struct RasterPlan {
   std::vector<int> line_draw;  // draw index of each line (non-decreasing)
   std::vector<Draw> draws;
   std::vector<int> chunk_lines;  // (first line, count) pairs
+  std::vector<int> line_chunk;   // chunk index of every line
+
+  // Transposed tables for the backward pass (CSR: entries of item i are [first[i], first[i+1])).
+  // Point p's lines: entry 2 * line + end (end 0 = the line's first point).
+  std::vector<int> pt_first, pt_entries;
+  // Control point c's flattened vertices: entry 4 * vertex + j, c = vert_cp[vertex] + j.
+  std::vector<int> cp_first, cp_entries;
 };
 
 // Plans the rendering of `scene` at width x height pixels, with `view` mapping canvas space to

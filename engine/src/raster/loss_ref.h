@@ -1,0 +1,16 @@
+// The CPU reference of kernels/loss.cl: the Gaussian-blurred MSE in double precision.
+#pragma once
+
+#include <array>
+#include <vector>
+
+namespace svgm::ref {
+
+// One frame's blurred squared residual sum, Σ_{pixel, channel} E², with E = G ∗ (C − T), C the
+// premultiplied RGBA `image` composited over `background` and T the RGB of `target`
+// (width * height * 4 values each). The loss of K frames is weight / (K·H·W·3) times the sum
+// of their frame sums.
+double blurred_sq_sum(const std::vector<double>& image, const std::vector<float>& target,
+                      int width, int height, const std::array<double, 4>& background);
+
+}  // namespace svgm::ref

@@ -1,0 +1,183 @@
+// The OpenCL loss and backward routine of ClRaster: blurred MSE against target frames and
+// exact gradients down to the control points (kernels/loss.cl, raster_backward.cl, flatten.cl).
+#include <algorithm>
+
+#include "raster/raster_cl.h"
+#include "svgmotion/error.h"
+
+namespace svgm {
+
+namespace {
+
+size_t round_up(size_t n, size_t m) { return (n + m - 1) / m * m; }
+
+template <class... A>
+void set_args(cl::Kernel& k, const A&... args) {
+  cl_uint i = 0;
+  (k.setArg(i++, args), ...);
+}
+
+}  // namespace
+
+void ClRaster::init_backward() {
+  if (backward_ready_) return;
+  const auto& p = plan_;
+  const size_t K = static_cast<size_t>(frames_);
+  const size_t pixels = K * p.height * static_cast<size_t>(p.width);
+  const int n_draws = static_cast<int>(p.draws.size());
+  const int n_chunks = static_cast<int>(p.chunk_lines.size() / 2);
+  try {
+    cl::Program& prog = *program_;
+    k_residual_ = cl::Kernel(prog, "loss_residual");
+    k_blur_h_ = cl::Kernel(prog, "blur_pass");
+    k_blur_v_ = cl::Kernel(prog, "blur_pass");
+    k_blur_h2_ = cl::Kernel(prog, "blur_pass");
+    k_blur_v2_ = cl::Kernel(prog, "blur_pass");
+    k_loss_rows_ = cl::Kernel(prog, "loss_rows");
+    k_loss_total_ = cl::Kernel(prog, "loss_total");
+    k_backward_ = cl::Kernel(prog, "raster_backward");
+    k_gather_lines_ = cl::Kernel(prog, "gather_line_grads");
+    k_gather_points_ = cl::Kernel(prog, "gather_point_grads");
+    k_flatten_back_ = cl::Kernel(prog, "flatten_backward");
+
+    if (!image_()) image_ = make(pixels * 4 * sizeof(float));
+    if (!target_()) target_ = make(pixels * 4 * sizeof(float));
+    diff_ = make(pixels * 4 * sizeof(float));
+    tmp_ = make(pixels * 4 * sizeof(float));
+    resid_ = make(pixels * 4 * sizeof(float));
+    dimage_ = make(pixels * 4 * sizeof(float));
+    row_sums_ = make(K * p.height * sizeof(float));
+    loss_ = make((K + 1) * sizeof(float));
+    partial_ = make(K * p.n_lines * static_cast<size_t>(bands_) * 4 * sizeof(float));
+    overflow_ = make(sizeof(int));
+    line_grad_ = make(K * p.n_lines * 4 * sizeof(float));
+    grad_pts_ = make(K * p.n_pts * 2 * sizeof(float));
+    grad_cp_ = make(K * p.n_cp * 2 * sizeof(float));
+    line_chunk_ = make(p.line_chunk.size() * sizeof(int), p.line_chunk.data());
+    pt_first_ = make(p.pt_first.size() * sizeof(int), p.pt_first.data());
+    pt_entries_ = make(p.pt_entries.size() * sizeof(int), p.pt_entries.data());
+    cp_first_ = make(p.cp_first.size() * sizeof(int), p.cp_first.data());
+    cp_entries_ = make(p.cp_entries.size() * sizeof(int), p.cp_entries.data());
+
+    // Local memory of the backward band: rows of accumulation, colour, transmittance and ∂L/∂a,
+    // the per-draw tape offsets, and the tape in what is left.
+    const size_t rows_bytes = static_cast<size_t>(band_h_) *
+                              ((p.width + 2) * sizeof(float) + p.width * (16 + 4 + 4));
+    const size_t fixed = rows_bytes + std::max<size_t>(n_draws, 1) * sizeof(int);
+    if (fixed + 16 * 1024 > local_budget_)
+      throw Error("the backward pass needs " + std::to_string(fixed + 16 * 1024) +
+                  " bytes of local memory per band, the device offers " +
+                  std::to_string(local_budget_));
+    tape_cap_ = static_cast<int>((local_budget_ - fixed) / 16);
+
+    const int n = static_cast<int>(pixels);
+    set_args(k_residual_, image_, target_, diff_, cl_float4{{0, 0, 0, 0}}, n);
+    const int W = p.width, H = p.height, F = frames_;
+    set_args(k_blur_h_, diff_, tmp_, 1.0f, 0, W, H, F);
+    set_args(k_blur_v_, tmp_, resid_, 1.0f, 1, W, H, F);
+    set_args(k_loss_rows_, resid_, row_sums_, W, H, F);
+    set_args(k_loss_total_, row_sums_, loss_, 1.0f, H, F);
+    set_args(k_blur_h2_, resid_, tmp_, 1.0f, 0, W, H, F);
+    set_args(k_blur_v2_, tmp_, dimage_, 1.0f, 1, W, H, F);
+    set_args(k_backward_, lines_, draw_chunks_, chunk_lines_, draw_color_, draw_rule_, bounds_,
+             dimage_, cl_float4{{0, 0, 0, 0}},
+             cl::Local(static_cast<size_t>(band_h_) * (p.width + 2) * sizeof(float)),
+             cl::Local(static_cast<size_t>(band_h_) * p.width * 4 * sizeof(float)),
+             cl::Local(static_cast<size_t>(band_h_) * p.width * sizeof(float)),
+             cl::Local(static_cast<size_t>(band_h_) * p.width * sizeof(float)),
+             cl::Local(static_cast<size_t>(tape_cap_) * 4 * sizeof(float)), tape_cap_,
+             cl::Local(std::max<size_t>(n_draws, 1) * sizeof(int)), partial_, overflow_,
+             p.n_lines, n_chunks, n_draws, bands_, W, H);
+    set_args(k_gather_lines_, lines_, line_chunk_, bounds_, partial_, line_grad_, p.n_lines,
+             n_chunks, bands_, W, H);
+    set_args(k_gather_points_, line_grad_, pt_first_, pt_entries_, grad_pts_, p.n_lines, p.n_pts);
+    set_args(k_flatten_back_, grad_pts_, vert_w_, cp_first_, cp_entries_, grad_cp_, p.n_cp,
+             p.n_pts);
+  } catch (const cl::Error& e) {
+    throw Error(std::string("OpenCL setup of the backward pass failed on ") + rt_.info().name +
+                ": " + e.what() + " " + cl_status_name(e.err()));
+  }
+  backward_ready_ = true;
+}
+
+void ClRaster::set_targets(const std::vector<float>& rgba) {
+  const size_t want = static_cast<size_t>(frames_) * plan_.height * plan_.width * 4;
+  if (rgba.size() != want)
+    throw Error("internal: target upload of " + std::to_string(rgba.size()) + " floats, expected " +
+                std::to_string(want));
+  init_backward();
+  rt_.queue().enqueueWriteBuffer(target_, CL_TRUE, 0, want * sizeof(float), rgba.data());
+}
+
+float ClRaster::loss_and_gradient(float weight, const std::array<float, 4>& background) {
+  init_backward();
+  if (!plan_.strokes.empty())
+    throw Error("internal: gradients through strokes are not implemented yet");
+  const auto& p = plan_;
+  const size_t K = static_cast<size_t>(frames_);
+  const size_t pixels = K * p.height * static_cast<size_t>(p.width);
+  const cl_float4 bg{{background[0], background[1], background[2], background[3]}};
+  // L = weight / N · Σ E², N = K·H·W·3; ∂L/∂C = blur(2 · weight / N · E).
+  const float scale = weight / static_cast<float>(pixels * 3);
+  try {
+    forward(Output::Float, background);
+    auto& q = rt_.queue();
+    k_residual_.setArg(3, bg);
+    k_backward_.setArg(7, bg);
+    k_loss_total_.setArg(2, scale);
+    k_blur_h2_.setArg(2, 2.0f * scale);
+    q.enqueueFillBuffer(overflow_, 0, 0, sizeof(int));
+    const cl::NDRange px(round_up(p.width, 16), round_up(p.height, 4), K);
+    launch("loss_residual", k_residual_, cl::NDRange(round_up(pixels, 256)));
+    launch("blur_x", k_blur_h_, px, cl::NDRange(16, 4, 1));
+    launch("blur_y", k_blur_v_, px, cl::NDRange(16, 4, 1));
+    launch("loss_rows", k_loss_rows_, cl::NDRange(round_up(p.height, 16), K));
+    launch("loss_total", k_loss_total_, cl::NDRange(1));
+    launch("blur_x_back", k_blur_h2_, px, cl::NDRange(16, 4, 1));
+    launch("blur_y_back", k_blur_v2_, px, cl::NDRange(16, 4, 1));
+    launch("raster_backward", k_backward_, cl::NDRange(bands_ * group_, K),
+           cl::NDRange(group_, 1));
+    launch("gather_line_grads", k_gather_lines_, cl::NDRange(round_up(p.n_lines, 64), K));
+    launch("gather_point_grads", k_gather_points_, cl::NDRange(round_up(p.n_pts, 64), K));
+    launch("flatten_backward", k_flatten_back_, cl::NDRange(round_up(p.n_cp, 64), K));
+    float loss = 0;
+    q.enqueueReadBuffer(loss_, CL_TRUE, 0, sizeof(float), &loss);
+    return loss;
+  } catch (const cl::Error& e) {
+    throw Error(std::string("OpenCL backward pass failed on ") + rt_.info().name + ": " +
+                e.what() + " " + cl_status_name(e.err()));
+  }
+}
+
+std::vector<float> ClRaster::read_frame_losses() {
+  std::vector<float> out(static_cast<size_t>(frames_) + 1);
+  rt_.queue().enqueueReadBuffer(loss_, CL_TRUE, 0, out.size() * sizeof(float), out.data());
+  out.erase(out.begin());
+  return out;
+}
+
+std::vector<float> ClRaster::read_cp_gradient() {
+  std::vector<float> out(static_cast<size_t>(frames_) * plan_.n_cp * 2);
+  rt_.queue().enqueueReadBuffer(grad_cp_, CL_TRUE, 0, out.size() * sizeof(float), out.data());
+  return out;
+}
+
+std::vector<float> ClRaster::read_image_gradient() {
+  std::vector<float> out(static_cast<size_t>(frames_) * plan_.height * plan_.width * 4);
+  rt_.queue().enqueueReadBuffer(dimage_, CL_TRUE, 0, out.size() * sizeof(float), out.data());
+  return out;
+}
+
+std::vector<float> ClRaster::read_point_gradient() {
+  std::vector<float> out(static_cast<size_t>(frames_) * plan_.n_pts * 2);
+  rt_.queue().enqueueReadBuffer(grad_pts_, CL_TRUE, 0, out.size() * sizeof(float), out.data());
+  return out;
+}
+
+int ClRaster::tape_overflow() {
+  int v = 0;
+  rt_.queue().enqueueReadBuffer(overflow_, CL_TRUE, 0, sizeof(int), &v);
+  return v;
+}
+
+}  // namespace svgm

@@ -1,0 +1,202 @@
+// Gradient checks: the OpenCL backward pass against central finite differences of the
+// double-precision CPU reference (coverage, compositing, blur and the whole chain), and
+// bit-identical repeat runs.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include "raster/loss_ref.h"
+#include "raster_test_support.h"
+#include "scene_builders.h"
+
+using namespace svgm;
+using namespace svgm::test;
+
+namespace {
+
+constexpr float kWeight = 1000.0f;  // the paper's image-loss weight
+
+struct Agreement {
+  double cosine = 0, rel_error = 0;
+};
+
+Agreement compare(const std::vector<double>& a, const std::vector<double>& b) {
+  double ab = 0, aa = 0, bb = 0, dd = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    ab += a[i] * b[i];
+    aa += a[i] * a[i];
+    bb += b[i] * b[i];
+    dd += (a[i] - b[i]) * (a[i] - b[i]);
+  }
+  return {ab / std::sqrt(aa * bb + 1e-300), std::sqrt(dd / (bb + 1e-300))};
+}
+
+// The reference loss of K frames with control points cp (K * n_cp pairs).
+double ref_loss(const RasterPlan& plan, const std::vector<double>& cp, const std::vector<float>& targets,
+                int K, const std::array<double, 4>& bg) {
+  const size_t per_cp = static_cast<size_t>(plan.n_cp) * 2;
+  const size_t per_px = static_cast<size_t>(plan.width) * plan.height * 4;
+  double sum = 0;
+  for (int k = 0; k < K; ++k) {
+    const std::vector<double> c(cp.begin() + k * per_cp, cp.begin() + (k + 1) * per_cp);
+    const auto img = ref::render(plan, c);
+    const std::vector<float> t(targets.begin() + k * per_px, targets.begin() + (k + 1) * per_px);
+    sum += ref::blurred_sq_sum(img, t, plan.width, plan.height, bg);
+  }
+  return kWeight * sum / (static_cast<double>(K) * plan.width * plan.height * 3);
+}
+
+struct Case {
+  Scene scene;
+  std::vector<double> cp;   // K frames of control points
+  std::vector<float> targets;
+  int K = 2;
+};
+
+// Frames are the rest pose perturbed; targets are a different perturbation rendered by the
+// reference, so the residual is structured like a fitting problem's.
+Case make_case(const Scene& scene, uint32_t seed, int K) {
+  Case c;
+  c.scene = scene;
+  c.K = K;
+  const RasterPlan plan = plan_raster(scene, Affine{}, static_cast<int>(scene.width),
+                                      static_cast<int>(scene.height));
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> N(0, 0.7);
+  const size_t per_cp = static_cast<size_t>(plan.n_cp) * 2;
+  for (int k = 0; k < K; ++k) {
+    std::vector<double> frame(plan.rest_cp.begin(), plan.rest_cp.end());
+    std::vector<double> target_cp = frame;
+    for (size_t i = 0; i + 6 < per_cp; ++i) {  // the 3 padding points stay at 0
+      frame[i] += N(rng);
+      target_cp[i] += 2 * N(rng);
+    }
+    c.cp.insert(c.cp.end(), frame.begin(), frame.end());
+    const auto t = ref::render(plan, target_cp);
+    for (size_t p = 0; p < t.size() / 4; ++p) {  // composite on white, as targets are
+      for (int ch = 0; ch < 3; ++ch) c.targets.push_back(static_cast<float>(t[4 * p + ch] + 1.0 - t[4 * p + 3]));
+      c.targets.push_back(1.0f);
+    }
+  }
+  return c;
+}
+
+// Analytic gradient from the kernels and the finite-difference gradient of the reference.
+std::pair<std::vector<double>, std::vector<double>> gradients(const Case& c, float* loss_cl = nullptr,
+                                                              double* loss_ref = nullptr) {
+  const RasterPlan plan = plan_raster(c.scene, Affine{}, static_cast<int>(c.scene.width),
+                                      static_cast<int>(c.scene.height));
+  ClRaster r(runtime(), plan, c.K);
+  r.set_control_points(std::vector<float>(c.cp.begin(), c.cp.end()));
+  r.set_targets(c.targets);
+  const std::array<float, 4> white{1, 1, 1, 1};
+  const float L = r.loss_and_gradient(kWeight, white);
+  if (loss_cl) *loss_cl = L;
+  const auto g = r.read_cp_gradient();
+  std::vector<double> analytic(g.begin(), g.end());
+  const std::array<double, 4> bg{1, 1, 1, 1};
+  if (loss_ref) *loss_ref = ref_loss(plan, c.cp, c.targets, c.K, bg);
+  std::vector<double> fd(c.cp.size(), 0.0);
+  const double h = 1e-5;
+  auto cp = c.cp;
+  for (size_t i = 0; i < cp.size(); ++i) {
+    if (i % (plan.n_cp * 2) >= static_cast<size_t>(plan.n_cp - 3) * 2) continue;  // padding
+    const double keep = cp[i];
+    cp[i] = keep + h;
+    const double up = ref_loss(plan, cp, c.targets, c.K, bg);
+    cp[i] = keep - h;
+    const double down = ref_loss(plan, cp, c.targets, c.K, bg);
+    cp[i] = keep;
+    fd[i] = (up - down) / (2 * h);
+  }
+  return {analytic, fd};
+}
+
+}  // namespace
+
+TEST_SUITE("raster") {
+
+TEST_CASE("loss: the kernels' blurred MSE equals the reference's") {
+  const Case c = make_case(scene_of(40, 32, {filled(circle({20, 16}, 9), {0.9f, 0.2f, 0.1f, 1}),
+                                             filled(polygon({{3, 4}, {30, 6}, {14, 28}}), {0.1f, 0.3f, 0.8f, 0.6f})}),
+                           7, 2);
+  float lc = 0;
+  double lr = 0;
+  gradients(c, &lc, &lr);
+  CHECK(lr > 0);
+  CHECK(lc == doctest::Approx(lr).epsilon(1e-4));
+}
+
+TEST_CASE("gradient of overlapping opaque and translucent fills matches finite differences") {
+  const Case c = make_case(scene_of(40, 32, {filled(circle({20, 16}, 9), {0.9f, 0.2f, 0.1f, 1}),
+                                             filled(polygon({{3, 4}, {30, 6}, {14, 28}}), {0.1f, 0.3f, 0.8f, 0.6f})}),
+                           11, 2);
+  const auto [an, fd] = gradients(c);
+  const Agreement a = compare(an, fd);
+  MESSAGE("cosine " << a.cosine << ", relative error " << a.rel_error);
+  CHECK(a.cosine > 0.99999);
+  CHECK(a.rel_error < 1e-3);
+}
+
+TEST_CASE("gradient on random scenes: curves, evenodd, opacity, off-canvas, tiny and huge shapes") {
+  std::mt19937 rng(2024);
+  std::uniform_real_distribution<double> U(0, 1);
+  for (int trial = 0; trial < 6; ++trial) {
+    const double W = 36, H = 30;
+    std::vector<Path> paths;
+    const int n = 2 + trial % 3;
+    for (int i = 0; i < n; ++i) {
+      Subpath sp;
+      sp.closed = true;
+      // Centres may sit off the canvas; radii from tiny (0.4 px) to huge (3x the canvas).
+      const double cx = -8 + (W + 16) * U(rng), cy = -8 + (H + 16) * U(rng);
+      const double r = i == 0 && trial == 4 ? 0.4 : i == 0 && trial == 5 ? 90 : 4 + 10 * U(rng);
+      const int segs = 3 + static_cast<int>(rng() % 3);
+      sp.points.push_back({cx + r, cy});
+      for (int k = 1; k <= segs; ++k) {
+        const double a0 = 2 * M_PI * (k - 1) / segs, a1 = 2 * M_PI * k / segs;
+        const double rr = r * (0.6 + 0.8 * U(rng));
+        sp.points.push_back({cx + rr * std::cos(a0 + 0.4), cy + rr * std::sin(a0 + 0.4)});
+        sp.points.push_back({cx + rr * std::cos(a1 - 0.4), cy + rr * std::sin(a1 - 0.4)});
+        sp.points.push_back({cx + r * std::cos(a1), cy + r * std::sin(a1)});
+      }
+      if (trial == 3 && i == 1) sp.points[4] = sp.points[3] + Vec2{1e-4, 0};  // nearly degenerate
+      const Rgba col{static_cast<float>(U(rng)), static_cast<float>(U(rng)),
+                     static_cast<float>(U(rng)), static_cast<float>(0.4 + 0.6 * U(rng))};
+      Path p = filled(sp, col, U(rng) < 0.4 ? FillRule::EvenOdd : FillRule::NonZero);
+      p.opacity = static_cast<float>(0.6 + 0.4 * U(rng));
+      paths.push_back(p);
+    }
+    const Case c = make_case(scene_of(W, H, paths), 100 + trial, 2);
+    const auto [an, fd] = gradients(c);
+    const Agreement a = compare(an, fd);
+    CAPTURE(trial);
+    MESSAGE("trial " << trial << ": cosine " << a.cosine << ", relative error " << a.rel_error);
+    CHECK(a.cosine > 0.99999);
+    CHECK(a.rel_error < 1e-3);
+  }
+}
+
+TEST_CASE("two runs of the backward pass give identical bits") {
+  const Case c = make_case(scene_of(40, 32, {filled(circle({20, 16}, 9), {0.9f, 0.2f, 0.1f, 1}),
+                                             filled(polygon({{3, 4}, {30, 6}, {14, 28}}), {0.1f, 0.3f, 0.8f, 0.6f})}),
+                           5, 3);
+  auto run = [&] {
+    const RasterPlan plan = plan_raster(c.scene, Affine{}, 40, 32);
+    ClRaster r(runtime(), plan, c.K);
+    r.set_control_points(std::vector<float>(c.cp.begin(), c.cp.end()));
+    r.set_targets(c.targets);
+    r.loss_and_gradient(kWeight, {1, 1, 1, 1});
+    return r.read_cp_gradient();
+  };
+  const auto a = run(), b = run();
+  REQUIRE(a.size() == b.size());
+  CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
+  double norm = 0;
+  for (float v : a) norm += v * v;
+  CHECK(norm > 0);
+}
+
+}  // TEST_SUITE
