@@ -1,9 +1,10 @@
-// `svgmotion bench render`: median time per frame of the OpenCL renderer, peak memory, device.
+// `svgmotion bench render|raster`: speed of the OpenCL renderer and of one differentiable
+// iteration (forward + loss + backward), peak memory, device; `bench raster --scaling` sweeps
+// paths, size and frames on procedural scenes to show how the cost grows.
 //
-// Times a whole batch of K frames (flatten through compositing, with the device finished) over
-// several repetitions after a warm-up that includes kernel compilation, and reports the median
-// divided by K. Kernel compilation is excluded; upload of the control points is excluded too,
-// since in fitting they are produced on the device.
+// Each measurement times whole batches of K frames with the device finished, over several
+// repetitions after a warm-up that includes kernel compilation (excluded), and reports medians.
+// Uploads of control points and targets are excluded: in fitting they live on the device.
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include "opencl/runtime.h"
 #include "raster/raster_cl.h"
 #include "raster/raster_plan.h"
+#include "scene/synthetic_scene.h"
 #include "svgmotion/error.h"
 #include "svgmotion/render_size.h"
 #include "svgmotion/svg_reader.h"
@@ -80,13 +82,120 @@ int bench_render(const std::vector<std::string>& argv) {
   return 0;
 }
 
+struct IterationTimes {
+  double forward_ms = 0, total_ms = 0;  // medians per iteration (all K frames)
+  int lines = 0;
+};
+
+// Median forward-only and forward+loss+backward times of one iteration over K frames. The
+// frames are the rest pose moved by (1.3, -0.7) px and the target is the rest pose, so the loss
+// and its gradient are not trivially zero.
+IterationTimes time_iteration(ClRuntime& rt, const Scene& scene, int width, int frames,
+                              int repeat) {
+  const RenderSize size = render_size(scene, width);
+  const RasterPlan plan = plan_raster(scene, size.view, size.width, size.height);
+  if (!plan.strokes.empty())
+    throw Error("bench raster: gradients through strokes are not available yet");
+  ClRaster r(rt, plan, frames);
+  const std::array<float, 4> white{1, 1, 1, 1};
+  r.set_rest_pose();
+  r.forward(ClRaster::Output::Float, white);
+  const auto rest = r.read_image();
+  std::vector<float> target(rest.size());
+  for (size_t i = 0; i < rest.size(); i += 4) {
+    for (int c = 0; c < 3; ++c) target[i + c] = rest[i + c] + (1.0f - rest[i + 3]);
+    target[i + 3] = 1.0f;
+  }
+  r.set_targets(target);
+  std::vector<float> cp;
+  for (int k = 0; k < frames; ++k)
+    for (size_t i = 0; i < plan.rest_cp.size(); i += 2) {
+      cp.push_back(plan.rest_cp[i] + 1.3f);
+      cp.push_back(plan.rest_cp[i + 1] - 0.7f);
+    }
+  r.set_control_points(cp);
+  r.loss_and_gradient(1000.0f, white);  // warm-up
+  std::vector<double> fwd, tot;
+  for (int i = 0; i < repeat; ++i) {
+    auto t0 = std::chrono::steady_clock::now();
+    r.forward(ClRaster::Output::Float, white);
+    r.finish();
+    fwd.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    t0 = std::chrono::steady_clock::now();
+    r.loss_and_gradient(1000.0f, white);  // returns after reading the loss: the device is done
+    tot.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
+  if (r.tape_overflow()) std::fprintf(stderr, "svgmotion: warning: backward tape overflowed\n");
+  return {median(fwd), median(tot), plan.n_lines};
+}
+
+int bench_raster(const std::vector<std::string>& argv) {
+  const Args a = parse_args("bench raster", argv, {"--frames", "--size", "--device", "--repeat"},
+                            {"--json", "--scaling"});
+  const int frames = a.get_int("--frames", 15, 1, 1000);
+  const int width = a.get_int("--size", 256, 1, 16384);
+  const int repeat = a.get_int("--repeat", 9, 1, 100000);
+  ClRuntime rt(a.get("--device").value_or("auto"));
+  if (a.has("--scaling")) {
+    // One parameter varies at a time around (100 paths, 256 px, 15 frames).
+    struct Row { const char* what; int paths, size, frames; };
+    std::vector<Row> rows;
+    for (int n : {10, 30, 100, 300, 1000}) rows.push_back({"paths", n, 256, 15});
+    for (int sz : {128, 256, 512, 1024}) rows.push_back({"size", 100, sz, 15});
+    for (int k : {1, 5, 15, 30}) rows.push_back({"frames", 100, 256, k});
+    if (!a.has("--json"))
+      std::printf("%-7s %6s %5s %6s %7s | %10s %11s %9s %12s %14s\n", "sweep", "paths", "size",
+                  "frames", "lines", "forward_ms", "backward_ms", "total_ms", "ms_per_frame",
+                  "ns_per_px_path");
+    for (const Row& row : rows) {
+      const Scene scene = synthetic_blobs(row.paths, row.size, 7);
+      const IterationTimes t = time_iteration(rt, scene, row.size, row.frames, std::max(3, repeat / 3));
+      const double per_unit = t.total_ms * 1e6 / (double(row.frames) * row.size * row.size * row.paths);
+      if (a.has("--json"))
+        std::printf("{\"sweep\": \"%s\", \"paths\": %d, \"size\": %d, \"frames\": %d, "
+                    "\"lines\": %d, \"forward_ms\": %.3f, \"backward_ms\": %.3f, "
+                    "\"total_ms\": %.3f}\n",
+                    row.what, row.paths, row.size, row.frames, t.lines, t.forward_ms,
+                    t.total_ms - t.forward_ms, t.total_ms);
+      else
+        std::printf("%-7s %6d %5d %6d %7d | %10.2f %11.2f %9.2f %12.3f %14.4f\n", row.what,
+                    row.paths, row.size, row.frames, t.lines, t.forward_ms,
+                    t.total_ms - t.forward_ms, t.total_ms, t.total_ms / row.frames, per_unit);
+      std::fflush(stdout);
+    }
+    if (!a.has("--json"))
+      std::printf("device: %s, peak memory %.1f MB\n", rt.info().name.c_str(), peak_rss_mb());
+    return 0;
+  }
+  if (a.positional.size() != 1) throw Error("bench raster: expected one input SVG (or --scaling)");
+  const Scene scene = read_svg_file(a.positional[0]);
+  const IterationTimes t = time_iteration(rt, scene, width, frames, repeat);
+  if (a.has("--json")) {
+    std::printf("{\"svg\": \"%s\", \"frames\": %d, \"size\": %d, \"lines\": %d, "
+                "\"forward_ms\": %.4f, \"backward_ms\": %.4f, \"total_ms\": %.4f, "
+                "\"total_ms_per_frame\": %.4f, \"peak_rss_mb\": %.1f, \"device\": \"%s\"}\n",
+                a.positional[0].c_str(), frames, width, t.lines, t.forward_ms,
+                t.total_ms - t.forward_ms, t.total_ms, t.total_ms / frames, peak_rss_mb(),
+                rt.info().name.c_str());
+  } else {
+    std::printf("%s: %d frames at %d px, %d lines\n", a.positional[0].c_str(), frames, width, t.lines);
+    std::printf("  per iteration: forward %.3f ms, backward (loss + gradients) %.3f ms, total %.3f ms\n",
+                t.forward_ms, t.total_ms - t.forward_ms, t.total_ms);
+    std::printf("  per frame: forward %.3f ms, total %.3f ms; peak memory %.1f MB\n",
+                t.forward_ms / frames, t.total_ms / frames, peak_rss_mb());
+    std::printf("  device: %s\n", rt.info().name.c_str());
+  }
+  return 0;
+}
+
 }  // namespace
 
 int cmd_bench(const std::vector<std::string>& argv) {
   if (argv.empty()) throw Error("bench: which benchmark? (svgmotion bench render IN.svg ...)");
   const std::vector<std::string> rest(argv.begin() + 1, argv.end());
   if (argv[0] == "render") return bench_render(rest);
-  throw Error("bench: unknown benchmark '" + argv[0] + "' (available: render)");
+  if (argv[0] == "raster") return bench_raster(rest);
+  throw Error("bench: unknown benchmark '" + argv[0] + "' (available: render, raster)");
 }
 
 }  // namespace svgm::cli

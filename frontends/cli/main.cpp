@@ -17,7 +17,9 @@ constexpr const char* kUsage = R"(svgmotion: an editable animated SVG from a sta
 usage:
   svgmotion render IN.svg -o OUT.png [--size W] [--background white|transparent] [--device D]
   svgmotion devices
-  svgmotion bench render IN.svg [--frames K] [--size N] [--json] [--device D]
+  svgmotion bench render IN.svg [--frames K] [--size N] [--repeat R] [--json] [--device D]
+  svgmotion bench raster IN.svg [--frames K] [--size N] [--repeat R] [--json] [--device D]
+  svgmotion bench raster --scaling [--json]
   svgmotion help
 
 --device picks the OpenCL device: auto (default), cpu, gpu, or part of its name.
