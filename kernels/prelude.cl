@@ -4,6 +4,11 @@
  * the defaults below are what PoCL on a CPU gets. Kernels know nothing of the host: every size
  * and offset is an argument.
  */
+/* No fused multiply-adds behind our back: a contracted a*b - c*d is not antisymmetric, so
+ * cross2(d, d) came out as ±3e-9 instead of 0 and a straight join looked like a turn. Exact
+ * and device-independent results matter more here than the last few percent of speed. */
+#pragma OPENCL FP_CONTRACT OFF
+
 #ifndef BAND_H
 #define BAND_H 16 /* rows per bin band, also the work-group height of raster kernels */
 #endif

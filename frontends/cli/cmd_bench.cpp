@@ -94,8 +94,6 @@ IterationTimes time_iteration(ClRuntime& rt, const Scene& scene, int width, int 
                               int repeat) {
   const RenderSize size = render_size(scene, width);
   const RasterPlan plan = plan_raster(scene, size.view, size.width, size.height);
-  if (!plan.strokes.empty())
-    throw Error("bench raster: gradients through strokes are not available yet");
   ClRaster r(rt, plan, frames);
   const std::array<float, 4> white{1, 1, 1, 1};
   r.set_rest_pose();

@@ -179,6 +179,30 @@ TEST_CASE("gradient on random scenes: curves, evenodd, opacity, off-canvas, tiny
   }
 }
 
+TEST_CASE("gradient through strokes with every join and cap matches finite differences") {
+  const LineJoin joins[] = {LineJoin::Miter, LineJoin::Bevel, LineJoin::Round, LineJoin::MiterClip};
+  const LineCap caps[] = {LineCap::Butt, LineCap::Square, LineCap::Round, LineCap::Round};
+  for (int t = 0; t < 4; ++t) {
+    // An open curve with a corner, a closed curved stroke over a fill, and a thin polyline.
+    Subpath open;
+    open.points = {{4.3, 20.2}, {8.1, 6.3}, {14.7, 5.2}, {17.4, 12.6}, {19.2, 17.1}, {25.5, 19.4}, {31.2, 8.3}};
+    Path a = stroked(open, 2.6, joins[t], caps[t], {0.8f, 0.1f, 0.1f, 1});
+    a.stroke.miter_limit = t == 3 ? 1.3 : 4;
+    Path b = filled(circle({20.4, 15.3}, 6.2), {0.2f, 0.6f, 0.2f, 0.8f});
+    b.has_stroke = true;
+    b.stroke = {{0.1f, 0.1f, 0.7f, 0.9f}, 1.7, joins[(t + 1) % 4], LineCap::Butt, 4};
+    Path c = stroked(polygon({{6.2, 25.1}, {14.3, 22.4}, {9.9, 27.7}, {30.3, 26.2}}, false), 1.1,
+                     joins[(t + 2) % 4], caps[(t + 1) % 4], {0.3f, 0.3f, 0.3f, 1});
+    const Case cs = make_case(scene_of(36, 30, {b, a, c}), 300 + t, 2);
+    const auto [an, fd] = gradients(cs);
+    const Agreement ag = compare(an, fd);
+    CAPTURE(t);
+    MESSAGE("strokes " << t << ": cosine " << ag.cosine << ", relative error " << ag.rel_error);
+    CHECK(ag.cosine > 0.99999);
+    CHECK(ag.rel_error < 1e-3);
+  }
+}
+
 TEST_CASE("two runs of the backward pass give identical bits") {
   const Case c = make_case(scene_of(40, 32, {filled(circle({20, 16}, 9), {0.9f, 0.2f, 0.1f, 1}),
                                              filled(polygon({{3, 4}, {30, 6}, {14, 28}}), {0.1f, 0.3f, 0.8f, 0.6f})}),

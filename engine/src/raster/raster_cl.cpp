@@ -44,7 +44,7 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames)
     // binary comes from the cache.
     cl::Program& prog =
         rt_.program({"flatten.cl", "stroke.cl", "lines.cl", "raster.cl", "raster_backward.cl",
-                     "loss.cl"},
+                     "stroke_backward.cl", "loss.cl"},
                     kernel_build_options(tuning));
     program_ = &prog;
     local_budget_ = tuning.local_budget;

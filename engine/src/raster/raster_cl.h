@@ -85,7 +85,8 @@ class ClRaster {
   bool backward_ready_ = false;
   int tape_cap_ = 0;
   cl::Kernel k_residual_, k_blur_h_, k_blur_v_, k_blur_h2_, k_blur_v2_, k_loss_rows_,
-      k_loss_total_, k_backward_, k_gather_lines_, k_gather_points_, k_flatten_back_;
+      k_loss_total_, k_backward_, k_gather_lines_, k_gather_points_, k_stroke_back_,
+      k_flatten_back_;
   cl::Buffer target_, diff_, tmp_, resid_, dimage_, row_sums_, loss_, partial_, overflow_,
       line_grad_, grad_pts_, grad_cp_, line_chunk_, pt_first_, pt_entries_, cp_first_,
       cp_entries_;

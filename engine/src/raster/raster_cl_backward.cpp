@@ -1,5 +1,6 @@
 // The OpenCL loss and backward routine of ClRaster: blurred MSE against target frames and
-// exact gradients down to the control points (kernels/loss.cl, raster_backward.cl, flatten.cl).
+// exact gradients down to the control points (kernels/loss.cl, raster_backward.cl,
+// stroke_backward.cl, flatten.cl).
 #include <algorithm>
 
 #include "raster/raster_cl.h"
@@ -38,6 +39,7 @@ void ClRaster::init_backward() {
     k_backward_ = cl::Kernel(prog, "raster_backward");
     k_gather_lines_ = cl::Kernel(prog, "gather_line_grads");
     k_gather_points_ = cl::Kernel(prog, "gather_point_grads");
+    k_stroke_back_ = cl::Kernel(prog, "stroke_backward");
     k_flatten_back_ = cl::Kernel(prog, "flatten_backward");
 
     if (!image_()) image_ = make(pixels * 4 * sizeof(float));
@@ -91,6 +93,8 @@ void ClRaster::init_backward() {
     set_args(k_gather_lines_, lines_, line_chunk_, bounds_, partial_, line_grad_, p.n_lines,
              n_chunks, bands_, W, H);
     set_args(k_gather_points_, line_grad_, pt_first_, pt_entries_, grad_pts_, p.n_lines, p.n_pts);
+    set_args(k_stroke_back_, pts_, grad_pts_, sp_a_, sp_b_, sp_f_, vert_join_,
+             static_cast<int>(p.strokes.size()), p.n_pts);
     set_args(k_flatten_back_, grad_pts_, vert_w_, cp_first_, cp_entries_, grad_cp_, p.n_cp,
              p.n_pts);
   } catch (const cl::Error& e) {
@@ -111,8 +115,6 @@ void ClRaster::set_targets(const std::vector<float>& rgba) {
 
 float ClRaster::loss_and_gradient(float weight, const std::array<float, 4>& background) {
   init_backward();
-  if (!plan_.strokes.empty())
-    throw Error("internal: gradients through strokes are not implemented yet");
   const auto& p = plan_;
   const size_t K = static_cast<size_t>(frames_);
   const size_t pixels = K * p.height * static_cast<size_t>(p.width);
@@ -139,6 +141,8 @@ float ClRaster::loss_and_gradient(float weight, const std::array<float, 4>& back
            cl::NDRange(group_, 1));
     launch("gather_line_grads", k_gather_lines_, cl::NDRange(round_up(p.n_lines, 64), K));
     launch("gather_point_grads", k_gather_points_, cl::NDRange(round_up(p.n_pts, 64), K));
+    if (!p.strokes.empty())
+      launch("stroke_backward", k_stroke_back_, cl::NDRange(round_up(p.strokes.size(), 8), K));
     launch("flatten_backward", k_flatten_back_, cl::NDRange(round_up(p.n_cp, 64), K));
     float loss = 0;
     q.enqueueReadBuffer(loss_, CL_TRUE, 0, sizeof(float), &loss);
