@@ -10,27 +10,17 @@
  *     ∂L/∂C = G ∗ (2 w / N · E)
  *
  * because a separable convolution with a symmetric kernel and zero padding is its own adjoint
- * (the plain form: ∂L/∂C[p] = Σ_q G[q - p] · 2w/N · E[q], the same stencil). So the backward is
- * the forward blur applied to the scaled residual. Every pass is one work-item per pixel of all
- * K frames, reading a 5-tap neighbourhood: no atomics, and the loss itself is reduced in a fixed
- * order (rows, then one work-item over the rows), so it is bit-reproducible.
+ * (the plain form: ∂L/∂C[p] = Σ_q G[q - p] · 2w/N · E[q], the same stencil). The backward
+ * raster pass needs ∂L/∂C only at pixels an edge crosses, a few percent of all pixels, so it
+ * evaluates this 5x5 stencil there (blurred_gradient below) instead of blurring every pixel.
+ *
+ * The forward raster writes D = C − T already blurred along x (raster.cl, OUT_RESIDUAL; the
+ * stand-alone x pass is blur_pass); blur_y_loss_rows blurs along y, keeps E and sums E² per
+ * row; loss_total adds the rows in a fixed order. No atomics anywhere: the loss is
+ * bit-reproducible.
  */
 
-/* g for j = 0, ±1, ±2: exp(-j²/2) normalised (0.40262, 0.24420, 0.05449). */
-#define G0 0.4026199469f
-#define G1 0.2442019099f
-#define G2 0.0544886845f
-
-/* D = (C over background) - T for every pixel; premultiplied RGBA in, RGB difference out. */
-__kernel void loss_residual(__global const float4* image,  /* [K][H][W] premultiplied RGBA */
-                            __global const float4* target, /* [K][H][W] RGB (w unused) */
-                            __global float4* diff, float4 background, int n_pixels) {
-  const int i = get_global_id(0);
-  if (i >= n_pixels) return;
-  const float4 c = image[i];
-  const float3 rgb = c.xyz + background.xyz * (1.0f - c.w);
-  diff[i] = (float4)(rgb - target[i].xyz, 0.0f);
-}
+/* G0, G1, G2: the 1-D Gaussian taps, defined in prelude.cl. */
 
 /* One separable pass of the blur, along x (dir = 0) or y (dir = 1), times `scale`. */
 __kernel void blur_pass(__global const float4* src, __global float4* dst, float scale, int dir,
@@ -48,15 +38,44 @@ __kernel void blur_pass(__global const float4* src, __global float4* dst, float 
   dst[(size_t)k * width * height + pos] = scale * s;
 }
 
-/* Per (row, frame): the sum of E² over the row's pixels and channels. */
-__kernel void loss_rows(__global const float4* E, __global float* row_sums, int width,
-                        int height, int frames) {
+/* Per (row, frame): E = the y-blur of the x-blurred residual for the row, kept for the
+ * backward pass, and the row's Σ E² over pixels and channels (in x order). */
+__kernel void blur_y_loss_rows(__global const float4* src, __global float4* E,
+                               __global float* row_sums, int width, int height, int frames) {
   const int y = get_global_id(0), k = get_global_id(1);
   if (y >= height || k >= frames) return;
-  __global const float4* e = E + ((size_t)k * height + y) * width;
+  __global const float4* f = src + (size_t)k * width * height;
+  __global float4* e = E + ((size_t)k * height + y) * width;
   float s = 0.0f;
-  for (int x = 0; x < width; ++x) s += dot(e[x].xyz, e[x].xyz);
+  for (int x = 0; x < width; ++x) {
+    const int pos = y * width + x;
+    float4 v = G0 * f[pos];
+    if (y >= 1) v += G1 * f[pos - width];
+    if (y + 1 < height) v += G1 * f[pos + width];
+    if (y >= 2) v += G2 * f[pos - 2 * width];
+    if (y + 2 < height) v += G2 * f[pos + 2 * width];
+    e[x] = v;
+    s += dot(v.xyz, v.xyz);
+  }
   row_sums[(size_t)k * height + y] = s;
+}
+
+/* ∂L/∂C at pixel (x, y) of a frame: the 5x5 stencil of G over E, times 2w/N. */
+inline float3 blurred_gradient(__global const float4* E, int x, int y, int width, int height,
+                               float scale) {
+  const float g[5] = {G2, G1, G0, G1, G2};
+  float3 s = (float3)(0.0f);
+  for (int dy = -2; dy <= 2; ++dy) {
+    const int yy = y + dy;
+    if (yy < 0 || yy >= height) continue;
+    float3 row = (float3)(0.0f);
+    for (int dx = -2; dx <= 2; ++dx) {
+      const int xx = x + dx;
+      if (xx >= 0 && xx < width) row += g[dx + 2] * E[yy * width + xx].xyz;
+    }
+    s += g[dy + 2] * row;
+  }
+  return scale * s;
 }
 
 /* One work-item: L = scale · Σ row sums (in order), and per-frame losses. */

@@ -30,6 +30,12 @@
 #define CAP_ROUND 1
 #define CAP_SQUARE 2
 
+/* The loss's 1-D Gaussian (σ = 1, 5 taps; paper, appendix): g_j = exp(-j²/2) normalised over
+ * j = -2..2, for j = 0, ±1, ±2. Used by loss.cl and by raster.cl's fused residual pass. */
+#define G0 0.4026199469f
+#define G1 0.2442019099f
+#define G2 0.0544886845f
+
 inline float cross2(float2 a, float2 b) { return a.x * b.y - a.y * b.x; }
 
 /* Coverage from the winding integral a of one pixel (the box-filtered winding number). */

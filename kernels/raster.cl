@@ -132,10 +132,12 @@ __kernel void chunk_bounds(__global const float4* lines,    /* [K][n_lines] */
   bounds[(size_t)k * n_chunks + c] = b;
 }
 
-/* Output of one band: premultiplied float RGBA for the fitter and tests (OUT_FLOAT), or 8-bit
- * straight RGBA over a background for rendering (OUT_RGBA8). */
+/* Output of one band: premultiplied float RGBA for tests and previews (OUT_FLOAT), 8-bit
+ * straight RGBA over a background for rendering (OUT_RGBA8), or for fitting the residual
+ * (C over background) − target blurred along x, the loss's first step (OUT_RESIDUAL). */
 #define OUT_FLOAT 0
 #define OUT_RGBA8 1
+#define OUT_RESIDUAL 2
 
 inline uchar4 to_rgba8_pixel(float4 c, float4 background) {
   c = c + background * (1.0f - c.w);
@@ -155,6 +157,7 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
                      __local float4* band_rgba,         /* [BAND_H][W] */
                      __global float4* image,            /* [K][H][W] premultiplied (OUT_FLOAT) */
                      __global uchar4* rgba8,            /* [K][H][W] (OUT_RGBA8) */
+                     __global const float4* target,     /* [K][H][W] RGB (OUT_RESIDUAL) */
                      float4 background, int out_mode,
                      int n_lines, int n_chunks, int n_draws, int width, int height) {
   /* One work-group per (band, frame). Clearing and the final write are spread over the group's
@@ -210,6 +213,30 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
   } else if (out_mode == OUT_RGBA8) {
     for (int i = lid; i < rows * width; i += lsize)
       rgba8[base + i] = to_rgba8_pixel(band_rgba[i], background);
+  } else if (out_mode == OUT_RESIDUAL) {
+    /* D = C over background − T, then the x pass of the loss's blur while the rows are local
+     * (loss.cl's blur_pass along x, fused here to save a pass over every pixel). */
+    for (int i = lid; i < rows * width; i += lsize) {
+      const float4 c = band_rgba[i];
+      band_rgba[i] = (float4)(c.xyz + background.xyz * (1.0f - c.w) - target[base + i].xyz, 0.0f);
+    }
+    barrier(CLK_LOCAL_MEM_FENCE);
+    for (int r = lid; r < rows; r += lsize) {
+      __local const float4* f = band_rgba + r * width;
+      __global float4* o = image + base + (size_t)r * width;
+      for (int x = 0; x < width; ++x) {
+        float4 v = G0 * f[x];
+        if (x >= 2 && x + 2 < width) {
+          v += G1 * (f[x - 1] + f[x + 1]) + G2 * (f[x - 2] + f[x + 2]);
+        } else {
+          if (x >= 1) v += G1 * f[x - 1];
+          if (x + 1 < width) v += G1 * f[x + 1];
+          if (x >= 2) v += G2 * f[x - 2];
+          if (x + 2 < width) v += G2 * f[x + 2];
+        }
+        o[x] = v;
+      }
+    }
   } else {
     for (int i = lid; i < rows * width; i += lsize) image[base + i] = band_rgba[i];
   }

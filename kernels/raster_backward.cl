@@ -1,6 +1,7 @@
 /* raster_backward.cl: exact gradients of the rendered frames with respect to every line endpoint.
  *
- * Built in one program after raster.cl (it reuses accumulate_line and the band structure).
+ * Built in one program after raster.cl and loss.cl (it reuses accumulate_line, the band
+ * structure and blurred_gradient).
  *
  * Compositing. A draw i composites α_i = coverage_i · alpha_i over what is below it. With T_i
  * the transmittance of the draws in front of it, Π_{j>i} (1 − α_j), and B_i the colour below it
@@ -77,8 +78,9 @@ inline void replay_span(__local float* acc, __local float4* out, int xlo, int xh
 
 /* The top-down sweep of one draw's span: g(p) into gcell, then T *= (1 - α). */
 inline void backward_span(__local float* acc, __local float* T, __local float* gcell,
-                          __global const float4* dimg, int xlo, int xhi, int width, float4 color,
-                          int rule, __local const float4* tape, int* tp, int cap) {
+                          __global const float4* E, int row, int height, float scale, int xlo,
+                          int xhi, int width, float4 color, int rule, __local const float4* tape,
+                          int* tp, int cap) {
   float s = 0.0f;
   const int xe = min(xhi, width - 1);
   for (int x = xlo; x <= xe; ++x) {
@@ -87,7 +89,7 @@ inline void backward_span(__local float* acc, __local float* T, __local float* g
     float g = 0.0f;
     if (is_fractional(s, rule)) {
       if (*tp < cap) {
-        const float3 dC = dimg[x].xyz;
+        const float3 dC = blurred_gradient(E, x, row, width, height, scale);
         const float ga = dot(dC, T[x] * (color.xyz - tape[*tp].xyz));
         g = ga * color.w * sign(fold(s, rule));
       }
@@ -157,7 +159,8 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               __global const float4* draw_color,  /* [n_draws] */
                               __global const int* draw_rule,      /* [n_draws] */
                               __global const float4* bounds,      /* [K][n_chunks] */
-                              __global const float4* dimage,      /* [K][H][W] ∂L/∂C (rgb) */
+                              __global const float4* E,           /* [K][H][W] blurred residual */
+                              float grad_scale,                   /* 2w/N: ∂L/∂C = G ∗ (scale E) */
                               float4 background,
                               __local float* acc,                 /* [BAND_H][W + 2] */
                               __local float4* band_rgba,          /* [BAND_H][W] */
@@ -185,7 +188,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
   if (lid == 0) {
     __global const float4* L = lines + (size_t)k * n_lines;
     __global const float4* B = bounds + (size_t)k * n_chunks;
-    __global const float4* dimg = dimage + ((size_t)k * height + y0) * width;
+    __global const float4* Ek = E + (size_t)k * height * width;
     int xlo[BAND_H], xhi[BAND_H];
     for (int r = 0; r < BAND_H; ++r) { xlo[r] = width; xhi[r] = -1; }
     int tp = 0;
@@ -244,8 +247,8 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
         slo[r] = xlo[r];
         shi[r] = min(xhi[r], width - 1);
         if (xhi[r] >= xlo[r])
-          backward_span(acc + r * stride, band_T + r * width, gcell + r * width, dimg + r * width,
-                        xlo[r], xhi[r], width, color, rule, tape, &tq, tape_cap);
+          backward_span(acc + r * stride, band_T + r * width, gcell + r * width, Ek, y0 + r, height,
+                        grad_scale, xlo[r], xhi[r], width, color, rule, tape, &tq, tape_cap);
         xlo[r] = width;
         xhi[r] = -1;
       }

@@ -43,8 +43,8 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames)
     // One program for the forward and backward kernels: PoCL compiles it once, then the
     // binary comes from the cache.
     cl::Program& prog =
-        rt_.program({"flatten.cl", "stroke.cl", "lines.cl", "raster.cl", "raster_backward.cl",
-                     "stroke_backward.cl", "loss.cl"},
+        rt_.program({"flatten.cl", "stroke.cl", "lines.cl", "raster.cl", "loss.cl",
+                     "raster_backward.cl", "stroke_backward.cl"},
                     kernel_build_options(tuning));
     program_ = &prog;
     local_budget_ = tuning.local_budget;
@@ -96,12 +96,12 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames)
     set_args(k_raster_, lines_, draw_chunks_, chunk_lines_, draw_color_, draw_rule_, bounds_,
              cl::Local(static_cast<size_t>(band_h_) * (p.width + 2) * sizeof(float)),
              cl::Local(static_cast<size_t>(band_h_) * p.width * 4 * sizeof(float)));
-    // Arguments 8..11 (outputs) are set by forward().
-    k_raster_.setArg(12, p.n_lines);
-    k_raster_.setArg(13, n_chunks);
-    k_raster_.setArg(14, n_draws);
-    k_raster_.setArg(15, p.width);
-    k_raster_.setArg(16, p.height);
+    // Arguments 8..12 (outputs) are set by forward().
+    k_raster_.setArg(13, p.n_lines);
+    k_raster_.setArg(14, n_chunks);
+    k_raster_.setArg(15, n_draws);
+    k_raster_.setArg(16, p.width);
+    k_raster_.setArg(17, p.height);
   } catch (const cl::Error& e) {
     throw Error(std::string("OpenCL setup of the rasteriser failed on ") + rt_.info().name +
                 ": " + e.what() + " " + cl_status_name(e.err()));
@@ -131,13 +131,16 @@ void ClRaster::forward(Output output, const std::array<float, 4>& background) {
   const size_t pixels = K * p.height * static_cast<size_t>(p.width);
   events_.clear();
   try {
-    // Arguments 8..11: where the band results go (the unused output gets any valid buffer).
-    if (output == Output::Float && !image_()) image_ = make(pixels * 4 * sizeof(float));
+    // Arguments 8..12: where the band results go (an unused output gets any valid buffer).
+    if (output != Output::Rgba8 && !image_()) image_ = make(pixels * 4 * sizeof(float));
     if (output == Output::Rgba8 && !rgba_()) rgba_ = make(pixels * 4);
+    if (output == Output::Residual && !target_())
+      throw Error("internal: a residual forward pass needs targets (set_targets)");
     k_raster_.setArg(8, image_() ? image_ : rgba_);
     k_raster_.setArg(9, rgba_() ? rgba_ : image_);
-    k_raster_.setArg(10, cl_float4{{background[0], background[1], background[2], background[3]}});
-    k_raster_.setArg(11, output == Output::Rgba8 ? 1 : 0);
+    k_raster_.setArg(10, target_() ? target_ : (image_() ? image_ : rgba_));
+    k_raster_.setArg(11, cl_float4{{background[0], background[1], background[2], background[3]}});
+    k_raster_.setArg(12, static_cast<int>(output));
 
     if (p.n_flat > 0) launch("flatten", k_flatten_, cl::NDRange(round_up(p.n_flat, wg), K));
     if (!p.strokes.empty()) launch("stroke", k_stroke_, cl::NDRange(round_up(p.strokes.size(), 8), K));

@@ -28,10 +28,12 @@ class ClRaster {
   // Uploads the plan's rest pose into every frame.
   void set_rest_pose();
 
-  enum class Output { Float, Rgba8 };
+  // Values match OUT_* in kernels/raster.cl.
+  enum class Output { Float = 0, Rgba8 = 1, Residual = 2 };
   // Enqueues the forward pass; returns at once (the queue is in order). Float keeps
   // premultiplied float RGBA images (read_image); Rgba8 writes 8-bit straight RGBA over
-  // `background`, premultiplied ({1,1,1,1} white, {0,0,0,0} transparent) (read_rgba8).
+  // `background`, premultiplied ({1,1,1,1} white, {0,0,0,0} transparent) (read_rgba8);
+  // Residual writes (image over background) − target, the loss's first step.
   void forward(Output output = Output::Float, const std::array<float, 4>& background = {});
   // Blocks until the queue is idle.
   void finish();
@@ -56,8 +58,7 @@ class ClRaster {
   std::vector<float> read_frame_losses();
   // ∂L/∂(control points): frames * n_cp (x, y) pairs, of the last loss_and_gradient.
   std::vector<float> read_cp_gradient();
-  // ∂L/∂(composited image) RGBA floats, and ∂L/∂(points) pairs, for tests.
-  std::vector<float> read_image_gradient();
+  // ∂L/∂(points) pairs, for tests.
   std::vector<float> read_point_gradient();
   cl::Buffer& cp_gradient_buffer() { return grad_cp_; }
   // Largest tape a band needed beyond its capacity in the last backward pass (0: none). The
@@ -84,10 +85,9 @@ class ClRaster {
 
   bool backward_ready_ = false;
   int tape_cap_ = 0;
-  cl::Kernel k_residual_, k_blur_h_, k_blur_v_, k_blur_h2_, k_blur_v2_, k_loss_rows_,
-      k_loss_total_, k_backward_, k_gather_lines_, k_gather_points_, k_stroke_back_,
-      k_flatten_back_;
-  cl::Buffer target_, diff_, tmp_, resid_, dimage_, row_sums_, loss_, partial_, overflow_,
+  cl::Kernel k_blur_y_loss_, k_loss_total_, k_backward_, k_gather_lines_,
+      k_gather_points_, k_stroke_back_, k_flatten_back_;
+  cl::Buffer target_, resid_, row_sums_, loss_, partial_, overflow_,
       line_grad_, grad_pts_, grad_cp_, line_chunk_, pt_first_, pt_entries_, cp_first_,
       cp_entries_;
   cl::Kernel k_flatten_, k_stroke_, k_lines_, k_bounds_, k_raster_;

@@ -29,12 +29,7 @@ void ClRaster::init_backward() {
   const int n_chunks = static_cast<int>(p.chunk_lines.size() / 2);
   try {
     cl::Program& prog = *program_;
-    k_residual_ = cl::Kernel(prog, "loss_residual");
-    k_blur_h_ = cl::Kernel(prog, "blur_pass");
-    k_blur_v_ = cl::Kernel(prog, "blur_pass");
-    k_blur_h2_ = cl::Kernel(prog, "blur_pass");
-    k_blur_v2_ = cl::Kernel(prog, "blur_pass");
-    k_loss_rows_ = cl::Kernel(prog, "loss_rows");
+    k_blur_y_loss_ = cl::Kernel(prog, "blur_y_loss_rows");
     k_loss_total_ = cl::Kernel(prog, "loss_total");
     k_backward_ = cl::Kernel(prog, "raster_backward");
     k_gather_lines_ = cl::Kernel(prog, "gather_line_grads");
@@ -44,10 +39,7 @@ void ClRaster::init_backward() {
 
     if (!image_()) image_ = make(pixels * 4 * sizeof(float));
     if (!target_()) target_ = make(pixels * 4 * sizeof(float));
-    diff_ = make(pixels * 4 * sizeof(float));
-    tmp_ = make(pixels * 4 * sizeof(float));
     resid_ = make(pixels * 4 * sizeof(float));
-    dimage_ = make(pixels * 4 * sizeof(float));
     row_sums_ = make(K * p.height * sizeof(float));
     loss_ = make((K + 1) * sizeof(float));
     partial_ = make(K * p.n_lines * static_cast<size_t>(bands_) * 4 * sizeof(float));
@@ -72,17 +64,13 @@ void ClRaster::init_backward() {
                   std::to_string(local_budget_));
     tape_cap_ = static_cast<int>((local_budget_ - fixed) / 16);
 
-    const int n = static_cast<int>(pixels);
-    set_args(k_residual_, image_, target_, diff_, cl_float4{{0, 0, 0, 0}}, n);
     const int W = p.width, H = p.height, F = frames_;
-    set_args(k_blur_h_, diff_, tmp_, 1.0f, 0, W, H, F);
-    set_args(k_blur_v_, tmp_, resid_, 1.0f, 1, W, H, F);
-    set_args(k_loss_rows_, resid_, row_sums_, W, H, F);
+    // The residual forward pass writes the x-blurred residual into image_; blur it along y
+    // with the row sums of E² (kernels/loss.cl).
+    set_args(k_blur_y_loss_, image_, resid_, row_sums_, W, H, F);
     set_args(k_loss_total_, row_sums_, loss_, 1.0f, H, F);
-    set_args(k_blur_h2_, resid_, tmp_, 1.0f, 0, W, H, F);
-    set_args(k_blur_v2_, tmp_, dimage_, 1.0f, 1, W, H, F);
     set_args(k_backward_, lines_, draw_chunks_, chunk_lines_, draw_color_, draw_rule_, bounds_,
-             dimage_, cl_float4{{0, 0, 0, 0}},
+             resid_, 1.0f, cl_float4{{0, 0, 0, 0}},
              cl::Local(static_cast<size_t>(band_h_) * (p.width + 2) * sizeof(float)),
              cl::Local(static_cast<size_t>(band_h_) * p.width * 4 * sizeof(float)),
              cl::Local(static_cast<size_t>(band_h_) * p.width * sizeof(float)),
@@ -122,21 +110,14 @@ float ClRaster::loss_and_gradient(float weight, const std::array<float, 4>& back
   // L = weight / N · Σ E², N = K·H·W·3; ∂L/∂C = blur(2 · weight / N · E).
   const float scale = weight / static_cast<float>(pixels * 3);
   try {
-    forward(Output::Float, background);
+    forward(Output::Residual, background);
     auto& q = rt_.queue();
-    k_residual_.setArg(3, bg);
-    k_backward_.setArg(7, bg);
+    k_backward_.setArg(7, 2.0f * scale);
+    k_backward_.setArg(8, bg);
     k_loss_total_.setArg(2, scale);
-    k_blur_h2_.setArg(2, 2.0f * scale);
     q.enqueueFillBuffer(overflow_, 0, 0, sizeof(int));
-    const cl::NDRange px(round_up(p.width, 16), round_up(p.height, 4), K);
-    launch("loss_residual", k_residual_, cl::NDRange(round_up(pixels, 256)));
-    launch("blur_x", k_blur_h_, px, cl::NDRange(16, 4, 1));
-    launch("blur_y", k_blur_v_, px, cl::NDRange(16, 4, 1));
-    launch("loss_rows", k_loss_rows_, cl::NDRange(round_up(p.height, 16), K));
+    launch("blur_y_loss_rows", k_blur_y_loss_, cl::NDRange(round_up(p.height, 16), K));
     launch("loss_total", k_loss_total_, cl::NDRange(1));
-    launch("blur_x_back", k_blur_h2_, px, cl::NDRange(16, 4, 1));
-    launch("blur_y_back", k_blur_v2_, px, cl::NDRange(16, 4, 1));
     launch("raster_backward", k_backward_, cl::NDRange(bands_ * group_, K),
            cl::NDRange(group_, 1));
     launch("gather_line_grads", k_gather_lines_, cl::NDRange(round_up(p.n_lines, 64), K));
@@ -163,12 +144,6 @@ std::vector<float> ClRaster::read_frame_losses() {
 std::vector<float> ClRaster::read_cp_gradient() {
   std::vector<float> out(static_cast<size_t>(frames_) * plan_.n_cp * 2);
   rt_.queue().enqueueReadBuffer(grad_cp_, CL_TRUE, 0, out.size() * sizeof(float), out.data());
-  return out;
-}
-
-std::vector<float> ClRaster::read_image_gradient() {
-  std::vector<float> out(static_cast<size_t>(frames_) * plan_.height * plan_.width * 4);
-  rt_.queue().enqueueReadBuffer(dimage_, CL_TRUE, 0, out.size() * sizeof(float), out.data());
   return out;
 }
 
