@@ -31,7 +31,7 @@ cl::Buffer ClRaster::make(size_t bytes, const void* host) {
 }
 
 ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames)
-    : rt_(rt), plan_(plan), frames_(frames) {
+    : rt_(rt), plan_(plan), frames_(frames), active_(frames) {
   if (frames < 1) throw Error("frame count must be at least 1");
   const auto& p = plan_;
   const size_t K = static_cast<size_t>(frames);
@@ -124,9 +124,15 @@ void ClRaster::set_rest_pose() {
   set_control_points(all);
 }
 
+void ClRaster::set_active_frames(int n) {
+  if (n < 1 || n > frames_)
+    throw Error("internal: active frames " + std::to_string(n) + " outside 1.." + std::to_string(frames_));
+  active_ = n;
+}
+
 void ClRaster::forward(Output output, const std::array<float, 4>& background) {
   const auto& p = plan_;
-  const size_t K = static_cast<size_t>(frames_);
+  const size_t K = static_cast<size_t>(active_);
   const size_t wg = 64;  // a multiple of every device's preferred work-group granularity
   const size_t pixels = K * p.height * static_cast<size_t>(p.width);
   events_.clear();

@@ -21,6 +21,13 @@ class ClRaster {
   ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames);
 
   int frames() const { return frames_; }
+  // Launches cover the first `n` frames only (1..frames()): the fitter activates keyframes
+  // progressively, and the loss is the mean over the active ones.
+  void set_active_frames(int n);
+  int active_frames() const { return active_; }
+  // The device buffers of control points ([K][n_cp] float2) and of ∂L/∂(control points), for
+  // stages that produce or consume them on the device (the fitter's motion model).
+  cl::Buffer& cp_buffer() { return cp_; }
   const RasterPlan& plan() const { return plan_; }
 
   // Uploads control points for all frames: frames * n_cp (x, y) pairs.
@@ -54,6 +61,9 @@ class ClRaster {
   // `weight` multiplies the mean of the squared blurred residual; the frames are composited
   // over `background` (premultiplied).
   float loss_and_gradient(float weight, const std::array<float, 4>& background);
+  // The same without waiting: enqueues everything; the loss is read later with read_loss().
+  void enqueue_loss_and_gradient(float weight, const std::array<float, 4>& background);
+  float read_loss();
   // Per-frame losses of the last loss_and_gradient (each already weighted).
   std::vector<float> read_frame_losses();
   // ∂L/∂(control points): frames * n_cp (x, y) pairs, of the last loss_and_gradient.
@@ -77,6 +87,7 @@ class ClRaster {
   ClRuntime& rt_;
   RasterPlan plan_;
   int frames_;
+  int active_ = 0;
   int band_h_ = 16, bands_ = 0, group_ = 1;
   size_t device_bytes_ = 0;
   std::vector<std::pair<std::string, cl::Event>> events_;

@@ -102,9 +102,20 @@ void ClRaster::set_targets(const std::vector<float>& rgba) {
 }
 
 float ClRaster::loss_and_gradient(float weight, const std::array<float, 4>& background) {
+  enqueue_loss_and_gradient(weight, background);
+  return read_loss();
+}
+
+float ClRaster::read_loss() {
+  float loss = 0;
+  rt_.queue().enqueueReadBuffer(loss_, CL_TRUE, 0, sizeof(float), &loss);
+  return loss;
+}
+
+void ClRaster::enqueue_loss_and_gradient(float weight, const std::array<float, 4>& background) {
   init_backward();
   const auto& p = plan_;
-  const size_t K = static_cast<size_t>(frames_);
+  const size_t K = static_cast<size_t>(active_);
   const size_t pixels = K * p.height * static_cast<size_t>(p.width);
   const cl_float4 bg{{background[0], background[1], background[2], background[3]}};
   // L = weight / N · Σ E², N = K·H·W·3; ∂L/∂C = blur(2 · weight / N · E).
@@ -115,6 +126,8 @@ float ClRaster::loss_and_gradient(float weight, const std::array<float, 4>& back
     k_backward_.setArg(7, 2.0f * scale);
     k_backward_.setArg(8, bg);
     k_loss_total_.setArg(2, scale);
+    k_loss_total_.setArg(4, active_);
+    k_blur_y_loss_.setArg(5, active_);
     q.enqueueFillBuffer(overflow_, 0, 0, sizeof(int));
     launch("blur_y_loss_rows", k_blur_y_loss_, cl::NDRange(round_up(p.height, 16), K));
     launch("loss_total", k_loss_total_, cl::NDRange(1));
@@ -125,9 +138,6 @@ float ClRaster::loss_and_gradient(float weight, const std::array<float, 4>& back
     if (!p.strokes.empty())
       launch("stroke_backward", k_stroke_back_, cl::NDRange(round_up(p.strokes.size(), 8), K));
     launch("flatten_backward", k_flatten_back_, cl::NDRange(round_up(p.n_cp, 64), K));
-    float loss = 0;
-    q.enqueueReadBuffer(loss_, CL_TRUE, 0, sizeof(float), &loss);
-    return loss;
   } catch (const cl::Error& e) {
     throw Error(std::string("OpenCL backward pass failed on ") + rt_.info().name + ": " +
                 e.what() + " " + cl_status_name(e.err()));
@@ -135,7 +145,7 @@ float ClRaster::loss_and_gradient(float weight, const std::array<float, 4>& back
 }
 
 std::vector<float> ClRaster::read_frame_losses() {
-  std::vector<float> out(static_cast<size_t>(frames_) + 1);
+  std::vector<float> out(static_cast<size_t>(active_) + 1);
   rt_.queue().enqueueReadBuffer(loss_, CL_TRUE, 0, out.size() * sizeof(float), out.data());
   out.erase(out.begin());
   return out;
