@@ -12,7 +12,7 @@ packages=(
   cmake ninja-build g++ pkg-config ccache
   ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd
   libclblast-dev libeigen3-dev libpugixml-dev libopencv-dev libspdlog-dev libyaml-cpp-dev
-  libpng-dev doctest-dev
+  libpng-dev doctest-dev nlohmann-json3-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -9,6 +9,7 @@ namespace svgm::cli {
 int cmd_render(const std::vector<std::string>& args);
 int cmd_devices(const std::vector<std::string>& args);
 int cmd_bench(const std::vector<std::string>& args);
+int cmd_fit(const std::vector<std::string>& args);
 
 
 }  // namespace svgm::cli

@@ -16,6 +16,8 @@ constexpr const char* kUsage = R"(svgmotion: an editable animated SVG from a sta
 
 usage:
   svgmotion render IN.svg -o OUT.png [--size W] [--background white|transparent] [--device D]
+  svgmotion fit IN.svg --target VIDEO|FRAMES_DIR -o OUT_DIR [--iterations N] [--keyframes K]
+                [--size N] [--palette P.json] [--resume] [--no-track] [--device D]
   svgmotion devices
   svgmotion bench render IN.svg [--frames K] [--size N] [--repeat R] [--json] [--device D]
   svgmotion bench raster IN.svg [--frames K] [--size N] [--repeat R] [--json] [--device D]
@@ -39,6 +41,7 @@ int main(int argc, char** argv) {
     if (cmd == "render") return svgm::cli::cmd_render(args);
     if (cmd == "devices") return svgm::cli::cmd_devices(args);
     if (cmd == "bench") return svgm::cli::cmd_bench(args);
+    if (cmd == "fit") return svgm::cli::cmd_fit(args);
     std::fprintf(stderr, "svgmotion: unknown command '%s' (try svgmotion help)\n", cmd.c_str());
     return 2;
   } catch (const svgm::Error& e) {

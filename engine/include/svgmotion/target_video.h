@@ -1,0 +1,65 @@
+// The fitter's target: the motion video (or folder of numbered PNG frames) reduced to K
+// uniformly sampled keyframes at the SVG's render size, each with a foreground mask, a cleaned
+// copy (background noise whitened) and a distance field to the foreground.
+//
+// The fitter compares renders of the SVG against `rgba`, uses `mask`/`sdf` to pull shapes
+// towards the figure, and shows `raw` in previews. OpenCV does the decoding, but no OpenCV type
+// appears here, so including this header costs nothing.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace svgm {
+
+struct TargetOptions {
+  int keyframes = 15;            // K: uniformly sampled frames, first and last included
+  double white_threshold = 0.9;  // a pixel is foreground when its darkest channel < this (0..1]
+  double min_component_fraction = 0.02;  // keep components with area >= this * the largest
+  // Dilation radius of the foreground mask, in pixels: a Euclidean disc of this radius (offsets
+  // with dx² + dy² <= r²), so 1 is the 3x3 cross; 0 = no dilation.
+  int dilate_px = 1;
+};
+
+struct TargetFrames {
+  int width = 0, height = 0, keyframes = 0;
+  int source_frames = 0;          // frames in the video / folder
+  double fps = 24;                // from the video (folders, or videos without a rate: 24)
+  std::vector<int> source_index;  // source frame of each keyframe: round(k * (N-1) / (K-1))
+  // K*H*W*4, row-major per keyframe: the cleaned target, straight RGB in [0,1], A = 1; pixels
+  // outside the dilated mask are exactly white (1, 1, 1).
+  std::vector<float> rgba;
+  std::vector<float> raw;     // K*H*W*4: the resized frames before cleanup (A = 1)
+  std::vector<uint8_t> mask;  // K*H*W: 1 = foreground (after the component filter + dilation)
+  // K*H*W: Euclidean distance in pixels from the pixel centre to the nearest foreground pixel
+  // centre (0 inside the mask). A keyframe without foreground holds width + height everywhere.
+  std::vector<float> sdf;
+};
+
+// What a source holds, without decoding more than needed to count: the native frame size,
+// the number of frames (counted by reading, since containers' frame counts can be wrong) and
+// the frame rate (24 for folders or when the container has none).
+struct TargetInfo {
+  int width = 0, height = 0, frames = 0;
+  double fps = 24;
+};
+
+// `source`: a video file (mp4, webm, avi, mov: whatever OpenCV's FFmpeg back end reads) or a
+// folder of numbered PNG frames, ordered by the last number in each name (000.png,
+// frame_12.png). PNGs with alpha are composited over white. Throws svgm::Error
+// "<path>: <problem>" for a missing/unreadable source, a folder without PNGs or with PNGs that
+// are unnumbered, numbered alike, unreadable or of different sizes.
+TargetInfo probe_target(const std::filesystem::path& source);
+
+// Reads `source` (as above) and samples options.keyframes frames uniformly, resized to
+// width x height (cv::INTER_AREA when neither side grows, INTER_LINEAR otherwise; the aspect is
+// the caller's business). Foreground per keyframe: darkest channel < white_threshold, 8-connected
+// components with area >= max(4, min_component_fraction * largest) kept, dilated by dilate_px.
+// A video is read twice (once to count, once keeping only the sampled frames), so memory stays
+// at K frames whatever the video's length. Throws svgm::Error "<path>: <problem>", including
+// "has N frames, fewer than the K keyframes asked for".
+TargetFrames load_target(const std::filesystem::path& source, int width, int height,
+                         const TargetOptions& options = {});
+
+}  // namespace svgm

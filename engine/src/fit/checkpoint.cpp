@@ -1,0 +1,78 @@
+// The checkpoint file (see checkpoint.h): "SVGMFIT1", the key, then counts and raw arrays.
+#include "fit/checkpoint.h"
+
+#include <cstring>
+#include <fstream>
+
+#include <unistd.h>
+
+#include "svgmotion/error.h"
+
+namespace svgm {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr char kMagic[8] = {'S', 'V', 'G', 'M', 'F', 'I', 'T', '1'};
+
+template <class T>
+void put(std::ofstream& f, const std::vector<T>& v) {
+  const uint64_t n = v.size();
+  f.write(reinterpret_cast<const char*>(&n), sizeof n);
+  f.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T)));
+}
+
+template <class T>
+bool get(std::ifstream& f, std::vector<T>& v) {
+  uint64_t n = 0;
+  if (!f.read(reinterpret_cast<char*>(&n), sizeof n) || n > (1ull << 32)) return false;
+  v.resize(n);
+  return static_cast<bool>(f.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T))));
+}
+
+}  // namespace
+
+void save_checkpoint(const fs::path& file, const std::string& key, const FitState& s) {
+  const fs::path tmp = file.string() + ".part" + std::to_string(::getpid());
+  {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    if (!f) throw Error(file.string() + ": cannot write: " + std::strerror(errno));
+    f.write(kMagic, sizeof kMagic);
+    put(f, std::vector<char>(key.begin(), key.end()));
+    put(f, std::vector<int>{s.iteration, s.active});
+    put(f, s.steps);
+    for (const auto* v : {&s.params, &s.m_params, &s.v_params, &s.offsets, &s.m_offsets, &s.v_offsets})
+      put(f, *v);
+    if (!f.flush()) {
+      std::error_code ec;
+      fs::remove(tmp, ec);
+      throw Error(file.string() + ": cannot write: " + std::strerror(errno));
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmp, file, ec);
+  if (ec) throw Error(file.string() + ": cannot write: " + ec.message());
+}
+
+FitState load_checkpoint(const fs::path& file, const std::string& key) {
+  std::ifstream f(file, std::ios::binary);
+  if (!f) throw Error(file.string() + ": cannot open: " + std::strerror(errno));
+  char magic[8];
+  std::vector<char> k;
+  std::vector<int> head;
+  FitState s;
+  if (!f.read(magic, sizeof magic) || std::memcmp(magic, kMagic, sizeof magic) != 0)
+    throw Error(file.string() + ": not an svgmotion checkpoint");
+  if (!get(f, k) || !get(f, head) || head.size() != 2 || !get(f, s.steps))
+    throw Error(file.string() + ": truncated checkpoint");
+  if (std::string(k.begin(), k.end()) != key)
+    throw Error(file.string() + ": made for another SVG, target or settings; remove it or drop --resume");
+  for (auto* v : {&s.params, &s.m_params, &s.v_params, &s.offsets, &s.m_offsets, &s.v_offsets})
+    if (!get(f, *v)) throw Error(file.string() + ": truncated checkpoint");
+  s.iteration = head[0];
+  s.active = head[1];
+  return s;
+}
+
+}  // namespace svgm

@@ -1,0 +1,294 @@
+// The fitter's host routine (see fitter.h). fit_iteration() is the whole story of one
+// iteration, as a list of dispatches on the in-order queue.
+#include "fit/fitter.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "opencl/tuning.h"
+#include "svgmotion/error.h"
+
+namespace svgm {
+
+namespace {
+
+constexpr int kMotionParams = 12;  // MOTION_PARAMS in kernels/motion.cl
+const std::array<float, 4> kWhite{1, 1, 1, 1};
+
+size_t round_up(size_t n, size_t m) { return (n + m - 1) / m * m; }
+
+template <class... A>
+void set_args(cl::Kernel& k, const A&... args) {
+  cl_uint i = 0;
+  (k.setArg(i++, args), ...);
+}
+
+}  // namespace
+
+std::vector<float> identity_motion(const FitPlan& f, const RasterPlan& plan, const RenderSize& size) {
+  const double ox = 0.5 * size.width, oy = 0.5 * size.height, s = 0.5 * size.width;
+  std::vector<float> out(static_cast<size_t>(f.n_groups) * kMotionParams, 0.f);
+  for (int g = 0; g < f.n_groups; ++g) {
+    double cx = 0, cy = 0;
+    const int n = f.group_first[g + 1] - f.group_first[g];
+    for (int e = f.group_first[g]; e < f.group_first[g + 1]; ++e) {
+      cx += plan.rest_cp[2 * f.group_cps[e]];
+      cy += plan.rest_cp[2 * f.group_cps[e] + 1];
+    }
+    float* th = &out[static_cast<size_t>(g) * kMotionParams];
+    th[3] = th[4] = 1.f;  // scale 1; everything else 0
+    if (n > 0) {
+      th[9] = static_cast<float>((cx / n - ox) / s);
+      th[10] = static_cast<float>((cy / n - oy) / s);
+    }
+  }
+  return out;
+}
+
+Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, const FitOptions& opt)
+    : rt_(rt), opt_(opt), target_(target) {
+  size_ = render_size(scene, target.width);
+  if (size_.height != target.height)
+    throw Error("the target is " + std::to_string(target.width) + "x" + std::to_string(target.height) +
+                " but the SVG renders at " + std::to_string(size_.width) + "x" +
+                std::to_string(size_.height) + " at that width");
+  if (opt.iterations < 1) throw Error("iterations must be at least 1");
+  K_ = target.keyframes;
+  plan_ = plan_raster(scene, size_.view, size_.width, size_.height);
+  FitPlanOptions fo;
+  fo.smooth_sigma_px = opt.smooth_sigma_frac * size_.width;
+  fo.g1_max_angle_deg = opt.g1_max_angle_deg;
+  fplan_ = plan_fit(scene, plan_, fo);
+  G_ = fplan_.n_groups;
+  raster_ = std::make_unique<ClRaster>(rt_, plan_, K_);
+  raster_->set_targets(target.rgba);
+  steps_.assign(K_, 0);
+
+  const size_t K = K_, n_cp = plan_.n_cp;
+  auto& ctx = rt_.context();
+  auto ro = [&](const auto& v) {
+    using T = typename std::decay_t<decltype(v)>::value_type;
+    return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                      std::max<size_t>(v.size() * sizeof(T), 16), const_cast<T*>(v.data()));
+  };
+  auto rw = [&](size_t bytes) {
+    cl::Buffer b(ctx, CL_MEM_READ_WRITE, std::max<size_t>(bytes, 16));
+    rt_.queue().enqueueFillBuffer(b, 0, 0, std::max<size_t>(bytes, 16));
+    return b;
+  };
+  try {
+    cl::Program& prog = rt_.program({"motion.cl", "regularise.cl", "adam.cl"},
+                                    kernel_build_options(raster_tuning(rt_.info(), size_.width)));
+    k_motion_ = cl::Kernel(prog, "motion_forward");
+    k_motion_back_ = cl::Kernel(prog, "motion_backward");
+    k_smooth_ = cl::Kernel(prog, "smoothness");
+    k_g1_ = cl::Kernel(prog, "g1_continuity");
+    k_contain_ = cl::Kernel(prog, "containment");
+    k_sum_ = cl::Kernel(prog, "sum_partials");
+    k_adam_p_ = cl::Kernel(prog, "adam");
+    k_adam_o_ = cl::Kernel(prog, "adam");
+
+    std::vector<float> params;
+    const auto id = identity_motion(fplan_, plan_, size_);
+    for (size_t k = 0; k < K; ++k) params.insert(params.end(), id.begin(), id.end());
+    params_ = cl::Buffer(ctx, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, params.size() * sizeof(float),
+                         params.data());
+    offsets_ = rw(K * n_cp * 2 * sizeof(float));
+    rest_ = ro(plan_.rest_cp);
+    cp_group_ = ro(fplan_.cp_group);
+    cp_offset_ = ro(fplan_.cp_offset);
+    group_first_ = ro(fplan_.group_first);
+    group_cps_ = ro(fplan_.group_cps);
+    nbr_first_ = ro(fplan_.nbr_first);
+    nbr_ = ro(fplan_.nbr);
+    nbr_w_ = ro(fplan_.nbr_w);
+    joints_ = ro(fplan_.joints);
+    sdf_ = ro(target.sdf);
+    grad_params_ = rw(params.size() * sizeof(float));
+    grad_offsets_ = rw(K * n_cp * 2 * sizeof(float));
+    m_params_ = rw(params.size() * sizeof(float));
+    v_params_ = rw(params.size() * sizeof(float));
+    m_offsets_ = rw(K * n_cp * 2 * sizeof(float));
+    v_offsets_ = rw(K * n_cp * 2 * sizeof(float));
+    steps_buf_ = rw(K * sizeof(int));
+    const size_t nj = fplan_.n_joints();
+    part_smooth_ = rw(K * n_cp * sizeof(float));
+    part_contain_ = rw(K * n_cp * sizeof(float));
+    part_g1_ = rw(K * std::max<size_t>(nj, 1) * sizeof(float));
+    terms_ = rw(4 * sizeof(float));
+    for (int g : fplan_.cp_group) real_cps_ += g >= 0;
+
+    const cl_float2 origin{{0.5f * size_.width, 0.5f * size_.height}};
+    const float scale = 0.5f * size_.width;
+    const int ncp = plan_.n_cp, nj_i = static_cast<int>(nj);
+    set_args(k_motion_, params_, offsets_, rest_, cp_group_, cp_offset_, raster_->cp_buffer(),
+             origin, scale, ncp, G_);
+    set_args(k_motion_back_, params_, offsets_, rest_, cp_offset_, group_first_, group_cps_,
+             raster_->cp_gradient_buffer(), grad_params_, grad_offsets_, origin, scale, ncp, G_);
+    set_args(k_smooth_, offsets_, nbr_first_, nbr_, nbr_w_, grad_offsets_, part_smooth_, 0.f, ncp);
+    set_args(k_g1_, raster_->cp_buffer(), joints_, raster_->cp_gradient_buffer(), part_g1_, 0.f,
+             ncp, nj_i);
+    set_args(k_contain_, raster_->cp_buffer(), cp_group_, sdf_, raster_->cp_gradient_buffer(),
+             part_contain_, 0.f, static_cast<float>(opt_.contain_margin_px), ncp, size_.width,
+             size_.height);
+    set_args(k_adam_p_, params_, grad_params_, m_params_, v_params_, steps_buf_, G_ * kMotionParams,
+             1, opt_.lr_homography, opt_.beta1, opt_.beta2, opt_.eps,
+             static_cast<int>(K * G_ * kMotionParams));
+    set_args(k_adam_o_, offsets_, grad_offsets_, m_offsets_, v_offsets_, steps_buf_, ncp * 2, 0,
+             opt_.lr_offsets, opt_.beta1, opt_.beta2, opt_.eps, static_cast<int>(K * n_cp * 2));
+  } catch (const cl::Error& e) {
+    throw Error(std::string("OpenCL setup of the fitter failed on ") + rt_.info().name + ": " +
+                e.what() + " " + cl_status_name(e.err()));
+  }
+}
+
+Fitter::~Fitter() = default;
+
+int Fitter::activation_iteration(int k) const {
+  if (k <= 0 || K_ <= 1) return 0;
+  const int interval = std::max(1, static_cast<int>(opt_.activation_share * opt_.iterations / (K_ - 1)));
+  return k * interval;
+}
+
+void Fitter::upload_steps() {
+  rt_.queue().enqueueWriteBuffer(steps_buf_, CL_FALSE, 0, steps_.size() * sizeof(int), steps_.data());
+}
+
+void Fitter::activate_keyframe(int k) {
+  // Start from the previous keyframe: its homographies and offsets, fresh Adam moments.
+  auto& q = rt_.queue();
+  const size_t pb = static_cast<size_t>(G_) * kMotionParams * sizeof(float);
+  const size_t ob = static_cast<size_t>(plan_.n_cp) * 2 * sizeof(float);
+  q.enqueueCopyBuffer(params_, params_, (k - 1) * pb, k * pb, pb);
+  q.enqueueCopyBuffer(offsets_, offsets_, (k - 1) * ob, k * ob, ob);
+  q.enqueueFillBuffer(m_params_, 0.f, k * pb, pb);
+  q.enqueueFillBuffer(v_params_, 0.f, k * pb, pb);
+  q.enqueueFillBuffer(m_offsets_, 0.f, k * ob, ob);
+  q.enqueueFillBuffer(v_offsets_, 0.f, k * ob, ob);
+  steps_[k] = 0;
+}
+
+LossTerms Fitter::step() {
+  while (active_ < K_ && iteration_ >= activation_iteration(active_)) {
+    activate_keyframe(active_);
+    ++active_;
+  }
+  const LossTerms t = fit_iteration();
+  ++iteration_;
+  return t;
+}
+
+LossTerms Fitter::fit_iteration() {
+  const size_t Ka = static_cast<size_t>(active_), n_cp = plan_.n_cp;
+  const size_t nj = fplan_.n_joints();
+  auto& q = rt_.queue();
+  for (int k = 0; k < active_; ++k) ++steps_[k];
+  upload_steps();
+  raster_->set_active_frames(active_);
+  k_smooth_.setArg(6, fplan_.n_pairs ? opt_.w_smooth / (Ka * fplan_.n_pairs) : 0.f);
+  k_g1_.setArg(4, nj ? opt_.w_g1 / (Ka * nj) : 0.f);
+  k_contain_.setArg(5, real_cps_ ? opt_.w_contain / (Ka * real_cps_) : 0.f);
+  try {
+    // 1. Motion: homographies and offsets -> control points of the active keyframes.
+    q.enqueueNDRangeKernel(k_motion_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
+    // 2. Render, blurred MSE against the targets, exact gradient to the control points.
+    raster_->enqueue_loss_and_gradient(opt_.w_image, kWhite);
+    // 3. G1 continuity and containment add to the control-point gradient.
+    if (nj) q.enqueueNDRangeKernel(k_g1_, cl::NullRange, cl::NDRange(round_up(nj, 64), Ka));
+    q.enqueueNDRangeKernel(k_contain_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
+    // 4. Back through the motion model to homographies and offsets.
+    q.enqueueNDRangeKernel(k_motion_back_, cl::NullRange, cl::NDRange(round_up(G_, 8), Ka));
+    // 5. Smoothness adds to the offset gradient.
+    q.enqueueNDRangeKernel(k_smooth_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
+    // 6. Adam on every active keyframe (keyframe 0's homography stays the identity).
+    q.enqueueNDRangeKernel(k_adam_p_, cl::NullRange,
+                           cl::NDRange(round_up(static_cast<size_t>(K_) * G_ * kMotionParams, 64)));
+    q.enqueueNDRangeKernel(k_adam_o_, cl::NullRange, cl::NDRange(round_up(K_ * n_cp * 2, 64)));
+    // 7. The regularisers' values, summed in order.
+    set_args(k_sum_, part_smooth_, terms_, 0, static_cast<int>(Ka * n_cp));
+    q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
+    set_args(k_sum_, part_contain_, terms_, 1, static_cast<int>(Ka * n_cp));
+    q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
+    set_args(k_sum_, part_g1_, terms_, 2, static_cast<int>(Ka * nj));
+    q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
+    LossTerms t;
+    float terms[3];
+    q.enqueueReadBuffer(terms_, CL_FALSE, 0, sizeof terms, terms);
+    t.image = raster_->read_loss();  // blocks: the iteration is done
+    t.smooth = terms[0];
+    t.contain = terms[1];
+    t.g1 = terms[2];
+    return t;
+  } catch (const cl::Error& e) {
+    throw Error(std::string("OpenCL fit iteration failed on ") + rt_.info().name + ": " + e.what() +
+                " " + cl_status_name(e.err()));
+  }
+}
+
+std::vector<double> Fitter::keyframe_points_canvas() {
+  auto& q = rt_.queue();
+  q.enqueueNDRangeKernel(k_motion_, cl::NullRange, cl::NDRange(round_up(plan_.n_cp, 64), K_));
+  std::vector<float> cp(static_cast<size_t>(K_) * plan_.n_cp * 2);
+  q.enqueueReadBuffer(raster_->cp_buffer(), CL_TRUE, 0, cp.size() * sizeof(float), cp.data());
+  const Affine inv = size_.view.inverse();
+  std::vector<double> out(cp.size());
+  for (size_t i = 0; i < cp.size(); i += 2) {
+    const Vec2 c = inv.apply({cp[i], cp[i + 1]});
+    out[i] = c.x;
+    out[i + 1] = c.y;
+  }
+  return out;
+}
+
+std::vector<float> Fitter::render_keyframes() {
+  rt_.queue().enqueueNDRangeKernel(k_motion_, cl::NullRange,
+                                   cl::NDRange(round_up(plan_.n_cp, 64), active_));
+  raster_->set_active_frames(active_);
+  raster_->forward(ClRaster::Output::Float, kWhite);
+  auto img = raster_->read_image();
+  img.resize(static_cast<size_t>(active_) * size_.width * size_.height * 4);
+  return img;
+}
+
+std::vector<float> Fitter::keyframe_losses() { return raster_->read_frame_losses(); }
+
+FitState Fitter::state() {
+  FitState s;
+  s.iteration = iteration_;
+  s.active = active_;
+  s.steps = steps_;
+  auto rd = [&](cl::Buffer& b, std::vector<float>& v, size_t n) {
+    v.resize(n);
+    rt_.queue().enqueueReadBuffer(b, CL_TRUE, 0, n * sizeof(float), v.data());
+  };
+  const size_t np = static_cast<size_t>(K_) * G_ * kMotionParams, no = static_cast<size_t>(K_) * plan_.n_cp * 2;
+  rd(params_, s.params, np);
+  rd(m_params_, s.m_params, np);
+  rd(v_params_, s.v_params, np);
+  rd(offsets_, s.offsets, no);
+  rd(m_offsets_, s.m_offsets, no);
+  rd(v_offsets_, s.v_offsets, no);
+  return s;
+}
+
+void Fitter::restore(const FitState& s) {
+  const size_t np = static_cast<size_t>(K_) * G_ * kMotionParams, no = static_cast<size_t>(K_) * plan_.n_cp * 2;
+  if (s.params.size() != np || s.offsets.size() != no || s.steps.size() != static_cast<size_t>(K_) ||
+      s.m_params.size() != np || s.v_params.size() != np || s.m_offsets.size() != no ||
+      s.v_offsets.size() != no || s.active < 1 || s.active > K_)
+    throw Error("the checkpoint does not match this SVG and keyframe count");
+  auto wr = [&](cl::Buffer& b, const std::vector<float>& v) {
+    rt_.queue().enqueueWriteBuffer(b, CL_TRUE, 0, v.size() * sizeof(float), v.data());
+  };
+  wr(params_, s.params);
+  wr(m_params_, s.m_params);
+  wr(v_params_, s.v_params);
+  wr(offsets_, s.offsets);
+  wr(m_offsets_, s.m_offsets);
+  wr(v_offsets_, s.v_offsets);
+  iteration_ = s.iteration;
+  active_ = s.active;
+  steps_ = s.steps;
+}
+
+}  // namespace svgm

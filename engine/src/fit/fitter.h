@@ -1,0 +1,115 @@
+// The fitter: a static SVG plus target keyframes in, keyframed control points out.
+//
+// Parameters per keyframe: an 8-DOF homography per group (kernels/motion.cl, 11 numbers with
+// its learned centre) and an offset per control point. One iteration (fit_iteration) runs on
+// the device: motion -> control points -> raster + blurred MSE + backward -> G1 and containment
+// gradients -> motion backward -> smoothness -> Adam. Keyframes are activated one at a time
+// (copy of the previous one, optionally improved by optical-flow tracking), then refined
+// jointly; the schedule scales with the iteration budget.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "fit/fit_plan.h"
+#include "opencl/runtime.h"
+#include "raster/raster_cl.h"
+#include "raster/raster_plan.h"
+#include "svgmotion/render_size.h"
+#include "svgmotion/scene.h"
+#include "svgmotion/target_video.h"
+
+namespace svgm {
+
+struct FitOptions {
+  int iterations = 2000;           // paper: 2000
+  float w_image = 1000;            // paper, appendix: blurred MSE weight
+  float w_smooth = 0.5f;           // paper: offset smoothness weight
+  float w_g1 = 10;                 // paper: G1 continuity weight
+  float w_contain = 1;             // paper: containment weight
+  float lr_homography = 1e-3f;     // paper: Adam learning rate of homography parameters
+  float lr_offsets = 1e-1f;        // paper: Adam learning rate of offsets (pixels)
+  float beta1 = 0.9f, beta2 = 0.9f, eps = 1e-6f;  // paper: Adam settings
+  double smooth_sigma_frac = 0.01; // σ of smoothness weights, fraction of the canvas width
+  double g1_max_angle_deg = 10;    // joints smoother than this at rest keep G1 continuity
+  double contain_margin_px = 1;    // containment margin
+  // Share of the iterations spent activating keyframes (paper: one about every 100 of 2000,
+  // i.e. 14 activations over 1400 iterations); the rest is joint refinement.
+  double activation_share = 0.7;
+  bool track = true;               // optical-flow warm start of each activated keyframe
+};
+
+struct LossTerms {
+  float image = 0, smooth = 0, g1 = 0, contain = 0;
+  float total() const { return image + smooth + g1 + contain; }
+};
+
+// Everything needed to resume a fit (also what the checkpoint file holds).
+struct FitState {
+  int iteration = 0, active = 1;
+  std::vector<int> steps;                       // Adam step per keyframe
+  std::vector<float> params, m_params, v_params;
+  std::vector<float> offsets, m_offsets, v_offsets;
+};
+
+class Fitter {
+ public:
+  // `scene` carries the colours to fit with (the target video's); `target` the keyframes at
+  // the fitting size. Throws svgm::Error if the target's size does not match the scene's
+  // render size at target.width.
+  Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, const FitOptions& options);
+  ~Fitter();
+
+  // One scheduled iteration: activates a keyframe when due, then fit_iteration().
+  LossTerms step();
+  int iteration() const { return iteration_; }
+  int active_keyframes() const { return active_; }
+  int keyframes() const { return K_; }
+  bool done() const { return iteration_ >= opt_.iterations; }
+  // The iteration at which keyframe k is activated.
+  int activation_iteration(int k) const;
+
+  // Control points of every keyframe in canvas space: K * n_cp (x, y) pairs in the raster
+  // plan's layout (path_cp_first / path_cp_count locate each path's points).
+  std::vector<double> keyframe_points_canvas();
+  // Premultiplied float renders of every active keyframe (for previews), K * H * W * 4.
+  std::vector<float> render_keyframes();
+  // Per-keyframe image losses of the last iteration.
+  std::vector<float> keyframe_losses();
+
+  const RasterPlan& raster_plan() const { return plan_; }
+  const FitPlan& fit_plan() const { return fplan_; }
+  const RenderSize& size() const { return size_; }
+
+  FitState state();
+  void restore(const FitState& s);
+
+ private:
+  LossTerms fit_iteration();
+  void activate_keyframe(int k);
+  void upload_steps();
+
+  ClRuntime& rt_;
+  FitOptions opt_;
+  RenderSize size_;
+  RasterPlan plan_;
+  FitPlan fplan_;
+  const TargetFrames& target_;
+  int K_ = 0, G_ = 0;
+  int iteration_ = 0, active_ = 1;
+  std::vector<int> steps_;
+  std::unique_ptr<ClRaster> raster_;
+  int real_cps_ = 0;  // control points that are not padding
+  cl::Kernel k_motion_, k_motion_back_, k_smooth_, k_g1_, k_contain_, k_sum_, k_adam_p_, k_adam_o_;
+  cl::Buffer params_, offsets_, rest_, cp_group_, cp_offset_, group_first_, group_cps_, nbr_first_,
+      nbr_, nbr_w_, joints_, sdf_, grad_params_, grad_offsets_, m_params_, v_params_, m_offsets_,
+      v_offsets_, steps_buf_, part_smooth_, part_contain_, part_g1_, terms_;
+};
+
+// Initial homography parameters (identity about the group's rest centroid) for every group of
+// one keyframe: G * 12 floats (kernels/motion.cl's layout).
+std::vector<float> identity_motion(const FitPlan& fplan, const RasterPlan& plan, const RenderSize& size);
+
+}  // namespace svgm

@@ -1,0 +1,175 @@
+// Writing preview videos through OpenCV's VideoWriter (FFmpeg back end): panels composited over
+// white, concatenated side by side, padded to even sizes, written atomically.
+#include "fit/preview_video.h"
+
+#include <opencv2/core.hpp>
+#include <opencv2/videoio.hpp>
+#include <opencv2/videoio/registry.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <system_error>
+
+#include <unistd.h>
+
+#include "svgmotion/error.h"
+
+namespace svgm {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+[[noreturn]] void fail(const fs::path& where, const std::string& problem) {
+  throw Error(where.string() + ": " + problem);
+}
+
+std::string size_text(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+// Removes the temporary file unless the write got as far as renaming it.
+struct TempFile {
+  fs::path path;
+  bool keep = false;
+  ~TempFile() {
+    if (keep) return;
+    std::error_code ec;
+    fs::remove(path, ec);
+  }
+};
+
+// Composites an RGBA panel over white into the BGR frame at column x0.
+void blit(const RgbaImage& img, cv::Mat& frame, int x0) {
+  for (int y = 0; y < img.height; ++y) {
+    const uint8_t* s = img.rgba.data() + static_cast<size_t>(y) * img.width * 4;
+    cv::Vec3b* d = frame.ptr<cv::Vec3b>(y) + x0;
+    for (int x = 0; x < img.width; ++x, s += 4) {
+      const int a = s[3];
+      for (int c = 0; c < 3; ++c) {
+        // Rounded s*a/255 + (255 - a), exact for a = 0 and a = 255.
+        const int v = (s[c] * a + 255 * (255 - a) + 127) / 255;
+        d[x][2 - c] = static_cast<uint8_t>(v);  // RGB -> OpenCV's BGR
+      }
+    }
+  }
+}
+
+}  // namespace
+
+RgbaImage rgba8_image(const float* rgba, int width, int height) {
+  RgbaImage img;
+  img.width = width;
+  img.height = height;
+  const size_t n = static_cast<size_t>(width) * height * 4;
+  img.rgba.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    const float v = std::isfinite(rgba[i]) ? std::clamp(rgba[i], 0.0f, 1.0f) : 0.0f;
+    img.rgba[i] = static_cast<uint8_t>(std::lround(v * 255.0f));
+  }
+  return img;
+}
+
+void write_preview_video(const fs::path& file, int frames, int panels,
+                         const PreviewPanelFn& panel_image, double fps) {
+  if (frames < 1) fail(file, "a preview needs at least one frame");
+  if (panels < 1) fail(file, "a preview needs at least one panel");
+  if (!(std::isfinite(fps) && fps > 0)) fail(file, "frame rate must be positive");
+
+  // Declared before the writer, so that on an exception the writer closes before the file goes.
+  TempFile tmp;
+  std::vector<std::pair<int, int>> sizes;  // panel sizes of frame 0, which every frame repeats
+  cv::VideoWriter writer;
+  cv::Mat canvas;
+  const fs::path dir = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+  // The extension picks FFmpeg's container, so the temporary name keeps ".mp4".
+  tmp.path = dir / ("." + file.filename().string() + ".part" + std::to_string(::getpid()) + ".mp4");
+
+  for (int k = 0; k < frames; ++k) {
+    std::vector<RgbaImage> row;
+    row.reserve(static_cast<size_t>(panels));
+    for (int p = 0; p < panels; ++p) {
+      row.push_back(panel_image(k, p));
+      const RgbaImage& img = row.back();
+      if (img.width < 1 || img.height < 1 ||
+          img.rgba.size() != static_cast<size_t>(img.width) * img.height * 4)
+        fail(file, "panel " + std::to_string(p) + " of frame " + std::to_string(k) +
+                       " is empty or does not match its size");
+      if (k == 0) {
+        if (p > 0 && img.height != sizes[0].second)
+          fail(file, "panel " + std::to_string(p) + " is " + std::to_string(img.height) +
+                         " pixels high, but panel 0 is " + std::to_string(sizes[0].second));
+        sizes.emplace_back(img.width, img.height);
+      } else if (img.width != sizes[static_cast<size_t>(p)].first ||
+                 img.height != sizes[static_cast<size_t>(p)].second) {
+        fail(file, "panel " + std::to_string(p) + " of frame " + std::to_string(k) + " is " +
+                       size_text(img.width, img.height) + ", but in frame 0 it is " +
+                       size_text(sizes[static_cast<size_t>(p)].first,
+                                 sizes[static_cast<size_t>(p)].second));
+      }
+    }
+
+    if (k == 0) {
+      int width = 0;
+      for (const auto& s : sizes) width += s.first;
+      const int height = sizes[0].second;
+      // H.264 in 4:2:0 needs even sides; FFmpeg would silently crop the last column/row.
+      const cv::Size size(width + width % 2, height + height % 2);
+      const auto api =
+          cv::videoio_registry::hasBackend(cv::CAP_FFMPEG) ? cv::CAP_FFMPEG : cv::CAP_ANY;
+      for (const char* cc : {"avc1", "mp4v"}) {
+        try {
+          writer.open(tmp.path.string(), api, cv::VideoWriter::fourcc(cc[0], cc[1], cc[2], cc[3]),
+                      fps, size);
+        } catch (const cv::Exception&) {
+          writer.release();
+        }
+        if (writer.isOpened()) break;
+      }
+      if (!writer.isOpened()) {
+        std::error_code ec;
+        if (!fs::is_directory(dir, ec))
+          fail(file, "cannot write: " + std::generic_category().message(ENOENT));
+        fail(file, "cannot write: no H.264 (avc1) or MPEG-4 (mp4v) video encoder could be opened");
+      }
+      canvas.create(size, CV_8UC3);
+    }
+
+    canvas.setTo(cv::Scalar::all(255));
+    int x0 = 0;
+    for (const RgbaImage& img : row) {
+      blit(img, canvas, x0);
+      x0 += img.width;
+    }
+    try {
+      writer.write(canvas);
+    } catch (const cv::Exception& e) {
+      fail(file, std::string("cannot write: ") + e.what());
+    }
+  }
+  writer.release();
+
+  // VideoWriter::write reports nothing; an empty file is the one visible sign of failure.
+  std::error_code ec;
+  const auto bytes = fs::file_size(tmp.path, ec);
+  if (ec || bytes == 0) fail(file, "cannot write: the encoder produced no output");
+  fs::rename(tmp.path, file, ec);
+  if (ec) fail(file, "cannot write: " + ec.message());
+  tmp.keep = true;
+}
+
+void write_preview_video(const fs::path& file, const std::vector<std::vector<RgbaImage>>& panels,
+                         double fps) {
+  if (panels.empty()) fail(file, "a preview needs at least one panel");
+  const size_t frames = panels[0].size();
+  for (size_t p = 1; p < panels.size(); ++p)
+    if (panels[p].size() != frames)
+      fail(file, "panel " + std::to_string(p) + " has " + std::to_string(panels[p].size()) +
+                     " frames, but panel 0 has " + std::to_string(frames));
+  write_preview_video(
+      file, static_cast<int>(frames), static_cast<int>(panels.size()),
+      [&](int k, int p) { return panels[static_cast<size_t>(p)][static_cast<size_t>(k)]; }, fps);
+}
+
+}  // namespace svgm

@@ -1,0 +1,439 @@
+// Reading the fitter's target: a video (OpenCV's FFmpeg back end) or a folder of numbered PNG
+// frames, sampled to K keyframes, resized to the render size, and reduced to a cleaned image, a
+// foreground mask and a distance field per keyframe.
+//
+// Everything OpenCV stays in this file; the public header only speaks std:: types.
+#include "svgmotion/target_video.h"
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+#include <opencv2/videoio/registry.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdint>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <system_error>
+
+#include "svgmotion/error.h"
+
+namespace svgm {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kMaxSide = 16384;
+
+[[noreturn]] void fail(const fs::path& where, const std::string& problem) {
+  throw Error(where.string() + ": " + problem);
+}
+
+std::string size_text(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+std::string frames_text(int n) { return std::to_string(n) + (n == 1 ? " frame" : " frames"); }
+
+// Missing sources get the errno wording users know from other tools ("cannot open: No such
+// file or directory") rather than OpenCV's silence. Returns whether `source` is a folder.
+bool classify_source(const fs::path& source) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(source, ec);
+  if (st.type() == fs::file_type::not_found)
+    fail(source, "cannot open: " + std::generic_category().message(ENOENT));
+  if (ec) fail(source, "cannot open: " + ec.message());
+  if (fs::is_directory(st)) return true;
+  // OpenCV reports an unreadable file the same way as an undecodable one; check access first
+  // so that "Permission denied" is not reported as "not a readable video".
+  std::FILE* f = std::fopen(source.c_str(), "rb");
+  if (!f) fail(source, std::string("cannot open: ") + std::strerror(errno));
+  std::fclose(f);
+  return false;
+}
+
+// ---- numbered PNG folders ----------------------------------------------------------------
+
+struct FolderFrame {
+  fs::path path;
+  std::string name;
+  std::string number;  // the last run of digits in the stem, leading zeros stripped
+};
+
+// Numbers are compared as digit strings (shorter = smaller), so any length works.
+bool number_less(const std::string& a, const std::string& b) {
+  return a.size() != b.size() ? a.size() < b.size() : a < b;
+}
+
+std::vector<FolderFrame> list_png_frames(const fs::path& folder) {
+  std::error_code ec;
+  fs::directory_iterator it(folder, ec);
+  if (ec) fail(folder, "cannot open: " + ec.message());
+  std::vector<FolderFrame> frames;
+  for (; it != fs::directory_iterator(); it.increment(ec)) {
+    if (ec) fail(folder, "cannot list: " + ec.message());
+    const fs::path& p = it->path();
+    std::string name = p.filename().string();
+    // Hidden files (editor backups, macOS "._0001.png" resource forks) are never frames.
+    if (name.empty() || name[0] == '.') continue;
+    std::string ext = p.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext != ".png") continue;
+    std::error_code fec;
+    if (fs::is_directory(it->status(fec))) continue;
+    const std::string stem = p.stem().string();
+    size_t end = stem.size();
+    while (end > 0 && !std::isdigit(static_cast<unsigned char>(stem[end - 1]))) --end;
+    size_t begin = end;
+    while (begin > 0 && std::isdigit(static_cast<unsigned char>(stem[begin - 1]))) --begin;
+    if (begin == end) fail(folder, "cannot order " + name + ": no number in its name");
+    std::string number = stem.substr(begin, end - begin);
+    number.erase(0, std::min(number.find_first_not_of('0'), number.size() - 1));
+    frames.push_back({p, std::move(name), std::move(number)});
+  }
+  if (frames.empty()) fail(folder, "no PNG frames");
+  std::sort(frames.begin(), frames.end(), [](const FolderFrame& a, const FolderFrame& b) {
+    if (a.number != b.number) return number_less(a.number, b.number);
+    return a.name < b.name;
+  });
+  // Two frames with one number (1.png and 01.png) have no defined order: refuse rather than
+  // silently pick one, since a swapped pair would show up as a jitter in the fitted motion.
+  for (size_t i = 1; i < frames.size(); ++i)
+    if (frames[i].number == frames[i - 1].number)
+      fail(folder, "frames " + frames[i - 1].name + " and " + frames[i].name +
+                       " have the same number");
+  return frames;
+}
+
+// The size from a PNG's IHDR chunk: checks every frame (signature, size agreement) without
+// decoding the ones that are not sampled.
+std::pair<int, int> png_header_size(const fs::path& file) {
+  std::FILE* f = std::fopen(file.c_str(), "rb");
+  if (!f) fail(file, std::string("cannot open: ") + std::strerror(errno));
+  unsigned char h[24];
+  const size_t got = std::fread(h, 1, sizeof h, f);
+  std::fclose(f);
+  static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (got != sizeof h || std::memcmp(h, sig, 8) != 0 || std::memcmp(h + 12, "IHDR", 4) != 0)
+    fail(file, "not a readable PNG");
+  auto be32 = [](const unsigned char* p) {
+    return (uint32_t{p[0]} << 24) | (uint32_t{p[1]} << 16) | (uint32_t{p[2]} << 8) | p[3];
+  };
+  const uint32_t w = be32(h + 16), hh = be32(h + 20);
+  if (w == 0 || hh == 0 || w > (1u << 30) || hh > (1u << 30)) fail(file, "not a readable PNG");
+  return {static_cast<int>(w), static_cast<int>(hh)};
+}
+
+struct FolderSource {
+  std::vector<FolderFrame> frames;
+  int width = 0, height = 0;
+};
+
+FolderSource scan_folder(const fs::path& folder) {
+  FolderSource src;
+  src.frames = list_png_frames(folder);
+  for (size_t i = 0; i < src.frames.size(); ++i) {
+    const auto [w, h] = png_header_size(src.frames[i].path);
+    if (i == 0) {
+      src.width = w;
+      src.height = h;
+    } else if (w != src.width || h != src.height) {
+      fail(folder, src.frames[i].name + " is " + size_text(w, h) + ", but " +
+                       src.frames[0].name + " is " + size_text(src.width, src.height));
+    }
+  }
+  return src;
+}
+
+// ---- videos ---------------------------------------------------------------------------------
+
+cv::VideoCapture open_video(const fs::path& file) {
+  // FFmpeg explicitly when available: CAP_ANY would let the image-sequence back end interpret
+  // printf patterns in the name, and other back ends disagree on frame counts.
+  const auto api = cv::videoio_registry::hasBackend(cv::CAP_FFMPEG) ? cv::CAP_FFMPEG : cv::CAP_ANY;
+  cv::VideoCapture cap;
+  try {
+    cap.open(file.string(), api);
+  } catch (const cv::Exception&) {
+    fail(file, "not a readable video");
+  }
+  if (!cap.isOpened()) fail(file, "not a readable video");
+  return cap;
+}
+
+// Counts by reading: CAP_PROP_FRAME_COUNT comes from the container and can be 0 or wrong.
+// grab() decodes without the colour conversion, so counting costs less than reading.
+TargetInfo probe_video(const fs::path& file) {
+  cv::VideoCapture cap = open_video(file);
+  TargetInfo info;
+  const double fps = cap.get(cv::CAP_PROP_FPS);
+  info.fps = std::isfinite(fps) && fps > 0 ? fps : 24.0;
+  cv::Mat first;
+  try {
+    if (!cap.read(first) || first.empty()) fail(file, "not a readable video");
+    info.width = first.cols;
+    info.height = first.rows;
+    info.frames = 1;
+    while (cap.grab()) ++info.frames;
+  } catch (const cv::Exception&) {
+    fail(file, "not a readable video");
+  }
+  return info;
+}
+
+// ---- per-frame processing -------------------------------------------------------------------
+
+// Any decoded image (grey, grey+alpha, BGR, BGRA; 8/16-bit or float) as straight RGB float in
+// [0,1], alpha composited over white: transparent backgrounds must not read as black ink.
+cv::Mat to_rgb_float(const cv::Mat& img) {
+  double scale = 1.0;
+  switch (img.depth()) {
+    case CV_8U: scale = 1.0 / 255.0; break;
+    case CV_16U: scale = 1.0 / 65535.0; break;
+    case CV_32F: break;
+    default: throw Error("internal: unsupported image depth");
+  }
+  cv::Mat f;
+  img.convertTo(f, CV_MAKETYPE(CV_32F, img.channels()), scale);
+  cv::Mat rgb, alpha;
+  switch (f.channels()) {
+    case 1: cv::cvtColor(f, rgb, cv::COLOR_GRAY2RGB); break;
+    case 2: {
+      cv::Mat ch[2];
+      cv::split(f, ch);
+      cv::cvtColor(ch[0], rgb, cv::COLOR_GRAY2RGB);
+      alpha = ch[1];
+      break;
+    }
+    case 3: cv::cvtColor(f, rgb, cv::COLOR_BGR2RGB); break;
+    case 4: {
+      cv::cvtColor(f, rgb, cv::COLOR_BGRA2RGB);
+      cv::extractChannel(f, alpha, 3);
+      break;
+    }
+    default: throw Error("internal: unsupported channel count");
+  }
+  if (!alpha.empty()) {
+    cv::Mat a3;
+    cv::cvtColor(alpha, a3, cv::COLOR_GRAY2RGB);
+    // rgb * a + (1 - a)
+    cv::multiply(rgb, a3, rgb);
+    cv::subtract(cv::Scalar::all(1.0), a3, a3);
+    cv::add(rgb, a3, rgb);
+  }
+  return rgb;
+}
+
+cv::Mat resize_to(const cv::Mat& rgb, int width, int height) {
+  if (rgb.cols == width && rgb.rows == height) return rgb;
+  // INTER_AREA averages when shrinking (no aliasing of thin strokes); it degenerates to
+  // something blocky when enlarging, where bilinear is the better choice.
+  const bool shrink = width <= rgb.cols && height <= rgb.rows;
+  cv::Mat out;
+  cv::resize(rgb, out, cv::Size(width, height), 0, 0, shrink ? cv::INTER_AREA : cv::INTER_LINEAR);
+  // Bilinear and area weights are convex, but keep [0,1] exact against rounding anyway.
+  cv::min(cv::max(out, 0.0), 1.0, out);
+  return out;
+}
+
+// Stores a decoded frame as keyframe k of `raw` (RGBA float, A = 1).
+void store_raw(const cv::Mat& decoded, int k, int width, int height, std::vector<float>& raw) {
+  const cv::Mat rgb = resize_to(to_rgb_float(decoded), width, height);
+  float* dst = raw.data() + static_cast<size_t>(k) * width * height * 4;
+  for (int y = 0; y < height; ++y) {
+    const float* s = rgb.ptr<float>(y);
+    for (int x = 0; x < width; ++x, dst += 4, s += 3) {
+      dst[0] = s[0];
+      dst[1] = s[1];
+      dst[2] = s[2];
+      dst[3] = 1.0f;
+    }
+  }
+}
+
+// Mask, cleaned target and distance field of keyframe k from its raw frame.
+void clean_keyframe(TargetFrames& t, int k, const TargetOptions& opt) {
+  const int w = t.width, h = t.height;
+  const size_t px = static_cast<size_t>(w) * h;
+  const float* raw = t.raw.data() + k * px * 4;
+
+  cv::Mat ink(h, w, CV_8U);
+  const float thr = static_cast<float>(opt.white_threshold);
+  for (int y = 0; y < h; ++y) {
+    uint8_t* row = ink.ptr<uint8_t>(y);
+    for (int x = 0; x < w; ++x) {
+      const float* p = raw + (static_cast<size_t>(y) * w + x) * 4;
+      row[x] = std::min({p[0], p[1], p[2]}) < thr ? 1 : 0;
+    }
+  }
+
+  // The component filter removes compression specks and stray marks far from the figure; the
+  // floor of 4 px applies even when the figure itself is tiny.
+  cv::Mat labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(ink, labels, stats, centroids, 8, CV_32S);
+  int largest = 0;
+  for (int i = 1; i < n; ++i) largest = std::max(largest, stats.at<int>(i, cv::CC_STAT_AREA));
+  const double min_area = std::max(4.0, opt.min_component_fraction * largest);
+  std::vector<uint8_t> keep(static_cast<size_t>(std::max(n, 1)), 0);
+  bool any = false;
+  for (int i = 1; i < n; ++i) {
+    if (stats.at<int>(i, cv::CC_STAT_AREA) < min_area) continue;
+    keep[static_cast<size_t>(i)] = 1;
+    any = true;
+  }
+
+  // Background = 255 (non-zero) so that distanceTransform measures the distance to the
+  // nearest kept foreground pixel; the precise mask makes it the exact Euclidean distance
+  // between pixel centres, which also gives an exact disc dilation by thresholding it.
+  cv::Mat background(h, w, CV_8U);
+  for (int y = 0; y < h; ++y) {
+    const int* l = labels.ptr<int>(y);
+    uint8_t* b = background.ptr<uint8_t>(y);
+    for (int x = 0; x < w; ++x) b[x] = keep[static_cast<size_t>(l[x])] ? 0 : 255;
+  }
+  uint8_t* mask = t.mask.data() + k * px;
+  float* sdf = t.sdf.data() + k * px;
+  float* out = t.rgba.data() + k * px * 4;
+  if (!any) {
+    std::fill(mask, mask + px, uint8_t{0});
+    std::fill(sdf, sdf + px, static_cast<float>(w + h));
+    std::fill(out, out + px * 4, 1.0f);
+    return;
+  }
+  cv::Mat dist;
+  if (opt.dilate_px > 0) {
+    cv::distanceTransform(background, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+    // A small tolerance so that integer distances (r itself) are inside whatever the rounding.
+    const float r = static_cast<float>(opt.dilate_px) + 1e-3f;
+    for (int y = 0; y < h; ++y) {
+      const float* d = dist.ptr<float>(y);
+      uint8_t* b = background.ptr<uint8_t>(y);
+      for (int x = 0; x < w; ++x) b[x] = d[x] <= r ? 0 : 255;
+    }
+  }
+  cv::distanceTransform(background, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+  for (int y = 0; y < h; ++y) {
+    const float* d = dist.ptr<float>(y);
+    const uint8_t* b = background.ptr<uint8_t>(y);
+    for (int x = 0; x < w; ++x) {
+      const size_t i = static_cast<size_t>(y) * w + x;
+      const bool fg = b[x] == 0;
+      mask[i] = fg ? 1 : 0;
+      sdf[i] = fg ? 0.0f : d[x];
+      for (int c = 0; c < 3; ++c) out[i * 4 + c] = fg ? raw[i * 4 + c] : 1.0f;
+      out[i * 4 + 3] = 1.0f;
+    }
+  }
+}
+
+void check_options(const fs::path& source, int width, int height, const TargetOptions& o) {
+  if (o.keyframes < 1)
+    fail(source, "keyframes must be at least 1 (got " + std::to_string(o.keyframes) + ")");
+  if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide)
+    fail(source, "target size " + size_text(width, height) + " is out of range (each side 1.." +
+                     std::to_string(kMaxSide) + ")");
+  if (!(o.white_threshold > 0.0 && o.white_threshold <= 1.0))
+    fail(source, "white threshold must be in (0, 1] (got " + std::to_string(o.white_threshold) +
+                     ")");
+  if (!(o.min_component_fraction >= 0.0 && o.min_component_fraction <= 1.0))
+    fail(source, "minimum component fraction must be in [0, 1] (got " +
+                     std::to_string(o.min_component_fraction) + ")");
+  if (o.dilate_px < 0 || o.dilate_px > kMaxSide)
+    fail(source, "dilation must be 0.." + std::to_string(kMaxSide) + " pixels (got " +
+                     std::to_string(o.dilate_px) + ")");
+}
+
+}  // namespace
+
+TargetInfo probe_target(const fs::path& source) {
+  if (!classify_source(source)) return probe_video(source);
+  const FolderSource folder = scan_folder(source);
+  TargetInfo info;
+  info.width = folder.width;
+  info.height = folder.height;
+  info.frames = static_cast<int>(folder.frames.size());
+  info.fps = 24;
+  return info;
+}
+
+TargetFrames load_target(const fs::path& source, int width, int height,
+                         const TargetOptions& options) {
+  check_options(source, width, height, options);
+  const bool is_folder = classify_source(source);
+  FolderSource folder;
+  TargetInfo info;
+  if (is_folder) {
+    folder = scan_folder(source);
+    info.frames = static_cast<int>(folder.frames.size());
+  } else {
+    info = probe_video(source);
+  }
+  const int K = options.keyframes, N = info.frames;
+  if (N < K)
+    fail(source, "has " + frames_text(N) + ", fewer than the " + std::to_string(K) +
+                     " keyframes asked for");
+
+  TargetFrames t;
+  t.width = width;
+  t.height = height;
+  t.keyframes = K;
+  t.source_frames = N;
+  t.fps = info.fps;
+  // round(k (N-1) / (K-1)) in integers (halves round up): no floating-point ties, and strictly
+  // increasing because the step (N-1)/(K-1) is at least 1.
+  t.source_index.resize(static_cast<size_t>(K));
+  for (int k = 0; k < K; ++k) {
+    const int64_t num = 2 * int64_t{k} * (N - 1) + (K - 1);
+    t.source_index[static_cast<size_t>(k)] =
+        K == 1 ? 0 : static_cast<int>(num / (2 * int64_t{K - 1}));
+  }
+  const size_t px = static_cast<size_t>(width) * height;
+  t.raw.assign(K * px * 4, 1.0f);
+  t.rgba.assign(K * px * 4, 1.0f);
+  t.mask.assign(K * px, 0);
+  t.sdf.assign(K * px, 0.0f);
+
+  if (is_folder) {
+    for (int k = 0; k < K; ++k) {
+      const fs::path& file = folder.frames[static_cast<size_t>(t.source_index[k])].path;
+      cv::Mat img;
+      try {
+        img = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
+      } catch (const cv::Exception&) {
+        img.release();
+      }
+      if (img.empty()) fail(file, "not a readable PNG");
+      if (img.cols != folder.width || img.rows != folder.height)
+        fail(file, "decodes to " + size_text(img.cols, img.rows) + ", but its header says " +
+                       size_text(folder.width, folder.height));
+      store_raw(img, k, width, height, t.raw);
+    }
+  } else {
+    // Second pass: sequential reads (seeking is unreliable across codecs), decoding only the
+    // sampled frames and keeping them at the target size.
+    cv::VideoCapture cap = open_video(source);
+    int k = 0;
+    try {
+      for (int i = 0; i < N && k < K; ++i) {
+        if (!cap.grab()) fail(source, "frame " + std::to_string(i) + " cannot be read");
+        if (i != t.source_index[static_cast<size_t>(k)]) continue;
+        cv::Mat frame;
+        if (!cap.retrieve(frame) || frame.empty())
+          fail(source, "frame " + std::to_string(i) + " cannot be decoded");
+        store_raw(frame, k, width, height, t.raw);
+        ++k;
+      }
+    } catch (const cv::Exception&) {
+      fail(source, "not a readable video");
+    }
+  }
+  for (int k = 0; k < K; ++k) clean_keyframe(t, k, options);
+  return t;
+}
+
+}  // namespace svgm

@@ -1,0 +1,119 @@
+// The fitter on targets with a known motion: rotated, scaled, translated, projectively warped
+// and bent parts of a figure we drew. Every keyframe of the fit must match its target, and the
+// part that does not move must stay put.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include <unistd.h>
+
+#include "fit/fitter.h"
+#include "known_motion.h"
+#include "scene_builders.h"
+#include "svgmotion/target_video.h"
+
+using namespace svgm;
+using namespace svgm::test;
+
+namespace {
+
+// A figure on a 96 x 96 canvas: a body (group 0, never moves), an arm (group 1) and a head
+// (group 2), all curved shapes with distinct colours.
+Scene figure() {
+  Path body = filled(polygon({{34, 44}, {62, 44}, {60, 84}, {36, 84}}), {0.85f, 0.3f, 0.2f, 1});
+  Subpath arm;
+  arm.closed = true;
+  arm.points = {{60, 48}, {68, 44}, {76, 40}, {84, 34}, {88, 38}, {80, 46}, {72, 52},
+                {66, 56}, {62, 55}, {61, 52}, {60, 48}};
+  Path armp = filled(arm, {0.2f, 0.5f, 0.85f, 1});
+  Path head = filled(circle({48, 28}, 12), {0.95f, 0.8f, 0.5f, 1});
+  Scene s = scene_of(96, 96, {body, armp, head});
+  s.groups = {{"body", {0}}, {"arm", {1}}, {"head", {2}}};
+  for (int i = 0; i < 3; ++i) s.paths[i].group = i;
+  return s;
+}
+
+}  // namespace
+
+TEST_SUITE("fit") {
+
+TEST_CASE("known motion: rotation, scale, projective warp and bend are recovered") {
+  const Scene s = figure();
+  const int K = 5;
+  const auto dir = std::filesystem::temp_directory_path() / ("svgm_known_" + std::to_string(::getpid()));
+  auto motion = [](int k, int g) {
+    const double t = k / 4.0;
+    MotionParams p = identity_params();
+    if (g == 1) {  // arm: rotate about the shoulder (normalised (0.27, 0.04)), grow a little
+      p[9] = 0.27; p[10] = 0.04;
+      p[2] = -0.45 * t;
+      p[3] = 1 + 0.08 * t;
+    } else if (g == 2) {  // head: move, stretch, tilt in perspective
+      p[0] = 0.08 * t; p[1] = -0.05 * t;
+      p[4] = 1 + 0.12 * t;
+      p[7] = 0.06 * t; p[8] = -0.04 * t;
+    }
+    return p;
+  };
+  // A bend that grows towards the top of the canvas, only on the moving parts' region.
+  auto bend = [](int k, Vec2 q) { return Vec2{0.0, 0.0} + (k / 4.0) * std::max(0.0, (40 - q.y) / 40) * Vec2{3.0, 0.0}; };
+  const auto truth = write_known_motion(s, 96, K, motion, [&](int k, Vec2 q) {
+    return q.x > 50 || q.y < 42 ? bend(k, q) : Vec2{};  // leave the body exactly in place
+  }, dir);
+
+  TargetOptions to;
+  to.keyframes = K;
+  const TargetFrames target = load_target(dir, 96, 96, to);
+  FitOptions fo;
+  fo.iterations = 500;
+  Fitter fitter(runtime(), s, target, fo);
+  LossTerms last;
+  while (!fitter.done()) last = fitter.step();
+  MESSAGE("final loss " << last.total() << " (image " << last.image << ")");
+
+  // What an unmoving fit would score: the thresholds below must tell it apart.
+  const size_t npx = 96 * 96;
+  ClRaster rest(runtime(), fitter.raster_plan(), 1);
+  rest.set_rest_pose();
+  rest.forward(ClRaster::Output::Float, {1, 1, 1, 1});
+  const auto still = rest.read_image();
+  std::vector<float> still_rgb(npx * 4);
+  for (size_t p = 0; p < npx; ++p) {
+    for (int ch = 0; ch < 3; ++ch) still_rgb[4 * p + ch] = still[4 * p + ch] + (1 - still[4 * p + 3]);
+    still_rgb[4 * p + 3] = 1;
+  }
+  const ImageAgreement unfitted = agreement(still_rgb.data(), &target.rgba[(K - 1) * npx * 4], npx);
+  MESSAGE("unmoved figure against the last keyframe: PSNR " << unfitted.psnr << " dB, IoU " << unfitted.iou);
+  CHECK(unfitted.psnr < 25.0);
+  CHECK(unfitted.iou < 0.9);
+
+  const auto renders = fitter.render_keyframes();
+  const size_t px = 96 * 96;
+  for (int k = 0; k < K; ++k) {
+    std::vector<float> fit(px * 4);
+    for (size_t p = 0; p < px; ++p) {  // composite the premultiplied render on white
+      const float* c = &renders[(k * px + p) * 4];
+      for (int ch = 0; ch < 3; ++ch) fit[4 * p + ch] = c[ch] + (1 - c[3]);
+      fit[4 * p + 3] = 1;
+    }
+    const ImageAgreement a = agreement(fit.data(), &target.rgba[k * px * 4], px);
+    CAPTURE(k);
+    MESSAGE("keyframe " << k << ": PSNR " << a.psnr << " dB, IoU " << a.iou);
+    CHECK(a.psnr > 30.0);
+    CHECK(a.iou > 0.97);
+  }
+  // The body does not move: its fitted points stay within half a pixel of rest.
+  const auto pts = fitter.keyframe_points_canvas();
+  const RasterPlan& plan = fitter.raster_plan();
+  double worst = 0;
+  for (int k = 0; k < K; ++k)
+    for (int i = plan.path_cp_first[0]; i < plan.path_cp_first[0] + plan.path_cp_count[0]; ++i)
+      worst = std::max(worst, std::hypot(pts[(k * plan.n_cp + i) * 2] - plan.rest_cp[2 * i],
+                                         pts[(k * plan.n_cp + i) * 2 + 1] - plan.rest_cp[2 * i + 1]));
+  MESSAGE("body drift " << worst << " px");
+  CHECK(worst < 0.5);
+  std::filesystem::remove_all(dir);
+}
+
+}  // TEST_SUITE
