@@ -3,6 +3,7 @@
 // Errors (svgm::Error and anything else) print "svgmotion: <message>" on stderr and exit 1;
 // usage mistakes exit 2. Nothing is written by a command that fails (outputs are atomic).
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <string>
 #include <vector>
@@ -30,6 +31,10 @@ usage:
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Bad input must give our one error line, not FFmpeg's or OpenCV's chatter before it. These
+  // are read when OpenCV first loads its video back end, i.e. after this point.
+  setenv("OPENCV_LOG_LEVEL", "SILENT", 0);
+  setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);  // AV_LOG_QUIET
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
     std::fputs(kUsage, args.empty() ? stderr : stdout);

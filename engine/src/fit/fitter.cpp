@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fit/warm_start.h"
 #include "opencl/tuning.h"
 #include "svgmotion/error.h"
 
@@ -166,6 +167,80 @@ void Fitter::activate_keyframe(int k) {
   q.enqueueFillBuffer(m_offsets_, 0.f, k * ob, ob);
   q.enqueueFillBuffer(v_offsets_, 0.f, k * ob, ob);
   steps_[k] = 0;
+  if (opt_.track) warm_start(k);
+}
+
+float Fitter::frame_loss(int k) {
+  auto& q = rt_.queue();
+  q.enqueueNDRangeKernel(k_motion_, cl::NullRange, cl::NDRange(round_up(plan_.n_cp, 64), k + 1));
+  raster_->set_active_frames(k + 1);
+  raster_->enqueue_loss_and_gradient(opt_.w_image, kWhite);
+  return raster_->read_frame_losses()[k];
+}
+
+void Fitter::warm_start(int k) {
+  auto& q = rt_.queue();
+  const int W = size_.width, H = size_.height;
+  // The previous keyframe as fitted so far: its render and its control points.
+  q.enqueueNDRangeKernel(k_motion_, cl::NullRange, cl::NDRange(round_up(plan_.n_cp, 64), k));
+  raster_->set_active_frames(k);
+  raster_->forward(ClRaster::Output::Float, kWhite);
+  const auto img = raster_->read_image();
+  std::vector<float> cp(static_cast<size_t>(plan_.n_cp) * 2);
+  q.enqueueReadBuffer(raster_->cp_buffer(), CL_TRUE, static_cast<size_t>(k - 1) * plan_.n_cp * 2 * sizeof(float),
+                      cp.size() * sizeof(float), cp.data());
+  std::vector<uint8_t> prev(static_cast<size_t>(W) * H), next(prev.size());
+  auto grey = [](float r, float g, float b) {
+    return static_cast<uint8_t>(std::clamp(255.f * (0.299f * r + 0.587f * g + 0.114f * b) + 0.5f, 0.f, 255.f));
+  };
+  for (size_t p = 0; p < prev.size(); ++p) {
+    const float* c = &img[((static_cast<size_t>(k - 1) * H * W) + p) * 4];
+    prev[p] = grey(c[0] + 1 - c[3], c[1] + 1 - c[3], c[2] + 1 - c[3]);
+    const float* t = &target_.rgba[((static_cast<size_t>(k) * H * W) + p) * 4];
+    next[p] = grey(t[0], t[1], t[2]);
+  }
+  std::vector<Vec2> from;
+  std::vector<int> index;
+  for (int i = 0; i < plan_.n_cp; ++i)
+    if (fplan_.cp_group[i] >= 0 && fplan_.cp_offset[i] == i) {
+      from.push_back({cp[2 * i], cp[2 * i + 1]});
+      index.push_back(i);
+    }
+  const PointTracks tracks = track_points(prev, next, W, H, from);
+
+  // Per group: the similarity the tracks show, composed into the copied homography.
+  const size_t pb = static_cast<size_t>(G_) * kMotionParams;
+  std::vector<float> copied(pb);
+  q.enqueueReadBuffer(params_, CL_TRUE, k * pb * sizeof(float), pb * sizeof(float), copied.data());
+  std::vector<float> tracked = copied;
+  bool any = false;
+  for (int g = 0; g < G_; ++g) {
+    std::vector<Vec2> f, t;
+    std::vector<double> w;
+    for (size_t j = 0; j < index.size(); ++j)
+      if (fplan_.cp_group[index[j]] == g) {
+        f.push_back(from[j]);
+        t.push_back(tracks.to[j]);
+        w.push_back(tracks.weight[j]);
+      }
+    const auto sim = fit_similarity(f, t, w);
+    if (!sim) continue;
+    MotionParams th;
+    for (int j = 0; j < kMotionParams; ++j) th[j] = copied[g * kMotionParams + j];
+    compose_similarity(th, *sim, {0.5 * W, 0.5 * H}, 0.5 * W);
+    for (int j = 0; j < kMotionParams; ++j) tracked[g * kMotionParams + j] = static_cast<float>(th[j]);
+    any = true;
+  }
+  if (!any) return;
+  ++warm_starts_tried;
+  const float copied_loss = frame_loss(k);
+  q.enqueueWriteBuffer(params_, CL_TRUE, k * pb * sizeof(float), pb * sizeof(float), tracked.data());
+  const float tracked_loss = frame_loss(k);
+  if (tracked_loss < copied_loss) {
+    ++warm_starts_kept;
+  } else {
+    q.enqueueWriteBuffer(params_, CL_TRUE, k * pb * sizeof(float), pb * sizeof(float), copied.data());
+  }
 }
 
 LossTerms Fitter::step() {

@@ -89,6 +89,9 @@ class Fitter {
  private:
   LossTerms fit_iteration();
   void activate_keyframe(int k);
+  // Optical-flow warm start of keyframe k (warm_start.h); keeps it only if it fits better.
+  void warm_start(int k);
+  float frame_loss(int k);  // image loss of keyframe k alone with the current parameters
   void upload_steps();
 
   ClRuntime& rt_;
@@ -102,6 +105,11 @@ class Fitter {
   std::vector<int> steps_;
   std::unique_ptr<ClRaster> raster_;
   int real_cps_ = 0;  // control points that are not padding
+ public:
+  // Warm starts tried and kept so far (for reports and tests).
+  int warm_starts_tried = 0, warm_starts_kept = 0;
+
+ private:
   cl::Kernel k_motion_, k_motion_back_, k_smooth_, k_g1_, k_contain_, k_sum_, k_adam_p_, k_adam_o_;
   cl::Buffer params_, offsets_, rest_, cp_group_, cp_offset_, group_first_, group_cps_, nbr_first_,
       nbr_, nbr_w_, joints_, sdf_, grad_params_, grad_offsets_, m_params_, v_params_, m_offsets_,

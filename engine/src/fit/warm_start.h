@@ -1,0 +1,39 @@
+// The warm start of a newly activated keyframe: point tracks from the previous keyframe's
+// render to the new target frame (pyramidal Lucas-Kanade, OpenCV), with forward-backward
+// consistency as the certainty, condensed per group into a similarity that is composed into
+// the copied homography. The fitter keeps whichever of copied and tracked fits better.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "fit/motion_model.h"
+#include "svgmotion/affine.h"
+
+namespace svgm {
+
+struct PointTracks {
+  std::vector<Vec2> to;         // tracked positions
+  std::vector<double> weight;   // 0 (lost) .. 1 (forward and backward agree exactly)
+};
+
+// prev and next: 8-bit grey images of width x height. Points in pixels (centres at +0.5).
+PointTracks track_points(const std::vector<uint8_t>& prev, const std::vector<uint8_t>& next,
+                         int width, int height, const std::vector<Vec2>& from);
+
+struct Similarity {
+  double scale = 1, angle = 0;
+  Vec2 shift;  // y = scale · R(angle) · x + shift
+};
+
+// Weighted least-squares similarity from → to (Umeyama 1991); nothing when fewer than 3 points
+// carry weight or the points are degenerate.
+std::optional<Similarity> fit_similarity(const std::vector<Vec2>& from, const std::vector<Vec2>& to,
+                                         const std::vector<double>& weight);
+
+// Applies a pixel-space similarity after the homography `th` (origin, scale: the normalisation
+// of kernels/motion.cl). Exact when th has no projective part, otherwise an approximation.
+void compose_similarity(MotionParams& th, const Similarity& s, Vec2 origin, double scale);
+
+}  // namespace svgm
