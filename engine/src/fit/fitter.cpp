@@ -16,13 +16,6 @@ namespace {
 constexpr int kMotionParams = 12;  // MOTION_PARAMS in kernels/motion.cl
 const std::array<float, 4> kWhite{1, 1, 1, 1};
 
-size_t round_up(size_t n, size_t m) { return (n + m - 1) / m * m; }
-
-template <class... A>
-void set_args(cl::Kernel& k, const A&... args) {
-  cl_uint i = 0;
-  (k.setArg(i++, args), ...);
-}
 
 }  // namespace
 

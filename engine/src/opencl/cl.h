@@ -20,4 +20,14 @@ namespace svgm {
 // "CL_OUT_OF_RESOURCES (-5)" style name for an OpenCL status code.
 std::string cl_status_name(int status);
 
+// n rounded up to a multiple of m: global sizes must be multiples of the work-group size.
+inline size_t round_up(size_t n, size_t m) { return (n + m - 1) / m * m; }
+
+// Sets a kernel's arguments 0, 1, 2, ... in order.
+template <class... A>
+void set_args(cl::Kernel& k, const A&... args) {
+  cl_uint i = 0;
+  (k.setArg(i++, args), ...);
+}
+
 }  // namespace svgm

@@ -8,19 +8,6 @@
 
 namespace svgm {
 
-namespace {
-
-size_t round_up(size_t n, size_t m) { return (n + m - 1) / m * m; }
-
-
-template <class... A>
-void set_args(cl::Kernel& k, const A&... args) {
-  cl_uint i = 0;
-  (k.setArg(i++, args), ...);
-}
-
-}  // namespace
-
 cl::Buffer ClRaster::make(size_t bytes, const void* host) {
   bytes = std::max<size_t>(bytes, 16);  // OpenCL refuses zero-sized buffers
   device_bytes_ += bytes;

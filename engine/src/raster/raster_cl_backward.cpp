@@ -8,18 +8,6 @@
 
 namespace svgm {
 
-namespace {
-
-size_t round_up(size_t n, size_t m) { return (n + m - 1) / m * m; }
-
-template <class... A>
-void set_args(cl::Kernel& k, const A&... args) {
-  cl_uint i = 0;
-  (k.setArg(i++, args), ...);
-}
-
-}  // namespace
-
 void ClRaster::init_backward() {
   if (backward_ready_) return;
   const auto& p = plan_;
