@@ -1,0 +1,591 @@
+// Reading an SVG document into the scene model (see svgmotion/svg_reader.h).
+//
+// A recursive walk over pugixml's DOM that carries the computed style, the transform to canvas
+// space, the accumulated opacity and the element's locator. Shapes become cubic paths in canvas
+// space; <use> instantiates its target in place (with a stack to detect cycles); the root's
+// viewBox and preserveAspectRatio map user space to the canvas. Unsupported features are
+// counted per kind and reported as one warning each at the end.
+#include "svgmotion/svg_reader.h"
+
+#include <pugixml.hpp>
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "svg/css_color.h"
+#include "svg/path_data.h"
+#include "svg/svg_number.h"
+#include "svg/svg_style.h"
+#include "svg/transform_list.h"
+#include "svgmotion/error.h"
+
+namespace svgm {
+
+namespace {
+
+using svg::ElementProps;
+using svg::Paint;
+using svg::PaintKind;
+using svg::Style;
+
+std::string_view local_name(const char* name) {
+  const char* colon = std::strchr(name, ':');
+  return colon ? std::string_view(colon + 1) : std::string_view(name);
+}
+
+std::string describe(pugi::xml_node n) {
+  std::string s = "<" + std::string(local_name(n.name()));
+  if (const char* id = n.attribute("id").value(); *id) s += " id=" + std::string(id);
+  return s + ">";
+}
+
+struct Viewport {
+  double w = 100, h = 100;
+};
+
+class Reader {
+ public:
+  Reader(std::string name, const SvgReadLimits& limits) : name_(std::move(name)), limits_(limits) {}
+
+  Scene read(std::string_view text);
+
+ private:
+  [[noreturn]] void fail(const std::string& problem) const { throw Error(name_ + ": " + problem); }
+
+  // Numeric attribute as a length in user units; `fallback` when absent or invalid. Throws on
+  // nan/inf/overflow.
+  double length(pugi::xml_node n, const char* attr, double fallback, double percent_of) const;
+  bool has(pugi::xml_node n, const char* attr) const { return !n.attribute(attr).empty(); }
+
+  void compute_style(pugi::xml_node n, const Style& parent, Style& s, ElementProps& props);
+  void walk(pugi::xml_node n, const Style& parent, const Affine& ctm, float opacity,
+            const std::string& locator, int group, const std::string& id_prefix, int depth,
+            const Viewport& vp);
+  void walk_children(pugi::xml_node n, const Style& s, const Affine& ctm, float opacity,
+                     const std::string& locator, int group, const std::string& id_prefix,
+                     int depth, const Viewport& vp);
+  void add_shape(pugi::xml_node n, std::vector<Subpath> subpaths, const Style& s,
+                 const Affine& ctm, float opacity, const std::string& locator, int group,
+                 const std::string& id_prefix);
+  std::vector<Subpath> shape_geometry(pugi::xml_node n, std::string_view tag, const Viewport& vp);
+  bool resolve_paint(const Paint& p, const Style& s, pugi::xml_node el, Rgba* out);
+  std::optional<Rgba> gradient_mean(pugi::xml_node g, int depth);
+  Affine viewbox_transform(pugi::xml_node n, double w, double h, Viewport* inner);
+  void warn(const std::string& kind) { ++warn_counts_[kind]; }
+
+  std::string name_;
+  SvgReadLimits limits_;
+  Scene scene_;
+  std::map<std::string, pugi::xml_node> ids_;
+  std::set<const void*> use_stack_;
+  std::map<std::string, int> warn_counts_;
+  int generated_ = 0;
+  size_t segments_ = 0;
+};
+
+double Reader::length(pugi::xml_node n, const char* attr, double fallback, double percent_of) const {
+  const pugi::xml_attribute a = n.attribute(attr);
+  if (a.empty()) return fallback;
+  std::string_view v = a.value();
+  if (svg::spells_non_finite(v))
+    fail(describe(n) + " " + attr + "=\"" + std::string(v) + "\": number out of range");
+  svg::Cursor c{v};
+  c.skip_ws();
+  const auto x = c.number();
+  if (c.out_of_range) fail(describe(n) + " " + attr + "=\"" + std::string(v) + "\": number out of range");
+  if (!x) return fallback;
+  std::string unit(v.substr(c.pos));
+  while (!unit.empty() && std::isspace(static_cast<unsigned char>(unit.back()))) unit.pop_back();
+  double scale = 1;
+  if (unit.empty() || unit == "px") scale = 1;
+  else if (unit == "%") scale = percent_of / 100;
+  else if (unit == "pt") scale = 4.0 / 3.0;
+  else if (unit == "pc") scale = 16;
+  else if (unit == "mm") scale = 96 / 25.4;
+  else if (unit == "cm") scale = 96 / 2.54;
+  else if (unit == "in") scale = 96;
+  else if (unit == "em") scale = 16;
+  else if (unit == "ex") scale = 8;
+  else return fallback;
+  return *x * scale;
+}
+
+void Reader::compute_style(pugi::xml_node n, const Style& parent, Style& s, ElementProps& props) {
+  s = parent;
+  s.dashed = parent.dashed;
+  auto apply = [&](std::string_view name, std::string_view value) {
+    if (!svg::apply_declaration(name, value, parent, s, props))
+      fail(describe(n) + " " + std::string(name) + "=\"" + std::string(value) + "\": number out of range");
+  };
+  // `color` first so that currentColor in this element's own fill/stroke sees it.
+  if (const char* c = n.attribute("color").value(); *c) apply("color", c);
+  for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute())
+    if (std::strcmp(a.name(), "style") != 0 && std::strcmp(a.name(), "color") != 0) apply(a.name(), a.value());
+  // The style attribute wins over presentation attributes.
+  std::string_view st = n.attribute("style").value();
+  while (!st.empty()) {
+    const size_t semi = st.find(';');
+    const std::string_view decl = st.substr(0, semi);
+    if (const size_t colon = decl.find(':'); colon != std::string_view::npos) {
+      std::string_view k = decl.substr(0, colon);
+      while (!k.empty() && std::isspace(static_cast<unsigned char>(k.front()))) k.remove_prefix(1);
+      while (!k.empty() && std::isspace(static_cast<unsigned char>(k.back()))) k.remove_suffix(1);
+      apply(k, decl.substr(colon + 1));
+    }
+    if (semi == std::string_view::npos) break;
+    st.remove_prefix(semi + 1);
+  }
+}
+
+std::optional<Rgba> Reader::gradient_mean(pugi::xml_node g, int depth) {
+  double r = 0, gg = 0, b = 0, a = 0;
+  int n = 0;
+  for (pugi::xml_node stop = g.first_child(); stop; stop = stop.next_sibling()) {
+    if (local_name(stop.name()) != "stop") continue;
+    Style st;
+    ElementProps props;
+    Rgba c{0, 0, 0, 1};
+    float opacity = 1;
+    auto take = [&](std::string_view k, std::string_view v) {
+      if (k == "stop-color") {
+        if (const auto col = svg::parse_color(v)) c = *col;
+      } else if (k == "stop-opacity") {
+        svg::parse_unit_interval(v, &opacity);
+      }
+    };
+    take("stop-color", stop.attribute("stop-color").value());
+    if (!stop.attribute("stop-opacity").empty()) take("stop-opacity", stop.attribute("stop-opacity").value());
+    std::string_view style = stop.attribute("style").value();
+    while (!style.empty()) {
+      const size_t semi = style.find(';');
+      const std::string_view decl = style.substr(0, semi);
+      if (const size_t colon = decl.find(':'); colon != std::string_view::npos) {
+        std::string_view k = decl.substr(0, colon);
+        while (!k.empty() && std::isspace(static_cast<unsigned char>(k.front()))) k.remove_prefix(1);
+        while (!k.empty() && std::isspace(static_cast<unsigned char>(k.back()))) k.remove_suffix(1);
+        take(k, decl.substr(colon + 1));
+      }
+      if (semi == std::string_view::npos) break;
+      style.remove_prefix(semi + 1);
+    }
+    r += c.r; gg += c.g; b += c.b; a += c.a * opacity;
+    ++n;
+  }
+  if (n == 0) {
+    // Stops may come from the gradient this one references.
+    const char* href = g.attribute("xlink:href").value();
+    if (!*href) href = g.attribute("href").value();
+    if (*href == '#' && depth < 16) {
+      const auto it = ids_.find(href + 1);
+      if (it != ids_.end()) return gradient_mean(it->second, depth + 1);
+    }
+    return std::nullopt;
+  }
+  return Rgba{static_cast<float>(r / n), static_cast<float>(gg / n), static_cast<float>(b / n),
+              static_cast<float>(a / n)};
+}
+
+bool Reader::resolve_paint(const Paint& p, const Style& s, pugi::xml_node el, Rgba* out) {
+  switch (p.kind) {
+    case PaintKind::None: return false;
+    case PaintKind::Color: *out = p.color; return true;
+    case PaintKind::CurrentColor: *out = s.color; return true;
+    case PaintKind::Url: {
+      const auto it = ids_.find(p.url);
+      if (it != ids_.end()) {
+        const std::string_view tag = local_name(it->second.name());
+        if (tag == "linearGradient" || tag == "radialGradient") {
+          warn("gradient paint drawn with its mean stop colour");
+          if (const auto m = gradient_mean(it->second, 0)) {
+            *out = *m;
+            return true;
+          }
+          return false;
+        }
+        if (tag == "pattern") warn("pattern paint not supported (fallback colour or none used)");
+      }
+      (void)el;
+      if (p.has_fallback && p.fallback != PaintKind::None) {
+        *out = p.fallback == PaintKind::CurrentColor ? s.color : p.color;
+        return true;
+      }
+      return false;
+    }
+  }
+  return false;
+}
+
+Affine Reader::viewbox_transform(pugi::xml_node n, double w, double h, Viewport* inner) {
+  inner->w = w;
+  inner->h = h;
+  const char* vb = n.attribute("viewBox").value();
+  if (!*vb) return {};
+  svg::Cursor c{vb};
+  double v[4];
+  for (double& x : v) {
+    c.skip_comma_ws();
+    const auto num = c.number();
+    if (c.out_of_range) fail(describe(n) + " viewBox: number out of range");
+    if (!num) return {};
+    x = *num;
+  }
+  if (v[2] <= 0 || v[3] <= 0) return {};
+  inner->w = v[2];
+  inner->h = v[3];
+  std::string par = n.attribute("preserveAspectRatio").value();
+  std::istringstream ss(par);
+  std::string align = "xMidYMid", mode = "meet";
+  ss >> align;
+  if (align == "defer") ss >> align;
+  ss >> mode;
+  if (align.empty()) align = "xMidYMid";
+  double sx = w / v[2], sy = h / v[3];
+  if (align == "none") return Affine::scale(sx, sy) * Affine::translate(-v[0], -v[1]);
+  const double s = mode == "slice" ? std::max(sx, sy) : std::min(sx, sy);
+  double tx = -v[0] * s, ty = -v[1] * s;
+  const double ex = w - v[2] * s, ey = h - v[3] * s;
+  if (align.find("xMid") != std::string::npos) tx += ex / 2;
+  else if (align.find("xMax") != std::string::npos) tx += ex;
+  if (align.find("YMid") != std::string::npos) ty += ey / 2;
+  else if (align.find("YMax") != std::string::npos) ty += ey;
+  return Affine{s, 0, 0, s, tx, ty};
+}
+
+std::vector<Subpath> Reader::shape_geometry(pugi::xml_node n, std::string_view tag, const Viewport& vp) {
+  std::vector<Subpath> out;
+  auto ellipse = [&](double cx, double cy, double rx, double ry) {
+    Subpath s;
+    s.closed = true;
+    s.points.push_back({cx + rx, cy});
+    svg::arc_to_cubics({cx + rx, cy}, rx, ry, 0, false, true, {cx, cy + ry}, s.points);
+    svg::arc_to_cubics({cx, cy + ry}, rx, ry, 0, false, true, {cx - rx, cy}, s.points);
+    svg::arc_to_cubics({cx - rx, cy}, rx, ry, 0, false, true, {cx, cy - ry}, s.points);
+    svg::arc_to_cubics({cx, cy - ry}, rx, ry, 0, false, true, {cx + rx, cy}, s.points);
+    out.push_back(std::move(s));
+  };
+  auto lines = [](std::vector<Vec2> pts, bool closed) {
+    Subpath s;
+    s.closed = closed;
+    s.points.push_back(pts[0]);
+    for (size_t i = 1; i < pts.size(); ++i) {
+      const Vec2 a = pts[i - 1], b = pts[i];
+      s.points.insert(s.points.end(), {a + (1.0 / 3.0) * (b - a), a + (2.0 / 3.0) * (b - a), b});
+    }
+    if (closed && !(pts.back() == pts.front())) {
+      const Vec2 a = pts.back(), b = pts.front();
+      s.points.insert(s.points.end(), {a + (1.0 / 3.0) * (b - a), a + (2.0 / 3.0) * (b - a), b});
+    }
+    return s;
+  };
+  const double diag = std::sqrt(0.5 * (vp.w * vp.w + vp.h * vp.h));
+  if (tag == "path") {
+    const char* d = n.attribute("d").value();
+    const svg::PathDataResult r = svg::parse_path_data(d, out);
+    if (r.out_of_range) fail(describe(n) + " d: number out of range");
+    if (!r.ok)
+      scene_.warnings.push_back(name_ + ": " + describe(n) + ": bad path data at offset " +
+                                std::to_string(r.error_offset) + ", drawn up to there");
+  } else if (tag == "rect") {
+    const double x = length(n, "x", 0, vp.w), y = length(n, "y", 0, vp.h);
+    const double w = length(n, "width", 0, vp.w), h = length(n, "height", 0, vp.h);
+    if (!(w > 0) || !(h > 0)) return out;
+    double rx = length(n, "rx", -1, vp.w), ry = length(n, "ry", -1, vp.h);
+    if (rx < 0 && ry < 0) rx = ry = 0;
+    else if (rx < 0) rx = ry;
+    else if (ry < 0) ry = rx;
+    rx = std::min(rx, w / 2);
+    ry = std::min(ry, h / 2);
+    if (rx <= 0 || ry <= 0) {
+      out.push_back(lines({{x, y}, {x + w, y}, {x + w, y + h}, {x, y + h}}, true));
+    } else {
+      Subpath s;
+      s.closed = true;
+      auto line = [&](Vec2 b) {
+        const Vec2 a = s.points.back();
+        s.points.insert(s.points.end(), {a + (1.0 / 3.0) * (b - a), a + (2.0 / 3.0) * (b - a), b});
+      };
+      s.points.push_back({x + rx, y});
+      line({x + w - rx, y});
+      svg::arc_to_cubics({x + w - rx, y}, rx, ry, 0, false, true, {x + w, y + ry}, s.points);
+      line({x + w, y + h - ry});
+      svg::arc_to_cubics({x + w, y + h - ry}, rx, ry, 0, false, true, {x + w - rx, y + h}, s.points);
+      line({x + rx, y + h});
+      svg::arc_to_cubics({x + rx, y + h}, rx, ry, 0, false, true, {x, y + h - ry}, s.points);
+      line({x, y + ry});
+      svg::arc_to_cubics({x, y + ry}, rx, ry, 0, false, true, {x + rx, y}, s.points);
+      out.push_back(std::move(s));
+    }
+  } else if (tag == "circle") {
+    const double r = length(n, "r", 0, diag);
+    if (r > 0) ellipse(length(n, "cx", 0, vp.w), length(n, "cy", 0, vp.h), r, r);
+  } else if (tag == "ellipse") {
+    // SVG 2: a missing or negative (invalid) radius is "auto", which takes the other one.
+    double rx = length(n, "rx", -1, vp.w), ry = length(n, "ry", -1, vp.h);
+    if (rx < 0) rx = ry;
+    if (ry < 0) ry = rx;
+    if (rx > 0 && ry > 0) ellipse(length(n, "cx", 0, vp.w), length(n, "cy", 0, vp.h), rx, ry);
+  } else if (tag == "line") {
+    out.push_back(lines({{length(n, "x1", 0, vp.w), length(n, "y1", 0, vp.h)},
+                         {length(n, "x2", 0, vp.w), length(n, "y2", 0, vp.h)}},
+                        false));
+  } else if (tag == "polyline" || tag == "polygon") {
+    svg::Cursor c{n.attribute("points").value()};
+    std::vector<Vec2> pts;
+    c.skip_ws();
+    while (!c.done()) {
+      const auto x = c.number();
+      if (!x) break;
+      c.skip_comma_ws();
+      const auto y = c.number();
+      if (!y) break;  // an odd coordinate count ignores the last one
+      pts.push_back({*x, *y});
+      c.skip_comma_ws();
+    }
+    if (c.out_of_range) fail(describe(n) + " points: number out of range");
+    if (pts.size() >= 2) out.push_back(lines(pts, tag == "polygon"));
+  }
+  return out;
+}
+
+void Reader::add_shape(pugi::xml_node n, std::vector<Subpath> subpaths, const Style& s,
+                       const Affine& ctm, float opacity, const std::string& locator, int group,
+                       const std::string& id_prefix) {
+  ++generated_;
+  if (subpaths.empty() || !s.visible) return;
+  Path p;
+  const char* id = n.attribute("id").value();
+  p.id = *id ? std::string(id) : "path-" + std::to_string(generated_);
+  if (!id_prefix.empty()) p.id = id_prefix + "/" + p.id;
+  p.locator = locator;
+  p.tag = std::string(local_name(n.name()));
+  p.to_canvas = ctm;
+  p.opacity = opacity;
+  p.has_fill = resolve_paint(s.fill, s, n, &p.fill);
+  if (p.has_fill) p.fill.a *= s.fill_opacity;
+  p.fill_rule = s.fill_rule;
+  p.has_stroke = s.stroke_width > 0 && resolve_paint(s.stroke, s, n, &p.stroke.color);
+  if (p.has_stroke) {
+    p.stroke.color.a *= s.stroke_opacity;
+    p.stroke.width = s.stroke_width * ctm.mean_scale();
+    p.stroke.join = s.join;
+    p.stroke.cap = s.cap;
+    p.stroke.miter_limit = s.miter_limit;
+    if (s.dashed) warn("stroke-dasharray not supported (drawn solid)");
+  }
+  if (!p.has_fill && !p.has_stroke) return;
+  for (Subpath& sp : subpaths) {
+    for (Vec2& v : sp.points) v = ctm.apply(v);
+    segments_ += sp.segment_count();
+  }
+  if (segments_ > limits_.max_segments)
+    fail("more than " + std::to_string(limits_.max_segments) + " path segments");
+  p.subpaths = std::move(subpaths);
+  const int index = static_cast<int>(scene_.paths.size());
+  if (group < 0) {
+    p.group = static_cast<int>(scene_.groups.size());
+    scene_.groups.push_back({p.id, {index}});
+  } else {
+    p.group = group;
+    scene_.groups[group].paths.push_back(index);
+  }
+  scene_.paths.push_back(std::move(p));
+}
+
+void Reader::walk_children(pugi::xml_node n, const Style& s, const Affine& ctm, float opacity,
+                           const std::string& locator, int group, const std::string& id_prefix,
+                           int depth, const Viewport& vp) {
+  std::map<std::string, int> seen;
+  const bool is_switch = local_name(n.name()) == "switch";
+  for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling()) {
+    if (c.type() != pugi::node_element) continue;
+    const std::string tag(local_name(c.name()));
+    const int index = ++seen[tag];
+    const std::string loc = locator.empty() ? locator : locator + "/" + tag + "[" + std::to_string(index) + "]";
+    walk(c, s, ctm, opacity, loc, group, id_prefix, depth + 1, vp);
+    if (is_switch) break;  // a switch renders its first child (no conditional attributes here)
+  }
+}
+
+void Reader::walk(pugi::xml_node n, const Style& parent, const Affine& parent_ctm, float opacity,
+                  const std::string& locator, int group, const std::string& id_prefix, int depth,
+                  const Viewport& vp) {
+  if (depth > limits_.max_depth) fail("nesting deeper than " + std::to_string(limits_.max_depth) + " elements");
+  const std::string_view tag = local_name(n.name());
+  static const std::set<std::string_view> kShapes = {"path", "rect", "circle", "ellipse", "line",
+                                                     "polyline", "polygon"};
+  static const std::set<std::string_view> kContainers = {"g", "a", "switch"};
+  const bool shape = kShapes.count(tag) != 0;
+  if (!shape && !kContainers.count(tag) && tag != "use" && tag != "svg") {
+    if (tag == "text" || tag == "image" || tag == "foreignObject")
+      warn("<" + std::string(tag) + "> elements skipped (" + std::string(tag) + " is not supported)");
+    return;  // defs, symbol (only through use), title, metadata, editor elements ...
+  }
+  Style s;
+  ElementProps props;
+  compute_style(n, parent, s, props);
+  if (props.display_none) return;
+  if (props.has_clip) warn("clip-path ignored (clipping is not supported)");
+  if (props.has_mask) warn("mask ignored (masks are not supported)");
+  if (props.has_filter) warn("filter ignored (filters are not supported)");
+  if (props.has_marker) warn("markers ignored (markers are not supported)");
+  Affine ctm = parent_ctm;
+  if (const char* t = n.attribute("transform").value(); *t) {
+    bool bad = false;
+    const auto m = svg::parse_transform(t, &bad);
+    if (bad) fail(describe(n) + " transform: number out of range");
+    if (m) ctm = ctm * *m;
+  }
+  const float op = opacity * props.opacity;
+
+  if (shape) {
+    add_shape(n, shape_geometry(n, tag, vp), s, ctm, op, locator, group, id_prefix);
+    return;
+  }
+  if (tag == "use") {
+    const char* href = n.attribute("xlink:href").value();
+    if (!*href) href = n.attribute("href").value();
+    if (*href != '#') return;
+    const auto it = ids_.find(href + 1);
+    if (it == ids_.end()) return;
+    const pugi::xml_node target = it->second;
+    if (use_stack_.count(target.internal_object()) || use_stack_.count(n.internal_object()))
+      fail(describe(n) + " references itself (use cycle)");
+    for (pugi::xml_node up = n.parent(); up; up = up.parent())
+      if (up == target) fail(describe(n) + " references itself (use cycle)");
+    use_stack_.insert(n.internal_object());
+    use_stack_.insert(target.internal_object());
+    ctm = ctm * Affine::translate(length(n, "x", 0, vp.w), length(n, "y", 0, vp.h));
+    const char* uid = n.attribute("id").value();
+    const std::string prefix = std::string(*uid ? uid : "use") ;
+    const int g = group < 0 && depth == 1 ? -2 : group;  // top-level use: one group of its own
+    int use_group = g;
+    if (g == -2) {
+      use_group = static_cast<int>(scene_.groups.size());
+      scene_.groups.push_back({prefix, {}});
+    }
+    if (local_name(target.name()) == "symbol") {
+      Viewport inner;
+      const double w = length(n, "width", vp.w, vp.w), h = length(n, "height", vp.h, vp.h);
+      const Affine vb = viewbox_transform(target, w, h, &inner);
+      Style ts;
+      ElementProps tp;
+      compute_style(target, s, ts, tp);
+      walk_children(target, ts, ctm * vb, op * tp.opacity, locator, use_group, prefix, depth + 1, inner);
+    } else {
+      walk(target, s, ctm, op, locator, use_group, prefix, depth + 1, vp);
+    }
+    if (g == -2 && scene_.groups[use_group].paths.empty()) scene_.groups.pop_back();
+    use_stack_.erase(n.internal_object());
+    use_stack_.erase(target.internal_object());
+    return;
+  }
+  Viewport inner = vp;
+  if (tag == "svg" && depth > 0) {  // nested viewport
+    const double w = length(n, "width", vp.w, vp.w), h = length(n, "height", vp.h, vp.h);
+    ctm = ctm * Affine::translate(length(n, "x", 0, vp.w), length(n, "y", 0, vp.h)) *
+          viewbox_transform(n, w, h, &inner);
+  }
+  int g = group;
+  if (tag == "g" && depth == 1) {  // a top-level group is a part that moves together
+    g = static_cast<int>(scene_.groups.size());
+    const char* id = n.attribute("id").value();
+    scene_.groups.push_back({*id ? id : "group-" + std::to_string(g + 1), {}});
+  }
+  walk_children(n, s, ctm, op, locator, g, id_prefix, depth, inner);
+  if (g != group && scene_.groups[g].paths.empty()) scene_.groups.pop_back();
+}
+
+Scene Reader::read(std::string_view text) {
+  pugi::xml_document doc;
+  const pugi::xml_parse_result r = doc.load_buffer(text.data(), text.size(), pugi::parse_default);
+  if (!r)
+    fail("not well-formed XML at offset " + std::to_string(r.offset) + ": " + r.description());
+  pugi::xml_node root = doc.document_element();
+  if (!root || local_name(root.name()) != "svg")
+    fail("root element is <" + std::string(root ? local_name(root.name()) : "nothing") + ">, not <svg>");
+  // Ids, for use, gradients and patterns; collected iteratively (depth may be large).
+  std::vector<pugi::xml_node> stack{root};
+  while (!stack.empty()) {
+    pugi::xml_node n = stack.back();
+    stack.pop_back();
+    if (const char* id = n.attribute("id").value(); *id) ids_.emplace(id, n);
+    for (pugi::xml_node c = n.last_child(); c; c = c.previous_sibling())
+      if (c.type() == pugi::node_element) stack.push_back(c);
+  }
+  // Canvas size: width/height (default 100% of the viewBox size), viewBox mapped into it.
+  double vbw = 0, vbh = 0;
+  {
+    svg::Cursor c{root.attribute("viewBox").value()};
+    double v[4];
+    bool ok = true;
+    for (double& x : v) {
+      c.skip_comma_ws();
+      const auto num = c.number();
+      if (c.out_of_range) fail("<svg> viewBox: number out of range");
+      if (!num) { ok = false; break; }
+      x = *num;
+    }
+    if (ok && v[2] > 0 && v[3] > 0) { vbw = v[2]; vbh = v[3]; }
+  }
+  auto side = [&](const char* attr, double vb) {
+    const double fallback = vb > 0 ? vb : 100;
+    const char* v = root.attribute(attr).value();
+    if (*v && std::strchr(v, '%')) return fallback * length(root, attr, 100, 100) / 100;
+    return length(root, attr, fallback, fallback);
+  };
+  const double w = side("width", vbw), h = side("height", vbh);
+  if (w > limits_.max_canvas_px || h > limits_.max_canvas_px)
+    fail("size " + std::to_string(static_cast<long long>(w)) + "x" + std::to_string(static_cast<long long>(h)) +
+         " is too large (limit " + std::to_string(static_cast<long long>(limits_.max_canvas_px)) + " px)");
+  if (!(w > 0) || !(h > 0)) fail("width and height must be positive");
+  scene_.width = w;
+  scene_.height = h;
+  Viewport vp;
+  const Affine view = viewbox_transform(root, w, h, &vp);
+  Style base;
+  ElementProps props;
+  compute_style(root, base, base, props);
+  if (props.display_none) return std::move(scene_);
+  Affine ctm = view;
+  if (const char* t = root.attribute("transform").value(); *t) {
+    if (const auto m = svg::parse_transform(t)) ctm = ctm * *m;
+  }
+  walk_children(root, base, ctm, props.opacity, "/svg", -1, "", 0, vp);
+  for (const auto& [kind, count] : warn_counts_)
+    scene_.warnings.push_back(name_ + ": " + kind + (count > 1 ? " (" + std::to_string(count) + " times)" : ""));
+  return std::move(scene_);
+}
+
+}  // namespace
+
+Scene read_svg_string(std::string_view text, std::string_view name, const SvgReadLimits& limits) {
+  if (text.size() > limits.max_file_bytes)
+    throw Error(std::string(name) + ": file is " + std::to_string(text.size() / (1 << 20)) +
+                " MB, larger than the " + std::to_string(limits.max_file_bytes >> 20) + " MB limit");
+  return Reader(std::string(name), limits).read(text);
+}
+
+Scene read_svg_file(const std::filesystem::path& file, const SvgReadLimits& limits) {
+  const std::string name = file.string();
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) throw Error(name + ": is a folder, not an SVG file");
+  const auto size = std::filesystem::file_size(file, ec);
+  if (ec) throw Error(name + ": cannot open: " + (ec == std::errc::no_such_file_or_directory ? std::string("No such file or directory") : ec.message()));
+  if (size > limits.max_file_bytes)
+    throw Error(name + ": file is " + std::to_string(size / (1 << 20)) + " MB, larger than the " +
+                std::to_string(limits.max_file_bytes >> 20) + " MB limit");
+  std::ifstream f(file, std::ios::binary);
+  if (!f) throw Error(name + ": cannot open: " + std::strerror(errno));
+  std::string text(size, '\0');
+  f.read(text.data(), static_cast<std::streamsize>(size));
+  if (!f) throw Error(name + ": cannot read: " + std::strerror(errno));
+  return read_svg_string(text, name, limits);
+}
+
+}  // namespace svgm
