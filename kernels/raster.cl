@@ -92,14 +92,43 @@ inline void accumulate_line(float4 l, int row, int width, __local float* acc, in
   *xhi = max(*xhi, i);
 }
 
-/* Sweeps cells [xlo, xhi] (clamped to the row), compositing one draw over `out`. Past xhi the
- * cells are zero, so a winding integral still nonzero there (the draw's closing edges lie right
- * of the canvas) is a constant coverage for the rest of the row. */
-inline void composite_span(__local float* acc, __local float4* out, int xlo, int xhi,
-                           int width, float4 color, int rule) {
+/* Lazily cleared row buffers. A band's rows are not cleared up front: each row keeps the hull
+ * [lo, hi] of cells known to be valid (zero, or written since), and grows it, zeroing only the
+ * new cells, before a line or span touches cells outside it. Pixels no draw reaches are never
+ * touched at all and come out as background. (Clearing and converting every pixel of every
+ * band was 90% of a three-path frame.) */
+inline void grow_hull(__local float* buf, int* lo, int* hi, int a, int b) {
+  if (*hi < *lo) {
+    for (int x = a; x <= b; ++x) buf[x] = 0.0f;
+    *lo = a; *hi = b;
+    return;
+  }
+  for (int x = a; x < *lo; ++x) buf[x] = 0.0f;
+  for (int x = *hi + 1; x <= b; ++x) buf[x] = 0.0f;
+  *lo = min(*lo, a); *hi = max(*hi, b);
+}
+
+inline void grow_hull4(__local float4* buf, int* lo, int* hi, int a, int b) {
+  if (*hi < *lo) {
+    for (int x = a; x <= b; ++x) buf[x] = (float4)(0.0f);
+    *lo = a; *hi = b;
+    return;
+  }
+  for (int x = a; x < *lo; ++x) buf[x] = (float4)(0.0f);
+  for (int x = *hi + 1; x <= b; ++x) buf[x] = (float4)(0.0f);
+  *lo = min(*lo, a); *hi = max(*hi, b);
+}
+
+/* Sweeps cells [xlo, xhi] (clamped to the row), compositing one draw over `out` (whose valid
+ * hull is [*hlo, *hhi]). Past xhi the cells are zero, so a winding integral still nonzero there
+ * (the draw's closing edges lie right of the canvas) is a constant coverage for the rest of the
+ * row. */
+inline void composite_span(__local float* acc, __local float4* out, int* hlo, int* hhi, int xlo,
+                           int xhi, int width, float4 color, int rule) {
   float s = 0.0f;
   const int xe = min(xhi, width - 1);
   const float4 premul = (float4)(color.xyz, 1.0f);
+  grow_hull4(out, hlo, hhi, xlo, xe);
   for (int x = xlo; x <= xe; ++x) {
     s += acc[x];
     acc[x] = 0.0f;
@@ -108,8 +137,10 @@ inline void composite_span(__local float* acc, __local float4* out, int xlo, int
   }
   acc[xe + 1] = 0.0f; /* the spill cell of the last pixel */
   const float a = fill_rule_coverage(s, rule) * color.w;
-  if (a > RESIDUAL_COVERAGE)
+  if (a > RESIDUAL_COVERAGE && xe + 1 < width) {
+    grow_hull4(out, hlo, hhi, xe + 1, width - 1);
     for (int x = xe + 1; x < width; ++x) out[x] = premul * a + out[x] * (1.0f - a);
+  }
 }
 
 /* The bounding box (xmin, ymin, xmax, ymax) of every chunk of lines (up to 16 consecutive lines
@@ -138,6 +169,9 @@ __kernel void chunk_bounds(__global const float4* lines,    /* [K][n_lines] */
 #define OUT_FLOAT 0
 #define OUT_RGBA8 1
 #define OUT_RESIDUAL 2
+
+/* The largest BAND_H a host may choose (the hull table is sized by it). */
+#define MAX_BAND_H 64
 
 inline uchar4 to_rgba8_pixel(float4 c, float4 background) {
   c = c + background * (1.0f - c.w);
@@ -168,15 +202,19 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
   const int y0 = band * BAND_H, rows = min(BAND_H, height - y0);
   const float fy0 = (float)y0, fy1 = (float)(y0 + rows), fw = (float)width;
   const int stride = width + 2;
-  for (int i = lid; i < rows * stride; i += lsize) acc[i] = 0.0f;
-  for (int i = lid; i < rows * width; i += lsize) band_rgba[i] = (float4)(0.0f);
-  barrier(CLK_LOCAL_MEM_FENCE);
+  /* Valid hulls of each row's accumulation cells and colours (see grow_hull); shared with the
+   * output stage, hence local. */
+  __local int hull[4 * MAX_BAND_H];
 
   if (lid == 0) {
+  int xlo[BAND_H], xhi[BAND_H], alo[BAND_H], ahi[BAND_H], hlo[BAND_H], hhi[BAND_H];
+  for (int r = 0; r < BAND_H; ++r) {
+    xlo[r] = width; xhi[r] = -1;
+    alo[r] = width + 2; ahi[r] = -1;
+    hlo[r] = width; hhi[r] = -1;
+  }
   __global const float4* L = lines + (size_t)k * n_lines;
   __global const float4* B = bounds + (size_t)k * n_chunks;
-  int xlo[BAND_H], xhi[BAND_H];
-  for (int r = 0; r < BAND_H; ++r) { xlo[r] = width; xhi[r] = -1; }
   for (int d = 0; d < n_draws; ++d) {
     const int2 chunks = draw_chunks[d];
     for (int c = chunks.x; c < chunks.x + chunks.y; ++c) {
@@ -188,31 +226,54 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
         const float4 l = L[j];
         const float ymin = fmin(l.y, l.w) - fy0, ymax = fmax(l.y, l.w) - fy0;
         const int r0 = max((int)floor(ymin), 0), r1 = min((int)ceil(ymax), rows) - 1;
-        for (int r = r0; r <= r1; ++r)
+        if (r0 > r1) continue;
+        /* The cells the line can write in any row (accumulate_line's i and i + 1). */
+        const int ca = (int)clamp(floor(fmin(l.x, l.z)), 0.0f, fw);
+        const int cb = (int)clamp(floor(fmax(l.x, l.z)) + 1.0f, 0.0f, fw + 1.0f);
+        for (int r = r0; r <= r1; ++r) {
+          grow_hull(acc + r * stride, &alo[r], &ahi[r], ca, max(ca, cb));
           accumulate_line(l, y0 + r, width, acc + r * stride, &xlo[r], &xhi[r]);
+        }
       }
     }
     const float4 color = draw_color[d];
     const int rule = draw_rule[d];
     for (int r = 0; r < rows; ++r) {
       if (xhi[r] >= xlo[r])
-        composite_span(acc + r * stride, band_rgba + r * width, xlo[r], xhi[r], width, color, rule);
+        composite_span(acc + r * stride, band_rgba + r * width, &hlo[r], &hhi[r], xlo[r], xhi[r],
+                       width, color, rule);
       xlo[r] = width;
       xhi[r] = -1;
     }
   }
+  for (int r = 0; r < rows; ++r) {
+    if (out_mode != OUT_RGBA8) grow_hull4(band_rgba + r * width, &hlo[r], &hhi[r], 0, width - 1);
+    hull[2 * r] = hlo[r];
+    hull[2 * r + 1] = hhi[r];
+  }
   }
   barrier(CLK_LOCAL_MEM_FENCE);
   const size_t base = ((size_t)k * height + y0) * width;
-  if (out_mode == OUT_RGBA8 && background.w == 1.0f) {
-    /* Over an opaque background the result is opaque: no un-premultiplying. */
-    for (int i = lid; i < rows * width; i += lsize) {
-      const float4 c = band_rgba[i] + background * (1.0f - band_rgba[i].w);
-      rgba8[base + i] = convert_uchar4_sat((float4)(c.xyz, 1.0f) * 255.0f + 0.5f);
+  if (out_mode == OUT_RGBA8) {
+    /* Outside a row's hull no draw wrote: background. Over an opaque background the result is
+     * opaque, so no un-premultiplying there either. */
+    const uchar4 bg8 = to_rgba8_pixel((float4)(0.0f), background);
+    const int opaque = background.w == 1.0f;
+    for (int r = lid; r < rows; r += lsize) {
+      const int lo = hull[2 * r], hi = hull[2 * r + 1];
+      __local const float4* row = band_rgba + r * width;
+      __global uchar4* o = rgba8 + base + (size_t)r * width;
+      for (int x = 0; x < width; ++x) {
+        if (x < lo || x > hi) {
+          o[x] = bg8;
+        } else if (opaque) {
+          const float4 c = row[x] + background * (1.0f - row[x].w);
+          o[x] = convert_uchar4_sat((float4)(c.xyz, 1.0f) * 255.0f + 0.5f);
+        } else {
+          o[x] = to_rgba8_pixel(row[x], background);
+        }
+      }
     }
-  } else if (out_mode == OUT_RGBA8) {
-    for (int i = lid; i < rows * width; i += lsize)
-      rgba8[base + i] = to_rgba8_pixel(band_rgba[i], background);
   } else if (out_mode == OUT_RESIDUAL) {
     /* D = C over background − T, then the x pass of the loss's blur while the rows are local
      * (loss.cl's blur_pass along x, fused here to save a pass over every pixel). */

@@ -40,7 +40,7 @@ double median(std::vector<double> v) {
 
 int bench_render(const std::vector<std::string>& argv) {
   const Args a = parse_args("bench render", argv, {"--frames", "--size", "--device", "--repeat"},
-                            {"--json"});
+                            {"--json", "--profile"});
   if (a.positional.size() != 1) throw Error("bench render: expected one input SVG");
   const int frames = a.get_int("--frames", 15, 1, 1000);
   const int width = a.get_int("--size", 256, 1, 16384);
@@ -48,7 +48,7 @@ int bench_render(const std::vector<std::string>& argv) {
   const Scene scene = read_svg_file(a.positional[0]);
   const RenderSize size = render_size(scene, width);
   const RasterPlan plan = plan_raster(scene, size.view, size.width, size.height);
-  ClRuntime rt(a.get("--device").value_or("auto"));
+  ClRuntime rt(a.get("--device").value_or("auto"), a.has("--profile"));
   ClRaster raster(rt, plan, frames);
   raster.set_rest_pose();
   // 8-bit output over white, as librsvg's benchmark produces: the same work a render does.
@@ -64,6 +64,8 @@ int bench_render(const std::vector<std::string>& argv) {
                      .count());
   }
   const double per_frame = median(ms) / frames;
+  if (a.has("--profile"))  // device time of each kernel in the last batch
+    for (const auto& [name, t] : raster.kernel_times()) std::fprintf(stderr, "  %-14s %.3f ms\n", name.c_str(), t);
   if (a.has("--json")) {
     std::printf(
         "{\"svg\": \"%s\", \"frames\": %d, \"width\": %d, \"height\": %d, \"lines\": %d, "

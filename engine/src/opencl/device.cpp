@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <optional>
 
 #include "opencl/cl.h"
@@ -31,6 +32,11 @@ constexpr const char* kNoPlatform =
 }  // namespace
 
 std::vector<DeviceInfo> list_devices() {
+  // PoCL's CPU device: pin its worker threads to cores. Unpinned, a process ran either at full
+  // speed or at about half (measured 0.88 ms vs 1.73 ms per batch, decided at start-up by where
+  // the scheduler put the workers). Read by PoCL when the platform loads; a user's own setting
+  // wins (overwrite = 0).
+  setenv("POCL_AFFINITY", "1", 0);
   std::vector<cl::Platform> platforms;
   try {
     cl::Platform::get(&platforms);
