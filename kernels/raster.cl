@@ -97,15 +97,19 @@ inline void accumulate_line(float4 l, int row, int width, __local float* acc, in
  * new cells, before a line or span touches cells outside it. Pixels no draw reaches are never
  * touched at all and come out as background. (Clearing and converting every pixel of every
  * band was 90% of a three-path frame.) */
-inline void grow_hull(__local float* buf, int* lo, int* hi, int a, int b) {
+inline void grow_hull_fill(__local float* buf, int* lo, int* hi, int a, int b, float value) {
   if (*hi < *lo) {
-    for (int x = a; x <= b; ++x) buf[x] = 0.0f;
+    for (int x = a; x <= b; ++x) buf[x] = value;
     *lo = a; *hi = b;
     return;
   }
-  for (int x = a; x < *lo; ++x) buf[x] = 0.0f;
-  for (int x = *hi + 1; x <= b; ++x) buf[x] = 0.0f;
+  for (int x = a; x < *lo; ++x) buf[x] = value;
+  for (int x = *hi + 1; x <= b; ++x) buf[x] = value;
   *lo = min(*lo, a); *hi = max(*hi, b);
+}
+
+inline void grow_hull(__local float* buf, int* lo, int* hi, int a, int b) {
+  grow_hull_fill(buf, lo, hi, a, b, 0.0f);
 }
 
 inline void grow_hull4(__local float4* buf, int* lo, int* hi, int a, int b) {
@@ -117,6 +121,39 @@ inline void grow_hull4(__local float4* buf, int* lo, int* hi, int a, int b) {
   for (int x = a; x < *lo; ++x) buf[x] = (float4)(0.0f);
   for (int x = *hi + 1; x <= b; ++x) buf[x] = (float4)(0.0f);
   *lo = min(*lo, a); *hi = max(*hi, b);
+}
+
+/* Adds the lines of one draw that reach this band (chunks culled by their boxes) to the rows'
+ * accumulation cells, growing each row's clean hull [alo, ahi] first. Returns whether any chunk
+ * reached the band. Shared by the forward and backward raster kernels, which must visit the
+ * same lines in the same order to get the same bits. */
+inline int accumulate_draw(__global const float4* L, __global const float4* B,
+                           __global const int2* chunk_lines, int2 chunks, int y0, int rows,
+                           int width, int stride, __local float* acc, int* xlo, int* xhi,
+                           int* alo, int* ahi) {
+  const float fy0 = (float)y0, fy1 = (float)(y0 + rows), fw = (float)width;
+  int any = 0;
+  for (int c = chunks.x; c < chunks.x + chunks.y; ++c) {
+    const float4 b = B[c];
+    if (b.w <= fy0 || b.y >= fy1 || b.x >= fw) continue; /* misses the band or right of canvas */
+    any = 1;
+    const int2 range = chunk_lines[c];
+    for (int j = range.x; j < range.x + range.y; ++j) {
+      /* Each line visits only the rows of this band it crosses. */
+      const float4 l = L[j];
+      const float ymin = fmin(l.y, l.w) - fy0, ymax = fmax(l.y, l.w) - fy0;
+      const int r0 = max((int)floor(ymin), 0), r1 = min((int)ceil(ymax), rows) - 1;
+      if (r0 > r1) continue;
+      /* The cells the line can write in any row (accumulate_line's i and i + 1). */
+      const int ca = (int)clamp(floor(fmin(l.x, l.z)), 0.0f, fw);
+      const int cb = (int)clamp(floor(fmax(l.x, l.z)) + 1.0f, 0.0f, fw + 1.0f);
+      for (int r = r0; r <= r1; ++r) {
+        grow_hull(acc + r * stride, &alo[r], &ahi[r], ca, max(ca, cb));
+        accumulate_line(l, y0 + r, width, acc + r * stride, &xlo[r], &xhi[r]);
+      }
+    }
+  }
+  return any;
 }
 
 /* Sweeps cells [xlo, xhi] (clamped to the row), compositing one draw over `out` (whose valid
@@ -216,26 +253,8 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
   __global const float4* L = lines + (size_t)k * n_lines;
   __global const float4* B = bounds + (size_t)k * n_chunks;
   for (int d = 0; d < n_draws; ++d) {
-    const int2 chunks = draw_chunks[d];
-    for (int c = chunks.x; c < chunks.x + chunks.y; ++c) {
-      const float4 b = B[c];
-      if (b.w <= fy0 || b.y >= fy1 || b.x >= fw) continue; /* misses the band or right of canvas */
-      const int2 range = chunk_lines[c];
-      for (int j = range.x; j < range.x + range.y; ++j) {
-        /* Each line visits only the rows of this band it crosses. */
-        const float4 l = L[j];
-        const float ymin = fmin(l.y, l.w) - fy0, ymax = fmax(l.y, l.w) - fy0;
-        const int r0 = max((int)floor(ymin), 0), r1 = min((int)ceil(ymax), rows) - 1;
-        if (r0 > r1) continue;
-        /* The cells the line can write in any row (accumulate_line's i and i + 1). */
-        const int ca = (int)clamp(floor(fmin(l.x, l.z)), 0.0f, fw);
-        const int cb = (int)clamp(floor(fmax(l.x, l.z)) + 1.0f, 0.0f, fw + 1.0f);
-        for (int r = r0; r <= r1; ++r) {
-          grow_hull(acc + r * stride, &alo[r], &ahi[r], ca, max(ca, cb));
-          accumulate_line(l, y0 + r, width, acc + r * stride, &xlo[r], &xhi[r]);
-        }
-      }
-    }
+    accumulate_draw(L, B, chunk_lines, draw_chunks[d], y0, rows, width, stride, acc, xlo, xhi, alo,
+                    ahi);
     const float4 color = draw_color[d];
     const int rule = draw_rule[d];
     for (int r = 0; r < rows; ++r) {

@@ -54,12 +54,13 @@ inline int is_fractional(float a, int rule) {
 
 /* The forward sweep of one draw's span (composite_span), also pushing B onto the tape at every
  * fractional pixel. */
-inline void replay_span(__local float* acc, __local float4* out, int xlo, int xhi, int width,
-                        float4 color, int rule, float4 background, __local float4* tape,
-                        int* tp, int cap) {
+inline void replay_span(__local float* acc, __local float4* out, int* hlo, int* hhi, int xlo,
+                        int xhi, int width, float4 color, int rule, float4 background,
+                        __local float4* tape, int* tp, int cap) {
   float s = 0.0f;
   const int xe = min(xhi, width - 1);
   const float4 premul = (float4)(color.xyz, 1.0f);
+  grow_hull4(out, hlo, hhi, xlo, xe);
   for (int x = xlo; x <= xe; ++x) {
     s += acc[x];
     acc[x] = 0.0f;
@@ -72,17 +73,21 @@ inline void replay_span(__local float* acc, __local float4* out, int xlo, int xh
   }
   acc[xe + 1] = 0.0f;
   const float a = fill_rule_coverage(s, rule) * color.w;
-  if (a > RESIDUAL_COVERAGE)
+  if (a > RESIDUAL_COVERAGE && xe + 1 < width) {
+    grow_hull4(out, hlo, hhi, xe + 1, width - 1);
     for (int x = xe + 1; x < width; ++x) out[x] = premul * a + out[x] * (1.0f - a);
+  }
 }
 
 /* The top-down sweep of one draw's span: g(p) into gcell, then T *= (1 - α). */
-inline void backward_span(__local float* acc, __local float* T, __local float* gcell,
-                          __global const float4* E, int row, int height, float scale, int xlo,
-                          int xhi, int width, float4 color, int rule, __local const float4* tape,
-                          int* tp, int cap) {
+inline void backward_span(__local float* acc, __local float* T, int* tlo, int* thi,
+                          __local float* gcell, int* glo, int* ghi, __global const float4* E,
+                          int row, int height, float scale, int xlo, int xhi, int width,
+                          float4 color, int rule, __local const float4* tape, int* tp, int cap) {
   float s = 0.0f;
   const int xe = min(xhi, width - 1);
+  grow_hull_fill(T, tlo, thi, xlo, xe, 1.0f);  /* transmittance starts at 1 */
+  grow_hull(gcell, glo, ghi, xlo, xe);
   for (int x = xlo; x <= xe; ++x) {
     s += acc[x];
     acc[x] = 0.0f;
@@ -100,8 +105,10 @@ inline void backward_span(__local float* acc, __local float* T, __local float* g
   }
   acc[xe + 1] = 0.0f;
   const float a = fill_rule_coverage(s, rule) * color.w;
-  if (a > RESIDUAL_COVERAGE)
+  if (a > RESIDUAL_COVERAGE && xe + 1 < width) {
+    grow_hull_fill(T, tlo, thi, xe + 1, width - 1, 1.0f);
     for (int x = xe + 1; x < width; ++x) T[x] *= 1.0f - a;
+  }
 }
 
 /* The gradient (∂e0, ∂e1) of one line from the pixels of row `row` it crosses. */
@@ -177,44 +184,34 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
   const int y0 = band * BAND_H, rows = min(BAND_H, height - y0);
   const float fy0 = (float)y0, fy1 = (float)(y0 + rows), fw = (float)width;
   const int stride = width + 2;
-  for (int i = lid; i < rows * stride; i += lsize) acc[i] = 0.0f;
-  for (int i = lid; i < rows * width; i += lsize) {
-    band_rgba[i] = (float4)(0.0f);
-    band_T[i] = 1.0f;
-    gcell[i] = 0.0f; /* kept zero outside the span of the draw being differentiated */
-  }
-  barrier(CLK_LOCAL_MEM_FENCE);
 
   if (lid == 0) {
     __global const float4* L = lines + (size_t)k * n_lines;
     __global const float4* B = bounds + (size_t)k * n_chunks;
     __global const float4* Ek = E + (size_t)k * height * width;
-    int xlo[BAND_H], xhi[BAND_H];
-    for (int r = 0; r < BAND_H; ++r) { xlo[r] = width; xhi[r] = -1; }
+    /* Per row: the draw's span, and the valid hulls of the lazily cleared row buffers
+     * (accumulation, colour, transmittance, ∂L/∂a; see grow_hull in raster.cl). */
+    int xlo[BAND_H], xhi[BAND_H], alo[BAND_H], ahi[BAND_H], hlo[BAND_H], hhi[BAND_H];
+    int tlo[BAND_H], thi[BAND_H], glo[BAND_H], ghi[BAND_H];
+    for (int r = 0; r < BAND_H; ++r) {
+      xlo[r] = width; xhi[r] = -1;
+      alo[r] = width + 2; ahi[r] = -1;
+      hlo[r] = tlo[r] = glo[r] = width;
+      hhi[r] = thi[r] = ghi[r] = -1;
+    }
     int tp = 0;
 
     /* 1. Bottom-up replay of the forward pass, taping B at fractional pixels. */
     for (int d = 0; d < n_draws; ++d) {
       draw_tape[d] = tp;
-      const int2 chunks = draw_chunks[d];
-      for (int c = chunks.x; c < chunks.x + chunks.y; ++c) {
-        const float4 b = B[c];
-        if (b.w <= fy0 || b.y >= fy1 || b.x >= fw) continue;
-        const int2 range = chunk_lines[c];
-        for (int j = range.x; j < range.x + range.y; ++j) {
-          const float4 l = L[j];
-          const float ymin = fmin(l.y, l.w) - fy0, ymax = fmax(l.y, l.w) - fy0;
-          const int r0 = max((int)floor(ymin), 0), r1 = min((int)ceil(ymax), rows) - 1;
-          for (int r = r0; r <= r1; ++r)
-            accumulate_line(l, y0 + r, width, acc + r * stride, &xlo[r], &xhi[r]);
-        }
-      }
+      accumulate_draw(L, B, chunk_lines, draw_chunks[d], y0, rows, width, stride, acc, xlo, xhi,
+                      alo, ahi);
       const float4 color = draw_color[d];
       const int rule = draw_rule[d];
       for (int r = 0; r < rows; ++r) {
         if (xhi[r] >= xlo[r])
-          replay_span(acc + r * stride, band_rgba + r * width, xlo[r], xhi[r], width, color,
-                      rule, background, tape, &tp, tape_cap);
+          replay_span(acc + r * stride, band_rgba + r * width, &hlo[r], &hhi[r], xlo[r], xhi[r],
+                      width, color, rule, background, tape, &tp, tape_cap);
         xlo[r] = width;
         xhi[r] = -1;
       }
@@ -224,21 +221,9 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
     /* 2. Top-down: ∂L/∂a per edge pixel, then the boundary integrals of every line. */
     for (int d = n_draws - 1; d >= 0; --d) {
       const int2 chunks = draw_chunks[d];
-      int any = 0;
-      for (int c = chunks.x; c < chunks.x + chunks.y; ++c) {
-        const float4 b = B[c];
-        if (b.w <= fy0 || b.y >= fy1 || b.x >= fw) continue;
-        any = 1;
-        const int2 range = chunk_lines[c];
-        for (int j = range.x; j < range.x + range.y; ++j) {
-          const float4 l = L[j];
-          const float ymin = fmin(l.y, l.w) - fy0, ymax = fmax(l.y, l.w) - fy0;
-          const int r0 = max((int)floor(ymin), 0), r1 = min((int)ceil(ymax), rows) - 1;
-          for (int r = r0; r <= r1; ++r)
-            accumulate_line(l, y0 + r, width, acc + r * stride, &xlo[r], &xhi[r]);
-        }
-      }
-      if (!any) continue;
+      if (!accumulate_draw(L, B, chunk_lines, chunks, y0, rows, width, stride, acc, xlo, xhi, alo,
+                           ahi))
+        continue;
       const float4 color = draw_color[d];
       const int rule = draw_rule[d];
       int tq = draw_tape[d];
@@ -247,8 +232,9 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
         slo[r] = xlo[r];
         shi[r] = min(xhi[r], width - 1);
         if (xhi[r] >= xlo[r])
-          backward_span(acc + r * stride, band_T + r * width, gcell + r * width, Ek, y0 + r, height,
-                        grad_scale, xlo[r], xhi[r], width, color, rule, tape, &tq, tape_cap);
+          backward_span(acc + r * stride, band_T + r * width, &tlo[r], &thi[r], gcell + r * width,
+                        &glo[r], &ghi[r], Ek, y0 + r, height, grad_scale, xlo[r], xhi[r], width,
+                        color, rule, tape, &tq, tape_cap);
         xlo[r] = width;
         xhi[r] = -1;
       }
@@ -260,8 +246,14 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
           const float4 l = L[j];
           const float ymin = fmin(l.y, l.w) - fy0, ymax = fmax(l.y, l.w) - fy0;
           const int r0 = max((int)floor(ymin), 0), r1 = min((int)ceil(ymax), rows) - 1;
+          /* The walk reads ∂L/∂a at the cells the line crosses: make them valid first. */
+          const int ca = (int)clamp(floor(fmin(l.x, l.z)), 0.0f, fw - 1.0f);
+          const int cb = (int)clamp(floor(fmax(l.x, l.z)), 0.0f, fw - 1.0f);
           float4 g = (float4)(0.0f);
-          for (int r = r0; r <= r1; ++r) g += walk_line_grad(l, y0 + r, width, gcell + r * width);
+          for (int r = r0; r <= r1; ++r) {
+            grow_hull(gcell + r * width, &glo[r], &ghi[r], ca, cb);
+            g += walk_line_grad(l, y0 + r, width, gcell + r * width);
+          }
           partial[((size_t)k * n_lines + j) * n_bands + band] = g;
         }
       }

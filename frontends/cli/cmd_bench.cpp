@@ -126,16 +126,18 @@ IterationTimes time_iteration(ClRuntime& rt, const Scene& scene, int width, int 
     tot.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }
   if (r.tape_overflow()) std::fprintf(stderr, "svgmotion: warning: backward tape overflowed\n");
+  if (rt.profiling())  // device time of each kernel in the last iteration
+    for (const auto& [name, t] : r.kernel_times()) std::fprintf(stderr, "  %-18s %.3f ms\n", name.c_str(), t);
   return {median(fwd), median(tot), plan.n_lines};
 }
 
 int bench_raster(const std::vector<std::string>& argv) {
   const Args a = parse_args("bench raster", argv, {"--frames", "--size", "--device", "--repeat"},
-                            {"--json", "--scaling"});
+                            {"--json", "--scaling", "--profile"});
   const int frames = a.get_int("--frames", 15, 1, 1000);
   const int width = a.get_int("--size", 256, 1, 16384);
   const int repeat = a.get_int("--repeat", 9, 1, 100000);
-  ClRuntime rt(a.get("--device").value_or("auto"));
+  ClRuntime rt(a.get("--device").value_or("auto"), a.has("--profile"));
   if (a.has("--scaling")) {
     // One parameter varies at a time around (100 paths, 256 px, 15 frames).
     struct Row { const char* what; int paths, size, frames; };
