@@ -10,14 +10,21 @@
  *     ∂L/∂C = G ∗ (2 w / N · E)
  *
  * because a separable convolution with a symmetric kernel and zero padding is its own adjoint
- * (the plain form: ∂L/∂C[p] = Σ_q G[q - p] · 2w/N · E[q], the same stencil). The backward
- * raster pass needs ∂L/∂C only at pixels an edge crosses, a few percent of all pixels, so it
- * evaluates this 5x5 stencil there (blurred_gradient below) instead of blurring every pixel.
+ * (the plain form: ∂L/∂C[p] = Σ_q G[q - p] · 2w/N · E[q], the same stencil).
  *
- * The forward raster writes D = C − T already blurred along x (raster.cl, OUT_RESIDUAL; the
- * stand-alone x pass is blur_pass); blur_y_loss_rows blurs along y, keeps E and sums E² per
- * row; loss_total adds the rows in a fixed order. No atomics anywhere: the loss is
- * bit-reproducible.
+ * Only the drawn part changes between iterations. Write C = bg + X with X = P − a·bg, zero
+ * wherever nothing is drawn (P the premultiplied render, a its alpha). Then, by linearity,
+ *
+ *     E = E' + Q,   E' = G ∗ X,   Q = bg·(G ∗ 1) − G ∗ T,
+ *     Σ E² = Σ Q² + Σ (2 Q·E' + E'·E'),
+ *     ∂L/∂C = 2w/N · (R + G ∗ E'),   R = G ∗ Q.
+ *
+ * Q, R and Σ Q² depend on the targets only and are computed once (ClRaster::set_targets); each
+ * iteration touches only the pixels within 2 (or 4, for the gradient) of something drawn: the
+ * work follows the drawing, not the frame. The raster pass writes X' = x-blur of X with each
+ * row's extent; blur_y_loss_rows makes E' and the rows' Σ (2 Q·E' + E'·E'); loss_total adds
+ * Σ Q²; the backward raster pass evaluates ∂L/∂C at the pixels edges cross
+ * (blurred_gradient). Sums run in a fixed order: the loss is bit-reproducible.
  */
 
 /* G0, G1, G2: the 1-D Gaussian taps, defined in prelude.cl. */
@@ -38,53 +45,67 @@ __kernel void blur_pass(__global const float4* src, __global float4* dst, float 
   dst[(size_t)k * width * height + pos] = scale * s;
 }
 
-/* Per (row, frame): E = the y-blur of the x-blurred residual for the row, kept for the
- * backward pass, and the row's Σ E² over pixels and channels (in x order). */
-__kernel void blur_y_loss_rows(__global const float4* src, __global float4* E,
-                               __global float* row_sums, int width, int height, int frames) {
+inline float g_tap(int j) { return j == 0 ? G0 : (j == 1 || j == -1) ? G1 : G2; }
+
+/* Per (row, frame): E' = the y-blur of X' over the rows' extents, kept (with its extent) for
+ * the backward pass, and the row's Σ (2 Q·E' + E'·E') over pixels and channels, in x order. */
+__kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* ext_x,
+                               __global const float4* Q, __global float4* E,
+                               __global int2* ext_e, __global float* row_sums, int width,
+                               int height, int frames) {
   const int y = get_global_id(0), k = get_global_id(1);
   if (y >= height || k >= frames) return;
-  __global const float4* f = src + (size_t)k * width * height;
-  __global float4* e = E + ((size_t)k * height + y) * width;
+  __global const int2* ex = ext_x + (size_t)k * height;
+  int lo = width, hi = -1;
+  for (int j = -2; j <= 2; ++j) {
+    const int yy = y + j;
+    if (yy < 0 || yy >= height || ex[yy].x > ex[yy].y) continue;
+    lo = min(lo, ex[yy].x);
+    hi = max(hi, ex[yy].y);
+  }
+  ext_e[(size_t)k * height + y] = (int2)(lo, hi);
   float s = 0.0f;
-  for (int x = 0; x < width; ++x) {
-    const int pos = y * width + x;
-    float4 v = G0 * f[pos];
-    if (y >= 1) v += G1 * f[pos - width];
-    if (y + 1 < height) v += G1 * f[pos + width];
-    if (y >= 2) v += G2 * f[pos - 2 * width];
-    if (y + 2 < height) v += G2 * f[pos + 2 * width];
+  __global const float4* f = Xb + (size_t)k * width * height;
+  __global float4* e = E + ((size_t)k * height + y) * width;
+  __global const float4* q = Q + ((size_t)k * height + y) * width;
+  for (int x = lo; x <= hi; ++x) {
+    float4 v = (float4)(0.0f);
+    for (int j = -2; j <= 2; ++j) {
+      const int yy = y + j;
+      if (yy >= 0 && yy < height && x >= ex[yy].x && x <= ex[yy].y) v += g_tap(j) * f[yy * width + x];
+    }
     e[x] = v;
-    s += dot(v.xyz, v.xyz);
+    s += dot(2.0f * q[x].xyz + v.xyz, v.xyz);
   }
   row_sums[(size_t)k * height + y] = s;
 }
 
-/* ∂L/∂C at pixel (x, y) of a frame: the 5x5 stencil of G over E, times 2w/N. */
-inline float3 blurred_gradient(__global const float4* E, int x, int y, int width, int height,
+/* ∂L/∂C at pixel (x, y) of a frame: 2w/N · (R + G ∗ E'), E' read within its row extents. */
+inline float3 blurred_gradient(__global const float4* E, __global const int2* ext_e,
+                               __global const float4* R, int x, int y, int width, int height,
                                float scale) {
-  const float g[5] = {G2, G1, G0, G1, G2};
-  float3 s = (float3)(0.0f);
+  float3 s = R[y * width + x].xyz;
   for (int dy = -2; dy <= 2; ++dy) {
     const int yy = y + dy;
     if (yy < 0 || yy >= height) continue;
+    const int2 ex = ext_e[yy];
     float3 row = (float3)(0.0f);
     for (int dx = -2; dx <= 2; ++dx) {
       const int xx = x + dx;
-      if (xx >= 0 && xx < width) row += g[dx + 2] * E[yy * width + xx].xyz;
+      if (xx >= ex.x && xx <= ex.y) row += g_tap(dx) * E[yy * width + xx].xyz;
     }
-    s += g[dy + 2] * row;
+    s += g_tap(dy) * row;
   }
   return scale * s;
 }
 
-/* One work-item: L = scale · Σ row sums (in order), and per-frame losses. */
-__kernel void loss_total(__global const float* row_sums, __global float* loss, float scale,
-                         int height, int frames) {
+/* One work-item: L = scale · Σ_k (Σ Q²_k + Σ row sums), in order, and per-frame losses. */
+__kernel void loss_total(__global const float* row_sums, __global const float* qsum,
+                         __global float* loss, float scale, int height, int frames) {
   if (get_global_id(0) != 0) return;
   float total = 0.0f;
   for (int k = 0; k < frames; ++k) {
-    float f = 0.0f;
+    float f = qsum[k];
     for (int y = 0; y < height; ++y) f += row_sums[(size_t)k * height + y];
     loss[1 + k] = scale * f;
     total += f;

@@ -201,8 +201,9 @@ __kernel void chunk_bounds(__global const float4* lines,    /* [K][n_lines] */
 }
 
 /* Output of one band: premultiplied float RGBA for tests and previews (OUT_FLOAT), 8-bit
- * straight RGBA over a background for rendering (OUT_RGBA8), or for fitting the residual
- * (C over background) − target blurred along x, the loss's first step (OUT_RESIDUAL). */
+ * straight RGBA over a background for rendering (OUT_RGBA8), or for fitting the drawn part of
+ * the image, X = C − background, blurred along x where it is not zero, with each row's extent
+ * (OUT_RESIDUAL; the loss's first step, see loss.cl). */
 #define OUT_FLOAT 0
 #define OUT_RGBA8 1
 #define OUT_RESIDUAL 2
@@ -228,7 +229,7 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
                      __local float4* band_rgba,         /* [BAND_H][W] */
                      __global float4* image,            /* [K][H][W] premultiplied (OUT_FLOAT) */
                      __global uchar4* rgba8,            /* [K][H][W] (OUT_RGBA8) */
-                     __global const float4* target,     /* [K][H][W] RGB (OUT_RESIDUAL) */
+                     __global int2* extents,            /* [K][H] row extents (OUT_RESIDUAL) */
                      float4 background, int out_mode,
                      int n_lines, int n_chunks, int n_draws, int width, int height) {
   /* One work-group per (band, frame). Clearing and the final write are spread over the group's
@@ -266,7 +267,7 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
     }
   }
   for (int r = 0; r < rows; ++r) {
-    if (out_mode != OUT_RGBA8) grow_hull4(band_rgba + r * width, &hlo[r], &hhi[r], 0, width - 1);
+    if (out_mode == OUT_FLOAT) grow_hull4(band_rgba + r * width, &hlo[r], &hhi[r], 0, width - 1);
     hull[2 * r] = hlo[r];
     hull[2 * r + 1] = hhi[r];
   }
@@ -294,28 +295,28 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
       }
     }
   } else if (out_mode == OUT_RESIDUAL) {
-    /* D = C over background − T, then the x pass of the loss's blur while the rows are local
-     * (loss.cl's blur_pass along x, fused here to save a pass over every pixel). */
-    for (int i = lid; i < rows * width; i += lsize) {
-      const float4 c = band_rgba[i];
-      band_rgba[i] = (float4)(c.xyz + background.xyz * (1.0f - c.w) - target[base + i].xyz, 0.0f);
-    }
-    barrier(CLK_LOCAL_MEM_FENCE);
+    /* X = C − background = P − a·bg, zero where nothing was drawn, then its x-blur X' for the
+     * pixels it can reach (the hull ± 2), with the row's extent for loss.cl. */
     for (int r = lid; r < rows; r += lsize) {
-      __local const float4* f = band_rgba + r * width;
+      const int lo = hull[2 * r], hi = hull[2 * r + 1];
+      __global int2* ext = extents + (size_t)k * height + y0 + r;
+      if (hi < lo) {
+        *ext = (int2)(1, 0); /* empty */
+        continue;
+      }
+      __local float4* f = band_rgba + r * width;
+      for (int x = lo; x <= hi; ++x) f[x] = (float4)(f[x].xyz - background.xyz * f[x].w, 0.0f);
+      const int lo2 = max(lo - 2, 0), hi2 = min(hi + 2, width - 1);
       __global float4* o = image + base + (size_t)r * width;
-      for (int x = 0; x < width; ++x) {
-        float4 v = G0 * f[x];
-        if (x >= 2 && x + 2 < width) {
-          v += G1 * (f[x - 1] + f[x + 1]) + G2 * (f[x - 2] + f[x + 2]);
-        } else {
-          if (x >= 1) v += G1 * f[x - 1];
-          if (x + 1 < width) v += G1 * f[x + 1];
-          if (x >= 2) v += G2 * f[x - 2];
-          if (x + 2 < width) v += G2 * f[x + 2];
+      for (int x = lo2; x <= hi2; ++x) {
+        float4 v = (float4)(0.0f);
+        for (int j = -2; j <= 2; ++j) {
+          const int xx = x + j;
+          if (xx >= lo && xx <= hi) v += (j == 0 ? G0 : (j == 1 || j == -1) ? G1 : G2) * f[xx];
         }
         o[x] = v;
       }
+      *ext = (int2)(lo2, hi2);
     }
   } else {
     for (int i = lid; i < rows * width; i += lsize) image[base + i] = band_rgba[i];

@@ -82,6 +82,7 @@ inline void replay_span(__local float* acc, __local float4* out, int* hlo, int* 
 /* The top-down sweep of one draw's span: g(p) into gcell, then T *= (1 - α). */
 inline void backward_span(__local float* acc, __local float* T, int* tlo, int* thi,
                           __local float* gcell, int* glo, int* ghi, __global const float4* E,
+                          __global const int2* ext_e, __global const float4* R,
                           int row, int height, float scale, int xlo, int xhi, int width,
                           float4 color, int rule, __local const float4* tape, int* tp, int cap) {
   float s = 0.0f;
@@ -94,7 +95,7 @@ inline void backward_span(__local float* acc, __local float* T, int* tlo, int* t
     float g = 0.0f;
     if (is_fractional(s, rule)) {
       if (*tp < cap) {
-        const float3 dC = blurred_gradient(E, x, row, width, height, scale);
+        const float3 dC = blurred_gradient(E, ext_e, R, x, row, width, height, scale);
         const float ga = dot(dC, T[x] * (color.xyz - tape[*tp].xyz));
         g = ga * color.w * sign(fold(s, rule));
       }
@@ -166,8 +167,10 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               __global const float4* draw_color,  /* [n_draws] */
                               __global const int* draw_rule,      /* [n_draws] */
                               __global const float4* bounds,      /* [K][n_chunks] */
-                              __global const float4* E,           /* [K][H][W] blurred residual */
-                              float grad_scale,                   /* 2w/N: ∂L/∂C = G ∗ (scale E) */
+                              __global const float4* E,           /* [K][H][W] E' (loss.cl) */
+                              __global const int2* ext_e,         /* [K][H] its row extents */
+                              __global const float4* R,           /* [K][H][W] G ∗ Q (loss.cl) */
+                              float grad_scale,                   /* 2w/N */
                               float4 background,
                               __local float* acc,                 /* [BAND_H][W + 2] */
                               __local float4* band_rgba,          /* [BAND_H][W] */
@@ -189,6 +192,8 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
     __global const float4* L = lines + (size_t)k * n_lines;
     __global const float4* B = bounds + (size_t)k * n_chunks;
     __global const float4* Ek = E + (size_t)k * height * width;
+    __global const int2* Xk = ext_e + (size_t)k * height;
+    __global const float4* Rk = R + (size_t)k * height * width;
     /* Per row: the draw's span, and the valid hulls of the lazily cleared row buffers
      * (accumulation, colour, transmittance, ∂L/∂a; see grow_hull in raster.cl). */
     int xlo[BAND_H], xhi[BAND_H], alo[BAND_H], ahi[BAND_H], hlo[BAND_H], hhi[BAND_H];
@@ -233,7 +238,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
         shi[r] = min(xhi[r], width - 1);
         if (xhi[r] >= xlo[r])
           backward_span(acc + r * stride, band_T + r * width, &tlo[r], &thi[r], gcell + r * width,
-                        &glo[r], &ghi[r], Ek, y0 + r, height, grad_scale, xlo[r], xhi[r], width,
+                        &glo[r], &ghi[r], Ek, Xk, Rk, y0 + r, height, grad_scale, xlo[r], xhi[r], width,
                         color, rule, tape, &tq, tape_cap);
         xlo[r] = width;
         xhi[r] = -1;

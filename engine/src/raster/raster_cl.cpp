@@ -127,11 +127,11 @@ void ClRaster::forward(Output output, const std::array<float, 4>& background) {
     // Arguments 8..12: where the band results go (an unused output gets any valid buffer).
     if (output != Output::Rgba8 && !image_()) image_ = make(pixels * 4 * sizeof(float));
     if (output == Output::Rgba8 && !rgba_()) rgba_ = make(pixels * 4);
-    if (output == Output::Residual && !target_())
+    if (output == Output::Residual && !ext_x_())
       throw Error("internal: a residual forward pass needs targets (set_targets)");
     k_raster_.setArg(8, image_() ? image_ : rgba_);
     k_raster_.setArg(9, rgba_() ? rgba_ : image_);
-    k_raster_.setArg(10, target_() ? target_ : (image_() ? image_ : rgba_));
+    k_raster_.setArg(10, ext_x_() ? ext_x_ : (image_() ? image_ : rgba_));
     k_raster_.setArg(11, cl_float4{{background[0], background[1], background[2], background[3]}});
     k_raster_.setArg(12, static_cast<int>(output));
 

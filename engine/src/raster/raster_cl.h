@@ -98,7 +98,13 @@ class ClRaster {
   int tape_cap_ = 0;
   cl::Kernel k_blur_y_loss_, k_loss_total_, k_backward_, k_gather_lines_,
       k_gather_points_, k_stroke_back_, k_flatten_back_;
-  cl::Buffer target_, resid_, row_sums_, loss_, partial_, overflow_,
+  // The loss's constant parts (kernels/loss.cl): Q = bg·(G∗1) − G∗T, R = G∗Q, Σ Q² per frame,
+  // for the background they were made for; and the row extents of X' and E'.
+  std::vector<float> targets_;
+  std::array<float, 4> q_background_{-1, -1, -1, -1};
+  void prepare_loss_constants(const std::array<float, 4>& background);
+  cl::Buffer q_, r_, qsum_, ext_x_, ext_e_;
+  cl::Buffer resid_, row_sums_, loss_, partial_, overflow_,
       line_grad_, grad_pts_, grad_cp_, line_chunk_, pt_first_, pt_entries_, cp_first_,
       cp_entries_;
   cl::Kernel k_flatten_, k_stroke_, k_lines_, k_bounds_, k_raster_;

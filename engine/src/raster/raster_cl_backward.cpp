@@ -2,6 +2,7 @@
 // exact gradients down to the control points (kernels/loss.cl, raster_backward.cl,
 // stroke_backward.cl, flatten.cl).
 #include <algorithm>
+#include <cmath>
 
 #include "raster/raster_cl.h"
 #include "svgmotion/error.h"
@@ -26,7 +27,11 @@ void ClRaster::init_backward() {
     k_flatten_back_ = cl::Kernel(prog, "flatten_backward");
 
     if (!image_()) image_ = make(pixels * 4 * sizeof(float));
-    if (!target_()) target_ = make(pixels * 4 * sizeof(float));
+    q_ = make(pixels * 4 * sizeof(float));
+    r_ = make(pixels * 4 * sizeof(float));
+    qsum_ = make(K * sizeof(float));
+    ext_x_ = make(K * p.height * 2 * sizeof(int));
+    ext_e_ = make(K * p.height * 2 * sizeof(int));
     resid_ = make(pixels * 4 * sizeof(float));
     row_sums_ = make(K * p.height * sizeof(float));
     loss_ = make((K + 1) * sizeof(float));
@@ -55,10 +60,10 @@ void ClRaster::init_backward() {
     const int W = p.width, H = p.height, F = frames_;
     // The residual forward pass writes the x-blurred residual into image_; blur it along y
     // with the row sums of E² (kernels/loss.cl).
-    set_args(k_blur_y_loss_, image_, resid_, row_sums_, W, H, F);
-    set_args(k_loss_total_, row_sums_, loss_, 1.0f, H, F);
+    set_args(k_blur_y_loss_, image_, ext_x_, q_, resid_, ext_e_, row_sums_, W, H, F);
+    set_args(k_loss_total_, row_sums_, qsum_, loss_, 1.0f, H, F);
     set_args(k_backward_, lines_, draw_chunks_, chunk_lines_, draw_color_, draw_rule_, bounds_,
-             resid_, 1.0f, cl_float4{{0, 0, 0, 0}},
+             resid_, ext_e_, r_, 1.0f, cl_float4{{0, 0, 0, 0}},
              cl::Local(static_cast<size_t>(band_h_) * (p.width + 2) * sizeof(float)),
              cl::Local(static_cast<size_t>(band_h_) * p.width * 4 * sizeof(float)),
              cl::Local(static_cast<size_t>(band_h_) * p.width * sizeof(float)),
@@ -86,7 +91,63 @@ void ClRaster::set_targets(const std::vector<float>& rgba) {
     throw Error("internal: target upload of " + std::to_string(rgba.size()) + " floats, expected " +
                 std::to_string(want));
   init_backward();
-  rt_.queue().enqueueWriteBuffer(target_, CL_TRUE, 0, want * sizeof(float), rgba.data());
+  targets_ = rgba;
+  q_background_ = {-1, -1, -1, -1};  // recompute the loss constants on next use
+}
+
+void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
+  if (bg == q_background_) return;
+  const int W = plan_.width, H = plan_.height, K = frames_;
+  const size_t px = static_cast<size_t>(W) * H;
+  // The 1-D taps (loss.cl's G0, G1, G2) in double, and a separable zero-padded blur.
+  double g[5], gs = 0;
+  for (int j = -2; j <= 2; ++j) gs += g[j + 2] = std::exp(-0.5 * j * j);
+  for (double& v : g) v /= gs;
+  auto blur = [&](const std::vector<double>& in, std::vector<double>& out) {  // 3 channels
+    std::vector<double> tmp(in.size());
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x)
+        for (int c = 0; c < 3; ++c) {
+          double s = 0;
+          for (int j = -2; j <= 2; ++j)
+            if (x + j >= 0 && x + j < W) s += g[j + 2] * in[3 * (static_cast<size_t>(y) * W + x + j) + c];
+          tmp[3 * (static_cast<size_t>(y) * W + x) + c] = s;
+        }
+    out.assign(in.size(), 0.0);
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x)
+        for (int c = 0; c < 3; ++c) {
+          double s = 0;
+          for (int j = -2; j <= 2; ++j)
+            if (y + j >= 0 && y + j < H) s += g[j + 2] * tmp[3 * (static_cast<size_t>(y + j) * W + x) + c];
+          out[3 * (static_cast<size_t>(y) * W + x) + c] = s;
+        }
+  };
+  std::vector<double> ones(px * 3, 1.0), g1, t(px * 3), gt, q(px * 3), r;
+  blur(ones, g1);
+  std::vector<float> qf(px * K * 4), rf(px * K * 4), qsum(K);
+  for (int k = 0; k < K; ++k) {
+    for (size_t p = 0; p < px; ++p)
+      for (int c = 0; c < 3; ++c) t[3 * p + c] = targets_[(k * px + p) * 4 + c];
+    blur(t, gt);
+    double sum = 0;
+    for (size_t i = 0; i < q.size(); ++i) {
+      q[i] = bg[i % 3] * g1[i] - gt[i];
+      sum += q[i] * q[i];
+    }
+    blur(q, r);
+    qsum[k] = static_cast<float>(sum);
+    for (size_t p = 0; p < px; ++p)
+      for (int c = 0; c < 3; ++c) {
+        qf[(k * px + p) * 4 + c] = static_cast<float>(q[3 * p + c]);
+        rf[(k * px + p) * 4 + c] = static_cast<float>(r[3 * p + c]);
+      }
+  }
+  auto& queue = rt_.queue();
+  queue.enqueueWriteBuffer(q_, CL_TRUE, 0, qf.size() * sizeof(float), qf.data());
+  queue.enqueueWriteBuffer(r_, CL_TRUE, 0, rf.size() * sizeof(float), rf.data());
+  queue.enqueueWriteBuffer(qsum_, CL_TRUE, 0, qsum.size() * sizeof(float), qsum.data());
+  q_background_ = bg;
 }
 
 float ClRaster::loss_and_gradient(float weight, const std::array<float, 4>& background) {
@@ -102,6 +163,8 @@ float ClRaster::read_loss() {
 
 void ClRaster::enqueue_loss_and_gradient(float weight, const std::array<float, 4>& background) {
   init_backward();
+  if (targets_.empty()) throw Error("internal: loss without targets (set_targets)");
+  prepare_loss_constants(background);
   const auto& p = plan_;
   const size_t K = static_cast<size_t>(active_);
   const size_t pixels = K * p.height * static_cast<size_t>(p.width);
@@ -111,11 +174,11 @@ void ClRaster::enqueue_loss_and_gradient(float weight, const std::array<float, 4
   try {
     forward(Output::Residual, background);
     auto& q = rt_.queue();
-    k_backward_.setArg(7, 2.0f * scale);
-    k_backward_.setArg(8, bg);
-    k_loss_total_.setArg(2, scale);
-    k_loss_total_.setArg(4, active_);
-    k_blur_y_loss_.setArg(5, active_);
+    k_backward_.setArg(9, 2.0f * scale);
+    k_backward_.setArg(10, bg);
+    k_loss_total_.setArg(3, scale);
+    k_loss_total_.setArg(5, active_);
+    k_blur_y_loss_.setArg(8, active_);
     q.enqueueFillBuffer(overflow_, 0, 0, sizeof(int));
     launch("blur_y_loss_rows", k_blur_y_loss_, cl::NDRange(round_up(p.height, 16), K));
     launch("loss_total", k_loss_total_, cl::NDRange(1));
