@@ -60,7 +60,7 @@ RgbaImage render_panel(const std::vector<float>& renders, int k, int w, int h) {
 int cmd_fit(const std::vector<std::string>& argv) {
   const Args a = parse_args("fit", argv,
                             {"--target", "-o", "--output", "--iterations", "--keyframes", "--size",
-                             "--palette", "--device"},
+                             "--palette", "--device", "--mask-threshold"},
                             {"--resume", "--no-track", "--quiet"});
   if (a.positional.size() != 1)
     throw Error("fit: expected one input SVG (svgmotion fit IN.svg --target VIDEO -o OUT_DIR)");
@@ -85,6 +85,9 @@ int cmd_fit(const std::vector<std::string>& argv) {
   const RenderSize size = render_size(scene, width);
   TargetOptions to;
   to.keyframes = keyframes;
+  to.white_threshold = a.get_double("--mask-threshold", to.white_threshold);
+  if (!(to.white_threshold > 0 && to.white_threshold <= 1))
+    throw Error("fit: --mask-threshold wants a number in (0, 1]");
   const TargetFrames target = load_target(*target_path, size.width, size.height, to);
 
   std::error_code ec;

@@ -15,7 +15,8 @@
 namespace svgm::cli {
 
 int cmd_render(const std::vector<std::string>& argv) {
-  const Args a = parse_args("render", argv, {"-o", "--output", "--size", "--background", "--device"},
+  const Args a = parse_args("render", argv,
+                            {"-o", "--output", "--size", "--background", "--device", "--time"},
                             {"--strict"});
   if (a.positional.size() != 1)
     throw Error("render: expected one input SVG (svgmotion render IN.svg -o OUT.png)");
@@ -27,7 +28,11 @@ int cmd_render(const std::vector<std::string>& argv) {
     throw Error("render: --background must be white or transparent, got '" + bg + "'");
   const int width = a.get_int("--size", 0, 1, 16384);
 
-  Scene scene = read_svg_file(input);
+  SvgReadLimits read_options;
+  read_options.animation_time = a.get_double("--time", -1);
+  if (a.has("--time") && !(read_options.animation_time >= 0))
+    throw Error("render: --time wants a number of seconds >= 0");
+  Scene scene = read_svg_file(input, read_options);
   for (const auto& w : scene.warnings) std::fprintf(stderr, "svgmotion: warning: %s\n", w.c_str());
   if (a.has("--strict") && !scene.warnings.empty())
     throw Error(input + ": warnings are errors under --strict");

@@ -16,7 +16,8 @@ namespace {
 constexpr const char* kUsage = R"(svgmotion: an editable animated SVG from a static SVG and a motion
 
 usage:
-  svgmotion render IN.svg -o OUT.png [--size W] [--background white|transparent] [--device D]
+  svgmotion render IN.svg -o OUT.png [--size W] [--background white|transparent] [--time T]
+                   [--device D] [--strict]
   svgmotion fit IN.svg --target VIDEO|FRAMES_DIR -o OUT_DIR [--iterations N] [--keyframes K]
                 [--size N] [--palette P.json] [--resume] [--no-track] [--device D]
   svgmotion devices

@@ -67,6 +67,28 @@ bench)
   check "bench render --json prints one JSON object with the promised keys" \
     '[[ $(grep -c "" "$tmp/b.json") -eq 1 ]] && grep -q "^{.*}$" "$tmp/b.json" && grep -Eq "\"ms_per_frame\": [0-9.]+" "$tmp/b.json" && grep -Eq "\"peak_rss_mb\": [0-9.]+" "$tmp/b.json" && grep -q "\"device\": \"" "$tmp/b.json"'
   ;;
+fit)
+  # A small target: the example rendered at 64 px into a folder of 4 frames.
+  mkdir -p "$tmp/frames"
+  for i in 0 1 2 3; do "$bin" render "$data/examples/man.svg" -o "$tmp/frames/$i.png" --size 64 2>/dev/null; done
+  "$bin" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out" --iterations 40 --keyframes 3 --size 64 2>"$tmp/err"
+  check "fit writes animation.svg with d keyframes" 'grep -q "<animate attributeName=\"d\"" "$tmp/out/animation.svg"'
+  check "fit writes a preview and a report" '[[ -s $tmp/out/preview.mp4 && -s $tmp/out/fit.json && -s $tmp/out/checkpoint.bin ]]'
+  check "the animation renders at a time" '"$bin" render "$tmp/out/animation.svg" -o "$tmp/t.png" --time 0.1 2>/dev/null && [[ -s $tmp/t.png ]]'
+  "$bin" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out" --iterations 60 --keyframes 3 --size 64 --resume 2>"$tmp/err"
+  check "--resume continues from the checkpoint" 'grep -q "resuming at iteration 40" "$tmp/err" && grep -q "\"iterations\": 60" "$tmp/out/fit.json"'
+  printf 'not a video' >"$tmp/bad.mp4"
+  expect_error "a file that is not a video" "bad.mp4" "$tmp/out2" fit "$data/examples/man.svg" --target "$tmp/bad.mp4" -o "$tmp/out2"
+  expect_error "fewer frames than keyframes" "fewer than the 15 keyframes" "$tmp/out3" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out3"
+  # Ctrl-C: the best result so far is written and the exit status says interrupted.
+  "$bin" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out4" --iterations 1000000 --keyframes 3 --size 64 --quiet 2>/dev/null &
+  pid=$!
+  for _ in $(seq 50); do [[ -f $tmp/out4/checkpoint.bin ]] && break; sleep 0.2; done
+  kill -INT $pid
+  wait $pid
+  rc=$?
+  check "Ctrl-C writes the animation so far and exits 130" '[[ $rc -eq 130 && -s $tmp/out4/animation.svg ]]'
+  ;;
 *) echo "unknown group $group"; exit 2 ;;
 esac
 echo "$pass passed, $fail failed"

@@ -256,6 +256,7 @@ TEST_CASE("foreground mask: components filtered, dilated by a 1-px disc, the res
   write_png(dir.path / "0.png", img);
   TargetOptions o;
   o.keyframes = 1;
+  o.white_threshold = 0.9;
   const TargetFrames t = load_target(dir.path, 64, 64, o);
 
   auto in_rect = [](int x, int y, int x0, int y0, int x1, int y1) {

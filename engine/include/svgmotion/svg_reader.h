@@ -20,6 +20,9 @@ struct SvgReadLimits {
   int max_depth = 256;                // element nesting (including through <use>)
   double max_canvas_px = 1 << 15;     // width/height above this are "absurd sizes"
   size_t max_segments = 4u << 20;     // cubic segments over the whole document
+  // When >= 0: paths with an <animate attributeName="d"> take their animated shape at this
+  // time in seconds (SMIL: values, keyTimes, dur, repeatCount, calcMode linear or discrete).
+  double animation_time = -1;
 };
 
 Scene read_svg_file(const std::filesystem::path& file, const SvgReadLimits& limits = {});

@@ -15,7 +15,11 @@ namespace svgm {
 
 struct TargetOptions {
   int keyframes = 15;            // K: uniformly sampled frames, first and last included
-  double white_threshold = 0.9;  // a pixel is foreground when its darkest channel < this (0..1]
+  // A pixel is foreground when its darkest channel < this (0..1]. Close to white on purpose:
+  // drawings have near-white parts (a snowman's #f4ecec body is 0.925), and at 0.9 the cleanup
+  // whitened them and containment squeezed them out of the fit; H.264 keeps a white background
+  // within a couple of levels of 255, well above 0.97.
+  double white_threshold = 0.97;
   double min_component_fraction = 0.02;  // keep components with area >= this * the largest
   // Dilation radius of the foreground mask, in pixels: a Euclidean disc of this radius (offsets
   // with dx² + dy² <= r²), so 1 is the 3x3 cross; 0 = no dilation.

@@ -110,11 +110,17 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
   char dur[32];
   std::snprintf(dur, sizeof dur, "%.3gs", timing.duration_s);
   int skipped_use = 0;
+  // Find every element before changing any: turning a <rect> into a <path> renumbers the
+  // locators of the paths after it.
+  std::vector<pugi::xml_node> elements;
+  for (const Path& path : scene.paths) {
+    elements.push_back(find_locator(doc, path.locator));
+    if (!elements.back()) throw Error("internal: " + path.locator + " not found in " + source.string());
+  }
   for (size_t p = 0; p < scene.paths.size(); ++p) {
     const Path& path = scene.paths[p];
     if (plan.path_cp_count[p] == 0) continue;
-    pugi::xml_node el = find_locator(doc, path.locator);
-    if (!el) throw Error("internal: " + path.locator + " not found in " + source.string());
+    pugi::xml_node el = elements[p];
     const std::string_view tag = local_name(el.name());
     if (tag == "use") {
       ++skipped_use;

@@ -9,6 +9,7 @@
 
 #include <pugixml.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -74,6 +75,7 @@ class Reader {
                  const Affine& ctm, float opacity, const std::string& locator, int group,
                  const std::string& id_prefix);
   std::vector<Subpath> shape_geometry(pugi::xml_node n, std::string_view tag, const Viewport& vp);
+  bool animated_path(pugi::xml_node n, double time, std::vector<Subpath>& out);
   bool resolve_paint(const Paint& p, const Style& s, pugi::xml_node el, Rgba* out);
   std::optional<Rgba> gradient_mean(pugi::xml_node g, int depth);
   Affine viewbox_transform(pugi::xml_node n, double w, double h, Viewport* inner);
@@ -285,6 +287,7 @@ std::vector<Subpath> Reader::shape_geometry(pugi::xml_node n, std::string_view t
   };
   const double diag = std::sqrt(0.5 * (vp.w * vp.w + vp.h * vp.h));
   if (tag == "path") {
+    if (limits_.animation_time >= 0 && animated_path(n, limits_.animation_time, out)) return out;
     const char* d = n.attribute("d").value();
     const svg::PathDataResult r = svg::parse_path_data(d, out);
     if (r.out_of_range) fail(describe(n) + " d: number out of range");
@@ -351,6 +354,77 @@ std::vector<Subpath> Reader::shape_geometry(pugi::xml_node n, std::string_view t
     if (pts.size() >= 2) out.push_back(lines(pts, tag == "polygon"));
   }
   return out;
+}
+
+// The shape of a path with a SMIL <animate attributeName="d"> at `time` seconds: the active
+// keyframe interval by keyTimes (uniform when absent), numbers interpolated linearly (for our
+// own M/C/Z exports this is exactly SMIL's path interpolation), or the interval's first value
+// for calcMode="discrete" or shapes of different structure. Returns false when there is no
+// usable animation (the static d is used).
+bool Reader::animated_path(pugi::xml_node n, double time, std::vector<Subpath>& out) {
+  pugi::xml_node anim;
+  for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling())
+    if (local_name(c.name()) == "animate" && std::string_view(c.attribute("attributeName").value()) == "d") anim = c;
+  if (!anim) return false;
+  std::vector<std::string> values;
+  std::string_view v = anim.attribute("values").value();
+  while (!v.empty()) {
+    const size_t semi = v.find(';');
+    std::string item(v.substr(0, semi));
+    if (item.find_first_not_of(" \t\r\n") != std::string::npos) values.push_back(item);
+    if (semi == std::string_view::npos) break;
+    v.remove_prefix(semi + 1);
+  }
+  if (values.empty()) return false;
+  std::vector<double> times;
+  std::string_view kt = anim.attribute("keyTimes").value();
+  while (!kt.empty()) {
+    const size_t semi = kt.find(';');
+    if (const auto t = svg::parse_number(kt.substr(0, semi))) times.push_back(*t);
+    if (semi == std::string_view::npos) break;
+    kt.remove_prefix(semi + 1);
+  }
+  if (times.size() != values.size()) {
+    times.clear();
+    for (size_t i = 0; i < values.size(); ++i)
+      times.push_back(values.size() > 1 ? static_cast<double>(i) / (values.size() - 1) : 0.0);
+  }
+  // Clock value: "2.04s", "500ms", "1.5min", or a bare number of seconds.
+  std::string dur = anim.attribute("dur").value();
+  double seconds = 0, scale = 1;
+  if (dur.size() > 2 && dur.compare(dur.size() - 2, 2, "ms") == 0) { scale = 1e-3; dur.resize(dur.size() - 2); }
+  else if (dur.size() > 3 && dur.compare(dur.size() - 3, 3, "min") == 0) { scale = 60; dur.resize(dur.size() - 3); }
+  else if (!dur.empty() && dur.back() == 's') dur.pop_back();
+  if (const auto d = svg::parse_number(dur)) seconds = *d * scale;
+  if (!(seconds > 0)) return false;
+  const std::string_view repeat = anim.attribute("repeatCount").value();
+  double f = time / seconds;
+  if (repeat == "indefinite") f -= std::floor(f);
+  else if (const auto rc = svg::parse_number(repeat); rc && *rc > 0 && f < *rc) f -= std::floor(f);
+  else if (f > 1) {
+    if (std::string_view(anim.attribute("fill").value()) != "freeze") return false;  // ended
+    f = 1;
+  }
+  size_t i = 0;
+  while (i + 1 < times.size() && f >= times[i + 1]) ++i;
+  std::vector<Subpath> a, b;
+  svg::parse_path_data(values[i], a);
+  const bool discrete = std::string_view(anim.attribute("calcMode").value()) == "discrete";
+  if (i + 1 >= values.size() || discrete) {
+    out = std::move(a);
+    return true;
+  }
+  svg::parse_path_data(values[i + 1], b);
+  const double span = times[i + 1] - times[i];
+  const double u = span > 0 ? std::clamp((f - times[i]) / span, 0.0, 1.0) : 0.0;
+  bool same = a.size() == b.size();
+  for (size_t s = 0; same && s < a.size(); ++s) same = a[s].points.size() == b[s].points.size();
+  if (same)
+    for (size_t s = 0; s < a.size(); ++s)
+      for (size_t p = 0; p < a[s].points.size(); ++p)
+        a[s].points[p] = (1 - u) * a[s].points[p] + u * b[s].points[p];
+  out = std::move(a);
+  return true;
 }
 
 void Reader::add_shape(pugi::xml_node n, std::vector<Subpath> subpaths, const Style& s,

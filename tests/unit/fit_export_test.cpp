@@ -1,0 +1,83 @@
+// The SMIL export round trip: keyframes written into the user's document come back, at each
+// keyframe's time, as the same control points; basic shapes become paths with their ids.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+#include "fit/smil_writer.h"
+#include "raster/raster_plan.h"
+#include "svgmotion/svg_reader.h"
+
+using namespace svgm;
+
+TEST_SUITE("fit") {
+
+TEST_CASE("animation.svg round trip: keyframes come back at their times, in the element's own coordinates") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("svgm_export_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path in = dir / "in.svg", out = dir / "animation.svg";
+  std::ofstream(in) << R"svg(<?xml version="1.0"?>
+<!-- kept -->
+<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100" viewBox="0 0 200 200">
+  <title>kept too</title>
+  <g id="arm" transform="translate(10 20) rotate(30)">
+    <rect id="box" x="10" y="10" width="40" height="20" fill="#c33"/>
+    <path id="tip" d="M 60 10 C 70 0 80 0 90 10 Z" fill="blue" stroke="black"/>
+  </g>
+  <text>left alone</text>
+</svg>)svg";
+  const Scene scene = read_svg_file(in);
+  REQUIRE(scene.paths.size() == 2);
+  const RasterPlan plan = plan_raster(scene, Affine{}, 100, 100);
+  const int K = 3;
+  // Keyframe k moves every canvas point by (3k, -2k).
+  std::vector<double> pts;
+  for (int k = 0; k < K; ++k)
+    for (int i = 0; i < plan.n_cp; ++i) {
+      pts.push_back(plan.rest_cp[2 * i] + 3.0 * k);
+      pts.push_back(plan.rest_cp[2 * i + 1] - 2.0 * k);
+    }
+  AnimationTiming timing;
+  timing.keyframes = K;
+  timing.duration_s = 2;
+  CHECK(write_animation_svg(in, scene, plan, pts, timing, out).empty());
+
+  std::ifstream f(out);
+  const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  CHECK(text.find("<!-- kept -->") != std::string::npos);
+  CHECK(text.find("<title>kept too</title>") != std::string::npos);
+  CHECK(text.find("<text>left alone</text>") != std::string::npos);
+  CHECK(text.find("<path id=\"box\"") != std::string::npos);  // the rect became a path
+  CHECK(text.find("width=\"40\"") == std::string::npos);
+  CHECK(text.find("keyTimes=\"0;0.5;1\"") != std::string::npos);
+
+  for (int k = 0; k < K; ++k) {
+    SvgReadLimits at;
+    at.animation_time = k * 1.0 - (k == K - 1 ? 1e-9 : 0);  // the last keyframe just before the loop wraps
+    const Scene back = read_svg_file(out, at);
+    REQUIRE(back.paths.size() == 2);
+    double worst = 0;
+    for (size_t p = 0; p < 2; ++p) {
+      int cp = plan.path_cp_first[p];
+      for (const Subpath& sp : back.paths[p].subpaths)
+        for (const Vec2& q : sp.points) {
+          worst = std::max(worst, std::hypot(q.x - pts[(k * plan.n_cp + cp) * 2], q.y - pts[(k * plan.n_cp + cp) * 2 + 1]));
+          ++cp;
+        }
+    }
+    CAPTURE(k);
+    CHECK(worst < 2e-3);  // coordinates are written to 1/1000 of a user unit
+  }
+  SvgReadLimits mid;
+  mid.animation_time = 0.5;  // halfway between keyframes 0 and 1: moved by (1.5, -1)
+  const Scene half = read_svg_file(out, mid);
+  CHECK(half.paths[1].subpaths[0].points[0].x == doctest::Approx(plan.rest_cp[2 * plan.path_cp_first[1]] + 1.5).epsilon(1e-4));
+  fs::remove_all(dir);
+}
+
+}  // TEST_SUITE
