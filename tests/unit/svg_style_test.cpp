@@ -58,7 +58,7 @@ TEST_CASE("colours: hex, rgb() with numbers and percentages, hsl, names, alpha")
   CHECK(rgba(parse_color("rgb(0, 127, 0)"), 0, 127 / 255.f, 0));
   CHECK(rgba(parse_color("RGB( 0%, 50%, 0% )"), 0, 0.5f, 0));
   CHECK(rgba(parse_color("rgba(0, 127, 0, 0.5)"), 0, 127 / 255.f, 0, 0.5f));
-  CHECK(rgba(parse_color("rgba(0, 127, 0, 50%)"), 0, 127 / 255.f, 0, 0.5f));
+  CHECK_FALSE(parse_color("rgba(0, 127, 0, 50%)"));  // as resvg's reference rendering has it
   CHECK(rgba(parse_color("rgb(300, -5, 120%)"), 1, 0, 1));  // clamped
   CHECK(rgba(parse_color("hsl(120, 100%, 25%)"), 0, 0.5f, 0));
   CHECK(rgba(parse_color("LightGoldenRodYellow"), 250 / 255.f, 250 / 255.f, 210 / 255.f));
@@ -140,10 +140,10 @@ TEST_CASE("unsupported content gives one warning per kind and is skipped") {
   REQUIRE(s.paths.size() == 1);
   CHECK(rgba(s.paths[0].fill, 0.5f, 0.5f, 0.5f));
   REQUIRE(s.warnings.size() == 4);
-  CHECK(s.warnings[0] == "t.svg: <image> elements skipped (image is not supported)");
-  CHECK(s.warnings[1] == "t.svg: <text> elements skipped (text is not supported) (2 times)");
-  CHECK(s.warnings[2] == "t.svg: clip-path ignored (clipping is not supported)");
-  CHECK(s.warnings[3] == "t.svg: gradient paint drawn with its mean stop colour");
+  CHECK(s.warnings[0] == "t.svg: 2 <text> elements skipped (text is not supported)");
+  CHECK(s.warnings[1] == "t.svg: 1 <image> element skipped (images are not supported)");
+  CHECK(s.warnings[2] == "t.svg: <rect>: clip-path ignored (clipping is not supported)");
+  CHECK(s.warnings[3] == "t.svg: <rect>: gradient paint drawn with its mean stop colour");
 }
 
 TEST_CASE("malformed input is one error line naming the file") {
@@ -170,7 +170,7 @@ TEST_CASE("malformed input is one error line naming the file") {
   CHECK(msg(deep + "</svg>") == "bad.svg: nesting deeper than 256 elements");
   SvgReadLimits small;
   small.max_file_bytes = 10 << 20;
-  CHECK(msg(std::string(11 << 20, ' '), small) == "bad.svg: file is 11 MB, larger than the 10 MB limit");
+  CHECK(msg(std::string(11 << 20, ' '), small) == "bad.svg: file is 11.0 MB, larger than the 10 MB limit");
   try {
     read_svg_file("/nonexistent/x.svg");
     FAIL("no error");

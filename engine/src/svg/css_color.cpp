@@ -134,6 +134,9 @@ std::optional<Rgba> parse_color(std::string_view in) {
     bool pct[4];
     const int n = functional_args(std::string_view(s).substr(open + 1, s.size() - open - 2), v, pct);
     if (n != 3 && n != 4) return std::nullopt;
+    // CSS Color 4 allows a percentage alpha, but resvg (whose renderings are our reference)
+    // rejects rgba(0, 127, 0, 50%) as a whole, drawing the default paint instead: we agree.
+    if (n == 4 && pct[3]) return std::nullopt;
     const float alpha = n == 4 ? clamp01(pct[3] ? v[3] / 100 : v[3]) : 1.f;
     if (name == "rgb" || name == "rgba") {
       float c[3];

@@ -143,7 +143,8 @@ PathDataResult parse_path_data(std::string_view d, std::vector<Subpath>& out) {
         break;
       }
       case 'Z': {
-        if (sp) {
+        // A repeated Z (the subpath the previous Z opened is still empty) changes nothing.
+        if (sp && !(prev == 'Z' && sp->points.size() == 1 && !sp->closed)) {
           if (!(cur == start)) line_to(sp->points, cur, start);
           sp->closed = true;
           cur = start;

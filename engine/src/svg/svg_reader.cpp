@@ -3,8 +3,11 @@
 // A recursive walk over pugixml's DOM that carries the computed style, the transform to canvas
 // space, the accumulated opacity and the element's locator. Shapes become cubic paths in canvas
 // space; <use> instantiates its target in place (with a stack to detect cycles); the root's
-// viewBox and preserveAspectRatio map user space to the canvas. Unsupported features are
-// counted per kind and reported as one warning each at the end.
+// viewBox and preserveAspectRatio map user space to the canvas. Styles cascade from
+// presentation attributes, then <style> sheet rules (simple selectors, see css_sheet.h), then
+// the style attribute. Unsupported features are counted per kind and reported as one warning
+// each at the end, naming the first element. Elements with a foreign namespace prefix
+// (sodipodi:, inkscape:, ...) are ignored.
 #include "svgmotion/svg_reader.h"
 
 #include <pugixml.hpp>
@@ -13,13 +16,14 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include "svg/css_color.h"
+#include "svg/css_sheet.h"
 #include "svg/path_data.h"
 #include "svg/svg_number.h"
 #include "svg/svg_style.h"
@@ -50,6 +54,10 @@ struct Viewport {
   double w = 100, h = 100;
 };
 
+// Elements walked in one document, copies through <use> included: bounds the work a small
+// file of nested uses (each instantiating the previous one twice) can ask for.
+constexpr size_t kMaxVisited = 1u << 20;
+
 class Reader {
  public:
   Reader(std::string name, const SvgReadLimits& limits) : name_(std::move(name)), limits_(limits) {}
@@ -79,17 +87,99 @@ class Reader {
   bool resolve_paint(const Paint& p, const Style& s, pugi::xml_node el, Rgba* out);
   std::optional<Rgba> gradient_mean(pugi::xml_node g, int depth);
   Affine viewbox_transform(pugi::xml_node n, double w, double h, Viewport* inner);
-  void warn(const std::string& kind) { ++warn_counts_[kind]; }
+  // Unsupported features: one warning line per kind, naming the first element and counting
+  // the others, in order of first occurrence.
+  void warn(pugi::xml_node n, const std::string& what) { note(what, describe(n), false); }
+  void warn_skipped(std::string_view tag, const char* reason) {
+    note("<" + std::string(tag) + "> " + reason, {}, true);
+  }
+  void note(const std::string& key, std::string first, bool skipped);
+  std::vector<std::string> warning_lines() const;
+  void collect_styles(pugi::xml_node root);
+  // False for elements with a namespace prefix other than the root's (editor extensions).
+  bool in_svg_namespace(pugi::xml_node n) const {
+    const char* colon = std::strchr(n.name(), ':');
+    if (!colon) return true;
+    const std::string_view prefix(n.name(), static_cast<size_t>(colon - n.name()));
+    return prefix == root_prefix_ || prefix == "svg";
+  }
 
   std::string name_;
   SvgReadLimits limits_;
   Scene scene_;
   std::map<std::string, pugi::xml_node> ids_;
   std::set<const void*> use_stack_;
-  std::map<std::string, int> warn_counts_;
+  struct WarningKind {
+    std::string key, first;
+    int count = 0;
+    bool skipped = false;
+  };
+  std::vector<WarningKind> warnings_;
+  svg::StyleSheet sheet_;
+  std::string root_prefix_;
+  std::vector<const svg::CssDeclaration*> matched_;
   int generated_ = 0;
+  int anonymous_uses_ = 0;
   size_t segments_ = 0;
+  size_t visited_ = 0;  // elements walked, <use> instances included (bounds "use bombs")
 };
+
+void Reader::note(const std::string& key, std::string first, bool skipped) {
+  for (WarningKind& w : warnings_)
+    if (w.key == key) {
+      ++w.count;
+      return;
+    }
+  warnings_.push_back({key, std::move(first), 1, skipped});
+}
+
+std::vector<std::string> Reader::warning_lines() const {
+  std::vector<std::string> out;
+  for (const WarningKind& w : warnings_) {
+    if (w.skipped) {
+      // key: "<text> elements skipped (text is not supported)" minus the count and plural.
+      const size_t sp = w.key.find(' ');
+      out.push_back(name_ + ": " + std::to_string(w.count) + " " + w.key.substr(0, sp) +
+                    (w.count == 1 ? " element" : " elements") + w.key.substr(sp));
+    } else if (w.count == 1) {
+      out.push_back(name_ + ": " + w.first + ": " + w.key);
+    } else {
+      out.push_back(name_ + ": " + w.first + " and " + std::to_string(w.count - 1) + " more element" +
+                    (w.count == 2 ? "" : "s") + ": " + w.key);
+    }
+  }
+  return out;
+}
+
+// Rules of every <style> element (type text/css or none), wherever it is in the document.
+void Reader::collect_styles(pugi::xml_node root) {
+  int skipped = 0;
+  pugi::xml_node first;
+  for (pugi::xml_node n = root; n;) {
+    if (n.type() == pugi::node_element && local_name(n.name()) == "style") {
+      const std::string_view type = n.attribute("type").value();
+      if (type.empty() || type == "text/css") {
+        std::string css;
+        for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling())
+          if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) css += c.value();
+        skipped += sheet_.add(css);
+        if (!first) first = n;
+      }
+    }
+    // Pre-order traversal without recursion.
+    if (pugi::xml_node c = n.first_child()) {
+      n = c;
+      continue;
+    }
+    while (n && n != root && !n.next_sibling()) n = n.parent();
+    if (!n || n == root) break;
+    n = n.next_sibling();
+  }
+  if (skipped > 0)
+    note(std::to_string(skipped) + (skipped == 1 ? " CSS rule" : " CSS rules") +
+             " ignored (only tag, .class and #id selectors are supported)",
+         describe(first), false);
+}
 
 double Reader::length(pugi::xml_node n, const char* attr, double fallback, double percent_of) const {
   const pugi::xml_attribute a = n.attribute(attr);
@@ -129,20 +219,13 @@ void Reader::compute_style(pugi::xml_node n, const Style& parent, Style& s, Elem
   if (const char* c = n.attribute("color").value(); *c) apply("color", c);
   for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute())
     if (std::strcmp(a.name(), "style") != 0 && std::strcmp(a.name(), "color") != 0) apply(a.name(), a.value());
-  // The style attribute wins over presentation attributes.
-  std::string_view st = n.attribute("style").value();
-  while (!st.empty()) {
-    const size_t semi = st.find(';');
-    const std::string_view decl = st.substr(0, semi);
-    if (const size_t colon = decl.find(':'); colon != std::string_view::npos) {
-      std::string_view k = decl.substr(0, colon);
-      while (!k.empty() && std::isspace(static_cast<unsigned char>(k.front()))) k.remove_prefix(1);
-      while (!k.empty() && std::isspace(static_cast<unsigned char>(k.back()))) k.remove_suffix(1);
-      apply(k, decl.substr(colon + 1));
-    }
-    if (semi == std::string_view::npos) break;
-    st.remove_prefix(semi + 1);
+  // Cascade: presentation attributes, then <style> sheet rules, then the style attribute.
+  if (!sheet_.empty()) {
+    sheet_.match(local_name(n.name()), n.attribute("id").value(), n.attribute("class").value(), matched_);
+    for (const svg::CssDeclaration* d : matched_) apply(d->name, d->value);
   }
+  if (const char* st = n.attribute("style").value(); *st)
+    for (const svg::CssDeclaration& d : svg::parse_declarations(st)) apply(d.name, d.value);
 }
 
 std::optional<Rgba> Reader::gradient_mean(pugi::xml_node g, int depth) {
@@ -163,20 +246,15 @@ std::optional<Rgba> Reader::gradient_mean(pugi::xml_node g, int depth) {
     };
     take("stop-color", stop.attribute("stop-color").value());
     if (!stop.attribute("stop-opacity").empty()) take("stop-opacity", stop.attribute("stop-opacity").value());
-    std::string_view style = stop.attribute("style").value();
-    while (!style.empty()) {
-      const size_t semi = style.find(';');
-      const std::string_view decl = style.substr(0, semi);
-      if (const size_t colon = decl.find(':'); colon != std::string_view::npos) {
-        std::string_view k = decl.substr(0, colon);
-        while (!k.empty() && std::isspace(static_cast<unsigned char>(k.front()))) k.remove_prefix(1);
-        while (!k.empty() && std::isspace(static_cast<unsigned char>(k.back()))) k.remove_suffix(1);
-        take(k, decl.substr(colon + 1));
-      }
-      if (semi == std::string_view::npos) break;
-      style.remove_prefix(semi + 1);
+    if (!sheet_.empty()) {
+      sheet_.match("stop", stop.attribute("id").value(), stop.attribute("class").value(), matched_);
+      for (const svg::CssDeclaration* d : matched_) take(d->name, d->value);
     }
-    r += c.r; gg += c.g; b += c.b; a += c.a * opacity;
+    if (const char* style = stop.attribute("style").value(); *style)
+      for (const svg::CssDeclaration& d : svg::parse_declarations(style)) take(d.name, d.value);
+    // Premultiplied sums: a transparent stop does not pull the mean colour towards black.
+    const double alpha = c.a * opacity;
+    r += c.r * alpha; gg += c.g * alpha; b += c.b * alpha; a += alpha;
     ++n;
   }
   if (n == 0) {
@@ -189,7 +267,8 @@ std::optional<Rgba> Reader::gradient_mean(pugi::xml_node g, int depth) {
     }
     return std::nullopt;
   }
-  return Rgba{static_cast<float>(r / n), static_cast<float>(gg / n), static_cast<float>(b / n),
+  if (a <= 0) return Rgba{0, 0, 0, 0};
+  return Rgba{static_cast<float>(r / a), static_cast<float>(gg / a), static_cast<float>(b / a),
               static_cast<float>(a / n)};
 }
 
@@ -203,16 +282,17 @@ bool Reader::resolve_paint(const Paint& p, const Style& s, pugi::xml_node el, Rg
       if (it != ids_.end()) {
         const std::string_view tag = local_name(it->second.name());
         if (tag == "linearGradient" || tag == "radialGradient") {
-          warn("gradient paint drawn with its mean stop colour");
+          warn(el, "gradient paint drawn with its mean stop colour");
           if (const auto m = gradient_mean(it->second, 0)) {
             *out = *m;
             return true;
           }
           return false;
         }
-        if (tag == "pattern") warn("pattern paint not supported (fallback colour or none used)");
+        if (tag == "pattern") warn(el, "pattern paint not supported (fallback colour or none used)");
+      } else {
+        warn(el, "paint url(#" + p.url + ") not found (fallback colour or none used)");
       }
-      (void)el;
       if (p.has_fallback && p.fallback != PaintKind::None) {
         *out = p.fallback == PaintKind::CurrentColor ? s.color : p.color;
         return true;
@@ -240,22 +320,32 @@ Affine Reader::viewbox_transform(pugi::xml_node n, double w, double h, Viewport*
   if (v[2] <= 0 || v[3] <= 0) return {};
   inner->w = v[2];
   inner->h = v[3];
-  std::string par = n.attribute("preserveAspectRatio").value();
-  std::istringstream ss(par);
-  std::string align = "xMidYMid", mode = "meet";
-  ss >> align;
-  if (align == "defer") ss >> align;
-  ss >> mode;
-  if (align.empty()) align = "xMidYMid";
+  // preserveAspectRatio: ["defer"] <align> ["meet" | "slice"]; anything unknown is the default.
+  std::string_view par = n.attribute("preserveAspectRatio").value();
+  auto word = [&par]() {
+    while (!par.empty() && std::isspace(static_cast<unsigned char>(par.front()))) par.remove_prefix(1);
+    size_t k = 0;
+    while (k < par.size() && !std::isspace(static_cast<unsigned char>(par[k]))) ++k;
+    const std::string_view w = par.substr(0, k);
+    par.remove_prefix(k);
+    return w;
+  };
+  std::string_view align = word(), mode = "meet";
+  if (align == "defer") align = word();
+  if (const std::string_view m = word(); !m.empty()) mode = m;
+  static constexpr std::string_view kAligns[] = {"none", "xMinYMin", "xMidYMin", "xMaxYMin",
+                                                 "xMinYMid", "xMidYMid", "xMaxYMid",
+                                                 "xMinYMax", "xMidYMax", "xMaxYMax"};
+  if (std::find(std::begin(kAligns), std::end(kAligns), align) == std::end(kAligns)) align = "xMidYMid";
   double sx = w / v[2], sy = h / v[3];
   if (align == "none") return Affine::scale(sx, sy) * Affine::translate(-v[0], -v[1]);
   const double s = mode == "slice" ? std::max(sx, sy) : std::min(sx, sy);
   double tx = -v[0] * s, ty = -v[1] * s;
   const double ex = w - v[2] * s, ey = h - v[3] * s;
-  if (align.find("xMid") != std::string::npos) tx += ex / 2;
-  else if (align.find("xMax") != std::string::npos) tx += ex;
-  if (align.find("YMid") != std::string::npos) ty += ey / 2;
-  else if (align.find("YMax") != std::string::npos) ty += ey;
+  if (align.substr(0, 4) == "xMid") tx += ex / 2;
+  else if (align.substr(0, 4) == "xMax") tx += ex;
+  if (align.substr(4) == "YMid") ty += ey / 2;
+  else if (align.substr(4) == "YMax") ty += ey;
   return Affine{s, 0, 0, s, tx, ty};
 }
 
@@ -450,7 +540,7 @@ void Reader::add_shape(pugi::xml_node n, std::vector<Subpath> subpaths, const St
     p.stroke.join = s.join;
     p.stroke.cap = s.cap;
     p.stroke.miter_limit = s.miter_limit;
-    if (s.dashed) warn("stroke-dasharray not supported (drawn solid)");
+    if (s.dashed) warn(n, "stroke-dasharray not supported (drawn solid)");
   }
   if (!p.has_fill && !p.has_stroke) return;
   for (Subpath& sp : subpaths) {
@@ -479,8 +569,10 @@ void Reader::walk_children(pugi::xml_node n, const Style& s, const Affine& ctm, 
   for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling()) {
     if (c.type() != pugi::node_element) continue;
     const std::string tag(local_name(c.name()));
-    const int index = ++seen[tag];
-    const std::string loc = locator.empty() ? locator : locator + "/" + tag + "[" + std::to_string(index) + "]";
+    const int index = ++seen[tag];  // locators count names without prefix (as smil_writer does)
+    if (!in_svg_namespace(c)) continue;  // sodipodi:*, inkscape:*, i:pgf ...
+    // Inside a <use> copy (id_prefix set) every shape keeps the use element's locator.
+    const std::string loc = !id_prefix.empty() ? locator : locator + "/" + tag + "[" + std::to_string(index) + "]";
     walk(c, s, ctm, opacity, loc, group, id_prefix, depth + 1, vp);
     if (is_switch) break;  // a switch renders its first child (no conditional attributes here)
   }
@@ -490,31 +582,39 @@ void Reader::walk(pugi::xml_node n, const Style& parent, const Affine& parent_ct
                   const std::string& locator, int group, const std::string& id_prefix, int depth,
                   const Viewport& vp) {
   if (depth > limits_.max_depth) fail("nesting deeper than " + std::to_string(limits_.max_depth) + " elements");
+  if (++visited_ > kMaxVisited)
+    fail("more than " + std::to_string(kMaxVisited) + " elements to draw (nested <use> copies)");
   const std::string_view tag = local_name(n.name());
   static const std::set<std::string_view> kShapes = {"path", "rect", "circle", "ellipse", "line",
                                                      "polyline", "polygon"};
   static const std::set<std::string_view> kContainers = {"g", "a", "switch"};
   const bool shape = kShapes.count(tag) != 0;
   if (!shape && !kContainers.count(tag) && tag != "use" && tag != "svg") {
-    if (tag == "text" || tag == "image" || tag == "foreignObject")
-      warn("<" + std::string(tag) + "> elements skipped (" + std::string(tag) + " is not supported)");
+    if (tag == "text") warn_skipped(tag, "skipped (text is not supported)");
+    else if (tag == "image") warn_skipped(tag, "skipped (images are not supported)");
+    else if (tag == "foreignObject") warn_skipped(tag, "skipped (foreignObject is not supported)");
+    else if (tag == "video" || tag == "audio" || tag == "canvas" || tag == "iframe")
+      warn_skipped(tag, "skipped (not supported)");
     return;  // defs, symbol (only through use), title, metadata, editor elements ...
   }
   Style s;
   ElementProps props;
   compute_style(n, parent, s, props);
   if (props.display_none) return;
-  if (props.has_clip) warn("clip-path ignored (clipping is not supported)");
-  if (props.has_mask) warn("mask ignored (masks are not supported)");
-  if (props.has_filter) warn("filter ignored (filters are not supported)");
-  if (props.has_marker) warn("markers ignored (markers are not supported)");
+  if (props.has_clip) warn(n, "clip-path ignored (clipping is not supported)");
+  if (props.has_mask) warn(n, "mask ignored (masks are not supported)");
+  if (props.has_filter) warn(n, "filter ignored (filters are not supported)");
+  if (props.has_marker) warn(n, "markers ignored (markers are not supported)");
   Affine ctm = parent_ctm;
   if (const char* t = n.attribute("transform").value(); *t) {
     bool bad = false;
     const auto m = svg::parse_transform(t, &bad);
     if (bad) fail(describe(n) + " transform: number out of range");
     if (m) ctm = ctm * *m;
+    else warn(n, "invalid transform ignored");  // as resvg and browsers do
   }
+  // A singular transform (e.g. scale(0)) draws nothing, and has no inverse for exporters.
+  if (const double det = ctm.det(); !(std::fabs(det) > 0) || !std::isfinite(det)) return;
   const float op = opacity * props.opacity;
 
   if (shape) {
@@ -524,9 +624,15 @@ void Reader::walk(pugi::xml_node n, const Style& parent, const Affine& parent_ct
   if (tag == "use") {
     const char* href = n.attribute("xlink:href").value();
     if (!*href) href = n.attribute("href").value();
-    if (*href != '#') return;
+    if (*href != '#') {
+      if (*href) warn(n, "external references are not supported (skipped)");
+      return;
+    }
     const auto it = ids_.find(href + 1);
-    if (it == ids_.end()) return;
+    if (it == ids_.end()) {
+      warn(n, "reference to a missing element skipped");
+      return;
+    }
     const pugi::xml_node target = it->second;
     if (use_stack_.count(target.internal_object()) || use_stack_.count(n.internal_object()))
       fail(describe(n) + " references itself (use cycle)");
@@ -535,8 +641,11 @@ void Reader::walk(pugi::xml_node n, const Style& parent, const Affine& parent_ct
     use_stack_.insert(n.internal_object());
     use_stack_.insert(target.internal_object());
     ctm = ctm * Affine::translate(length(n, "x", 0, vp.w), length(n, "y", 0, vp.h));
+    // Ids of shapes drawn through a use: "<use id>/<shape id>", nested uses chained; a use
+    // without an id is "use-N" (N counts such uses in drawing order).
     const char* uid = n.attribute("id").value();
-    const std::string prefix = std::string(*uid ? uid : "use") ;
+    const std::string own = *uid ? std::string(uid) : "use-" + std::to_string(++anonymous_uses_);
+    const std::string prefix = id_prefix.empty() ? own : id_prefix + "/" + own;
     const int g = group < 0 && depth == 1 ? -2 : group;  // top-level use: one group of its own
     int use_group = g;
     if (g == -2) {
@@ -550,7 +659,8 @@ void Reader::walk(pugi::xml_node n, const Style& parent, const Affine& parent_ct
       Style ts;
       ElementProps tp;
       compute_style(target, s, ts, tp);
-      walk_children(target, ts, ctm * vb, op * tp.opacity, locator, use_group, prefix, depth + 1, inner);
+      if (!tp.display_none && w > 0 && h > 0)
+        walk_children(target, ts, ctm * vb, op * tp.opacity, locator, use_group, prefix, depth + 1, inner);
     } else {
       walk(target, s, ctm, op, locator, use_group, prefix, depth + 1, vp);
     }
@@ -562,8 +672,10 @@ void Reader::walk(pugi::xml_node n, const Style& parent, const Affine& parent_ct
   Viewport inner = vp;
   if (tag == "svg" && depth > 0) {  // nested viewport
     const double w = length(n, "width", vp.w, vp.w), h = length(n, "height", vp.h, vp.h);
+    if (!(w > 0) || !(h > 0)) return;
     ctm = ctm * Affine::translate(length(n, "x", 0, vp.w), length(n, "y", 0, vp.h)) *
           viewbox_transform(n, w, h, &inner);
+    warn(n, "nested <svg> drawn without clipping to its viewport");
   }
   int g = group;
   if (tag == "g" && depth == 1) {  // a top-level group is a part that moves together
@@ -583,6 +695,7 @@ Scene Reader::read(std::string_view text) {
   pugi::xml_node root = doc.document_element();
   if (!root || local_name(root.name()) != "svg")
     fail("root element is <" + std::string(root ? local_name(root.name()) : "nothing") + ">, not <svg>");
+  if (const char* colon = std::strchr(root.name(), ':')) root_prefix_.assign(root.name(), colon);
   // Ids, for use, gradients and patterns; collected iteratively (depth may be large).
   std::vector<pugi::xml_node> stack{root};
   while (!stack.empty()) {
@@ -622,26 +735,47 @@ Scene Reader::read(std::string_view text) {
   scene_.height = h;
   Viewport vp;
   const Affine view = viewbox_transform(root, w, h, &vp);
+  collect_styles(root);
   Style base;
   ElementProps props;
   compute_style(root, base, base, props);
   if (props.display_none) return std::move(scene_);
   Affine ctm = view;
   if (const char* t = root.attribute("transform").value(); *t) {
-    if (const auto m = svg::parse_transform(t)) ctm = ctm * *m;
+    bool bad = false;
+    const auto m = svg::parse_transform(t, &bad);
+    if (bad) fail("<svg> transform: number out of range");
+    if (m) ctm = ctm * *m;
+    if (const double det = ctm.det(); !(std::fabs(det) > 0) || !std::isfinite(det)) return std::move(scene_);
   }
   walk_children(root, base, ctm, props.opacity, "/svg", -1, "", 0, vp);
-  for (const auto& [kind, count] : warn_counts_)
-    scene_.warnings.push_back(name_ + ": " + kind + (count > 1 ? " (" + std::to_string(count) + " times)" : ""));
+  for (std::string& line : warning_lines()) scene_.warnings.push_back(std::move(line));
   return std::move(scene_);
+}
+
+// A byte count for messages: "100.0 MB", "12.5 KB", "900 bytes"; `whole` drops a ".0".
+std::string byte_size(size_t n, bool whole) {
+  const double kib = 1024.0, mib = kib * 1024;
+  char buf[64];
+  if (n < 1024) {
+    std::snprintf(buf, sizeof buf, "%zu bytes", n);
+  } else {
+    const bool mb = n >= (1u << 20);
+    const double v = n / (mb ? mib : kib);
+    std::snprintf(buf, sizeof buf, whole && v == std::floor(v) ? "%.0f %s" : "%.1f %s", v, mb ? "MB" : "KB");
+  }
+  return buf;
+}
+
+[[noreturn]] void too_big(const std::string& name, size_t size, size_t limit) {
+  throw Error(name + ": file is " + byte_size(size, false) + ", larger than the " +
+              byte_size(limit, true) + " limit");
 }
 
 }  // namespace
 
 Scene read_svg_string(std::string_view text, std::string_view name, const SvgReadLimits& limits) {
-  if (text.size() > limits.max_file_bytes)
-    throw Error(std::string(name) + ": file is " + std::to_string(text.size() / (1 << 20)) +
-                " MB, larger than the " + std::to_string(limits.max_file_bytes >> 20) + " MB limit");
+  if (text.size() > limits.max_file_bytes) too_big(std::string(name), text.size(), limits.max_file_bytes);
   return Reader(std::string(name), limits).read(text);
 }
 
@@ -651,9 +785,7 @@ Scene read_svg_file(const std::filesystem::path& file, const SvgReadLimits& limi
   if (std::filesystem::is_directory(file, ec)) throw Error(name + ": is a folder, not an SVG file");
   const auto size = std::filesystem::file_size(file, ec);
   if (ec) throw Error(name + ": cannot open: " + (ec == std::errc::no_such_file_or_directory ? std::string("No such file or directory") : ec.message()));
-  if (size > limits.max_file_bytes)
-    throw Error(name + ": file is " + std::to_string(size / (1 << 20)) + " MB, larger than the " +
-                std::to_string(limits.max_file_bytes >> 20) + " MB limit");
+  if (size > limits.max_file_bytes) too_big(name, size, limits.max_file_bytes);
   std::ifstream f(file, std::ios::binary);
   if (!f) throw Error(name + ": cannot open: " + std::strerror(errno));
   std::string text(size, '\0');
