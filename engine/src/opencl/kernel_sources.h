@@ -12,6 +12,8 @@ struct KernelSource {
 };
 
 const std::vector<KernelSource>& embedded_kernels();
+// configs/*.yaml, the same way (default.yaml is the config schema).
+const std::vector<KernelSource>& embedded_configs();
 
 // The text of one embedded file; throws svgm::Error if there is none of that name.
 std::string_view kernel_source(std::string_view name);

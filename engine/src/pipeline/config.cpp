@@ -1,0 +1,164 @@
+// Config loading and validation (see config.h).
+#include "pipeline/config.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+
+#include "opencl/kernel_sources.h"
+#include "svgmotion/error.h"
+
+namespace svgm {
+
+namespace {
+
+nlohmann::json to_json(const YAML::Node& n) {
+  switch (n.Type()) {
+    case YAML::NodeType::Map: {
+      nlohmann::json o = nlohmann::json::object();
+      for (const auto& kv : n) o[kv.first.as<std::string>()] = to_json(kv.second);
+      return o;
+    }
+    case YAML::NodeType::Sequence: {
+      nlohmann::json a = nlohmann::json::array();
+      for (const auto& v : n) a.push_back(to_json(v));
+      return a;
+    }
+    case YAML::NodeType::Scalar: {
+      const std::string s = n.Scalar();
+      if (n.Tag() == "!") return s;  // quoted: a string
+      if (s == "true" || s == "false") return s == "true";
+      if (s == "null" || s == "~") return nullptr;
+      try {
+        size_t used = 0;
+        const long long i = std::stoll(s, &used);
+        if (used == s.size()) return i;
+      } catch (...) {
+      }
+      try {
+        size_t used = 0;
+        const double d = std::stod(s, &used);
+        if (used == s.size()) return d;
+      } catch (...) {
+      }
+      return s;
+    }
+    default:
+      return nullptr;
+  }
+}
+
+size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t prev = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t cur = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, prev + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      prev = cur;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string suggestion(const std::string& key, const nlohmann::json& schema) {
+  std::string best;
+  size_t best_d = 3;  // suggest only close matches
+  for (const auto& [k, v] : schema.items()) {
+    (void)v;
+    const size_t d = edit_distance(key, k);
+    if (d < best_d) { best_d = d; best = k; }
+  }
+  return best;
+}
+
+bool free_form(const std::string& path) {
+  return path.rfind("stages.", 0) == 0 && path.find(".options") != std::string::npos;
+}
+
+// Merges `user` into `into`, checking every key against `schema`.
+void merge(const YAML::Node& user, nlohmann::json& into, const nlohmann::json& schema,
+           const std::string& path, const std::string& file) {
+  for (const auto& kv : user) {
+    const std::string key = kv.first.as<std::string>();
+    const std::string full = path.empty() ? key : path + "." + key;
+    const auto line = std::to_string(kv.first.Mark().line + 1);
+    if (!schema.is_object() || !schema.contains(key)) {
+      const std::string near = schema.is_object() ? suggestion(key, schema) : "";
+      throw Error(file + ":" + line + ": unknown key '" + full + "'" +
+                  (near.empty() ? "" : " (did you mean '" + (path.empty() ? near : path + "." + near) + "'?)"));
+    }
+    const nlohmann::json& s = schema[key];
+    if (s.is_object() && !free_form(full)) {
+      if (!kv.second.IsMap()) throw Error(file + ":" + line + ": '" + full + "' must be a section of keys");
+      merge(kv.second, into[key], s, full, file);
+    } else if (s.is_object()) {
+      into[key] = to_json(kv.second);
+    } else {
+      const nlohmann::json v = to_json(kv.second);
+      if (s.is_number() && !v.is_number())
+        throw Error(file + ":" + line + ": '" + full + "' must be a number");
+      if (s.is_boolean() && !v.is_boolean())
+        throw Error(file + ":" + line + ": '" + full + "' must be true or false");
+      if (s.is_array() && !v.is_array()) throw Error(file + ":" + line + ": '" + full + "' must be a list");
+      into[key] = v;
+    }
+  }
+}
+
+}  // namespace
+
+nlohmann::json default_config() {
+  for (const auto& c : embedded_configs())
+    if (std::string_view(c.name) == "default.yaml") return to_json(YAML::Load(c.text));
+  throw Error("internal: no embedded default.yaml");
+}
+
+nlohmann::json load_config(const std::optional<std::filesystem::path>& file,
+                           const std::vector<std::string>& overrides) {
+  const nlohmann::json schema = default_config();
+  nlohmann::json cfg = schema;
+  if (file) {
+    YAML::Node root;
+    try {
+      root = YAML::LoadFile(file->string());
+    } catch (const YAML::BadFile&) {
+      throw Error(file->string() + ": cannot open");
+    } catch (const YAML::Exception& e) {
+      throw Error(file->string() + ":" + std::to_string(e.mark.line + 1) + ": " + e.msg);
+    }
+    if (!root.IsNull()) {
+      if (!root.IsMap()) throw Error(file->string() + ": a config is a YAML map of keys");
+      merge(root, cfg, schema, "", file->string());
+    }
+  }
+  for (const std::string& o : overrides) {
+    const size_t eq = o.find('=');
+    if (eq == std::string::npos || eq == 0) throw Error("override '" + o + "': expected key.path=value");
+    const std::string path = o.substr(0, eq);
+    YAML::Node value;
+    try {
+      value = YAML::Load(o.substr(eq + 1));
+    } catch (const YAML::Exception& e) {
+      throw Error("override '" + o + "': " + e.msg);
+    }
+    // Build {a: {b: value}} and merge it like a file, so the same checks apply.
+    YAML::Node tree = value;
+    for (size_t end = path.size(); ;) {
+      const size_t dot = path.rfind('.', end - 1);
+      const std::string key = path.substr(dot == std::string::npos ? 0 : dot + 1,
+                                          end - (dot == std::string::npos ? 0 : dot + 1));
+      YAML::Node m(YAML::NodeType::Map);
+      m[key] = tree;
+      tree = m;
+      if (dot == std::string::npos) break;
+      end = dot;
+    }
+    merge(tree, cfg, schema, "", "command line '" + o + "'");
+  }
+  return cfg;
+}
+
+}  // namespace svgm

@@ -1,0 +1,144 @@
+// The pipeline runner (see pipeline.h).
+#include "pipeline/pipeline.h"
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <unistd.h>
+
+#include "svgmotion/error.h"
+
+namespace svgm {
+
+namespace fs = std::filesystem;
+
+const std::vector<StageFiles>& stage_files() {
+  static const std::vector<StageFiles> s = {
+      {"grouper", {{"svg", "input.svg"}}, {{"svg", "grouped.svg"}}},
+      {"recolorer", {{"svg", "grouped.svg"}},
+       {{"svg", "recolored.svg"}, {"png", "recolored.png"}, {"palette", "palette.json"}}},
+      {"video", {{"image", "recolored.png"}, {"svg", "recolored.svg"}}, {{"candidates", "candidates"}}},
+      {"ranker", {{"candidates", "candidates"}, {"palette", "palette.json"}},
+       {{"ranking", "ranking.json"}, {"target", "target.mp4"}}},
+      {"layers", {{"svg", "grouped.svg"}, {"target", "target.mp4"}, {"palette", "palette.json"}},
+       {{"svg", "layered.svg"}, {"layers", "layers.json"}}},
+      {"tracker", {{"svg", "layered.svg"}, {"target", "target.mp4"}}, {{"tracks", "tracks.json"}}},
+      {"fitter",
+       {{"svg", "layered.svg"}, {"target", "target.mp4"}, {"palette", "palette.json"}, {"tracks", "tracks.json"}},
+       {{"animation", "animation.svg"}, {"preview", "preview.mp4"}, {"report", "fit.json"}}},
+  };
+  return s;
+}
+
+namespace {
+
+struct Hash {
+  uint64_t h = 1469598103934665603ull;
+  void add(std::string_view s) {
+    for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
+    h = (h ^ 0xff) * 1099511628211ull;  // separator, so ("ab","c") != ("a","bc")
+  }
+  void add_file(const fs::path& p) {
+    std::error_code ec;
+    if (fs::is_directory(p, ec)) {
+      std::vector<fs::path> files;
+      for (const auto& e : fs::recursive_directory_iterator(p, ec))
+        if (e.is_regular_file()) files.push_back(e.path());
+      std::sort(files.begin(), files.end());
+      for (const auto& f : files) {
+        add(fs::relative(f, p).string());
+        add_file(f);
+      }
+      return;
+    }
+    std::ifstream in(p, std::ios::binary);
+    if (!in) { add("<missing>"); return; }
+    char buf[1 << 16];
+    while (in.read(buf, sizeof buf) || in.gcount() > 0) add(std::string_view(buf, static_cast<size_t>(in.gcount())));
+  }
+  std::string hex() const {
+    char b[17];
+    std::snprintf(b, sizeof b, "%016llx", static_cast<unsigned long long>(h));
+    return b;
+  }
+};
+
+void write_atomic(const fs::path& file, const std::string& text) {
+  fs::create_directories(file.parent_path());
+  const fs::path tmp = file.string() + ".part" + std::to_string(::getpid());
+  { std::ofstream(tmp) << text; }
+  fs::rename(tmp, file);
+}
+
+}  // namespace
+
+std::vector<StageReport> run_pipeline(const nlohmann::json& config, const PluginHost& host,
+                                      const std::optional<std::string>& from,
+                                      const std::function<void(const std::string&)>& on_stage) {
+  const std::string input = config.value("input", "");
+  if (input.empty()) throw Error("no input SVG (set input: in the config or pass --input)");
+  if (!fs::is_regular_file(input)) throw Error(input + ": cannot open: No such file or directory");
+  const fs::path run = fs::absolute(config.value("output", "run"));
+  std::error_code ec;
+  fs::create_directories(run, ec);
+  if (ec) throw Error(run.string() + ": cannot create: " + ec.message());
+  // The input is copied into the run directory, so the run is self-contained; the copy only
+  // changes (and invalidates later stages) when the input's content does.
+  {
+    Hash a, b;
+    a.add_file(input);
+    b.add_file(run / "input.svg");
+    if (a.h != b.h) fs::copy_file(input, run / "input.svg", fs::copy_options::overwrite_existing);
+  }
+  if (from) {
+    const auto& st = stage_names();
+    if (std::find(st.begin(), st.end(), *from) == st.end())
+      throw Error("--from " + *from + ": no such stage (stages: grouper, recolorer, video, ranker, layers, tracker, fitter)");
+  }
+  bool forced = false;
+  std::vector<StageReport> reports;
+  for (const StageFiles& sf : stage_files()) {
+    const nlohmann::json& section = config["stages"][sf.stage];
+    const std::string plugin = section.value("plugin", "");
+    if (from && *from == sf.stage) forced = true;
+    const PluginInfo* info = host.find(sf.stage, plugin);
+    Hash h;
+    h.add(plugin);
+    h.add(info ? info->version : "?");
+    h.add(section.dump());
+    h.add(config.value("prompt", ""));
+    h.add(std::to_string(config.value("seed", 0)));
+    for (const auto& [k, v] : sf.inputs.items()) {
+      h.add(k);
+      h.add_file(run / v.get<std::string>());
+    }
+    const fs::path manifest = run / ".svgmotion" / (sf.stage + ".json");
+    bool up_to_date = !forced && fs::exists(manifest);
+    if (up_to_date) {
+      std::ifstream m(manifest);
+      nlohmann::json mj = nlohmann::json::parse(m, nullptr, false);
+      up_to_date = mj.is_object() && mj.value("hash", "") == h.hex();
+      for (const auto& [k, v] : sf.outputs.items()) up_to_date = up_to_date && fs::exists(run / v.get<std::string>());
+    }
+    StageReport r{sf.stage, plugin, up_to_date, 0};
+    if (!up_to_date) {
+      if (on_stage) on_stage(sf.stage + " (" + plugin + ")");
+      const auto t0 = std::chrono::steady_clock::now();
+      nlohmann::json req = {{"abi", SVGM_PLUGIN_ABI}, {"stage", sf.stage},       {"run_dir", run.string()},
+                            {"inputs", sf.inputs},    {"outputs", sf.outputs},   {"config", section},
+                            {"prompt", config.value("prompt", "")}, {"seed", config.value("seed", 0)},
+                            {"device", config.value("device", "auto")}, {"input", input}};
+      host.run(sf.stage, plugin, req);
+      for (const auto& [k, v] : sf.outputs.items())
+        if (!fs::exists(run / v.get<std::string>()))
+          throw Error(sf.stage + " plugin '" + plugin + "' did not write its output " + v.get<std::string>());
+      r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      write_atomic(manifest, nlohmann::json{{"stage", sf.stage}, {"plugin", plugin}, {"hash", h.hex()},
+                                            {"seconds", r.seconds}}.dump(2) + "\n");
+    }
+    reports.push_back(r);
+  }
+  return reports;
+}
+
+}  // namespace svgm

@@ -1,0 +1,50 @@
+// The plugin host: finds stage plugins on the search path, checks their descriptors, and runs
+// them with a JSON request (see svgmotion/plugin.h for the ABI and the contract).
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "svgmotion/plugin.h"
+
+namespace svgm {
+
+struct PluginInfo {
+  std::string stage, name, version, description;
+  std::filesystem::path path;
+  const svgm_plugin* descriptor = nullptr;
+};
+
+// The known stage kinds, in pipeline order.
+const std::vector<std::string>& stage_names();
+
+class PluginHost {
+ public:
+  // Scans `search_path` in order for modules named svgm_*.so. The first module providing a
+  // (stage, name) wins; later ones with the same pair are refused as duplicates. Modules that
+  // cannot be loaded or speak another ABI are refused too; problems() says why.
+  explicit PluginHost(const std::vector<std::filesystem::path>& search_path);
+
+  const std::vector<PluginInfo>& plugins() const { return plugins_; }
+  const std::vector<std::string>& problems() const { return problems_; }
+  const PluginInfo* find(const std::string& stage, const std::string& name) const;
+
+  // Runs plugin (stage, name) on `request`; returns its response. Throws svgm::Error
+  // "<stage> plugin '<name>': <problem>" when it is missing, fails, or answers garbage.
+  nlohmann::json run(const std::string& stage, const std::string& name,
+                     const nlohmann::json& request) const;
+
+ private:
+  void load(const std::filesystem::path& file);
+  std::vector<PluginInfo> plugins_;
+  std::vector<std::string> problems_;
+};
+
+// The default search path: next to the binary (<exe dir>/plugins), the install's plugin
+// directory, $SVGMOTION_PLUGIN_PATH (colon-separated), then `extra` (the config's plugin_paths).
+std::vector<std::filesystem::path> plugin_search_path(const std::vector<std::filesystem::path>& extra);
+
+}  // namespace svgm
