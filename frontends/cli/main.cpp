@@ -20,6 +20,8 @@ usage:
                    [--device D] [--strict]
   svgmotion fit IN.svg --target VIDEO|FRAMES_DIR -o OUT_DIR [--iterations N] [--keyframes K]
                 [--size N] [--palette P.json] [--resume] [--no-track] [--device D]
+  svgmotion run [CONFIG.yaml] [--input X.svg] [--prompt "..."] [-o RUN_DIR] [--from STAGE] [key.path=value ...]
+  svgmotion plugins
   svgmotion devices
   svgmotion bench render IN.svg [--frames K] [--size N] [--repeat R] [--json] [--device D]
   svgmotion bench raster IN.svg [--frames K] [--size N] [--repeat R] [--json] [--device D]
@@ -48,6 +50,8 @@ int main(int argc, char** argv) {
     if (cmd == "devices") return svgm::cli::cmd_devices(args);
     if (cmd == "bench") return svgm::cli::cmd_bench(args);
     if (cmd == "fit") return svgm::cli::cmd_fit(args);
+    if (cmd == "run") return svgm::cli::cmd_run(args);
+    if (cmd == "plugins") return svgm::cli::cmd_plugins(args);
     std::fprintf(stderr, "svgmotion: unknown command '%s' (try svgmotion help)\n", cmd.c_str());
     return 2;
   } catch (const svgm::Error& e) {

@@ -84,25 +84,26 @@ void merge(const YAML::Node& user, nlohmann::json& into, const nlohmann::json& s
   for (const auto& kv : user) {
     const std::string key = kv.first.as<std::string>();
     const std::string full = path.empty() ? key : path + "." + key;
-    const auto line = std::to_string(kv.first.Mark().line + 1);
+    // "file:line" for files; overrides come as "command line 'k=v'" with no line to point at.
+    const auto line = file.rfind("command line", 0) == 0 ? std::string() : ":" + std::to_string(kv.first.Mark().line + 1);
     if (!schema.is_object() || !schema.contains(key)) {
       const std::string near = schema.is_object() ? suggestion(key, schema) : "";
-      throw Error(file + ":" + line + ": unknown key '" + full + "'" +
+      throw Error(file + line + ": unknown key '" + full + "'" +
                   (near.empty() ? "" : " (did you mean '" + (path.empty() ? near : path + "." + near) + "'?)"));
     }
     const nlohmann::json& s = schema[key];
     if (s.is_object() && !free_form(full)) {
-      if (!kv.second.IsMap()) throw Error(file + ":" + line + ": '" + full + "' must be a section of keys");
+      if (!kv.second.IsMap()) throw Error(file + line + ": '" + full + "' must be a section of keys");
       merge(kv.second, into[key], s, full, file);
     } else if (s.is_object()) {
       into[key] = to_json(kv.second);
     } else {
       const nlohmann::json v = to_json(kv.second);
       if (s.is_number() && !v.is_number())
-        throw Error(file + ":" + line + ": '" + full + "' must be a number");
+        throw Error(file + line + ": '" + full + "' must be a number");
       if (s.is_boolean() && !v.is_boolean())
-        throw Error(file + ":" + line + ": '" + full + "' must be true or false");
-      if (s.is_array() && !v.is_array()) throw Error(file + ":" + line + ": '" + full + "' must be a list");
+        throw Error(file + line + ": '" + full + "' must be true or false");
+      if (s.is_array() && !v.is_array()) throw Error(file + line + ": '" + full + "' must be a list");
       into[key] = v;
     }
   }

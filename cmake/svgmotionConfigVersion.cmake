@@ -1,0 +1,7 @@
+# Any svgmotion 0.x with plugin ABI 1 satisfies a request for version 0.x.
+set(PACKAGE_VERSION "0.1.0")
+if(PACKAGE_FIND_VERSION_MAJOR AND NOT PACKAGE_FIND_VERSION_MAJOR EQUAL 0)
+  set(PACKAGE_VERSION_COMPATIBLE FALSE)
+else()
+  set(PACKAGE_VERSION_COMPATIBLE TRUE)
+endif()

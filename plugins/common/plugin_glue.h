@@ -1,0 +1,60 @@
+// Glue for svgmotion's own C++ stage plugins: turns a C++ function taking and returning JSON
+// into the C descriptor of svgmotion/plugin.h, with exceptions caught at the boundary (they
+// become {"ok": false, "error": "..."}). Third-party plugins may copy the idea; they only need
+// svgmotion/plugin.h.
+#pragma once
+
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "svgmotion/plugin.h"
+
+namespace svgm::plugin {
+
+using json = nlohmann::json;
+using StageFn = json (*)(const json& request, const svgm_host* host);
+
+inline char* copy_string(const std::string& s) {
+  char* p = static_cast<char*>(std::malloc(s.size() + 1));
+  if (p) std::memcpy(p, s.c_str(), s.size() + 1);
+  return p;
+}
+
+inline int call(StageFn fn, const svgm_host* host, const char* request, char** response) {
+  try {
+    json r = fn(json::parse(request), host);
+    r["ok"] = true;
+    *response = copy_string(r.dump());
+    return 0;
+  } catch (const std::exception& e) {
+    *response = copy_string(json{{"ok", false}, {"error", e.what()}}.dump());
+  } catch (...) {
+    *response = copy_string(R"({"ok": false, "error": "unknown failure"})");
+  }
+  return 1;
+}
+
+inline void free_string(char* s) { std::free(s); }
+
+// run_dir / request["inputs"|"outputs"][key]
+inline std::filesystem::path file(const json& request, const char* kind, const char* key) {
+  return std::filesystem::path(request.at("run_dir").get<std::string>()) /
+         request.at(kind).at(key).get<std::string>();
+}
+
+}  // namespace svgm::plugin
+
+#define SVGM_DEFINE_PLUGIN(STAGE, NAME, VERSION, DESCRIPTION, FN)                              \
+  static int svgm_plugin_run(const svgm_host* host, const char* request, char** response) {   \
+    return svgm::plugin::call(FN, host, request, response);                                    \
+  }                                                                                            \
+  extern "C" SVGM_PLUGIN_EXPORT const svgm_plugin* svgm_plugin_entry(void) {                   \
+    static const svgm_plugin descriptor = {SVGM_PLUGIN_ABI, sizeof(svgm_plugin), STAGE, NAME,  \
+                                           VERSION, DESCRIPTION, svgm_plugin_run,             \
+                                           svgm::plugin::free_string};                         \
+    return &descriptor;                                                                        \
+  }

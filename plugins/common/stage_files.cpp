@@ -1,0 +1,59 @@
+// Small file helpers shared by svgmotion's built-in plugins (see stage_files.h).
+#include "common/stage_files.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "opencl/runtime.h"
+#include "raster/raster_cl.h"
+#include "svgmotion/error.h"
+#include "svgmotion/png_io.h"
+#include "svgmotion/render_size.h"
+
+namespace svgm::plugin {
+
+namespace fs = std::filesystem;
+
+void copy_atomic(const fs::path& from, const fs::path& to) {
+  const fs::path tmp = to.string() + ".part" + std::to_string(::getpid());
+  std::error_code ec;
+  fs::remove_all(tmp, ec);
+  fs::copy(from, tmp, fs::copy_options::recursive, ec);
+  if (ec) throw Error(from.string() + ": cannot copy: " + ec.message());
+  fs::remove_all(to, ec);
+  fs::rename(tmp, to, ec);
+  if (ec) throw Error(to.string() + ": cannot write: " + ec.message());
+}
+
+void write_json(const fs::path& file, const nlohmann::json& j) {
+  const fs::path tmp = file.string() + ".part" + std::to_string(::getpid());
+  {
+    std::ofstream f(tmp);
+    f << j.dump(2) << "\n";
+    if (!f) throw Error(file.string() + ": cannot write");
+  }
+  fs::rename(tmp, file);
+}
+
+void render_png(const Scene& scene, int width, const std::string& device, const fs::path& file) {
+  const RenderSize size = render_size(scene, width);
+  const RasterPlan plan = plan_raster(scene, size.view, size.width, size.height);
+  ClRuntime rt(device);
+  ClRaster r(rt, plan, 1);
+  r.set_rest_pose();
+  r.forward(ClRaster::Output::Rgba8, {1, 1, 1, 1});
+  write_png(file, RgbaImage{size.width, size.height, r.read_rgba8()});
+}
+
+std::string hex_color(const Rgba& c) {
+  char b[8];
+  auto v = [](float x) { return static_cast<int>(std::lround(std::clamp(x, 0.f, 1.f) * 255)); };
+  std::snprintf(b, sizeof b, "#%02x%02x%02x", v(c.r), v(c.g), v(c.b));
+  return b;
+}
+
+}  // namespace svgm::plugin

@@ -1,0 +1,22 @@
+// Small file helpers shared by svgmotion's built-in plugins.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "svgmotion/scene.h"
+
+namespace svgm::plugin {
+
+// Copies a file or a folder to `to` (replacing it), through a temporary name.
+void copy_atomic(const std::filesystem::path& from, const std::filesystem::path& to);
+// Writes JSON (indented) through a temporary name.
+void write_json(const std::filesystem::path& file, const nlohmann::json& j);
+// Renders `scene` at `width` px over white into a PNG (OpenCL device `device`).
+void render_png(const Scene& scene, int width, const std::string& device,
+                const std::filesystem::path& file);
+// "#rrggbb" of a colour.
+std::string hex_color(const Rgba& c);
+
+}  // namespace svgm::plugin

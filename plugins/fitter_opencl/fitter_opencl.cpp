@@ -1,0 +1,32 @@
+// fitter `opencl`: the differentiable fitter (engine/src/fit) behind the plugin interface. Fits
+// layered.svg in the palette's colours to target.mp4 and writes animation.svg (the layered
+// document in its original colours), preview.mp4, fit.json and checkpoint.bin.
+#include "common/plugin_glue.h"
+#include "fit/fit_job.h"
+
+namespace {
+
+nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
+  namespace P = svgm::plugin;
+  const nlohmann::json& c = req.at("config");
+  svgm::FitJob job;
+  job.svg = P::file(req, "inputs", "svg");
+  job.export_into = job.svg;
+  job.target = P::file(req, "inputs", "target");
+  job.palette = P::file(req, "inputs", "palette");
+  job.out = req.at("run_dir").get<std::string>();
+  job.options.iterations = c.value("iterations", 2000);
+  job.options.track = c.value("track", true);
+  job.keyframes = c.value("keyframes", 15);
+  job.width = c.value("size", 256);
+  job.mask_threshold = c.value("mask_threshold", 0.97);
+  job.device = req.value("device", "auto");
+  job.quiet = true;
+  const int rc = svgm::run_fit_job(job, [host] { return host->cancelled(host) != 0; });
+  if (rc != 0) throw std::runtime_error("fit interrupted");
+  return {{"message", "fitted"}};
+}
+
+}  // namespace
+
+SVGM_DEFINE_PLUGIN("fitter", "opencl", "1", "differentiable fitting on OpenCL", run)
