@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# CLI integration tests: cli_test.sh GROUP SVGMOTION_BINARY TEST_DATA_DIR
+# CLI integration tests: cli_test.sh GROUP SVGMOTION_BINARY TEST_DATA_DIR [BUILD_DIR SDK_PLUGIN_DIR]
 # Each check prints "ok - ..." or "not ok - ..."; the script ends with "N passed, M failed" and
 # exits non-zero on any failure.
 set -u
-group=$1 bin=$2 data=$3
+group=$1 bin=$2 data=$3 build=${4:-} sdk_src=${5:-}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 pass=0 fail=0
@@ -88,6 +88,42 @@ fit)
   wait $pid
   rc=$?
   check "Ctrl-C writes the animation so far and exits 130" '[[ $rc -eq 130 && -s $tmp/out4/animation.svg ]]'
+  ;;
+pipeline)
+  mkdir -p "$tmp/frames"
+  for i in 0 1 2 3; do "$bin" render "$data/examples/man.svg" -o "$tmp/frames/$i.png" --size 64 2>/dev/null; done
+  run=("$bin" run --input "$data/examples/man.svg" -o "$tmp/run" --quiet "stages.video.path=$tmp/frames"
+       stages.fitter.iterations=30 stages.fitter.keyframes=3 stages.fitter.size=64)
+  "${run[@]}" >"$tmp/out1" 2>"$tmp/err"
+  check "run writes animation.svg and every intermediate" '[[ -s $tmp/run/animation.svg && -s $tmp/run/grouped.svg && -s $tmp/run/recolored.png && -s $tmp/run/palette.json && -s $tmp/run/target.mp4 && -s $tmp/run/ranking.json && -s $tmp/run/layers.json ]] && grep -q "<animate attributeName=\"d\"" "$tmp/run/animation.svg"'
+  "${run[@]}" >"$tmp/out2" 2>&1
+  check "a second run reports every stage up to date" 'grep -q "every stage is up to date" "$tmp/out2" && [[ $(grep -c "up to date" "$tmp/out2") -eq 8 ]]'
+  "${run[@]}" --from fitter >"$tmp/out3" 2>&1
+  check "--from fitter refits only" '[[ $(grep -c "up to date" "$tmp/out3") -eq 6 ]] && grep -Eq "fitter +opencl +[0-9.]+ s" "$tmp/out3"'
+  cp "$tmp/run/preview.mp4" "$tmp/run/target.mp4"
+  "${run[@]}" >"$tmp/out4" 2>&1
+  # The stages that read target.mp4 (layers, tracker, fitter) run again; the ones before do not.
+  check "replacing target.mp4 by hand refits to it" '[[ $(grep -c "up to date" "$tmp/out4") -eq 4 ]] && grep -Eq "ranker +first +up to date" "$tmp/out4" && grep -Eq "fitter +opencl +[0-9.]+ s" "$tmp/out4"'
+  expect_error "an unknown config key names its line and the near key" "did you mean 'stages.fitter'" "$tmp/none1" \
+    run --input "$data/examples/man.svg" -o "$tmp/none1" stages.fiter.iterations=3
+  printf 'stages:\n  fitter:\n    iterationz: 5\n' >"$tmp/bad.yaml"
+  expect_error "an unknown key in a config file" "bad.yaml:3: unknown key 'stages.fitter.iterationz' (did you mean 'stages.fitter.iterations'?)" "$tmp/none2" \
+    run "$tmp/bad.yaml" --input "$data/examples/man.svg" -o "$tmp/none2"
+  expect_error "a missing plugin" "layers plugin 'masks' not found" "$tmp/run/nothing" "${run[@]:1}" stages.layers.plugin=masks
+  # Drop-in plugin: install the SDK, build a C plugin out of tree, run the pipeline with it.
+  if [[ -n $build && -n $sdk_src ]]; then
+    cmake --install "$build" --prefix "$tmp/prefix" >/dev/null 2>&1
+    cmake -S "$sdk_src" -B "$tmp/plug" -DCMAKE_PREFIX_PATH="$tmp/prefix" >"$tmp/plug.log" 2>&1 &&
+      cmake --build "$tmp/plug" >>"$tmp/plug.log" 2>&1
+    check "a plugin builds out of tree against the installed SDK" '[[ -f $tmp/plug/svgm_grouper_single.so && -f $tmp/prefix/include/svgmotion/plugin.h ]]'
+    rm -f "$tmp/plug/svgm_grouper_future.so.keep"
+    "${run[@]}" stages.grouper.plugin=single "plugin_paths=[\"$tmp/plug\"]" >"$tmp/out5" 2>&1
+    check "the out-of-tree plugin is used" 'grep -q "<g id=\"everything\">" "$tmp/run/grouped.svg" && grep -q "\"plugin\": \"single\"" "$tmp/run/.svgmotion/grouper.json"'
+    SVGMOTION_PLUGIN_PATH="$tmp/plug" "$bin" plugins >"$tmp/plugins" 2>&1
+    check "a plugin built for another ABI is refused with the reason" 'grep -q "svgm_grouper_future.so: built against plugin ABI 2, this svgmotion speaks ABI 1; rebuild it" "$tmp/plugins"'
+    expect_error "running a refused plugin names the reason" "built against plugin ABI 2" "$tmp/run/nothing2" \
+      "${run[@]:1}" stages.grouper.plugin=future "plugin_paths=[\"$tmp/plug\"]"
+  fi
   ;;
 *) echo "unknown group $group"; exit 2 ;;
 esac

@@ -108,6 +108,7 @@ class Reader {
   SvgReadLimits limits_;
   Scene scene_;
   std::map<std::string, pugi::xml_node> ids_;
+  std::map<std::string, int> data_groups_;  // data-group of top-level <g> runs -> group
   std::set<const void*> use_stack_;
   struct WarningKind {
     std::string key, first;
@@ -678,13 +679,27 @@ void Reader::walk(pugi::xml_node n, const Style& parent, const Affine& parent_ct
     warn(n, "nested <svg> drawn without clipping to its viewport");
   }
   int g = group;
+  bool new_group = false;
   if (tag == "g" && depth == 1) {  // a top-level group is a part that moves together
-    g = static_cast<int>(scene_.groups.size());
-    const char* id = n.attribute("id").value();
-    scene_.groups.push_back({*id ? id : "group-" + std::to_string(g + 1), {}});
+    // Runs of one part split by paint order (grouped_svg.h) share a data-group: join them.
+    const char* part = n.attribute("data-group").value();
+    const auto joined = *part ? data_groups_.find(part) : data_groups_.end();
+    if (joined != data_groups_.end()) {
+      g = joined->second;
+    } else {
+      g = static_cast<int>(scene_.groups.size());
+      const char* id = n.attribute("id").value();
+      scene_.groups.push_back({*part ? part : *id ? id : "group-" + std::to_string(g + 1), {}});
+      if (*part) data_groups_[part] = g;
+      new_group = true;
+    }
   }
   walk_children(n, s, ctm, op, locator, g, id_prefix, depth, inner);
-  if (g != group && scene_.groups[g].paths.empty()) scene_.groups.pop_back();
+  if (new_group && scene_.groups[g].paths.empty()) {
+    scene_.groups.pop_back();
+    for (auto it = data_groups_.begin(); it != data_groups_.end();)
+      it = it->second == g ? data_groups_.erase(it) : std::next(it);
+  }
 }
 
 Scene Reader::read(std::string_view text) {

@@ -1,0 +1,286 @@
+// The structural grouper (which paths move together) and the flat grouped SVG writer.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+#include "group/grouped_svg.h"
+#include "group/structural_grouper.h"
+#include "svgmotion/svg_reader.h"
+
+using namespace svgm;
+using Groups = std::vector<std::vector<int>>;
+
+namespace {
+
+std::string svg(const std::string& body, const std::string& root = "width=\"200\" height=\"200\"") {
+  return "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" " +
+         root + ">" + body + "</svg>";
+}
+
+Scene read(const std::string& body, const std::string& root = "width=\"200\" height=\"200\"") {
+  return read_svg_string(svg(body, root), "t.svg");
+}
+
+std::string circle(double cx, double cy, double r, const std::string& fill = "#888") {
+  std::ostringstream s;
+  s << "<circle cx=\"" << cx << "\" cy=\"" << cy << "\" r=\"" << r << "\" fill=\"" << fill << "\"/>";
+  return s.str();
+}
+
+std::string square(double x, double y, double w, const std::string& fill = "#888") {
+  std::ostringstream s;
+  s << "<rect x=\"" << x << "\" y=\"" << y << "\" width=\"" << w << "\" height=\"" << w
+    << "\" fill=\"" << fill << "\"/>";
+  return s.str();
+}
+
+// Every path in exactly one group, each group sorted, groups ordered by their first path.
+void check_partition(const Scene& scene, const Groups& groups) {
+  std::vector<int> seen(scene.paths.size(), 0);
+  for (size_t k = 0; k < groups.size(); ++k) {
+    REQUIRE(!groups[k].empty());
+    CHECK(std::is_sorted(groups[k].begin(), groups[k].end()));
+    if (k > 0) CHECK(groups[k - 1][0] < groups[k][0]);
+    for (int i : groups[k]) ++seen[static_cast<size_t>(i)];
+  }
+  for (int s : seen) CHECK(s == 1);
+}
+
+struct TempDir {
+  std::filesystem::path dir;
+  TempDir() {
+    dir = std::filesystem::temp_directory_path() /
+          ("svgm_group_test_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+  }
+};
+
+}  // namespace
+
+namespace {
+std::string text_of(const std::filesystem::path& f) {
+  std::ifstream in(f);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+}  // namespace
+
+TEST_SUITE("group") {
+
+TEST_CASE("eyes inside a head join the head; a far part stays apart") {
+  // Head with two eyes and a mouth line, and a separate body shape far below.
+  const Scene scene = read(circle(50, 50, 30, "#f0c090") + circle(40, 42, 4, "#000") +
+                           circle(60, 42, 4, "#000") +
+                           "<path d=\"M38 62 Q50 70 62 62\" fill=\"none\" stroke=\"#800\"/>" +
+                           square(130, 130, 50, "#3050a0"));
+  const Groups g = group_paths(scene);
+  check_partition(scene, g);
+  CHECK(g == Groups{{0, 1, 2, 3}, {4}});
+}
+
+TEST_CASE("containment is geometric: inside the box of an L but outside its fill is not inside") {
+  // An L shape; a dot inside its vertical arm (contained) and a dot in the empty corner of its
+  // bounding box, far from the L's fill; and a far square. A bounding-box test would put both
+  // dots with the L.
+  const Scene scene = read("<path d=\"M0 0 H100 V20 H20 V100 H0 Z\" fill=\"#444\"/>" +
+                           circle(10, 60, 4, "#f00") + circle(75, 75, 5, "#f00") +
+                           square(150, 150, 40));
+  const Groups g = group_paths(scene);
+  check_partition(scene, g);
+  CHECK(g == Groups{{0, 1}, {2}, {3}});
+}
+
+TEST_CASE("even-odd holes: a dot in a ring's hole is not contained by the ring") {
+  const Scene scene = read(
+      "<path fill-rule=\"evenodd\" fill=\"#444\" d=\"M20 20 H180 V180 H20 Z M40 40 H160 V160 H40 Z\"/>" +
+      circle(100, 100, 5, "#f00") + circle(30, 100, 4, "#0f0"));
+  const Groups g = group_paths(scene);
+  check_partition(scene, g);
+  CHECK(g == Groups{{0, 2}, {1}});
+}
+
+TEST_CASE("far-apart parts stay apart when the count allows it") {
+  const Scene scene = read(square(5, 5, 20) + square(175, 5, 20) + square(5, 175, 20) +
+                           square(175, 175, 20));
+  const Groups g = group_paths(scene);
+  CHECK(g == Groups{{0}, {1}, {2}, {3}});
+  for (const auto& grp : g) CHECK_FALSE(check_group(scene, grp).far_mix);
+}
+
+TEST_CASE("the count is bounded; far-apart clusters merge nearest first only when needed") {
+  // 20 squares in a row, 10 units apart (5% of the diagonal of 400x200 is 22): a chain of
+  // nearby parts, then a far one at the end.
+  std::string body;
+  for (int i = 0; i < 20; ++i) body += square(2 + 15 * i, 20, 5);
+  body += square(380, 180, 10);
+  const Scene scene = read(body, "width=\"400\" height=\"200\"");
+  GroupingOptions opt;
+  opt.max_groups = 5;
+  const Groups g = group_paths(scene, opt);
+  check_partition(scene, g);
+  CHECK(g.size() == 5);
+  // The far square is still alone: the chain merged among itself first.
+  CHECK(g.back() == std::vector<int>{20});
+  for (const auto& grp : g) CHECK_FALSE(check_group(scene, grp).far_mix);
+
+  opt.max_groups = 1;  // forced below the far split: everything, and the check says so
+  opt.min_groups = 1;
+  const Groups one = group_paths(scene, opt);
+  REQUIRE(one.size() == 1);
+  const GroupCheck c = check_group(scene, one[0]);
+  CHECK(c.far_mix);
+  CHECK(c.components_at_touch == 21);  // 10-unit gaps are above the touch distance (4.5)
+  CHECK(c.largest_gap == doctest::Approx(std::hypot(380.0 - 292.0, 180.0 - 25.0)).epsilon(1e-6));
+}
+
+TEST_CASE("the minimum count is respected: strong links stop at min_groups") {
+  // Three nested circles and nothing else: containment would make one group.
+  const Scene scene = read(circle(100, 100, 80) + circle(100, 100, 40) + circle(100, 100, 10));
+  const Groups g = group_paths(scene);
+  CHECK(g.size() == 2);
+  check_partition(scene, g);
+}
+
+TEST_CASE("existing top-level groups are kept when they are good") {
+  const Scene scene = read("<g id=\"head\">" + circle(50, 50, 30) + circle(45, 45, 4) +
+                           "</g><g id=\"body\">" + square(120, 120, 40) + square(150, 150, 40) +
+                           "</g>" + circle(180, 20, 5));
+  const Groups g = group_paths(scene);
+  CHECK(g == Groups{{0, 1}, {2, 3}, {4}});
+
+  SUBCASE("but not when a group mixes far-apart unconnected paths") {
+    // The first group holds two far-apart squares; the dot lies inside the first square.
+    const Scene bad = read("<g>" + square(0, 0, 30) + square(160, 160, 30) + "</g><g>" +
+                           circle(15, 15, 3) + circle(100, 5, 3) + "</g>");
+    const Groups b = group_paths(bad);
+    check_partition(bad, b);
+    CHECK(b == Groups{{0, 2}, {1}, {3}});
+  }
+}
+
+TEST_CASE("deterministic") {
+  std::string body;
+  unsigned s = 12345;
+  auto rnd = [&](int m) {
+    s = s * 1103515245u + 12345u;
+    return static_cast<int>((s >> 8) % static_cast<unsigned>(m));
+  };
+  for (int i = 0; i < 40; ++i) body += circle(rnd(200), rnd(200), 3 + rnd(20));
+  const Scene scene = read(body);
+  const Groups a = group_paths(scene), b = group_paths(scene);
+  CHECK(a == b);
+  CHECK(a.size() >= 2);
+  CHECK(a.size() <= 15);
+  check_partition(scene, a);
+}
+
+TEST_CASE("grouped SVG round trip, with interleaved groups split into runs") {
+  TempDir tmp;
+  const std::string source =
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" "
+      "width=\"200\" height=\"100\" viewBox=\"0 0 100 50\">"
+      "<style>.k { fill: #00ff00 } #b { fill: #0000ff }</style>"
+      "<defs><circle id=\"dot\" r=\"3\"/></defs>"
+      "<g transform=\"translate(10 5) rotate(20)\" opacity=\"0.5\">"
+      "<path id=\"a\" d=\"M0 0 L20 0 Q25 10 20 20 A5 5 0 0 1 0 20 Z M5 5 L8 5 L8 8 Z\" "
+      "fill=\"#ff0000\" fill-rule=\"evenodd\" fill-opacity=\"0.5\"/>"
+      "<rect id=\"b\" class=\"k\" x=\"30\" y=\"0\" width=\"10\" height=\"10\" stroke=\"#123456\" "
+      "stroke-width=\"2\" stroke-linejoin=\"round\" stroke-linecap=\"square\"/></g>"
+      "<ellipse cx=\"60\" cy=\"25\" rx=\"8\" ry=\"4\" fill=\"rgb(10%,20%,30.5%)\"/>"
+      "<use xlink:href=\"#dot\" x=\"80\" y=\"40\" fill=\"#abcdef\"/>"
+      "<path id=\"e\" d=\"M70 10 C75 0 85 0 90 10\" fill=\"none\" stroke=\"#000\" stroke-miterlimit=\"7\"/>"
+      "</svg>";
+  const auto src = tmp.dir / "in.svg";
+  std::ofstream(src) << source;
+  const Scene scene = read_svg_file(src);
+  REQUIRE(scene.paths.size() == 5);
+  const Groups groups{{0, 2, 4}, {1, 3}};  // interleaved: g1 g2 g1 g2 g1
+  const auto out = tmp.dir / "grouped.svg";
+  write_grouped_svg(src, scene, groups, out);
+  CHECK_FALSE(std::filesystem::exists(out.string() + ".part" + std::to_string(::getpid())));
+
+  const Scene back = read_svg_file(out);
+  REQUIRE(back.paths.size() == scene.paths.size());
+  CHECK(back.width == scene.width);
+  CHECK(back.height == scene.height);
+  for (size_t i = 0; i < scene.paths.size(); ++i) {
+    const Path &p = scene.paths[i], &q = back.paths[i];
+    CAPTURE(p.id);
+    CHECK(q.id == p.id);
+    REQUIRE(q.subpaths.size() == p.subpaths.size());
+    for (size_t s = 0; s < p.subpaths.size(); ++s) {
+      CHECK(q.subpaths[s].closed == p.subpaths[s].closed);
+      REQUIRE(q.subpaths[s].points.size() == p.subpaths[s].points.size());
+      for (size_t k = 0; k < p.subpaths[s].points.size(); ++k) {
+        CHECK(std::fabs(q.subpaths[s].points[k].x - p.subpaths[s].points[k].x) < 1e-3);
+        CHECK(std::fabs(q.subpaths[s].points[k].y - p.subpaths[s].points[k].y) < 1e-3);
+      }
+    }
+    CHECK(q.has_fill == p.has_fill);
+    CHECK(q.fill_rule == p.fill_rule);
+    CHECK(q.has_stroke == p.has_stroke);
+    CHECK(std::fabs(q.opacity - p.opacity) < 1e-5);
+    if (p.has_fill) {
+      CHECK(std::fabs(q.fill.r - p.fill.r) < 1e-5);
+      CHECK(std::fabs(q.fill.g - p.fill.g) < 1e-5);
+      CHECK(std::fabs(q.fill.b - p.fill.b) < 1e-5);
+      CHECK(std::fabs(q.fill.a - p.fill.a) < 1e-5);
+    }
+    if (p.has_stroke) {
+      CHECK(q.stroke.color == p.stroke.color);
+      CHECK(std::fabs(q.stroke.width - p.stroke.width) < 1e-5);
+      CHECK(q.stroke.join == p.stroke.join);
+      CHECK(q.stroke.cap == p.stroke.cap);
+      CHECK(q.stroke.miter_limit == p.stroke.miter_limit);
+    }
+  }
+  // The runs g1, g2, g1-b, g2-b, g1-c are joined again by their data-group when read back:
+  // two parts, each with its paths in paint order.
+  REQUIRE(back.groups.size() == 2);
+  CHECK(back.groups[0].id == "group-1");
+  CHECK(back.groups[1].id == "group-2");
+  CHECK(text_of(out).find("id=\"group-1-c\"") != std::string::npos);
+  std::ifstream in(out);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(text.find("data-group=\"group-1\"") != std::string::npos);
+  CHECK(text.find("<style>") != std::string::npos);
+  CHECK(text.find("<defs>") != std::string::npos);
+  CHECK(text.find("viewBox=\"0 0 200 100\"") != std::string::npos);
+
+  SUBCASE("groups that are not a partition are refused") {
+    CHECK_THROWS(write_grouped_svg(src, scene, Groups{{0, 1, 2}, {3}}, out));
+    CHECK_THROWS(write_grouped_svg(src, scene, Groups{{0, 1, 2}, {2, 3, 4}}, out));
+  }
+}
+
+TEST_CASE("grouping then writing: the grouped file reads back with one group per part") {
+  TempDir tmp;
+  const auto src = tmp.dir / "face.svg";
+  std::ofstream(src) << svg(circle(50, 50, 30, "#f0c090") + circle(40, 42, 4, "#000") +
+                            square(130, 130, 50, "#3050a0") + circle(60, 42, 4, "#000"));
+  const Scene scene = read_svg_file(src);
+  const Groups g = group_paths(scene);
+  CHECK(g == Groups{{0, 1, 3}, {2}});
+  const auto out = tmp.dir / "grouped.svg";
+  write_grouped_svg(src, scene, g, out);
+  const Scene back = read_svg_file(out);
+  // The eye drawn after the body is a second run of group 1, joined back by data-group.
+  REQUIRE(back.groups.size() == 2);
+  CHECK(back.groups[0].paths == std::vector<int>{0, 1, 3});
+  CHECK(text_of(out).find("id=\"group-1-b\"") != std::string::npos);
+  // Reading the grouped file and grouping again keeps its two parts.
+  CHECK(group_paths(back).size() == 2);
+}
+
+}  // TEST_SUITE
