@@ -14,6 +14,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   job.export_into = job.svg;
   job.target = P::file(req, "inputs", "target");
   job.palette = P::file(req, "inputs", "palette");
+  job.tracks = P::file(req, "inputs", "tracks");
   job.out = req.at("run_dir").get<std::string>();
   job.options.iterations = c.value("iterations", 2000);
   job.options.track = c.value("track", true);

@@ -72,6 +72,13 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   if (ec) throw Error(out.string() + ": cannot create: " + ec.message());
   ClRuntime rt(job.device);
   Fitter fitter(rt, fit_scene, target, fo);
+  if (job.tracks) {
+    auto flows = read_tracks(*job.tracks);
+    if (flows.size() == static_cast<size_t>(target.keyframes)) fitter.set_flows(std::move(flows));
+    else if (!flows.empty())
+      std::fprintf(stderr, "svgmotion: warning: %s has flows for %zu keyframes, not %d; tracking the fit instead\n",
+                   job.tracks->c_str(), flows.size(), target.keyframes);
+  }
   const fs::path ckpt = out / "checkpoint.bin";
   const std::string key = input.string() + "|" + std::to_string(fs::file_size(input)) + "|" +
                           *target_path + "|" + std::to_string(keyframes) + "|" +

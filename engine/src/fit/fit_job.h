@@ -16,6 +16,7 @@ namespace svgm {
 struct FitJob {
   std::filesystem::path svg, target, out;
   std::optional<std::filesystem::path> palette;
+  std::optional<std::filesystem::path> tracks;  // tracks.json of the tracker stage
   // The document the animation is written into (default: svg); the fitter plugin fits the
   // layered SVG and exports into it.
   std::optional<std::filesystem::path> export_into;

@@ -199,7 +199,20 @@ void Fitter::warm_start(int k) {
       from.push_back({cp[2 * i], cp[2 * i + 1]});
       index.push_back(i);
     }
-  const PointTracks tracks = track_points(prev, next, W, H, from);
+  PointTracks tracks;
+  if (k < static_cast<int>(flows_.size()) && flows_[k].grid > 0) {
+    // The tracker stage's flow between the target keyframes, at the fitted points.
+    tracks.to = from;
+    tracks.weight.assign(from.size(), 0.0);
+    for (size_t j = 0; j < from.size(); ++j) {
+      double dx, dy, w;
+      flows_[k].sample(from[j].x, from[j].y, W, H, &dx, &dy, &w);
+      tracks.to[j] = from[j] + Vec2{dx, dy};
+      tracks.weight[j] = w;
+    }
+  } else {
+    tracks = track_points(prev, next, W, H, from);
+  }
 
   // Per group: the similarity the tracks show, composed into the copied homography.
   const size_t pb = static_cast<size_t>(G_) * kMotionParams;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "fit/fit_plan.h"
+#include "fit/flow_tracks.h"
 #include "opencl/runtime.h"
 #include "raster/raster_cl.h"
 #include "raster/raster_plan.h"
@@ -86,6 +87,10 @@ class Fitter {
   FitState state();
   void restore(const FitState& s);
 
+  // Keyframe-to-keyframe flow from the tracker stage (flow_tracks.h): flows[k] moves keyframe
+  // k-1's points to k for the warm start, instead of tracking the fit's own render.
+  void set_flows(std::vector<FlowField> flows) { flows_ = std::move(flows); }
+
  private:
   LossTerms fit_iteration();
   void activate_keyframe(int k);
@@ -103,6 +108,7 @@ class Fitter {
   int K_ = 0, G_ = 0;
   int iteration_ = 0, active_ = 1;
   std::vector<int> steps_;
+  std::vector<FlowField> flows_;
   std::unique_ptr<ClRaster> raster_;
   int real_cps_ = 0;  // control points that are not padding
  public:

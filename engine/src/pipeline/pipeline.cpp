@@ -127,7 +127,8 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
       nlohmann::json req = {{"abi", SVGM_PLUGIN_ABI}, {"stage", sf.stage},       {"run_dir", run.string()},
                             {"inputs", sf.inputs},    {"outputs", sf.outputs},   {"config", section},
                             {"prompt", config.value("prompt", "")}, {"seed", config.value("seed", 0)},
-                            {"device", config.value("device", "auto")}, {"input", input}};
+                            {"device", config.value("device", "auto")}, {"input", input},
+                            {"stages", config["stages"]}};  // every stage's settings, read-only
       host.run(sf.stage, plugin, req);
       for (const auto& [k, v] : sf.outputs.items())
         if (!fs::exists(run / v.get<std::string>()))
