@@ -1,0 +1,184 @@
+#!/usr/bin/env python3
+"""A tiny stand-in for an OpenAI-compatible chat-completions endpoint, for llm_grouper_test.sh.
+
+    fake_llm_server.py PORT_FILE [--lifetime S] [--hang S] [--log FILE]
+
+Listens on 127.0.0.1 on an ephemeral port, writes the port number to PORT_FILE once it is
+listening, and exits by itself after --lifetime seconds (default 60). Standard library only.
+
+Every POST to /v1/chat/completions is checked against the request format of the `llm` grouper
+(model, temperature 0, a system message, a user message with a text part holding the SVG source
+and the path ids and an image_url part holding a base64 PNG data URL); a request that does not
+match gets HTTP 400 naming what is wrong. The model name selects the reply:
+
+    valid       a valid grouping of tests/data/examples/man.svg (groups and ids out of paint order)
+    fenced      the same grouping inside ```json fences, with a sentence before it
+    unknown_id  a grouping that names a path the SVG does not have ("left_ear")
+    missing     a grouping that leaves out one path ("mouth")
+    duplicate   a grouping that puts one path ("mouth") in two groups
+    malformed   an answer that is not JSON (truncated)
+    hang        no answer for --hang seconds (default 10), then the valid grouping
+    http500     HTTP 500 with an error object
+    auth        the valid grouping if "Authorization: Bearer test-secret" is sent, else HTTP 401
+
+With --log, every request body is appended to FILE as one JSON line.
+"""
+import argparse
+import base64
+import json
+import os
+import sys
+import threading
+import time
+from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+
+GROUPS = {
+    "groups": [
+        {"name": "head", "paths": ["mouth", "face", "neck", "hair", "eye_right", "eye_left"]},
+        {"name": "waving arm", "paths": ["hand_right", "upper_arm_right"]},
+        {"name": "legs", "paths": ["shoe_right", "thigh_left", "thigh_right", "shoe_left"]},
+        {"name": "body and left arm", "paths": ["hand_left", "torso", "belt", "upper_arm_left"]},
+    ]
+}
+UNKNOWN = {"groups": [dict(g) for g in GROUPS["groups"]]}
+UNKNOWN["groups"][0] = {"name": "head", "paths": GROUPS["groups"][0]["paths"] + ["left_ear"]}
+MISSING = {"groups": [dict(g) for g in GROUPS["groups"]]}
+MISSING["groups"][0] = {"name": "head", "paths": [p for p in GROUPS["groups"][0]["paths"] if p != "mouth"]}
+DUPLICATE = {"groups": [dict(g) for g in GROUPS["groups"]]}
+DUPLICATE["groups"][1] = {"name": "waving arm", "paths": GROUPS["groups"][1]["paths"] + ["mouth"]}
+EXPECTED_IDS = ["thigh_left", "shoe_left", "torso", "hand_right", "mouth"]
+
+
+def check_request(body):
+    """Returns None when `body` has the expected shape, else a one-line complaint."""
+    if not isinstance(body, dict):
+        return "body is not a JSON object"
+    if not isinstance(body.get("model"), str):
+        return "model is not a string"
+    if body.get("temperature") != 0:
+        return "temperature is not 0"
+    msgs = body.get("messages")
+    if not isinstance(msgs, list) or len(msgs) != 2:
+        return "messages is not a list of two"
+    sys_msg, user = msgs
+    if sys_msg.get("role") != "system" or not isinstance(sys_msg.get("content"), str) or not sys_msg["content"]:
+        return "messages[0] is not a system message with text"
+    if "groups" not in sys_msg["content"]:
+        return "the instructions do not describe the answer format"
+    if user.get("role") != "user" or not isinstance(user.get("content"), list) or len(user["content"]) != 2:
+        return "messages[1] is not a user message with two parts"
+    text, image = user["content"]
+    if text.get("type") != "text" or not isinstance(text.get("text"), str):
+        return "the first user part is not text"
+    if "<svg" not in text["text"]:
+        return "the text does not hold the SVG source"
+    for pid in EXPECTED_IDS:
+        if pid not in text["text"]:
+            return "the text does not list path id " + pid
+    if image.get("type") != "image_url" or not isinstance(image.get("image_url"), dict):
+        return "the second user part is not an image_url"
+    url = image["image_url"].get("url", "")
+    prefix = "data:image/png;base64,"
+    if not url.startswith(prefix):
+        return "the image is not a PNG data URL"
+    try:
+        png = base64.b64decode(url[len(prefix):], validate=True)
+    except ValueError:
+        return "the image is not valid base64"
+    if not png.startswith(b"\x89PNG\r\n\x1a\n"):
+        return "the image is not a PNG"
+    return None
+
+
+def completion(content):
+    return {
+        "id": "chatcmpl-fake",
+        "object": "chat.completion",
+        "created": int(time.time()),
+        "model": "fake",
+        "choices": [{"index": 0, "message": {"role": "assistant", "content": content}, "finish_reason": "stop"}],
+    }
+
+
+class Handler(BaseHTTPRequestHandler):
+    protocol_version = "HTTP/1.1"
+
+    def log_message(self, *args):  # quiet
+        pass
+
+    def reply(self, status, obj):
+        data = (obj if isinstance(obj, str) else json.dumps(obj)).encode()
+        try:
+            self.send_response(status)
+            self.send_header("Content-Type", "application/json")
+            self.send_header("Content-Length", str(len(data)))
+            self.end_headers()
+            self.wfile.write(data)
+        except (BrokenPipeError, ConnectionResetError):
+            pass  # the client gave up (the hang case)
+
+    def do_POST(self):
+        length = int(self.headers.get("Content-Length") or 0)
+        raw = self.rfile.read(length)
+        if self.path != "/v1/chat/completions":
+            return self.reply(404, {"error": {"message": "no such path " + self.path}})
+        try:
+            body = json.loads(raw)
+        except ValueError:
+            return self.reply(400, {"error": {"message": "the request body is not JSON"}})
+        if self.server.log_file:
+            with self.server.lock, open(self.server.log_file, "a") as f:
+                f.write(json.dumps({"headers": dict(self.headers), "body": body}) + "\n")
+        problem = check_request(body)
+        if problem:
+            return self.reply(400, {"error": {"message": problem}})
+        model = body["model"]
+        if model == "valid":
+            return self.reply(200, completion(json.dumps(GROUPS)))
+        if model == "fenced":
+            return self.reply(200, completion("Here are the parts:\n```json\n" + json.dumps(GROUPS, indent=2) + "\n```\n"))
+        if model == "unknown_id":
+            return self.reply(200, completion(json.dumps(UNKNOWN)))
+        if model == "missing":
+            return self.reply(200, completion(json.dumps(MISSING)))
+        if model == "duplicate":
+            return self.reply(200, completion(json.dumps(DUPLICATE)))
+        if model == "malformed":
+            return self.reply(200, completion(json.dumps(GROUPS)[:40]))
+        if model == "hang":
+            time.sleep(self.server.hang)
+            return self.reply(200, completion(json.dumps(GROUPS)))
+        if model == "http500":
+            return self.reply(500, {"error": {"message": "the fake model fell over"}})
+        if model == "auth":
+            if self.headers.get("Authorization") != "Bearer test-secret":
+                return self.reply(401, {"error": {"message": "missing or wrong API key"}})
+            return self.reply(200, completion(json.dumps(GROUPS)))
+        return self.reply(404, {"error": {"message": "unknown model " + model}})
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("port_file")
+    ap.add_argument("--lifetime", type=float, default=60)
+    ap.add_argument("--hang", type=float, default=10)
+    ap.add_argument("--log", default="")
+    a = ap.parse_args()
+    ThreadingHTTPServer.daemon_threads = True
+    ThreadingHTTPServer.block_on_close = False
+    server = ThreadingHTTPServer(("127.0.0.1", 0), Handler)
+    server.hang = a.hang
+    server.log_file = a.log
+    server.lock = threading.Lock()
+    tmp = a.port_file + ".tmp"
+    with open(tmp, "w") as f:
+        f.write(str(server.server_address[1]))
+    os.replace(tmp, a.port_file)
+    threading.Timer(a.lifetime, server.shutdown).start()
+    server.serve_forever(poll_interval=0.1)
+    server.server_close()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
