@@ -109,7 +109,7 @@ pipeline)
   printf 'stages:\n  fitter:\n    iterationz: 5\n' >"$tmp/bad.yaml"
   expect_error "an unknown key in a config file" "bad.yaml:3: unknown key 'stages.fitter.iterationz' (did you mean 'stages.fitter.iterations'?)" "$tmp/none2" \
     run "$tmp/bad.yaml" --input "$data/examples/man.svg" -o "$tmp/none2"
-  expect_error "a missing plugin" "layers plugin 'masks' not found" "$tmp/run/nothing" "${run[@]:1}" stages.layers.plugin=masks
+  expect_error "a missing plugin" "layers plugin 'nosuch' not found" "$tmp/run/nothing" "${run[@]:1}" stages.layers.plugin=nosuch
   # Drop-in plugin: install the SDK, build a C plugin out of tree, run the pipeline with it.
   if [[ -n $build && -n $sdk_src ]]; then
     cmake --install "$build" --prefix "$tmp/prefix" >/dev/null 2>&1
