@@ -378,6 +378,8 @@ json run(const json& req, const svgm_host* host) {
             {"source", source},
             {"groups", groups.size()}};
   if (!names.empty()) r["names"] = names;
+  // A fallback depends on the network being down: let the next run ask again.
+  if (source != "llm") r["cache"] = false;
   return r;
 }
 

@@ -129,13 +129,17 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
                             {"prompt", config.value("prompt", "")}, {"seed", config.value("seed", 0)},
                             {"device", config.value("device", "auto")}, {"input", input},
                             {"stages", config["stages"]}};  // every stage's settings, read-only
-      host.run(sf.stage, plugin, req);
+      const nlohmann::json response = host.run(sf.stage, plugin, req);
       for (const auto& [k, v] : sf.outputs.items())
         if (!fs::exists(run / v.get<std::string>()))
           throw Error(sf.stage + " plugin '" + plugin + "' did not write its output " + v.get<std::string>());
       r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      write_atomic(manifest, nlohmann::json{{"stage", sf.stage}, {"plugin", plugin}, {"hash", h.hex()},
-                                            {"seconds", r.seconds}}.dump(2) + "\n");
+      // A plugin answering "cache": false (say, a network fallback) is asked again next run.
+      if (response.value("cache", true))
+        write_atomic(manifest, nlohmann::json{{"stage", sf.stage}, {"plugin", plugin}, {"hash", h.hex()},
+                                              {"seconds", r.seconds}}.dump(2) + "\n");
+      else
+        fs::remove(manifest, ec);
     }
     reports.push_back(r);
   }
