@@ -10,6 +10,7 @@ int cmd_render(const std::vector<std::string>& args);
 int cmd_devices(const std::vector<std::string>& args);
 int cmd_bench(const std::vector<std::string>& args);
 int cmd_fit(const std::vector<std::string>& args);
+int cmd_palette(const std::vector<std::string>& args);
 int cmd_run(const std::vector<std::string>& args);
 int cmd_plugins(const std::vector<std::string>& args);
 

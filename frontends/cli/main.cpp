@@ -23,6 +23,7 @@ usage:
   svgmotion run [CONFIG.yaml] [--input X.svg] [--prompt "..."] [-o RUN_DIR] [--from STAGE] [key.path=value ...]
   svgmotion plugins
   svgmotion devices
+  svgmotion palette N
   svgmotion bench render IN.svg [--frames K] [--size N] [--repeat R] [--json] [--device D]
   svgmotion bench raster IN.svg [--frames K] [--size N] [--repeat R] [--json] [--device D]
   svgmotion bench raster --scaling [--json]
@@ -50,6 +51,7 @@ int main(int argc, char** argv) {
     if (cmd == "devices") return svgm::cli::cmd_devices(args);
     if (cmd == "bench") return svgm::cli::cmd_bench(args);
     if (cmd == "fit") return svgm::cli::cmd_fit(args);
+    if (cmd == "palette") return svgm::cli::cmd_palette(args);
     if (cmd == "run") return svgm::cli::cmd_run(args);
     if (cmd == "plugins") return svgm::cli::cmd_plugins(args);
     std::fprintf(stderr, "svgmotion: unknown command '%s' (try svgmotion help)\n", cmd.c_str());
