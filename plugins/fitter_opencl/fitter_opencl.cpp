@@ -1,6 +1,7 @@
 // fitter `opencl`: the differentiable fitter (engine/src/fit) behind the plugin interface. Fits
-// layered.svg in the palette's colours to target.mp4 and writes animation.svg (the layered
-// document in its original colours), preview.mp4, fit.json and checkpoint.bin.
+// layered.svg to target.mp4 (in the palette's colours, or the SVG's own for a user's video, see
+// stages.fitter.colors) and writes animation.svg (the layered document in its original
+// colours), preview.mp4, fit.json and checkpoint.bin.
 #include "common/plugin_glue.h"
 #include "fit/fit_job.h"
 
@@ -13,7 +14,13 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   job.svg = P::file(req, "inputs", "svg");
   job.export_into = job.svg;
   job.target = P::file(req, "inputs", "target");
-  job.palette = P::file(req, "inputs", "palette");
+  // Colours to fit in: the palette's when the target video was made from the recoloured image
+  // (generators), the SVG's own when it is the user's video (`video: file`), unless set.
+  const std::string colors = c.value("colors", "auto");
+  const bool user_video = req.at("stages").at("video").value("plugin", "") == "file";
+  if (colors == "palette" || (colors == "auto" && !user_video)) job.palette = P::file(req, "inputs", "palette");
+  else if (colors != "original" && colors != "auto")
+    throw std::runtime_error("stages.fitter.colors must be auto, palette or original, not '" + colors + "'");
   job.tracks = P::file(req, "inputs", "tracks");
   job.out = req.at("run_dir").get<std::string>();
   job.options.iterations = c.value("iterations", 2000);
