@@ -1,5 +1,6 @@
 // Small file helpers shared by svgmotion's built-in plugins (see stage_files.h).
 #include "common/stage_files.h"
+#include "svgmotion/atomic_file.h"
 
 #include <unistd.h>
 
@@ -30,13 +31,7 @@ void copy_atomic(const fs::path& from, const fs::path& to) {
 }
 
 void write_json(const fs::path& file, const nlohmann::json& j) {
-  const fs::path tmp = file.string() + ".part" + std::to_string(::getpid());
-  {
-    std::ofstream f(tmp);
-    f << j.dump(2) << "\n";
-    if (!f) throw Error(file.string() + ": cannot write");
-  }
-  fs::rename(tmp, file);
+  write_file_atomic(file, j.dump(2) + "\n");
 }
 
 void render_png(const Scene& scene, int width, const std::string& device, const fs::path& file) {

@@ -3,9 +3,10 @@
 
 #include <cstring>
 #include <fstream>
+#include <sstream>
 
-#include <unistd.h>
 
+#include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -17,7 +18,7 @@ namespace {
 constexpr char kMagic[8] = {'S', 'V', 'G', 'M', 'F', 'I', 'T', '1'};
 
 template <class T>
-void put(std::ofstream& f, const std::vector<T>& v) {
+void put(std::ostream& f, const std::vector<T>& v) {
   const uint64_t n = v.size();
   f.write(reinterpret_cast<const char*>(&n), sizeof n);
   f.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T)));
@@ -34,25 +35,14 @@ bool get(std::ifstream& f, std::vector<T>& v) {
 }  // namespace
 
 void save_checkpoint(const fs::path& file, const std::string& key, const FitState& s) {
-  const fs::path tmp = file.string() + ".part" + std::to_string(::getpid());
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw Error(file.string() + ": cannot write: " + std::strerror(errno));
-    f.write(kMagic, sizeof kMagic);
-    put(f, std::vector<char>(key.begin(), key.end()));
-    put(f, std::vector<int>{s.iteration, s.active});
-    put(f, s.steps);
-    for (const auto* v : {&s.params, &s.m_params, &s.v_params, &s.offsets, &s.m_offsets, &s.v_offsets})
-      put(f, *v);
-    if (!f.flush()) {
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      throw Error(file.string() + ": cannot write: " + std::strerror(errno));
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, file, ec);
-  if (ec) throw Error(file.string() + ": cannot write: " + ec.message());
+  std::ostringstream f(std::ios::binary);
+  f.write(kMagic, sizeof kMagic);
+  put(f, std::vector<char>(key.begin(), key.end()));
+  put(f, std::vector<int>{s.iteration, s.active});
+  put(f, s.steps);
+  for (const auto* v : {&s.params, &s.m_params, &s.v_params, &s.offsets, &s.m_offsets, &s.v_offsets})
+    put(f, *v);
+  write_file_atomic(file, f.str());
 }
 
 FitState load_checkpoint(const fs::path& file, const std::string& key) {

@@ -1,5 +1,6 @@
 // One fit from files to files (see fit_job.h).
 #include "fit/fit_job.h"
+#include "svgmotion/atomic_file.h"
 
 #include <unistd.h>
 
@@ -23,16 +24,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kCheckpointEvery = 250;  // iterations between checkpoints
-
-void write_text_atomic(const fs::path& file, const std::string& text) {
-  const fs::path tmp = file.string() + ".part" + std::to_string(::getpid());
-  {
-    std::ofstream f(tmp, std::ios::trunc);
-    f << text;
-    if (!f.flush()) throw Error(file.string() + ": cannot write");
-  }
-  fs::rename(tmp, file);
-}
 
 // Premultiplied float renders over white, as 8-bit images.
 RgbaImage render_panel(const std::vector<float>& renders, int k, int w, int h) {
@@ -147,7 +138,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                                      {"g1", loss.g1}, {"containment", loss.contain}}},
                            {"keyframe_image_loss", fitter.keyframe_losses()},
                            {"device", rt.info().name}};
-  write_text_atomic(out / "fit.json", report.dump(2) + "\n");
+  write_file_atomic(out / "fit.json", report.dump(2) + "\n");
   if (stopped) {
     std::fprintf(stderr, "svgmotion: interrupted at iteration %d; wrote %s (continue with --resume)\n",
                  fitter.iteration(), (out / "animation.svg").c_str());

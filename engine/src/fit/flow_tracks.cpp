@@ -1,5 +1,6 @@
 // Keyframe-to-keyframe optical flow for warm starts (see flow_tracks.h).
 #include "fit/flow_tracks.h"
+#include "svgmotion/atomic_file.h"
 
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
@@ -9,7 +10,6 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include <unistd.h>
 
 #include "svgmotion/error.h"
 
@@ -80,9 +80,7 @@ void write_tracks(const std::filesystem::path& file, const std::vector<FlowField
   for (const FlowField& f : flows)
     j["flows"].push_back({{"grid", f.grid}, {"width", f.width}, {"height", f.height}, {"dx", f.dx},
                           {"dy", f.dy}, {"certainty", f.certainty}});
-  const std::filesystem::path tmp = file.string() + ".part" + std::to_string(::getpid());
-  { std::ofstream(tmp) << j.dump() << "\n"; }
-  std::filesystem::rename(tmp, file);
+  write_file_atomic(file, j.dump() + "\n");
 }
 
 std::vector<FlowField> read_tracks(const std::filesystem::path& file) {

@@ -1,5 +1,6 @@
 // The SMIL animation writer (see smil_writer.h).
 #include "fit/smil_writer.h"
+#include "svgmotion/atomic_file.h"
 
 #include <pugixml.hpp>
 
@@ -9,7 +10,6 @@
 #include <fstream>
 #include <sstream>
 
-#include <unistd.h>
 
 #include "svgmotion/error.h"
 
@@ -156,21 +156,11 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
     warnings.push_back(source.string() + ": " + std::to_string(skipped_use) +
                        " shapes drawn through <use> left static (shared definitions)");
 
-  const fs::path tmp = out.string() + ".part" + std::to_string(::getpid());
   // Raw format with the parsed whitespace kept: the user's document comes back as they wrote
   // it, plus our <animate> children.
-  if (!doc.save_file(tmp.c_str(), "", pugi::format_raw | pugi::format_no_declaration,
-                     pugi::encoding_utf8)) {
-    std::error_code ec;
-    fs::remove(tmp, ec);
-    throw Error(out.string() + ": cannot write: " + std::strerror(errno));
-  }
-  std::error_code ec;
-  fs::rename(tmp, out, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw Error(out.string() + ": cannot write: " + ec.message());
-  }
+  std::ostringstream text;
+  doc.save(text, "", pugi::format_raw | pugi::format_no_declaration, pugi::encoding_utf8);
+  write_file_atomic(out, text.str());
   return warnings;
 }
 

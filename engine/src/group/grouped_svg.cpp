@@ -1,8 +1,10 @@
 // The flat grouped SVG writer (see grouped_svg.h).
 #include "group/grouped_svg.h"
+#include "svgmotion/atomic_file.h"
 
 #include <pugixml.hpp>
-#include <unistd.h>
+
+#include <sstream>
 
 #include <algorithm>
 #include <cerrno>
@@ -182,18 +184,9 @@ void write_grouped_svg(const fs::path& source, const Scene& scene,
     e.append_attribute("style") = paint_style(p).c_str();
   }
 
-  const fs::path tmp = out.string() + ".part" + std::to_string(::getpid());
-  if (!doc.save_file(tmp.c_str(), "  ", pugi::format_indent, pugi::encoding_utf8)) {
-    std::error_code ec;
-    fs::remove(tmp, ec);
-    throw Error(out.string() + ": cannot write: " + std::strerror(errno));
-  }
-  std::error_code ec;
-  fs::rename(tmp, out, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw Error(out.string() + ": cannot write: " + ec.message());
-  }
+  std::ostringstream text;
+  doc.save(text, "  ", pugi::format_indent, pugi::encoding_utf8);
+  write_file_atomic(out, text.str());
 }
 
 }  // namespace svgm

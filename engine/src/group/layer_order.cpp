@@ -1,7 +1,7 @@
 // The painter's order of groups from occlusion evidence (see layer_order.h).
 #include "group/layer_order.h"
+#include "svgmotion/atomic_file.h"
 
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -163,24 +163,12 @@ size_t element_end(const std::string& text, size_t begin) {
   return npos;
 }
 
-void write_text_atomic(const fs::path& file, const std::string& text) {
-  const fs::path tmp = file.string() + ".part" + std::to_string(::getpid());
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    f << text;
-    if (!f) throw Error(file.string() + ": cannot write");
-  }
-  std::error_code ec;
-  fs::rename(tmp, file, ec);
-  if (ec) throw Error(file.string() + ": cannot write: " + ec.message());
-}
-
 void copy_atomic(const fs::path& from, const fs::path& to) {
   std::ifstream f(from, std::ios::binary);
   if (!f) throw Error(from.string() + ": cannot open: " + std::strerror(errno));
   std::ostringstream s;
   s << f.rdbuf();
-  write_text_atomic(to, s.str());
+  write_file_atomic(to, s.str());
 }
 
 }  // namespace
@@ -446,7 +434,7 @@ bool write_layered_svg(const fs::path& in, const std::vector<std::string>& order
     at = slots[i].end;
   }
   result.append(text, at, std::string::npos);
-  write_text_atomic(out, result);
+  write_file_atomic(out, result);
   return true;
 }
 
@@ -515,7 +503,7 @@ LayerResult run_layers(const fs::path& svg, const fs::path& target, const fs::pa
     }
   }
   if (!written) copy_atomic(svg, out_svg);
-  write_text_atomic(out_json, layers_json(r, options).dump(2) + "\n");
+  write_file_atomic(out_json, layers_json(r, options).dump(2) + "\n");
   return r;
 }
 

@@ -1,5 +1,6 @@
 // PNG reading and atomic writing through libpng's simplified API.
 #include "svgmotion/png_io.h"
+#include "svgmotion/atomic_file.h"
 
 #include <png.h>
 
@@ -7,7 +8,6 @@
 #include <fstream>
 #include <system_error>
 
-#include <unistd.h>
 
 #include "svgmotion/error.h"
 
@@ -32,24 +32,7 @@ void write_png(const fs::path& file, const RgbaImage& img) {
   if (!png_image_write_to_memory(&pi, bytes.data(), &size, 0, img.rgba.data(), 0, nullptr))
     throw Error(file.string() + ": cannot encode PNG: " + pi.message);
 
-  const fs::path tmp = file.string() + ".part" + std::to_string(::getpid());
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw Error(file.string() + ": cannot write: " + std::strerror(errno));
-    f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(size));
-    f.flush();
-    if (!f) {
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      throw Error(file.string() + ": cannot write: " + std::strerror(errno));
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, file, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw Error(file.string() + ": cannot write: " + ec.message());
-  }
+  write_file_atomic(file, std::string_view(reinterpret_cast<const char*>(bytes.data()), size));
 }
 
 RgbaImage read_png(const fs::path& file) {

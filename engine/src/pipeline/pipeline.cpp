@@ -1,5 +1,6 @@
 // The pipeline runner (see pipeline.h).
 #include "pipeline/pipeline.h"
+#include "svgmotion/atomic_file.h"
 
 #include <algorithm>
 #include <chrono>
@@ -65,9 +66,7 @@ struct Hash {
 
 void write_atomic(const fs::path& file, const std::string& text) {
   fs::create_directories(file.parent_path());
-  const fs::path tmp = file.string() + ".part" + std::to_string(::getpid());
-  { std::ofstream(tmp) << text; }
-  fs::rename(tmp, file);
+  write_file_atomic(file, text);
 }
 
 }  // namespace
