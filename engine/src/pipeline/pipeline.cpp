@@ -104,6 +104,11 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
     Hash h;
     h.add(plugin);
     h.add(info ? info->version : "?");
+    if (info) {  // a rebuilt or upgraded plugin module runs again
+      std::error_code fe;
+      h.add(std::to_string(fs::file_size(info->path, fe)));
+      h.add(std::to_string(fs::last_write_time(info->path, fe).time_since_epoch().count()));
+    }
     h.add(section.dump());
     h.add(config.value("prompt", ""));
     h.add(std::to_string(config.value("seed", 0)));
