@@ -9,16 +9,14 @@
 #include "fit/preview_video.h"
 #include "svgmotion/error.h"
 #include "svgmotion/target_video.h"
+#include "video/candidates.h"
 
 namespace {
 
 nlohmann::json run(const nlohmann::json& req, const svgm_host*) {
   namespace fs = std::filesystem;
   const fs::path dir = svgm::plugin::file(req, "inputs", "candidates");
-  std::vector<fs::path> c;
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(dir, ec)) c.push_back(e.path());
-  std::sort(c.begin(), c.end());
+  const std::vector<fs::path> c = svgm::list_candidates(dir);
   if (c.empty()) throw svgm::Error(dir.string() + ": no candidate videos");
   const fs::path chosen = c.front(), target = svgm::plugin::file(req, "outputs", "target");
   if (fs::is_directory(chosen) || chosen.extension() != ".mp4") {

@@ -96,7 +96,10 @@ void merge(const YAML::Node& user, nlohmann::json& into, const nlohmann::json& s
       if (!kv.second.IsMap()) throw Error(file + line + ": '" + full + "' must be a section of keys");
       merge(kv.second, into[key], s, full, file);
     } else if (s.is_object()) {
-      into[key] = to_json(kv.second);
+      // Free-form sections merge key by key, so options.x=1 keeps the other options.
+      const nlohmann::json v = to_json(kv.second);
+      if (into[key].is_object() && v.is_object()) into[key].update(v, true);
+      else into[key] = v;
     } else {
       const nlohmann::json v = to_json(kv.second);
       if (s.is_number() && !v.is_number())

@@ -1,0 +1,386 @@
+// The pixel ranker (see pixel_ranker.h for the signals, their thresholds and the score).
+#include "rank/pixel_ranker.h"
+
+#include "video/candidates.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <numeric>
+#include <set>
+
+#include "svgmotion/error.h"
+
+namespace svgm {
+
+namespace {
+
+using Rgb = std::array<double, 3>;
+
+double clamp01(double v) { return std::isfinite(v) ? std::clamp(v, 0.0, 1.0) : 1.0; }
+
+std::string fmt(const char* format, double a, double b = 0, double c = 0) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, format, a, b, c);
+  return buf;
+}
+
+std::string hex(const Rgb& c) {
+  char buf[8];
+  auto b = [](double v) { return static_cast<int>(std::lround(std::clamp(v, 0.0, 1.0) * 255)); };
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", b(c[0]), b(c[1]), b(c[2]));
+  return buf;
+}
+
+double dist(const Rgb& a, const Rgb& b) {
+  const double x = a[0] - b[0], y = a[1] - b[1], z = a[2] - b[2];
+  return std::sqrt(x * x + y * y + z * z);
+}
+
+// Distance from p to the segment c -> white (c blended with the white background).
+double dist_to_white_blend(const Rgb& p, const Rgb& c) {
+  const Rgb d{1 - c[0], 1 - c[1], 1 - c[2]};
+  const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  if (dd < 1e-12) return dist(p, c);
+  const double t =
+      std::clamp(((p[0] - c[0]) * d[0] + (p[1] - c[1]) * d[1] + (p[2] - c[2]) * d[2]) / dd, 0.0, 1.0);
+  return dist(p, {c[0] + t * d[0], c[1] + t * d[1], c[2] + t * d[2]});
+}
+
+// Pixels of `m` (W*H, 0/1) whose 8 neighbours (inside the image) are all set.
+std::vector<uint8_t> core_of(const std::vector<uint8_t>& m, int W, int H) {
+  std::vector<uint8_t> c(m.size(), 0);
+  for (int y = 1; y + 1 < H; ++y)
+    for (int x = 1; x + 1 < W; ++x) {
+      bool all = true;
+      for (int dy = -1; dy <= 1 && all; ++dy)
+        for (int dx = -1; dx <= 1 && all; ++dx)
+          all = m[static_cast<size_t>(y + dy) * W + (x + dx)] != 0;
+      c[static_cast<size_t>(y) * W + x] = all ? 1 : 0;
+    }
+  return c;
+}
+
+// Total area of the 8-connected components of `far` that hold a core pixel and >= min_px pixels.
+size_t blob_area(const std::vector<uint8_t>& far, const std::vector<uint8_t>& core, int W, int H,
+                 size_t min_px) {
+  std::vector<uint8_t> seen(far.size(), 0);
+  std::vector<size_t> stack;
+  size_t total = 0;
+  for (size_t s = 0; s < far.size(); ++s) {
+    if (!far[s] || seen[s]) continue;
+    size_t n = 0;
+    bool has_core = false;
+    seen[s] = 1;
+    stack.assign(1, s);
+    while (!stack.empty()) {
+      const size_t i = stack.back();
+      stack.pop_back();
+      ++n;
+      has_core = has_core || core[i];
+      const int x = static_cast<int>(i % W), y = static_cast<int>(i / W);
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int u = x + dx, v = y + dy;
+          if (u < 0 || v < 0 || u >= W || v >= H) continue;
+          const size_t j = static_cast<size_t>(v) * W + u;
+          if (far[j] && !seen[j]) {
+            seen[j] = 1;
+            stack.push_back(j);
+          }
+        }
+    }
+    if (has_core && n >= min_px) total += n;
+  }
+  return total;
+}
+
+}  // namespace
+
+nlohmann::json CandidateScore::to_json() const {
+  auto sig = [](const RankSignal& s) { return nlohmann::json{{"value", s.value}, {"reason", s.reason}}; };
+  nlohmann::json j{{"name", name}};
+  j["score"] = std::isfinite(score) ? nlohmann::json(score) : nlohmann::json(nullptr);
+  if (!error.empty()) {
+    j["error"] = error;
+    return j;
+  }
+  j["signals"] = {{"colour_drift", sig(colour_drift)},
+                  {"invented_content", sig(invented_content)},
+                  {"continuity", sig(continuity)},
+                  {"out_of_plane", sig(out_of_plane)},
+                  {"motion", sig(motion)}};
+  j["defects"] = defects;
+  return j;
+}
+
+nlohmann::json Ranking::to_json() const {
+  nlohmann::json c = nlohmann::json::array();
+  for (const auto& s : candidates) c.push_back(s.to_json());
+  return {{"chosen", chosen}, {"reason", reason}, {"candidates", c}};
+}
+
+CandidateScore score_candidate(const TargetFrames& t, const std::vector<Rgba>& palette_in,
+                               const PixelRankOptions& o) {
+  const int W = t.width, H = t.height, K = t.keyframes;
+  if (W <= 0 || H <= 0 || K <= 0) throw Error("pixel ranker: empty frames");
+  const size_t P = static_cast<size_t>(W) * H;
+  if (t.raw.size() != P * K * 4)
+    throw Error("pixel ranker: frames hold " + std::to_string(t.raw.size()) + " floats, not " +
+                std::to_string(P * K * 4));
+  // Distinct palette colours (8-bit equality).
+  std::vector<Rgb> pal;
+  {
+    std::set<std::array<long, 3>> seen;
+    for (const Rgba& c : palette_in) {
+      const std::array<long, 3> key{std::lround(c.r * 255), std::lround(c.g * 255), std::lround(c.b * 255)};
+      if (seen.insert(key).second) pal.push_back({c.r, c.g, c.b});
+    }
+  }
+  if (pal.empty()) throw Error("pixel ranker: the palette has no colours");
+  const size_t C = pal.size();
+
+  std::vector<double> drift(K, 0.0), invented(K, 0.0), total(K, 0.0);
+  std::vector<bool> has_fg(K, false);
+  std::vector<std::vector<double>> area(C, std::vector<double>(K, 0.0));
+  std::vector<std::vector<uint8_t>> fgs(K);
+  for (int k = 0; k < K; ++k) {
+    const float* f = &t.raw[P * 4 * k];
+    std::vector<uint8_t> fg(P, 0), far(P, 0);
+    std::vector<float> dnear(P, 0.f);
+    size_t nfg = 0;
+    for (size_t i = 0; i < P; ++i) {
+      const Rgb p{f[4 * i], f[4 * i + 1], f[4 * i + 2]};
+      if (std::min({p[0], p[1], p[2]}) >= o.white_threshold) continue;
+      fg[i] = 1;
+      ++nfg;
+      double best = std::numeric_limits<double>::max(), expl = best;
+      size_t bi = 0;
+      for (size_t c = 0; c < C; ++c) {
+        const double d = dist(p, pal[c]);
+        if (d < best) best = d, bi = c;
+        expl = std::min(expl, dist_to_white_blend(p, pal[c]));
+      }
+      dnear[i] = static_cast<float>(best);
+      if (best < o.far_distance) area[bi][k] += 1;
+      if (expl > o.far_distance) far[i] = 1;
+    }
+    total[k] = static_cast<double>(nfg);
+    has_fg[k] = nfg > 0;
+    if (nfg > 0) {
+      // Drift: the median over interior pixels (anti-aliased edges and the colour bleeding of
+      // 4:2:0 video around them stay a minority), or over all foreground if none is interior.
+      const std::vector<uint8_t> interior = core_of(fg, W, H);
+      std::vector<float> d;
+      for (int pass = 0; pass < 2 && d.empty(); ++pass)
+        for (size_t i = 0; i < P; ++i)
+          if (pass == 0 ? interior[i] : fg[i]) d.push_back(std::min(dnear[i], static_cast<float>(o.far_distance)));
+      std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
+      drift[k] = d[d.size() / 2];
+      invented[k] = static_cast<double>(blob_area(far, core_of(far, W, H), W, H, 4)) / nfg;
+    }
+    fgs[k] = std::move(fg);
+  }
+
+  CandidateScore s;
+  const double mean_fg = std::accumulate(total.begin(), total.end(), 0.0) / K;
+
+  // Colour drift.
+  {
+    std::vector<int> ks;
+    for (int k = 0; k < K; ++k)
+      if (has_fg[k]) ks.push_back(k);
+    if (ks.empty()) {
+      s.colour_drift = {0, "no foreground"};
+    } else {
+      double mean = 0;
+      for (int k : ks) mean += drift[k];
+      mean /= static_cast<double>(ks.size());
+      const double growth = drift[ks.back()] - drift[ks.front()];
+      s.colour_drift.value = clamp01(std::max((mean - 0.02) / 0.1, growth / 0.08));
+      s.colour_drift.reason = fmt("foreground is %.3f from the palette (median, mean over frames), %.3f "
+                                  "in the first frame and %.3f in the last", mean, drift[ks.front()], drift[ks.back()]);
+    }
+  }
+  // Invented content.
+  {
+    const auto it = std::max_element(invented.begin(), invented.end());
+    const double f = *it;
+    s.invented_content.value = clamp01((f - 0.005) / 0.03);
+    s.invented_content.reason =
+        f > 0 ? fmt("off-palette blobs cover up to %.1f%% of the foreground (frame %.0f)", 100 * f,
+                    static_cast<double>(it - invented.begin()))
+              : "no off-palette blobs";
+  }
+  // Continuity per palette colour.
+  double appear_vanish = 0;
+  {
+    const double significant = std::max(8.0, 0.02 * mean_fg);
+    double vanish = 0, appear = 0, jump = 0;
+    std::string vr, ar, jr;
+    for (size_t c = 0; c < C; ++c) {
+      const auto& a = area[c];
+      const double a0 = a[0], amin = *std::min_element(a.begin(), a.end()),
+                   amax = *std::max_element(a.begin(), a.end());
+      if (a0 >= significant) {
+        const double v = clamp01((0.3 - amin / a0) / 0.25);
+        if (vr.empty() || v > vanish) {
+          vanish = std::max(vanish, v);
+          const int kmin = static_cast<int>(std::min_element(a.begin(), a.end()) - a.begin());
+          vr = hex(pal[c]) + fmt(" falls from %.0f px to %.0f px (frame %.0f)", a0, amin, kmin);
+        }
+      }
+      if (amax >= significant) {
+        const double v = clamp01((0.3 - a0 / amax) / 0.25);
+        if (v > appear) {
+          appear = v;
+          ar = hex(pal[c]) + fmt(" appears: %.0f px in frame 0, up to %.0f px later", a0, amax);
+        }
+      }
+      for (int k = 0; k + 1 < K; ++k) {
+        const double hi = std::max(a[k], a[k + 1]);
+        if (hi < significant) continue;
+        const double j = std::abs(a[k + 1] - a[k]) / hi;
+        if (j > jump) {
+          jump = j;
+          jr = hex(pal[c]) + fmt(" jumps from %.0f px to %.0f px (frame %.0f)", a[k], a[k + 1], k + 1);
+        }
+      }
+    }
+    const double jv = clamp01((jump - 0.35) / 0.4);
+    appear_vanish = std::max(vanish, appear);
+    s.continuity.value = std::max(appear_vanish, jv);
+    if (s.continuity.value <= 0)
+      s.continuity.reason = fmt("palette colours keep their areas (largest frame-to-frame change %.0f%%)", 100 * jump);
+    else if (vanish >= appear && vanish >= jv)
+      s.continuity.reason = "a colour vanishes: " + vr;
+    else if (appear >= jv)
+      s.continuity.reason = "a colour appears suddenly: " + ar;
+    else
+      s.continuity.reason = "a colour's area changes suddenly: " + jr;
+  }
+  // Out-of-plane motion: total foreground area changes that no appearing/vanishing explains.
+  {
+    double var = 0;
+    for (double a : total) var += (a - mean_fg) * (a - mean_fg);
+    const double rel = mean_fg > 0 ? std::sqrt(var / K) / mean_fg : 0.0;
+    s.out_of_plane.value = clamp01((rel - 0.08) / 0.22) * (1 - appear_vanish);
+    s.out_of_plane.reason = fmt("foreground area varies by %.1f%% (relative std)", 100 * rel) +
+                            (appear_vanish > 0 && rel > 0.08 ? ", explained by colours appearing/vanishing"
+                                                             : "");
+  }
+  // Motion amount.
+  std::string motion_defect;
+  {
+    double sum = 0;
+    int pairs = 0;
+    for (int k = 0; k + 1 < K; ++k) {
+      const float* a = &t.raw[P * 4 * k];
+      const float* b = &t.raw[P * 4 * (k + 1)];
+      double d = 0;
+      size_t n = 0;
+      for (size_t i = 0; i < P; ++i) {
+        if (!fgs[k][i] && !fgs[k + 1][i]) continue;
+        ++n;
+        d += (std::abs(a[4 * i] - b[4 * i]) + std::abs(a[4 * i + 1] - b[4 * i + 1]) +
+              std::abs(a[4 * i + 2] - b[4 * i + 2])) / 3.0;
+      }
+      if (n > 0) sum += d / static_cast<double>(n), ++pairs;
+    }
+    const double m = pairs > 0 ? sum / pairs : 0.0;
+    if (K < 2) {
+      s.motion = {1, "a single frame"};
+      motion_defect = "no motion";
+    } else if (m < 0.02) {
+      s.motion = {clamp01((0.02 - m) / 0.015), fmt("nearly static: mean frame difference %.4f on the foreground", m)};
+      motion_defect = "no motion";
+    } else if (m > 0.25) {
+      s.motion = {clamp01((m - 0.25) / 0.3), fmt("large, chaotic motion: mean frame difference %.3f on the foreground", m)};
+      motion_defect = "chaotic motion";
+    } else {
+      s.motion = {0, fmt("calm motion: mean frame difference %.3f on the foreground", m)};
+    }
+  }
+
+  const RankSignal* sig[5] = {&s.colour_drift, &s.invented_content, &s.continuity, &s.out_of_plane, &s.motion};
+  const char* names[5] = {"colour drift", "invented content", "continuity", "out-of-plane motion", nullptr};
+  double wsum = 0;
+  for (int i = 0; i < 5; ++i) {
+    s.score += kPixelRankWeights[i] * sig[i]->value;
+    wsum += kPixelRankWeights[i];
+    if (sig[i]->value >= o.defect_threshold) s.defects.push_back(names[i] ? names[i] : motion_defect);
+  }
+  s.score /= wsum;
+  return s;
+}
+
+Ranking rank(std::vector<CandidateScore> scores) {
+  std::stable_sort(scores.begin(), scores.end(), [](const CandidateScore& a, const CandidateScore& b) {
+    const bool ea = !a.error.empty() || !std::isfinite(a.score), eb = !b.error.empty() || !std::isfinite(b.score);
+    if (ea != eb) return eb;
+    if (!ea && a.score != b.score) return a.score < b.score;
+    return a.name < b.name;
+  });
+  if (scores.empty() || !scores.front().error.empty() || !std::isfinite(scores.front().score))
+    throw Error(scores.empty() ? "pixel ranker: no candidates"
+                               : "pixel ranker: no readable candidate (" + scores.front().name + ": " +
+                                     scores.front().error + ")");
+  Ranking r;
+  r.candidates = std::move(scores);
+  const CandidateScore& b = r.candidates.front();
+  r.chosen = b.name;
+  size_t n = 0;
+  for (const auto& c : r.candidates) n += c.error.empty() ? 1 : 0;
+  r.reason = fmt("lowest score %.3f of %.0f candidate", b.score, static_cast<double>(n)) + (n == 1 ? "" : "s");
+  if (r.candidates.size() > 1 && r.candidates[1].error.empty())
+    r.reason += " (next: " + r.candidates[1].name + fmt(", %.3f)", r.candidates[1].score);
+  if (b.defects.empty()) {
+    r.reason += "; no defects";
+  } else {
+    r.reason += "; defects:";
+    for (size_t i = 0; i < b.defects.size(); ++i) r.reason += (i ? ", " : " ") + b.defects[i];
+  }
+  return r;
+}
+
+Ranking rank_directory(const std::filesystem::path& dir, const std::vector<Rgba>& palette,
+                       const PixelRankOptions& o,
+                       const std::function<bool(double, const std::string&)>& progress) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw Error(dir.string() + ": no candidates folder");
+  const std::vector<fs::path> entries = list_candidates(dir);
+  if (entries.empty()) throw Error(dir.string() + ": no candidate videos");
+  if (palette.empty()) throw Error("pixel ranker: the palette has no colours");
+  std::vector<CandidateScore> scores;
+  for (size_t i = 0; i < entries.size(); ++i) {
+    const std::string name = entries[i].filename().string();
+    if (progress && !progress(static_cast<double>(i) / entries.size(), "scoring " + name))
+      throw Error("cancelled");
+    try {
+      const TargetInfo info = probe_target(entries[i]);
+      if (info.width <= 0 || info.height <= 0 || info.frames <= 0) throw Error(entries[i].string() + ": no frames");
+      const int w = std::max(1, std::min(info.width, o.analysis_width));
+      const int h = std::max(1, static_cast<int>(std::lround(static_cast<double>(info.height) * w / info.width)));
+      TargetOptions to;
+      to.keyframes = std::clamp(info.frames, 1, std::max(1, o.keyframes));
+      to.white_threshold = o.white_threshold;
+      CandidateScore s = score_candidate(load_target(entries[i], w, h, to), palette, o);
+      s.name = name;
+      scores.push_back(std::move(s));
+    } catch (const std::exception& e) {
+      CandidateScore s;
+      s.name = name;
+      s.score = std::numeric_limits<double>::infinity();
+      s.error = e.what();
+      scores.push_back(std::move(s));
+    }
+  }
+  if (progress) progress(1.0, "ranked");
+  return rank(std::move(scores));
+}
+
+}  // namespace svgm

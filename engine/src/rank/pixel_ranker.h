@@ -1,0 +1,89 @@
+// The pixel ranker: scores candidate target videos for fitting suitability from their pixels
+// and the palette of the recoloured image they were generated from (palette.json).
+//
+// Five signals, each a value in [0, 1] (0 = fine, 1 = bad) with a one-line reason:
+//   colour_drift      per frame, the median distance of interior foreground pixels (3x3
+//                     all foreground) to the nearest palette colour, capped at far_distance;
+//                     mean over frames and growth last - first: max((mean - 0.02) / 0.1,
+//                     growth / 0.08) (0.02: what H.264 alone costs a flat colour)
+//   invented_content  8-connected blobs of foreground pixels farther than far_distance from
+//                     every palette colour and from every palette colour's blend with white
+//                     (anti-aliased edges), with at least one pixel whose 3x3 neighbourhood is
+//                     all far (so 1-2 px seams between shapes do not count), as a fraction f of
+//                     the foreground, max over frames: (f - 0.005) / 0.03
+//   continuity        per palette colour, its area per frame: a colour present in frame 0 that
+//                     (almost) vanishes, one absent in frame 0 that appears, or a big relative
+//                     jump between consecutive frames: max of (0.3 - min/first) / 0.25,
+//                     (0.3 - first/max) / 0.25 and (jump - 0.35) / 0.4
+//   out_of_plane      relative std s of the total foreground area, counted only when no colour
+//                     appears or vanishes: (s - 0.08) / 0.22 * (1 - appear/vanish value)
+//   motion            mean absolute difference m of consecutive frames over the pixels that are
+//                     foreground in either: (0.02 - m) / 0.015 below 0.02 ("no motion"),
+//                     (m - 0.25) / 0.3 above 0.25 ("chaotic motion"), 0 between
+// every value clamped to [0, 1]. Score (lower = better, in [0, 1]):
+//   score = (1.0 drift + 1.5 invented + 1.2 continuity + 0.8 out_of_plane + 1.0 motion) / 5.5
+// A signal >= defect_threshold (0.5) names a defect: "colour drift", "invented content",
+// "continuity", "out-of-plane motion", "no motion" or "chaotic motion".
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "svgmotion/scene.h"
+#include "svgmotion/target_video.h"
+
+namespace svgm {
+
+struct PixelRankOptions {
+  double white_threshold = 0.97;  // foreground: darkest channel < this
+  double far_distance = 0.25;     // RGB (Euclidean, channels in [0,1]) distance "off palette"
+  double defect_threshold = 0.5;  // a signal at least this names a defect
+  int analysis_width = 128;       // rank_directory: frames are resized to at most this width
+  int keyframes = 16;             // rank_directory: at most this many uniformly sampled frames
+};
+
+struct RankSignal {
+  double value = 0;  // [0, 1], 1 = bad
+  std::string reason;
+};
+
+struct CandidateScore {
+  std::string name;
+  double score = 0;  // lower = better; +inf when the candidate could not be read
+  RankSignal colour_drift, invented_content, continuity, out_of_plane, motion;
+  std::vector<std::string> defects;
+  std::string error;  // non-empty: unreadable, not ranked
+  nlohmann::json to_json() const;
+};
+
+// The signal weights of the score, in the order drift, invented, continuity, out-of-plane,
+// motion.
+inline constexpr double kPixelRankWeights[5] = {1.0, 1.5, 1.2, 0.8, 1.0};
+
+// Scores one candidate from its frames (`raw` is analysed: straight RGB in [0,1], K*H*W*4).
+// `palette` holds the palette's colours (duplicates are harmless; alpha ignored). Throws
+// svgm::Error for an empty palette or frames whose buffers do not match their size.
+CandidateScore score_candidate(const TargetFrames& frames, const std::vector<Rgba>& palette,
+                               const PixelRankOptions& options = {});
+
+struct Ranking {
+  std::vector<CandidateScore> candidates;  // best first (score, then name); unreadable last
+  std::string chosen;                      // name of candidates.front()
+  std::string reason;
+  nlohmann::json to_json() const;  // {"chosen", "reason", "candidates": [...]}
+};
+
+// Orders scored candidates and picks the best. Throws svgm::Error when none is readable.
+Ranking rank(std::vector<CandidateScore> scores);
+
+// Scores every entry of `dir` (video files or folders of PNG frames, by name order) and ranks
+// them. Unreadable candidates are kept with their error and never chosen. `progress(fraction,
+// note)` is called before each candidate; returning false cancels (svgm::Error "cancelled").
+Ranking rank_directory(const std::filesystem::path& dir, const std::vector<Rgba>& palette,
+                       const PixelRankOptions& options = {},
+                       const std::function<bool(double, const std::string&)>& progress = {});
+
+}  // namespace svgm

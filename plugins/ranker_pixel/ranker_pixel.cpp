@@ -1,0 +1,80 @@
+// ranker `pixel`: scores every candidate video from its pixels against the palette of the
+// recoloured image (colour drift, invented content, continuity of each colour's area,
+// out-of-plane motion, amount of motion; see engine/src/rank/pixel_ranker.h for the signals,
+// thresholds and weights), writes ranking.json and the best candidate as target.mp4.
+//
+// Options (stages.ranker.options): size (analysis width in px, default 128), keyframes
+// (frames sampled per candidate, default 16).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "common/plugin_glue.h"
+#include "common/stage_files.h"
+#include "fit/palette.h"
+#include "fit/preview_video.h"
+#include "rank/pixel_ranker.h"
+#include "svgmotion/error.h"
+#include "svgmotion/target_video.h"
+
+namespace {
+
+svgm::PixelRankOptions options_of(const nlohmann::json& req) {
+  svgm::PixelRankOptions o;
+  const auto cfg = req.find("config");
+  if (cfg == req.end() || !cfg->is_object()) return o;
+  const auto opts = cfg->find("options");
+  if (opts == cfg->end() || opts->is_null()) return o;
+  if (!opts->is_object()) throw svgm::Error("ranker pixel: options must be a mapping");
+  for (const auto& [key, value] : opts->items()) {
+    if (key != "size" && key != "keyframes")
+      throw svgm::Error("ranker pixel: unknown option '" + key + "' (known: size, keyframes)");
+    if (!value.is_number_integer() || value.get<long long>() < 1 || value.get<long long>() > 4096)
+      throw svgm::Error("ranker pixel: option '" + key + "' must be an integer in 1..4096");
+    (key == "size" ? o.analysis_width : o.keyframes) = value.get<int>();
+  }
+  return o;
+}
+
+nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
+  namespace fs = std::filesystem;
+  const svgm::PixelRankOptions o = options_of(req);
+  const fs::path dir = svgm::plugin::file(req, "inputs", "candidates");
+  std::vector<svgm::Rgba> palette;
+  for (const auto& [id, c] : svgm::read_palette(svgm::plugin::file(req, "inputs", "palette")))
+    palette.push_back(c);
+  if (palette.empty()) throw svgm::Error("ranker pixel: palette.json has no colours");
+
+  const svgm::Ranking r = svgm::rank_directory(dir, palette, o, [&](double f, const std::string& note) {
+    if (host && host->progress) host->progress(host, 0.9 * f, note.c_str());
+    return !(host && host->cancelled && host->cancelled(host));
+  });
+  if (host && host->log)
+    for (const auto& c : r.candidates) {
+      std::string line = c.name + ": " + (c.error.empty() ? "score " + std::to_string(c.score) : c.error);
+      for (const auto& d : c.defects) line += (&d == &c.defects.front() ? " (" : ", ") + d;
+      if (!c.defects.empty()) line += ")";
+      host->log(host, c.error.empty() ? 1 : 2, line.c_str());
+    }
+
+  const fs::path chosen = dir / r.chosen, target = svgm::plugin::file(req, "outputs", "target");
+  if (host && host->progress) host->progress(host, 0.9, ("writing " + target.filename().string()).c_str());
+  if (fs::is_directory(chosen) || chosen.extension() != ".mp4") {
+    // Re-encode whatever OpenCV reads (frames folder, webm, ...) as the run's target.mp4.
+    const svgm::TargetInfo info = svgm::probe_target(chosen);
+    svgm::TargetOptions to;
+    to.keyframes = info.frames;
+    const svgm::TargetFrames t = svgm::load_target(chosen, info.width, info.height, to);
+    svgm::write_preview_video(target, info.frames, 1, [&](int k, int) {
+      return svgm::rgba8_image(&t.raw[static_cast<size_t>(k) * info.width * info.height * 4], info.width, info.height);
+    }, info.fps);
+  } else {
+    svgm::plugin::copy_atomic(chosen, target);
+  }
+  svgm::plugin::write_json(svgm::plugin::file(req, "outputs", "ranking"), r.to_json());
+  return {{"message", "chose " + r.chosen + ": " + r.reason}};
+}
+
+}  // namespace
+
+SVGM_DEFINE_PLUGIN("ranker", "pixel", "1", "ranks candidate videos by their pixels against the palette", run)

@@ -1,0 +1,264 @@
+// The pixel ranker (rank/pixel_ranker.h): a clean candidate made at run time (three palette-
+// coloured shapes moving smoothly, anti-aliased by 4x4 supersampling) against copies corrupted
+// with colour drift, an invented blob, a vanishing part and a frozen copy. The clean one must
+// rank first, across seeds, and each corrupted copy must name its defect. Built in memory as
+// TargetFrames, and once more as mp4 files / PNG folders ranked from a directory.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "fit/preview_video.h"
+#include "rank/pixel_ranker.h"
+#include "svgmotion/png_io.h"
+
+using namespace svgm;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kW = 96, kH = 96, kK = 24;
+const std::vector<Rgba> kPalette = {{0.839f, 0.153f, 0.157f, 1},   // #d62728
+                                    {0.173f, 0.627f, 0.173f, 1},   // #2ca02c
+                                    {0.122f, 0.467f, 0.706f, 1}};  // #1f77b4
+
+enum class Kind { Clean, Drift, Blob, Vanish, Frozen };
+
+struct Motion {  // per shape: centre offset = amp * sin(2 pi f t + phase), both axes
+  double ax[3], ay[3], f[3], px[3], py[3];
+};
+
+Motion random_motion(unsigned seed) {
+  std::mt19937 g(seed);
+  std::uniform_real_distribution<double> amp(3.5, 5.5), freq(0.6, 1.2), ph(0, 6.283);
+  Motion m{};
+  for (int s = 0; s < 3; ++s) m.ax[s] = amp(g), m.ay[s] = amp(g), m.f[s] = freq(g), m.px[s] = ph(g), m.py[s] = ph(g);
+  return m;
+}
+
+// One frame, straight RGB over white, 4x4 supersampled. Shapes: a disc, a rotating rectangle
+// and an ellipse, each in one palette colour; plus the corruption of `kind`.
+std::vector<float> draw_frame(const Motion& m, Kind kind, int k) {
+  const double t = static_cast<double>(k) / (kK - 1);
+  double cx[3] = {27, 69, 48}, cy[3] = {28, 28, 69};
+  for (int s = 0; s < 3; ++s) {
+    cx[s] += m.ax[s] * std::sin(6.283 * m.f[s] * t + m.px[s]);
+    cy[s] += m.ay[s] * std::sin(6.283 * m.f[s] * t + m.py[s]);
+  }
+  Rgba col[3] = {kPalette[0], kPalette[1], kPalette[2]};
+  if (kind == Kind::Drift)  // all colours shift progressively, 0.21 away at the end
+    for (auto& c : col) c.r += static_cast<float>(0.15 * t), c.g -= static_cast<float>(0.1 * t), c.b += static_cast<float>(0.1 * t);
+  const bool draw_green = !(kind == Kind::Vanish && k >= kK / 2);
+  const bool blob = kind == Kind::Blob && k >= kK / 3;
+  const double angle = 0.5 * t;
+  std::vector<float> f(static_cast<size_t>(kW) * kH * 4, 1.f);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      double acc[3] = {0, 0, 0};
+      for (int sy = 0; sy < 4; ++sy)
+        for (int sx = 0; sx < 4; ++sx) {
+          const double u = x + (sx + 0.5) / 4, v = y + (sy + 0.5) / 4;
+          double c[3] = {1, 1, 1};
+          auto set = [&](const Rgba& q) { c[0] = q.r, c[1] = q.g, c[2] = q.b; };
+          if ((u - cx[0]) * (u - cx[0]) + (v - cy[0]) * (v - cy[0]) < 13.0 * 13.0) set(col[0]);
+          if (draw_green) {
+            const double du = u - cx[1], dv = v - cy[1];
+            const double ru = du * std::cos(angle) + dv * std::sin(angle), rv = -du * std::sin(angle) + dv * std::cos(angle);
+            if (std::abs(ru) < 13 && std::abs(rv) < 9) set(col[1]);
+          }
+          const double eu = (u - cx[2]) / 16, ev = (v - cy[2]) / 10;
+          if (eu * eu + ev * ev < 1) set(col[2]);
+          if (blob && (u - 84) * (u - 84) + (v - 84) * (v - 84) < 7.0 * 7.0) c[0] = 0.55, c[1] = 0.35, c[2] = 0.05;
+          for (int i = 0; i < 3; ++i) acc[i] += c[i] / 16;
+        }
+      float* p = &f[(static_cast<size_t>(y) * kW + x) * 4];
+      for (int i = 0; i < 3; ++i) p[i] = static_cast<float>(acc[i]);
+    }
+  return f;
+}
+
+TargetFrames make_candidate(const Motion& m, Kind kind) {
+  TargetFrames t;
+  t.width = kW, t.height = kH, t.keyframes = kK, t.source_frames = kK, t.fps = 24;
+  const size_t P = static_cast<size_t>(kW) * kH;
+  for (int k = 0; k < kK; ++k) {
+    t.source_index.push_back(k);
+    const std::vector<float> f = draw_frame(m, kind, kind == Kind::Frozen ? 0 : k);
+    t.raw.insert(t.raw.end(), f.begin(), f.end());
+    // mask: darkest channel < 0.97; sdf: city-block distance to the mask (two passes).
+    std::vector<uint8_t> mask(P);
+    std::vector<float> sdf(P);
+    for (size_t i = 0; i < P; ++i) {
+      mask[i] = std::min({f[4 * i], f[4 * i + 1], f[4 * i + 2]}) < 0.97f ? 1 : 0;
+      sdf[i] = mask[i] ? 0.f : static_cast<float>(kW + kH);
+    }
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x) {
+        float& d = sdf[static_cast<size_t>(y) * kW + x];
+        if (x > 0) d = std::min(d, sdf[static_cast<size_t>(y) * kW + x - 1] + 1);
+        if (y > 0) d = std::min(d, sdf[static_cast<size_t>(y - 1) * kW + x] + 1);
+      }
+    for (int y = kH - 1; y >= 0; --y)
+      for (int x = kW - 1; x >= 0; --x) {
+        float& d = sdf[static_cast<size_t>(y) * kW + x];
+        if (x + 1 < kW) d = std::min(d, sdf[static_cast<size_t>(y) * kW + x + 1] + 1);
+        if (y + 1 < kH) d = std::min(d, sdf[static_cast<size_t>(y + 1) * kW + x] + 1);
+      }
+    for (size_t i = 0; i < P; ++i) {
+      const float* p = &f[4 * i];
+      for (int c = 0; c < 3; ++c) t.rgba.push_back(mask[i] ? p[c] : 1.f);
+      t.rgba.push_back(1.f);
+    }
+    t.mask.insert(t.mask.end(), mask.begin(), mask.end());
+    t.sdf.insert(t.sdf.end(), sdf.begin(), sdf.end());
+  }
+  return t;
+}
+
+const char* const kNames[5] = {"clean", "drift", "blob", "vanish", "frozen"};
+const char* const kDefect[5] = {nullptr, "colour drift", "invented content", "continuity", "no motion"};
+
+bool has(const std::vector<std::string>& v, const std::string& s) {
+  return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+void check_ranking(const Ranking& r, const std::string& suffix) {
+  REQUIRE(r.candidates.size() == 5);
+  CHECK(r.chosen == "clean" + suffix);
+  CHECK(r.candidates.front().name == "clean" + suffix);
+  for (const auto& c : r.candidates) {
+    INFO(c.to_json().dump(2));
+    CHECK(c.error.empty());
+    CHECK(c.score >= 0);
+    CHECK(c.score <= 1);
+    for (int i = 0; i < 5; ++i) {
+      if (c.name != kNames[i] + suffix) continue;
+      if (i == 0) {
+        CHECK(c.defects.empty());
+      } else {
+        CHECK(has(c.defects, kDefect[i]));
+        CHECK(c.score > r.candidates.front().score + 0.05);
+      }
+    }
+  }
+}
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    path = fs::temp_directory_path() / ("svgm_rank_pixel_" + std::to_string(::getpid()));
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+}  // namespace
+
+TEST_SUITE("fit") {
+
+TEST_CASE("rank pixel: the clean candidate wins and each corruption names its defect") {
+  for (unsigned seed : {1u, 2u, 3u, 4u, 5u}) {
+    CAPTURE(seed);
+    const Motion m = random_motion(seed);
+    std::vector<CandidateScore> scores;
+    for (int i = 0; i < 5; ++i) {
+      CandidateScore s = score_candidate(make_candidate(m, static_cast<Kind>(i)), kPalette);
+      s.name = kNames[i];
+      scores.push_back(std::move(s));
+    }
+    // Ranking must not depend on the input order.
+    std::reverse(scores.begin(), scores.end());
+    check_ranking(rank(scores), "");
+  }
+}
+
+TEST_CASE("rank pixel: candidates ranked from a directory of mp4 files and PNG folders") {
+  TempDir tmp;
+  const Motion m = random_motion(7);
+  for (int i = 0; i < 5; ++i) {
+    const TargetFrames t = make_candidate(m, static_cast<Kind>(i));
+    const auto frame = [&](int k) {
+      return rgba8_image(&t.raw[static_cast<size_t>(k) * kW * kH * 4], kW, kH);
+    };
+    // Odd candidates as PNG folders, even ones as H.264 mp4 (compression noise included).
+    if (i % 2) {
+      const fs::path d = tmp.path / kNames[i];
+      fs::create_directories(d);
+      for (int k = 0; k < kK; ++k) {
+        char name[16];
+        std::snprintf(name, sizeof name, "%03d.png", k);
+        write_png(d / name, frame(k));
+      }
+    } else {
+      write_preview_video(tmp.path / (std::string(kNames[i]) + ".mp4"), kK, 1,
+                          [&](int k, int) { return frame(k); }, 24);
+    }
+  }
+  fs::create_directories(tmp.path / "broken");  // a folder without frames: kept, never chosen
+  std::vector<double> seen;
+  Ranking r = rank_directory(tmp.path, kPalette, {}, [&](double f, const std::string&) {
+    seen.push_back(f);
+    return true;
+  });
+  REQUIRE(r.candidates.size() == 6);
+  CHECK(r.candidates.back().name == "broken");
+  CHECK_FALSE(r.candidates.back().error.empty());
+  CHECK(seen.size() == 7);
+  CHECK(seen.back() == 1.0);
+  r.candidates.pop_back();
+  for (auto& c : r.candidates)
+    if (c.name.size() > 4 && c.name.ends_with(".mp4")) c.name.resize(c.name.size() - 4);
+  r.chosen = r.chosen.ends_with(".mp4") ? r.chosen.substr(0, r.chosen.size() - 4) : r.chosen;
+  check_ranking(r, "");
+
+  const nlohmann::json j = rank_directory(tmp.path, kPalette).to_json();
+  CHECK(j["chosen"] == "clean.mp4");
+  CHECK(j["reason"].get<std::string>().find("lowest score") != std::string::npos);
+  REQUIRE(j["candidates"].size() == 6);
+  for (const char* key : {"colour_drift", "invented_content", "continuity", "out_of_plane", "motion"}) {
+    CHECK(j["candidates"][0]["signals"][key]["value"].is_number());
+    CHECK(j["candidates"][0]["signals"][key]["reason"].is_string());
+  }
+  CHECK(j["candidates"][5]["score"].is_null());
+  CHECK(j["candidates"][5]["error"].is_string());
+
+  CHECK_THROWS(rank_directory(tmp.path, kPalette, {}, [](double, const std::string&) { return false; }));
+}
+
+TEST_CASE("rank pixel: chaotic motion and bad input") {
+  const Motion m = random_motion(11);
+  TargetFrames t = make_candidate(m, Kind::Clean);
+  // Chaotic: every other frame inverted.
+  for (int k = 1; k < kK; k += 2)
+    for (size_t i = 0; i < static_cast<size_t>(kW) * kH; ++i)
+      for (int c = 0; c < 3; ++c) {
+        float& v = t.raw[(static_cast<size_t>(k) * kW * kH + i) * 4 + c];
+        v = 1.f - v;
+      }
+  const CandidateScore s = score_candidate(t, kPalette);
+  CHECK(has(s.defects, "chaotic motion"));
+
+  CHECK_THROWS(score_candidate(t, {}));
+  TargetFrames bad = t;
+  bad.raw.resize(10);
+  CHECK_THROWS(score_candidate(bad, kPalette));
+  CHECK_THROWS(rank({}));
+  CandidateScore e;
+  e.name = "x";
+  e.error = "unreadable";
+  e.score = std::numeric_limits<double>::infinity();
+  CHECK_THROWS(rank({e}));
+}
+
+}  // TEST_SUITE
