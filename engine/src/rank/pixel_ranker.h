@@ -17,9 +17,11 @@
 //                     (0.3 - first/max) / 0.25 and (jump - 0.35) / 0.4
 //   out_of_plane      relative std s of the total foreground area, counted only when no colour
 //                     appears or vanishes: (s - 0.08) / 0.22 * (1 - appear/vanish value)
-//   motion            mean absolute difference m of consecutive frames over the pixels that are
-//                     foreground in either: (0.02 - m) / 0.015 below 0.02 ("no motion"),
-//                     (m - 0.25) / 0.3 above 0.25 ("chaotic motion"), 0 between
+//   motion            over the pixels that are foreground in either frame: r = largest share of
+//                     them whose colour differs from the first frame's by more than 0.15, m =
+//                     mean absolute difference of consecutive frames. (0.005 - r) / 0.004 below
+//                     r = 0.5% ("no motion"), (m - 0.25) / 0.3 above m = 0.25 ("chaotic
+//                     motion"), else 0
 // every value clamped to [0, 1]. Score (lower = better, in [0, 1]):
 //   score = (1.0 drift + 1.5 invented + 1.2 continuity + 0.8 out_of_plane + 1.0 motion) / 5.5
 // A signal >= defect_threshold (0.5) names a defect: "colour drift", "invented content",
