@@ -24,6 +24,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   o.fps = c.value("fps", 24.0);
   o.width = c.value("size", 512);
   o.device = req.value("device", "auto");
+  o.side = svgm::side_for_prompt(req.value("prompt", ""));
   const int n = c.value("candidates", 4);
   const fs::path dir = P::file(req, "outputs", "candidates");
   std::error_code ec;

@@ -58,4 +58,21 @@ TEST_CASE("a wave moves one arm around its shoulder, the body holds still, the l
   CHECK(again == pts);
 }
 
+TEST_CASE("a side named in the prompt picks the arm whose group is named for that side") {
+  CHECK(side_for_prompt("The man waves his right arm") == 1);
+  CHECK(side_for_prompt("wave with the LEFT hand") == -1);
+  CHECK(side_for_prompt("a bright wave") == 0);  // "right" inside a word is not the side
+  CHECK(side_for_prompt("left and right") == 0);
+  const Scene s = read_svg_file(std::string(SVGM_TEST_DATA) + "/examples/man.svg");
+  for (uint32_t seed = 0; seed < 6; ++seed) {
+    ProceduralMotion r, l;
+    animate_scene(s, "wave", 9, seed, &r, 1);
+    animate_scene(s, "wave", 9, seed, &l, -1);
+    REQUIRE(r.parts.size() == 1);
+    REQUIRE(l.parts.size() == 1);
+    CHECK(s.groups[r.parts[0]].id == "arm_right");
+    CHECK(s.groups[l.parts[0]].id == "arm_left");
+  }
+}
+
 }  // TEST_SUITE

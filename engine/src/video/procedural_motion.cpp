@@ -76,8 +76,31 @@ std::string motion_for_prompt(const std::string& prompt, std::string* note) {
   return best;
 }
 
+namespace {
+
+std::string to_lower(const std::string& s) {
+  std::string r;
+  for (char c : s) r += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return r;
+}
+
+bool has_word(const std::string& text, const std::string& word) {
+  const std::string p = " " + to_lower(text) + " ";
+  for (size_t at = p.find(word); at != std::string::npos; at = p.find(word, at + 1))
+    if (!std::isalpha(static_cast<unsigned char>(p[at - 1])) &&
+        !std::isalpha(static_cast<unsigned char>(p[at + word.size()])))
+      return true;
+  return false;
+}
+
+}  // namespace
+
+int side_for_prompt(const std::string& prompt) {
+  return static_cast<int>(has_word(prompt, "right")) - static_cast<int>(has_word(prompt, "left"));
+}
+
 std::vector<Vec2> animate_scene(const Scene& scene, const std::string& motion, int frames,
-                                uint32_t seed, ProceduralMotion* info) {
+                                uint32_t seed, ProceduralMotion* info, int side) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> U(0, 1);
   const int G = static_cast<int>(scene.groups.size());
@@ -149,9 +172,19 @@ std::vector<Vec2> animate_scene(const Scene& scene, const std::string& motion, i
   std::vector<double> mover_amp;
   auto move = [&](int g, double deg) { if (g >= 0) { movers.push_back(g); mover_amp.push_back(deg * amp); } };
   const std::string& m = motion;
-  if (m == "wave") {  // one arm: a side chosen by the seed, else the other, else the top part
-    const bool right = U(rng) < 0.5;
-    int arm = pick(right ? upper_right : upper_left);
+  if (m == "wave") {  // one arm: the side asked for or chosen by the seed, else the other, else the top part
+    const bool by_seed = U(rng) < 0.5;
+    const bool right = side != 0 ? side > 0 : by_seed;
+    int arm = -1;
+    if (side != 0) {  // a group named for the side wins, raised or hanging beside the body
+      const std::string word = side > 0 ? "right" : "left";
+      for (int g = 0; g < G && arm < 0; ++g) {
+        const Vec2 c = parts[g].box.centre();
+        const bool beside = g != body && std::fabs(c.x - bc.x) >= 0.25 * body_w && c.y < parts[body].box.y1;
+        if (beside && to_lower(scene.groups[g].id).find(word) != std::string::npos) arm = g;
+      }
+    }
+    if (arm < 0) arm = pick(right ? upper_right : upper_left);
     if (arm < 0) arm = pick(right ? upper_left : upper_right);
     if (arm < 0) arm = pick(top);
     move(arm, 35);

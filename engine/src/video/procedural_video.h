@@ -18,6 +18,7 @@ struct ProceduralVideoOptions {
   int width = 512;      // frame width; height by the SVG's aspect
   double drift = 0.03;  // largest colour drift by the last frame (fraction per channel)
   double blur_sigma = 0.6;  // pixels
+  int side = 0;         // one-sided motions: side_for_prompt(prompt); 0 lets the seed choose
   std::string device = "auto";
 };
 
