@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The README's two set-up commands in one script:
-#   bash .ci/setup.sh example   installs what is missing, builds, renders the bundled example
+#   bash .ci/setup.sh example   installs what is missing, builds, animates the bundled example
 #   bash .ci/setup.sh test      installs what is missing, builds, runs the whole test suite
 # Works as root or through sudo on Debian 12; installs only packages that are not there yet.
 set -euo pipefail
@@ -31,8 +31,11 @@ cmake --build build -j "$jobs"
 
 if [[ $mode == example ]]; then
   ./build/frontends/svgmotion devices
-  ./build/frontends/svgmotion render tests/data/examples/man.svg -o build/man.png --size 512
-  echo "setup: the example is rendered at $(pwd)/build/man.png"
+  # The main job, offline: the procedural video provider stands in for a video model.
+  ./build/frontends/svgmotion run --input tests/data/examples/man.svg \
+    --prompt "the man waves his right arm" -o build/example
+  echo "setup: the animated example is $(pwd)/build/example/animation.svg" \
+       "(open it in a browser; preview.mp4 shows target | fit)"
 else
   # Tests share the one OpenCL device; two at a time keeps both cores busy.
   ctest --test-dir build --output-on-failure -j 2

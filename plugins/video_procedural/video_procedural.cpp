@@ -6,6 +6,7 @@
 
 #include "common/plugin_glue.h"
 #include "common/stage_files.h"
+#include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
 #include "video/procedural_video.h"
 
@@ -15,6 +16,9 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   namespace fs = std::filesystem;
   namespace P = svgm::plugin;
   const nlohmann::json& c = req.at("config");
+  if (!c.value("path", std::string()).empty())
+    throw svgm::Error("stages.video.path is set but the video plugin is 'procedural'; add "
+                      "stages.video.plugin=file to fit your own video");
   const svgm::Scene scene = svgm::read_svg_file(P::file(req, "inputs", "svg"));
   std::string note;
   const std::string motion = svgm::motion_for_prompt(req.value("prompt", ""), &note);

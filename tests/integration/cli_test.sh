@@ -92,7 +92,8 @@ fit)
 pipeline)
   mkdir -p "$tmp/frames"
   for i in 0 1 2 3; do "$bin" render "$data/examples/man.svg" -o "$tmp/frames/$i.png" --size 64 2>/dev/null; done
-  run=("$bin" run --input "$data/examples/man.svg" -o "$tmp/run" --quiet "stages.video.path=$tmp/frames"
+  run=("$bin" run --input "$data/examples/man.svg" -o "$tmp/run" --quiet
+       stages.video.plugin=file "stages.video.path=$tmp/frames" stages.ranker.plugin=first
        stages.fitter.iterations=30 stages.fitter.keyframes=3 stages.fitter.size=64)
   "${run[@]}" >"$tmp/out1" 2>"$tmp/err"
   check "run writes animation.svg and every intermediate" '[[ -s $tmp/run/animation.svg && -s $tmp/run/grouped.svg && -s $tmp/run/recolored.png && -s $tmp/run/palette.json && -s $tmp/run/target.mp4 && -s $tmp/run/ranking.json && -s $tmp/run/layers.json ]] && grep -q "<animate attributeName=\"d\"" "$tmp/run/animation.svg"'
@@ -109,6 +110,13 @@ pipeline)
   printf 'stages:\n  fitter:\n    iterationz: 5\n' >"$tmp/bad.yaml"
   expect_error "an unknown key in a config file" "bad.yaml:3: unknown key 'stages.fitter.iterationz' (did you mean 'stages.fitter.iterations'?)" "$tmp/none2" \
     run "$tmp/bad.yaml" --input "$data/examples/man.svg" -o "$tmp/none2"
+  # The defaults need no video: the procedural library makes candidates, the pixel ranker picks.
+  "$bin" run --input "$data/examples/man.svg" -o "$tmp/prompt" --quiet --prompt "the man waves his right arm" \
+    stages.video.candidates=2 stages.video.frames=9 stages.video.size=96 \
+    stages.fitter.iterations=30 stages.fitter.keyframes=3 stages.fitter.size=64 >"$tmp/out6" 2>&1
+  check "a prompt alone runs the whole pipeline with the default plugins" '[[ -s $tmp/prompt/animation.svg && -s $tmp/prompt/candidates/00.mp4 && -s $tmp/prompt/candidates/01.mp4 ]] && grep -q "\"motion\"" "$tmp/prompt/ranking.json" && grep -q "<animate attributeName=\"d\"" "$tmp/prompt/animation.svg"'
+  expect_error "a video path with the procedural provider says how to fit it" "stages.video.path is set" "$tmp/none3/animation.svg" \
+    run --input "$data/examples/man.svg" -o "$tmp/none3" --quiet "stages.video.path=$tmp/frames"
   expect_error "a missing plugin" "layers plugin 'nosuch' not found" "$tmp/run/nothing" "${run[@]:1}" stages.layers.plugin=nosuch
   # Drop-in plugin: install the SDK, build a C plugin out of tree, run the pipeline with it.
   if [[ -n $build && -n $sdk_src ]]; then

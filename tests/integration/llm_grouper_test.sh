@@ -46,7 +46,7 @@ for i in 0 1 2; do "$bin" render "$data/examples/man.svg" -o "$tmp/frames/$i.png
 run_case() {
   local name=$1; shift
   "$bin" run --input "$data/examples/man.svg" -o "$tmp/$name" --quiet --prompt "waves the right arm" \
-    "stages.video.path=$tmp/frames" "$@" \
+    stages.video.plugin=file "stages.video.path=$tmp/frames" stages.ranker.plugin=first "$@" \
     stages.fitter.iterations=10 stages.fitter.keyframes=3 stages.fitter.size=64 >"$tmp/$name.out" 2>"$tmp/$name.err"
   echo $? >"$tmp/$name.rc"
 }
