@@ -75,4 +75,33 @@ TEST_CASE("a side named in the prompt picks the arm whose group is named for tha
   }
 }
 
+TEST_CASE("a wave with no arm where a figure has one still moves something") {
+  // The largest max point displacement over the frames.
+  auto travel = [](const std::vector<Vec2>& pts, int F) {
+    const size_t per = pts.size() / F;
+    double m = 0;
+    for (int f = 1; f < F; ++f)
+      for (size_t i = 0; i < per; ++i) m = std::max(m, std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
+    return m;
+  };
+  // A body and one part hanging below it: no side part, no head.
+  const Scene two = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
+           <g id="body"><rect x="30" y="10" width="40" height="50" fill="#f00"/></g>
+           <g id="tail"><rect x="45" y="60" width="10" height="30" fill="#00f"/></g></svg>)", "two.svg");
+  ProceduralMotion info;
+  const auto pts = animate_scene(two, "wave", 9, 1, &info);
+  REQUIRE(info.parts.size() == 1);
+  CHECK(two.groups[info.parts[0]].id == "tail");
+  CHECK(travel(pts, 9) > 1.0);
+  // One group only: the whole drawing sways.
+  const Scene one = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
+           <rect x="30" y="10" width="40" height="50" fill="#f00"/></svg>)", "one.svg");
+  ProceduralMotion solo;
+  const auto moved = animate_scene(one, "wave", 9, 1, &solo);
+  CHECK(solo.parts.empty());
+  CHECK(travel(moved, 9) > 1.0);
+}
+
 }  // TEST_SUITE

@@ -149,12 +149,32 @@ CandidateScore score_candidate(const TargetFrames& t, const std::vector<Rgba>& p
   std::vector<std::vector<uint8_t>> fgs(K);
   for (int k = 0; k < K; ++k) {
     const float* f = &t.raw[P * 4 * k];
+    // The frame's own background: generated videos let the white page drift to an off-white
+    // tint, which is not foreground. The median of the border pixels, when it is near white.
+    Rgb bg{1, 1, 1};
+    {
+      std::array<std::vector<float>, 3> border;
+      auto add = [&](int x, int y) {
+        for (int ch = 0; ch < 3; ++ch) border[ch].push_back(f[4 * (static_cast<size_t>(y) * W + x) + ch]);
+      };
+      for (int x = 0; x < W; ++x) add(x, 0), add(x, H - 1);
+      for (int y = 1; y + 1 < H; ++y) add(0, y), add(W - 1, y);
+      Rgb med;
+      for (int ch = 0; ch < 3; ++ch) {
+        auto& v = border[ch];
+        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+        med[ch] = v[v.size() / 2];
+      }
+      if (std::min({med[0], med[1], med[2]}) >= 0.85) bg = med;
+    }
+    const double bg_tolerance = 1 - o.white_threshold;
     std::vector<uint8_t> fg(P, 0), far(P, 0);
     std::vector<float> dnear(P, 0.f);
     size_t nfg = 0;
     for (size_t i = 0; i < P; ++i) {
       const Rgb p{f[4 * i], f[4 * i + 1], f[4 * i + 2]};
       if (std::min({p[0], p[1], p[2]}) >= o.white_threshold) continue;
+      if (std::max({std::abs(p[0] - bg[0]), std::abs(p[1] - bg[1]), std::abs(p[2] - bg[2])}) < bg_tolerance) continue;
       fg[i] = 1;
       ++nfg;
       double best = std::numeric_limits<double>::max(), expl = best;

@@ -40,7 +40,9 @@
 namespace svgm {
 
 struct PixelRankOptions {
-  double white_threshold = 0.97;  // foreground: darkest channel < this
+  double white_threshold = 0.97;  // foreground: darkest channel < this, and farther than
+                                  // 1 - this (any channel) from the frame's border median when
+                                  // that is near white (an off-white drifting background)
   double far_distance = 0.25;     // RGB (Euclidean, channels in [0,1]) distance "off palette"
   double defect_threshold = 0.5;  // a signal at least this names a defect
   int analysis_width = 128;       // rank_directory: frames are resized to at most this width

@@ -199,6 +199,17 @@ std::vector<Vec2> animate_scene(const Scene& scene, const std::string& motion, i
   } else if (m == "dance") { move(pick(upper_left), 30); move(pick(upper_right), -30); }
   else if (m == "wag") move(pick(small_far), 28);
   else if (m == "wobble" || m == "swim") for (int g = 0; g < G; ++g) if (g != body) move(g, 10);
+  // A part motion that found no part where it expected one (a drawing grouped unlike a figure,
+  // or parts the position rules do not place): the highest part other than the body moves,
+  // else the whole drawing sways, so every candidate moves.
+  bool sway_instead = false;
+  if (movers.empty() && (m == "wave" || m == "nod" || m == "fly" || m == "wag")) {
+    int best = -1;
+    for (int g = 0; g < G; ++g)
+      if (g != body && (best < 0 || parts[g].box.centre().y < parts[best].box.centre().y)) best = g;
+    if (best >= 0) move(best, 25);
+    else sway_instead = true;
+  }
   if (info) {
     info->motion = m;
     info->parts = movers;
@@ -213,7 +224,7 @@ std::vector<Vec2> animate_scene(const Scene& scene, const std::string& motion, i
     double tx = 0, ty = 0, rot = 0, sx = 1, sy = 1, shear = 0;
     if (m == "jump") ty = -0.12 * H * amp * std::fabs(std::sin(2 * M_PI * t));
     else if (m == "bounce") { ty = -0.08 * H * amp * std::fabs(std::sin(2 * M_PI * t)); sy = 1 - 0.05 * amp * std::cos(4 * M_PI * t) + 0.05 * amp; }
-    else if (m == "sway") rot = 6 * amp * s1 * M_PI / 180;
+    else if (m == "sway" || sway_instead) rot = 6 * amp * s1 * M_PI / 180;
     else if (m == "spin") rot = 2 * M_PI * t;
     else if (m == "walk" || m == "run") ty = -0.02 * H * amp * std::fabs(std::sin(4 * M_PI * t));
     else if (m == "fly") ty = -0.04 * H * amp * s1;
