@@ -15,7 +15,6 @@
 // grouping, render failure) the structural grouper decides instead, with one warning line naming
 // the reason. grouped.svg has the groups in paint order of their first path, each group's paths
 // in paint order.
-#include <curl/curl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -29,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "common/chat_client.h"
 #include "common/plugin_glue.h"
 #include "common/stage_files.h"
 #include "group/grouped_svg.h"
@@ -40,45 +40,13 @@ namespace {
 
 using json = nlohmann::json;
 namespace fs = std::filesystem;
-
-// A reason to fall back to the structural grouper (one line).
-struct Fallback : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+namespace chat = svgm::plugin::chat;
+using chat::base64;
+using chat::one_line;
+using Fallback = chat::Failure;  // a reason to fall back to the structural grouper (one line)
 
 constexpr size_t kMaxSvgChars = 256 * 1024;  // SVG source sent as text, at most
 constexpr int kRenderWidth = 512;            // width of the PNG sent along
-
-std::string one_line(std::string s, size_t max_chars = 300) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
-  if (s.size() > max_chars) s = s.substr(0, max_chars) + "...";
-  return s;
-}
-
-std::string base64(const std::string& in) {
-  static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((in.size() + 2) / 3 * 4);
-  size_t i = 0;
-  for (; i + 2 < in.size(); i += 3) {
-    const unsigned v = (static_cast<unsigned char>(in[i]) << 16) |
-                       (static_cast<unsigned char>(in[i + 1]) << 8) | static_cast<unsigned char>(in[i + 2]);
-    out += t[(v >> 18) & 63];
-    out += t[(v >> 12) & 63];
-    out += t[(v >> 6) & 63];
-    out += t[v & 63];
-  }
-  if (i < in.size()) {
-    unsigned v = static_cast<unsigned char>(in[i]) << 16;
-    if (i + 1 < in.size()) v |= static_cast<unsigned char>(in[i + 1]) << 8;
-    out += t[(v >> 18) & 63];
-    out += t[(v >> 12) & 63];
-    out += i + 1 < in.size() ? t[(v >> 6) & 63] : '=';
-    out += '=';
-  }
-  return out;
-}
 
 std::string read_file(const fs::path& p) {
   std::ifstream f(p, std::ios::binary);
@@ -86,37 +54,21 @@ std::string read_file(const fs::path& p) {
   return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
 }
 
-struct Settings {
-  std::string url, model, api_key;
-  double timeout_s = 60;
+struct Settings : chat::Settings {
   int max_groups = 15;
 };
 
 Settings read_settings(const json& config) {
   Settings s;
-  const json opts = config.contains("options") && config["options"].is_object() ? config["options"] : json::object();
   if (config.contains("max_groups") && config["max_groups"].is_number_integer())
     s.max_groups = config["max_groups"].get<int>();
-  auto str = [&](const char* key) -> std::string {
-    if (!opts.contains(key) || opts[key].is_null()) return "";
-    if (!opts[key].is_string()) throw Fallback(std::string("options.") + key + " must be a string");
-    return opts[key].get<std::string>();
-  };
-  s.url = str("url");
-  s.model = str("model");
-  if (const std::string env = str("api_key_env"); !env.empty())
-    if (const char* k = std::getenv(env.c_str()); k && *k) s.api_key = k;
-  if (opts.contains("timeout_s")) {
-    if (!opts["timeout_s"].is_number() || !(opts["timeout_s"].get<double>() > 0))
-      throw Fallback("options.timeout_s must be a positive number");
-    s.timeout_s = opts["timeout_s"].get<double>();
-  }
+  const json opts = config.contains("options") && config["options"].is_object() ? config["options"] : json::object();
   if (opts.contains("max_groups")) {
     if (!opts["max_groups"].is_number_integer() || opts["max_groups"].get<int>() < 1)
       throw Fallback("options.max_groups must be a positive integer");
     s.max_groups = opts["max_groups"].get<int>();
   }
-  if (s.url.empty()) throw Fallback("no url configured (stages.grouper.options.url)");
+  static_cast<chat::Settings&>(s) = chat::read_settings(opts, "grouper");
   return s;
 }
 
@@ -146,119 +98,11 @@ std::string user_text(const std::string& svg_source, const svgm::Scene& scene, c
   return t.str();
 }
 
-// --- HTTP ------------------------------------------------------------------------------------
-
-struct Transfer {
-  const svgm_host* host = nullptr;
-  std::string body;
-  bool cancelled = false;
-};
-
-size_t on_data(char* data, size_t size, size_t n, void* user) {
-  try {
-    static_cast<Transfer*>(user)->body.append(data, size * n);
-    return size * n;
-  } catch (...) {
-    return 0;  // aborts the transfer
-  }
-}
-
-int on_progress(void* user, curl_off_t, curl_off_t, curl_off_t, curl_off_t) {
-  auto* t = static_cast<Transfer*>(user);
-  if (t->host && t->host->cancelled && t->host->cancelled(t->host)) {
-    t->cancelled = true;
-    return 1;
-  }
-  return 0;
-}
-
-// POSTs `body` and returns the reply body of a 2xx answer; Fallback otherwise.
-std::string post(const Settings& s, const std::string& body, const svgm_host* host) {
-  static const bool initialised = curl_global_init(CURL_GLOBAL_DEFAULT) == CURLE_OK;
-  if (!initialised) throw Fallback("libcurl failed to initialise");
-  CURL* c = curl_easy_init();
-  if (!c) throw Fallback("libcurl failed to initialise");
-  curl_slist* headers = curl_slist_append(nullptr, "Content-Type: application/json");
-  headers = curl_slist_append(headers, "Accept: application/json");
-  if (!s.api_key.empty()) headers = curl_slist_append(headers, ("Authorization: Bearer " + s.api_key).c_str());
-  Transfer t;
-  t.host = host;
-  char err[CURL_ERROR_SIZE] = {0};
-  const long timeout_ms = std::max(1L, std::lround(s.timeout_s * 1000));
-  curl_easy_setopt(c, CURLOPT_URL, s.url.c_str());
-  curl_easy_setopt(c, CURLOPT_HTTPHEADER, headers);
-  curl_easy_setopt(c, CURLOPT_POST, 1L);
-  curl_easy_setopt(c, CURLOPT_POSTFIELDS, body.data());
-  curl_easy_setopt(c, CURLOPT_POSTFIELDSIZE_LARGE, static_cast<curl_off_t>(body.size()));
-  curl_easy_setopt(c, CURLOPT_WRITEFUNCTION, on_data);
-  curl_easy_setopt(c, CURLOPT_WRITEDATA, &t);
-  curl_easy_setopt(c, CURLOPT_NOPROGRESS, 0L);
-  curl_easy_setopt(c, CURLOPT_XFERINFOFUNCTION, on_progress);
-  curl_easy_setopt(c, CURLOPT_XFERINFODATA, &t);
-  curl_easy_setopt(c, CURLOPT_TIMEOUT_MS, timeout_ms);
-  curl_easy_setopt(c, CURLOPT_CONNECTTIMEOUT_MS, timeout_ms);
-  curl_easy_setopt(c, CURLOPT_NOSIGNAL, 1L);
-  curl_easy_setopt(c, CURLOPT_ERRORBUFFER, err);
-  curl_easy_setopt(c, CURLOPT_USERAGENT, "svgmotion-grouper-llm/1");
-  const CURLcode rc = curl_easy_perform(c);
-  long status = 0;
-  curl_easy_getinfo(c, CURLINFO_RESPONSE_CODE, &status);
-  curl_slist_free_all(headers);
-  curl_easy_cleanup(c);
-  if (t.cancelled) throw svgm::Error("grouper llm: cancelled");
-  if (rc == CURLE_OPERATION_TIMEDOUT) {
-    std::ostringstream m;
-    m << "timeout: no answer from " << s.url << " within " << s.timeout_s << " s";
-    throw Fallback(m.str());
-  }
-  if (rc != CURLE_OK)
-    throw Fallback("request to " + s.url + " failed: " + one_line(*err ? err : curl_easy_strerror(rc)));
-  if (status < 200 || status > 299)
-    throw Fallback("HTTP " + std::to_string(status) + " from " + s.url +
-                   (t.body.empty() ? "" : ": " + one_line(t.body, 200)));
-  return t.body;
-}
-
-// --- the answer ------------------------------------------------------------------------------
-
-// The text of choices[0].message.content (a string, or a list of text parts).
-std::string answer_text(const std::string& reply) {
-  json r;
-  try {
-    r = json::parse(reply);
-  } catch (const json::exception& e) {
-    throw Fallback("malformed JSON in the reply: " + one_line(e.what(), 200));
-  }
-  if (!r.is_object() || !r.contains("choices") || !r["choices"].is_array() || r["choices"].empty() ||
-      !r["choices"][0].is_object() || !r["choices"][0].contains("message") || !r["choices"][0]["message"].is_object())
-    throw Fallback("malformed reply: no choices[0].message");
-  const json& content = r["choices"][0]["message"].value("content", json());
-  if (content.is_string()) return content.get<std::string>();
-  if (content.is_array()) {
-    std::string s;
-    for (const auto& part : content)
-      if (part.is_object() && part.value("type", "") == "text" && part.contains("text") && part["text"].is_string())
-        s += part["text"].get<std::string>();
-    return s;
-  }
-  throw Fallback("malformed reply: choices[0].message.content is not text");
-}
-
-// Removes ```json ... ``` (or ``` ... ```) fences around the answer.
-std::string strip_fences(const std::string& text) {
-  const size_t open = text.find("```");
-  if (open == std::string::npos) return text;
-  const size_t line_end = text.find('\n', open);
-  if (line_end == std::string::npos) return text;
-  const size_t close = text.find("```", line_end + 1);
-  return text.substr(line_end + 1, close == std::string::npos ? std::string::npos : close - line_end - 1);
-}
-
 std::vector<std::vector<int>> parse_groups(const std::string& text, const svgm::Scene& scene, int max_groups,
                                            std::vector<std::string>& names) {
   json a;
   try {
-    a = json::parse(strip_fences(text));
+    a = json::parse(chat::strip_fences(text));
   } catch (const json::exception& e) {
     throw Fallback("malformed JSON in the answer: " + one_line(e.what(), 200));
   }
@@ -346,9 +190,9 @@ std::vector<std::vector<int>> ask(const json& req, const svgm::Scene& scene, con
                                                {"image_url", {{"url", "data:image/png;base64," + base64(png_bytes)}}}}})}}})},
       {"temperature", 0}};
   progress(0.2, "waiting for the model");
-  const std::string reply = post(s, body.dump(-1, ' ', false, json::error_handler_t::replace), host);
+  const std::string reply = chat::post(s, body.dump(-1, ' ', false, json::error_handler_t::replace), host, "grouper llm");
   progress(0.9, "checking the answer");
-  return parse_groups(answer_text(reply), scene, s.max_groups, names);
+  return parse_groups(chat::answer_text(reply), scene, s.max_groups, names);
 }
 
 json run(const json& req, const svgm_host* host) {
