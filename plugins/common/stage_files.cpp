@@ -14,6 +14,8 @@
 #include "svgmotion/error.h"
 #include "svgmotion/png_io.h"
 #include "svgmotion/render_size.h"
+#include "svgmotion/target_video.h"
+#include "fit/preview_video.h"
 
 namespace svgm::plugin {
 
@@ -49,6 +51,20 @@ std::string hex_color(const Rgba& c) {
   auto v = [](float x) { return static_cast<int>(std::lround(std::clamp(x, 0.f, 1.f) * 255)); };
   std::snprintf(b, sizeof b, "#%02x%02x%02x", v(c.r), v(c.g), v(c.b));
   return b;
+}
+
+void write_target(const fs::path& chosen, const fs::path& target) {
+  if (fs::is_directory(chosen) || chosen.extension() != ".mp4") {
+    const TargetInfo info = probe_target(chosen);
+    TargetOptions to;
+    to.keyframes = info.frames;
+    const TargetFrames t = load_target(chosen, info.width, info.height, to);
+    write_preview_video(target, info.frames, 1, [&](int k, int) {
+      return rgba8_image(&t.raw[static_cast<size_t>(k) * info.width * info.height * 4], info.width, info.height);
+    }, info.fps);
+  } else {
+    copy_atomic(chosen, target);
+  }
 }
 
 }  // namespace svgm::plugin

@@ -19,4 +19,8 @@ void render_png(const Scene& scene, int width, const std::string& device,
 // "#rrggbb" of a colour.
 std::string hex_color(const Rgba& c);
 
+// The ranker's last step: the chosen candidate becomes the run's target.mp4 (an mp4 copied
+// atomically; a frames folder, webm, ... re-encoded as mp4 at its own size and rate).
+void write_target(const std::filesystem::path& chosen, const std::filesystem::path& target);
+
 }  // namespace svgm::plugin

@@ -12,10 +12,8 @@
 #include "common/plugin_glue.h"
 #include "common/stage_files.h"
 #include "fit/palette.h"
-#include "fit/preview_video.h"
 #include "rank/pixel_ranker.h"
 #include "svgmotion/error.h"
-#include "svgmotion/target_video.h"
 
 namespace {
 
@@ -59,18 +57,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
 
   const fs::path chosen = dir / r.chosen, target = svgm::plugin::file(req, "outputs", "target");
   if (host && host->progress) host->progress(host, 0.9, ("writing " + target.filename().string()).c_str());
-  if (fs::is_directory(chosen) || chosen.extension() != ".mp4") {
-    // Re-encode whatever OpenCV reads (frames folder, webm, ...) as the run's target.mp4.
-    const svgm::TargetInfo info = svgm::probe_target(chosen);
-    svgm::TargetOptions to;
-    to.keyframes = info.frames;
-    const svgm::TargetFrames t = svgm::load_target(chosen, info.width, info.height, to);
-    svgm::write_preview_video(target, info.frames, 1, [&](int k, int) {
-      return svgm::rgba8_image(&t.raw[static_cast<size_t>(k) * info.width * info.height * 4], info.width, info.height);
-    }, info.fps);
-  } else {
-    svgm::plugin::copy_atomic(chosen, target);
-  }
+  svgm::plugin::write_target(chosen, target);
   svgm::plugin::write_json(svgm::plugin::file(req, "outputs", "ranking"), r.to_json());
   return {{"message", "chose " + r.chosen + ": " + r.reason}};
 }

@@ -21,6 +21,15 @@ match gets HTTP 400 naming what is wrong. The model name selects the reply:
     http500     HTTP 500 with an error object
     auth        the valid grouping if "Authorization: Bearer test-secret" is sent, else HTTP 401
 
+A request whose instructions ask for a "best" candidate is the `llm` ranker's: it must hold a
+text part listing the candidates and, per candidate, a "Candidate NAME:" text part followed by
+PNG image_url frames. Its replies, by model name:
+
+    pick_NN         {"best": "NN.mp4", "reason": ...}
+    fenced_pick_NN  the same inside ```json fences
+    pick_unknown    names a candidate that does not exist ("07.mp4")
+    malformed, hang, http500   as for the grouper
+
 With --log, every request body is appended to FILE as one JSON line.
 """
 import argparse
@@ -90,6 +99,58 @@ def check_request(body):
     return None
 
 
+def check_png_url(part):
+    if part.get("type") != "image_url" or not isinstance(part.get("image_url"), dict):
+        return "not an image_url part"
+    url = part["image_url"].get("url", "")
+    prefix = "data:image/png;base64,"
+    if not url.startswith(prefix):
+        return "the image is not a PNG data URL"
+    try:
+        png = base64.b64decode(url[len(prefix):], validate=True)
+    except ValueError:
+        return "the image is not valid base64"
+    if not png.startswith(b"\x89PNG\r\n\x1a\n"):
+        return "the image is not a PNG"
+    return None
+
+
+def is_rank_request(body):
+    try:
+        return '"best"' in body["messages"][0]["content"]
+    except (KeyError, IndexError, TypeError):
+        return False
+
+
+def check_rank_request(body):
+    """The `llm` ranker's request shape; returns (None, candidate names) or (complaint, [])."""
+    if not isinstance(body.get("model"), str) or body.get("temperature") != 0:
+        return "model or temperature is wrong", []
+    msgs = body.get("messages")
+    if not isinstance(msgs, list) or len(msgs) != 2 or msgs[1].get("role") != "user":
+        return "messages is not [system, user]", []
+    parts = msgs[1].get("content")
+    if not isinstance(parts, list) or not parts or parts[0].get("type") != "text" or "Candidates" not in parts[0]["text"]:
+        return "the first user part does not list the candidates", []
+    names, frames = [], 0
+    for p in parts[1:]:
+        if p.get("type") == "text":
+            if not p["text"].startswith("Candidate ") or not p["text"].endswith(":"):
+                return "a text part is not a candidate label", []
+            names.append(p["text"][len("Candidate "):-1])
+            frames = 0
+        else:
+            if not names:
+                return "a frame before any candidate label", []
+            problem = check_png_url(p)
+            if problem:
+                return problem, []
+            frames += 1
+    if not names:
+        return "no candidates", []
+    return None, names
+
+
 def completion(content):
     return {
         "id": "chatcmpl-fake",
@@ -129,10 +190,21 @@ class Handler(BaseHTTPRequestHandler):
         if self.server.log_file:
             with self.server.lock, open(self.server.log_file, "a") as f:
                 f.write(json.dumps({"headers": dict(self.headers), "body": body}) + "\n")
-        problem = check_request(body)
+        model = body.get("model")
+        if is_rank_request(body):
+            problem, _ = check_rank_request(body)
+            if problem:
+                return self.reply(400, {"error": {"message": problem}})
+            if model.startswith("pick_") and model != "pick_unknown":
+                return self.reply(200, completion(json.dumps({"best": model[5:] + ".mp4", "reason": "fake judge"})))
+            if model.startswith("fenced_pick_"):
+                best = {"best": model[12:] + ".mp4", "reason": "fake judge"}
+                return self.reply(200, completion("My choice:\n```json\n" + json.dumps(best) + "\n```"))
+            if model == "pick_unknown":
+                return self.reply(200, completion(json.dumps({"best": "07.mp4", "reason": "fake judge"})))
+        problem = None if is_rank_request(body) else check_request(body)
         if problem:
             return self.reply(400, {"error": {"message": problem}})
-        model = body["model"]
         if model == "valid":
             return self.reply(200, completion(json.dumps(GROUPS)))
         if model == "fenced":
