@@ -84,19 +84,8 @@ def check_request(body):
     for pid in EXPECTED_IDS:
         if pid not in text["text"]:
             return "the text does not list path id " + pid
-    if image.get("type") != "image_url" or not isinstance(image.get("image_url"), dict):
-        return "the second user part is not an image_url"
-    url = image["image_url"].get("url", "")
-    prefix = "data:image/png;base64,"
-    if not url.startswith(prefix):
-        return "the image is not a PNG data URL"
-    try:
-        png = base64.b64decode(url[len(prefix):], validate=True)
-    except ValueError:
-        return "the image is not valid base64"
-    if not png.startswith(b"\x89PNG\r\n\x1a\n"):
-        return "the image is not a PNG"
-    return None
+    problem = check_png_url(image)
+    return "the second user part: " + problem if problem else None
 
 
 def check_png_url(part):
