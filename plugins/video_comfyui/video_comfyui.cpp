@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "common/generator_request.h"
 #include "common/plugin_glue.h"
 #include "svgmotion/error.h"
 #include "video/comfyui_client.h"
@@ -14,32 +15,15 @@
 namespace {
 
 nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
-  namespace fs = std::filesystem;
   const nlohmann::json& config = req.at("config");
   const svgm::ComfyuiOptions options = svgm::parse_comfyui_options(
       config.contains("options") ? config.at("options") : nlohmann::json());
-  const fs::path run_dir = req.at("run_dir").get<std::string>();
-  if (svgm::plugin::file(req, "outputs", "candidates") != run_dir / "candidates")
-    throw svgm::Error("video comfyui: the pipeline asked for candidates at " +
-                      svgm::plugin::file(req, "outputs", "candidates").string() +
-                      "; this plugin writes run_dir/candidates");
-  const std::string prompt = req.value("prompt", std::string());
-  const nlohmann::json& seed_json = req.contains("seed") ? req.at("seed") : nlohmann::json(0);
-  const int64_t seed = seed_json.is_number() ? seed_json.get<int64_t>() : 0;
-
+  const svgm::plugin::GeneratorRequest g = svgm::plugin::generator_request(req, host, "video comfyui");
   svgm::ComfyuiHooks hooks;
-  if (host) {
-    hooks.progress = [host](double f, const std::string& note) {
-      if (host->progress) host->progress(host, f, note.c_str());
-    };
-    hooks.log = [host](const std::string& line) {
-      if (host->log) host->log(host, 1, line.c_str());
-    };
-    hooks.cancelled = [host] { return host->cancelled && host->cancelled(host) != 0; };
-  }
+  static_cast<svgm::GeneratorHooks&>(hooks) = g.hooks;
   svgm::comfyui::CurlTransport http(hooks.cancelled);
   const auto files =
-      svgm::generate_comfyui_candidates(options, run_dir, prompt, seed, http, hooks);
+      svgm::generate_comfyui_candidates(options, g.run_dir, g.prompt, g.seed, http, hooks);
   return {{"message", std::to_string(files.size()) + " candidate" +
                           (files.size() == 1 ? "" : "s") + " from ComfyUI at " + options.url},
           {"candidates", files.size()}};

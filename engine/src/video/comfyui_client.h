@@ -4,6 +4,8 @@
 // the caller (the plugin uses libcurl; the engine stays curl-free), so the logic is testable.
 #pragma once
 
+#include "video/generator_hooks.h"
+
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -73,10 +75,7 @@ struct HttpTransport {
                               const std::filesystem::path& file, double timeout_s) = 0;
 };
 
-struct ComfyuiHooks {
-  std::function<void(double fraction, const std::string& note)> progress;  // may be empty
-  std::function<void(const std::string& line)> log;                        // may be empty
-  std::function<bool()> cancelled;                                         // may be empty
+struct ComfyuiHooks : GeneratorHooks {
   std::function<void(double seconds)> sleep;  // empty = std::this_thread::sleep_for
 };
 

@@ -3,6 +3,8 @@
 // candidates/NN.mp4 in the run directory, and checks that every output is a readable video.
 #pragma once
 
+#include "video/generator_hooks.h"
+
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -36,11 +38,7 @@ struct CommandVideoOptions {
 // missing or empty argv, or an argv without {out}.
 CommandVideoOptions parse_command_video_options(const nlohmann::json& options);
 
-struct CommandVideoHooks {
-  std::function<void(double fraction, const std::string& note)> progress;  // may be empty
-  std::function<void(const std::string& line)> log;                        // may be empty
-  std::function<bool()> cancelled;                                         // may be empty
-};
+using CommandVideoHooks = GeneratorHooks;
 
 // Runs the generator for candidates 0..N-1 in order, in `run_dir` (absolute or not; made
 // absolute here): candidates/ is emptied first, then for candidate i ("NN" = i, two digits)

@@ -1,0 +1,46 @@
+// The part of a video stage request every generator plugin (command, comfyui) reads the same
+// way: the run directory (checked to be where the pipeline wants candidates/), the prompt, the
+// seed, and hooks that forward progress, log lines and cancellation to the host.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "common/plugin_glue.h"
+#include "svgmotion/error.h"
+#include "video/generator_hooks.h"
+
+namespace svgm::plugin {
+
+struct GeneratorRequest {
+  std::filesystem::path run_dir;
+  std::string prompt;
+  int64_t seed = 0;
+  GeneratorHooks hooks;
+};
+
+// `who` names the plugin in the error ("video command: the pipeline asked for ...").
+inline GeneratorRequest generator_request(const json& req, const svgm_host* host, const std::string& who) {
+  GeneratorRequest g;
+  g.run_dir = req.at("run_dir").get<std::string>();
+  // The generators write run_dir/candidates; say so if the pipeline's file names change.
+  if (file(req, "outputs", "candidates") != g.run_dir / "candidates")
+    throw Error(who + ": the pipeline asked for candidates at " + file(req, "outputs", "candidates").string() +
+                "; this plugin writes run_dir/candidates");
+  g.prompt = req.value("prompt", std::string());
+  const json& seed = req.contains("seed") ? req.at("seed") : json(0);
+  g.seed = seed.is_number() ? seed.get<int64_t>() : 0;
+  if (host) {
+    g.hooks.progress = [host](double f, const std::string& note) {
+      if (host->progress) host->progress(host, f, note.c_str());
+    };
+    g.hooks.log = [host](const std::string& line) {
+      if (host->log) host->log(host, 1, line.c_str());
+    };
+    g.hooks.cancelled = [host] { return host->cancelled && host->cancelled(host) != 0; };
+  }
+  return g;
+}
+
+}  // namespace svgm::plugin
