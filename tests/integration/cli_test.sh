@@ -4,12 +4,7 @@
 # exits non-zero on any failure.
 set -u
 group=$1 bin=$2 data=$3 build=${4:-} sdk_src=${5:-}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-pass=0 fail=0
-ok() { echo "ok - $1"; pass=$((pass + 1)); }
-bad() { echo "not ok - $1"; fail=$((fail + 1)); }
-check() { if eval "$2"; then ok "$1"; else bad "$1"; fi; }
+source "$(cd "$(dirname "$0")" && pwd)/test_lib.sh"
 
 # expect_error NAME EXPECTED_SUBSTRING OUTPUT_FILE ARGS...: non-zero exit, exactly one stderr
 # line containing the substring, and OUTPUT_FILE (and any temporary of it) not written.
@@ -142,5 +137,4 @@ pipeline)
   ;;
 *) echo "unknown group $group"; exit 2 ;;
 esac
-echo "$pass passed, $fail failed"
-[[ $fail -eq 0 ]]
+finish

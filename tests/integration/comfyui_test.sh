@@ -10,23 +10,7 @@
 set -u
 bin=$1 data=$2
 here=$(cd "$(dirname "$0")" && pwd)
-py=/usr/bin/python3
-[[ -x $py ]] || py=python3
-tmp=$(mktemp -d)
-server_pid=
-cleanup() {
-  if [[ -n $server_pid ]]; then kill "$server_pid" 2>/dev/null; wait "$server_pid" 2>/dev/null; fi
-  [[ -n ${KEEP:-} ]] && echo "kept $tmp" || rm -rf "$tmp"
-}
-trap cleanup EXIT
-pass=0 fail=0
-ok() { echo "ok - $1"; pass=$((pass + 1)); }
-bad() { echo "not ok - $1"; fail=$((fail + 1)); }
-check() { if eval "$2"; then ok "$1"; else bad "$1"; fi; }
-finish() { echo "$pass passed, $fail failed"; [[ $fail -eq 0 ]]; exit; }
-
-unset http_proxy https_proxy HTTP_PROXY HTTPS_PROXY all_proxy ALL_PROXY
-export no_proxy=127.0.0.1,localhost NO_PROXY=127.0.0.1,localhost
+source "$here/test_lib.sh"
 
 small=(stages.fitter.iterations=5 stages.fitter.keyframes=3 stages.fitter.size=64 stages.video.size=96)
 "$bin" run --input "$data/examples/man.svg" -o "$tmp/base" --quiet --prompt "waves the right arm" \
@@ -34,13 +18,10 @@ small=(stages.fitter.iterations=5 stages.fitter.keyframes=3 stages.fitter.size=6
 check "the procedural base run gives a video to serve" '[[ -s $tmp/base/candidates/00.mp4 && -s $tmp/base/recolored.png ]]'
 [[ -s $tmp/base/candidates/00.mp4 ]] || finish
 
-"$py" "$here/fake_comfyui_server.py" "$tmp/port" --video "$tmp/base/candidates/00.mp4" --lifetime 60 \
-  --log "$tmp/requests.log" &
-server_pid=$!
-for _ in $(seq 50); do [[ -s $tmp/port ]] && break; sleep 0.1; done
-if [[ ! -s $tmp/port ]]; then bad "the fake server starts"; finish; fi
-url="http://127.0.0.1:$(cat "$tmp/port")"
-closed=$("$py" -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1]); s.close()')
+start_server "$here/fake_comfyui_server.py" --video "$tmp/base/candidates/00.mp4" --lifetime 60 \
+  --log "$tmp/requests.log" || { bad "the fake server starts"; finish; }
+url="http://127.0.0.1:$port"
+closed=$(closed_port)
 
 # workflow MODE: a workflow in API format with every placeholder and a "mode" input.
 workflow() {

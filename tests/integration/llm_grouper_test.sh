@@ -9,33 +9,14 @@
 set -u
 bin=$1 data=$2
 here=$(cd "$(dirname "$0")" && pwd)
-py=/usr/bin/python3
-[[ -x $py ]] || py=python3
-tmp=$(mktemp -d)
-server_pid=
-cleanup() {
-  if [[ -n $server_pid ]]; then kill "$server_pid" 2>/dev/null; wait "$server_pid" 2>/dev/null; fi
-  [[ -n ${KEEP:-} ]] && echo "kept $tmp" || rm -rf "$tmp"
-}
-trap cleanup EXIT
-pass=0 fail=0
-ok() { echo "ok - $1"; pass=$((pass + 1)); }
-bad() { echo "not ok - $1"; fail=$((fail + 1)); }
-check() { if eval "$2"; then ok "$1"; else bad "$1"; fi; }
+source "$here/test_lib.sh"
 
-# The fake server is local: no proxy may stand in between.
-unset http_proxy https_proxy HTTP_PROXY HTTPS_PROXY all_proxy ALL_PROXY
-export no_proxy=127.0.0.1,localhost NO_PROXY=127.0.0.1,localhost
-
-"$py" "$here/fake_llm_server.py" "$tmp/port" --lifetime 60 --hang 20 --log "$tmp/requests.log" &
-server_pid=$!
-for _ in $(seq 50); do [[ -s $tmp/port ]] && break; sleep 0.1; done
-if [[ ! -s $tmp/port ]]; then bad "the fake server starts"; echo "$pass passed, $fail failed"; exit 1; fi
-port=$(cat "$tmp/port")
+start_server "$here/fake_llm_server.py" --lifetime 60 --hang 20 --log "$tmp/requests.log" ||
+  { bad "the fake server starts"; finish; }
 url="http://127.0.0.1:$port/v1/chat/completions"
 
 # A closed port for "connection refused": bind an ephemeral port, then release it.
-closed=$("$py" -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1]); s.close()')
+closed=$(closed_port)
 
 # The target video: a few frames of the example itself.
 mkdir -p "$tmp/frames"
@@ -149,5 +130,4 @@ check "a fallback leaves no manifest, so the next run asks again" '[[ ! -f $tmp/
 check "the hanging server (20 s) costs the timeout (2 s) + at most 6 s: grouper took ${hang_s:-?} s" \
   '"$py" -c "import sys; sys.exit(not 2 <= float(sys.argv[1]) <= 8)" "${hang_s:-99}"'
 
-echo "$pass passed, $fail failed"
-[[ $fail -eq 0 ]]
+finish

@@ -9,23 +9,7 @@
 set -u
 bin=$1 data=$2
 here=$(cd "$(dirname "$0")" && pwd)
-py=/usr/bin/python3
-[[ -x $py ]] || py=python3
-tmp=$(mktemp -d)
-server_pid=
-cleanup() {
-  if [[ -n $server_pid ]]; then kill "$server_pid" 2>/dev/null; wait "$server_pid" 2>/dev/null; fi
-  [[ -n ${KEEP:-} ]] && echo "kept $tmp" || rm -rf "$tmp"
-}
-trap cleanup EXIT
-pass=0 fail=0
-ok() { echo "ok - $1"; pass=$((pass + 1)); }
-bad() { echo "not ok - $1"; fail=$((fail + 1)); }
-check() { if eval "$2"; then ok "$1"; else bad "$1"; fi; }
-finish() { echo "$pass passed, $fail failed"; [[ $fail -eq 0 ]]; exit; }
-
-unset http_proxy https_proxy HTTP_PROXY HTTPS_PROXY all_proxy ALL_PROXY
-export no_proxy=127.0.0.1,localhost NO_PROXY=127.0.0.1,localhost
+source "$here/test_lib.sh"
 
 small=(stages.video.candidates=3 stages.video.frames=9 stages.video.size=96
        stages.fitter.iterations=5 stages.fitter.keyframes=3 stages.fitter.size=64)
@@ -38,12 +22,10 @@ last=$("$py" -c 'import json,sys; print(json.load(open(sys.argv[1]))["candidates
 pixel_best=$("$py" -c 'import json,sys; print(json.load(open(sys.argv[1]))["chosen"])' "$tmp/base/ranking.json")
 check "the pixel ranker's first and last differ" '[[ $last != "$pixel_best" ]]'
 
-"$py" "$here/fake_llm_server.py" "$tmp/port" --lifetime 60 --hang 20 --log "$tmp/requests.log" &
-server_pid=$!
-for _ in $(seq 50); do [[ -s $tmp/port ]] && break; sleep 0.1; done
-if [[ ! -s $tmp/port ]]; then bad "the fake server starts"; finish; fi
-url="http://127.0.0.1:$(cat "$tmp/port")/v1/chat/completions"
-closed=$("$py" -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1]); s.close()')
+start_server "$here/fake_llm_server.py" --lifetime 60 --hang 20 --log "$tmp/requests.log" ||
+  { bad "the fake server starts"; finish; }
+url="http://127.0.0.1:$port/v1/chat/completions"
+closed=$(closed_port)
 
 run_case() {
   local name=$1 options=$2
