@@ -12,13 +12,9 @@
 //   prompt, candidate names and pixel findings; then per candidate a text label and its frames
 //   as image_url PNG data URLs]]}. Answer (choices[0].message.content, ```json fences allowed):
 //   {"best": "<candidate name>", "reason": "<one sentence>"}
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -44,9 +40,9 @@ struct Settings : chat::Settings {
   int size = 256;
 };
 
-// Option mistakes are the user's to fix (an error); a missing url is a fallback like the network.
-Settings read_settings(const json& config) {
-  const json opts = config.contains("options") && config["options"].is_object() ? config["options"] : json::object();
+// Option mistakes are the user's to fix: an error, before any work. A missing url, like the
+// network, is a reason to fall back (chat::Failure from chat_settings).
+Settings read_options(const json& opts) {
   static const char* const known[] = {"url", "model", "api_key_env", "timeout_s", "frames", "size"};
   for (const auto& [key, value] : opts.items()) {
     bool ok = false;
@@ -64,11 +60,13 @@ Settings read_settings(const json& config) {
   Settings s;
   s.frames = int_opt("frames", 1, 16, 4);
   s.size = int_opt("size", 32, 1024, 256);
-  s.timeout_s = 120;
+  return s;
+}
+
+void chat_settings(const json& opts, Settings& s) {
   json chat_opts = opts;
   if (!chat_opts.contains("timeout_s")) chat_opts["timeout_s"] = 120;
   static_cast<chat::Settings&>(s) = chat::read_settings(chat_opts, "ranker");
-  return s;
 }
 
 // The idea of the paper's judging prompt, in our words.
@@ -82,12 +80,6 @@ const char* const kInstructions =
     "clearly rather than a still picture. Answer with JSON only, no other text, in exactly this "
     "form: {\"best\": \"<candidate name>\", \"reason\": \"<one sentence>\"}";
 
-std::string read_bytes(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  if (!f) throw chat::Failure("cannot read " + p.string());
-  return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
-}
-
 // `frames` frames of a candidate, `size` px wide, as PNG data URLs.
 std::vector<std::string> frame_urls(const fs::path& video, int frames, int size) {
   const svgm::TargetInfo info = svgm::probe_target(video);
@@ -96,14 +88,10 @@ std::vector<std::string> frame_urls(const fs::path& video, int frames, int size)
   svgm::TargetOptions o;
   o.keyframes = std::min(frames, info.frames);
   const svgm::TargetFrames t = svgm::load_target(video, w, h, o);
-  const fs::path png = fs::temp_directory_path() / ("svgm_ranker_llm_" + std::to_string(::getpid()) + ".png");
   std::vector<std::string> urls;
-  for (int k = 0; k < t.keyframes; ++k) {
-    svgm::write_png(png, svgm::rgba8_image(&t.raw[static_cast<size_t>(k) * w * h * 4], w, h));
-    urls.push_back("data:image/png;base64," + chat::base64(read_bytes(png)));
-  }
-  std::error_code ec;
-  fs::remove(png, ec);
+  for (int k = 0; k < t.keyframes; ++k)
+    urls.push_back("data:image/png;base64," +
+                   chat::base64(svgm::encode_png(svgm::rgba8_image(&t.raw[static_cast<size_t>(k) * w * h * 4], w, h))));
   return urls;
 }
 
@@ -169,6 +157,8 @@ std::pair<std::string, std::string> ask(const json& req, const svgm::Ranking& pi
 json run(const json& req, const svgm_host* host) {
   namespace P = svgm::plugin;
   const json& config = req.at("config");
+  const json opts = config.contains("options") && config["options"].is_object() ? config["options"] : json::object();
+  Settings s = read_options(opts);
   const fs::path dir = P::file(req, "inputs", "candidates");
   std::vector<svgm::Rgba> palette;
   for (const auto& [id, c] : svgm::read_palette(P::file(req, "inputs", "palette"))) palette.push_back(c);
@@ -182,7 +172,7 @@ json run(const json& req, const svgm_host* host) {
   std::string chosen = pixel.chosen;
   bool judged = false;
   try {
-    const Settings s = read_settings(config);
+    chat_settings(opts, s);
     const auto [best, reason] = ask(req, pixel, dir, s, host);
     chosen = best;
     judged = true;

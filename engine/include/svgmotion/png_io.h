@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace svgm {
@@ -11,6 +12,9 @@ struct RgbaImage {
   int width = 0, height = 0;
   std::vector<uint8_t> rgba;  // straight alpha, row-major, 4 bytes per pixel
 };
+
+// `image` as the bytes of an 8-bit RGBA PNG file. Throws svgm::Error.
+std::string encode_png(const RgbaImage& image);
 
 // Writes `image` as an 8-bit RGBA PNG to a temporary name beside `file`, then renames it, so a
 // failure never leaves a half-written file. Throws svgm::Error naming the file.

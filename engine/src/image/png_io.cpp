@@ -15,10 +15,10 @@ namespace svgm {
 
 namespace fs = std::filesystem;
 
-void write_png(const fs::path& file, const RgbaImage& img) {
+std::string encode_png(const RgbaImage& img) {
   if (img.width <= 0 || img.height <= 0 ||
       img.rgba.size() != static_cast<size_t>(img.width) * img.height * 4)
-    throw Error(file.string() + ": internal: image buffer does not match its size");
+    throw Error("internal: image buffer does not match its size");
   png_image pi;
   std::memset(&pi, 0, sizeof pi);
   pi.version = PNG_IMAGE_VERSION;
@@ -27,12 +27,22 @@ void write_png(const fs::path& file, const RgbaImage& img) {
   pi.format = PNG_FORMAT_RGBA;
   png_alloc_size_t size = 0;
   if (!png_image_write_to_memory(&pi, nullptr, &size, 0, img.rgba.data(), 0, nullptr))
-    throw Error(file.string() + ": cannot encode PNG: " + pi.message);
-  std::vector<uint8_t> bytes(size);
+    throw Error(std::string("cannot encode PNG: ") + pi.message);
+  std::string bytes(size, '\0');
   if (!png_image_write_to_memory(&pi, bytes.data(), &size, 0, img.rgba.data(), 0, nullptr))
-    throw Error(file.string() + ": cannot encode PNG: " + pi.message);
+    throw Error(std::string("cannot encode PNG: ") + pi.message);
+  bytes.resize(size);
+  return bytes;
+}
 
-  write_file_atomic(file, std::string_view(reinterpret_cast<const char*>(bytes.data()), size));
+void write_png(const fs::path& file, const RgbaImage& img) {
+  std::string bytes;
+  try {
+    bytes = encode_png(img);
+  } catch (const Error& e) {
+    throw Error(file.string() + ": " + e.what());
+  }
+  write_file_atomic(file, bytes);
 }
 
 RgbaImage read_png(const fs::path& file) {
