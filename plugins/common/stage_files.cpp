@@ -36,14 +36,18 @@ void write_json(const fs::path& file, const nlohmann::json& j) {
   write_file_atomic(file, j.dump(2) + "\n");
 }
 
-void render_png(const Scene& scene, int width, const std::string& device, const fs::path& file) {
+RgbaImage render_image(const Scene& scene, int width, const std::string& device) {
   const RenderSize size = render_size(scene, width);
   const RasterPlan plan = plan_raster(scene, size.view, size.width, size.height);
   ClRuntime rt(device);
   ClRaster r(rt, plan, 1);
   r.set_rest_pose();
   r.forward(ClRaster::Output::Rgba8, {1, 1, 1, 1});
-  write_png(file, RgbaImage{size.width, size.height, r.read_rgba8()});
+  return RgbaImage{size.width, size.height, r.read_rgba8()};
+}
+
+void render_png(const Scene& scene, int width, const std::string& device, const fs::path& file) {
+  write_png(file, render_image(scene, width, device));
 }
 
 std::string hex_color(const Rgba& c) {

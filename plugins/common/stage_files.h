@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "svgmotion/png_io.h"
 #include "svgmotion/scene.h"
 
 namespace svgm::plugin {
@@ -14,6 +15,9 @@ void copy_atomic(const std::filesystem::path& from, const std::filesystem::path&
 // Writes JSON (indented) through a temporary name.
 void write_json(const std::filesystem::path& file, const nlohmann::json& j);
 // Renders `scene` at `width` px over white into a PNG (OpenCL device `device`).
+// The scene at rest on white, `width` px wide (height by its aspect), on `device`.
+RgbaImage render_image(const Scene& scene, int width, const std::string& device);
+
 void render_png(const Scene& scene, int width, const std::string& device,
                 const std::filesystem::path& file);
 // "#rrggbb" of a colour.

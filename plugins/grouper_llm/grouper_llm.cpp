@@ -15,7 +15,6 @@
 // grouping, render failure) the structural grouper decides instead, with one warning line naming
 // the reason. grouped.svg has the groups in paint order of their first path, each group's paths
 // in paint order.
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -34,6 +33,7 @@
 #include "group/grouped_svg.h"
 #include "group/structural_grouper.h"
 #include "svgmotion/error.h"
+#include "svgmotion/png_io.h"
 #include "svgmotion/svg_reader.h"
 
 namespace {
@@ -161,23 +161,12 @@ std::vector<std::vector<int>> ask(const json& req, const svgm::Scene& scene, con
     if (host && host->progress) host->progress(host, f, note);
   };
   progress(0.05, "rendering the SVG for the model");
-  const fs::path png = fs::temp_directory_path() /
-                       ("svgm_grouper_llm_" + std::to_string(::getpid()) + ".png");
   std::string png_bytes;
   try {
-    svgm::plugin::render_png(scene, kRenderWidth, req.value("device", "auto"), png);
-    png_bytes = read_file(png);
-  } catch (const Fallback&) {
-    std::error_code ec;
-    fs::remove(png, ec);
-    throw;
+    png_bytes = svgm::encode_png(svgm::plugin::render_image(scene, kRenderWidth, req.value("device", "auto")));
   } catch (const std::exception& e) {
-    std::error_code ec;
-    fs::remove(png, ec);
     throw Fallback(std::string("cannot render the SVG: ") + one_line(e.what(), 200));
   }
-  std::error_code ec;
-  fs::remove(png, ec);
 
   const std::string prompt = req.contains("prompt") && req["prompt"].is_string() ? req["prompt"].get<std::string>() : "";
   const json body = {
