@@ -48,19 +48,29 @@ inline int seg_valid(__global const float2* p, int i, int N, float2* dir) {
   return 1;
 }
 
-/* Direction of segment i after inheritance (see the essay). */
-inline float2 seg_dir(__global const float2* p, int i, int S, int N, int closed) {
+/* Which segment gives segment i its direction after inheritance (see the essay): i itself if
+ * it is not degenerate, else the search below; -1 when every segment is degenerate. The
+ * backward pass (stroke_backward.cl) needs the source, not only the direction. */
+inline int seg_src(__global const float2* p, int i, int S, int N, int closed) {
   float2 d;
   for (int j = i; j >= 0; --j)
-    if (seg_valid(p, j, N, &d)) return d;
+    if (seg_valid(p, j, N, &d)) return j;
   if (closed) {
     for (int j = S - 1; j > i; --j)
-      if (seg_valid(p, j, N, &d)) return d;
+      if (seg_valid(p, j, N, &d)) return j;
   } else {
     for (int j = i + 1; j < S; ++j)
-      if (seg_valid(p, j, N, &d)) return d;
+      if (seg_valid(p, j, N, &d)) return j;
   }
-  return (float2)(1.0f, 0.0f);
+  return -1;
+}
+
+/* Direction of segment i after inheritance; +x when there is none. */
+inline float2 seg_dir(__global const float2* p, int i, int S, int N, int closed) {
+  float2 d = (float2)(1.0f, 0.0f);
+  const int j = seg_src(p, i, S, N, closed);
+  if (j >= 0) seg_valid(p, j, N, &d);
+  return d;
 }
 
 /* The inner join point X of vertex v on side s (see the essay), if it applies. */

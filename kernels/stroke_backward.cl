@@ -74,22 +74,7 @@ typedef struct {
   int src;
 } StrokeDir;
 
-/* seg_dir's search, returning which segment it took the direction from. */
-inline int seg_src(__global const float2* p, int i, int S, int N, int closed) {
-  float2 d;
-  for (int j = i; j >= 0; --j)
-    if (seg_valid(p, j, N, &d)) return j;
-  if (closed) {
-    for (int j = S - 1; j > i; --j)
-      if (seg_valid(p, j, N, &d)) return j;
-  } else {
-    for (int j = i + 1; j < S; ++j)
-      if (seg_valid(p, j, N, &d)) return j;
-  }
-  return -1;
-}
-
-/* Equals seg_dir(p, i, ...) bit for bit (the same seg_valid call on the same segment). */
+/* seg_dir with its source segment (seg_src, stroke.cl); the direction is seg_dir's bit for bit. */
 inline StrokeDir stroke_dir(__global const float2* p, int i, int S, int N, int closed) {
   StrokeDir r;
   float2 d = (float2)(1.0f, 0.0f);
