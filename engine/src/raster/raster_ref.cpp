@@ -1,5 +1,6 @@
 // The double-precision CPU reference of the rasteriser (see raster_ref.h).
 #include "raster/raster_ref.h"
+#include "raster/stroke_geometry_ref.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,21 +9,7 @@ namespace svgm::ref {
 
 namespace {
 
-struct P2 {
-  double x = 0, y = 0;
-};
-P2 operator+(P2 a, P2 b) { return {a.x + b.x, a.y + b.y}; }
-P2 operator-(P2 a, P2 b) { return {a.x - b.x, a.y - b.y}; }
-P2 operator*(double s, P2 a) { return {s * a.x, s * a.y}; }
-P2 operator/(P2 a, double s) { return {a.x / s, a.y / s}; }
-double dot(P2 a, P2 b) { return a.x * b.x + a.y * b.y; }
-double cross(P2 a, P2 b) { return a.x * b.y - a.y * b.x; }
-P2 perp(P2 d) { return {-d.y, d.x}; }
-P2 rotate(P2 v, double a) {
-  return {std::cos(a) * v.x - std::sin(a) * v.y, std::sin(a) * v.x + std::cos(a) * v.y};
-}
-
-constexpr double kDegenerateLen2 = 1e-12;  // as DEGENERATE_LEN2 in stroke.cl
+using namespace stroke_geom;
 
 // The stroke of one subpath, mirroring stroke.cl line by line in meaning (see its essay).
 class SubpathStroker {
@@ -80,27 +67,7 @@ class SubpathStroker {
   }
 
  private:
-  bool valid(int i, P2* d) const {
-    const P2 v = p_[(i + 1) % N_] - p_[i];
-    const double l2 = dot(v, v);
-    if (l2 <= kDegenerateLen2) return false;
-    *d = v / std::sqrt(l2);
-    return true;
-  }
-
-  P2 dir(int i) const {
-    P2 d;
-    for (int j = i; j >= 0; --j)
-      if (valid(j, &d)) return d;
-    if (s_.closed) {
-      for (int j = S_ - 1; j > i; --j)
-        if (valid(j, &d)) return d;
-    } else {
-      for (int j = i + 1; j < S_; ++j)
-        if (valid(j, &d)) return d;
-    }
-    return {1, 0};
-  }
+  P2 dir(int i) const { return seg_dir(p_, N_, S_, s_.closed, i); }
 
   // The inner join point X of vertex v on `side` (stroke.cl's inner_point).
   bool inner_point(int v, double side, P2* X) const {

@@ -2,6 +2,7 @@
 // essay of kernels/stroke_backward.cl). It mirrors the kernel function by function; the branch
 // tests are copied from raster_ref.cpp's SubpathStroker (the forward reference).
 #include "raster/stroke_backward_ref.h"
+#include "raster/stroke_geometry_ref.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,24 +11,8 @@ namespace svgm::ref {
 
 namespace {
 
-struct P2 {
-  double x = 0, y = 0;
-};
-P2 operator+(P2 a, P2 b) { return {a.x + b.x, a.y + b.y}; }
-P2 operator-(P2 a, P2 b) { return {a.x - b.x, a.y - b.y}; }
-P2 operator*(double s, P2 a) { return {s * a.x, s * a.y}; }
-P2 operator/(P2 a, double s) { return {a.x / s, a.y / s}; }
-P2& operator+=(P2& a, P2 b) { return a = a + b; }
-P2& operator-=(P2& a, P2 b) { return a = a - b; }
-double dot(P2 a, P2 b) { return a.x * b.x + a.y * b.y; }
-double cross(P2 a, P2 b) { return a.x * b.y - a.y * b.x; }
-P2 perp(P2 d) { return {-d.y, d.x}; }
+using namespace stroke_geom;
 P2 perp_t(P2 g) { return {g.y, -g.x}; }  // perp(d) . g == d . perp_t(g)
-P2 rotate(P2 v, double a) {
-  return {std::cos(a) * v.x - std::sin(a) * v.y, std::sin(a) * v.x + std::cos(a) * v.y};
-}
-
-constexpr double kDegenerateLen2 = 1e-12;  // as DEGENERATE_LEN2 in stroke.cl
 
 // A direction after inheritance and the valid segment it is the direction of (-1: constant +x).
 struct Dir {
@@ -147,33 +132,12 @@ class SubpathBackward {
   }
 
  private:
-  bool valid(int i, P2* d) const {
-    const P2 v = p_[(i + 1) % N_] - p_[i];
-    const double l2 = dot(v, v);
-    if (l2 <= kDegenerateLen2) return false;
-    *d = v / std::sqrt(l2);
-    return true;
-  }
-
-  // The forward's direction search, returning which segment it took the direction from.
-  int src(int i) const {
-    P2 d;
-    for (int j = i; j >= 0; --j)
-      if (valid(j, &d)) return j;
-    if (s_.closed) {
-      for (int j = S_ - 1; j > i; --j)
-        if (valid(j, &d)) return j;
-    } else {
-      for (int j = i + 1; j < S_; ++j)
-        if (valid(j, &d)) return j;
-    }
-    return -1;
-  }
+  int src(int i) const { return seg_src(p_, N_, S_, s_.closed, i); }
 
   Dir dir(int i) const {
     Dir r;
     r.src = src(i);
-    if (r.src >= 0) valid(r.src, &r.d);
+    if (r.src >= 0) seg_valid(p_, N_, r.src, &r.d);
     return r;
   }
 
