@@ -24,6 +24,7 @@
 #include "common/stage_files.h"
 #include "fit/palette.h"
 #include "fit/preview_video.h"
+#include "pipeline/plugin_options.h"
 #include "rank/pixel_ranker.h"
 #include "svgmotion/error.h"
 #include "svgmotion/png_io.h"
@@ -43,23 +44,10 @@ struct Settings : chat::Settings {
 // Option mistakes are the user's to fix: an error, before any work. A missing url, like the
 // network, is a reason to fall back (chat::Failure from chat_settings).
 Settings read_options(const json& opts) {
-  static const char* const known[] = {"url", "model", "api_key_env", "timeout_s", "frames", "size"};
-  for (const auto& [key, value] : opts.items()) {
-    bool ok = false;
-    for (const char* k : known) ok = ok || key == k;
-    if (!ok)
-      throw svgm::Error("ranker llm: unknown option '" + key + "' (known: url, model, api_key_env, timeout_s, frames, size)");
-  }
-  auto int_opt = [&](const char* key, int lo, int hi, int def) {
-    if (!opts.contains(key)) return def;
-    if (!opts[key].is_number_integer() || opts[key].get<long long>() < lo || opts[key].get<long long>() > hi)
-      throw svgm::Error(std::string("ranker llm: option '") + key + "' must be an integer in " +
-                        std::to_string(lo) + ".." + std::to_string(hi));
-    return opts[key].get<int>();
-  };
+  const svgm::PluginOptions o(opts, "ranker llm", {"url", "model", "api_key_env", "timeout_s", "frames", "size"});
   Settings s;
-  s.frames = int_opt("frames", 1, 16, 4);
-  s.size = int_opt("size", 32, 1024, 256);
+  s.frames = o.whole("frames", 4, 1, 16);
+  s.size = o.whole("size", 256, 32, 1024);
   return s;
 }
 
@@ -157,7 +145,7 @@ std::pair<std::string, std::string> ask(const json& req, const svgm::Ranking& pi
 json run(const json& req, const svgm_host* host) {
   namespace P = svgm::plugin;
   const json& config = req.at("config");
-  const json opts = config.contains("options") && config["options"].is_object() ? config["options"] : json::object();
+  const json opts = config.contains("options") ? config["options"] : json::object();
   Settings s = read_options(opts);
   const fs::path dir = P::file(req, "inputs", "candidates");
   std::vector<svgm::Rgba> palette;

@@ -12,25 +12,19 @@
 #include "common/plugin_glue.h"
 #include "common/stage_files.h"
 #include "fit/palette.h"
+#include "pipeline/plugin_options.h"
 #include "rank/pixel_ranker.h"
 #include "svgmotion/error.h"
 
 namespace {
 
 svgm::PixelRankOptions options_of(const nlohmann::json& req) {
+  const nlohmann::json& config = req.at("config");
+  const svgm::PluginOptions opt(config.contains("options") ? config.at("options") : nlohmann::json(),
+                                "ranker pixel", {"size", "keyframes"});
   svgm::PixelRankOptions o;
-  const auto cfg = req.find("config");
-  if (cfg == req.end() || !cfg->is_object()) return o;
-  const auto opts = cfg->find("options");
-  if (opts == cfg->end() || opts->is_null()) return o;
-  if (!opts->is_object()) throw svgm::Error("ranker pixel: options must be a mapping");
-  for (const auto& [key, value] : opts->items()) {
-    if (key != "size" && key != "keyframes")
-      throw svgm::Error("ranker pixel: unknown option '" + key + "' (known: size, keyframes)");
-    if (!value.is_number_integer() || value.get<long long>() < 1 || value.get<long long>() > 4096)
-      throw svgm::Error("ranker pixel: option '" + key + "' must be an integer in 1..4096");
-    (key == "size" ? o.analysis_width : o.keyframes) = value.get<int>();
-  }
+  o.analysis_width = opt.whole("size", o.analysis_width, 1, 4096);
+  o.keyframes = opt.whole("keyframes", o.keyframes, 1, 4096);
   return o;
 }
 

@@ -12,6 +12,7 @@
 
 #include "svgmotion/error.h"
 #include "svgmotion/target_video.h"
+#include "pipeline/plugin_options.h"
 #include "video/command_runner.h"
 #include "video/command_video.h"
 
@@ -22,8 +23,6 @@ using json = nlohmann::json;
 
 namespace {
 
-const char* const kKnownOptions[] = {"url",     "workflow", "candidates", "frames",
-                                     "timeout_s", "retries", "poll_s",     "prompt_template"};
 const char* const kVideoExtensions[] = {"mp4", "webm", "gif", "mov", "mkv", "avi", "m4v", "webp"};
 
 [[noreturn]] void fail(const std::string& message) { throw Error("video comfyui: " + message); }
@@ -34,26 +33,6 @@ std::string one_line(std::string s, size_t max_chars = 200) {
   while (!s.empty() && s.back() == ' ') s.pop_back();
   if (s.size() > max_chars) s = s.substr(0, max_chars) + "...";
   return s;
-}
-
-double number_option(const json& v, const std::string& key) {
-  if (!v.is_number()) fail("options." + key + " must be a number, not " + v.dump());
-  const double d = v.get<double>();
-  if (!std::isfinite(d)) fail("options." + key + " must be a finite number");
-  return d;
-}
-
-int int_option(const json& v, const std::string& key, int lo, int hi) {
-  const double d = number_option(v, key);
-  if (d != std::round(d) || d < lo || d > hi)
-    fail("options." + key + " must be a whole number in " + std::to_string(lo) + ".." +
-         std::to_string(hi) + ", not " + v.dump());
-  return static_cast<int>(d);
-}
-
-std::string string_option(const json& v, const std::string& key) {
-  if (!v.is_string()) fail("options." + key + " must be a string, not " + v.dump());
-  return v.get<std::string>();
 }
 
 std::string two_digits(int i) {
@@ -67,38 +46,19 @@ using Clock = std::chrono::steady_clock;
 }  // namespace
 
 ComfyuiOptions parse_comfyui_options(const json& options) {
+  const PluginOptions opt(options, "video comfyui",
+                          {"url", "workflow", "candidates", "frames", "timeout_s", "retries", "poll_s", "prompt_template"});
   ComfyuiOptions o;
-  o.prompt_template = kDefaultVideoPromptTemplate;
-  if (!options.is_null() && !options.is_object())
-    fail("options must be a map (url, workflow, ...), not " + options.dump());
-  if (options.is_object()) {
-    for (const auto& [key, value] : options.items()) {
-      bool known = false;
-      for (const char* k : kKnownOptions) known = known || key == k;
-      if (!known) {
-        std::string list;
-        for (const char* k : kKnownOptions) list += (list.empty() ? "" : ", ") + std::string(k);
-        fail("unknown option '" + key + "' (options: " + list + ")");
-      }
-    }
-    if (options.contains("url")) o.url = string_option(options["url"], "url");
-    if (options.contains("workflow"))
-      o.workflow = string_option(options["workflow"], "workflow");
-    if (options.contains("candidates"))
-      o.candidates = int_option(options["candidates"], "candidates", 1, 99);
-    if (options.contains("frames")) o.frames = int_option(options["frames"], "frames", 1, 100000);
-    if (options.contains("timeout_s")) {
-      o.timeout_s = number_option(options["timeout_s"], "timeout_s");
-      if (o.timeout_s <= 0) fail("options.timeout_s must be > 0 seconds");
-    }
-    if (options.contains("retries")) o.retries = int_option(options["retries"], "retries", 0, 10);
-    if (options.contains("poll_s")) {
-      o.poll_s = number_option(options["poll_s"], "poll_s");
-      if (o.poll_s <= 0 || o.poll_s > 60) fail("options.poll_s must be in (0, 60] seconds");
-    }
-    if (options.contains("prompt_template"))
-      o.prompt_template = string_option(options["prompt_template"], "prompt_template");
-  }
+  o.url = opt.string("url", o.url);
+  o.workflow = opt.string("workflow", o.workflow.string());
+  o.candidates = opt.whole("candidates", o.candidates, 1, 99);
+  o.frames = opt.whole("frames", o.frames, 1, 100000);
+  o.timeout_s = opt.number("timeout_s", o.timeout_s);
+  if (o.timeout_s <= 0) opt.fail("options.timeout_s must be > 0 seconds");
+  o.retries = opt.whole("retries", o.retries, 0, 10);
+  o.poll_s = opt.number("poll_s", o.poll_s);
+  if (o.poll_s <= 0 || o.poll_s > 60) opt.fail("options.poll_s must be in (0, 60] seconds");
+  o.prompt_template = opt.string("prompt_template", kDefaultVideoPromptTemplate);
   while (!o.url.empty() && o.url.back() == '/') o.url.pop_back();
   if (o.url.empty())
     fail("options.url is not set (the ComfyUI server, e.g. http://127.0.0.1:8188)");

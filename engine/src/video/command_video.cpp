@@ -5,6 +5,7 @@
 
 #include "svgmotion/error.h"
 #include "svgmotion/target_video.h"
+#include "pipeline/plugin_options.h"
 #include "video/command_runner.h"
 
 namespace svgm {
@@ -13,25 +14,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* const kKnownOptions[] = {"argv", "candidates", "frames", "timeout_s", "fps",
-                                     "prompt_template"};
-
 [[noreturn]] void fail(const std::string& message) { throw Error("video command: " + message); }
-
-double number_option(const nlohmann::json& v, const std::string& key) {
-  if (!v.is_number()) fail("options." + key + " must be a number, not " + v.dump());
-  const double d = v.get<double>();
-  if (!std::isfinite(d)) fail("options." + key + " must be a finite number");
-  return d;
-}
-
-int int_option(const nlohmann::json& v, const std::string& key, int lo, int hi) {
-  const double d = number_option(v, key);
-  if (d != std::round(d) || d < lo || d > hi)
-    fail("options." + key + " must be a whole number in " + std::to_string(lo) + ".." +
-         std::to_string(hi) + ", not " + v.dump());
-  return static_cast<int>(d);
-}
 
 std::string two_digits(int i) {
   char buf[16];
@@ -42,43 +25,23 @@ std::string two_digits(int i) {
 }  // namespace
 
 CommandVideoOptions parse_command_video_options(const nlohmann::json& options) {
+  const PluginOptions opt(options, "video command",
+                          {"argv", "candidates", "frames", "timeout_s", "fps", "prompt_template"});
   CommandVideoOptions o;
-  if (!options.is_null() && !options.is_object())
-    fail("options must be a map (argv, candidates, ...), not " + options.dump());
-  if (options.is_object()) {
-    for (const auto& [key, value] : options.items()) {
-      bool known = false;
-      for (const char* k : kKnownOptions) known = known || key == k;
-      if (!known) {
-        std::string list;
-        for (const char* k : kKnownOptions) list += (list.empty() ? "" : ", ") + std::string(k);
-        fail("unknown option '" + key + "' (options: " + list + ")");
-      }
-    }
-    if (options.contains("candidates"))
-      o.candidates = int_option(options["candidates"], "candidates", 1, 99);
-    if (options.contains("frames")) o.frames = int_option(options["frames"], "frames", 1, 100000);
-    if (options.contains("timeout_s")) {
-      o.timeout_s = number_option(options["timeout_s"], "timeout_s");
-      if (o.timeout_s <= 0) fail("options.timeout_s must be > 0 seconds");
-    }
-    if (options.contains("fps")) {
-      o.fps = number_option(options["fps"], "fps");
-      if (o.fps <= 0 || o.fps > 1000) fail("options.fps must be in (0, 1000]");
-    }
-    if (options.contains("prompt_template")) {
-      if (!options["prompt_template"].is_string())
-        fail("options.prompt_template must be a string");
-      o.prompt_template = options["prompt_template"].get<std::string>();
-    }
-    if (options.contains("argv")) {
-      const auto& a = options["argv"];
-      if (!a.is_array()) fail("options.argv must be a list of strings, not " + a.dump());
-      for (const auto& e : a) {
-        if (e.is_string()) o.argv.push_back(e.get<std::string>());
-        else if (e.is_number()) o.argv.push_back(e.dump());
-        else fail("options.argv elements must be strings, not " + e.dump());
-      }
+  o.candidates = opt.whole("candidates", o.candidates, 1, 99);
+  o.frames = opt.whole("frames", o.frames, 1, 100000);
+  o.timeout_s = opt.number("timeout_s", o.timeout_s);
+  if (o.timeout_s <= 0) opt.fail("options.timeout_s must be > 0 seconds");
+  o.fps = opt.number("fps", o.fps);
+  if (o.fps <= 0 || o.fps > 1000) opt.fail("options.fps must be in (0, 1000]");
+  o.prompt_template = opt.string("prompt_template", o.prompt_template);
+  if (opt.has("argv")) {
+    const auto& a = opt.at("argv");
+    if (!a.is_array()) fail("options.argv must be a list of strings, not " + a.dump());
+    for (const auto& e : a) {
+      if (e.is_string()) o.argv.push_back(e.get<std::string>());
+      else if (e.is_number()) o.argv.push_back(e.dump());
+      else fail("options.argv elements must be strings, not " + e.dump());
     }
   }
   if (o.argv.empty())
