@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <string>
 
+#include "common/curl_http.h"
 #include "common/generator_request.h"
 #include "common/plugin_glue.h"
 #include "svgmotion/error.h"
 #include "video/comfyui_client.h"
-#include "video_comfyui/comfyui_http.h"
 
 namespace {
 
@@ -21,7 +21,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   const svgm::plugin::GeneratorRequest g = svgm::plugin::generator_request(req, host, "video comfyui");
   svgm::ComfyuiHooks hooks;
   static_cast<svgm::GeneratorHooks&>(hooks) = g.hooks;
-  svgm::comfyui::CurlTransport http(hooks.cancelled);
+  svgm::plugin::CurlTransport http(hooks.cancelled, "svgmotion-video-comfyui/1");
   const auto files =
       svgm::generate_comfyui_candidates(options, g.run_dir, g.prompt, g.seed, http, hooks);
   return {{"message", std::to_string(files.size()) + " candidate" +

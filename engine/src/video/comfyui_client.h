@@ -4,6 +4,7 @@
 // the caller (the plugin uses libcurl; the engine stays curl-free), so the logic is testable.
 #pragma once
 
+#include "net/http_transport.h"
 #include "video/generator_hooks.h"
 
 #include <cstdint>
@@ -53,27 +54,6 @@ std::optional<ComfyuiFile> find_comfyui_output(const nlohmann::json& history,
 
 // Percent-encodes a query-string value (RFC 3986 unreserved characters stay).
 std::string url_encode(const std::string& s);
-
-// One HTTP exchange. `connected` false = no HTTP answer (connection refused, reset, DNS...),
-// with `error` saying why; `timed_out` = the time limit passed first.
-struct HttpReply {
-  bool connected = false;
-  bool timed_out = false;
-  std::string error;
-  long status = 0;
-  std::string body;
-};
-
-// What the client needs from an HTTP library. Each call blocks for at most timeout_s.
-struct HttpTransport {
-  virtual ~HttpTransport() = default;
-  virtual HttpReply get(const std::string& url, double timeout_s) = 0;
-  virtual HttpReply post_json(const std::string& url, const std::string& body,
-                              double timeout_s) = 0;
-  // multipart/form-data with one file field.
-  virtual HttpReply post_file(const std::string& url, const std::string& field,
-                              const std::filesystem::path& file, double timeout_s) = 0;
-};
 
 struct ComfyuiHooks : GeneratorHooks {
   std::function<void(double seconds)> sleep;  // empty = std::this_thread::sleep_for

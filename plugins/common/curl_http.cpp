@@ -1,11 +1,12 @@
-#include "video_comfyui/comfyui_http.h"
+// curl_http.h: the libcurl HttpTransport.
+#include "common/curl_http.h"
 
 #include <curl/curl.h>
 
 #include <algorithm>
 #include <cmath>
 
-namespace svgm::comfyui {
+namespace svgm::plugin {
 
 namespace {
 
@@ -30,7 +31,8 @@ int on_progress(void* user, curl_off_t, curl_off_t, curl_off_t, curl_off_t) {
 
 enum class Kind { get, json, file };
 
-HttpReply perform(const std::function<bool()>& cancelled, Kind kind, const std::string& url,
+HttpReply perform(const std::function<bool()>& cancelled, const std::string& user_agent,
+                  const std::vector<std::string>& extra_headers, Kind kind, const std::string& url,
                   const std::string& body, const std::string& field,
                   const std::filesystem::path& file, double timeout_s) {
   HttpReply reply;
@@ -47,9 +49,9 @@ HttpReply perform(const std::function<bool()>& cancelled, Kind kind, const std::
   curl_slist* headers = nullptr;
   curl_mime* mime = nullptr;
   curl_easy_setopt(c, CURLOPT_URL, url.c_str());
+  for (const auto& h : extra_headers) headers = curl_slist_append(headers, h.c_str());
   if (kind == Kind::json) {
     headers = curl_slist_append(headers, "Content-Type: application/json");
-    curl_easy_setopt(c, CURLOPT_HTTPHEADER, headers);
     curl_easy_setopt(c, CURLOPT_POST, 1L);
     curl_easy_setopt(c, CURLOPT_POSTFIELDS, body.data());
     curl_easy_setopt(c, CURLOPT_POSTFIELDSIZE_LARGE, static_cast<curl_off_t>(body.size()));
@@ -64,6 +66,7 @@ HttpReply perform(const std::function<bool()>& cancelled, Kind kind, const std::
     curl_mime_data(overwrite, "true", CURL_ZERO_TERMINATED);
     curl_easy_setopt(c, CURLOPT_MIMEPOST, mime);
   }
+  if (headers) curl_easy_setopt(c, CURLOPT_HTTPHEADER, headers);
   curl_easy_setopt(c, CURLOPT_WRITEFUNCTION, on_data);
   curl_easy_setopt(c, CURLOPT_WRITEDATA, &t);
   curl_easy_setopt(c, CURLOPT_NOPROGRESS, 0L);
@@ -73,7 +76,7 @@ HttpReply perform(const std::function<bool()>& cancelled, Kind kind, const std::
   curl_easy_setopt(c, CURLOPT_CONNECTTIMEOUT_MS, timeout_ms);
   curl_easy_setopt(c, CURLOPT_NOSIGNAL, 1L);
   curl_easy_setopt(c, CURLOPT_ERRORBUFFER, err);
-  curl_easy_setopt(c, CURLOPT_USERAGENT, "svgmotion-video-comfyui/1");
+  curl_easy_setopt(c, CURLOPT_USERAGENT, user_agent.c_str());
   const CURLcode rc = curl_easy_perform(c);
   long status = 0;
   curl_easy_getinfo(c, CURLINFO_RESPONSE_CODE, &status);
@@ -93,20 +96,22 @@ HttpReply perform(const std::function<bool()>& cancelled, Kind kind, const std::
 
 }  // namespace
 
-CurlTransport::CurlTransport(std::function<bool()> cancelled) : cancelled_(std::move(cancelled)) {}
+CurlTransport::CurlTransport(std::function<bool()> cancelled, std::string user_agent,
+                             std::vector<std::string> headers)
+    : cancelled_(std::move(cancelled)), user_agent_(std::move(user_agent)), headers_(std::move(headers)) {}
 
 HttpReply CurlTransport::get(const std::string& url, double timeout_s) {
-  return perform(cancelled_, Kind::get, url, {}, {}, {}, timeout_s);
+  return perform(cancelled_, user_agent_, headers_, Kind::get, url, {}, {}, {}, timeout_s);
 }
 
 HttpReply CurlTransport::post_json(const std::string& url, const std::string& body,
                                    double timeout_s) {
-  return perform(cancelled_, Kind::json, url, body, {}, {}, timeout_s);
+  return perform(cancelled_, user_agent_, headers_, Kind::json, url, body, {}, {}, timeout_s);
 }
 
 HttpReply CurlTransport::post_file(const std::string& url, const std::string& field,
                                    const std::filesystem::path& file, double timeout_s) {
-  return perform(cancelled_, Kind::file, url, {}, field, file, timeout_s);
+  return perform(cancelled_, user_agent_, headers_, Kind::file, url, {}, field, file, timeout_s);
 }
 
-}  // namespace svgm::comfyui
+}  // namespace svgm::plugin
