@@ -22,8 +22,8 @@ extern "C" void on_sigint(int) { g_interrupted = 1; }
 int cmd_fit(const std::vector<std::string>& argv) {
   const Args a = parse_args("fit", argv,
                             {"--target", "-o", "--output", "--iterations", "--keyframes", "--size",
-                             "--palette", "--device", "--mask-threshold"},
-                            {"--resume", "--no-track", "--quiet"});
+                             "--palette", "--device", "--mask-threshold", "--loop"},
+                            {"--resume", "--no-track", "--quiet", "--no-gate"});
   if (a.positional.size() != 1)
     throw Error("fit: expected one input SVG (svgmotion fit IN.svg --target VIDEO -o OUT_DIR)");
   FitJob job;
@@ -37,7 +37,9 @@ int cmd_fit(const std::vector<std::string>& argv) {
   job.options.iterations = a.get_int("--iterations", 2000, 1, 10000000);
   job.options.track = !a.has("--no-track");
   job.keyframes = a.get_int("--keyframes", 15, 2, 1000);
-  job.width = a.get_int("--size", 256, 16, 4096);
+  job.width = a.get_int("--size", 256, 32, 4096);
+  job.loop = parse_loop_mode(a.get("--loop").value_or("loop"), "--loop");
+  job.gate = !a.has("--no-gate");
   if (const auto p = a.get("--palette")) job.palette = *p;
   job.mask_threshold = a.get_double("--mask-threshold", job.mask_threshold);
   job.resume = a.has("--resume");

@@ -1,6 +1,12 @@
 // `svgmotion render`: rasterise an SVG to a PNG through the OpenCL renderer.
+//
+// The output format follows the extension: .png is written; any other (.svg, .jpg, none) is
+// refused before anything is read, and the output may never be the input file itself (the
+// same file under another name or through a link included).
+#include <algorithm>
 #include <array>
 #include <cstdio>
+#include <filesystem>
 
 #include "cli/cli_args.h"
 #include "cli/commands.h"
@@ -23,6 +29,16 @@ int cmd_render(const std::vector<std::string>& argv) {
   const std::string input = a.positional[0];
   const auto out = a.get("-o") ? a.get("-o") : a.get("--output");
   if (!out || out->empty()) throw Error("render: missing -o OUT.png");
+  {
+    std::string ext = std::filesystem::path(*out).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext != ".png")
+      throw Error(*out + ": render writes PNG images only; name the output with a .png extension" +
+                  (ext.empty() ? std::string() : " (not " + ext + ")"));
+    std::error_code ec;
+    if (std::filesystem::equivalent(input, *out, ec))
+      throw Error(*out + ": is the input file; choose another output name");
+  }
   const std::string bg = a.get("--background").value_or("white");
   if (bg != "white" && bg != "transparent")
     throw Error("render: --background must be white or transparent, got '" + bg + "'");

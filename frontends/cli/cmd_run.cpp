@@ -1,43 +1,155 @@
 // `svgmotion run`: the whole method in one command, each stage through its plugin, in a run
 // directory that keeps every intermediate and skips what is up to date.
+//
+// Every setting is checked before the first stage (pipeline/config_check.h). Values given as
+// options (--input, --prompt, -o, --device) are set as plain strings, never pasted into YAML,
+// so quotes and backslashes in a prompt or path reach the stages as typed. Plugins' progress
+// is drawn as a bar on a terminal and as a line every few seconds otherwise; Ctrl-C asks the
+// running stage to stop (the fitter writes its state so far and resumes on the next run), then
+// one line says what the run directory holds.
+#include <unistd.h>
+
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "pipeline/config.h"
+#include "pipeline/config_check.h"
 #include "pipeline/pipeline.h"
 #include "pipeline/plugin_host.h"
 #include "svgmotion/error.h"
 
 namespace svgm::cli {
 
+namespace fs = std::filesystem;
+
+namespace {
+
+volatile std::sig_atomic_t g_interrupted = 0;
+extern "C" void on_run_sigint(int) {
+  g_interrupted = 1;
+  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C stops at once
+}
+
+bool looks_like_key(const std::string& s) {
+  if (s.find('.') == std::string::npos || s.ends_with(".yaml") || s.ends_with(".yml")) return false;
+  for (char c : s)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.')) return false;
+  return true;
+}
+
+// Progress of the running stage: a bar redrawn in place on a terminal, a line every 5 s in a log.
+class ProgressView {
+ public:
+  explicit ProgressView(bool quiet) : quiet_(quiet), tty_(::isatty(2) != 0) {}
+  void stage(const std::string& name) {
+    end_line();
+    stage_ = name;
+    last_ = std::chrono::steady_clock::now();
+    if (!quiet_) std::fprintf(stderr, "run: %s ...\n", name.c_str());
+  }
+  void update(double f, const std::string& note) {
+    if (quiet_) return;
+    const auto now = std::chrono::steady_clock::now();
+    f = std::clamp(f, 0.0, 1.0);
+    if (tty_) {
+      if (now - last_ < std::chrono::milliseconds(200) && f < 1) return;
+      constexpr int kWidth = 24;
+      const int filled = static_cast<int>(f * kWidth + 0.5);
+      std::fprintf(stderr, "\r  [%.*s%*s] %3.0f%%  %-60.60s", filled, "########################",
+                   kWidth - filled, "", 100 * f, note.c_str());
+      drawn_ = true;
+    } else {
+      if (now - last_ < std::chrono::seconds(5)) return;
+      std::fprintf(stderr, "run: %s %3.0f%%  %s\n", stage_.c_str(), 100 * f, note.c_str());
+    }
+    last_ = now;
+  }
+  void end_line() {
+    if (drawn_) std::fputc('\n', stderr);
+    drawn_ = false;
+  }
+
+ private:
+  bool quiet_, tty_, drawn_ = false;
+  std::string stage_;
+  std::chrono::steady_clock::time_point last_;
+};
+
+// What the run directory holds now, for the line after a stop.
+std::string outputs_in(const fs::path& dir) {
+  std::string list;
+  for (const char* f : {"grouped.svg", "recolored.png", "candidates", "target.mp4", "layered.svg", "tracks.json",
+                        "animation.svg", "animation.failed.svg", "preview.mp4", "fit.json", "checkpoint.bin"}) {
+    std::error_code ec;
+    if (fs::exists(dir / f, ec)) list += (list.empty() ? "" : ", ") + std::string(f);
+  }
+  return list.empty() ? "nothing yet" : list;
+}
+
+}  // namespace
+
 int cmd_run(const std::vector<std::string>& argv) {
   const Args a = parse_args("run", argv, {"--input", "--prompt", "-o", "--output", "--from", "--device"},
                             {"--quiet"});
   // Positionals: an optional CONFIG.yaml first, then key.path=value overrides.
-  std::optional<std::filesystem::path> file;
+  std::optional<fs::path> file;
   std::vector<std::string> overrides;
   for (const std::string& p : a.positional) {
-    if (p.find('=') != std::string::npos) overrides.push_back(p);
-    else if (!file) file = p;
-    else throw Error("run: unexpected argument '" + p + "' (one config file, then key.path=value)");
+    if (p.find('=') != std::string::npos) {
+      overrides.push_back(p);
+    } else if (!file) {
+      std::error_code ec;
+      if (!fs::exists(p, ec) && looks_like_key(p))
+        throw Error("run: '" + p + "' is not a config file; a setting needs a value: " + p + "=VALUE");
+      if (fs::is_directory(p, ec)) throw Error(p + ": is a folder, not a config file");
+      file = p;
+    } else {
+      throw Error("run: unexpected argument '" + p + "' (one config file, then key.path=value)");
+    }
   }
-  if (const auto v = a.get("--input")) overrides.push_back("input=\"" + *v + "\"");
-  if (const auto v = a.get("--prompt")) overrides.push_back("prompt=\"" + *v + "\"");
-  if (const auto v = a.get("-o") ? a.get("-o") : a.get("--output")) overrides.push_back("output=\"" + *v + "\"");
-  if (const auto v = a.get("--device")) overrides.push_back("device=\"" + *v + "\"");
-  const nlohmann::json config = load_config(file, overrides);
-  std::vector<std::filesystem::path> extra;
+  nlohmann::json config = load_config(file, overrides);
+  if (const auto v = a.get("--input")) config["input"] = *v;
+  if (const auto v = a.get("--prompt")) config["prompt"] = *v;
+  if (const auto v = a.get("-o") ? a.get("-o") : a.get("--output")) config["output"] = *v;
+  if (const auto v = a.get("--device")) config["device"] = *v;
+  if (const auto from = a.get("--from")) {
+    const auto& st = stage_names();
+    if (std::find(st.begin(), st.end(), *from) == st.end())
+      throw Error("--from " + *from + ": no such stage (stages: grouper, recolorer, video, ranker, layers, tracker, fitter)");
+  }
+  std::vector<fs::path> extra;
   for (const auto& p : config["plugin_paths"]) extra.push_back(p.get<std::string>());
-  const PluginHost host(plugin_search_path(extra));
+  PluginHost host(plugin_search_path(extra));
+  check_config(config, host);
+
+  ProgressView view(a.has("--quiet"));
+  host.set_hooks({[&view](double f, const std::string& note) { view.update(f, note); },
+                  [] { return g_interrupted != 0; }});
+  const fs::path dir = fs::absolute(config.value("output", "run"));
+  g_interrupted = 0;
+  std::signal(SIGINT, on_run_sigint);
   const auto t0 = std::chrono::steady_clock::now();
-  const auto reports = run_pipeline(config, host, a.get("--from"), [&](const std::string& stage) {
-    if (!a.has("--quiet")) std::fprintf(stderr, "run: %s ...\n", stage.c_str());
-  });
+  std::vector<StageReport> reports;
+  try {
+    reports = run_pipeline(config, host, a.get("--from"), [&](const std::string& stage) { view.stage(stage); });
+    view.end_line();
+  } catch (const Error&) {
+    view.end_line();
+    std::signal(SIGINT, SIG_DFL);
+    if (g_interrupted) {
+      std::fprintf(stderr, "svgmotion: interrupted; %s holds %s (run the same command again to continue)\n",
+                   dir.c_str(), outputs_in(dir).c_str());
+      return 130;
+    }
+    throw;
+  }
+  std::signal(SIGINT, SIG_DFL);
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const std::filesystem::path dir = std::filesystem::absolute(config.value("output", "run"));
   bool all_skipped = true;
   for (const auto& r : reports) {
     all_skipped = all_skipped && r.skipped;

@@ -1,7 +1,8 @@
 // The svgmotion command-line tool: dispatches subcommands and turns every error into one line.
 //
 // Errors (svgm::Error and anything else) print "svgmotion: <message>" on stderr and exit 1;
-// usage mistakes exit 2. Nothing is written by a command that fails (outputs are atomic).
+// usage mistakes exit 2; a result that must not be trusted (svgm::Rejected) exits 3 or 4.
+// `svgmotion CMD --help` prints the command's options. Nothing is written by a command that fails (outputs are atomic).
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -13,24 +14,112 @@
 
 namespace {
 
-constexpr const char* kUsage = R"(svgmotion: an editable animated SVG from a static SVG and a motion
+constexpr const char* kUsage = R"(svgmotion )" SVGM_VERSION R"(: an editable animated SVG from a static SVG and a motion
 
 usage:
+  svgmotion run [CONFIG.yaml] [--input X.svg] [--prompt "..."] [-o RUN_DIR] [--from STAGE]
+                [--device D] [--quiet] [key.path=value ...]
+  svgmotion fit IN.svg --target VIDEO|FRAMES_DIR -o OUT_DIR [options]
   svgmotion render IN.svg -o OUT.png [--size W] [--background white|transparent] [--time T]
                    [--device D] [--strict]
-  svgmotion fit IN.svg --target VIDEO|FRAMES_DIR -o OUT_DIR [--iterations N] [--keyframes K]
-                [--size N] [--palette P.json] [--resume] [--no-track] [--device D]
-  svgmotion run [CONFIG.yaml] [--input X.svg] [--prompt "..."] [-o RUN_DIR] [--from STAGE] [key.path=value ...]
   svgmotion plugins
   svgmotion devices
   svgmotion palette N
-  svgmotion bench render IN.svg [--frames K] [--size N] [--repeat R] [--json] [--device D]
-  svgmotion bench raster IN.svg [--frames K] [--size N] [--repeat R] [--json] [--device D]
+  svgmotion bench render|raster IN.svg [--frames K] [--size N] [--repeat R] [--json] [--profile]
+                   [--device D]
   svgmotion bench raster --scaling [--json]
-  svgmotion help
+  svgmotion help | --version | CMD --help
 
 --device picks the OpenCL device: auto (default), cpu, gpu, or part of its name.
+Exit status: 0 done, 1 error (one line says what), 2 usage, 3 the fit was rejected by the
+result gate (animation.failed.svg written instead of animation.svg), 4 every candidate video
+was flagged by the ranker (run stopped before fitting), 130 interrupted.
 )";
+
+struct CommandHelp {
+  const char* name;
+  const char* text;
+};
+
+constexpr CommandHelp kHelp[] = {
+    {"run", R"(usage: svgmotion run [CONFIG.yaml] [options] [key.path=value ...]
+
+The whole pipeline in a run directory: grouper, recolorer, video, ranker, layers, tracker,
+fitter, each a plugin named in the config (configs/default.yaml lists every key). Stages whose
+plugin, settings and inputs are unchanged are skipped. Every setting is checked before the
+first stage runs.
+
+  CONFIG.yaml        a config merged over the defaults (configs/default.yaml)
+  --input X.svg      the SVG to animate (config key: input)
+  --prompt TEXT      the motion in words (prompt)
+  -o, --output DIR   the run directory (output; default: run)
+  --from STAGE       run STAGE and everything after it even if up to date
+  --device D         OpenCL device: auto, cpu, gpu or part of a name (device)
+  --quiet            no progress on stderr
+  key.path=value     any setting, e.g. stages.fitter.iterations=500 stages.video.plugin=file
+
+Writes animation.svg (your own document, only `d` animated), preview.mp4, fit.json and every
+intermediate. Exit status 3: the fit was rejected (animation.failed.svg, reasons in fit.json);
+4: every candidate video was flagged (set stages.ranker.accept_flagged=true to fit anyway);
+130: interrupted (run again to continue).
+)"},
+    {"fit", R"(usage: svgmotion fit IN.svg --target VIDEO|FRAMES_DIR -o OUT_DIR [options]
+
+Fits the SVG's paths to a target video (mp4, webm, avi, mov, or a folder of numbered PNGs).
+
+  --target SOURCE        the target video or folder of PNG frames (required)
+  -o, --output DIR       where animation.svg, preview.mp4, fit.json, checkpoint.bin go (required)
+  --iterations N         optimiser iterations (default 2000)
+  --keyframes K          keyframes sampled from the target (default 15)
+  --size N               fitting width in pixels (default 256; 32..4096)
+  --palette P.json       the colour each path id has in the target (from the recolorer)
+  --mask-threshold T     foreground when the darkest channel is below T (default 0.97)
+  --loop MODE            loop (default; seamless when the target returns to its start),
+                         once, or mirror
+  --no-gate              write animation.svg even when the result gate rejects the fit
+  --resume               continue from OUT_DIR/checkpoint.bin
+  --no-track             no optical-flow warm start of new keyframes
+  --device D             OpenCL device
+  --quiet                no progress line
+
+Exit status 3 when the result gate rejects the fit (animation.failed.svg is written instead of
+animation.svg; fit.json has the reasons); 130 after Ctrl-C (the result so far is written).
+)"},
+    {"render", R"(usage: svgmotion render IN.svg -o OUT.png [options]
+
+Renders the SVG (an animated one at --time T) to a PNG; the format follows OUT's extension
+(only .png can be written) and OUT may not be the input.
+
+  -o, --output OUT.png     the image to write (required)
+  --size W                 width in pixels (default: the SVG's own; height by its aspect)
+  --background B           white (default) or transparent
+  --time T                 seconds into the SMIL animation
+  --device D               OpenCL device
+  --strict                 unsupported content is an error, not a warning
+)"},
+    {"plugins", "usage: svgmotion plugins\n\nLists the stage plugins found (stage, name, version, path) and every\nrefused module with its reason.\n"},
+    {"devices", "usage: svgmotion devices\n\nLists the OpenCL devices; * marks the one --device auto picks.\n"},
+    {"palette", "usage: svgmotion palette N\n\nPrints N maximally distinct colours (white reserved), one #rrggbb per line.\n"},
+    {"bench", R"(usage: svgmotion bench render|raster IN.svg [options]
+       svgmotion bench raster --scaling [--json]
+
+  render        median time per frame of K frames rendered in one batch
+  raster        one differentiable iteration (forward, loss, backward) over K frames
+  --frames K    frames per batch (default 15)
+  --size N      width in pixels (default 256)
+  --repeat R    repetitions (the median is reported)
+  --json        one JSON object (ms_per_frame / forward_ms, backward_ms, total_ms, peak_rss_mb, device)
+  --profile     per-kernel times
+  --scaling     sweep paths, size and frames on procedural scenes (raster)
+  --device D    OpenCL device
+)"},
+};
+
+const char* command_help(const std::string& cmd) {
+  for (const CommandHelp& h : kHelp)
+    if (cmd == h.name) return h.text;
+  return nullptr;
+}
 
 }  // namespace
 
@@ -40,12 +129,26 @@ int main(int argc, char** argv) {
   setenv("OPENCV_LOG_LEVEL", "SILENT", 0);
   setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);  // AV_LOG_QUIET
   std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || (args[0] == "help" && args.size() == 1)) {
     std::fputs(kUsage, args.empty() ? stderr : stdout);
     return args.empty() ? 2 : 0;
   }
+  if (args[0] == "--version" || args[0] == "version") {
+    std::printf("svgmotion %s\n", SVGM_VERSION);
+    return 0;
+  }
+  if (args[0] == "help") {  // svgmotion help CMD
+    if (const char* h = command_help(args[1])) return std::fputs(h, stdout), 0;
+    std::fprintf(stderr, "svgmotion: unknown command '%s' (try svgmotion help)\n", args[1].c_str());
+    return 2;
+  }
   const std::string cmd = args[0];
   args.erase(args.begin());
+  for (const std::string& a : args)
+    if (a == "--help" || a == "-h") {
+      if (const char* h = command_help(cmd)) return std::fputs(h, stdout), 0;
+      break;
+    }
   try {
     if (cmd == "render") return svgm::cli::cmd_render(args);
     if (cmd == "devices") return svgm::cli::cmd_devices(args);
@@ -56,6 +159,9 @@ int main(int argc, char** argv) {
     if (cmd == "plugins") return svgm::cli::cmd_plugins(args);
     std::fprintf(stderr, "svgmotion: unknown command '%s' (try svgmotion help)\n", cmd.c_str());
     return 2;
+  } catch (const svgm::Rejected& e) {
+    std::fprintf(stderr, "svgmotion: %s\n", e.what());
+    return e.exit_status();
   } catch (const svgm::Error& e) {
     std::fprintf(stderr, "svgmotion: %s\n", e.what());
     return 1;

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "svgmotion/error.h"
 #include "svgmotion/plugin.h"
 
 namespace svgm::plugin {
@@ -30,6 +31,8 @@ inline int call(StageFn fn, const svgm_host* host, const char* request, char** r
     r["ok"] = true;
     *response = copy_string(r.dump());
     return 0;
+  } catch (const svgm::Rejected& e) {  // a result that must not be trusted (svgmotion/error.h)
+    *response = copy_string(json{{"ok", false}, {"error", e.what()}, {"rejected", e.exit_status()}}.dump());
   } catch (const std::exception& e) {
     *response = copy_string(json{{"ok", false}, {"error", e.what()}}.dump());
   } catch (...) {

@@ -1,7 +1,10 @@
 // fitter `opencl`: the differentiable fitter (engine/src/fit) behind the plugin interface. Fits
-// layered.svg to target.mp4 (in the palette's colours, or the SVG's own for a user's video, see
-// stages.fitter.colors) and writes animation.svg (the layered document in its original
-// colours), preview.mp4, fit.json and checkpoint.bin.
+// layered.svg (the working copy) to target.mp4 (in the palette's colours, or the SVG's own for a
+// user's video, see stages.fitter.colors) and writes animation.svg into the user's own document
+// (input.svg: every element, id, style, gradient, comment and root attribute kept, only `d`
+// animated, the layers stage's paint order applied by moving just the elements it must),
+// preview.mp4, fit.json and checkpoint.bin. A fit the result gate rejects answers
+// "rejected": 3 (svgm::Rejected) with animation.failed.svg written instead.
 #include "common/plugin_glue.h"
 #include "fit/fit_job.h"
 
@@ -12,7 +15,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   const nlohmann::json& c = req.at("config");
   svgm::FitJob job;
   job.svg = P::file(req, "inputs", "svg");
-  job.export_into = job.svg;
+  job.export_into = P::file(req, "inputs", "original");
   job.target = P::file(req, "inputs", "target");
   // Colours to fit in: the palette's when the target video was made from the recoloured image
   // (generators), the SVG's own when it is the user's video (`video: file`), unless set.
@@ -29,8 +32,13 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   job.width = c.value("size", 256);
   job.mask_threshold = c.value("mask_threshold", 0.97);
   job.device = req.value("device", "auto");
+  job.loop = svgm::parse_loop_mode(c.value("loop", "loop"), "stages.fitter.loop");
+  job.gate = c.value("gate", true);
   job.quiet = true;
-  const int rc = svgm::run_fit_job(job, [host] { return host->cancelled(host) != 0; });
+  job.progress = [host](double f, const std::string& note) {
+    if (host && host->progress) host->progress(host, f, note.c_str());
+  };
+  const int rc = svgm::run_fit_job(job, [host] { return host && host->cancelled && host->cancelled(host) != 0; });
   if (rc != 0) throw std::runtime_error("fit interrupted");
   return {{"message", "fitted"}};
 }

@@ -5,7 +5,8 @@
 // the per-pair evidence, and the fallback taken for cyclic evidence, if any).
 //
 // Config (stages.layers, or stages.layers.options): keyframes (15), size (256, analysis width
-// in pixels), color_threshold (0.15), min_pixels (30), min_score (0.3).
+// in pixels), color_threshold (0.15), min_pixels (30), min_score (0.3), min_evidence_share (0.1),
+// max_hidden_share (0.5).
 #include <string>
 
 #include "common/plugin_glue.h"
@@ -31,11 +32,15 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   o.color_threshold = setting(config, "color_threshold", o.color_threshold);
   o.min_pixels = setting(config, "min_pixels", o.min_pixels);
   o.min_score = setting(config, "min_score", o.min_score);
+  o.min_evidence_share = setting(config, "min_evidence_share", o.min_evidence_share);
+  o.max_hidden_share = setting(config, "max_hidden_share", o.max_hidden_share);
+  std::optional<std::filesystem::path> original;
+  if (req.at("inputs").contains("original")) original = file(req, "inputs", "original");
   if (host && host->progress) host->progress(host, 0.0, "reading the target");
   const svgm::LayerResult r =
       svgm::run_layers(file(req, "inputs", "svg"), file(req, "inputs", "target"),
                        file(req, "inputs", "palette"), file(req, "outputs", "svg"),
-                       file(req, "outputs", "layers"), o);
+                       file(req, "outputs", "layers"), o, original);
   if (host && host->progress) host->progress(host, 1.0, "done");
   int used = 0;
   for (const svgm::LayerPair& p : r.pairs) used += p.used ? 1 : 0;

@@ -5,11 +5,15 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "fit/checkpoint.h"
+#include "fit/document_order.h"
+#include "fit/result_gate.h"
 #include "fit/palette.h"
 #include "fit/preview_video.h"
 #include "fit/smil_writer.h"
@@ -36,6 +40,29 @@ RgbaImage render_panel(const std::vector<float>& renders, int k, int w, int h) {
   return rgba8_image(rgb.data(), w, h);
 }
 
+// Does the target end where it began? The last keyframe against the first, compared with
+// the typical change from one keyframe to the next: a quarter of it or less is "the same pose".
+bool returns_to_start(const TargetFrames& t) {
+  const int K = t.keyframes;
+  if (K < 3 || t.source_index.front() != 0 || t.source_index.back() != t.source_frames - 1) return false;
+  const size_t n = static_cast<size_t>(t.width) * t.height * 4;
+  auto diff = [&](int a, int b) {
+    double d = 0;
+    for (size_t i = 0; i < n; ++i) d += std::fabs(t.rgba[a * n + i] - t.rgba[b * n + i]);
+    return d / n;
+  };
+  double step = 0;
+  for (int k = 1; k < K; ++k) step += diff(k - 1, k);
+  step /= K - 1;
+  return diff(0, K - 1) <= 0.25 * step;
+}
+
+std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 0) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, f, a, b, c, d);
+  return buf;
+}
+
 }  // namespace
 
 int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
@@ -56,6 +83,21 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   to.white_threshold = job.mask_threshold;
   if (!(to.white_threshold > 0 && to.white_threshold <= 1))
     throw Error("the mask threshold must be in (0, 1]");
+  // The document written into, and how the fitted paths map onto it, checked before fitting.
+  const fs::path into = job.export_into.value_or(input);
+  std::optional<Scene> export_scene;
+  ExportMap map;
+  if (job.export_into) {
+    export_scene = read_svg_file(into);
+    const std::vector<int> match = match_paths(scene, *export_scene, input.string());
+    map.fitted_of.assign(export_scene->paths.size(), -1);
+    bool reordered = false;
+    for (size_t j = 0; j < match.size(); ++j) {
+      map.fitted_of[static_cast<size_t>(match[j])] = static_cast<int>(j);
+      reordered = reordered || match[j] != static_cast<int>(j);
+    }
+    if (reordered) map.order = match;
+  }
   const TargetFrames target = load_target(*target_path, size.width, size.height, to);
 
   std::error_code ec;
@@ -80,24 +122,58 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     std::fprintf(stderr, "svgmotion: resuming at iteration %d\n", fitter.iteration());
   }
 
-  const bool tty = ::isatty(2) && !job.quiet;
+  const bool tty = ::isatty(2) && !job.quiet && !job.progress;
   const auto t0 = std::chrono::steady_clock::now();
   const int start = fitter.iteration();
   auto last_print = t0;
   LossTerms loss;
   bool stopped = false;
+  // Divergence watch: the best per-keyframe loss since the last activation, a snapshot of the
+  // last good state (taken every kSnapshotEvery iterations while the loss is sane).
+  constexpr int kSnapshotEvery = 25, kMaxRollbacks = 4;
+  constexpr float kDivergence = 10;
+  float best = std::numeric_limits<float>::infinity();
+  int best_active = 0, rollbacks = 0;
+  FitState good = fitter.state();
+  std::vector<std::string> rollback_notes;
   while (!fitter.done() && !(stopped = interrupted())) {
     loss = fitter.step();
     const int it = fitter.iteration();
+    const float per = loss.total() / std::max(1, fitter.active_keyframes());
+    if (fitter.active_keyframes() != best_active) {
+      best_active = fitter.active_keyframes();
+      best = std::numeric_limits<float>::infinity();
+    }
+    const bool diverged = !std::isfinite(per) || (std::isfinite(best) && per > kDivergence * best && per > 1e-3f);
+    if (diverged && rollbacks < kMaxRollbacks) {
+      ++rollbacks;
+      rollback_notes.push_back(fmt("iteration %.0f: loss %.4g per keyframe (best %.4g); rolled back to iteration %.0f at half the step size",
+                                   it, per, best, good.iteration));
+      std::fprintf(stderr, "svgmotion: warning: the fit diverged at %s\n", rollback_notes.back().c_str());
+      fitter.restore(good);
+      fitter.scale_learning_rates(0.5f);
+      best_active = fitter.active_keyframes();
+      best = std::numeric_limits<float>::infinity();
+      continue;
+    }
+    if (std::isfinite(per)) best = std::min(best, per);
+    if (it % kSnapshotEvery == 0 && std::isfinite(per) && per <= 2 * best) good = fitter.state();
     const auto now = std::chrono::steady_clock::now();
     const double elapsed = std::chrono::duration<double>(now - t0).count();
     const double eta = elapsed / std::max(1, it - start) * (fo.iterations - it);
-    if (tty && (now - last_print > std::chrono::milliseconds(200) || fitter.done())) {
+    const bool due = now - last_print > std::chrono::milliseconds(job.progress ? 500 : 200) || fitter.done();
+    if (job.progress && due) {
+      job.progress(static_cast<double>(it) / fo.iterations,
+                   fmt("iteration %.0f/%.0f, loss %.5f, keyframes %.0f", it, fo.iterations, loss.total(),
+                       fitter.active_keyframes()) + "/" + std::to_string(fitter.keyframes()) +
+                       fmt(", ETA %.0f s", eta));
+      last_print = now;
+    } else if (tty && due) {
       std::fprintf(stderr, "\rfit: iteration %d/%d  loss %.5f  keyframes %d/%d  %.0fs, ETA %.0fs   ",
                    it, fo.iterations, loss.total(), fitter.active_keyframes(), fitter.keyframes(),
                    elapsed, eta);
       last_print = now;
-    } else if (!tty && !job.quiet && (it % 100 == 0 || fitter.done())) {
+    } else if (!tty && !job.quiet && !job.progress && (it % 100 == 0 || fitter.done())) {
       std::fprintf(stderr, "fit: iteration %d/%d loss %.5f keyframes %d/%d elapsed %.1fs eta %.0fs\n",
                    it, fo.iterations, loss.total(), fitter.active_keyframes(), fitter.keyframes(),
                    elapsed, eta);
@@ -110,16 +186,29 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
 
   // Outputs: the animation in the original colours, the preview, a small report.
   const auto points = fitter.keyframe_points_canvas();
+  const auto renders = fitter.render_keyframes();
   AnimationTiming timing;
   timing.keyframes = fitter.keyframes();
-  timing.duration_s = target.source_frames / std::max(1e-6, target.fps);
-  const fs::path into = job.export_into.value_or(input);
-  const Scene export_scene = job.export_into ? read_svg_file(into) : scene;
-  if (export_scene.paths.size() != scene.paths.size())
-    throw Error(into.string() + ": does not hold the fitted SVG's paths");
-  for (const auto& w : write_animation_svg(into, export_scene, fitter.raster_plan(), points, timing, out / "animation.svg"))
+  const int N = std::max(2, target.source_frames);
+  timing.duration_s = (N - 1) / std::max(1e-6, target.fps);
+  for (int k = 0; k < timing.keyframes; ++k)
+    timing.key_times.push_back(static_cast<double>(target.source_index[static_cast<size_t>(k)]) / (N - 1));
+  timing.key_times.front() = 0;
+  timing.key_times.back() = 1;
+  timing.loop = job.loop;
+  timing.close_loop = job.loop == LoopMode::Loop && returns_to_start(target);
+
+  // The gate judges a finished fit; an interrupted one is written as it stands (resumable).
+  const GateOptions gate_options;
+  const GateVerdict verdict = judge_fit(target, renders, points, fitter.raster_plan(), fit_scene,
+                                        size.view, gate_options);
+  const bool rejected = !stopped && !verdict.passed;
+  const fs::path anim = out / (rejected && job.gate ? "animation.failed.svg" : "animation.svg");
+  if (rejected && job.gate) fs::remove(out / "animation.svg", ec);  // never leave a stale success
+  else fs::remove(out / "animation.failed.svg", ec);
+  for (const auto& w : write_animation_svg(into, export_scene ? *export_scene : scene, fitter.raster_plan(), points,
+                                           timing, anim, export_scene ? &map : nullptr))
     std::fprintf(stderr, "svgmotion: warning: %s\n", w.c_str());
-  const auto renders = fitter.render_keyframes();
   const int active = fitter.active_keyframes();
   const int W = size.width, H = size.height;
   write_preview_video(out / "preview.mp4", active, 2,
@@ -128,24 +217,43 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                                           : render_panel(renders, k, W, H);
                       },
                       std::max(1.0, (timing.keyframes - 1) / timing.duration_s));
-  nlohmann::json report = {{"svg", input.string()},
+  const char* status = stopped ? "interrupted" : rejected ? "rejected" : "ok";
+  nlohmann::json report = {{"status", status},
+                           {"svg", input.string()},
                            {"target", *target_path},
+                           {"animation", anim.filename().string()},
                            {"iterations", fitter.iteration()},
                            {"keyframes", fitter.keyframes()},
+                           {"key_times", timing.key_times},
+                           {"duration_s", timing.duration_s},
+                           {"loop", loop_mode_name(timing.loop)},
+                           {"closed_loop", timing.close_loop},
                            {"size", {W, H}},
                            {"seconds", seconds},
                            {"loss", {{"total", loss.total()}, {"image", loss.image}, {"smoothness", loss.smooth},
                                      {"g1", loss.g1}, {"containment", loss.contain}}},
                            {"keyframe_image_loss", fitter.keyframe_losses()},
+                           {"rollbacks", rollback_notes},
+                           {"gate", gate_json(verdict, gate_options)},
                            {"device", rt.info().name}};
+  if (!map.order.empty()) report["paint_order_applied"] = true;
   write_file_atomic(out / "fit.json", report.dump(2) + "\n");
   if (stopped) {
     std::fprintf(stderr, "svgmotion: interrupted at iteration %d; wrote %s (continue with --resume)\n",
-                 fitter.iteration(), (out / "animation.svg").c_str());
+                 fitter.iteration(), anim.c_str());
     return 130;
   }
-  std::fprintf(stderr, "svgmotion: fitted %d keyframes in %.1fs; wrote %s, preview.mp4, fit.json\n",
-               fitter.keyframes(), seconds, (out / "animation.svg").c_str());
+  if (rejected) {
+    std::string why = verdict.reasons.front();
+    if (verdict.reasons.size() > 1) why += " (and " + std::to_string(verdict.reasons.size() - 1) + " more in fit.json)";
+    if (job.gate)
+      throw Rejected("the fit was rejected: " + why + "; wrote " + anim.string() + " for inspection, no animation.svg",
+                     Rejected::kFitRejected);
+    std::fprintf(stderr, "svgmotion: warning: the result gate would reject this fit: %s\n", why.c_str());
+  }
+  if (!job.quiet)
+    std::fprintf(stderr, "svgmotion: fitted %d keyframes in %.1fs; wrote %s, preview.mp4, fit.json\n",
+                 fitter.keyframes(), seconds, anim.c_str());
   return 0;
 }
 

@@ -1,7 +1,18 @@
 // One fit from files to files: the body of `svgmotion fit` and of the opencl fitter plugin.
 //
-// Reads the SVG (and palette), loads the target, fits with progress on stderr and checkpoints,
-// and writes animation.svg, preview.mp4, fit.json and checkpoint.bin into the output folder.
+// Reads the SVG (and palette), loads the target, fits with progress and checkpoints, and writes
+// animation.svg, preview.mp4, fit.json and checkpoint.bin into the output folder.
+//
+// Trust: a loss that diverges (not finite, or ten times the best seen since the last keyframe
+// activation) rolls back to the last good state and goes on at half the learning rates (at most
+// four times). The finished fit then passes the result gate (result_gate.h) or is rejected: it
+// is written as animation.failed.svg (no animation.svg; a stale one is removed), fit.json says
+// "status": "rejected" with the reasons, and run_fit_job throws svgm::Rejected.
+//
+// Timing: keyframe k is written at the time of the target frame it was fitted to (keyTimes =
+// source_index / (N-1), one pass = (N-1) / fps), so frames between keyframes are
+// interpolated at the right moments; a target whose last frame returns to its first closes the
+// loop (the last keyframe is written as the first).
 #pragma once
 
 #include <filesystem>
@@ -10,6 +21,7 @@
 #include <string>
 
 #include "fit/fitter.h"
+#include "fit/smil_writer.h"
 
 namespace svgm {
 
@@ -17,9 +29,15 @@ struct FitJob {
   std::filesystem::path svg, target, out;
   std::optional<std::filesystem::path> palette;
   std::optional<std::filesystem::path> tracks;  // tracks.json of the tracker stage
-  // The document the animation is written into (default: svg); the fitter plugin fits the
-  // layered SVG and exports into it.
+  // The document the animation is written into (default: svg). The fitter plugin fits the
+  // pipeline's working copy (layered.svg) and exports into the user's own input.svg: paths are
+  // matched by id and the working copy's paint order is applied (document_order.h).
   std::optional<std::filesystem::path> export_into;
+  LoopMode loop = LoopMode::Loop;
+  bool gate = true;  // false: write animation.svg even when the result gate rejects the fit
+  // Progress: when set, called about twice a second with the fraction done and a short note,
+  // instead of the progress line on stderr.
+  std::function<void(double fraction, const std::string& note)> progress;
   FitOptions options;
   int keyframes = 15;
   int width = 256;
@@ -30,7 +48,7 @@ struct FitJob {
 };
 
 // Runs the fit; returns 0 when done, 130 when `interrupted()` stopped it early (the outputs are
-// written either way). Throws svgm::Error on bad input.
+// written either way). Throws svgm::Error on bad input, svgm::Rejected when the gate rejects.
 int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted);
 
 }  // namespace svgm

@@ -138,6 +138,12 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
 
 Fitter::~Fitter() = default;
 
+void Fitter::scale_learning_rates(float s) {
+  lr_scale_ *= s;
+  k_adam_p_.setArg(7, opt_.lr_homography * lr_scale_);  // kernels/adam.cl: argument 7 is lr
+  k_adam_o_.setArg(7, opt_.lr_offsets * lr_scale_);
+}
+
 int Fitter::activation_iteration(int k) const {
   if (k <= 0 || K_ <= 1) return 0;
   const int interval = std::max(1, static_cast<int>(opt_.activation_share * opt_.iterations / (K_ - 1)));

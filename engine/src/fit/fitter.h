@@ -86,6 +86,9 @@ class Fitter {
 
   FitState state();
   void restore(const FitState& s);
+  // Multiplies both Adam learning rates by `s` from the next iteration on (the result gate's
+  // rollback retries a diverged stretch with smaller steps).
+  void scale_learning_rates(float s);
 
   // Keyframe-to-keyframe flow from the tracker stage (flow_tracks.h): flows[k] moves keyframe
   // k-1's points to k for the warm start, instead of tracking the fit's own render.
@@ -111,6 +114,7 @@ class Fitter {
   std::vector<FlowField> flows_;
   std::unique_ptr<ClRaster> raster_;
   int real_cps_ = 0;  // control points that are not padding
+  float lr_scale_ = 1;
  public:
   // Warm starts tried and kept so far (for reports and tests).
   int warm_starts_tried = 0, warm_starts_kept = 0;

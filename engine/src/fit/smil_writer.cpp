@@ -11,6 +11,7 @@
 #include <sstream>
 
 
+#include "fit/document_order.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -34,40 +35,55 @@ std::string_view local_name(const char* name) {
   return colon ? std::string_view(colon + 1) : std::string_view(name);
 }
 
-// Finds the element at a locator like "/svg/g[2]/rect[1]" (1-based among same-named
-// siblings, names without namespace prefixes).
-pugi::xml_node find_locator(pugi::xml_document& doc, const std::string& locator) {
-  pugi::xml_node node = doc;
-  std::string_view rest = locator;
-  while (!rest.empty()) {
-    if (rest.front() == '/') rest.remove_prefix(1);
-    const size_t slash = rest.find('/');
-    std::string_view part = rest.substr(0, slash);
-    rest = slash == std::string_view::npos ? std::string_view() : rest.substr(slash);
-    int index = 1;
-    std::string_view name = part;
-    if (const size_t br = part.find('['); br != std::string_view::npos) {
-      name = part.substr(0, br);
-      std::from_chars(part.data() + br + 1, part.data() + part.size() - 1, index);
+// pugixml keeps whitespace inside elements but not between the nodes before and after the
+// root (declaration, comments, doctype): put the user's own bytes back there, so the file
+// differs from theirs only inside the root element.
+std::string with_original_prolog(const fs::path& source, const std::string& saved) {
+  std::ifstream f(source, std::ios::binary);
+  const std::string orig((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  auto root_span = [](const std::string& text, size_t* begin, size_t* end) {
+    pugi::xml_document d;
+    if (!d.load_buffer(text.data(), text.size(), kKeepDocumentParse)) return false;
+    const pugi::xml_node r = d.document_element();
+    const ptrdiff_t at = r.offset_debug();
+    if (at < 1 || text[static_cast<size_t>(at) - 1] != '<') return false;
+    *begin = static_cast<size_t>(at) - 1;
+    // The root's end: after its closing tag (or "/>"), the last '>' before the epilogue's nodes.
+    size_t e = text.rfind("</");
+    const std::string name = r.name();
+    if (e != std::string::npos && text.compare(e + 2, name.size(), name) == 0) {
+      e = text.find('>', e);
+      if (e == std::string::npos) return false;
+      *end = e + 1;
+      return true;
     }
-    pugi::xml_node found;
-    int seen = 0;
-    for (pugi::xml_node c = node.first_child(); c; c = c.next_sibling()) {
-      if (c.type() == pugi::node_element && local_name(c.name()) == name && ++seen == index) {
-        found = c;
-        break;
-      }
-    }
-    if (!found) return {};
-    node = found;
-  }
-  return node;
+    return false;
+  };
+  size_t ob = 0, oe = 0, sb = 0, se = 0;
+  if (!root_span(orig, &ob, &oe) || !root_span(saved, &sb, &se)) return saved;
+  return orig.substr(0, ob) + saved.substr(sb, se - sb) + orig.substr(oe);
 }
 
 constexpr const char* kShapeGeometry[] = {"x", "y", "width", "height", "rx", "ry", "cx",
                                           "cy", "r", "x1", "y1", "x2", "y2", "points"};
 
 }  // namespace
+
+LoopMode parse_loop_mode(const std::string& text, const std::string& what) {
+  if (text == "loop") return LoopMode::Loop;
+  if (text == "once") return LoopMode::Once;
+  if (text == "mirror") return LoopMode::Mirror;
+  throw Error(what + " must be loop, once or mirror, not '" + text + "'");
+}
+
+const char* loop_mode_name(LoopMode m) {
+  switch (m) {
+    case LoopMode::Loop: return "loop";
+    case LoopMode::Once: return "once";
+    case LoopMode::Mirror: return "mirror";
+  }
+  return "loop";
+}
 
 std::string path_data(const Path& path, const double* cp, const Affine& to_local) {
   std::string d;
@@ -91,24 +107,50 @@ std::string path_data(const Path& path, const double* cp, const Affine& to_local
 std::vector<std::string> write_animation_svg(const fs::path& source, const Scene& scene,
                                              const RasterPlan& plan,
                                              const std::vector<double>& points,
-                                             const AnimationTiming& timing, const fs::path& out) {
+                                             const AnimationTiming& timing, const fs::path& out,
+                                             const ExportMap* map) {
   const int K = timing.keyframes;
   if (K < 1 || points.size() != static_cast<size_t>(K) * plan.n_cp * 2)
     throw Error("internal: animation points do not match the plan");
+  if (!timing.key_times.empty() && timing.key_times.size() != static_cast<size_t>(K))
+    throw Error("internal: key times do not match the keyframes");
+  if (map && map->fitted_of.size() != scene.paths.size())
+    throw Error("internal: export map does not match the document");
   pugi::xml_document doc;
-  const pugi::xml_parse_result parsed = doc.load_file(
-      source.c_str(), pugi::parse_default | pugi::parse_ws_pcdata | pugi::parse_declaration |
-                          pugi::parse_comments | pugi::parse_doctype | pugi::parse_pi);
+  const pugi::xml_parse_result parsed = doc.load_file(source.c_str(), kKeepDocumentParse);
   if (!parsed) throw Error(source.string() + ": cannot re-read for export: " + parsed.description());
 
-  std::vector<std::string> warnings;
-  std::string key_times;
+  // The pass as keyframe indices and times: 0..K-1 (mirror: and back to 0, at twice the
+  // duration). A closed loop writes keyframe 0's shape in the last keyframe's place.
+  std::vector<int> seq;
+  std::vector<double> times;
   for (int k = 0; k < K; ++k) {
-    if (k) key_times += ';';
-    append_number(key_times, K > 1 ? static_cast<double>(k) / (K - 1) : 0.0);
+    seq.push_back(timing.close_loop && K > 1 && k == K - 1 ? 0 : k);
+    times.push_back(!timing.key_times.empty() ? timing.key_times[static_cast<size_t>(k)]
+                    : K > 1 ? static_cast<double>(k) / (K - 1) : 0.0);
+  }
+  double duration = timing.duration_s;
+  if (timing.loop == LoopMode::Mirror && K > 1) {
+    for (int k = K - 2; k >= 0; --k) {
+      seq.push_back(seq[static_cast<size_t>(k)]);
+      times.push_back(2.0 - times[static_cast<size_t>(k)]);
+    }
+    for (double& t : times) t /= 2;
+    duration *= 2;
+  }
+  std::string key_times;
+  for (size_t i = 0; i < times.size(); ++i) {
+    if (i) key_times += ';';
+    // 1/10000 of a pass: finer than any frame, and the last is exactly 1 as SMIL requires.
+    const double t = i + 1 == times.size() ? 1.0 : std::round(times[i] * 1e4) / 1e4;
+    char buf[32];
+    auto [p, ec] = std::to_chars(buf, buf + sizeof buf, t);
+    key_times.append(buf, ec == std::errc() ? p : buf);
   }
   char dur[32];
-  std::snprintf(dur, sizeof dur, "%.3gs", timing.duration_s);
+  std::snprintf(dur, sizeof dur, "%.4gs", duration);
+
+  std::vector<std::string> warnings;
   int skipped_use = 0;
   // Find every element before changing any: turning a <rect> into a <path> renumbers the
   // locators of the paths after it.
@@ -119,7 +161,9 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
   }
   for (size_t p = 0; p < scene.paths.size(); ++p) {
     const Path& path = scene.paths[p];
-    if (plan.path_cp_count[p] == 0) continue;
+    const int f = map ? map->fitted_of[p] : static_cast<int>(p);
+    if (f < 0 || plan.path_cp_count[static_cast<size_t>(f)] == 0) continue;
+    const size_t first = plan.path_cp_first[static_cast<size_t>(f)];
     pugi::xml_node el = elements[p];
     const std::string_view tag = local_name(el.name());
     if (tag == "use") {
@@ -128,16 +172,16 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
     }
     const Affine to_local = path.to_canvas.inverse();
     std::string values;
-    for (int k = 0; k < K; ++k) {
-      if (k) values += ';';
-      values += path_data(path, &points[(static_cast<size_t>(k) * plan.n_cp + plan.path_cp_first[p]) * 2], to_local);
+    for (size_t i = 0; i < seq.size(); ++i) {
+      if (i) values += ';';
+      values += path_data(path, &points[(static_cast<size_t>(seq[i]) * plan.n_cp + first) * 2], to_local);
     }
     if (tag != "path") {
       // Only <path> has a `d`: turn the shape into one, keeping id, paint and transform.
       for (const char* a : kShapeGeometry) el.remove_attribute(a);
       const std::string prefix(el.name(), el.name() + (std::strlen(el.name()) - tag.size()));
       el.set_name((prefix + "path").c_str());
-      el.append_attribute("d") = path_data(path, &points[plan.path_cp_first[p] * 2], to_local).c_str();
+      el.append_attribute("d") = path_data(path, &points[first * 2], to_local).c_str();
     }
     for (pugi::xml_node a = el.child("animate"); a;) {  // replace an earlier fit's animation
       pugi::xml_node next = a.next_sibling("animate");
@@ -147,10 +191,19 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
     pugi::xml_node anim = el.append_child("animate");
     anim.append_attribute("attributeName") = "d";
     anim.append_attribute("dur") = dur;
-    anim.append_attribute("repeatCount") = "indefinite";
+    if (timing.loop == LoopMode::Once) {
+      anim.append_attribute("repeatCount") = "1";
+      anim.append_attribute("fill") = "freeze";
+    } else {
+      anim.append_attribute("repeatCount") = "indefinite";
+    }
     anim.append_attribute("calcMode") = "linear";
     anim.append_attribute("keyTimes") = key_times.c_str();
     anim.append_attribute("values") = values.c_str();
+  }
+  if (map && !map->order.empty()) {
+    const ReorderResult r = reorder_elements(elements, scene, map->order);
+    if (r.refused) throw Error(source.string() + ": cannot apply the paint order: " + *r.refused);
   }
   if (skipped_use)
     warnings.push_back(source.string() + ": " + std::to_string(skipped_use) +
@@ -160,7 +213,7 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
   // it, plus our <animate> children.
   std::ostringstream text;
   doc.save(text, "", pugi::format_raw | pugi::format_no_declaration, pugi::encoding_utf8);
-  write_file_atomic(out, text.str());
+  write_file_atomic(out, with_original_prolog(source, text.str()));
   return warnings;
 }
 

@@ -10,24 +10,49 @@
 
 namespace svgm {
 
+// How the animation repeats: `loop` (forever, from the start again), `once` (plays once and
+// holds the last pose) or `mirror` (forever, forwards then backwards).
+enum class LoopMode { Loop, Once, Mirror };
+// "loop" / "once" / "mirror" -> the mode; throws svgm::Error naming `what` otherwise.
+LoopMode parse_loop_mode(const std::string& text, const std::string& what);
+const char* loop_mode_name(LoopMode m);
+
 struct AnimationTiming {
   int keyframes = 0;
-  double duration_s = 2;  // one loop
+  // The time of each keyframe as a fraction of one pass, from 0 to 1 and increasing: the times
+  // of the target frames it was fitted to (empty: uniform k / (K-1)).
+  std::vector<double> key_times;
+  double duration_s = 2;  // one pass
+  LoopMode loop = LoopMode::Loop;
+  // The target ends where it began: the last keyframe is written as the first one, so the loop
+  // restarts without a jump.
+  bool close_loop = false;
+};
+
+// How the fitted paths map onto the document written into (when it is not the fitted SVG
+// itself): fitted_of[i] is the fitted path (index into the plan's paths) drawn by the
+// document's path i, or -1 to leave it static; `order`, when not empty, is the paint order to
+// apply (back to front, indices into the document's paths; see document_order.h).
+struct ExportMap {
+  std::vector<int> fitted_of;
+  std::vector<int> order;
 };
 
 // Writes `out`: the document `source` with every animatable path given
-// <animate attributeName="d" values="d_0;...;d_K-1" keyTimes="0;...;1" dur=".." calcMode="linear"
+// <animate attributeName="d" values="d_0;...;d_K-1" keyTimes=".." dur=".." calcMode="linear"
 // repeatCount="indefinite"/>, its keyframe shapes in the element's own coordinates (group
 // motion baked in, the element's and its ancestors' transforms untouched). Basic shapes (rect,
 // circle, ellipse, line, polyline, polygon) become <path> elements with the same id, paint and
 // transform, since only paths have a `d`. Shapes drawn through <use> are left static (they
 // are shared) and listed in the returned warnings. `points` holds K * plan.n_cp canvas-space
-// (x, y) pairs (Fitter::keyframe_points_canvas). Written to a temporary name and renamed.
+// (x, y) pairs (Fitter::keyframe_points_canvas). `scene` is `source` as read; without a `map`
+// it is also the fitted scene. Written to a temporary name and renamed.
 std::vector<std::string> write_animation_svg(const std::filesystem::path& source,
                                              const Scene& scene, const RasterPlan& plan,
                                              const std::vector<double>& points,
                                              const AnimationTiming& timing,
-                                             const std::filesystem::path& out);
+                                             const std::filesystem::path& out,
+                                             const ExportMap* map = nullptr);
 
 // The `d` of one path from its control points (canvas space), mapped into the element's
 // coordinates by `to_local`: "M x y C x y x y x y ... Z" per subpath.

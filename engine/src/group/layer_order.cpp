@@ -17,6 +17,7 @@
 #include <string_view>
 
 #include "fit/palette.h"
+#include "fit/document_order.h"
 #include "svgmotion/error.h"
 #include "svgmotion/render_size.h"
 #include "svgmotion/svg_reader.h"
@@ -272,7 +273,12 @@ std::vector<LayerPair> overlap_evidence(const std::vector<std::vector<uint8_t>>&
       p.b_pixels = counts[b * n + a];
       const long sum = p.a_pixels + p.b_pixels;
       p.score = sum > 0 ? static_cast<double>(p.a_pixels - p.b_pixels) / static_cast<double>(sum) : 0.0;
-      p.confident = sum >= options.min_pixels && std::fabs(p.score) > options.min_score;
+      // Strong evidence only: enough labelled pixels in absolute terms and as a share of what
+      // the overlap offers over the keyframes (dolphin2's eye: 8 pixels of a 15-keyframe
+      // overlap are noise, not occlusion).
+      const double offered = static_cast<double>(p.overlap_pixels) * std::max(1, keyframes);
+      p.confident = sum >= options.min_pixels && sum >= options.min_evidence_share * offered &&
+                    std::fabs(p.score) > options.min_score;
       pairs.push_back(p);
     }
   return pairs;
@@ -464,21 +470,42 @@ nlohmann::json layers_json(const LayerResult& r, const LayerOptions& o) {
           {"pairs", pairs},
           {"analysed", {{"keyframes", r.keyframes}, {"width", r.width}, {"height", r.height}}},
           {"fallback", r.fallback ? nlohmann::json(*r.fallback) : nlohmann::json(nullptr)},
+          {"document_moves", r.document_moves},
           {"method",
            "pair (a, b), a painted first originally: pixels of the rest-pose overlap of a and b "
            "labelled a / b (nearest palette colour) over the keyframes; score = (a - b) / (a + b), "
-           "> 0: a in front; used when a + b >= min_pixels and |score| > min_score; order = "
-           "stable topological sort, groups in a cycle keep their original relative order"},
+           "> 0: a in front; used when a + b >= min_pixels, a + b >= min_evidence_share * overlap * "
+           "keyframes and |score| > min_score; order = stable topological sort, groups in a cycle "
+           "keep their original relative order; a new order is kept only when no group loses more "
+           "than max_hidden_share of its visible rest-pose pixels and the user's document can take "
+           "it by moving elements within their parents (document_moves = elements moved)"},
           {"options",
            {{"keyframes", o.keyframes},
             {"width", o.width},
             {"color_threshold", o.color_threshold},
             {"min_pixels", o.min_pixels},
-            {"min_score", o.min_score}}}};
+            {"min_score", o.min_score},
+            {"min_evidence_share", o.min_evidence_share},
+            {"max_hidden_share", o.max_hidden_share}}}};
+}
+
+// Pixels of each group visible at rest (on top of every other group covering them) when the
+// groups are painted in `order` (back to front).
+std::vector<long> visible_at_rest(const std::vector<std::vector<uint8_t>>& cov, const std::vector<int>& order) {
+  std::vector<long> vis(cov.size(), 0);
+  if (cov.empty()) return vis;
+  for (size_t i = 0; i < cov[0].size(); ++i)
+    for (size_t t = order.size(); t-- > 0;)
+      if (cov[static_cast<size_t>(order[t])][i]) {
+        ++vis[static_cast<size_t>(order[t])];
+        break;
+      }
+  return vis;
 }
 
 LayerResult run_layers(const fs::path& svg, const fs::path& target, const fs::path& palette_file,
-                       const fs::path& out_svg, const fs::path& out_json, const LayerOptions& options) {
+                       const fs::path& out_svg, const fs::path& out_json, const LayerOptions& options,
+                       const std::optional<fs::path>& original) {
   const Scene scene = read_svg_file(svg);
   const std::map<std::string, Rgba> palette = read_palette(palette_file);
   const RenderSize size = render_size(scene, options.width);
@@ -488,18 +515,45 @@ LayerResult run_layers(const fs::path& svg, const fs::path& target, const fs::pa
   to.dilate_px = 0;  // labels, not a loose mask
   const TargetFrames frames = load_target(target, size.width, size.height, to);
   LayerResult r = compute_layer_order(scene, palette, frames, options);
+  auto keep_original = [&](const std::string& why) {
+    r.order.clear();
+    for (size_t i = 0; i < r.group_ids.size(); ++i) r.order.push_back(static_cast<int>(i));
+    r.changed = false;
+    for (LayerPair& p : r.pairs) p.used = false;
+    r.fallback = (r.fallback ? *r.fallback + "; " : std::string()) + why + ": original order kept";
+  };
+  // The paper's conservative fallback: a new order must not hide what the drawing shows at rest.
+  if (r.changed) {
+    const auto cov = group_coverage(scene, size.view, size.width, size.height);
+    std::vector<int> identity(r.group_ids.size());
+    for (size_t i = 0; i < identity.size(); ++i) identity[i] = static_cast<int>(i);
+    const auto before = visible_at_rest(cov, identity), after = visible_at_rest(cov, r.order);
+    for (size_t g = 0; g < before.size() && r.changed; ++g)
+      if (before[g] >= 4 && after[g] < (1 - options.max_hidden_share) * before[g])
+        keep_original("the new order would hide " + r.group_ids[g] + " at rest (" + std::to_string(after[g]) +
+                      " of its " + std::to_string(before[g]) + " visible pixels left)");
+  }
   bool written = false;
   if (r.changed) {
     std::vector<std::string> ids;
     for (int i : r.order) ids.push_back(r.group_ids[static_cast<size_t>(i)]);
     written = write_layered_svg(svg, ids, out_svg);
-    if (!written) {
-      r.order.clear();
-      for (size_t i = 0; i < r.group_ids.size(); ++i) r.order.push_back(static_cast<int>(i));
-      r.changed = false;
-      for (LayerPair& p : r.pairs) p.used = false;
-      r.fallback = (r.fallback ? *r.fallback + "; " : std::string()) +
-                   "the document's top-level elements do not match its groups: original order kept";
+    if (!written) keep_original("the document's top-level elements do not match its groups");
+  }
+  // The order must also be one the user's own document can take by moving elements within
+  // their parents (document_order.h); the fitter applies it there the same way.
+  if (written && original) {
+    const Scene orig = read_svg_file(*original);
+    const Scene layered = read_svg_file(out_svg);
+    std::ifstream f(*original, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    const ReorderResult rr = reorder_document_text(text, original->string(), orig,
+                                                   match_paths(layered, orig, out_svg.string()), nullptr);
+    if (rr.refused) {
+      keep_original("the new order cannot be applied to the original document (" + *rr.refused + ")");
+      written = false;
+    } else {
+      r.document_moves = rr.moved;
     }
   }
   if (!written) copy_atomic(svg, out_svg);

@@ -22,7 +22,9 @@
 //     (a strongly connected component of more than one group) are resolved conservatively: the
 //     edges inside the component are dropped (used = false) and its groups keep their original
 //     relative order; edges to groups outside it are kept. LayerResult::fallback says so.
-//  5. Output. layered.svg is grouped.svg with its top-level elements moved (see
+//  5. Conservative fallback: a new order is kept only if it hides no group at rest (see
+//     max_hidden_share) and the user's document can take it (see run_layers).
+//  6. Output. layered.svg is grouped.svg with its top-level elements moved (see
 //     write_layered_svg); when the order does not change it is a byte copy.
 #pragma once
 
@@ -44,6 +46,11 @@ struct LayerOptions {
   double color_threshold = 0.15; // max RGB distance of a pixel to its nearest palette colour
   long min_pixels = 30;          // min a_pixels + b_pixels (over all keyframes) for a pair
   double min_score = 0.3;        // a pair is used when |score| > this
+  // ... and when a + b >= this share of the overlap area times the keyframes analysed.
+  double min_evidence_share = 0.1;
+  // A new order is dropped when it leaves any group less than (1 - this) of its visible
+  // rest-pose pixels.
+  double max_hidden_share = 0.5;
 };
 
 struct LayerPair {
@@ -62,6 +69,7 @@ struct LayerResult {
   int keyframes = 0, width = 0, height = 0;  // what was analysed
   std::vector<LayerPair> pairs;
   std::optional<std::string> fallback;  // what was done about cycles / unmappable documents
+  int document_moves = 0;  // elements the user's document moves to take the new order
 };
 
 // Per-pixel coverage of every group of `scene`: groups.size() masks of width*height bytes
@@ -105,9 +113,12 @@ bool write_layered_svg(const std::filesystem::path& in, const std::vector<std::s
 nlohmann::json layers_json(const LayerResult& result, const LayerOptions& options);
 
 // The whole stage: reads svg, palette and target, writes out_svg and out_json; returns the
-// result. A document whose groups cannot be mapped keeps its order (fallback says why).
+// result. The original order is kept (fallback says why) when the groups cannot be mapped,
+// when the new order would hide a group at rest, or when `original` (the user's document the
+// animation is written into) cannot take the new order by moving elements within their parents.
 LayerResult run_layers(const std::filesystem::path& svg, const std::filesystem::path& target,
                        const std::filesystem::path& palette, const std::filesystem::path& out_svg,
-                       const std::filesystem::path& out_json, const LayerOptions& options);
+                       const std::filesystem::path& out_json, const LayerOptions& options,
+                       const std::optional<std::filesystem::path>& original = std::nullopt);
 
 }  // namespace svgm

@@ -21,11 +21,13 @@ const std::vector<StageFiles>& stage_files() {
       {"video", {{"image", "recolored.png"}, {"svg", "recolored.svg"}}, {{"candidates", "candidates"}}},
       {"ranker", {{"candidates", "candidates"}, {"palette", "palette.json"}},
        {{"ranking", "ranking.json"}, {"target", "target.mp4"}}},
-      {"layers", {{"svg", "grouped.svg"}, {"target", "target.mp4"}, {"palette", "palette.json"}},
+      {"layers",
+       {{"svg", "grouped.svg"}, {"target", "target.mp4"}, {"palette", "palette.json"}, {"original", "input.svg"}},
        {{"svg", "layered.svg"}, {"layers", "layers.json"}}},
       {"tracker", {{"svg", "layered.svg"}, {"target", "target.mp4"}}, {{"tracks", "tracks.json"}}},
       {"fitter",
-       {{"svg", "layered.svg"}, {"target", "target.mp4"}, {"palette", "palette.json"}, {"tracks", "tracks.json"}},
+       {{"svg", "layered.svg"}, {"target", "target.mp4"}, {"palette", "palette.json"}, {"tracks", "tracks.json"},
+        {"original", "input.svg"}},
        {{"animation", "animation.svg"}, {"preview", "preview.mp4"}, {"report", "fit.json"}}},
   };
   return s;
@@ -69,6 +71,30 @@ void write_atomic(const fs::path& file, const std::string& text) {
   write_file_atomic(file, text);
 }
 
+// The ranker may flag every candidate (chaotic motion, invented content, ...): fitting one of
+// them would hand the user a broken animation, so the run stops here with the reasons, unless
+// stages.ranker.accept_flagged is set. Read from ranking.json each run (also when the ranker
+// stage was up to date). A ranking without per-candidate "defects" lists flags nothing.
+void stop_if_every_candidate_flagged(const fs::path& ranking, const nlohmann::json& config) {
+  const nlohmann::json& ranker = config["stages"]["ranker"];
+  if (ranker.is_object() && ranker.value("accept_flagged", false)) return;
+  std::ifstream in(ranking);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (!j.is_object() || !j.contains("candidates") || !j["candidates"].is_array() || j["candidates"].empty()) return;
+  std::string why;
+  for (const auto& c : j["candidates"]) {
+    if (!c.is_object() || !c.contains("defects") || !c["defects"].is_array() || c["defects"].empty()) return;
+    std::string d;
+    for (const auto& x : c["defects"])
+      if (x.is_string()) d += (d.empty() ? "" : ", ") + x.get<std::string>();
+    why += (why.empty() ? "" : "; ") + c.value("name", std::string("?")) + ": " + d;
+  }
+  throw Rejected("every candidate video was flagged by the ranker (" + why + "; see " + ranking.string() +
+                     "); stopped before fitting. Try another prompt or seed, or set "
+                     "stages.ranker.accept_flagged=true to fit the best one anyway",
+                 Rejected::kCandidatesFlagged);
+}
+
 }  // namespace
 
 std::vector<StageReport> run_pipeline(const nlohmann::json& config, const PluginHost& host,
@@ -77,6 +103,11 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
   const std::string input = config.value("input", "");
   if (input.empty()) throw Error("no input SVG (set input: in the config or pass --input)");
   if (!fs::is_regular_file(input)) throw Error(input + ": cannot open: No such file or directory");
+  if (from) {
+    const auto& st = stage_names();
+    if (std::find(st.begin(), st.end(), *from) == st.end())
+      throw Error("--from " + *from + ": no such stage (stages: grouper, recolorer, video, ranker, layers, tracker, fitter)");
+  }
   const fs::path run = fs::absolute(config.value("output", "run"));
   std::error_code ec;
   fs::create_directories(run, ec);
@@ -88,11 +119,6 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
     a.add_file(input);
     b.add_file(run / "input.svg");
     if (a.h != b.h) fs::copy_file(input, run / "input.svg", fs::copy_options::overwrite_existing);
-  }
-  if (from) {
-    const auto& st = stage_names();
-    if (std::find(st.begin(), st.end(), *from) == st.end())
-      throw Error("--from " + *from + ": no such stage (stages: grouper, recolorer, video, ranker, layers, tracker, fitter)");
   }
   bool forced = false;
   std::vector<StageReport> reports;
@@ -146,6 +172,7 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
         fs::remove(manifest, ec);
     }
     reports.push_back(r);
+    if (sf.stage == "ranker") stop_if_every_candidate_flagged(run / "ranking.json", config);
   }
   return reports;
 }

@@ -10,6 +10,10 @@
 
 #include "svgmotion/error.h"
 
+#ifndef SVGM_VERSION
+#define SVGM_VERSION "0.0.0"
+#endif
+
 #ifndef SVGM_INSTALL_PLUGIN_DIR
 #define SVGM_INSTALL_PLUGIN_DIR "/usr/local/lib/svgmotion/plugins"
 #endif
@@ -29,11 +33,14 @@ namespace {
 void host_log(const svgm_host*, int level, const char* message) {
   if (level >= 2) std::fprintf(stderr, "svgmotion: %s: %s\n", level >= 3 ? "error" : "warning", message);
 }
-void host_progress(const svgm_host*, double, const char*) {}
-int host_cancelled(const svgm_host*) { return 0; }
-
-const svgm_host kHost = {SVGM_PLUGIN_ABI, sizeof(svgm_host), "0.1.0", nullptr,
-                         host_log,        host_progress,     host_cancelled};
+void host_progress(const svgm_host* host, double fraction, const char* note) {
+  const auto* hooks = static_cast<const HostHooks*>(host->context);
+  if (hooks && hooks->progress) hooks->progress(fraction, note ? note : "");
+}
+int host_cancelled(const svgm_host* host) {
+  const auto* hooks = static_cast<const HostHooks*>(host->context);
+  return hooks && hooks->cancelled && hooks->cancelled() ? 1 : 0;
+}
 
 }  // namespace
 
@@ -137,7 +144,9 @@ nlohmann::json PluginHost::run(const std::string& stage, const std::string& name
   }
   const std::string text = request.dump();
   char* response = nullptr;
-  const int rc = p->descriptor->run(&kHost, text.c_str(), &response);
+  const svgm_host host = {SVGM_PLUGIN_ABI, sizeof(svgm_host), SVGM_VERSION, const_cast<HostHooks*>(&hooks_),
+                          host_log, host_progress, host_cancelled};
+  const int rc = p->descriptor->run(&host, text.c_str(), &response);
   std::string body = response ? response : "";
   if (response) p->descriptor->free_string(response);
   nlohmann::json r;
@@ -150,6 +159,12 @@ nlohmann::json PluginHost::run(const std::string& stage, const std::string& name
   if (rc != 0 || !r.value("ok", false)) {
     std::string err = r.contains("error") && r["error"].is_string() ? r["error"].get<std::string>() : "failed";
     std::replace(err.begin(), err.end(), '\n', ' ');
+    // A plugin may say its result was produced but must not be trusted (see svgm::Rejected).
+    if (r.contains("rejected") && r["rejected"].is_number_integer()) {
+      const int status = r["rejected"].get<int>();
+      if (status == Rejected::kFitRejected || status == Rejected::kCandidatesFlagged)
+        throw Rejected(who + ": " + err, status);
+    }
     throw Error(who + ": " + err);
   }
   return r;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -21,6 +22,12 @@ struct PluginInfo {
 // The known stage kinds, in pipeline order.
 const std::vector<std::string>& stage_names();
 
+// What a running plugin's progress and cancel callbacks reach (svgm_host::progress, cancelled).
+struct HostHooks {
+  std::function<void(double fraction, const std::string& note)> progress;
+  std::function<bool()> cancelled;
+};
+
 class PluginHost {
  public:
   // Scans `search_path` in order for modules named svgm_*.so. The first module providing a
@@ -34,13 +41,18 @@ class PluginHost {
 
   // Runs plugin (stage, name) on `request`; returns its response. Throws svgm::Error
   // "<stage> plugin '<name>': <problem>" when it is missing, fails, or answers garbage.
+  // A response with "rejected": 3 or 4 (and ok false) throws svgm::Rejected with that status.
   nlohmann::json run(const std::string& stage, const std::string& name,
                      const nlohmann::json& request) const;
+
+  // Where plugins' progress reports go and how they learn the user asked to stop.
+  void set_hooks(HostHooks hooks) { hooks_ = std::move(hooks); }
 
  private:
   void load(const std::filesystem::path& file);
   std::vector<PluginInfo> plugins_;
   std::vector<std::string> problems_;
+  HostHooks hooks_;
 };
 
 // The default search path: next to the binary (<exe dir>/plugins), the install's plugin

@@ -1,0 +1,164 @@
+// The result gate (see result_gate.h).
+#include "fit/result_gate.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace svgm {
+
+namespace {
+
+struct Box {
+  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  void add(double x, double y) {
+    x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+  }
+  bool empty() const { return !(x1 >= x0); }
+  double diagonal() const { return empty() ? 0 : std::hypot(x1 - x0, y1 - y0); }
+};
+
+// Per-channel median of the frame's border pixels (straight RGBA floats).
+std::array<float, 3> border_median(const float* f, int W, int H) {
+  std::array<std::vector<float>, 3> v;
+  auto add = [&](int x, int y) {
+    for (int c = 0; c < 3; ++c) v[c].push_back(f[(static_cast<size_t>(y) * W + x) * 4 + c]);
+  };
+  for (int x = 0; x < W; ++x) add(x, 0), add(x, H - 1);
+  for (int y = 1; y + 1 < H; ++y) add(0, y), add(W - 1, y);
+  std::array<float, 3> m{1, 1, 1};
+  for (int c = 0; c < 3; ++c) {
+    if (v[c].empty()) continue;
+    std::nth_element(v[c].begin(), v[c].begin() + v[c].size() / 2, v[c].end());
+    m[c] = v[c][v[c].size() / 2];
+  }
+  return m;
+}
+
+std::string format(const char* fmt, double a, double b = 0, double c = 0) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, fmt, a, b, c);
+  return buf;
+}
+
+}  // namespace
+
+GateVerdict judge_fit(const TargetFrames& target, const std::vector<float>& renders,
+                      const std::vector<double>& points, const RasterPlan& plan, const Scene& scene,
+                      const Affine& view, const GateOptions& o) {
+  GateVerdict v;
+  const int K = target.keyframes, W = target.width, H = target.height;
+  const size_t px = static_cast<size_t>(W) * H;
+  const size_t n_cp = static_cast<size_t>(plan.n_cp);
+  // The target's foreground extent per keyframe, in canvas units (for "what the target shows").
+  const Affine to_canvas = view.inverse();
+  std::vector<double> fg_diag(static_cast<size_t>(K), 0);
+  for (int k = 0; k < K; ++k) {
+    Box b;
+    const float* raw = &target.raw[static_cast<size_t>(k) * px * 4];
+    const std::array<float, 3> bg = border_median(raw, W, H);
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) {
+        const float* q = &raw[(static_cast<size_t>(y) * W + x) * 4];
+        if (std::max({std::fabs(q[0] - bg[0]), std::fabs(q[1] - bg[1]), std::fabs(q[2] - bg[2])}) > 0.1f) b.add(x, y);
+      }
+    if (!b.empty()) {
+      const Vec2 a = to_canvas.apply({b.x0, b.y0}), c = to_canvas.apply({b.x1 + 1, b.y1 + 1});
+      fg_diag[static_cast<size_t>(k)] = std::hypot(c.x - a.x, c.y - a.y);
+    }
+  }
+  // Rest size of each path, in the plan's point layout.
+  std::vector<double> rest_diag(scene.paths.size(), 0);
+  for (size_t p = 0; p < scene.paths.size(); ++p) {
+    Box b;
+    for (const Subpath& sp : scene.paths[p].subpaths)
+      for (const Vec2& q : sp.points) b.add(q.x, q.y);
+    rest_diag[p] = b.diagonal();
+  }
+  const double canvas_diag = std::hypot(scene.width, scene.height);
+  for (int k = 0; k < K; ++k) {
+    const std::string at = "keyframe " + std::to_string(k) + ": ";
+    // Fidelity. The figure is what differs from the frame's background (the median of its
+    // border pixels), in the target and in the fit alike, so an off-white or drifting
+    // background and white parts of the drawing count the same on both sides.
+    const float* r = &renders[static_cast<size_t>(k) * px * 4];
+    const float* t = &target.rgba[static_cast<size_t>(k) * px * 4];
+    const float* raw = &target.raw[static_cast<size_t>(k) * px * 4];
+    const std::array<float, 3> bg = border_median(raw, W, H);
+    auto differs = [&](float r0, float g0, float b0) {
+      return std::max({std::fabs(r0 - bg[0]), std::fabs(g0 - bg[1]), std::fabs(b0 - bg[2])}) > 0.1f;
+    };
+    double se = 0;
+    size_t inter = 0, uni = 0;
+    for (size_t i = 0; i < px; ++i) {
+      const float a = r[4 * i + 3];
+      float over[3];
+      for (int c = 0; c < 3; ++c) {
+        over[c] = r[4 * i + c] + (1 - a);
+        const double d = over[c] - t[4 * i + c];
+        se += d * d;
+      }
+      const bool drawn = differs(over[0], over[1], over[2]);
+      const bool fg = differs(raw[4 * i], raw[4 * i + 1], raw[4 * i + 2]);
+      inter += drawn && fg;
+      uni += drawn || fg;
+    }
+    const double mse = se / (3.0 * px);
+    const double psnr = mse > 0 ? 10 * std::log10(1 / mse) : 99;
+    const double iou = uni ? static_cast<double>(inter) / uni : 1;
+    v.psnr_db.push_back(psnr);
+    v.iou.push_back(iou);
+    if (!(psnr >= o.min_psnr_db))
+      v.reasons.push_back(at + format("the fit matches the target at only %.1f dB (at least %.0f dB)", psnr, o.min_psnr_db));
+    if (!(iou >= o.min_iou))
+      v.reasons.push_back(at + format("the fit covers the target's figure with IoU %.2f (at least %.2f)", iou, o.min_iou));
+    // Geometry.
+    const double* q = &points[static_cast<size_t>(k) * n_cp * 2];
+    double worst = 0;  // farthest outside the canvas, in canvas sizes
+    for (size_t p = 0; p < scene.paths.size(); ++p) {
+      Box b;
+      for (int i = 0; i < plan.path_cp_count[p]; ++i) {
+        const double x = q[2 * (plan.path_cp_first[p] + i)], y = q[2 * (plan.path_cp_first[p] + i) + 1];
+        if (!std::isfinite(x) || !std::isfinite(y)) {
+          worst = std::numeric_limits<double>::infinity();
+          continue;
+        }
+        b.add(x, y);
+        worst = std::max({worst, -x / scene.width, (x - scene.width) / scene.width,
+                          -y / scene.height, (y - scene.height) / scene.height});
+      }
+      if (rest_diag[p] < 0.01 * canvas_diag || b.empty()) continue;  // specks: no stable size
+      const double target_change = fg_diag[0] > 0 && fg_diag[static_cast<size_t>(k)] > 0
+                                       ? fg_diag[static_cast<size_t>(k)] / fg_diag[0] : 1;
+      const double ratio = b.diagonal() / rest_diag[p];
+      if (ratio > o.max_growth * std::max(1.0, target_change))
+        v.reasons.push_back(at + "path '" + scene.paths[p].id + "' " +
+                            format("grew %.1fx (the target's figure %.2fx)", ratio, target_change));
+      else if (ratio < o.min_shrink * std::min(1.0, target_change))
+        v.reasons.push_back(at + "path '" + scene.paths[p].id + "' " +
+                            format("collapsed to %.2fx its size (the target's figure %.2fx)", ratio, target_change));
+    }
+    if (worst > o.max_outside)
+      v.reasons.push_back(at + (std::isfinite(worst) ? format("control points lie %.1f canvas sizes outside the canvas", worst)
+                                                     : std::string("control points are not finite")));
+  }
+  v.passed = v.reasons.empty();
+  return v;
+}
+
+nlohmann::json gate_json(const GateVerdict& v, const GateOptions& o) {
+  return {{"passed", v.passed},
+          {"reasons", v.reasons},
+          {"keyframe_psnr_db", v.psnr_db},
+          {"keyframe_iou", v.iou},
+          {"thresholds",
+           {{"min_psnr_db", o.min_psnr_db},
+            {"min_iou", o.min_iou},
+            {"max_outside", o.max_outside},
+            {"max_growth", o.max_growth},
+            {"min_shrink", o.min_shrink}}}};
+}
+
+}  // namespace svgm

@@ -1,0 +1,52 @@
+// The result gate: whether a finished fit may be handed to the user as animation.svg.
+//
+// An optimiser always returns something; a user must never receive an exploded drawing as a
+// success. After the fit, every keyframe is judged on two counts:
+//  - fidelity: the fit's render against the cleaned target it was fitted to (PSNR over the
+//    whole frame), and the IoU of the figure in the fit and in the target, the figure being the
+//    pixels that differ by more than 0.1 from the target frame's background colour (median of
+//    its border), so a drifting off-white background counts as background;
+//  - geometry: every control point within half a canvas of the canvas (a fit that throws
+//    points far outside has diverged), and no path whose bounding-box diagonal grew more than
+//    `max_growth` times, or shrank below `min_shrink` of, its rest size beyond what the target's
+//    foreground did between keyframe 0 and this one (a target that zooms in may grow paths).
+// The thresholds are loose on purpose: they separate broken results (noise targets, motions
+// that leave the frame, diverged fits: PSNR well under 15 dB, points canvases away) from weak
+// but honest ones (a good fit scores 35-50 dB, IoU > 0.95; a figure left at rest against a
+// moving target about 20 dB), so the gate never vetoes a fit a user would keep.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "raster/raster_plan.h"
+#include "svgmotion/scene.h"
+#include "svgmotion/target_video.h"
+
+namespace svgm {
+
+struct GateOptions {
+  double min_psnr_db = 15;
+  double min_iou = 0.5;
+  double max_outside = 0.5;  // points may lie this fraction of the canvas size outside it
+  double max_growth = 4;     // path bbox diagonal / rest, relative to the target's own change
+  double min_shrink = 0.2;
+};
+
+struct GateVerdict {
+  bool passed = true;
+  std::vector<std::string> reasons;  // one line each, "keyframe k: ..."
+  std::vector<double> psnr_db, iou;  // per keyframe
+};
+
+// `renders`: K premultiplied RGBA float frames at the target's size (Fitter::render_keyframes);
+// `points`: K * plan.n_cp canvas-space (x, y) pairs (Fitter::keyframe_points_canvas);
+// `scene`: the fitted scene (rest pose, canvas space); `view`: canvas -> target pixels.
+GateVerdict judge_fit(const TargetFrames& target, const std::vector<float>& renders,
+                      const std::vector<double>& points, const RasterPlan& plan, const Scene& scene,
+                      const Affine& view, const GateOptions& options = {});
+
+nlohmann::json gate_json(const GateVerdict& v, const GateOptions& o);
+
+}  // namespace svgm

@@ -1,0 +1,168 @@
+// Checking a run's settings up front (see config_check.h).
+#include "pipeline/config_check.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "svgmotion/device.h"
+#include "svgmotion/error.h"
+#include "svgmotion/svg_reader.h"
+
+namespace svgm {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const nlohmann::json& at(const nlohmann::json& c, const std::string& path) {
+  static const nlohmann::json null;
+  const nlohmann::json* j = &c;
+  size_t from = 0;
+  while (from <= path.size()) {
+    const size_t dot = path.find('.', from);
+    const std::string key = path.substr(from, dot == std::string::npos ? std::string::npos : dot - from);
+    if (!j->is_object() || !j->contains(key)) return null;
+    j = &(*j)[key];
+    if (dot == std::string::npos) break;
+    from = dot + 1;
+  }
+  return *j;
+}
+
+std::string shown(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
+
+void whole(const nlohmann::json& c, const std::string& key, long long lo, long long hi) {
+  const nlohmann::json& v = at(c, key);
+  if (v.is_null()) return;
+  const bool ok = v.is_number_integer() ? v.get<long long>() >= lo && v.get<long long>() <= hi
+                  : v.is_number_float() ? std::isfinite(v.get<double>()) && v.get<double>() == std::floor(v.get<double>()) &&
+                                              v.get<double>() >= static_cast<double>(lo) && v.get<double>() <= static_cast<double>(hi)
+                                        : false;
+  if (!ok)
+    throw Error(key + ": must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                ", not " + shown(v));
+}
+
+void real(const nlohmann::json& c, const std::string& key, double lo, double hi, bool open_lo) {
+  const nlohmann::json& v = at(c, key);
+  if (v.is_null()) return;
+  const double x = v.is_number() ? v.get<double>() : NAN;
+  if (!(std::isfinite(x) && (open_lo ? x > lo : x >= lo) && x <= hi))
+    throw Error(key + ": must be a number in " + (open_lo ? "(" : "[") + shown(nlohmann::json(lo)) + ", " +
+                shown(nlohmann::json(hi)) + "], not " + shown(v));
+}
+
+void one_of(const nlohmann::json& c, const std::string& key, std::initializer_list<const char*> allowed) {
+  const nlohmann::json& v = at(c, key);
+  if (v.is_null()) return;
+  std::string list;
+  for (const char* a : allowed) {
+    if (v.is_string() && v.get<std::string>() == a) return;
+    list += (list.empty() ? "" : ", ") + std::string(a);
+  }
+  throw Error(key + ": must be one of " + list + ", not " + shown(v));
+}
+
+}  // namespace
+
+bool valid_utf8(const std::string& s) {
+  static constexpr unsigned kMin[] = {0, 0x80, 0x800, 0x10000};  // shortest form per length
+  for (size_t i = 0; i < s.size();) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    size_t n;
+    unsigned cp;
+    if (c < 0x80) { ++i; continue; }
+    if ((c & 0xe0) == 0xc0) n = 1, cp = c & 0x1fu;
+    else if ((c & 0xf0) == 0xe0) n = 2, cp = c & 0x0fu;
+    else if ((c & 0xf8) == 0xf0) n = 3, cp = c & 0x07u;
+    else return false;
+    if (s.size() - i <= n) return false;
+    for (size_t k = 1; k <= n; ++k) {
+      const unsigned char d = static_cast<unsigned char>(s[i + k]);
+      if ((d & 0xc0) != 0x80) return false;
+      cp = (cp << 6) | (d & 0x3fu);
+    }
+    if (cp < kMin[n] || cp > 0x10ffff || (cp >= 0xd800 && cp <= 0xdfff)) return false;
+    i += n + 1;
+  }
+  return true;
+}
+
+void check_config(const nlohmann::json& c, const PluginHost& host) {
+  // Plugins first: a misspelt plugin is the commonest mistake and names the others.
+  for (const std::string& stage : stage_names()) {
+    const std::string key = "stages." + stage + ".plugin";
+    const nlohmann::json& v = at(c, key);
+    if (!v.is_string() || v.get<std::string>().empty()) throw Error(key + ": must name a " + stage + " plugin");
+    if (!host.find(stage, v.get<std::string>())) {
+      std::string have;
+      for (const PluginInfo& p : host.plugins())
+        if (p.stage == stage) have += (have.empty() ? "" : ", ") + p.name;
+      std::string why;
+      for (const std::string& pr : host.problems())
+        if (pr.find("svgm_" + stage + "_" + v.get<std::string>()) != std::string::npos) why = " (" + pr + ")";
+      throw Error(key + ": no " + stage + " plugin '" + v.get<std::string>() + "'" + why + "; available: " +
+                  (have.empty() ? "none" : have));
+    }
+  }
+  whole(c, "seed", 0, 4294967295LL);
+  whole(c, "stages.grouper.max_groups", 1, 256);
+  whole(c, "stages.video.candidates", 1, 64);
+  whole(c, "stages.video.frames", 2, 10000);
+  real(c, "stages.video.fps", 0, 1000, true);
+  whole(c, "stages.video.size", 32, 4096);
+  whole(c, "stages.tracker.grid", 2, 512);
+  whole(c, "stages.fitter.iterations", 1, 1000000);
+  whole(c, "stages.fitter.keyframes", 2, 1000);
+  whole(c, "stages.fitter.size", 32, 4096);
+  real(c, "stages.fitter.mask_threshold", 0, 1, true);
+  one_of(c, "stages.fitter.colors", {"auto", "palette", "original"});
+  one_of(c, "stages.fitter.loop", {"loop", "once", "mirror"});
+  if (at(c, "stages.video.plugin") == "procedural" && at(c, "stages.fitter.keyframes").is_number() &&
+      at(c, "stages.video.frames").is_number() &&
+      at(c, "stages.fitter.keyframes").get<double>() > at(c, "stages.video.frames").get<double>())
+    throw Error("stages.fitter.keyframes: " + shown(at(c, "stages.fitter.keyframes")) +
+                " keyframes need at least as many video frames (stages.video.frames is " +
+                shown(at(c, "stages.video.frames")) + ")");
+
+  const nlohmann::json& prompt = at(c, "prompt");
+  if (prompt.is_string() && !valid_utf8(prompt.get<std::string>()))
+    throw Error("prompt: is not valid UTF-8 text");
+  const nlohmann::json& device = at(c, "device");
+  if (!device.is_string()) throw Error("device: must be auto, cpu, gpu or part of a device name");
+  try {
+    select_device(list_devices(), device.get<std::string>());
+  } catch (const Error& e) {
+    throw Error(std::string("device: ") + e.what());
+  }
+
+  const std::string input = at(c, "input").is_string() ? at(c, "input").get<std::string>() : "";
+  if (input.empty()) throw Error("input: no input SVG (set input: in the config or pass --input)");
+  std::error_code ec;
+  if (!fs::exists(input, ec)) throw Error(input + ": cannot open: No such file or directory");
+  if (fs::is_directory(input, ec)) throw Error(input + ": is a folder, not an SVG file");
+  if (!fs::is_regular_file(input, ec)) throw Error(input + ": not a regular file");
+  if (::access(input.c_str(), R_OK) != 0) throw Error(input + ": cannot open: Permission denied");
+  {
+    const Scene s = read_svg_file(input);  // throws "<input>: <problem>" for malformed SVG
+    if (s.paths.empty()) throw Error(input + ": nothing to animate (no visible paths)");
+  }
+  if (at(c, "stages.video.plugin") == "file") {
+    const std::string path = at(c, "stages.video.path").is_string() ? at(c, "stages.video.path").get<std::string>() : "";
+    if (path.empty()) throw Error("stages.video.path: video: file needs the video (or folder of PNG frames) to fit");
+    if (!fs::exists(path, ec)) throw Error(path + ": cannot open: No such file or directory");
+  }
+  const std::string output = at(c, "output").is_string() ? at(c, "output").get<std::string>() : "";
+  if (output.empty()) throw Error("output: must name the run directory");
+  if (fs::exists(output, ec) && !fs::is_directory(output, ec))
+    throw Error(output + ": exists and is not a folder (the run directory)");
+  fs::path probe = fs::absolute(output, ec);
+  while (!probe.empty() && !fs::exists(probe, ec)) probe = probe.parent_path();
+  if (!probe.empty() && ::access(probe.c_str(), W_OK | X_OK) != 0)
+    throw Error(output + ": cannot write there (" + probe.string() + " is not writable)");
+}
+
+}  // namespace svgm
