@@ -52,6 +52,22 @@ bad_input)
   expect_error "bad --size" "--size" "$tmp/o10.png" render "$data/examples/man.svg" -o "$tmp/o10.png" --size 0
   expect_error "unwritable output" "nodir" "$tmp/nodir/x.png" render "$data/examples/man.svg" -o "$tmp/nodir/x.png"
   expect_error "unknown device" "--device" "$tmp/o11.png" render "$data/examples/man.svg" -o "$tmp/o11.png" --device nosuchdevice
+  # The output path must be a regular file (or absent): a FIFO or a folder is refused and stays.
+  # (Only files of our own: a broken writer must not get the chance to replace a real device.)
+  mkfifo "$tmp/fifo.png"
+  expect_error "a FIFO as -o is refused" "$tmp/fifo.png: not a regular file" "$tmp/fifo.png.part" render "$data/examples/man.svg" -o "$tmp/fifo.png" --size 16
+  check "... and is still a FIFO" '[[ -p $tmp/fifo.png ]]'
+  mkdir "$tmp/dir.png"
+  expect_error "a folder as -o is refused" "$tmp/dir.png: not a regular file" "$tmp/dir.png.part" render "$data/examples/man.svg" -o "$tmp/dir.png" --size 16
+  ln -s "$tmp/fifo.png" "$tmp/tofifo.png"
+  expect_error "a link to a FIFO is refused" "$tmp/tofifo.png: not a regular file (it links to $tmp/fifo.png)" "$tmp/fifo.png.part" render "$data/examples/man.svg" -o "$tmp/tofifo.png" --size 16
+  # A symbolic link is written through: the target gets the PNG, the link stays a link.
+  mkdir "$tmp/real" && printf 'old' >"$tmp/real/t.png" && ln -s real/t.png "$tmp/link.png"
+  "$bin" render "$data/examples/man.svg" -o "$tmp/link.png" --size 16 2>/dev/null
+  check "-o through a symlink writes the link's target and keeps the link" '[[ -L $tmp/link.png && $(head -c 4 "$tmp/real/t.png" | od -An -tx1 | tr -d " \n") == 89504e47 && $(ls "$tmp/real") == t.png ]]'
+  # fit: a FIFO where the output folder should be, and one where an output file should be.
+  mkdir "$tmp/frames" && for i in 0 1; do "$bin" render "$data/examples/man.svg" -o "$tmp/frames/$i.png" --size 32 2>/dev/null; done
+  expect_error "fit -o onto a FIFO is refused" "$tmp/fifo.png" "$tmp/fifo.png/" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/fifo.png" --keyframes 2 --size 32 --iterations 2
   ;;
 devices)
   "$bin" devices >"$tmp/dev" 2>&1
