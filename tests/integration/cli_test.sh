@@ -87,6 +87,19 @@ fit)
   check "fit writes a preview and a report" '[[ -s $tmp/out/preview.mp4 && -s $tmp/out/fit.json && -s $tmp/out/checkpoint.bin ]]'
   check "the animation renders at a time" '"$bin" render "$tmp/out/animation.svg" -o "$tmp/t.png" --time 0.1 2>/dev/null && [[ -s $tmp/t.png ]]'
   "$bin" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out" --iterations 60 --keyframes 3 --size 64 --resume 2>"$tmp/err"
+  # Tiny drawings (no strokes, or one stroke, a handful of control points) once failed with
+  # CL_INVALID_HOST_PTR: their empty or short plan arrays went to clCreateBuffer as they were.
+  tiny_svg() { printf '<svg xmlns="http://www.w3.org/2000/svg" width="32" height="32">%s</svg>' "$2" >"$tmp/$1.svg"; }
+  tiny_svg triangle '<path d="M4 4 L28 8 L10 28 Z" fill="#c33"/>'
+  tiny_svg rects '<rect x="2" y="2" width="12" height="12" fill="#36c"/><rect x="16" y="16" width="12" height="10" fill="#3a3"/>'
+  tiny_svg stroked '<path d="M4 4 L28 8 L10 28 Z" fill="none" stroke="#222" stroke-width="2"/>'
+  tiny_svg polyquad '<polygon points="2,2 14,2 8,12" fill="#c90"/><path d="M16 28 Q24 4 30 28 Z" fill="#609"/>'
+  for t in triangle rects stroked polyquad; do
+    mkdir -p "$tmp/tf_$t"
+    for i in 0 1; do "$bin" render "$tmp/$t.svg" -o "$tmp/tf_$t/$i.png" --size 32 2>"$tmp/tr_$t"; done
+    "$bin" fit "$tmp/$t.svg" --target "$tmp/tf_$t" -o "$tmp/to_$t" --iterations 3 --keyframes 2 --size 32 --quiet 2>"$tmp/te_$t"
+    check "a tiny drawing ($t) renders and fits" '[[ $? -eq 0 && -s $tmp/tf_$t/1.png ]] && grep -q "<animate attributeName=\"d\"" "$tmp/to_$t/animation.svg" || { cat "$tmp/tr_$t" "$tmp/te_$t"; false; }'
+  done
   check "--resume continues from the checkpoint" 'grep -q "resuming at iteration 40" "$tmp/err" && grep -q "\"iterations\": 60" "$tmp/out/fit.json"'
   printf 'not a video' >"$tmp/bad.mp4"
   expect_error "a file that is not a video" "bad.mp4" "$tmp/out2" fit "$data/examples/man.svg" --target "$tmp/bad.mp4" -o "$tmp/out2"
