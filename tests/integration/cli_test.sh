@@ -164,6 +164,41 @@ pipeline)
       "${run[@]:1}" stages.grouper.plugin=future "plugin_paths=[\"$tmp/plug\"]"
   fi
   ;;
+plugins)
+  # Broken modules on the plugin path: one refusal line each, and the other plugins still load.
+  real=$(dirname "$bin")/plugins/svgm_grouper_none.so
+  mkdir "$tmp/plug"
+  size=$(stat -c %s "$real")
+  # Where its loaded segments end (PT_LOAD: p_offset + p_filesz): cut inside them, the loader
+  # maps pages past the end of the file and dies of SIGBUS touching them.
+  seg_end=$("$py" -c 'import struct, sys
+d = open(sys.argv[1], "rb").read()
+phoff, = struct.unpack_from("<Q", d, 32); ent, num = struct.unpack_from("<HH", d, 54)
+print(max(o + f for t, o, f in (struct.unpack_from("<I4xQ16xQ", d, phoff + i * ent) for i in range(num)) if t == 1))' "$real")
+  head -c $((seg_end / 2)) "$real" >"$tmp/plug/svgm_grouper_seg.so"
+  # Cut after the segments (a build with debug info keeps the section headers at the end).
+  head -c $(((size + seg_end) / 2)) "$real" >"$tmp/plug/svgm_grouper_cut.so"
+  head -c 64 "$real" >"$tmp/plug/svgm_grouper_stub.so"
+  head -c 10 "$real" >"$tmp/plug/svgm_grouper_tiny.so"
+  : >"$tmp/plug/svgm_grouper_empty.so"
+  printf 'garbage, not a module at all; garbage, not a module at all; garbage\n' >"$tmp/plug/svgm_grouper_junk.so"
+  mkfifo "$tmp/plug/svgm_grouper_fifo.so"
+  SVGMOTION_PLUGIN_PATH="$tmp/plug" timeout 60 "$bin" plugins >"$tmp/list" 2>"$tmp/err"
+  rc=$?
+  check "svgmotion plugins survives broken modules (exit 0, nothing on stderr)" '[[ $rc -eq 0 && ! -s $tmp/err ]] && grep -Eq "^grouper +none " "$tmp/list"'
+  check "a module cut inside its segments is refused as truncated" 'grep -qx "refused: $tmp/plug/svgm_grouper_seg.so: not a loadable module (truncated: $((seg_end / 2)) bytes, but its segments end at $seg_end)" "$tmp/list"'
+  check "a module cut after its segments is refused as truncated" 'grep -qx "refused: $tmp/plug/svgm_grouper_cut.so: not a loadable module (truncated: $(((size + seg_end) / 2)) bytes, but its section headers end at $size)" "$tmp/list"'
+  check "a module cut after its ELF header is refused as truncated" 'grep -Eq "^refused: $tmp/plug/svgm_grouper_stub.so: not a loadable module \(truncated: 64 bytes, but its program headers end at [0-9]+\)$" "$tmp/list"'
+  check "a module shorter than an ELF header is refused" 'grep -qx "refused: $tmp/plug/svgm_grouper_tiny.so: not a loadable module (shorter than an ELF header: 10 bytes)" "$tmp/list" && grep -qx "refused: $tmp/plug/svgm_grouper_empty.so: not a loadable module (shorter than an ELF header: 0 bytes)" "$tmp/list"'
+  check "a text file is refused as not ELF" 'grep -qx "refused: $tmp/plug/svgm_grouper_junk.so: not a loadable module (not an ELF file)" "$tmp/list"'
+  check "a FIFO is refused, not opened" 'grep -qx "refused: $tmp/plug/svgm_grouper_fifo.so: not a loadable module (not a regular file)" "$tmp/list"'
+  check "exactly the seven broken modules are refused" '[[ $(grep -c "^refused: $tmp/plug/" "$tmp/list") -eq 7 ]]'
+  # run: the truncated module on the path does not stop the pipeline from starting; asking for
+  # it names the reason.
+  SVGMOTION_PLUGIN_PATH="$tmp/plug" timeout 60 "$bin" run --input "$data/examples/man.svg" -o "$tmp/run" --quiet stages.grouper.plugin=seg >"$tmp/out" 2>"$tmp/err"
+  rc=$?
+  check "run asking for the truncated plugin fails in one line with the reason" '[[ $rc -ne 0 && $rc -lt 128 && $(grep -c "" "$tmp/err") -eq 1 ]] && grep -q "svgm_grouper_seg.so: not a loadable module (truncated" "$tmp/err"'
+  ;;
 *) echo "unknown group $group"; exit 2 ;;
 esac
 finish
