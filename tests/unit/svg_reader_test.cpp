@@ -357,6 +357,30 @@ TEST_CASE("malformed documents: exact one-line errors") {
                  "<use id=\"top\" href=\"#a\"/></svg>") == "x.svg: <use id=ub> references itself (use cycle)");
 }
 
+TEST_CASE("finite numbers that make geometry too large for the renderer: one line, no UB") {
+  // 1e308 - -1e308 overflows; a transform can take finite numbers past what the renderer holds.
+  CHECK(error_of("<svg width=\"10\" height=\"10\"><path id=\"p\" d=\"M 1e308 1e308 L -1e308 -1e308\"/></svg>") ==
+        "x.svg: <path id=p>: coordinates too large (beyond 1e+15 in canvas space)");
+  CHECK(error_of("<svg width=\"10\" height=\"10\"><path d=\"M 0 0 A 1e308 1e308 0 1 1 10 0\"/></svg>") ==
+        "x.svg: <path>: coordinates too large (beyond 1e+15 in canvas space)");
+  CHECK(error_of("<svg width=\"10\" height=\"10\"><g transform=\"scale(1e10)\"><rect width=\"1e10\" height=\"1\"/></g></svg>") ==
+        "x.svg: <rect>: coordinates too large (beyond 1e+15 in canvas space)");
+  // Finite, but no float holds it: the renderer would make NaN (and the cast is UB).
+  CHECK(error_of("<svg width=\"10\" height=\"10\"><polygon points=\"0 0 1e39 0 0 1\"/></svg>") ==
+        "x.svg: <polygon>: coordinates too large (beyond 1e+15 in canvas space)");
+  CHECK(error_of("<svg width=\"10\" height=\"10\"><path d=\"M 0 0 L 1 1\" stroke=\"red\" stroke-width=\"1e300\"/></svg>") ==
+        "x.svg: <path>: stroke-width too large (beyond 1e+15 in canvas space)");
+  // An absurd size prints as a number, not as an integer cast of it.
+  CHECK(error_of("<svg width=\"1e308\" height=\"10\"/>") ==
+        "x.svg: size 1e+308x10 is too large (limit 32768 px)");
+  CHECK(error_of("<svg width=\"1e308in\" height=\"10\"/>") == "x.svg: <svg> width=\"1e308in\": number out of range");
+  // Arcs with extreme radii whose geometry is representable read without complaint.
+  const Scene s = read("<path d=\"M 0 0 A 1e-300 1e-300 0 0 1 10 0 A 1e308 1e308 0 0 1 20 0\" fill=\"red\"/>",
+                       "width=\"100\" height=\"100\"");
+  REQUIRE(s.paths.size() == 1);
+  CHECK(s.paths[0].subpaths[0].segment_count() == 3);
+}
+
 TEST_CASE("limits: deep nesting, use bombs, segment count, file size, missing files") {
   std::string deep = "<svg>";
   for (int i = 0; i < 10000; ++i) deep += "<g>";
