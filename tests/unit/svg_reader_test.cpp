@@ -4,7 +4,6 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -387,15 +386,14 @@ TEST_CASE("limits: deep nesting, use bombs, segment count, file size, missing fi
   deep += "<rect width=\"1\" height=\"1\"/>";
   for (int i = 0; i < 10000; ++i) deep += "</g>";
   CHECK(error_of(deep + "</svg>") == "x.svg: nesting deeper than 256 elements");
-  // 2^30 copies of an invisible rect through 30 levels of doubling uses: refused quickly.
+  // 2^30 copies of an invisible rect through 30 levels of doubling uses: refused at the element
+  // bound (2^20), which is what keeps it quick; the test asserts the bound, not a clock.
   std::string bomb = "<svg><defs><rect id=\"l0\" width=\"1\" height=\"1\" fill=\"none\"/>";
   for (int i = 1; i <= 30; ++i)
     bomb += "<g id=\"l" + std::to_string(i) + "\"><use href=\"#l" + std::to_string(i - 1) + "\"/><use href=\"#l" +
             std::to_string(i - 1) + "\"/></g>";
   bomb += "</defs><use href=\"#l30\"/></svg>";
-  const auto t0 = std::chrono::steady_clock::now();
   CHECK(error_of(bomb) == "x.svg: more than 1048576 elements to draw (nested <use> copies)");
-  CHECK(std::chrono::steady_clock::now() - t0 < std::chrono::seconds(5));
   SvgReadLimits few;
   few.max_segments = 10;
   CHECK(error_of("<svg><rect width=\"1\" height=\"1\"/><rect width=\"1\" height=\"1\"/><rect width=\"1\" height=\"1\"/></svg>",
@@ -422,19 +420,20 @@ TEST_CASE("limits: deep nesting, use bombs, segment count, file size, missing fi
   }
 }
 
-TEST_CASE("reading is fast: a 60 KB document well under 10 ms") {
+TEST_CASE("a 60 KB document of many paths reads completely") {
+  // How fast is for `svgmotion bench`, not for a test on a shared machine.
   std::string body;
-  for (int i = 0; body.size() < 60000; ++i)
-    body += "<path fill=\"#911A1D\" fill-opacity=\"1.0\" d=\"M" + std::to_string(i) +
+  int n = 0;
+  for (; body.size() < 60000; ++n)
+    body += "<path fill=\"#911A1D\" fill-opacity=\"1.0\" d=\"M" + std::to_string(n) +
             ".5 283.37 C293.82 286.60 293.33 306.81 293.46 317.10 C293.55 324.62 293.20 332.15 293.24 339.67 "
             "L 20 30 Q 40 50 60 70 A 5 5 0 0 1 80 90 Z\"/>";
-  const Scene warm = read(body);  // page the code in
-  const auto t0 = std::chrono::steady_clock::now();
   const Scene s = read(body);
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  CHECK(s.paths.size() == warm.paths.size());
-  CHECK(s.paths.size() > 100);
-  CHECK(ms < 10);
+  REQUIRE(s.paths.size() == static_cast<size_t>(n));
+  // C, C, L, Q, the arc in two pieces (its radii scale up to a half circle), the closing line.
+  for (const Path& p : s.paths) CHECK(p.subpaths[0].segment_count() == 7);
+  CHECK(s.paths[7].subpaths[0].points[0].x == doctest::Approx(7.5));
+  CHECK(s.warnings.empty());
 }
 
 }  // TEST_SUITE
