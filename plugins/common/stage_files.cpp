@@ -22,14 +22,31 @@ namespace svgm::plugin {
 namespace fs = std::filesystem;
 
 void copy_atomic(const fs::path& from, const fs::path& to) {
-  const fs::path tmp = to.string() + ".part" + std::to_string(::getpid());
   std::error_code ec;
+  const bool folder = fs::is_directory(from, ec);
+  // A file lands as write_file_atomic writes one (a device or FIFO at `to` is refused, a link
+  // is written through); a folder replaces a folder or file of ours, never anything else.
+  const fs::path dest = folder ? to : output_target(to);
+  if (folder) {
+    const fs::file_type t = fs::symlink_status(to, ec).type();
+    if (!ec && t != fs::file_type::not_found && t != fs::file_type::directory &&
+        t != fs::file_type::regular)
+      throw Error(to.string() + ": not a directory");
+  }
+  const fs::path tmp = dest.string() + ".part" + std::to_string(::getpid());
   fs::remove_all(tmp, ec);
   fs::copy(from, tmp, fs::copy_options::recursive, ec);
-  if (ec) throw Error(from.string() + ": cannot copy: " + ec.message());
-  fs::remove_all(to, ec);
-  fs::rename(tmp, to, ec);
-  if (ec) throw Error(to.string() + ": cannot write: " + ec.message());
+  if (ec) {
+    fs::remove_all(tmp, ec);
+    throw Error(from.string() + ": cannot copy: " + ec.message());
+  }
+  if (folder) fs::remove_all(dest, ec);
+  fs::rename(tmp, dest, ec);
+  if (ec) {
+    const std::string why = ec.message();
+    fs::remove_all(tmp, ec);
+    throw Error(to.string() + ": cannot write: " + why);
+  }
 }
 
 void write_json(const fs::path& file, const nlohmann::json& j) {

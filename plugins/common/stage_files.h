@@ -10,7 +10,9 @@
 
 namespace svgm::plugin {
 
-// Copies a file or a folder to `to` (replacing it), through a temporary name.
+// Copies a file or a folder to `to` (replacing it), through a temporary name. A file follows
+// write_file_atomic's rules for `to` (svgmotion/atomic_file.h): a device or FIFO is refused,
+// a symbolic link is written through.
 void copy_atomic(const std::filesystem::path& from, const std::filesystem::path& to);
 // Writes JSON (indented) through a temporary name.
 void write_json(const std::filesystem::path& file, const nlohmann::json& j);

@@ -52,6 +52,22 @@ bad_input)
   expect_error "bad --size" "--size" "$tmp/o10.png" render "$data/examples/man.svg" -o "$tmp/o10.png" --size 0
   expect_error "unwritable output" "nodir" "$tmp/nodir/x.png" render "$data/examples/man.svg" -o "$tmp/nodir/x.png"
   expect_error "unknown device" "--device" "$tmp/o11.png" render "$data/examples/man.svg" -o "$tmp/o11.png" --device nosuchdevice
+  # The output path must be a regular file (or absent): a FIFO or a folder is refused and stays.
+  # (Only files of our own: a broken writer must not get the chance to replace a real device.)
+  mkfifo "$tmp/fifo.png"
+  expect_error "a FIFO as -o is refused" "$tmp/fifo.png: not a regular file" "$tmp/fifo.png.part" render "$data/examples/man.svg" -o "$tmp/fifo.png" --size 16
+  check "... and is still a FIFO" '[[ -p $tmp/fifo.png ]]'
+  mkdir "$tmp/dir.png"
+  expect_error "a folder as -o is refused" "$tmp/dir.png: not a regular file" "$tmp/dir.png.part" render "$data/examples/man.svg" -o "$tmp/dir.png" --size 16
+  ln -s "$tmp/fifo.png" "$tmp/tofifo.png"
+  expect_error "a link to a FIFO is refused" "$tmp/tofifo.png: not a regular file (it links to $tmp/fifo.png)" "$tmp/fifo.png.part" render "$data/examples/man.svg" -o "$tmp/tofifo.png" --size 16
+  # A symbolic link is written through: the target gets the PNG, the link stays a link.
+  mkdir "$tmp/real" && printf 'old' >"$tmp/real/t.png" && ln -s real/t.png "$tmp/link.png"
+  "$bin" render "$data/examples/man.svg" -o "$tmp/link.png" --size 16 2>/dev/null
+  check "-o through a symlink writes the link's target and keeps the link" '[[ -L $tmp/link.png && $(head -c 4 "$tmp/real/t.png" | od -An -tx1 | tr -d " \n") == 89504e47 && $(ls "$tmp/real") == t.png ]]'
+  # fit: a FIFO where the output folder should be, and one where an output file should be.
+  mkdir "$tmp/frames" && for i in 0 1; do "$bin" render "$data/examples/man.svg" -o "$tmp/frames/$i.png" --size 32 2>/dev/null; done
+  expect_error "fit -o onto a FIFO is refused" "$tmp/fifo.png" "$tmp/fifo.png/" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/fifo.png" --keyframes 2 --size 32 --iterations 2
   ;;
 devices)
   "$bin" devices >"$tmp/dev" 2>&1
@@ -71,6 +87,19 @@ fit)
   check "fit writes a preview and a report" '[[ -s $tmp/out/preview.mp4 && -s $tmp/out/fit.json && -s $tmp/out/checkpoint.bin ]]'
   check "the animation renders at a time" '"$bin" render "$tmp/out/animation.svg" -o "$tmp/t.png" --time 0.1 2>/dev/null && [[ -s $tmp/t.png ]]'
   "$bin" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out" --iterations 60 --keyframes 3 --size 64 --resume 2>"$tmp/err"
+  # Tiny drawings (no strokes, or one stroke, a handful of control points) once failed with
+  # CL_INVALID_HOST_PTR: their empty or short plan arrays went to clCreateBuffer as they were.
+  tiny_svg() { printf '<svg xmlns="http://www.w3.org/2000/svg" width="32" height="32">%s</svg>' "$2" >"$tmp/$1.svg"; }
+  tiny_svg triangle '<path d="M4 4 L28 8 L10 28 Z" fill="#c33"/>'
+  tiny_svg rects '<rect x="2" y="2" width="12" height="12" fill="#36c"/><rect x="16" y="16" width="12" height="10" fill="#3a3"/>'
+  tiny_svg stroked '<path d="M4 4 L28 8 L10 28 Z" fill="none" stroke="#222" stroke-width="2"/>'
+  tiny_svg polyquad '<polygon points="2,2 14,2 8,12" fill="#c90"/><path d="M16 28 Q24 4 30 28 Z" fill="#609"/>'
+  for t in triangle rects stroked polyquad; do
+    mkdir -p "$tmp/tf_$t"
+    for i in 0 1; do "$bin" render "$tmp/$t.svg" -o "$tmp/tf_$t/$i.png" --size 32 2>"$tmp/tr_$t"; done
+    "$bin" fit "$tmp/$t.svg" --target "$tmp/tf_$t" -o "$tmp/to_$t" --iterations 3 --keyframes 2 --size 32 --quiet 2>"$tmp/te_$t"
+    check "a tiny drawing ($t) renders and fits" '[[ $? -eq 0 && -s $tmp/tf_$t/1.png ]] && grep -q "<animate attributeName=\"d\"" "$tmp/to_$t/animation.svg" || { cat "$tmp/tr_$t" "$tmp/te_$t"; false; }'
+  done
   check "--resume continues from the checkpoint" 'grep -q "resuming at iteration 40" "$tmp/err" && grep -q "\"iterations\": 60" "$tmp/out/fit.json"'
   printf 'not a video' >"$tmp/bad.mp4"
   expect_error "a file that is not a video" "bad.mp4" "$tmp/out2" fit "$data/examples/man.svg" --target "$tmp/bad.mp4" -o "$tmp/out2"
@@ -113,12 +142,13 @@ pipeline)
   expect_error "a video path with the procedural provider says how to fit it" "stages.video.path is set" "$tmp/none3/animation.svg" \
     run --input "$data/examples/man.svg" -o "$tmp/none3" --quiet "stages.video.path=$tmp/frames"
   # A hanging generator under video `command`: one line within its timeout, earlier stages kept.
-  printf '#!/bin/sh\nsleep 60\n' >"$tmp/hang.sh" && chmod +x "$tmp/hang.sh"
+  # It sleeps far longer than the 60 s margin below, so an unenforced timeout fails the check.
+  printf '#!/bin/sh\nsleep 300\n' >"$tmp/hang.sh" && chmod +x "$tmp/hang.sh"
   start=$SECONDS
   expect_error "a hanging generator fails in one line at its timeout" "candidate 00: $tmp/hang.sh" "$tmp/hang/animation.svg" \
     run --input "$data/examples/man.svg" -o "$tmp/hang" --quiet stages.video.plugin=command \
     "stages.video.options={argv: [\"$tmp/hang.sh\", \"{out}\"], timeout_s: 1, candidates: 1}"
-  check "... within the timeout, keeping the earlier stages' outputs" '[[ $((SECONDS - start)) -lt 20 && -s $tmp/hang/grouped.svg && -s $tmp/hang/recolored.png && -s $tmp/hang/candidates/00.log ]]'
+  check "... within the timeout, keeping the earlier stages' outputs" '[[ $((SECONDS - start)) -lt 60 && -s $tmp/hang/grouped.svg && -s $tmp/hang/recolored.png && -s $tmp/hang/candidates/00.log ]]'
   expect_error "a missing plugin" "layers plugin 'nosuch' not found" "$tmp/run/nothing" "${run[@]:1}" stages.layers.plugin=nosuch
   # Drop-in plugin: install the SDK, build a C plugin out of tree, run the pipeline with it.
   if [[ -n $build && -n $sdk_src ]]; then
@@ -134,6 +164,41 @@ pipeline)
     expect_error "running a refused plugin names the reason" "built against plugin ABI 2" "$tmp/run/nothing2" \
       "${run[@]:1}" stages.grouper.plugin=future "plugin_paths=[\"$tmp/plug\"]"
   fi
+  ;;
+plugins)
+  # Broken modules on the plugin path: one refusal line each, and the other plugins still load.
+  real=$(dirname "$bin")/plugins/svgm_grouper_none.so
+  mkdir "$tmp/plug"
+  size=$(stat -c %s "$real")
+  # Where its loaded segments end (PT_LOAD: p_offset + p_filesz): cut inside them, the loader
+  # maps pages past the end of the file and dies of SIGBUS touching them.
+  seg_end=$("$py" -c 'import struct, sys
+d = open(sys.argv[1], "rb").read()
+phoff, = struct.unpack_from("<Q", d, 32); ent, num = struct.unpack_from("<HH", d, 54)
+print(max(o + f for t, o, f in (struct.unpack_from("<I4xQ16xQ", d, phoff + i * ent) for i in range(num)) if t == 1))' "$real")
+  head -c $((seg_end / 2)) "$real" >"$tmp/plug/svgm_grouper_seg.so"
+  # Cut after the segments (a build with debug info keeps the section headers at the end).
+  head -c $(((size + seg_end) / 2)) "$real" >"$tmp/plug/svgm_grouper_cut.so"
+  head -c 64 "$real" >"$tmp/plug/svgm_grouper_stub.so"
+  head -c 10 "$real" >"$tmp/plug/svgm_grouper_tiny.so"
+  : >"$tmp/plug/svgm_grouper_empty.so"
+  printf 'garbage, not a module at all; garbage, not a module at all; garbage\n' >"$tmp/plug/svgm_grouper_junk.so"
+  mkfifo "$tmp/plug/svgm_grouper_fifo.so"
+  SVGMOTION_PLUGIN_PATH="$tmp/plug" timeout 60 "$bin" plugins >"$tmp/list" 2>"$tmp/err"
+  rc=$?
+  check "svgmotion plugins survives broken modules (exit 0, nothing on stderr)" '[[ $rc -eq 0 && ! -s $tmp/err ]] && grep -Eq "^grouper +none " "$tmp/list"'
+  check "a module cut inside its segments is refused as truncated" 'grep -qx "refused: $tmp/plug/svgm_grouper_seg.so: not a loadable module (truncated: $((seg_end / 2)) bytes, but its segments end at $seg_end)" "$tmp/list"'
+  check "a module cut after its segments is refused as truncated" 'grep -qx "refused: $tmp/plug/svgm_grouper_cut.so: not a loadable module (truncated: $(((size + seg_end) / 2)) bytes, but its section headers end at $size)" "$tmp/list"'
+  check "a module cut after its ELF header is refused as truncated" 'grep -Eq "^refused: $tmp/plug/svgm_grouper_stub.so: not a loadable module \(truncated: 64 bytes, but its program headers end at [0-9]+\)$" "$tmp/list"'
+  check "a module shorter than an ELF header is refused" 'grep -qx "refused: $tmp/plug/svgm_grouper_tiny.so: not a loadable module (shorter than an ELF header: 10 bytes)" "$tmp/list" && grep -qx "refused: $tmp/plug/svgm_grouper_empty.so: not a loadable module (shorter than an ELF header: 0 bytes)" "$tmp/list"'
+  check "a text file is refused as not ELF" 'grep -qx "refused: $tmp/plug/svgm_grouper_junk.so: not a loadable module (not an ELF file)" "$tmp/list"'
+  check "a FIFO is refused, not opened" 'grep -qx "refused: $tmp/plug/svgm_grouper_fifo.so: not a loadable module (not a regular file)" "$tmp/list"'
+  check "exactly the seven broken modules are refused" '[[ $(grep -c "^refused: $tmp/plug/" "$tmp/list") -eq 7 ]]'
+  # run: the truncated module on the path does not stop the pipeline from starting; asking for
+  # it names the reason.
+  SVGMOTION_PLUGIN_PATH="$tmp/plug" timeout 60 "$bin" run --input "$data/examples/man.svg" -o "$tmp/run" --quiet stages.grouper.plugin=seg >"$tmp/out" 2>"$tmp/err"
+  rc=$?
+  check "run asking for the truncated plugin fails in one line with the reason" '[[ $rc -ne 0 && $rc -lt 128 && $(grep -c "" "$tmp/err") -eq 1 ]] && grep -q "svgm_grouper_seg.so: not a loadable module (truncated" "$tmp/err"'
   ;;
 *) echo "unknown group $group"; exit 2 ;;
 esac

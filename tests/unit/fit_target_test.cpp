@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "fit/preview_video.h"
@@ -539,6 +540,25 @@ TEST_CASE("preview video errors") {
                        (out.string() + ": a preview needs at least one frame").c_str(), Error);
   // Failures leave nothing behind (the frame-1 failure happened after the writer opened).
   CHECK(fs::is_empty(dir.path));
+}
+
+TEST_CASE("preview video: a FIFO at the path is refused, a symlink is written through") {
+  TempDir dir;
+  const fs::path fifo = dir.path / "p.mp4";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  CHECK_THROWS_WITH_AS(write_preview_video(fifo, {{solid(8, 8)}}, 24),
+                       (fifo.string() + ": not a regular file").c_str(), Error);
+  CHECK(fs::is_fifo(fifo));
+  fs::create_directory(dir.path / "real");
+  const fs::path link = dir.path / "link.mp4";
+  fs::create_symlink("real/v.mp4", link);
+  write_preview_video(link, {{solid(8, 8), solid(8, 8)}}, 24);
+  CHECK(fs::is_symlink(link));
+  CHECK(probe_target(dir.path / "real" / "v.mp4").frames == 2);
+  // Only the FIFO, the link and the folder with the one video: no temporary left anywhere.
+  size_t n = 0;
+  for ([[maybe_unused]] const auto& e : fs::recursive_directory_iterator(dir.path)) ++n;
+  CHECK(n == 4);
 }
 
 }  // TEST_SUITE

@@ -305,11 +305,8 @@ class ClStroke {
       f.insert(f.end(), {s.half_width, s.miter_limit});
     }
     auto make = [&](size_t bytes, const void* host) {
-      bytes = std::max<size_t>(bytes, 16);
-      if (host)
-        return cl::Buffer(rt.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bytes,
-                          const_cast<void*>(host));
-      return cl::Buffer(rt.context(), CL_MEM_READ_WRITE, bytes);
+      if (host) return input_buffer(rt.context(), host, bytes);
+      return cl::Buffer(rt.context(), CL_MEM_READ_WRITE, std::max(bytes, kMinBufferBytes));
     };
     sp_a_ = make(a.size() * sizeof(int), a.data());
     sp_b_ = make(b.size() * sizeof(int), b.data());

@@ -172,6 +172,60 @@ TEST_CASE("arc flags: compact forms parse, bad flags stop the path") {
   CHECK_FALSE(r.ok);
 }
 
+TEST_CASE("arcs with extreme finite radii: exact where representable, never NaN") {
+  auto all_finite = [](const std::vector<Subpath>& s) {
+    for (const auto& sp : s)
+      for (const Vec2& v : sp.points)
+        if (!std::isfinite(v.x) || !std::isfinite(v.y)) return false;
+    return true;
+  };
+  // A radius of 1e-300 squares to zero (the spec's lambda divides by it): it is scaled up to
+  // the half circle on the chord, exactly as radius 1 is above.
+  const auto tiny = parse("M 0 0 A 1e-300 1e-300 0 0 1 10 0");
+  REQUIRE(tiny.size() == 1);
+  REQUIRE(all_finite(tiny));
+  CHECK(tiny[0].segment_count() == 2);
+  CHECK(near(tiny[0].points.back(), {10, 0}));
+  CHECK(std::hypot(tiny[0].points[3].x - 5, tiny[0].points[3].y) == doctest::Approx(5).epsilon(1e-9));
+  // F.6.6 scales both radii by the same factor: 1e-300 : 1 over a chord of 10 becomes a half
+  // ellipse with radii 5 and 5e300, whose middle anchor is (5, -+5e300).
+  const auto thin = parse("M 0 0 A 1e-300 1 0 0 1 10 0");
+  REQUIRE(thin.size() == 1);
+  REQUIRE(all_finite(thin));
+  CHECK(thin[0].segment_count() == 2);
+  CHECK(near(thin[0].points.back(), {10, 0}));
+  CHECK(thin[0].points[3].x == doctest::Approx(5).epsilon(1e-9));
+  CHECK(std::fabs(thin[0].points[3].y) == doctest::Approx(5e300).epsilon(1e-9));
+  // A radius of 1e308 squares to infinity: the small arc over a chord of 10 bends by 1e-307,
+  // so it is the chord.
+  const auto big = parse("M 0 0 A 1e308 1e308 0 0 1 10 0");
+  REQUIRE(big.size() == 1);
+  REQUIRE(all_finite(big));
+  CHECK(big[0].segment_count() == 1);
+  CHECK(near(big[0].points[1], {10.0 / 3, 0}));
+  CHECK(near(big[0].points[3], {10, 0}));
+  // Radii a million chords long still go through the centre, and stay on the circle.
+  const auto wide = parse("M 0 0 A 1e7 1e7 0 0 1 10 0");
+  REQUIRE(all_finite(wide));
+  REQUIRE(wide[0].segment_count() == 1);
+  const double cy = std::sqrt(1e14 - 25);  // the centre is (5, +-cy): either side of the chord
+  const Vec2 q = wide[0].points[3];
+  CHECK(near(q, {10, 0}));
+  const Vec2 m = 0.125 * wide[0].points[0] + 0.375 * wide[0].points[1] + 0.375 * wide[0].points[2] +
+                 0.125 * wide[0].points[3];
+  CHECK(std::min(std::fabs(std::hypot(m.x - 5, m.y - cy) - 1e7), std::fabs(std::hypot(m.x - 5, m.y + cy) - 1e7)) <
+        1e-6);
+  // The large arc of a 1e308 circle leaves the double range: the points are left infinite
+  // (for the reader to refuse), never NaN, and nothing undefined happens on the way.
+  const auto huge = parse("M 0 0 A 1e308 1e308 0 1 1 10 0");
+  REQUIRE(huge.size() == 1);
+  for (const Vec2& v : huge[0].points) CHECK((!std::isnan(v.x) && !std::isnan(v.y)));
+  // Endpoints at +-1e308: the midpoint frame halves before it subtracts.
+  const auto far = parse("M 1e308 1e308 A 1e308 1e308 0 0 1 -1e308 -1e308");
+  REQUIRE(far.size() == 1);
+  for (const Vec2& v : far[0].points) CHECK((!std::isnan(v.x) && !std::isnan(v.y)));
+}
+
 TEST_CASE("arcs on a rotated ellipse: anchors and cubic midpoints on the ellipse") {
   // Ellipse centre (100, 100), radii 50 and 25, rotated 30 degrees; from angle 10 to 200
   // degrees the positive way (190 degrees: large arc, sweep).

@@ -4,7 +4,6 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -357,21 +356,44 @@ TEST_CASE("malformed documents: exact one-line errors") {
                  "<use id=\"top\" href=\"#a\"/></svg>") == "x.svg: <use id=ub> references itself (use cycle)");
 }
 
+TEST_CASE("finite numbers that make geometry too large for the renderer: one line, no UB") {
+  // 1e308 - -1e308 overflows; a transform can take finite numbers past what the renderer holds.
+  CHECK(error_of("<svg width=\"10\" height=\"10\"><path id=\"p\" d=\"M 1e308 1e308 L -1e308 -1e308\"/></svg>") ==
+        "x.svg: <path id=p>: coordinates too large (beyond 1e+15 in canvas space)");
+  CHECK(error_of("<svg width=\"10\" height=\"10\"><path d=\"M 0 0 A 1e308 1e308 0 1 1 10 0\"/></svg>") ==
+        "x.svg: <path>: coordinates too large (beyond 1e+15 in canvas space)");
+  CHECK(error_of("<svg width=\"10\" height=\"10\"><g transform=\"scale(1e10)\"><rect width=\"1e10\" height=\"1\"/></g></svg>") ==
+        "x.svg: <rect>: coordinates too large (beyond 1e+15 in canvas space)");
+  // Finite, but no float holds it: the renderer would make NaN (and the cast is UB).
+  CHECK(error_of("<svg width=\"10\" height=\"10\"><polygon points=\"0 0 1e39 0 0 1\"/></svg>") ==
+        "x.svg: <polygon>: coordinates too large (beyond 1e+15 in canvas space)");
+  CHECK(error_of("<svg width=\"10\" height=\"10\"><path d=\"M 0 0 L 1 1\" stroke=\"red\" stroke-width=\"1e300\"/></svg>") ==
+        "x.svg: <path>: stroke-width too large (beyond 1e+15 in canvas space)");
+  // An absurd size prints as a number, not as an integer cast of it.
+  CHECK(error_of("<svg width=\"1e308\" height=\"10\"/>") ==
+        "x.svg: size 1e+308x10 is too large (limit 32768 px)");
+  CHECK(error_of("<svg width=\"1e308in\" height=\"10\"/>") == "x.svg: <svg> width=\"1e308in\": number out of range");
+  // Arcs with extreme radii whose geometry is representable read without complaint.
+  const Scene s = read("<path d=\"M 0 0 A 1e-300 1e-300 0 0 1 10 0 A 1e308 1e308 0 0 1 20 0\" fill=\"red\"/>",
+                       "width=\"100\" height=\"100\"");
+  REQUIRE(s.paths.size() == 1);
+  CHECK(s.paths[0].subpaths[0].segment_count() == 3);
+}
+
 TEST_CASE("limits: deep nesting, use bombs, segment count, file size, missing files") {
   std::string deep = "<svg>";
   for (int i = 0; i < 10000; ++i) deep += "<g>";
   deep += "<rect width=\"1\" height=\"1\"/>";
   for (int i = 0; i < 10000; ++i) deep += "</g>";
   CHECK(error_of(deep + "</svg>") == "x.svg: nesting deeper than 256 elements");
-  // 2^30 copies of an invisible rect through 30 levels of doubling uses: refused quickly.
+  // 2^30 copies of an invisible rect through 30 levels of doubling uses: refused at the element
+  // bound (2^20), which is what keeps it quick; the test asserts the bound, not a clock.
   std::string bomb = "<svg><defs><rect id=\"l0\" width=\"1\" height=\"1\" fill=\"none\"/>";
   for (int i = 1; i <= 30; ++i)
     bomb += "<g id=\"l" + std::to_string(i) + "\"><use href=\"#l" + std::to_string(i - 1) + "\"/><use href=\"#l" +
             std::to_string(i - 1) + "\"/></g>";
   bomb += "</defs><use href=\"#l30\"/></svg>";
-  const auto t0 = std::chrono::steady_clock::now();
   CHECK(error_of(bomb) == "x.svg: more than 1048576 elements to draw (nested <use> copies)");
-  CHECK(std::chrono::steady_clock::now() - t0 < std::chrono::seconds(5));
   SvgReadLimits few;
   few.max_segments = 10;
   CHECK(error_of("<svg><rect width=\"1\" height=\"1\"/><rect width=\"1\" height=\"1\"/><rect width=\"1\" height=\"1\"/></svg>",
@@ -398,19 +420,20 @@ TEST_CASE("limits: deep nesting, use bombs, segment count, file size, missing fi
   }
 }
 
-TEST_CASE("reading is fast: a 60 KB document well under 10 ms") {
+TEST_CASE("a 60 KB document of many paths reads completely") {
+  // How fast is for `svgmotion bench`, not for a test on a shared machine.
   std::string body;
-  for (int i = 0; body.size() < 60000; ++i)
-    body += "<path fill=\"#911A1D\" fill-opacity=\"1.0\" d=\"M" + std::to_string(i) +
+  int n = 0;
+  for (; body.size() < 60000; ++n)
+    body += "<path fill=\"#911A1D\" fill-opacity=\"1.0\" d=\"M" + std::to_string(n) +
             ".5 283.37 C293.82 286.60 293.33 306.81 293.46 317.10 C293.55 324.62 293.20 332.15 293.24 339.67 "
             "L 20 30 Q 40 50 60 70 A 5 5 0 0 1 80 90 Z\"/>";
-  const Scene warm = read(body);  // page the code in
-  const auto t0 = std::chrono::steady_clock::now();
   const Scene s = read(body);
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  CHECK(s.paths.size() == warm.paths.size());
-  CHECK(s.paths.size() > 100);
-  CHECK(ms < 10);
+  REQUIRE(s.paths.size() == static_cast<size_t>(n));
+  // C, C, L, Q, the arc in two pieces (its radii scale up to a half circle), the closing line.
+  for (const Path& p : s.paths) CHECK(p.subpaths[0].segment_count() == 7);
+  CHECK(s.paths[7].subpaths[0].points[0].x == doctest::Approx(7.5));
+  CHECK(s.warnings.empty());
 }
 
 }  // TEST_SUITE

@@ -20,6 +20,10 @@ struct SvgReadLimits {
   int max_depth = 256;                // element nesting (including through <use>)
   double max_canvas_px = 1 << 15;     // width/height above this are "absurd sizes"
   size_t max_segments = 4u << 20;     // cubic segments over the whole document
+  // Canvas-space coordinates (and stroke widths) beyond this are refused: the renderer works in
+  // float, where a product of two coordinates must stay below FLT_MAX (sqrt = 1.8e19) even
+  // after the up to 16384x scale to the render size.
+  double max_coordinate = 1e15;
   // When >= 0: paths with an <animate attributeName="d"> take their animated shape at this
   // time in seconds (SMIL: values, keyTimes, dur, repeatCount, calcMode linear or discrete).
   double animation_time = -1;

@@ -62,8 +62,7 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
   auto& ctx = rt_.context();
   auto ro = [&](const auto& v) {
     using T = typename std::decay_t<decltype(v)>::value_type;
-    return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
-                      std::max<size_t>(v.size() * sizeof(T), 16), const_cast<T*>(v.data()));
+    return input_buffer(ctx, v.data(), v.size() * sizeof(T));
   };
   auto rw = [&](size_t bytes) {
     cl::Buffer b(ctx, CL_MEM_READ_WRITE, std::max<size_t>(bytes, 16));

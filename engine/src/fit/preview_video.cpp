@@ -15,6 +15,7 @@
 
 #include <unistd.h>
 
+#include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -82,9 +83,11 @@ void write_preview_video(const fs::path& file, int frames, int panels,
   std::vector<std::pair<int, int>> sizes;  // panel sizes of frame 0, which every frame repeats
   cv::VideoWriter writer;
   cv::Mat canvas;
-  const fs::path dir = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+  // The rename must not replace a device or FIFO; a symlink is written through (atomic_file.h).
+  const fs::path target = output_target(file);
+  const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   // The extension picks FFmpeg's container, so the temporary name keeps ".mp4".
-  tmp.path = dir / ("." + file.filename().string() + ".part" + std::to_string(::getpid()) + ".mp4");
+  tmp.path = dir / ("." + target.filename().string() + ".part" + std::to_string(::getpid()) + ".mp4");
 
   for (int k = 0; k < frames; ++k) {
     std::vector<RgbaImage> row;
@@ -154,7 +157,7 @@ void write_preview_video(const fs::path& file, int frames, int panels,
   std::error_code ec;
   const auto bytes = fs::file_size(tmp.path, ec);
   if (ec || bytes == 0) fail(file, "cannot write: the encoder produced no output");
-  fs::rename(tmp.path, file, ec);
+  fs::rename(tmp.path, target, ec);
   if (ec) fail(file, "cannot write: " + ec.message());
   tmp.keep = true;
 }

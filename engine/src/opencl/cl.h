@@ -20,6 +20,16 @@ namespace svgm {
 // "CL_OUT_OF_RESOURCES (-5)" style name for an OpenCL status code.
 std::string cl_status_name(int status);
 
+// OpenCL refuses zero-sized buffers: every buffer has at least this many bytes.
+constexpr size_t kMinBufferBytes = 16;
+
+// A device buffer of max(bytes, kMinBufferBytes) bytes holding the `bytes` bytes at `host`.
+// CL_MEM_COPY_HOST_PTR reads the whole buffer size from the host pointer, so a short input is
+// copied into a zero-padded block first (never read past `host`), and an empty one (whose
+// data() may be null: CL_INVALID_HOST_PTR) never passes its own pointer. Throws cl::Error.
+cl::Buffer input_buffer(const cl::Context& ctx, const void* host, size_t bytes,
+                        cl_mem_flags access = CL_MEM_READ_ONLY);
+
 // n rounded up to a multiple of m: global sizes must be multiples of the work-group size.
 inline size_t round_up(size_t n, size_t m) { return (n + m - 1) / m * m; }
 

@@ -12,16 +12,35 @@ namespace svgm {
 
 namespace {
 
-nlohmann::json to_json(const YAML::Node& n) {
+// The most values (maps, lists and scalars) one config may expand to. A YAML alias repeats its
+// anchor's whole node wherever it is used, so aliases of aliases let a file of a few hundred
+// bytes name 10^9 values (the "billion laughs"); yaml-cpp shares them, but JSON copies each.
+// default.yaml holds about 60 values and an inline ComfyUI workflow a few thousand.
+constexpr size_t kMaxConfigValues = 100000;
+
+// Values left to produce, shared by one file and its overrides; `where` names the source
+// ("file:line: 'key.path'") in the error.
+struct ValueBudget {
+  size_t left = kMaxConfigValues;
+  void take(const std::string& where) {
+    if (left == 0)
+      throw Error(where + " expands to more than " + std::to_string(kMaxConfigValues) +
+                  " values (YAML aliases of aliases?)");
+    --left;
+  }
+};
+
+nlohmann::json to_json(const YAML::Node& n, ValueBudget& budget, const std::string& where) {
+  budget.take(where);
   switch (n.Type()) {
     case YAML::NodeType::Map: {
       nlohmann::json o = nlohmann::json::object();
-      for (const auto& kv : n) o[kv.first.as<std::string>()] = to_json(kv.second);
+      for (const auto& kv : n) o[kv.first.as<std::string>()] = to_json(kv.second, budget, where);
       return o;
     }
     case YAML::NodeType::Sequence: {
       nlohmann::json a = nlohmann::json::array();
-      for (const auto& v : n) a.push_back(to_json(v));
+      for (const auto& v : n) a.push_back(to_json(v, budget, where));
       return a;
     }
     case YAML::NodeType::Scalar: {
@@ -80,7 +99,7 @@ bool free_form(const std::string& path) {
 
 // Merges `user` into `into`, checking every key against `schema`.
 void merge(const YAML::Node& user, nlohmann::json& into, const nlohmann::json& schema,
-           const std::string& path, const std::string& file) {
+           const std::string& path, const std::string& file, ValueBudget& budget) {
   for (const auto& kv : user) {
     const std::string key = kv.first.as<std::string>();
     const std::string full = path.empty() ? key : path + "." + key;
@@ -94,14 +113,14 @@ void merge(const YAML::Node& user, nlohmann::json& into, const nlohmann::json& s
     const nlohmann::json& s = schema[key];
     if (s.is_object() && !free_form(full)) {
       if (!kv.second.IsMap()) throw Error(file + line + ": '" + full + "' must be a section of keys");
-      merge(kv.second, into[key], s, full, file);
+      merge(kv.second, into[key], s, full, file, budget);
     } else if (s.is_object()) {
       // Free-form sections merge key by key, so options.x=1 keeps the other options.
-      const nlohmann::json v = to_json(kv.second);
+      const nlohmann::json v = to_json(kv.second, budget, file + line + ": '" + full + "'");
       if (into[key].is_object() && v.is_object()) into[key].update(v, true);
       else into[key] = v;
     } else {
-      const nlohmann::json v = to_json(kv.second);
+      const nlohmann::json v = to_json(kv.second, budget, file + line + ": '" + full + "'");
       if (s.is_number() && !v.is_number())
         throw Error(file + line + ": '" + full + "' must be a number");
       if (s.is_boolean() && !v.is_boolean())
@@ -116,7 +135,10 @@ void merge(const YAML::Node& user, nlohmann::json& into, const nlohmann::json& s
 
 nlohmann::json default_config() {
   for (const auto& c : embedded_configs())
-    if (std::string_view(c.name) == "default.yaml") return to_json(YAML::Load(c.text));
+    if (std::string_view(c.name) == "default.yaml") {
+      ValueBudget budget;
+      return to_json(YAML::Load(c.text), budget, "default.yaml");
+    }
   throw Error("internal: no embedded default.yaml");
 }
 
@@ -124,6 +146,7 @@ nlohmann::json load_config(const std::optional<std::filesystem::path>& file,
                            const std::vector<std::string>& overrides) {
   const nlohmann::json schema = default_config();
   nlohmann::json cfg = schema;
+  ValueBudget budget;
   if (file) {
     YAML::Node root;
     try {
@@ -135,7 +158,7 @@ nlohmann::json load_config(const std::optional<std::filesystem::path>& file,
     }
     if (!root.IsNull()) {
       if (!root.IsMap()) throw Error(file->string() + ": a config is a YAML map of keys");
-      merge(root, cfg, schema, "", file->string());
+      merge(root, cfg, schema, "", file->string(), budget);
     }
   }
   for (const std::string& o : overrides) {
@@ -160,7 +183,7 @@ nlohmann::json load_config(const std::optional<std::filesystem::path>& file,
       if (dot == std::string::npos) break;
       end = dot;
     }
-    merge(tree, cfg, schema, "", "command line '" + o + "'");
+    merge(tree, cfg, schema, "", "command line '" + o + "'", budget);
   }
   return cfg;
 }

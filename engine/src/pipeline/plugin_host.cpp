@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "pipeline/module_check.h"
 #include "svgmotion/error.h"
 
 #ifndef SVGM_VERSION
@@ -80,6 +81,11 @@ PluginHost::PluginHost(const std::vector<fs::path>& search_path) {
 }
 
 void PluginHost::load(const fs::path& file) {
+  // A truncated or garbage file would kill the process inside dlopen (SIGBUS): look first.
+  if (const auto problem = module_problem(file)) {
+    problems_.push_back(file.string() + ": not a loadable module (" + *problem + ")");
+    return;
+  }
   // RTLD_LOCAL: plugins do not see each other's symbols; the handle stays open for the
   // process's life (descriptors point into the module).
   void* h = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);

@@ -9,12 +9,9 @@
 namespace svgm {
 
 cl::Buffer ClRaster::make(size_t bytes, const void* host) {
-  bytes = std::max<size_t>(bytes, 16);  // OpenCL refuses zero-sized buffers
-  device_bytes_ += bytes;
-  if (host)
-    return cl::Buffer(rt_.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bytes,
-                      const_cast<void*>(host));
-  return cl::Buffer(rt_.context(), CL_MEM_READ_WRITE, bytes);
+  device_bytes_ += std::max(bytes, kMinBufferBytes);
+  if (host) return input_buffer(rt_.context(), host, bytes);
+  return cl::Buffer(rt_.context(), CL_MEM_READ_WRITE, std::max(bytes, kMinBufferBytes));
 }
 
 ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames)

@@ -40,31 +40,63 @@ void arc_to_cubics(Vec2 p0, double rx, double ry, double phi_deg, bool large_arc
     return;
   }
   const double phi = phi_deg * M_PI / 180.0, cp = std::cos(phi), sp = std::sin(phi);
-  // F.6.5.1: the midpoint in the ellipse's frame.
-  const double dx = 0.5 * (p0.x - p1.x), dy = 0.5 * (p0.y - p1.y);
+  // F.6.5.1: the midpoint in the ellipse's frame. Halving each coordinate before subtracting
+  // keeps p0 - p1 finite for any finite endpoints (1e308 - -1e308 overflows).
+  const double dx = 0.5 * p0.x - 0.5 * p1.x, dy = 0.5 * p0.y - 0.5 * p1.y;
   const double x1 = cp * dx + sp * dy, y1 = -sp * dx + cp * dy;
-  // F.6.6: radii too small for the endpoints are scaled up.
-  const double lambda = (x1 * x1) / (rx * rx) + (y1 * y1) / (ry * ry);
-  if (lambda > 1) {
-    rx *= std::sqrt(lambda);
-    ry *= std::sqrt(lambda);
+  // The spec's formulas square the radii and coordinates, which overflows (radius 1e308) or
+  // underflows (1e-300) long before the geometry does. They are rewritten here in the ratios
+  // ux = x1/rx, uy = y1/ry and root = sqrt(lambda) = hypot(ux, uy), exact rearrangements:
+  //   F.6.6    lambda = ux² + uy²; if lambda > 1, rx, ry *= root (so that root becomes 1)
+  //   F.6.5.2  k = sqrt((rx²ry² - rx²y1² - ry²x1²) / (rx²y1² + ry²x1²)) = sqrt((1 - L) / L)
+  //            cx' = k rx y1/ry = rx (uy/root) sqrt(1 - L),  cy' = -ry (ux/root) sqrt(1 - L)
+  double ux = x1 / rx, uy = y1 / ry, root = std::hypot(ux, uy);
+  if (!std::isfinite(root)) {
+    // Radii smaller than the chord by more than the double range (x1/rx overflows): the
+    // scaled-up radii of F.6.6 directly, rx root = hypot(x1, y1 rx/ry) and likewise ry.
+    const double sx = std::hypot(x1, y1 * (rx / ry)), sy = std::hypot(x1 * (ry / rx), y1);
+    rx = sx;
+    ry = sy;
+    ux = x1 / rx;
+    uy = y1 / ry;
+    root = 1;
   }
-  // F.6.5.2: the centre.
-  const double num = rx * rx * ry * ry - rx * rx * y1 * y1 - ry * ry * x1 * x1;
-  const double den = rx * rx * y1 * y1 + ry * ry * x1 * x1;
-  double k = den > 0 ? std::sqrt(std::max(0.0, num / den)) : 0;
-  if (large_arc == sweep) k = -k;
-  const double cxp = k * rx * y1 / ry, cyp = -k * ry * x1 / rx;
-  const double cx = cp * cxp - sp * cyp + 0.5 * (p0.x + p1.x);
-  const double cy = sp * cxp + cp * cyp + 0.5 * (p0.y + p1.y);
-  // F.6.5.5-6: start angle and sweep.
+  // A chord a billionth of the radii (or smaller, down to underflow) bends the small arc by
+  // under a billionth of its length: that arc is its chord. Computing it through a centre
+  // 1e9 chords away would lose more than that to rounding.
+  if (!(root > 2e-9) && large_arc == false) {
+    line_to(out, p0, p1);
+    return;
+  }
+  if (root > 1) {
+    rx *= root;
+    ry *= root;
+    ux /= root;
+    uy /= root;
+    root = 1;
+  }
+  const double lift = std::sqrt(std::max(0.0, 1 - root * root));
+  const double sign = large_arc == sweep ? -1 : 1;
+  // The centre in the ellipse's frame, in radii (ncx = cx'/rx, ncy = cy'/ry: at most 1).
+  const double ncx = sign * (root > 0 ? uy / root : 0) * lift;
+  const double ncy = -sign * (root > 0 ? ux / root : 0) * lift;
+  const double cxp = rx * ncx, cyp = ry * ncy;
+  const double cx = cp * cxp - sp * cyp + (0.5 * p0.x + 0.5 * p1.x);
+  const double cy = sp * cxp + cp * cyp + (0.5 * p0.y + 0.5 * p1.y);
+  // F.6.5.5-6: start angle and sweep; (x1 - cx')/rx = ux - ncx and so on, which cannot overflow.
   auto angle = [](double ux, double uy, double vx, double vy) {
     return std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);
   };
-  const double th1 = angle(1, 0, (x1 - cxp) / rx, (y1 - cyp) / ry);
-  double dth = angle((x1 - cxp) / rx, (y1 - cyp) / ry, (-x1 - cxp) / rx, (-y1 - cyp) / ry);
+  const double th1 = angle(1, 0, ux - ncx, uy - ncy);
+  double dth = angle(ux - ncx, uy - ncy, -ux - ncx, -uy - ncy);
   if (!sweep && dth > 0) dth -= 2 * M_PI;
   if (sweep && dth < 0) dth += 2 * M_PI;
+  if (!std::isfinite(dth) || !std::isfinite(cx) || !std::isfinite(cy)) {
+    // Only reachable for radii whose ellipse does not fit in a double (the large arc of a
+    // 1e308 radius): left non-finite for the reader to refuse, never cast to an int.
+    out.insert(out.end(), {Vec2{HUGE_VAL, HUGE_VAL}, Vec2{HUGE_VAL, HUGE_VAL}, p1});
+    return;
+  }
   // Pieces of at most 90 degrees, each the standard cubic of a circular arc mapped by the
   // ellipse's affine frame.
   const int n = std::max(1, static_cast<int>(std::ceil(std::fabs(dth) / (M_PI / 2) - 1e-9)));

@@ -50,6 +50,14 @@ std::string describe(pugi::xml_node n) {
   return s + ">";
 }
 
+// A size or coordinate for a message: whole pixels, or %g beyond 15 digits. Never a cast to an
+// integer type, which is undefined behaviour for 1e308.
+std::string px_text(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.15g", std::fabs(v) < 1e15 ? std::floor(v) : v);
+  return b;
+}
+
 struct Viewport {
   double w = 100, h = 100;
 };
@@ -206,6 +214,9 @@ double Reader::length(pugi::xml_node n, const char* attr, double fallback, doubl
   else if (unit == "em") scale = 16;
   else if (unit == "ex") scale = 8;
   else return fallback;
+  // 1e308in is a finite number but not a finite length: refused like an overflow.
+  if (!std::isfinite(*x * scale))
+    fail(describe(n) + " " + attr + "=\"" + std::string(v) + "\": number out of range");
   return *x * scale;
 }
 
@@ -545,9 +556,19 @@ void Reader::add_shape(pugi::xml_node n, std::vector<Subpath> subpaths, const St
   }
   if (!p.has_fill && !p.has_stroke) return;
   for (Subpath& sp : subpaths) {
-    for (Vec2& v : sp.points) v = ctm.apply(v);
+    for (Vec2& v : sp.points) {
+      v = ctm.apply(v);
+      // Finite numbers can still make infinite geometry (1e308 - -1e308 overflows, and so may
+      // a transform), or numbers no float holds: the renderer would make NaN of them.
+      if (!(std::fabs(v.x) <= limits_.max_coordinate && std::fabs(v.y) <= limits_.max_coordinate))
+        fail(describe(n) + ": coordinates too large (beyond " + px_text(limits_.max_coordinate) +
+             " in canvas space)");
+    }
     segments_ += sp.segment_count();
   }
+  if (p.has_stroke && !(p.stroke.width <= limits_.max_coordinate))
+    fail(describe(n) + ": stroke-width too large (beyond " + px_text(limits_.max_coordinate) +
+         " in canvas space)");
   if (segments_ > limits_.max_segments)
     fail("more than " + std::to_string(limits_.max_segments) + " path segments");
   p.subpaths = std::move(subpaths);
@@ -743,8 +764,8 @@ Scene Reader::read(std::string_view text) {
   };
   const double w = side("width", vbw), h = side("height", vbh);
   if (w > limits_.max_canvas_px || h > limits_.max_canvas_px)
-    fail("size " + std::to_string(static_cast<long long>(w)) + "x" + std::to_string(static_cast<long long>(h)) +
-         " is too large (limit " + std::to_string(static_cast<long long>(limits_.max_canvas_px)) + " px)");
+    fail("size " + px_text(w) + "x" + px_text(h) + " is too large (limit " +
+         px_text(limits_.max_canvas_px) + " px)");
   if (!(w > 0) || !(h > 0)) fail("width and height must be positive");
   scene_.width = w;
   scene_.height = h;

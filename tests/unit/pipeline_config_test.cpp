@@ -1,0 +1,98 @@
+// Config loading (pipeline/config.h): the value bound that stops YAML alias bombs, wherever in
+// the config they sit (a free-form options section, a list, an override), while ordinary
+// aliases keep working. Config files are written by the test into a temporary folder.
+#include <doctest/doctest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "pipeline/config.h"
+#include "svgmotion/error.h"
+
+using namespace svgm;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TempFile {
+  fs::path path;
+  explicit TempFile(const std::string& text) {
+    static int counter = 0;
+    path = fs::temp_directory_path() /
+           ("svgm_config_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++) + ".yaml");
+    std::ofstream(path) << text;
+  }
+  ~TempFile() {
+    std::error_code ec;
+    fs::remove(path, ec);
+  }
+  TempFile(const TempFile&) = delete;
+  TempFile& operator=(const TempFile&) = delete;
+};
+
+// Nine levels of ten aliases to the level below: 10^9 strings when expanded, under 1 KB written.
+// `indent` spaces before each line; the anchors are flow lists so each level is one line.
+std::string bomb(const std::string& indent) {
+  std::string s = indent + "l0: &a0 [x, x, x, x, x, x, x, x, x, x]\n";
+  for (int i = 1; i <= 8; ++i) {
+    const std::string prev = "*a" + std::to_string(i - 1);
+    s += indent + "l" + std::to_string(i) + ": &a" + std::to_string(i) + " [";
+    for (int j = 0; j < 10; ++j) s += (j ? ", " : "") + prev;
+    s += "]\n";
+  }
+  return s;
+}
+
+std::string error_of(const std::optional<fs::path>& file, const std::vector<std::string>& overrides = {}) {
+  try {
+    load_config(file, overrides);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_SUITE("pipeline") {
+
+TEST_CASE("an alias bomb in a free-form options section is refused in one line naming the file") {
+  const TempFile f("stages:\n  video:\n    options:\n" + bomb("      "));
+  CHECK(error_of(f.path) == f.path.string() +
+                                ":3: 'stages.video.options' expands to more than 100000 values "
+                                "(YAML aliases of aliases?)");
+}
+
+TEST_CASE("an alias bomb in a list-valued key or in an override is refused the same way") {
+  // The same nine levels as one flow list; each level is an element of plugin_paths.
+  std::string flow = "[&a0 [x, x, x, x, x, x, x, x, x, x]";
+  for (int i = 1; i <= 8; ++i) {
+    flow += ", &a" + std::to_string(i) + " [";
+    for (int j = 0; j < 10; ++j) flow += (j ? ", *a" : "*a") + std::to_string(i - 1);
+    flow += "]";
+  }
+  flow += "]";
+  const TempFile f("device: cpu\nplugin_paths: " + flow + "\n");
+  CHECK(error_of(f.path) == f.path.string() +
+                                ":2: 'plugin_paths' expands to more than 100000 values "
+                                "(YAML aliases of aliases?)");
+  const std::string o = "stages.fitter.options={big: " + flow + "}";
+  CHECK(error_of(std::nullopt, {o}) ==
+        "command line '" + o + "': 'stages.fitter.options' expands to more than 100000 values "
+        "(YAML aliases of aliases?)");
+}
+
+TEST_CASE("ordinary aliases in options still expand") {
+  const TempFile f(
+      "stages:\n  video:\n    options:\n      base: &b {fps: 12, size: 96}\n      a: *b\n      c: [*b, *b]\n");
+  const nlohmann::json cfg = load_config(f.path, {});
+  const nlohmann::json& o = cfg["stages"]["video"]["options"];
+  CHECK(o["a"]["fps"] == 12);
+  CHECK(o["c"].size() == 2);
+  CHECK(o["c"][1]["size"] == 96);
+}
+
+}  // TEST_SUITE
