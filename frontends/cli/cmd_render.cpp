@@ -30,14 +30,14 @@ int cmd_render(const std::vector<std::string>& argv) {
   const auto out = a.get("-o") ? a.get("-o") : a.get("--output");
   if (!out || out->empty()) throw Error("render: missing -o OUT.png");
   {
+    std::error_code ec;
+    if (std::filesystem::equivalent(input, *out, ec))
+      throw Error(*out + ": is the input file; choose another output name");
     std::string ext = std::filesystem::path(*out).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
     if (ext != ".png")
       throw Error(*out + ": render writes PNG images only; name the output with a .png extension" +
                   (ext.empty() ? std::string() : " (not " + ext + ")"));
-    std::error_code ec;
-    if (std::filesystem::equivalent(input, *out, ec))
-      throw Error(*out + ": is the input file; choose another output name");
   }
   const std::string bg = a.get("--background").value_or("white");
   if (bg != "white" && bg != "transparent")

@@ -1,5 +1,6 @@
 // Small file helpers shared by svgmotion's built-in plugins (see stage_files.h).
 #include "common/stage_files.h"
+#include "common/plugin_glue.h"
 #include "svgmotion/atomic_file.h"
 
 #include <unistd.h>
@@ -15,7 +16,9 @@
 #include "svgmotion/png_io.h"
 #include "svgmotion/render_size.h"
 #include "svgmotion/target_video.h"
+#include "fit/palette.h"
 #include "fit/preview_video.h"
+#include "svgmotion/svg_reader.h"
 
 namespace svgm::plugin {
 
@@ -86,6 +89,24 @@ void write_target(const fs::path& chosen, const fs::path& target) {
   } else {
     copy_atomic(chosen, target);
   }
+}
+
+std::vector<Rgba> candidate_colours(const nlohmann::json& req, const std::string& who) {
+  const nlohmann::json& stages = req.at("stages");
+  const std::string colors = stages.at("fitter").value("colors", "auto");
+  const bool user_video = stages.at("video").value("plugin", "") == "file";
+  std::vector<Rgba> out;
+  if (colors == "original" || (colors == "auto" && user_video)) {
+    for (const Path& p : read_svg_file(file(req, "inputs", "svg")).paths) {
+      if (p.has_fill) out.push_back(p.fill);
+      if (p.has_stroke) out.push_back(p.stroke.color);
+    }
+    if (out.empty()) throw Error(who + ": the SVG has no coloured paths");
+    return out;
+  }
+  for (const auto& [id, c] : read_palette(file(req, "inputs", "palette"))) out.push_back(c);
+  if (out.empty()) throw Error(who + ": palette.json has no colours");
+  return out;
 }
 
 }  // namespace svgm::plugin

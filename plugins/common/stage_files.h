@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "svgmotion/png_io.h"
 #include "svgmotion/scene.h"
@@ -28,5 +29,11 @@ std::string hex_color(const Rgba& c);
 // The ranker's last step: the chosen candidate becomes the run's target.mp4 (an mp4 copied
 // atomically; a frames folder, webm, ... re-encoded as mp4 at its own size and rate).
 void write_target(const std::filesystem::path& chosen, const std::filesystem::path& target);
+
+// The colours the candidate videos are drawn in, for rankers: the palette's (palette.json)
+// when the videos were generated from the recoloured image, the SVG's own (every fill and
+// stroke of grouped.svg) for a video the user brings (`video: file`), following the fitter's
+// stages.fitter.colors (auto | palette | original). `who` names the ranker in errors.
+std::vector<Rgba> candidate_colours(const nlohmann::json& request, const std::string& who);
 
 }  // namespace svgm::plugin

@@ -16,6 +16,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   svgm::FitJob job;
   job.svg = P::file(req, "inputs", "svg");
   job.export_into = P::file(req, "inputs", "original");
+  job.export_name = req.value("input", "");
   job.target = P::file(req, "inputs", "target");
   // Colours to fit in: the palette's when the target video was made from the recoloured image
   // (generators), the SVG's own when it is the user's video (`video: file`), unless set.

@@ -148,9 +148,8 @@ json run(const json& req, const svgm_host* host) {
   const json opts = config.contains("options") ? config["options"] : json::object();
   Settings s = read_options(opts);
   const fs::path dir = P::file(req, "inputs", "candidates");
-  std::vector<svgm::Rgba> palette;
-  for (const auto& [id, c] : svgm::read_palette(P::file(req, "inputs", "palette"))) palette.push_back(c);
-  if (palette.empty()) throw svgm::Error("ranker llm: palette.json has no colours");
+  // The colours the candidates are drawn in: the palette's, or the SVG's own for a user's video.
+  const std::vector<svgm::Rgba> palette = svgm::plugin::candidate_colours(req, "ranker llm");
   const svgm::Ranking pixel = svgm::rank_directory(dir, palette, {}, [&](double f, const std::string& note) {
     if (host && host->progress) host->progress(host, 0.3 * f, note.c_str());
     return !(host && host->cancelled && host->cancelled(host));

@@ -32,10 +32,8 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   namespace fs = std::filesystem;
   const svgm::PixelRankOptions o = options_of(req);
   const fs::path dir = svgm::plugin::file(req, "inputs", "candidates");
-  std::vector<svgm::Rgba> palette;
-  for (const auto& [id, c] : svgm::read_palette(svgm::plugin::file(req, "inputs", "palette")))
-    palette.push_back(c);
-  if (palette.empty()) throw svgm::Error("ranker pixel: palette.json has no colours");
+  // The colours the candidates are drawn in: the palette's, or the SVG's own for a user's video.
+  const std::vector<svgm::Rgba> palette = svgm::plugin::candidate_colours(req, "ranker pixel");
 
   const svgm::Ranking r = svgm::rank_directory(dir, palette, o, [&](double f, const std::string& note) {
     if (host && host->progress) host->progress(host, 0.9 * f, note.c_str());

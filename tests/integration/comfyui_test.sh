@@ -12,7 +12,9 @@ bin=$1 data=$2
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/test_lib.sh"
 
-small=(stages.fitter.iterations=5 stages.fitter.keyframes=3 stages.fitter.size=64 stages.video.size=96)
+# Tiny 96 px candidates read as colour drift to the pixel ranker; these runs test the
+# providers, not the ranking, so a flagged set is fitted anyway.
+small=(stages.ranker.accept_flagged=true stages.fitter.iterations=5 stages.fitter.keyframes=3 stages.fitter.size=64 stages.video.size=96)
 "$bin" run --input "$data/examples/man.svg" -o "$tmp/base" --quiet --prompt "waves the right arm" \
   stages.video.plugin=procedural stages.video.candidates=1 "${small[@]}" >"$tmp/base.out" 2>&1
 check "the procedural base run gives a video to serve" '[[ -s $tmp/base/candidates/00.mp4 && -s $tmp/base/recolored.png ]]'
@@ -55,7 +57,7 @@ run_case refused "url: \"http://127.0.0.1:$closed\", workflow: \"$(workflow ok)\
 run_case broken "url: \"$url\", workflow: \"$tmp/wf_broken.json\"" & cases+=($!)
 wait "${cases[@]}"
 
-readable() { "$bin" fit "$tmp/base/input.svg" --target "$1" -o "$tmp/probe_$(basename "$1")" --iterations 1 --keyframes 2 --size 32 >/dev/null 2>&1; }
+readable() { "$bin" fit "$tmp/base/input.svg" --target "$1" -o "$tmp/probe_$(basename "$1")" --iterations 1 --keyframes 2 --size 32 --no-gate >/dev/null 2>&1; }
 check "ok: the run succeeds" '[[ $(cat "$tmp/ok.rc") -eq 0 && -s $tmp/ok/animation.svg ]] || { head -c 400 "$tmp/ok.err"; false; }'
 check "ok: candidates/00.mp4 and 01.mp4 are the served video" \
   'cmp -s "$tmp/ok/candidates/00.mp4" "$tmp/base/candidates/00.mp4" && cmp -s "$tmp/ok/candidates/01.mp4" "$tmp/base/candidates/00.mp4" && [[ $(ls "$tmp/ok/candidates" | wc -l) -eq 2 ]]'

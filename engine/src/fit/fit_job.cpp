@@ -207,8 +207,12 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   if (rejected && job.gate) fs::remove(out / "animation.svg", ec);  // never leave a stale success
   else fs::remove(out / "animation.failed.svg", ec);
   for (const auto& w : write_animation_svg(into, export_scene ? *export_scene : scene, fitter.raster_plan(), points,
-                                           timing, anim, export_scene ? &map : nullptr))
-    std::fprintf(stderr, "svgmotion: warning: %s\n", w.c_str());
+                                           timing, anim, export_scene ? &map : nullptr)) {
+    std::string line = w;
+    if (!job.export_name.empty() && line.rfind(into.string(), 0) == 0)
+      line = job.export_name + line.substr(into.string().size());
+    std::fprintf(stderr, "svgmotion: warning: %s\n", line.c_str());
+  }
   const int active = fitter.active_keyframes();
   const int W = size.width, H = size.height;
   write_preview_video(out / "preview.mp4", active, 2,

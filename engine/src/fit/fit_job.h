@@ -33,6 +33,7 @@ struct FitJob {
   // pipeline's working copy (layered.svg) and exports into the user's own input.svg: paths are
   // matched by id and the working copy's paint order is applied (document_order.h).
   std::optional<std::filesystem::path> export_into;
+  std::string export_name;  // how messages name export_into (the user's path, not the run copy)
   LoopMode loop = LoopMode::Loop;
   bool gate = true;  // false: write animation.svg even when the result gate rejects the fit
   // Progress: when set, called about twice a second with the fraction done and a short note,

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -32,6 +33,12 @@ const nlohmann::json& at(const nlohmann::json& c, const std::string& path) {
   return *j;
 }
 
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
+
 std::string shown(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
 
 void whole(const nlohmann::json& c, const std::string& key, long long lo, long long hi) {
@@ -51,8 +58,8 @@ void real(const nlohmann::json& c, const std::string& key, double lo, double hi,
   if (v.is_null()) return;
   const double x = v.is_number() ? v.get<double>() : NAN;
   if (!(std::isfinite(x) && (open_lo ? x > lo : x >= lo) && x <= hi))
-    throw Error(key + ": must be a number in " + (open_lo ? "(" : "[") + shown(nlohmann::json(lo)) + ", " +
-                shown(nlohmann::json(hi)) + "], not " + shown(v));
+    throw Error(key + ": must be a number in " + (open_lo ? "(" : "[") + number(lo) + ", " + number(hi) +
+                "], not " + shown(v));
 }
 
 void one_of(const nlohmann::json& c, const std::string& key, std::initializer_list<const char*> allowed) {

@@ -19,7 +19,7 @@ const std::vector<StageFiles>& stage_files() {
       {"recolorer", {{"svg", "grouped.svg"}},
        {{"svg", "recolored.svg"}, {"png", "recolored.png"}, {"palette", "palette.json"}}},
       {"video", {{"image", "recolored.png"}, {"svg", "recolored.svg"}}, {{"candidates", "candidates"}}},
-      {"ranker", {{"candidates", "candidates"}, {"palette", "palette.json"}},
+      {"ranker", {{"candidates", "candidates"}, {"palette", "palette.json"}, {"svg", "grouped.svg"}},
        {{"ranking", "ranking.json"}, {"target", "target.mp4"}}},
       {"layers",
        {{"svg", "grouped.svg"}, {"target", "target.mp4"}, {"palette", "palette.json"}, {"original", "input.svg"}},

@@ -1,0 +1,180 @@
+// The user's own document as the fit's output (fit/document_order.h, smil_writer.h timing) and
+// the result gate (fit/result_gate.h): paths matched by id, paint orders applied by moving the
+// fewest elements and only within their parents, keyTimes and loop modes, and the gate's
+// verdict on a good fit, a fit that leaves the canvas and a fit that does not cover the figure.
+#include <doctest/doctest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "fit/document_order.h"
+#include "fit/result_gate.h"
+#include "fit/smil_writer.h"
+#include "raster/raster_plan.h"
+#include "svgmotion/error.h"
+#include "svgmotion/svg_reader.h"
+
+using namespace svgm;
+
+namespace {
+
+std::vector<std::string> ids_in_order(const std::string& text) {
+  std::vector<std::string> ids;
+  for (const Path& p : read_svg_string(text, "t").paths) ids.push_back(p.id);
+  return ids;
+}
+
+constexpr const char* kSiblings = R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="40" height="40">
+  <rect id="a" x="1" y="1" width="10" height="10"/>
+  <rect id="b" x="2" y="2" width="10" height="10"/>
+  <rect id="c" x="3" y="3" width="10" height="10"/>
+  <rect id="d" x="4" y="4" width="10" height="10"/>
+</svg>)svg";
+
+}  // namespace
+
+TEST_SUITE("fit") {
+
+TEST_CASE("reorder: the fewest elements move, and the document reads back in the new order") {
+  const Scene s = read_svg_string(kSiblings, "t");
+  std::string out;
+  // a b c d -> b c d a: one move (a to the top), three stay.
+  ReorderResult r = reorder_document_text(kSiblings, "t", s, {1, 2, 3, 0}, &out);
+  REQUIRE_FALSE(r.refused);
+  CHECK(r.moved == 1);
+  CHECK(ids_in_order(out) == std::vector<std::string>{"b", "c", "d", "a"});
+  // d c b a: three moves (the longest increasing run has length 1).
+  r = reorder_document_text(kSiblings, "t", s, {3, 2, 1, 0}, &out);
+  REQUIRE_FALSE(r.refused);
+  CHECK(r.moved == 3);
+  CHECK(ids_in_order(out) == std::vector<std::string>{"d", "c", "b", "a"});
+  // The identity moves nothing and keeps the bytes inside the root.
+  r = reorder_document_text(kSiblings, "t", s, {0, 1, 2, 3}, &out);
+  CHECK(r.moved == 0);
+  CHECK(out.find("<rect id=\"a\" x=\"1\"") != std::string::npos);
+}
+
+TEST_CASE("reorder: a move out of its parent group is refused and changes nothing") {
+  const char* doc = R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="40" height="40">
+  <g id="g1" transform="translate(5 0)"><rect id="a" width="10" height="10"/><rect id="b" width="5" height="5"/></g>
+  <g id="g2"><rect id="c" width="10" height="10"/></g>
+</svg>)svg";
+  const Scene s = read_svg_string(doc, "t");
+  std::string out = "untouched";
+  // c below a: c would have to enter g1 (or a leave it).
+  const ReorderResult r = reorder_document_text(doc, "t", s, {2, 0, 1}, &out);
+  REQUIRE(r.refused);
+  CHECK(r.refused->find("out of its parent") != std::string::npos);
+  CHECK(out == "untouched");
+  // Within g1 it works: b below a.
+  const ReorderResult ok = reorder_document_text(doc, "t", s, {1, 0, 2}, &out);
+  REQUIRE_FALSE(ok.refused);
+  CHECK(ids_in_order(out) == std::vector<std::string>{"b", "a", "c"});
+}
+
+TEST_CASE("match_paths: a working copy maps onto the original by id, duplicates by rank") {
+  const Scene orig = read_svg_string(R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="40" height="40">
+    <path id="x" d="M0 0 L10 0 L10 10 Z"/><path id="y" d="M0 0 L5 0 L5 5 Z"/><path id="x" d="M1 1 L9 1 L9 9 Z"/>
+  </svg>)svg", "o");
+  const Scene copy = read_svg_string(R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="40" height="40">
+    <g><path id="y" d="M0 0 C 1 0 4 0 5 0 C 5 1 5 4 5 5 C 4 4 1 1 0 0 Z"/></g>
+    <g><path id="x" d="M0 0 L10 0 L10 10 Z"/><path id="x" d="M1 1 L9 1 L9 9 Z"/></g>
+  </svg>)svg", "c");
+  CHECK(match_paths(copy, orig, "c") == std::vector<int>{1, 0, 2});
+  const Scene missing = read_svg_string(R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="40" height="40">
+    <path id="z" d="M0 0 L10 0 L10 10 Z"/></svg>)svg", "m");
+  CHECK_THROWS_WITH_AS(match_paths(missing, orig, "m"), "m: path 'z' is not in the original document", Error);
+}
+
+TEST_CASE("animation timing: keyTimes at the fitted frames, closed loops, once and mirror") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("svgm_timing_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path in = dir / "in.svg", out = dir / "a.svg";
+  std::ofstream(in) << R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="40" height="40"><path id="p" d="M 0 0 L 10 0 L 10 10 Z"/></svg>)svg";
+  const Scene scene = read_svg_file(in);
+  const RasterPlan plan = plan_raster(scene, Affine{}, 40, 40);
+  const int K = 4;
+  std::vector<double> pts;
+  for (int k = 0; k < K; ++k)
+    for (int i = 0; i < plan.n_cp; ++i) pts.push_back(plan.rest_cp[2 * i] + k), pts.push_back(plan.rest_cp[2 * i + 1]);
+  auto write = [&](AnimationTiming t) {
+    write_animation_svg(in, scene, plan, pts, t, out);
+    std::ifstream f(out);
+    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  };
+  AnimationTiming t;
+  t.keyframes = K;
+  t.key_times = {0, 3.0 / 10, 7.0 / 10, 1};  // frames 0, 3, 7, 10 of 11
+  t.duration_s = 10 / 24.0;
+  std::string s = write(t);
+  CHECK(s.find("keyTimes=\"0;0.3;0.7;1\"") != std::string::npos);
+  CHECK(s.find("dur=\"0.4167s\"") != std::string::npos);
+  CHECK(s.find("repeatCount=\"indefinite\"") != std::string::npos);
+  // Keyframe k's shape is shifted by k: the last value is 3 to the right...
+  CHECK(s.find(";M 3 0 C") != std::string::npos);
+  // ...unless the loop is closed, when it is keyframe 0's shape again.
+  t.close_loop = true;
+  s = write(t);
+  CHECK(s.find(";M 3 0 C") == std::string::npos);
+  CHECK(s.find("values=\"M 0 0 C") != std::string::npos);
+  const size_t last = s.rfind(";M ");
+  CHECK(s.compare(last, 6, ";M 0 0") == 0);
+  t.close_loop = false;
+  t.loop = LoopMode::Once;
+  s = write(t);
+  CHECK(s.find("repeatCount=\"1\"") != std::string::npos);
+  CHECK(s.find("fill=\"freeze\"") != std::string::npos);
+  t.loop = LoopMode::Mirror;
+  s = write(t);
+  CHECK(s.find("keyTimes=\"0;0.15;0.35;0.5;0.65;0.85;1\"") != std::string::npos);
+  CHECK(s.find("dur=\"0.8333s\"") != std::string::npos);
+  CHECK_THROWS_WITH_AS(parse_loop_mode("sideways", "stages.fitter.loop"),
+                       "stages.fitter.loop must be loop, once or mirror, not 'sideways'", Error);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("result gate: passes a faithful fit, rejects points far off the canvas and a missed figure") {
+  const Scene scene = read_svg_string(R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="32" height="32">
+    <rect id="r" x="8" y="8" width="16" height="16" fill="#000"/></svg>)svg", "g");
+  const RasterPlan plan = plan_raster(scene, Affine{}, 32, 32);
+  const int K = 2, W = 32, H = 32;
+  TargetFrames t;
+  t.width = W, t.height = H, t.keyframes = K;
+  t.rgba.assign(static_cast<size_t>(K) * W * H * 4, 1.f);
+  t.mask.assign(static_cast<size_t>(K) * W * H, 0);
+  std::vector<float> good(static_cast<size_t>(K) * W * H * 4, 0.f);  // premultiplied over nothing
+  for (int k = 0; k < K; ++k)
+    for (int y = 8; y < 24; ++y)
+      for (int x = 8; x < 24; ++x) {
+        const size_t i = (static_cast<size_t>(k) * W * H + static_cast<size_t>(y) * W + x);
+        for (int c = 0; c < 3; ++c) t.rgba[4 * i + c] = 0;
+        t.mask[i] = 1;
+        good[4 * i + 3] = 1;  // black, opaque
+      }
+  t.raw = t.rgba;
+  std::vector<double> pts;
+  for (int k = 0; k < K; ++k)
+    for (int i = 0; i < plan.n_cp; ++i) pts.push_back(plan.rest_cp[2 * i]), pts.push_back(plan.rest_cp[2 * i + 1]);
+  GateVerdict v = judge_fit(t, good, pts, plan, scene, Affine{});
+  CHECK(v.passed);
+  CHECK(v.psnr_db[0] > 90);
+  CHECK(v.iou[1] == doctest::Approx(1.0));
+  // Keyframe 1's points thrown 100 canvases away.
+  std::vector<double> far = pts;
+  for (int i = 0; i < plan.n_cp; ++i) far[2 * (plan.n_cp + i)] += 3200;
+  v = judge_fit(t, good, far, plan, scene, Affine{});
+  CHECK_FALSE(v.passed);
+  bool outside = false;
+  for (const auto& r : v.reasons) outside = outside || r.find("keyframe 1: control points lie 99") == 0;
+  CHECK(outside);
+  // A fit that draws nothing where the figure is: PSNR and IoU both fail.
+  std::vector<float> empty(good.size(), 0.f);
+  v = judge_fit(t, empty, pts, plan, scene, Affine{});
+  CHECK_FALSE(v.passed);
+  CHECK(v.iou[0] == doctest::Approx(0.0));
+}
+
+}  // TEST_SUITE
