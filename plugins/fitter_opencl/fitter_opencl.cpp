@@ -36,6 +36,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   job.loop = svgm::parse_loop_mode(c.value("loop", "loop"), "stages.fitter.loop");
   job.gate = c.value("gate", true);
   job.quiet = true;
+  job.resume_unfinished = true;  // after Ctrl-C, the next run goes on where this one stopped
   job.progress = [host](double f, const std::string& note) {
     if (host && host->progress) host->progress(host, f, note.c_str());
   };

@@ -125,7 +125,24 @@ check "render -o X.svg is refused (PNG only), nothing written" '[[ $? -eq 1 && !
 "$bin" render "$tmp/in.svg" -o "$tmp/OUT.PNG" 2>/dev/null
 check "render -o X.PNG writes a PNG" '[[ $? -eq 0 && $(head -c 4 "$tmp/OUT.PNG" | od -An -c | tr -d " ") == "211PNG" ]]'
 
-# 6. Help and version.
+# 6. Ctrl-C in run: one line saying what the run directory holds, exit 130; the next run
+#    resumes the fit from its checkpoint instead of starting again.
+int=("$bin" run --input "$tmp/ball.svg" -o "$tmp/int" --quiet stages.video.plugin=file "stages.video.path=$tmp/leave"
+     stages.ranker.plugin=first stages.fitter.iterations=3000 stages.fitter.keyframes=3 stages.fitter.size=64
+     stages.fitter.gate=false)
+"${int[@]}" >/dev/null 2>"$tmp/int.err" &
+pid=$!
+for _ in $(seq 300); do [[ -f $tmp/int/checkpoint.bin ]] && break; sleep 0.1; done
+kill -INT $pid
+wait $pid
+rc=$?
+check "Ctrl-C in run: exit 130 and one line naming what was written" \
+  '[[ $rc -eq 130 ]] && grep -q "interrupted; $tmp/int holds .*checkpoint.bin" "$tmp/int.err" || { echo rc=$rc; cat "$tmp/int.err"; false; }'
+"${int[@]}" >/dev/null 2>&1
+check "... and the next run resumes the fit" \
+  '"$py" -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d[\"resumed_from\"] >= 250 and d[\"iterations\"] == 3000 else 1)" "$tmp/int/fit.json"'
+
+# 7. Help and version.
 check "svgmotion --version" '"$bin" --version | grep -Eq "^svgmotion [0-9]+\.[0-9]+\.[0-9]+$"'
 for c in run fit render plugins devices palette bench; do
   check "svgmotion $c --help" '"$bin" $c --help | grep -q "^usage: svgmotion $c"'

@@ -113,15 +113,38 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                    job.tracks->c_str(), flows.size(), target.keyframes);
   }
   const fs::path ckpt = out / "checkpoint.bin";
-  const std::string key = input.string() + "|" + std::to_string(fs::file_size(input)) + "|" +
-                          *target_path + "|" + std::to_string(keyframes) + "|" +
-                          std::to_string(size.width) + "x" + std::to_string(size.height);
+  // The checkpoint's key: everything that makes it this fit (files by size and time, so a
+  // target replaced by hand under the same name is another fit); not the iteration budget, so
+  // a resumed fit may be given more.
+  auto stamp = [](const fs::path& p) {
+    std::error_code e;
+    const auto size = fs::is_regular_file(p, e) ? fs::file_size(p, e) : 0;
+    return std::to_string(size) + "@" + std::to_string(fs::last_write_time(p, e).time_since_epoch().count());
+  };
+  const std::string key = input.string() + "|" + stamp(input) + "|" + *target_path + "|" + stamp(job.target) + "|" +
+                          std::to_string(keyframes) + "|" + std::to_string(size.width) + "x" +
+                          std::to_string(size.height) + "|" +
+                          (fo.track ? "track" : "no-track") + "|" + fmt("%.6g", job.mask_threshold) + "|" +
+                          (job.palette ? stamp(*job.palette) : "-") + "|" + (job.tracks ? stamp(*job.tracks) : "-");
   if (job.resume) {
     if (!fs::exists(ckpt)) throw Error(ckpt.string() + ": no checkpoint to resume from");
     fitter.restore(load_checkpoint(ckpt, key));
     std::fprintf(stderr, "svgmotion: resuming at iteration %d\n", fitter.iteration());
+  } else if (job.resume_unfinished && fs::exists(ckpt)) {
+    // An interrupted fit of exactly this problem goes on; anything else starts afresh.
+    try {
+      FitState st = load_checkpoint(ckpt, key);
+      if (st.iteration < fo.iterations) {
+        fitter.restore(st);
+        if (job.progress) job.progress(static_cast<double>(st.iteration) / fo.iterations,
+                                       "resuming at iteration " + std::to_string(st.iteration));
+        else if (!job.quiet) std::fprintf(stderr, "svgmotion: resuming at iteration %d\n", st.iteration);
+      }
+    } catch (const Error&) {
+    }
   }
 
+  const int resumed_from = fitter.iteration();
   const bool tty = ::isatty(2) && !job.quiet && !job.progress;
   const auto t0 = std::chrono::steady_clock::now();
   const int start = fitter.iteration();
@@ -237,6 +260,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                            {"loss", {{"total", loss.total()}, {"image", loss.image}, {"smoothness", loss.smooth},
                                      {"g1", loss.g1}, {"containment", loss.contain}}},
                            {"keyframe_image_loss", fitter.keyframe_losses()},
+                           {"resumed_from", resumed_from},
                            {"rollbacks", rollback_notes},
                            {"gate", gate_json(verdict, gate_options)},
                            {"device", rt.info().name}};

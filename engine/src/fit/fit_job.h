@@ -44,6 +44,9 @@ struct FitJob {
   int width = 256;
   double mask_threshold = 0.97;
   bool resume = false;
+  // Resume from out/checkpoint.bin when it holds an unfinished fit of exactly this problem
+  // (the pipeline's fitter after a Ctrl-C); otherwise fit from the start.
+  bool resume_unfinished = false;
   bool quiet = false;
   std::string device = "auto";
 };
