@@ -155,6 +155,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   // last good state (taken every kSnapshotEvery iterations while the loss is sane).
   constexpr int kSnapshotEvery = 25, kMaxRollbacks = 4;
   constexpr float kDivergence = 10;
+  constexpr int kDivergenceStreak = 50;  // iterations in a row above kDivergence * best
+  int bad_streak = 0;
   float best = std::numeric_limits<float>::infinity();
   int best_active = 0, rollbacks = 0;
   FitState good = fitter.state();
@@ -167,7 +169,10 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
       best_active = fitter.active_keyframes();
       best = std::numeric_limits<float>::infinity();
     }
-    const bool diverged = !std::isfinite(per) || (std::isfinite(best) && per > kDivergence * best && per > 1e-3f);
+    // Adam's first steps after an activation may overshoot for a few iterations and recover
+    // (the paper's settings do); a divergence is a loss that stays high, or is not a number.
+    bad_streak = std::isfinite(best) && per > kDivergence * best && per > 1e-3f ? bad_streak + 1 : 0;
+    const bool diverged = !std::isfinite(per) || bad_streak >= kDivergenceStreak;
     if (diverged && rollbacks < kMaxRollbacks) {
       ++rollbacks;
       rollback_notes.push_back(fmt("iteration %.0f: loss %.4g per keyframe (best %.4g); rolled back to iteration %.0f at half the step size",
@@ -177,9 +182,10 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
       fitter.scale_learning_rates(0.5f);
       best_active = fitter.active_keyframes();
       best = std::numeric_limits<float>::infinity();
+      bad_streak = 0;
       continue;
     }
-    if (std::isfinite(per)) best = std::min(best, per);
+    if (std::isfinite(per) && bad_streak == 0) best = std::min(best, per);
     if (it % kSnapshotEvery == 0 && std::isfinite(per) && per <= 2 * best) good = fitter.state();
     const auto now = std::chrono::steady_clock::now();
     const double elapsed = std::chrono::duration<double>(now - t0).count();

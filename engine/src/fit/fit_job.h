@@ -3,8 +3,8 @@
 // Reads the SVG (and palette), loads the target, fits with progress and checkpoints, and writes
 // animation.svg, preview.mp4, fit.json and checkpoint.bin into the output folder.
 //
-// Trust: a loss that diverges (not finite, or ten times the best seen since the last keyframe
-// activation) rolls back to the last good state and goes on at half the learning rates (at most
+// Trust: a loss that diverges (not finite, or above ten times the best seen since the last
+// keyframe activation for 50 iterations in a row) rolls back to the last good state and goes on at half the learning rates (at most
 // four times). The finished fit then passes the result gate (result_gate.h) or is rejected: it
 // is written as animation.failed.svg (no animation.svg; a stale one is removed), fit.json says
 // "status": "rejected" with the reasons, and run_fit_job throws svgm::Rejected.
