@@ -13,6 +13,7 @@
 
 #include "fit/checkpoint.h"
 #include "fit/document_order.h"
+#include "fit/inbetween.h"
 #include "fit/result_gate.h"
 #include "fit/palette.h"
 #include "fit/preview_video.h"
@@ -235,8 +236,23 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   const fs::path anim = out / (rejected && job.gate ? "animation.failed.svg" : "animation.svg");
   if (rejected && job.gate) fs::remove(out / "animation.svg", ec);  // never leave a stale success
   else fs::remove(out / "animation.failed.svg", ec);
-  for (const auto& w : write_animation_svg(into, export_scene ? *export_scene : scene, fitter.raster_plan(), points,
-                                           timing, anim, export_scene ? &map : nullptr)) {
+  // What is written: the keyframes (a closed loop's last one is its first) and smooth
+  // in-betweens at the target's frames between them (inbetween.h).
+  const size_t per_key = static_cast<size_t>(fitter.raster_plan().n_cp) * 2;
+  std::vector<double> key_points = points;
+  if (timing.close_loop)
+    std::copy(points.begin(), points.begin() + static_cast<ptrdiff_t>(per_key),
+              key_points.end() - static_cast<ptrdiff_t>(per_key));
+  std::vector<double> frame_times;
+  for (int i = 0; i < N; ++i) frame_times.push_back(static_cast<double>(i) / (N - 1));
+  const InBetween written = in_between(key_points, timing.key_times, per_key, frame_times,
+                                       job.inbetweens, timing.close_loop);
+  AnimationTiming wt = timing;
+  wt.keyframes = static_cast<int>(written.times.size());
+  wt.key_times = written.times;
+  wt.close_loop = false;  // applied above
+  for (const auto& w : write_animation_svg(into, export_scene ? *export_scene : scene, fitter.raster_plan(), written.points,
+                                           wt, anim, export_scene ? &map : nullptr)) {
     std::string line = w;
     if (!job.export_name.empty() && line.rfind(into.string(), 0) == 0)
       line = job.export_name + line.substr(into.string().size());
@@ -261,6 +277,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                            {"duration_s", timing.duration_s},
                            {"loop", loop_mode_name(timing.loop)},
                            {"closed_loop", timing.close_loop},
+                           {"values_written", wt.keyframes},
                            {"size", {W, H}},
                            {"seconds", seconds},
                            {"loss", {{"total", loss.total()}, {"image", loss.image}, {"smoothness", loss.smooth},

@@ -11,8 +11,9 @@
 //
 // Timing: keyframe k is written at the time of the target frame it was fitted to (keyTimes =
 // source_index / (N-1), one pass = (N-1) / fps), so frames between keyframes are
-// interpolated at the right moments; a target whose last frame returns to its first closes the
-// loop (the last keyframe is written as the first).
+// interpolated at the right moments, along a cubic spline through the keyframes sampled at the
+// target's frames (inbetween.h) rather than the browser's straight lines; a target whose last
+// frame returns to its first closes the loop (the last keyframe is written as the first).
 #pragma once
 
 #include <filesystem>
@@ -35,6 +36,9 @@ struct FitJob {
   std::optional<std::filesystem::path> export_into;
   std::string export_name;  // how messages name export_into (the user's path, not the run copy)
   LoopMode loop = LoopMode::Loop;
+  // Smooth in-between shapes written per keyframe interval, at the target's frames there
+  // (inbetween.h); 0 leaves the in-betweens to the browser's linear interpolation.
+  int inbetweens = 3;
   bool gate = true;  // false: write animation.svg even when the result gate rejects the fit
   // Progress: when set, called about twice a second with the fraction done and a short note,
   // instead of the progress line on stderr.
