@@ -6,10 +6,13 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include "fit/document_order.h"
+#include "fit/inbetween.h"
 #include "fit/result_gate.h"
 #include "fit/smil_writer.h"
 #include "raster/raster_plan.h"
@@ -175,6 +178,41 @@ TEST_CASE("result gate: passes a faithful fit, rejects points far off the canvas
   v = judge_fit(t, empty, pts, plan, scene, Affine{});
   CHECK_FALSE(v.passed);
   CHECK(v.iou[0] == doctest::Approx(0.0));
+}
+
+TEST_CASE("in-betweens: keyframes kept exactly, a smooth motion followed far closer than straight lines") {
+  // One coordinate moving as sin(2 pi t), keyframes at 7 uneven times, in-betweens at 25 frames.
+  const double pi = 3.14159265358979323846;
+  const std::vector<double> kt = {0, 0.125, 0.25, 0.5, 0.625, 0.875, 1};
+  std::vector<double> kp;
+  for (double t : kt) kp.push_back(std::sin(2 * pi * t)), kp.push_back(7);  // (x, y) per key
+  std::vector<double> frames;
+  for (int i = 0; i < 25; ++i) frames.push_back(i / 24.0);
+  const InBetween ib = in_between(kp, kt, 2, frames, 3, /*closed=*/true);
+  REQUIRE(ib.points.size() == 2 * ib.times.size());
+  CHECK(ib.times.size() > kt.size());
+  double worst_spline = 0, worst_linear = 0;
+  size_t key = 0;
+  for (size_t j = 0; j < ib.times.size(); ++j) {
+    const double t = ib.times[j];
+    if (j > 0) CHECK(t > ib.times[j - 1]);
+    CHECK(ib.points[2 * j + 1] == 7);  // a still coordinate stays exactly still
+    if (key < kt.size() && t == kt[key]) {
+      CHECK(ib.points[2 * j] == kp[2 * key]);  // the fitted keyframe itself
+      ++key;
+      continue;
+    }
+    const size_t k = static_cast<size_t>(std::upper_bound(kt.begin(), kt.end(), t) - kt.begin()) - 1;
+    const double f = (t - kt[k]) / (kt[k + 1] - kt[k]);
+    const double linear = (1 - f) * kp[2 * k] + f * kp[2 * k + 2];
+    worst_spline = std::max(worst_spline, std::fabs(ib.points[2 * j] - std::sin(2 * pi * t)));
+    worst_linear = std::max(worst_linear, std::fabs(linear - std::sin(2 * pi * t)));
+  }
+  CHECK(key == kt.size());
+  CHECK(worst_linear > 0.05);
+  CHECK(worst_spline < 0.25 * worst_linear);
+  // No frames between the keys: nothing added.
+  CHECK(in_between(kp, kt, 2, {0, 1}, 3, true).times == kt);
 }
 
 }  // TEST_SUITE

@@ -17,16 +17,20 @@ InBetween in_between(const std::vector<double>& points, const std::vector<double
     return out;
   }
   const double* P = points.data();
-  // Tangent (per unit of time) at keyframe k, Catmull-Rom for uneven spacing.
+  // Tangent (per unit of time) at keyframe k: the slope at t_k of the parabola through the
+  // keyframes k-1, k, k+1 (Bessel's tangent; Catmull-Rom's for even spacing), one-sided at
+  // the ends of an open pass.
   auto tangent = [&](size_t k, size_t i) {
-    size_t a = k, b = k;
-    double ta = times[k], tb = times[k];
-    if (k > 0) a = k - 1, ta = times[a];
-    else if (closed) a = K - 2, ta = times[a] - 1;  // the loop's previous key, one pass earlier
-    if (k + 1 < K) b = k + 1, tb = times[b];
-    else if (closed) b = 1, tb = times[b] + 1;
-    const double dt = tb - ta;
-    return dt > 0 ? (P[b * per_key + i] - P[a * per_key + i]) / dt : 0.0;
+    bool has_a = k > 0 || closed, has_b = k + 1 < K || closed;
+    const size_t a = k > 0 ? k - 1 : K - 2, b = k + 1 < K ? k + 1 : 1;
+    const double ha = k > 0 ? times[k] - times[a] : times[K - 1] - times[a];
+    const double hb = k + 1 < K ? times[b] - times[k] : times[b] - times[0];
+    has_a = has_a && ha > 0 && a < K;
+    has_b = has_b && hb > 0 && b < K;
+    const double p = P[k * per_key + i];
+    const double da = has_a ? (p - P[a * per_key + i]) / ha : 0, db = has_b ? (P[b * per_key + i] - p) / hb : 0;
+    if (has_a && has_b) return (hb * da + ha * db) / (ha + hb);
+    return has_a ? da : has_b ? db : 0.0;
   };
   for (size_t k = 0; k < K; ++k) {
     out.times.push_back(times[k]);

@@ -4,9 +4,10 @@
 // A browser interpolates SMIL `values` linearly, so with 15 keyframes over 49 frames a motion
 // that curves in time (a swing, a wave) cuts its corners between keyframes, and the in-between
 // frames lag the target by several dB. Instead of leaving that to the browser, the export
-// evaluates a cubic Hermite spline through the keyframes (Catmull-Rom tangents for uneven
-// times: m_k = (p_{k+1} - p_{k-1}) / (t_{k+1} - t_{k-1}), one-sided at the ends, wrapping
-// around for a closed loop) at the times of the target frames between them, and writes those
+// evaluates a cubic Hermite spline through the keyframes (Bessel tangents: the slope of the
+// parabola through keyframes k-1, k, k+1, which is Catmull-Rom's for even spacing and exact for
+// quadratic motion at uneven spacing; one-sided at the ends, wrapping around for a closed
+// loop) at the times of the target frames between them, and writes those
 // as extra values. Every fitted keyframe is kept exactly; the browser's linear interpolation
 // then only spans one frame.
 #pragma once
