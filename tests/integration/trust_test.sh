@@ -115,6 +115,11 @@ bad_setting prompt_utf8 "prompt: is not valid UTF-8 text" --prompt $'waves \xff\
 check "a malformed input is named as the user's file, before any stage" \
   '[[ $? -eq 1 && ! -e $tmp/none ]] && grep -q "^svgmotion: $data/svg/broken.svg: " "$tmp/bs.err"'
 
+printf '<svg xmlns="http://www.w3.org/2000/svg" width="20" height="20"><rect id="a\xff" width="5" height="5"/></svg>' >"$tmp/badid.svg"
+"$bin" run --input "$tmp/badid.svg" -o "$tmp/none" >"$tmp/bs.out" 2>"$tmp/bs.err"
+check "an id that is not UTF-8: one line, before any stage" \
+  '[[ $? -eq 1 && ! -e $tmp/none && $(wc -l <"$tmp/bs.err") -eq 1 ]] && grep -q "badid.svg: <rect> has an id that is not valid UTF-8 text" "$tmp/bs.err"'
+
 # 5. render: the format follows the extension; the input is never overwritten.
 cp "$own" "$tmp/in.svg"
 before=$(cksum <"$tmp/in.svg")

@@ -104,6 +104,10 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   std::error_code ec;
   fs::create_directories(out, ec);
   if (ec) throw Error(out.string() + ": cannot create: " + ec.message());
+  // Refuse an unwritable folder or a non-file output now, not after minutes of fitting.
+  if (::access(out.c_str(), W_OK | X_OK) != 0) throw Error(out.string() + ": cannot write there (permission denied)");
+  for (const char* f : {"animation.svg", "animation.failed.svg", "preview.mp4", "fit.json", "checkpoint.bin"})
+    output_target(out / f);
   ClRuntime rt(job.device);
   Fitter fitter(rt, fit_scene, target, fo);
   if (job.tracks) {

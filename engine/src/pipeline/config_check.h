@@ -17,7 +17,4 @@ namespace svgm {
 
 void check_config(const nlohmann::json& config, const PluginHost& host);
 
-// True when `s` is well-formed UTF-8.
-bool valid_utf8(const std::string& s);
-
 }  // namespace svgm

@@ -9,6 +9,7 @@
 // each at the end, naming the first element. Elements with a foreign namespace prefix
 // (sodipodi:, inkscape:, ...) are ignored.
 #include "svgmotion/svg_reader.h"
+#include "svg/utf8.h"
 
 #include <pugixml.hpp>
 
@@ -737,7 +738,11 @@ Scene Reader::read(std::string_view text) {
   while (!stack.empty()) {
     pugi::xml_node n = stack.back();
     stack.pop_back();
-    if (const char* id = n.attribute("id").value(); *id) ids_.emplace(id, n);
+    if (const char* id = n.attribute("id").value(); *id) {
+      // Ids travel into JSON (palettes, groups, layers): they must be text.
+      if (!valid_utf8(id)) fail("<" + std::string(local_name(n.name())) + "> has an id that is not valid UTF-8 text");
+      ids_.emplace(id, n);
+    }
     for (pugi::xml_node c = n.last_child(); c; c = c.previous_sibling())
       if (c.type() == pugi::node_element) stack.push_back(c);
   }
