@@ -15,6 +15,8 @@
 #include "group/structural_grouper.h"
 #include "svgmotion/svg_reader.h"
 
+#include "temp_dir.h"
+
 using namespace svgm;
 using Groups = std::vector<std::vector<int>>;
 
@@ -54,17 +56,8 @@ void check_partition(const Scene& scene, const Groups& groups) {
   for (int s : seen) CHECK(s == 1);
 }
 
-struct TempDir {
-  std::filesystem::path dir;
-  TempDir() {
-    dir = std::filesystem::temp_directory_path() /
-          ("svgm_group_test_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(dir, ec);
-  }
+struct TempDir : test::TempDir {
+  TempDir() : test::TempDir("svgm_group_test") {}
 };
 
 }  // namespace
@@ -201,12 +194,12 @@ TEST_CASE("grouped SVG round trip, with interleaved groups split into runs") {
       "<use xlink:href=\"#dot\" x=\"80\" y=\"40\" fill=\"#abcdef\"/>"
       "<path id=\"e\" d=\"M70 10 C75 0 85 0 90 10\" fill=\"none\" stroke=\"#000\" stroke-miterlimit=\"7\"/>"
       "</svg>";
-  const auto src = tmp.dir / "in.svg";
+  const auto src = tmp.path / "in.svg";
   std::ofstream(src) << source;
   const Scene scene = read_svg_file(src);
   REQUIRE(scene.paths.size() == 5);
   const Groups groups{{0, 2, 4}, {1, 3}};  // interleaved: g1 g2 g1 g2 g1
-  const auto out = tmp.dir / "grouped.svg";
+  const auto out = tmp.path / "grouped.svg";
   write_grouped_svg(src, scene, groups, out);
   CHECK_FALSE(std::filesystem::exists(out.string() + ".part" + std::to_string(::getpid())));
 
@@ -266,13 +259,13 @@ TEST_CASE("grouped SVG round trip, with interleaved groups split into runs") {
 
 TEST_CASE("grouping then writing: the grouped file reads back with one group per part") {
   TempDir tmp;
-  const auto src = tmp.dir / "face.svg";
+  const auto src = tmp.path / "face.svg";
   std::ofstream(src) << svg(circle(50, 50, 30, "#f0c090") + circle(40, 42, 4, "#000") +
                             square(130, 130, 50, "#3050a0") + circle(60, 42, 4, "#000"));
   const Scene scene = read_svg_file(src);
   const Groups g = group_paths(scene);
   CHECK(g == Groups{{0, 1, 3}, {2}});
-  const auto out = tmp.dir / "grouped.svg";
+  const auto out = tmp.path / "grouped.svg";
   write_grouped_svg(src, scene, g, out);
   const Scene back = read_svg_file(out);
   // The eye drawn after the body is a second run of group 1, joined back by data-group.

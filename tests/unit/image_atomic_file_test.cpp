@@ -19,26 +19,15 @@
 #include "svgmotion/error.h"
 #include "svgmotion/png_io.h"
 
+#include "temp_dir.h"
+
 using namespace svgm;
 namespace fs = std::filesystem;
 
 namespace {
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    static std::atomic<int> counter{0};
-    path = fs::temp_directory_path() /
-           ("svgm_atomic_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
+struct TempDir : test::TempDir {
+  TempDir() : test::TempDir("svgm_atomic_test") {}
 };
 
 std::string slurp(const fs::path& p) {

@@ -25,24 +25,15 @@
 #include "video/command_runner.h"
 #include "video/command_video.h"
 
+#include "temp_dir.h"
+
 using namespace svgm;
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CommandTempDir {
-  fs::path path;
-  CommandTempDir() {
-    static std::atomic<int> counter{0};
-    path = fs::temp_directory_path() /
-           ("svgm_cmd_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~CommandTempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
+struct CommandTempDir : test::TempDir {
+  CommandTempDir() : test::TempDir("svgm_cmd_test") {}
 };
 
 void write_text(const fs::path& file, const std::string& text) {
