@@ -59,6 +59,16 @@ TEST_CASE("reorder: the fewest elements move, and the document reads back in the
   CHECK(out.find("<rect id=\"a\" x=\"1\"") != std::string::npos);
 }
 
+TEST_CASE("reorder: paths without ids (their generated ids follow position) are checked by geometry") {
+  const char* doc = R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="40" height="40"><path d="M0 0 L9 0 L9 9 Z"/><path d="M1 1 L5 1 L5 5 Z"/></svg>)svg";
+  const Scene s = read_svg_string(doc, "t");
+  std::string out;
+  const ReorderResult r = reorder_document_text(doc, "t", s, {1, 0}, &out);
+  REQUIRE_FALSE(r.refused);
+  CHECK(r.moved == 1);
+  CHECK(out.find("<path d=\"M1 1 L5 1 L5 5 Z\"/><path d=\"M0 0") != std::string::npos);
+}
+
 TEST_CASE("reorder: a move out of its parent group is refused and changes nothing") {
   const char* doc = R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="40" height="40">
   <g id="g1" transform="translate(5 0)"><rect id="a" width="10" height="10"/><rect id="b" width="5" height="5"/></g>

@@ -181,11 +181,17 @@ ReorderResult reorder_document_text(const std::string& text, const std::string& 
   if (r.refused) return r;
   std::ostringstream s;
   doc.save(s, "", pugi::format_raw | pugi::format_no_declaration, pugi::encoding_utf8);
-  // Read it back: the paths must now come in `order` (by id, duplicates by rank).
+  // Read it back: the paths must now come in `order`. Compared by geometry, not by id: a path
+  // without an id gets a generated one from its position, which the move changes.
   const Scene back = read_svg_string(s.str(), name);
   bool same = back.paths.size() == order.size();
-  for (size_t t = 0; same && t < order.size(); ++t)
-    same = back.paths[t].id == original.paths[static_cast<size_t>(order[t])].id;
+  for (size_t t = 0; same && t < order.size(); ++t) {
+    const Path& a = back.paths[t];
+    const Path& b = original.paths[static_cast<size_t>(order[t])];
+    same = a.subpaths.size() == b.subpaths.size();
+    for (size_t k = 0; same && k < a.subpaths.size(); ++k)
+      same = a.subpaths[k].points == b.subpaths[k].points;
+  }
   if (!same) return {0, "the reordered document does not read back in the new order"};
   if (out_text) *out_text = s.str();
   return r;
