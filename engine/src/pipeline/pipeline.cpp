@@ -5,7 +5,13 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cstring>
 
 #include "svgmotion/error.h"
 
@@ -71,6 +77,42 @@ void write_atomic(const fs::path& file, const std::string& text) {
   write_file_atomic(file, text);
 }
 
+// One run per run directory at a time: an advisory lock on .svgmotion/lock, held for the
+// whole run and released by the kernel however the process ends. Holding it, the run also
+// removes temporary files ("NAME.part<pid>...") that a killed run left behind.
+class RunLock {
+ public:
+  explicit RunLock(const fs::path& run) {
+    std::error_code ec;
+    fs::create_directories(run / ".svgmotion", ec);
+    const fs::path file = run / ".svgmotion" / "lock";
+    fd_ = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0) throw Error(run.string() + ": cannot lock the run directory: " + std::strerror(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      char pid[32] = {0};
+      const ssize_t n = ::pread(fd_, pid, sizeof pid - 1, 0);
+      ::close(fd_);
+      throw Error(run.string() + ": another svgmotion run is using this run directory" +
+                  (n > 0 ? " (pid " + std::string(pid, static_cast<size_t>(n)) + ")" : std::string()));
+    }
+    const std::string me = std::to_string(::getpid());
+    if (::ftruncate(fd_, 0) == 0 && ::pwrite(fd_, me.data(), me.size(), 0) < 0) {}
+    for (const fs::path& dir : {run, run / "candidates"})
+      for (const auto& e : fs::directory_iterator(dir, ec)) {
+        const std::string name = e.path().filename().string();
+        const size_t at = name.find(".part");
+        if (at != std::string::npos && at + 5 < name.size() && std::isdigit(static_cast<unsigned char>(name[at + 5])))
+          fs::remove_all(e.path(), ec);
+      }
+  }
+  ~RunLock() { ::close(fd_); }
+  RunLock(const RunLock&) = delete;
+  RunLock& operator=(const RunLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
 // The ranker may flag every candidate (chaotic motion, invented content, ...): fitting one of
 // them would hand the user a broken animation, so the run stops here with the reasons, unless
 // stages.ranker.accept_flagged is set. Read from ranking.json each run (also when the ranker
@@ -112,6 +154,7 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
   std::error_code ec;
   fs::create_directories(run, ec);
   if (ec) throw Error(run.string() + ": cannot create: " + ec.message());
+  const RunLock lock(run);
   // The input is copied into the run directory, so the run is self-contained; the copy only
   // changes (and invalidates later stages) when the input's content does.
   {
