@@ -20,15 +20,23 @@ expect_error() {
   fi
 }
 
+# Runs a command that must succeed: any other exit status is a failed check naming it.
+must() {
+  "$@"
+  local rc=$?
+  [[ $rc -eq 0 ]] || bad "exit status $rc from: ${*:1:4} ..."
+  return $rc
+}
+
 case $group in
 render)
-  "$bin" render "$data/examples/man.svg" -o "$tmp/man.png" --size 128 2>"$tmp/err"
+  must "$bin" render "$data/examples/man.svg" -o "$tmp/man.png" --size 128 2>"$tmp/err"
   check "render writes a PNG" '[[ -s $tmp/man.png ]] && [[ $(head -c 8 "$tmp/man.png" | od -An -tx1 | tr -d " \n") == 89504e470d0a1a0a ]]'
   check "render leaves no temporary file" '[[ $(ls "$tmp" | grep -c part) -eq 0 ]]'
-  "$bin" render "$data/examples/man.svg" -o "$tmp/t.png" --size 64 --background transparent 2>/dev/null
+  must "$bin" render "$data/examples/man.svg" -o "$tmp/t.png" --size 64 --background transparent 2>/dev/null
   check "transparent background renders" '[[ -s $tmp/t.png ]]'
-  "$bin" render "$data/examples/man.svg" -o "$tmp/a.png" --size 100 2>/dev/null
-  "$bin" render "$data/examples/man.svg" -o "$tmp/b.png" --size 100 2>/dev/null
+  must "$bin" render "$data/examples/man.svg" -o "$tmp/a.png" --size 100 2>/dev/null
+  must "$bin" render "$data/examples/man.svg" -o "$tmp/b.png" --size 100 2>/dev/null
   check "rendering is deterministic (same bytes twice)" 'cmp -s "$tmp/a.png" "$tmp/b.png"'
   ;;
 bad_input)
@@ -70,23 +78,23 @@ bad_input)
   expect_error "fit -o onto a FIFO is refused" "$tmp/fifo.png" "$tmp/fifo.png/" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/fifo.png" --keyframes 2 --size 32 --iterations 2
   ;;
 devices)
-  "$bin" devices >"$tmp/dev" 2>&1
+  must "$bin" devices >"$tmp/dev" 2>&1
   check "devices lists at least one device and marks the auto pick" 'grep -q "^\*" "$tmp/dev"'
   ;;
 bench)
-  "$bin" bench render "$data/examples/man.svg" --frames 3 --size 64 --repeat 2 --json >"$tmp/b.json" 2>"$tmp/err"
+  must "$bin" bench render "$data/examples/man.svg" --frames 3 --size 64 --repeat 2 --json >"$tmp/b.json" 2>"$tmp/err"
   check "bench render --json prints one JSON object with the promised keys" \
     '[[ $(grep -c "" "$tmp/b.json") -eq 1 ]] && grep -q "^{.*}$" "$tmp/b.json" && grep -Eq "\"ms_per_frame\": [0-9.]+" "$tmp/b.json" && grep -Eq "\"peak_rss_mb\": [0-9.]+" "$tmp/b.json" && grep -q "\"device\": \"" "$tmp/b.json"'
   ;;
 fit)
   # A small target: the example rendered at 64 px into a folder of 4 frames.
   mkdir -p "$tmp/frames"
-  for i in 0 1 2 3; do "$bin" render "$data/examples/man.svg" -o "$tmp/frames/$i.png" --size 64 2>/dev/null; done
-  "$bin" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out" --iterations 40 --keyframes 3 --size 64 2>"$tmp/err"
+  for i in 0 1 2 3; do must "$bin" render "$data/examples/man.svg" -o "$tmp/frames/$i.png" --size 64 2>/dev/null; done
+  must "$bin" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out" --iterations 40 --keyframes 3 --size 64 2>"$tmp/err"
   check "fit writes animation.svg with d keyframes" 'grep -q "<animate attributeName=\"d\"" "$tmp/out/animation.svg"'
   check "fit writes a preview and a report" '[[ -s $tmp/out/preview.mp4 && -s $tmp/out/fit.json && -s $tmp/out/checkpoint.bin ]]'
   check "the animation renders at a time" '"$bin" render "$tmp/out/animation.svg" -o "$tmp/t.png" --time 0.1 2>/dev/null && [[ -s $tmp/t.png ]]'
-  "$bin" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out" --iterations 60 --keyframes 3 --size 64 --resume 2>"$tmp/err"
+  must "$bin" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out" --iterations 60 --keyframes 3 --size 64 --resume 2>"$tmp/err"
   # Tiny drawings (no strokes, or one stroke, a handful of control points) once failed with
   # CL_INVALID_HOST_PTR: their empty or short plan arrays went to clCreateBuffer as they were.
   tiny_svg() { printf '<svg xmlns="http://www.w3.org/2000/svg" width="32" height="32">%s</svg>' "$2" >"$tmp/$1.svg"; }
@@ -115,7 +123,7 @@ fit)
   ;;
 pipeline)
   mkdir -p "$tmp/frames"
-  for i in 0 1 2 3; do "$bin" render "$data/examples/man.svg" -o "$tmp/frames/$i.png" --size 64 2>/dev/null; done
+  for i in 0 1 2 3; do must "$bin" render "$data/examples/man.svg" -o "$tmp/frames/$i.png" --size 64 2>/dev/null; done
   run=("$bin" run --input "$data/examples/man.svg" -o "$tmp/run" --quiet
        stages.video.plugin=file "stages.video.path=$tmp/frames" stages.ranker.plugin=first
        stages.fitter.iterations=30 stages.fitter.keyframes=3 stages.fitter.size=64)
@@ -127,8 +135,8 @@ pipeline)
   check "--from fitter refits only" '[[ $(grep -c "up to date" "$tmp/out3") -eq 6 ]] && grep -Eq "fitter +opencl +[0-9.]+ s" "$tmp/out3"'
   # Another valid target: the same drawing as a video of another size (from a second run).
   mkdir -p "$tmp/frames80"
-  for i in 0 1 2 3; do "$bin" render "$data/examples/man.svg" -o "$tmp/frames80/$i.png" --size 80 2>/dev/null; done
-  "$bin" run --input "$data/examples/man.svg" -o "$tmp/run80" --quiet stages.video.plugin=file \
+  for i in 0 1 2 3; do must "$bin" render "$data/examples/man.svg" -o "$tmp/frames80/$i.png" --size 80 2>/dev/null; done
+  must "$bin" run --input "$data/examples/man.svg" -o "$tmp/run80" --quiet stages.video.plugin=file \
     "stages.video.path=$tmp/frames80" stages.ranker.plugin=first stages.fitter.iterations=30 \
     stages.fitter.keyframes=3 stages.fitter.size=64 >/dev/null 2>&1
   cp "$tmp/run80/target.mp4" "$tmp/run/target.mp4"
@@ -142,7 +150,7 @@ pipeline)
     run "$tmp/bad.yaml" --input "$data/examples/man.svg" -o "$tmp/none2"
   # The defaults need no video: the procedural library makes candidates, the pixel ranker picks.
   # (Tiny 96 px candidates read as colour drift: fitted anyway, this checks the providers.)
-  "$bin" run --input "$data/examples/man.svg" -o "$tmp/prompt" --quiet --prompt "the man waves his right arm" \
+  must "$bin" run --input "$data/examples/man.svg" -o "$tmp/prompt" --quiet --prompt "the man waves his right arm" \
     stages.ranker.accept_flagged=true stages.video.candidates=2 stages.video.frames=9 stages.video.size=96 \
     stages.fitter.iterations=30 stages.fitter.keyframes=3 stages.fitter.size=64 >"$tmp/out6" 2>&1
   check "a prompt alone runs the whole pipeline with the default plugins" '[[ -s $tmp/prompt/animation.svg && -s $tmp/prompt/candidates/00.mp4 && -s $tmp/prompt/candidates/01.mp4 ]] && grep -q "\"motion\"" "$tmp/prompt/ranking.json" && grep -q "<animate attributeName=\"d\"" "$tmp/prompt/animation.svg"'
