@@ -213,6 +213,27 @@ TEST_CASE("PNG alpha is composited over white") {
   CHECK(at(t, t.raw, 0, 5, 5, 1) == doctest::Approx(127.0 / 255.0).epsilon(1e-5));
 }
 
+TEST_CASE("foreground on an off-white, drifting background is the figure, not the frame") {
+  TempDir dir;
+  RgbaImage img = solid(40, 40);
+  fill(img, 0, 0, 40, 40, {252, 254, 247});  // a generated video's off-white (blue 0.969 < 0.97)
+  fill(img, 10, 10, 20, 20, {40, 40, 200});
+  write_png(dir.path / "0.png", img);
+  RgbaImage dark = solid(40, 40);
+  fill(dark, 0, 0, 40, 40, {20, 30, 80});  // a scene's own night sky is figure, as before
+  write_png(dir.path / "1.png", dark);
+  TargetOptions o;
+  o.keyframes = 2;
+  o.dilate_px = 0;
+  const TargetFrames t = load_target(dir.path, 40, 40, o);
+  size_t fg0 = 0, fg1 = 0;
+  for (int y = 0; y < 40; ++y)
+    for (int x = 0; x < 40; ++x) fg0 += mask_at(t, 0, x, y), fg1 += mask_at(t, 1, x, y);
+  CHECK(fg0 == 100);  // exactly the 10x10 square
+  CHECK(fg1 == 1600);
+  CHECK(t.source_width == 40);
+}
+
 TEST_CASE("frames are resized to the requested size") {
   TempDir dir;
   RgbaImage img = solid(64, 48);

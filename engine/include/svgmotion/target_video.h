@@ -7,6 +7,7 @@
 // appears here, so including this header costs nothing.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <vector>
@@ -15,7 +16,9 @@ namespace svgm {
 
 struct TargetOptions {
   int keyframes = 15;            // K: uniformly sampled frames, first and last included
-  // A pixel is foreground when its darkest channel < this (0..1]. Close to white on purpose:
+  // A pixel is foreground when a channel differs from the frame's background colour by more
+  // than 1 - this; on white, when its darkest channel < this. In (0, 1]. The background is
+  // white, or the light colour (channels >= 0.85) that 60% of the border agrees on. Close to white on purpose:
   // drawings have near-white parts (a snowman's #f4ecec body is 0.925), and at 0.9 the cleanup
   // whitened them and containment squeezed them out of the fit; H.264 keeps a white background
   // within a couple of levels of 255, well above 0.97.
@@ -29,6 +32,7 @@ struct TargetOptions {
 struct TargetFrames {
   int width = 0, height = 0, keyframes = 0;
   int source_frames = 0;          // frames in the video / folder
+  int source_width = 0, source_height = 0;  // the frames' own size, before resizing
   double fps = 24;                // from the video (folders, or videos without a rate: 24)
   std::vector<int> source_index;  // source frame of each keyframe: round(k * (N-1) / (K-1))
   // K*H*W*4, row-major per keyframe: the cleaned target, straight RGB in [0,1], A = 1; pixels
@@ -58,11 +62,16 @@ TargetInfo probe_target(const std::filesystem::path& source);
 
 // Reads `source` (as above) and samples options.keyframes frames uniformly, resized to
 // width x height (cv::INTER_AREA when neither side grows, INTER_LINEAR otherwise; the aspect is
-// the caller's business). Foreground per keyframe: darkest channel < white_threshold, 8-connected
+// the caller's business). Foreground per keyframe: a channel differs from the background (see
+// TargetOptions::white_threshold) by more than 1 - white_threshold, 8-connected
 // components with area >= max(4, min_component_fraction * largest) kept, dilated by dilate_px.
 // A video is read twice (once to count, once keeping only the sampled frames), so memory stays
 // at K frames whatever the video's length. Throws svgm::Error "<path>: <problem>", including
 // "has N frames, fewer than the K keyframes asked for".
+// Per-channel median of a frame's border pixels (straight RGBA floats, width x height): the
+// background colour of a frame whose figure does not cover most of its border.
+std::array<float, 3> border_median_rgb(const float* rgba, int width, int height);
+
 TargetFrames load_target(const std::filesystem::path& source, int width, int height,
                          const TargetOptions& options = {});
 

@@ -58,10 +58,43 @@ bool returns_to_start(const TargetFrames& t) {
   return diff(0, K - 1) <= 0.25 * step;
 }
 
+// What a user should hear about a target before minutes of fitting: frames stretched to
+// another aspect, frames smaller than the fit, keyframes showing no figure or only figure.
+std::vector<std::string> target_warnings(const TargetFrames& t, const std::string& name, const RenderSize& size);
+
 std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 0) {
   char buf[256];
   std::snprintf(buf, sizeof buf, f, a, b, c, d);
   return buf;
+}
+
+std::vector<std::string> target_warnings(const TargetFrames& t, const std::string& name, const RenderSize& size) {
+  std::vector<std::string> out;
+  if (t.source_width > 0 && t.source_height > 0) {
+    const double a = static_cast<double>(t.source_width) / t.source_height;
+    const double b = static_cast<double>(size.width) / size.height;
+    if (std::fabs(std::log(a / b)) > std::log(1.1))
+      out.push_back(name + ": frames are " + std::to_string(t.source_width) + "x" + std::to_string(t.source_height) +
+                    fmt(" (aspect %.2f), the SVG's aspect is %.2f: the frames are stretched to fit", a, b));
+    if (t.source_width < size.width / 2 || t.source_height < size.height / 2)
+      out.push_back(name + ": frames are " + std::to_string(t.source_width) + "x" + std::to_string(t.source_height) +
+                    ", far smaller than the fitting size " + std::to_string(size.width) + "x" + std::to_string(size.height));
+  }
+  const size_t px = static_cast<size_t>(t.width) * t.height;
+  int empty = 0, full = 0;
+  for (int k = 0; k < t.keyframes; ++k) {
+    size_t fg = 0;
+    for (size_t i = 0; i < px; ++i) fg += t.mask[static_cast<size_t>(k) * px + i];
+    empty += fg < px / 1000 + 1;
+    full += fg > px * 98 / 100;
+  }
+  if (empty)
+    out.push_back(name + ": " + std::to_string(empty) + " of " + std::to_string(t.keyframes) +
+                  " keyframes show no figure (all background): the drawing has nothing to follow there");
+  if (full)
+    out.push_back(name + ": " + std::to_string(full) + " of " + std::to_string(t.keyframes) +
+                  " keyframes are all figure (no background seen; try --mask-threshold)");
+  return out;
 }
 
 }  // namespace
@@ -100,6 +133,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     if (reordered) map.order = match;
   }
   const TargetFrames target = load_target(*target_path, size.width, size.height, to);
+  for (const std::string& w : target_warnings(target, *target_path, size))
+    std::fprintf(stderr, "svgmotion: warning: %s\n", w.c_str());
 
   std::error_code ec;
   fs::create_directories(out, ec);

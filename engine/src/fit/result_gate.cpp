@@ -20,23 +20,6 @@ struct Box {
   double diagonal() const { return empty() ? 0 : std::hypot(x1 - x0, y1 - y0); }
 };
 
-// Per-channel median of the frame's border pixels (straight RGBA floats).
-std::array<float, 3> border_median(const float* f, int W, int H) {
-  std::array<std::vector<float>, 3> v;
-  auto add = [&](int x, int y) {
-    for (int c = 0; c < 3; ++c) v[c].push_back(f[(static_cast<size_t>(y) * W + x) * 4 + c]);
-  };
-  for (int x = 0; x < W; ++x) add(x, 0), add(x, H - 1);
-  for (int y = 1; y + 1 < H; ++y) add(0, y), add(W - 1, y);
-  std::array<float, 3> m{1, 1, 1};
-  for (int c = 0; c < 3; ++c) {
-    if (v[c].empty()) continue;
-    std::nth_element(v[c].begin(), v[c].begin() + v[c].size() / 2, v[c].end());
-    m[c] = v[c][v[c].size() / 2];
-  }
-  return m;
-}
-
 std::string format(const char* fmt, double a, double b = 0, double c = 0) {
   char buf[256];
   std::snprintf(buf, sizeof buf, fmt, a, b, c);
@@ -58,7 +41,7 @@ GateVerdict judge_fit(const TargetFrames& target, const std::vector<float>& rend
   for (int k = 0; k < K; ++k) {
     Box b;
     const float* raw = &target.raw[static_cast<size_t>(k) * px * 4];
-    const std::array<float, 3> bg = border_median(raw, W, H);
+    const std::array<float, 3> bg = border_median_rgb(raw, W, H);
     for (int y = 0; y < H; ++y)
       for (int x = 0; x < W; ++x) {
         const float* q = &raw[(static_cast<size_t>(y) * W + x) * 4];
@@ -86,7 +69,7 @@ GateVerdict judge_fit(const TargetFrames& target, const std::vector<float>& rend
     const float* r = &renders[static_cast<size_t>(k) * px * 4];
     const float* t = &target.rgba[static_cast<size_t>(k) * px * 4];
     const float* raw = &target.raw[static_cast<size_t>(k) * px * 4];
-    const std::array<float, 3> bg = border_median(raw, W, H);
+    const std::array<float, 3> bg = border_median_rgb(raw, W, H);
     auto differs = [&](float r0, float g0, float b0) {
       return std::max({std::fabs(r0 - bg[0]), std::fabs(g0 - bg[1]), std::fabs(b0 - bg[2])}) > 0.1f;
     };

@@ -12,6 +12,7 @@
 #include <opencv2/videoio/registry.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cstdint>
@@ -256,19 +257,57 @@ void store_raw(const cv::Mat& decoded, int k, int width, int height, std::vector
   }
 }
 
+}  // namespace
+
+std::array<float, 3> border_median_rgb(const float* f, int W, int H) {
+  std::array<std::vector<float>, 3> v;
+  auto add = [&](int x, int y) {
+    for (int c = 0; c < 3; ++c) v[c].push_back(f[(static_cast<size_t>(y) * W + x) * 4 + c]);
+  };
+  for (int x = 0; x < W; ++x) add(x, 0), add(x, H - 1);
+  for (int y = 1; y + 1 < H; ++y) add(0, y), add(W - 1, y);
+  std::array<float, 3> m{1, 1, 1};
+  for (int c = 0; c < 3; ++c) {
+    if (v[c].empty()) continue;
+    std::nth_element(v[c].begin(), v[c].begin() + static_cast<ptrdiff_t>(v[c].size() / 2), v[c].end());
+    m[c] = v[c][v[c].size() / 2];
+  }
+  return m;
+}
+
+namespace {
+
 // Mask, cleaned target and distance field of keyframe k from its raw frame.
 void clean_keyframe(TargetFrames& t, int k, const TargetOptions& opt) {
   const int w = t.width, h = t.height;
   const size_t px = static_cast<size_t>(w) * h;
   const float* raw = t.raw.data() + k * px * 4;
 
+  // Ink: a pixel whose colour differs from the frame's background by more than
+  // 1 - white_threshold in some channel. The background is white, or the light colour most of
+  // the border shows (a generated video's off-white, drifting background); on white this is
+  // exactly "darkest channel < white_threshold".
   cv::Mat ink(h, w, CV_8U);
-  const float thr = static_cast<float>(opt.white_threshold);
+  const float tol = 1.0f - static_cast<float>(opt.white_threshold);
+  // Only a light background that most of the border agrees on stands in for white: a figure
+  // covering half the border, or a drawing's own dark backdrop (a scene's sky), is figure.
+  std::array<float, 3> bg = border_median_rgb(raw, w, h);
+  {
+    size_t agree = 0, border = 0;
+    auto near = [&](int x, int y) {
+      const float* p = raw + (static_cast<size_t>(y) * w + x) * 4;
+      ++border;
+      agree += std::max({std::fabs(p[0] - bg[0]), std::fabs(p[1] - bg[1]), std::fabs(p[2] - bg[2])}) <= tol;
+    };
+    for (int x = 0; x < w; ++x) near(x, 0), near(x, h - 1);
+    for (int y = 1; y + 1 < h; ++y) near(0, y), near(w - 1, y);
+    if (std::min({bg[0], bg[1], bg[2]}) < 0.85f || agree * 10 < border * 6) bg = {1, 1, 1};
+  }
   for (int y = 0; y < h; ++y) {
     uint8_t* row = ink.ptr<uint8_t>(y);
     for (int x = 0; x < w; ++x) {
       const float* p = raw + (static_cast<size_t>(y) * w + x) * 4;
-      row[x] = std::min({p[0], p[1], p[2]}) < thr ? 1 : 0;
+      row[x] = std::max({std::fabs(p[0] - bg[0]), std::fabs(p[1] - bg[1]), std::fabs(p[2] - bg[2])}) > tol ? 1 : 0;
     }
   }
 
@@ -370,6 +409,8 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   if (is_folder) {
     folder = scan_folder(source);
     info.frames = static_cast<int>(folder.frames.size());
+    info.width = folder.width;
+    info.height = folder.height;
   } else {
     info = probe_video(source);
   }
@@ -384,6 +425,8 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   t.keyframes = K;
   t.source_frames = N;
   t.fps = info.fps;
+  t.source_width = info.width;
+  t.source_height = info.height;
   // round(k (N-1) / (K-1)) in integers (halves round up): no floating-point ties, and strictly
   // increasing because the step (N-1)/(K-1) is at least 1.
   t.source_index.resize(static_cast<size_t>(K));
