@@ -1,10 +1,80 @@
 // Building the fitter's tables (see fit_plan.h).
 #include "fit/fit_plan.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 namespace svgm {
+
+void quadratic_bspline_weights(double u, int* j0, double w[3]) {
+  const int c = static_cast<int>(std::lround(u));
+  const double t = u - c;  // in [-0.5, 0.5]: distance from the nearest knot
+  *j0 = c - 1;
+  w[0] = 0.5 * (0.5 - t) * (0.5 - t);
+  w[1] = 0.75 - t * t;
+  w[2] = 0.5 * (0.5 + t) * (0.5 + t);
+}
+
+namespace {
+
+// The field tables of `f` (see FitPlan): per group, knots every `h` pixels from the group's
+// rest bounding box corner; a node exists only where some point has weight on it.
+void plan_field(FitPlan& f, const std::vector<float>& rest_cp, double h) {
+  std::vector<std::vector<std::pair<int, float>>> cp_nodes(f.n_cp);
+  std::vector<std::vector<std::pair<int, float>>> node_cps;
+  if (h > 0) {
+    std::map<std::tuple<int, int, int>, int> node_of;  // (group, knot x, knot y) -> node
+    for (int g = 0; g < f.n_groups; ++g) {
+      double x0 = 1e300, y0 = 1e300;
+      for (int e = f.group_first[g]; e < f.group_first[g + 1]; ++e) {
+        x0 = std::min(x0, static_cast<double>(rest_cp[2 * f.group_cps[e]]));
+        y0 = std::min(y0, static_cast<double>(rest_cp[2 * f.group_cps[e] + 1]));
+      }
+      for (int e = f.group_first[g]; e < f.group_first[g + 1]; ++e) {
+        const int i = f.group_cps[e];
+        if (f.cp_offset[i] != i) continue;  // a closing copy reads its first point's slot
+        int jx, jy;
+        double wx[3], wy[3];
+        quadratic_bspline_weights((rest_cp[2 * i] - x0) / h, &jx, wx);
+        quadratic_bspline_weights((rest_cp[2 * i + 1] - y0) / h, &jy, wy);
+        for (int b = 0; b < 3; ++b)
+          for (int a = 0; a < 3; ++a) {
+            const auto key = std::make_tuple(g, jx + a, jy + b);
+            auto it = node_of.find(key);
+            if (it == node_of.end()) {
+              it = node_of.emplace(key, f.n_nodes++).first;
+              node_cps.emplace_back();
+              f.node_pos.push_back(static_cast<float>(x0 + (jx + a) * h));
+              f.node_pos.push_back(static_cast<float>(y0 + (jy + b) * h));
+            }
+            const float w = static_cast<float>(wx[a] * wy[b]);
+            cp_nodes[i].push_back({it->second, w});
+            node_cps[it->second].push_back({i, w});
+          }
+      }
+    }
+  }
+  f.cp_node_first.assign(f.n_cp + 1, 0);
+  for (int i = 0; i < f.n_cp; ++i) {
+    f.cp_node_first[i + 1] = f.cp_node_first[i] + static_cast<int>(cp_nodes[i].size());
+    for (const auto& [b, w] : cp_nodes[i]) {
+      f.cp_node.push_back(b);
+      f.cp_node_w.push_back(w);
+    }
+  }
+  f.node_cp_first.assign(f.n_nodes + 1, 0);
+  for (int b = 0; b < f.n_nodes; ++b) {
+    f.node_cp_first[b + 1] = f.node_cp_first[b] + static_cast<int>(node_cps[b].size());
+    for (const auto& [i, w] : node_cps[b]) {
+      f.node_cp.push_back(i);
+      f.node_cp_w.push_back(w);
+    }
+  }
+}
+
+}  // namespace
 
 FitPlan plan_fit(const Scene& scene, const RasterPlan& raster, const FitPlanOptions& opt) {
   FitPlan f;
@@ -83,6 +153,7 @@ FitPlan plan_fit(const Scene& scene, const RasterPlan& raster, const FitPlanOpti
       f.nbr_w.push_back(w);
     }
   }
+  plan_field(f, raster.rest_cp, opt.field_spacing_px);
   return f;
 }
 
