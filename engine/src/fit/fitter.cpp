@@ -53,6 +53,8 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
   fo.smooth_sigma_px = opt_.smooth_sigma_frac * size_.width;
   fo.g1_max_angle_deg = opt_.g1_max_angle_deg;
   fo.field_spacing_px = opt_.field_spacing_frac * size_.width;
+  fo.attach_small_px = opt_.attach_small_frac * size_.width;
+  if (opt_.w_cohesion > 0) fo.cohesion_radius_px = opt_.cohesion_radius_frac * size_.width;
   fplan_ = plan_fit(scene, plan_, fo);
   G_ = fplan_.n_groups;
   raster_ = std::make_unique<ClRaster>(rt_, plan_, K_);
@@ -86,6 +88,7 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     k_field_ = cl::Kernel(prog, "field_forward");
     k_field_back_ = cl::Kernel(prog, "field_backward");
     k_adam_f_ = cl::Kernel(prog, "adam");
+    k_cohesion_ = cl::Kernel(prog, "cohesion");
 
     std::vector<float> params;
     const auto id = identity_motion(fplan_, plan_, size_);
@@ -105,6 +108,10 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     node_cp_first_ = ro(fplan_.node_cp_first);
     node_cp_ = ro(fplan_.node_cp);
     node_cp_w_ = ro(fplan_.node_cp_w);
+    coh_first_ = ro(fplan_.coh_first);
+    coh_nbr_ = ro(fplan_.coh_nbr);
+    coh_len_ = ro(fplan_.coh_len);
+    part_coh_ = rw(K * n_cp * sizeof(float));
     rest_ = ro(plan_.rest_cp);
     cp_group_ = ro(fplan_.cp_group);
     cp_offset_ = ro(fplan_.cp_offset);
@@ -126,7 +133,7 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     part_smooth_ = rw(K * n_cp * sizeof(float));
     part_contain_ = rw(K * n_cp * sizeof(float));
     part_g1_ = rw(K * std::max<size_t>(nj, 1) * sizeof(float));
-    terms_ = rw(4 * sizeof(float));
+    terms_ = rw(4 * sizeof(float));  // smoothness, containment, G1, cohesion
     for (int g : fplan_.cp_group) real_cps_ += g >= 0;
 
     const cl_float2 origin{{0.5f * size_.width, 0.5f * size_.height}};
@@ -145,6 +152,8 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     set_args(k_contain_, raster_->cp_buffer(), cp_group_, sdf_, raster_->cp_gradient_buffer(),
              part_contain_, 0.f, static_cast<float>(opt_.contain_margin_px), ncp, size_.width,
              size_.height);
+    set_args(k_cohesion_, raster_->cp_buffer(), coh_first_, coh_nbr_, coh_len_,
+             raster_->cp_gradient_buffer(), part_coh_, 0.f, ncp);
     set_args(k_adam_p_, params_, grad_params_, m_params_, v_params_, steps_buf_, G_ * kMotionParams,
              1, opt_.lr_homography, opt_.beta1, opt_.beta2, opt_.eps,
              static_cast<int>(K * G_ * kMotionParams));
@@ -303,15 +312,18 @@ LossTerms Fitter::fit_iteration() {
   k_smooth_.setArg(6, fplan_.n_pairs ? opt_.w_smooth / (Ka * fplan_.n_pairs) : 0.f);
   k_g1_.setArg(4, nj ? opt_.w_g1 / (Ka * nj) : 0.f);
   k_contain_.setArg(5, real_cps_ ? opt_.w_contain / (Ka * real_cps_) : 0.f);
+  const int ncoh = fplan_.n_coh_pairs;
+  k_cohesion_.setArg(6, ncoh ? opt_.w_cohesion / (Ka * ncoh) : 0.f);
   try {
     // 1. Motion: field + free offsets -> offsets; homographies and offsets -> control points
     //    of the active keyframes.
     enqueue_motion(active_);
     // 2. Render, blurred MSE against the targets, exact gradient to the control points.
     raster_->enqueue_loss_and_gradient(opt_.w_image, kWhite);
-    // 3. G1 continuity and containment add to the control-point gradient.
+    // 3. G1 continuity, containment and cohesion add to the control-point gradient.
     if (nj) q.enqueueNDRangeKernel(k_g1_, cl::NullRange, cl::NDRange(round_up(nj, 64), Ka));
     q.enqueueNDRangeKernel(k_contain_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
+    if (ncoh) q.enqueueNDRangeKernel(k_cohesion_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
     // 4. Back through the motion model to homographies and offsets.
     q.enqueueNDRangeKernel(k_motion_back_, cl::NullRange, cl::NDRange(round_up(G_, 8), Ka));
     // 5. Smoothness adds to the offset gradient.
@@ -323,7 +335,8 @@ LossTerms Fitter::fit_iteration() {
     // 7. Adam on every active keyframe (keyframe 0's homography stays the identity).
     q.enqueueNDRangeKernel(k_adam_p_, cl::NullRange,
                            cl::NDRange(round_up(static_cast<size_t>(K_) * G_ * kMotionParams, 64)));
-    q.enqueueNDRangeKernel(k_adam_o_, cl::NullRange, cl::NDRange(round_up(K_ * n_cp * 2, 64)));
+    if (opt_.lr_offsets != 0)
+      q.enqueueNDRangeKernel(k_adam_o_, cl::NullRange, cl::NDRange(round_up(K_ * n_cp * 2, 64)));
     if (nn) q.enqueueNDRangeKernel(k_adam_f_, cl::NullRange, cl::NDRange(round_up(K_ * nn * 2, 64)));
     // 8. The regularisers' values, summed in order.
     set_args(k_sum_, part_smooth_, terms_, 0, static_cast<int>(Ka * n_cp));
@@ -332,13 +345,18 @@ LossTerms Fitter::fit_iteration() {
     q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
     set_args(k_sum_, part_g1_, terms_, 2, static_cast<int>(Ka * nj));
     q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
+    if (ncoh) {
+      set_args(k_sum_, part_coh_, terms_, 3, static_cast<int>(Ka * n_cp));
+      q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
+    }
     LossTerms t;
-    float terms[3];
-    q.enqueueReadBuffer(terms_, CL_FALSE, 0, sizeof terms, terms);
+    float terms[4] = {0, 0, 0, 0};
+    q.enqueueReadBuffer(terms_, CL_FALSE, 0, (ncoh ? 4 : 3) * sizeof(float), terms);
     t.image = raster_->read_loss();  // blocks: the iteration is done
     t.smooth = terms[0];
     t.contain = terms[1];
     t.g1 = terms[2];
+    t.cohesion = terms[3];
     return t;
   } catch (const cl::Error& e) {
     throw Error(std::string("OpenCL fit iteration failed on ") + rt_.info().name + ": " + e.what() +
