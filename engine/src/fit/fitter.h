@@ -5,9 +5,7 @@
 // (kernels/field.cl) and a free residual offset per control point. One iteration
 // (fit_iteration) runs on the device: field -> motion -> control points -> raster + blurred
 // MSE + backward -> G1, containment and cohesion gradients -> motion backward -> smoothness ->
-// field backward -> Adam. By default the free offsets are frozen (lr 0) and cohesion ties
-// points that touch at rest, so parts 1-2 px wide at the fitting size hold together at 4x
-// (issue 10). Keyframes are activated one at a time
+// field backward -> Adam. Keyframes are activated one at a time
 // (copy of the previous one, optionally improved by optical-flow tracking), then refined
 // jointly; the schedule scales with the iteration budget.
 #pragma once
@@ -35,10 +33,7 @@ struct FitOptions {
   float w_g1 = 10;                 // paper: G1 continuity weight
   float w_contain = 1;             // paper: containment weight
   float lr_homography = 1e-3f;     // paper: Adam learning rate of homography parameters
-  // Adam learning rate of the free per-point offsets (pixels). Paper: 1e-1; 0 here because the
-  // field carries the offsets: free offsets let 1-2 px parts tear at 4x the fitting size
-  // (issue 10; 1024 px boundary F on man_demon 0.89 with them, 0.997 without).
-  float lr_offsets = 0;
+  float lr_offsets = 1e-1f;        // paper: Adam learning rate of offsets (pixels)
   float beta1 = 0.9f, beta2 = 0.9f, eps = 1e-6f;  // paper: Adam settings
   double smooth_sigma_frac = 0.01; // σ of smoothness weights, fraction of the canvas width
   double g1_max_angle_deg = 10;    // joints smoother than this at rest keep G1 continuity
@@ -49,13 +44,12 @@ struct FitOptions {
   bool track = true;               // optical-flow warm start of each activated keyframe
   // Knot spacing of each group's displacement field (kernels/field.cl), as a fraction of the
   // canvas width; 0 turns the field off (offsets are then only the free per-point ones).
-  double field_spacing_frac = 1.0 / 16;  // 16 px at 256: measured on the AniClipart warps
+  double field_spacing_frac = 0;
   float lr_field = 1e-1f;          // Adam learning rate of the field coefficients (pixels)
   // Ungrouped paths smaller than this fraction of the canvas width (both sides of the rest
   // bounding box) move with the path they sit on (FitPlanOptions::attach_small_px); 0: off.
-  double attach_small_frac = 0.025;
-  float w_cohesion = 30;           // weight of cohesion (kernels/regularise.cl); 0: off.
-                                   // Measured: 10, 30, 100, 1000 on man_demon; 30 best at 1024 px
+  double attach_small_frac = 0;
+  float w_cohesion = 0;            // weight of cohesion (kernels/regularise.cl); 0: off
   double cohesion_radius_frac = 0.015;  // cohesion pairs: rest distance below this x width
 };
 
