@@ -7,6 +7,15 @@
  *                (anchor − in-handle, out-handle − anchor) at joints that were smooth at rest.
  *   containment  Σ_points max(0, sdf_k(x̂) − margin)², sdf_k the distance to keyframe k's
  *                foreground mask, bilinearly interpolated: points should stay on the subject.
+ *   cohesion     Σ_pairs (‖x̂_i − x̂_j‖ − ℓ_ij)², pairs = control points closer than a few pixels
+ *                at rest (ℓ_ij their rest distance), in any path or group: what touches at rest
+ *                keeps touching and what is thin stays as thick. Parts drawn in one colour
+ *                over each other (an arm over the body, fingers over the hand) can slide
+ *                without the image loss noticing, and 1-2 px ribbons and dots can collapse or
+ *                twist at no visible cost at the fitting size; both tear at 4x. Distances, not
+ *                edge vectors, so a rotation or articulation of the whole neighbourhood is free
+ *                (an as-rigid-as-possible energy without the per-point rotations: Sorkine and
+ *                Alexa 2007; the distance form is the usual mass-spring one).
  *
  * Each term is scaled by its weight over its count of terms (`scale`). The kernels add their
  * gradients into buffers the image loss has already written and write one partial loss per
@@ -91,6 +100,31 @@ __kernel void containment(__global const float2* cp, __global const int* cp_grou
     }
   }
   partial[at] = l;
+}
+
+/* Cohesion, per (point, keyframe): adds to grad_cp. The pair lists are symmetric, so each
+ * work-item adds only its own point's gradient, 2 scale (‖e‖ − ℓ) e/‖e‖ with e = x̂_i − x̂_j,
+ * and counts the loss of the pairs with j > i. */
+__kernel void cohesion(__global const float2* cp, __global const int* coh_first,
+                       __global const int* coh_nbr, __global const float* coh_len,
+                       __global float2* grad_cp, __global float* partial, float scale, int n_cp) {
+  const int i = get_global_id(0), k = get_global_id(1);
+  if (i >= n_cp) return;
+  __global const float2* p = cp + (size_t)k * n_cp;
+  const float2 xi = p[i];
+  float2 g = (float2)(0.0f);
+  float l = 0.0f;
+  for (int e = coh_first[i]; e < coh_first[i + 1]; ++e) {
+    const int j = coh_nbr[e];
+    const float2 d = xi - p[j];
+    const float len = length(d);
+    if (len < 1e-6f) continue; /* no direction: the pair pushes neither way */
+    const float r = len - coh_len[e];
+    g += (2.0f * r / len) * d;
+    if (j > i) l += r * r;
+  }
+  grad_cp[(size_t)k * n_cp + i] += scale * g;
+  partial[(size_t)k * n_cp + i] = scale * l;
 }
 
 /* One work-item: out[at] = Σ partial[0 .. n), in order. */

@@ -1,4 +1,4 @@
-// The checkpoint file (see checkpoint.h): "SVGMFIT1", the key, then counts and raw arrays.
+// The checkpoint file (see checkpoint.h): "SVGMFIT2", the key, then counts and raw arrays.
 #include "fit/checkpoint.h"
 
 #include <cstring>
@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr char kMagic[8] = {'S', 'V', 'G', 'M', 'F', 'I', 'T', '1'};
+constexpr char kMagic[8] = {'S', 'V', 'G', 'M', 'F', 'I', 'T', '2'};
 
 template <class T>
 void put(std::ostream& f, const std::vector<T>& v) {
@@ -40,7 +40,8 @@ void save_checkpoint(const fs::path& file, const std::string& key, const FitStat
   put(f, std::vector<char>(key.begin(), key.end()));
   put(f, std::vector<int>{s.iteration, s.active});
   put(f, s.steps);
-  for (const auto* v : {&s.params, &s.m_params, &s.v_params, &s.offsets, &s.m_offsets, &s.v_offsets})
+  for (const auto* v : {&s.params, &s.m_params, &s.v_params, &s.offsets, &s.m_offsets, &s.v_offsets,
+                        &s.field, &s.m_field, &s.v_field})
     put(f, *v);
   write_file_atomic(file, f.str());
 }
@@ -58,7 +59,8 @@ FitState load_checkpoint(const fs::path& file, const std::string& key) {
     throw Error(file.string() + ": truncated checkpoint");
   if (std::string(k.begin(), k.end()) != key)
     throw Error(file.string() + ": made for another SVG, target or settings; remove it or drop --resume");
-  for (auto* v : {&s.params, &s.m_params, &s.v_params, &s.offsets, &s.m_offsets, &s.v_offsets})
+  for (auto* v : {&s.params, &s.m_params, &s.v_params, &s.offsets, &s.m_offsets, &s.v_offsets,
+                  &s.field, &s.m_field, &s.v_field})
     if (!get(f, *v)) throw Error(file.string() + ": truncated checkpoint");
   s.iteration = head[0];
   s.active = head[1];

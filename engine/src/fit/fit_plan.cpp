@@ -1,10 +1,182 @@
 // Building the fitter's tables (see fit_plan.h).
 #include "fit/fit_plan.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 namespace svgm {
+
+void quadratic_bspline_weights(double u, int* j0, double w[3]) {
+  const int c = static_cast<int>(std::lround(u));
+  const double t = u - c;  // in [-0.5, 0.5]: distance from the nearest knot
+  *j0 = c - 1;
+  w[0] = 0.5 * (0.5 - t) * (0.5 - t);
+  w[1] = 0.75 - t * t;
+  w[2] = 0.5 * (0.5 + t) * (0.5 + t);
+}
+
+namespace {
+
+// The field tables of `f` (see FitPlan): per group, knots every `h` pixels from the group's
+// rest bounding box corner; a node exists only where some point has weight on it.
+void plan_field(FitPlan& f, const std::vector<float>& rest_cp, double h) {
+  std::vector<std::vector<std::pair<int, float>>> cp_nodes(f.n_cp);
+  std::vector<std::vector<std::pair<int, float>>> node_cps;
+  if (h > 0) {
+    std::map<std::tuple<int, int, int>, int> node_of;  // (group, knot x, knot y) -> node
+    for (int g = 0; g < f.n_groups; ++g) {
+      double x0 = 1e300, y0 = 1e300;
+      for (int e = f.group_first[g]; e < f.group_first[g + 1]; ++e) {
+        x0 = std::min(x0, static_cast<double>(rest_cp[2 * f.group_cps[e]]));
+        y0 = std::min(y0, static_cast<double>(rest_cp[2 * f.group_cps[e] + 1]));
+      }
+      for (int e = f.group_first[g]; e < f.group_first[g + 1]; ++e) {
+        const int i = f.group_cps[e];
+        if (f.cp_offset[i] != i) continue;  // a closing copy reads its first point's slot
+        int jx, jy;
+        double wx[3], wy[3];
+        quadratic_bspline_weights((rest_cp[2 * i] - x0) / h, &jx, wx);
+        quadratic_bspline_weights((rest_cp[2 * i + 1] - y0) / h, &jy, wy);
+        for (int b = 0; b < 3; ++b)
+          for (int a = 0; a < 3; ++a) {
+            const auto key = std::make_tuple(g, jx + a, jy + b);
+            auto it = node_of.find(key);
+            if (it == node_of.end()) {
+              it = node_of.emplace(key, f.n_nodes++).first;
+              node_cps.emplace_back();
+              f.node_pos.push_back(static_cast<float>(x0 + (jx + a) * h));
+              f.node_pos.push_back(static_cast<float>(y0 + (jy + b) * h));
+            }
+            const float w = static_cast<float>(wx[a] * wy[b]);
+            cp_nodes[i].push_back({it->second, w});
+            node_cps[it->second].push_back({i, w});
+          }
+      }
+    }
+  }
+  f.cp_node_first.assign(f.n_cp + 1, 0);
+  for (int i = 0; i < f.n_cp; ++i) {
+    f.cp_node_first[i + 1] = f.cp_node_first[i] + static_cast<int>(cp_nodes[i].size());
+    for (const auto& [b, w] : cp_nodes[i]) {
+      f.cp_node.push_back(b);
+      f.cp_node_w.push_back(w);
+    }
+  }
+  f.node_cp_first.assign(f.n_nodes + 1, 0);
+  for (int b = 0; b < f.n_nodes; ++b) {
+    f.node_cp_first[b + 1] = f.node_cp_first[b] + static_cast<int>(node_cps[b].size());
+    for (const auto& [i, w] : node_cps[b]) {
+      f.node_cp.push_back(i);
+      f.node_cp_w.push_back(w);
+    }
+  }
+}
+
+// The cohesion pairs of `f` (see FitPlan): for each owned point, its nearest owned points
+// within `radius` (at most `max_nbrs`, found through a grid of radius-sized cells), made
+// symmetric. Points at the same rest position carry no direction and are skipped.
+void plan_cohesion(FitPlan& f, const std::vector<float>& rest_cp, double radius, int max_nbrs) {
+  std::vector<std::vector<std::pair<int, float>>> nb(f.n_cp);
+  if (radius > 0 && max_nbrs > 0) {
+    std::map<std::pair<int, int>, std::vector<int>> grid;
+    auto cell = [&](int i) {
+      return std::make_pair(static_cast<int>(std::floor(rest_cp[2 * i] / radius)),
+                            static_cast<int>(std::floor(rest_cp[2 * i + 1] / radius)));
+    };
+    for (int i = 0; i < f.n_cp; ++i)
+      if (f.cp_group[i] >= 0 && f.cp_offset[i] == i) grid[cell(i)].push_back(i);
+    std::vector<std::pair<int, int>> pairs;  // (i, j), i < j
+    for (int i = 0; i < f.n_cp; ++i) {
+      if (f.cp_group[i] < 0 || f.cp_offset[i] != i) continue;
+      const auto [cx, cy] = cell(i);
+      std::vector<std::pair<double, int>> near;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const auto it = grid.find({cx + dx, cy + dy});
+          if (it == grid.end()) continue;
+          for (int j : it->second) {
+            if (j == i) continue;
+            const double d = std::hypot(rest_cp[2 * i] - rest_cp[2 * j], rest_cp[2 * i + 1] - rest_cp[2 * j + 1]);
+            if (d < radius && d > 1e-3) near.push_back({d, j});
+          }
+        }
+      std::sort(near.begin(), near.end());
+      if (near.size() > static_cast<size_t>(max_nbrs)) near.resize(max_nbrs);
+      for (const auto& [d, j] : near) pairs.push_back({std::min(i, j), std::max(i, j)});
+    }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    for (const auto& [i, j] : pairs) {
+      const float d = static_cast<float>(
+          std::hypot(rest_cp[2 * i] - rest_cp[2 * j], rest_cp[2 * i + 1] - rest_cp[2 * j + 1]));
+      nb[i].push_back({j, d});
+      nb[j].push_back({i, d});
+    }
+    f.n_coh_pairs = static_cast<int>(pairs.size());
+  }
+  f.coh_first.assign(f.n_cp + 1, 0);
+  for (int i = 0; i < f.n_cp; ++i) {
+    f.coh_first[i + 1] = f.coh_first[i] + static_cast<int>(nb[i].size());
+    for (const auto& [j, d] : nb[i]) {
+      f.coh_nbr.push_back(j);
+      f.coh_len.push_back(d);
+    }
+  }
+}
+
+struct Box {
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  void add(Vec2 p) {
+    x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+  }
+  bool contains(Vec2 p) const { return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1; }
+  double side() const { return std::max(x1 - x0, y1 - y0); }
+};
+
+// Even-odd containment of p in the control polygons of a path's subpaths (close enough to
+// the curves for choosing a host).
+bool inside_control_polygons(const Path& path, Vec2 p) {
+  bool in = false;
+  for (const Subpath& sp : path.subpaths)
+    for (size_t i = 0, n = sp.points.size(); i < n; ++i) {
+      const Vec2 a = sp.points[i], b = sp.points[(i + 1) % n];
+      if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) in = !in;
+    }
+  return in;
+}
+
+// host[p]: the path whose group small path p joins (see FitPlanOptions::attach_small_px), or -1.
+// Pixel-space boxes come from the raster plan's rest points; containment is tested in canvas
+// space on the scene's own points, mapped through the box of the same points.
+std::vector<int> small_path_hosts(const Scene& scene, const RasterPlan& raster, double max_side) {
+  const size_t P = scene.paths.size();
+  std::vector<int> host(P, -1);
+  if (max_side <= 0) return host;
+  std::vector<Box> px(P), canvas(P);
+  for (size_t p = 0; p < P; ++p) {
+    for (int i = raster.path_cp_first[p]; i < raster.path_cp_first[p] + raster.path_cp_count[p]; ++i)
+      px[p].add({raster.rest_cp[2 * i], raster.rest_cp[2 * i + 1]});
+    for (const Subpath& sp : scene.paths[p].subpaths)
+      for (const Vec2& q : sp.points) canvas[p].add(q);
+  }
+  for (size_t p = 0; p < P; ++p) {
+    const int sg = scene.paths[p].group;
+    const bool alone = sg < 0 || scene.groups[sg].paths.size() <= 1;  // a top-level element
+    if (!alone || raster.path_cp_count[p] == 0 || px[p].side() >= max_side) continue;
+    const Vec2 c{0.5 * (canvas[p].x0 + canvas[p].x1), 0.5 * (canvas[p].y0 + canvas[p].y1)};
+    for (int q = static_cast<int>(p) - 1; q >= 0; --q)
+      if (raster.path_cp_count[q] > 0 && px[q].side() > px[p].side() && canvas[q].contains(c) &&
+          inside_control_polygons(scene.paths[q], c)) {
+        host[p] = q;
+        break;
+      }
+  }
+  return host;
+}
+
+}  // namespace
 
 FitPlan plan_fit(const Scene& scene, const RasterPlan& raster, const FitPlanOptions& opt) {
   FitPlan f;
@@ -16,7 +188,12 @@ FitPlan plan_fit(const Scene& scene, const RasterPlan& raster, const FitPlanOpti
   // Groups: the scene's, plus one per path that has none, in order of first appearance.
   std::map<int, int> scene_group_to_fit;
   std::vector<int> path_group(scene.paths.size());
+  const std::vector<int> host = small_path_hosts(scene, raster, opt.attach_small_px);
   for (size_t p = 0; p < scene.paths.size(); ++p) {
+    if (host[p] >= 0) {  // hosts are painted earlier, so their group is known
+      path_group[p] = path_group[host[p]];
+      continue;
+    }
     const int sg = scene.paths[p].group;
     if (sg >= 0 && scene_group_to_fit.count(sg)) {
       path_group[p] = scene_group_to_fit[sg];
@@ -83,6 +260,8 @@ FitPlan plan_fit(const Scene& scene, const RasterPlan& raster, const FitPlanOpti
       f.nbr_w.push_back(w);
     }
   }
+  plan_field(f, raster.rest_cp, opt.field_spacing_px);
+  plan_cohesion(f, raster.rest_cp, opt.cohesion_radius_px, opt.cohesion_max_neighbours);
   return f;
 }
 

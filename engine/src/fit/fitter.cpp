@@ -50,8 +50,11 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
   K_ = target.keyframes;
   plan_ = plan_raster(scene, size_.view, size_.width, size_.height);
   FitPlanOptions fo;
-  fo.smooth_sigma_px = opt.smooth_sigma_frac * size_.width;
-  fo.g1_max_angle_deg = opt.g1_max_angle_deg;
+  fo.smooth_sigma_px = opt_.smooth_sigma_frac * size_.width;
+  fo.g1_max_angle_deg = opt_.g1_max_angle_deg;
+  fo.field_spacing_px = opt_.field_spacing_frac * size_.width;
+  fo.attach_small_px = opt_.attach_small_frac * size_.width;
+  if (opt_.w_cohesion > 0) fo.cohesion_radius_px = opt_.cohesion_radius_frac * size_.width;
   fplan_ = plan_fit(scene, plan_, fo);
   G_ = fplan_.n_groups;
   raster_ = std::make_unique<ClRaster>(rt_, plan_, K_);
@@ -70,7 +73,7 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     return b;
   };
   try {
-    cl::Program& prog = rt_.program({"motion.cl", "regularise.cl", "adam.cl"},
+    cl::Program& prog = rt_.program({"field.cl", "motion.cl", "regularise.cl", "adam.cl"},
                                     kernel_build_options(raster_tuning(rt_.info(), size_.width)));
     k_motion_ = cl::Kernel(prog, "motion_forward");
     k_motion_back_ = cl::Kernel(prog, "motion_backward");
@@ -80,6 +83,10 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     k_sum_ = cl::Kernel(prog, "sum_partials");
     k_adam_p_ = cl::Kernel(prog, "adam");
     k_adam_o_ = cl::Kernel(prog, "adam");
+    k_field_ = cl::Kernel(prog, "field_forward");
+    k_field_back_ = cl::Kernel(prog, "field_backward");
+    k_adam_f_ = cl::Kernel(prog, "adam");
+    k_cohesion_ = cl::Kernel(prog, "cohesion");
 
     std::vector<float> params;
     const auto id = identity_motion(fplan_, plan_, size_);
@@ -87,6 +94,22 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     params_ = cl::Buffer(ctx, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, params.size() * sizeof(float),
                          params.data());
     offsets_ = rw(K * n_cp * 2 * sizeof(float));
+    total_offsets_ = rw(K * n_cp * 2 * sizeof(float));
+    const size_t n_nodes = fplan_.n_nodes;
+    field_ = rw(K * n_nodes * 2 * sizeof(float));
+    grad_field_ = rw(K * n_nodes * 2 * sizeof(float));
+    m_field_ = rw(K * n_nodes * 2 * sizeof(float));
+    v_field_ = rw(K * n_nodes * 2 * sizeof(float));
+    cp_node_first_ = ro(fplan_.cp_node_first);
+    cp_node_ = ro(fplan_.cp_node);
+    cp_node_w_ = ro(fplan_.cp_node_w);
+    node_cp_first_ = ro(fplan_.node_cp_first);
+    node_cp_ = ro(fplan_.node_cp);
+    node_cp_w_ = ro(fplan_.node_cp_w);
+    coh_first_ = ro(fplan_.coh_first);
+    coh_nbr_ = ro(fplan_.coh_nbr);
+    coh_len_ = ro(fplan_.coh_len);
+    part_coh_ = rw(K * n_cp * sizeof(float));
     rest_ = ro(plan_.rest_cp);
     cp_group_ = ro(fplan_.cp_group);
     cp_offset_ = ro(fplan_.cp_offset);
@@ -108,27 +131,34 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     part_smooth_ = rw(K * n_cp * sizeof(float));
     part_contain_ = rw(K * n_cp * sizeof(float));
     part_g1_ = rw(K * std::max<size_t>(nj, 1) * sizeof(float));
-    terms_ = rw(4 * sizeof(float));
+    terms_ = rw(4 * sizeof(float));  // smoothness, containment, G1, cohesion
     for (int g : fplan_.cp_group) real_cps_ += g >= 0;
 
     const cl_float2 origin{{0.5f * size_.width, 0.5f * size_.height}};
     const float scale = 0.5f * size_.width;
     const int ncp = plan_.n_cp, nj_i = static_cast<int>(nj);
-    set_args(k_motion_, params_, offsets_, rest_, cp_group_, cp_offset_, raster_->cp_buffer(),
+    const int nn = fplan_.n_nodes;
+    set_args(k_field_, offsets_, field_, cp_node_first_, cp_node_, cp_node_w_, total_offsets_, ncp, nn);
+    set_args(k_field_back_, grad_offsets_, node_cp_first_, node_cp_, node_cp_w_, grad_field_, ncp, nn);
+    set_args(k_motion_, params_, total_offsets_, rest_, cp_group_, cp_offset_, raster_->cp_buffer(),
              origin, scale, ncp, G_);
-    set_args(k_motion_back_, params_, offsets_, rest_, cp_offset_, group_first_, group_cps_,
+    set_args(k_motion_back_, params_, total_offsets_, rest_, cp_offset_, group_first_, group_cps_,
              raster_->cp_gradient_buffer(), grad_params_, grad_offsets_, origin, scale, ncp, G_);
-    set_args(k_smooth_, offsets_, nbr_first_, nbr_, nbr_w_, grad_offsets_, part_smooth_, 0.f, ncp);
+    set_args(k_smooth_, total_offsets_, nbr_first_, nbr_, nbr_w_, grad_offsets_, part_smooth_, 0.f, ncp);
     set_args(k_g1_, raster_->cp_buffer(), joints_, raster_->cp_gradient_buffer(), part_g1_, 0.f,
              ncp, nj_i);
     set_args(k_contain_, raster_->cp_buffer(), cp_group_, sdf_, raster_->cp_gradient_buffer(),
              part_contain_, 0.f, static_cast<float>(opt_.contain_margin_px), ncp, size_.width,
              size_.height);
+    set_args(k_cohesion_, raster_->cp_buffer(), coh_first_, coh_nbr_, coh_len_,
+             raster_->cp_gradient_buffer(), part_coh_, 0.f, ncp);
     set_args(k_adam_p_, params_, grad_params_, m_params_, v_params_, steps_buf_, G_ * kMotionParams,
              1, opt_.lr_homography, opt_.beta1, opt_.beta2, opt_.eps,
              static_cast<int>(K * G_ * kMotionParams));
     set_args(k_adam_o_, offsets_, grad_offsets_, m_offsets_, v_offsets_, steps_buf_, ncp * 2, 0,
              opt_.lr_offsets, opt_.beta1, opt_.beta2, opt_.eps, static_cast<int>(K * n_cp * 2));
+    set_args(k_adam_f_, field_, grad_field_, m_field_, v_field_, steps_buf_, std::max(nn * 2, 1), 0,
+             opt_.lr_field, opt_.beta1, opt_.beta2, opt_.eps, static_cast<int>(K * n_nodes * 2));
   } catch (const cl::Error& e) {
     throw Error(std::string("OpenCL setup of the fitter failed on ") + rt_.info().name + ": " +
                 e.what() + " " + cl_status_name(e.err()));
@@ -141,6 +171,7 @@ void Fitter::scale_learning_rates(float s) {
   lr_scale_ *= s;
   k_adam_p_.setArg(7, opt_.lr_homography * lr_scale_);  // kernels/adam.cl: argument 7 is lr
   k_adam_o_.setArg(7, opt_.lr_offsets * lr_scale_);
+  k_adam_f_.setArg(7, opt_.lr_field * lr_scale_);
 }
 
 int Fitter::activation_iteration(int k) const {
@@ -164,13 +195,25 @@ void Fitter::activate_keyframe(int k) {
   q.enqueueFillBuffer(v_params_, 0.f, k * pb, pb);
   q.enqueueFillBuffer(m_offsets_, 0.f, k * ob, ob);
   q.enqueueFillBuffer(v_offsets_, 0.f, k * ob, ob);
+  if (fplan_.n_nodes) {
+    const size_t fb = static_cast<size_t>(fplan_.n_nodes) * 2 * sizeof(float);
+    q.enqueueCopyBuffer(field_, field_, (k - 1) * fb, k * fb, fb);
+    q.enqueueFillBuffer(m_field_, 0.f, k * fb, fb);
+    q.enqueueFillBuffer(v_field_, 0.f, k * fb, fb);
+  }
   steps_[k] = 0;
   if (opt_.track) warm_start(k);
 }
 
-float Fitter::frame_loss(int k) {
+void Fitter::enqueue_motion(int frames) {
   auto& q = rt_.queue();
-  q.enqueueNDRangeKernel(k_motion_, cl::NullRange, cl::NDRange(round_up(plan_.n_cp, 64), k + 1));
+  const cl::NDRange range(round_up(plan_.n_cp, 64), frames);
+  q.enqueueNDRangeKernel(k_field_, cl::NullRange, range);
+  q.enqueueNDRangeKernel(k_motion_, cl::NullRange, range);
+}
+
+float Fitter::frame_loss(int k) {
+  enqueue_motion(k + 1);
   raster_->set_active_frames(k + 1);
   raster_->enqueue_loss_and_gradient(opt_.w_image, kWhite);
   return raster_->read_frame_losses()[k];
@@ -180,7 +223,7 @@ void Fitter::warm_start(int k) {
   auto& q = rt_.queue();
   const int W = size_.width, H = size_.height;
   // The previous keyframe as fitted so far: its render and its control points.
-  q.enqueueNDRangeKernel(k_motion_, cl::NullRange, cl::NDRange(round_up(plan_.n_cp, 64), k));
+  enqueue_motion(k);
   raster_->set_active_frames(k);
   raster_->forward(ClRaster::Output::Float, kWhite);
   const auto img = raster_->read_image();
@@ -274,36 +317,51 @@ LossTerms Fitter::fit_iteration() {
   k_smooth_.setArg(6, fplan_.n_pairs ? opt_.w_smooth / (Ka * fplan_.n_pairs) : 0.f);
   k_g1_.setArg(4, nj ? opt_.w_g1 / (Ka * nj) : 0.f);
   k_contain_.setArg(5, real_cps_ ? opt_.w_contain / (Ka * real_cps_) : 0.f);
+  const int ncoh = fplan_.n_coh_pairs;
+  k_cohesion_.setArg(6, ncoh ? opt_.w_cohesion / (Ka * ncoh) : 0.f);
   try {
-    // 1. Motion: homographies and offsets -> control points of the active keyframes.
-    q.enqueueNDRangeKernel(k_motion_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
+    // 1. Motion: field + free offsets -> offsets; homographies and offsets -> control points
+    //    of the active keyframes.
+    enqueue_motion(active_);
     // 2. Render, blurred MSE against the targets, exact gradient to the control points.
     raster_->enqueue_loss_and_gradient(opt_.w_image, kWhite);
-    // 3. G1 continuity and containment add to the control-point gradient.
+    // 3. G1 continuity, containment and cohesion add to the control-point gradient.
     if (nj) q.enqueueNDRangeKernel(k_g1_, cl::NullRange, cl::NDRange(round_up(nj, 64), Ka));
     q.enqueueNDRangeKernel(k_contain_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
+    if (ncoh) q.enqueueNDRangeKernel(k_cohesion_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
     // 4. Back through the motion model to homographies and offsets.
     q.enqueueNDRangeKernel(k_motion_back_, cl::NullRange, cl::NDRange(round_up(G_, 8), Ka));
     // 5. Smoothness adds to the offset gradient.
     q.enqueueNDRangeKernel(k_smooth_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
-    // 6. Adam on every active keyframe (keyframe 0's homography stays the identity).
+    // 6. Back through the fields to their coefficients (the free offsets' gradient is the
+    //    offsets' gradient itself).
+    const size_t nn = fplan_.n_nodes;
+    if (nn) q.enqueueNDRangeKernel(k_field_back_, cl::NullRange, cl::NDRange(round_up(nn, 64), Ka));
+    // 7. Adam on every active keyframe (keyframe 0's homography stays the identity).
     q.enqueueNDRangeKernel(k_adam_p_, cl::NullRange,
                            cl::NDRange(round_up(static_cast<size_t>(K_) * G_ * kMotionParams, 64)));
-    q.enqueueNDRangeKernel(k_adam_o_, cl::NullRange, cl::NDRange(round_up(K_ * n_cp * 2, 64)));
-    // 7. The regularisers' values, summed in order.
+    if (opt_.lr_offsets != 0)
+      q.enqueueNDRangeKernel(k_adam_o_, cl::NullRange, cl::NDRange(round_up(K_ * n_cp * 2, 64)));
+    if (nn) q.enqueueNDRangeKernel(k_adam_f_, cl::NullRange, cl::NDRange(round_up(K_ * nn * 2, 64)));
+    // 8. The regularisers' values, summed in order.
     set_args(k_sum_, part_smooth_, terms_, 0, static_cast<int>(Ka * n_cp));
     q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
     set_args(k_sum_, part_contain_, terms_, 1, static_cast<int>(Ka * n_cp));
     q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
     set_args(k_sum_, part_g1_, terms_, 2, static_cast<int>(Ka * nj));
     q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
+    if (ncoh) {
+      set_args(k_sum_, part_coh_, terms_, 3, static_cast<int>(Ka * n_cp));
+      q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
+    }
     LossTerms t;
-    float terms[3];
-    q.enqueueReadBuffer(terms_, CL_FALSE, 0, sizeof terms, terms);
+    float terms[4] = {0, 0, 0, 0};
+    q.enqueueReadBuffer(terms_, CL_FALSE, 0, (ncoh ? 4 : 3) * sizeof(float), terms);
     t.image = raster_->read_loss();  // blocks: the iteration is done
     t.smooth = terms[0];
     t.contain = terms[1];
     t.g1 = terms[2];
+    t.cohesion = terms[3];
     return t;
   } catch (const cl::Error& e) {
     throw Error(std::string("OpenCL fit iteration failed on ") + rt_.info().name + ": " + e.what() +
@@ -313,7 +371,7 @@ LossTerms Fitter::fit_iteration() {
 
 std::vector<double> Fitter::keyframe_points_canvas() {
   auto& q = rt_.queue();
-  q.enqueueNDRangeKernel(k_motion_, cl::NullRange, cl::NDRange(round_up(plan_.n_cp, 64), K_));
+  enqueue_motion(K_);
   std::vector<float> cp(static_cast<size_t>(K_) * plan_.n_cp * 2);
   q.enqueueReadBuffer(raster_->cp_buffer(), CL_TRUE, 0, cp.size() * sizeof(float), cp.data());
   const Affine inv = size_.view.inverse();
@@ -327,8 +385,7 @@ std::vector<double> Fitter::keyframe_points_canvas() {
 }
 
 std::vector<float> Fitter::render_keyframes() {
-  rt_.queue().enqueueNDRangeKernel(k_motion_, cl::NullRange,
-                                   cl::NDRange(round_up(plan_.n_cp, 64), active_));
+  enqueue_motion(active_);
   raster_->set_active_frames(active_);
   raster_->forward(ClRaster::Output::Float, kWhite);
   auto img = raster_->read_image();
@@ -345,7 +402,7 @@ FitState Fitter::state() {
   s.steps = steps_;
   auto rd = [&](cl::Buffer& b, std::vector<float>& v, size_t n) {
     v.resize(n);
-    rt_.queue().enqueueReadBuffer(b, CL_TRUE, 0, n * sizeof(float), v.data());
+    if (n) rt_.queue().enqueueReadBuffer(b, CL_TRUE, 0, n * sizeof(float), v.data());
   };
   const size_t np = static_cast<size_t>(K_) * G_ * kMotionParams, no = static_cast<size_t>(K_) * plan_.n_cp * 2;
   rd(params_, s.params, np);
@@ -354,14 +411,20 @@ FitState Fitter::state() {
   rd(offsets_, s.offsets, no);
   rd(m_offsets_, s.m_offsets, no);
   rd(v_offsets_, s.v_offsets, no);
+  const size_t nf = static_cast<size_t>(K_) * fplan_.n_nodes * 2;
+  rd(field_, s.field, nf);
+  rd(m_field_, s.m_field, nf);
+  rd(v_field_, s.v_field, nf);
   return s;
 }
 
 void Fitter::restore(const FitState& s) {
   const size_t np = static_cast<size_t>(K_) * G_ * kMotionParams, no = static_cast<size_t>(K_) * plan_.n_cp * 2;
+  const size_t nf = static_cast<size_t>(K_) * fplan_.n_nodes * 2;
   if (s.params.size() != np || s.offsets.size() != no || s.steps.size() != static_cast<size_t>(K_) ||
       s.m_params.size() != np || s.v_params.size() != np || s.m_offsets.size() != no ||
-      s.v_offsets.size() != no || s.active < 1 || s.active > K_)
+      s.v_offsets.size() != no || s.active < 1 || s.active > K_ ||
+      s.field.size() != nf || s.m_field.size() != nf || s.v_field.size() != nf)
     throw Error("the checkpoint does not match this SVG and keyframe count");
   auto wr = [&](cl::Buffer& b, const std::vector<float>& v) {
     rt_.queue().enqueueWriteBuffer(b, CL_TRUE, 0, v.size() * sizeof(float), v.data());
@@ -372,6 +435,11 @@ void Fitter::restore(const FitState& s) {
   wr(offsets_, s.offsets);
   wr(m_offsets_, s.m_offsets);
   wr(v_offsets_, s.v_offsets);
+  if (nf) {
+    wr(field_, s.field);
+    wr(m_field_, s.m_field);
+    wr(v_field_, s.v_field);
+  }
   iteration_ = s.iteration;
   active_ = s.active;
   steps_ = s.steps;

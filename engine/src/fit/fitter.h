@@ -1,9 +1,11 @@
 // The fitter: a static SVG plus target keyframes in, keyframed control points out.
 //
 // Parameters per keyframe: an 8-DOF homography per group (kernels/motion.cl, 11 numbers with
-// its learned centre) and an offset per control point. One iteration (fit_iteration) runs on
-// the device: motion -> control points -> raster + blurred MSE + backward -> G1 and containment
-// gradients -> motion backward -> smoothness -> Adam. Keyframes are activated one at a time
+// its learned centre), the coefficients of each group's smooth displacement field
+// (kernels/field.cl) and a free residual offset per control point. One iteration
+// (fit_iteration) runs on the device: field -> motion -> control points -> raster + blurred
+// MSE + backward -> G1, containment and cohesion gradients -> motion backward -> smoothness ->
+// field backward -> Adam. Keyframes are activated one at a time
 // (copy of the previous one, optionally improved by optical-flow tracking), then refined
 // jointly; the schedule scales with the iteration budget.
 #pragma once
@@ -40,11 +42,20 @@ struct FitOptions {
   // i.e. 14 activations over 1400 iterations); the rest is joint refinement.
   double activation_share = 0.7;
   bool track = true;               // optical-flow warm start of each activated keyframe
+  // Knot spacing of each group's displacement field (kernels/field.cl), as a fraction of the
+  // canvas width; 0 turns the field off (offsets are then only the free per-point ones).
+  double field_spacing_frac = 0;
+  float lr_field = 1e-1f;          // Adam learning rate of the field coefficients (pixels)
+  // Ungrouped paths smaller than this fraction of the canvas width (both sides of the rest
+  // bounding box) move with the path they sit on (FitPlanOptions::attach_small_px); 0: off.
+  double attach_small_frac = 0;
+  float w_cohesion = 0;            // weight of cohesion (kernels/regularise.cl); 0: off
+  double cohesion_radius_frac = 0.015;  // cohesion pairs: rest distance below this x width
 };
 
 struct LossTerms {
-  float image = 0, smooth = 0, g1 = 0, contain = 0;
-  float total() const { return image + smooth + g1 + contain; }
+  float image = 0, smooth = 0, g1 = 0, contain = 0, cohesion = 0;
+  float total() const { return image + smooth + g1 + contain + cohesion; }
 };
 
 // Everything needed to resume a fit (also what the checkpoint file holds).
@@ -52,7 +63,8 @@ struct FitState {
   int iteration = 0, active = 1;
   std::vector<int> steps;                       // Adam step per keyframe
   std::vector<float> params, m_params, v_params;
-  std::vector<float> offsets, m_offsets, v_offsets;
+  std::vector<float> offsets, m_offsets, v_offsets;  // free per-point offsets
+  std::vector<float> field, m_field, v_field;        // field coefficients
 };
 
 class Fitter {
@@ -100,6 +112,8 @@ class Fitter {
   // Optical-flow warm start of keyframe k (warm_start.h); keeps it only if it fits better.
   void warm_start(int k);
   float frame_loss(int k);  // image loss of keyframe k alone with the current parameters
+  // Field and motion forward: control points of keyframes 0 .. frames-1 into the raster's buffer.
+  void enqueue_motion(int frames);
   void upload_steps();
 
   ClRuntime& rt_;
@@ -120,7 +134,11 @@ class Fitter {
   int warm_starts_tried = 0, warm_starts_kept = 0;
 
  private:
-  cl::Kernel k_motion_, k_motion_back_, k_smooth_, k_g1_, k_contain_, k_sum_, k_adam_p_, k_adam_o_;
+  cl::Kernel k_motion_, k_motion_back_, k_smooth_, k_g1_, k_contain_, k_sum_, k_adam_p_, k_adam_o_,
+      k_field_, k_field_back_, k_adam_f_, k_cohesion_;
+  // offsets_: the free per-point offsets δ; total_offsets_: Δ = δ + field, what motion reads.
+  cl::Buffer field_, total_offsets_, cp_node_first_, cp_node_, cp_node_w_, node_cp_first_, node_cp_,
+      node_cp_w_, grad_field_, m_field_, v_field_, coh_first_, coh_nbr_, coh_len_, part_coh_;
   cl::Buffer params_, offsets_, rest_, cp_group_, cp_offset_, group_first_, group_cps_, nbr_first_,
       nbr_, nbr_w_, joints_, sdf_, grad_params_, grad_offsets_, m_params_, v_params_, m_offsets_,
       v_offsets_, steps_buf_, part_smooth_, part_contain_, part_g1_, terms_;
