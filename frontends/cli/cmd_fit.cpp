@@ -22,7 +22,7 @@ extern "C" void on_sigint(int) { g_interrupted = 1; }
 int cmd_fit(const std::vector<std::string>& argv) {
   const Args a = parse_args("fit", argv,
                             {"--target", "-o", "--output", "--iterations", "--keyframes", "--size",
-                             "--palette", "--device", "--mask-threshold", "--loop"},
+                             "--palette", "--device", "--mask-threshold", "--loop", "--deform"},
                             {"--resume", "--no-track", "--quiet", "--no-gate"});
   if (a.positional.size() != 1)
     throw Error("fit: expected one input SVG (svgmotion fit IN.svg --target VIDEO -o OUT_DIR)");
@@ -39,6 +39,9 @@ int cmd_fit(const std::vector<std::string>& argv) {
   job.keyframes = a.get_int("--keyframes", 15, 2, 1000);
   job.width = a.get_int("--size", 256, 32, 4096);
   job.loop = parse_loop_mode(a.get("--loop").value_or("loop"), "--loop");
+  const std::string deform = a.get("--deform").value_or("field");
+  if (deform == "free") job.options.use_free_offsets();
+  else if (deform != "field") throw Error("fit: --deform must be field or free, not '" + deform + "'");
   job.gate = !a.has("--no-gate");
   if (const auto p = a.get("--palette")) job.palette = *p;
   job.mask_threshold = a.get_double("--mask-threshold", job.mask_threshold);

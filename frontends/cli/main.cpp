@@ -76,6 +76,8 @@ Fits the SVG's paths to a target video (mp4, webm, avi, mov, or a folder of numb
   --mask-threshold T     foreground when the darkest channel is below T (default 0.97)
   --loop MODE            loop (default; seamless when the target returns to its start),
                          once, or mirror
+  --deform D             field (default: a smooth displacement field per part, so thin parts
+                         hold together at any size) or free (the paper's per-point offsets)
   --no-gate              write animation.svg even when the result gate rejects the fit
   --resume               continue from OUT_DIR/checkpoint.bin
   --no-track             no optical-flow warm start of new keyframes

@@ -33,6 +33,9 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   job.width = c.value("size", 256);
   job.mask_threshold = c.value("mask_threshold", 0.97);
   job.device = req.value("device", "auto");
+  const std::string deform = c.value("deform", "field");
+  if (deform == "free") job.options.use_free_offsets();
+  else if (deform != "field") throw std::runtime_error("stages.fitter.deform must be field or free, not '" + deform + "'");
   job.loop = svgm::parse_loop_mode(c.value("loop", "loop"), "stages.fitter.loop");
   job.gate = c.value("gate", true);
   job.quiet = true;

@@ -33,7 +33,10 @@ struct FitOptions {
   float w_g1 = 10;                 // paper: G1 continuity weight
   float w_contain = 1;             // paper: containment weight
   float lr_homography = 1e-3f;     // paper: Adam learning rate of homography parameters
-  float lr_offsets = 1e-1f;        // paper: Adam learning rate of offsets (pixels)
+  // Adam learning rate of the free per-point offsets (pixels); the paper's is 0.1. 0 by
+  // default: with the displacement field below, free points are what lets thin parts tear at
+  // display size (use_free_offsets() restores the paper's deformation).
+  float lr_offsets = 0;
   float beta1 = 0.9f, beta2 = 0.9f, eps = 1e-6f;  // paper: Adam settings
   double smooth_sigma_frac = 0.01; // σ of smoothness weights, fraction of the canvas width
   double g1_max_angle_deg = 10;    // joints smoother than this at rest keep G1 continuity
@@ -44,13 +47,19 @@ struct FitOptions {
   bool track = true;               // optical-flow warm start of each activated keyframe
   // Knot spacing of each group's displacement field (kernels/field.cl), as a fraction of the
   // canvas width; 0 turns the field off (offsets are then only the free per-point ones).
-  double field_spacing_frac = 0;
+  double field_spacing_frac = 1.0 / 16;
   float lr_field = 1e-1f;          // Adam learning rate of the field coefficients (pixels)
   // Ungrouped paths smaller than this fraction of the canvas width (both sides of the rest
   // bounding box) move with the path they sit on (FitPlanOptions::attach_small_px); 0: off.
   double attach_small_frac = 0;
   float w_cohesion = 0;            // weight of cohesion (kernels/regularise.cl); 0: off
   double cohesion_radius_frac = 0.015;  // cohesion pairs: rest distance below this x width
+
+  // The paper's deformation: free per-point offsets (lr 0.1), no displacement field.
+  void use_free_offsets() {
+    lr_offsets = 1e-1f;
+    field_spacing_frac = 0;
+  }
 };
 
 struct LossTerms {

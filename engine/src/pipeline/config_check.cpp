@@ -106,6 +106,7 @@ void check_config(const nlohmann::json& c, const PluginHost& host) {
   real(c, "stages.fitter.mask_threshold", 0, 1, true);
   one_of(c, "stages.fitter.colors", {"auto", "palette", "original"});
   one_of(c, "stages.fitter.loop", {"loop", "once", "mirror"});
+  one_of(c, "stages.fitter.deform", {"field", "free"});
   if (at(c, "stages.video.plugin") == "procedural" && at(c, "stages.fitter.keyframes").is_number() &&
       at(c, "stages.video.frames").is_number() &&
       at(c, "stages.fitter.keyframes").get<double>() > at(c, "stages.video.frames").get<double>())
