@@ -321,7 +321,8 @@ TEST_CASE("a 1,500-path scene: a partition within bounds, no group spanning two 
   CHECK(g.size() <= 15);
   CHECK(note.empty());  // the full analysis ran
   for (const auto& grp : g)
-    for (int i : grp) CHECK(clump_of[static_cast<size_t>(i)] == clump_of[static_cast<size_t>(grp[0])]);
+    for (int i : grp)
+      CHECK(clump_of[static_cast<size_t>(i)] == clump_of[static_cast<size_t>(grp[0])]);
 }
 
 TEST_CASE("above 2,000 paths: the coarse fallback partitions within bounds and says so") {
@@ -338,7 +339,8 @@ TEST_CASE("above 2,000 paths: the coarse fallback partitions within bounds and s
   // The clumps are 480 apart (600 between centres) and the grid cells narrower: no cell
   // holds paths of two clumps.
   for (const auto& grp : g)
-    for (int i : grp) CHECK(clump_of[static_cast<size_t>(i)] == clump_of[static_cast<size_t>(grp[0])]);
+    for (int i : grp)
+      CHECK(clump_of[static_cast<size_t>(i)] == clump_of[static_cast<size_t>(grp[0])]);
   GroupingOptions few;
   few.max_groups = 3;
   const Groups three = group_paths(scene, few);
@@ -357,7 +359,8 @@ TEST_CASE("above 2,000 paths: top-level groups within bounds are kept as they ar
   REQUIRE(g.size() == 4);
   for (const auto& grp : g) {
     CHECK(grp.size() == 750);
-    for (int i : grp) CHECK(clump_of[static_cast<size_t>(i)] == clump_of[static_cast<size_t>(grp[0])]);
+    for (int i : grp)
+      CHECK(clump_of[static_cast<size_t>(i)] == clump_of[static_cast<size_t>(grp[0])]);
   }
   CHECK(note.find("kept the 4 top-level groups") != std::string::npos);
 }

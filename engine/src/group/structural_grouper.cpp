@@ -304,7 +304,8 @@ GroupCheck check_geoms(const std::vector<const Geom*>& gs, double diag, const Gr
   };
   std::vector<Edge> edges;
   for (const auto& [i, j] : near_box_pairs(boxes, reach))
-    edges.push_back({relate(*gs[static_cast<size_t>(i)], *gs[static_cast<size_t>(j)], far, true).gap, i, j});
+    edges.push_back(
+        {relate(*gs[static_cast<size_t>(i)], *gs[static_cast<size_t>(j)], far, true).gap, i, j});
   UnionFind touching(n);
   int comps = static_cast<int>(n);
   for (const Edge& e : edges)
@@ -542,7 +543,8 @@ std::vector<std::vector<int>> group_paths(const Scene& scene, const GroupingOpti
     for (size_t k = 0; k < scene.groups.size(); ++k) {
       const auto& g = scene.groups[k].paths;
       for (int i : g)
-        if (pieces.find(static_cast<size_t>(i)) != pieces.find(static_cast<size_t>(g[0]))) ok[k] = 0;
+        if (pieces.find(static_cast<size_t>(i)) != pieces.find(static_cast<size_t>(g[0])))
+          ok[k] = 0;
       all_ok = all_ok && ok[k];
     }
     if (all_ok && count0 <= max_groups) {
@@ -687,7 +689,8 @@ std::vector<std::vector<int>> group_paths(const Scene& scene, const GroupingOpti
     for (size_t a = 0; a < m; ++a) {
       if (!on[a]) continue;
       for (size_t b = a + 1; b < m; ++b)
-        if (on[b] && (!found || cs[a * m + b] > top)) found = true, top = cs[a * m + b], ba = a, bb = b;
+        if (on[b] && (!found || cs[a * m + b] > top))
+          found = true, top = cs[a * m + b], ba = a, bb = b;
     }
     if (!found) break;
     clusters[ba].insert(clusters[ba].end(), clusters[bb].begin(), clusters[bb].end());
@@ -695,7 +698,8 @@ std::vector<std::vector<int>> group_paths(const Scene& scene, const GroupingOpti
     on[bb] = 0;
     --count;
     for (size_t c = 0; c < m; ++c)
-      if (on[c] && c != ba) cs[ba * m + c] = cs[c * m + ba] = std::max(cs[ba * m + c], cs[bb * m + c]);
+      if (on[c] && c != ba)
+        cs[ba * m + c] = cs[c * m + ba] = std::max(cs[ba * m + c], cs[bb * m + c]);
   }
   return normalised(std::move(clusters));
 }

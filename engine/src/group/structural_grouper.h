@@ -59,9 +59,9 @@ struct GroupingOptions {
 
 // `note`, when given, receives one line when a cheaper rule than the above was used (empty
 // otherwise): above 2,000 paths the pairwise analysis is skipped and the parts are the
-// document's top-level groups when rule 1 would keep them (without its far-mix check), else the top-level
-// groups (or the paths) binned by a coarse grid of at most max_groups cells over their box
-// centres; the same grid merges the clusters left when more than 1,024 remain far apart.
+// document's top-level groups when rule 1 would keep them (without its far-mix check), else
+// the top-level groups (or the paths) binned by a coarse grid of at most max_groups cells over
+// their box centres; the same grid merges the clusters left when over 1,024 remain far apart.
 std::vector<std::vector<int>> group_paths(const Scene& scene, const GroupingOptions& options = {},
                                           std::string* note = nullptr);
 
