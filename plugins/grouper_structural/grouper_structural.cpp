@@ -14,9 +14,12 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host*) {
   const svgm::Scene scene = svgm::read_svg_file(in);
   svgm::GroupingOptions o;
   o.max_groups = req.at("config").value("max_groups", 15);
-  const auto groups = svgm::group_paths(scene, o);
+  std::string note;
+  const auto groups = svgm::group_paths(scene, o, &note);
   svgm::write_grouped_svg(in, scene, groups, P::file(req, "outputs", "svg"));
-  return {{"message", std::to_string(groups.size()) + " groups"}, {"groups", groups.size()}};
+  std::string message = std::to_string(groups.size()) + " groups";
+  if (!note.empty()) message += " (" + note + ")";
+  return {{"message", message}, {"groups", groups.size()}};
 }
 
 }  // namespace

@@ -276,4 +276,93 @@ TEST_CASE("grouping then writing: the grouped file reads back with one group per
   CHECK(group_paths(back).size() == 2);
 }
 
+// Small triangles around `clumps` centres on a 2000 x 2000 canvas (the far distance is
+// 0.05 * 2828 = 141 units; clumps are 600 apart, their paths within 60 of the centre), in
+// paint order round-robin over the clumps so no clump is a run of paint order. Each path's
+// clump goes to `clump_of`; with `grouped`, each clump is one top-level <g>.
+std::string clump_scene(int paths, int clumps, std::vector<int>& clump_of, bool grouped) {
+  std::vector<std::ostringstream> bodies(static_cast<size_t>(clumps));
+  std::ostringstream flat;
+  unsigned state = 12345;
+  auto next = [&] { return (state = state * 1103515245u + 12345u) / 65536u % 1000u / 1000.0; };
+  clump_of.clear();
+  for (int i = 0; i < paths; ++i) {
+    const int c = i % clumps;
+    const double x = 200 + 600 * (c % 3) + 120 * next() - 60;
+    const double y = 200 + 600 * (c / 3) + 120 * next() - 60;
+    std::ostringstream p;
+    p << "<path d=\"M" << x << ' ' << y << " l3 1 l-1 3 z\" fill=\"#" << (c % 2 ? "c33" : "33c")
+      << "\"/>";
+    (grouped ? bodies[static_cast<size_t>(c)] : flat) << p.str();
+    clump_of.push_back(c);
+  }
+  std::string body;
+  if (grouped) {
+    // Paint order is then clump by clump.
+    clump_of.clear();
+    for (int c = 0; c < clumps; ++c) {
+      body += "<g>" + bodies[static_cast<size_t>(c)].str() + "</g>";
+      for (int i = c; i < paths; i += clumps) clump_of.push_back(c);
+    }
+  } else {
+    body = flat.str();
+  }
+  return svg(body, "width=\"2000\" height=\"2000\"");
+}
+
+TEST_CASE("a 1,500-path scene: a partition within bounds, no group spanning two clumps") {
+  std::vector<int> clump_of;
+  const Scene scene = read_svg_string(clump_scene(1500, 6, clump_of, false), "t.svg");
+  REQUIRE(scene.paths.size() == 1500);
+  std::string note = "stale";
+  const Groups g = group_paths(scene, {}, &note);
+  check_partition(scene, g);
+  CHECK(g.size() >= 6);
+  CHECK(g.size() <= 15);
+  CHECK(note.empty());  // the full analysis ran
+  for (const auto& grp : g)
+    for (int i : grp)
+      CHECK(clump_of[static_cast<size_t>(i)] == clump_of[static_cast<size_t>(grp[0])]);
+}
+
+TEST_CASE("above 2,000 paths: the coarse fallback partitions within bounds and says so") {
+  std::vector<int> clump_of;
+  const Scene scene = read_svg_string(clump_scene(5000, 6, clump_of, false), "t.svg");
+  REQUIRE(scene.paths.size() == 5000);
+  std::string note;
+  const Groups g = group_paths(scene, {}, &note);
+  check_partition(scene, g);
+  CHECK(g.size() >= 2);
+  CHECK(g.size() <= 15);
+  CHECK(note.find("5000 paths (above 2000, no overlap analysis)") == 0);
+  CHECK(note.find("grid") != std::string::npos);
+  // The clumps are 480 apart (600 between centres) and the grid cells narrower: no cell
+  // holds paths of two clumps.
+  for (const auto& grp : g)
+    for (int i : grp)
+      CHECK(clump_of[static_cast<size_t>(i)] == clump_of[static_cast<size_t>(grp[0])]);
+  GroupingOptions few;
+  few.max_groups = 3;
+  const Groups three = group_paths(scene, few);
+  check_partition(scene, three);
+  CHECK(three.size() >= 2);
+  CHECK(three.size() <= 3);
+}
+
+TEST_CASE("above 2,000 paths: top-level groups within bounds are kept as they are") {
+  std::vector<int> clump_of;
+  const Scene scene = read_svg_string(clump_scene(3000, 4, clump_of, true), "t.svg");
+  REQUIRE(scene.groups.size() == 4);
+  std::string note;
+  const Groups g = group_paths(scene, {}, &note);
+  check_partition(scene, g);
+  REQUIRE(g.size() == 4);
+  for (const auto& grp : g) {
+    CHECK(grp.size() == 750);
+    for (int i : grp)
+      CHECK(clump_of[static_cast<size_t>(i)] == clump_of[static_cast<size_t>(grp[0])]);
+  }
+  CHECK(note.find("kept the 4 top-level groups") != std::string::npos);
+}
+
 }  // TEST_SUITE

@@ -1,11 +1,15 @@
 // The structural grouper (see structural_grouper.h): flattened outlines, pairwise relations
-// (containment, overlap, gap, colour), then single-linkage agglomerative merging.
+// (containment, overlap, gap, colour) between nearby paths, then single-linkage merging.
 #include "group/structural_grouper.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <queue>
+#include <string>
+#include <unordered_map>
+#include <utility>
 
 namespace svgm {
 
@@ -182,61 +186,158 @@ Relation relate(const Geom& a, const Geom& b, double far, bool exact) {
   return r;
 }
 
-double canvas_diagonal(const Scene& scene, const std::vector<Geom>& geoms) {
-  double d = std::hypot(scene.width, scene.height);
-  if (d > 0 && std::isfinite(d)) return d;
-  Box all;
-  for (const Geom& g : geoms)
-    if (!g.box.empty()) all.add({g.box.x0, g.box.y0}), all.add({g.box.x1, g.box.y1});
-  d = all.empty() ? 0 : std::hypot(all.x1 - all.x0, all.y1 - all.y0);
-  return d > 0 ? d : 1;
-}
-
 double colour_similarity(const Rgba& a, const Rgba& b) {
   const double d = std::sqrt((a.r - b.r) * (a.r - b.r) + (a.g - b.g) * (a.g - b.g) +
                              (a.b - b.b) * (a.b - b.b));
   return 1 - d / std::sqrt(3.0);
 }
 
+// Above this many paths group_paths skips the pairwise analysis (outline distances and inside
+// tests cost nearby pairs x segments: minutes and gigabytes at 20,000 paths) for coarse_groups.
+// The drawings of the aniclipart bench have at most 51 paths.
+constexpr size_t kExactPaths = 2000;
+// Clusters compared densely (k x k scores, k^3 scans) once only far-apart pairs are left. Such
+// clusters are pairwise farther apart than far_fraction of the diagonal: a few hundred at most
+// on a canvas, more only for paths strewn far outside it (then coarse_groups merges them).
+constexpr size_t kDenseClusters = 1024;
+// Cells per axis of the neighbour grid, at most: bounds the cells one large box is listed in.
+constexpr double kGridCells = 64;
+
+Box hull(const std::vector<Box>& boxes) {
+  Box all;
+  for (const Box& b : boxes)
+    if (!b.empty()) all.add({b.x0, b.y0}), all.add({b.x1, b.y1});
+  return all;
+}
+
+double canvas_diagonal(const Scene& scene, const std::vector<Box>& boxes) {
+  double d = std::hypot(scene.width, scene.height);
+  if (d > 0 && std::isfinite(d)) return d;
+  const Box all = hull(boxes);
+  d = all.empty() ? 0 : std::hypot(all.x1 - all.x0, all.y1 - all.y0);
+  return d > 0 ? d : 1;
+}
+
+// Every pair (i < j) of boxes at most `reach` apart (box_gap), sorted. A uniform grid with
+// cells of at least `reach` lists each box in every cell it covers; a box's candidates are the
+// boxes listed in the cells its box grown by `reach` covers. Plain code, quadratic:
+//   for i < j: if (box_gap(b[i], b[j]) <= reach) pairs.push_back({i, j});
+std::vector<std::pair<int, int>> near_box_pairs(const std::vector<Box>& boxes, double reach) {
+  std::vector<std::pair<int, int>> pairs;
+  const Box all = hull(boxes);
+  if (all.empty()) return pairs;
+  reach = std::max(0.0, reach);
+  const double extent = std::max(all.x1 - all.x0, all.y1 - all.y0);
+  double cell = std::max(reach, extent / kGridCells);
+  if (!(cell > 0) || !std::isfinite(cell)) cell = 1;
+  const auto cells_x = static_cast<size_t>(std::floor((all.x1 - all.x0) / cell)) + 1;
+  const auto cells_y = static_cast<size_t>(std::floor((all.y1 - all.y0) / cell)) + 1;
+  auto cell_range = [&](double lo, double hi, double origin, size_t count) {
+    const auto clampi = [&](double v) {
+      return static_cast<size_t>(std::clamp(std::floor((v - origin) / cell), 0.0,
+                                            static_cast<double>(count - 1)));
+    };
+    return std::pair{clampi(lo), clampi(hi)};
+  };
+  std::vector<std::vector<int>> grid(cells_x * cells_y);
+  for (size_t i = 0; i < boxes.size(); ++i) {
+    const Box& b = boxes[i];
+    if (b.empty()) continue;
+    const auto [x0, x1] = cell_range(b.x0, b.x1, all.x0, cells_x);
+    const auto [y0, y1] = cell_range(b.y0, b.y1, all.y0, cells_y);
+    for (size_t y = y0; y <= y1; ++y)
+      for (size_t x = x0; x <= x1; ++x) grid[y * cells_x + x].push_back(static_cast<int>(i));
+  }
+  std::vector<size_t> stamp(boxes.size(), boxes.size());
+  std::vector<int> found;
+  for (size_t i = 0; i < boxes.size(); ++i) {
+    const Box& b = boxes[i];
+    if (b.empty()) continue;
+    const auto [x0, x1] = cell_range(b.x0 - reach, b.x1 + reach, all.x0, cells_x);
+    const auto [y0, y1] = cell_range(b.y0 - reach, b.y1 + reach, all.y0, cells_y);
+    found.clear();
+    for (size_t y = y0; y <= y1; ++y)
+      for (size_t x = x0; x <= x1; ++x)
+        for (int j : grid[y * cells_x + x]) {
+          const auto uj = static_cast<size_t>(j);
+          if (uj <= i || stamp[uj] == i) continue;
+          stamp[uj] = i;
+          if (box_gap(b, boxes[uj]) <= reach) found.push_back(j);
+        }
+    std::sort(found.begin(), found.end());
+    for (int j : found) pairs.emplace_back(static_cast<int>(i), j);
+  }
+  return pairs;
+}
+
+struct UnionFind {
+  std::vector<size_t> parent;
+  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), size_t{0}); }
+  size_t find(size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  bool unite(size_t a, size_t b) {
+    a = find(a), b = find(b);
+    if (a == b) return false;
+    parent[std::max(a, b)] = std::min(a, b);
+    return true;
+  }
+};
+
+// The check of one group. Only pairs whose boxes are within reach = max(far, touch) can link
+// at the touch or far distance (a gap is never below the gap between the grown boxes), so those
+// pairs decide components_at_touch and, when they connect the group, the bottleneck (Kruskal).
+// Otherwise the bottleneck exceeds reach: Prim over all pairs gives it exactly for groups up to
+// kExactPaths paths (time n^2, memory n); beyond that largest_gap is the lower bound reach.
 GroupCheck check_geoms(const std::vector<const Geom*>& gs, double diag, const GroupingOptions& opt) {
   GroupCheck c;
   const size_t n = gs.size();
   if (n <= 1) return c;
   const double far = opt.far_fraction * diag, touch = opt.touch_fraction * diag;
-  std::vector<double> gap(n * n, 0);
-  for (size_t i = 0; i < n; ++i)
-    for (size_t j = i + 1; j < n; ++j) {
-      const Relation r = relate(*gs[i], *gs[j], far, true);
-      gap[i * n + j] = gap[j * n + i] = r.gap;
-    }
-  // Prim's minimum spanning tree: its largest edge is the bottleneck gap.
-  std::vector<double> dist(n, std::numeric_limits<double>::infinity());
-  std::vector<char> done(n, 0);
-  dist[0] = 0;
-  for (size_t it = 0; it < n; ++it) {
-    size_t u = n;
-    for (size_t v = 0; v < n; ++v)
-      if (!done[v] && (u == n || dist[v] < dist[u])) u = v;
-    done[u] = 1;
-    c.largest_gap = std::max(c.largest_gap, dist[u]);
-    for (size_t v = 0; v < n; ++v)
-      if (!done[v]) dist[v] = std::min(dist[v], gap[u * n + v]);
-  }
-  // Components with links no longer than the touch distance (union-find).
-  std::vector<size_t> parent(n);
-  std::iota(parent.begin(), parent.end(), size_t{0});
-  auto find = [&](size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
+  const double reach = std::max(far, touch);
+  std::vector<Box> boxes;
+  for (const Geom* g : gs) boxes.push_back(g->box);
+  struct Edge {
+    double gap;
+    int i, j;
   };
+  std::vector<Edge> edges;
+  for (const auto& [i, j] : near_box_pairs(boxes, reach))
+    edges.push_back(
+        {relate(*gs[static_cast<size_t>(i)], *gs[static_cast<size_t>(j)], far, true).gap, i, j});
+  UnionFind touching(n);
   int comps = static_cast<int>(n);
-  for (size_t i = 0; i < n; ++i)
-    for (size_t j = i + 1; j < n; ++j)
-      if (gap[i * n + j] <= touch) {
-        const size_t a = find(i), b = find(j);
-        if (a != b) parent[std::max(a, b)] = std::min(a, b), --comps;
-      }
+  for (const Edge& e : edges)
+    if (e.gap <= touch) comps -= touching.unite(static_cast<size_t>(e.i), static_cast<size_t>(e.j));
   c.components_at_touch = comps;
+  std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) {
+    return a.gap != b.gap ? a.gap < b.gap : std::pair{a.i, a.j} < std::pair{b.i, b.j};
+  });
+  UnionFind linked(n);
+  size_t joined = 1;
+  for (const Edge& e : edges)
+    if (linked.unite(static_cast<size_t>(e.i), static_cast<size_t>(e.j)))
+      ++joined, c.largest_gap = std::max(c.largest_gap, e.gap);
+  if (joined < n || c.largest_gap > reach) {
+    if (n <= kExactPaths) {  // Prim's minimum spanning tree, gaps computed as needed
+      c.largest_gap = 0;
+      std::vector<double> dist(n, std::numeric_limits<double>::infinity());
+      std::vector<char> done(n, 0);
+      dist[0] = 0;
+      for (size_t it = 0; it < n; ++it) {
+        size_t u = n;
+        for (size_t v = 0; v < n; ++v)
+          if (!done[v] && (u == n || dist[v] < dist[u])) u = v;
+        done[u] = 1;
+        c.largest_gap = std::max(c.largest_gap, dist[u]);
+        for (size_t v = 0; v < n; ++v)
+          if (!done[v]) dist[v] = std::min(dist[v], relate(*gs[u], *gs[v], far, true).gap);
+      }
+    } else {
+      c.largest_gap = reach;
+    }
+  }
   c.largest_gap_fraction = c.largest_gap / diag;
   c.far_mix = c.largest_gap > far;
   return c;
@@ -250,6 +351,120 @@ std::vector<std::vector<int>> normalised(std::vector<std::vector<int>> groups) {
   return groups;
 }
 
+// Whether the document's top-level groups cover every path exactly once; `multi` tells whether
+// one of them has several paths.
+bool groups_cover(const Scene& scene, bool& multi) {
+  const size_t n = scene.paths.size();
+  bool covers = true;
+  multi = false;
+  std::vector<int> seen(n, 0);
+  for (const Group& g : scene.groups) {
+    multi = multi || g.paths.size() > 1;
+    for (int i : g.paths)
+      if (i < 0 || static_cast<size_t>(i) >= n || seen[static_cast<size_t>(i)]++) covers = false;
+  }
+  return covers && std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; });
+}
+
+// Coarse grouping: units (groups of paths kept whole) go to the cell of a grid of at most
+// max_groups cells, shaped like the units' extent, that holds the centre of their box. When the
+// units fall in fewer than min_groups cells they are split in paint order instead.
+std::vector<std::vector<int>> grid_groups(const std::vector<std::vector<int>>& units,
+                                          const std::vector<Box>& boxes, int min_groups,
+                                          int max_groups, int& cols, int& rows) {
+  std::vector<Vec2> centre(units.size());
+  Box extent;
+  for (size_t u = 0; u < units.size(); ++u) {
+    Box b;
+    for (int i : units[u]) {
+      const Box& p = boxes[static_cast<size_t>(i)];
+      if (!p.empty()) b.add({p.x0, p.y0}), b.add({p.x1, p.y1});
+    }
+    if (b.empty()) continue;  // no geometry: the first cell
+    centre[u] = {0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)};
+    extent.add(centre[u]);
+  }
+  const double w = extent.empty() ? 1 : extent.x1 - extent.x0;
+  const double h = extent.empty() ? 1 : extent.y1 - extent.y0;
+  const double aspect = (w + 1e-9) / (h + 1e-9);
+  cols = std::clamp(static_cast<int>(std::lround(std::sqrt(max_groups * aspect))), 1, max_groups);
+  rows = std::max(1, max_groups / cols);
+  auto index = [](double v, double lo, double span, int count) {
+    const double t = span > 0 ? (v - lo) / span : 0;
+    return std::clamp(static_cast<int>(std::floor(t * count)), 0, count - 1);
+  };
+  std::vector<std::vector<int>> cells(static_cast<size_t>(cols * rows));
+  for (size_t u = 0; u < units.size(); ++u) {
+    const int x = extent.empty() ? 0 : index(centre[u].x, extent.x0, w, cols);
+    const int y = extent.empty() ? 0 : index(centre[u].y, extent.y0, h, rows);
+    auto& cell = cells[static_cast<size_t>(y * cols + x)];
+    cell.insert(cell.end(), units[u].begin(), units[u].end());
+  }
+  std::erase_if(cells, [](const std::vector<int>& g) { return g.empty(); });
+  if (static_cast<int>(cells.size()) < min_groups && static_cast<int>(units.size()) >= min_groups) {
+    cells.assign(static_cast<size_t>(min_groups), {});
+    for (size_t u = 0; u < units.size(); ++u) {
+      auto& cell = cells[u * static_cast<size_t>(min_groups) / units.size()];
+      cell.insert(cell.end(), units[u].begin(), units[u].end());
+    }
+  }
+  return normalised(std::move(cells));
+}
+
+// The fallback for scenes above kExactPaths paths: the document's top-level groups when they
+// are between min_groups and max_groups with one of several paths, else a coarse grid over the
+// top-level groups (or over the paths when those are fewer than min_groups).
+std::vector<std::vector<int>> coarse_groups(const Scene& scene, int min_groups, int max_groups,
+                                            bool keep_existing, std::string& note) {
+  const size_t n = scene.paths.size();
+  std::vector<Box> boxes(n);
+  for (size_t i = 0; i < n; ++i) {
+    const Path& p = scene.paths[i];
+    for (const Subpath& sp : p.subpaths)
+      for (const Vec2& v : sp.points) boxes[i].add(v);  // control points: the hull holds the curve
+  }
+  bool multi = false;
+  const bool covers = keep_existing && groups_cover(scene, multi);
+  const int count = static_cast<int>(scene.groups.size());
+  const std::string size = std::to_string(n) + " paths (above " + std::to_string(kExactPaths) +
+                           ", no overlap analysis): ";
+  if (covers && multi && count >= min_groups && count <= max_groups) {
+    note = size + "kept the " + std::to_string(count) + " top-level groups";
+    std::vector<std::vector<int>> out;
+    for (const Group& g : scene.groups) out.push_back(g.paths);
+    return normalised(std::move(out));
+  }
+  std::vector<std::vector<int>> units;
+  const bool by_groups = covers && count >= min_groups;
+  if (by_groups)
+    for (const Group& g : scene.groups) units.push_back(g.paths);
+  else
+    for (size_t i = 0; i < n; ++i) units.push_back({static_cast<int>(i)});
+  units = normalised(std::move(units));
+  int cols = 1, rows = 1;
+  auto out = grid_groups(units, boxes, min_groups, max_groups, cols, rows);
+  note = size + (by_groups ? "top-level groups" : "paths") + " grouped by a " +
+         std::to_string(cols) + "x" + std::to_string(rows) + " grid of their box centres";
+  return out;
+}
+
+// Links between two clusters: the best pair score and whether some pair links strongly.
+struct Tie {
+  double score = -std::numeric_limits<double>::infinity();
+  bool strong = false;
+};
+
+// A candidate merge of slots a < b; the heap's top is the best score, then the first (a, b),
+// as the plain scan "for a < b: if (cs[a][b] > best) ..." finds it.
+struct Candidate {
+  double score;
+  int a, b;
+  bool operator<(const Candidate& o) const {
+    if (score != o.score) return score < o.score;
+    return a != o.a ? a > o.a : b > o.b;
+  }
+};
+
 }  // namespace
 
 GroupCheck check_group(const Scene& scene, const std::vector<int>& group,
@@ -258,134 +473,235 @@ GroupCheck check_group(const Scene& scene, const std::vector<int>& group,
   geoms.reserve(group.size());
   for (int i : group) geoms.push_back(build_geom(scene.paths.at(static_cast<size_t>(i)), options));
   std::vector<const Geom*> ptrs;
-  for (const Geom& g : geoms) ptrs.push_back(&g);
+  std::vector<Box> boxes;
+  for (const Geom& g : geoms) ptrs.push_back(&g), boxes.push_back(g.box);
   // The diagonal is the canvas's (the union of these paths' boxes if the canvas has no size).
-  const double diag = canvas_diagonal(scene, geoms);
+  const double diag = canvas_diagonal(scene, boxes);
   return check_geoms(ptrs, diag, options);
 }
 
-std::vector<std::vector<int>> group_paths(const Scene& scene, const GroupingOptions& opt) {
+std::vector<std::vector<int>> group_paths(const Scene& scene, const GroupingOptions& opt,
+                                          std::string* note) {
   const size_t n = scene.paths.size();
+  if (note) note->clear();
   if (n == 0) return {};
   const int min_groups = std::max(1, opt.min_groups);
   const int max_groups = std::max(min_groups, opt.max_groups);
+  if (n > kExactPaths) {
+    std::string line;
+    auto out = coarse_groups(scene, min_groups, max_groups, opt.keep_existing_groups, line);
+    if (note) *note = line;
+    return out;
+  }
   std::vector<Geom> geoms;
   geoms.reserve(n);
   for (const Path& p : scene.paths) geoms.push_back(build_geom(p, opt));
-  const double diag = canvas_diagonal(scene, geoms);
-  auto group_ok = [&](const std::vector<int>& g) {
-    std::vector<const Geom*> gs;
-    for (int i : g) gs.push_back(&geoms[static_cast<size_t>(i)]);
-    return !check_geoms(gs, diag, opt).far_mix;
-  };
+  std::vector<Box> boxes;
+  for (const Geom& g : geoms) boxes.push_back(g.box);
+  const double diag = canvas_diagonal(scene, boxes);
+  const double far = opt.far_fraction * diag;
 
-  // 1. The document's own top-level groups.
+  // Pairwise relations, only between paths whose boxes are within the far distance: every
+  // other pair scores -box_gap / diag (far apart), computed when needed (step 3).
+  struct Link {
+    int i, j;
+    double gap, score;
+    bool strong;
+  };
+  std::vector<Link> links;
+  for (const auto& [i, j] : near_box_pairs(boxes, far)) {
+    const Geom &a = geoms[static_cast<size_t>(i)], &b = geoms[static_cast<size_t>(j)];
+    const Relation r = relate(a, b, far, false);
+    const bool contain = (r.in_ab >= opt.containment_fraction && a.area <= b.area) ||
+                         (r.in_ba >= opt.containment_fraction && b.area <= a.area);
+    const double smaller_in = a.area <= b.area ? r.in_ab : r.in_ba;
+    const double overlap = std::max(r.in_ab, r.in_ba);
+    double s;
+    if (contain) s = 4 + smaller_in;
+    else if (r.gap <= 0) s = 2 + overlap;
+    else if (r.gap <= far) s = 1 - r.gap / far;
+    else s = -r.gap / diag;  // far apart: nearest first, and only when needed
+    if (r.gap <= far) s += 0.2 * colour_similarity(a.colour, b.colour);
+    links.push_back({i, j, r.gap, s, contain || (r.gap <= 0 && overlap >= opt.strong_overlap)});
+  }
+
+  // 1. The document's own top-level groups. A group mixes far-apart parts (check_group's
+  // far_mix) when its links no longer than the far distance leave it in several pieces.
   std::vector<std::vector<int>> seeds;
-  if (opt.keep_existing_groups) {
-    bool covers = true, multi = false;
-    std::vector<int> seen(n, 0);
-    for (const Group& g : scene.groups) {
-      multi = multi || g.paths.size() > 1;
-      for (int i : g.paths) {
-        if (i < 0 || static_cast<size_t>(i) >= n || seen[static_cast<size_t>(i)]++) covers = false;
-      }
+  bool multi = false;
+  const int count0 = static_cast<int>(scene.groups.size());
+  if (opt.keep_existing_groups && groups_cover(scene, multi) && multi && count0 >= min_groups) {
+    std::vector<size_t> owner(n);
+    for (size_t k = 0; k < scene.groups.size(); ++k)
+      for (int i : scene.groups[k].paths) owner[static_cast<size_t>(i)] = k;
+    UnionFind pieces(n);
+    for (const Link& l : links)
+      if (owner[static_cast<size_t>(l.i)] == owner[static_cast<size_t>(l.j)] && l.gap <= far)
+        pieces.unite(static_cast<size_t>(l.i), static_cast<size_t>(l.j));
+    std::vector<char> ok(scene.groups.size(), 1);
+    bool all_ok = true;
+    for (size_t k = 0; k < scene.groups.size(); ++k) {
+      const auto& g = scene.groups[k].paths;
+      for (int i : g)
+        if (pieces.find(static_cast<size_t>(i)) != pieces.find(static_cast<size_t>(g[0])))
+          ok[k] = 0;
+      all_ok = all_ok && ok[k];
     }
-    covers = covers && std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; });
-    const int count = static_cast<int>(scene.groups.size());
-    if (covers && multi && count >= min_groups) {
-      std::vector<char> ok(scene.groups.size(), 1);
-      bool all_ok = true;
-      for (size_t k = 0; k < scene.groups.size(); ++k) {
-        if (scene.groups[k].paths.size() > 1) ok[k] = group_ok(scene.groups[k].paths);
-        all_ok = all_ok && ok[k];
-      }
-      if (all_ok && count <= max_groups) {
-        std::vector<std::vector<int>> out;
-        for (const Group& g : scene.groups) out.push_back(g.paths);
-        return normalised(std::move(out));
-      }
-      // Too many groups, or some mix far-apart parts: keep the good ones as seeds.
-      for (size_t k = 0; k < scene.groups.size(); ++k) {
-        if (ok[k]) seeds.push_back(scene.groups[k].paths);
-        else
-          for (int i : scene.groups[k].paths) seeds.push_back({i});
-      }
-      if (static_cast<int>(seeds.size()) < min_groups) seeds.clear();
+    if (all_ok && count0 <= max_groups) {
+      std::vector<std::vector<int>> out;
+      for (const Group& g : scene.groups) out.push_back(g.paths);
+      return normalised(std::move(out));
     }
+    // Too many groups, or some mix far-apart parts: keep the good ones as seeds.
+    for (size_t k = 0; k < scene.groups.size(); ++k) {
+      if (ok[k]) seeds.push_back(scene.groups[k].paths);
+      else
+        for (int i : scene.groups[k].paths) seeds.push_back({i});
+    }
+    if (static_cast<int>(seeds.size()) < min_groups) seeds.clear();
   }
   if (seeds.empty())
     for (size_t i = 0; i < n; ++i) seeds.push_back({static_cast<int>(i)});
   seeds = normalised(std::move(seeds));
 
-  // 2. Pairwise relations between paths.
-  const double far = opt.far_fraction * diag;
-  std::vector<double> score(n * n, 0);
-  std::vector<char> strong(n * n, 0);
-  for (size_t i = 0; i < n; ++i)
-    for (size_t j = i + 1; j < n; ++j) {
-      const Geom &a = geoms[i], &b = geoms[j];
-      const Relation r = relate(a, b, far, false);
-      const bool contain = (r.in_ab >= opt.containment_fraction && a.area <= b.area) ||
-                           (r.in_ba >= opt.containment_fraction && b.area <= a.area);
-      const double smaller_in = a.area <= b.area ? r.in_ab : r.in_ba;
-      const double overlap = std::max(r.in_ab, r.in_ba);
-      double s;
-      if (contain) s = 4 + smaller_in;
-      else if (r.gap <= 0) s = 2 + overlap;
-      else if (r.gap <= far) s = 1 - r.gap / far;
-      else s = -r.gap / diag;  // far apart: nearest first, and only when needed
-      if (r.gap <= far) s += 0.2 * colour_similarity(a.colour, b.colour);
-      score[i * n + j] = score[j * n + i] = s;
-      strong[i * n + j] = strong[j * n + i] =
-          contain || (r.gap <= 0 && overlap >= opt.strong_overlap);
-    }
-
-  // 3. Single-linkage agglomeration over the seeds.
+  // 2. Single-linkage agglomeration over the seeds (slots in seed order; a merge keeps the
+  // lower slot). Cluster ties are sparse: only clusters with linked paths have one.
   const size_t k0 = seeds.size();
-  std::vector<double> cs(k0 * k0, -std::numeric_limits<double>::infinity());
-  std::vector<char> cstrong(k0 * k0, 0);
-  for (size_t a = 0; a < k0; ++a)
-    for (size_t b = a + 1; b < k0; ++b) {
-      double s = -std::numeric_limits<double>::infinity();
-      bool st = false;
-      for (int i : seeds[a])
-        for (int j : seeds[b]) {
-          s = std::max(s, score[static_cast<size_t>(i) * n + static_cast<size_t>(j)]);
-          st = st || strong[static_cast<size_t>(i) * n + static_cast<size_t>(j)];
-        }
-      cs[a * k0 + b] = cs[b * k0 + a] = s;
-      cstrong[a * k0 + b] = cstrong[b * k0 + a] = st;
-    }
+  std::vector<int> slot_of(n);
+  for (size_t k = 0; k < k0; ++k)
+    for (int i : seeds[k]) slot_of[static_cast<size_t>(i)] = static_cast<int>(k);
+  std::vector<std::unordered_map<int, Tie>> ties(k0);
+  for (const Link& l : links) {
+    const int a = slot_of[static_cast<size_t>(l.i)], b = slot_of[static_cast<size_t>(l.j)];
+    if (a == b) continue;
+    for (Tie* t : {&ties[static_cast<size_t>(a)][b], &ties[static_cast<size_t>(b)][a]})
+      t->score = std::max(t->score, l.score), t->strong = t->strong || l.strong;
+  }
+  links = {};
   std::vector<char> alive(k0, 1);
   int count = static_cast<int>(k0);
-  auto merge = [&](size_t a, size_t b) {  // b into a
-    seeds[a].insert(seeds[a].end(), seeds[b].begin(), seeds[b].end());
-    seeds[b].clear();
-    alive[b] = 0;
+  std::priority_queue<Candidate> queue;
+  bool strong_only = true;
+  auto offer = [&](int a, int b, const Tie& t) {
+    if (!strong_only || t.strong) queue.push({t.score, std::min(a, b), std::max(a, b)});
+  };
+  auto merge = [&](int a, int b) {  // b into a (a < b)
+    auto &sa = seeds[static_cast<size_t>(a)], &sb = seeds[static_cast<size_t>(b)];
+    sa.insert(sa.end(), sb.begin(), sb.end());
+    sb = {};
+    alive[static_cast<size_t>(b)] = 0;
     --count;
-    for (size_t c = 0; c < k0; ++c) {
-      if (!alive[c] || c == a) continue;
-      cs[a * k0 + c] = cs[c * k0 + a] = std::max(cs[a * k0 + c], cs[b * k0 + c]);
-      cstrong[a * k0 + c] = cstrong[c * k0 + a] = cstrong[a * k0 + c] || cstrong[b * k0 + c];
+    auto& ta = ties[static_cast<size_t>(a)];
+    ta.erase(b);
+    for (const auto& [c, t] : ties[static_cast<size_t>(b)]) {
+      if (c == a) continue;
+      auto& tc = ties[static_cast<size_t>(c)];
+      tc.erase(b);
+      Tie& x = ta[c];
+      x.score = std::max(x.score, t.score), x.strong = x.strong || t.strong;
+      tc[a] = x;
+      offer(a, c, x);
     }
+    ties[static_cast<size_t>(b)] = {};
   };
-  // The best pair (first in index order on ties), among strong links only if asked.
-  auto best_pair = [&](bool strong_only, size_t& ba, size_t& bb) {
-    bool found = false;
-    double best = 0;
-    for (size_t a = 0; a < k0; ++a) {
-      if (!alive[a]) continue;
-      for (size_t b = a + 1; b < k0; ++b) {
-        if (!alive[b] || (strong_only && !cstrong[a * k0 + b])) continue;
-        if (!found || cs[a * k0 + b] > best) found = true, best = cs[a * k0 + b], ba = a, bb = b;
+  // The queue's best candidate that is still current, or nullptr.
+  auto best = [&]() -> const Candidate* {
+    while (!queue.empty()) {
+      const Candidate& q = queue.top();
+      if (alive[static_cast<size_t>(q.a)] && alive[static_cast<size_t>(q.b)]) {
+        const auto& ta = ties[static_cast<size_t>(q.a)];
+        const auto it = ta.find(q.b);
+        if (it != ta.end() && it->second.score == q.score && (!strong_only || it->second.strong))
+          return &q;
       }
+      queue.pop();
     }
-    return found;
+    return nullptr;
   };
-  size_t a = 0, b = 0;
-  while (count > min_groups && best_pair(true, a, b)) merge(a, b);
-  while (count > max_groups && best_pair(false, a, b)) merge(a, b);
-  return normalised(std::move(seeds));
+  // Strong links first, while more than min_groups clusters remain.
+  for (size_t a = 0; a < k0; ++a)
+    for (const auto& [b, t] : ties[a])
+      if (static_cast<int>(a) < b) offer(static_cast<int>(a), b, t);
+  while (count > min_groups) {
+    const Candidate* q = best();
+    if (!q) break;
+    const Candidate c = *q;
+    queue.pop();
+    merge(c.a, c.b);
+  }
+  // Then any link, while more than max_groups remain, as long as a linked pair scores above
+  // every pair of far-apart paths (-box_gap / diag < -far / diag).
+  queue = {};
+  strong_only = false;
+  for (size_t a = 0; a < k0; ++a)
+    if (alive[a])
+      for (const auto& [b, t] : ties[a])
+        if (static_cast<int>(a) < b) offer(static_cast<int>(a), b, t);
+  const double far_score = -far / diag;
+  while (count > max_groups) {
+    const Candidate* q = best();
+    if (!q || !(q->score > far_score)) break;
+    const Candidate c = *q;
+    queue.pop();
+    merge(c.a, c.b);
+  }
+  if (count <= max_groups) return normalised(std::move(seeds));
+
+  // 3. Only far-apart clusters (or links scoring as low) are left: compare them densely, with
+  // the far pairs' scores from their boxes, as many as kDenseClusters.
+  std::vector<int> live;
+  for (size_t a = 0; a < k0; ++a)
+    if (alive[a]) live.push_back(static_cast<int>(a));
+  const size_t m = live.size();
+  std::vector<int> index_of(k0, -1);
+  for (size_t p = 0; p < m; ++p) index_of[static_cast<size_t>(live[p])] = static_cast<int>(p);
+  std::vector<std::vector<int>> clusters;
+  for (int a : live) clusters.push_back(std::move(seeds[static_cast<size_t>(a)]));
+  if (m > kDenseClusters) {
+    int cols = 1, rows = 1;
+    auto out = grid_groups(clusters, boxes, min_groups, max_groups, cols, rows);
+    if (note)
+      *note = std::to_string(m) + " far-apart clusters (above " + std::to_string(kDenseClusters) +
+              ") grouped by a " + std::to_string(cols) + "x" + std::to_string(rows) +
+              " grid of their box centres";
+    return out;
+  }
+  for (size_t p = 0; p < m; ++p)
+    for (int i : clusters[p]) slot_of[static_cast<size_t>(i)] = static_cast<int>(p);
+  std::vector<double> cs(m * m, -std::numeric_limits<double>::infinity());
+  for (size_t p = 0; p < m; ++p)
+    for (const auto& [b, t] : ties[static_cast<size_t>(live[p])])
+      cs[p * m + static_cast<size_t>(index_of[static_cast<size_t>(b)])] = t.score;
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 1; j < n; ++j) {
+      const auto p = static_cast<size_t>(slot_of[i]), q = static_cast<size_t>(slot_of[j]);
+      if (p == q) continue;
+      const double bg = box_gap(boxes[i], boxes[j]);
+      if (!(bg > far)) continue;  // a linked pair, already in cs
+      const double s = -bg / diag;
+      cs[p * m + q] = cs[q * m + p] = std::max(cs[p * m + q], s);
+    }
+  std::vector<char> on(m, 1);
+  while (count > max_groups) {
+    bool found = false;
+    double top = 0;
+    size_t ba = 0, bb = 0;
+    for (size_t a = 0; a < m; ++a) {
+      if (!on[a]) continue;
+      for (size_t b = a + 1; b < m; ++b)
+        if (on[b] && (!found || cs[a * m + b] > top))
+          found = true, top = cs[a * m + b], ba = a, bb = b;
+    }
+    if (!found) break;
+    clusters[ba].insert(clusters[ba].end(), clusters[bb].begin(), clusters[bb].end());
+    clusters[bb].clear();
+    on[bb] = 0;
+    --count;
+    for (size_t c = 0; c < m; ++c)
+      if (on[c] && c != ba)
+        cs[ba * m + c] = cs[c * m + ba] = std::max(cs[ba * m + c], cs[bb * m + c]);
+  }
+  return normalised(std::move(clusters));
 }
 
 }  // namespace svgm

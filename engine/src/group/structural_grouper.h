@@ -25,11 +25,16 @@
 //     Top-level groups that pass the check of rule 1 are kept as seeds of the clustering
 //     when they are too many (more than max_groups) but at least min_groups.
 //
+// Cost: only pairs whose boxes are within the far distance are related (a grid over the
+// boxes finds them); clusters keep sparse links and merge through a priority queue, so time and
+// memory follow the nearby pairs, not n^2.
+//
 // The result: groups of indices into Scene::paths, every path in exactly one group, each
 // group in paint order, groups ordered by their first path. Groups may interleave in paint
 // order (A below B below A'); write_grouped_svg splits such a group into runs.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "svgmotion/scene.h"
@@ -52,7 +57,13 @@ struct GroupingOptions {
   bool keep_existing_groups = true;
 };
 
-std::vector<std::vector<int>> group_paths(const Scene& scene, const GroupingOptions& options = {});
+// `note`, when given, receives one line when a cheaper rule than the above was used (empty
+// otherwise): above 2,000 paths the pairwise analysis is skipped and the parts are the
+// document's top-level groups when rule 1 would keep them (without its far-mix check), else
+// the top-level groups (or the paths) binned by a coarse grid of at most max_groups cells over
+// their box centres; the same grid merges the clusters left when over 1,024 remain far apart.
+std::vector<std::vector<int>> group_paths(const Scene& scene, const GroupingOptions& options = {},
+                                          std::string* note = nullptr);
 
 // The "no far-apart unconnected mix" check for one group. Two paths are linked with weight
 // equal to the gap between their shapes: 0 when they overlap, touch or one contains the
@@ -60,9 +71,9 @@ std::vector<std::vector<int>> group_paths(const Scene& scene, const GroupingOpti
 // widths. largest_gap is the bottleneck of the group's minimum spanning tree: the smallest
 // distance d such that links no longer than d connect the whole group (0 for one path).
 // components_at_touch counts the connected components with links no longer than the touch
-// distance. far_mix is largest_gap > far_fraction of the diagonal. Gaps are in canvas units;
-// pairs whose bounding boxes are farther apart than the far distance use the gap between the
-// boxes (a lower bound) instead of the outline distance.
+// distance. far_mix is largest_gap > far_fraction of the diagonal. Gaps are in canvas units.
+// Groups of more than 2,000 paths whose links within the far distance do not connect them
+// report largest_gap as that distance (a lower bound) instead of the exact bottleneck.
 struct GroupCheck {
   int components_at_touch = 1;
   double largest_gap = 0;
