@@ -59,6 +59,13 @@ std::string error_of(const std::optional<fs::path>& file, const std::vector<std:
 
 TEST_SUITE("pipeline") {
 
+TEST_CASE("config: a repeated key is an error naming its line") {
+  const TempFile f("stages:\n  fitter:\n    iterations: 5\n    iterations: 7\n");
+  CHECK(error_of(f.path) == f.path.string() + ":4: duplicate key 'stages.fitter.iterations'");
+  const TempFile top("seed: 1\nseed: 2\n");
+  CHECK(error_of(top.path) == top.path.string() + ":2: duplicate key 'seed'");
+}
+
 TEST_CASE("an alias bomb in a free-form options section is refused in one line naming the file") {
   const TempFile f("stages:\n  video:\n    options:\n" + bomb("      "));
   CHECK(error_of(f.path) == f.path.string() +

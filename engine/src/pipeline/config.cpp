@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <set>
 
 #include "opencl/kernel_sources.h"
 #include "svgmotion/error.h"
@@ -100,11 +101,13 @@ bool free_form(const std::string& path) {
 // Merges `user` into `into`, checking every key against `schema`.
 void merge(const YAML::Node& user, nlohmann::json& into, const nlohmann::json& schema,
            const std::string& path, const std::string& file, ValueBudget& budget) {
+  std::set<std::string> seen;  // YAML maps may not repeat a key; yaml-cpp would keep both
   for (const auto& kv : user) {
     const std::string key = kv.first.as<std::string>();
     const std::string full = path.empty() ? key : path + "." + key;
     // "file:line" for files; overrides come as "command line 'k=v'" with no line to point at.
     const auto line = file.rfind("command line", 0) == 0 ? std::string() : ":" + std::to_string(kv.first.Mark().line + 1);
+    if (!seen.insert(key).second) throw Error(file + line + ": duplicate key '" + full + "'");
     if (!schema.is_object() || !schema.contains(key)) {
       const std::string near = schema.is_object() ? suggestion(key, schema) : "";
       throw Error(file + line + ": unknown key '" + full + "'" +
