@@ -58,16 +58,14 @@ bool returns_to_start(const TargetFrames& t) {
   return diff(0, K - 1) <= 0.25 * step;
 }
 
-// What a user should hear about a target before minutes of fitting: frames stretched to
-// another aspect, frames smaller than the fit, keyframes showing no figure or only figure.
-std::vector<std::string> target_warnings(const TargetFrames& t, const std::string& name, const RenderSize& size);
-
 std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 0) {
   char buf[256];
   std::snprintf(buf, sizeof buf, f, a, b, c, d);
   return buf;
 }
 
+// What a user should hear about a target before minutes of fitting: frames stretched to
+// another aspect, frames smaller than the fit, keyframes showing no figure or only figure.
 std::vector<std::string> target_warnings(const TargetFrames& t, const std::string& name, const RenderSize& size) {
   std::vector<std::string> out;
   if (t.source_width > 0 && t.source_height > 0) {
@@ -187,7 +185,6 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   const int resumed_from = fitter.iteration();
   const bool tty = ::isatty(2) && !job.quiet && !job.progress;
   const auto t0 = std::chrono::steady_clock::now();
-  const int start = fitter.iteration();
   auto last_print = t0;
   LossTerms loss;
   bool stopped = false;
@@ -229,7 +226,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     if (it % kSnapshotEvery == 0 && std::isfinite(per) && per <= 2 * best) good = fitter.state();
     const auto now = std::chrono::steady_clock::now();
     const double elapsed = std::chrono::duration<double>(now - t0).count();
-    const double eta = elapsed / std::max(1, it - start) * (fo.iterations - it);
+    const double eta = elapsed / std::max(1, it - resumed_from) * (fo.iterations - it);
     const bool due = now - last_print > std::chrono::milliseconds(job.progress ? 500 : 200) || fitter.done();
     if (job.progress && due) {
       job.progress(static_cast<double>(it) / fo.iterations,
@@ -278,18 +275,14 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   // What is written: the keyframes (a closed loop's last one is its first) and smooth
   // in-betweens at the target's frames between them (inbetween.h).
   const size_t per_key = static_cast<size_t>(fitter.raster_plan().n_cp) * 2;
-  std::vector<double> key_points = points;
-  if (timing.close_loop)
-    std::copy(points.begin(), points.begin() + static_cast<ptrdiff_t>(per_key),
-              key_points.end() - static_cast<ptrdiff_t>(per_key));
   std::vector<double> frame_times;
   for (int i = 0; i < N; ++i) frame_times.push_back(static_cast<double>(i) / (N - 1));
-  const InBetween written = in_between(key_points, timing.key_times, per_key, frame_times,
+  const InBetween written = in_between(points, timing.key_times, per_key, frame_times,
                                        job.inbetweens, timing.close_loop);
   AnimationTiming wt = timing;
   wt.keyframes = static_cast<int>(written.times.size());
   wt.key_times = written.times;
-  wt.close_loop = false;  // applied above
+  wt.close_loop = false;  // in_between already wrote the first keyframe's shape last
   for (const auto& w : write_animation_svg(into, export_scene ? *export_scene : scene, fitter.raster_plan(), written.points,
                                            wt, anim, export_scene ? &map : nullptr)) {
     std::string line = w;

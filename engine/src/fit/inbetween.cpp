@@ -11,12 +11,17 @@ InBetween in_between(const std::vector<double>& points, const std::vector<double
                      bool closed) {
   const size_t K = times.size();
   InBetween out;
-  if (K < 2 || max_per_interval <= 0) {
+  if (K < 2) {
     out.times = times;
     out.points = points;
     return out;
   }
-  const double* P = points.data();
+  // A closed loop ends on its first keyframe's shape.
+  std::vector<double> keys = points;
+  if (closed)
+    std::copy(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(per_key),
+              keys.end() - static_cast<std::ptrdiff_t>(per_key));
+  const double* P = keys.data();
   // Tangent (per unit of time) at keyframe k: the slope at t_k of the parabola through the
   // keyframes k-1, k, k+1 (Bessel's tangent; Catmull-Rom's for even spacing), one-sided at
   // the ends of an open pass.
@@ -25,8 +30,8 @@ InBetween in_between(const std::vector<double>& points, const std::vector<double
     const size_t a = k > 0 ? k - 1 : K - 2, b = k + 1 < K ? k + 1 : 1;
     const double ha = k > 0 ? times[k] - times[a] : times[K - 1] - times[a];
     const double hb = k + 1 < K ? times[b] - times[k] : times[b] - times[0];
-    has_a = has_a && ha > 0 && a < K;
-    has_b = has_b && hb > 0 && b < K;
+    has_a = has_a && ha > 0;
+    has_b = has_b && hb > 0;
     const double p = P[k * per_key + i];
     const double da = has_a ? (p - P[a * per_key + i]) / ha : 0, db = has_b ? (P[b * per_key + i] - p) / hb : 0;
     if (has_a && has_b) return (hb * da + ha * db) / (ha + hb);
@@ -43,7 +48,8 @@ InBetween in_between(const std::vector<double>& points, const std::vector<double
       if (f > t0 + 1e-9 && f < t1 - 1e-9) inside.push_back(f);
     if (inside.empty()) continue;
     std::vector<double> pick;
-    const size_t n = std::min(inside.size(), static_cast<size_t>(max_per_interval));
+    const size_t n = std::min(inside.size(), static_cast<size_t>(std::max(0, max_per_interval)));
+    if (n == 0) continue;
     for (size_t j = 0; j < n; ++j) pick.push_back(inside[(2 * j + 1) * inside.size() / (2 * n)]);
     for (double f : pick) {
       const double s = (f - t0) / h, s2 = s * s, s3 = s2 * s;

@@ -25,7 +25,8 @@ struct InBetween {
 // `points`: K * per_key numbers (keyframe k's control points); `times`: K increasing key times
 // in [0, 1]; `frames`: the times of the target's frames (the candidates for in-betweens);
 // at most `max_per_interval` frames (evenly chosen) are added between two keyframes.
-// `closed`: the last keyframe equals the first and the motion goes on through it.
+// `closed`: the motion returns to its start and goes on through it; the last keyframe is
+// written as the first one's shape.
 InBetween in_between(const std::vector<double>& points, const std::vector<double>& times,
                      std::size_t per_key, const std::vector<double>& frames, int max_per_interval,
                      bool closed);

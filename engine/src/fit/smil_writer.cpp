@@ -35,33 +35,18 @@ std::string_view local_name(const char* name) {
   return colon ? std::string_view(colon + 1) : std::string_view(name);
 }
 
-// pugixml keeps whitespace inside elements but not between the nodes before and after the
-// root (declaration, comments, doctype): put the user's own bytes back there, so the file
-// differs from theirs only inside the root element.
-std::string with_original_prolog(const fs::path& source, const std::string& saved) {
-  std::ifstream f(source, std::ios::binary);
-  const std::string orig((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-  auto root_span = [](const std::string& text, size_t* begin, size_t* end) {
-    pugi::xml_document d;
-    if (!d.load_buffer(text.data(), text.size(), kKeepDocumentParse)) return false;
-    const pugi::xml_node r = d.document_element();
-    const ptrdiff_t at = r.offset_debug();
-    if (at < 1 || text[static_cast<size_t>(at) - 1] != '<') return false;
-    *begin = static_cast<size_t>(at) - 1;
-    // The root's end: after its closing tag (or "/>"), the last '>' before the epilogue's nodes.
-    size_t e = text.rfind("</");
-    const std::string name = r.name();
-    if (e != std::string::npos && text.compare(e + 2, name.size(), name) == 0) {
-      e = text.find('>', e);
-      if (e == std::string::npos) return false;
-      *end = e + 1;
-      return true;
-    }
-    return false;
-  };
-  size_t ob = 0, oe = 0, sb = 0, se = 0;
-  if (!root_span(orig, &ob, &oe) || !root_span(saved, &sb, &se)) return saved;
-  return orig.substr(0, ob) + saved.substr(sb, se - sb) + orig.substr(oe);
+// The output file: the user's own bytes before and after the root element (declaration,
+// comments, doctype and the whitespace between them, which pugixml does not keep at the
+// document level) around the root element as changed. `root_begin` is where the root's '<'
+// stands in `original`.
+std::string with_original_prolog(const std::string& original, size_t root_begin, pugi::xml_node root) {
+  const std::string close = std::string("</") + root.name();
+  size_t root_end = original.rfind(close);
+  if (root_end != std::string::npos) root_end = original.find('>', root_end);
+  std::ostringstream body;
+  root.print(body, "", pugi::format_raw, pugi::encoding_utf8);
+  if (root_end == std::string::npos || root_end < root_begin) return body.str();
+  return original.substr(0, root_begin) + body.str() + original.substr(root_end + 1);
 }
 
 constexpr const char* kShapeGeometry[] = {"x", "y", "width", "height", "rx", "ry", "cx",
@@ -116,9 +101,13 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
     throw Error("internal: key times do not match the keyframes");
   if (map && map->fitted_of.size() != scene.paths.size())
     throw Error("internal: export map does not match the document");
+  std::ifstream in(source, std::ios::binary);
+  const std::string original((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in && !in.eof()) throw Error(source.string() + ": cannot re-read for export");
   pugi::xml_document doc;
-  const pugi::xml_parse_result parsed = doc.load_file(source.c_str(), kKeepDocumentParse);
+  const pugi::xml_parse_result parsed = doc.load_buffer(original.data(), original.size(), kKeepDocumentParse);
   if (!parsed) throw Error(source.string() + ": cannot re-read for export: " + parsed.description());
+  const ptrdiff_t root_name_at = doc.document_element().offset_debug();
 
   // The pass as keyframe indices and times: 0..K-1 (mirror: and back to 0, at twice the
   // duration). A closed loop writes keyframe 0's shape in the last keyframe's place.
@@ -211,9 +200,8 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
 
   // Raw format with the parsed whitespace kept: the user's document comes back as they wrote
   // it, plus our <animate> children.
-  std::ostringstream text;
-  doc.save(text, "", pugi::format_raw | pugi::format_no_declaration, pugi::encoding_utf8);
-  write_file_atomic(out, with_original_prolog(source, text.str()));
+  write_file_atomic(out, with_original_prolog(original, static_cast<size_t>(std::max<ptrdiff_t>(1, root_name_at) - 1),
+                                              doc.document_element()));
   return warnings;
 }
 

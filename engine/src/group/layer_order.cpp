@@ -543,10 +543,10 @@ LayerResult run_layers(const fs::path& svg, const fs::path& target, const fs::pa
   // The order must also be one the user's own document can take by moving elements within
   // their parents (document_order.h); the fitter applies it there the same way.
   if (written && original) {
-    const Scene orig = read_svg_file(*original);
-    const Scene layered = read_svg_file(out_svg);
     std::ifstream f(*original, std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    const Scene orig = read_svg_string(text, original->string());
+    const Scene layered = read_svg_file(out_svg);
     const ReorderResult rr = reorder_document_text(text, original->string(), orig,
                                                    match_paths(layered, orig, out_svg.string()), nullptr);
     if (rr.refused) {
