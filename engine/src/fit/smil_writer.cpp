@@ -12,6 +12,7 @@
 
 
 #include "fit/document_order.h"
+#include "svg/svg_number.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -20,15 +21,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Shortest round-trip text of a coordinate rounded to 1/1000 unit: compact, and well below
-// a pixel at any sensible size.
-void append_number(std::string& s, double v) {
-  v = std::round(v * 1000.0) / 1000.0;
-  if (v == 0) v = 0;  // no "-0"
-  char buf[32];
-  auto [p, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  s.append(buf, ec == std::errc() ? p : buf);
-}
+// Coordinates rounded to 1/1000 unit: compact, and well below a pixel at any sensible size.
+void append_number(std::string& s, double v) { svg::append_rounded(s, v, 1000.0); }
 
 std::string_view local_name(const char* name) {
   const char* colon = std::strchr(name, ':');

@@ -14,6 +14,7 @@
 #include <cstring>
 #include <string>
 
+#include "svg/svg_number.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -22,15 +23,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Shortest round-trip text of v rounded to 1/scale (1e-5 by default): compact, and far below
-// a pixel.
-void append_number(std::string& s, double v, double scale = 1e5) {
-  if (std::fabs(v) < 1e9) v = std::round(v * scale) / scale;
-  if (v == 0) v = 0;  // no "-0"
-  char buf[32];
-  auto [p, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  s.append(buf, ec == std::errc() ? p : buf);
-}
+// v rounded to 1/scale (1e-5 by default): compact, and far below a pixel.
+void append_number(std::string& s, double v, double scale = 1e5) { svg::append_rounded(s, v, scale); }
 
 std::string number(double v) {
   std::string s;

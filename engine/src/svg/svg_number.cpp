@@ -87,4 +87,12 @@ bool spells_non_finite(std::string_view s) {
   return low.find("nan") != std::string::npos || low.find("inf") != std::string::npos;
 }
 
+void append_rounded(std::string& s, double v, double scale) {
+  if (std::fabs(v) < 1e9) v = std::round(v * scale) / scale;
+  if (v == 0) v = 0;  // no "-0"
+  char buf[32];
+  auto [p, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  s.append(buf, ec == std::errc() ? p : buf);
+}
+
 }  // namespace svgm::svg

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace svgm::svg {
@@ -29,5 +30,9 @@ std::optional<double> parse_number(std::string_view s, bool* out_of_range = null
 // True when the text spells nan or inf(inity) in any case: such numbers make a document
 // malformed rather than merely invalid.
 bool spells_non_finite(std::string_view s);
+
+// Appends the shortest text that reads back as v rounded to 1/scale (no "-0"); values of
+// 1e9 and beyond are written unrounded. For writing SVG coordinates compactly.
+void append_rounded(std::string& s, double v, double scale);
 
 }  // namespace svgm::svg
