@@ -22,7 +22,7 @@ extern "C" void on_sigint(int) { g_interrupted = 1; }
 int cmd_fit(const std::vector<std::string>& argv) {
   const Args a = parse_args("fit", argv,
                             {"--target", "-o", "--output", "--iterations", "--keyframes", "--size",
-                             "--palette", "--device", "--mask-threshold", "--loop", "--deform"},
+                             "--palette", "--device", "--mask-threshold", "--loop", "--deform", "--refine-size"},
                             {"--resume", "--no-track", "--quiet", "--no-gate"});
   if (a.positional.size() != 1)
     throw Error("fit: expected one input SVG (svgmotion fit IN.svg --target VIDEO -o OUT_DIR)");
@@ -38,6 +38,8 @@ int cmd_fit(const std::vector<std::string>& argv) {
   job.options.track = !a.has("--no-track");
   job.keyframes = a.get_int("--keyframes", 15, 2, 1000);
   job.width = a.get_int("--size", 256, 32, 4096);
+  if (const auto r = a.get("--refine-size"); r && *r != "auto")
+    job.refine_width = a.get_int("--refine-size", 0, 0, 4096);
   job.loop = parse_loop_mode(a.get("--loop").value_or("loop"), "--loop");
   const std::string deform = a.get("--deform").value_or("field");
   if (deform == "free") job.options.use_free_offsets();

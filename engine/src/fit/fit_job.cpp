@@ -4,9 +4,12 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -141,8 +144,19 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   if (::access(out.c_str(), W_OK | X_OK) != 0) throw Error(out.string() + ": cannot write there (permission denied)");
   for (const char* f : {"animation.svg", "animation.failed.svg", "preview.mp4", "fit.json", "checkpoint.bin"})
     output_target(out / f);
+  // Coarse-to-fine: which width the last share of the iterations refines at, if any.
+  int refine_w = job.refine_width;
+  if (refine_w < 0)
+    refine_w = target.source_width * 2 >= size.width * 3 ? std::min(2 * size.width, target.source_width) : 0;
+  if (refine_w > 0 && refine_w <= size.width) refine_w = 0;
+  const int refine_iters =
+      refine_w > 0 ? std::clamp(static_cast<int>(std::lround(job.refine_share * fo.iterations)), 0, fo.iterations - 1) : 0;
+  if (refine_iters == 0) refine_w = 0;
+  FitOptions coarse_options = fo;
+  coarse_options.iterations = fo.iterations - refine_iters;
+  const int total_iters = fo.iterations;
   ClRuntime rt(job.device);
-  Fitter fitter(rt, fit_scene, target, fo);
+  Fitter fitter(rt, fit_scene, target, coarse_options);
   if (job.tracks) {
     auto flows = read_tracks(*job.tracks);
     if (flows.size() == static_cast<size_t>(target.keyframes)) fitter.set_flows(std::move(flows));
@@ -163,7 +177,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                           std::to_string(keyframes) + "|" + std::to_string(size.width) + "x" +
                           std::to_string(size.height) + "|" +
                           (fo.track ? "track" : "no-track") + "|" + fmt("%.6g", job.mask_threshold) + "|" +
-                          (job.palette ? stamp(*job.palette) : "-") + "|" + (job.tracks ? stamp(*job.tracks) : "-");
+                          (job.palette ? stamp(*job.palette) : "-") + "|" + (job.tracks ? stamp(*job.tracks) : "-") +
+                          "|refine " + std::to_string(refine_w) + "/" + std::to_string(refine_iters);
   if (job.resume) {
     if (!fs::exists(ckpt)) throw Error(ckpt.string() + ": no checkpoint to resume from");
     fitter.restore(load_checkpoint(ckpt, key));
@@ -172,9 +187,9 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     // An interrupted fit of exactly this problem goes on; anything else starts afresh.
     try {
       FitState st = load_checkpoint(ckpt, key);
-      if (st.iteration < fo.iterations) {
+      if (st.iteration < coarse_options.iterations) {
         fitter.restore(st);
-        if (job.progress) job.progress(static_cast<double>(st.iteration) / fo.iterations,
+        if (job.progress) job.progress(static_cast<double>(st.iteration) / total_iters,
                                        "resuming at iteration " + std::to_string(st.iteration));
         else if (!job.quiet) std::fprintf(stderr, "svgmotion: resuming at iteration %d\n", st.iteration);
       }
@@ -198,12 +213,19 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   int best_active = 0, rollbacks = 0;
   FitState good = fitter.state();
   std::vector<std::string> rollback_notes;
-  while (!fitter.done() && !(stopped = interrupted())) {
-    loss = fitter.step();
-    const int it = fitter.iteration();
-    const float per = loss.total() / std::max(1, fitter.active_keyframes());
-    if (fitter.active_keyframes() != best_active) {
-      best_active = fitter.active_keyframes();
+  // One stage of iterations on fitter `f` (the coarse fit, then the refinement), with the
+  // divergence watch, progress over the whole budget and, for the coarse stage, checkpoints.
+  auto run_stage = [&](Fitter& f, int done_before, bool checkpoints) {
+  good = f.state();
+  best = std::numeric_limits<float>::infinity();
+  best_active = 0;
+  bad_streak = 0;
+  while (!f.done() && !(stopped = interrupted())) {
+    loss = f.step();
+    const int it = done_before + f.iteration();
+    const float per = loss.total() / std::max(1, f.active_keyframes());
+    if (f.active_keyframes() != best_active) {
+      best_active = f.active_keyframes();
       best = std::numeric_limits<float>::infinity();
     }
     // Adam's first steps after an activation may overshoot for a few iterations and recover
@@ -213,48 +235,66 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     if (diverged && rollbacks < kMaxRollbacks) {
       ++rollbacks;
       rollback_notes.push_back(fmt("iteration %.0f: loss %.4g per keyframe (best %.4g); rolled back to iteration %.0f at half the step size",
-                                   it, per, best, good.iteration));
+                                   it, per, best, done_before + good.iteration));
       std::fprintf(stderr, "svgmotion: warning: the fit diverged at %s\n", rollback_notes.back().c_str());
-      fitter.restore(good);
-      fitter.scale_learning_rates(0.5f);
-      best_active = fitter.active_keyframes();
+      f.restore(good);
+      f.scale_learning_rates(0.5f);
+      best_active = f.active_keyframes();
       best = std::numeric_limits<float>::infinity();
       bad_streak = 0;
       continue;
     }
     if (std::isfinite(per) && bad_streak == 0) best = std::min(best, per);
-    if (it % kSnapshotEvery == 0 && std::isfinite(per) && per <= 2 * best) good = fitter.state();
+    if (it % kSnapshotEvery == 0 && std::isfinite(per) && per <= 2 * best) good = f.state();
     const auto now = std::chrono::steady_clock::now();
     const double elapsed = std::chrono::duration<double>(now - t0).count();
-    const double eta = elapsed / std::max(1, it - resumed_from) * (fo.iterations - it);
-    const bool due = now - last_print > std::chrono::milliseconds(job.progress ? 500 : 200) || fitter.done();
+    const double eta = elapsed / std::max(1, it - resumed_from) * (total_iters - it);
+    const bool due = now - last_print > std::chrono::milliseconds(job.progress ? 500 : 200) || f.done();
     if (job.progress && due) {
-      job.progress(static_cast<double>(it) / fo.iterations,
-                   fmt("iteration %.0f/%.0f, loss %.5f, keyframes %.0f", it, fo.iterations, loss.total(),
-                       fitter.active_keyframes()) + "/" + std::to_string(fitter.keyframes()) +
+      job.progress(static_cast<double>(it) / total_iters,
+                   fmt("iteration %.0f/%.0f, loss %.5f, keyframes %.0f", it, total_iters, loss.total(),
+                       f.active_keyframes()) + "/" + std::to_string(f.keyframes()) +
                        fmt(", ETA %.0f s", eta));
       last_print = now;
     } else if (tty && due) {
       std::fprintf(stderr, "\rfit: iteration %d/%d  loss %.5f  keyframes %d/%d  %.0fs, ETA %.0fs   ",
-                   it, fo.iterations, loss.total(), fitter.active_keyframes(), fitter.keyframes(),
+                   it, total_iters, loss.total(), f.active_keyframes(), f.keyframes(),
                    elapsed, eta);
       last_print = now;
-    } else if (!tty && !job.quiet && !job.progress && (it % 100 == 0 || fitter.done())) {
+    } else if (!tty && !job.quiet && !job.progress && (it % 100 == 0 || f.done())) {
       std::fprintf(stderr, "fit: iteration %d/%d loss %.5f keyframes %d/%d elapsed %.1fs eta %.0fs\n",
-                   it, fo.iterations, loss.total(), fitter.active_keyframes(), fitter.keyframes(),
+                   it, total_iters, loss.total(), f.active_keyframes(), f.keyframes(),
                    elapsed, eta);
     }
-    if (it % kCheckpointEvery == 0) save_checkpoint(ckpt, key, fitter.state());
+    if (checkpoints && it % kCheckpointEvery == 0) save_checkpoint(ckpt, key, f.state());
   }
+  };
+  run_stage(fitter, 0, true);
+  save_checkpoint(ckpt, key, fitter.state());
+  // The refinement: every keyframe at the finer width, from the coarse result (not
+  // checkpointed: a resumed fit redoes it from the coarse stage's last checkpoint).
+  std::optional<TargetFrames> fine_target;
+  std::unique_ptr<Fitter> fine;
+  if (refine_w > 0 && !stopped) {
+    const RenderSize fine_size = render_size(scene, refine_w);
+    fine_target = load_target(*target_path, fine_size.width, fine_size.height, to);
+    FitOptions fine_options = fo;
+    fine_options.iterations = refine_iters;
+    fine = std::make_unique<Fitter>(rt, fit_scene, *fine_target, fine_options);
+    fine->adopt_coarse(fitter, static_cast<double>(fine_size.width) / size.width);
+    run_stage(*fine, coarse_options.iterations, false);
+  }
+  Fitter& final_fit = fine ? *fine : fitter;
+  const TargetFrames& final_target = fine ? *fine_target : target;
+  const RenderSize final_size = fine ? render_size(scene, refine_w) : size;
   if (tty) std::fputc('\n', stderr);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  save_checkpoint(ckpt, key, fitter.state());
 
   // Outputs: the animation in the original colours, the preview, a small report.
-  const auto points = fitter.keyframe_points_canvas();
-  const auto renders = fitter.render_keyframes();
+  const auto points = final_fit.keyframe_points_canvas();
+  const auto renders = final_fit.render_keyframes();
   AnimationTiming timing;
-  timing.keyframes = fitter.keyframes();
+  timing.keyframes = final_fit.keyframes();
   const int N = std::max(2, target.source_frames);
   timing.duration_s = (N - 1) / std::max(1e-6, target.fps);
   for (int k = 0; k < timing.keyframes; ++k)
@@ -266,15 +306,15 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
 
   // The gate judges a finished fit; an interrupted one is written as it stands (resumable).
   const GateOptions gate_options;
-  const GateVerdict verdict = judge_fit(target, renders, points, fitter.raster_plan(), fit_scene,
-                                        size.view, gate_options);
+  const GateVerdict verdict = judge_fit(final_target, renders, points, final_fit.raster_plan(), fit_scene,
+                                        final_size.view, gate_options);
   const bool rejected = !stopped && !verdict.passed;
   const fs::path anim = out / (rejected && job.gate ? "animation.failed.svg" : "animation.svg");
   if (rejected && job.gate) fs::remove(out / "animation.svg", ec);  // never leave a stale success
   else fs::remove(out / "animation.failed.svg", ec);
   // What is written: the keyframes (a closed loop's last one is its first) and smooth
   // in-betweens at the target's frames between them (inbetween.h).
-  const size_t per_key = static_cast<size_t>(fitter.raster_plan().n_cp) * 2;
+  const size_t per_key = static_cast<size_t>(final_fit.raster_plan().n_cp) * 2;
   std::vector<double> frame_times;
   for (int i = 0; i < N; ++i) frame_times.push_back(static_cast<double>(i) / (N - 1));
   const InBetween written = in_between(points, timing.key_times, per_key, frame_times,
@@ -283,18 +323,18 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   wt.keyframes = static_cast<int>(written.times.size());
   wt.key_times = written.times;
   wt.close_loop = false;  // in_between already wrote the first keyframe's shape last
-  for (const auto& w : write_animation_svg(into, export_scene ? *export_scene : scene, fitter.raster_plan(), written.points,
+  for (const auto& w : write_animation_svg(into, export_scene ? *export_scene : scene, final_fit.raster_plan(), written.points,
                                            wt, anim, export_scene ? &map : nullptr)) {
     std::string line = w;
     if (!job.export_name.empty() && line.rfind(into.string(), 0) == 0)
       line = job.export_name + line.substr(into.string().size());
     std::fprintf(stderr, "svgmotion: warning: %s\n", line.c_str());
   }
-  const int active = fitter.active_keyframes();
-  const int W = size.width, H = size.height;
+  const int active = final_fit.active_keyframes();
+  const int W = final_size.width, H = final_size.height;
   write_preview_video(out / "preview.mp4", active, 2,
                       [&](int k, int panel) {
-                        return panel == 0 ? rgba8_image(&target.raw[static_cast<size_t>(k) * W * H * 4], W, H)
+                        return panel == 0 ? rgba8_image(&final_target.raw[static_cast<size_t>(k) * W * H * 4], W, H)
                                           : render_panel(renders, k, W, H);
                       },
                       std::max(1.0, (timing.keyframes - 1) / timing.duration_s));
@@ -303,8 +343,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                            {"svg", input.string()},
                            {"target", *target_path},
                            {"animation", anim.filename().string()},
-                           {"iterations", fitter.iteration()},
-                           {"keyframes", fitter.keyframes()},
+                           {"iterations", (fine ? coarse_options.iterations : 0) + final_fit.iteration()},
+                           {"keyframes", final_fit.keyframes()},
                            {"key_times", timing.key_times},
                            {"duration_s", timing.duration_s},
                            {"loop", loop_mode_name(timing.loop)},
@@ -314,16 +354,17 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                            {"seconds", seconds},
                            {"loss", {{"total", loss.total()}, {"image", loss.image}, {"smoothness", loss.smooth},
                                      {"g1", loss.g1}, {"containment", loss.contain}}},
-                           {"keyframe_image_loss", fitter.keyframe_losses()},
+                           {"keyframe_image_loss", final_fit.keyframe_losses()},
                            {"resumed_from", resumed_from},
                            {"rollbacks", rollback_notes},
                            {"gate", gate_json(verdict, gate_options)},
                            {"device", rt.info().name}};
   if (!map.order.empty()) report["paint_order_applied"] = true;
+  if (fine) report["refined"] = {{"size", {W, H}}, {"iterations", final_fit.iteration()}, {"from_size", {size.width, size.height}}};
   write_file_atomic(out / "fit.json", report.dump(2) + "\n");
   if (stopped) {
     std::fprintf(stderr, "svgmotion: interrupted at iteration %d; wrote %s (continue with --resume)\n",
-                 fitter.iteration(), anim.c_str());
+                 (fine ? coarse_options.iterations : 0) + final_fit.iteration(), anim.c_str());
     return 130;
   }
   if (rejected) {
@@ -336,7 +377,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   }
   if (!job.quiet)
     std::fprintf(stderr, "svgmotion: fitted %d keyframes in %.1fs; wrote %s, preview.mp4, fit.json\n",
-                 fitter.keyframes(), seconds, anim.c_str());
+                 final_fit.keyframes(), seconds, anim.c_str());
   return 0;
 }
 

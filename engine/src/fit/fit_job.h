@@ -46,6 +46,13 @@ struct FitJob {
   FitOptions options;
   int keyframes = 15;
   int width = 256;
+  // Coarse-to-fine: the last `refine_share` of the iterations refine every keyframe at this
+  // width, with the target read again at that size (fitting at 256 px leaves edges a fraction
+  // of a 256-px pixel off, which shows at display size). -1: automatic (twice the fitting
+  // width, or the video's own width if smaller, when the video is at least 1.5x the fitting
+  // width); 0: off.
+  int refine_width = -1;
+  double refine_share = 0.25;
   double mask_threshold = 0.97;
   bool resume = false;
   // Resume from out/checkpoint.bin when it holds an unfinished fit of exactly this problem

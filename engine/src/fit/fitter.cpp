@@ -155,9 +155,10 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     set_args(k_adam_p_, params_, grad_params_, m_params_, v_params_, steps_buf_, G_ * kMotionParams,
              1, opt_.lr_homography, opt_.beta1, opt_.beta2, opt_.eps,
              static_cast<int>(K * G_ * kMotionParams));
-    set_args(k_adam_o_, offsets_, grad_offsets_, m_offsets_, v_offsets_, steps_buf_, ncp * 2, 0,
+    const int first_free = opt_.pin_rest_keyframe ? 1 : 0;
+    set_args(k_adam_o_, offsets_, grad_offsets_, m_offsets_, v_offsets_, steps_buf_, ncp * 2, first_free,
              opt_.lr_offsets, opt_.beta1, opt_.beta2, opt_.eps, static_cast<int>(K * n_cp * 2));
-    set_args(k_adam_f_, field_, grad_field_, m_field_, v_field_, steps_buf_, std::max(nn * 2, 1), 0,
+    set_args(k_adam_f_, field_, grad_field_, m_field_, v_field_, steps_buf_, std::max(nn * 2, 1), first_free,
              opt_.lr_field, opt_.beta1, opt_.beta2, opt_.eps, static_cast<int>(K * n_nodes * 2));
   } catch (const cl::Error& e) {
     throw Error(std::string("OpenCL setup of the fitter failed on ") + rt_.info().name + ": " +
@@ -172,6 +173,30 @@ void Fitter::scale_learning_rates(float s) {
   k_adam_p_.setArg(7, opt_.lr_homography * lr_scale_);  // kernels/adam.cl: argument 7 is lr
   k_adam_o_.setArg(7, opt_.lr_offsets * lr_scale_);
   k_adam_f_.setArg(7, opt_.lr_field * lr_scale_);
+}
+
+void Fitter::adopt_coarse(Fitter& coarse, double scale) {
+  if (coarse.K_ != K_ || coarse.G_ != G_ || coarse.plan_.n_cp != plan_.n_cp)
+    throw Error("internal: the coarse fit has another shape than the fine one");
+  auto& cq = coarse.rt_.queue();
+  const size_t np = static_cast<size_t>(K_) * G_ * kMotionParams, no = static_cast<size_t>(K_) * plan_.n_cp * 2;
+  std::vector<float> params(np), offsets(no);
+  coarse.enqueue_motion(K_);  // total_offsets_ = free offsets + field, for every keyframe
+  cq.enqueueReadBuffer(coarse.params_, CL_TRUE, 0, np * sizeof(float), params.data());
+  cq.enqueueReadBuffer(coarse.total_offsets_, CL_TRUE, 0, no * sizeof(float), offsets.data());
+  for (float& o : offsets) o = static_cast<float>(o * scale);
+  auto& q = rt_.queue();
+  q.enqueueWriteBuffer(params_, CL_TRUE, 0, np * sizeof(float), params.data());
+  q.enqueueWriteBuffer(offsets_, CL_TRUE, 0, no * sizeof(float), offsets.data());
+  for (cl::Buffer* b : {&m_params_, &v_params_}) q.enqueueFillBuffer(*b, 0.f, 0, np * sizeof(float));
+  for (cl::Buffer* b : {&m_offsets_, &v_offsets_}) q.enqueueFillBuffer(*b, 0.f, 0, no * sizeof(float));
+  const size_t nf = static_cast<size_t>(K_) * fplan_.n_nodes * 2;
+  if (nf)
+    for (cl::Buffer* b : {&field_, &m_field_, &v_field_}) q.enqueueFillBuffer(*b, 0.f, 0, nf * sizeof(float));
+  q.finish();
+  iteration_ = 0;
+  active_ = K_;
+  steps_.assign(K_, 0);
 }
 
 int Fitter::activation_iteration(int k) const {

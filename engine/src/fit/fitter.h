@@ -54,6 +54,12 @@ struct FitOptions {
   double attach_small_frac = 0;
   float w_cohesion = 0;            // weight of cohesion (kernels/regularise.cl); 0: off
   double cohesion_radius_frac = 0.015;  // cohesion pairs: rest distance below this x width
+  // Keyframe 0 is the rest pose: an image-to-video model starts from the input image, so the
+  // first frame shows the drawing as it is. Its homographies are always the identity; with this
+  // its offsets and field stay zero too, instead of chasing the codec's noise in that frame
+  // (parrot, non-rigid target, H.264 at 37 dB: keyframe 0 drifted to 40.4 dB at 1024 px
+  // where the SVG itself scores 59.5).
+  bool pin_rest_keyframe = true;
 
   // The paper's deformation: free per-point offsets (lr 0.1), no displacement field.
   void use_free_offsets() {
@@ -110,6 +116,12 @@ class Fitter {
   // Multiplies both Adam learning rates by `s` from the next iteration on (the result gate's
   // rollback retries a diverged stretch with smaller steps).
   void scale_learning_rates(float s);
+
+  // Canvas-independent start for a finer fit (coarse-to-fine, fit_job.h): the coarse fitter's
+  // homographies, and as fixed base offsets its total per-point offsets (free + field) scaled
+  // by `scale` (fine width / coarse width); this fitter's own field starts at zero on top of
+  // them. Every keyframe becomes active with fresh Adam moments, at iteration 0.
+  void adopt_coarse(Fitter& coarse, double scale);
 
   // Keyframe-to-keyframe flow from the tracker stage (flow_tracks.h): flows[k] moves keyframe
   // k-1's points to k for the warm start, instead of tracking the fit's own render.

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Fit fidelity at display size on non-rigid targets (needs ../shared and librsvg through gi; not
+# part of the test suite). For each SVG, tests/bench/nonrigid_target.py makes a known motion
+# (moving-least-squares rigid warp of a librsvg render, a 512 px H.264 video and clean frames at
+# 256 and 1024 px), `svgmotion fit` fits it, and ../shared/tools/fitcheck.py judges every keyframe
+# at 1024 px (PSNR, IoU, boundary F) and every frame between keyframes at 256 px.
+#   usage: [FIT_ARGS="..."] fit_nonrigid.sh [-b BIN] [-w WORKDIR] [-d DEFECT] [-s VIDEO_SIZE] SVG...
+# DEFECT: one of nonrigid_target.py's --degrade names (the video gets it, the judge sees clean).
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+bin=$here/../../build/frontends/svgmotion
+work=/tmp/svgm_nonrigid
+defect=""
+vsize=512
+while getopts "b:w:d:s:" o; do
+  case $o in b) bin=$OPTARG ;; w) work=$OPTARG ;; d) defect=$OPTARG ;; s) vsize=$OPTARG ;; *) exit 2 ;; esac
+done
+shift $((OPTIND - 1))
+svgs=()
+for a in "$@"; do svgs+=("$a"); done
+shared=$here/../../../shared
+py=/usr/bin/python3
+mkdir -p "$work"
+printf '%-14s %7s %7s %7s %7s %7s %8s %7s %7s\n' svg psnr hires min_hi bf min_bf between seconds peak_mb
+for svg in "${svgs[@]}"; do
+  name=$(basename "$svg" .svg)
+  dir=$work/$name${defect:+_$defect}
+  [[ -f $dir/target.mp4 ]] || $py "$here/nonrigid_target.py" "$svg" "$dir" --size "$vsize" --hires 1024 \
+    ${defect:+--degrade $defect} >/dev/null 2>&1
+  # The judge compares with clean frames at 256 px (the fit's size) and 1024 px.
+  if [[ ! -d $dir/clean256 ]]; then
+    $py - "$dir" <<'PY'
+import sys, os, cv2
+d = sys.argv[1]
+os.makedirs(d + "/clean256", exist_ok=True)
+for f in sorted(os.listdir(d + "/clean_hires")):
+    im = cv2.imread(d + "/clean_hires/" + f)
+    cv2.imwrite(d + "/clean256/" + f, cv2.resize(im, (256, round(256 * im.shape[0] / im.shape[1])), interpolation=cv2.INTER_AREA))
+PY
+    mv "$dir/clean" "$dir/clean_video" && mv "$dir/clean256" "$dir/clean"
+  fi
+  rm -rf "$dir/out"
+  /usr/bin/time -f '%M' -o "$dir/rss" "$bin" fit "$svg" --target "$dir/target.mp4" -o "$dir/out" --quiet ${FIT_ARGS:-} 2>"$dir/fit.log"
+  $py "$shared/tools/fitcheck.py" eval "$svg" "$dir" "$dir/out/animation.svg" --hires --between > "$dir/eval.txt"
+  line=$(tail -1 "$dir/eval.txt")
+  secs=$(grep -o '"seconds": [0-9.]*' "$dir/out/fit.json" | awk '{print $2}')
+  rss=$(( $(cat "$dir/rss") / 1024 ))
+  eval "$(echo "$line" | tr ' ' '\n' | grep '=')"
+  min_hi=$(grep '^keyframe' "$dir/eval.txt" | grep -o 'hires_psnr=[0-9.]*' | cut -d= -f2 | sort -n | head -1)
+  printf '%-14s %7.2f %7.2f %7.2f %7.4f %7.4f %8.2f %7.1f %7s\n' "$name" "$psnr" "$hires_psnr" "$min_hi" "$hires_bf" "$min_hires_bf" "$between_psnr" "$secs" "$rss"
+done
