@@ -11,7 +11,7 @@ case "$mode" in example|test) ;; *) echo "usage: bash .ci/setup.sh example|test"
 packages=(
   cmake ninja-build g++ pkg-config ccache
   ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd
-  libclblast-dev libeigen3-dev libpugixml-dev libopencv-dev libspdlog-dev libyaml-cpp-dev
+  libeigen3-dev libpugixml-dev libopencv-dev libyaml-cpp-dev
   libpng-dev doctest-dev nlohmann-json3-dev libcurl4-openssl-dev
 )
 missing=()

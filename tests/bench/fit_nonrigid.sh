@@ -41,11 +41,14 @@ PY
   fi
   rm -rf "$dir/out"
   /usr/bin/time -f '%M' -o "$dir/rss" "$bin" fit "$svg" --target "$dir/target.mp4" -o "$dir/out" --quiet ${FIT_ARGS:-} 2>"$dir/fit.log"
-  $py "$shared/tools/fitcheck.py" eval "$svg" "$dir" "$dir/out/animation.svg" --hires --between > "$dir/eval.txt"
+  anim=$dir/out/animation.svg status=""
+  [[ -f $anim ]] || { anim=$dir/out/animation.failed.svg; status=" REJECTED"; }
+  [[ -f $anim ]] || { echo "$name: the fit wrote no animation (see $dir/fit.log)"; continue; }
+  $py "$shared/tools/fitcheck.py" eval "$svg" "$dir" "$anim" --hires --between > "$dir/eval.txt"
   line=$(tail -1 "$dir/eval.txt")
   secs=$(grep -o '"seconds": [0-9.]*' "$dir/out/fit.json" | awk '{print $2}')
   rss=$(( $(cat "$dir/rss") / 1024 ))
   eval "$(echo "$line" | tr ' ' '\n' | grep '=')"
   min_hi=$(grep '^keyframe' "$dir/eval.txt" | grep -o 'hires_psnr=[0-9.]*' | cut -d= -f2 | sort -n | head -1)
-  printf '%-14s %7.2f %7.2f %7.2f %7.4f %7.4f %8.2f %7.1f %7s\n' "$name" "$psnr" "$hires_psnr" "$min_hi" "$hires_bf" "$min_hires_bf" "$between_psnr" "$secs" "$rss"
+  printf '%-14s %7.2f %7.2f %7.2f %7.4f %7.4f %8.2f %7.1f %s\n' "$name" "$psnr" "$hires_psnr" "$min_hi" "$hires_bf" "$min_hires_bf" "$between_psnr" "$secs" "$rss$status"
 done

@@ -27,6 +27,14 @@ struct TargetOptions {
   // Dilation radius of the foreground mask, in pixels: a Euclidean disc of this radius (offsets
   // with dx² + dy² <= r²), so 1 is the 3x3 cross; 0 = no dilation.
   int dilate_px = 1;
+  // The drawing's colours (straight RGB in [0, 1]; white is implied). When given, every
+  // keyframe is colour-corrected against them before the mask is found (an affine colour map
+  // fitted to the frame's flat regions, then flat pixels snapped to their colour;
+  // fit/colour_correction.h): off-white backgrounds, tints, shading and codec noise.
+  std::vector<std::array<float, 3>> palette;
+  // Held frames (a clip at a lower frame rate than its container repeats each frame): a keyframe
+  // that falls on a repeat is timed at the first frame of its run, where that pose was made.
+  bool retime_held_frames = true;
 };
 
 struct TargetFrames {
@@ -34,7 +42,11 @@ struct TargetFrames {
   int source_frames = 0;          // frames in the video / folder
   int source_width = 0, source_height = 0;  // the frames' own size, before resizing
   double fps = 24;                // from the video (folders, or videos without a rate: 24)
-  std::vector<int> source_index;  // source frame of each keyframe: round(k * (N-1) / (K-1))
+  // Source frame of each keyframe: round(k * (N-1) / (K-1)), or the first frame of the run of
+  // identical frames it falls in (TargetOptions::retime_held_frames).
+  std::vector<int> source_index;
+  int held_frames = 0;            // frames that repeat the one before (video sources)
+  int colour_corrected = 0;       // keyframes whose colours were corrected
   // K*H*W*4, row-major per keyframe: the cleaned target, straight RGB in [0,1], A = 1; pixels
   // outside the dilated mask are exactly white (1, 1, 1).
   std::vector<float> rgba;

@@ -116,6 +116,14 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   TargetOptions to;
   to.keyframes = keyframes;
   to.white_threshold = job.mask_threshold;
+  // The colours the target should show: the fitted scene's opaque fills and strokes.
+  if (job.colour_correction)
+    for (const Path& p : fit_scene.paths) {
+      if (p.opacity < 0.99f) continue;
+      if (p.has_fill && p.fill.a >= 0.99f) to.palette.push_back({p.fill.r, p.fill.g, p.fill.b});
+      if (p.has_stroke && p.stroke.color.a >= 0.99f)
+        to.palette.push_back({p.stroke.color.r, p.stroke.color.g, p.stroke.color.b});
+    }
   if (!(to.white_threshold > 0 && to.white_threshold <= 1))
     throw Error("the mask threshold must be in (0, 1]");
   // The document written into, and how the fitted paths map onto it, checked before fitting.
@@ -360,6 +368,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                            {"gate", gate_json(verdict, gate_options)},
                            {"device", rt.info().name}};
   if (!map.order.empty()) report["paint_order_applied"] = true;
+  report["target_frames"] = {{"held", target.held_frames}, {"colour_corrected_keyframes", final_target.colour_corrected}};
   if (fine) report["refined"] = {{"size", {W, H}}, {"iterations", final_fit.iteration()}, {"from_size", {size.width, size.height}}};
   write_file_atomic(out / "fit.json", report.dump(2) + "\n");
   if (stopped) {

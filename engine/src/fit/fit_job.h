@@ -53,6 +53,8 @@ struct FitJob {
   // width); 0: off.
   int refine_width = -1;
   double refine_share = 0.25;
+  // Colour-correct every keyframe against the drawing's colours (target_video.h).
+  bool colour_correction = true;
   double mask_threshold = 0.97;
   bool resume = false;
   // Resume from out/checkpoint.bin when it holds an unfinished fit of exactly this problem

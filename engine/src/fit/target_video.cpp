@@ -5,6 +5,8 @@
 // Everything OpenCV stays in this file; the public header only speaks std:: types.
 #include "svgmotion/target_video.h"
 
+#include "fit/colour_correction.h"
+
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -277,6 +279,26 @@ std::array<float, 3> border_median_rgb(const float* f, int W, int H) {
 
 namespace {
 
+// Held frames: a 64-pixel-wide grey thumbnail of each frame, and "the same frame" as a mean
+// absolute difference below a level a codec's re-encoding of a repeat stays under (H.264
+// repeats differ by well under 1/255 on average; the slowest real motion by far more).
+constexpr double kHeldFrameMeanDiff = 0.6;  // 8-bit levels
+
+cv::Mat held_frame_thumbnail(const cv::Mat& frame) {
+  cv::Mat grey, small;
+  if (frame.channels() >= 3) cv::cvtColor(frame, grey, frame.channels() == 4 ? cv::COLOR_BGRA2GRAY : cv::COLOR_BGR2GRAY);
+  else grey = frame;
+  const int w = 64, h = std::max(1, static_cast<int>(std::lround(64.0 * frame.rows / std::max(1, frame.cols))));
+  cv::resize(grey, small, cv::Size(w, h), 0, 0, cv::INTER_AREA);
+  cv::Mat f;
+  small.convertTo(f, CV_32F, grey.depth() == CV_16U ? 1.0 / 257 : 1.0);
+  return f;
+}
+
+bool same_frame(const cv::Mat& a, const cv::Mat& b) {
+  return a.size() == b.size() && cv::mean(cv::abs(a - b))[0] < kHeldFrameMeanDiff;
+}
+
 // Mask, cleaned target and distance field of keyframe k from its raw frame.
 void clean_keyframe(TargetFrames& t, int k, const TargetOptions& opt) {
   const int w = t.width, h = t.height;
@@ -459,23 +481,42 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   } else {
     // Second pass: sequential reads (seeking is unreliable across codecs), decoding only the
     // sampled frames and keeping them at the target size.
+    // Every frame is decoded (a thumbnail of each finds held frames); only the sampled ones
+    // are kept at the target size.
     cv::VideoCapture cap = open_video(source);
-    int k = 0;
+    int k = 0, run_start = 0;
+    cv::Mat prev_thumb;
     try {
       for (int i = 0; i < N && k < K; ++i) {
         if (!cap.grab()) fail(source, "frame " + std::to_string(i) + " cannot be read");
-        if (i != t.source_index[static_cast<size_t>(k)]) continue;
+        const bool sampled = i == t.source_index[static_cast<size_t>(k)];
+        if (!sampled && !options.retime_held_frames) continue;
         cv::Mat frame;
         if (!cap.retrieve(frame) || frame.empty())
           fail(source, "frame " + std::to_string(i) + " cannot be decoded");
+        if (options.retime_held_frames) {
+          cv::Mat thumb = held_frame_thumbnail(frame);
+          if (!prev_thumb.empty() && same_frame(thumb, prev_thumb)) ++t.held_frames;
+          else run_start = i;
+          prev_thumb = thumb;
+        }
+        if (!sampled) continue;
         store_raw(frame, k, width, height, t.raw);
+        // A repeat shows the pose of the run's first frame: time the keyframe there (never at
+        // or before the previous keyframe, so times stay increasing).
+        if (k > 0 && run_start > t.source_index[static_cast<size_t>(k - 1)]) t.source_index[static_cast<size_t>(k)] = run_start;
         ++k;
       }
     } catch (const cv::Exception&) {
       fail(source, "not a readable video");
     }
   }
-  for (int k = 0; k < K; ++k) clean_keyframe(t, k, options);
+  for (int k = 0; k < K; ++k) {
+    if (!options.palette.empty())
+      t.colour_corrected += correct_colours(t.raw.data() + static_cast<size_t>(k) * px * 4, width, height,
+                                            options.palette).applied;
+    clean_keyframe(t, k, options);
+  }
   return t;
 }
 

@@ -1,0 +1,121 @@
+// Per-frame colour correction (fit/colour_correction.h) and the held-frame timing of
+// load_target: a tinted, off-white, shaded frame comes back in the drawing's exact colours; a
+// clean frame is left alone; colours the drawing does not have are not invented; a clip at a
+// third of its container's frame rate has its keyframes timed at the first frame of each run.
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "fit/colour_correction.h"
+#include "fit/preview_video.h"
+#include "svgmotion/target_video.h"
+
+#include "temp_dir.h"
+
+using namespace svgm;
+
+namespace {
+
+constexpr int kW = 64, kH = 48;
+using Colour = std::array<float, 3>;
+
+// White frame with a red block (x 8..27) and a blue block (x 36..55), rows 10..37.
+std::vector<float> two_blocks(Colour red, Colour blue, Colour paper) {
+  std::vector<float> f(static_cast<size_t>(kW) * kH * 4, 1.f);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const Colour& c = (y >= 10 && y < 38 && x >= 8 && x < 28) ? red : (y >= 10 && y < 38 && x >= 36 && x < 56) ? blue : paper;
+      for (int j = 0; j < 3; ++j) f[(static_cast<size_t>(y) * kW + x) * 4 + j] = c[static_cast<size_t>(j)];
+    }
+  return f;
+}
+
+const float* px(const std::vector<float>& f, int x, int y) { return &f[(static_cast<size_t>(y) * kW + x) * 4]; }
+
+}  // namespace
+
+TEST_SUITE("fit") {
+
+TEST_CASE("colour correction: an 8% tint on an off-white background comes back exactly") {
+  const Colour red{0.8f, 0.1f, 0.1f}, blue{0.1f, 0.2f, 0.9f};
+  // The video's version: a growing tint (R x1.08, B x0.92) and a 0.95 grey paper.
+  auto tint = [](Colour c) { return Colour{std::min(1.f, c[0] * 1.08f), c[1], c[2] * 0.92f}; };
+  std::vector<float> f = two_blocks(tint(red), tint(blue), {0.95f, 0.95f, 0.95f});
+  const ColourCorrection cc = correct_colours(f.data(), kW, kH, {red, blue});
+  CHECK(cc.applied);
+  CHECK(cc.colours_matched == 3);  // red, blue, white
+  // Interiors and paper are the drawing's colours exactly.
+  for (int j = 0; j < 3; ++j) {
+    CHECK(px(f, 15, 20)[j] == red[static_cast<size_t>(j)]);
+    CHECK(px(f, 45, 20)[j] == blue[static_cast<size_t>(j)]);
+    CHECK(px(f, 2, 2)[j] == 1.f);
+  }
+}
+
+TEST_CASE("colour correction: a 15% shading ramp inside a part is snapped flat") {
+  const Colour red{0.8f, 0.1f, 0.1f}, blue{0.1f, 0.2f, 0.9f};
+  std::vector<float> f = two_blocks(red, blue, {1, 1, 1});
+  for (int y = 10; y < 38; ++y)
+    for (int x = 8; x < 28; ++x)
+      for (int j = 0; j < 3; ++j) f[(static_cast<size_t>(y) * kW + x) * 4 + j] *= 0.85f + 0.15f * (x - 8) / 19.f;
+  correct_colours(f.data(), kW, kH, {red, blue});
+  for (int x = 9; x < 27; ++x) CHECK(px(f, x, 20)[0] == doctest::Approx(0.8f).epsilon(1e-6));
+}
+
+TEST_CASE("colour correction: a clean frame is unchanged, and unknown colours are not invented") {
+  const Colour red{0.8f, 0.1f, 0.1f}, blue{0.1f, 0.2f, 0.9f};
+  std::vector<float> f = two_blocks(red, blue, {1, 1, 1});
+  const std::vector<float> before = f;
+  const ColourCorrection cc = correct_colours(f.data(), kW, kH, {red, blue});
+  CHECK(cc.applied);
+  double worst = 0;
+  for (size_t i = 0; i < f.size(); ++i) worst = std::max(worst, static_cast<double>(std::fabs(f[i] - before[i])));
+  CHECK(worst < 1e-6);
+  // A green block the drawing does not have stays green (no palette colour is near it).
+  std::vector<float> g = two_blocks(red, {0.1f, 0.9f, 0.1f}, {1, 1, 1});
+  correct_colours(g.data(), kW, kH, {red, blue});
+  CHECK(px(g, 45, 20)[1] > 0.85f);
+  CHECK(px(g, 45, 20)[2] < 0.15f);
+}
+
+TEST_CASE("colour correction: a frame with too little evidence is left alone") {
+  std::vector<float> f(static_cast<size_t>(kW) * kH * 4, 0.5f);  // all grey, no drawing colour
+  const std::vector<float> before = f;
+  const ColourCorrection cc = correct_colours(f.data(), kW, kH, {{0.8f, 0.1f, 0.1f}});
+  CHECK_FALSE(cc.applied);
+  CHECK(f == before);
+}
+
+TEST_CASE("held frames: keyframes of an 8 fps clip in a 24 fps container are timed at each pose's first frame") {
+  test::TempDir dir("svgm_held_test");
+  // 25 frames; a block moves one step every third frame (frames 3q, 3q+1, 3q+2 are the same).
+  std::vector<RgbaImage> frames;
+  for (int i = 0; i < 25; ++i) {
+    RgbaImage img;
+    img.width = kW;
+    img.height = kH;
+    img.rgba.assign(static_cast<size_t>(kW) * kH * 4, 255);
+    const int x0 = 4 + 6 * (i / 3);
+    for (int y = 16; y < 32; ++y)
+      for (int x = x0; x < x0 + 8 && x < kW; ++x)
+        for (int j = 0; j < 3; ++j) img.rgba[(static_cast<size_t>(y) * kW + x) * 4 + static_cast<size_t>(j)] = 0;
+    frames.push_back(img);
+  }
+  const auto file = dir.path / "held.mp4";
+  write_preview_video(file, 25, 1, [&](int k, int) { return frames[static_cast<size_t>(k)]; }, 24);
+  TargetOptions o;
+  o.keyframes = 5;  // uniform: frames 0, 6, 12, 18, 24 (each the first of its run) ...
+  TargetFrames t = load_target(file, kW, kH, o);
+  CHECK(t.held_frames == 16);
+  CHECK(t.source_index == std::vector<int>{0, 6, 12, 18, 24});
+  o.keyframes = 4;  // ... and 0, 8, 16, 24: frames 8 and 16 repeat 6 and 15
+  t = load_target(file, kW, kH, o);
+  CHECK(t.source_index == std::vector<int>{0, 6, 15, 24});
+  o.retime_held_frames = false;
+  t = load_target(file, kW, kH, o);
+  CHECK(t.source_index == std::vector<int>{0, 8, 16, 24});
+}
+
+}  // TEST_SUITE
