@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <string>
 
 #include "raster/loss_ref.h"
 #include "raster_test_support.h"
@@ -221,6 +222,68 @@ TEST_CASE("two runs of the backward pass give identical bits") {
   double norm = 0;
   for (float v : a) norm += v * v;
   CHECK(norm > 0);
+}
+
+}  // TEST_SUITE
+
+// Edges exactly on pixel boundaries (kernels/raster_backward.cl, "Edges on pixel boundaries"):
+// the loss has a kink there, central differences of the reference converge to the mean of
+// the one-sided derivatives, and the kernels must give that mean, not the dead zero of pixels
+// whose winding integral is an integer. The frames are the rest pose itself, so every edge of
+// the integer-aligned shapes stays on its boundary; the targets are perturbed as in make_case.
+namespace {
+
+Case make_aligned_case(const Scene& scene, uint32_t seed, int K) {
+  Case c = make_case(scene, seed, K);
+  const RasterPlan plan = plan_raster(scene, Affine{}, static_cast<int>(scene.width),
+                                      static_cast<int>(scene.height));
+  c.cp.clear();
+  for (int k = 0; k < K; ++k) c.cp.insert(c.cp.end(), plan.rest_cp.begin(), plan.rest_cp.end());
+  return c;
+}
+
+// The same bounds as the gradient checks above; the gradient at the aligned control points is
+// not small (the check is not vacuous).
+void check_aligned(const Scene& scene, uint32_t seed, const std::string& what) {
+  const Case c = make_aligned_case(scene, seed, 2);
+  const auto [an, fd] = gradients(c);
+  const Agreement a = compare(an, fd);
+  double norm = 0;
+  for (double v : fd) norm += v * v;
+  CAPTURE(what);
+  MESSAGE(what << ": cosine " << a.cosine << ", relative error " << a.rel_error << ", |fd| "
+               << std::sqrt(norm));
+  CHECK(std::sqrt(norm) > 1e-3);
+  CHECK(a.cosine > 0.99999);
+  CHECK(a.rel_error < 1e-3);
+}
+
+}  // namespace
+
+TEST_SUITE("raster") {
+
+TEST_CASE("gradient at edges on pixel boundaries: integer-aligned rectangles, both windings") {
+  // Opaque nonzero rectangle (clockwise on screen), a translucent counter-clockwise one over
+  // it sharing the column x = 20, and an evenodd one whose bottom edge y = 16 is the boundary
+  // of the 16-row bands.
+  const Path a = filled(polygon({{6, 5}, {20, 5}, {20, 19}, {6, 19}}), {0.9f, 0.2f, 0.1f, 1});
+  const Path b = filled(polygon({{20, 9}, {20, 27}, {33, 27}, {33, 9}}), {0.1f, 0.3f, 0.8f, 0.6f});
+  const Path e = filled(polygon({{11, 2}, {27, 2}, {27, 16}, {11, 16}}), {0.2f, 0.7f, 0.3f, 0.7f},
+                        FillRule::EvenOdd);
+  check_aligned(scene_of(40, 32, {a, b, e}), 41, "rectangles");
+}
+
+TEST_CASE("gradient at edges on the canvas border") {
+  // Left edge on x = 0, bottom on y = H, right on x = W and top on y = 0.
+  const Path a = filled(polygon({{0, 20}, {12, 20}, {12, 32}, {0, 32}}), {0.9f, 0.2f, 0.1f, 1});
+  const Path b = filled(polygon({{27, 0}, {40, 0}, {40, 13}, {27, 13}}), {0.1f, 0.3f, 0.8f, 0.8f});
+  check_aligned(scene_of(40, 32, {a, b}), 43, "canvas border");
+}
+
+TEST_CASE("gradient at vertices on pixel corners: a diamond and a triangle through lattice points") {
+  const Path a = filled(polygon({{20, 3}, {29, 12}, {20, 21}, {11, 12}}), {0.9f, 0.2f, 0.1f, 1});
+  const Path b = filled(polygon({{8, 14}, {30, 29}, {8, 29}}), {0.1f, 0.3f, 0.8f, 0.7f});
+  check_aligned(scene_of(40, 32, {a, b}), 47, "pixel corners");
 }
 
 }  // TEST_SUITE
