@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <utility>
 #include <random>
 #include <string>
 
@@ -451,53 +452,58 @@ TEST_CASE("one Adam step matches the formula in double precision; inactive keyfr
   // 4 keyframes of 7 elements: keyframe 0 below `first`, keyframe 1 not active (t = 0),
   // keyframes 2 and 3 at steps 3 and 1 (bias correction far from and at its largest).
   const int per = 7, K = 4, first = 1;
-  const float lr = 1e-3f, b1 = 0.9f, b2 = 0.9f, eps = 1e-6f;  // the paper's settings
-  std::vector<int> steps{5, 0, 3, 1};
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> U(-1, 1);
-  std::vector<float> theta(K * per), grad(K * per), m(K * per), v(K * per);
-  for (int i = 0; i < K * per; ++i) {
-    theta[i] = static_cast<float>(2 * U(rng));
-    grad[i] = static_cast<float>(i % 5 == 0 ? 1e-4 * U(rng) : 3 * U(rng));  // some tiny ones
-    m[i] = static_cast<float>(0.5 * U(rng));
-    v[i] = static_cast<float>(0.5 * (1 + U(rng)));
-  }
-  const auto theta0 = theta, m0 = m, v0 = v;
-  cl::Buffer bt = s.buf(theta), bg = s.buf(grad), bm = s.buf(m), bv = s.buf(v), bs = s.buf(steps);
-  cl::Kernel k(*s.prog, "adam");
-  set_args(k, bt, bg, bm, bv, bs, per, first, lr, b1, b2, eps, K * per);
-  s.rt.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(round_up(K * per, 64)));
-  s.read(bt, theta);
-  s.read(bm, m);
-  s.read(bv, v);
-  int checked = 0;
-  for (int i = 0; i < K * per; ++i) {
-    const int kf = i / per, t = steps[kf];
-    CAPTURE(i);
-    if (kf < first || t <= 0) {
-      CHECK(theta[i] == theta0[i]);
-      CHECK(m[i] == m0[i]);
-      CHECK(v[i] == v0[i]);
-      continue;
+  const float lr = 1e-3f, eps = 1e-6f;  // the paper's learning rate and epsilon
+  // The paper's settings (β1 = β2 = 0.9), and distinct betas so that a swapped one shows.
+  for (const auto& [b1, b2] : {std::pair{0.9f, 0.9f}, std::pair{0.8f, 0.99f}}) {
+    CAPTURE(b1);
+    CAPTURE(b2);
+    std::vector<int> steps{5, 0, 3, 1};
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> U(-1, 1);
+    std::vector<float> theta(K * per), grad(K * per), m(K * per), v(K * per);
+    for (int i = 0; i < K * per; ++i) {
+      theta[i] = static_cast<float>(2 * U(rng));
+      grad[i] = static_cast<float>(i % 5 == 0 ? 1e-4 * U(rng) : 3 * U(rng));  // some tiny ones
+      m[i] = static_cast<float>(0.5 * U(rng));
+      v[i] = static_cast<float>(0.5 * (1 + U(rng)));
     }
-    const double g = grad[i];
-    const double mi = double(b1) * m0[i] + (1 - double(b1)) * g;
-    const double vi = double(b2) * v0[i] + (1 - double(b2)) * g * g;
-    const double step = double(lr) * (mi / (1 - std::pow(double(b1), t))) /
-                        (std::sqrt(vi / (1 - std::pow(double(b2), t))) + double(eps));
-    const double want = theta0[i] - step;
-    // m and v: a few float roundings of their two terms (m's may cancel, so the bound is on
-    // the terms); θ: the step to 1e-5 of the step made of those terms, plus θ's own rounding.
-    const double mterms = std::abs(double(b1) * m0[i]) + std::abs((1 - double(b1)) * g);
-    CHECK(std::abs(m[i] - mi) <= 1e-6 * mterms);
-    CHECK(std::abs(v[i] - vi) <= 1e-6 * std::abs(vi));
-    const double step_terms = double(lr) * (mterms / (1 - std::pow(double(b1), t))) /
-                              (std::sqrt(vi / (1 - std::pow(double(b2), t))) + double(eps));
-    CHECK(std::abs(theta[i] - want) <= 1e-5 * step_terms + 2.4e-7 * std::abs(want));
-    CHECK(std::abs(step) > 0);
-    ++checked;
+    const auto theta0 = theta, m0 = m, v0 = v;
+    cl::Buffer bt = s.buf(theta), bg = s.buf(grad), bm = s.buf(m), bv = s.buf(v), bs = s.buf(steps);
+    cl::Kernel k(*s.prog, "adam");
+    set_args(k, bt, bg, bm, bv, bs, per, first, lr, b1, b2, eps, K * per);
+    s.rt.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(round_up(K * per, 64)));
+    s.read(bt, theta);
+    s.read(bm, m);
+    s.read(bv, v);
+    int checked = 0;
+    for (int i = 0; i < K * per; ++i) {
+      const int kf = i / per, t = steps[kf];
+      CAPTURE(i);
+      if (kf < first || t <= 0) {
+        CHECK(theta[i] == theta0[i]);
+        CHECK(m[i] == m0[i]);
+        CHECK(v[i] == v0[i]);
+        continue;
+      }
+      const double g = grad[i];
+      const double mi = double(b1) * m0[i] + (1 - double(b1)) * g;
+      const double vi = double(b2) * v0[i] + (1 - double(b2)) * g * g;
+      const double step = double(lr) * (mi / (1 - std::pow(double(b1), t))) /
+                          (std::sqrt(vi / (1 - std::pow(double(b2), t))) + double(eps));
+      const double want = theta0[i] - step;
+      // m and v: a few float roundings of their two terms (m's may cancel, so the bound is on
+      // the terms); θ: the step to 1e-5 of the step made of those terms, plus θ's own rounding.
+      const double mterms = std::abs(double(b1) * m0[i]) + std::abs((1 - double(b1)) * g);
+      CHECK(std::abs(m[i] - mi) <= 1e-6 * mterms);
+      CHECK(std::abs(v[i] - vi) <= 1e-6 * std::abs(vi));
+      const double step_terms = double(lr) * (mterms / (1 - std::pow(double(b1), t))) /
+                                (std::sqrt(vi / (1 - std::pow(double(b2), t))) + double(eps));
+      CHECK(std::abs(theta[i] - want) <= 1e-5 * step_terms + 2.4e-7 * std::abs(want));
+      CHECK(std::abs(step) > 0);
+      ++checked;
+    }
+    CHECK(checked == 2 * per);
   }
-  CHECK(checked == 2 * per);
 }
 
 }  // TEST_SUITE
