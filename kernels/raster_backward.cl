@@ -116,6 +116,19 @@ inline int on_row(float4 l, float* Y) {
   return on_integer(l.y, Y) && on_integer(l.w, &b) && b == *Y;
 }
 
+/* Where a line lies (line_boundary): inside the pixels it crosses, or on a pixel column or
+ * row boundary. */
+#define ON_NONE 0
+#define ON_COLUMN 1
+#define ON_ROW 2
+
+/* ON_COLUMN with *at = X, ON_ROW with *at = Y, or ON_NONE. */
+inline int line_boundary(float4 l, float* at) {
+  if (on_column(l, at)) return ON_COLUMN;
+  if (on_row(l, at)) return ON_ROW;
+  return ON_NONE;
+}
+
 /* Whether the band [fy0, fy1) walks the lines of a chunk with box b for gradients. */
 inline int band_reaches(float4 b, float fy0, float fy1, float fw) {
   return !(b.w < fy0 - BAND_REACH || b.y > fy1 + BAND_REACH || b.x > fw + BAND_REACH);
@@ -149,20 +162,21 @@ inline int mark_boundary_lines(__global const float4* L, __global const float4* 
     const int2 range = chunk_lines[c];
     for (int j = range.x; j < range.x + range.y; ++j) {
       const float4 l = L[j];
-      float X, Y;
+      float at;
+      const int on = line_boundary(l, &at);
+      if (on == ON_NONE) continue;
+      const float X = at, Y = at;
       int r0, r1, c0, c1;
-      if (on_column(l, &X)) { /* pixels X − 1 and X of the rows it crosses */
+      if (on == ON_COLUMN) { /* pixels X − 1 and X of the rows it crosses */
         r0 = max((int)floor(fmin(l.y, l.w) - fy0), 0);
         r1 = min((int)ceil(fmax(l.y, l.w) - fy0), rows) - 1;
         c0 = (int)clamp(X - 1.0f, 0.0f, fw);
         c1 = (int)clamp(X, -1.0f, fw - 1.0f);
-      } else if (on_row(l, &Y)) { /* rows Y − 1 and Y under its x extent */
+      } else { /* ON_ROW: rows Y − 1 and Y under its x extent */
         r0 = (int)clamp(Y - fy0 - 1.0f, 0.0f, (float)rows);
         r1 = (int)clamp(Y - fy0, -1.0f, (float)(rows - 1));
         c0 = (int)clamp(floor(fmin(l.x, l.z)), 0.0f, fw);
         c1 = (int)clamp(ceil(fmax(l.x, l.z)) - 1.0f, -1.0f, fw - 1.0f);
-      } else {
-        continue;
       }
       if (c0 > c1) continue;
       for (int r = r0; r <= r1; ++r) {
@@ -251,13 +265,14 @@ inline float cell_grad(__local const float2* g, int cell, int width, int side) {
 }
 
 /* The gradient (∂e0, ∂e1) of one line from the pixels of row `row` it crosses (or, for a line
- * on a row boundary, borders). */
-inline float4 walk_line_grad(float4 l, int row, int width, __local const float2* g) {
+ * on a row boundary, borders); `on` and `at` from line_boundary. */
+inline float4 walk_line_grad(float4 l, int on, float at, int row, int width,
+                             __local const float2* g) {
   const float2 e0 = l.xy, d = l.zw - l.xy;
-  float X, Y;
+  const float X = at, Y = at;
   float ta, tb;
   int side = 0; /* which one-sided value the cells of this row give (cell_grad) */
-  if (on_row(l, &Y)) {
+  if (on == ON_ROW) {
     /* On y = Y: row Y is below it, the low side when d.x > 0 (n = (0, d.x)). */
     if ((float)row != Y && (float)row != Y - 1.0f) return (float4)(0.0f);
     side = ((float)row == Y) == (d.x > 0.0f) ? 1 : -1;
@@ -275,7 +290,7 @@ inline float4 walk_line_grad(float4 l, int row, int width, __local const float2*
   }
   float c0 = 0.0f, c1 = 0.0f; /* Σ g·∫(1 - s), Σ g·∫ s over the pieces */
   const float w = (float)width;
-  if (side == 0 && on_column(l, &X)) {
+  if (on == ON_COLUMN) {
     /* On x = X: pixel X − 1 is left of it, the low side when d.y > 0 (n = (−d.y, d.x)). */
     const int right = (int)clamp(X, -1.0f, w + 1.0f);
     const float gp = d.y > 0.0f ? cell_grad(g, right - 1, width, 1) + cell_grad(g, right, width, -1)
@@ -412,10 +427,11 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
           const float4 l = L[j];
           const float ymin = fmin(l.y, l.w) - fy0, ymax = fmax(l.y, l.w) - fy0;
           int r0 = max((int)floor(ymin), 0), r1 = min((int)ceil(ymax), rows) - 1;
-          float Y;
-          if (on_row(l, &Y)) { /* rows Y − 1 and Y border it */
-            r0 = (int)clamp(Y - fy0 - 1.0f, 0.0f, (float)rows);
-            r1 = (int)clamp(Y - fy0, -1.0f, (float)(rows - 1));
+          float at;
+          const int on = line_boundary(l, &at);
+          if (on == ON_ROW) { /* rows Y − 1 and Y border it */
+            r0 = (int)clamp(at - fy0 - 1.0f, 0.0f, (float)rows);
+            r1 = (int)clamp(at - fy0, -1.0f, (float)(rows - 1));
           }
           /* The walk reads ∂L/∂a at the cells the line crosses or borders: make them valid. */
           const int ca = (int)clamp(floor(fmin(l.x, l.z)) - 1.0f, 0.0f, fw - 1.0f);
@@ -423,7 +439,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
           float4 g = (float4)(0.0f);
           for (int r = r0; r <= r1; ++r) {
             grow_hull2(gcell + r * width, &glo[r], &ghi[r], ca, cb);
-            g += walk_line_grad(l, y0 + r, width, gcell + r * width);
+            g += walk_line_grad(l, on, at, y0 + r, width, gcell + r * width);
           }
           partial[((size_t)k * n_lines + j) * n_bands + band] = g;
         }
