@@ -286,4 +286,13 @@ TEST_CASE("gradient at vertices on pixel corners: a diamond and a triangle throu
   check_aligned(scene_of(40, 32, {a, b}), 47, "pixel corners");
 }
 
+TEST_CASE("gradient at stroke outlines on pixel boundaries: butt and square caps, miter corner") {
+  // Width 2 about integer centre lines: every outline edge lies on a pixel boundary.
+  Path a = stroked(polygon({{5, 6}, {30, 6}, {30, 26}}, false), 2, LineJoin::Miter, LineCap::Butt,
+                   {0.8f, 0.1f, 0.1f, 1});
+  Path b = stroked(polygon({{9, 12}, {9, 28}}, false), 2, LineJoin::Bevel, LineCap::Square,
+                   {0.1f, 0.3f, 0.8f, 0.7f});
+  check_aligned(scene_of(40, 32, {a, b}), 53, "strokes");
+}
+
 }  // TEST_SUITE
