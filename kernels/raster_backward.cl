@@ -63,10 +63,12 @@
 
 #define FRACTION_EPS 1e-6f /* |a| this close to an integer is treated as interior or exterior */
 
-/* A coordinate within this relative distance of an integer lies on a pixel boundary: 2^-19,
- * 16 float ulps, above the rounding of flattened vertices (a Bernstein combination of four
- * equal coordinates), far below any geometric offset a drawing means. */
-#define SNAP_REL 1.9073486e-6f
+/* A coordinate within SNAP_REL · max(|v|, W) of an integer lies on a pixel boundary. 2^-18:
+ * 32 float ulps of the canvas width, above the rounding of the fitter's control points (the
+ * motion model works in units of half the canvas, ~6 roundings of 2^-24 of it, and the
+ * flattening adds a Bernstein combination), far below any offset a drawing means (4e-3 px at
+ * 1024 px). Within it the one-sided derivatives cannot be told apart anyway. */
+#define SNAP_REL 3.8146973e-6f
 
 /* How far (px) outside a band a chunk's box may end and still be visited by the band's
  * gradient walk: a line on the band's top or bottom boundary gives half its integral to the
@@ -98,22 +100,23 @@ inline float2 fill_rule_slopes(float a, int rule) {
   return (float2)(0.0f);
 }
 
-/* Whether v lies on an integer (within rounding, SNAP_REL); *n gets the integer. */
-inline int on_integer(float v, float* n) {
+/* Whether v lies on an integer (within rounding on a canvas `extent` wide, SNAP_REL); *n gets
+ * the integer. */
+inline int on_integer(float v, float extent, float* n) {
   *n = rint(v);
-  return fabs(v - *n) <= SNAP_REL * fmax(1.0f, fabs(v));
+  return fabs(v - *n) <= SNAP_REL * fmax(extent, fabs(v));
 }
 
 /* Whether line l lies on the pixel column boundary x = *X (both ends on the same integer). */
-inline int on_column(float4 l, float* X) {
+inline int on_column(float4 l, float extent, float* X) {
   float b;
-  return on_integer(l.x, X) && on_integer(l.z, &b) && b == *X;
+  return on_integer(l.x, extent, X) && on_integer(l.z, extent, &b) && b == *X;
 }
 
 /* Whether line l lies on the pixel row boundary y = *Y. */
-inline int on_row(float4 l, float* Y) {
+inline int on_row(float4 l, float extent, float* Y) {
   float b;
-  return on_integer(l.y, Y) && on_integer(l.w, &b) && b == *Y;
+  return on_integer(l.y, extent, Y) && on_integer(l.w, extent, &b) && b == *Y;
 }
 
 /* Where a line lies (line_boundary): inside the pixels it crosses, or on a pixel column or
@@ -122,10 +125,10 @@ inline int on_row(float4 l, float* Y) {
 #define ON_COLUMN 1
 #define ON_ROW 2
 
-/* ON_COLUMN with *at = X, ON_ROW with *at = Y, or ON_NONE. */
-inline int line_boundary(float4 l, float* at) {
-  if (on_column(l, at)) return ON_COLUMN;
-  if (on_row(l, at)) return ON_ROW;
+/* ON_COLUMN with *at = X, ON_ROW with *at = Y, or ON_NONE, on a canvas `width` pixels wide. */
+inline int line_boundary(float4 l, int width, float* at) {
+  if (on_column(l, (float)width, at)) return ON_COLUMN;
+  if (on_row(l, (float)width, at)) return ON_ROW;
   return ON_NONE;
 }
 
@@ -163,7 +166,7 @@ inline int mark_boundary_lines(__global const float4* L, __global const float4* 
     for (int j = range.x; j < range.x + range.y; ++j) {
       const float4 l = L[j];
       float at;
-      const int on = line_boundary(l, &at);
+      const int on = line_boundary(l, width, &at);
       if (on == ON_NONE) continue;
       const float X = at, Y = at;
       int r0, r1, c0, c1;
@@ -428,7 +431,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
           const float ymin = fmin(l.y, l.w) - fy0, ymax = fmax(l.y, l.w) - fy0;
           int r0 = max((int)floor(ymin), 0), r1 = min((int)ceil(ymax), rows) - 1;
           float at;
-          const int on = line_boundary(l, &at);
+          const int on = line_boundary(l, width, &at);
           if (on == ON_ROW) { /* rows Y − 1 and Y border it */
             r0 = (int)clamp(at - fy0 - 1.0f, 0.0f, (float)rows);
             r1 = (int)clamp(at - fy0, -1.0f, (float)(rows - 1));
