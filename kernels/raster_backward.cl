@@ -67,7 +67,7 @@
  * 32 float ulps of the canvas width, above the rounding of the fitter's control points (the
  * motion model works in units of half the canvas, ~6 roundings of 2^-24 of it, and the
  * flattening adds a Bernstein combination), far below any offset a drawing means (4e-3 px at
- * 1024 px). Within it the one-sided derivatives cannot be told apart anyway. */
+ * 1024 px): within it, which side of the boundary the float geometry lands on is rounding. */
 #define SNAP_REL 3.8146973e-6f
 
 /* How far (px) outside a band a chunk's box may end and still be visited by the band's
