@@ -36,12 +36,44 @@
  * here although they add nothing to the forward accumulation: moving them vertically changes
  * the covered area. Pieces outside the canvas add nothing (no pixel sees them).
  *
+ * Edges on pixel boundaries. Clipart puts axis-aligned edges on integer coordinates, and
+ * there the loss is not differentiable: the winding integrals of the pixels on both sides are
+ * integers (0 and 1, say), the coverage f(a) has a kink at an integer a (|a| at 0, the clamp
+ * or the fold at ±1), and moving the edge one way changes only the pixel on that side.
+ * Its one-sided derivatives are the boundary integral taken in that pixel with that
+ * pixel's one-sided slope of f in the direction the edge moves a there: an edge moving
+ * into the pixel on its low side (the side n points to) raises that pixel's a (the right slope
+ * f'(a+)), one moving into the high side lowers it (the left slope f'(a−)). The kernel
+ * uses their mean, the symmetric derivative: what central finite differences converge to,
+ * and never a dead gradient (an optimiser at an integer-aligned rectangle would otherwise see
+ * zero and never move it). So each pixel keeps both one-sided slopes, g± = ∂L/∂f · f'(a±)
+ * (equal where a is fractional), an edge piece inside a pixel uses (g+ + g−)/2, and a line
+ * lying on a column boundary x = X (both ends within rounding of it, SNAP_REL) gives half of
+ * its boundary integral to pixel X − 1 and half to pixel X, each with its side's slope; one on
+ * a row boundary y = Y likewise to rows Y − 1 and Y. The pixels beside such a line get a tape
+ * entry although their a is an integer (mark_boundary_lines), and a band visits a line that
+ * only touches its top or bottom (BAND_REACH). Off the canvas a side contributes nothing:
+ * an edge on the canvas border gets half of its inside one-sided derivative, which is again
+ * the symmetric one.
+ *
  * Output. A line may cross several bands; each band writes its partial gradient of the line
  * into its own slot, partial[k][line][band], and gather_line_grads sums the slots of the bands
  * the line crosses in band order. Deterministic, no atomics.
  */
 
 #define FRACTION_EPS 1e-6f /* |a| this close to an integer is treated as interior or exterior */
+
+/* A coordinate within SNAP_REL · max(|v|, W) of an integer lies on a pixel boundary. 2^-18:
+ * 32 float ulps of the canvas width, above the rounding of the fitter's control points (the
+ * motion model works in units of half the canvas, ~6 roundings of 2^-24 of it, and the
+ * flattening adds a Bernstein combination), far below any offset a drawing means (4e-3 px at
+ * 1024 px): within it, which side of the boundary the float geometry lands on is rounding. */
+#define SNAP_REL 3.8146973e-6f
+
+/* How far (px) outside a band a chunk's box may end and still be visited by the band's
+ * gradient walk: a line on the band's top or bottom boundary gives half its integral to the
+ * row inside. Must match between raster_backward and gather_line_grads. */
+#define BAND_REACH 0.5f
 
 inline float fold(float a, int rule) {
   return rule == RULE_EVENODD ? a - 2.0f * rint(0.5f * a) : a;
@@ -52,11 +84,120 @@ inline int is_fractional(float a, int rule) {
   return m > FRACTION_EPS && m < 1.0f - FRACTION_EPS;
 }
 
+/* One-sided slopes (f'(a+), f'(a−)) of the coverage f = fill_rule_coverage at a. Off the
+ * integers both are sign(fold(a)) inside (0, 1) and 0 beyond; at an integer they are the
+ * sides of the kink: |a| at 0, the clamp of nonzero at ±1, the fold of evenodd at odd a. */
+inline float2 fill_rule_slopes(float a, int rule) {
+  const float m = fold(a, rule), n = rint(m);
+  if (fabs(m - n) > FRACTION_EPS) {
+    const float s = fabs(m) < 1.0f ? sign(m) : 0.0f;
+    return (float2)(s, s);
+  }
+  if (n == 0.0f) return (float2)(1.0f, -1.0f);
+  if (rule == RULE_EVENODD) return (float2)(-1.0f, 1.0f); /* fold peaks at odd a */
+  if (n == 1.0f) return (float2)(0.0f, 1.0f);
+  if (n == -1.0f) return (float2)(-1.0f, 0.0f);
+  return (float2)(0.0f);
+}
+
+/* Whether v lies on an integer (within rounding on a canvas `extent` wide, SNAP_REL); *n gets
+ * the integer. */
+inline int on_integer(float v, float extent, float* n) {
+  *n = rint(v);
+  return fabs(v - *n) <= SNAP_REL * fmax(extent, fabs(v));
+}
+
+/* Whether line l lies on the pixel column boundary x = *X (both ends on the same integer). */
+inline int on_column(float4 l, float extent, float* X) {
+  float b;
+  return on_integer(l.x, extent, X) && on_integer(l.z, extent, &b) && b == *X;
+}
+
+/* Whether line l lies on the pixel row boundary y = *Y. */
+inline int on_row(float4 l, float extent, float* Y) {
+  float b;
+  return on_integer(l.y, extent, Y) && on_integer(l.w, extent, &b) && b == *Y;
+}
+
+/* Where a line lies (line_boundary): inside the pixels it crosses, or on a pixel column or
+ * row boundary. */
+#define ON_NONE 0
+#define ON_COLUMN 1
+#define ON_ROW 2
+
+/* ON_COLUMN with *at = X, ON_ROW with *at = Y, or ON_NONE, on a canvas `width` pixels wide. */
+inline int line_boundary(float4 l, int width, float* at) {
+  if (on_column(l, (float)width, at)) return ON_COLUMN;
+  if (on_row(l, (float)width, at)) return ON_ROW;
+  return ON_NONE;
+}
+
+/* Whether the band [fy0, fy1) walks the lines of a chunk with box b for gradients. */
+inline int band_reaches(float4 b, float fy0, float fy1, float fw) {
+  return !(b.w < fy0 - BAND_REACH || b.y > fy1 + BAND_REACH || b.x > fw + BAND_REACH);
+}
+
+inline void grow_hull2(__local float2* buf, int* lo, int* hi, int a, int b) {
+  if (*hi < *lo) {
+    for (int x = a; x <= b; ++x) buf[x] = (float2)(0.0f);
+    *lo = a; *hi = b;
+    return;
+  }
+  for (int x = a; x < *lo; ++x) buf[x] = (float2)(0.0f);
+  for (int x = *hi + 1; x <= b; ++x) buf[x] = (float2)(0.0f);
+  *lo = min(*lo, a); *hi = max(*hi, b);
+}
+
+/* Marks the pixels beside the lines of one draw that lie on a pixel boundary (they need B on
+ * the tape and their one-sided slopes although their a may be an integer) and widens the rows'
+ * spans and clean accumulation hulls to them. The sweeps read and clear the marks. Returns
+ * whether any chunk of the draw reaches the band (band_reaches). */
+inline int mark_boundary_lines(__global const float4* L, __global const float4* B,
+                               __global const int2* chunk_lines, int2 chunks, int y0, int rows,
+                               int width, int stride, __local float* acc, __local uchar* mark,
+                               int* xlo, int* xhi, int* alo, int* ahi) {
+  const float fy0 = (float)y0, fy1 = (float)(y0 + rows), fw = (float)width;
+  int any = 0;
+  for (int c = chunks.x; c < chunks.x + chunks.y; ++c) {
+    const float4 b = B[c];
+    if (!band_reaches(b, fy0, fy1, fw)) continue;
+    any = 1;
+    const int2 range = chunk_lines[c];
+    for (int j = range.x; j < range.x + range.y; ++j) {
+      const float4 l = L[j];
+      float at;
+      const int on = line_boundary(l, width, &at);
+      if (on == ON_NONE) continue;
+      const float X = at, Y = at;
+      int r0, r1, c0, c1;
+      if (on == ON_COLUMN) { /* pixels X − 1 and X of the rows it crosses */
+        r0 = max((int)floor(fmin(l.y, l.w) - fy0), 0);
+        r1 = min((int)ceil(fmax(l.y, l.w) - fy0), rows) - 1;
+        c0 = (int)clamp(X - 1.0f, 0.0f, fw);
+        c1 = (int)clamp(X, -1.0f, fw - 1.0f);
+      } else { /* ON_ROW: rows Y − 1 and Y under its x extent */
+        r0 = (int)clamp(Y - fy0 - 1.0f, 0.0f, (float)rows);
+        r1 = (int)clamp(Y - fy0, -1.0f, (float)(rows - 1));
+        c0 = (int)clamp(floor(fmin(l.x, l.z)), 0.0f, fw);
+        c1 = (int)clamp(ceil(fmax(l.x, l.z)) - 1.0f, -1.0f, fw - 1.0f);
+      }
+      if (c0 > c1) continue;
+      for (int r = r0; r <= r1; ++r) {
+        grow_hull(acc + r * stride, &alo[r], &ahi[r], c0, c1 + 1);
+        for (int x = c0; x <= c1; ++x) mark[r * width + x] = 1;
+        xlo[r] = min(xlo[r], c0);
+        xhi[r] = max(xhi[r], c1);
+      }
+    }
+  }
+  return any;
+}
+
 /* The forward sweep of one draw's span (composite_span), also pushing B onto the tape at every
- * fractional pixel. */
-inline void replay_span(__local float* acc, __local float4* out, int* hlo, int* hhi, int xlo,
-                        int xhi, int width, float4 color, int rule, float4 background,
-                        __local float4* tape, int* tp, int cap) {
+ * fractional or marked pixel. */
+inline void replay_span(__local float* acc, __local uchar* mark, __local float4* out, int* hlo,
+                        int* hhi, int xlo, int xhi, int width, float4 color, int rule,
+                        float4 background, __local float4* tape, int* tp, int cap) {
   float s = 0.0f;
   const int xe = min(xhi, width - 1);
   const float4 premul = (float4)(color.xyz, 1.0f);
@@ -64,7 +205,9 @@ inline void replay_span(__local float* acc, __local float4* out, int* hlo, int* 
   for (int x = xlo; x <= xe; ++x) {
     s += acc[x];
     acc[x] = 0.0f;
-    if (is_fractional(s, rule)) {
+    const int marked = mark[x];
+    mark[x] = 0;
+    if (marked || is_fractional(s, rule)) {
       if (*tp < cap) tape[*tp] = out[x] + background * (1.0f - out[x].w);
       ++*tp;
     }
@@ -79,25 +222,28 @@ inline void replay_span(__local float* acc, __local float4* out, int* hlo, int* 
   }
 }
 
-/* The top-down sweep of one draw's span: g(p) into gcell, then T *= (1 - α). */
-inline void backward_span(__local float* acc, __local float* T, int* tlo, int* thi,
-                          __local float* gcell, int* glo, int* ghi, __global const float4* E,
+/* The top-down sweep of one draw's span: the one-sided g±(p) into gcell, then T *= (1 - α). */
+inline void backward_span(__local float* acc, __local uchar* mark, __local float* T, int* tlo,
+                          int* thi, __local float2* gcell, int* glo, int* ghi,
+                          __global const float4* E,
                           __global const int2* ext_e, __global const float4* R,
                           int row, int height, float scale, int xlo, int xhi, int width,
                           float4 color, int rule, __local const float4* tape, int* tp, int cap) {
   float s = 0.0f;
   const int xe = min(xhi, width - 1);
   grow_hull_fill(T, tlo, thi, xlo, xe, 1.0f);  /* transmittance starts at 1 */
-  grow_hull(gcell, glo, ghi, xlo, xe);
+  grow_hull2(gcell, glo, ghi, xlo, xe);
   for (int x = xlo; x <= xe; ++x) {
     s += acc[x];
     acc[x] = 0.0f;
-    float g = 0.0f;
-    if (is_fractional(s, rule)) {
+    const int marked = mark[x];
+    mark[x] = 0;
+    float2 g = (float2)(0.0f);
+    if (marked || is_fractional(s, rule)) {
       if (*tp < cap) {
         const float3 dC = blurred_gradient(E, ext_e, R, x, row, width, height, scale);
         const float ga = dot(dC, T[x] * (color.xyz - tape[*tp].xyz));
-        g = ga * color.w * sign(fold(s, rule));
+        g = ga * color.w * fill_rule_slopes(s, rule);
       }
       ++*tp;
     }
@@ -112,11 +258,30 @@ inline void backward_span(__local float* acc, __local float* T, int* tlo, int* t
   }
 }
 
-/* The gradient (∂e0, ∂e1) of one line from the pixels of row `row` it crosses. */
-inline float4 walk_line_grad(float4 l, int row, int width, __local const float* g) {
+/* ∂L/∂a of cell `cell` of a row for an edge piece: the mean of its one-sided values inside
+ * the pixel (side 0), half of the right one (side 1) or of the left one (side −1) for a line on
+ * the pixel's boundary. Cells off the canvas see nothing. */
+inline float cell_grad(__local const float2* g, int cell, int width, int side) {
+  if (cell < 0 || cell >= width) return 0.0f;
+  const float2 v = g[cell];
+  return side == 0 ? 0.5f * (v.x + v.y) : 0.5f * (side > 0 ? v.x : v.y);
+}
+
+/* The gradient (∂e0, ∂e1) of one line from the pixels of row `row` it crosses (or, for a line
+ * on a row boundary, borders); `on` and `at` from line_boundary. */
+inline float4 walk_line_grad(float4 l, int on, float at, int row, int width,
+                             __local const float2* g) {
   const float2 e0 = l.xy, d = l.zw - l.xy;
+  const float X = at, Y = at;
   float ta, tb;
-  if (d.y == 0.0f) {
+  int side = 0; /* which one-sided value the cells of this row give (cell_grad) */
+  if (on == ON_ROW) {
+    /* On y = Y: row Y is below it, the low side when d.x > 0 (n = (0, d.x)). */
+    if ((float)row != Y && (float)row != Y - 1.0f) return (float4)(0.0f);
+    side = ((float)row == Y) == (d.x > 0.0f) ? 1 : -1;
+    ta = 0.0f;
+    tb = 1.0f;
+  } else if (d.y == 0.0f) {
     if (e0.y < (float)row || e0.y >= (float)(row + 1)) return (float4)(0.0f);
     ta = 0.0f;
     tb = 1.0f;
@@ -128,10 +293,17 @@ inline float4 walk_line_grad(float4 l, int row, int width, __local const float* 
   }
   float c0 = 0.0f, c1 = 0.0f; /* Σ g·∫(1 - s), Σ g·∫ s over the pieces */
   const float w = (float)width;
-  if (d.x == 0.0f) {
+  if (on == ON_COLUMN) {
+    /* On x = X: pixel X − 1 is left of it, the low side when d.y > 0 (n = (−d.y, d.x)). */
+    const int right = (int)clamp(X, -1.0f, w + 1.0f);
+    const float gp = d.y > 0.0f ? cell_grad(g, right - 1, width, 1) + cell_grad(g, right, width, -1)
+                                : cell_grad(g, right - 1, width, -1) + cell_grad(g, right, width, 1);
+    c0 = gp * ((tb - ta) - 0.5f * (tb * tb - ta * ta));
+    c1 = gp * 0.5f * (tb * tb - ta * ta);
+  } else if (d.x == 0.0f) {
     const float x = e0.x;
     if (x >= 0.0f && x < w) {
-      const float gp = g[(int)x];
+      const float gp = cell_grad(g, (int)x, width, side);
       c0 = gp * ((tb - ta) - 0.5f * (tb * tb - ta * ta));
       c1 = gp * 0.5f * (tb * tb - ta * ta);
     }
@@ -148,7 +320,7 @@ inline float4 walk_line_grad(float4 l, int row, int width, __local const float* 
       const float xb = (float)(step > 0 ? cell + 1 : cell);
       const float tn = fmax(t, fmin(tb, (xb - e0.x) / d.x));
       if (cell >= 0 && cell < width) {
-        const float gp = g[cell];
+        const float gp = cell_grad(g, cell, width, side);
         c0 += gp * ((tn - t) - 0.5f * (tn * tn - t * t));
         c1 += gp * 0.5f * (tn * tn - t * t);
       }
@@ -175,7 +347,8 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               __local float* acc,                 /* [BAND_H][W + 2] */
                               __local float4* band_rgba,          /* [BAND_H][W] */
                               __local float* band_T,              /* [BAND_H][W] */
-                              __local float* gcell,               /* [BAND_H][W] */
+                              __local float2* gcell,              /* [BAND_H][W] (g+, g−) */
+                              __local uchar* mark,                /* [BAND_H][W] */
                               __local float4* tape, int tape_cap,
                               __local int* draw_tape,             /* [n_draws] */
                               __global float4* partial,           /* [K][n_lines][n_bands] */
@@ -205,18 +378,22 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
       hhi[r] = thi[r] = ghi[r] = -1;
     }
     int tp = 0;
+    for (int i = 0; i < rows * width; ++i) mark[i] = 0; /* the sweeps keep it clear after this */
 
     /* 1. Bottom-up replay of the forward pass, taping B at fractional pixels. */
     for (int d = 0; d < n_draws; ++d) {
       draw_tape[d] = tp;
       accumulate_draw(L, B, chunk_lines, draw_chunks[d], y0, rows, width, stride, acc, xlo, xhi,
                       alo, ahi);
+      mark_boundary_lines(L, B, chunk_lines, draw_chunks[d], y0, rows, width, stride, acc, mark,
+                          xlo, xhi, alo, ahi);
       const float4 color = draw_color[d];
       const int rule = draw_rule[d];
       for (int r = 0; r < rows; ++r) {
         if (xhi[r] >= xlo[r])
-          replay_span(acc + r * stride, band_rgba + r * width, &hlo[r], &hhi[r], xlo[r], xhi[r],
-                      width, color, rule, background, tape, &tp, tape_cap);
+          replay_span(acc + r * stride, mark + r * width, band_rgba + r * width, &hlo[r],
+                      &hhi[r], xlo[r], xhi[r], width, color, rule, background, tape, &tp,
+                      tape_cap);
         xlo[r] = width;
         xhi[r] = -1;
       }
@@ -226,9 +403,11 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
     /* 2. Top-down: ∂L/∂a per edge pixel, then the boundary integrals of every line. */
     for (int d = n_draws - 1; d >= 0; --d) {
       const int2 chunks = draw_chunks[d];
-      if (!accumulate_draw(L, B, chunk_lines, chunks, y0, rows, width, stride, acc, xlo, xhi, alo,
-                           ahi))
-        continue;
+      accumulate_draw(L, B, chunk_lines, chunks, y0, rows, width, stride, acc, xlo, xhi, alo,
+                      ahi);
+      if (!mark_boundary_lines(L, B, chunk_lines, chunks, y0, rows, width, stride, acc, mark, xlo,
+                               xhi, alo, ahi))
+        continue; /* no chunk reaches the band (band_reaches), so nothing was accumulated */
       const float4 color = draw_color[d];
       const int rule = draw_rule[d];
       int tq = draw_tape[d];
@@ -237,33 +416,39 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
         slo[r] = xlo[r];
         shi[r] = min(xhi[r], width - 1);
         if (xhi[r] >= xlo[r])
-          backward_span(acc + r * stride, band_T + r * width, &tlo[r], &thi[r], gcell + r * width,
-                        &glo[r], &ghi[r], Ek, Xk, Rk, y0 + r, height, grad_scale, xlo[r], xhi[r], width,
+          backward_span(acc + r * stride, mark + r * width, band_T + r * width, &tlo[r], &thi[r],
+                        gcell + r * width, &glo[r], &ghi[r], Ek, Xk, Rk, y0 + r, height, grad_scale, xlo[r], xhi[r], width,
                         color, rule, tape, &tq, tape_cap);
         xlo[r] = width;
         xhi[r] = -1;
       }
       for (int c = chunks.x; c < chunks.x + chunks.y; ++c) {
         const float4 b = B[c];
-        if (b.w <= fy0 || b.y >= fy1 || b.x >= fw) continue;
+        if (!band_reaches(b, fy0, fy1, fw)) continue;
         const int2 range = chunk_lines[c];
         for (int j = range.x; j < range.x + range.y; ++j) {
           const float4 l = L[j];
           const float ymin = fmin(l.y, l.w) - fy0, ymax = fmax(l.y, l.w) - fy0;
-          const int r0 = max((int)floor(ymin), 0), r1 = min((int)ceil(ymax), rows) - 1;
-          /* The walk reads ∂L/∂a at the cells the line crosses: make them valid first. */
-          const int ca = (int)clamp(floor(fmin(l.x, l.z)), 0.0f, fw - 1.0f);
+          int r0 = max((int)floor(ymin), 0), r1 = min((int)ceil(ymax), rows) - 1;
+          float at;
+          const int on = line_boundary(l, width, &at);
+          if (on == ON_ROW) { /* rows Y − 1 and Y border it */
+            r0 = (int)clamp(at - fy0 - 1.0f, 0.0f, (float)rows);
+            r1 = (int)clamp(at - fy0, -1.0f, (float)(rows - 1));
+          }
+          /* The walk reads ∂L/∂a at the cells the line crosses or borders: make them valid. */
+          const int ca = (int)clamp(floor(fmin(l.x, l.z)) - 1.0f, 0.0f, fw - 1.0f);
           const int cb = (int)clamp(floor(fmax(l.x, l.z)), 0.0f, fw - 1.0f);
           float4 g = (float4)(0.0f);
           for (int r = r0; r <= r1; ++r) {
-            grow_hull(gcell + r * width, &glo[r], &ghi[r], ca, cb);
-            g += walk_line_grad(l, y0 + r, width, gcell + r * width);
+            grow_hull2(gcell + r * width, &glo[r], &ghi[r], ca, cb);
+            g += walk_line_grad(l, on, at, y0 + r, width, gcell + r * width);
           }
           partial[((size_t)k * n_lines + j) * n_bands + band] = g;
         }
       }
       for (int r = 0; r < rows; ++r)
-        for (int x = slo[r]; x <= shi[r]; ++x) gcell[r * width + x] = 0.0f;
+        for (int x = slo[r]; x <= shi[r]; ++x) gcell[r * width + x] = (float2)(0.0f);
     }
   }
 }
@@ -277,14 +462,14 @@ __kernel void gather_line_grads(__global const float4* lines, __global const int
   if (j >= n_lines) return;
   const float4 l = lines[(size_t)k * n_lines + j];
   const float4 b = bounds[(size_t)k * n_chunks + line_chunk[j]];
-  const float ymin = fmin(l.y, l.w), ymax = fmax(l.y, l.w);
+  const float ymin = fmin(l.y, l.w) - BAND_REACH, ymax = fmax(l.y, l.w) + BAND_REACH;
   const int b0 = clamp((int)floor(ymin / (float)BAND_H), 0, n_bands - 1);
   const int b1 = clamp((int)floor(ymax / (float)BAND_H), 0, n_bands - 1);
   float4 g = (float4)(0.0f);
   for (int band = b0; band <= b1; ++band) {
     const int y0 = band * BAND_H, rows = min(BAND_H, height - y0);
     const float fy0 = (float)y0, fy1 = (float)(y0 + rows);
-    if (b.w <= fy0 || b.y >= fy1 || b.x >= (float)width) continue; /* the band skipped it */
+    if (!band_reaches(b, fy0, fy1, (float)width)) continue; /* the band skipped it */
     g += partial[((size_t)k * n_lines + j) * n_bands + band];
   }
   line_grad[(size_t)k * n_lines + j] = g;

@@ -6,7 +6,11 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <string>
 
+#include "fit/fit_plan.h"
+#include "fit/fitter.h"
+#include "opencl/tuning.h"
 #include "raster/loss_ref.h"
 #include "raster_test_support.h"
 #include "scene_builders.h"
@@ -84,12 +88,14 @@ Case make_case(const Scene& scene, uint32_t seed, int K) {
 }
 
 // Analytic gradient from the kernels and the finite-difference gradient of the reference.
+// kernel_cp: the kernels' control points when they are not c.cp rounded to float.
 std::pair<std::vector<double>, std::vector<double>> gradients(const Case& c, float* loss_cl = nullptr,
-                                                              double* loss_ref = nullptr) {
+                                                              double* loss_ref = nullptr,
+                                                              const std::vector<float>* kernel_cp = nullptr) {
   const RasterPlan plan = plan_raster(c.scene, Affine{}, static_cast<int>(c.scene.width),
                                       static_cast<int>(c.scene.height));
   ClRaster r(runtime(), plan, c.K);
-  r.set_control_points(std::vector<float>(c.cp.begin(), c.cp.end()));
+  r.set_control_points(kernel_cp ? *kernel_cp : std::vector<float>(c.cp.begin(), c.cp.end()));
   r.set_targets(c.targets);
   const std::array<float, 4> white{1, 1, 1, 1};
   const float L = r.loss_and_gradient(kWeight, white);
@@ -221,6 +227,130 @@ TEST_CASE("two runs of the backward pass give identical bits") {
   double norm = 0;
   for (float v : a) norm += v * v;
   CHECK(norm > 0);
+}
+
+}  // TEST_SUITE
+
+// Edges exactly on pixel boundaries (kernels/raster_backward.cl, "Edges on pixel boundaries"):
+// the loss has a kink there, central differences of the reference converge to the mean of
+// the one-sided derivatives, and the kernels must give that mean, not the dead zero of pixels
+// whose winding integral is an integer. The frames are the rest pose itself, so every edge of
+// the integer-aligned shapes stays on its boundary; the targets are perturbed as in make_case.
+namespace {
+
+Case make_aligned_case(const Scene& scene, uint32_t seed, int K) {
+  Case c = make_case(scene, seed, K);
+  const RasterPlan plan = plan_raster(scene, Affine{}, static_cast<int>(scene.width),
+                                      static_cast<int>(scene.height));
+  c.cp.clear();
+  for (int k = 0; k < K; ++k) c.cp.insert(c.cp.end(), plan.rest_cp.begin(), plan.rest_cp.end());
+  return c;
+}
+
+// The control points of the rest pose as the fitter computes them: through motion_forward
+// (kernels/motion.cl) at identity homographies, in float, so integer coordinates come out
+// within a few rounding steps of the canvas scale. The centres are moved off the centroids
+// (the fitter learns them; the map stays the identity), which makes that rounding show.
+std::vector<float> rest_through_motion(const Scene& scene, int K) {
+  const RenderSize size = render_size(scene, static_cast<int>(scene.width));
+  const RasterPlan plan = plan_raster(scene, size.view, size.width, size.height);
+  const FitPlan fplan = plan_fit(scene, plan, FitPlanOptions{});
+  ClRuntime& rt = runtime();
+  cl::Program& prog = rt.program({"field.cl", "motion.cl", "regularise.cl", "adam.cl"},
+                                 kernel_build_options(raster_tuning(rt.info(), size.width)));
+  cl::Kernel motion(prog, "motion_forward");
+  auto params = identity_motion(fplan, plan, size);
+  for (int g = 0; g < fplan.n_groups; ++g) {  // kernels/motion.cl: parameters 9, 10 are the centre
+    params[12 * g + 9] += 0.3141593f;
+    params[12 * g + 10] -= 0.2718282f;
+  }
+  std::vector<float> offsets(static_cast<size_t>(plan.n_cp) * 2, 0.f), cp(offsets.size(), 0.f);
+  std::vector<float> rest(plan.rest_cp.begin(), plan.rest_cp.end());
+  auto group = fplan.cp_group, slot = fplan.cp_offset;
+  auto& ctx = rt.context();
+  auto buf = [&](auto& v) {
+    using T = typename std::decay_t<decltype(v)>::value_type;
+    return cl::Buffer(ctx, CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, std::max<size_t>(v.size() * sizeof(T), 16),
+                      v.data());
+  };
+  cl::Buffer bp = buf(params), bo = buf(offsets), br = buf(rest), bg = buf(group), bs = buf(slot), bc = buf(cp);
+  const cl_float2 origin{{0.5f * size.width, 0.5f * size.height}};
+  set_args(motion, bp, bo, br, bg, bs, bc, origin, 0.5f * size.width, plan.n_cp, fplan.n_groups);
+  rt.queue().enqueueNDRangeKernel(motion, cl::NullRange, cl::NDRange(plan.n_cp, 1));
+  rt.queue().enqueueReadBuffer(bc, CL_TRUE, 0, cp.size() * sizeof(float), cp.data());
+  std::vector<float> out;
+  for (int k = 0; k < K; ++k) out.insert(out.end(), cp.begin(), cp.end());
+  return out;
+}
+
+// The same bounds as the gradient checks above; the gradient at the aligned control points is
+// not small (the check is not vacuous).
+void check_aligned(const Scene& scene, uint32_t seed, const std::string& what,
+                   bool through_motion = false) {
+  const Case c = make_aligned_case(scene, seed, 2);
+  std::vector<float> kernel_cp;
+  if (through_motion) {
+    kernel_cp = rest_through_motion(scene, c.K);
+    double off = 0;
+    for (size_t i = 0; i < kernel_cp.size(); ++i) off = std::max(off, std::abs(kernel_cp[i] - c.cp[i]));
+    MESSAGE(what << ": the motion model moves the rest pose by up to " << off << " px");
+    CHECK(off > 0);  // the rounding this case is about is there
+  }
+  const auto [an, fd] = gradients(c, nullptr, nullptr, through_motion ? &kernel_cp : nullptr);
+  const Agreement a = compare(an, fd);
+  double norm = 0;
+  for (double v : fd) norm += v * v;
+  CAPTURE(what);
+  MESSAGE(what << ": cosine " << a.cosine << ", relative error " << a.rel_error << ", |fd| "
+               << std::sqrt(norm));
+  CHECK(std::sqrt(norm) > 1e-3);
+  CHECK(a.cosine > 0.99999);
+  CHECK(a.rel_error < 1e-3);
+}
+
+}  // namespace
+
+TEST_SUITE("raster") {
+
+TEST_CASE("gradient at edges on pixel boundaries: integer-aligned rectangles, both windings") {
+  // Opaque nonzero rectangle (clockwise on screen), a translucent counter-clockwise one over
+  // it sharing the column x = 20, and an evenodd one whose bottom edge y = 16 is the boundary
+  // of the 16-row bands.
+  const Path a = filled(polygon({{6, 5}, {20, 5}, {20, 19}, {6, 19}}), {0.9f, 0.2f, 0.1f, 1});
+  const Path b = filled(polygon({{20, 9}, {20, 27}, {33, 27}, {33, 9}}), {0.1f, 0.3f, 0.8f, 0.6f});
+  const Path e = filled(polygon({{11, 2}, {27, 2}, {27, 16}, {11, 16}}), {0.2f, 0.7f, 0.3f, 0.7f},
+                        FillRule::EvenOdd);
+  check_aligned(scene_of(40, 32, {a, b, e}), 41, "rectangles");
+}
+
+TEST_CASE("gradient at edges on pixel boundaries after the fitter's motion model at rest") {
+  // The fitter's rest pose leaves integer coordinates a rounding step off the boundary; the
+  // kernel must still see the edges on it (SNAP_REL in kernels/raster_backward.cl).
+  const Path a = filled(polygon({{6, 5}, {20, 5}, {20, 19}, {6, 19}}), {0.9f, 0.2f, 0.1f, 1});
+  const Path b = filled(polygon({{20, 9}, {20, 27}, {33, 27}, {33, 9}}), {0.1f, 0.3f, 0.8f, 0.6f});
+  check_aligned(scene_of(40, 32, {a, b}), 59, "rectangles through the motion model", true);
+}
+
+TEST_CASE("gradient at edges on the canvas border") {
+  // Left edge on x = 0, bottom on y = H, right on x = W and top on y = 0.
+  const Path a = filled(polygon({{0, 20}, {12, 20}, {12, 32}, {0, 32}}), {0.9f, 0.2f, 0.1f, 1});
+  const Path b = filled(polygon({{27, 0}, {40, 0}, {40, 13}, {27, 13}}), {0.1f, 0.3f, 0.8f, 0.8f});
+  check_aligned(scene_of(40, 32, {a, b}), 43, "canvas border");
+}
+
+TEST_CASE("gradient at vertices on pixel corners: a diamond and a triangle through lattice points") {
+  const Path a = filled(polygon({{20, 3}, {29, 12}, {20, 21}, {11, 12}}), {0.9f, 0.2f, 0.1f, 1});
+  const Path b = filled(polygon({{8, 14}, {30, 29}, {8, 29}}), {0.1f, 0.3f, 0.8f, 0.7f});
+  check_aligned(scene_of(40, 32, {a, b}), 47, "pixel corners");
+}
+
+TEST_CASE("gradient at stroke outlines on pixel boundaries: butt and square caps, miter corner") {
+  // Width 2 about integer centre lines: every outline edge lies on a pixel boundary.
+  Path a = stroked(polygon({{5, 6}, {30, 6}, {30, 26}}, false), 2, LineJoin::Miter, LineCap::Butt,
+                   {0.8f, 0.1f, 0.1f, 1});
+  Path b = stroked(polygon({{9, 12}, {9, 28}}, false), 2, LineJoin::Bevel, LineCap::Square,
+                   {0.1f, 0.3f, 0.8f, 0.7f});
+  check_aligned(scene_of(40, 32, {a, b}), 53, "strokes");
 }
 
 }  // TEST_SUITE

@@ -46,10 +46,11 @@ void ClRaster::init_backward() {
     cp_first_ = make(p.cp_first.size() * sizeof(int), p.cp_first.data());
     cp_entries_ = make(p.cp_entries.size() * sizeof(int), p.cp_entries.data());
 
-    // Local memory of the backward band: rows of accumulation, colour, transmittance and ∂L/∂a,
-    // the per-draw tape offsets, and the tape in what is left.
+    // Local memory of the backward band: rows of accumulation, colour, transmittance, the two
+    // one-sided ∂L/∂a and the boundary marks, the per-draw tape offsets, and the tape in what
+    // is left.
     const size_t rows_bytes = static_cast<size_t>(band_h_) *
-                              ((p.width + 2) * sizeof(float) + p.width * (16 + 4 + 4));
+                              ((p.width + 2) * sizeof(float) + p.width * (16 + 4 + 8 + 1));
     const size_t fixed = rows_bytes + std::max<size_t>(n_draws, 1) * sizeof(int);
     if (fixed + 16 * 1024 > local_budget_)
       throw Error("the backward pass needs " + std::to_string(fixed + 16 * 1024) +
@@ -67,7 +68,8 @@ void ClRaster::init_backward() {
              cl::Local(static_cast<size_t>(band_h_) * (p.width + 2) * sizeof(float)),
              cl::Local(static_cast<size_t>(band_h_) * p.width * 4 * sizeof(float)),
              cl::Local(static_cast<size_t>(band_h_) * p.width * sizeof(float)),
-             cl::Local(static_cast<size_t>(band_h_) * p.width * sizeof(float)),
+             cl::Local(static_cast<size_t>(band_h_) * p.width * 2 * sizeof(float)),
+             cl::Local(static_cast<size_t>(band_h_) * p.width),
              cl::Local(static_cast<size_t>(tape_cap_) * 4 * sizeof(float)), tape_cap_,
              cl::Local(std::max<size_t>(n_draws, 1) * sizeof(int)), partial_, overflow_,
              p.n_lines, n_chunks, n_draws, bands_, W, H);

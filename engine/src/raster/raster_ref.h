@@ -5,7 +5,10 @@
 // port of the kernel's accumulation: it computes each pixel's winding integral independently,
 // by clipping every closed contour to the pixel square (Sutherland-Hodgman) and taking the
 // signed area, which is slow and obviously right. Tests compare the kernels with these
-// functions under stated error bounds, and the gradient checks use them as the oracle.
+// functions under stated error bounds, and the gradient checks use them as the oracle: central
+// differences of this forward pass. At an edge lying exactly on a pixel boundary, where the
+// loss has a kink, those converge to the mean of the one-sided derivatives, which is what
+// kernels/raster_backward.cl computes there; so the oracle needs no gradient code of its own.
 #pragma once
 
 #include <vector>
