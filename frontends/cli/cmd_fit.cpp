@@ -22,7 +22,7 @@ extern "C" void on_sigint(int) { g_interrupted = 1; }
 int cmd_fit(const std::vector<std::string>& argv) {
   const Args a = parse_args("fit", argv,
                             {"--target", "-o", "--output", "--iterations", "--keyframes", "--size",
-                             "--palette", "--device", "--mask-threshold", "--loop", "--deform"},
+                             "--palette", "--device", "--mask-threshold", "--loop", "--deform", "--precision"},
                             {"--resume", "--no-track", "--quiet", "--no-gate"});
   if (a.positional.size() != 1)
     throw Error("fit: expected one input SVG (svgmotion fit IN.svg --target VIDEO -o OUT_DIR)");
@@ -43,6 +43,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
   if (deform == "free") job.options.use_free_offsets();
   else if (deform != "field") throw Error("fit: --deform must be field or free, not '" + deform + "'");
   job.gate = !a.has("--no-gate");
+  job.decimals = a.get_int("--precision", kDefaultDecimals, 0, kMaxDecimals);
   if (const auto p = a.get("--palette")) job.palette = *p;
   job.mask_threshold = a.get_double("--mask-threshold", job.mask_threshold);
   job.resume = a.has("--resume");
