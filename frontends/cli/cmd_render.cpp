@@ -67,8 +67,8 @@ int cmd_render(const std::vector<std::string>& argv) {
   if (a.has("--strict") && !scene.warnings.empty())
     throw Error(input + ": warnings are errors under --strict");
 
-  ClRuntime rt(a.get("--device").value_or("auto"));
   if (still) {
+    ClRuntime rt(a.get("--device").value_or("auto"));
     const RgbaImage img = render_image(rt, scene, width, transparent);
     write_png(*out, img);
     std::fprintf(stderr, "svgmotion: wrote %s (%dx%d)\n", out->c_str(), img.width, img.height);
@@ -82,6 +82,7 @@ int cmd_render(const std::vector<std::string>& argv) {
   const SmilClock clock = smil_clock(text, input);
   if (clock.animations == 0)
     throw Error(input + ": no SMIL animation (<animate> with a dur) to make a clip of; render a still with -o OUT.png");
+  ClRuntime rt(a.get("--device").value_or("auto"));
   const double exact = clock.duration_s * fps;
   if (!(exact < kMaxClipFrames)) throw Error(input + ": the animation is too long for a clip at this frame rate");
   const int frames = std::max(1, static_cast<int>(std::lround(exact))) + (clock.repeats ? 0 : 1);

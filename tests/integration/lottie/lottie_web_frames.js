@@ -9,11 +9,12 @@ const fs = require('fs');
 const path = require('path');
 
 async function main() {
-  const [nodeModules, animation, w, h, prefix, renderer, ...frames] = process.argv.slice(2);
+  const [modulesArg, animation, w, h, prefix, renderer, ...frames] = process.argv.slice(2);
   if (!frames.length || !['svg', 'canvas'].includes(renderer)) {
     throw new Error('usage: node lottie_web_frames.js NODE_MODULES ANIMATION.json WIDTH HEIGHT OUT_PREFIX svg|canvas FRAME...');
   }
   const width = Number(w), height = Number(h);
+  const nodeModules = path.resolve(modulesArg || '.');
   const puppeteer = require(path.join(nodeModules, 'puppeteer-core'));
   const player = path.join(nodeModules, 'lottie-web', 'build', 'player', 'lottie.min.js');
   const data = JSON.parse(fs.readFileSync(animation, 'utf8'));
