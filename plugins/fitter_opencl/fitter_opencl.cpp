@@ -39,6 +39,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   job.loop = svgm::parse_loop_mode(c.value("loop", "loop"), "stages.fitter.loop");
   job.gate = c.value("gate", true);
   job.decimals = c.value("precision", svgm::kDefaultDecimals);
+  job.inbetweens = c.value("inbetweens", job.inbetweens);
   job.quiet = true;
   job.resume_unfinished = true;  // after Ctrl-C, the next run goes on where this one stopped
   job.progress = [host](double f, const std::string& note) {

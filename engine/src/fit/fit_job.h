@@ -27,6 +27,9 @@
 
 namespace svgm {
 
+// More in-betweens than this add nothing a viewer sees (targets have a few frames per keyframe).
+constexpr int kMaxInbetweens = 16;
+
 struct FitJob {
   std::filesystem::path svg, target, out;
   std::optional<std::filesystem::path> palette;
@@ -39,7 +42,7 @@ struct FitJob {
   LoopMode loop = LoopMode::Loop;
   // Smooth in-between shapes written per keyframe interval, at the target's frames there
   // (inbetween.h); 0 leaves the in-betweens to the browser's linear interpolation.
-  int inbetweens = 3;
+  int inbetweens = 3;  // fit --inbetweens, stages.fitter.inbetweens (0..kMaxInbetweens)
   // Decimal places of the exported coordinates (animation.svg in the element's units,
   // animation.json in canvas pixels).
   int decimals = kDefaultDecimals;
