@@ -14,6 +14,12 @@ packages=(
   libeigen3-dev libpugixml-dev libopencv-dev libyaml-cpp-dev
   libpng-dev doctest-dev nlohmann-json3-dev libcurl4-openssl-dev
 )
+# Test-only: ffprobe for clip checks, the two Lottie players the export is checked in
+# (Chromium for lottie-web, librlottie), node and npm for lottie-web (tests/integration/export_test.sh).
+if [[ $mode == test ]]; then
+  packages+=(ffmpeg chromium librlottie-dev)
+  command -v node >/dev/null && command -v npm >/dev/null || packages+=(nodejs npm)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -37,6 +43,11 @@ if [[ $mode == example ]]; then
   echo "setup: the animated example is $(pwd)/build/example/animation.svg" \
        "(open it in a browser; preview.mp4 shows target | fit)"
 else
+  # lottie-web and puppeteer-core (pinned in tests/integration/lottie/package.json) go into
+  # build/npm, never into the repository.
+  mkdir -p build/npm
+  cp tests/integration/lottie/package.json build/npm/package.json
+  (cd build/npm && npm install --no-audit --no-fund --no-package-lock --loglevel=error >/dev/null)
   # Tests share the one OpenCL device; two at a time keeps both cores busy.
   ctest --test-dir build --output-on-failure -j 2
 fi

@@ -22,7 +22,8 @@ extern "C" void on_sigint(int) { g_interrupted = 1; }
 int cmd_fit(const std::vector<std::string>& argv) {
   const Args a = parse_args("fit", argv,
                             {"--target", "-o", "--output", "--iterations", "--keyframes", "--size",
-                             "--palette", "--device", "--mask-threshold", "--loop", "--deform", "--refine-size"},
+                             "--palette", "--device", "--mask-threshold", "--loop", "--deform", "--refine-size",
+                             "--precision", "--inbetweens"},
                             {"--resume", "--no-track", "--quiet", "--no-gate", "--no-colour-correction"});
   if (a.positional.size() != 1)
     throw Error("fit: expected one input SVG (svgmotion fit IN.svg --target VIDEO -o OUT_DIR)");
@@ -46,6 +47,8 @@ int cmd_fit(const std::vector<std::string>& argv) {
   else if (deform != "field") throw Error("fit: --deform must be field or free, not '" + deform + "'");
   job.gate = !a.has("--no-gate");
   job.colour_correction = !a.has("--no-colour-correction");
+  job.decimals = a.get_int("--precision", kDefaultDecimals, 0, kMaxDecimals);
+  job.inbetweens = a.get_int("--inbetweens", job.inbetweens, 0, kMaxInbetweens);
   if (const auto p = a.get("--palette")) job.palette = *p;
   job.mask_threshold = a.get_double("--mask-threshold", job.mask_threshold);
   job.resume = a.has("--resume");

@@ -1,48 +1,62 @@
-// `svgmotion render`: rasterise an SVG to a PNG through the OpenCL renderer.
+// `svgmotion render`: rasterise an SVG to a PNG through the OpenCL renderer, or an animated SVG
+// to a clip (mp4, webm, gif or a numbered PNG sequence) of its whole animation.
 //
-// The output format follows the extension: .png is written; any other (.svg, .jpg, none) is
-// refused before anything is read, and the output may never be the input file itself (the
-// same file under another name or through a link included).
+// The output format follows the extension (export/clip_writer.h); any other is refused before
+// anything is read, and the output may never be the input file itself (the same file under
+// another name or through a link included). A clip's frame at time T is exactly what
+// `render --time T` draws (raster/render_image.h), so frames and stills agree.
 #include <algorithm>
-#include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 #include "cli/cli_args.h"
 #include "cli/commands.h"
+#include "export/clip_writer.h"
+#include "export/smil_clock.h"
 #include "opencl/runtime.h"
-#include "raster/raster_cl.h"
-#include "raster/raster_plan.h"
+#include "raster/render_image.h"
 #include "svgmotion/error.h"
 #include "svgmotion/png_io.h"
-#include "svgmotion/render_size.h"
 #include "svgmotion/svg_reader.h"
 
 namespace svgm::cli {
 
+namespace {
+
+constexpr double kDefaultFps = 30;    // a common video rate; the fitter's targets are 24-30
+constexpr double kMaxFps = 240;       // beyond any display
+constexpr int kMaxClipFrames = 100000;  // about an hour at 30 fps: a mistake, not a clip
+
+}  // namespace
+
 int cmd_render(const std::vector<std::string>& argv) {
   const Args a = parse_args("render", argv,
-                            {"-o", "--output", "--size", "--background", "--device", "--time"},
+                            {"-o", "--output", "--size", "--background", "--device", "--time", "--fps"},
                             {"--strict"});
   if (a.positional.size() != 1)
     throw Error("render: expected one input SVG (svgmotion render IN.svg -o OUT.png)");
   const std::string input = a.positional[0];
   const auto out = a.get("-o") ? a.get("-o") : a.get("--output");
   if (!out || out->empty()) throw Error("render: missing -o OUT.png");
-  {
-    std::error_code ec;
-    if (std::filesystem::equivalent(input, *out, ec))
-      throw Error(*out + ": is the input file; choose another output name");
-    std::string ext = std::filesystem::path(*out).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (ext != ".png")
-      throw Error(*out + ": render writes PNG images only; name the output with a .png extension" +
-                  (ext.empty() ? std::string() : " (not " + ext + ")"));
-  }
+  std::error_code ec;
+  if (std::filesystem::equivalent(input, *out, ec))
+    throw Error(*out + ": is the input file; choose another output name");
+  const ClipFormat format = clip_format(*out);
+  const bool still = format == ClipFormat::Still;
   const std::string bg = a.get("--background").value_or("white");
   if (bg != "white" && bg != "transparent")
     throw Error("render: --background must be white or transparent, got '" + bg + "'");
+  const bool transparent = bg == "transparent";
   const int width = a.get_int("--size", 0, 1, 16384);
+  if (!still && a.has("--time"))
+    throw Error("render: --time is for a still image; a clip (" + *out + ") shows the whole animation");
+  if (still && a.has("--fps")) throw Error("render: --fps is for clips (.mp4, .webm, .gif, frames/%04d.png)");
+  const double fps = a.get_double("--fps", kDefaultFps);
+  if (!(fps > 0 && fps <= kMaxFps)) throw Error("render: --fps wants a frame rate in (0, 240]");
+  if (transparent && !still && format != ClipFormat::Sequence)
+    throw Error("render: --background transparent needs PNG output; mp4, webm and gif clips are drawn over white");
 
   SvgReadLimits read_options;
   read_options.animation_time = a.get_double("--time", -1);
@@ -52,17 +66,37 @@ int cmd_render(const std::vector<std::string>& argv) {
   for (const auto& w : scene.warnings) std::fprintf(stderr, "svgmotion: warning: %s\n", w.c_str());
   if (a.has("--strict") && !scene.warnings.empty())
     throw Error(input + ": warnings are errors under --strict");
-  const RenderSize size = render_size(scene, width);
-  const RasterPlan plan = plan_raster(scene, size.view, size.width, size.height);
 
+  if (still) {
+    ClRuntime rt(a.get("--device").value_or("auto"));
+    const RgbaImage img = render_image(rt, scene, width, transparent);
+    write_png(*out, img);
+    std::fprintf(stderr, "svgmotion: wrote %s (%dx%d)\n", out->c_str(), img.width, img.height);
+    return 0;
+  }
+
+  // A clip: one pass of the animation (a loop's frame at the full duration is its first, so it
+  // is left out and the clip loops cleanly; an animation that plays once ends on its last pose).
+  std::ifstream in(input, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const SmilClock clock = smil_clock(text, input);
+  if (clock.animations == 0)
+    throw Error(input + ": no SMIL animation (<animate> with a dur) to make a clip of; render a still with -o OUT.png");
   ClRuntime rt(a.get("--device").value_or("auto"));
-  ClRaster raster(rt, plan, 1);
-  raster.set_rest_pose();
-  const std::array<float, 4> white{1, 1, 1, 1}, clear{0, 0, 0, 0};
-  raster.forward(ClRaster::Output::Rgba8, bg == "white" ? white : clear);
-  RgbaImage img{size.width, size.height, raster.read_rgba8()};
-  write_png(*out, img);
-  std::fprintf(stderr, "svgmotion: wrote %s (%dx%d)\n", out->c_str(), size.width, size.height);
+  const double exact = clock.duration_s * fps;
+  if (!(exact < kMaxClipFrames)) throw Error(input + ": the animation is too long for a clip at this frame rate");
+  const int frames = std::max(1, static_cast<int>(std::lround(exact))) + (clock.repeats ? 0 : 1);
+  int w = 0, h = 0;
+  write_clip(*out, format, frames, fps, clock.repeats, [&](int i) {
+    SvgReadLimits at;
+    at.animation_time = i / fps;
+    const RgbaImage img = render_image(rt, read_svg_string(text, input, at), width, transparent);
+    w = img.width;
+    h = img.height;
+    return img;
+  });
+  std::fprintf(stderr, "svgmotion: wrote %s (%d frames at %g fps, %.3g s, %dx%d%s)\n", out->c_str(), frames, fps,
+               frames / fps, w, h, clock.repeats ? ", loops" : "");
   return 0;
 }
 

@@ -22,6 +22,7 @@ usage:
   svgmotion fit IN.svg --target VIDEO|FRAMES_DIR -o OUT_DIR [options]
   svgmotion render IN.svg -o OUT.png [--size W] [--background white|transparent] [--time T]
                    [--device D] [--strict]
+  svgmotion render ANIMATION.svg -o CLIP.mp4|.webm|.gif|DIR/%04d.png [--fps F] [--size W]
   svgmotion plugins
   svgmotion devices
   svgmotion palette N
@@ -58,8 +59,8 @@ first stage runs.
   --quiet            no progress on stderr
   key.path=value     any setting, e.g. stages.fitter.iterations=500 stages.video.plugin=file
 
-Writes animation.svg (your own document, only `d` animated), preview.mp4, fit.json and every
-intermediate. Exit status 3: the fit was rejected (animation.failed.svg, reasons in fit.json);
+Writes animation.svg (your own document, only `d` animated), animation.json (Lottie),
+preview.mp4, fit.json and every intermediate. Exit status 3: the fit was rejected (animation.failed.svg, reasons in fit.json);
 4: every candidate video was flagged (set stages.ranker.accept_flagged=true to fit anyway);
 130: interrupted (run again to continue).
 )"},
@@ -68,7 +69,8 @@ intermediate. Exit status 3: the fit was rejected (animation.failed.svg, reasons
 Fits the SVG's paths to a target video (mp4, webm, avi, mov, or a folder of numbered PNGs).
 
   --target SOURCE        the target video or folder of PNG frames (required)
-  -o, --output DIR       where animation.svg, preview.mp4, fit.json, checkpoint.bin go (required)
+  -o, --output DIR       where animation.svg, animation.json (Lottie), preview.mp4, fit.json,
+                         checkpoint.bin go (required)
   --iterations N         optimiser iterations (default 2000)
   --keyframes K          keyframes sampled from the target (default 15)
   --size N               fitting width in pixels (default 256; 32..4096)
@@ -78,6 +80,9 @@ Fits the SVG's paths to a target video (mp4, webm, avi, mov, or a folder of numb
                          once, or mirror
   --deform D             field (default: a smooth displacement field per part, so thin parts
                          hold together at any size) or free (the paper's per-point offsets)
+  --precision P          decimal places of the exported coordinates (default 3; 0..6)
+  --inbetweens N         smooth in-between shapes per keyframe interval (default 3; 0..16;
+                         0 leaves them to the player's straight lines: smallest files)
   --no-gate              write animation.svg even when the result gate rejects the fit
   --resume               continue from OUT_DIR/checkpoint.bin
   --no-track             no optical-flow warm start of new keyframes
@@ -88,11 +93,14 @@ Exit status 3 when the result gate rejects the fit (animation.failed.svg is writ
 animation.svg; fit.json has the reasons); 130 after Ctrl-C (the result so far is written).
 )"},
     {"render", R"(usage: svgmotion render IN.svg -o OUT.png [options]
+       svgmotion render ANIMATION.svg -o CLIP.mp4|.webm|.gif|DIR/%04d.png [options]
 
-Renders the SVG (an animated one at --time T) to a PNG; the format follows OUT's extension
-(only .png can be written) and OUT may not be the input.
+Renders the SVG (an animated one at --time T) to a PNG, or one pass of its SMIL animation to a
+clip: an mp4 (H.264), a WebM (VP9), a GIF, or numbered PNG frames (frame i at i/F seconds).
+The format follows OUT's extension, and OUT may not be the input.
 
-  -o, --output OUT.png     the image to write (required)
+  -o, --output OUT         the image or clip to write (required)
+  --fps F                  clip frame rate (default 30)
   --size W                 width in pixels (default: the SVG's own; height by its aspect)
   --background B           white (default) or transparent
   --time T                 seconds into the SMIL animation

@@ -2,8 +2,8 @@
 // layered.svg (the working copy) to target.mp4 (in the palette's colours, or the SVG's own for a
 // user's video, see stages.fitter.colors) and writes animation.svg into the user's own document
 // (input.svg: every element, id, style, gradient, comment and root attribute kept, only `d`
-// animated, the layers stage's paint order applied by moving just the elements it must),
-// preview.mp4, fit.json and checkpoint.bin. A fit the result gate rejects answers
+// animated, the layers stage's paint order applied by moving just the elements it must), the
+// same animation as Lottie (animation.json), preview.mp4, fit.json and checkpoint.bin. A fit the result gate rejects answers
 // "rejected": 3 (svgm::Rejected) with animation.failed.svg written instead.
 #include "common/plugin_glue.h"
 #include "fit/fit_job.h"
@@ -40,6 +40,8 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   else if (deform != "field") throw std::runtime_error("stages.fitter.deform must be field or free, not '" + deform + "'");
   job.loop = svgm::parse_loop_mode(c.value("loop", "loop"), "stages.fitter.loop");
   job.gate = c.value("gate", true);
+  job.decimals = c.value("precision", svgm::kDefaultDecimals);
+  job.inbetweens = c.value("inbetweens", job.inbetweens);
   job.quiet = true;
   job.resume_unfinished = true;  // after Ctrl-C, the next run goes on where this one stopped
   job.progress = [host](double f, const std::string& note) {

@@ -129,6 +129,7 @@ pipeline)
        stages.fitter.iterations=30 stages.fitter.keyframes=3 stages.fitter.size=64)
   "${run[@]}" >"$tmp/out1" 2>"$tmp/err"
   check "run writes animation.svg and every intermediate" '[[ -s $tmp/run/animation.svg && -s $tmp/run/grouped.svg && -s $tmp/run/recolored.png && -s $tmp/run/palette.json && -s $tmp/run/target.mp4 && -s $tmp/run/ranking.json && -s $tmp/run/layers.json ]] && grep -q "<animate attributeName=\"d\"" "$tmp/run/animation.svg"'
+  check "run writes animation.json (Lottie) with the user's own ids and groups" '[[ -s $tmp/run/animation.json ]] && grep -q "\"ty\":4,\"nm\":\"thigh_left\"" "$tmp/run/animation.json" && grep -q "\"ty\":3,\"nm\":\"body\"" "$tmp/run/animation.json"'
   "${run[@]}" >"$tmp/out2" 2>&1
   check "a second run reports every stage up to date" 'grep -q "every stage is up to date" "$tmp/out2" && [[ $(grep -c "up to date" "$tmp/out2") -eq 8 ]]'
   "${run[@]}" --from fitter >"$tmp/out3" 2>&1

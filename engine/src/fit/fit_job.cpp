@@ -14,6 +14,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "export/lottie_writer.h"
 #include "fit/checkpoint.h"
 #include "fit/document_order.h"
 #include "fit/inbetween.h"
@@ -150,7 +151,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   if (ec) throw Error(out.string() + ": cannot create: " + ec.message());
   // Refuse an unwritable folder or a non-file output now, not after minutes of fitting.
   if (::access(out.c_str(), W_OK | X_OK) != 0) throw Error(out.string() + ": cannot write there (permission denied)");
-  for (const char* f : {"animation.svg", "animation.failed.svg", "preview.mp4", "fit.json", "checkpoint.bin"})
+  for (const char* f : {"animation.svg", "animation.failed.svg", "animation.json", "animation.failed.json",
+                        "preview.mp4", "fit.json", "checkpoint.bin"})
     output_target(out / f);
   // Coarse-to-fine: which width the last share of the iterations refines at, if any.
   int refine_w = job.refine_width;
@@ -320,6 +322,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   const fs::path anim = out / (rejected && job.gate ? "animation.failed.svg" : "animation.svg");
   if (rejected && job.gate) fs::remove(out / "animation.svg", ec);  // never leave a stale success
   else fs::remove(out / "animation.failed.svg", ec);
+  fs::remove(out / (rejected && job.gate ? "animation.json" : "animation.failed.json"), ec);
   // What is written: the keyframes (a closed loop's last one is its first) and smooth
   // in-betweens at the target's frames between them (inbetween.h).
   const size_t per_key = static_cast<size_t>(final_fit.raster_plan().n_cp) * 2;
@@ -332,12 +335,17 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   wt.key_times = written.times;
   wt.close_loop = false;  // in_between already wrote the first keyframe's shape last
   for (const auto& w : write_animation_svg(into, export_scene ? *export_scene : scene, final_fit.raster_plan(), written.points,
-                                           wt, anim, export_scene ? &map : nullptr)) {
+                                           wt, anim, export_scene ? &map : nullptr, job.decimals)) {
     std::string line = w;
     if (!job.export_name.empty() && line.rfind(into.string(), 0) == 0)
       line = job.export_name + line.substr(into.string().size());
     std::fprintf(stderr, "svgmotion: warning: %s\n", line.c_str());
   }
+  // The same values as Lottie, beside it (animation.json, or animation.failed.json).
+  const LottieOptions lottie{final_target.fps, job.decimals, into.filename().string()};
+  for (const auto& w : write_lottie(fs::path(anim).replace_extension(".json"), export_scene ? *export_scene : scene,
+                                    final_fit.raster_plan(), written.points, wt, lottie, export_scene ? &map : nullptr))
+    std::fprintf(stderr, "svgmotion: warning: %s\n", w.c_str());
   const int active = final_fit.active_keyframes();
   const int W = final_size.width, H = final_size.height;
   write_preview_video(out / "preview.mp4", active, 2,
@@ -385,7 +393,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     std::fprintf(stderr, "svgmotion: warning: the result gate would reject this fit: %s\n", why.c_str());
   }
   if (!job.quiet)
-    std::fprintf(stderr, "svgmotion: fitted %d keyframes in %.1fs; wrote %s, preview.mp4, fit.json\n",
+    std::fprintf(stderr, "svgmotion: fitted %d keyframes in %.1fs; wrote %s, animation.json, preview.mp4, fit.json\n",
                  final_fit.keyframes(), seconds, anim.c_str());
   return 0;
 }

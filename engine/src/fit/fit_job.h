@@ -1,7 +1,8 @@
 // One fit from files to files: the body of `svgmotion fit` and of the opencl fitter plugin.
 //
 // Reads the SVG (and palette), loads the target, fits with progress and checkpoints, and writes
-// animation.svg, preview.mp4, fit.json and checkpoint.bin into the output folder.
+// animation.svg, animation.json (the same animation as Lottie, export/lottie_writer.h),
+// preview.mp4, fit.json and checkpoint.bin into the output folder.
 //
 // Trust: a loss that diverges (not finite, or above ten times the best seen since the last
 // keyframe activation for 50 iterations in a row) rolls back to the last good state and goes on at half the learning rates (at most
@@ -26,6 +27,9 @@
 
 namespace svgm {
 
+// More in-betweens than this add nothing a viewer sees (targets have a few frames per keyframe).
+constexpr int kMaxInbetweens = 16;
+
 struct FitJob {
   std::filesystem::path svg, target, out;
   std::optional<std::filesystem::path> palette;
@@ -38,7 +42,10 @@ struct FitJob {
   LoopMode loop = LoopMode::Loop;
   // Smooth in-between shapes written per keyframe interval, at the target's frames there
   // (inbetween.h); 0 leaves the in-betweens to the browser's linear interpolation.
-  int inbetweens = 3;
+  int inbetweens = 3;  // fit --inbetweens, stages.fitter.inbetweens (0..kMaxInbetweens)
+  // Decimal places of the exported coordinates (animation.svg in the element's units,
+  // animation.json in canvas pixels).
+  int decimals = kDefaultDecimals;
   bool gate = true;  // false: write animation.svg even when the result gate rejects the fit
   // Progress: when set, called about twice a second with the fraction done and a short note,
   // instead of the progress line on stderr.

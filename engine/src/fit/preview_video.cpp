@@ -7,6 +7,8 @@
 #include <opencv2/videoio/registry.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -86,8 +88,11 @@ void write_preview_video(const fs::path& file, int frames, int panels,
   // The rename must not replace a device or FIFO; a symlink is written through (atomic_file.h).
   const fs::path target = output_target(file);
   const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  // The extension picks FFmpeg's container, so the temporary name keeps ".mp4".
-  tmp.path = dir / ("." + target.filename().string() + ".part" + std::to_string(::getpid()) + ".mp4");
+  // The extension picks FFmpeg's container, so the temporary name keeps ".mp4" (or ".webm").
+  std::string ext = target.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const bool webm = ext == ".webm";
+  tmp.path = dir / ("." + target.filename().string() + ".part" + std::to_string(::getpid()) + (webm ? ".webm" : ".mp4"));
 
   for (int k = 0; k < frames; ++k) {
     std::vector<RgbaImage> row;
@@ -121,7 +126,10 @@ void write_preview_video(const fs::path& file, int frames, int panels,
       const cv::Size size(width + width % 2, height + height % 2);
       const auto api =
           cv::videoio_registry::hasBackend(cv::CAP_FFMPEG) ? cv::CAP_FFMPEG : cv::CAP_ANY;
-      for (const char* cc : {"avc1", "mp4v"}) {
+      // WebM holds VP9 or VP8; mp4 H.264, else MPEG-4 Part 2.
+      const std::array<const char*, 2> codecs = webm ? std::array<const char*, 2>{"VP90", "VP80"}
+                                                     : std::array<const char*, 2>{"avc1", "mp4v"};
+      for (const char* cc : codecs) {
         try {
           writer.open(tmp.path.string(), api, cv::VideoWriter::fourcc(cc[0], cc[1], cc[2], cc[3]),
                       fps, size);
@@ -134,7 +142,8 @@ void write_preview_video(const fs::path& file, int frames, int panels,
         std::error_code ec;
         if (!fs::is_directory(dir, ec))
           fail(file, "cannot write: " + std::generic_category().message(ENOENT));
-        fail(file, "cannot write: no H.264 (avc1) or MPEG-4 (mp4v) video encoder could be opened");
+        fail(file, webm ? "cannot write: no VP9 or VP8 video encoder could be opened"
+                        : "cannot write: no H.264 (avc1) or MPEG-4 (mp4v) video encoder could be opened");
       }
       canvas.create(size, CV_8UC3);
     }

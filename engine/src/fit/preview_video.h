@@ -21,7 +21,7 @@ namespace svgm {
 using PreviewPanelFn = std::function<RgbaImage(int frame, int panel)>;
 
 // Writes `frames` frames at `fps` to `file` as an mp4: H.264 (fourcc avc1), or MPEG-4 Part 2
-// (mp4v) when no H.264 encoder can be opened. Odd frame sizes are padded with white on the
+// (mp4v) when no H.264 encoder can be opened; a file named .webm gets VP9 (else VP8) in WebM. Odd frame sizes are padded with white on the
 // right/bottom to even ones (4:2:0 chroma needs them; encoders would crop instead). Written to
 // a hidden temporary name in the same folder and renamed, so a failure never leaves a partial
 // file. Throws svgm::Error "<file>: <problem>".

@@ -21,8 +21,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Coordinates rounded to 1/1000 unit: compact, and well below a pixel at any sensible size.
-void append_number(std::string& s, double v) { svg::append_rounded(s, v, 1000.0); }
+void append_number(std::string& s, double v, int decimals) {
+  svg::append_rounded(s, v, std::pow(10.0, decimals));
+}
 
 std::string_view local_name(const char* name) {
   const char* colon = std::strchr(name, ':');
@@ -64,7 +65,27 @@ const char* loop_mode_name(LoopMode m) {
   return "loop";
 }
 
-std::string path_data(const Path& path, const double* cp, const Affine& to_local) {
+AnimationPass animation_pass(const AnimationTiming& timing) {
+  const int K = timing.keyframes;
+  AnimationPass pass;
+  for (int k = 0; k < K; ++k) {
+    pass.seq.push_back(timing.close_loop && K > 1 && k == K - 1 ? 0 : k);
+    pass.times.push_back(!timing.key_times.empty() ? timing.key_times[static_cast<size_t>(k)]
+                         : K > 1 ? static_cast<double>(k) / (K - 1) : 0.0);
+  }
+  pass.duration_s = timing.duration_s;
+  if (timing.loop == LoopMode::Mirror && K > 1) {
+    for (int k = K - 2; k >= 0; --k) {
+      pass.seq.push_back(pass.seq[static_cast<size_t>(k)]);
+      pass.times.push_back(2.0 - pass.times[static_cast<size_t>(k)]);
+    }
+    for (double& t : pass.times) t /= 2;
+    pass.duration_s *= 2;
+  }
+  return pass;
+}
+
+std::string path_data(const Path& path, const double* cp, const Affine& to_local, int decimals) {
   std::string d;
   for (const Subpath& sp : path.subpaths) {
     if (sp.points.empty()) continue;
@@ -73,9 +94,9 @@ std::string path_data(const Path& path, const double* cp, const Affine& to_local
       if (i == 0) d += d.empty() ? "M" : " M";
       else if (i % 3 == 1) d += " C";
       d += ' ';
-      append_number(d, q.x);
+      append_number(d, q.x, decimals);
       d += ' ';
-      append_number(d, q.y);
+      append_number(d, q.y, decimals);
     }
     if (sp.closed) d += " Z";
     cp += 2 * sp.points.size();
@@ -87,8 +108,9 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
                                              const RasterPlan& plan,
                                              const std::vector<double>& points,
                                              const AnimationTiming& timing, const fs::path& out,
-                                             const ExportMap* map) {
+                                             const ExportMap* map, int decimals) {
   const int K = timing.keyframes;
+  if (decimals < 0 || decimals > kMaxDecimals) throw Error("internal: export precision out of range");
   if (K < 1 || points.size() != static_cast<size_t>(K) * plan.n_cp * 2)
     throw Error("internal: animation points do not match the plan");
   if (!timing.key_times.empty() && timing.key_times.size() != static_cast<size_t>(K))
@@ -103,24 +125,10 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
   if (!parsed) throw Error(source.string() + ": cannot re-read for export: " + parsed.description());
   const ptrdiff_t root_name_at = doc.document_element().offset_debug();
 
-  // The pass as keyframe indices and times: 0..K-1 (mirror: and back to 0, at twice the
-  // duration). A closed loop writes keyframe 0's shape in the last keyframe's place.
-  std::vector<int> seq;
-  std::vector<double> times;
-  for (int k = 0; k < K; ++k) {
-    seq.push_back(timing.close_loop && K > 1 && k == K - 1 ? 0 : k);
-    times.push_back(!timing.key_times.empty() ? timing.key_times[static_cast<size_t>(k)]
-                    : K > 1 ? static_cast<double>(k) / (K - 1) : 0.0);
-  }
-  double duration = timing.duration_s;
-  if (timing.loop == LoopMode::Mirror && K > 1) {
-    for (int k = K - 2; k >= 0; --k) {
-      seq.push_back(seq[static_cast<size_t>(k)]);
-      times.push_back(2.0 - times[static_cast<size_t>(k)]);
-    }
-    for (double& t : times) t /= 2;
-    duration *= 2;
-  }
+  const AnimationPass pass = animation_pass(timing);
+  const std::vector<int>& seq = pass.seq;
+  const std::vector<double>& times = pass.times;
+  const double duration = pass.duration_s;
   std::string key_times;
   for (size_t i = 0; i < times.size(); ++i) {
     if (i) key_times += ';';
@@ -157,14 +165,14 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
     std::string values;
     for (size_t i = 0; i < seq.size(); ++i) {
       if (i) values += ';';
-      values += path_data(path, &points[(static_cast<size_t>(seq[i]) * plan.n_cp + first) * 2], to_local);
+      values += path_data(path, &points[(static_cast<size_t>(seq[i]) * plan.n_cp + first) * 2], to_local, decimals);
     }
     if (tag != "path") {
       // Only <path> has a `d`: turn the shape into one, keeping id, paint and transform.
       for (const char* a : kShapeGeometry) el.remove_attribute(a);
       const std::string prefix(el.name(), el.name() + (std::strlen(el.name()) - tag.size()));
       el.set_name((prefix + "path").c_str());
-      el.append_attribute("d") = path_data(path, &points[first * 2], to_local).c_str();
+      el.append_attribute("d") = path_data(path, &points[first * 2], to_local, decimals).c_str();
     }
     for (pugi::xml_node a = el.child("animate"); a;) {  // replace an earlier fit's animation
       pugi::xml_node next = a.next_sibling("animate");

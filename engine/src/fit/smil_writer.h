@@ -17,6 +17,12 @@ enum class LoopMode { Loop, Once, Mirror };
 LoopMode parse_loop_mode(const std::string& text, const std::string& what);
 const char* loop_mode_name(LoopMode m);
 
+// Decimal places of the exported coordinates (stages.fitter.precision, fit --precision): 3 is
+// 1/1000 of a user unit, well below a pixel at any sensible size; fewer make smaller files
+// (1/100 of a unit is still a hundredth of a pixel in a drawing whose unit is a pixel).
+constexpr int kDefaultDecimals = 3;
+constexpr int kMaxDecimals = 6;  // beyond a float's precision for coordinates of thousands
+
 struct AnimationTiming {
   int keyframes = 0;
   // The time of each keyframe as a fraction of one pass, from 0 to 1 and increasing: the times
@@ -28,6 +34,17 @@ struct AnimationTiming {
   // restarts without a jump.
   bool close_loop = false;
 };
+
+// One pass of the animation as written: the keyframe shown at each value (seq, indices into the
+// keyframes), its time as a fraction of the pass (times, 0 to 1, increasing) and the pass's
+// length. 0..K-1 (a closed loop shows keyframe 0's shape in the last place); a mirror goes on
+// back to 0 over twice the duration. Every exporter (SMIL, Lottie) writes this same pass.
+struct AnimationPass {
+  std::vector<int> seq;
+  std::vector<double> times;
+  double duration_s = 0;
+};
+AnimationPass animation_pass(const AnimationTiming& timing);
 
 // How the fitted paths map onto the document written into (when it is not the fitted SVG
 // itself): fitted_of[i] is the fitted path (index into the plan's paths) drawn by the
@@ -46,16 +63,20 @@ struct ExportMap {
 // transform, since only paths have a `d`. Shapes drawn through <use> are left static (they
 // are shared) and listed in the returned warnings. `points` holds K * plan.n_cp canvas-space
 // (x, y) pairs (Fitter::keyframe_points_canvas). `scene` is `source` as read; without a `map`
-// it is also the fitted scene. Written to a temporary name and renamed.
+// it is also the fitted scene. Coordinates are rounded to `decimals` places (0..kMaxDecimals).
+// Written to a temporary name and renamed.
 std::vector<std::string> write_animation_svg(const std::filesystem::path& source,
                                              const Scene& scene, const RasterPlan& plan,
                                              const std::vector<double>& points,
                                              const AnimationTiming& timing,
                                              const std::filesystem::path& out,
-                                             const ExportMap* map = nullptr);
+                                             const ExportMap* map = nullptr,
+                                             int decimals = kDefaultDecimals);
 
 // The `d` of one path from its control points (canvas space), mapped into the element's
-// coordinates by `to_local`: "M x y C x y x y x y ... Z" per subpath.
-std::string path_data(const Path& path, const double* cp, const Affine& to_local);
+// coordinates by `to_local`: "M x y C x y x y x y ... Z" per subpath, numbers rounded to
+// `decimals` places.
+std::string path_data(const Path& path, const double* cp, const Affine& to_local,
+                      int decimals = kDefaultDecimals);
 
 }  // namespace svgm

@@ -34,7 +34,7 @@ const std::vector<StageFiles>& stage_files() {
       {"fitter",
        {{"svg", "layered.svg"}, {"target", "target.mp4"}, {"palette", "palette.json"}, {"tracks", "tracks.json"},
         {"original", "input.svg"}},
-       {{"animation", "animation.svg"}, {"preview", "preview.mp4"}, {"report", "fit.json"}}},
+       {{"animation", "animation.svg"}, {"lottie", "animation.json"}, {"preview", "preview.mp4"}, {"report", "fit.json"}}},
   };
   return s;
 }

@@ -87,6 +87,23 @@ bool spells_non_finite(std::string_view s) {
   return low.find("nan") != std::string::npos || low.find("inf") != std::string::npos;
 }
 
+std::optional<double> parse_clock_value(std::string_view s) {
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\n' || s.back() == '\r')) s.remove_suffix(1);
+  double scale = 1;
+  auto strip = [&](std::string_view unit, double factor) {
+    if (s.size() > unit.size() && s.substr(s.size() - unit.size()) == unit) {
+      s.remove_suffix(unit.size());
+      scale = factor;
+      return true;
+    }
+    return false;
+  };
+  strip("ms", 1e-3) || strip("min", 60) || strip("h", 3600) || strip("s", 1);
+  const auto v = parse_number(s);
+  if (!v) return std::nullopt;
+  return *v * scale;
+}
+
 void append_rounded(std::string& s, double v, double scale) {
   if (std::fabs(v) < 1e9) v = std::round(v * scale) / scale;
   if (v == 0) v = 0;  // no "-0"

@@ -31,6 +31,10 @@ std::optional<double> parse_number(std::string_view s, bool* out_of_range = null
 // malformed rather than merely invalid.
 bool spells_non_finite(std::string_view s);
 
+// A SMIL clock value in seconds: "2.04s", "500ms", "1.5min", "0.5h" or a bare number of
+// seconds; nothing if it is not one.
+std::optional<double> parse_clock_value(std::string_view s);
+
 // Appends the shortest text that reads back as v rounded to 1/scale (no "-0"); values of
 // 1e9 and beyond are written unrounded. For writing SVG coordinates compactly.
 void append_rounded(std::string& s, double v, double scale);

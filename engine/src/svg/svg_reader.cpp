@@ -492,13 +492,7 @@ bool Reader::animated_path(pugi::xml_node n, double time, std::vector<Subpath>& 
     for (size_t i = 0; i < values.size(); ++i)
       times.push_back(values.size() > 1 ? static_cast<double>(i) / (values.size() - 1) : 0.0);
   }
-  // Clock value: "2.04s", "500ms", "1.5min", or a bare number of seconds.
-  std::string dur = anim.attribute("dur").value();
-  double seconds = 0, scale = 1;
-  if (dur.size() > 2 && dur.compare(dur.size() - 2, 2, "ms") == 0) { scale = 1e-3; dur.resize(dur.size() - 2); }
-  else if (dur.size() > 3 && dur.compare(dur.size() - 3, 3, "min") == 0) { scale = 60; dur.resize(dur.size() - 3); }
-  else if (!dur.empty() && dur.back() == 's') dur.pop_back();
-  if (const auto d = svg::parse_number(dur)) seconds = *d * scale;
+  const double seconds = svg::parse_clock_value(anim.attribute("dur").value()).value_or(0);
   if (!(seconds > 0)) return false;
   const std::string_view repeat = anim.attribute("repeatCount").value();
   double f = time / seconds;

@@ -1,0 +1,286 @@
+// The Lottie writer (see lottie_writer.h). The JSON is written as text rather than through a
+// JSON library's number formatting so that every coordinate carries exactly the decimals asked
+// for (the file's size is mostly these numbers).
+#include "export/lottie_writer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "svg/svg_number.h"
+#include "svgmotion/atomic_file.h"
+#include "svgmotion/error.h"
+
+namespace svgm {
+
+namespace {
+
+// The reader's warning for a gradient drawn with its mean stop colour (svg_reader.cpp,
+// resolve_paint): the scene keeps only that colour, so the export says so once.
+constexpr std::string_view kGradientWarning = "gradient paint drawn with its mean stop colour";
+// Colours are written to 1/10000 (far below one 8-bit level), opacities (0..100) to 1/100,
+// frame times to 1/1000 of a frame.
+constexpr double kColourScale = 1e4, kOpacityScale = 1e2, kFrameScale = 1e3;
+// Two on-curve points this close (canvas pixels) are the same point: a closed subpath that
+// returns exactly to its start is written without the zero-length closing segment.
+constexpr double kSamePoint = 1e-9;
+
+class JsonText {
+ public:
+  explicit JsonText(int decimals) : coord_scale_(std::pow(10.0, decimals)) {}
+  JsonText& raw(std::string_view t) {
+    s_ += t;
+    return *this;
+  }
+  JsonText& num(double v, double scale) {
+    svg::append_rounded(s_, v, scale);
+    return *this;
+  }
+  JsonText& coord(double v) { return num(v, coord_scale_); }
+  JsonText& str(const std::string& t) { return raw(nlohmann::json(t).dump()); }
+  // {"a":0,"k":v}
+  JsonText& fixed(double v, double scale) {
+    raw("{\"a\":0,\"k\":");
+    num(v, scale);
+    return raw("}");
+  }
+  std::string& text() { return s_; }
+
+ private:
+  std::string s_;
+  double coord_scale_;
+};
+
+// The identity transform of a layer after its opacity (3D vectors, as bodymovin writes them),
+// and a group's.
+constexpr std::string_view kLayerTransformAfterOpacity =
+    "\"r\":{\"a\":0,\"k\":0},\"p\":{\"a\":0,\"k\":[0,0,0]},\"a\":{\"a\":0,\"k\":[0,0,0]},"
+    "\"s\":{\"a\":0,\"k\":[100,100,100]}}";
+constexpr std::string_view kGroupTransform =
+    "{\"ty\":\"tr\",\"p\":{\"a\":0,\"k\":[0,0]},\"a\":{\"a\":0,\"k\":[0,0]},"
+    "\"s\":{\"a\":0,\"k\":[100,100]},\"r\":{\"a\":0,\"k\":0},\"o\":{\"a\":0,\"k\":100},"
+    "\"sk\":{\"a\":0,\"k\":0},\"sa\":{\"a\":0,\"k\":0}}";
+
+// One subpath's control points {p0, c1, c2, p1, ...} as a Lottie bezier: vertices with in and
+// out tangents relative to them. A closed subpath ends on its start (the reader adds the
+// closing line); `merge_close` drops that last vertex, folding its in-tangent into the first.
+void write_bezier(JsonText& j, const double* p, size_t n_points, bool closed, bool merge_close) {
+  const size_t n = (n_points - 1) / 3;  // segments
+  const size_t nv = merge_close ? n : n + 1;
+  auto x = [&](size_t i) { return p[2 * i]; };
+  auto y = [&](size_t i) { return p[2 * i + 1]; };
+  auto pair = [&](double a, double b) {
+    j.raw("[").coord(a).raw(",").coord(b).raw("]");
+  };
+  j.raw("{\"i\":[");
+  for (size_t v = 0; v < nv; ++v) {
+    if (v) j.raw(",");
+    const size_t at = 3 * v;
+    if (v > 0) pair(x(at - 1) - x(at), y(at - 1) - y(at));
+    else if (merge_close) pair(x(3 * n - 1) - x(0), y(3 * n - 1) - y(0));
+    else pair(0, 0);
+  }
+  j.raw("],\"o\":[");
+  for (size_t v = 0; v < nv; ++v) {
+    if (v) j.raw(",");
+    const size_t at = 3 * v;
+    if (v < n) pair(x(at + 1) - x(at), y(at + 1) - y(at));
+    else pair(0, 0);
+  }
+  j.raw("],\"v\":[");
+  for (size_t v = 0; v < nv; ++v) {
+    if (v) j.raw(",");
+    pair(x(3 * v), y(3 * v));
+  }
+  j.raw("],\"c\":").raw(closed ? "true" : "false").raw("}");
+}
+
+void write_colour(JsonText& j, const Rgba& c) {
+  j.raw("{\"a\":0,\"k\":[").num(c.r, kColourScale).raw(",").num(c.g, kColourScale).raw(",");
+  j.num(c.b, kColourScale).raw(",1]}");
+}
+
+int lottie_cap(LineCap c) {
+  switch (c) {
+    case LineCap::Butt: return 1;
+    case LineCap::Round: return 2;
+    case LineCap::Square: return 3;
+  }
+  return 1;
+}
+
+// Lottie has miter (with a limit), round and bevel; SVG 2's miter-clip is written as miter.
+int lottie_join(LineJoin c) {
+  switch (c) {
+    case LineJoin::Miter:
+    case LineJoin::MiterClip: return 1;
+    case LineJoin::Round: return 2;
+    case LineJoin::Bevel: return 3;
+  }
+  return 1;
+}
+
+}  // namespace
+
+LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
+                                const std::vector<double>& points, const AnimationTiming& timing,
+                                const LottieOptions& options, const ExportMap* map) {
+  const int K = timing.keyframes;
+  if (K < 1 || points.size() != static_cast<size_t>(K) * plan.n_cp * 2)
+    throw Error("internal: animation points do not match the plan");
+  if (!timing.key_times.empty() && timing.key_times.size() != static_cast<size_t>(K))
+    throw Error("internal: key times do not match the keyframes");
+  if (map && map->fitted_of.size() != scene.paths.size())
+    throw Error("internal: export map does not match the document");
+  if (!(options.fps > 0 && std::isfinite(options.fps))) throw Error("internal: Lottie frame rate must be positive");
+  if (options.decimals < 0 || options.decimals > kMaxDecimals) throw Error("internal: export precision out of range");
+
+  const AnimationPass pass = animation_pass(timing);
+  const double frames = std::max(1.0, std::round(pass.duration_s * options.fps * kFrameScale) / kFrameScale);
+  LottieDocument doc;
+
+  // Paint order, back to front: the layers stage's when it is a permutation of the document's
+  // paths, else the document's own.
+  const size_t P = scene.paths.size();
+  std::vector<int> order;
+  if (map && map->order.size() == P) {
+    std::vector<int> sorted = map->order;
+    std::sort(sorted.begin(), sorted.end());
+    bool perm = true;
+    for (size_t i = 0; i < P; ++i) perm = perm && sorted[i] == static_cast<int>(i);
+    if (perm) order = map->order;
+  }
+  if (order.empty())
+    for (size_t i = 0; i < P; ++i) order.push_back(static_cast<int>(i));
+
+  // Null layers for the document's top-level groups; their `ind` follows the shape layers'. A
+  // path outside any group is a part of its own in the scene, and gets no null layer.
+  std::vector<int> group_ind(scene.groups.size(), 0);
+  int next_ind = static_cast<int>(P) + 1;
+  for (size_t g = 0; g < scene.groups.size(); ++g) {
+    const Group& group = scene.groups[g];
+    const bool lone_path = group.paths.size() == 1 && scene.paths[static_cast<size_t>(group.paths[0])].id == group.id;
+    if (!group.paths.empty() && !lone_path) group_ind[g] = next_ind++;
+  }
+
+  JsonText j(options.decimals);
+  j.raw("{\"v\":\"5.7.0\",\"fr\":").num(options.fps, 1e6).raw(",\"ip\":0,\"op\":").num(frames, kFrameScale);
+  j.raw(",\"w\":").num(std::max(1.0, std::round(scene.width)), 1).raw(",\"h\":");
+  j.num(std::max(1.0, std::round(scene.height)), 1).raw(",\"nm\":").str(options.name);
+  j.raw(",\"ddd\":0,\"assets\":[],\"meta\":{\"g\":\"svgmotion ").raw(SVGM_VERSION).raw("\",\"d\":");
+  j.str(std::string("loop: ") + loop_mode_name(timing.loop) +
+        (timing.loop == LoopMode::Once ? " (play with the player's loop off)" : ""));
+  j.raw("},\"layers\":[");
+
+  bool any_gradient = false;
+  for (const std::string& w : scene.warnings) any_gradient = any_gradient || w.find(kGradientWarning) != std::string::npos;
+  std::vector<double> rest;  // a static path's own points, in the layout of the fitted ones
+  bool first_layer = true;
+  for (auto it = order.rbegin(); it != order.rend(); ++it) {  // Lottie lists the top layer first
+    const size_t p = static_cast<size_t>(*it);
+    const Path& path = scene.paths[p];
+    const int f = map ? map->fitted_of[p] : static_cast<int>(p);
+    // Shapes drawn through <use> stay static, as in animation.svg (shared definitions).
+    const bool through_use = path.locator.rfind("/use[") != std::string::npos &&
+                             path.locator.find('/', path.locator.rfind("/use[") + 1) == std::string::npos;
+    const bool animated = f >= 0 && !through_use && plan.path_cp_count[static_cast<size_t>(f)] > 0 && pass.seq.size() > 1;
+    const size_t first = f >= 0 ? plan.path_cp_first[static_cast<size_t>(f)] : 0;
+    rest.clear();
+    for (const Subpath& sp : path.subpaths)
+      for (const Vec2& q : sp.points) {
+        rest.push_back(q.x);
+        rest.push_back(q.y);
+      }
+    // The points of value `i` of the pass for this path.
+    auto value_points = [&](size_t i) {
+      return animated ? &points[(static_cast<size_t>(pass.seq[i]) * plan.n_cp + first) * 2] : rest.data();
+    };
+
+    if (!first_layer) j.raw(",");
+    first_layer = false;
+    j.raw("{\"ddd\":0,\"ind\":").num(static_cast<double>(P - (it - order.rbegin())), 1);
+    j.raw(",\"ty\":4,\"nm\":").str(path.id).raw(",\"sr\":1,");
+    if (path.group >= 0 && static_cast<size_t>(path.group) < scene.groups.size() && group_ind[static_cast<size_t>(path.group)])
+      j.raw("\"parent\":").num(group_ind[static_cast<size_t>(path.group)], 1).raw(",");
+    j.raw("\"ks\":{\"o\":").fixed(path.opacity * 100.0, kOpacityScale).raw(",").raw(kLayerTransformAfterOpacity);
+    j.raw(",\"ao\":0,\"shapes\":[{\"ty\":\"gr\",\"nm\":").str(path.id).raw(",\"it\":[");
+    size_t cp = 0;  // index of the subpath's first point within the path
+    bool first_item = true;
+    for (const Subpath& sp : path.subpaths) {
+      const size_t n_points = sp.points.size();
+      if (n_points < 4) {  // a lone point has no outline (only caps, which Lottie has not)
+        cp += n_points;
+        continue;
+      }
+      const size_t n = (n_points - 1) / 3;
+      bool merge = sp.closed && n >= 2;
+      for (size_t i = 0; merge && i < (animated ? pass.seq.size() : 1); ++i) {
+        const double* q = value_points(i) + 2 * cp;
+        merge = std::fabs(q[6 * n] - q[0]) <= kSamePoint && std::fabs(q[6 * n + 1] - q[1]) <= kSamePoint;
+      }
+      if (!first_item) j.raw(",");
+      first_item = false;
+      j.raw("{\"ty\":\"sh\",\"ks\":");
+      if (!animated) {
+        j.raw("{\"a\":0,\"k\":");
+        write_bezier(j, value_points(0) + 2 * cp, n_points, sp.closed, merge);
+        j.raw("}}");
+      } else {
+        j.raw("{\"a\":1,\"k\":[");
+        for (size_t i = 0; i < pass.seq.size(); ++i) {
+          if (i) j.raw(",");
+          j.raw("{\"t\":").num(pass.times[i] * frames, kFrameScale).raw(",\"s\":[");
+          write_bezier(j, value_points(i) + 2 * cp, n_points, sp.closed, merge);
+          j.raw("]");
+          // Linear in time (the easing curve from (0,0) to (1,1)), as SMIL's calcMode="linear".
+          if (i + 1 < pass.seq.size()) j.raw(",\"i\":{\"x\":1,\"y\":1},\"o\":{\"x\":0,\"y\":0}");
+          j.raw("}");
+        }
+        j.raw("]}}");
+      }
+      cp += n_points;
+    }
+    // SVG paints the stroke over the fill; in Lottie an item listed earlier is drawn on top.
+    if (path.has_stroke) {
+      const Stroke& s = path.stroke;
+      j.raw(first_item ? "" : ",").raw("{\"ty\":\"st\",\"c\":");
+      write_colour(j, s.color);
+      j.raw(",\"o\":").fixed(s.color.a * 100.0, kOpacityScale).raw(",\"w\":").fixed(s.width, std::pow(10.0, options.decimals));
+      j.raw(",\"lc\":").num(lottie_cap(s.cap), 1).raw(",\"lj\":").num(lottie_join(s.join), 1);
+      j.raw(",\"ml\":").num(s.miter_limit, 1e4).raw(",\"bm\":0}");
+      first_item = false;
+    }
+    if (path.has_fill) {
+      j.raw(first_item ? "" : ",").raw("{\"ty\":\"fl\",\"c\":");
+      write_colour(j, path.fill);
+      j.raw(",\"o\":").fixed(path.fill.a * 100.0, kOpacityScale);
+      j.raw(",\"r\":").raw(path.fill_rule == FillRule::EvenOdd ? "2" : "1").raw(",\"bm\":0}");
+      first_item = false;
+    }
+    j.raw(first_item ? "" : ",").raw(kGroupTransform).raw("]}]");
+    j.raw(",\"ip\":0,\"op\":").num(frames, kFrameScale).raw(",\"st\":0,\"bm\":0}");
+  }
+  for (size_t g = 0; g < scene.groups.size(); ++g) {
+    if (!group_ind[g]) continue;
+    j.raw(first_layer ? "" : ",").raw("{\"ddd\":0,\"ind\":").num(group_ind[g], 1);
+    j.raw(",\"ty\":3,\"nm\":").str(scene.groups[g].id).raw(",\"sr\":1,\"ks\":{\"o\":{\"a\":0,\"k\":100},").raw(kLayerTransformAfterOpacity);
+    j.raw(",\"ao\":0,\"ip\":0,\"op\":").num(frames, kFrameScale).raw(",\"st\":0,\"bm\":0}");
+    first_layer = false;
+  }
+  j.raw("]}\n");
+  doc.json = std::move(j.text());
+  if (any_gradient) doc.warnings.push_back("paths painted with gradients are drawn in their mean stop colour");
+  return doc;
+}
+
+std::vector<std::string> write_lottie(const std::filesystem::path& out, const Scene& scene,
+                                      const RasterPlan& plan, const std::vector<double>& points,
+                                      const AnimationTiming& timing, const LottieOptions& options,
+                                      const ExportMap* map) {
+  LottieDocument doc = lottie_animation(scene, plan, points, timing, options, map);
+  write_file_atomic(out, doc.json);
+  for (std::string& w : doc.warnings) w = out.string() + ": " + w;
+  return doc.warnings;
+}
+
+}  // namespace svgm

@@ -1,0 +1,61 @@
+// Writing the fitted animation as Lottie (bodymovin JSON, animation.json), the format of app and
+// web motion players (lottie-web, rlottie, ThorVG, Qt Lottie).
+//
+// It is fed the same data as the SMIL writer (smil_writer.h): the document's scene, the fitted
+// control points per written value and the timing, so both files show the same shapes at the
+// same times. The structure, chosen for what players draw most faithfully:
+//   - one shape layer per path (named by its id), in the document's paint order (Lottie lists
+//     the topmost layer first), holding one group with the path's subpaths (`sh`, keyframed
+//     when the path was fitted, static otherwise), then its stroke (`st`: colour, opacity,
+//     width, cap, join, miter limit), then its fill (`fl`: colour, opacity, rule 1 nonzero /
+//     2 evenodd): a stroke listed before the fill is drawn over it, as SVG paints it;
+//   - the element's opacity (times its ancestors') as the layer's opacity;
+//   - each of the document's top-level groups as a null layer with the identity transform,
+//     parent of its paths' layers: it changes nothing drawn (the motion is baked into the path
+//     keyframes, as a homography is no Lottie transform), and gives an editor one handle to move
+//     or retime a part;
+//   - coordinates in canvas pixels (the SVG's size after its viewBox mapping), `w` x `h` the
+//     canvas; keyframes at frame time x fps, linear in between (SMIL's calcMode="linear"
+//     interpolates the same numbers), a mirror written forwards then backwards.
+// Lottie has no loop flag: players loop by default (lottie-web's `loop: true`); "once" is
+// noted in `meta.d` and must be asked of the player. A paint the scene holds only
+// approximately (a gradient: its mean stop colour) is written so, with one warning.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "fit/smil_writer.h"
+#include "raster/raster_plan.h"
+#include "svgmotion/scene.h"
+
+namespace svgm {
+
+struct LottieOptions {
+  double fps = 30;                  // the timeline's frame rate (the target video's)
+  int decimals = kDefaultDecimals;  // decimal places of coordinates and widths (canvas pixels)
+  std::string name;                 // the animation's `nm` (the document's file name)
+};
+
+struct LottieDocument {
+  std::string json;
+  std::vector<std::string> warnings;  // without a file name in front
+};
+
+// The Lottie JSON of the animation: `scene` is the document (every visible path is written,
+// the fitted ones keyframed), `points` holds timing.keyframes * plan.n_cp canvas-space (x, y)
+// pairs, `map` (optional) says which fitted path each document path shows and the paint order
+// (smil_writer.h). Throws svgm::Error on inconsistent input (an internal error).
+LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
+                                const std::vector<double>& points, const AnimationTiming& timing,
+                                const LottieOptions& options, const ExportMap* map = nullptr);
+
+// Writes lottie_animation(...) to `out` (temporary name, then renamed); returns its warnings
+// as lines naming `out`.
+std::vector<std::string> write_lottie(const std::filesystem::path& out, const Scene& scene,
+                                      const RasterPlan& plan, const std::vector<double>& points,
+                                      const AnimationTiming& timing, const LottieOptions& options,
+                                      const ExportMap* map = nullptr);
+
+}  // namespace svgm

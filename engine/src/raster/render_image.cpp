@@ -1,0 +1,22 @@
+// A still image of a scene (see render_image.h): plan, one-frame raster, 8-bit read-back.
+#include "raster/render_image.h"
+
+#include <array>
+
+#include "raster/raster_cl.h"
+#include "raster/raster_plan.h"
+#include "svgmotion/render_size.h"
+
+namespace svgm {
+
+RgbaImage render_image(ClRuntime& rt, const Scene& scene, int width, bool transparent) {
+  const RenderSize size = render_size(scene, width);
+  const RasterPlan plan = plan_raster(scene, size.view, size.width, size.height);
+  ClRaster raster(rt, plan, 1);
+  raster.set_rest_pose();
+  const std::array<float, 4> white{1, 1, 1, 1}, clear{0, 0, 0, 0};
+  raster.forward(ClRaster::Output::Rgba8, transparent ? clear : white);
+  return RgbaImage{size.width, size.height, raster.read_rgba8()};
+}
+
+}  // namespace svgm
