@@ -61,7 +61,9 @@ veo error "$key" "model: veo-error, candidates: 1" & cases+=($!)
 veo hang "$key" "model: veo-hang, candidates: 1, timeout_s: 3" & cases+=($!)
 veo notvideo "$key" "model: veo-notvideo, candidates: 1" & cases+=($!)
 run_case refused "$key" stages.video.plugin=veo \
-  "stages.video.options={base_url: \"http://127.0.0.1:$closed/v1beta\", retries: 1, timeout_s: 10}" & cases+=($!)
+  "stages.video.options={base_url: \"http://127.0.0.1:$closed/v1beta\", candidates: 1, retries: 1, timeout_s: 10}" & cases+=($!)
+run_case refused_all "$key" stages.video.plugin=veo \
+  "stages.video.options={base_url: \"http://127.0.0.1:$closed/v1beta\", candidates: 2, retries: 0}" & cases+=($!)
 job fal fal_wan.yaml "$api/fal-ai/wan-i2v" 2 & cases+=($!)
 job fal_ratelimit fal_wan.yaml "$api/fal-ai/ratelimit" 1 & cases+=($!)
 job replicate replicate_wan.yaml "$api/v1/models/wan-video/wan-2.2-i2v-fast/predictions" 1 & cases+=($!)
@@ -140,6 +142,12 @@ failure hang 'video veo: candidate 00: no result within 3 s \(operation models/v
 failure notvideo 'video veo: candidate 00: the result of operation models/veo-notvideo/operations/id[0-9]+ \(candidates/00.mp4\) is not a readable video: '
 failure refused "video veo: candidate 00: cannot connect to http://127.0.0.1:$closed/v1beta/models/veo-3.1-generate-preview:predictLongRunning: "
 failure replicate_failed 'video http-job: candidate 00: job id[0-9]+ failed \(status failed\): CUDA out of memory$'
+check "refused_all: a warning per candidate, then one error naming the first failure" \
+  '[[ $(cat "$tmp/refused_all.rc") -eq 1 && $(grep -c "^svgmotion: " "$tmp/refused_all.err") -eq 3 ]] &&
+   grep -q "^svgmotion: warning: video veo: candidate 00: cannot connect to " "$tmp/refused_all.err" &&
+   grep -q "^svgmotion: warning: video veo: candidate 01: cannot connect to " "$tmp/refused_all.err" &&
+   grep -qE "^svgmotion: video plugin .veo.: video veo: all 2 candidates failed \(the first: video veo: candidate 00: cannot connect to " "$tmp/refused_all.err" &&
+   cmp -s "$tmp/refused_all/grouped.svg" "$tmp/base/grouped.svg" || { cat "$tmp/refused_all.err"; false; }'
 check "notvideo: the HTML page was not kept as a candidate" '[[ ! -e $tmp/notvideo/candidates/00.mp4 ]]'
 
 # The key: in no output, log, manifest (.svgmotion/), ranking.json or message, in any case. The
