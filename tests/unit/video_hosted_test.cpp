@@ -26,6 +26,7 @@
 #include "video/http_job_client.h"
 #include "video/veo_client.h"
 
+#include "error_of.h"
 #include "temp_dir.h"
 
 using namespace svgm;
@@ -110,14 +111,7 @@ struct RunDir {
   }
 };
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::error_of;
 
 // Test options: fast polls, no real pauses.
 VeoOptions fast_veo(int candidates) {
@@ -283,7 +277,7 @@ TEST_CASE("Veo: a Retry-After past the deadline fails at once, naming it") {
   FakeVeo veo(d.video);
   veo.http.handler = [](const Request&) { return answer(429, "{}", {{"retry-after", "120"}}); };
   VeoOptions o = fast_veo(1);
-  o.timeout_s = 5;
+  o.limits.timeout_s = 5;
   CHECK(error_of([&] { generate_veo_candidates(o, d.run, "w", 0, {kKey, "GEMINI_API_KEY"}, veo.http); }) ==
         "video veo: candidate 00: HTTP 429 from " + std::string(kBase) +
             "/models/veo-3.1-generate-preview:predictLongRunning: {}; the server asks to retry after 120 s, past the "
@@ -344,7 +338,7 @@ TEST_CASE("Veo: an operation that never finishes stops at the candidate's time l
   FakeVeo veo(d.video);
   veo.polls_needed = 1 << 30;
   VeoOptions o = fast_veo(1);
-  o.timeout_s = 0.3;
+  o.limits.timeout_s = 0.3;
   CHECK(error_of([&] { generate_veo_candidates(o, d.run, "w", 0, {kKey, "GEMINI_API_KEY"}, veo.http); }) ==
         "video veo: candidate 00: no result within 0.3 s (operation models/veo-3.1-generate-preview/operations/op0)");
 }

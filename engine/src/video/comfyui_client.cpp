@@ -1,14 +1,9 @@
 #include "video/comfyui_client.h"
 
-#include <algorithm>
-#include <chrono>
 #include <cctype>
-#include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <functional>
 #include <iterator>
-#include <thread>
 
 #include "svgmotion/error.h"
 #include "svgmotion/target_video.h"
@@ -23,8 +18,6 @@ namespace fs = std::filesystem;
 using json = nlohmann::json;
 
 namespace {
-
-const char* const kVideoExtensions[] = {"mp4", "webm", "gif", "mov", "mkv", "avi", "m4v", "webp"};
 
 [[noreturn]] void fail(const std::string& message) { throw Error("video comfyui: " + message); }
 
@@ -238,9 +231,7 @@ std::vector<fs::path> generate_comfyui_candidates(const ComfyuiOptions& options,
     }
 
     const std::string ext = lowercase_extension(result->filename);
-    bool video = false;
-    for (const char* e : kVideoExtensions) video = video || ext == e;
-    if (!video)
+    if (!is_video_extension(ext))
       s.fail("prompt " + prompt_id + " produced " + result->filename +
              ", not a video file (mp4, webm, gif, ...)");
     progress(0.9, "downloading " + result->filename);

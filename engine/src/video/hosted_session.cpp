@@ -9,6 +9,7 @@
 #include <iterator>
 #include <thread>
 
+#include "pipeline/plugin_options.h"
 #include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
 #include "svgmotion/target_video.h"
@@ -24,6 +25,13 @@ namespace {
 
 // The longest pause one cancel check waits through (s): Ctrl-C is seen within this.
 constexpr double kCancelCheckS = 0.1;
+
+// Each poll of a job waits this much longer than the one before: a hosted video takes from
+// ~10 s to several minutes (Google's Veo examples poll every 10 s), so early polls are cheap
+// and late ones need not be frequent.
+constexpr double kPollGrowth = 1.5;
+
+const char* const kVideoExtensions[] = {"mp4", "webm", "gif", "mov", "mkv", "avi", "m4v", "webp"};
 
 // A refused credential: no retry, and the message says which variable held it. 401 and 403 are
 // HTTP's; the Gemini API answers a malformed or unknown key with 400 and reason API_KEY_INVALID.
@@ -73,6 +81,24 @@ double retry_after_seconds(const std::string& value) {
   }
 }
 
+SessionLimits read_session_limits(const PluginOptions& opt, const SessionLimits& d) {
+  SessionLimits l = d;
+  l.timeout_s = opt.number("timeout_s", d.timeout_s);
+  if (l.timeout_s <= 0) opt.fail("options.timeout_s must be > 0 seconds");
+  l.retries = opt.whole("retries", d.retries, 0, 10);
+  l.poll_s = opt.number("poll_s", d.poll_s);
+  if (l.poll_s <= 0 || l.poll_s > 600) opt.fail("options.poll_s must be in (0, 600] seconds");
+  l.poll_max_s = opt.number("poll_max_s", std::max(d.poll_max_s, l.poll_s));
+  if (l.poll_max_s < l.poll_s || l.poll_max_s > 600) opt.fail("options.poll_max_s must be in [poll_s, 600] seconds");
+  return l;
+}
+
+bool is_video_extension(const std::string& ext) {
+  for (const char* e : kVideoExtensions)
+    if (ext == e) return true;
+  return false;
+}
+
 std::string two_digits(int i) {
   char buf[16];
   std::snprintf(buf, sizeof buf, "%02d", i);
@@ -84,7 +110,14 @@ HostedSession::HostedSession(std::string who, std::string label, const SessionLi
     : who_(std::move(who)), label_(std::move(label)), limits_(limits), http_(http), hooks_(hooks),
       secret_(std::move(secret)),
       end_(Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                              std::chrono::duration<double>(limits.timeout_s))) {}
+                              std::chrono::duration<double>(limits.timeout_s))),
+      poll_pause_(limits.poll_s) {}
+
+void HostedSession::wait_to_poll(const std::string& url) {
+  pause(poll_pause_);
+  if (left() <= 0) timeout(url);
+  poll_pause_ = std::min(poll_pause_ * kPollGrowth, limits_.poll_max_s);
+}
 
 double HostedSession::left() const {
   return std::chrono::duration<double>(end_ - Clock::now()).count();

@@ -26,7 +26,15 @@ struct SessionLimits {
   int retries = 2;         // per request, for connection errors, 5xx and 429
   // The first retry's pause when the server names none; doubled each retry.
   double backoff_s = 0.5;
+  // The first pause between polls of a job; each grows by half, up to poll_max_s.
+  double poll_s = 1, poll_max_s = 1;
 };
+
+class PluginOptions;
+
+// Reads options timeout_s (> 0), retries (0..10), poll_s (0..600] and poll_max_s
+// [poll_s, 600], each defaulting to `defaults`' (poll_max_s to at least poll_s).
+SessionLimits read_session_limits(const PluginOptions& opt, const SessionLimits& defaults);
 
 // The credential a session must never show: the key's value (scrubbed from messages) and the
 // environment variable it came from (named when the server refuses it).
@@ -50,6 +58,9 @@ class HostedSession {
   [[noreturn]] void timeout(const std::string& url) const;
   void check_cancelled() const;
   void pause(double seconds) const;  // up to `seconds`, never past the deadline
+  // Waits before the next poll of `url` (the pause grows each call); a timeout once the
+  // deadline has passed.
+  void wait_to_poll(const std::string& url);
   void log(const std::string& line) const;  // "<who>: <label><line>", if the host listens
 
   // The body of a 2xx answer to GET / POST `url`, after retries; fails with one line
@@ -75,6 +86,7 @@ class HostedSession {
   const HostedHooks& hooks_;
   SessionSecret secret_;
   std::chrono::steady_clock::time_point end_;
+  double poll_pause_;
 };
 
 // s on one line (newlines and tabs as spaces, trailing spaces dropped), cut to max_chars.
@@ -86,6 +98,9 @@ std::string reply_message(const std::string& body);
 
 // Seconds a Retry-After header asks for (delta-seconds; an HTTP date or garbage gives -1).
 double retry_after_seconds(const std::string& value);
+
+// Whether a file extension (lower case, no dot) is a video container a generator may return.
+bool is_video_extension(const std::string& ext);
 
 // "00", "01", ... (candidate file names).
 std::string two_digits(int i);

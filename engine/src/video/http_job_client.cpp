@@ -19,9 +19,6 @@ using json = nlohmann::json;
 namespace {
 
 const char* const kWho = "video http-job";
-// The pause between status polls grows by half each time, up to poll_max_s.
-constexpr double kPollGrowth = 1.5;
-const char* const kVideoExtensions[] = {"mp4", "webm", "mov", "mkv", "gif", "m4v"};
 
 std::vector<std::string> string_list(const PluginOptions& opt, const char* key) {
   std::vector<std::string> out;
@@ -51,9 +48,7 @@ std::string video_extension(const std::string& url) {
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "mp4";
   std::string ext = path.substr(dot + 1);
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  for (const char* e : kVideoExtensions)
-    if (ext == e) return ext;
-  return "mp4";
+  return is_video_extension(ext) ? ext : "mp4";
 }
 
 std::string as_text(const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
@@ -97,13 +92,7 @@ HttpJobOptions parse_http_job_options(const json& options) {
   o.frames = opt.whole("frames", o.frames, 1, 100000);
   o.fps = opt.number("fps", o.fps);
   if (o.fps <= 0 || o.fps > 240) opt.fail("options.fps must be in (0, 240]");
-  o.timeout_s = opt.number("timeout_s", o.timeout_s);
-  if (o.timeout_s <= 0) opt.fail("options.timeout_s must be > 0 seconds");
-  o.retries = opt.whole("retries", o.retries, 0, 10);
-  o.poll_s = opt.number("poll_s", o.poll_s);
-  if (o.poll_s <= 0 || o.poll_s > 600) opt.fail("options.poll_s must be in (0, 600] seconds");
-  o.poll_max_s = opt.number("poll_max_s", std::max(o.poll_max_s, o.poll_s));
-  if (o.poll_max_s < o.poll_s || o.poll_max_s > 600) opt.fail("options.poll_max_s must be in [poll_s, 600] seconds");
+  o.limits = read_session_limits(opt, o.limits);
   o.prompt_template = opt.string("prompt_template", kDefaultVideoPromptTemplate);
   // The key goes in a header only: a URL or body would put it in server logs and our messages.
   if (mentions_key(o.body) || o.submit_url.find("{api_key}") != std::string::npos ||
@@ -208,7 +197,6 @@ std::vector<fs::path> generate_http_job_candidates(const HttpJobOptions& o, cons
   const std::string png = read_recolored_png(run_dir, kWho);
   const std::string full_prompt = video_prompt(o.prompt_template, prompt);
   const fs::path dir = reset_candidates_dir(run_dir, kWho);
-  const SessionLimits limits{o.timeout_s, o.retries};
   auto status_of = [&](const json& reply) { return as_text(field_at(reply, o.status_field)); };
   auto in = [](const std::vector<std::string>& list, const std::string& v) {
     return std::find(list.begin(), list.end(), v) != list.end();
@@ -216,7 +204,7 @@ std::vector<fs::path> generate_http_job_candidates(const HttpJobOptions& o, cons
 
   return make_candidates(kWho, o.candidates, o.concurrency, hooks, [&](int i, const HostedHooks& h) {
     const std::string nn = two_digits(i);
-    HostedSession s(kWho, "candidate " + nn + ": ", limits, http, h, key);
+    HostedSession s(kWho, "candidate " + nn + ": ", o.limits, http, h, key);
     if (h.progress) h.progress(0, "submitting");
     const json body = fill_job_body(o.body, full_prompt, png, seed + i, o.frames, o.fps);
     const json submitted = s.parse(o.submit_url, s.post_json(o.submit_url, body.dump()));
@@ -231,7 +219,6 @@ std::vector<fs::path> generate_http_job_candidates(const HttpJobOptions& o, cons
     s.log("submitted as " + s.job + " (seed " + std::to_string(seed + i) + ")");
 
     json reply = submitted;
-    double pause = o.poll_s;
     for (;;) {
       const std::string status = status_of(reply);
       if (in(o.done_values, status)) break;
@@ -241,10 +228,8 @@ std::vector<fs::path> generate_http_job_candidates(const HttpJobOptions& o, cons
                (why.is_null() ? "" : ": " + one_line(as_text(why))));
       }
       if (h.progress) h.progress(0.1, "waiting (" + one_line(status, 40) + ")");
-      s.pause(pause);
-      if (s.left() <= 0) s.timeout(status_url);
+      s.wait_to_poll(status_url);
       reply = s.parse(status_url, s.get(status_url));
-      pause = std::min(pause * kPollGrowth, o.poll_max_s);
     }
     if (!result_url.empty()) reply = s.parse(result_url, s.get(result_url));
     json video = field_at(reply, o.video_url_field);

@@ -45,9 +45,7 @@ struct HttpJobOptions {
   std::string video_url_field;  // required
   int candidates = 4, concurrency = 2, frames = 49;
   double fps = 24;
-  double timeout_s = 900;
-  int retries = 3;
-  double poll_s = 2, poll_max_s = 20;
+  SessionLimits limits{900, 3, 0.5, 2, 20};  // per candidate, per request, polls
   std::string prompt_template;
 };
 

@@ -19,10 +19,6 @@ namespace {
 
 const char* const kWho = "video veo";
 
-// Each poll waits this much longer than the one before (the operation takes from ~10 s to
-// several minutes; Google's examples poll every 10 s).
-constexpr double kPollGrowth = 1.5;
-
 }  // namespace
 
 VeoOptions parse_veo_options(const json& options) {
@@ -46,14 +42,7 @@ VeoOptions parse_veo_options(const json& options) {
   o.resolution = opt.string("resolution", o.resolution);
   o.negative_prompt = opt.string("negative_prompt", o.negative_prompt);
   o.send_seed = opt.flag("seed", o.send_seed);
-  o.timeout_s = opt.number("timeout_s", o.timeout_s);
-  if (o.timeout_s <= 0) opt.fail("options.timeout_s must be > 0 seconds");
-  o.retries = opt.whole("retries", o.retries, 0, 10);
-  o.poll_s = opt.number("poll_s", o.poll_s);
-  if (o.poll_s <= 0 || o.poll_s > 600) opt.fail("options.poll_s must be in (0, 600] seconds");
-  o.poll_max_s = opt.number("poll_max_s", std::max(o.poll_max_s, o.poll_s));
-  if (o.poll_max_s < o.poll_s || o.poll_max_s > 600)
-    opt.fail("options.poll_max_s must be in [poll_s, 600] seconds");
+  o.limits = read_session_limits(opt, o.limits);
   o.prompt_template = opt.string("prompt_template", kDefaultVideoPromptTemplate);
   return o;
 }
@@ -109,11 +98,10 @@ std::vector<fs::path> generate_veo_candidates(const VeoOptions& o, const fs::pat
   const std::string full_prompt = video_prompt(o.prompt_template, prompt);
   const fs::path dir = reset_candidates_dir(run_dir, kWho);
   const std::string submit_url = o.base_url + "/models/" + o.model + ":predictLongRunning";
-  const SessionLimits limits{o.timeout_s, o.retries};
 
   return make_candidates(kWho, o.candidates, o.concurrency, hooks, [&](int i, const HostedHooks& h) {
     const std::string nn = two_digits(i);
-    HostedSession s(kWho, "candidate " + nn + ": ", limits, http, h, key);
+    HostedSession s(kWho, "candidate " + nn + ": ", o.limits, http, h, key);
     if (h.progress) h.progress(0, "submitting");
     const json body = veo_request(o, png, full_prompt, seed + i);
     const json submitted = s.parse(submit_url, s.post_json(submit_url, body.dump()));
@@ -126,13 +114,10 @@ std::vector<fs::path> generate_veo_candidates(const VeoOptions& o, const fs::pat
 
     const std::string poll_url = o.base_url + "/" + name;
     VeoOperation op = read_veo_operation(submitted);
-    double pause = o.poll_s;
     while (!op.done) {
       if (h.progress) h.progress(0.1, "waiting for Veo");
-      s.pause(pause);
-      if (s.left() <= 0) s.timeout(poll_url);
+      s.wait_to_poll(poll_url);
       op = read_veo_operation(s.parse(poll_url, s.get(poll_url)));
-      pause = std::min(pause * kPollGrowth, o.poll_max_s);
     }
     if (!op.error.empty()) s.fail(s.job + " failed: " + op.error);
     if (!is_http_url(op.video_uri)) s.fail(s.job + " gave a video uri that is not an http(s) URL: " + one_line(op.video_uri, 120));

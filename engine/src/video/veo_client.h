@@ -37,10 +37,9 @@ struct VeoOptions {
   std::string resolution = "720p";  // "" = not sent
   std::string negative_prompt;      // "" = not sent
   bool send_seed = true;     // parameters.seed = run seed + candidate index
-  double timeout_s = 900;    // per candidate: submit, poll, download
-  int retries = 3;           // per request: connection errors, 5xx, 429
-  double poll_s = 5;         // the first pause between polls of the operation
-  double poll_max_s = 30;    // the pause grows by half each poll up to this
+  // timeout_s per candidate (submit, polls, download), retries per request (connection
+  // errors, 5xx, 429), the first pause between polls of the operation and its ceiling.
+  SessionLimits limits{900, 3, 0.5, 5, 30};
   std::string prompt_template;  // "{prompt}" = the user's prompt; default as `command`
 };
 
