@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -47,6 +48,15 @@ inline GeneratorRequest generator_request(const json& req, const svgm_host* host
     g.hooks.cancelled = [host] { return host->cancelled && host->cancelled(host) != 0; };
   }
   return g;
+}
+
+// The API key held by the environment variable `env` ("" = none wanted: returns ""). Throws
+// "<who>: $ENV is not set (<what>; options.api_key_env names the variable)" when it is empty.
+inline std::string api_key_from_env(const std::string& env, const std::string& who, const std::string& what) {
+  if (env.empty()) return "";
+  const char* k = std::getenv(env.c_str());
+  if (!k || !*k) throw Error(who + ": $" + env + " is not set (" + what + "; options.api_key_env names the variable)");
+  return k;
 }
 
 // For generators with transfers on worker threads (candidate_pool.h): the host's cancel check

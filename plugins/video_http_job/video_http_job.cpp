@@ -4,7 +4,6 @@
 // from the environment variable options.api_key_env, goes only into options.headers
 // ("{api_key}") and only to the submit URL's origin, and is scrubbed from every message.
 // Options: see README.md here and engine/src/video/http_job_client.h.
-#include <cstdlib>
 #include <string>
 
 #include "common/curl_http.h"
@@ -20,14 +19,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   const svgm::HttpJobOptions options =
       svgm::parse_http_job_options(config.contains("options") ? config.at("options") : nlohmann::json());
   const svgm::plugin::GeneratorRequest g = svgm::plugin::generator_request(req, host, "video http-job");
-  std::string key;
-  if (!options.api_key_env.empty()) {
-    const char* k = std::getenv(options.api_key_env.c_str());
-    if (!k || !*k)
-      throw svgm::Error("video http-job: $" + options.api_key_env +
-                        " is not set (the API key; options.api_key_env names the variable)");
-    key = k;
-  }
+  const std::string key = svgm::plugin::api_key_from_env(options.api_key_env, "video http-job", "the API key");
   svgm::HostedHooks hooks;
   static_cast<svgm::GeneratorHooks&>(hooks) = g.hooks;
   svgm::plugin::CurlTransport http(svgm::plugin::share_cancel(hooks), "svgmotion-video-http-job/1", {},

@@ -3,7 +3,6 @@
 // environment variable options.api_key_env (default GEMINI_API_KEY): it is sent as the
 // x-goog-api-key header to the API's own origin and nowhere else, and never written to a log,
 // a manifest or a message. Options: see README.md here and engine/src/video/veo_client.h.
-#include <cstdlib>
 #include <string>
 
 #include "common/curl_http.h"
@@ -19,14 +18,11 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   const svgm::VeoOptions options =
       svgm::parse_veo_options(config.contains("options") ? config.at("options") : nlohmann::json());
   const svgm::plugin::GeneratorRequest g = svgm::plugin::generator_request(req, host, "video veo");
-  const char* key = std::getenv(options.api_key_env.c_str());
-  if (!key || !*key)
-    throw svgm::Error("video veo: $" + options.api_key_env +
-                      " is not set (the Gemini API key; options.api_key_env names the variable)");
+  const std::string key = svgm::plugin::api_key_from_env(options.api_key_env, "video veo", "the Gemini API key");
   svgm::HostedHooks hooks;
   static_cast<svgm::GeneratorHooks&>(hooks) = g.hooks;
   svgm::plugin::CurlTransport http(svgm::plugin::share_cancel(hooks), "svgmotion-video-veo/1", {},
-                                   {options.base_url, {std::string("x-goog-api-key: ") + key}});
+                                   {options.base_url, {"x-goog-api-key: " + key}});
   const auto files = svgm::generate_veo_candidates(options, g.run_dir, g.prompt, g.seed,
                                                    {key, options.api_key_env}, http, hooks);
   return {{"message", std::to_string(files.size()) + " of " + std::to_string(options.candidates) +

@@ -81,6 +81,15 @@ def shrink(body):
     return body
 
 
+def polled(table, key):
+    """state[table][key] with one more poll counted, or None."""
+    with lock:
+        entry = state[table].get(key)
+        if entry:
+            entry["polls"] += 1
+        return entry
+
+
 def next_id():
     with lock:
         state["counter"] += 1
@@ -168,10 +177,7 @@ class Handler(BaseHTTPRequestHandler):
         return self.reply(200, {"name": name})
 
     def veo_poll(self, name):
-        with lock:
-            op = state["ops"].get(name)
-            if op:
-                op["polls"] += 1
+        op = polled("ops", name)
         if not op:
             return self.reply(404, {"error": {"code": 404, "message": "operation not found", "status": "NOT_FOUND"}})
         model = op["model"]
@@ -189,11 +195,15 @@ class Handler(BaseHTTPRequestHandler):
                 {"video": {"uri": self.base() + "/v1beta/files/%s:download?alt=media" % fid}}]}}})
 
     # ---- fal.ai queue -----------------------------------------------------------------------
-    def fal_key_ok(self):
-        if self.headers.get("Authorization") == "Key " + args.key:
+    def key_ok(self, header, expected, refusal):
+        """Whether `header` holds `expected`; else answers 401 with the provider's `refusal`."""
+        if self.headers.get(header) == expected:
             return True
-        self.reply(401, {"detail": "Invalid or missing API key"})
+        self.reply(401, refusal)
         return False
+
+    def fal_key_ok(self):
+        return self.key_ok("Authorization", "Key " + args.key, {"detail": "Invalid or missing API key"})
 
     def fal_submit(self, mode, body):
         if not isinstance(body, dict) or not isinstance(body.get("prompt"), str):
@@ -214,8 +224,8 @@ class Handler(BaseHTTPRequestHandler):
         rid, _, tail = rest.partition("/")
         with lock:
             job = state["jobs"].get(rid)
-            if job and tail == "status":
-                job["polls"] += 1
+        if job and tail == "status":
+            job = polled("jobs", rid)
         if not job:
             return self.reply(404, {"detail": "Request not found"})
         if tail == "status":
@@ -228,10 +238,8 @@ class Handler(BaseHTTPRequestHandler):
 
     # ---- Replicate --------------------------------------------------------------------------
     def replicate_key_ok(self):
-        if self.headers.get("Authorization") == "Bearer " + args.key:
-            return True
-        self.reply(401, {"title": "Unauthenticated", "detail": "You did not pass a valid authentication token", "status": 401})
-        return False
+        return self.key_ok("Authorization", "Bearer " + args.key, {
+            "title": "Unauthenticated", "detail": "You did not pass a valid authentication token", "status": 401})
 
     def replicate_submit(self, mode, body):
         inp = body.get("input") if isinstance(body, dict) else None
@@ -251,10 +259,7 @@ class Handler(BaseHTTPRequestHandler):
                 "urls": {"get": get, "cancel": get + "/cancel"}}
 
     def replicate_get(self, pid):
-        with lock:
-            job = state["jobs"].get(pid)
-            if job:
-                job["polls"] += 1
+        job = polled("jobs", pid)
         if not job:
             return self.reply(404, {"detail": "Not found.", "status": 404})
         if job["polls"] < 2:

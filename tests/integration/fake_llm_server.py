@@ -114,21 +114,34 @@ def check_png_url(part):
     return None
 
 
-def is_rank_request(body):
+def instructions_mention(body, word):
+    """Whether the system message (the instructions) holds `word`: tells the requests apart."""
     try:
-        return '"best"' in body["messages"][0]["content"]
+        return word in body["messages"][0]["content"]
     except (KeyError, IndexError, TypeError):
         return False
 
 
-def check_rank_request(body):
-    """The `llm` ranker's request shape; returns (None, candidate names) or (complaint, [])."""
+def is_rank_request(body):
+    return instructions_mention(body, '"best"')
+
+
+def chat_problem(body):
+    """A complaint about the parts every ranker request shares (model, temperature 0, a system
+    and a user message), or None."""
     if not isinstance(body.get("model"), str) or body.get("temperature") != 0:
-        return "model or temperature is wrong", []
+        return "model or temperature is wrong"
     msgs = body.get("messages")
     if not isinstance(msgs, list) or len(msgs) != 2 or msgs[1].get("role") != "user":
-        return "messages is not [system, user]", []
-    parts = msgs[1].get("content")
+        return "messages is not [system, user]"
+    return None
+
+
+def check_rank_request(body):
+    """The `llm` ranker's request shape; returns (None, candidate names) or (complaint, [])."""
+    if chat_problem(body):
+        return chat_problem(body), []
+    parts = body["messages"][1].get("content")
     if not isinstance(parts, list) or not parts or parts[0].get("type") != "text" or "Candidates" not in parts[0]["text"]:
         return "the first user part does not list the candidates", []
     names, frames = [], 0
@@ -151,20 +164,14 @@ def check_rank_request(body):
 
 
 def is_score_request(body):
-    try:
-        return '"viable"' in body["messages"][0]["content"]
-    except (KeyError, IndexError, TypeError):
-        return False
+    return instructions_mention(body, '"viable"')
 
 
 def check_score_request(body):
     """The ranker's stage-1 shape; returns (None, candidate name) or (complaint, None)."""
-    if not isinstance(body.get("model"), str) or body.get("temperature") != 0:
-        return "model or temperature is wrong", None
-    msgs = body.get("messages")
-    if not isinstance(msgs, list) or len(msgs) != 2 or msgs[1].get("role") != "user":
-        return "messages is not [system, user]", None
-    parts = msgs[1].get("content")
+    if chat_problem(body):
+        return chat_problem(body), None
+    parts = body["messages"][1].get("content")
     if not isinstance(parts, list) or len(parts) < 3 or parts[0].get("type") != "text" \
             or "Motion asked for" not in parts[0]["text"]:
         return "the first user part does not describe the motion", None
