@@ -125,15 +125,18 @@ check "ratelimit: the 429 was waited out for Retry-After (1 s) and the submit re
 check "fal_ratelimit: a 429 on a status poll was answered (and the run above succeeded)" \
   'grep -qE "\"method\": \"429\", \"path\": \"/fal-ai/requests/id[0-9]+/status\"" "$tmp/requests.log"'
 
-# failure CASE PATTERN: one line, earlier outputs untouched, within a wide time margin (60 s
-# against time limits of 3 to 10 s) that catches a limit that is not enforced at all.
+# failure CASE PATTERN: one line, earlier outputs untouched, and done within a wide margin (60 s
+# against time limits of 3 to 10 s) that catches a limit that is not enforced at all. The
+# margin counts from what the nokey case took (it fails before any request): on a loaded
+# machine starting the run alone can take tens of seconds.
 failure() {
   local c=$1 pattern=$2 max=60
   check "$c: fails with one line matching '$pattern'" \
     '[[ $(cat "$tmp/$c.rc") -eq 1 ]] && [[ $(grep -c "^svgmotion: " "$tmp/$c.err") -eq 1 ]] && grep "^svgmotion: " "$tmp/$c.err" | grep -qE "$pattern" || { cat "$tmp/$c.err"; false; }'
   check "$c: earlier outputs untouched" \
     'cmp -s "$tmp/$c/grouped.svg" "$tmp/base/grouped.svg" && cmp -s "$tmp/$c/recolored.png" "$tmp/base/recolored.png"'
-  check "$c: done within $max s" '(( $(cat "$tmp/$c.time") < max * 1000 ))'
+  [[ $c == nokey ]] ||
+    check "$c: done within $max s of the start-up" '(( $(cat "$tmp/$c.time") - $(cat "$tmp/nokey.time") < max * 1000 ))'
 }
 failure badkey 'video veo: candidate 00: the API key in \$GEMINI_API_KEY was refused: HTTP 400 from http://127.0.0.1:[0-9]+/v1beta/models/veo-slow:predictLongRunning: API key not valid. Please pass a valid API key. \(<key>\)$'
 failure nokey 'video veo: \$GEMINI_API_KEY is not set \(the Gemini API key; options.api_key_env names the variable\)$'
