@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "net/base64.h"
 #include "svgmotion/plugin.h"
 
 namespace svgm::plugin::chat {
@@ -31,7 +32,7 @@ Settings read_settings(const nlohmann::json& options, const std::string& stage);
 // s with newlines and tabs as spaces, cut to max_chars (then "...").
 std::string one_line(std::string s, size_t max_chars = 300);
 
-std::string base64(const std::string& bytes);
+using svgm::base64;  // net/base64.h
 
 // POSTs `body` (JSON) to s.url and returns the body of a 2xx reply; Failure for a timeout, a
 // transport error or another status. `who` names the plugin in the user agent and messages.

@@ -4,16 +4,47 @@
 #include <curl/curl.h>
 
 #include <algorithm>
+#include <cctype>
+#include <chrono>
 #include <cmath>
 
 namespace svgm::plugin {
 
 namespace {
 
+// A chain of redirects longer than this is an error (curl's own default is 30; a storage
+// redirect needs one or two).
+constexpr int kMaxRedirects = 5;
+
 struct Transfer {
   const std::function<bool()>* cancelled = nullptr;
   std::string body;
+  std::vector<std::pair<std::string, std::string>> headers;
 };
+
+// One header line of the answer: "Name: value\r\n" (a new status line starts a new answer,
+// e.g. after "100 Continue", so only the last answer's fields are kept).
+size_t on_header(char* data, size_t size, size_t n, void* user) {
+  try {
+    auto* t = static_cast<Transfer*>(user);
+    std::string line(data, size * n);
+    while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
+    if (line.rfind("HTTP/", 0) == 0) {
+      t->headers.clear();
+      return size * n;
+    }
+    const size_t colon = line.find(':');
+    if (colon == std::string::npos) return size * n;
+    std::string name = line.substr(0, colon);
+    for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    size_t v = colon + 1;
+    while (v < line.size() && (line[v] == ' ' || line[v] == '\t')) ++v;
+    t->headers.emplace_back(std::move(name), line.substr(v));
+    return size * n;
+  } catch (...) {
+    return 0;
+  }
+}
 
 size_t on_data(char* data, size_t size, size_t n, void* user) {
   try {
@@ -67,6 +98,8 @@ HttpReply perform(const std::function<bool()>& cancelled, const std::string& use
     curl_easy_setopt(c, CURLOPT_MIMEPOST, mime);
   }
   if (headers) curl_easy_setopt(c, CURLOPT_HTTPHEADER, headers);
+  curl_easy_setopt(c, CURLOPT_HEADERFUNCTION, on_header);
+  curl_easy_setopt(c, CURLOPT_HEADERDATA, &t);
   curl_easy_setopt(c, CURLOPT_WRITEFUNCTION, on_data);
   curl_easy_setopt(c, CURLOPT_WRITEDATA, &t);
   curl_easy_setopt(c, CURLOPT_NOPROGRESS, 0L);
@@ -80,6 +113,11 @@ HttpReply perform(const std::function<bool()>& cancelled, const std::string& use
   const CURLcode rc = curl_easy_perform(c);
   long status = 0;
   curl_easy_getinfo(c, CURLINFO_RESPONSE_CODE, &status);
+  if (rc == CURLE_OK && status >= 300 && status < 400) {
+    char* location = nullptr;  // absolute, resolved against `url` by curl
+    if (curl_easy_getinfo(c, CURLINFO_REDIRECT_URL, &location) == CURLE_OK && location)
+      t.headers.emplace_back("location", location);
+  }
   curl_slist_free_all(headers);
   curl_mime_free(mime);
   curl_easy_cleanup(c);
@@ -87,6 +125,7 @@ HttpReply perform(const std::function<bool()>& cancelled, const std::string& use
     reply.connected = true;
     reply.status = status;
     reply.body = std::move(t.body);
+    reply.headers = std::move(t.headers);
   } else {
     reply.timed_out = rc == CURLE_OPERATION_TIMEDOUT;
     reply.error = *err ? err : curl_easy_strerror(rc);
@@ -96,22 +135,62 @@ HttpReply perform(const std::function<bool()>& cancelled, const std::string& use
 
 }  // namespace
 
-CurlTransport::CurlTransport(std::function<bool()> cancelled, std::string user_agent,
-                             std::vector<std::string> headers)
-    : cancelled_(std::move(cancelled)), user_agent_(std::move(user_agent)), headers_(std::move(headers)) {}
+std::string url_origin(const std::string& url) {
+  const size_t scheme = url.find("://");
+  if (scheme == std::string::npos) return "";
+  std::string origin = url.substr(0, url.find_first_of("/?#", scheme + 3));
+  for (char& c : origin) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return origin;
+}
 
-HttpReply CurlTransport::get(const std::string& url, double timeout_s) {
-  return perform(cancelled_, user_agent_, headers_, Kind::get, url, {}, {}, {}, timeout_s);
+CurlTransport::CurlTransport(std::function<bool()> cancelled, std::string user_agent,
+                             std::vector<std::string> headers, ScopedHeaders secret)
+    : cancelled_(std::move(cancelled)), user_agent_(std::move(user_agent)), headers_(std::move(headers)),
+      secret_(std::move(secret)) {
+  secret_.origin = url_origin(secret_.origin);  // normalised: "" (no secret) stays ""
+}
+
+std::vector<std::string> CurlTransport::headers_for(const std::string& url) const {
+  std::vector<std::string> h = headers_;
+  if (!secret_.origin.empty() && url_origin(url) == secret_.origin)
+    h.insert(h.end(), secret_.headers.begin(), secret_.headers.end());
+  return h;
+}
+
+// Follows redirects itself (not CURLOPT_FOLLOWLOCATION) so the secret headers are chosen again
+// for every hop's origin; the time limit covers the whole chain.
+HttpReply CurlTransport::get(const std::string& url_in, double timeout_s) {
+  using Clock = std::chrono::steady_clock;
+  const auto end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout_s));
+  std::string url = url_in;
+  for (int hop = 0;; ++hop) {
+    const double left = std::chrono::duration<double>(end - Clock::now()).count();
+    if (left <= 0) {
+      HttpReply r;
+      r.timed_out = true;
+      r.error = "timed out following redirects";
+      return r;
+    }
+    HttpReply r = perform(cancelled_, user_agent_, headers_for(url), Kind::get, url, {}, {}, {}, left);
+    const std::string location = r.header("location");
+    if (!r.connected || r.status < 300 || r.status >= 400 || location.empty()) return r;
+    if (hop >= kMaxRedirects) {
+      r.connected = false;
+      r.error = "more than " + std::to_string(kMaxRedirects) + " redirects";
+      return r;
+    }
+    url = location;
+  }
 }
 
 HttpReply CurlTransport::post_json(const std::string& url, const std::string& body,
                                    double timeout_s) {
-  return perform(cancelled_, user_agent_, headers_, Kind::json, url, body, {}, {}, timeout_s);
+  return perform(cancelled_, user_agent_, headers_for(url), Kind::json, url, body, {}, {}, timeout_s);
 }
 
 HttpReply CurlTransport::post_file(const std::string& url, const std::string& field,
                                    const std::filesystem::path& file, double timeout_s) {
-  return perform(cancelled_, user_agent_, headers_, Kind::file, url, {}, field, file, timeout_s);
+  return perform(cancelled_, user_agent_, headers_for(url), Kind::file, url, {}, field, file, timeout_s);
 }
 
 }  // namespace svgm::plugin

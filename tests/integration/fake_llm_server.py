@@ -28,6 +28,16 @@ PNG image_url frames. Its replies, by model name:
     pick_NN         {"best": "NN.mp4", "reason": ...}
     fenced_pick_NN  the same inside ```json fences
     pick_unknown    names a candidate that does not exist ("07.mp4")
+    reject_NN_pick_MM  {"best": "MM.mp4", ...}
+    malformed, hang, http500   as for the grouper
+
+A request whose instructions ask whether a candidate is "viable" is the ranker's stage 1: a
+text part, a "Candidate NAME:" part and PNG frames of that one candidate. Its replies:
+
+    pick_NN, fenced_pick_NN, pick_unknown   every constraint "Yes", viable (fenced: in fences)
+    reject_NN_pick_MM  candidate NN: no_3d_rotation "Partial", continuity "No", not viable;
+                       the others as above
+    none_viable        every constraint "No", not viable
     malformed, hang, http500   as for the grouper
 
 With --log, every request body is appended to FILE as one JSON line.
@@ -104,21 +114,34 @@ def check_png_url(part):
     return None
 
 
-def is_rank_request(body):
+def instructions_mention(body, word):
+    """Whether the system message (the instructions) holds `word`: tells the requests apart."""
     try:
-        return '"best"' in body["messages"][0]["content"]
+        return word in body["messages"][0]["content"]
     except (KeyError, IndexError, TypeError):
         return False
 
 
-def check_rank_request(body):
-    """The `llm` ranker's request shape; returns (None, candidate names) or (complaint, [])."""
+def is_rank_request(body):
+    return instructions_mention(body, '"best"')
+
+
+def chat_problem(body):
+    """A complaint about the parts every ranker request shares (model, temperature 0, a system
+    and a user message), or None."""
     if not isinstance(body.get("model"), str) or body.get("temperature") != 0:
-        return "model or temperature is wrong", []
+        return "model or temperature is wrong"
     msgs = body.get("messages")
     if not isinstance(msgs, list) or len(msgs) != 2 or msgs[1].get("role") != "user":
-        return "messages is not [system, user]", []
-    parts = msgs[1].get("content")
+        return "messages is not [system, user]"
+    return None
+
+
+def check_rank_request(body):
+    """The `llm` ranker's request shape; returns (None, candidate names) or (complaint, [])."""
+    if chat_problem(body):
+        return chat_problem(body), []
+    parts = body["messages"][1].get("content")
     if not isinstance(parts, list) or not parts or parts[0].get("type") != "text" or "Candidates" not in parts[0]["text"]:
         return "the first user part does not list the candidates", []
     names, frames = [], 0
@@ -138,6 +161,34 @@ def check_rank_request(body):
     if not names:
         return "no candidates", []
     return None, names
+
+
+def is_score_request(body):
+    return instructions_mention(body, '"viable"')
+
+
+def check_score_request(body):
+    """The ranker's stage-1 shape; returns (None, candidate name) or (complaint, None)."""
+    if chat_problem(body):
+        return chat_problem(body), None
+    parts = body["messages"][1].get("content")
+    if not isinstance(parts, list) or len(parts) < 3 or parts[0].get("type") != "text" \
+            or "Motion asked for" not in parts[0]["text"]:
+        return "the first user part does not describe the motion", None
+    label = parts[1]
+    if label.get("type") != "text" or not label["text"].startswith("Candidate ") or not label["text"].endswith(":"):
+        return "the second user part is not a candidate label", None
+    for p in parts[2:]:
+        problem = check_png_url(p)
+        if problem:
+            return problem, None
+    return None, label["text"][len("Candidate "):-1]
+
+
+def verdicts(yes):
+    v = "Yes" if yes else "No"
+    return {"no_3d_rotation": v, "no_new_elements": v, "flat_colours": v, "continuity": v,
+            "viable": yes, "reason": "fake stage 1"}
 
 
 def completion(content):
@@ -180,6 +231,23 @@ class Handler(BaseHTTPRequestHandler):
             with self.server.lock, open(self.server.log_file, "a") as f:
                 f.write(json.dumps({"headers": dict(self.headers), "body": body}) + "\n")
         model = body.get("model")
+        if is_score_request(body) and model not in ("malformed", "hang", "http500"):
+            problem, name = check_score_request(body)
+            if problem:
+                return self.reply(400, {"error": {"message": problem}})
+            answer = verdicts(model != "none_viable")
+            if model.startswith("reject_") and name == model.split("_")[1] + ".mp4":
+                answer = dict(answer, no_3d_rotation="Partial", continuity="No", viable=False,
+                              reason="the arm turns in depth")
+            text = json.dumps(answer)
+            if model.startswith("fenced_"):
+                text = "Verdict:\n```json\n" + text + "\n```"
+            return self.reply(200, completion(text))
+        if is_rank_request(body) and model.startswith("reject_"):
+            problem, _ = check_rank_request(body)
+            if problem:
+                return self.reply(400, {"error": {"message": problem}})
+            return self.reply(200, completion(json.dumps({"best": model.split("_")[3] + ".mp4", "reason": "fake judge"})))
         if is_rank_request(body):
             problem, _ = check_rank_request(body)
             if problem:
@@ -191,7 +259,7 @@ class Handler(BaseHTTPRequestHandler):
                 return self.reply(200, completion("My choice:\n```json\n" + json.dumps(best) + "\n```"))
             if model == "pick_unknown":
                 return self.reply(200, completion(json.dumps({"best": "07.mp4", "reason": "fake judge"})))
-        problem = None if is_rank_request(body) else check_request(body)
+        problem = None if is_rank_request(body) or is_score_request(body) else check_request(body)
         if problem:
             return self.reply(400, {"error": {"message": problem}})
         if model == "valid":

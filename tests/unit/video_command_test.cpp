@@ -25,6 +25,7 @@
 #include "video/command_runner.h"
 #include "video/command_video.h"
 
+#include "error_of.h"
 #include "temp_dir.h"
 
 using namespace svgm;
@@ -97,14 +98,7 @@ fs::path write_generator(const fs::path& dir, const std::string& body) {
   return script;
 }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::error_of;
 
 }  // namespace
 

@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace svgm {
 
@@ -16,9 +18,19 @@ struct HttpReply {
   std::string error;
   long status = 0;
   std::string body;
+  // The answer's header fields, names in lower case (Retry-After, Location, ...).
+  std::vector<std::pair<std::string, std::string>> headers;
+
+  // The value of header `name` (give it in lower case), or "" when the answer has none.
+  std::string header(const std::string& name) const {
+    for (const auto& [k, v] : headers)
+      if (k == name) return v;
+    return "";
+  }
 };
 
-// What the client needs from an HTTP library. Each call blocks for at most timeout_s.
+// What the client needs from an HTTP library. Each call blocks for at most timeout_s. A GET
+// follows redirects; a POST does not.
 struct HttpTransport {
   virtual ~HttpTransport() = default;
   virtual HttpReply get(const std::string& url, double timeout_s) = 0;

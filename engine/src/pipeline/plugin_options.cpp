@@ -45,6 +45,13 @@ std::string PluginOptions::string(const char* key, const std::string& fallback) 
   return v.get<std::string>();
 }
 
+bool PluginOptions::flag(const char* key, bool fallback) const {
+  if (!has(key)) return fallback;
+  const nlohmann::json& v = o_.at(key);
+  if (!v.is_boolean()) fail(std::string("options.") + key + " must be true or false, not " + v.dump());
+  return v.get<bool>();
+}
+
 void PluginOptions::fail(const std::string& message) const { throw Error(who_ + ": " + message); }
 
 }  // namespace svgm

@@ -22,6 +22,7 @@ class PluginOptions {
   double number(const char* key, double fallback) const;
   int whole(const char* key, int fallback, int lo, int hi) const;
   std::string string(const char* key, const std::string& fallback) const;
+  bool flag(const char* key, bool fallback) const;  // true or false, nothing else
 
   [[noreturn]] void fail(const std::string& message) const;
 

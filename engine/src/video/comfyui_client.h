@@ -5,7 +5,7 @@
 #pragma once
 
 #include "net/http_transport.h"
-#include "video/generator_hooks.h"
+#include "video/hosted_session.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -55,9 +55,7 @@ std::optional<ComfyuiFile> find_comfyui_output(const nlohmann::json& history,
 // Percent-encodes a query-string value (RFC 3986 unreserved characters stay).
 std::string url_encode(const std::string& s);
 
-struct ComfyuiHooks : GeneratorHooks {
-  std::function<void(double seconds)> sleep;  // empty = std::this_thread::sleep_for
-};
+using ComfyuiHooks = HostedHooks;
 
 // For candidates 0..N-1 in order: uploads run_dir/recolored.png, queues the workflow filled with
 // the uploaded name, the prompt (options.prompt_template), seed + i and options.frames, polls

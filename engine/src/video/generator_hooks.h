@@ -11,6 +11,7 @@ namespace svgm {
 struct GeneratorHooks {
   std::function<void(double fraction, const std::string& note)> progress;  // may be empty
   std::function<void(const std::string& line)> log;                        // may be empty
+  std::function<void(const std::string& line)> warn;  // a warning the user sees; may be empty
   std::function<bool()> cancelled;                                         // may be empty
 };
 
