@@ -127,7 +127,9 @@ fallback noauth "HTTP 401"
 # asked again next run).
 hang_s=$(awk '$1 == "grouper" && $2 == "llm" {print $3}' "$tmp/hang.out")
 check "a fallback leaves no manifest, so the next run asks again" '[[ ! -f $tmp/hang/.svgmotion/grouper.json && -f $tmp/hang/.svgmotion/fitter.json ]]'
-check "the hanging server (20 s) costs the timeout (2 s) + at most 6 s: grouper took ${hang_s:-?} s" \
-  '"$py" -c "import sys; sys.exit(not 2 <= float(sys.argv[1]) <= 8)" "${hang_s:-99}"'
+# A wide margin, not a speed claim: the stage must end well before the 20 s hang would let it
+# (a loaded machine took 10 s for the 2 s timeout plus the rest of the stage).
+check "the hanging server (20 s) costs the timeout (2 s), not the hang: grouper took ${hang_s:-?} s" \
+  '"$py" -c "import sys; sys.exit(not 2 <= float(sys.argv[1]) <= 17)" "${hang_s:-99}"'
 
 finish
