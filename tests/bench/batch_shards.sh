@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Two `svgmotion batch` shards at once on one machine, with PoCL's threads unpinned (the
+# default for batch) and pinned (--pin): the wall time of each shard, and whether the kernel
+# cache both shards filled at once is valid afterwards (every entry's magic, length, FNV-1a).
+#   bash tests/bench/batch_shards.sh [SVGMOTION_BINARY] [ROUNDS]
+# Items: the bundled man.svg, procedural target (1 candidate, 9 frames at 256 px), 200 fitter
+# iterations on 5 keyframes at 128 px; 4 items, 2 per shard. Each mode starts with an empty
+# kernel cache, so both shards compile and write the same entries at the same time.
+# Timings on a machine others are using say little; report the load with them.
+set -u
+bin=$(realpath "${1:-build/frontends/svgmotion}")
+rounds=${2:-1}
+src=$(cd "$(dirname "$0")/../.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+{
+  echo "id,input,prompt"
+  for i in 0 1 2 3; do echo "man$i,$src/tests/data/examples/man.svg,the man waves his right arm"; done
+} >"$work/m.csv"
+settings=(stages.video.candidates=1 stages.video.frames=9 stages.video.size=256 stages.ranker.accept_flagged=true
+          stages.fitter.iterations=200 stages.fitter.keyframes=5 stages.fitter.size=128 seed=1)
+valid_cache() {
+  python3 - "$1/kernels" <<'PY'
+import os, struct, sys
+d = sys.argv[1]; names = os.listdir(d); good = 0
+def fnv(b):
+    h = 1469598103934665603
+    for c in b: h = ((h ^ c) * 1099511628211) & 0xFFFFFFFFFFFFFFFF
+    return h
+for n in names:
+    b = open(os.path.join(d, n), "rb").read()
+    size, h = struct.unpack("<QQ", b[8:24])
+    good += b[:8] == b"SVGMKC1\n" and size == len(b) - 24 and h == fnv(b[24:])
+print("%d of %d entries valid%s" % (good, len(names), "" if good == len(names) else " (INVALID)"))
+PY
+}
+for ((r = 1; r <= rounds; r++)); do
+  for mode in unpinned pinned; do
+    out=$work/$mode$r
+    flag=()
+    [[ $mode == pinned ]] && flag=(--pin)
+    export SVGMOTION_CACHE_DIR=$out/cache
+    for s in 0 1; do
+      ( start=$(date +%s%N)
+        "$bin" batch "$work/m.csv" -o "$out" --shard $s/2 "${flag[@]}" "${settings[@]}" >"$out.$s.log" 2>&1
+        rc=$?
+        ms=$((($(date +%s%N) - start) / 1000000))
+        printf '%d.%d\n' $((ms / 1000)) $((ms % 1000 / 100)) >"$out.$s.time"
+        echo $rc >"$out.$s.rc" ) &
+    done
+    wait
+    printf 'round %d %-8s shard 0: %6.1f s (exit %s)  shard 1: %6.1f s (exit %s)  load %s  cache: %s\n' "$r" "$mode" \
+      "$(cat "$out.0.time")" "$(cat "$out.0.rc")" "$(cat "$out.1.time")" "$(cat "$out.1.rc")" \
+      "$(cut -d' ' -f1 /proc/loadavg)" "$(valid_cache "$out/cache")"
+    cut -d, -f1,2,4,5,7 "$out/summary.csv" | sed 's/^/    /'
+  done
+done
