@@ -34,24 +34,32 @@ for n in names:
 print("%d of %d entries valid%s" % (good, len(names), "" if good == len(names) else " (INVALID)"))
 PY
 }
+# Modes: "2 threads" lets each shard's PoCL use both cores (a process outside Slurm);
+# "1 thread" gives each one, as a Slurm task with --cpus-per-task=1 on this node would
+# (SLURM_* variables set by hand). PoCL pins worker i to core i, so pinned 1-thread shards
+# both land on core 0.
+slurm1=(env SLURM_JOB_ID=1 SLURM_CPUS_PER_TASK=1 SLURM_CPUS_ON_NODE=1)
 for ((r = 1; r <= rounds; r++)); do
-  for mode in unpinned pinned; do
-    out=$work/$mode$r
+  for mode in "2 threads unpinned" "2 threads pinned" "1 thread unpinned" "1 thread pinned"; do
+    out=$work/${mode// /_}$r
     flag=()
-    [[ $mode == pinned ]] && flag=(--pin)
-    export SVGMOTION_CACHE_DIR=$out/cache
+    [[ $mode == *" pinned" ]] && flag=(--pin)
+    pre=()
+    [[ $mode == "1 thread"* ]] && pre=("${slurm1[@]}")
+    # Fresh caches for every mode (ours and PoCL's own), so each starts from the same state.
+    export SVGMOTION_CACHE_DIR=$out/cache POCL_CACHE_DIR=$out/pocl-cache
     for s in 0 1; do
       ( start=$(date +%s%N)
-        "$bin" batch "$work/m.csv" -o "$out" --shard $s/2 "${flag[@]}" "${settings[@]}" >"$out.$s.log" 2>&1
+        "${pre[@]}" "$bin" batch "$work/m.csv" -o "$out" --shard $s/2 "${flag[@]}" "${settings[@]}" >"$out.$s.log" 2>&1
         rc=$?
         ms=$((($(date +%s%N) - start) / 1000000))
         printf '%d.%d\n' $((ms / 1000)) $((ms % 1000 / 100)) >"$out.$s.time"
         echo $rc >"$out.$s.rc" ) &
     done
     wait
-    printf 'round %d %-8s shard 0: %6.1f s (exit %s)  shard 1: %6.1f s (exit %s)  load %s  cache: %s\n' "$r" "$mode" \
+    printf 'round %d %-18s shard 0: %6.1f s (exit %s)  shard 1: %6.1f s (exit %s)  load %s  cache: %s\n' "$r" "$mode" \
       "$(cat "$out.0.time")" "$(cat "$out.0.rc")" "$(cat "$out.1.time")" "$(cat "$out.1.rc")" \
       "$(cut -d' ' -f1 /proc/loadavg)" "$(valid_cache "$out/cache")"
-    cut -d, -f1,2,4,5,7 "$out/summary.csv" | sed 's/^/    /'
+    tail -n +2 "$out/summary.csv" | cut -d, -f1,2,4,5,7 | tr '\n' ' ' | sed 's/^/    /;s/$/\n/'
   done
 done
