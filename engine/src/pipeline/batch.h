@@ -5,7 +5,7 @@
 // shell: video/command_runner.h) in OUT/<id>/, its output in OUT/<id>/batch.log. A process per
 // item isolates items: a crash, an OpenCL driver fault or a leak in one drawing ends that
 // item only, and the item's peak memory is the process's own (wait4). The run's stage
-// manifests make a batch idempotent: a finished item is up to date and costs a second or so, a
+// manifests make a batch idempotent: a finished item is up to date and costs a few seconds, a
 // failed or interrupted one resumes from where it stopped.
 //
 // After every item its record goes to OUT/<id>/batch.json, and the summary of the whole
