@@ -43,6 +43,9 @@ slurm1=(env SLURM_JOB_ID=1 SLURM_CPUS_PER_TASK=1 SLURM_CPUS_ON_NODE=1)
 export POCL_CACHE_DIR=$work/pocl-cache
 SVGMOTION_CACHE_DIR=$work/warm-cache "$bin" run --input "$src/tests/data/examples/man.svg" --prompt "the man waves his right arm" \
   -o "$work/warm" --quiet "${settings[@]}" >/dev/null 2>&1 || echo "warm-up run failed"
+# PoCL's cache entries depend on its thread count: warm the 1-thread device too.
+"${slurm1[@]}" SVGMOTION_CACHE_DIR=$work/warm-cache "$bin" run --input "$src/tests/data/examples/man.svg" \
+  --prompt "the man waves his right arm" -o "$work/warm1" --quiet "${settings[@]}" >/dev/null 2>&1 || echo "warm-up run failed"
 for ((r = 1; r <= rounds; r++)); do
   for mode in "2 threads unpinned" "2 threads pinned" "1 thread unpinned" "1 thread pinned"; do
     out=$work/${mode// /_}$r
