@@ -15,9 +15,10 @@ packages=(
   libpng-dev doctest-dev nlohmann-json3-dev libcurl4-openssl-dev
 )
 # Test-only: ffprobe for clip checks, the two Lottie players the export is checked in
-# (Chromium for lottie-web, librlottie), node and npm for lottie-web (tests/integration/export_test.sh).
+# (Chromium for lottie-web, librlottie), node and npm for lottie-web (tests/integration/export_test.sh),
+# and a one-node Slurm for the batch test (tests/integration/batch_test.sh slurm).
 if [[ $mode == test ]]; then
-  packages+=(ffmpeg chromium librlottie-dev)
+  packages+=(ffmpeg chromium librlottie-dev munge slurmd slurmctld slurm-client)
   command -v node >/dev/null && command -v npm >/dev/null || packages+=(nodejs npm)
 fi
 missing=()
@@ -49,5 +50,6 @@ else
   cp tests/integration/lottie/package.json build/npm/package.json
   (cd build/npm && npm install --no-audit --no-fund --no-package-lock --loglevel=error >/dev/null)
   # Tests share the one OpenCL device; two at a time keeps both cores busy.
-  ctest --test-dir build --output-on-failure -j 2
+  # The Slurm batch test may not skip here: its packages were installed above.
+  SVGM_REQUIRE_SLURM=1 ctest --test-dir build --output-on-failure -j 2
 fi

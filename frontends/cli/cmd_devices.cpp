@@ -1,8 +1,11 @@
 // `svgmotion devices`: the OpenCL devices this machine offers, and which `auto` picks.
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 
 #include "cli/cli_args.h"
 #include "cli/commands.h"
+#include "opencl/cpu_share.h"
 #include "svgmotion/device.h"
 
 namespace svgm::cli {
@@ -18,6 +21,13 @@ int cmd_devices(const std::vector<std::string>& argv) {
                 d.global_mem_bytes / 1e9, d.version.c_str());
   }
   std::printf("(* = what --device auto picks)\n");
+  // What PoCL's CPU device was told (opencl/cpu_share.h), for checking a cluster job's manners.
+  const CpuShare share = apply_cpu_share();
+  const char* threads = std::getenv("POCL_MAX_PTHREAD_COUNT");
+  const bool pinned = std::getenv("POCL_AFFINITY") && std::string(std::getenv("POCL_AFFINITY")) == "1";
+  const bool ours = threads && std::to_string(share.threads) == threads && pinned == share.pin;
+  std::printf("PoCL CPU threads: %s, %s (%s)\n", threads ? threads : "?", pinned ? "pinned to cores" : "not pinned",
+              ours ? share.why.c_str() : "set in the environment");
   return 0;
 }
 

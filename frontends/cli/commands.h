@@ -13,6 +13,7 @@ int cmd_fit(const std::vector<std::string>& args);
 int cmd_palette(const std::vector<std::string>& args);
 int cmd_run(const std::vector<std::string>& args);
 int cmd_plugins(const std::vector<std::string>& args);
+int cmd_batch(const std::vector<std::string>& args);
 
 
 }  // namespace svgm::cli

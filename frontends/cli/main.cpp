@@ -23,6 +23,8 @@ usage:
   svgmotion render IN.svg -o OUT.png [--size W] [--background white|transparent] [--time T]
                    [--device D] [--strict]
   svgmotion render ANIMATION.svg -o CLIP.mp4|.webm|.gif|DIR/%04d.png [--fps F] [--size W]
+  svgmotion batch MANIFEST -o OUT_DIR [CONFIG.yaml] [--shard I/N] [--device D] [--pin]
+                  [key.path=value ...]
   svgmotion plugins
   svgmotion devices
   svgmotion palette N
@@ -107,6 +109,28 @@ The format follows OUT's extension, and OUT may not be the input.
   --device D               OpenCL device
   --strict                 unsupported content is an error, not a warning
 )"},
+    {"batch", R"(usage: svgmotion batch MANIFEST -o OUT_DIR [CONFIG.yaml] [options] [key.path=value ...]
+
+Runs `svgmotion run` for every item of MANIFEST (CSV with a header row, or YAML) in
+OUT_DIR/<id>/, one process per item, so a failing item never stops the others. Finished items
+are up to date on a re-run (the runs' manifests), failed and interrupted ones resume. After
+every item OUT_DIR/summary.csv and summary.json list every item: status (done, failed,
+rejected, flagged, interrupted, pending), reason, seconds, fidelity (worst keyframe PSNR and
+IoU), peak memory.
+
+  MANIFEST           columns/keys: input (required), id, prompt, target (a video: fitted to it
+                     through the file provider), overrides ("key=value ..."); paths relative to it
+  -o, --output DIR   where the run directories and the summary go (required)
+  CONFIG.yaml        a config for every item; key.path=value settings follow (items' last)
+  --shard I/N        take items I, I+N, I+2N, ... (counted from 0); under a Slurm job array
+                     the array variables pick the shard
+  --device D         OpenCL device for every item
+  --pin              pin PoCL's threads to cores (only for a batch alone on its machine)
+  --quiet            no line per item
+
+Threads follow SLURM_CPUS_PER_TASK and the CPUs this process may use. Exit status 0 when
+every item of the shard is done, 1 when some are not (see the summary), 130 interrupted.
+)"},
     {"plugins", "usage: svgmotion plugins\n\nLists the stage plugins found (stage, name, version, path) and every\nrefused module with its reason.\n"},
     {"devices", "usage: svgmotion devices\n\nLists the OpenCL devices; * marks the one --device auto picks.\n"},
     {"palette", "usage: svgmotion palette N\n\nPrints N maximally distinct colours (white reserved), one #rrggbb per line.\n"},
@@ -167,6 +191,7 @@ int main(int argc, char** argv) {
     if (cmd == "palette") return svgm::cli::cmd_palette(args);
     if (cmd == "run") return svgm::cli::cmd_run(args);
     if (cmd == "plugins") return svgm::cli::cmd_plugins(args);
+    if (cmd == "batch") return svgm::cli::cmd_batch(args);
     std::fprintf(stderr, "svgmotion: unknown command '%s' (try svgmotion help)\n", cmd.c_str());
     return 2;
   } catch (const svgm::Rejected& e) {

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "opencl/cl.h"
+#include "opencl/cpu_share.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -32,11 +33,12 @@ constexpr const char* kNoPlatform =
 }  // namespace
 
 std::vector<DeviceInfo> list_devices() {
-  // PoCL's CPU device: pin its worker threads to cores. Unpinned, a process ran either at full
-  // speed or at about half (measured 0.88 ms vs 1.73 ms per batch, decided at start-up by where
-  // the scheduler put the workers). Read by PoCL when the platform loads; a user's own setting
-  // wins (overwrite = 0).
-  setenv("POCL_AFFINITY", "1", 0);
+  // PoCL's CPU device: pin its worker threads to cores when this process owns the machine.
+  // Unpinned, a lone process ran either at full speed or at about half (measured 0.88 ms vs
+  // 1.73 ms per batch, decided at start-up by where the scheduler put the workers); but jobs
+  // sharing a machine would pin to the same cores, so they are not pinned (cpu_share.h). Read by
+  // PoCL when the platform loads; a user's own setting wins.
+  apply_cpu_share();
   std::vector<cl::Platform> platforms;
   try {
     cl::Platform::get(&platforms);

@@ -4,11 +4,9 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <optional>
 
-#include <unistd.h>
-
+#include "opencl/kernel_cache.h"
 #include "opencl/kernel_sources.h"
 #include "svgmotion/error.h"
 
@@ -22,35 +20,6 @@ uint64_t fnv1a(std::string_view s) {
   uint64_t h = 1469598103934665603ull;
   for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
   return h;
-}
-
-fs::path cache_dir() {
-  if (const char* d = std::getenv("SVGMOTION_CACHE_DIR"); d && *d) return fs::path(d);
-  if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d) return fs::path(d) / "svgmotion";
-  if (const char* d = std::getenv("HOME"); d && *d) return fs::path(d) / ".cache" / "svgmotion";
-  return {};
-}
-
-std::string read_file(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-
-// Writes through a temporary name and a rename, so a concurrent reader never sees half a file.
-void write_file_atomic(const fs::path& p, const std::string& bytes) {
-  std::error_code ec;
-  fs::create_directories(p.parent_path(), ec);
-  const fs::path tmp = p.string() + ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    if (!f) return;
-    f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    if (!f) { fs::remove(tmp, ec); return; }
-  }
-  fs::rename(tmp, p, ec);
-  if (ec) fs::remove(tmp, ec);
 }
 
 }  // namespace
@@ -100,16 +69,16 @@ cl::Program& ClRuntime::program(const std::vector<std::string>& files,
                                options + "|" + source;
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(disk_key)));
-  const fs::path dir = cache_dir();
+  const fs::path dir = kernel_cache_dir();
   const fs::path cached = dir.empty() ? fs::path() : dir / "kernels" / (std::string(hex) + ".bin");
 
   cl::Program prog;
   bool built = false;
-  std::error_code ec;
-  if (!cached.empty() && fs::exists(cached, ec)) {
+  // A truncated or corrupt file reads as missing (kernel_cache.h); one the driver refuses
+  // (another driver version) is rebuilt too; either way the rebuild rewrites the entry.
+  if (const auto bin = cached.empty() ? std::nullopt : read_cached_binary(cached)) {
     try {
-      const std::string bin = read_file(cached);
-      cl::Program::Binaries bins{std::vector<unsigned char>(bin.begin(), bin.end())};
+      cl::Program::Binaries bins{std::vector<unsigned char>(bin->begin(), bin->end())};
       prog = cl::Program(context_, {device_}, bins);
       prog.build({device_}, options.c_str());
       built = true;
@@ -129,7 +98,7 @@ cl::Program& ClRuntime::program(const std::vector<std::string>& files,
       try {
         const auto bins = prog.getInfo<CL_PROGRAM_BINARIES>();
         if (!bins.empty() && !bins[0].empty())
-          write_file_atomic(cached, std::string(bins[0].begin(), bins[0].end()));
+          write_cached_binary(cached, std::string(bins[0].begin(), bins[0].end()));
       } catch (const cl::Error&) {
         // A device that cannot return binaries just compiles every time.
       }

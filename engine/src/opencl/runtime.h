@@ -4,7 +4,8 @@
 // on disk by (platform, device, driver, source hash, options): PoCL takes seconds to compile,
 // and a second run of the CLI should not pay that again. The cache lives in
 // $SVGMOTION_CACHE_DIR, else $XDG_CACHE_HOME/svgmotion, else ~/.cache/svgmotion; an unusable
-// cache directory only costs compile time, never an error.
+// cache directory only costs compile time, never an error; concurrent writers and truncated
+// files are safe (kernel_cache.h).
 #pragma once
 
 #include <map>

@@ -4,6 +4,7 @@
 #include <signal.h>
 #include <spawn.h>
 #include <sys/types.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -68,10 +69,11 @@ struct SpawnSetup {
   SpawnSetup& operator=(const SpawnSetup&) = delete;
 };
 
-// waitpid that retries on EINTR; returns the pid, 0 (still running, WNOHANG) or -1.
-pid_t wait_for(pid_t pid, int* status, int flags) {
+// wait4 that retries on EINTR; returns the pid, 0 (still running, WNOHANG) or -1. `usage`
+// gets the reaped program's resource use (its peak memory).
+pid_t wait_for(pid_t pid, int* status, int flags, struct rusage* usage) {
   for (;;) {
-    const pid_t r = ::waitpid(pid, status, flags);
+    const pid_t r = ::wait4(pid, status, flags, usage);
     if (r < 0 && errno == EINTR) continue;
     return r;
   }
@@ -183,12 +185,16 @@ CommandResult run_command(const std::vector<std::string>& argv, const std::files
   }
 
   int status = 0;
+  struct rusage usage {};
   bool stopping = false;  // SIGTERM sent
   Clock::time_point term_time{};
   bool killed = false;
   for (;;) {
-    const pid_t r = wait_for(pid, &status, WNOHANG);
-    if (r == pid) break;
+    const pid_t r = wait_for(pid, &status, WNOHANG, &usage);
+    if (r == pid) {
+      result.peak_rss_kb = usage.ru_maxrss;  // kilobytes on Linux
+      break;
+    }
     if (r < 0) {  // cannot happen for our own child; do not spin
       result.spawn_error = std::string("waitpid: ") + std::strerror(errno);
       ::kill(-pid, SIGKILL);

@@ -27,6 +27,7 @@ struct CommandResult {
   int signal = 0;           // that signal
   std::string spawn_error;  // non-empty when the program could not be started at all
   double seconds = 0;       // wall time from start to reaping
+  long peak_rss_kb = 0;     // the program's peak resident memory (with its waited-for children)
 
   // Exited by itself with status 0.
   bool ok() const { return spawn_error.empty() && !signalled && !timed_out && !cancelled && status == 0; }

@@ -1,0 +1,34 @@
+// The list of drawings `svgmotion batch` animates: a CSV or YAML manifest, one item per
+// drawing, each becoming one run directory named after its id.
+//
+// CSV: a header row naming the columns, then one row per item; `input` is required, `id`,
+// `prompt`, `target` (a video or folder of frames: the item is fitted to it through the `file`
+// video provider) and `overrides` (space-separated key.path=value settings) are optional.
+// Fields may be double-quoted ("" is a quote); blank lines and lines starting with # are skipped.
+// YAML: a list of items, or a map whose `items` is that list; each item a map with the same
+// keys, `overrides` either a map (nested maps become dotted keys) or a list of "key=value".
+// Relative paths are relative to the manifest's folder. An item's id defaults to its input's
+// file name without extension; ids are letters, digits, '.', '_' and '-' and must be unique.
+// Whether an input exists is not checked here: a missing file fails that item only.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace svgm {
+
+struct BatchItem {
+  std::string id;                      // the run directory's name
+  std::filesystem::path input;         // the SVG (absolute)
+  std::string prompt;
+  std::filesystem::path target;        // empty: the config's video provider makes one
+  std::vector<std::string> overrides;  // "key.path=value", after the batch's own
+  int line = 0;                        // where the item starts in the manifest (1-based)
+};
+
+// Reads a manifest (.csv, or .yaml/.yml). Throws svgm::Error "FILE:LINE: problem" for a
+// malformed manifest, an unknown column or key, a missing input field, a bad or repeated id.
+std::vector<BatchItem> read_batch_manifest(const std::filesystem::path& file);
+
+}  // namespace svgm

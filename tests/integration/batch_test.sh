@@ -1,0 +1,232 @@
+#!/usr/bin/env bash
+# `svgmotion batch` integration tests: batch_test.sh MODE SVGMOTION_BINARY SOURCE_DIR
+#   local  the command itself: manifest errors, a failing item among good ones, the summary,
+#          the re-run that skips finished items, two shards of one manifest
+#   slurm  a real one-node Slurm (munged, slurmctld, slurmd on localhost, from the Debian
+#          packages, with a config written here and stopped on exit) runs
+#          examples/slurm/svgmotion_array.sbatch as a 3-task array over 6 items with
+#          `sbatch --wait`; every item is taken exactly once, the summary is complete, the
+#          broken item is reported and the others are done, the shared kernel cache is valid.
+#          Needs root; without Slurm or root it is skipped (exit 77) unless SVGM_REQUIRE_SLURM=1
+#          (set by .ci/setup.sh test, which installs the packages).
+# Items are tiny: 48-px drawings made here, a 3-frame target each, 30 fitter iterations.
+set -u
+mode=$1 bin=$2 src=$3
+source "$(cd "$(dirname "$0")" && pwd)/test_lib.sh"
+
+# A small drawing: a coloured square and a blue disc.
+drawing() {
+  printf '<svg xmlns="http://www.w3.org/2000/svg" width="48" height="48" viewBox="0 0 48 48">'
+  printf '<rect id="box" x="6" y="14" width="16" height="16" fill="%s"/>' "$1"
+  printf '<circle id="dot" cx="32" cy="24" r="7" fill="#3050d0"/></svg>\n'
+}
+
+# frames COLOUR DIR: the drawing's target, 3 PNG frames moving right by 0, 1, 2 px, painted
+# here (one python process instead of an OpenCL start-up per frame): white, the square, the disc.
+frames() {
+  "$py" - "$1" "$2" <<'PY'
+import os, struct, sys, zlib
+colour, out = sys.argv[1], sys.argv[2]
+os.makedirs(out, exist_ok=True)
+box = tuple(int(colour[k:k + 2], 16) for k in (1, 3, 5))
+def chunk(kind, data):
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+for f in range(3):
+    rows = b""
+    for y in range(48):
+        row = bytearray(b"\0")
+        for x in range(48):
+            px, py_ = x + 0.5 - f, y + 0.5
+            rgb = (255, 255, 255)
+            if 6 <= px < 22 and 14 <= py_ < 30: rgb = box
+            if (px - 32) ** 2 + (py_ - 24) ** 2 < 49: rgb = (0x30, 0x50, 0xd0)
+            row += bytes(rgb)
+        rows += bytes(row)
+    png = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 48, 48, 8, 2, 0, 0, 0))
+    png += chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b"")
+    open(os.path.join(out, "%d.png" % f), "wb").write(png)
+PY
+}
+
+# make_items N: N drawings with a 3-frame target each (the drawing moving right by 0..2 px),
+# a broken SVG, and manifest.csv listing them (the broken one second).
+make_items() {
+  local n=$1 colours=("#d03030" "#30a040" "#c0a020" "#9030c0" "#20a0a0" "#e07020")
+  mkdir -p "$tmp/in"
+  echo "id,input,prompt,target,overrides" >"$tmp/in/manifest.csv"
+  for ((i = 0; i < n; i++)); do
+    drawing "${colours[i]}" >"$tmp/in/d$i.svg"
+    frames "${colours[i]}" "$tmp/in/t$i" || bad "frames of item $i"
+    echo "d$i,d$i.svg,it moves right,t$i," >>"$tmp/in/manifest.csv"
+    if ((i == 0)); then
+      printf '<svg xmlns="http://www.w3.org/2000/svg"><g><rect width="5"></svg>' >"$tmp/in/broken.svg"
+      echo "broken,broken.svg,it moves,t0," >>"$tmp/in/manifest.csv"
+    fi
+  done
+}
+small=(stages.ranker.plugin=first stages.fitter.iterations=30 stages.fitter.keyframes=3 stages.fitter.size=48
+       stages.tracker.plugin=none)
+
+# field N of the summary row for item ID
+field() { awk -F, -v id="$1" -v n="$2" '$1 == id { print $n }' "$3"; }
+
+case $mode in
+local)
+  make_items 2  # d0, broken, d1
+  export SVGMOTION_CACHE_DIR=$tmp/cache
+  "$bin" batch "$tmp/in/manifest.csv" -o "$tmp/out" "${small[@]}" >"$tmp/o1" 2>"$tmp/e1"
+  rc=$?
+  check "a batch with a broken item exits 1 naming the count and the summary" \
+    '[[ $rc -eq 1 ]] && grep -qx "svgmotion: batch: 1 of 3 items of shard 0/1 not done (see $tmp/out/summary.csv)" "$tmp/e1"'
+  check "the item after the broken one still runs" '[[ $(grep -c ": done in" "$tmp/o1") -eq 2 ]] && [[ -s $tmp/out/d1/animation.svg ]]'
+  check "the summary has a row per item, in manifest order" \
+    '[[ $(cut -d, -f1,2 "$tmp/out/summary.csv" | tr "\n" " ") == "id,status d0,done broken,failed d1,done " ]]'
+  check "the broken item's reason is the run's error line naming its file" \
+    '[[ $(field broken 3 "$tmp/out/summary.csv") == *"broken.svg"* ]] && grep -q "\"status\": \"failed\"" "$tmp/out/broken/batch.json"'
+  check "done items have seconds, fidelity (PSNR, IoU) and peak memory" \
+    'awk -F, '"'"'$2 == "done" && !($4 > 0 && $5 > 10 && $6 > 0.5 && $6 <= 1 && $7 > 10) { bad = 1 } END { exit bad }'"'"' "$tmp/out/summary.csv"'
+  check "summary.json agrees (counts and total)" \
+    '"$py" -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(not (j[\"total\"]==3 and j[\"counts\"]==dict(done=2, failed=1)))" "$tmp/out/summary.json"'
+  cp "$tmp/out/summary.csv" "$tmp/first.csv"
+  "$bin" batch "$tmp/in/manifest.csv" -o "$tmp/out" "${small[@]}" >"$tmp/o2" 2>"$tmp/e2"
+  check "a re-run skips the finished items (up to date) and retries the broken one" \
+    '[[ $(grep -c ": done.*(up to date)$" "$tmp/o2") -eq 2 ]] && grep -q "broken: failed" "$tmp/o2"'
+  check "a skipped item keeps the seconds of the run that fitted it" \
+    '[[ $(field d1 4 "$tmp/out/summary.csv") == $(field d1 4 "$tmp/first.csv") ]]'
+  # Two shards of one manifest at once into the same folder (up to date by now, so quick):
+  # each takes its own items, and the summary both rewrite under the lock stays complete.
+  "$bin" batch "$tmp/in/manifest.csv" -o "$tmp/out" --shard 0/2 "${small[@]}" >"$tmp/s0" 2>&1 &
+  p0=$!
+  "$bin" batch "$tmp/in/manifest.csv" -o "$tmp/out" --shard 1/2 "${small[@]}" >"$tmp/s1" 2>&1
+  rc1=$?
+  wait $p0
+  rc0=$?
+  check "shard 0/2 takes items 1 and 3 (d0, d1), shard 1/2 item 2 (broken)" \
+    '[[ $(grep -o "] [a-z0-9]*: running" "$tmp/s0" | tr "\n" " ") == "] d0: running ] d1: running " &&
+       $(grep -o "] [a-z0-9]*: running" "$tmp/s1" | tr "\n" " ") == "] broken: running " && $rc0 -eq 0 && $rc1 -eq 1 ]]'
+  check "two shards at once leave a complete summary" \
+    '[[ $(cut -d, -f2 "$tmp/out/summary.csv" | sort | uniq -c | tr -s " " | tr "\n" ";") == " 2 done; 1 failed; 1 status;" ]]'
+  printf 'input,colour\nx.svg,red\n' >"$tmp/bad.csv"
+  "$bin" batch "$tmp/bad.csv" -o "$tmp/none" >/dev/null 2>"$tmp/e3"
+  rc=$?
+  check "a malformed manifest: one line naming file and line, exit 1, nothing written" \
+    '[[ $rc -eq 1 && $(grep -c "" "$tmp/e3") -eq 1 && ! -e $tmp/none ]] && grep -q "bad.csv:1: unknown column '"'"'colour'"'"'" "$tmp/e3"'
+  "$bin" batch "$tmp/in/manifest.csv" -o "$tmp/none" --shard 2/2 >/dev/null 2>"$tmp/e4"
+  rc=$?
+  check "a bad --shard is one line, exit 1" '[[ $rc -eq 1 && ! -e $tmp/none ]] && grep -qx "svgmotion: --shard 2/2: I must be in 0..1 and N at least 1" "$tmp/e4"'
+  finish
+  ;;
+slurm)
+  missing=
+  for p in munged mungekey slurmctld slurmd sbatch scontrol; do command -v "$p" >/dev/null || missing+=" $p"; done
+  if [[ -n $missing || $(id -u) -ne 0 ]]; then
+    why=${missing:+missing$missing}
+    [[ $(id -u) -ne 0 ]] && why+=" (needs root)"
+    if [[ -n ${SVGM_REQUIRE_SLURM:-} ]]; then bad "Slurm test cannot run: $why"; finish; fi
+    echo "skipped: $why (apt-get install munge slurmctld slurmd slurm-client; run as root)"
+    exit 77
+  fi
+  make_items 5  # 6 items: d0, broken, d1, d2, d3, d4
+  chmod 755 "$tmp"  # munged refuses a socket folder others cannot reach
+  s=$tmp/slurm
+  mkdir -p "$s/state" "$s/spool"
+  export SLURM_CONF=$s/slurm.conf
+  daemons_up=
+  stop_daemons() {
+    [[ -n $daemons_up ]] && timeout 10 scontrol shutdown >/dev/null 2>&1
+    for f in slurmd slurmctld munged; do
+      [[ -s $s/$f.pid ]] || continue
+      pid=$(cat "$s/$f.pid")
+      kill "$pid" 2>/dev/null
+      for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+      kill -9 "$pid" 2>/dev/null
+    done
+    cleanup
+  }
+  trap stop_daemons EXIT
+  mungekey -c -k "$s/munge.key" >/dev/null 2>&1 || bad "mungekey"
+  munged --key-file="$s/munge.key" --socket="$s/munge.sock" --pid-file="$s/munged.pid" \
+    --log-file="$s/munged.log" --seed-file="$s/munged.seed" || bad "munged did not start"
+  port=$("$py" -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+  host=$(hostname -s)
+  cat >"$s/slurm.conf" <<CONF
+ClusterName=svgmtest
+SlurmctldHost=$host(127.0.0.1)
+SlurmUser=root
+SlurmdUser=root
+SlurmctldPort=$port
+SlurmdPort=$((port + 1))
+AuthType=auth/munge
+AuthInfo=socket=$s/munge.sock
+CredType=cred/munge
+StateSaveLocation=$s/state
+SlurmdSpoolDir=$s/spool
+SlurmctldPidFile=$s/slurmctld.pid
+SlurmdPidFile=$s/slurmd.pid
+SlurmctldLogFile=$s/slurmctld.log
+SlurmdLogFile=$s/slurmd.log
+ProctrackType=proctrack/linuxproc
+TaskPlugin=task/none
+JobAcctGatherType=jobacct_gather/none
+AccountingStorageType=accounting_storage/none
+JobCompType=jobcomp/none
+SchedulerType=sched/builtin
+SelectType=select/cons_tres
+SelectTypeParameters=CR_CPU
+ReturnToService=2
+MpiDefault=none
+NodeName=$host NodeAddr=127.0.0.1 CPUs=$(nproc) State=UNKNOWN
+PartitionName=test Nodes=ALL Default=YES MaxTime=INFINITE State=UP
+CONF
+  daemons_up=1
+  slurmctld || bad "slurmctld did not start"
+  slurmd -N "$host" || bad "slurmd did not start"
+  for _ in $(seq 100); do sinfo -h -o %t 2>/dev/null | grep -q idle && break; sleep 0.2; done
+  check "a one-node Slurm is up (node idle)" 'sinfo -h -o %t | grep -q idle'
+  export SVGMOTION=$bin SVGMOTION_CACHE_DIR=$tmp/out/.kernel-cache
+  # Three tasks on a 2-CPU node: one CPU each, so two run at once and the third queues. The
+  # script's own --time and --mem are for real clusters; this node has no memory limits.
+  start=$SECONDS
+  timeout 240 sbatch --wait --quiet --array=0-2 --cpus-per-task=1 --mem=0 --time=10 --output="$tmp/task-%a.out" \
+    "$src/examples/slurm/svgmotion_array.sbatch" "$tmp/in/manifest.csv" "$tmp/out" "${small[@]}" >"$tmp/sbatch.out" 2>&1
+  rc=$?
+  echo "# sbatch --wait returned $rc after $((SECONDS - start)) s"
+  [[ $rc -eq 124 ]] && squeue -o "# %i %t %r" && tail -n 5 "$s/slurmctld.log" "$s/slurmd.log"
+  check "sbatch --wait returns (non-zero: one task had the broken item)" '[[ $rc -ne 0 && $rc -ne 124 ]]'
+  for a in 0 1 2; do echo "# task $a:"; sed 's/^/#   /' "$tmp/task-$a.out"; done
+  check "each task took its shard: 2 items each" \
+    'for a in 0 1 2; do [[ $(grep -c ": running$" "$tmp/task-$a.out") -eq 2 ]] && grep -q "batch: shard $a/3 of" "$tmp/task-$a.out" || exit 1; done'
+  check "every item was run exactly once across the tasks" \
+    '[[ $(cat "$tmp"/task-*.out | grep -o "] [a-z0-9]*: running" | sort | uniq -c | awk "\$1 == 1" | wc -l) -eq 6 ]]'
+  check "the summary is complete: 5 done, the broken item failed" \
+    '[[ $(cut -d, -f2 "$tmp/out/summary.csv" | sort | uniq -c | tr -s " " | tr "\n" ";") == " 5 done; 1 failed; 1 status;" ]]'
+  check "the broken item's reason names its file" '[[ $(field broken 3 "$tmp/out/summary.csv") == *broken.svg* ]]'
+  check "items record the shard that ran them (0/3, 1/3, 2/3 twice each)" \
+    '[[ $(cat "$tmp"/out/*/batch.json | grep -o "\"shard\": \"[0-9]/3\"" | sort | uniq -c | tr -s " " | tr "\n" ";") == " 2 \"shard\": \"0/3\"; 2 \"shard\": \"1/3\"; 2 \"shard\": \"2/3\";" ]]'
+  check "under the job PoCL gets 1 thread (SLURM_CPUS_PER_TASK) and no pinning" \
+    'for a in 0 1 2; do grep -qx "PoCL CPU threads: 1, not pinned (the job may use 1 of $(nproc) CPUs)" "$tmp/task-$a.out" || exit 1; done'
+  # The kernel cache the tasks wrote at once: every entry whole (magic, length, FNV-1a hash),
+  # no temporary left.
+  check "the shared kernel cache is valid (every entry's length and hash check, no temporaries)" \
+    '"$py" - "$SVGMOTION_CACHE_DIR/kernels" <<PY
+import os, struct, sys
+d = sys.argv[1]; names = os.listdir(d)
+def fnv(b):
+    h = 1469598103934665603
+    for c in b: h = ((h ^ c) * 1099511628211) & 0xFFFFFFFFFFFFFFFF
+    return h
+ok = bool(names) and all(n.endswith(".bin") for n in names)
+for n in names:
+    b = open(os.path.join(d, n), "rb").read()
+    size, h = struct.unpack("<QQ", b[8:24])
+    ok = ok and b[:8] == b"SVGMKC1\n" and size == len(b) - 24 and h == fnv(b[24:])
+print("# kernel cache:", len(names), "entries")
+sys.exit(not ok)
+PY'
+  finish
+  ;;
+*)
+  echo "usage: batch_test.sh local|slurm SVGMOTION_BINARY SOURCE_DIR" >&2
+  exit 2
+  ;;
+esac
