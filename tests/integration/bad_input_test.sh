@@ -37,7 +37,9 @@ expect() {
   local rc=$? lines line
   lines=$(grep -c '' "$work.stderr")
   line=$(head -n 1 "$work.stderr")
-  local pattern="svgmotion: ${want//\{file\}/$file}"
+  # A glob: '*' is any text; a backslash in the expected line stands for itself.
+  local pattern="svgmotion: ${want//\\/\\\\}"
+  pattern=${pattern//\{file\}/$file}
   local name="$cmd $(basename "$file")"
   if [[ $rc -ne 1 ]]; then
     bad "$name: exit status $rc, not 1 ($(head -c 300 "$work.stderr"))"

@@ -117,7 +117,7 @@ TEST_CASE("compiled programs are cached on disk, reused, and rebuilt when the ca
     CHECK(rt.programs_built_from_source() == 1);
     CHECK(rt.programs_loaded_from_cache() == 0);
   }
-  CHECK(fs::file_size(binary) == static_cast<uintmax_t>(first.st_size));
+  CHECK(fs::file_size(binary) > std::string("not a program binary").size());
   {
     ClRuntime rt("auto");
     rt.program({"flatten.cl"}, kOptions);

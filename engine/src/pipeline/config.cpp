@@ -176,12 +176,16 @@ void merge(const YAML::Node& user, nlohmann::json& into, const nlohmann::json& s
 }  // namespace
 
 nlohmann::json default_config() {
-  for (const auto& c : embedded_configs())
-    if (std::string_view(c.name) == "default.yaml") {
-      ValueBudget budget;
-      return to_json(YAML::Load(c.text), budget, "default.yaml");
-    }
-  throw Error("internal: no embedded default.yaml");
+  // Parsed once per process: the config fuzz target loads a config per input.
+  static const nlohmann::json defaults = [] {
+    for (const auto& c : embedded_configs())
+      if (std::string_view(c.name) == "default.yaml") {
+        ValueBudget budget;
+        return to_json(YAML::Load(c.text), budget, "default.yaml");
+      }
+    throw Error("internal: no embedded default.yaml");
+  }();
+  return defaults;
 }
 
 nlohmann::json load_config(const std::optional<std::filesystem::path>& file,
