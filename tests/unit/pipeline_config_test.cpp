@@ -114,6 +114,11 @@ TEST_CASE("config: control characters in a key stay escaped, so the error is one
   const TempFile f("stages:\n  fitter:\n    \"iter\\nations\\t\\x01\": 5\n");
   CHECK(error_of(f.path) == f.path.string() + ":3: unknown key 'stages.fitter.iter\\nations\\t\\x01'");
   CHECK(error_of(std::nullopt, {"stages.fitter.iterations=[1,\n"}).find('\n') == std::string::npos);
+  // yaml-cpp's own message quotes the offending character raw (found by the config fuzz target).
+  const TempFile esc("seed: \"a\\\rb\"\n");
+  CHECK(error_of(esc.path) == esc.path.string() + ":1: unknown escape character: \\x0d");
+  CHECK(error_of(std::nullopt, {"seed=\"a\\\rb\""}) ==
+        "override 'seed=\"a\\\\x0db\"': unknown escape character: \\x0d");
 }
 
 TEST_CASE("config: text that is not UTF-8 is refused where it is read (plugins get JSON)") {

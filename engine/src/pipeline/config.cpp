@@ -204,7 +204,8 @@ nlohmann::json load_config(const std::optional<std::filesystem::path>& file,
       throw Error(file->string() + ":" + std::to_string(e.mark.line + 1) +
                   ": nested too deeply (more than " + std::to_string(kMaxYamlDepth) + " levels)");
     } catch (const YAML::Exception& e) {
-      throw Error(file->string() + ":" + std::to_string(e.mark.line + 1) + ": " + e.msg);
+      // yaml-cpp quotes the offending character raw ("unknown escape character: " + '\n').
+      throw Error(file->string() + ":" + std::to_string(e.mark.line + 1) + ": " + shown(e.msg));
     }
     if (!root.IsNull()) {
       if (!root.IsMap()) throw Error(file->string() + ": a config is a YAML map of keys");
@@ -222,7 +223,7 @@ nlohmann::json load_config(const std::optional<std::filesystem::path>& file,
       throw Error("override '" + shown(o) + "': nested too deeply (more than " +
                   std::to_string(kMaxYamlDepth) + " levels)");
     } catch (const YAML::Exception& e) {
-      throw Error("override '" + shown(o) + "': " + e.msg);
+      throw Error("override '" + shown(o) + "': " + shown(e.msg));
     }
     // Build {a: {b: value}} and merge it like a file, so the same checks apply.
     YAML::Node tree = value;
