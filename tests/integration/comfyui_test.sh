@@ -20,7 +20,7 @@ small=(stages.ranker.accept_flagged=true stages.fitter.iterations=5 stages.fitte
 check "the procedural base run gives a video to serve" '[[ -s $tmp/base/candidates/00.mp4 && -s $tmp/base/recolored.png ]]'
 [[ -s $tmp/base/candidates/00.mp4 ]] || finish
 
-start_server "$here/fake_comfyui_server.py" --video "$tmp/base/candidates/00.mp4" --lifetime 60 \
+start_server "$here/fake_comfyui_server.py" --video "$tmp/base/candidates/00.mp4" --lifetime 600 \
   --log "$tmp/requests.log" || { bad "the fake server starts"; finish; }
 url="http://127.0.0.1:$port"
 closed=$(closed_port)

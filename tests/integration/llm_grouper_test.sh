@@ -11,7 +11,7 @@ bin=$1 data=$2
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/test_lib.sh"
 
-start_server "$here/fake_llm_server.py" --lifetime 60 --hang 20 --log "$tmp/requests.log" ||
+start_server "$here/fake_llm_server.py" --lifetime 600 --hang 20 --log "$tmp/requests.log" ||
   { bad "the fake server starts"; finish; }
 url="http://127.0.0.1:$port/v1/chat/completions"
 

@@ -24,7 +24,7 @@ last=$("$py" -c 'import json,sys; print(json.load(open(sys.argv[1]))["candidates
 pixel_best=$("$py" -c 'import json,sys; print(json.load(open(sys.argv[1]))["chosen"])' "$tmp/base/ranking.json")
 check "the pixel ranker's first and last differ" '[[ $last != "$pixel_best" ]]'
 
-start_server "$here/fake_llm_server.py" --lifetime 60 --hang 20 --log "$tmp/requests.log" ||
+start_server "$here/fake_llm_server.py" --lifetime 600 --hang 20 --log "$tmp/requests.log" ||
   { bad "the fake server starts"; finish; }
 url="http://127.0.0.1:$port/v1/chat/completions"
 closed=$(closed_port)
