@@ -247,7 +247,6 @@ std::optional<Rgba> Reader::gradient_mean(pugi::xml_node g, int depth) {
   for (pugi::xml_node stop = g.first_child(); stop; stop = stop.next_sibling()) {
     if (local_name(stop.name()) != "stop") continue;
     Style st;
-    ElementProps props;
     Rgba c{0, 0, 0, 1};
     float opacity = 1;
     auto take = [&](std::string_view k, std::string_view v) {
