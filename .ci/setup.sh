@@ -2,6 +2,7 @@
 # The README's two set-up commands in one script:
 #   bash .ci/setup.sh example   installs what is missing, builds, animates the bundled example
 #   bash .ci/setup.sh test      installs what is missing, builds, runs the whole test suite
+#                               and a short fuzzing run (tests/fuzz/run.sh)
 # Works as root or through sudo on Debian 12; installs only packages that are not there yet.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,6 +14,7 @@ packages=(
   ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd
   libeigen3-dev libpugixml-dev libopencv-dev libyaml-cpp-dev
   libpng-dev doctest-dev nlohmann-json3-dev libcurl4-openssl-dev
+  clang libclang-rt-dev
 )
 # Test-only: ffprobe for clip checks, the two Lottie players the export is checked in
 # (Chromium for lottie-web, librlottie), node and npm for lottie-web (tests/integration/export_test.sh),
@@ -52,4 +54,6 @@ else
   # Tests share the one OpenCL device; two at a time keeps both cores busy.
   # The Slurm batch test may not skip here: its packages were installed above.
   SVGM_REQUIRE_SLURM=1 ctest --test-dir build --output-on-failure -j 2
+  # The parsers under libFuzzer (clang, ASan+UBSan): the regression inputs, then 20 s each.
+  bash tests/fuzz/run.sh 20
 fi

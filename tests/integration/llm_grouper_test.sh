@@ -127,9 +127,9 @@ fallback noauth "HTTP 401"
 # asked again next run).
 hang_s=$(awk '$1 == "grouper" && $2 == "llm" {print $3}' "$tmp/hang.out")
 check "a fallback leaves no manifest, so the next run asks again" '[[ ! -f $tmp/hang/.svgmotion/grouper.json && -f $tmp/hang/.svgmotion/fitter.json ]]'
-# A wide margin, not a speed claim: the stage must end well before the 20 s hang would let it
-# (a loaded machine took 10 s for the 2 s timeout plus the rest of the stage).
+# The fact: the 2 s timeout cut the 20 s hang short. The bound leaves a wide margin for a loaded
+# machine (the stage also renders the request's PNG and groups structurally after giving up).
 check "the hanging server (20 s) costs the timeout (2 s), not the hang: grouper took ${hang_s:-?} s" \
-  '"$py" -c "import sys; sys.exit(not 2 <= float(sys.argv[1]) <= 17)" "${hang_s:-99}"'
+  '"$py" -c "import sys; sys.exit(not 2 <= float(sys.argv[1]) <= 15)" "${hang_s:-99}"'
 
 finish

@@ -3,9 +3,12 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <utility>
+#include <vector>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "opencl/runtime.h"
@@ -48,25 +51,78 @@ TEST_CASE("this machine offers at least one device and the runtime builds kernel
   CHECK(!rt.info().name.empty());
 }
 
-TEST_CASE("compiled programs are cached on disk and reused") {
+TEST_CASE("compiled programs are cached on disk, reused, and rebuilt when the cache is bad") {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("svgm_cache_test_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   setenv("SVGMOTION_CACHE_DIR", dir.c_str(), 1);
+  auto cache_files = [&] {
+    std::vector<fs::path> files;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+      if (e.is_regular_file()) files.push_back(e.path());
+    return files;
+  };
+  auto stat_of = [](const fs::path& p) {
+    struct stat st {};
+    REQUIRE(::stat(p.c_str(), &st) == 0);
+    return st;
+  };
+  const char* kOptions = "-DSVGM_CACHE_TEST=1";
+
+  // 1. An empty cache: built from source, one binary written.
   {
     ClRuntime rt("auto");
-    rt.program({"flatten.cl"}, "-DSVGM_CACHE_TEST=1");
+    rt.program({"flatten.cl"}, kOptions);
+    CHECK(rt.programs_built_from_source() == 1);
+    CHECK(rt.programs_loaded_from_cache() == 0);
+    rt.program({"flatten.cl"}, kOptions);  // the same runtime keeps it in memory
+    CHECK(rt.programs_built_from_source() == 1);
+    CHECK(rt.programs_loaded_from_cache() == 0);
   }
-  size_t files = 0;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) files += e.is_regular_file();
-  CHECK(files == 1);
+  auto files = cache_files();
+  REQUIRE(files.size() == 1);
+  const fs::path binary = files[0];
+  const struct stat first = stat_of(binary);
+  CHECK(first.st_size > 0);
+
+  // 2. A new runtime (a second run of the CLI): loaded from the binary, nothing rebuilt, the
+  //    file neither rewritten nor replaced (same inode, same modification time).
   {
     ClRuntime rt("auto");
-    rt.program({"flatten.cl"}, "-DSVGM_CACHE_TEST=1");  // loads the binary
+    rt.program({"flatten.cl"}, kOptions);
+    CHECK(rt.programs_loaded_from_cache() == 1);
+    CHECK(rt.programs_built_from_source() == 0);
   }
-  files = 0;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) files += e.is_regular_file();
-  CHECK(files == 1);
+  const struct stat second = stat_of(binary);
+  CHECK(second.st_ino == first.st_ino);
+  CHECK(second.st_mtim.tv_sec == first.st_mtim.tv_sec);
+  CHECK(second.st_mtim.tv_nsec == first.st_mtim.tv_nsec);
+  CHECK(cache_files().size() == 1);
+
+  // 3. Other build options are another program: built, and cached beside the first.
+  {
+    ClRuntime rt("auto");
+    rt.program({"flatten.cl"}, "-DSVGM_CACHE_TEST=2");
+    CHECK(rt.programs_built_from_source() == 1);
+    CHECK(rt.programs_loaded_from_cache() == 0);
+  }
+  CHECK(cache_files().size() == 2);
+
+  // 4. A damaged binary (a foreign driver's, or a truncated write) is not an error: the program
+  //    is built from source again and the cache entry replaced by a good binary.
+  { std::ofstream(binary, std::ios::binary | std::ios::trunc) << "not a program binary"; }
+  {
+    ClRuntime rt("auto");
+    rt.program({"flatten.cl"}, kOptions);
+    CHECK(rt.programs_built_from_source() == 1);
+    CHECK(rt.programs_loaded_from_cache() == 0);
+  }
+  CHECK(fs::file_size(binary) > std::string("not a program binary").size());
+  {
+    ClRuntime rt("auto");
+    rt.program({"flatten.cl"}, kOptions);
+    CHECK(rt.programs_loaded_from_cache() == 1);
+  }
   unsetenv("SVGMOTION_CACHE_DIR");
   fs::remove_all(dir);
 }

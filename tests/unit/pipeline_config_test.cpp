@@ -102,4 +102,40 @@ TEST_CASE("ordinary aliases in options still expand") {
   CHECK(o["c"][1]["size"] == 96);
 }
 
+TEST_CASE("config: a list or map as a key is an error naming its line, not an internal error") {
+  const TempFile f("seed: 1\n? [a, b]\n: 1\n");
+  CHECK(error_of(f.path) == f.path.string() + ":2: a key must be a name, not a list or a map");
+  const TempFile nested("stages:\n  video:\n    options:\n      ? {k: v}\n      : 1\n");
+  CHECK(error_of(nested.path) ==
+        nested.path.string() + ":3: 'stages.video.options': a key must be a name, not a list or a map");
+}
+
+TEST_CASE("config: control characters in a key stay escaped, so the error is one line") {
+  const TempFile f("stages:\n  fitter:\n    \"iter\\nations\\t\\x01\": 5\n");
+  CHECK(error_of(f.path) == f.path.string() + ":3: unknown key 'stages.fitter.iter\\nations\\t\\x01'");
+  CHECK(error_of(std::nullopt, {"stages.fitter.iterations=[1,\n"}).find('\n') == std::string::npos);
+  // yaml-cpp's own message quotes the offending character raw (found by the config fuzz target).
+  const TempFile esc("seed: \"a\\\rb\"\n");
+  CHECK(error_of(esc.path) == esc.path.string() + ":1: unknown escape character: \\x0d");
+  CHECK(error_of(std::nullopt, {"seed=\"a\\\rb\""}) ==
+        "override 'seed=\"a\\\\x0db\"': unknown escape character: \\x0d");
+}
+
+TEST_CASE("config: text that is not UTF-8 is refused where it is read (plugins get JSON)") {
+  const TempFile value("stages:\n  video:\n    options:\n      label: \"caf\xe9\"\n");
+  CHECK(error_of(value.path) == value.path.string() + ":3: 'stages.video.options' is not valid UTF-8 text");
+  const TempFile key("stages:\n  video:\n    options:\n      \xff: 1\n");
+  CHECK(error_of(key.path) == key.path.string() + ":3: 'stages.video.options': a key is not valid UTF-8 text");
+  const TempFile prompt("prompt: \"waves \xff\"\n");
+  CHECK(error_of(prompt.path) == prompt.path.string() + ":1: 'prompt' is not valid UTF-8 text");
+}
+
+TEST_CASE("config: nesting beyond yaml-cpp's limit is named as such (yaml-cpp says 'bad file')") {
+  const std::string deep = std::string(600, '[') + std::string(600, ']');
+  const TempFile f("stages:\n  video:\n    options:\n      deep: " + deep + "\n");
+  CHECK(error_of(f.path) == f.path.string() + ":4: nested too deeply (more than 500 levels)");
+  const std::string o = "stages.video.options={d: " + deep + "}";
+  CHECK(error_of(std::nullopt, {o}) == "override '" + o + "': nested too deeply (more than 500 levels)");
+}
+
 }  // TEST_SUITE

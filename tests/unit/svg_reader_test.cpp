@@ -369,6 +369,14 @@ TEST_CASE("finite numbers that make geometry too large for the renderer: one lin
         "x.svg: <polygon>: coordinates too large (beyond 1e+15 in canvas space)");
   CHECK(error_of("<svg width=\"10\" height=\"10\"><path d=\"M 0 0 L 1 1\" stroke=\"red\" stroke-width=\"1e300\"/></svg>") ==
         "x.svg: <path>: stroke-width too large (beyond 1e+15 in canvas space)");
+  // A transform whose scale overflows (det = 1e400) was once taken for a singular one: the group
+  // vanished and the file rendered empty with exit status 0.
+  CHECK(error_of("<svg width=\"10\" height=\"10\"><g id=\"g\" transform=\"scale(1e200)\"><rect width=\"1\" height=\"1\"/></g></svg>") ==
+        "x.svg: <g id=g>: scale to canvas space too large (its transforms and the viewBox overflow)");
+  CHECK(error_of("<svg width=\"10\" height=\"10\" transform=\"scale(1e200)\"><rect width=\"1\" height=\"1\"/></svg>") ==
+        "x.svg: <svg>: scale to canvas space too large (its transform and viewBox overflow)");
+  // A singular one (scale(0)) still draws nothing, without an error.
+  CHECK(read("<g transform=\"scale(0)\"><rect width=\"1\" height=\"1\"/></g>", "width=\"10\" height=\"10\"").paths.empty());
   // An absurd size prints as a number, not as an integer cast of it.
   CHECK(error_of("<svg width=\"1e308\" height=\"10\"/>") ==
         "x.svg: size 1e+308x10 is too large (limit 32768 px)");

@@ -82,6 +82,7 @@ cl::Program& ClRuntime::program(const std::vector<std::string>& files,
       prog = cl::Program(context_, {device_}, bins);
       prog.build({device_}, options.c_str());
       built = true;
+      ++loaded_from_cache_;
     } catch (const cl::Error&) {
       built = false;  // stale or foreign binary: fall back to source
     }
@@ -94,6 +95,7 @@ cl::Program& ClRuntime::program(const std::vector<std::string>& files,
       const std::string log = prog.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device_);
       throw Error("OpenCL build of " + key_files + " failed on " + info_.name + ":\n" + log);
     }
+    ++built_from_source_;
     if (!cached.empty()) {
       try {
         const auto bins = prog.getInfo<CL_PROGRAM_BINARIES>();

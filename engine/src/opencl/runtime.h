@@ -37,6 +37,12 @@ class ClRuntime {
   // Seconds spent compiling or loading programs so far (benchmarks report time without it).
   double compile_seconds() const { return compile_seconds_; }
 
+  // How the programs of this runtime were obtained: built from source (and written to the disk
+  // cache when it is usable) or loaded from a cached binary. The cache's tests read these to
+  // tell reuse from a silent rebuild.
+  int programs_built_from_source() const { return built_from_source_; }
+  int programs_loaded_from_cache() const { return loaded_from_cache_; }
+
  private:
   DeviceInfo info_;
   cl::Device device_;
@@ -44,6 +50,7 @@ class ClRuntime {
   cl::CommandQueue queue_;
   std::map<std::string, cl::Program> programs_;
   double compile_seconds_ = 0;
+  int built_from_source_ = 0, loaded_from_cache_ = 0;
   bool profiling_ = false;
 };
 

@@ -1,12 +1,15 @@
 // Config loading and validation (see config.h).
 #include "pipeline/config.h"
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <set>
 
 #include "opencl/kernel_sources.h"
+#include "svg/utf8.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -18,6 +21,10 @@ namespace {
 // bytes name 10^9 values (the "billion laughs"); yaml-cpp shares them, but JSON copies each.
 // default.yaml holds about 60 values and an inline ComfyUI workflow a few thousand.
 constexpr size_t kMaxConfigValues = 100000;
+
+// yaml-cpp 0.7's own nesting limit (DepthGuard<500> in its single-document parser); deeper
+// documents throw YAML::DeepRecursion, whose message reads "bad file".
+constexpr int kMaxYamlDepth = 500;
 
 // Values left to produce, shared by one file and its overrides; `where` names the source
 // ("file:line: 'key.path'") in the error.
@@ -31,12 +38,44 @@ struct ValueBudget {
   }
 };
 
+// Text from a config as it may appear inside a one-line message: control characters (a key
+// "a\nb" is legal YAML) are written as escapes, so the message stays one line.
+std::string shown(std::string_view text) {
+  std::string out;
+  for (const char ch : text) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '\n') out += "\\n";
+    else if (c == '\t') out += "\\t";
+    else if (c < 0x20 || c == 0x7f) {
+      char esc[8];
+      std::snprintf(esc, sizeof esc, "\\x%02x", c);
+      out += esc;
+    } else {
+      out += ch;
+    }
+  }
+  return out;
+}
+
+// Config text reaches plugins as JSON, which holds UTF-8 only: anything else would fail deep
+// inside a stage ("internal error: [json.exception.type_error.316]").
+const std::string& checked_text(const std::string& text, const std::string& where) {
+  if (!valid_utf8(text)) throw Error(where + " is not valid UTF-8 text");
+  return text;
+}
+
+// A map key as text. YAML allows lists and maps as keys ("? [a, b]\n: 1"); a config does not.
+std::string key_text(const YAML::Node& key, const std::string& where) {
+  if (!key.IsScalar()) throw Error(where + ": a key must be a name, not a list or a map");
+  return checked_text(key.Scalar(), where + ": a key");
+}
+
 nlohmann::json to_json(const YAML::Node& n, ValueBudget& budget, const std::string& where) {
   budget.take(where);
   switch (n.Type()) {
     case YAML::NodeType::Map: {
       nlohmann::json o = nlohmann::json::object();
-      for (const auto& kv : n) o[kv.first.as<std::string>()] = to_json(kv.second, budget, where);
+      for (const auto& kv : n) o[key_text(kv.first, where)] = to_json(kv.second, budget, where);
       return o;
     }
     case YAML::NodeType::Sequence: {
@@ -45,7 +84,7 @@ nlohmann::json to_json(const YAML::Node& n, ValueBudget& budget, const std::stri
       return a;
     }
     case YAML::NodeType::Scalar: {
-      const std::string s = n.Scalar();
+      const std::string& s = checked_text(n.Scalar(), where);
       if (n.Tag() == "!") return s;  // quoted: a string
       if (s == "true" || s == "false") return s == "true";
       if (s == "null" || s == "~") return nullptr;
@@ -103,10 +142,10 @@ void merge(const YAML::Node& user, nlohmann::json& into, const nlohmann::json& s
            const std::string& path, const std::string& file, ValueBudget& budget) {
   std::set<std::string> seen;  // YAML maps may not repeat a key; yaml-cpp would keep both
   for (const auto& kv : user) {
-    const std::string key = kv.first.as<std::string>();
-    const std::string full = path.empty() ? key : path + "." + key;
     // "file:line" for files; overrides come as "command line 'k=v'" with no line to point at.
     const auto line = file.rfind("command line", 0) == 0 ? std::string() : ":" + std::to_string(kv.first.Mark().line + 1);
+    const std::string key = key_text(kv.first, file + line);
+    const std::string full = shown(path.empty() ? key : path + "." + key);
     if (!seen.insert(key).second) throw Error(file + line + ": duplicate key '" + full + "'");
     if (!schema.is_object() || !schema.contains(key)) {
       const std::string near = schema.is_object() ? suggestion(key, schema) : "";
@@ -137,12 +176,16 @@ void merge(const YAML::Node& user, nlohmann::json& into, const nlohmann::json& s
 }  // namespace
 
 nlohmann::json default_config() {
-  for (const auto& c : embedded_configs())
-    if (std::string_view(c.name) == "default.yaml") {
-      ValueBudget budget;
-      return to_json(YAML::Load(c.text), budget, "default.yaml");
-    }
-  throw Error("internal: no embedded default.yaml");
+  // Parsed once per process: the config fuzz target loads a config per input.
+  static const nlohmann::json defaults = [] {
+    for (const auto& c : embedded_configs())
+      if (std::string_view(c.name) == "default.yaml") {
+        ValueBudget budget;
+        return to_json(YAML::Load(c.text), budget, "default.yaml");
+      }
+    throw Error("internal: no embedded default.yaml");
+  }();
+  return defaults;
 }
 
 nlohmann::json load_config(const std::optional<std::filesystem::path>& file,
@@ -156,8 +199,13 @@ nlohmann::json load_config(const std::optional<std::filesystem::path>& file,
       root = YAML::LoadFile(file->string());
     } catch (const YAML::BadFile&) {
       throw Error(file->string() + ": cannot open");
+    } catch (const YAML::DeepRecursion& e) {
+      // yaml-cpp reports its nesting limit with the message "bad file".
+      throw Error(file->string() + ":" + std::to_string(e.mark.line + 1) +
+                  ": nested too deeply (more than " + std::to_string(kMaxYamlDepth) + " levels)");
     } catch (const YAML::Exception& e) {
-      throw Error(file->string() + ":" + std::to_string(e.mark.line + 1) + ": " + e.msg);
+      // yaml-cpp quotes the offending character raw ("unknown escape character: " + '\n').
+      throw Error(file->string() + ":" + std::to_string(e.mark.line + 1) + ": " + shown(e.msg));
     }
     if (!root.IsNull()) {
       if (!root.IsMap()) throw Error(file->string() + ": a config is a YAML map of keys");
@@ -166,13 +214,16 @@ nlohmann::json load_config(const std::optional<std::filesystem::path>& file,
   }
   for (const std::string& o : overrides) {
     const size_t eq = o.find('=');
-    if (eq == std::string::npos || eq == 0) throw Error("override '" + o + "': expected key.path=value");
+    if (eq == std::string::npos || eq == 0) throw Error("override '" + shown(o) + "': expected key.path=value");
     const std::string path = o.substr(0, eq);
     YAML::Node value;
     try {
       value = YAML::Load(o.substr(eq + 1));
+    } catch (const YAML::DeepRecursion&) {
+      throw Error("override '" + shown(o) + "': nested too deeply (more than " +
+                  std::to_string(kMaxYamlDepth) + " levels)");
     } catch (const YAML::Exception& e) {
-      throw Error("override '" + o + "': " + e.msg);
+      throw Error("override '" + shown(o) + "': " + shown(e.msg));
     }
     // Build {a: {b: value}} and merge it like a file, so the same checks apply.
     YAML::Node tree = value;
@@ -186,7 +237,7 @@ nlohmann::json load_config(const std::optional<std::filesystem::path>& file,
       if (dot == std::string::npos) break;
       end = dot;
     }
-    merge(tree, cfg, schema, "", "command line '" + o + "'", budget);
+    merge(tree, cfg, schema, "", "command line '" + shown(o) + "'", budget);
   }
   return cfg;
 }

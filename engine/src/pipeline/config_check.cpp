@@ -12,6 +12,7 @@
 #include "svgmotion/device.h"
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
+#include "svgmotion/target_video.h"
 
 namespace svgm {
 
@@ -145,6 +146,14 @@ void check_config(const nlohmann::json& c, const PluginHost& host) {
     const std::string path = at(c, "stages.video.path").is_string() ? at(c, "stages.video.path").get<std::string>() : "";
     if (path.empty()) throw Error("stages.video.path: video: file needs the video (or folder of PNG frames) to fit");
     if (!fs::exists(path, ec)) throw Error(path + ": cannot open: No such file or directory");
+    // Opened (and its frames counted) now, so a broken or too short video fails in one line
+    // naming the user's file, not at the video or tracker stage after grouping and recolouring
+    // have filled the run directory (or naming the run directory's copy, target.mp4).
+    const TargetInfo info = probe_target(path);  // throws "<path>: <problem>"
+    const auto keyframes = at(c, "stages.fitter.keyframes");
+    if (keyframes.is_number() && info.frames < keyframes.get<double>())
+      throw Error(path + ": has " + std::to_string(info.frames) + (info.frames == 1 ? " frame" : " frames") +
+                  ", fewer than the " + shown(keyframes) + " keyframes asked for (stages.fitter.keyframes)");
   }
   const std::string output = at(c, "output").is_string() ? at(c, "output").get<std::string>() : "";
   if (output.empty()) throw Error("output: must name the run directory");

@@ -247,7 +247,6 @@ std::optional<Rgba> Reader::gradient_mean(pugi::xml_node g, int depth) {
   for (pugi::xml_node stop = g.first_child(); stop; stop = stop.next_sibling()) {
     if (local_name(stop.name()) != "stop") continue;
     Style st;
-    ElementProps props;
     Rgba c{0, 0, 0, 1};
     float opacity = 1;
     auto take = [&](std::string_view k, std::string_view v) {
@@ -630,8 +629,13 @@ void Reader::walk(pugi::xml_node n, const Style& parent, const Affine& parent_ct
     if (m) ctm = ctm * *m;
     else warn(n, "invalid transform ignored");  // as resvg and browsers do
   }
-  // A singular transform (e.g. scale(0)) draws nothing, and has no inverse for exporters.
-  if (const double det = ctm.det(); !(std::fabs(det) > 0) || !std::isfinite(det)) return;
+  // A singular transform (e.g. scale(0)) draws nothing, and has no inverse for exporters. One
+  // whose determinant overflows (scale(1e200)) puts everything beyond max_coordinate: refused
+  // like the coordinates it makes, not silently dropped.
+  if (const double det = ctm.det(); !std::isfinite(det))
+    fail(describe(n) + ": scale to canvas space too large (its transforms and the viewBox overflow)");
+  else if (!(std::fabs(det) > 0))
+    return;
   const float op = opacity * props.opacity;
 
   if (shape) {
@@ -781,7 +785,10 @@ Scene Reader::read(std::string_view text) {
     const auto m = svg::parse_transform(t, &bad);
     if (bad) fail("<svg> transform: number out of range");
     if (m) ctm = ctm * *m;
-    if (const double det = ctm.det(); !(std::fabs(det) > 0) || !std::isfinite(det)) return std::move(scene_);
+    if (const double det = ctm.det(); !std::isfinite(det))
+      fail("<svg>: scale to canvas space too large (its transform and viewBox overflow)");
+    else if (!(std::fabs(det) > 0))
+      return std::move(scene_);
   }
   walk_children(root, base, ctm, props.opacity, "/svg", -1, "", 0, vp);
   for (std::string& line : warning_lines()) scene_.warnings.push_back(std::move(line));
