@@ -21,7 +21,7 @@ for a in "$@"; do svgs+=("$a"); done
 shared=$here/../../../shared
 py=/usr/bin/python3
 mkdir -p "$work"
-printf '%-14s %7s %7s %7s %7s %7s %8s %7s %7s\n' svg psnr hires min_hi bf min_bf between seconds peak_mb
+printf '%-14s %7s %7s %7s %7s %7s %7s %8s %7s %7s\n' svg psnr min_iou hires min_hi bf min_bf between seconds peak_mb
 for svg in "${svgs[@]}"; do
   name=$(basename "$svg" .svg)
   dir=$work/$name${defect:+_$defect}
@@ -50,5 +50,5 @@ PY
   rss=$(( $(cat "$dir/rss") / 1024 ))
   eval "$(echo "$line" | tr ' ' '\n' | grep '=')"
   min_hi=$(grep '^keyframe' "$dir/eval.txt" | grep -o 'hires_psnr=[0-9.]*' | cut -d= -f2 | sort -n | head -1)
-  printf '%-14s %7.2f %7.2f %7.2f %7.4f %7.4f %8.2f %7.1f %s\n' "$name" "$psnr" "$hires_psnr" "$min_hi" "$hires_bf" "$min_hires_bf" "$between_psnr" "$secs" "$rss$status"
+  printf '%-14s %7.2f %7.4f %7.2f %7.2f %7.4f %7.4f %8.2f %7.1f %s\n' "$name" "$psnr" "$min_iou" "$hires_psnr" "$min_hi" "$hires_bf" "$min_hires_bf" "$between_psnr" "$secs" "$rss$status"
 done
