@@ -18,6 +18,8 @@ constexpr double kTau = 2 * M_PI;
 constexpr double kPhaseSpacing = 0.6180339887498949;
 // A prompt with no motion word: the figure sways this many degrees about its base, once.
 constexpr double kFallbackSwayDeg = 4;
+// A part hanging from a spinning part turns with it when this share of its box is inside.
+constexpr double kInsideShare = 0.7;
 
 bool whole_only(Primitive p) {
   return p == Primitive::Rock || p == Primitive::Hop || p == Primitive::Bob || p == Primitive::Slide ||
@@ -286,7 +288,7 @@ MotionPlan plan_from_steps(const std::vector<ExplicitStep>& steps, const Rig& ri
     const Verb* v = find_verb_by_name(s.verb);
     std::vector<int> parts;
     for (const auto& pat : s.patterns) {
-      bool hit = false;
+      const size_t before = parts.size();
       for (size_t i = 0; i < rig.parts.size(); ++i) {
         const RigPart& P = rig.parts[i];
         // A pattern matches a part's name, or its role in the figure's words: "wing*" and
@@ -297,15 +299,11 @@ MotionPlan plan_from_steps(const std::vector<ExplicitStep>& steps, const Rig& ri
         if (P.role == Role::Root) aliases.insert(aliases.end(), {"body", "root"});
         if (P.role == Role::Tail) aliases.push_back("limb");
         if (P.round) aliases.push_back("wheel");
-        for (const auto& al : aliases)
-          if (glob_match(pat, al)) hit = true;
+        bool hit = false;
+        for (const auto& al : aliases) hit = hit || glob_match(pat, al);
         if (hit && std::find(parts.begin(), parts.end(), static_cast<int>(i)) == parts.end()) parts.push_back(static_cast<int>(i));
-        hit = hit || false;
       }
-      bool any = false;
-      for (size_t i = 0; i < rig.parts.size(); ++i)
-        for (const std::string& al : {rig.parts[i].name}) any = any || glob_match(pat, al);
-      if (parts.empty() && !any && pat != "whole" && pat != "repeated") {
+      if (parts.size() == before && pat != "whole" && pat != "repeated") {
         std::vector<std::string> names;
         for (const auto& P : rig.parts) names.push_back(P.name);
         throw Error("stages.video.options.motion: '" + pat + "' matches no part (parts: " + join(names, ", ") + ")");
@@ -396,6 +394,12 @@ Vec2 deform(const PlannedAction& a, double amp, double t, const RigBox& box, Vec
 
 bool is_deformation(Primitive p) { return p == Primitive::Undulate || p == Primitive::Bend; }
 
+// The share of box a inside box b.
+double overlap_share(const RigBox& a, const RigBox& b) {
+  const double ox = std::min(a.x1, b.x1) - std::max(a.x0, b.x0), oy = std::min(a.y1, b.y1) - std::max(a.y0, b.y0);
+  return ox > 0 && oy > 0 ? ox * oy / std::max(a.area(), 1e-12) : 0;
+}
+
 }  // namespace
 
 std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames) {
@@ -429,7 +433,8 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   out.reserve(static_cast<size_t>(frames) * (scene.segment_count() * 3 + scene.paths.size() * 2));
   for (int f = 0; f < frames; ++f) {
     const double t = frames > 1 ? static_cast<double>(f) / (frames - 1) : 0;
-    std::vector<Affine> local(G), world(G);
+    std::vector<Affine> local(G), world(G), spin(G);
+    std::vector<char> spins(G, 0);
     Affine whole;
     for (const auto& a : plan.actions) {
       const double amp = a.primitive == Primitive::Spin ? a.amp : a.amp * plan.scale;
@@ -437,7 +442,9 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
       if (a.parts.empty()) whole = rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
       for (size_t i = 0; i < a.parts.size(); ++i) {
         const RigPart& P = rig.parts[a.parts[i]];
-        local[a.parts[i]] = rigid(a, amp, a.sign[i], a.phase[i], t, P.box, P.pivot, W, H) * local[a.parts[i]];
+        Affine& into = a.primitive == Primitive::Spin ? spin[a.parts[i]] : local[a.parts[i]];
+        into = rigid(a, amp, a.sign[i], a.phase[i], t, P.box, P.pivot, W, H) * into;
+        if (a.primitive == Primitive::Spin) spins[a.parts[i]] = 1;
       }
     }
     // World transforms down the rig: parents before children (parents are larger, or the root).
@@ -446,6 +453,14 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     auto depth = [&](int g) { int d = 0; for (int p = rig.parts[g].parent; p >= 0 && d < 64; p = rig.parts[p].parent) ++d; return d; };
     std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return depth(x) < depth(y); });
     for (int g : order) world[g] = rig.parts[g].parent >= 0 ? world[rig.parts[g].parent] * local[g] : local[g];
+    // A spinning part turns in its own frame, and carries only what hangs from it inside its
+    // box (a ferris wheel's cabins, not its stand).
+    for (int g = 0; g < G; ++g)
+      for (int a = g, guard = 0; a >= 0 && guard < 64; a = rig.parts[a].parent, ++guard)
+        if (spins[a] && (a == g || overlap_share(rig.parts[g].box, rig.parts[a].box) >= kInsideShare)) {
+          world[g] = world[g] * spin[a];
+          break;
+        }
 
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
       const int g = rig.part_of_path[pi];
@@ -602,6 +617,47 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
           {"amplitude_scale", std::round(plan.scale * 1e4) / 1e4},
           {"not_understood", plan.not_understood},
           {"warnings", plan.warnings}};
+}
+
+std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>& pts, int frames) {
+  std::vector<PathMotion> out(scene.paths.size());
+  const size_t per = frames > 0 ? pts.size() / frames : 0;
+  size_t i = 0;
+  for (size_t p = 0; p < scene.paths.size(); ++p) {
+    PathMotion& m = out[p];
+    double sum = 0;
+    for (const auto& sp : scene.paths[p].subpaths)
+      for (const Vec2& rest : sp.points) {
+        double far = 0;
+        m.rest.add(rest);
+        for (int f = 0; f < frames; ++f) {
+          const Vec2 q = pts[f * per + i];
+          m.swept.add(q);
+          far = std::max(far, std::hypot(q.x - rest.x, q.y - rest.y));
+        }
+        m.max_travel = std::max(m.max_travel, far);
+        sum += far;
+        ++m.points;
+        ++i;
+      }
+    m.mean_travel = m.points ? sum / m.points : 0;
+  }
+  return out;
+}
+
+nlohmann::json path_motion_json(const Scene& scene, const std::vector<PathMotion>& motion) {
+  auto r = [](double v) { return std::round(v * 100) / 100; };
+  nlohmann::json a = nlohmann::json::array();
+  for (size_t p = 0; p < motion.size(); ++p) {
+    const PathMotion& m = motion[p];
+    a.push_back({{"id", scene.paths[p].id},
+                 {"points", m.points},
+                 {"max_travel", r(m.max_travel)},
+                 {"mean_travel", r(m.mean_travel)},
+                 {"rest", {r(m.rest.x0), r(m.rest.y0), r(m.rest.x1), r(m.rest.y1)}},
+                 {"swept", {r(m.swept.x0), r(m.swept.y0), r(m.swept.x1), r(m.swept.y1)}}});
+  }
+  return a;
 }
 
 }  // namespace svgm

@@ -72,6 +72,17 @@ void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, 
 // The report written to motion.json: the parts found and the plan.
 nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPlan& plan);
 
+// How far each path's control points travel from their rest positions over the frames
+// (animate_plan's points): the largest and the mean (over points) of each point's largest
+// distance, and the box the path sweeps. For motion.json, so a reader can check what moved.
+struct PathMotion {
+  double max_travel = 0, mean_travel = 0;
+  int points = 0;
+  RigBox rest, swept;
+};
+std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>& points, int frames);
+nlohmann::json path_motion_json(const Scene& scene, const std::vector<PathMotion>& motion);
+
 constexpr double kFrameMargin = 0.01;  // of the canvas size: control points stay this far inside
 constexpr double kMaxStep = 0.08;      // of the canvas diagonal between keyframes (about 29 px
                                        // at the fitter's 256 px: what flow warm starts follow)

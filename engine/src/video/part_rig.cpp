@@ -27,6 +27,10 @@ constexpr double kEdgeTouch = 0.02;
 constexpr double kRepeatedArea = 0.02;
 constexpr double kRepeatedSimilar = 1.6;
 constexpr size_t kRepeatedMin = 3;
+// A round part's outline (its control polygon) fills this share of its box: a circle drawn with
+// four cubics gives 0.90 (the control polygon is an octagon), a square 1, a triangle 0.5.
+constexpr double kRoundFillMin = 0.65;
+constexpr double kRoundFillMax = 0.93;
 
 bool is_generic_word(const std::string& w) {
   static const std::set<std::string> generic = {
@@ -364,7 +368,7 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
         outline = std::max(outline, std::fabs(shoelace(scene.paths[pi].subpaths[0].points)));
     const double fill = outline / std::max(P.box.area(), 1e-9);
     P.round = has_word(P.words, {"wheel", "tire", "tyre"}) ||
-              (aspect > 0.8 && aspect < 1.25 && fill > 0.65 && fill < 0.9 && P.box.area() > 0.005 * CW * CH);
+              (aspect > 0.8 && aspect < 1.25 && fill > kRoundFillMin && fill < kRoundFillMax && P.box.area() > 0.005 * CW * CH);
   }
 
   // Default names from roles.
