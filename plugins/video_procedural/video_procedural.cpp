@@ -70,11 +70,13 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
       summary = plan.summary();
       if (host && host->log) {
         for (const auto& w : plan.warnings) host->log(host, 2, ("video procedural: " + w).c_str());
+        for (const auto& w : plan.notes) host->log(host, 1, ("video procedural: " + w).c_str());
         std::string line;
         for (const auto& a : plan.actions) {
           std::string who = a.target == svgm::Target::Whole ? "whole figure" : a.target == svgm::Target::Repeated
                                 ? std::to_string(rig.repeated.size()) + " repeated elements" : "";
-          for (int p : a.parts) who += (who.empty() ? "" : "+") + rig.parts[p].name;
+          if (a.region != svgm::Region::None) who = "a region of ";
+          for (int p : a.parts) who += (who.empty() || a.region != svgm::Region::None ? "" : "+") + rig.parts[p].name;
           line += (line.empty() ? "" : "; ") + a.verb + " " + who;
         }
         host->log(host, 1, ("video procedural: " + line + " (motion.json)").c_str());

@@ -172,6 +172,25 @@ struct Builder {
     std::string note;
     if (target == Target::Named) a.parts = named_parts;
     else if (target != Target::Whole && target != Target::Repeated) a.parts = parts_for(rig, target, target_word, &note);
+    // No separate part for a limb role: a region of the root bends instead (when it swings).
+    const bool limb_role = target == Target::Arms || target == Target::Legs || target == Target::Limbs ||
+                           target == Target::Head || target == Target::Tail;
+    if (limb_role && !note.empty() && rig.root >= 0 && a.primitive == Primitive::Swing) {
+      a.parts = {rig.root};
+      a.region = target == Target::Arms || target == Target::Limbs ? Region::Sides
+                 : target == Target::Legs ? Region::Lower : target == Target::Head ? Region::Top : Region::End;
+      a.alternating = base.pairing == Pairing::Alternating;
+      if (base.pairing == Pairing::OneSide && !mods.both && !plural) {
+        // The figure's own side is drawn on the viewer's other side.
+        a.region_side = mods.side != 0 ? -mods.side : ((rng() & 1) ? 1 : -1);
+      }
+      a.direction = a.region == Region::End ? ((rng() & 1) ? 1 : -1) : a.direction;
+      note = std::string("no separate ") + target_name(target) + ": the " +
+             (a.region == Region::Sides ? "sides" : a.region == Region::Lower ? "lower part" : a.region == Region::Top ? "top" : "far end") +
+             " of " + rig.parts[rig.root].name + " bend";
+      a.sign = {1};
+      a.phase = {0};
+    }
     if (target == Target::Repeated && rig.repeated.empty()) {
       plan.warnings.push_back("'" + words + "': no repeated elements (drops, stars) found; " + verb.name + " is left out");
       return;
@@ -182,7 +201,7 @@ struct Builder {
     }
     Pairing pairing = base.pairing;
     if (pairing == Pairing::OneSide && (mods.both || plural)) pairing = Pairing::Mirrored;
-    if (pairing == Pairing::OneSide && a.parts.size() > 1) {
+    if (pairing == Pairing::OneSide && a.parts.size() > 1 && a.region == Region::None) {
       int want = mods.side;
       std::vector<int> sided;
       for (int p : a.parts)
@@ -193,12 +212,12 @@ struct Builder {
       }
       a.parts = {sided[0]};
     }
-    pair_up(rig, a, pairing == Pairing::OneSide ? Pairing::Same : pairing, rng);
+    if (a.region == Region::None) pair_up(rig, a, pairing == Pairing::OneSide ? Pairing::Same : pairing, rng);
     // One-sided whole-figure motions (lean, bow) go one way and back.
     if (a.primitive == Primitive::Rock && base.pairing == Pairing::OneSide) a.vertical = 2;
     // Skip a repeat: the same primitive on the same parts.
     for (const auto& b : plan.actions)
-      if (b.primitive == a.primitive && b.target == a.target && b.parts == a.parts) return;
+      if (b.primitive == a.primitive && b.target == a.target && b.parts == a.parts && b.region == a.region) return;
     std::vector<std::string> names;
     for (int p : a.parts) names.push_back(rig.parts[p].name);
     a.why = "'" + words + "': " + verb.name + " moves the " +
@@ -392,7 +411,65 @@ Vec2 deform(const PlannedAction& a, double amp, double t, const RigBox& box, Vec
   return horizontal ? Vec2{q.x, q.y + d} : Vec2{q.x + d, q.y};
 }
 
-bool is_deformation(Primitive p) { return p == Primitive::Undulate || p == Primitive::Bend; }
+bool is_deformation(const PlannedAction& a) {
+  return a.primitive == Primitive::Undulate || a.primitive == Primitive::Bend || a.region != Region::None;
+}
+
+double smoothstep(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3 - 2 * x);
+}
+
+Vec2 rotate_about(Vec2 q, Vec2 c, double deg) {
+  const double r = deg * M_PI / 180, cs = std::cos(r), sn = std::sin(r);
+  const Vec2 d = q - c;
+  return c + Vec2{cs * d.x - sn * d.y, sn * d.x + cs * d.y};
+}
+
+// Region bends (virtual limbs); the fractions of the part's box are where a figure drawn as
+// one shape usually has its joints: the core of a body is the middle quarter of its width
+// (kCore each side), hips at 60 % of its height, a neck at 30 %, a tail the last 30 %.
+constexpr double kCore = 0.12, kHip = 0.6, kNeck = 0.3, kTailStart = 0.3, kRamp = 0.25;
+
+Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
+  const double W = std::max(box.w(), 1e-9), H = std::max(box.h(), 1e-9);
+  const Vec2 c = box.centre();
+  auto wave = [&](double phase) { return std::sin(kTau * (a.cycles * t + phase)); };
+  switch (a.region) {
+    case Region::Sides: {
+      const double dx = q.x - c.x, core = kCore * W;
+      if (std::fabs(dx) <= core) return q;
+      const int side = dx < 0 ? -1 : 1;  // as the viewer sees it
+      if (a.region_side != 0 && side != a.region_side) return q;
+      const double w = smoothstep((std::fabs(dx) - core) / (kRamp * W));
+      // Mirrored: both sides rise together; alternating: half a cycle apart.
+      const double ang = amp * (side < 0 ? 1 : -1) * wave(a.alternating && side > 0 ? 0.5 : 0) * w;
+      return rotate_about(q, {c.x + side * core, c.y}, ang);
+    }
+    case Region::Lower: {
+      const double hip = box.y0 + kHip * H;
+      if (q.y <= hip) return q;
+      const int side = q.x < c.x ? -1 : 1;
+      if (a.region_side != 0 && side != a.region_side) return q;
+      const double w = smoothstep((q.y - hip) / (kRamp * H));
+      const double ang = amp * wave(a.alternating && side > 0 ? 0.5 : 0) * w * (a.alternating ? 1 : (side < 0 ? 1 : -1));
+      return rotate_about(q, {c.x + side * kCore * W, hip}, ang);
+    }
+    case Region::Top: {
+      const double neck = box.y0 + kNeck * H;
+      if (q.y >= neck) return q;
+      return rotate_about(q, {c.x, neck}, amp * wave(0) * smoothstep((neck - q.y) / (kRamp * H)));
+    }
+    case Region::End: {
+      const double start = a.direction > 0 ? box.x1 - kTailStart * W : box.x0 + kTailStart * W;
+      const double beyond = a.direction * (q.x - start);
+      if (beyond <= 0) return q;
+      return rotate_about(q, {start, c.y}, amp * wave(0) * smoothstep(beyond / (kRamp * W)));
+    }
+    case Region::None: break;
+  }
+  return q;
+}
 
 // The share of box a inside box b.
 double overlap_share(const RigBox& a, const RigBox& b) {
@@ -438,7 +515,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     Affine whole;
     for (const auto& a : plan.actions) {
       const double amp = a.primitive == Primitive::Spin ? a.amp : a.amp * plan.scale;
-      if (is_deformation(a.primitive) || a.target == Target::Repeated) continue;
+      if (is_deformation(a) || a.target == Target::Repeated) continue;
       if (a.parts.empty()) whole = rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
       for (size_t i = 0; i < a.parts.size(); ++i) {
         const RigPart& P = rig.parts[a.parts[i]];
@@ -492,9 +569,11 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
           q = elem.apply(q);
           if (!free_particle) {
             for (const auto& a : plan.actions) {
-              if (!is_deformation(a.primitive)) continue;
+              if (!is_deformation(a)) continue;
               const double amp = a.amp * plan.scale;
-              if (a.parts.empty()) {
+              if (a.region != Region::None) {
+                if (g >= 0 && under(g, a.parts[0])) q = bend_region(a, amp, t, reach[a.parts[0]], q);
+              } else if (a.parts.empty()) {
                 if (!background) q = deform(a, amp, t, rig.figure, q);
               } else {
                 for (int p : a.parts)
@@ -537,6 +616,7 @@ void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, 
     }
   }
   const int K = std::clamp(keyframes, 2, frames);
+  std::string first_why;
   for (int attempt = 0; attempt < 12; ++attempt) {
     const std::vector<Vec2> pts = animate_plan(scene, rig, plan, frames);
     const size_t per = pts.size() / frames;
@@ -551,17 +631,19 @@ void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, 
       for (size_t i = 0; i < per; ++i) {
         if (exempt[i]) continue;
         const Vec2 d = pts[fb * per + i] - pts[fa * per + i];
-        if (std::hypot(d.x, d.y) > max_step) { ok = false; why = "would move too far between keyframes to follow"; break; }
+        if (std::hypot(d.x, d.y) > max_step) { ok = false; why = "would move too far between keyframes for the fitter to follow"; break; }
       }
     }
     if (ok) {
       if (plan.scale < 1) {
-        char line[160];
-        std::snprintf(line, sizeof line, "amplitudes scaled to %.0f %% (the motion %s at full size)", plan.scale * 100, plan.warnings.empty() ? "did not fit" : "did not fit");
-        plan.warnings.push_back(line);
+        char line[200];
+        std::snprintf(line, sizeof line, "amplitudes scaled to %.0f %%: at full size the motion %s", plan.scale * 100,
+                      first_why.c_str());
+        plan.notes.push_back(line);
       }
       return;
     }
+    if (first_why.empty()) first_why = why;
     plan.scale *= 0.8;
     if (attempt == 11) {
       plan.warnings.push_back("the motion " + why + " even at " + std::to_string(static_cast<int>(plan.scale * 100)) + " % of its size");
@@ -606,6 +688,8 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
                        {"amplitude", std::round(a.amp * (a.primitive == Primitive::Spin ? 1 : plan.scale) * 1e4) / 1e4},
                        {"unit", unit},
                        {"cycles", a.cycles},
+                       {"region", a.region == Region::None ? "" : a.region == Region::Sides ? "sides" : a.region == Region::Lower ? "lower part"
+                                  : a.region == Region::Top ? "top" : "far end"},
                        {"why", a.why}});
   }
   std::string root = rig.root >= 0 ? rig.parts[rig.root].name : "";
@@ -616,7 +700,8 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
           {"plan", actions},
           {"amplitude_scale", std::round(plan.scale * 1e4) / 1e4},
           {"not_understood", plan.not_understood},
-          {"warnings", plan.warnings}};
+          {"warnings", plan.warnings},
+          {"notes", plan.notes}};
 }
 
 std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>& pts, int frames) {

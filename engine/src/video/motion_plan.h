@@ -27,6 +27,11 @@
 
 namespace svgm {
 
+// A limb that is not a part of its own (a bat drawn as one silhouette): a region of the part
+// bends about a pivot line, each point turning by the action's angle times a weight that
+// grows smoothly from 0 at the pivot line (so the shape stays in one piece).
+enum class Region { None, Sides, Lower, Top, End };
+
 struct PlannedAction {
   std::string verb;
   std::string words;            // the prompt's words (or the plan item) it came from
@@ -39,6 +44,9 @@ struct PlannedAction {
   int cycles = 1;
   int vertical = 0;             // Bob: +1 only up, -1 only down
   int direction = 1;            // Spin, Slide, Rock one-sided: which way first
+  Region region = Region::None; // a Swing of a region of parts[0] instead of whole parts
+  int region_side = 0;          // Sides/Lower: -1 only the viewer's left, +1 only the right
+  bool alternating = false;     // Sides/Lower: the two sides half a cycle apart
   std::string why;
 };
 
@@ -47,6 +55,7 @@ struct MotionPlan {
   std::vector<PlannedAction> actions;
   std::vector<std::string> not_understood;  // prompt words that named no motion, part or modifier
   std::vector<std::string> warnings;        // one line each
+  std::vector<std::string> notes;           // informational lines (an amplitude scaled to fit)
   double scale = 1;             // amplitude factor fit_plan chose (1: as planned)
   std::string summary() const;  // one line: "flap wing_left+wing_right 30 deg x3; bob whole"
 };

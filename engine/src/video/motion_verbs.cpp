@@ -17,8 +17,8 @@ using Pr = Pairing;
 // clang-format off
 const std::vector<Verb> kVerbs = {
   // Wings, arms.
-  {"flap",    {"flap"},                         {{P::Swing, T::Arms, 30, 3, Pr::Mirrored}, {P::Bob, T::Whole, 0.03, 3}}, P::Swing},
-  {"fly",     {"fly", "flie", "flew"},          {{P::Swing, T::Arms, 26, 3, Pr::Mirrored}, {P::Bob, T::Whole, 0.05, 1}}, P::Swing},
+  {"flap",    {"flap"},                         {{P::Swing, T::Arms, 30, 2, Pr::Mirrored}, {P::Bob, T::Whole, 0.03, 2}}, P::Swing},
+  {"fly",     {"fly", "flie", "flew"},          {{P::Swing, T::Arms, 26, 2, Pr::Mirrored}, {P::Bob, T::Whole, 0.05, 1}}, P::Swing},
   {"flutter", {"flutter"},                      {{P::Swing, T::Arms, 16, 5, Pr::Mirrored}}, P::Swing},
   {"hover",   {"hover"},                        {{P::Swing, T::Arms, 18, 4, Pr::Mirrored}, {P::Bob, T::Whole, 0.04, 1}}, P::Swing},
   {"soar",    {"soar", "glid"},                 {{P::Rock, T::Whole, 5, 1}, {P::Bob, T::Whole, 0.04, 1}, {P::Swing, T::Arms, 8, 1, Pr::Mirrored}}, P::Swing},
