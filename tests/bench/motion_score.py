@@ -1,0 +1,89 @@
+#!/usr/bin/env python3
+"""Scores one procedural motion against its labels (tests/bench/motion_prompts.sh).
+
+Reads a run directory's motion.json: for every path of the drawing, its rest box, how far its
+control points travel in the target video (the mean over its points of each point's largest
+distance from rest, in canvas units) and the box it sweeps. Labels name regions of the drawing
+independently of the engine's rig:
+  all                  every path
+  -                    no path
+  large                paths whose rest box covers at least 45 % of the canvas (backgrounds)
+  x0,y0,x1,y1          paths whose rest-box centre lies in this box, in fractions of the
+                       drawing's box (the union of the rest boxes of all paths that are not large)
+  several joined by '|'
+Prints one tab-separated line: share of the motion on the expected paths, the ratio of the mean
+travel of the still paths to that of the expected paths, the largest travel of a still path (in
+% of the canvas diagonal), whether any control point left the canvas, and pass/FAIL.
+Pass: share >= 0.7, still ratio <= 0.25, nothing out of the canvas.
+"""
+import json
+import math
+import sys
+
+SHARE_MIN = 0.7     # the issue's bar
+STILL_RATIO_MAX = 0.25  # still paths move at most a quarter as much as the expected ones
+LARGE = 0.45        # share of the canvas: a background (as a reader of the drawing would say)
+
+
+def main():
+    run_dir, move_spec, still_spec = sys.argv[1], sys.argv[2], sys.argv[3]
+    m = json.load(open(run_dir + "/motion.json"))
+    cw, ch = m["canvas"]
+    paths = m["paths"]
+
+    def is_large(p):
+        x0, y0, x1, y1 = p["rest"]
+        return (x1 - x0) * (y1 - y0) >= LARGE * cw * ch
+
+    fig = [p for p in paths if not is_large(p)] or paths
+    dx0 = min(p["rest"][0] for p in fig)
+    dy0 = min(p["rest"][1] for p in fig)
+    dx1 = max(p["rest"][2] for p in fig)
+    dy1 = max(p["rest"][3] for p in fig)
+
+    def members(spec):
+        out = set()
+        if spec == "-":
+            return out
+        for part in spec.split("|"):
+            for i, p in enumerate(paths):
+                if part == "all":
+                    out.add(i)
+                elif part == "large":
+                    if is_large(p):
+                        out.add(i)
+                else:
+                    a, b, c, d = (float(v) for v in part.split(","))
+                    cx = ((p["rest"][0] + p["rest"][2]) / 2 - dx0) / max(dx1 - dx0, 1e-9)
+                    cy = ((p["rest"][1] + p["rest"][3]) / 2 - dy0) / max(dy1 - dy0, 1e-9)
+                    if a <= cx <= c and b <= cy <= d and not is_large(p):
+                        out.add(i)
+        return out
+
+    move, still = members(move_spec), members(still_spec) - members(move_spec)
+    w = [p["mean_travel"] * p["points"] for p in paths]
+    total = sum(w)
+    share = sum(w[i] for i in move) / total if total > 0 else 0.0
+
+    def mean(ids):
+        pts = sum(paths[i]["points"] for i in ids)
+        return sum(w[i] for i in ids) / pts if pts else 0.0
+
+    ratio = mean(still) / mean(move) if still and mean(move) > 0 else 0.0
+    diag = math.hypot(cw, ch)
+    still_max = max((paths[i]["max_travel"] for i in still), default=0.0) / diag * 100
+    # Out of the canvas: a swept box beyond the canvas where the rest box was inside it.
+    out = 0
+    for p in paths:
+        r, s = p["rest"], p["swept"]
+        if (s[0] < min(0, r[0]) - 0.5 or s[1] < min(0, r[1]) - 0.5 or s[2] > max(cw, r[2]) + 0.5
+                or s[3] > max(ch, r[3]) + 0.5):
+            out += 1
+    ok = share >= SHARE_MIN and ratio <= STILL_RATIO_MAX and out == 0
+    plan = "; ".join(a["verb"] + ":" + (a["parts"] if isinstance(a["parts"], str) else "+".join(a["parts"]))
+                     + ("(" + a["region"] + ")" if a.get("region") else "") for a in m["plan"])
+    print(f"{share:.2f}\t{ratio:.2f}\t{still_max:.2f}\t{out}\t{'pass' if ok else 'FAIL'}\t{len(move)}/{len(still)}/{len(paths)}\t{plan}")
+
+
+if __name__ == "__main__":
+    main()
