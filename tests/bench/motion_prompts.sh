@@ -18,7 +18,7 @@ B=$build/frontends/svgmotion
 [ -x "$B" ] || { echo "motion_prompts.sh: $B: not built" >&2; exit 1; }
 [ -d "$bench" ] || { echo "motion_prompts.sh: $bench: no bench folder" >&2; exit 1; }
 mkdir -p "$out"
-printf 'case\tshare\tstill_ratio\tstill_max_%%diag\tout_of_canvas\tresult\tmove/still/paths\tplan\n'
+printf 'case\tshare\tstill_ratio\tstill_max_%%diag\tout_of_canvas\tresult\tmove/still/points\tplan\n'
 pass=0 total=0
 while IFS=$'\t' read -r name svg prompt move still; do
   [ -z "$name" ] || [ "${name:0:1}" = "#" ] && continue

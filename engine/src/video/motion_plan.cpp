@@ -372,7 +372,7 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
     }
     case Primitive::Squash: {
       const double sy = 1 - 1.2 * amp * k;
-      return Affine::translate(0, 0) * about(base, Affine::scale(1 + 0.5 * amp * k, sy));
+      return about(base, Affine::scale(1 + 0.5 * amp * k, sy));
     }
     case Primitive::Stretch: {
       const double f = 1 + amp * k;
@@ -721,6 +721,7 @@ std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>&
           far = std::max(far, std::hypot(q.x - rest.x, q.y - rest.y));
         }
         m.max_travel = std::max(m.max_travel, far);
+        m.travel.push_back(static_cast<float>(far));
         sum += far;
         ++m.points;
         ++i;
@@ -735,7 +736,18 @@ nlohmann::json path_motion_json(const Scene& scene, const std::vector<PathMotion
   nlohmann::json a = nlohmann::json::array();
   for (size_t p = 0; p < motion.size(); ++p) {
     const PathMotion& m = motion[p];
+    nlohmann::json pt = nlohmann::json::array();
+    size_t k = 0;
+    auto r1 = [](double v) { return std::round(v * 10) / 10; };
+    for (const auto& sp : scene.paths[p].subpaths)
+      for (const Vec2& q : sp.points) {
+        pt.push_back(r1(q.x));
+        pt.push_back(r1(q.y));
+        pt.push_back(r1(k < m.travel.size() ? m.travel[k] : 0));
+        ++k;
+      }
     a.push_back({{"id", scene.paths[p].id},
+                 {"point_travel", pt},
                  {"points", m.points},
                  {"max_travel", r(m.max_travel)},
                  {"mean_travel", r(m.mean_travel)},

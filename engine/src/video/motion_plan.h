@@ -83,11 +83,14 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
 
 // How far each path's control points travel from their rest positions over the frames
 // (animate_plan's points): the largest and the mean (over points) of each point's largest
-// distance, and the box the path sweeps. For motion.json, so a reader can check what moved.
+// distance, and the box the path sweeps; in the JSON also each control point's rest position and
+// travel ("point_travel": [x, y, travel, ...] rounded to 0.1), so a reader can check what moved
+// where (tests/bench/motion_score.py).
 struct PathMotion {
   double max_travel = 0, mean_travel = 0;
   int points = 0;
   RigBox rest, swept;
+  std::vector<float> travel;  // each control point's largest distance from rest, in order
 };
 std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>& points, int frames);
 nlohmann::json path_motion_json(const Scene& scene, const std::vector<PathMotion>& motion);
