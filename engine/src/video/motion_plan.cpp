@@ -572,7 +572,9 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
               if (!is_deformation(a)) continue;
               const double amp = a.amp * plan.scale;
               if (a.region != Region::None) {
-                if (g >= 0 && under(g, a.parts[0])) q = bend_region(a, amp, t, reach[a.parts[0]], q);
+                // Only the part's own outlines: what hangs from it (legs under a waving
+                // torso) keeps its shape and follows the rig.
+                if (g == a.parts[0]) q = bend_region(a, amp, t, rig.parts[g].box, q);
               } else if (a.parts.empty()) {
                 if (!background) q = deform(a, amp, t, rig.figure, q);
               } else {

@@ -27,8 +27,8 @@
 
 namespace svgm {
 
-// A limb that is not a part of its own (a bat drawn as one silhouette): a region of the part
-// bends about a pivot line, each point turning by the action's angle times a weight that
+// A limb that is not a part of its own (a bat drawn as one silhouette): a region of the part's
+// own outlines (not what hangs from it) bends about a pivot line, each point turning by the action's angle times a weight that
 // grows smoothly from 0 at the pivot line (so the shape stays in one piece).
 enum class Region { None, Sides, Lower, Top, End };
 
