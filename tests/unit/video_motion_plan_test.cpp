@@ -163,6 +163,14 @@ TEST_CASE("a wheel turns about its own centre; the stand holds still; one turn c
   CHECK(loop_gap(pts, F) < 1e-9);
 }
 
+TEST_CASE("wheels a verb implies are never the root: pedalling does not spin the whole drawing") {
+  const Fixture fx("wheel.svg");  // the round part is the root here
+  const MotionPlan plan = fx.plan("pedalling");
+  for (const auto& a : plan.actions) CHECK(a.primitive != Primitive::Spin);
+  REQUIRE(!plan.warnings.empty());
+  CHECK(plan.warnings.back() == "'pedalling': no round part other than the root for the wheels; pedal is left out");
+}
+
 TEST_CASE("a jump near the top edge is scaled down to stay in the canvas, with a warning") {
   const Scene s = read_svg_string(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">

@@ -172,6 +172,12 @@ struct Builder {
     std::string note;
     if (target == Target::Named) a.parts = named_parts;
     else if (target != Target::Whole && target != Target::Repeated) a.parts = parts_for(rig, target, target_word, &note);
+    // Wheels a verb implies (pedalling) but the prompt does not name are never the root: a
+    // bicycle drawn as one round-ish part must not spin as a whole. A named wheel may be.
+    if (target == Target::Wheels && !primary_retargeted) {
+      a.parts.erase(std::remove(a.parts.begin(), a.parts.end(), rig.root), a.parts.end());
+      if (a.parts.empty() && note.empty()) note = "no round part other than the root for the wheels";
+    }
     // No separate part for a limb role: a region of the root bends instead (when it swings).
     const bool limb_role = target == Target::Arms || target == Target::Legs || target == Target::Limbs ||
                            target == Target::Head || target == Target::Tail;
