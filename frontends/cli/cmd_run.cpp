@@ -69,6 +69,12 @@ class ProgressView {
     }
     last_ = now;
   }
+  // A stage's one-line report (what the procedural video moves): printed unless --quiet.
+  void info(const std::string& line) {
+    if (quiet_) return;
+    end_line();
+    std::fprintf(stderr, "  %s\n", line.c_str());
+  }
   void end_line() {
     if (drawn_) std::fputc('\n', stderr);
     drawn_ = false;
@@ -129,7 +135,8 @@ int cmd_run(const std::vector<std::string>& argv) {
 
   ProgressView view(a.has("--quiet"));
   host.set_hooks({[&view](double f, const std::string& note) { view.update(f, note); },
-                  [] { return g_interrupted != 0; }});
+                  [] { return g_interrupted != 0; },
+                  [&view](const std::string& line) { view.info(line); }});
   const fs::path dir = fs::absolute(config.value("output", "run"));
   g_interrupted = 0;
   std::signal(SIGINT, on_run_sigint);

@@ -1,16 +1,26 @@
-// video `procedural`: offline candidate videos from a motion library driven by the prompt
-// (engine/src/video): the recoloured SVG's parts move around pivots found from the geometry,
-// rendered as raster frames with a colour drift, blur and H.264 compression. Candidate i uses
-// seed + i, which varies amplitude, phase and which parts move.
+// video `procedural`: offline candidate videos of the recoloured SVG moving as the prompt says
+// (engine/src/video): the parts get names and a rig (part_rig.h), the prompt's verbs, part
+// nouns and modifiers become a motion plan (prompt_parse.h, motion_plan.h), or
+// stages.video.options.motion gives the plan outright ("flap:wing*, bob:root"). Each candidate
+// is rendered as raster frames with a colour drift, blur and H.264 compression; candidate i uses
+// seed + i, which varies the amplitudes and, where the prompt leaves a choice, the side.
+// motion.json in the run directory reports the parts and the plan; one line says it on the
+// terminal.
 #include <filesystem>
 
 #include "common/plugin_glue.h"
 #include "common/stage_files.h"
+#include "pipeline/plugin_options.h"
+#include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
+#include "video/motion_plan.h"
 #include "video/procedural_video.h"
 
 namespace {
+
+// The fitter's keyframes when the request does not carry them (configs/default.yaml).
+constexpr int kDefaultKeyframes = 15;
 
 nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   namespace fs = std::filesystem;
@@ -19,36 +29,74 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   if (!c.value("path", std::string()).empty())
     throw svgm::Error("stages.video.path is set but the video plugin is 'procedural'; add "
                       "stages.video.plugin=file to fit your own video");
+  const svgm::PluginOptions opt(c.contains("options") ? c.at("options") : nlohmann::json(), "video procedural", {"motion"});
+  const std::string explicit_plan = opt.string("motion", "");
   const svgm::Scene scene = svgm::read_svg_file(P::file(req, "inputs", "svg"));
-  std::string note;
-  const std::string motion = svgm::motion_for_prompt(req.value("prompt", ""), &note);
-  if (!note.empty() && host && host->log) host->log(host, 2, ("video procedural: " + note).c_str());
+  const nlohmann::json& inputs = req.at("inputs");
+  const svgm::SourceNames names =
+      inputs.contains("original") ? svgm::read_source_names(P::file(req, "inputs", "original").string()) : svgm::SourceNames{};
+  const svgm::Rig rig = svgm::build_rig(scene, names);
+  const std::string prompt = req.value("prompt", "");
+  const auto steps = explicit_plan.empty() ? std::vector<svgm::ExplicitStep>{} : svgm::parse_explicit_plan(explicit_plan);
+  const svgm::ParsedPrompt parsed = svgm::parse_prompt(prompt);
+  int keyframes = kDefaultKeyframes;
+  if (req.contains("stages") && req.at("stages").contains("fitter") && req.at("stages").at("fitter").contains("keyframes") &&
+      req.at("stages").at("fitter").at("keyframes").is_number_integer())
+    keyframes = req.at("stages").at("fitter").at("keyframes").get<int>();
+
   svgm::ProceduralVideoOptions o;
   o.frames = c.value("frames", 49);
   o.fps = c.value("fps", 24.0);
   o.width = c.value("size", 512);
   o.device = req.value("device", "auto");
-  o.side = svgm::side_for_prompt(req.value("prompt", ""));
   const int n = c.value("candidates", 4);
   const fs::path dir = P::file(req, "outputs", "candidates");
   std::error_code ec;
   fs::remove_all(dir, ec);
   fs::create_directories(dir);
   nlohmann::json made = nlohmann::json::array();
+  nlohmann::json report;
+  std::string summary;
   for (int i = 0; i < n; ++i) {
     char name[16];
     std::snprintf(name, sizeof name, "%02d", i);
-    svgm::ProceduralMotion info;
     const uint32_t seed = static_cast<uint32_t>(req.value("seed", 0) + i);
-    svgm::write_procedural_video(scene, motion, seed, o, dir / (std::string(name) + ".mp4"), &info);
-    made.push_back({{"name", std::string(name) + ".mp4"}, {"motion", info.motion}, {"seed", seed},
-                    {"moving_groups", info.parts.size()}});
+    svgm::MotionPlan plan = steps.empty() ? svgm::plan_from_prompt(parsed, rig, seed) : svgm::plan_from_steps(steps, rig, seed);
+    svgm::fit_plan(scene, rig, plan, o.frames, keyframes);
+    if (i == 0) {
+      report = svgm::motion_report(scene, rig, plan);
+      report["prompt"] = prompt;
+      if (!explicit_plan.empty()) report["explicit_plan"] = explicit_plan;
+      summary = plan.summary();
+      if (host && host->log) {
+        for (const auto& w : plan.warnings) host->log(host, 2, ("video procedural: " + w).c_str());
+        for (const auto& w : plan.notes) host->log(host, 1, ("video procedural: " + w).c_str());
+        std::string line;
+        for (const auto& a : plan.actions) {
+          std::string who = a.target == svgm::Target::Whole ? "whole figure" : a.target == svgm::Target::Repeated
+                                ? std::to_string(rig.repeated.size()) + " repeated elements" : "";
+          if (a.region != svgm::Region::None) who = "a region of ";
+          for (int p : a.parts) who += (who.empty() || a.region != svgm::Region::None ? "" : "+") + rig.parts[p].name;
+          line += (line.empty() ? "" : "; ") + a.verb + " " + who;
+        }
+        host->log(host, 1, ("video procedural: " + line + " (motion.json)").c_str());
+      }
+    }
+    const std::vector<svgm::Vec2> pts = svgm::animate_plan(scene, rig, plan, o.frames);
+    if (i == 0) {
+      report["canvas"] = {scene.width, scene.height};
+      report["paths"] = svgm::path_motion_json(scene, svgm::path_motion(scene, pts, o.frames));
+    }
+    svgm::write_procedural_video(scene, pts, seed, o, dir / (std::string(name) + ".mp4"));
+    made.push_back({{"name", std::string(name) + ".mp4"}, {"seed", seed}, {"amplitude_scale", plan.scale},
+                    {"plan", plan.summary()}});
     if (host && host->progress) host->progress(host, (i + 1.0) / n, name);
   }
-  return {{"message", std::to_string(n) + " candidates (" + motion + ")"}, {"motion", motion},
-          {"note", note}, {"candidates", made}};
+  report["candidates"] = made;
+  svgm::write_file_atomic(fs::path(req.at("run_dir").get<std::string>()) / "motion.json", report.dump(2) + "\n");
+  return {{"message", std::to_string(n) + " candidates (" + summary + ")"}, {"candidates", made}};
 }
 
 }  // namespace
 
-SVGM_DEFINE_PLUGIN("video", "procedural", "1", "offline motion library (no model needed)", run)
+SVGM_DEFINE_PLUGIN("video", "procedural", "1", "offline motion from the prompt's words (no model needed)", run)

@@ -144,6 +144,11 @@ pipeline)
     stages.ranker.accept_flagged=true stages.video.candidates=2 stages.video.frames=9 stages.video.size=96 \
     stages.fitter.iterations=30 stages.fitter.keyframes=3 stages.fitter.size=64 >"$tmp/out6" 2>&1
   check "a prompt alone runs the whole pipeline with the default plugins" '[[ -s $tmp/prompt/animation.svg && -s $tmp/prompt/candidates/00.mp4 && -s $tmp/prompt/candidates/01.mp4 ]] && grep -q "\"motion\"" "$tmp/prompt/ranking.json" && grep -q "<animate attributeName=\"d\"" "$tmp/prompt/animation.svg"'
+  check "the procedural video says what moves in motion.json (the arm named right)" 'grep -q "\"verb\": \"wave\"" "$tmp/prompt/motion.json" && grep -A3 "\"parts\": \[" "$tmp/prompt/motion.json" | grep -q "\"arm_right\""'
+  expect_error "an explicit motion plan with an unknown verb is refused before any stage" "stages.video.options.motion: motion plan 'zoom:arm': unknown verb 'zoom'" "$tmp/none4" \
+    run --input "$data/examples/man.svg" -o "$tmp/none4" --quiet "stages.video.options.motion=zoom:arm"
+  expect_error "an explicit motion plan naming no part says which parts there are" "'tail*' matches no part (parts: " "$tmp/none5/animation.svg" \
+    run --input "$data/examples/man.svg" -o "$tmp/none5" --quiet "stages.video.options.motion=flap:tail*"
   expect_error "a video path with the procedural provider says how to fit it" "stages.video.path is set" "$tmp/none3/animation.svg" \
     run --input "$data/examples/man.svg" -o "$tmp/none3" --quiet "stages.video.path=$tmp/frames"
   # A hanging generator under video `command`: one line within its timeout, earlier stages kept.

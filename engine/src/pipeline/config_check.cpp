@@ -13,6 +13,7 @@
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
 #include "svgmotion/target_video.h"
+#include "video/prompt_parse.h"
 
 namespace svgm {
 
@@ -119,6 +120,20 @@ void check_config(const nlohmann::json& c, const PluginHost& host) {
     throw Error("stages.fitter.keyframes: " + shown(at(c, "stages.fitter.keyframes")) +
                 " keyframes need at least as many video frames (stages.video.frames is " +
                 shown(at(c, "stages.video.frames")) + ")");
+
+  // The procedural video's explicit motion plan: its grammar (verbs, modifiers) is checked now;
+  // its part patterns only once the parts exist.
+  if (at(c, "stages.video.plugin") == "procedural") {
+    const nlohmann::json& opts = at(c, "stages.video.options");
+    if (opts.is_object() && opts.contains("motion")) {
+      if (!opts["motion"].is_string()) throw Error("stages.video.options.motion: must be a string like \"flap:wing*, bob:whole\"");
+      try {
+        parse_explicit_plan(opts["motion"].get<std::string>());
+      } catch (const Error& e) {
+        throw Error(std::string("stages.video.options.motion: ") + e.what());
+      }
+    }
+  }
 
   const nlohmann::json& prompt = at(c, "prompt");
   if (prompt.is_string() && !valid_utf8(prompt.get<std::string>()))

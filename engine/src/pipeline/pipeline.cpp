@@ -24,7 +24,7 @@ const std::vector<StageFiles>& stage_files() {
       {"grouper", {{"svg", "input.svg"}}, {{"svg", "grouped.svg"}}},
       {"recolorer", {{"svg", "grouped.svg"}},
        {{"svg", "recolored.svg"}, {"png", "recolored.png"}, {"palette", "palette.json"}}},
-      {"video", {{"image", "recolored.png"}, {"svg", "recolored.svg"}}, {{"candidates", "candidates"}}},
+      {"video", {{"image", "recolored.png"}, {"svg", "recolored.svg"}, {"original", "input.svg"}}, {{"candidates", "candidates"}}},
       {"ranker", {{"candidates", "candidates"}, {"palette", "palette.json"}, {"svg", "grouped.svg"}},
        {{"ranking", "ranking.json"}, {"target", "target.mp4"}}},
       {"layers",

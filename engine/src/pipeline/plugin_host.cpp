@@ -31,7 +31,9 @@ const std::vector<std::string>& stage_names() {
 
 namespace {
 
-void host_log(const svgm_host*, int level, const char* message) {
+void host_log(const svgm_host* host, int level, const char* message) {
+  const auto* hooks = static_cast<const HostHooks*>(host ? host->context : nullptr);
+  if (level == 1 && hooks && hooks->info) hooks->info(message);
   if (level >= 2) std::fprintf(stderr, "svgmotion: %s: %s\n", level >= 3 ? "error" : "warning", message);
 }
 void host_progress(const svgm_host* host, double fraction, const char* note) {

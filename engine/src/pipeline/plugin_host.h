@@ -26,6 +26,7 @@ const std::vector<std::string>& stage_names();
 struct HostHooks {
   std::function<void(double fraction, const std::string& note)> progress;
   std::function<bool()> cancelled;
+  std::function<void(const std::string& line)> info;  // a plugin's info line (log level 1)
 };
 
 class PluginHost {

@@ -15,15 +15,13 @@
 
 namespace svgm {
 
-void write_procedural_video(const Scene& scene, const std::string& motion, uint32_t seed,
-                            const ProceduralVideoOptions& o, const std::filesystem::path& out,
-                            ProceduralMotion* info) {
+void write_procedural_video(const Scene& scene, const std::vector<Vec2>& pts, uint32_t seed,
+                            const ProceduralVideoOptions& o, const std::filesystem::path& out) {
   if (o.frames < 2) throw Error("procedural video: frames must be at least 2");
   const RenderSize size = render_size(scene, o.width);
   const RasterPlan plan = plan_raster(scene, size.view, size.width, size.height);
-  const std::vector<Vec2> pts = animate_scene(scene, motion, o.frames, seed, info, o.side);
   const size_t per_frame = pts.size() / o.frames;
-  if (per_frame + 3 != static_cast<size_t>(plan.n_cp))
+  if (pts.size() % o.frames != 0 || per_frame + 3 != static_cast<size_t>(plan.n_cp))
     throw Error("internal: procedural motion and raster plan disagree on the points");
   std::vector<float> cp;
   cp.reserve(static_cast<size_t>(o.frames) * plan.n_cp * 2);

@@ -1,0 +1,768 @@
+// The motion plan and its frames (see motion_plan.h).
+#include "video/motion_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+#include <set>
+
+#include "svgmotion/error.h"
+
+namespace svgm {
+
+namespace {
+
+constexpr double kTau = 2 * M_PI;
+// Golden-ratio spacing of the phases of repeated elements: no two drops fall in step.
+constexpr double kPhaseSpacing = 0.6180339887498949;
+// A prompt with no motion word: the figure sways this many degrees about its base, once.
+constexpr double kFallbackSwayDeg = 4;
+// A part hanging from a spinning part turns with it when this share of its box is inside.
+constexpr double kInsideShare = 0.7;
+
+bool whole_only(Primitive p) {
+  return p == Primitive::Rock || p == Primitive::Hop || p == Primitive::Bob || p == Primitive::Slide ||
+         p == Primitive::Squash || p == Primitive::Stretch || p == Primitive::Shake;
+}
+
+std::string join(const std::vector<std::string>& v, const char* sep) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : sep) + x;
+  return s;
+}
+
+bool part_has_word(const RigPart& P, const std::string& noun) {
+  for (const auto& w : P.words)
+    if (word_matches(noun, w) || word_matches(w, noun)) return true;
+  return false;
+}
+
+// Keeps only the parts whose ancestors are not also in the set (a limb's segments follow it).
+std::vector<int> topmost(const Rig& rig, std::vector<int> parts) {
+  std::set<int> in(parts.begin(), parts.end());
+  std::vector<int> out;
+  for (int p : parts) {
+    bool covered = false;
+    for (int a = rig.parts[p].parent, guard = 0; a >= 0 && guard < 64; a = rig.parts[a].parent, ++guard)
+      covered = covered || in.count(a) > 0;
+    if (!covered) out.push_back(p);
+  }
+  return out;
+}
+
+std::vector<int> with_role(const Rig& rig, std::initializer_list<Role> roles) {
+  std::vector<int> v;
+  for (size_t i = 0; i < rig.parts.size(); ++i)
+    if (std::find(roles.begin(), roles.end(), rig.parts[i].role) != roles.end() && static_cast<int>(i) != rig.root)
+      v.push_back(static_cast<int>(i));
+  return topmost(rig, v);
+}
+
+// The parts a target means, with a note when a fallback had to stand in.
+std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, std::string* note) {
+  auto attached = [&] {
+    std::vector<int> v;
+    for (size_t i = 0; i < rig.parts.size(); ++i)
+      if (rig.parts[i].parent == rig.root && rig.parts[i].role != Role::Detail) v.push_back(static_cast<int>(i));
+    return v;
+  };
+  std::vector<int> v;
+  switch (t) {
+    case Target::Whole: return {};
+    case Target::Root: return rig.root >= 0 ? std::vector<int>{rig.root} : std::vector<int>{};
+    case Target::Head: v = with_role(rig, {Role::Head}); break;
+    case Target::Arms: v = with_role(rig, {Role::UpperLimb}); break;
+    case Target::Legs: v = with_role(rig, {Role::LowerLimb}); break;
+    case Target::Limbs: v = with_role(rig, {Role::UpperLimb, Role::LowerLimb, Role::Tail}); break;
+    case Target::Tail: v = with_role(rig, {Role::Tail}); break;
+    case Target::Background: v = with_role(rig, {Role::Background}); return v;
+    case Target::Repeated: return {};
+    case Target::Wheels:
+      for (size_t i = 0; i < rig.parts.size(); ++i)
+        if (rig.parts[i].round) v.push_back(static_cast<int>(i));
+      v = topmost(rig, v);
+      if (v.empty() && note) *note = "no round part for the wheels";
+      return v;
+    case Target::Named:
+      for (size_t i = 0; i < rig.parts.size(); ++i)
+        if (part_has_word(rig.parts[i], noun)) v.push_back(static_cast<int>(i));
+      return topmost(rig, v);
+  }
+  if (!v.empty() || rig.root < 0) return v;
+  // Stand-ins: the parts hanging from the root that are not details, else the highest part
+  // other than the root (a head for a nod, a single limb for a wave).
+  std::vector<int> any = attached();
+  if (t == Target::Head || t == Target::Tail || any.empty()) {
+    int best = -1;
+    for (int i : any.empty() ? std::vector<int>{} : any) {
+      const double y = rig.parts[i].box.centre().y;
+      const double far = std::fabs(rig.parts[i].box.centre().x - rig.parts[rig.root].box.centre().x);
+      if (best < 0 || (t == Target::Tail ? far > std::fabs(rig.parts[best].box.centre().x - rig.parts[rig.root].box.centre().x)
+                                          : y < rig.parts[best].box.centre().y))
+        best = i;
+    }
+    if (best < 0)
+      for (size_t i = 0; i < rig.parts.size(); ++i)
+        if (static_cast<int>(i) != rig.root && rig.parts[i].role != Role::Background &&
+            (best < 0 || rig.parts[i].box.area() > rig.parts[best].box.area()))
+          best = static_cast<int>(i);
+    if (best >= 0) v = {best};
+  } else {
+    v = any;
+  }
+  if (note)
+    *note = v.empty() ? std::string("no part for the ") + target_name(t)
+                      : std::string("no ") + target_name(t) + " found; " + rig.parts[v[0]].name + (v.size() > 1 ? " and others" : "") + " stand in";
+  return v;
+}
+
+// Signs and phases of the parts of one action.
+void pair_up(const Rig& rig, PlannedAction& a, Pairing pairing, std::mt19937& rng) {
+  const Vec2 rc = rig.root >= 0 ? rig.parts[rig.root].box.centre() : rig.figure.centre();
+  std::vector<int> parts = a.parts;
+  std::sort(parts.begin(), parts.end(), [&](int x, int y) { return rig.parts[x].box.centre().x < rig.parts[y].box.centre().x; });
+  a.parts = parts;
+  a.sign.clear();
+  a.phase.clear();
+  const double first = (rng() & 1) ? 1 : -1;  // which way the first swing goes (mirrored pairs both ways)
+  for (size_t i = 0; i < parts.size(); ++i) {
+    // Mirror: a part on the viewer's left turns the other way from one on the right, so a pair
+    // of wings both rise; a part in the middle turns by the seed's direction.
+    const double dx = rig.parts[parts[i]].box.centre().x - rc.x;
+    const double mirror = std::fabs(dx) < 1e-9 ? first : (dx < 0 ? 1 : -1);
+    if (pairing == Pairing::Alternating) {
+      a.sign.push_back(mirror);
+      a.phase.push_back(i % 2 ? 0.5 : 0);
+    } else if (pairing == Pairing::Same) {
+      a.sign.push_back(first);
+      a.phase.push_back(0);
+    } else {
+      a.sign.push_back(mirror);
+      a.phase.push_back(0);
+    }
+  }
+}
+
+struct Builder {
+  const Rig& rig;
+  std::mt19937 rng;
+  MotionPlan plan;
+
+  void add(const Verb& verb, const Action& base, Target target, const std::vector<int>& named_parts,
+           const std::string& target_word, const Modifiers& mods, bool plural, const std::string& words,
+           bool primary_retargeted) {
+    PlannedAction a;
+    a.verb = verb.name;
+    a.words = words;
+    a.primitive = base.primitive;
+    a.target = target;
+    if (primary_retargeted && whole_only(a.primitive) && target != Target::Whole) a.primitive = verb.on_part;
+    std::uniform_real_distribution<double> U(0, 1);
+    a.amp = base.amp * mods.size * (a.primitive == Primitive::Spin ? 1 : 0.85 + 0.3 * U(rng));
+    a.cycles = std::max(1, static_cast<int>(std::lround(base.cycles * mods.speed)));
+    if (mods.once > 0) a.cycles = 1;
+    if (mods.once < 0) a.cycles = std::max(2, a.cycles);
+    if (a.primitive == Primitive::Spin) {
+      a.amp = std::max(1.0, std::round(base.amp * (mods.speed > 1 ? 2 : 1)));  // whole turns
+      a.cycles = 1;
+    }
+    a.vertical = mods.vertical;
+    a.direction = mods.side != 0 ? mods.side : ((rng() & 1) ? 1 : -1);
+    std::string note;
+    if (target == Target::Named) a.parts = named_parts;
+    else if (target != Target::Whole && target != Target::Repeated) a.parts = parts_for(rig, target, target_word, &note);
+    // Wheels a verb implies (pedalling) but the prompt does not name are never the root: a
+    // bicycle drawn as one round-ish part must not spin as a whole. A named wheel may be.
+    if (target == Target::Wheels && !primary_retargeted) {
+      a.parts.erase(std::remove(a.parts.begin(), a.parts.end(), rig.root), a.parts.end());
+      if (a.parts.empty() && note.empty()) note = "no round part other than the root for the wheels";
+    }
+    // No separate part for a limb role: a region of the root bends instead (when it swings).
+    const bool limb_role = target == Target::Arms || target == Target::Legs || target == Target::Limbs ||
+                           target == Target::Head || target == Target::Tail;
+    if (limb_role && !note.empty() && rig.root >= 0 && a.primitive == Primitive::Swing) {
+      a.parts = {rig.root};
+      a.region = target == Target::Arms || target == Target::Limbs ? Region::Sides
+                 : target == Target::Legs ? Region::Lower : target == Target::Head ? Region::Top : Region::End;
+      a.alternating = base.pairing == Pairing::Alternating;
+      if (base.pairing == Pairing::OneSide && !mods.both && !plural) {
+        // The figure's own side is drawn on the viewer's other side.
+        a.region_side = mods.side != 0 ? -mods.side : ((rng() & 1) ? 1 : -1);
+      }
+      a.direction = a.region == Region::End ? ((rng() & 1) ? 1 : -1) : a.direction;
+      note = std::string("no separate ") + target_name(target) + ": the " +
+             (a.region == Region::Sides ? "sides" : a.region == Region::Lower ? "lower part" : a.region == Region::Top ? "top" : "far end") +
+             " of " + rig.parts[rig.root].name + " bend";
+      a.sign = {1};
+      a.phase = {0};
+    }
+    if (target == Target::Repeated && rig.repeated.empty()) {
+      plan.warnings.push_back("'" + words + "': no repeated elements (drops, stars) found; " + verb.name + " is left out");
+      return;
+    }
+    if (target != Target::Whole && target != Target::Repeated && a.parts.empty()) {
+      plan.warnings.push_back("'" + words + "': " + (note.empty() ? std::string("no part for it") : note) + "; " + verb.name + " is left out");
+      return;
+    }
+    Pairing pairing = base.pairing;
+    if (pairing == Pairing::OneSide && (mods.both || plural)) pairing = Pairing::Mirrored;
+    if (pairing == Pairing::OneSide && a.parts.size() > 1 && a.region == Region::None) {
+      int want = mods.side;
+      std::vector<int> sided;
+      for (int p : a.parts)
+        if (want != 0 && rig.parts[p].side == want) sided.push_back(p);
+      if (sided.empty()) {  // no side asked (or none there): the seed picks one part
+        sided = {a.parts[rng() % a.parts.size()]};
+        if (want != 0) note = std::string("no part on the figure's ") + (want > 0 ? "right" : "left") + "; " + rig.parts[sided[0]].name + " instead";
+      }
+      a.parts = {sided[0]};
+    }
+    if (a.region == Region::None) pair_up(rig, a, pairing == Pairing::OneSide ? Pairing::Same : pairing, rng);
+    // One-sided whole-figure motions (lean, bow) go one way and back.
+    if (a.primitive == Primitive::Rock && base.pairing == Pairing::OneSide) a.vertical = 2;
+    // Skip a repeat: the same primitive on the same parts.
+    for (const auto& b : plan.actions)
+      if (b.primitive == a.primitive && b.target == a.target && b.parts == a.parts && b.region == a.region) return;
+    std::vector<std::string> names;
+    for (int p : a.parts) names.push_back(rig.parts[p].name);
+    a.why = "'" + words + "': " + verb.name + " moves the " +
+            (target == Target::Whole ? std::string("whole figure")
+             : target == Target::Repeated ? rig.repeated_why
+             : std::string(target_name(target)) + " (" + join(names, ", ") + ")");
+    if (!note.empty()) a.why += "; " + note;
+    if (!mods.words.empty()) a.why += "; " + join(mods.words, ", ");
+    plan.actions.push_back(std::move(a));
+  }
+};
+
+}  // namespace
+
+std::string MotionPlan::summary() const {
+  std::string s;
+  for (const auto& a : actions) {
+    char amp[64];
+    const char* unit = a.primitive == Primitive::Swing || a.primitive == Primitive::Rock || a.primitive == Primitive::Bend ? " deg"
+                       : a.primitive == Primitive::Spin ? " turn" : "";
+    std::snprintf(amp, sizeof amp, " %.3g%s x%d", a.amp * (a.primitive == Primitive::Spin ? 1 : scale), unit, a.cycles);
+    std::string who = a.target == Target::Whole ? "whole" : a.target == Target::Repeated ? "repeated" : "";
+    if (who.empty()) {
+      for (int p : a.parts) who += (who.empty() ? "" : "+") + std::to_string(p);
+    }
+    s += (s.empty() ? "" : "; ") + a.verb + " (" + primitive_name(a.primitive) + ") " + who + amp;
+  }
+  return s;
+}
+
+MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t seed) {
+  Builder b{rig, std::mt19937(seed), {}};
+  b.plan.source = "prompt";
+  std::vector<std::string> unknown;
+  for (const Clause& c : prompt.clauses) {
+    // The clause's targets: known part nouns, and other words that name a part of the drawing.
+    Target target = Target::Whole;
+    std::vector<int> named;
+    std::string target_word;
+    bool plural = false, have = false;
+    for (const auto& n : c.nouns) {
+      std::vector<int> hits;
+      if (n.target == Target::Named) {
+        std::string ignore;
+        hits = parts_for(rig, Target::Named, n.word, &ignore);
+        if (hits.empty()) {
+          unknown.push_back(n.word);
+          continue;
+        }
+      }
+      if (have || n.object_of_preposition) continue;
+      have = true;
+      target = n.target;
+      named = hits;
+      target_word = n.word;
+      plural = n.plural;
+    }
+    for (const Verb* v : c.verbs)
+      for (size_t i = 0; i < v->actions.size(); ++i) {
+        const Action& act = v->actions[i];
+        const bool retarget = i == 0 && have;
+        b.add(*v, act, retarget ? target : act.target, retarget ? named : std::vector<int>{}, target_word, c.mods,
+              retarget && plural, c.text, retarget);
+      }
+  }
+  b.plan.not_understood = unknown;
+  if (b.plan.actions.empty()) {
+    const std::string words = unknown.empty() ? "no words" : join(unknown, ", ");
+    b.plan.warnings.push_back("no motion understood in the prompt (not understood: " + words + "); the figure sways gently");
+    const Verb* sway = find_verb_by_name("sway");
+    Action gentle = sway->actions[0];
+    gentle.amp = kFallbackSwayDeg;
+    b.add(*sway, gentle, Target::Whole, {}, "", Modifiers{}, false, "(fallback)", false);
+  } else {
+    std::vector<std::string> verbs_missed;
+    for (const auto& w : unknown)
+      if (w.size() > 4 && w.compare(w.size() - 3, 3, "ing") == 0) verbs_missed.push_back(w);
+    if (!verbs_missed.empty()) b.plan.warnings.push_back("words not understood: " + join(verbs_missed, ", "));
+  }
+  return b.plan;
+}
+
+MotionPlan plan_from_steps(const std::vector<ExplicitStep>& steps, const Rig& rig, uint32_t seed) {
+  Builder b{rig, std::mt19937(seed), {}};
+  b.plan.source = "stages.video.options.motion";
+  for (const auto& s : steps) {
+    const Verb* v = find_verb_by_name(s.verb);
+    std::vector<int> parts;
+    for (const auto& pat : s.patterns) {
+      const size_t before = parts.size();
+      for (size_t i = 0; i < rig.parts.size(); ++i) {
+        const RigPart& P = rig.parts[i];
+        // A pattern matches a part's name, or its role in the figure's words: "wing*" and
+        // "arm*" find upper limbs, "leg*" lower limbs, "body" the root.
+        std::vector<std::string> aliases = {P.name, role_name(P.role)};
+        if (P.role == Role::UpperLimb) aliases.insert(aliases.end(), {"arm", "wing", "fin", "limb"});
+        if (P.role == Role::LowerLimb) aliases.insert(aliases.end(), {"leg", "foot", "limb"});
+        if (P.role == Role::Root) aliases.insert(aliases.end(), {"body", "root"});
+        if (P.role == Role::Tail) aliases.push_back("limb");
+        if (P.round) aliases.push_back("wheel");
+        bool hit = false;
+        for (const auto& al : aliases) hit = hit || glob_match(pat, al);
+        if (hit && std::find(parts.begin(), parts.end(), static_cast<int>(i)) == parts.end()) parts.push_back(static_cast<int>(i));
+      }
+      if (parts.size() == before && pat != "whole" && pat != "repeated") {
+        std::vector<std::string> names;
+        for (const auto& P : rig.parts) names.push_back(P.name);
+        throw Error("stages.video.options.motion: '" + pat + "' matches no part (parts: " + join(names, ", ") + ")");
+      }
+    }
+    const bool whole = std::find(s.patterns.begin(), s.patterns.end(), "whole") != s.patterns.end();
+    const bool repeated = std::find(s.patterns.begin(), s.patterns.end(), "repeated") != s.patterns.end();
+    const std::string words = s.verb + (s.patterns.empty() ? "" : ":" + join(s.patterns, "+"));
+    if (s.patterns.empty() || whole || repeated) {
+      for (size_t i = 0; i < v->actions.size(); ++i) {
+        const Target t = i == 0 && whole ? Target::Whole : i == 0 && repeated ? Target::Repeated : v->actions[i].target;
+        b.add(*v, v->actions[i], t, {}, "", s.mods, false, words, false);
+      }
+    } else {
+      // Only the primary action, on exactly the parts named.
+      b.add(*v, v->actions[0], Target::Named, topmost(rig, parts), "", s.mods, true, words, true);
+    }
+  }
+  return b.plan;
+}
+
+namespace {
+
+// The rigid motion of one action at time t on a part (or the figure) with box `box` and
+// attachment `pivot`; `H`, `W` the figure's size (units of the translations).
+Affine rigid(const PlannedAction& a, double amp, double sign, double phase, double t, const RigBox& box, Vec2 pivot,
+             double W, double H) {
+  const double u = a.cycles * t + phase;
+  const double s = std::sin(kTau * u), k = 0.5 - 0.5 * std::cos(kTau * u);
+  const Vec2 base{box.centre().x, box.y1}, centre = box.centre();
+  auto about = [](Vec2 c, const Affine& m) { return Affine::translate(c.x, c.y) * m * Affine::translate(-c.x, -c.y); };
+  switch (a.primitive) {
+    case Primitive::Swing: return about(pivot, Affine::rotate_deg(sign * amp * s));
+    case Primitive::Spin: return about(centre, Affine::rotate_deg(360.0 * amp * a.direction * t));
+    case Primitive::Rock:
+      return about(a.parts.empty() ? base : pivot, Affine::rotate_deg(a.vertical == 2 ? a.direction * amp * k : sign * amp * s));
+    case Primitive::Bob: {
+      const double ty = a.vertical == 1 ? -amp * H * k : a.vertical == -1 ? amp * H * k : -amp * H * s;
+      return Affine::translate(0, ty);
+    }
+    case Primitive::Slide: return Affine::translate(a.direction * amp * W * s, 0);
+    case Primitive::Shake:
+      return Affine::translate(amp * H * s, 0.6 * amp * H * std::sin(kTau * (std::max(1, a.cycles - 1) * t + phase)));
+    case Primitive::Pulse: {
+      const double f = 1 + amp * k;
+      return about(centre, Affine::scale(f, f));
+    }
+    case Primitive::Squash: {
+      const double sy = 1 - 1.2 * amp * k;
+      return about(base, Affine::scale(1 + 0.5 * amp * k, sy));
+    }
+    case Primitive::Stretch: {
+      const double f = 1 + amp * k;
+      if (box.w() >= box.h()) return about({box.x0, centre.y}, Affine::scale(f, 1 / std::sqrt(f)));
+      return about(base, Affine::scale(1 / std::sqrt(f), f));
+    }
+    case Primitive::Hop: {
+      // Per cycle: a fifth on the ground squashing, then the flight (stretched rising,
+      // squashed a little falling), landing where it started.
+      const double c = u - std::floor(u);
+      double ty = 0, sy = 1;
+      if (c < 0.2) sy = 1 - 0.6 * amp * std::sin(M_PI * c / 0.2);
+      else {
+        const double v = (c - 0.2) / 0.8;
+        ty = -amp * H * std::sin(M_PI * v);
+        sy = 1 + 0.4 * amp * std::sin(kTau * v);
+      }
+      return Affine::translate(0, ty) * about(base, Affine::scale(1 / std::sqrt(sy), sy));
+    }
+    default: return {};
+  }
+}
+
+// Deformations of the shape: a wave along the long axis (Undulate) or a bend (Bend).
+Vec2 deform(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
+  const bool horizontal = box.w() >= box.h();
+  const double L = std::max(horizontal ? box.w() : box.h(), 1e-9);
+  const double u = horizontal ? (q.x - box.x0) / L : (q.y - box.y0) / L;
+  double d = 0;
+  if (a.primitive == Primitive::Undulate) {
+    const double w = 0.4 + 0.6 * std::fabs(2 * u - 1);  // the ends move most
+    d = amp * L * w * (std::sin(kTau * (a.cycles * t - u)) - std::sin(kTau * (-u)));
+  } else if (a.primitive == Primitive::Bend) {
+    d = std::tan(amp * M_PI / 180) * L * 2 * (u - 0.5) * (u - 0.5) * std::sin(kTau * a.cycles * t) * a.direction;
+  }
+  return horizontal ? Vec2{q.x, q.y + d} : Vec2{q.x + d, q.y};
+}
+
+bool is_deformation(const PlannedAction& a) {
+  return a.primitive == Primitive::Undulate || a.primitive == Primitive::Bend || a.region != Region::None;
+}
+
+double smoothstep(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3 - 2 * x);
+}
+
+Vec2 rotate_about(Vec2 q, Vec2 c, double deg) {
+  const double r = deg * M_PI / 180, cs = std::cos(r), sn = std::sin(r);
+  const Vec2 d = q - c;
+  return c + Vec2{cs * d.x - sn * d.y, sn * d.x + cs * d.y};
+}
+
+// Region bends (virtual limbs); the fractions of the part's box are where a figure drawn as
+// one shape usually has its joints: the core of a body is the middle quarter of its width
+// (kCore each side), hips at 60 % of its height, a neck at 30 %, a tail the last 30 %.
+constexpr double kCore = 0.12, kHip = 0.6, kNeck = 0.3, kTailStart = 0.3, kRamp = 0.25;
+
+Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
+  const double W = std::max(box.w(), 1e-9), H = std::max(box.h(), 1e-9);
+  const Vec2 c = box.centre();
+  auto wave = [&](double phase) { return std::sin(kTau * (a.cycles * t + phase)); };
+  switch (a.region) {
+    case Region::Sides: {
+      const double dx = q.x - c.x, core = kCore * W;
+      if (std::fabs(dx) <= core) return q;
+      const int side = dx < 0 ? -1 : 1;  // as the viewer sees it
+      if (a.region_side != 0 && side != a.region_side) return q;
+      const double w = smoothstep((std::fabs(dx) - core) / (kRamp * W));
+      // Mirrored: both sides rise together; alternating: half a cycle apart.
+      const double ang = amp * (side < 0 ? 1 : -1) * wave(a.alternating && side > 0 ? 0.5 : 0) * w;
+      return rotate_about(q, {c.x + side * core, c.y}, ang);
+    }
+    case Region::Lower: {
+      const double hip = box.y0 + kHip * H;
+      if (q.y <= hip) return q;
+      const int side = q.x < c.x ? -1 : 1;
+      if (a.region_side != 0 && side != a.region_side) return q;
+      const double w = smoothstep((q.y - hip) / (kRamp * H));
+      const double ang = amp * wave(a.alternating && side > 0 ? 0.5 : 0) * w * (a.alternating ? 1 : (side < 0 ? 1 : -1));
+      return rotate_about(q, {c.x + side * kCore * W, hip}, ang);
+    }
+    case Region::Top: {
+      const double neck = box.y0 + kNeck * H;
+      if (q.y >= neck) return q;
+      return rotate_about(q, {c.x, neck}, amp * wave(0) * smoothstep((neck - q.y) / (kRamp * H)));
+    }
+    case Region::End: {
+      const double start = a.direction > 0 ? box.x1 - kTailStart * W : box.x0 + kTailStart * W;
+      const double beyond = a.direction * (q.x - start);
+      if (beyond <= 0) return q;
+      return rotate_about(q, {start, c.y}, amp * wave(0) * smoothstep(beyond / (kRamp * W)));
+    }
+    case Region::None: break;
+  }
+  return q;
+}
+
+// The share of box a inside box b.
+double overlap_share(const RigBox& a, const RigBox& b) {
+  const double ox = std::min(a.x1, b.x1) - std::max(a.x0, b.x0), oy = std::min(a.y1, b.y1) - std::max(a.y0, b.y0);
+  return ox > 0 && oy > 0 ? ox * oy / std::max(a.area(), 1e-12) : 0;
+}
+
+}  // namespace
+
+std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames) {
+  const int G = static_cast<int>(rig.parts.size());
+  const double W = std::max(rig.figure.w(), 1e-9), H = std::max(rig.figure.h(), 1e-9);
+  const double CH = scene.height;
+  // Descendant test: is part p at or under part a?
+  auto under = [&](int p, int a) {
+    for (int g = p, guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
+      if (g == a) return true;
+    return false;
+  };
+  // Repeated elements: which element each path belongs to; and whether they fly free.
+  std::vector<int> element_of(scene.paths.size(), -1);
+  std::vector<RigBox> element_box(rig.repeated.size());
+  for (size_t e = 0; e < rig.repeated.size(); ++e)
+    for (int pi : rig.repeated[e]) {
+      element_of[pi] = static_cast<int>(e);
+      for (const auto& sp : scene.paths[pi].subpaths)
+        for (const Vec2& q : sp.points) element_box[e].add(q);
+    }
+  bool particles = false;
+  for (const auto& a : plan.actions) particles = particles || (a.target == Target::Repeated && a.primitive == Primitive::Fall);
+  // Each part's box including what hangs from it (the extent a deformation spans).
+  std::vector<RigBox> reach(G);
+  for (int g = 0; g < G; ++g)
+    for (int h = 0; h < G; ++h)
+      if (under(h, g)) reach[g].add(rig.parts[h].box);
+
+  std::vector<Vec2> out;
+  out.reserve(static_cast<size_t>(frames) * (scene.segment_count() * 3 + scene.paths.size() * 2));
+  for (int f = 0; f < frames; ++f) {
+    const double t = frames > 1 ? static_cast<double>(f) / (frames - 1) : 0;
+    std::vector<Affine> local(G), world(G), spin(G);
+    std::vector<char> spins(G, 0);
+    Affine whole;
+    for (const auto& a : plan.actions) {
+      const double amp = a.primitive == Primitive::Spin ? a.amp : a.amp * plan.scale;
+      if (is_deformation(a) || a.target == Target::Repeated) continue;
+      if (a.parts.empty()) whole = rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
+      for (size_t i = 0; i < a.parts.size(); ++i) {
+        const RigPart& P = rig.parts[a.parts[i]];
+        Affine& into = a.primitive == Primitive::Spin ? spin[a.parts[i]] : local[a.parts[i]];
+        into = rigid(a, amp, a.sign[i], a.phase[i], t, P.box, P.pivot, W, H) * into;
+        if (a.primitive == Primitive::Spin) spins[a.parts[i]] = 1;
+      }
+    }
+    // World transforms down the rig: parents before children (parents are larger, or the root).
+    std::vector<int> order(G);
+    for (int g = 0; g < G; ++g) order[g] = g;
+    auto depth = [&](int g) { int d = 0; for (int p = rig.parts[g].parent; p >= 0 && d < 64; p = rig.parts[p].parent) ++d; return d; };
+    std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return depth(x) < depth(y); });
+    for (int g : order) world[g] = rig.parts[g].parent >= 0 ? world[rig.parts[g].parent] * local[g] : local[g];
+    // A spinning part turns in its own frame, and carries only what hangs from it inside its
+    // box (a ferris wheel's cabins, not its stand).
+    for (int g = 0; g < G; ++g)
+      for (int a = g, guard = 0; a >= 0 && guard < 64; a = rig.parts[a].parent, ++guard)
+        if (spins[a] && (a == g || overlap_share(rig.parts[g].box, rig.parts[a].box) >= kInsideShare)) {
+          world[g] = world[g] * spin[a];
+          break;
+        }
+
+    for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
+      const int g = rig.part_of_path[pi];
+      const int e = element_of[pi];
+      const bool background = g >= 0 && rig.parts[g].role == Role::Background;
+      const bool free_particle = particles && e >= 0;
+      // The element's own motion (falls, twinkles), one phase per element.
+      Affine elem;
+      if (e >= 0)
+        for (const auto& a : plan.actions) {
+          if (a.target != Target::Repeated) continue;
+          const double phase = std::fmod(e * kPhaseSpacing + a.direction * 0.137, 1.0) + 1.0;
+          const RigBox& eb = element_box[e];
+          if (a.primitive == Primitive::Fall) {
+            const double u = std::fmod(a.cycles * t + phase, 1.0);
+            const double room = std::max(0.0, scene.height * (1 - kFrameMargin) - eb.y1);
+            const double dist = std::min(a.amp * plan.scale * CH, room);
+            const double s = std::min(1.0, 3 * std::sin(M_PI * u));
+            const Vec2 c{eb.centre().x, eb.centre().y + dist * u};
+            elem = Affine::translate(c.x, c.y) * Affine::scale(s, s) * Affine::translate(-eb.centre().x, -eb.centre().y) * elem;
+          } else {
+            PlannedAction one = a;
+            one.parts = {};
+            elem = rigid(one, a.amp * plan.scale, 1, phase, t, eb, {eb.centre().x, eb.y1}, W, H) * elem;
+          }
+        }
+      for (const auto& sp : scene.paths[pi].subpaths)
+        for (Vec2 q : sp.points) {
+          q = elem.apply(q);
+          if (!free_particle) {
+            for (const auto& a : plan.actions) {
+              if (!is_deformation(a)) continue;
+              const double amp = a.amp * plan.scale;
+              if (a.region != Region::None) {
+                // Only the part's own outlines: what hangs from it (legs under a waving
+                // torso) keeps its shape and follows the rig.
+                if (g == a.parts[0]) q = bend_region(a, amp, t, rig.parts[g].box, q);
+              } else if (a.parts.empty()) {
+                if (!background) q = deform(a, amp, t, rig.figure, q);
+              } else {
+                for (int p : a.parts)
+                  if (g >= 0 && under(g, p)) q = deform(a, amp, t, reach[p], q);
+              }
+            }
+            if (g >= 0) q = world[g].apply(q);
+            if (!background) q = whole.apply(q);
+          }
+          out.push_back(q);
+        }
+    }
+  }
+  return out;
+}
+
+void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
+  const double m = kFrameMargin * std::min(scene.width, scene.height);
+  const double x0 = m, y0 = m, x1 = scene.width - m, y1 = scene.height - m;
+  const double max_step = kMaxStep * std::hypot(scene.width, scene.height);
+  auto outside = [&](Vec2 q) { return std::max({0.0, x0 - q.x, q.x - x1, y0 - q.y, q.y - y1}); };
+  // Points exempt from the step limit: falling elements (they jump back while invisible) and
+  // spinning parts (whole turns cannot be scaled; rotation is what flow tracking follows best).
+  std::vector<char> exempt;
+  {
+    std::set<int> spinning;
+    for (const auto& a : plan.actions)
+      if (a.primitive == Primitive::Spin)
+        for (int p : a.parts) spinning.insert(p);
+    bool falls = false;
+    for (const auto& a : plan.actions) falls = falls || a.primitive == Primitive::Fall;
+    std::set<int> falling;
+    if (falls)
+      for (const auto& el : rig.repeated) falling.insert(el.begin(), el.end());
+    for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
+      bool ex = falling.count(static_cast<int>(pi)) > 0;
+      for (int g = rig.part_of_path[pi], guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
+        ex = ex || spinning.count(g) > 0;
+      for (const auto& sp : scene.paths[pi].subpaths) exempt.insert(exempt.end(), sp.points.size(), ex);
+    }
+  }
+  const int K = std::clamp(keyframes, 2, frames);
+  std::string first_why;
+  for (int attempt = 0; attempt < 12; ++attempt) {
+    const std::vector<Vec2> pts = animate_plan(scene, rig, plan, frames);
+    const size_t per = pts.size() / frames;
+    bool ok = true;
+    std::string why;
+    for (int f = 1; f < frames && ok; ++f)
+      for (size_t i = 0; i < per; ++i)
+        if (outside(pts[f * per + i]) > outside(pts[i]) + 1e-6) { ok = false; why = "would leave the canvas"; break; }
+    for (int k = 1; k < K && ok; ++k) {
+      const int fa = static_cast<int>(std::lround((k - 1) * (frames - 1.0) / (K - 1)));
+      const int fb = static_cast<int>(std::lround(k * (frames - 1.0) / (K - 1)));
+      for (size_t i = 0; i < per; ++i) {
+        if (exempt[i]) continue;
+        const Vec2 d = pts[fb * per + i] - pts[fa * per + i];
+        if (std::hypot(d.x, d.y) > max_step) { ok = false; why = "would move too far between keyframes for the fitter to follow"; break; }
+      }
+    }
+    if (ok) {
+      if (plan.scale < 1) {
+        char line[200];
+        std::snprintf(line, sizeof line, "amplitudes scaled to %.0f %%: at full size the motion %s", plan.scale * 100,
+                      first_why.c_str());
+        plan.notes.push_back(line);
+      }
+      return;
+    }
+    if (first_why.empty()) first_why = why;
+    plan.scale *= 0.8;
+    if (attempt == 11) {
+      plan.warnings.push_back("the motion " + why + " even at " + std::to_string(static_cast<int>(plan.scale * 100)) + " % of its size");
+      return;
+    }
+  }
+}
+
+nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPlan& plan) {
+  using nlohmann::json;
+  json parts = json::array();
+  for (const auto& P : rig.parts) {
+    json p = {{"name", P.name},
+              {"group", P.group >= 0 && P.group < static_cast<int>(scene.groups.size()) ? scene.groups[P.group].id : ""},
+              {"role", role_name(P.role)},
+              {"named_in_document", P.named},
+              {"side", P.side > 0 ? "right" : P.side < 0 ? "left" : "centre"},
+              {"parent", P.parent >= 0 ? rig.parts[P.parent].name : ""},
+              {"pivot", {std::round(P.pivot.x * 100) / 100, std::round(P.pivot.y * 100) / 100}},
+              {"why", P.why}};
+    if (P.round) p["round"] = true;
+    parts.push_back(p);
+  }
+  json actions = json::array();
+  for (const auto& a : plan.actions) {
+    json names = json::array(), pivots = json::array();
+    for (int p : a.parts) {
+      names.push_back(rig.parts[p].name);
+      const Vec2 c = a.primitive == Primitive::Spin ? rig.parts[p].box.centre() : rig.parts[p].pivot;
+      pivots.push_back({std::round(c.x * 100) / 100, std::round(c.y * 100) / 100});
+    }
+    const char* unit = a.primitive == Primitive::Swing || a.primitive == Primitive::Rock || a.primitive == Primitive::Bend ? "degrees"
+                       : a.primitive == Primitive::Spin ? "turns"
+                       : a.primitive == Primitive::Pulse || a.primitive == Primitive::Stretch ? "fraction of size"
+                       : a.primitive == Primitive::Fall ? "canvas heights"
+                       : a.primitive == Primitive::Undulate ? "figure lengths" : "figure heights";
+    actions.push_back({{"verb", a.verb},
+                       {"motion", primitive_name(a.primitive)},
+                       {"target", target_name(a.target)},
+                       {"parts", a.target == Target::Whole ? json("whole figure") : a.target == Target::Repeated ? json(std::to_string(rig.repeated.size()) + " repeated elements") : names},
+                       {"pivots", pivots},
+                       {"amplitude", std::round(a.amp * (a.primitive == Primitive::Spin ? 1 : plan.scale) * 1e4) / 1e4},
+                       {"unit", unit},
+                       {"cycles", a.cycles},
+                       {"region", a.region == Region::None ? "" : a.region == Region::Sides ? "sides" : a.region == Region::Lower ? "lower part"
+                                  : a.region == Region::Top ? "top" : "far end"},
+                       {"why", a.why}});
+  }
+  std::string root = rig.root >= 0 ? rig.parts[rig.root].name : "";
+  return {{"source", plan.source},
+          {"root", root},
+          {"parts", parts},
+          {"repeated_elements", rig.repeated.size()},
+          {"plan", actions},
+          {"amplitude_scale", std::round(plan.scale * 1e4) / 1e4},
+          {"not_understood", plan.not_understood},
+          {"warnings", plan.warnings},
+          {"notes", plan.notes}};
+}
+
+std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>& pts, int frames) {
+  std::vector<PathMotion> out(scene.paths.size());
+  const size_t per = frames > 0 ? pts.size() / frames : 0;
+  size_t i = 0;
+  for (size_t p = 0; p < scene.paths.size(); ++p) {
+    PathMotion& m = out[p];
+    double sum = 0;
+    for (const auto& sp : scene.paths[p].subpaths)
+      for (const Vec2& rest : sp.points) {
+        double far = 0;
+        m.rest.add(rest);
+        for (int f = 0; f < frames; ++f) {
+          const Vec2 q = pts[f * per + i];
+          m.swept.add(q);
+          far = std::max(far, std::hypot(q.x - rest.x, q.y - rest.y));
+        }
+        m.max_travel = std::max(m.max_travel, far);
+        m.travel.push_back(static_cast<float>(far));
+        sum += far;
+        ++m.points;
+        ++i;
+      }
+    m.mean_travel = m.points ? sum / m.points : 0;
+  }
+  return out;
+}
+
+nlohmann::json path_motion_json(const Scene& scene, const std::vector<PathMotion>& motion) {
+  auto r = [](double v) { return std::round(v * 100) / 100; };
+  nlohmann::json a = nlohmann::json::array();
+  for (size_t p = 0; p < motion.size(); ++p) {
+    const PathMotion& m = motion[p];
+    nlohmann::json pt = nlohmann::json::array();
+    size_t k = 0;
+    auto r1 = [](double v) { return std::round(v * 10) / 10; };
+    for (const auto& sp : scene.paths[p].subpaths)
+      for (const Vec2& q : sp.points) {
+        pt.push_back(r1(q.x));
+        pt.push_back(r1(q.y));
+        pt.push_back(r1(k < m.travel.size() ? m.travel[k] : 0));
+        ++k;
+      }
+    a.push_back({{"id", scene.paths[p].id},
+                 {"point_travel", pt},
+                 {"points", m.points},
+                 {"max_travel", r(m.max_travel)},
+                 {"mean_travel", r(m.mean_travel)},
+                 {"rest", {r(m.rest.x0), r(m.rest.y0), r(m.rest.x1), r(m.rest.y1)}},
+                 {"swept", {r(m.swept.x0), r(m.swept.y0), r(m.swept.x1), r(m.swept.y1)}}});
+  }
+  return a;
+}
+
+}  // namespace svgm

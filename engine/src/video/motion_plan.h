@@ -1,0 +1,102 @@
+// The motion plan: which parts of the rig (part_rig.h) move, by which verb (motion_verbs.h),
+// about which pivot, how far and how often, and why; built from a prompt (prompt_parse.h) or
+// from an explicit plan the user wrote (stages.video.options.motion: "flap:wing*, bob:root").
+// Then the frames: every control point of the scene at every frame of one seamless loop.
+//
+// Frames are built part by part down the rig (a limb's segments follow it), in this order for
+// each control point: its repeated element's own motion (a falling drop), deformations of the
+// shape (a swimming wave, a bend), the rig's rotations about the pivots, then the motion of the
+// whole figure (a hop, a bob, a rock about its base). The background stays still unless a plan
+// names it. The first and the last frame are the rest pose (the loop closes), except for
+// repeated elements, which each keep their own phase.
+//
+// Two limits keep the target followable (fit_plan): no control point leaves the canvas (less a
+// margin of kFrameMargin; points already outside at rest may not go farther out), and no point
+// travels farther than kMaxStep of the canvas diagonal between two keyframes. When either fails
+// the amplitudes are scaled down (spins keep whole turns; falls are shortened per element).
+#pragma once
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "video/motion_verbs.h"
+#include "video/part_rig.h"
+#include "video/prompt_parse.h"
+
+namespace svgm {
+
+// A limb that is not a part of its own (a bat drawn as one silhouette): a region of the part's
+// own outlines (not what hangs from it) bends about a pivot line, each point turning by the action's angle times a weight that
+// grows smoothly from 0 at the pivot line (so the shape stays in one piece).
+enum class Region { None, Sides, Lower, Top, End };
+
+struct PlannedAction {
+  std::string verb;
+  std::string words;            // the prompt's words (or the plan item) it came from
+  Primitive primitive = Primitive::Swing;
+  Target target = Target::Whole;
+  std::vector<int> parts;       // rig parts (for Whole: none, the whole figure)
+  std::vector<double> sign;     // per part: +1 / -1 (mirrored or alternating pairs)
+  std::vector<double> phase;    // per part, in cycles (alternating pairs: 0 and 0.5)
+  double amp = 0;               // in the primitive's unit (motion_verbs.h)
+  int cycles = 1;
+  int vertical = 0;             // Bob: +1 only up, -1 only down
+  int direction = 1;            // Spin, Slide, Rock one-sided: which way first
+  Region region = Region::None; // a Swing of a region of parts[0] instead of whole parts
+  int region_side = 0;          // Sides/Lower: -1 only the viewer's left, +1 only the right
+  bool alternating = false;     // Sides/Lower: the two sides half a cycle apart
+  std::string why;
+};
+
+struct MotionPlan {
+  std::string source;           // "prompt" or "stages.video.options.motion"
+  std::vector<PlannedAction> actions;
+  std::vector<std::string> not_understood;  // prompt words that named no motion, part or modifier
+  std::vector<std::string> warnings;        // one line each
+  std::vector<std::string> notes;           // informational lines (an amplitude scaled to fit)
+  double scale = 1;             // amplitude factor fit_plan chose (1: as planned)
+  std::string summary() const;  // one line: "flap wing_left+wing_right 30 deg x3; bob whole"
+};
+
+// From a prompt. `seed` picks an arm when a one-sided verb names no side, and varies the
+// amplitudes by up to 15 %. A prompt with no motion word gets a gentle sway of the figure and a
+// warning naming the words that were not understood.
+MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t seed);
+
+// From an explicit plan (parse_explicit_plan). Throws svgm::Error naming the pattern when a
+// pattern matches no part (listing the parts' names).
+MotionPlan plan_from_steps(const std::vector<ExplicitStep>& steps, const Rig& rig, uint32_t seed);
+
+// Control points of every frame: frames * (the scene's path points) canvas points, in scene
+// order (paths, subpaths, points), for t = f / (frames - 1).
+std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames);
+
+// Scales the plan's amplitudes (plan.scale) until every frame keeps every control point inside
+// the canvas and no point moves farther than kMaxStep of the diagonal between keyframes
+// (`keyframes` spread over `frames`). Adds a warning when it had to.
+void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes);
+
+// The report written to motion.json: the parts found and the plan.
+nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPlan& plan);
+
+// How far each path's control points travel from their rest positions over the frames
+// (animate_plan's points): the largest and the mean (over points) of each point's largest
+// distance, and the box the path sweeps; in the JSON also each control point's rest position and
+// travel ("point_travel": [x, y, travel, ...] rounded to 0.1), so a reader can check what moved
+// where (tests/bench/motion_score.py).
+struct PathMotion {
+  double max_travel = 0, mean_travel = 0;
+  int points = 0;
+  RigBox rest, swept;
+  std::vector<float> travel;  // each control point's largest distance from rest, in order
+};
+std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>& points, int frames);
+nlohmann::json path_motion_json(const Scene& scene, const std::vector<PathMotion>& motion);
+
+constexpr double kFrameMargin = 0.01;  // of the canvas size: control points stay this far inside
+constexpr double kMaxStep = 0.08;      // of the canvas diagonal between keyframes (about 29 px
+                                       // at the fitter's 256 px: what flow warm starts follow)
+
+}  // namespace svgm

@@ -1,0 +1,164 @@
+// The motion vocabulary (see motion_verbs.h). Amplitudes are for a "normal" clause; the
+// modifiers scale them and the plan (motion_plan.h) scales them down further when a part would
+// leave the canvas or move too far between keyframes for the fitter to follow.
+#include "video/motion_verbs.h"
+
+#include <algorithm>
+#include <array>
+
+namespace svgm {
+
+namespace {
+
+using P = Primitive;
+using T = Target;
+using Pr = Pairing;
+
+// clang-format off
+const std::vector<Verb> kVerbs = {
+  // Wings, arms.
+  {"flap",    {"flap"},                         {{P::Swing, T::Arms, 30, 2, Pr::Mirrored}, {P::Bob, T::Whole, 0.03, 2}}, P::Swing},
+  {"fly",     {"fly", "flie", "flew"},          {{P::Swing, T::Arms, 26, 2, Pr::Mirrored}, {P::Bob, T::Whole, 0.05, 1}}, P::Swing},
+  {"flutter", {"flutter"},                      {{P::Swing, T::Arms, 16, 5, Pr::Mirrored}}, P::Swing},
+  {"hover",   {"hover"},                        {{P::Swing, T::Arms, 18, 4, Pr::Mirrored}, {P::Bob, T::Whole, 0.04, 1}}, P::Swing},
+  {"soar",    {"soar", "glid"},                 {{P::Rock, T::Whole, 5, 1}, {P::Bob, T::Whole, 0.04, 1}, {P::Swing, T::Arms, 8, 1, Pr::Mirrored}}, P::Swing},
+  {"wave",    {"wav", "greet", "goodby"},       {{P::Swing, T::Arms, 35, 2, Pr::OneSide}}, P::Swing},
+  {"clap",    {"clap"},                         {{P::Swing, T::Arms, 22, 4, Pr::Mirrored}}, P::Swing},
+  {"cheer",   {"cheer", "celebrat", "rejoic"},  {{P::Swing, T::Arms, 32, 3, Pr::Mirrored}, {P::Hop, T::Whole, 0.03, 3}}, P::Swing},
+  {"punch",   {"punch", "box", "jab", "fight", "fenc"}, {{P::Swing, T::Arms, 26, 3, Pr::Alternating}, {P::Bob, T::Whole, 0.015, 3}}, P::Swing},
+  {"lift",    {"lift", "rais", "hold"},         {{P::Swing, T::Arms, 24, 2, Pr::Mirrored}}, P::Swing},
+  {"reach",   {"reach", "spread"},              {{P::Swing, T::Arms, 20, 1, Pr::Mirrored}}, P::Swing},
+  {"pump",    {"pump"},                         {{P::Swing, T::Arms, 20, 2, Pr::Alternating}}, P::Swing},
+  // Legs and gaits.
+  {"walk",    {"walk", "march", "stroll", "step", "strid"}, {{P::Swing, T::Legs, 18, 2, Pr::Alternating}, {P::Swing, T::Arms, 12, 2, Pr::Alternating}, {P::Bob, T::Whole, 0.015, 4}}, P::Swing},
+  {"run",     {"run", "ran", "sprint", "jog", "rush", "dash"}, {{P::Swing, T::Legs, 28, 3, Pr::Alternating}, {P::Swing, T::Arms, 20, 3, Pr::Alternating}, {P::Bob, T::Whole, 0.025, 6}}, P::Swing},
+  {"gallop",  {"gallop", "trot", "canter"},     {{P::Swing, T::Legs, 24, 3, Pr::Alternating}, {P::Rock, T::Whole, 4, 3}, {P::Bob, T::Whole, 0.03, 3}}, P::Swing},
+  {"kick",    {"kick"},                         {{P::Swing, T::Legs, 30, 2, Pr::OneSide}}, P::Swing},
+  {"pedal",   {"pedal", "cycl", "bik"},         {{P::Swing, T::Legs, 22, 2, Pr::Alternating}, {P::Spin, T::Wheels, 1, 1}}, P::Swing},
+  {"climb",   {"climb", "scrambl"},             {{P::Swing, T::Arms, 20, 2, Pr::Alternating}, {P::Swing, T::Legs, 16, 2, Pr::Alternating}, {P::Bob, T::Whole, 0.02, 2}}, P::Swing},
+  // The whole figure.
+  {"jump",    {"jump", "skip", "spring"},       {{P::Hop, T::Whole, 0.14, 1}}, P::Hop},
+  {"leap",    {"leap", "lept", "pounc"},        {{P::Hop, T::Whole, 0.16, 1}, {P::Rock, T::Whole, 8, 1}}, P::Hop},
+  {"hop",     {"hop"},                          {{P::Hop, T::Whole, 0.07, 2}}, P::Hop},
+  {"bounce",  {"bounc", "boing"},               {{P::Hop, T::Whole, 0.08, 2}}, P::Hop},
+  {"bob",     {"bob"},                          {{P::Bob, T::Whole, 0.04, 2}}, P::Bob},
+  {"float",   {"float", "drift", "levitat"},    {{P::Bob, T::Whole, 0.05, 1}, {P::Rock, T::Whole, 3, 1}}, P::Bob},
+  {"rise",    {"ris", "rose", "ascend"},        {{P::Bob, T::Whole, 0.06, 1}}, P::Bob},
+  {"sink",    {"sink", "sank", "div", "descend"}, {{P::Bob, T::Whole, 0.06, 1}, {P::Rock, T::Whole, 4, 1}}, P::Bob},
+  {"sway",    {"sway", "blow", "breez"},        {{P::Rock, T::Whole, 5, 1}}, P::Swing},
+  {"rock",    {"rock", "swing", "swung"},       {{P::Rock, T::Whole, 7, 1}}, P::Swing},
+  {"lean",    {"lean", "tilt", "tip"},          {{P::Rock, T::Whole, 8, 1, Pr::OneSide}}, P::Swing},
+  {"bow",     {"bow"},                          {{P::Rock, T::Whole, 10, 1, Pr::OneSide}}, P::Swing},
+  {"dance",   {"danc", "groov", "boogi", "twerk"}, {{P::Swing, T::Arms, 28, 2, Pr::Alternating}, {P::Rock, T::Whole, 5, 2}, {P::Bob, T::Whole, 0.025, 4}}, P::Swing},
+  {"play",    {"play", "frolic"},               {{P::Swing, T::Limbs, 14, 2, Pr::Alternating}, {P::Bob, T::Whole, 0.02, 2}}, P::Swing},
+  {"exercise", {"exercis", "lung", "yoga", "workout", "train"}, {{P::Squash, T::Whole, 0.06, 1}, {P::Swing, T::Arms, 22, 1, Pr::Mirrored}}, P::Swing},
+  {"sit",     {"sit", "sat", "crouch", "squat", "kneel", "duck"}, {{P::Squash, T::Whole, 0.1, 1}}, P::Swing},
+  {"stretch", {"stretch", "extend", "elongat", "lengthen"}, {{P::Stretch, T::Whole, 0.08, 1}}, P::Swing},
+  {"move",    {"mov", "go", "went", "advanc", "crawl", "creep", "inch", "proceed", "travel"}, {{P::Slide, T::Whole, 0.04, 1}, {P::Stretch, T::Whole, 0.04, 2}}, P::Swing},
+  {"glide",   {"ski", "skat", "surf", "slid", "sled", "ride", "rid", "maneuver", "manoeuvr", "sail", "row"}, {{P::Slide, T::Whole, 0.04, 1}, {P::Rock, T::Whole, 5, 1}}, P::Swing},
+  {"drive",   {"driv", "drove", "roll", "accelerat", "launch", "speed"}, {{P::Shake, T::Whole, 0.006, 6}, {P::Spin, T::Wheels, 1, 1}}, P::Spin},
+  {"dodge",   {"dodg", "duck", "evad"},         {{P::Slide, T::Whole, 0.04, 2}}, P::Swing},
+  // Bodies that bend.
+  {"swim",    {"swim", "swam", "paddl"},        {{P::Undulate, T::Whole, 0.05, 1}, {P::Slide, T::Whole, 0.02, 1}}, P::Undulate},
+  {"slither", {"slither", "undulat", "wriggl", "squirm", "sinuous", "snak", "weav"}, {{P::Undulate, T::Whole, 0.06, 1}}, P::Undulate},
+  {"ripple",  {"rippl", "billow", "flow"},      {{P::Undulate, T::Whole, 0.04, 2}}, P::Undulate},
+  {"bend",    {"bend", "bent", "arch", "curl", "flex", "curv", "contract"}, {{P::Bend, T::Whole, 14, 1}}, P::Bend},
+  {"twist",   {"twist", "wiggl"},               {{P::Swing, T::Root, 10, 2}}, P::Swing},
+  {"wobble",  {"wobbl", "jiggl", "jell", "squish"}, {{P::Bend, T::Whole, 7, 3}}, P::Bend},
+  // Heads and tails.
+  {"nod",     {"nod", "agree", "yes"},          {{P::Swing, T::Head, 12, 2}}, P::Swing},
+  {"look",    {"look", "glanc", "peek", "watch"}, {{P::Swing, T::Head, 10, 1}}, P::Swing},
+  {"eat",     {"eat", "ate", "chew", "munch", "nibbl", "bite", "sing", "sang", "talk", "speak", "suck", "sip"}, {{P::Swing, T::Head, 6, 4}}, P::Swing},
+  {"wag",     {"wag", "swish", "flick"},        {{P::Swing, T::Tail, 25, 4}}, P::Swing},
+  {"shake",   {"shak", "shook", "jitter", "rattl"}, {{P::Shake, T::Whole, 0.012, 6}}, P::Swing},
+  {"tremble", {"trembl", "shiver", "vibrat", "quiver", "shudder"}, {{P::Shake, T::Whole, 0.006, 12}}, P::Shake},
+  // Turning about the part's own centre.
+  {"spin",    {"spin", "spun", "turn", "rotat", "twirl", "whirl", "revolv", "pirouett"}, {{P::Spin, T::Root, 1, 1}}, P::Spin},
+  // Size.
+  {"pulse",   {"puls", "breath", "beat", "throb", "heav"}, {{P::Pulse, T::Whole, 0.05, 2}}, P::Pulse},
+  {"grow",    {"grow", "grew", "inflat", "swell", "expand", "shrink", "shrank", "deflat"}, {{P::Pulse, T::Whole, 0.1, 1}}, P::Pulse},
+  {"twinkle", {"twinkl", "sparkl", "glow", "shin", "flicker", "blink", "glitter", "shimmer"}, {{P::Pulse, T::Repeated, 0.2, 2}}, P::Pulse},
+  // Repeated elements.
+  {"fall",    {"fall", "fell", "rain", "pour", "drip", "snow", "tumbl", "descend", "shower"}, {{P::Fall, T::Repeated, 0.12, 1}}, P::Fall},
+};
+
+const std::vector<PartNoun> kNouns = {
+  {"wing", T::Arms}, {"arm", T::Arms}, {"hand", T::Arms}, {"fist", T::Arms}, {"paw", T::Arms},
+  {"glove", T::Arms}, {"elbow", T::Arms}, {"dumbbell", T::Arms},
+  {"leg", T::Legs}, {"foot", T::Legs}, {"feet", T::Legs}, {"knee", T::Legs}, {"boot", T::Legs},
+  {"fin", T::Limbs}, {"flipper", T::Limbs}, {"tentacl", T::Limbs}, {"petal", T::Limbs}, {"leaf", T::Limbs},
+  {"leav", T::Limbs}, {"frond", T::Limbs}, {"branch", T::Limbs}, {"limb", T::Limbs}, {"claw", T::Limbs},
+  {"head", T::Head}, {"face", T::Head}, {"hood", T::Head}, {"neck", T::Head},
+  {"tail", T::Tail},
+  {"body", T::Root}, {"torso", T::Root}, {"trunk", T::Root}, {"hip", T::Root}, {"waist", T::Root},
+  {"wheel", T::Wheels}, {"tire", T::Wheels}, {"tyre", T::Wheels},
+  {"drop", T::Repeated}, {"raindrop", T::Repeated}, {"droplet", T::Repeated}, {"star", T::Repeated},
+  {"snowflak", T::Repeated}, {"flak", T::Repeated}, {"bubbl", T::Repeated}, {"confetti", T::Repeated},
+  {"background", T::Background},
+};
+// clang-format on
+
+bool in(std::string_view w, std::initializer_list<std::string_view> list) {
+  return std::find(list.begin(), list.end(), w) != list.end();
+}
+
+}  // namespace
+
+const std::vector<Verb>& motion_verbs() { return kVerbs; }
+
+const Verb* find_verb_by_name(std::string_view name) {
+  for (const auto& v : kVerbs)
+    if (v.name == name) return &v;
+  return nullptr;
+}
+
+const std::vector<PartNoun>& part_nouns() { return kNouns; }
+
+bool word_matches(std::string_view word, std::string_view stem) {
+  if (word.size() < stem.size() || word.substr(0, stem.size()) != stem) return false;
+  const std::string_view rest = word.substr(stem.size());
+  if (in(rest, {"", "s", "es", "e", "ed", "d", "ing", "er", "ers", "y", "ly", "ion", "ions", "ies"})) return true;
+  // A doubled last consonant: flap -> flapping, run -> running, pedal -> pedalling.
+  return rest.size() >= 3 && rest[0] == stem.back() && in(rest.substr(1), {"ing", "ed", "er", "ers"});
+}
+
+bool apply_modifier(std::string_view w, Modifiers& m) {
+  bool hit = true;
+  if (in(w, {"slow", "slowly", "lazily", "leisurely", "calmly", "gradually"})) m.speed = 0.5;
+  else if (in(w, {"fast", "quickly", "quick", "rapidly", "rapid", "swiftly", "briskly", "frantically"})) m.speed = 2;
+  else if (in(w, {"gently", "gentle", "softly", "soft", "slightly", "slight", "subtly", "subtle", "little", "lightly", "mildly"})) m.size = 0.5;
+  else if (in(w, {"wildly", "wild", "vigorously", "energetically", "powerfully", "powerful", "strongly", "violently", "hard", "big", "wide", "widely", "high", "madly"})) m.size = 1.6;
+  else if (in(w, {"once", "single"})) m.once = 1;
+  else if (in(w, {"repeatedly", "again", "continuously", "constantly", "rhythmically", "repeating"})) m.once = -1;
+  else if (w == "right") m.side = m.side == -1 || m.both ? 0 : 1;
+  else if (w == "left") m.side = m.side == 1 || m.both ? 0 : -1;
+  else if (in(w, {"both", "two", "all"})) { m.both = true; m.side = 0; }
+  else if (in(w, {"up", "upward", "upwards"})) m.vertical = m.vertical == -1 ? 0 : (m.vertical == 2 ? 0 : 1);
+  else if (in(w, {"down", "downward", "downwards"})) m.vertical = m.vertical == 1 ? 0 : -1;
+  else hit = false;
+  if (hit) m.words.emplace_back(w);
+  return hit;
+}
+
+bool is_filler_word(std::string_view w) {
+  return in(w, {"a", "an", "the", "is", "are", "was", "were", "be", "being", "been", "its", "it", "his", "her", "their",
+                "them", "they", "he", "she", "him", "this", "that", "these", "those", "and", "or", "but", "with", "of",
+                "in", "on", "onto", "into", "to", "at", "as", "by", "for", "from", "while", "then", "out", "over",
+                "under", "through", "across", "around", "about", "its", "has", "have", "some", "very", "so", "too",
+                "each", "other", "back", "forth", "side", "mid", "air", "s", "one", "own", "like", "making", "keeps",
+                "keep", "starts", "start", "begins", "slowly"});
+}
+
+const char* primitive_name(Primitive p) {
+  static constexpr std::array<const char*, 13> names = {"swing", "spin", "hop", "bob", "slide", "rock", "undulate",
+                                                        "bend", "shake", "pulse", "squash", "stretch", "fall"};
+  return names[static_cast<size_t>(p)];
+}
+
+const char* target_name(Target t) {
+  static constexpr std::array<const char*, 11> names = {"whole", "root", "head", "arms", "legs", "limbs",
+                                                        "tail", "wheels", "repeated", "background", "named"};
+  return names[static_cast<size_t>(t)];
+}
+
+}  // namespace svgm

@@ -1,0 +1,91 @@
+// The procedural video's motion vocabulary: the verbs a prompt may use (each with its
+// synonyms), what each one moves (wings, arms, legs, head, tail, wheels, repeated elements such
+// as drops, the whole figure) and how (a swing about a pivot, a spin about the part's own
+// centre, a hop with squash and stretch, a wave along the body, a fall ...), plus the part
+// nouns ("wings", "tentacles", "drops") and the modifiers (slow/fast, gently/wildly,
+// once/repeatedly, left/right, up/down, both) that change a verb's target, speed and size.
+//
+// Words are matched as stems with English inflections (see word_matches): "flap" matches
+// flap, flaps, flapped, flapping, flapper; "wav" matches wave, waves, waving. The table is data,
+// so adding a verb is adding a row in motion_verbs.cpp.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace svgm {
+
+// How a part moves over one loop (units of `amp` in brackets).
+enum class Primitive {
+  Swing,     // rotation about the part's attachment pivot, oscillating [degrees]
+  Spin,      // whole turns about the part's own centre [turns per loop]
+  Hop,       // up in an arc and back, squashed on landing and stretched in the air [figure heights]
+  Bob,       // up and down [figure heights]
+  Slide,     // side to side, along the figure's long axis [figure widths]
+  Rock,      // rotation of the figure about its base [degrees]
+  Undulate,  // a wave travelling along the long axis of the part (swimming) [figure lengths]
+  Bend,      // the part curves about its middle, back and forth [degrees at the ends]
+  Shake,     // small fast jitter [figure heights]
+  Pulse,     // scale about the centre [fraction of the size]
+  Squash,    // down and squashed, then back up (sitting, crouching) [figure heights]
+  Stretch,   // longer along the part's long axis, then back [fraction of the length]
+  Fall,      // each element falls and is replaced from above, its own phase [canvas heights]
+};
+
+// Which parts an action moves, by role in the rig (part_rig.h).
+enum class Target { Whole, Root, Head, Arms, Legs, Limbs, Tail, Wheels, Repeated, Background, Named };
+
+// How a pair of limbs moves together.
+enum class Pairing { Same, Mirrored, Alternating, OneSide };
+
+struct Action {
+  Primitive primitive;
+  Target target;
+  double amp;      // in the primitive's unit
+  int cycles;      // whole cycles per loop (the loop stays seamless)
+  Pairing pairing = Pairing::Mirrored;
+};
+
+struct Verb {
+  std::string name;                // canonical ("flap")
+  std::vector<std::string> stems;  // word stems that mean it
+  std::vector<Action> actions;     // the first is the primary: a part noun retargets it
+  Primitive on_part;               // the primary's primitive when a noun names the part
+};
+
+// Every verb (at least 40), in table order.
+const std::vector<Verb>& motion_verbs();
+const Verb* find_verb_by_name(std::string_view name);
+
+struct PartNoun {
+  std::string stem;
+  Target target;
+};
+const std::vector<PartNoun>& part_nouns();
+
+// The modifiers a clause may carry.
+struct Modifiers {
+  double speed = 1;  // cycles multiplier: slow 0.5, fast 2
+  double size = 1;   // amplitude multiplier: gently 0.5, wildly 1.6
+  int once = 0;      // +1 once, -1 repeatedly, 0 neither
+  int side = 0;      // the figure's own side: +1 right, -1 left, 0 neither or both
+  bool both = false;
+  int vertical = 0;  // +1 up, -1 down, 0 neither or both
+  std::vector<std::string> words;  // the modifier words seen, for the report
+};
+
+// Applies `word` to `m` when it is a modifier; false otherwise.
+bool apply_modifier(std::string_view word, Modifiers& m);
+
+// True when `word` (lower case) is `stem` plus an English inflection: "", s, es, e, ed, d,
+// ing, er, ers, y, ly, or a doubled last consonant before ing/ed/er ("flapping").
+bool word_matches(std::string_view word, std::string_view stem);
+
+// Small words that carry no motion (articles, pronouns, auxiliaries, prepositions).
+bool is_filler_word(std::string_view word);
+
+const char* primitive_name(Primitive p);
+const char* target_name(Target t);
+
+}  // namespace svgm

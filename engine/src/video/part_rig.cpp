@@ -1,0 +1,450 @@
+// The part rig (see part_rig.h).
+#include "video/part_rig.h"
+
+#include <pugixml.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "fit/document_order.h"
+#include "svgmotion/svg_reader.h"
+
+namespace svgm {
+
+namespace {
+
+// A part whose box covers at least this share of the canvas may be the background (with the
+// edge and paint-order conditions); chosen so that a figure filling a square icon's middle is
+// not one (emoji figures cover 30-40 % of the canvas).
+constexpr double kBackgroundArea = 0.45;
+// A box within this share of the canvas size of an edge touches it.
+constexpr double kEdgeTouch = 0.02;
+// Repeated elements: paths whose box is at most this share of the canvas area, similar when
+// their widths and heights agree within this factor, at least kRepeatedMin of them.
+constexpr double kRepeatedArea = 0.02;
+constexpr double kRepeatedSimilar = 1.6;
+constexpr size_t kRepeatedMin = 3;
+// A round part's outline (its control polygon) fills this share of its box: a circle drawn with
+// four cubics gives 0.90 (the control polygon is an octagon), a square 1, a triangle 0.5.
+constexpr double kRoundFillMin = 0.65;
+constexpr double kRoundFillMax = 0.93;
+
+bool is_generic_word(const std::string& w) {
+  static const std::set<std::string> generic = {
+      "path", "paths", "g", "group", "groups", "layer", "layers", "svgid", "svg", "shape", "shapes", "rect",
+      "circle", "ellipse", "polygon", "polyline", "line", "st", "cls", "fil", "str", "object", "clip", "mask",
+      "defs", "use", "image", "id", "part", "element", "fill", "stroke", "color", "colour", "copy", "vector",
+      "graphic", "artwork", "art", "drawing", "item", "emoji", "noto", "xmlid", "linear", "gradient", "radial",
+      "icon", "svgrepo", "inkscape", "sodipodi", "untitled", "new", "run", "fg", "obj", "component", "cmp",
+      "compound", "a", "b", "c", "d", "e", "f", "x", "y", "u", "mesh", "pattern", "sketch", "lines"};
+  return generic.count(w) > 0 || w.size() < 3;
+}
+
+bool meaningful(const std::string& name) {
+  for (const auto& w : name_words(name))
+    if (!is_generic_word(w)) return true;
+  return false;
+}
+
+bool has_word(const std::vector<std::string>& words, std::initializer_list<const char*> any) {
+  for (const auto& w : words)
+    for (const char* a : any)
+      if (w == a || (w.size() == std::string(a).size() + 1 && w.back() == 's' && w.rfind(a, 0) == 0)) return true;
+  return false;
+}
+
+double shoelace(const std::vector<Vec2>& p) {
+  double s = 0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    const Vec2& a = p[i];
+    const Vec2& b = p[(i + 1) % p.size()];
+    s += a.x * b.y - b.x * a.y;
+  }
+  return 0.5 * s;
+}
+
+RigBox path_box(const Path& p) {
+  RigBox b;
+  for (const auto& sp : p.subpaths)
+    for (const Vec2& q : sp.points) b.add(q);
+  return b;
+}
+
+double overlap(const RigBox& a, const RigBox& b) {
+  const double ox = std::min(a.x1, b.x1) - std::max(a.x0, b.x0), oy = std::min(a.y1, b.y1) - std::max(a.y0, b.y0);
+  return ox > 0 && oy > 0 ? ox * oy : 0;
+}
+
+double gap(const RigBox& a, const RigBox& b) {
+  const double dx = std::max({0.0, a.x0 - b.x1, b.x0 - a.x1}), dy = std::max({0.0, a.y0 - b.y1, b.y0 - a.y1});
+  return std::hypot(dx, dy);
+}
+
+}  // namespace
+
+void RigBox::add(Vec2 p) {
+  x0 = std::min(x0, p.x);
+  y0 = std::min(y0, p.y);
+  x1 = std::max(x1, p.x);
+  y1 = std::max(y1, p.y);
+}
+
+void RigBox::add(const RigBox& b) {
+  if (b.empty()) return;
+  add(Vec2{b.x0, b.y0});
+  add(Vec2{b.x1, b.y1});
+}
+
+const char* role_name(Role r) {
+  switch (r) {
+    case Role::Root: return "root";
+    case Role::Head: return "head";
+    case Role::UpperLimb: return "upper limb";
+    case Role::LowerLimb: return "lower limb";
+    case Role::Tail: return "tail";
+    case Role::Detail: return "detail";
+    case Role::Background: return "background";
+  }
+  return "?";
+}
+
+std::vector<std::string> name_words(const std::string& name) {
+  std::vector<std::string> out;
+  std::string w;
+  auto flush = [&] {
+    if (!w.empty() && !std::all_of(w.begin(), w.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+      out.push_back(w);
+    w.clear();
+  };
+  for (size_t i = 0; i < name.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(name[i]);
+    if (!std::isalnum(c)) { flush(); continue; }
+    // camelCase boundary: a capital after a lower-case letter.
+    if (std::isupper(c) && i > 0 && std::islower(static_cast<unsigned char>(name[i - 1]))) flush();
+    if (std::isdigit(c) != (!w.empty() && std::isdigit(static_cast<unsigned char>(w.back())))) flush();
+    w += static_cast<char>(std::tolower(c));
+  }
+  flush();
+  return out;
+}
+
+SourceNames read_source_names(const std::string& original) {
+  SourceNames out;
+  Scene scene;
+  try {
+    scene = read_svg_file(original);
+  } catch (const std::exception&) {
+    return out;
+  }
+  pugi::xml_document doc;
+  if (!doc.load_file(original.c_str())) return out;
+  for (const Path& p : scene.paths) {
+    pugi::xml_node n = find_locator(doc, p.locator);
+    std::string loc = p.locator;
+    std::vector<NamedElement> chain;
+    while (n && n.type() == pugi::node_element && n.parent().type() == pugi::node_element) {
+      std::string name;
+      const char* label = n.attribute("inkscape:label").value();
+      const std::string title = n.child("title").text().get();
+      if (*label && meaningful(label)) name = label;
+      else if (!title.empty() && meaningful(title)) name = title;
+      else if (meaningful(n.attribute("id").value())) name = n.attribute("id").value();
+      else if (meaningful(n.attribute("class").value())) name = n.attribute("class").value();
+      if (!name.empty()) chain.push_back({loc, name});
+      n = n.parent();
+      loc = loc.substr(0, loc.rfind('/'));
+    }
+    if (!chain.empty()) out[p.id] = std::move(chain);
+  }
+  return out;
+}
+
+Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<std::string>& group_names) {
+  Rig rig;
+  rig.canvas.add(Vec2{0, 0});
+  rig.canvas.add(Vec2{scene.width, scene.height});
+  const int G = static_cast<int>(scene.groups.size());
+  const size_t n_paths = scene.paths.size();
+  rig.parts.resize(G);
+  rig.part_of_path.assign(n_paths, -1);
+  std::vector<double> mean_index(G, 0);
+  for (int g = 0; g < G; ++g) {
+    RigPart& P = rig.parts[g];
+    P.group = g;
+    for (int pi : scene.groups[g].paths) {
+      rig.part_of_path[pi] = g;
+      mean_index[g] += pi;
+      for (const auto& sp : scene.paths[pi].subpaths) {
+        for (const Vec2& q : sp.points) P.box.add(q);
+        P.area += std::fabs(shoelace(sp.points));
+      }
+    }
+    if (!scene.groups[g].paths.empty()) mean_index[g] /= static_cast<double>(scene.groups[g].paths.size());
+  }
+
+  // Names: the named element that best covers the part's paths (precision times recall).
+  std::map<std::string, int> element_total;
+  for (const Path& p : scene.paths)
+    if (auto it = names.find(p.id); it != names.end())
+      for (const auto& e : it->second) ++element_total[e.locator];
+  for (int g = 0; g < G; ++g) {
+    RigPart& P = rig.parts[g];
+    if (g < static_cast<int>(group_names.size()) && meaningful(group_names[g])) {
+      P.name = group_names[g];
+      P.named = true;
+    } else {
+      std::map<std::string, std::pair<int, std::string>> in_part;
+      for (int pi : scene.groups[g].paths)
+        if (auto it = names.find(scene.paths[pi].id); it != names.end())
+          for (const auto& e : it->second) {
+            auto& slot = in_part[e.locator];
+            ++slot.first;
+            slot.second = e.name;
+          }
+      double best = 0.25;  // at least half the part's paths and half the element's
+      for (const auto& [loc, hit] : in_part) {
+        const double score = static_cast<double>(hit.first) / scene.groups[g].paths.size() *
+                             hit.first / std::max(1, element_total[loc]);
+        if (score > best || (score == best && P.named && loc.size() > 0)) {
+          best = score;
+          P.name = hit.second;
+          P.named = true;
+        }
+      }
+    }
+    for (const auto& w : name_words(P.name))
+      if (!is_generic_word(w)) P.words.push_back(w);
+  }
+
+  // Background.
+  const double CW = scene.width, CH = scene.height;
+  int figure_parts = 0;
+  for (int g = 0; g < G; ++g) {
+    RigPart& P = rig.parts[g];
+    if (P.box.empty()) continue;
+    const double tx = kEdgeTouch * CW, ty = kEdgeTouch * CH;
+    const int edges = (P.box.x0 <= tx) + (P.box.y0 <= ty) + (P.box.x1 >= CW - tx) + (P.box.y1 >= CH - ty);
+    const bool early = mean_index[g] < 0.35 * static_cast<double>(n_paths);
+    if (has_word(P.words, {"background", "bg", "sky", "ground", "floor", "backdrop", "scenery", "landscape"})) {
+      P.role = Role::Background;
+      P.why = "named as background";
+    } else if (P.box.area() >= kBackgroundArea * CW * CH && edges >= 2 && early) {
+      P.role = Role::Background;
+      P.why = "large, at the canvas edges, painted first";
+    } else {
+      ++figure_parts;
+    }
+  }
+  if (figure_parts == 0)  // nothing left to animate: there is no background
+    for (auto& P : rig.parts)
+      if (P.role == Role::Background) { P.role = Role::Detail; P.why.clear(); }
+  for (const auto& P : rig.parts)
+    if (P.role != Role::Background) rig.figure.add(P.box);
+  if (rig.figure.empty()) return rig;
+
+  // Root: a part named body/torso, else the largest central part.
+  const Vec2 fc = rig.figure.centre();
+  const double fdiag = std::hypot(rig.figure.w(), rig.figure.h());
+  double best = -1;
+  for (int g = 0; g < G; ++g) {
+    const RigPart& P = rig.parts[g];
+    if (P.role == Role::Background || P.box.empty()) continue;
+    const Vec2 c = P.box.centre();
+    const double d = std::hypot(c.x - fc.x, c.y - fc.y) / (0.25 * fdiag);
+    double score = std::max(P.area, 1e-9) / (1 + d * d);
+    if (has_word(P.words, {"body", "torso", "trunk"})) score = 1e300;
+    if (score > best) { best = score; rig.root = g; }
+  }
+  RigPart& R = rig.parts[rig.root];
+  R.role = Role::Root;
+  R.why = R.why.empty() ? "largest central part" : R.why;
+  R.pivot = {R.box.centre().x, R.box.y1};
+  R.chain_top = rig.root;
+
+  // Parents and pivots.
+  for (int g = 0; g < G; ++g) {
+    RigPart& P = rig.parts[g];
+    if (g == rig.root || P.role == Role::Background || P.box.empty()) continue;
+    int parent = rig.root;
+    double best_overlap = overlap(P.box, R.box), best_gap = gap(P.box, R.box);
+    if (P.area < R.area)
+      for (int h = 0; h < G; ++h) {
+        const RigPart& Q = rig.parts[h];
+        if (h == g || h == rig.root || Q.role == Role::Background || Q.box.empty()) continue;
+        if (!(Q.area > P.area || (Q.area == P.area && h < g))) continue;
+        const double o = overlap(P.box, Q.box), gp = gap(P.box, Q.box);
+        if (o > best_overlap || (best_overlap == 0 && o == 0 && gp < best_gap)) {
+          best_overlap = o;
+          best_gap = gp;
+          parent = h;
+        }
+      }
+    P.parent = parent;
+    const RigBox& pb = rig.parts[parent].box;
+    const double pad = 0.01 * fdiag;
+    Vec2 sum;
+    int count = 0;
+    Vec2 nearest;
+    double nd = 1e300;
+    for (int pi : scene.groups[g].paths)
+      for (const auto& sp : scene.paths[pi].subpaths)
+        for (const Vec2& q : sp.points) {
+          if (q.x >= pb.x0 - pad && q.x <= pb.x1 + pad && q.y >= pb.y0 - pad && q.y <= pb.y1 + pad) {
+            sum = sum + q;
+            ++count;
+          }
+          const double d = std::hypot(q.x - pb.centre().x, q.y - pb.centre().y);
+          if (d < nd) { nd = d; nearest = q; }
+        }
+    // Points inside the parent's box: their centroid, pulled towards the parent's centre a
+    // little when the part lies wholly inside the box (so a detail turns about its middle).
+    P.pivot = count > 0 ? (1.0 / count) * sum : nearest;
+  }
+  // Chains: a limb's segments move with it.
+  for (int g = 0; g < G; ++g) {
+    RigPart& P = rig.parts[g];
+    if (P.parent < 0) continue;
+    int top = g, guard = 0;
+    while (rig.parts[top].parent != rig.root && rig.parts[top].parent >= 0 && guard++ < G) top = rig.parts[top].parent;
+    P.chain_top = top;
+  }
+
+  // Roles of the parts hanging from the root, then names decide where they say something.
+  const Vec2 rc = R.box.centre();
+  const double rw = std::max(R.box.w(), 1e-9), rh = std::max(R.box.h(), 1e-9);
+  int head = -1;
+  for (int g = 0; g < G; ++g) {
+    RigPart& P = rig.parts[g];
+    if (P.parent != rig.root) continue;
+    const Vec2 c = P.box.centre();
+    const double dx = c.x - rc.x;
+    const bool inside = overlap(P.box, R.box) >= 0.8 * P.box.area();
+    if (inside) { P.role = Role::Detail; P.why = "inside the root"; }
+    else if (std::fabs(dx) < 0.35 * rw && c.y < R.box.y0 + 0.25 * rh) {
+      P.role = Role::Head;
+      P.why = "central, above the root";
+      if (head < 0 || P.area > rig.parts[head].area) head = g;
+    } else if (c.y <= rc.y + 0.1 * rh && std::fabs(dx) >= 0.2 * rw) { P.role = Role::UpperLimb; P.why = "beside the root, upper half"; }
+    else if (c.y > rc.y + 0.1 * rh) { P.role = Role::LowerLimb; P.why = "below the root's middle"; }
+    else { P.role = Role::Detail; P.why = "near the root's middle"; }
+    P.side = std::fabs(dx) < 0.1 * rw ? 0 : (dx < 0 ? 1 : -1);  // figure's own side: mirrored
+  }
+  for (int g = 0; g < G; ++g)  // only the largest head is the head
+    if (rig.parts[g].role == Role::Head && g != head) { rig.parts[g].role = Role::Detail; rig.parts[g].why = "above the root (a smaller head part)"; }
+  // Tail: the attached part reaching farthest sideways at the root's height, not the head.
+  int tail = -1;
+  double reach = 0.5 * rw;
+  for (int g = 0; g < G; ++g) {
+    const RigPart& P = rig.parts[g];
+    if (P.parent != rig.root || P.role == Role::Head || P.role == Role::Detail) continue;
+    const Vec2 c = P.box.centre();
+    const double far = std::max(std::fabs(P.box.x0 - rc.x), std::fabs(P.box.x1 - rc.x));
+    if (c.y >= R.box.y0 && c.y <= R.box.y1 && far > reach && rig.figure.w() > rig.figure.h()) { reach = far; tail = g; }
+  }
+  if (tail >= 0) { rig.parts[tail].role = Role::Tail; rig.parts[tail].why = "reaches farthest sideways at the root's height"; }
+  for (int g = 0; g < G; ++g) {
+    RigPart& P = rig.parts[g];
+    if (P.role == Role::Background || g == rig.root) continue;
+    if (P.parent != rig.root && P.chain_top >= 0) { P.role = rig.parts[P.chain_top].role; P.side = rig.parts[P.chain_top].side; P.why = "hangs from " + rig.parts[P.parent].name; }
+    if (has_word(P.words, {"head", "face"})) { P.role = Role::Head; P.why = "named"; }
+    else if (has_word(P.words, {"arm", "hand", "wing", "forearm", "fist"})) { P.role = Role::UpperLimb; P.why = "named"; }
+    else if (has_word(P.words, {"leg", "foot", "feet", "shin", "thigh"})) { P.role = Role::LowerLimb; P.why = "named"; }
+    else if (has_word(P.words, {"tail"})) { P.role = Role::Tail; P.why = "named"; }
+    if (has_word(P.words, {"right"})) P.side = 1;
+    else if (has_word(P.words, {"left"})) P.side = -1;
+  }
+
+  // Round parts (wheels).
+  for (int g = 0; g < G; ++g) {
+    RigPart& P = rig.parts[g];
+    if (P.box.empty() || P.role == Role::Background) continue;
+    const double aspect = P.box.w() / std::max(P.box.h(), 1e-9);
+    double outline = 0;
+    for (int pi : scene.groups[g].paths)
+      if (!scene.paths[pi].subpaths.empty())
+        outline = std::max(outline, std::fabs(shoelace(scene.paths[pi].subpaths[0].points)));
+    const double fill = outline / std::max(P.box.area(), 1e-9);
+    P.round = has_word(P.words, {"wheel", "tire", "tyre"}) ||
+              (aspect > 0.8 && aspect < 1.25 && fill > kRoundFillMin && fill < kRoundFillMax && P.box.area() > 0.005 * CW * CH);
+  }
+
+  // Default names from roles.
+  std::map<std::string, int> used;
+  for (int g = 0; g < G; ++g) {
+    RigPart& P = rig.parts[g];
+    if (!P.name.empty()) continue;
+    std::string base = P.role == Role::Root ? "root" : P.role == Role::Head ? "head" : P.role == Role::Tail ? "tail"
+                     : P.role == Role::Background ? "background" : P.role == Role::UpperLimb ? "limb_upper"
+                     : P.role == Role::LowerLimb ? "limb_lower" : "detail";
+    if ((P.role == Role::UpperLimb || P.role == Role::LowerLimb) && P.side != 0) base += P.side > 0 ? "_right" : "_left";
+    const int k = used[base]++;
+    P.name = k == 0 ? base : base + "_" + std::to_string(k + 1);
+  }
+  // Names seen twice get a number, so a plan pattern can tell them apart.
+  std::map<std::string, int> count, seen;
+  for (const auto& P : rig.parts) ++count[P.name];
+  for (auto& P : rig.parts)
+    if (count[P.name] > 1 && P.named) P.name += "_" + std::to_string(++seen[P.name]);
+
+  // Repeated elements: small paths of similar size (with the smaller paths inside each).
+  struct Elem { RigBox box; std::vector<int> paths; };
+  std::vector<int> small;
+  for (size_t i = 0; i < n_paths; ++i) {
+    const int g = rig.part_of_path[i];
+    if (g >= 0 && rig.parts[g].role == Role::Background) continue;
+    const RigBox b = path_box(scene.paths[i]);
+    if (!b.empty() && b.area() > 0 && b.area() <= kRepeatedArea * CW * CH) small.push_back(static_cast<int>(i));
+  }
+  std::vector<RigBox> boxes(n_paths);
+  for (int i : small) boxes[i] = path_box(scene.paths[i]);
+  std::sort(small.begin(), small.end(), [&](int a, int b) { return boxes[a].area() > boxes[b].area(); });
+  std::vector<Elem> elems;
+  for (int i : small) {
+    const Vec2 c = boxes[i].centre();
+    bool attached = false;
+    for (auto& e : elems)
+      if (c.x >= e.box.x0 && c.x <= e.box.x1 && c.y >= e.box.y0 && c.y <= e.box.y1 && boxes[i].area() < 0.5 * e.box.area()) {
+        e.paths.push_back(i);
+        attached = true;
+        break;
+      }
+    if (!attached) elems.push_back({boxes[i], {i}});
+  }
+  std::vector<std::vector<int>> clusters;  // indices into elems
+  auto similar = [](const RigBox& a, const RigBox& b) {
+    const double rw = std::max(a.w(), b.w()) / std::max(std::min(a.w(), b.w()), 1e-9);
+    const double rh = std::max(a.h(), b.h()) / std::max(std::min(a.h(), b.h()), 1e-9);
+    return rw <= kRepeatedSimilar && rh <= kRepeatedSimilar;
+  };
+  for (size_t e = 0; e < elems.size(); ++e) {
+    bool placed = false;
+    for (auto& c : clusters) {
+      if (!similar(elems[c.front()].box, elems[e].box)) continue;
+      bool clash = false;  // members of a set do not overlap each other much
+      for (int o : c) clash = clash || overlap(elems[o].box, elems[e].box) > 0.3 * std::min(elems[o].box.area(), elems[e].box.area());
+      if (clash) continue;
+      c.push_back(static_cast<int>(e));
+      placed = true;
+      break;
+    }
+    if (!placed) clusters.push_back({static_cast<int>(e)});
+  }
+  size_t best_cluster = clusters.size();
+  for (size_t c = 0; c < clusters.size(); ++c)
+    if (clusters[c].size() >= kRepeatedMin && (best_cluster == clusters.size() || clusters[c].size() > clusters[best_cluster].size()))
+      best_cluster = c;
+  if (best_cluster < clusters.size()) {
+    for (int e : clusters[best_cluster]) {
+      std::vector<int> ps = elems[e].paths;
+      std::sort(ps.begin(), ps.end());
+      rig.repeated.push_back(ps);
+    }
+    rig.repeated_why = std::to_string(rig.repeated.size()) + " small paths of similar size";
+  }
+  return rig;
+}
+
+}  // namespace svgm

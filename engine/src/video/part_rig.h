@@ -1,0 +1,98 @@
+// The rig the procedural motion moves: the scene's parts (groups) with names, roles, pivots
+// and a hierarchy, found from names where the drawing has them and from geometry otherwise.
+//
+// Names. A part is named from the user's document (ids, classes, <title> and inkscape:label
+// of its paths and their ancestors: the deepest element holding all of the part's paths that
+// has a meaningful name, "arm_right"), from the grouper's names when it gave some (grouper
+// llm), else from its role ("wing_left" is never invented: geometric names are role names such
+// as "limb_upper_left", "head", "root").
+//
+// Roles from geometry (canvas space, y down):
+//  - background: a large part (box at least kBackgroundArea of the canvas) that touches at
+//    least two canvas edges and is painted before most of the drawing, or a part named
+//    background/sky/ground/floor. It stays still unless a prompt asks for it.
+//  - root: the largest central part of the figure (area times centrality).
+//  - every other part hangs from a larger part (the root for parts larger than the root): the
+//    one its box overlaps most, or the nearest. Its pivot is the centroid of its control
+//    points inside the parent's box (where it attaches), else its point nearest the parent.
+//    Parts hanging from a non-root part form limb chains and move with their parent.
+//  - relative to the root, the parts hanging from it are the head (central, above), upper
+//    limbs (arms, wings: beside the root, not below its middle), lower limbs (legs: below its
+//    middle) and the tail (the attached part farthest from the root, not the head).
+//  - side: the figure's own side. A figure faces the viewer, so its right is drawn on the
+//    viewer's left; a part named "right"/"left" keeps its name's side.
+//  - round parts (a near-square box whose outline fills about pi/4 of it) are wheels.
+//  - repeated elements: at least three small paths of similar size (drops, stars, leaves),
+//    each with any smaller paths drawn inside its box (a highlight), moved one by one.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "svgmotion/affine.h"
+#include "svgmotion/scene.h"
+
+namespace svgm {
+
+struct RigBox {
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  void add(Vec2 p);
+  void add(const RigBox& b);
+  bool empty() const { return x1 < x0; }
+  double w() const { return std::max(0.0, x1 - x0); }
+  double h() const { return std::max(0.0, y1 - y0); }
+  double area() const { return w() * h(); }
+  Vec2 centre() const { return {0.5 * (x0 + x1), 0.5 * (y0 + y1)}; }
+};
+
+enum class Role { Root, Head, UpperLimb, LowerLimb, Tail, Detail, Background };
+const char* role_name(Role r);
+
+struct RigPart {
+  int group = -1;             // index into Scene::groups
+  std::string name;           // from the document, the grouper, or the role
+  std::vector<std::string> words;  // lower-case name words (for prompt nouns and plan patterns)
+  bool named = false;         // the name came from the document or the grouper
+  Role role = Role::Detail;
+  int side = 0;               // the figure's own side: +1 right, -1 left, 0 centre
+  int parent = -1;            // index into Rig::parts, -1 for the root and the background
+  int chain_top = -1;         // the ancestor hanging from the root (itself when it does)
+  Vec2 pivot;                 // where it attaches to its parent (the root: its base centre)
+  RigBox box;
+  double area = 0;            // fill area of its outlines (shoelace over control polygons)
+  bool round = false;         // a wheel-like part
+  std::string why;            // one phrase: how its role was found
+};
+
+struct Rig {
+  std::vector<RigPart> parts;  // one per scene group, same order
+  int root = -1;
+  RigBox canvas;               // 0,0 .. width,height
+  RigBox figure;               // every non-background part
+  // Repeated small elements: each element is a list of path indices.
+  std::vector<std::vector<int>> repeated;
+  std::string repeated_why;
+  std::vector<int> part_of_path;  // path index -> part index (-1 for paths without a group)
+};
+
+// Names for the paths of a scene from its source document: path id -> the named elements from
+// the path up through its ancestors, innermost first, each as {locator, name as written}
+// ({"/svg/g[2]", "arm_right"}). Only meaningful names are kept ("path12", "SVGID_3_" are not).
+struct NamedElement {
+  std::string locator;
+  std::string name;
+};
+using SourceNames = std::map<std::string, std::vector<NamedElement>>;
+
+// Reads `original` (the user's SVG) for the names of each path (ids as read_svg_file gives
+// them). Missing or unreadable files give an empty map (names are a help, not a need).
+SourceNames read_source_names(const std::string& original);
+
+// `group_names` (optional, per scene group) are names a grouper gave.
+Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<std::string>& group_names = {});
+
+// Lower-case words of a name: "upperArm_Right-2" -> {"upper", "arm", "right"}.
+std::vector<std::string> name_words(const std::string& name);
+
+}  // namespace svgm

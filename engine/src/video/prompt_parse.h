@@ -1,0 +1,57 @@
+// Reading a prompt into clauses of motion: "a bat is flapping its wings up and down" becomes
+// one clause {verbs: flap, nouns: wings (plural), modifiers: up, down}; "rain falls on the
+// umbrella and it sways" becomes two clauses {fall} and {sway}. The motion vocabulary is in
+// motion_verbs.h. Also reads an explicit plan ("flap:wing*, bob:body") that a user gives in
+// stages.video.options.motion to say exactly what moves.
+//
+// Clauses split at punctuation and at conjunctions (and, while, then, as, but); a clause with no
+// verb ("down" in "up and down", "his hands in the air") joins the clause before it, so its
+// nouns and modifiers apply to that verb. A noun right after a preposition ("falls on the
+// umbrella", "the wheels of the bicycle") is where or whose, not what moves, and is kept apart.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "video/motion_verbs.h"
+
+namespace svgm {
+
+struct PromptNoun {
+  std::string word;      // as written ("wings")
+  Target target;         // Named when it is not a known part noun (matched to part names later)
+  bool plural = false;
+  bool object_of_preposition = false;  // "on the umbrella": not a target
+};
+
+struct Clause {
+  std::string text;                 // the clause's words, space-separated
+  std::vector<const Verb*> verbs;   // in order, no repeats
+  std::vector<std::string> verb_words;
+  std::vector<PromptNoun> nouns;    // known part nouns and every other content word, in order
+  Modifiers mods;
+};
+
+struct ParsedPrompt {
+  std::vector<Clause> clauses;
+};
+
+ParsedPrompt parse_prompt(const std::string& prompt);
+
+// One step of an explicit plan: "flap:wing*" (verb, part name patterns joined by '+', '*'
+// matching any run of characters), optionally followed by modifier words ("wave:arm* slow").
+struct ExplicitStep {
+  std::string verb;
+  std::vector<std::string> patterns;  // empty: the verb's own targets
+  Modifiers mods;
+};
+
+// Parses "verb[:pattern[+pattern...]] [modifier ...]" items separated by ',' or ';'. Throws
+// svgm::Error ("motion plan 'xyz:wing': unknown verb 'xyz' ...") for an unknown verb or
+// modifier, or an empty item.
+std::vector<ExplicitStep> parse_explicit_plan(const std::string& text);
+
+// '*' globbing, case-insensitive.
+bool glob_match(const std::string& pattern, const std::string& text);
+
+}  // namespace svgm

@@ -1,0 +1,96 @@
+#!/usr/bin/env python3
+"""Scores one procedural motion against its labels (tests/bench/motion_prompts.sh).
+
+Reads a run directory's motion.json: for every control point of the drawing, its rest position
+and how far it travels in the target video (its largest distance from rest, canvas units), and
+for every path the box it sweeps. Labels name regions of the drawing independently of the
+engine's rig:
+  all                  every point
+  -                    no point
+  large                the points of paths whose rest box covers at least 45 % of the canvas
+                       (backgrounds)
+  x0,y0,x1,y1          points resting in this box, in fractions of the drawing's box (the union
+                       of the rest boxes of all paths that are not large), not of large paths
+  several joined by '|'
+Prints one tab-separated line: share of the motion (summed travel) on the expected points, the
+ratio of the mean travel of the still points to that of the expected points, the largest travel
+of a still point (in % of the canvas diagonal), how many paths left the canvas, and pass/FAIL.
+Pass: share >= 0.7, still ratio <= 0.25, nothing out of the canvas.
+"""
+import json
+import math
+import sys
+
+SHARE_MIN = 0.7     # the issue's bar
+STILL_RATIO_MAX = 0.25  # still paths move at most a quarter as much as the expected ones
+LARGE = 0.45        # share of the canvas: a background (as a reader of the drawing would say)
+
+
+def main():
+    run_dir, move_spec, still_spec = sys.argv[1], sys.argv[2], sys.argv[3]
+    m = json.load(open(run_dir + "/motion.json"))
+    cw, ch = m["canvas"]
+    paths = m["paths"]
+
+    def is_large(p):
+        x0, y0, x1, y1 = p["rest"]
+        return (x1 - x0) * (y1 - y0) >= LARGE * cw * ch
+
+    fig = [p for p in paths if not is_large(p)] or paths
+    dx0 = min(p["rest"][0] for p in fig)
+    dy0 = min(p["rest"][1] for p in fig)
+    dx1 = max(p["rest"][2] for p in fig)
+    dy1 = max(p["rest"][3] for p in fig)
+
+    pts = []  # (x, y, travel, path is large)
+    for p in paths:
+        t = p["point_travel"]
+        big = is_large(p)
+        for k in range(0, len(t), 3):
+            pts.append((t[k], t[k + 1], t[k + 2], big))
+
+    def members(spec):
+        out = set()
+        if spec == "-":
+            return out
+        for part in spec.split("|"):
+            if part != "all" and part != "large":
+                a, b, c, d = (float(v) for v in part.split(","))
+            for i, (x, y, _, big) in enumerate(pts):
+                if part == "all":
+                    out.add(i)
+                elif part == "large":
+                    if big:
+                        out.add(i)
+                else:
+                    cx = (x - dx0) / max(dx1 - dx0, 1e-9)
+                    cy = (y - dy0) / max(dy1 - dy0, 1e-9)
+                    if a <= cx <= c and b <= cy <= d and not big:
+                        out.add(i)
+        return out
+
+    move, still = members(move_spec), members(still_spec) - members(move_spec)
+    total = sum(p[2] for p in pts)
+    share = sum(pts[i][2] for i in move) / total if total > 0 else 0.0
+
+    def mean(ids):
+        return sum(pts[i][2] for i in ids) / len(ids) if ids else 0.0
+
+    ratio = mean(still) / mean(move) if still and mean(move) > 0 else 0.0
+    diag = math.hypot(cw, ch)
+    still_max = max((pts[i][2] for i in still), default=0.0) / diag * 100
+    # Out of the canvas: a swept box beyond the canvas where the rest box was inside it.
+    out = 0
+    for p in paths:
+        r, s = p["rest"], p["swept"]
+        if (s[0] < min(0, r[0]) - 0.5 or s[1] < min(0, r[1]) - 0.5 or s[2] > max(cw, r[2]) + 0.5
+                or s[3] > max(ch, r[3]) + 0.5):
+            out += 1
+    ok = share >= SHARE_MIN and ratio <= STILL_RATIO_MAX and out == 0
+    plan = "; ".join(a["verb"] + ":" + (a["parts"] if isinstance(a["parts"], str) else "+".join(a["parts"]))
+                     + ("(" + a["region"] + ")" if a.get("region") else "") for a in m["plan"])
+    print(f"{share:.2f}\t{ratio:.2f}\t{still_max:.2f}\t{out}\t{'pass' if ok else 'FAIL'}\t{len(move)}/{len(still)}/{len(pts)}\t{plan}")
+
+
+if __name__ == "__main__":
+    main()

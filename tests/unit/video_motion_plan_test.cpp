@@ -1,0 +1,254 @@
+// Motion plans and their frames on drawings made for these tests (tests/data/motion): the
+// prompt's parts move and the others hold still, mirrored wings, one arm on the figure's own
+// side, drops falling each in its own phase while the background stays, a wheel turning about
+// its own centre, loops that close, nothing leaving the canvas, and exact errors and warnings.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "svgmotion/error.h"
+#include "svgmotion/svg_reader.h"
+#include "video/motion_plan.h"
+
+using namespace svgm;
+
+namespace {
+
+std::string data(const char* name) { return std::string(SVGM_TEST_DATA) + "/motion/" + name; }
+
+struct Fixture {
+  Scene scene;
+  Rig rig;
+  explicit Fixture(const char* name) : scene(read_svg_file(data(name))), rig(build_rig(scene, read_source_names(data(name)))) {}
+  MotionPlan plan(const std::string& prompt, uint32_t seed = 1) const {
+    return plan_from_prompt(parse_prompt(prompt), rig, seed);
+  }
+  // Largest displacement from frame 0 of the points of each scene path.
+  std::vector<double> travel(const std::vector<Vec2>& pts, int F) const {
+    const size_t per = pts.size() / F;
+    std::vector<double> out(scene.paths.size(), 0);
+    size_t i = 0;
+    for (size_t p = 0; p < scene.paths.size(); ++p)
+      for (const auto& sp : scene.paths[p].subpaths)
+        for (size_t q = 0; q < sp.points.size(); ++q, ++i)
+          for (int f = 1; f < F; ++f)
+            out[p] = std::max(out[p], std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
+    return out;
+  }
+  size_t first_point(int path) const {
+    size_t i = 0;
+    for (int p = 0; p < path; ++p)
+      for (const auto& sp : scene.paths[p].subpaths) i += sp.points.size();
+    return i;
+  }
+};
+
+double loop_gap(const std::vector<Vec2>& pts, int F) {
+  const size_t per = pts.size() / F;
+  double m = 0;
+  for (size_t i = 0; i < per; ++i) m = std::max(m, std::hypot(pts[(F - 1) * per + i].x - pts[i].x, pts[(F - 1) * per + i].y - pts[i].y));
+  return m;
+}
+
+}  // namespace
+
+TEST_SUITE("motion") {
+
+TEST_CASE("flapping wings: both wings swing, mirrored; the body only bobs; the loop closes") {
+  const Fixture fx("bird.svg");
+  MotionPlan plan = fx.plan("A bird flapping its wings");
+  REQUIRE(plan.actions.size() == 2);
+  CHECK(plan.actions[0].verb == "flap");
+  CHECK(plan.actions[0].primitive == Primitive::Swing);
+  CHECK(plan.actions[0].parts == std::vector<int>{1, 2});
+  CHECK(plan.actions[1].primitive == Primitive::Bob);
+  const int F = 25;
+  const auto pts = animate_plan(fx.scene, fx.rig, plan, F);
+  const size_t per = pts.size() / F;
+  // Wing tips (20,70) and (180,70): mirror images of each other in every frame, relative to
+  // the body (which moves by the bob only).
+  const size_t lt = fx.first_point(1) + 1, rt = fx.first_point(2) + 1, body = fx.first_point(0);
+  double rise = 0;
+  for (int f = 0; f < F; ++f) {
+    const Vec2 b = pts[f * per + body] - pts[body];
+    const Vec2 l = pts[f * per + lt] - b, r = pts[f * per + rt] - b;
+    CHECK(l.y == doctest::Approx(r.y).epsilon(1e-9));
+    CHECK(l.x - 20 == doctest::Approx(180 - r.x).epsilon(1e-9));
+    rise = std::max(rise, std::fabs(l.y - 70));
+    CHECK(b.x == doctest::Approx(0));  // the bob is vertical
+  }
+  CHECK(rise > 10.0);
+  CHECK(loop_gap(pts, F) < 1e-9);
+}
+
+TEST_CASE("waving the right arm moves the part named for the figure's right; nothing else moves") {
+  const Fixture fx("stick_figure.svg");
+  for (uint32_t seed = 0; seed < 4; ++seed) {
+    const MotionPlan plan = fx.plan("The man waves his right arm", seed);
+    REQUIRE(plan.actions.size() == 1);
+    REQUIRE(plan.actions[0].parts.size() == 1);
+    CHECK(fx.rig.parts[plan.actions[0].parts[0]].name == "Right Arm");
+    const auto t = fx.travel(animate_plan(fx.scene, fx.rig, plan, 13), 13);
+    for (size_t p = 0; p < t.size(); ++p) {
+      if (fx.rig.part_of_path[p] == plan.actions[0].parts[0]) CHECK(t[p] > 5.0);
+      else CHECK(t[p] == 0.0);
+    }
+  }
+  // Both arms when the noun is plural; the legs kick on the figure's own left (the viewer's right).
+  CHECK(fx.plan("waving his arms").actions[0].parts.size() == 2);
+  const MotionPlan kick = fx.plan("kicks his left leg");
+  REQUIRE(kick.actions[0].parts.size() == 1);
+  CHECK(fx.rig.parts[kick.actions[0].parts[0]].name == "limb_lower_left");
+}
+
+TEST_CASE("walking: the legs swing in opposite phase, the arms too, the body bobs") {
+  const Fixture fx("stick_figure.svg");
+  const MotionPlan plan = fx.plan("the man walks");
+  REQUIRE(plan.actions.size() == 3);
+  CHECK(plan.actions[0].phase == std::vector<double>{0, 0.5});
+  CHECK(plan.actions[1].parts.size() == 2);
+  CHECK(plan.actions[2].primitive == Primitive::Bob);
+}
+
+TEST_CASE("rain falls and the umbrella sways: drops fall in their own phases, the background holds") {
+  const Fixture fx("rain_scene.svg");
+  MotionPlan plan = fx.plan("rain falls on the umbrella and it sways");
+  REQUIRE(plan.actions.size() == 2);
+  CHECK(plan.actions[0].primitive == Primitive::Fall);
+  CHECK(plan.actions[1].primitive == Primitive::Rock);
+  const int F = 25;
+  fit_plan(fx.scene, fx.rig, plan, F, 9);
+  const auto pts = animate_plan(fx.scene, fx.rig, plan, F);
+  const size_t per = pts.size() / F;
+  const auto t = fx.travel(pts, F);
+  CHECK(t[0] == 0.0);   // the background rect
+  CHECK(t[1] > 1.0);    // the canopy sways
+  // The drops: each falls (its apex goes down by several pixels between some frames), and two
+  // drops are not in the same phase.
+  std::vector<std::vector<double>> dy(fx.rig.repeated.size());
+  for (size_t e = 0; e < fx.rig.repeated.size(); ++e) {
+    const size_t apex = fx.first_point(fx.rig.repeated[e][0]);
+    for (int f = 0; f < F; ++f) dy[e].push_back(pts[f * per + apex].y);
+    CHECK(*std::max_element(dy[e].begin(), dy[e].end()) - *std::min_element(dy[e].begin(), dy[e].end()) > 5.0);
+  }
+  double differ = 0;
+  for (int f = 0; f < F; ++f) differ = std::max(differ, std::fabs((dy[0][f] - dy[0][0]) - (dy[1][f] - dy[1][0])));
+  CHECK(differ > 2.0);
+  // Nothing leaves the canvas (with the margin), except what was outside it at rest.
+  const double m = kFrameMargin * 200;
+  for (int f = 0; f < F; ++f)
+    for (size_t i = 0; i < per; ++i) {
+      const Vec2 q = pts[f * per + i], r = pts[i];
+      const bool rest_inside = r.x >= m && r.x <= 200 - m && r.y >= m && r.y <= 200 - m;
+      if (rest_inside) CHECK((q.x >= m - 1e-6 && q.x <= 200 - m + 1e-6 && q.y >= m - 1e-6 && q.y <= 200 - m + 1e-6));
+    }
+}
+
+TEST_CASE("a wheel turns about its own centre; the stand holds still; one turn closes the loop") {
+  const Fixture fx("wheel.svg");
+  const MotionPlan plan = fx.plan("the wheel turns slowly");
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].primitive == Primitive::Spin);
+  CHECK(plan.actions[0].parts == std::vector<int>{1});
+  const int F = 13;
+  const auto pts = animate_plan(fx.scene, fx.rig, plan, F);
+  const size_t per = pts.size() / F;
+  const auto t = fx.travel(pts, F);
+  CHECK(t[0] == 0.0);
+  CHECK(t[1] > 100.0);  // the rim's points go round
+  for (int f = 0; f < F; ++f)
+    for (size_t i = fx.first_point(1); i < per; ++i)  // distances to the centre (100,100) kept
+      CHECK(std::hypot(pts[f * per + i].x - 100, pts[f * per + i].y - 100) ==
+            doctest::Approx(std::hypot(pts[i].x - 100, pts[i].y - 100)).epsilon(1e-9));
+  CHECK(loop_gap(pts, F) < 1e-9);
+}
+
+TEST_CASE("wheels a verb implies are never the root: pedalling does not spin the whole drawing") {
+  const Fixture fx("wheel.svg");  // the round part is the root here
+  const MotionPlan plan = fx.plan("pedalling");
+  for (const auto& a : plan.actions) CHECK(a.primitive != Primitive::Spin);
+  REQUIRE(!plan.warnings.empty());
+  CHECK(plan.warnings.back() == "'pedalling': no round part other than the root for the wheels; pedal is left out");
+}
+
+TEST_CASE("a jump near the top edge is scaled down to stay in the canvas, with a warning") {
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
+           <rect x="30" y="4" width="40" height="60" fill="#f00"/></svg>)", "edge.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("it jumps wildly"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  const int F = 25;
+  fit_plan(s, rig, plan, F, 9);
+  CHECK(plan.scale < 1.0);
+  REQUIRE(plan.notes.size() == 1);
+  CHECK(plan.notes[0].find("amplitudes scaled to") == 0);
+  CHECK(plan.notes[0].find(": at full size the motion would leave the canvas") != std::string::npos);
+  const auto pts = animate_plan(s, rig, plan, F);
+  double top = 1e9;
+  for (const Vec2& q : pts) top = std::min(top, q.y);
+  CHECK(top >= 1.0 - 1e-6);  // 1 % of 100: the margin
+  CHECK(top < 3.5);          // and it still jumps
+}
+
+TEST_CASE("a fast spin is not limited by the step check; a swing that is too fast is slowed by amplitude") {
+  const Fixture fx("bird.svg");
+  MotionPlan plan = plan_from_steps(parse_explicit_plan("flap:wing* wildly fast"), fx.rig, 1);
+  const int F = 49;
+  fit_plan(fx.scene, fx.rig, plan, F, 15);
+  const auto pts = animate_plan(fx.scene, fx.rig, plan, F);
+  const size_t per = pts.size() / F;
+  const double max_step = kMaxStep * std::hypot(200.0, 200.0);
+  for (int k = 1; k < 15; ++k) {
+    const int fa = static_cast<int>(std::lround((k - 1) * 48.0 / 14)), fb = static_cast<int>(std::lround(k * 48.0 / 14));
+    for (size_t i = 0; i < per; ++i) CHECK(std::hypot(pts[fb * per + i].x - pts[fa * per + i].x, pts[fb * per + i].y - pts[fa * per + i].y) <= max_step + 1e-9);
+  }
+}
+
+TEST_CASE("an explicit plan moves exactly the parts it names; a pattern naming nothing is an error") {
+  const Fixture fx("stick_figure.svg");
+  const MotionPlan plan = plan_from_steps(parse_explicit_plan("wave:left*, nod:head"), fx.rig, 3);
+  REQUIRE(plan.actions.size() == 2);
+  CHECK(plan.source == "stages.video.options.motion");
+  CHECK(fx.rig.parts[plan.actions[0].parts.at(0)].name == "left arm");
+  CHECK(fx.rig.parts[plan.actions[1].parts.at(0)].name == "head");
+  CHECK_THROWS_WITH_AS(plan_from_steps(parse_explicit_plan("flap:tail*"), fx.rig, 1),
+                       "stages.video.options.motion: 'tail*' matches no part (parts: torso, left arm, Right Arm, "
+                       "limb_lower_right, limb_lower_left, head)",
+                       Error);
+}
+
+TEST_CASE("a prompt with no motion word sways gently, naming the words it did not understand") {
+  const Fixture fx("bird.svg");
+  const MotionPlan plan = fx.plan("nothing happens here");
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].primitive == Primitive::Rock);
+  REQUIRE(plan.warnings.size() == 1);
+  CHECK(plan.warnings[0] == "no motion understood in the prompt (not understood: nothing, happens, here); the figure sways gently");
+  CHECK(plan.not_understood == std::vector<std::string>{"nothing", "happens", "here"});
+}
+
+TEST_CASE("the report names the parts, the root and the plan with amplitudes and reasons") {
+  const Fixture fx("bird.svg");
+  const MotionPlan plan = fx.plan("a bird flapping its wings gently");
+  const auto j = motion_report(fx.scene, fx.rig, plan);
+  CHECK(j["root"] == "root");
+  CHECK(j["parts"].size() == 4);
+  CHECK(j["parts"][1]["role"] == "upper limb");
+  CHECK(j["parts"][1]["side"] == "right");
+  CHECK(j["plan"][0]["verb"] == "flap");
+  CHECK(j["plan"][0]["parts"] == nlohmann::json::array({"limb_upper_right", "limb_upper_left"}));
+  CHECK(j["plan"][0]["unit"] == "degrees");
+  CHECK(j["plan"][0]["amplitude"].get<double>() <= 30 * 0.5 * 1.15 + 1e-9);
+  CHECK(j["plan"][0]["why"].get<std::string>().find("gently") != std::string::npos);
+}
+
+TEST_CASE("seeds vary the amplitude; the same seed gives the same frames") {
+  const Fixture fx("bird.svg");
+  const auto a = animate_plan(fx.scene, fx.rig, fx.plan("flapping", 1), 9);
+  const auto b = animate_plan(fx.scene, fx.rig, fx.plan("flapping", 2), 9);
+  CHECK(a == animate_plan(fx.scene, fx.rig, fx.plan("flapping", 1), 9));
+  CHECK(a != b);
+}
+
+}  // TEST_SUITE

@@ -1,0 +1,111 @@
+// The part rig: names from the document (id, <title>, inkscape:label), roles from geometry
+// (root, head, limbs, the figure's own side), pivots where parts attach, the background, round
+// parts and repeated elements, on drawings made for these tests (tests/data/motion).
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "svgmotion/svg_reader.h"
+#include "video/part_rig.h"
+
+using namespace svgm;
+
+namespace {
+
+std::string data(const char* name) { return std::string(SVGM_TEST_DATA) + "/motion/" + name; }
+
+Rig rig_of(const char* name) {
+  const Scene s = read_svg_file(data(name));
+  return build_rig(s, read_source_names(data(name)));
+}
+
+int part_named(const Rig& r, const std::string& name) {
+  for (size_t i = 0; i < r.parts.size(); ++i)
+    if (r.parts[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+}  // namespace
+
+TEST_SUITE("motion") {
+
+TEST_CASE("name words split ids, labels and camelCase; generic names are no names") {
+  CHECK(name_words("upperArm_Right-2") == std::vector<std::string>{"upper", "arm", "right"});
+  CHECK(name_words("Left Wing") == std::vector<std::string>{"left", "wing"});
+  const Scene s = read_svg_file(data("stick_figure.svg"));
+  const SourceNames n = read_source_names(data("stick_figure.svg"));
+  // The torso's rect has no id of its own: its group's id names it.
+  REQUIRE(n.count(s.paths[0].id) == 1);
+  REQUIRE(n.at(s.paths[0].id).size() == 1);
+  CHECK(n.at(s.paths[0].id)[0].name == "torso");
+  CHECK(n.at(s.paths[0].id)[0].locator == "/svg/g[1]");
+  const Rig r = rig_of("stick_figure.svg");
+  CHECK(part_named(r, "torso") >= 0);
+  CHECK(part_named(r, "left arm") >= 0);
+  CHECK(part_named(r, "Right Arm") >= 0);
+  CHECK(read_source_names(data("no_such_file.svg")).empty());
+}
+
+TEST_CASE("an unnamed bird: body is the root, head above, two wings with mirrored sides") {
+  const Rig r = rig_of("bird.svg");
+  REQUIRE(r.parts.size() == 4);
+  CHECK(r.root == 0);
+  CHECK(r.parts[0].role == Role::Root);
+  CHECK(r.parts[3].role == Role::Head);
+  CHECK(r.parts[1].role == Role::UpperLimb);
+  CHECK(r.parts[2].role == Role::UpperLimb);
+  // The figure's own side: the wing on the viewer's left is the bird's right.
+  CHECK(r.parts[1].side == 1);
+  CHECK(r.parts[2].side == -1);
+  CHECK(r.parts[1].name == "limb_upper_right");
+  CHECK(r.parts[2].name == "limb_upper_left");
+  // Pivots where the wings attach: the centroid of the wing's points inside the body's box
+  // (70..130 x 95..125 with its control points, plus 1 % of the figure's diagonal): only the
+  // wing's inner corner (75,105).
+  CHECK(r.parts[1].pivot.x == doctest::Approx(75));
+  CHECK(r.parts[1].pivot.y == doctest::Approx(105));
+  CHECK(r.parts[2].pivot.x == doctest::Approx(125));
+  CHECK(r.parts[1].parent == 0);
+  CHECK(r.repeated.empty());
+  CHECK(r.figure.x0 == doctest::Approx(20));
+  CHECK(r.figure.x1 == doctest::Approx(180));
+}
+
+TEST_CASE("a stick figure: names give the sides, geometry the legs (the figure's own side)") {
+  const Rig r = rig_of("stick_figure.svg");
+  const int torso = part_named(r, "torso"), left = part_named(r, "left arm"), right = part_named(r, "Right Arm");
+  REQUIRE(torso >= 0);
+  CHECK(r.root == torso);
+  CHECK(r.parts[left].side == -1);
+  CHECK(r.parts[right].side == 1);
+  CHECK(r.parts[left].role == Role::UpperLimb);
+  CHECK(r.parts[left].named);
+  // The legs: below the torso's middle; the one drawn on the viewer's left is the right leg.
+  CHECK(r.parts[3].role == Role::LowerLimb);
+  CHECK(r.parts[3].name == "limb_lower_right");
+  CHECK(r.parts[4].name == "limb_lower_left");
+  CHECK(r.parts[5].role == Role::Head);
+}
+
+TEST_CASE("a scene: background rect, the umbrella as root, six drops with their highlights") {
+  const Scene s = read_svg_file(data("rain_scene.svg"));
+  const Rig r = build_rig(s, read_source_names(data("rain_scene.svg")));
+  int background = 0;
+  for (const auto& p : r.parts) background += p.role == Role::Background;
+  CHECK(background == 1);
+  CHECK(r.parts[0].role == Role::Background);
+  CHECK(r.parts[0].why == "large, at the canvas edges, painted first");
+  CHECK(r.parts[r.root].name == "canopy");
+  REQUIRE(r.repeated.size() == 6);
+  for (const auto& e : r.repeated) CHECK(e.size() == 2);  // drop + highlight
+  CHECK(r.repeated_why == "6 small paths of similar size");
+}
+
+TEST_CASE("a round part is a wheel; a stand is not") {
+  const Rig r = rig_of("wheel.svg");
+  REQUIRE(r.parts.size() == 2);
+  CHECK_FALSE(r.parts[0].round);
+  CHECK(r.parts[1].round);
+}
+
+}  // TEST_SUITE

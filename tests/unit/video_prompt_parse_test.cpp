@@ -1,0 +1,117 @@
+// Prompt clauses and explicit plans: verbs with their inflections, part nouns (plural or not,
+// after a preposition or not), modifiers, clause splitting and joining, exact errors for bad
+// explicit plans.
+#include <doctest/doctest.h>
+
+#include <set>
+
+#include "svgmotion/error.h"
+#include "video/prompt_parse.h"
+
+using namespace svgm;
+
+TEST_SUITE("motion") {
+
+TEST_CASE("stems match English inflections and nothing inside other words") {
+  CHECK(word_matches("flapping", "flap"));
+  CHECK(word_matches("flaps", "flap"));
+  CHECK(word_matches("running", "run"));
+  CHECK(word_matches("waving", "wav"));
+  CHECK(word_matches("pedalling", "pedal"));
+  CHECK(word_matches("pedaling", "pedal"));
+  CHECK_FALSE(word_matches("show", "ho"));
+  CHECK_FALSE(word_matches("runway", "run"));
+  CHECK_FALSE(word_matches("sits", "sitting"));
+}
+
+TEST_CASE("the vocabulary has at least 40 verbs, no stem meaning two verbs") {
+  CHECK(motion_verbs().size() >= 40);
+  std::set<std::string> names;
+  for (const auto& v : motion_verbs()) {
+    CHECK(names.insert(v.name).second);
+    CHECK(!v.actions.empty());
+  }
+}
+
+TEST_CASE("one clause: verb, plural part noun, up and down cancel") {
+  const ParsedPrompt p = parse_prompt("A bat is flapping its wings up and down.");
+  REQUIRE(p.clauses.size() == 1);
+  const Clause& c = p.clauses[0];
+  REQUIRE(c.verbs.size() == 1);
+  CHECK(c.verbs[0]->name == "flap");
+  REQUIRE(c.nouns.size() == 2);
+  CHECK(c.nouns[0].word == "bat");
+  CHECK(c.nouns[0].target == Target::Named);
+  CHECK(c.nouns[1].word == "wings");
+  CHECK(c.nouns[1].target == Target::Arms);
+  CHECK(c.nouns[1].plural);
+  CHECK(c.mods.vertical == 0);
+  CHECK(c.mods.words == std::vector<std::string>{"up", "down"});
+}
+
+TEST_CASE("clauses split at conjunctions; a noun after a preposition is not a target") {
+  const ParsedPrompt p = parse_prompt("Rain falls on the umbrella and it sways gently");
+  REQUIRE(p.clauses.size() == 2);
+  REQUIRE(p.clauses[0].verbs.size() == 1);
+  CHECK(p.clauses[0].verbs[0]->name == "fall");  // "rain" and "falls": one verb, once
+  REQUIRE(p.clauses[0].nouns.size() == 1);
+  CHECK(p.clauses[0].nouns[0].word == "umbrella");
+  CHECK(p.clauses[0].nouns[0].object_of_preposition);
+  REQUIRE(p.clauses[1].verbs.size() == 1);
+  CHECK(p.clauses[1].verbs[0]->name == "sway");
+  CHECK(p.clauses[1].mods.size == 0.5);
+}
+
+TEST_CASE("modifiers: speed, size, once, the figure's side, both") {
+  const ParsedPrompt p = parse_prompt("the man slowly waves his right arm once, then kicks wildly with both legs");
+  REQUIRE(p.clauses.size() == 2);
+  CHECK(p.clauses[0].mods.speed == 0.5);
+  CHECK(p.clauses[0].mods.side == 1);
+  CHECK(p.clauses[0].mods.once == 1);
+  CHECK(p.clauses[1].verbs[0]->name == "kick");
+  CHECK(p.clauses[1].mods.size == 1.6);
+  CHECK(p.clauses[1].mods.both);
+  CHECK(p.clauses[1].mods.side == 0);
+  CHECK(parse_prompt("left and right").clauses[0].mods.side == 0);
+}
+
+TEST_CASE("a prompt with no verb keeps its words as nouns, for the report") {
+  const ParsedPrompt p = parse_prompt("A snail.");
+  REQUIRE(p.clauses.size() == 1);
+  CHECK(p.clauses[0].verbs.empty());
+  REQUIRE(p.clauses[0].nouns.size() == 1);
+  CHECK(p.clauses[0].nouns[0].word == "snail");
+}
+
+TEST_CASE("explicit plans: verbs, patterns, modifiers; exact errors") {
+  const auto steps = parse_explicit_plan("flap:wing*, bob:body+head slow");
+  REQUIRE(steps.size() == 2);
+  CHECK(steps[0].verb == "flap");
+  CHECK(steps[0].patterns == std::vector<std::string>{"wing*"});
+  CHECK(steps[1].verb == "bob");
+  CHECK(steps[1].patterns == std::vector<std::string>{"body", "head"});
+  CHECK(steps[1].mods.speed == 0.5);
+  CHECK(parse_explicit_plan("spin").at(0).patterns.empty());
+  try {
+    parse_explicit_plan("flap:wing, zoom:head");
+    FAIL("no error");
+  } catch (const Error& e) {
+    CHECK(std::string(e.what()).rfind("motion plan 'zoom:head': unknown verb 'zoom' (verbs: flap, fly,", 0) == 0);
+  }
+  CHECK_THROWS_WITH_AS(parse_explicit_plan("flap:wing quickly-ish"),
+                       "motion plan 'flap:wing quickly-ish': unknown modifier 'quickly-ish' (modifiers: slow, fast, "
+                       "gently, wildly, once, repeatedly, left, right, up, down, both)",
+                       Error);
+  CHECK_THROWS_WITH_AS(parse_explicit_plan("flap, ,bob"), "motion plan 'flap, ,bob': an empty item", Error);
+  CHECK_THROWS_WITH_AS(parse_explicit_plan("flap:"), "motion plan 'flap:': an empty part pattern", Error);
+}
+
+TEST_CASE("glob patterns") {
+  CHECK(glob_match("wing*", "wing_left"));
+  CHECK(glob_match("*LEFT", "wing_left"));
+  CHECK(glob_match("w*g*t", "wing_left"));
+  CHECK_FALSE(glob_match("wing", "wing_left"));
+  CHECK_FALSE(glob_match("arm*", "wing_left"));
+}
+
+}  // TEST_SUITE
