@@ -147,7 +147,12 @@ slurm)
   mungekey -c -k "$s/munge.key" >/dev/null 2>&1 || bad "mungekey"
   munged --key-file="$s/munge.key" --socket="$s/munge.sock" --pid-file="$s/munged.pid" \
     --log-file="$s/munged.log" --seed-file="$s/munged.seed" || bad "munged did not start"
-  port=$("$py" -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+  # Two ports the kernel hands out at once (port + 1 may be anybody's: a parallel test's
+  # connection once held it and slurmd could not bind).
+  read -r port dport < <("$py" -c 'import socket
+a, b = socket.socket(), socket.socket()
+a.bind(("127.0.0.1", 0)); b.bind(("127.0.0.1", 0))
+print(a.getsockname()[1], b.getsockname()[1])')
   host=$(hostname -s)
   cat >"$s/slurm.conf" <<CONF
 ClusterName=svgmtest
@@ -155,7 +160,7 @@ SlurmctldHost=$host(127.0.0.1)
 SlurmUser=root
 SlurmdUser=root
 SlurmctldPort=$port
-SlurmdPort=$((port + 1))
+SlurmdPort=$dport
 AuthType=auth/munge
 AuthInfo=socket=$s/munge.sock
 CredType=cred/munge
@@ -183,6 +188,7 @@ CONF
   slurmd -N "$host" || bad "slurmd did not start"
   for _ in $(seq 100); do sinfo -h -o %t 2>/dev/null | grep -q idle && break; sleep 0.2; done
   check "a one-node Slurm is up (node idle)" 'sinfo -h -o %t | grep -q idle'
+  if ! sinfo -h -o %t | grep -q idle; then tail -n 5 "$s/slurmctld.log" "$s/slurmd.log"; finish; fi
   export SVGMOTION=$bin SVGMOTION_CACHE_DIR=$tmp/out/.kernel-cache
   # Three tasks on a 2-CPU node: one CPU each, so two run at once and the third queues. The
   # script's own --time and --mem are for real clusters; this node has no memory limits.

@@ -118,7 +118,7 @@ check "the storage host never received an API key" \
   '"$py" -c "import json,sys; s=[json.loads(l) for l in open(sys.argv[1]) if \"\\\"storage\\\"\" in l]; assert s and not any(\"x-goog-api-key\" in e[\"headers\"] or \"Authorization\" in e[\"headers\"] for e in s)" "$tmp/requests.log"'
 check "mixed: candidate 01 failed alone: one warning naming it, 00 and 02 kept" \
   '[[ $(cat "$tmp/mixed.rc") -eq 0 && -s $tmp/mixed/candidates/00.mp4 && -s $tmp/mixed/candidates/02.mp4 && ! -e $tmp/mixed/candidates/01.mp4 ]] &&
-   [[ $(grep -c "video veo" "$tmp/mixed.err") -eq 1 ]] &&
+   [[ $(grep -c "warning: video veo" "$tmp/mixed.err") -eq 1 ]] &&
    grep -qE "^svgmotion: warning: video veo: candidate 01: operation models/veo-mixed/operations/id[0-9]+ failed: Internal error while generating the video. \(code 13\)$" "$tmp/mixed.err" || { cat "$tmp/mixed.err"; false; }'
 check "ratelimit: the 429 was waited out for Retry-After (1 s) and the submit repeated once" \
   '"$py" -c "import json,sys; t=[json.loads(l)[\"t\"] for l in open(sys.argv[1]) if \"/veo-ratelimit:\" in l]; assert len(t)==2 and t[1]-t[0] >= 0.95, t" "$tmp/requests.log"'

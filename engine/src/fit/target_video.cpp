@@ -279,10 +279,11 @@ std::array<float, 3> border_median_rgb(const float* f, int W, int H) {
 
 namespace {
 
-// Held frames: a 64-pixel-wide grey thumbnail of each frame, and "the same frame" as a mean
-// absolute difference below a level a codec's re-encoding of a repeat stays under (H.264
-// repeats differ by well under 1/255 on average; the slowest real motion by far more).
-constexpr double kHeldFrameMeanDiff = 0.6;  // 8-bit levels
+// Held frames: a 64-pixel-wide grey thumbnail of each frame, and "the same frame" as no
+// thumbnail pixel differing by more than a codec's re-encoding of a repeat does. The largest
+// difference, not the mean: a small part moving on a still figure (a waving hand) changes few
+// pixels, which a mean over the frame would not see.
+constexpr double kHeldFrameMaxDiff = 6;  // 8-bit levels, after the thumbnail's averaging
 
 cv::Mat held_frame_thumbnail(const cv::Mat& frame) {
   cv::Mat grey, small;
@@ -296,7 +297,10 @@ cv::Mat held_frame_thumbnail(const cv::Mat& frame) {
 }
 
 bool same_frame(const cv::Mat& a, const cv::Mat& b) {
-  return a.size() == b.size() && cv::mean(cv::abs(a - b))[0] < kHeldFrameMeanDiff;
+  if (a.size() != b.size()) return false;
+  double lo = 0, hi = 0;
+  cv::minMaxLoc(cv::abs(a - b), &lo, &hi);
+  return hi <= kHeldFrameMaxDiff;
 }
 
 // Mask, cleaned target and distance field of keyframe k from its raw frame.
