@@ -39,8 +39,8 @@ int cmd_fit(const std::vector<std::string>& argv) {
   job.options.track = !a.has("--no-track");
   job.keyframes = a.get_int("--keyframes", 15, 2, 1000);
   job.width = a.get_int("--size", 256, 32, 4096);
-  if (const auto r = a.get("--refine-size"); r && *r != "auto")
-    job.refine_width = a.get_int("--refine-size", 0, 0, 4096);
+  if (const auto r = a.get("--refine-size"))
+    job.refine_width = *r == "auto" ? -1 : a.get_int("--refine-size", 0, 0, 4096);
   job.loop = parse_loop_mode(a.get("--loop").value_or("loop"), "--loop");
   const std::string deform = a.get("--deform").value_or("field");
   if (deform == "free") job.options.use_free_offsets();
