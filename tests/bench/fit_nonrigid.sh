@@ -47,7 +47,7 @@ PY
   $py "$shared/tools/fitcheck.py" eval "$svg" "$dir" "$anim" --hires --between > "$dir/eval.txt"
   line=$(tail -1 "$dir/eval.txt")
   secs=$(grep -o '"seconds": [0-9.]*' "$dir/out/fit.json" | awk '{print $2}')
-  rss=$(( $(cat "$dir/rss") / 1024 ))
+  rss=$(( $(tail -1 "$dir/rss") / 1024 ))
   eval "$(echo "$line" | tr ' ' '\n' | grep '=')"
   min_hi=$(grep '^keyframe' "$dir/eval.txt" | grep -o 'hires_psnr=[0-9.]*' | cut -d= -f2 | sort -n | head -1)
   printf '%-14s %7.2f %7.4f %7.2f %7.2f %7.4f %7.4f %8.2f %7.1f %s\n' "$name" "$psnr" "$min_iou" "$hires_psnr" "$min_hi" "$hires_bf" "$min_hires_bf" "$between_psnr" "$secs" "$rss$status"
