@@ -125,15 +125,8 @@ int lottie_join(LineJoin c) {
 LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
                                 const std::vector<double>& points, const AnimationTiming& timing,
                                 const LottieOptions& options, const ExportMap* map) {
-  const int K = timing.keyframes;
-  if (K < 1 || points.size() != static_cast<size_t>(K) * plan.n_cp * 2)
-    throw Error("internal: animation points do not match the plan");
-  if (!timing.key_times.empty() && timing.key_times.size() != static_cast<size_t>(K))
-    throw Error("internal: key times do not match the keyframes");
-  if (map && map->fitted_of.size() != scene.paths.size())
-    throw Error("internal: export map does not match the document");
+  check_animation_inputs(scene, plan, points, timing, map, options.decimals);
   if (!(options.fps > 0 && std::isfinite(options.fps))) throw Error("internal: Lottie frame rate must be positive");
-  if (options.decimals < 0 || options.decimals > kMaxDecimals) throw Error("internal: export precision out of range");
 
   const AnimationPass pass = animation_pass(timing);
   const double frames = std::max(1.0, std::round(pass.duration_s * options.fps * kFrameScale) / kFrameScale);

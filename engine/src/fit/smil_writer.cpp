@@ -104,11 +104,8 @@ std::string path_data(const Path& path, const double* cp, const Affine& to_local
   return d;
 }
 
-std::vector<std::string> write_animation_svg(const fs::path& source, const Scene& scene,
-                                             const RasterPlan& plan,
-                                             const std::vector<double>& points,
-                                             const AnimationTiming& timing, const fs::path& out,
-                                             const ExportMap* map, int decimals) {
+void check_animation_inputs(const Scene& scene, const RasterPlan& plan, const std::vector<double>& points,
+                            const AnimationTiming& timing, const ExportMap* map, int decimals) {
   const int K = timing.keyframes;
   if (decimals < 0 || decimals > kMaxDecimals) throw Error("internal: export precision out of range");
   if (K < 1 || points.size() != static_cast<size_t>(K) * plan.n_cp * 2)
@@ -117,6 +114,14 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
     throw Error("internal: key times do not match the keyframes");
   if (map && map->fitted_of.size() != scene.paths.size())
     throw Error("internal: export map does not match the document");
+}
+
+std::vector<std::string> write_animation_svg(const fs::path& source, const Scene& scene,
+                                             const RasterPlan& plan,
+                                             const std::vector<double>& points,
+                                             const AnimationTiming& timing, const fs::path& out,
+                                             const ExportMap* map, int decimals) {
+  check_animation_inputs(scene, plan, points, timing, map, decimals);
   std::ifstream in(source, std::ios::binary);
   const std::string original((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (!in && !in.eof()) throw Error(source.string() + ": cannot re-read for export");

@@ -46,6 +46,14 @@ struct AnimationPass {
 };
 AnimationPass animation_pass(const AnimationTiming& timing);
 
+struct ExportMap;
+
+// What every animation writer (SMIL, Lottie) checks of its inputs: K >= 1 keyframes of the
+// plan's points, key times per keyframe, an export map covering the document, decimals in
+// 0..kMaxDecimals. Throws svgm::Error("internal: ...").
+void check_animation_inputs(const Scene& scene, const RasterPlan& plan, const std::vector<double>& points,
+                            const AnimationTiming& timing, const ExportMap* map, int decimals);
+
 // How the fitted paths map onto the document written into (when it is not the fitted SVG
 // itself): fitted_of[i] is the fitted path (index into the plan's paths) drawn by the
 // document's path i, or -1 to leave it static; `order`, when not empty, is the paint order to
