@@ -221,63 +221,63 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   int bad_streak = 0;
   float best = std::numeric_limits<float>::infinity();
   int best_active = 0, rollbacks = 0;
-  FitState good = fitter.state();
+  FitState good;  // taken at the start of each stage
   std::vector<std::string> rollback_notes;
   // One stage of iterations on fitter `f` (the coarse fit, then the refinement), with the
   // divergence watch, progress over the whole budget and, for the coarse stage, checkpoints.
   auto run_stage = [&](Fitter& f, int done_before, bool checkpoints) {
-  good = f.state();
-  best = std::numeric_limits<float>::infinity();
-  best_active = 0;
-  bad_streak = 0;
-  while (!f.done() && !(stopped = interrupted())) {
-    loss = f.step();
-    const int it = done_before + f.iteration();
-    const float per = loss.total() / std::max(1, f.active_keyframes());
-    if (f.active_keyframes() != best_active) {
-      best_active = f.active_keyframes();
-      best = std::numeric_limits<float>::infinity();
+    good = f.state();
+    best = std::numeric_limits<float>::infinity();
+    best_active = 0;
+    bad_streak = 0;
+    while (!f.done() && !(stopped = interrupted())) {
+      loss = f.step();
+      const int it = done_before + f.iteration();
+      const float per = loss.total() / std::max(1, f.active_keyframes());
+      if (f.active_keyframes() != best_active) {
+        best_active = f.active_keyframes();
+        best = std::numeric_limits<float>::infinity();
+      }
+      // Adam's first steps after an activation may overshoot for a few iterations and recover
+      // (the paper's settings do); a divergence is a loss that stays high, or is not a number.
+      bad_streak = std::isfinite(best) && per > kDivergence * best && per > 1e-3f ? bad_streak + 1 : 0;
+      const bool diverged = !std::isfinite(per) || bad_streak >= kDivergenceStreak;
+      if (diverged && rollbacks < kMaxRollbacks) {
+        ++rollbacks;
+        rollback_notes.push_back(fmt("iteration %.0f: loss %.4g per keyframe (best %.4g); rolled back to iteration %.0f at half the step size",
+                                     it, per, best, done_before + good.iteration));
+        std::fprintf(stderr, "svgmotion: warning: the fit diverged at %s\n", rollback_notes.back().c_str());
+        f.restore(good);
+        f.scale_learning_rates(0.5f);
+        best_active = f.active_keyframes();
+        best = std::numeric_limits<float>::infinity();
+        bad_streak = 0;
+        continue;
+      }
+      if (std::isfinite(per) && bad_streak == 0) best = std::min(best, per);
+      if (it % kSnapshotEvery == 0 && std::isfinite(per) && per <= 2 * best) good = f.state();
+      const auto now = std::chrono::steady_clock::now();
+      const double elapsed = std::chrono::duration<double>(now - t0).count();
+      const double eta = elapsed / std::max(1, it - resumed_from) * (total_iters - it);
+      const bool due = now - last_print > std::chrono::milliseconds(job.progress ? 500 : 200) || f.done();
+      if (job.progress && due) {
+        job.progress(static_cast<double>(it) / total_iters,
+                     fmt("iteration %.0f/%.0f, loss %.5f, keyframes %.0f", it, total_iters, loss.total(),
+                         f.active_keyframes()) + "/" + std::to_string(f.keyframes()) +
+                         fmt(", ETA %.0f s", eta));
+        last_print = now;
+      } else if (tty && due) {
+        std::fprintf(stderr, "\rfit: iteration %d/%d  loss %.5f  keyframes %d/%d  %.0fs, ETA %.0fs   ",
+                     it, total_iters, loss.total(), f.active_keyframes(), f.keyframes(),
+                     elapsed, eta);
+        last_print = now;
+      } else if (!tty && !job.quiet && !job.progress && (it % 100 == 0 || f.done())) {
+        std::fprintf(stderr, "fit: iteration %d/%d loss %.5f keyframes %d/%d elapsed %.1fs eta %.0fs\n",
+                     it, total_iters, loss.total(), f.active_keyframes(), f.keyframes(),
+                     elapsed, eta);
+      }
+      if (checkpoints && it % kCheckpointEvery == 0) save_checkpoint(ckpt, key, f.state());
     }
-    // Adam's first steps after an activation may overshoot for a few iterations and recover
-    // (the paper's settings do); a divergence is a loss that stays high, or is not a number.
-    bad_streak = std::isfinite(best) && per > kDivergence * best && per > 1e-3f ? bad_streak + 1 : 0;
-    const bool diverged = !std::isfinite(per) || bad_streak >= kDivergenceStreak;
-    if (diverged && rollbacks < kMaxRollbacks) {
-      ++rollbacks;
-      rollback_notes.push_back(fmt("iteration %.0f: loss %.4g per keyframe (best %.4g); rolled back to iteration %.0f at half the step size",
-                                   it, per, best, done_before + good.iteration));
-      std::fprintf(stderr, "svgmotion: warning: the fit diverged at %s\n", rollback_notes.back().c_str());
-      f.restore(good);
-      f.scale_learning_rates(0.5f);
-      best_active = f.active_keyframes();
-      best = std::numeric_limits<float>::infinity();
-      bad_streak = 0;
-      continue;
-    }
-    if (std::isfinite(per) && bad_streak == 0) best = std::min(best, per);
-    if (it % kSnapshotEvery == 0 && std::isfinite(per) && per <= 2 * best) good = f.state();
-    const auto now = std::chrono::steady_clock::now();
-    const double elapsed = std::chrono::duration<double>(now - t0).count();
-    const double eta = elapsed / std::max(1, it - resumed_from) * (total_iters - it);
-    const bool due = now - last_print > std::chrono::milliseconds(job.progress ? 500 : 200) || f.done();
-    if (job.progress && due) {
-      job.progress(static_cast<double>(it) / total_iters,
-                   fmt("iteration %.0f/%.0f, loss %.5f, keyframes %.0f", it, total_iters, loss.total(),
-                       f.active_keyframes()) + "/" + std::to_string(f.keyframes()) +
-                       fmt(", ETA %.0f s", eta));
-      last_print = now;
-    } else if (tty && due) {
-      std::fprintf(stderr, "\rfit: iteration %d/%d  loss %.5f  keyframes %d/%d  %.0fs, ETA %.0fs   ",
-                   it, total_iters, loss.total(), f.active_keyframes(), f.keyframes(),
-                   elapsed, eta);
-      last_print = now;
-    } else if (!tty && !job.quiet && !job.progress && (it % 100 == 0 || f.done())) {
-      std::fprintf(stderr, "fit: iteration %d/%d loss %.5f keyframes %d/%d elapsed %.1fs eta %.0fs\n",
-                   it, total_iters, loss.total(), f.active_keyframes(), f.keyframes(),
-                   elapsed, eta);
-    }
-    if (checkpoints && it % kCheckpointEvery == 0) save_checkpoint(ckpt, key, f.state());
-  }
   };
   run_stage(fitter, 0, true);
   save_checkpoint(ckpt, key, fitter.state());
