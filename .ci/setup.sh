@@ -54,6 +54,7 @@ else
   # Tests share the one OpenCL device; two at a time keeps both cores busy.
   # The Slurm batch test may not skip here: its packages were installed above.
   SVGM_REQUIRE_SLURM=1 ctest --test-dir build --output-on-failure -j 2
-  # The parsers under libFuzzer (clang, ASan+UBSan): the regression inputs, then 20 s each.
-  bash tests/fuzz/run.sh 20
+  # The parsers under libFuzzer (clang, ASan+UBSan): every seed and regression input replayed
+  # once, deterministically (exploratory fuzzing: bash tests/fuzz/run.sh 600, by hand).
+  bash tests/fuzz/run.sh 0
 fi

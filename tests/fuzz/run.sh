@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The parsers under libFuzzer (ASan+UBSan), in build-fuzz/:
-#   bash tests/fuzz/run.sh [SECONDS_PER_TARGET] [TARGET ...]     (default: 30 s, every target)
+#   bash tests/fuzz/run.sh [SECONDS_PER_TARGET] [TARGET ...]     (default: 30 s, every target; 0: replay)
 # Builds the targets with clang (tests/fuzz/CMakeLists.txt), then runs each for the given time,
 # two at a time, from the seeds: our own files (tests/data, configs/, the regression inputs in
 # tests/fuzz/corpus/<target>/) plus what earlier runs found (build-fuzz/corpus/<target>/, kept
@@ -9,7 +9,8 @@
 # memory) is saved in build-fuzz/findings/<target>/ with its log in build-fuzz/logs/<target>.log.
 # Prints executions, corpus size, findings and slow inputs (over 10 s, kept beside the findings
 # but not counted) per target; exit status 1 if anything was found.
-# CI runs it for 20 s per target (.ci/setup.sh test); longer runs find more.
+# 0 seconds replays every seed and regression input once without mutating (deterministic: what
+# CI runs, so a random new finding never fails an unrelated change); longer runs find more.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-30}
@@ -17,7 +18,7 @@ shift || true
 all=(svg_reader path_data color transform css config)
 targets=("$@")
 ((${#targets[@]})) || targets=("${all[@]}")
-[[ $seconds =~ ^[0-9]+$ && $seconds -gt 0 ]] || { echo "usage: run.sh [SECONDS_PER_TARGET] [TARGET ...]" >&2; exit 2; }
+[[ $seconds =~ ^[0-9]+$ ]] || { echo "usage: run.sh [SECONDS_PER_TARGET] [TARGET ...]" >&2; exit 2; }
 for t in "${targets[@]}"; do
   [[ " ${all[*]} " == *" $t "* ]] || { echo "run.sh: no fuzz target '$t' (${all[*]})" >&2; exit 2; }
 done
@@ -58,7 +59,9 @@ fuzz_one() {
   # -timeout: an input that runs 60 s is a finding (a hang; the slowest seed needs about 1 s of
   # CPU under ASan, and the wall-clock limit must survive a loaded machine); -rss_limit_mb: so is
   # 2 GB. Inputs slower than 10 s are kept as slow-unit-* for a look, not counted as findings.
-  "$out/tests/fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=60 -rss_limit_mb=2048 -max_len=8192 \
+  local budget=(-max_total_time="$seconds")
+  ((seconds > 0)) || budget=(-runs=0)  # 0 s: replay every seed once, no mutation (deterministic)
+  "$out/tests/fuzz/fuzz_$t" "${budget[@]}" -timeout=60 -rss_limit_mb=2048 -max_len=8192 \
     -print_final_stats=1 "${dict[@]}" -artifact_prefix="$out/findings/$t/" \
     "$out/corpus/$t" "$seeds/$t" "tests/fuzz/corpus/$t" >"$out/logs/$t.log" 2>&1 || true
 }
