@@ -40,6 +40,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   else if (deform != "field") throw std::runtime_error("stages.fitter.deform must be field or free, not '" + deform + "'");
   job.loop = svgm::parse_loop_mode(c.value("loop", "loop"), "stages.fitter.loop");
   job.gate = c.value("gate", true);
+  job.stabilise = c.value("stabilise", false);
   job.decimals = c.value("precision", svgm::kDefaultDecimals);
   job.inbetweens = c.value("inbetweens", job.inbetweens);
   job.quiet = true;

@@ -35,6 +35,11 @@ struct TargetOptions {
   // Held frames (a clip at a lower frame rate than its container repeats each frame): a keyframe
   // that falls on a repeat is timed at the first frame of its run, where that pose was made.
   bool retime_held_frames = true;
+  // Camera shake (the whole frame jittering a pixel or two) removed before sampling: the path
+  // of frame-to-frame translations minus its low-pass over time (fit/stabilise.h). Off by
+  // default: a figure moving in genuine sharp jerks would be smoothed a little.
+  bool stabilise = false;
+  double stabilise_sigma_s = 0.125;  // the low-pass's standard deviation (3 frames at 24 fps)
 };
 
 struct TargetFrames {
@@ -47,6 +52,7 @@ struct TargetFrames {
   std::vector<int> source_index;
   int held_frames = 0;            // frames that repeat the one before (video sources)
   int colour_corrected = 0;       // keyframes whose colours were corrected
+  double max_shake_px = 0;        // largest shake removed from a keyframe, target pixels
   // K*H*W*4, row-major per keyframe: the cleaned target, straight RGB in [0,1], A = 1; pixels
   // outside the dilated mask are exactly white (1, 1, 1).
   std::vector<float> rgba;

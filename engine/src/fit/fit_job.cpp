@@ -117,6 +117,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   TargetOptions to;
   to.keyframes = keyframes;
   to.white_threshold = job.mask_threshold;
+  to.stabilise = job.stabilise;
   // The colours the target should show: the fitted scene's opaque fills and strokes.
   if (job.colour_correction)
     for (const Path& p : fit_scene.paths) {
@@ -377,6 +378,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                            {"device", rt.info().name}};
   if (!map.order.empty()) report["paint_order_applied"] = true;
   report["target_frames"] = {{"held", target.held_frames}, {"colour_corrected_keyframes", final_target.colour_corrected}};
+  if (job.stabilise) report["target_frames"]["max_shake_removed_px"] = target.max_shake_px;
   if (fine) report["refined"] = {{"size", {W, H}}, {"iterations", final_fit.iteration()}, {"from_size", {size.width, size.height}}};
   write_file_atomic(out / "fit.json", report.dump(2) + "\n");
   if (stopped) {

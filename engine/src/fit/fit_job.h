@@ -64,6 +64,8 @@ struct FitJob {
   double refine_share = 0.25;
   // Colour-correct every keyframe against the drawing's colours (target_video.h).
   bool colour_correction = true;
+  // Remove camera shake from the video before sampling it (target_video.h).
+  bool stabilise = false;
   double mask_threshold = 0.97;
   bool resume = false;
   // Resume from out/checkpoint.bin when it holds an unfinished fit of exactly this problem

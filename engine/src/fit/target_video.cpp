@@ -6,6 +6,7 @@
 #include "svgmotion/target_video.h"
 
 #include "fit/colour_correction.h"
+#include "fit/stabilise.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -283,7 +284,11 @@ namespace {
 // thumbnail pixel differing by more than a codec's re-encoding of a repeat does. The largest
 // difference, not the mean: a small part moving on a still figure (a waving hand) changes few
 // pixels, which a mean over the frame would not see.
-constexpr double kHeldFrameMaxDiff = 6;  // 8-bit levels, after the thumbnail's averaging
+constexpr double kHeldFrameMaxDiff = 6;
+
+// Width at which camera shake is measured: sub-pixel phase correlation is good to about a
+// tenth of a pixel here, and the clip's every frame is measured.
+constexpr int kShakeMeasureWidth = 512;  // 8-bit levels, after the thumbnail's averaging
 
 cv::Mat held_frame_thumbnail(const cv::Mat& frame) {
   cv::Mat grey, small;
@@ -467,6 +472,16 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   t.mask.assign(K * px, 0);
   t.sdf.assign(K * px, 0.0f);
 
+  // Sampled frames go straight to `raw`, or, when stabilising, wait for the whole clip's
+  // camera path (kept at their own size, K frames at most).
+  ShakeEstimator shake(kShakeMeasureWidth);
+  std::vector<cv::Mat> kept(static_cast<size_t>(K));
+  std::vector<int> kept_index(static_cast<size_t>(K), 0);
+  auto keep = [&](int k, int frame_index, cv::Mat frame) {
+    if (!options.stabilise) return store_raw(frame, k, width, height, t.raw);
+    kept[static_cast<size_t>(k)] = std::move(frame);
+    kept_index[static_cast<size_t>(k)] = frame_index;
+  };
   if (is_folder) {
     for (int k = 0; k < K; ++k) {
       const fs::path& file = folder.frames[static_cast<size_t>(t.source_index[k])].path;
@@ -480,8 +495,19 @@ TargetFrames load_target(const fs::path& source, int width, int height,
       if (img.cols != folder.width || img.rows != folder.height)
         fail(file, "decodes to " + size_text(img.cols, img.rows) + ", but its header says " +
                        size_text(folder.width, folder.height));
-      store_raw(img, k, width, height, t.raw);
+      keep(k, t.source_index[k], std::move(img));
     }
+    if (options.stabilise)  // every frame, not only the sampled ones, shows the camera's path
+      for (const FolderFrame& f : folder.frames) {
+        cv::Mat img;
+        try {
+          img = cv::imread(f.path.string(), cv::IMREAD_UNCHANGED);
+        } catch (const cv::Exception&) {
+          img.release();
+        }
+        if (img.empty()) fail(f.path, "not a readable PNG");
+        shake.add(img);
+      }
   } else {
     // Second pass: sequential reads (seeking is unreliable across codecs), decoding only the
     // sampled frames and keeping them at the target size.
@@ -494,10 +520,11 @@ TargetFrames load_target(const fs::path& source, int width, int height,
       for (int i = 0; i < N && k < K; ++i) {
         if (!cap.grab()) fail(source, "frame " + std::to_string(i) + " cannot be read");
         const bool sampled = i == t.source_index[static_cast<size_t>(k)];
-        if (!sampled && !options.retime_held_frames) continue;
+        if (!sampled && !options.retime_held_frames && !options.stabilise) continue;
         cv::Mat frame;
         if (!cap.retrieve(frame) || frame.empty())
           fail(source, "frame " + std::to_string(i) + " cannot be decoded");
+        if (options.stabilise) shake.add(frame);
         if (options.retime_held_frames) {
           cv::Mat thumb = held_frame_thumbnail(frame);
           if (!prev_thumb.empty() && same_frame(thumb, prev_thumb)) ++t.held_frames;
@@ -505,7 +532,7 @@ TargetFrames load_target(const fs::path& source, int width, int height,
           prev_thumb = thumb;
         }
         if (!sampled) continue;
-        store_raw(frame, k, width, height, t.raw);
+        keep(k, i, options.stabilise ? frame.clone() : frame);
         // A repeat shows the pose of the run's first frame: time the keyframe there (never at
         // or before the previous keyframe, so times stay increasing).
         if (k > 0 && run_start > t.source_index[static_cast<size_t>(k - 1)]) t.source_index[static_cast<size_t>(k)] = run_start;
@@ -513,6 +540,15 @@ TargetFrames load_target(const fs::path& source, int width, int height,
       }
     } catch (const cv::Exception&) {
       fail(source, "not a readable video");
+    }
+  }
+  if (options.stabilise) {
+    const auto shakes = shake.shake(options.stabilise_sigma_s * t.fps);
+    for (int k = 0; k < K; ++k) {
+      const auto& d = shakes[static_cast<size_t>(kept_index[static_cast<size_t>(k)])];
+      const double fit_px = std::hypot(d[0], d[1]) * width / std::max(1, t.source_width);
+      t.max_shake_px = std::max(t.max_shake_px, fit_px);
+      store_raw(remove_shake(kept[static_cast<size_t>(k)], d), k, width, height, t.raw);
     }
   }
   for (int k = 0; k < K; ++k) {

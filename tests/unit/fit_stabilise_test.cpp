@@ -1,0 +1,153 @@
+// Camera-shake removal (fit/stabilise.h): frames of an analytic figure (a disc and a bar with
+// one-pixel soft edges, translated exactly by sub-pixel amounts) with a known jitter. The shake
+// reported is the jitter minus its own low-pass, to a tenth of a pixel; a slow deliberate drift
+// is kept; shifting by minus the shake brings a jittered frame back onto the clean one; and
+// load_target with `stabilise` on gives keyframes much closer to the clean clip than without.
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "fit/stabilise.h"
+#include "svgmotion/target_video.h"
+
+#include "temp_dir.h"
+
+using namespace svgm;
+
+namespace {
+
+constexpr int kW = 160, kH = 120;
+
+// 1 inside, 0 outside, linear over the one pixel across the edge at signed distance 0.
+double edge(double signed_distance) { return std::clamp(0.5 - signed_distance, 0.0, 1.0); }
+
+// White frame (8-bit BGR) with a dark disc and a dark bar, everything moved by (dx, dy).
+cv::Mat figure(double dx, double dy) {
+  cv::Mat f(kH, kW, CV_8UC3);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const double px = x + 0.5 - dx, py = y + 0.5 - dy;
+      const double disc = edge(std::hypot(px - 60, py - 55) - 22);
+      const double bar = edge(std::max(std::fabs(px - 105) - 8, std::fabs(py - 60) - 35));
+      const double ink = std::max(disc, bar);
+      const auto v = static_cast<uint8_t>(std::lround(255 * (1 - 0.8 * ink)));
+      f.at<cv::Vec3b>(y, x) = {v, static_cast<uint8_t>(std::lround(255 * (1 - 0.5 * ink))), v};
+    }
+  return f;
+}
+
+// A fixed pseudo-random jitter in [-1.5, 1.5] px per frame and axis (no RNG state to vary).
+std::array<double, 2> jitter(int i) {
+  return {1.5 * std::sin(12.9898 * i + 1.0), 1.5 * std::sin(78.233 * i + 2.0)};
+}
+
+// The low-pass the estimator applies (Gaussian, renormalised at the ends) of a sequence.
+std::vector<double> low_pass(const std::vector<double>& v, double sigma) {
+  const int n = static_cast<int>(v.size()), r = static_cast<int>(std::ceil(3 * sigma));
+  std::vector<double> out(v.size());
+  for (int i = 0; i < n; ++i) {
+    double sw = 0, s = 0;
+    for (int j = std::max(0, i - r); j <= std::min(n - 1, i + r); ++j) {
+      const double w = std::exp(-0.5 * (j - i) * (j - i) / (sigma * sigma));
+      sw += w, s += w * v[static_cast<size_t>(j)];
+    }
+    out[static_cast<size_t>(i)] = s / sw;
+  }
+  return out;
+}
+
+double mean_abs_diff(const cv::Mat& a, const cv::Mat& b) {
+  cv::Mat d;
+  cv::absdiff(a, b, d);
+  return cv::mean(d)[0];
+}
+
+}  // namespace
+
+TEST_SUITE("fit") {
+
+TEST_CASE("stabilise: the shake of a jittered clip is its jitter minus the jitter's low-pass") {
+  constexpr int N = 36;
+  constexpr double sigma = 3;
+  ShakeEstimator est(kW);
+  std::vector<double> jx, jy;
+  for (int i = 0; i < N; ++i) {
+    // A slow deliberate drift of 0.25 px per frame to the right is motion, not shake.
+    const auto j = jitter(i);
+    jx.push_back(j[0]), jy.push_back(j[1]);
+    est.add(figure(0.25 * i + j[0], j[1]));
+  }
+  const auto shake = est.shake(sigma);
+  REQUIRE(shake.size() == N);
+  const std::vector<double> lx = low_pass(jx, sigma), ly = low_pass(jy, sigma);
+  double worst = 0, raw = 0;
+  for (int i = 0; i < N; ++i) {
+    // The estimator sees the drift too; its low-pass of a straight line is the line (away from
+    // the ends, where the renormalised window is one-sided: skipped).
+    if (i < 9 || i >= N - 9) continue;
+    worst = std::max({worst, std::fabs(shake[static_cast<size_t>(i)][0] - (jx[static_cast<size_t>(i)] - lx[static_cast<size_t>(i)])),
+                      std::fabs(shake[static_cast<size_t>(i)][1] - (jy[static_cast<size_t>(i)] - ly[static_cast<size_t>(i)]))});
+    raw = std::max({raw, std::fabs(jx[static_cast<size_t>(i)]), std::fabs(jy[static_cast<size_t>(i)])});
+  }
+  MESSAGE("largest error of the shake estimate " << worst << " px (jitter up to " << raw << " px)");
+  CHECK(raw > 1.0);
+  CHECK(worst < 0.05);
+}
+
+TEST_CASE("stabilise: a still clip has no shake, and removing a known shake restores the frame") {
+  ShakeEstimator est(kW);
+  for (int i = 0; i < 10; ++i) est.add(figure(0, 0));
+  for (const auto& s : est.shake(3)) CHECK(std::hypot(s[0], s[1]) < 1e-6);
+  const cv::Mat clean = figure(0, 0), moved = figure(1.25, -0.75);
+  const cv::Mat back = remove_shake(moved, {1.25, -0.75});
+  const cv::Mat wrong = remove_shake(moved, {-1.25, 0.75});
+  MESSAGE("mean |difference| after removal " << mean_abs_diff(back, clean) << ", before " << mean_abs_diff(moved, clean));
+  CHECK(mean_abs_diff(back, clean) < 0.25 * mean_abs_diff(moved, clean));
+  CHECK(mean_abs_diff(wrong, clean) > mean_abs_diff(moved, clean));
+}
+
+TEST_CASE("stabilise: load_target's keyframes of a shaking clip come back close to the clean clip") {
+  test::TempDir dir("svgm_stabilise_test");
+  constexpr int N = 25, K = 5;
+  for (int i = 0; i < N; ++i) {
+    const auto j = jitter(i);
+    char name[32];
+    std::snprintf(name, sizeof name, "%03d.png", i);
+    REQUIRE(cv::imwrite((dir.path / name).string(), figure(0.2 * i + j[0], j[1])));
+  }
+  TargetOptions opt;
+  opt.keyframes = K;
+  const TargetFrames plain = load_target(dir.path, kW, kH, opt);
+  opt.stabilise = true;
+  const TargetFrames steady = load_target(dir.path, kW, kH, opt);
+  CHECK(plain.max_shake_px == 0);
+  CHECK(steady.max_shake_px > 0.5);
+  // Distance of each keyframe (raw, before cleanup) to the clean clip's frame at its time.
+  const size_t px = static_cast<size_t>(kW) * kH;
+  double err_plain = 0, err_steady = 0;
+  for (int k = 1; k + 1 < K; ++k) {  // inner keyframes: the low-pass is two-sided there
+    const int i = steady.source_index[static_cast<size_t>(k)];
+    cv::Mat clean;
+    figure(0.2 * i, 0).convertTo(clean, CV_32FC3, 1.0 / 255);
+    auto dist = [&](const TargetFrames& t) {
+      double s = 0;
+      for (size_t p = 0; p < px; ++p) {
+        const cv::Vec3f c = clean.at<cv::Vec3f>(static_cast<int>(p / kW), static_cast<int>(p % kW));
+        // raw is RGB, the frame BGR
+        for (int ch = 0; ch < 3; ++ch) s += std::fabs(t.raw[(k * px + p) * 4 + ch] - c[2 - ch]);
+      }
+      return s / (3.0 * px);
+    };
+    err_plain += dist(plain), err_steady += dist(steady);
+  }
+  MESSAGE("mean |keyframe - clean|: " << err_plain << " as decoded, " << err_steady << " stabilised");
+  CHECK(err_steady < 0.5 * err_plain);
+}
+
+}  // TEST_SUITE
