@@ -10,7 +10,7 @@
 // the low-pass part, a figure's deliberate drift or a jump's arc, is kept. This is the classic
 // smoothed-camera-path stabiliser (e.g. Matsushita et al. 2006, "Full-frame video
 // stabilization"; here with translation only, which is what shake of a fixed camera is).
-// Off by default: a figure that genuinely moves in sharp jerks would be smoothed a little.
+// Off by default: a whole figure that genuinely moves quickly (a hop) would be damped too.
 #pragma once
 
 #include <array>
