@@ -147,13 +147,29 @@ bool inside_control_polygons(const Path& path, Vec2 p) {
   return in;
 }
 
-// host[p]: the path whose group small path p joins (see FitPlanOptions::attach_small_px), or -1.
-// Pixel-space boxes come from the raster plan's rest points; containment is tested in canvas
-// space on the scene's own points, mapped through the box of the same points.
-std::vector<int> small_path_hosts(const Scene& scene, const RasterPlan& raster, double max_side) {
+// A path whose bounding box is under this share of its host's counts as small beside it
+// (octopus: a 13 px freckle on a 380 px body is 0.034 of it and, on its own homography, slid
+// onto the head's edge and stretched 5x along it; the mouth, 0.11 of it, keeps its own).
+constexpr double kTinyBesideHost = 0.05;
+
+// Whether `path` would vanish into a white background: every paint it has, composited over
+// white with its opacity, within `tol` of white in each channel (the target's mask test).
+bool invisible_on_white(const Path& path, double tol) {
+  auto white = [&](const Rgba& c) {
+    const double a = static_cast<double>(c.a) * path.opacity;
+    return std::max({1 - (c.r * a + 1 - a), 1 - (c.g * a + 1 - a), 1 - (c.b * a + 1 - a)}) <= tol;
+  };
+  if (!path.has_fill && !path.has_stroke) return false;
+  return (!path.has_fill || white(path.fill)) && (!path.has_stroke || white(path.stroke.color));
+}
+
+// host[p]: the path whose group path p joins (see FitPlanOptions::attach_small_px and
+// attach_invisible_tol), or -1. Pixel-space boxes come from the raster plan's rest points;
+// containment is tested in canvas space on the scene's own points.
+std::vector<int> path_hosts(const Scene& scene, const RasterPlan& raster, const FitPlanOptions& opt) {
   const size_t P = scene.paths.size();
   std::vector<int> host(P, -1);
-  if (max_side <= 0) return host;
+  if (opt.attach_small_px <= 0 && opt.attach_invisible_tol < 0) return host;
   std::vector<Box> px(P), canvas(P);
   for (size_t p = 0; p < P; ++p) {
     for (int i = raster.path_cp_first[p]; i < raster.path_cp_first[p] + raster.path_cp_count[p]; ++i)
@@ -162,13 +178,34 @@ std::vector<int> small_path_hosts(const Scene& scene, const RasterPlan& raster, 
       for (const Vec2& q : sp.points) canvas[p].add(q);
   }
   for (size_t p = 0; p < P; ++p) {
-    const int sg = scene.paths[p].group;
+    const Path& path = scene.paths[p];
+    const int sg = path.group;
     const bool alone = sg < 0 || scene.groups[sg].paths.size() <= 1;  // a top-level element
-    if (!alone || raster.path_cp_count[p] == 0 || px[p].side() >= max_side) continue;
+    if (!alone || raster.path_cp_count[p] == 0) continue;
+    // Small: under the absolute size, or tiny beside the path it sits on (a freckle on a
+    // whole body; checked per host below).
+    const bool small = px[p].side() < opt.attach_small_px;
+    const bool invisible = opt.attach_invisible_tol >= 0 && invisible_on_white(path, opt.attach_invisible_tol);
+    if (!small && !invisible && opt.attach_small_px <= 0) continue;
+    // A small path sits on the path that contains its centre; an invisible one may be a
+    // crescent (a highlight along an edge) whose centre is off it: half its points inside do.
     const Vec2 c{0.5 * (canvas[p].x0 + canvas[p].x1), 0.5 * (canvas[p].y0 + canvas[p].y1)};
+    auto sits_on = [&](int q) {
+      const Path& under = scene.paths[q];
+      if (canvas[q].contains(c) && inside_control_polygons(under, c)) return true;
+      if (!invisible) return false;
+      size_t in = 0, n = 0;
+      for (const Subpath& sp : path.subpaths)
+        for (const Vec2& v : sp.points) in += inside_control_polygons(under, v), ++n;
+      return n > 0 && 2 * in >= n;
+    };
+    // Hosts are visible paths: an invisible one cannot carry what the loss does not see.
+    auto visible = [&](int q) {
+      return opt.attach_invisible_tol < 0 || !invisible_on_white(scene.paths[q], opt.attach_invisible_tol);
+    };
     for (int q = static_cast<int>(p) - 1; q >= 0; --q)
-      if (raster.path_cp_count[q] > 0 && px[q].side() > px[p].side() && canvas[q].contains(c) &&
-          inside_control_polygons(scene.paths[q], c)) {
+      if (raster.path_cp_count[q] > 0 && px[q].side() > px[p].side() && visible(q) &&
+          (small || invisible || px[p].side() < kTinyBesideHost * px[q].side()) && sits_on(q)) {
         host[p] = q;
         break;
       }
@@ -188,7 +225,7 @@ FitPlan plan_fit(const Scene& scene, const RasterPlan& raster, const FitPlanOpti
   // Groups: the scene's, plus one per path that has none, in order of first appearance.
   std::map<int, int> scene_group_to_fit;
   std::vector<int> path_group(scene.paths.size());
-  const std::vector<int> host = small_path_hosts(scene, raster, opt.attach_small_px);
+  const std::vector<int> host = path_hosts(scene, raster, opt);
   for (size_t p = 0; p < scene.paths.size(); ++p) {
     if (host[p] >= 0) {  // hosts are painted earlier, so their group is known
       path_group[p] = path_group[host[p]];

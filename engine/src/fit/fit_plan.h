@@ -24,6 +24,12 @@ struct FitPlanOptions {
   // under it instead of drifting on a homography of its own that the loss barely sees.
   // 0: every such path keeps its own group.
   double attach_small_px = 0;
+  // A path alone in its group that vanishes into a white background (every paint within this
+  // of white, per channel, as the target's mask sees it: a highlight, a glint, teeth) joins
+  // the path it sits on the same way (its centre, or half its points, inside): outside that
+  // path the image loss cannot see it, and on a group of its own it grows there unseen
+  // (octopus: a white highlight 4-5x its size). Negative: off.
+  double attach_invisible_tol = -1;
   // Cohesion pairs: each control point with its nearest other control points (any path,
   // any group) closer than this at rest (pixels); 0: no cohesion term.
   double cohesion_radius_px = 0;

@@ -51,7 +51,11 @@ struct FitOptions {
   float lr_field = 1e-1f;          // Adam learning rate of the field coefficients (pixels)
   // Ungrouped paths smaller than this fraction of the canvas width (both sides of the rest
   // bounding box) move with the path they sit on (FitPlanOptions::attach_small_px); 0: off.
-  double attach_small_frac = 0;
+  double attach_small_frac = 0.025;
+  // Paths alone in their group that vanish on white (within this of white per channel: the
+  // default white threshold's 1 - 0.97) move with the visible path they sit on
+  // (FitPlanOptions::attach_invisible_tol); negative: off.
+  double attach_invisible_tol = 0.03;
   float w_cohesion = 0;            // weight of cohesion (kernels/regularise.cl); 0: off
   double cohesion_radius_frac = 0.015;  // cohesion pairs: rest distance below this x width
   // Keyframe 0 is the rest pose: an image-to-video model starts from the input image, so the
