@@ -152,4 +152,15 @@ TEST_CASE("config: an alias inside its own anchor is refused in one line, not a 
         list.path.string() + ":3: 'stages.video.options' contains itself (a YAML alias inside its own anchor)");
 }
 
+TEST_CASE("config: numbers in free-form options are read as before (strtoll/strtod, not stoll/stod)") {
+  const auto cfg = load_config(std::nullopt, {"stages.video.options={a: +5, b: 1e999, c: 1.5, d: 12abc, e: -7}"});
+  const auto& o = cfg["stages"]["video"]["options"];
+  CHECK(o["a"] == 5);
+  CHECK(o["a"].is_number_integer());
+  CHECK(o["b"] == "1e999");  // out of range: kept as text
+  CHECK(o["c"] == 1.5);
+  CHECK(o["d"] == "12abc");
+  CHECK(o["e"] == -7);
+}
+
 }  // TEST_SUITE
