@@ -55,6 +55,7 @@ else
   # The Slurm batch test may not skip here: its packages were installed above.
   SVGM_REQUIRE_SLURM=1 ctest --test-dir build --output-on-failure -j 2
   # The parsers under libFuzzer (clang, ASan+UBSan): every seed and regression input replayed
-  # once, deterministically (exploratory fuzzing: bash tests/fuzz/run.sh 600, by hand).
-  bash tests/fuzz/run.sh 0
+  # once, then a few seconds of mutation per target from a fixed seed, deterministic for given
+  # sources (exploratory fuzzing: bash tests/fuzz/run.sh 600, by hand).
+  bash tests/fuzz/run.sh fixed
 fi

@@ -101,6 +101,16 @@ fit)
   printf 'not a video' >"$tmp/bad.mp4"
   expect_error "a file that is not a video" "bad.mp4" "$tmp/out2" fit "$data/examples/man.svg" --target "$tmp/bad.mp4" -o "$tmp/out2"
   expect_error "fewer frames than keyframes" "fewer than the 15 keyframes" "$tmp/out3" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out3"
+  # A drawing of over 20,000 segments (20,001 lines and the closing one) is fitted after a
+  # warning that it will be slow (it once fitted at 3 s per iteration without a word). The
+  # missing target stops it right after.
+  awk 'BEGIN { printf "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"64\" height=\"64\"><path d=\"M 0 0";
+               for (i = 1; i <= 20001; i++) printf " L %d %d", i % 64, (i * 7) % 64; print " Z\"/></svg>" }' >"$tmp/many.svg"
+  "$bin" fit "$tmp/many.svg" --target "$tmp/nothere" -o "$tmp/out5" 2>"$tmp/many_err"
+  many_rc=$?
+  check "a fit of 20,002 segments warns that it will be slow" '[[ $many_rc -eq 1 ]] && grep -qx "svgmotion: warning: $tmp/many.svg: 20002 path segments (over 20000): every fitting iteration draws them all, so this fit will be slow; fewer nodes (a simplified drawing) fit faster" "$tmp/many_err" || { cat "$tmp/many_err"; false; }'
+  "$bin" fit "$data/examples/man.svg" --target "$tmp/nothere" -o "$tmp/out5" 2>"$tmp/few_err"
+  check "... and an ordinary drawing does not" '! grep -q "path segments" "$tmp/few_err"'
   # Ctrl-C: the best result so far is written and the exit status says interrupted.
   "$bin" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out4" --iterations 1000000 --keyframes 3 --size 64 --quiet 2>/dev/null &
   pid=$!

@@ -1,16 +1,23 @@
 // Test-only: the known-motion target generator. Moves the groups of a scene we drew by known
-// homographies (the fitter's own motion model) plus a smooth bend, renders every keyframe with
-// our renderer into a folder of PNG frames, so the fitter can be run on it exactly as a user's
-// target and its result compared with the truth.
+// homographies (the fitter's own motion model) plus a smooth bend and draws every keyframe into
+// a folder of PNG frames with the independent rasteriser of supersampled_fill.h (not the
+// engine's renderer, so a bug shared by renderer and fitter cannot make the fit look right),
+// so the fitter can be run on it exactly as on a user's target and its result compared with
+// the truth.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <stdexcept>
 #include <vector>
 
 #include "fit/fit_plan.h"
 #include "fit/motion_model.h"
-#include "raster_test_support.h"
+#include "raster/raster_plan.h"
+#include "supersampled_fill.h"
 #include "svgmotion/png_io.h"
 #include "svgmotion/render_size.h"
 
@@ -27,29 +34,32 @@ inline std::vector<std::vector<double>> write_known_motion(
   const FitPlan fplan = plan_fit(scene, plan, {});
   const Vec2 origin{0.5 * size.width, 0.5 * size.height};
   const double scale = 0.5 * size.width;
+  // Where group g's point p (pixels, at rest) is at keyframe k.
+  auto moved = [&](int k, int g, Vec2 p) {
+    const Vec2 q = apply_motion(motion(k, g), p, origin, scale);
+    return q + bend(k, q);
+  };
   std::filesystem::create_directories(dir);
   std::vector<std::vector<double>> truth;
-  ClRaster r(runtime(), plan, 1);
   for (int k = 0; k < K; ++k) {
+    // The truth in the fitter's layout (its control points); padding stays at 0.
     std::vector<double> cp(plan.rest_cp.size(), 0.0);
-    std::vector<float> cpf(plan.rest_cp.size(), 0.f);
     for (int i = 0; i < plan.n_cp; ++i) {
       if (fplan.cp_group[i] < 0) continue;
-      const Vec2 rest{plan.rest_cp[2 * i], plan.rest_cp[2 * i + 1]};
-      Vec2 q = apply_motion(motion(k, fplan.cp_group[i]), rest, origin, scale);
-      q = q + bend(k, q);
+      const Vec2 q = moved(k, fplan.cp_group[i], {plan.rest_cp[2 * i], plan.rest_cp[2 * i + 1]});
       cp[2 * i] = q.x;
       cp[2 * i + 1] = q.y;
-      cpf[2 * i] = static_cast<float>(q.x);
-      cpf[2 * i + 1] = static_cast<float>(q.y);
     }
     truth.push_back(cp);
-    r.set_control_points(cpf);
-    r.forward(ClRaster::Output::Rgba8, {1, 1, 1, 1});
-    RgbaImage img{size.width, size.height, r.read_rgba8()};
+    // The image from the scene's own paths, moved the same way, drawn independently.
+    const auto outlines = filled_outlines(scene, [&](size_t path, Vec2 p) {
+      const int g = scene.paths[path].group;
+      if (g < 0) throw std::logic_error("write_known_motion: every path needs a group");
+      return moved(k, g, size.view.apply(p));
+    });
     char name[32];
     std::snprintf(name, sizeof name, "%03d.png", k);
-    write_png(dir / name, img);
+    write_png(dir / name, draw_over_white(outlines, size.width, size.height));
   }
   return truth;
 }

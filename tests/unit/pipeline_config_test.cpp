@@ -138,4 +138,29 @@ TEST_CASE("config: nesting beyond yaml-cpp's limit is named as such (yaml-cpp sa
   CHECK(error_of(std::nullopt, {o}) == "override '" + o + "': nested too deeply (more than 500 levels)");
 }
 
+TEST_CASE("config: an alias inside its own anchor is refused in one line, not a stack overflow") {
+  // yaml-cpp links "*a" to the list being built, so the node graph is a cycle (fuzz finding:
+  // tests/fuzz/corpus/config/alias_cycle.yaml).
+  const TempFile f("stages:\n  video:\n    options:\n      a: &a [x, *a]\n");
+  CHECK(error_of(f.path) ==
+        f.path.string() + ":3: 'stages.video.options' contains itself (a YAML alias inside its own anchor)");
+  const std::string o = "stages.video.options={a: &a [*a, *a]}";
+  CHECK(error_of(std::nullopt, {o}) ==
+        "command line '" + o + "': 'stages.video.options' contains itself (a YAML alias inside its own anchor)");
+  const TempFile list("stages:\n  video:\n    options: &o {b: *o}\n");
+  CHECK(error_of(list.path) ==
+        list.path.string() + ":3: 'stages.video.options' contains itself (a YAML alias inside its own anchor)");
+}
+
+TEST_CASE("config: numbers in free-form options are read as before (strtoll/strtod, not stoll/stod)") {
+  const auto cfg = load_config(std::nullopt, {"stages.video.options={a: +5, b: 1e999, c: 1.5, d: 12abc, e: -7}"});
+  const auto& o = cfg["stages"]["video"]["options"];
+  CHECK(o["a"] == 5);
+  CHECK(o["a"].is_number_integer());
+  CHECK(o["b"] == "1e999");  // out of range: kept as text
+  CHECK(o["c"] == 1.5);
+  CHECK(o["d"] == "12abc");
+  CHECK(o["e"] == -7);
+}
+
 }  // TEST_SUITE

@@ -176,6 +176,14 @@ TEST_CASE("style declarations: opacities, percentages, keywords, inherit") {
   CHECK_FALSE(props.has_filter);
   CHECK_FALSE(svg::apply_declaration("fill-opacity", "nan", parent, s, props));
   CHECK_FALSE(svg::apply_declaration("stroke-width", "1e999", parent, s, props));
+  // A finite number in a unit that overflows (fuzz finding: css stroke_width_1e308in).
+  const double width_before = s.stroke_width;
+  CHECK_FALSE(svg::apply_declaration("stroke-width", "1e308in", parent, s, props));
+  CHECK(s.stroke_width == width_before);
+  CHECK_FALSE(svg::apply_declaration("stroke-miterlimit", "1e308in", parent, s, props));
+  CHECK(std::isfinite(s.miter_limit));
+  CHECK(svg::apply_declaration("stroke-width", "1e300in", parent, s, props));  // finite: kept
+  CHECK(s.stroke_width == doctest::Approx(96e300));
   float v = 0;
   CHECK(svg::parse_unit_interval("12.5%", &v));
   CHECK(v == doctest::Approx(0.125));

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <string>
 
 #include "svg/css_color.h"
@@ -72,6 +73,9 @@ bool parse_length_number(std::string_view v, double* out, bool* bad) {
   else if (unit == "em") scale = 16;
   else if (unit == "ex") scale = 8;
   else return false;
+  // 1e308in is a finite number but not a finite length: refused like an overflow (as
+  // svg_reader.cpp does for attribute lengths), never kept as an infinite stroke width.
+  if (!std::isfinite(*n * scale)) { *bad = true; return false; }
   *out = *n * scale;
   return true;
 }
