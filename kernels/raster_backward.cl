@@ -240,7 +240,10 @@ inline void backward_span(__local float* acc, __local uchar* mark, __local float
     mark[x] = 0;
     float2 g = (float2)(0.0f);
     if (marked || is_fractional(s, rule)) {
-      if (*tp < cap) {
+      /* Where the draws in front are opaque (T = 0) the pixel's colour does not depend on
+       * this draw: g is 0 exactly, without the 25-tap ∂L/∂C (whose reads of E' and R miss the
+       * cache; in a layered scene most of the lower draws' edges are hidden). */
+      if (*tp < cap && T[x] != 0.0f) {
         const float3 dC = blurred_gradient(E, ext_e, R, x, row, width, height, scale);
         const float ga = dot(dC, T[x] * (color.xyz - tape[*tp].xyz));
         g = ga * color.w * fill_rule_slopes(s, rule);

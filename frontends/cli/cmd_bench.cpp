@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "cli/bench_fit.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "opencl/runtime.h"
@@ -197,7 +198,8 @@ int cmd_bench(const std::vector<std::string>& argv) {
   const std::vector<std::string> rest(argv.begin() + 1, argv.end());
   if (argv[0] == "render") return bench_render(rest);
   if (argv[0] == "raster") return bench_raster(rest);
-  throw Error("bench: unknown benchmark '" + argv[0] + "' (available: render, raster)");
+  if (argv[0] == "fit") return bench_fit(rest);
+  throw Error("bench: unknown benchmark '" + argv[0] + "' (available: render, raster, fit)");
 }
 
 }  // namespace svgm::cli

@@ -74,6 +74,14 @@ bench)
   must "$bin" bench render "$data/examples/man.svg" --frames 3 --size 64 --repeat 2 --json >"$tmp/b.json" 2>"$tmp/err"
   check "bench render --json prints one JSON object with the promised keys" \
     '[[ $(grep -c "" "$tmp/b.json") -eq 1 ]] && grep -q "^{.*}$" "$tmp/b.json" && grep -Eq "\"ms_per_frame\": [0-9.]+" "$tmp/b.json" && grep -Eq "\"peak_rss_mb\": [0-9.]+" "$tmp/b.json" && grep -q "\"device\": \"" "$tmp/b.json"'
+  # bench fit: the fitter's schedule on a 3-frame target at 64 px, timed.
+  mkdir -p "$tmp/bf"
+  for i in 0 1 2; do must "$bin" render "$data/examples/man.svg" -o "$tmp/bf/$i.png" --size 64 2>/dev/null; done
+  must "$bin" bench fit "$data/examples/man.svg" --target "$tmp/bf" --iterations 12 --keyframes 3 --size 64 --json >"$tmp/f.json" 2>"$tmp/err"
+  check "bench fit --json runs the asked iterations and reports CPU time per iteration" \
+    '[[ $(grep -c "" "$tmp/f.json") -eq 1 ]] && grep -q "\"iterations\": 12," "$tmp/f.json" && grep -q "\"keyframes\": 3," "$tmp/f.json" && grep -Eq "\"cpu_ms_per_iteration\": [0-9.]+" "$tmp/f.json" && grep -Eq "\"peak_rss_mb\": [0-9.]+" "$tmp/f.json"'
+  expect_error "bench fit without a target names the option" "bench fit: --target VIDEO is required" "$tmp/none" \
+    bench fit "$data/examples/man.svg"
   ;;
 fit)
   # A small target: the example rendered at 64 px into a folder of 4 frames.

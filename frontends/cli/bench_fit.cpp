@@ -1,0 +1,92 @@
+// `svgmotion bench fit IN.svg --target VIDEO`: the fitter's speed at the fit's defaults (or the
+// given iterations, keyframes and size), without the outputs a fit writes. Times the setup
+// (target loading, planning, kernel build) and the iterations apart, and reports the
+// iterations' wall time and CPU time (user + sys of every thread: PoCL's workers included,
+// the comparable figure on a shared machine), milliseconds per iteration and peak memory.
+// Progressive activation makes early iterations cheaper than late ones, so only a whole
+// schedule (--iterations N runs the fit's schedule for N) compares with another.
+#include "cli/bench_fit.h"
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "cli/cli_args.h"
+#include "fit/fitter.h"
+#include "opencl/runtime.h"
+#include "svgmotion/error.h"
+#include "svgmotion/render_size.h"
+#include "svgmotion/svg_reader.h"
+#include "svgmotion/target_video.h"
+
+namespace svgm::cli {
+
+namespace {
+
+double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+double peak_rss_mb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss / 1024.0;  // Linux reports kilobytes
+}
+
+}  // namespace
+
+int bench_fit(const std::vector<std::string>& argv) {
+  const Args a = parse_args("bench fit", argv, {"--target", "--iterations", "--keyframes", "--size", "--device"},
+                            {"--json"});
+  if (a.positional.size() != 1) throw Error("bench fit: expected one input SVG");
+  const auto target_path = a.get("--target");
+  if (!target_path) throw Error("bench fit: --target VIDEO is required (a video or a folder of frames)");
+  FitOptions fo;
+  fo.iterations = a.get_int("--iterations", fo.iterations, 1, 10000000);
+  const int keyframes = a.get_int("--keyframes", 15, 2, 1000);
+  const int width = a.get_int("--size", 256, 32, 4096);
+  const auto t0 = std::chrono::steady_clock::now();
+  const double c0 = cpu_seconds();
+  const Scene scene = read_svg_file(a.positional[0]);
+  if (scene.paths.empty()) throw Error(a.positional[0] + ": nothing to animate (no visible paths)");
+  const RenderSize size = render_size(scene, width);
+  TargetOptions to;
+  to.keyframes = keyframes;
+  const TargetFrames target = load_target(*target_path, size.width, size.height, to);
+  ClRuntime rt(a.get("--device").value_or("auto"));
+  Fitter fitter(rt, scene, target, fo);
+  const auto t1 = std::chrono::steady_clock::now();
+  const double c1 = cpu_seconds();
+  LossTerms loss;
+  while (!fitter.done()) loss = fitter.step();
+  const auto t2 = std::chrono::steady_clock::now();
+  const double c2 = cpu_seconds();
+  const double setup_s = std::chrono::duration<double>(t1 - t0).count();
+  const double wall_s = std::chrono::duration<double>(t2 - t1).count();
+  const double cpu_s = c2 - c1;
+  const int n = fitter.iteration();
+  const RasterPlan& plan = fitter.raster_plan();
+  if (a.has("--json")) {
+    std::printf("{\"svg\": \"%s\", \"paths\": %zu, \"lines\": %d, \"size\": [%d, %d], \"keyframes\": %d, "
+                "\"iterations\": %d, \"setup_s\": %.3f, \"wall_s\": %.3f, \"cpu_s\": %.3f, "
+                "\"ms_per_iteration\": %.3f, \"cpu_ms_per_iteration\": %.3f, \"loss\": %.6g, "
+                "\"peak_rss_mb\": %.1f, \"device\": \"%s\"}\n",
+                a.positional[0].c_str(), scene.paths.size(), plan.n_lines, size.width, size.height, keyframes,
+                n, setup_s, wall_s, cpu_s, 1e3 * wall_s / n, 1e3 * cpu_s / n, loss.total(), peak_rss_mb(),
+                rt.info().name.c_str());
+  } else {
+    std::printf("%s: %zu paths, %d lines, %dx%d, %d keyframes, %d iterations\n", a.positional[0].c_str(),
+                scene.paths.size(), plan.n_lines, size.width, size.height, keyframes, n);
+    std::printf("  setup %.2f s (target, plan, kernels; CPU %.2f s)\n", setup_s, c1 - c0);
+    std::printf("  iterations: wall %.2f s, CPU %.2f s (%.2f ms, CPU %.2f ms per iteration), final loss %.5g\n",
+                wall_s, cpu_s, 1e3 * wall_s / n, 1e3 * cpu_s / n, loss.total());
+    std::printf("  peak memory %.1f MB; device: %s\n", peak_rss_mb(), rt.info().name.c_str());
+  }
+  return 0;
+}
+
+}  // namespace svgm::cli
