@@ -24,7 +24,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
                             {"--target", "-o", "--output", "--iterations", "--keyframes", "--size",
                              "--palette", "--device", "--mask-threshold", "--loop", "--deform", "--refine-size",
                              "--precision", "--inbetweens"},
-                            {"--resume", "--no-track", "--quiet", "--no-gate", "--no-colour-correction"});
+                            {"--resume", "--no-track", "--quiet", "--no-gate", "--no-colour-correction", "--group-transforms"});
   if (a.positional.size() != 1)
     throw Error("fit: expected one input SVG (svgmotion fit IN.svg --target VIDEO -o OUT_DIR)");
   FitJob job;
@@ -49,6 +49,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
   job.colour_correction = !a.has("--no-colour-correction");
   job.decimals = a.get_int("--precision", kDefaultDecimals, 0, kMaxDecimals);
   job.inbetweens = a.get_int("--inbetweens", job.inbetweens, 0, kMaxInbetweens);
+  job.group_transforms = a.has("--group-transforms");
   if (const auto p = a.get("--palette")) job.palette = *p;
   job.mask_threshold = a.get_double("--mask-threshold", job.mask_threshold);
   job.resume = a.has("--resume");

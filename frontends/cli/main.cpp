@@ -85,6 +85,8 @@ Fits the SVG's paths to a target video (mp4, webm, avi, mov, or a folder of numb
   --precision P          decimal places of the exported coordinates (default 3; 0..6)
   --inbetweens N         smooth in-between shapes per keyframe interval (default 3; 0..16;
                          0 leaves them to the player's straight lines: smallest files)
+  --group-transforms     each part's motion, where affine, as <animateTransform> elements
+                         (translate, rotate, skewX, scale) and its paths' shapes in its frame
   --no-gate              write animation.svg even when the result gate rejects the fit
   --resume               continue from OUT_DIR/checkpoint.bin
   --no-track             no optical-flow warm start of new keyframes

@@ -17,6 +17,7 @@
 #include "export/lottie_writer.h"
 #include "fit/checkpoint.h"
 #include "fit/document_order.h"
+#include "fit/group_transform.h"
 #include "fit/inbetween.h"
 #include "fit/result_gate.h"
 #include "fit/palette.h"
@@ -334,8 +335,16 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   wt.keyframes = static_cast<int>(written.times.size());
   wt.key_times = written.times;
   wt.close_loop = false;  // in_between already wrote the first keyframe's shape last
+  std::optional<GroupMotionExport> group_motion;
+  if (job.group_transforms) {
+    group_motion = group_motion_export(final_fit.fit_plan(), final_fit.raster_plan(), final_fit.state().params,
+                                       timing.keyframes, final_size.view, final_size.width, final_size.height,
+                                       timing.key_times, frame_times, job.inbetweens, timing.close_loop, written.times);
+    for (const std::string& b : group_motion->baked) std::fprintf(stderr, "svgmotion: warning: group %s\n", b.c_str());
+  }
   for (const auto& w : write_animation_svg(into, export_scene ? *export_scene : scene, final_fit.raster_plan(), written.points,
-                                           wt, anim, export_scene ? &map : nullptr, job.decimals)) {
+                                           wt, anim, export_scene ? &map : nullptr, job.decimals,
+                                           group_motion ? &group_motion->paths : nullptr)) {
     std::string line = w;
     if (!job.export_name.empty() && line.rfind(into.string(), 0) == 0)
       line = job.export_name + line.substr(into.string().size());
@@ -376,6 +385,10 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                            {"gate", gate_json(verdict, gate_options)},
                            {"device", rt.info().name}};
   if (!map.order.empty()) report["paint_order_applied"] = true;
+  if (group_motion)
+    report["group_transforms"] = {{"groups", final_fit.fit_plan().n_groups},
+                                  {"as_transforms", group_motion->transform_groups},
+                                  {"baked", group_motion->baked}};
   report["target_frames"] = {{"held", target.held_frames}, {"colour_corrected_keyframes", final_target.colour_corrected}};
   if (fine) report["refined"] = {{"size", {W, H}}, {"iterations", final_fit.iteration()}, {"from_size", {size.width, size.height}}};
   write_file_atomic(out / "fit.json", report.dump(2) + "\n");
