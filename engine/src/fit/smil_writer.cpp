@@ -247,10 +247,23 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
     const std::vector<TransformParts> parts =
         moving ? local_motion(*motion, f, path.to_canvas, decimals) : std::vector<TransformParts>{};
     std::vector<std::string> shapes;
+    // How far the residual moves from the first value's (element units): with none beyond the
+    // last written place (float noise of the motion can flip a rounding), no <animate> is needed.
+    double residual_motion = 0;
+    const size_t count = static_cast<size_t>(plan.path_cp_count[static_cast<size_t>(f)]);
     for (int v = 0; v < timing.keyframes; ++v) {
       const Affine to_local = moving ? (path.to_canvas * compose_affine(parts[static_cast<size_t>(v)])).inverse()
                                      : path.to_canvas.inverse();
-      shapes.push_back(path_data(path, &points[(static_cast<size_t>(v) * plan.n_cp + first) * 2], to_local, decimals));
+      const double* cp = &points[(static_cast<size_t>(v) * plan.n_cp + first) * 2];
+      shapes.push_back(path_data(path, cp, to_local, decimals));
+      if (moving && v > 0) {
+        const Affine to_local0 = (path.to_canvas * compose_affine(parts[0])).inverse();
+        const double* cp0 = &points[first * 2];
+        for (size_t i = 0; i < count; ++i) {
+          const Vec2 d = to_local.apply({cp[2 * i], cp[2 * i + 1]}) - to_local0.apply({cp0[2 * i], cp0[2 * i + 1]});
+          residual_motion = std::max({residual_motion, std::fabs(d.x), std::fabs(d.y)});
+        }
+      }
     }
     std::string values;
     for (size_t i = 0; i < seq.size(); ++i) {
@@ -258,7 +271,7 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
       values += shapes[static_cast<size_t>(seq[i])];
     }
     // A residual that does not change at the written precision needs no <animate>.
-    const bool still = moving && std::all_of(shapes.begin(), shapes.end(), [&](const std::string& s) { return s == shapes[0]; });
+    const bool still = moving && residual_motion <= std::pow(10.0, -decimals);
     if (tag != "path") {
       // Only <path> has a `d`: turn the shape into one, keeping id, paint and transform.
       for (const char* a : kShapeGeometry) el.remove_attribute(a);
