@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "fit/fit_job.h"
 #include "svgmotion/error.h"
+#include "svgmotion/log.h"
 
 namespace svgm::cli {
 
@@ -24,7 +25,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
                             {"--target", "-o", "--output", "--iterations", "--keyframes", "--size",
                              "--palette", "--device", "--mask-threshold", "--loop", "--deform", "--refine-size",
                              "--precision", "--inbetweens"},
-                            {"--resume", "--no-track", "--quiet", "--no-gate", "--no-colour-correction", "--group-transforms"});
+                            {"--resume", "--no-track", "--no-gate", "--no-colour-correction", "--group-transforms"});
   if (a.positional.size() != 1)
     throw Error("fit: expected one input SVG (svgmotion fit IN.svg --target VIDEO -o OUT_DIR)");
   FitJob job;
@@ -53,7 +54,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
   if (const auto p = a.get("--palette")) job.palette = *p;
   job.mask_threshold = a.get_double("--mask-threshold", job.mask_threshold);
   job.resume = a.has("--resume");
-  job.quiet = a.has("--quiet");
+  job.quiet = log::quiet();
   job.device = a.get("--device").value_or("auto");
   g_interrupted = 0;
   std::signal(SIGINT, on_sigint);

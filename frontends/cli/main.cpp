@@ -11,6 +11,7 @@
 
 #include "cli/commands.h"
 #include "svgmotion/error.h"
+#include "svgmotion/log.h"
 
 namespace {
 
@@ -34,6 +35,8 @@ usage:
   svgmotion help | --version | CMD --help
 
 --device picks the OpenCL device: auto (default), cpu, gpu, or part of its name.
+Every command takes --verbose (-v: debug lines too) and --quiet (-q: warnings and errors
+only; twice: errors only). `run` also appends every line, debug included, to RUN_DIR/log.txt.
 Exit status: 0 done, 1 error (one line says what), 2 usage, 3 the fit was rejected by the
 result gate (animation.failed.svg written instead of animation.svg), 4 every candidate video
 was flagged by the ranker (run stopped before fitting), 130 interrupted.
@@ -180,6 +183,29 @@ int main(int argc, char** argv) {
   }
   const std::string cmd = args[0];
   args.erase(args.begin());
+  // The global levels (svgmotion/log.h), anywhere after the command; a command never sees them.
+  {
+    std::string line = "svgmotion";
+    for (int i = 1; i < argc; ++i) line += std::string(" ") + argv[i];
+    svgm::log::set_command_line(line);
+    int quiet = 0, verbose = 0;
+    std::vector<std::string> rest;
+    for (const std::string& a : args) {
+      if (a == "--quiet" || a == "-q") ++quiet;
+      else if (a == "-qq") quiet += 2;
+      else if (a == "--verbose" || a == "-v") ++verbose;
+      else rest.push_back(a);
+    }
+    if (quiet && verbose) {
+      std::fputs("svgmotion: --quiet and --verbose contradict each other\n", stderr);
+      return 2;
+    }
+    svgm::log::set_console_level(verbose ? svgm::log::Level::Debug
+                                 : quiet >= 2 ? svgm::log::Level::Error
+                                 : quiet ? svgm::log::Level::Warning
+                                         : svgm::log::Level::Info);
+    args = std::move(rest);
+  }
   for (const std::string& a : args)
     if (a == "--help" || a == "-h") {
       if (const char* h = command_help(cmd)) return std::fputs(h, stdout), 0;
@@ -197,13 +223,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "svgmotion: unknown command '%s' (try svgmotion help)\n", cmd.c_str());
     return 2;
   } catch (const svgm::Rejected& e) {
-    std::fprintf(stderr, "svgmotion: %s\n", e.what());
+    svgm::log::error("%s", e.what());
     return e.exit_status();
   } catch (const svgm::Error& e) {
-    std::fprintf(stderr, "svgmotion: %s\n", e.what());
+    svgm::log::error("%s", e.what());
     return 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "svgmotion: internal error: %s\n", e.what());
+    svgm::log::error("internal error: %s", e.what());
     return 1;
   }
 }

@@ -17,6 +17,9 @@ constexpr int kParts = 6;          // numbers of a TransformParts
 constexpr double kRadToDeg = 180.0 / M_PI;
 // A scale below this (canvas units per unit) is a collapsed group: no inverse for the residual.
 constexpr double kMinScale = 1e-6;
+// Points per side of the grid an affine map is fitted through (group_affine): 5 x 5 sees the
+// curvature a homography has between the corners.
+constexpr int kGrid = 5;
 
 void to_numbers(const TransformParts& p, double* out) {
   out[0] = p.tx, out[1] = p.ty, out[2] = p.rotate_deg, out[3] = p.skew_x_deg, out[4] = p.sx, out[5] = p.sy;
@@ -49,18 +52,50 @@ double unwrap_degrees(double deg, double previous) { return deg + 360.0 * std::r
 
 GroupAffine group_affine(const MotionParams& th, Vec2 origin, double scale, const Affine& view, double x0,
                          double y0, double x1, double y1) {
-  // The motion model's steps (kernels/motion.cl) without the projective division, in the
-  // normalised units n = (x - o) / s: f = T(c + t) R Sh S T(-c) n.
-  const double cs = std::cos(th[2]), sn = std::sin(th[2]);
-  const Affine normalised = Affine::translate(th[9] + th[0], th[10] + th[1]) * Affine{cs, sn, -sn, cs, 0, 0} *
-                            Affine{1, th[6], th[5], 1, 0, 0} * Affine::scale(th[3], th[4]) *
-                            Affine::translate(-th[9], -th[10]);
-  const Affine pixels = Affine::translate(origin.x, origin.y) * Affine::scale(scale, scale) * normalised *
-                        Affine::scale(1 / scale, 1 / scale) * Affine::translate(-origin.x, -origin.y);
+  // The least-squares affine map through the homography's images of a grid over the box. Not
+  // the homography with its bottom row dropped: the motion model's w = 1 + p.f grows with the
+  // distance from the canvas centre, so a small perspective far from the centre is mostly a
+  // translation and scale the affine map should carry, not a deviation.
+  std::vector<Vec2> from, to;
+  for (int j = 0; j < kGrid; ++j)
+    for (int i = 0; i < kGrid; ++i) {
+      const Vec2 x{x0 + (x1 - x0) * i / (kGrid - 1), y0 + (y1 - y0) * j / (kGrid - 1)};
+      from.push_back(x);
+      to.push_back(apply_motion(th, x, origin, scale));
+    }
+  // Normal equations in coordinates relative to the box centre (well conditioned), one 3 x 3
+  // system shared by both output coordinates: [u v 1] (a, c, e) = x', [u v 1] (b, d, f) = y'.
+  const Vec2 mid{0.5 * (x0 + x1), 0.5 * (y0 + y1)};
+  double m[3][3] = {}, rx[3] = {}, ry[3] = {};
+  for (size_t k = 0; k < from.size(); ++k) {
+    const double r[3] = {from[k].x - mid.x, from[k].y - mid.y, 1};
+    for (int a = 0; a < 3; ++a) {
+      for (int b = 0; b < 3; ++b) m[a][b] += r[a] * r[b];
+      rx[a] += r[a] * to[k].x;
+      ry[a] += r[a] * to[k].y;
+    }
+  }
+  // The grid is symmetric about its centre, so the system is diagonal apart from the (u, v)
+  // block: m[0][2] = m[1][2] = 0 (and m[0][1] = 0 too, but solve the block generally).
+  const double det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
   GroupAffine g;
+  if (!(std::fabs(det) > 0) || !(m[2][2] > 0)) {  // a box of no area: translation only
+    const Vec2 d = apply_motion(th, mid, origin, scale) - mid;
+    g.canvas = view.inverse() * Affine::translate(d.x, d.y) * view;
+    return g;
+  }
+  auto solve = [&](const double* rhs, double* out) {
+    out[0] = (rhs[0] * m[1][1] - m[0][1] * rhs[1]) / det;
+    out[1] = (m[0][0] * rhs[1] - m[1][0] * rhs[0]) / det;
+    out[2] = rhs[2] / m[2][2];
+  };
+  double px[3], py[3];
+  solve(rx, px);
+  solve(ry, py);
+  const Affine pixels = Affine{px[0], py[0], px[1], py[1], px[2], py[2]} * Affine::translate(-mid.x, -mid.y);
   g.canvas = view.inverse() * pixels * view;
-  for (const Vec2 corner : {Vec2{x0, y0}, Vec2{x1, y0}, Vec2{x0, y1}, Vec2{x1, y1}}) {
-    const Vec2 d = apply_motion(th, corner, origin, scale) - pixels.apply(corner);
+  for (size_t k = 0; k < from.size(); ++k) {
+    const Vec2 d = to[k] - pixels.apply(from[k]);
     const double dist = std::hypot(d.x, d.y);
     g.projective_px = std::max(g.projective_px, std::isfinite(dist) ? dist : std::numeric_limits<double>::infinity());
   }

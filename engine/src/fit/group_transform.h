@@ -35,15 +35,15 @@ Affine compose_affine(const TransformParts& p);
 // `deg` plus the multiple of 360 that brings it within 180 of `previous`.
 double unwrap_degrees(double deg, double previous);
 
-// A homography counts as affine when its projective part moves no corner of its group's
-// bounding box by more than this (pixels at the fitting size): half a pixel, below what the fit
-// resolves. The residual absorbs the difference exactly at the written times either way.
+// A homography counts as affine when it departs from its best affine map by no more than this
+// anywhere on its group's bounding box (pixels at the fitting size): half a pixel, below what
+// the fit resolves. The residual absorbs the difference exactly at the written times either way.
 constexpr double kAffineTolerancePx = 0.5;
 
-// The affine part of the motion model's homography `th` (motion_model.h) in canvas space
+// The affine map closest to the motion model's homography `th` (motion_model.h) over the pixel
+// box (x0, y0)-(x1, y1) (least squares through a 5 x 5 grid of its points), in canvas space
 // (`view` maps canvas to the fitting pixels, `origin` and `scale` as the motion model's), and
-// the largest distance in pixels between the homography and that affine map over the corners
-// of the pixel box (x0, y0)-(x1, y1).
+// the largest distance in pixels between the two on that grid.
 struct GroupAffine {
   Affine canvas;
   double projective_px = 0;
