@@ -94,13 +94,14 @@ TEST_CASE("group_affine: the homography's affine part in canvas space and its pe
   const double bent = group_affine(persp, {50, 50}, 50, Affine{}, 0, 0, 100, 100).projective_px;
   CHECK(bent > kAffineTolerancePx);
   CHECK(bent < 50 * std::sqrt(2.0) / 9);
-  // The same perspective over a 1-pixel box near the corner (n = (0.8, 0.8), w = 1.08) is, to
-  // first order, an affine map: a translation and scale by 1/w, which the fitted map carries
-  // (dropping the bottom row would be 4 px off there). The curvature left is second order in
-  // the box size: 0.1 * (1/50)^2 * 50 = 0.002 px at most.
+  // The same perspective over a 1-pixel box near the corner (centre n = (0.81, 0.81),
+  // w = 1.081) is, to first order, the affine map of its Jacobian, which the fitted map
+  // carries (dropping the bottom row would be 4 px off there): x' = n.x / w has the column
+  // (1, -0.1 n.y) / w^2, so sx = sqrt(1 + 0.081^2) / 1.081^2 = 0.8586. The curvature left is
+  // second order in the box size: 0.1 * (1/50)^2 * 50 = 0.002 px at most.
   const GroupAffine small = group_affine(persp, {50, 50}, 50, Affine{}, 90, 90, 91, 91);
   CHECK(small.projective_px < 2e-3);
-  CHECK(decompose_affine(small.canvas).sx == doctest::Approx(1 / 1.08).epsilon(0.01));
+  CHECK(decompose_affine(small.canvas).sx == doctest::Approx(std::sqrt(1 + 0.081 * 0.081) / (1.081 * 1.081)).epsilon(1e-3));
 }
 
 TEST_CASE("group transforms export: hand-computed transform values, shapes equal to the baked export at every keyframe") {
@@ -124,12 +125,13 @@ TEST_CASE("group transforms export: hand-computed transform values, shapes equal
   const int arm = fplan.cp_group[static_cast<size_t>(plan.path_cp_first[0])];
   // The arm: identity; rotate 30 and scale 2 about the centre, moved (10, -5); rotate 190
   // (written as -170 by atan2: the export must unwrap it to 190, not spin back through 0).
-  // The lone path: perspective 0.1 at keyframe 1, so it stays baked.
+  // The lone path: perspective 0.6 at keyframe 1 (over its 20-pixel box, far from affine), so
+  // it stays baked.
   std::vector<MotionParams> th(K * G, identity_params());
   th[1 * G + arm][0] = 0.2, th[1 * G + arm][1] = -0.1, th[1 * G + arm][2] = 30 * kDeg;
   th[1 * G + arm][3] = th[1 * G + arm][4] = 2;
   th[2 * G + arm][2] = 190 * kDeg;
-  th[1 * G + (1 - arm)][7] = 0.1;
+  th[1 * G + (1 - arm)][7] = 0.6;
   std::vector<float> params;
   for (const MotionParams& t : th) params.insert(params.end(), t.begin(), t.end());
   // Canvas points: each group's motion, and path a also moves by 1 pixel to the right within the
