@@ -168,22 +168,7 @@ int main(int argc, char** argv) {
   setenv("OPENCV_LOG_LEVEL", "SILENT", 0);
   setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);  // AV_LOG_QUIET
   std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty() || args[0] == "--help" || args[0] == "-h" || (args[0] == "help" && args.size() == 1)) {
-    std::fputs(kUsage, args.empty() ? stderr : stdout);
-    return args.empty() ? 2 : 0;
-  }
-  if (args[0] == "--version" || args[0] == "version") {
-    std::printf("svgmotion %s\n", SVGM_VERSION);
-    return 0;
-  }
-  if (args[0] == "help") {  // svgmotion help CMD
-    if (const char* h = command_help(args[1])) return std::fputs(h, stdout), 0;
-    std::fprintf(stderr, "svgmotion: unknown command '%s' (try svgmotion help)\n", args[1].c_str());
-    return 2;
-  }
-  const std::string cmd = args[0];
-  args.erase(args.begin());
-  // The global levels (svgmotion/log.h), anywhere after the command; a command never sees them.
+  // The global levels (svgmotion/log.h), before or after the command; a command never sees them.
   {
     std::string line = "svgmotion";
     for (int i = 1; i < argc; ++i) line += std::string(" ") + argv[i];
@@ -206,6 +191,21 @@ int main(int argc, char** argv) {
                                          : svgm::log::Level::Info);
     args = std::move(rest);
   }
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || (args[0] == "help" && args.size() == 1)) {
+    std::fputs(kUsage, args.empty() ? stderr : stdout);
+    return args.empty() ? 2 : 0;
+  }
+  if (args[0] == "--version" || args[0] == "version") {
+    std::printf("svgmotion %s\n", SVGM_VERSION);
+    return 0;
+  }
+  if (args[0] == "help") {  // svgmotion help CMD
+    if (const char* h = command_help(args[1])) return std::fputs(h, stdout), 0;
+    std::fprintf(stderr, "svgmotion: unknown command '%s' (try svgmotion help)\n", args[1].c_str());
+    return 2;
+  }
+  const std::string cmd = args[0];
+  args.erase(args.begin());
   for (const std::string& a : args)
     if (a == "--help" || a == "-h") {
       if (const char* h = command_help(cmd)) return std::fputs(h, stdout), 0;

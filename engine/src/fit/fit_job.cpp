@@ -169,6 +169,11 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   const int total_iters = fo.iterations;
   ClRuntime rt(job.device);
   Fitter fitter(rt, fit_scene, target, coarse_options);
+  log::debug("fit: %s: %d keyframes of %d frames (%.3g fps) at %dx%d; %d paths in %d groups, %d control points; "
+             "%d iterations on %s",
+             target_path->c_str(), target.keyframes, target.source_frames, target.fps, size.width, size.height,
+             static_cast<int>(fit_scene.paths.size()), fitter.fit_plan().n_groups, fitter.raster_plan().n_cp,
+             coarse_options.iterations, rt.info().name.c_str());
   if (job.tracks) {
     auto flows = read_tracks(*job.tracks);
     if (flows.size() == static_cast<size_t>(target.keyframes)) fitter.set_flows(std::move(flows));
@@ -296,6 +301,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     fine_options.iterations = refine_iters;
     fine = std::make_unique<Fitter>(rt, fit_scene, *fine_target, fine_options);
     fine->adopt_coarse(fitter, static_cast<double>(fine_size.width) / size.width);
+    log::debug("fit: refining every keyframe at %dx%d for %d iterations", fine_size.width, fine_size.height,
+               refine_iters);
     run_stage(*fine, coarse_options.iterations, false);
   }
   Fitter& final_fit = fine ? *fine : fitter;
