@@ -14,6 +14,7 @@
 #include "cli/commands.h"
 #include "pipeline/batch.h"
 #include "svgmotion/error.h"
+#include "svgmotion/log.h"
 
 namespace svgm::cli {
 
@@ -27,7 +28,7 @@ extern "C" void on_batch_signal(int) { g_stop = 1; }
 }  // namespace
 
 int cmd_batch(const std::vector<std::string>& argv) {
-  const Args a = parse_args("batch", argv, {"-o", "--output", "--shard", "--device"}, {"--pin", "--quiet"});
+  const Args a = parse_args("batch", argv, {"-o", "--output", "--shard", "--device"}, {"--pin"});
   std::optional<fs::path> manifest, config;
   std::vector<std::string> overrides;
   for (const std::string& p : a.positional) {
@@ -54,7 +55,7 @@ int cmd_batch(const std::vector<std::string>& argv) {
   if (ec) throw Error("batch: cannot find the svgmotion binary (/proc/self/exe): " + ec.message());
   setenv("SVGMOTION_PIN", a.has("--pin") ? "1" : "0", 0);  // for the items' runs; the user's wins
 
-  const bool quiet = a.has("--quiet");
+  const bool quiet = log::quiet();
   o.say = [quiet](const std::string& line) {
     if (!quiet) std::printf("batch: %s\n", line.c_str()), std::fflush(stdout);
   };
@@ -69,12 +70,12 @@ int cmd_batch(const std::vector<std::string>& argv) {
 
   const std::string where = (o.out_dir / "summary.csv").string();
   if (r.interrupted) {
-    std::fprintf(stderr, "svgmotion: batch interrupted; %d of %d items of shard %s done (see %s; run again to resume)\n",
+    log::error("batch interrupted; %d of %d items of shard %s done (see %s; run again to resume)",
                  r.done, r.items, o.shard.name().c_str(), where.c_str());
     return 130;
   }
   if (r.not_done > 0) {
-    std::fprintf(stderr, "svgmotion: batch: %d of %d items of shard %s not done (see %s)\n", r.not_done, r.items,
+    log::error("batch: %d of %d items of shard %s not done (see %s)", r.not_done, r.items,
                  o.shard.name().c_str(), where.c_str());
     return 1;
   }

@@ -20,6 +20,7 @@
 #include "raster/raster_plan.h"
 #include "scene/synthetic_scene.h"
 #include "svgmotion/error.h"
+#include "svgmotion/log.h"
 #include "svgmotion/render_size.h"
 #include "svgmotion/svg_reader.h"
 
@@ -126,7 +127,7 @@ IterationTimes time_iteration(ClRuntime& rt, const Scene& scene, int width, int 
     r.loss_and_gradient(1000.0f, white);  // returns after reading the loss: the device is done
     tot.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }
-  if (r.tape_overflow()) std::fprintf(stderr, "svgmotion: warning: backward tape overflowed\n");
+  if (r.tape_overflow()) log::warning("backward tape overflowed");
   if (rt.profiling())  // device time of each kernel in the last iteration
     for (const auto& [name, t] : r.kernel_times()) std::fprintf(stderr, "  %-18s %.3f ms\n", name.c_str(), t);
   return {median(fwd), median(tot), plan.n_lines};

@@ -11,6 +11,7 @@
 #include "cli/commands.h"
 #include "fit/fit_job.h"
 #include "svgmotion/error.h"
+#include "svgmotion/log.h"
 #include "svgmotion/svg_reader.h"
 
 namespace svgm::cli {
@@ -31,9 +32,8 @@ constexpr size_t kSlowFitSegments = 20000;
 void warn_if_slow(const std::string& svg) {
   const size_t segments = read_svg_file(svg).segment_count();
   if (segments > kSlowFitSegments)
-    std::fprintf(stderr,
-                 "svgmotion: warning: %s: %zu path segments (over %zu): every fitting iteration draws them "
-                 "all, so this fit will be slow; fewer nodes (a simplified drawing) fit faster\n",
+    log::warning("%s: %zu path segments (over %zu): every fitting iteration draws them "
+                 "all, so this fit will be slow; fewer nodes (a simplified drawing) fit faster",
                  svg.c_str(), segments, kSlowFitSegments);
 }
 
@@ -44,7 +44,8 @@ int cmd_fit(const std::vector<std::string>& argv) {
                             {"--target", "-o", "--output", "--iterations", "--keyframes", "--size",
                              "--palette", "--device", "--mask-threshold", "--loop", "--deform", "--refine-size",
                              "--precision", "--inbetweens"},
-                            {"--resume", "--no-track", "--quiet", "--no-gate", "--no-colour-correction", "--stabilise"});
+                            {"--resume", "--no-track", "--no-gate", "--no-colour-correction", "--stabilise",
+                             "--group-transforms"});
   if (a.positional.size() != 1)
     throw Error("fit: expected one input SVG (svgmotion fit IN.svg --target VIDEO -o OUT_DIR)");
   FitJob job;
@@ -70,10 +71,11 @@ int cmd_fit(const std::vector<std::string>& argv) {
   job.stabilise = a.has("--stabilise");
   job.decimals = a.get_int("--precision", kDefaultDecimals, 0, kMaxDecimals);
   job.inbetweens = a.get_int("--inbetweens", job.inbetweens, 0, kMaxInbetweens);
+  job.group_transforms = a.has("--group-transforms");
   if (const auto p = a.get("--palette")) job.palette = *p;
   job.mask_threshold = a.get_double("--mask-threshold", job.mask_threshold);
   job.resume = a.has("--resume");
-  job.quiet = a.has("--quiet");
+  job.quiet = log::quiet();
   job.device = a.get("--device").value_or("auto");
   warn_if_slow(job.svg);
   g_interrupted = 0;

@@ -18,6 +18,7 @@
 #include "opencl/runtime.h"
 #include "raster/render_image.h"
 #include "svgmotion/error.h"
+#include "svgmotion/log.h"
 #include "svgmotion/png_io.h"
 #include "svgmotion/svg_reader.h"
 
@@ -63,7 +64,7 @@ int cmd_render(const std::vector<std::string>& argv) {
   if (a.has("--time") && !(read_options.animation_time >= 0))
     throw Error("render: --time wants a number of seconds >= 0");
   Scene scene = read_svg_file(input, read_options);
-  for (const auto& w : scene.warnings) std::fprintf(stderr, "svgmotion: warning: %s\n", w.c_str());
+  for (const auto& w : scene.warnings) log::warning("%s", w.c_str());
   if (a.has("--strict") && !scene.warnings.empty())
     throw Error(input + ": warnings are errors under --strict");
 
@@ -71,7 +72,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     ClRuntime rt(a.get("--device").value_or("auto"));
     const RgbaImage img = render_image(rt, scene, width, transparent);
     write_png(*out, img);
-    std::fprintf(stderr, "svgmotion: wrote %s (%dx%d)\n", out->c_str(), img.width, img.height);
+    log::info("svgmotion: wrote %s (%dx%d)", out->c_str(), img.width, img.height);
     return 0;
   }
 
@@ -95,7 +96,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     h = img.height;
     return img;
   });
-  std::fprintf(stderr, "svgmotion: wrote %s (%d frames at %g fps, %.3g s, %dx%d%s)\n", out->c_str(), frames, fps,
+  log::info("svgmotion: wrote %s (%d frames at %g fps, %.3g s, %dx%d%s)", out->c_str(), frames, fps,
                frames / fps, w, h, clock.repeats ? ", loops" : "");
   return 0;
 }

@@ -22,6 +22,7 @@
 #include "pipeline/pipeline.h"
 #include "pipeline/plugin_host.h"
 #include "svgmotion/error.h"
+#include "svgmotion/log.h"
 
 namespace svgm::cli {
 
@@ -50,7 +51,7 @@ class ProgressView {
     end_line();
     stage_ = name;
     last_ = std::chrono::steady_clock::now();
-    if (!quiet_) std::fprintf(stderr, "run: %s ...\n", name.c_str());
+    log::info("run: %s ...", name.c_str());
   }
   void update(double f, const std::string& note) {
     if (quiet_) return;
@@ -65,15 +66,14 @@ class ProgressView {
       drawn_ = true;
     } else {
       if (now - last_ < std::chrono::seconds(5)) return;
-      std::fprintf(stderr, "run: %s %3.0f%%  %s\n", stage_.c_str(), 100 * f, note.c_str());
+      log::info("run: %s %3.0f%%  %s", stage_.c_str(), 100 * f, note.c_str());
     }
     last_ = now;
   }
-  // A stage's one-line report (what the procedural video moves): printed unless --quiet.
+  // A stage's one-line report (what the procedural video moves): an info line.
   void info(const std::string& line) {
-    if (quiet_) return;
-    end_line();
-    std::fprintf(stderr, "  %s\n", line.c_str());
+    if (!quiet_) end_line();
+    log::info("  %s", line.c_str());
   }
   void end_line() {
     if (drawn_) std::fputc('\n', stderr);
@@ -101,7 +101,7 @@ std::string outputs_in(const fs::path& dir) {
 
 int cmd_run(const std::vector<std::string>& argv) {
   const Args a = parse_args("run", argv, {"--input", "--prompt", "-o", "--output", "--from", "--device"},
-                            {"--quiet"});
+                            {});
   // Positionals: an optional CONFIG.yaml first, then key.path=value overrides.
   std::optional<fs::path> file;
   std::vector<std::string> overrides;
@@ -133,11 +133,16 @@ int cmd_run(const std::vector<std::string>& argv) {
   PluginHost host(plugin_search_path(extra));
   check_config(config, host);
 
-  ProgressView view(a.has("--quiet"));
+  ProgressView view(log::quiet());
   host.set_hooks({[&view](double f, const std::string& note) { view.update(f, note); },
                   [] { return g_interrupted != 0; },
                   [&view](const std::string& line) { view.info(line); }});
   const fs::path dir = fs::absolute(config.value("output", "run"));
+  // Every message of this run at debug level, appended to RUN_DIR/log.txt (svgmotion/log.h).
+  std::error_code dir_error;
+  fs::create_directories(dir, dir_error);
+  if (dir_error) throw Error(dir.string() + ": cannot create: " + dir_error.message());
+  log::open_file(dir / "log.txt");
   g_interrupted = 0;
   std::signal(SIGINT, on_run_sigint);
   const auto t0 = std::chrono::steady_clock::now();
@@ -149,7 +154,7 @@ int cmd_run(const std::vector<std::string>& argv) {
     view.end_line();
     std::signal(SIGINT, SIG_DFL);
     if (g_interrupted) {
-      std::fprintf(stderr, "svgmotion: interrupted; %s holds %s (run the same command again to continue)\n",
+      log::error("interrupted; %s holds %s (run the same command again to continue)",
                    dir.c_str(), outputs_in(dir).c_str());
       return 130;
     }
@@ -162,6 +167,8 @@ int cmd_run(const std::vector<std::string>& argv) {
     all_skipped = all_skipped && r.skipped;
     if (r.skipped) std::printf("  %-9s %-12s up to date\n", r.stage.c_str(), r.plugin.c_str());
     else std::printf("  %-9s %-12s %6.1f s\n", r.stage.c_str(), r.plugin.c_str(), r.seconds);
+    log::debug("run: %s (%s) %s", r.stage.c_str(), r.plugin.c_str(),
+               r.skipped ? "up to date" : (std::to_string(r.seconds) + " s").c_str());
   }
   if (all_skipped) std::printf("every stage is up to date\n");
   std::printf("outputs in %s: animation.svg, preview.mp4, fit.json (total %.1f s)\n", dir.c_str(), total);

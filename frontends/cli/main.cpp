@@ -11,6 +11,7 @@
 
 #include "cli/commands.h"
 #include "svgmotion/error.h"
+#include "svgmotion/log.h"
 
 namespace {
 
@@ -34,6 +35,8 @@ usage:
   svgmotion help | --version | CMD --help
 
 --device picks the OpenCL device: auto (default), cpu, gpu, or part of its name.
+Every command takes --verbose (-v: debug lines too) and --quiet (-q: warnings and errors
+only; twice: errors only). `run` also appends every line, debug included, to RUN_DIR/log.txt.
 Exit status: 0 done, 1 error (one line says what), 2 usage, 3 the fit was rejected by the
 result gate (animation.failed.svg written instead of animation.svg), 4 every candidate video
 was flagged by the ranker (run stopped before fitting), 130 interrupted.
@@ -85,6 +88,8 @@ Fits the SVG's paths to a target video (mp4, webm, avi, mov, or a folder of numb
   --precision P          decimal places of the exported coordinates (default 3; 0..6)
   --inbetweens N         smooth in-between shapes per keyframe interval (default 3; 0..16;
                          0 leaves them to the player's straight lines: smallest files)
+  --group-transforms     each part's motion, where affine, as <animateTransform> elements
+                         (translate, rotate, skewX, scale) and its paths' shapes in its frame
   --no-gate              write animation.svg even when the result gate rejects the fit
   --resume               continue from OUT_DIR/checkpoint.bin
   --no-track             no optical-flow warm start of new keyframes
@@ -163,6 +168,29 @@ int main(int argc, char** argv) {
   setenv("OPENCV_LOG_LEVEL", "SILENT", 0);
   setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);  // AV_LOG_QUIET
   std::vector<std::string> args(argv + 1, argv + argc);
+  // The global levels (svgmotion/log.h), before or after the command; a command never sees them.
+  {
+    std::string line = "svgmotion";
+    for (int i = 1; i < argc; ++i) line += std::string(" ") + argv[i];
+    svgm::log::set_command_line(line);
+    int quiet = 0, verbose = 0;
+    std::vector<std::string> rest;
+    for (const std::string& a : args) {
+      if (a == "--quiet" || a == "-q") ++quiet;
+      else if (a == "-qq") quiet += 2;
+      else if (a == "--verbose" || a == "-v") ++verbose;
+      else rest.push_back(a);
+    }
+    if (quiet && verbose) {
+      std::fputs("svgmotion: --quiet and --verbose contradict each other\n", stderr);
+      return 2;
+    }
+    svgm::log::set_console_level(verbose ? svgm::log::Level::Debug
+                                 : quiet >= 2 ? svgm::log::Level::Error
+                                 : quiet ? svgm::log::Level::Warning
+                                         : svgm::log::Level::Info);
+    args = std::move(rest);
+  }
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || (args[0] == "help" && args.size() == 1)) {
     std::fputs(kUsage, args.empty() ? stderr : stdout);
     return args.empty() ? 2 : 0;
@@ -195,13 +223,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "svgmotion: unknown command '%s' (try svgmotion help)\n", cmd.c_str());
     return 2;
   } catch (const svgm::Rejected& e) {
-    std::fprintf(stderr, "svgmotion: %s\n", e.what());
+    svgm::log::error("%s", e.what());
     return e.exit_status();
   } catch (const svgm::Error& e) {
-    std::fprintf(stderr, "svgmotion: %s\n", e.what());
+    svgm::log::error("%s", e.what());
     return 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "svgmotion: internal error: %s\n", e.what());
+    svgm::log::error("internal error: %s", e.what());
     return 1;
   }
 }

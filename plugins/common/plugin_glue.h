@@ -12,6 +12,7 @@
 #include <string>
 
 #include "svgmotion/error.h"
+#include "svgmotion/log.h"
 #include "svgmotion/plugin.h"
 
 namespace svgm::plugin {
@@ -26,6 +27,12 @@ inline char* copy_string(const std::string& s) {
 }
 
 inline int call(StageFn fn, const svgm_host* host, const char* request, char** response) {
+  // This module's copy of the engine logs through the host (svgmotion/log.h), so its warnings
+  // and debug lines reach the host's console level and run's log.txt.
+  if (host && host->log)
+    svgm::log::set_forward([host](svgm::log::Level level, const std::string& m) {
+      host->log(host, static_cast<int>(level), m.c_str());
+    });
   try {
     json r = fn(json::parse(request), host);
     r["ok"] = true;

@@ -106,6 +106,29 @@ fit)
     check "a tiny drawing ($t) renders and fits" '[[ $? -eq 0 && -s $tmp/tf_$t/1.png ]] && grep -q "<animate attributeName=\"d\"" "$tmp/to_$t/animation.svg" || { cat "$tmp/tr_$t" "$tmp/te_$t"; false; }'
   done
   check "--resume continues from the checkpoint" 'grep -q "resuming at iteration 40" "$tmp/err" && grep -q "\"iterations\": 60" "$tmp/out/fit.json"'
+  # Levels (svgmotion/log.h): --quiet hides info lines, --verbose adds debug lines.
+  check "fit --quiet prints no info line" '! grep -Eq "svgmotion: fitted|^fit: iteration" "$tmp/te_rects"'
+  check "fit prints its info line by default" 'grep -q "svgmotion: fitted 3 keyframes" "$tmp/err"'
+  "$bin" fit "$tmp/triangle.svg" --target "$tmp/tf_triangle" -o "$tmp/to_verbose" --iterations 3 --keyframes 2 --size 32 --verbose 2>"$tmp/te_verbose"
+  check "fit --verbose prints debug lines" 'grep -q "^svgmotion: debug: fit: .*tf_triangle: 2 keyframes of 2 frames" "$tmp/te_verbose"'
+  check "--quiet and --verbose together is a usage error" '"$bin" render x.svg -o y.png -q -v 2>/dev/null; [[ $? -eq 2 ]]'
+  # Group transforms: a square moved by (6, 3) px and turned 10 degrees about its centre; the
+  # transform export and the baked one render alike at both keyframes (ffmpeg's PSNR).
+  tiny_svg sq0 '<rect id="sq" x="8" y="8" width="12" height="12" fill="#36c"/>'
+  tiny_svg sq1 '<rect x="8" y="8" width="12" height="12" fill="#36c" transform="translate(6 3) rotate(10 14 14)"/>'
+  mkdir -p "$tmp/tf_sq"
+  must "$bin" render "$tmp/sq0.svg" -o "$tmp/tf_sq/0.png" --size 32 2>/dev/null
+  must "$bin" render "$tmp/sq1.svg" -o "$tmp/tf_sq/1.png" --size 32 2>/dev/null
+  must "$bin" fit "$tmp/sq0.svg" --target "$tmp/tf_sq" -o "$tmp/sq_baked" --iterations 40 --keyframes 2 --size 32 --loop once --quiet 2>/dev/null
+  cp -r "$tmp/sq_baked" "$tmp/sq_tf"
+  must "$bin" fit "$tmp/sq0.svg" --target "$tmp/tf_sq" -o "$tmp/sq_tf" --iterations 40 --keyframes 2 --size 32 --loop once --resume --group-transforms --quiet 2>/dev/null
+  check "--group-transforms writes the square's motion as animateTransform" 'grep -q "<animateTransform attributeName=\"transform\" type=\"translate\" additive=\"sum\"" "$tmp/sq_tf/animation.svg" && grep -q "\"as_transforms\": 1" "$tmp/sq_tf/fit.json" && ! grep -q animateTransform "$tmp/sq_baked/animation.svg"'
+  for t in 0 100; do
+    "$bin" render "$tmp/sq_baked/animation.svg" -o "$tmp/sq_b$t.png" --size 64 --time $t 2>/dev/null
+    "$bin" render "$tmp/sq_tf/animation.svg" -o "$tmp/sq_t$t.png" --size 64 --time $t 2>/dev/null
+    psnr=$(ffmpeg -nostdin -v info -i "$tmp/sq_b$t.png" -i "$tmp/sq_t$t.png" -lavfi psnr -f null - 2>&1 | sed -n 's/.*average:\([0-9.a-z]*\).*/\1/p')
+    check "render --time $t: the transform export draws the baked one (PSNR $psnr dB >= 40)" '[[ $psnr == inf ]] || awk -v p="$psnr" "BEGIN { exit !(p >= 40) }"'
+  done
   printf 'not a video' >"$tmp/bad.mp4"
   expect_error "a file that is not a video" "bad.mp4" "$tmp/out2" fit "$data/examples/man.svg" --target "$tmp/bad.mp4" -o "$tmp/out2"
   expect_error "fewer frames than keyframes" "fewer than the 15 keyframes" "$tmp/out3" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out3"
@@ -135,6 +158,8 @@ pipeline)
        stages.video.plugin=file "stages.video.path=$tmp/frames" stages.ranker.plugin=first
        stages.fitter.iterations=30 stages.fitter.keyframes=3 stages.fitter.size=64)
   "${run[@]}" >"$tmp/out1" 2>"$tmp/err"
+  check "run --quiet prints no info line" '! grep -q "^run: " "$tmp/err"'
+  check "run writes log.txt: a header, the stage lines and debug lines" 'grep -q "===== svgmotion .*: svgmotion run --input" "$tmp/run/log.txt" && grep -q " info    run: fitter (opencl) ..." "$tmp/run/log.txt" && grep -q " debug   fitter: plugin opencl" "$tmp/run/log.txt" && grep -q " debug   fit: iteration 30/30" "$tmp/run/log.txt"'
   check "run writes animation.svg and every intermediate" '[[ -s $tmp/run/animation.svg && -s $tmp/run/grouped.svg && -s $tmp/run/recolored.png && -s $tmp/run/palette.json && -s $tmp/run/target.mp4 && -s $tmp/run/ranking.json && -s $tmp/run/layers.json ]] && grep -q "<animate attributeName=\"d\"" "$tmp/run/animation.svg"'
   check "run writes animation.json (Lottie) with the user's own ids and groups" '[[ -s $tmp/run/animation.json ]] && grep -q "\"ty\":4,\"nm\":\"thigh_left\"" "$tmp/run/animation.json" && grep -q "\"ty\":3,\"nm\":\"body\"" "$tmp/run/animation.json"'
   "${run[@]}" >"$tmp/out2" 2>&1

@@ -17,12 +17,14 @@
 #include "export/lottie_writer.h"
 #include "fit/checkpoint.h"
 #include "fit/document_order.h"
+#include "fit/group_transform.h"
 #include "fit/inbetween.h"
 #include "fit/result_gate.h"
 #include "fit/palette.h"
 #include "fit/preview_video.h"
 #include "fit/smil_writer.h"
 #include "svgmotion/error.h"
+#include "svgmotion/log.h"
 #include "svgmotion/svg_reader.h"
 #include "svgmotion/target_video.h"
 
@@ -109,7 +111,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   const std::string target_str = job.target.string();
   const std::string* target_path = &target_str;
   const Scene scene = read_svg_file(input);
-  for (const auto& w : scene.warnings) std::fprintf(stderr, "svgmotion: warning: %s\n", w.c_str());
+  for (const auto& w : scene.warnings) log::warning("%s", w.c_str());
   if (scene.paths.empty()) throw Error(input.string() + ": nothing to animate (no visible paths)");
   const Scene fit_scene =
       job.palette ? apply_palette(scene, read_palette(*job.palette), job.palette->string()) : scene;
@@ -145,7 +147,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   }
   const TargetFrames target = load_target(*target_path, size.width, size.height, to);
   for (const std::string& w : target_warnings(target, *target_path, size))
-    std::fprintf(stderr, "svgmotion: warning: %s\n", w.c_str());
+    log::warning("%s", w.c_str());
 
   std::error_code ec;
   fs::create_directories(out, ec);
@@ -168,11 +170,16 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   const int total_iters = fo.iterations;
   ClRuntime rt(job.device);
   Fitter fitter(rt, fit_scene, target, coarse_options);
+  log::debug("fit: %s: %d keyframes of %d frames (%.3g fps) at %dx%d; %d paths in %d groups, %d control points; "
+             "%d iterations on %s",
+             target_path->c_str(), target.keyframes, target.source_frames, target.fps, size.width, size.height,
+             static_cast<int>(fit_scene.paths.size()), fitter.fit_plan().n_groups, fitter.raster_plan().n_cp,
+             coarse_options.iterations, rt.info().name.c_str());
   if (job.tracks) {
     auto flows = read_tracks(*job.tracks);
     if (flows.size() == static_cast<size_t>(target.keyframes)) fitter.set_flows(std::move(flows));
     else if (!flows.empty())
-      std::fprintf(stderr, "svgmotion: warning: %s has flows for %zu keyframes, not %d; tracking the fit instead\n",
+      log::warning("%s has flows for %zu keyframes, not %d; tracking the fit instead",
                    job.tracks->c_str(), flows.size(), target.keyframes);
   }
   const fs::path ckpt = out / "checkpoint.bin";
@@ -193,7 +200,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   if (job.resume) {
     if (!fs::exists(ckpt)) throw Error(ckpt.string() + ": no checkpoint to resume from");
     fitter.restore(load_checkpoint(ckpt, key));
-    std::fprintf(stderr, "svgmotion: resuming at iteration %d\n", fitter.iteration());
+    log::info("svgmotion: resuming at iteration %d", fitter.iteration());
   } else if (job.resume_unfinished && fs::exists(ckpt)) {
     // An interrupted fit of exactly this problem goes on; anything else starts afresh.
     try {
@@ -202,7 +209,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
         fitter.restore(st);
         if (job.progress) job.progress(static_cast<double>(st.iteration) / total_iters,
                                        "resuming at iteration " + std::to_string(st.iteration));
-        else if (!job.quiet) std::fprintf(stderr, "svgmotion: resuming at iteration %d\n", st.iteration);
+        else if (!job.quiet) log::info("svgmotion: resuming at iteration %d", st.iteration);
       }
     } catch (const Error&) {
     }
@@ -247,7 +254,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
         ++rollbacks;
         rollback_notes.push_back(fmt("iteration %.0f: loss %.4g per keyframe (best %.4g); rolled back to iteration %.0f at half the step size",
                                      it, per, best, done_before + good.iteration));
-        std::fprintf(stderr, "svgmotion: warning: the fit diverged at %s\n", rollback_notes.back().c_str());
+        log::warning("the fit diverged at %s", rollback_notes.back().c_str());
         f.restore(good);
         f.scale_learning_rates(0.5f);
         best_active = f.active_keyframes();
@@ -272,11 +279,13 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                      it, total_iters, loss.total(), f.active_keyframes(), f.keyframes(),
                      elapsed, eta);
         last_print = now;
-      } else if (!tty && !job.quiet && !job.progress && (it % 100 == 0 || f.done())) {
-        std::fprintf(stderr, "fit: iteration %d/%d loss %.5f keyframes %d/%d elapsed %.1fs eta %.0fs\n",
-                     it, total_iters, loss.total(), f.active_keyframes(), f.keyframes(),
-                     elapsed, eta);
       }
+      // Every 100 iterations a line: the progress itself without a terminal or host display,
+      // else a debug line (--verbose, run's log.txt).
+      if (it % 100 == 0 || f.done())
+        log::write(!tty && !job.quiet && !job.progress ? log::Level::Info : log::Level::Debug,
+                   fmt("fit: iteration %.0f/%.0f loss %.5f", it, total_iters, loss.total()) +
+                       fmt(" keyframes %.0f/%.0f elapsed %.1fs eta %.0fs", f.active_keyframes(), f.keyframes(), elapsed, eta));
       if (checkpoints && it % kCheckpointEvery == 0) save_checkpoint(ckpt, key, f.state());
     }
   };
@@ -293,6 +302,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     fine_options.iterations = refine_iters;
     fine = std::make_unique<Fitter>(rt, fit_scene, *fine_target, fine_options);
     fine->adopt_coarse(fitter, static_cast<double>(fine_size.width) / size.width);
+    log::debug("fit: refining every keyframe at %dx%d for %d iterations", fine_size.width, fine_size.height,
+               refine_iters);
     run_stage(*fine, coarse_options.iterations, false);
   }
   Fitter& final_fit = fine ? *fine : fitter;
@@ -335,18 +346,26 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   wt.keyframes = static_cast<int>(written.times.size());
   wt.key_times = written.times;
   wt.close_loop = false;  // in_between already wrote the first keyframe's shape last
+  std::optional<GroupMotionExport> group_motion;
+  if (job.group_transforms) {
+    group_motion = group_motion_export(final_fit.fit_plan(), final_fit.raster_plan(), final_fit.state().params,
+                                       timing.keyframes, final_size.view, final_size.width, final_size.height,
+                                       timing.key_times, frame_times, job.inbetweens, timing.close_loop, written.times);
+    for (const std::string& b : group_motion->baked) log::warning("group %s", b.c_str());
+  }
   for (const auto& w : write_animation_svg(into, export_scene ? *export_scene : scene, final_fit.raster_plan(), written.points,
-                                           wt, anim, export_scene ? &map : nullptr, job.decimals)) {
+                                           wt, anim, export_scene ? &map : nullptr, job.decimals,
+                                           group_motion ? &group_motion->paths : nullptr)) {
     std::string line = w;
     if (!job.export_name.empty() && line.rfind(into.string(), 0) == 0)
       line = job.export_name + line.substr(into.string().size());
-    std::fprintf(stderr, "svgmotion: warning: %s\n", line.c_str());
+    log::warning("%s", line.c_str());
   }
   // The same values as Lottie, beside it (animation.json, or animation.failed.json).
   const LottieOptions lottie{final_target.fps, job.decimals, into.filename().string()};
   for (const auto& w : write_lottie(fs::path(anim).replace_extension(".json"), export_scene ? *export_scene : scene,
                                     final_fit.raster_plan(), written.points, wt, lottie, export_scene ? &map : nullptr))
-    std::fprintf(stderr, "svgmotion: warning: %s\n", w.c_str());
+    log::warning("%s", w.c_str());
   const int active = final_fit.active_keyframes();
   const int W = final_size.width, H = final_size.height;
   write_preview_video(out / "preview.mp4", active, 2,
@@ -377,12 +396,16 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                            {"gate", gate_json(verdict, gate_options)},
                            {"device", rt.info().name}};
   if (!map.order.empty()) report["paint_order_applied"] = true;
+  if (group_motion)
+    report["group_transforms"] = {{"groups", final_fit.fit_plan().n_groups},
+                                  {"as_transforms", group_motion->transform_groups},
+                                  {"baked", group_motion->baked}};
   report["target_frames"] = {{"held", target.held_frames}, {"colour_corrected_keyframes", final_target.colour_corrected}};
   if (job.stabilise) report["target_frames"]["max_shake_removed_px"] = target.max_shake_px;
   if (fine) report["refined"] = {{"size", {W, H}}, {"iterations", final_fit.iteration()}, {"from_size", {size.width, size.height}}};
   write_file_atomic(out / "fit.json", report.dump(2) + "\n");
   if (stopped) {
-    std::fprintf(stderr, "svgmotion: interrupted at iteration %d; wrote %s (continue with --resume)\n",
+    log::error("interrupted at iteration %d; wrote %s (continue with --resume)",
                  (fine ? coarse_options.iterations : 0) + final_fit.iteration(), anim.c_str());
     return 130;
   }
@@ -392,10 +415,10 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     if (job.gate)
       throw Rejected("the fit was rejected: " + why + "; wrote " + anim.string() + " for inspection, no animation.svg",
                      Rejected::kFitRejected);
-    std::fprintf(stderr, "svgmotion: warning: the result gate would reject this fit: %s\n", why.c_str());
+    log::warning("the result gate would reject this fit: %s", why.c_str());
   }
   if (!job.quiet)
-    std::fprintf(stderr, "svgmotion: fitted %d keyframes in %.1fs; wrote %s, animation.json, preview.mp4, fit.json\n",
+    log::info("svgmotion: fitted %d keyframes in %.1fs; wrote %s, animation.json, preview.mp4, fit.json",
                  final_fit.keyframes(), seconds, anim.c_str());
   return 0;
 }

@@ -46,6 +46,9 @@ struct FitJob {
   // Decimal places of the exported coordinates (animation.svg in the element's units,
   // animation.json in canvas pixels).
   int decimals = kDefaultDecimals;
+  // Each group's motion, where affine, as <animateTransform> elements on its paths, with the
+  // paths' `d` values in the group's moving frame (group_transform.h); false: baked into `d`.
+  bool group_transforms = false;  // fit --group-transforms, stages.fitter.group_transforms
   bool gate = true;  // false: write animation.svg even when the result gate rejects the fit
   // Progress: when set, called about twice a second with the fraction done and a short note,
   // instead of the progress line on stderr.

@@ -7,6 +7,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <functional>
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -46,6 +48,77 @@ std::string with_original_prolog(const std::string& original, size_t root_begin,
 
 constexpr const char* kShapeGeometry[] = {"x", "y", "width", "height", "rx", "ry", "cx",
                                           "cy", "r", "x1", "y1", "x2", "y2", "points"};
+
+// Decimal places of written angles (degrees) and scale factors: finer than the coordinates'
+// so that a rotation or scale about a far origin still lands within a coordinate's rounding
+// (1e-4 degrees moves a point 1000 units away by 0.002; 1e-6 of scale, by 0.001).
+constexpr int kAngleDecimals = 4, kScaleDecimals = 6;
+
+double rounded(double v, int decimals) {
+  const double f = std::pow(10.0, decimals);
+  const double r = std::round(v * f) / f;
+  return r == 0 ? 0.0 : r;  // no "-0"
+}
+
+// One path's group motion in its own coordinates, per written value: the element's local map
+// to_canvas^-1 A to_canvas decomposed, angles unwrapped along the values, numbers rounded as
+// they are written (so the `d` values are computed against exactly the written transform).
+std::vector<TransformParts> local_motion(const PathMotion& motion, int f, const Affine& to_canvas, int decimals) {
+  const Affine from_canvas = to_canvas.inverse();
+  std::vector<TransformParts> out;
+  for (int v = 0; v < motion.values; ++v) {
+    TransformParts p = decompose_affine(from_canvas * motion.at(v, f) * to_canvas);
+    if (v > 0) {
+      p.rotate_deg = unwrap_degrees(p.rotate_deg, out.back().rotate_deg);
+      p.skew_x_deg = unwrap_degrees(p.skew_x_deg, out.back().skew_x_deg);  // only ever within +-90
+    }
+    out.push_back({rounded(p.tx, decimals), rounded(p.ty, decimals), rounded(p.rotate_deg, kAngleDecimals),
+                   rounded(p.skew_x_deg, kAngleDecimals), rounded(p.sx, kScaleDecimals), rounded(p.sy, kScaleDecimals)});
+  }
+  return out;
+}
+
+// The additive animateTransform children (translate, rotate, skewX, scale, in the order SVG
+// post-multiplies them) of a path whose group moves as a transform; a component that stays the
+// identity is not written.
+void append_transform_animations(pugi::xml_node el, const std::vector<TransformParts>& parts,
+                                 const std::vector<int>& seq, const std::function<void(pugi::xml_node)>& timing_attrs,
+                                 int decimals) {
+  struct Component {
+    const char* type;
+    std::function<std::string(const TransformParts&)> text;
+    std::function<bool(const TransformParts&)> identity;
+  };
+  auto num = [](double v, int places) {
+    std::string s;
+    append_number(s, v, places);
+    return s;
+  };
+  const Component components[] = {
+      {"translate", [&](const TransformParts& p) { return num(p.tx, decimals) + " " + num(p.ty, decimals); },
+       [](const TransformParts& p) { return p.tx == 0 && p.ty == 0; }},
+      {"rotate", [&](const TransformParts& p) { return num(p.rotate_deg, kAngleDecimals); },
+       [](const TransformParts& p) { return p.rotate_deg == 0; }},
+      {"skewX", [&](const TransformParts& p) { return num(p.skew_x_deg, kAngleDecimals); },
+       [](const TransformParts& p) { return p.skew_x_deg == 0; }},
+      {"scale", [&](const TransformParts& p) { return num(p.sx, kScaleDecimals) + " " + num(p.sy, kScaleDecimals); },
+       [](const TransformParts& p) { return p.sx == 1 && p.sy == 1; }},
+  };
+  for (const Component& c : components) {
+    if (std::all_of(parts.begin(), parts.end(), c.identity)) continue;
+    std::string values;
+    for (size_t i = 0; i < seq.size(); ++i) {
+      if (i) values += ';';
+      values += c.text(parts[static_cast<size_t>(seq[i])]);
+    }
+    pugi::xml_node anim = el.append_child("animateTransform");
+    anim.append_attribute("attributeName") = "transform";
+    anim.append_attribute("type") = c.type;
+    anim.append_attribute("additive") = "sum";
+    timing_attrs(anim);
+    anim.append_attribute("values") = values.c_str();
+  }
+}
 
 }  // namespace
 
@@ -120,8 +193,10 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
                                              const RasterPlan& plan,
                                              const std::vector<double>& points,
                                              const AnimationTiming& timing, const fs::path& out,
-                                             const ExportMap* map, int decimals) {
+                                             const ExportMap* map, int decimals, const PathMotion* motion) {
   check_animation_inputs(scene, plan, points, timing, map, decimals);
+  if (motion && (motion->values != timing.keyframes || motion->as_transform.size() != plan.path_cp_first.size()))
+    throw Error("internal: group motion does not match the animation");
   std::ifstream in(source, std::ios::binary);
   const std::string original((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (!in && !in.eof()) throw Error(source.string() + ": cannot re-read for export");
@@ -166,35 +241,70 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
       ++skipped_use;
       continue;
     }
-    const Affine to_local = path.to_canvas.inverse();
+    // Each written value's shape in the element's coordinates: with the group's motion as a
+    // transform, in the frame that transform moves (group_transform.h).
+    const bool moving = motion && motion->as_transform[static_cast<size_t>(f)];
+    const std::vector<TransformParts> parts =
+        moving ? local_motion(*motion, f, path.to_canvas, decimals) : std::vector<TransformParts>{};
+    std::vector<std::string> shapes;
+    // How far the residual moves from the first value's (element units): with none beyond the
+    // last written place (float noise of the motion can flip a rounding), no <animate> is needed.
+    double residual_motion = 0;
+    const size_t count = static_cast<size_t>(plan.path_cp_count[static_cast<size_t>(f)]);
+    for (int v = 0; v < timing.keyframes; ++v) {
+      const Affine to_local = moving ? (path.to_canvas * compose_affine(parts[static_cast<size_t>(v)])).inverse()
+                                     : path.to_canvas.inverse();
+      const double* cp = &points[(static_cast<size_t>(v) * plan.n_cp + first) * 2];
+      shapes.push_back(path_data(path, cp, to_local, decimals));
+      if (moving && v > 0) {
+        const Affine to_local0 = (path.to_canvas * compose_affine(parts[0])).inverse();
+        const double* cp0 = &points[first * 2];
+        for (size_t i = 0; i < count; ++i) {
+          const Vec2 d = to_local.apply({cp[2 * i], cp[2 * i + 1]}) - to_local0.apply({cp0[2 * i], cp0[2 * i + 1]});
+          residual_motion = std::max({residual_motion, std::fabs(d.x), std::fabs(d.y)});
+        }
+      }
+    }
     std::string values;
     for (size_t i = 0; i < seq.size(); ++i) {
       if (i) values += ';';
-      values += path_data(path, &points[(static_cast<size_t>(seq[i]) * plan.n_cp + first) * 2], to_local, decimals);
+      values += shapes[static_cast<size_t>(seq[i])];
     }
+    // A residual that does not change at the written precision needs no <animate>.
+    const bool still = moving && residual_motion <= std::pow(10.0, -decimals);
     if (tag != "path") {
       // Only <path> has a `d`: turn the shape into one, keeping id, paint and transform.
       for (const char* a : kShapeGeometry) el.remove_attribute(a);
       const std::string prefix(el.name(), el.name() + (std::strlen(el.name()) - tag.size()));
       el.set_name((prefix + "path").c_str());
-      el.append_attribute("d") = path_data(path, &points[first * 2], to_local, decimals).c_str();
+      el.append_attribute("d") = shapes[0].c_str();
+    } else if (still) {
+      el.attribute("d").set_value(shapes[0].c_str());
     }
-    for (pugi::xml_node a = el.child("animate"); a;) {  // replace an earlier fit's animation
-      pugi::xml_node next = a.next_sibling("animate");
-      if (std::string_view(a.attribute("attributeName").value()) == "d") el.remove_child(a);
+    // Replace an earlier fit's animation.
+    for (pugi::xml_node a = el.first_child(); a;) {
+      pugi::xml_node next = a.next_sibling();
+      const std::string_view name = local_name(a.name()), attr = a.attribute("attributeName").value();
+      if ((name == "animate" && attr == "d") || (moving && name == "animateTransform" && attr == "transform"))
+        el.remove_child(a);
       a = next;
     }
+    auto timing_attrs = [&](pugi::xml_node anim) {
+      anim.append_attribute("dur") = dur;
+      if (timing.loop == LoopMode::Once) {
+        anim.append_attribute("repeatCount") = "1";
+        anim.append_attribute("fill") = "freeze";
+      } else {
+        anim.append_attribute("repeatCount") = "indefinite";
+      }
+      anim.append_attribute("calcMode") = "linear";
+      anim.append_attribute("keyTimes") = key_times.c_str();
+    };
+    if (moving) append_transform_animations(el, parts, seq, timing_attrs, decimals);
+    if (still) continue;
     pugi::xml_node anim = el.append_child("animate");
     anim.append_attribute("attributeName") = "d";
-    anim.append_attribute("dur") = dur;
-    if (timing.loop == LoopMode::Once) {
-      anim.append_attribute("repeatCount") = "1";
-      anim.append_attribute("fill") = "freeze";
-    } else {
-      anim.append_attribute("repeatCount") = "indefinite";
-    }
-    anim.append_attribute("calcMode") = "linear";
-    anim.append_attribute("keyTimes") = key_times.c_str();
+    timing_attrs(anim);
     anim.append_attribute("values") = values.c_str();
   }
   if (map && !map->order.empty()) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "fit/group_transform.h"
 #include "raster/raster_plan.h"
 #include "svgmotion/scene.h"
 
@@ -73,13 +74,19 @@ struct ExportMap {
 // (x, y) pairs (Fitter::keyframe_points_canvas). `scene` is `source` as read; without a `map`
 // it is also the fitted scene. Coordinates are rounded to `decimals` places (0..kMaxDecimals).
 // Written to a temporary name and renamed.
+// With `motion` (group_transform.h; its values are the timing's keyframes), a path whose group
+// moves as a transform gets <animateTransform attributeName="transform" additive="sum"> children
+// (translate, rotate, skewX, scale; those that stay the identity are left out) with the same
+// timing, and its `d` values hold its points in that moving frame (no <animate> when they do not
+// change at `decimals` places).
 std::vector<std::string> write_animation_svg(const std::filesystem::path& source,
                                              const Scene& scene, const RasterPlan& plan,
                                              const std::vector<double>& points,
                                              const AnimationTiming& timing,
                                              const std::filesystem::path& out,
                                              const ExportMap* map = nullptr,
-                                             int decimals = kDefaultDecimals);
+                                             int decimals = kDefaultDecimals,
+                                             const PathMotion* motion = nullptr);
 
 // The `d` of one path from its control points (canvas space), mapped into the element's
 // coordinates by `to_local`: "M x y C x y x y x y ... Z" per subpath, numbers rounded to

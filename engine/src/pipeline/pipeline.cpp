@@ -14,6 +14,7 @@
 #include <cstring>
 
 #include "svgmotion/error.h"
+#include "svgmotion/log.h"
 
 namespace svgm {
 
@@ -194,6 +195,9 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
       for (const auto& [k, v] : sf.outputs.items()) up_to_date = up_to_date && fs::exists(run / v.get<std::string>());
     }
     StageReport r{sf.stage, plugin, up_to_date, 0};
+    log::debug("%s: plugin %s (%s), inputs %s, key %s: %s", sf.stage.c_str(), plugin.c_str(),
+               info ? info->path.c_str() : "not found", sf.inputs.dump().c_str(), h.hex().c_str(),
+               up_to_date ? "up to date" : forced ? "forced by --from" : "runs");
     if (!up_to_date) {
       if (on_stage) on_stage(sf.stage + " (" + plugin + ")");
       const auto t0 = std::chrono::steady_clock::now();
@@ -207,6 +211,8 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
         if (!fs::exists(run / v.get<std::string>()))
           throw Error(sf.stage + " plugin '" + plugin + "' did not write its output " + v.get<std::string>());
       r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      log::debug("%s: done in %.2f s, wrote %s; the plugin answered %s", sf.stage.c_str(), r.seconds,
+                 sf.outputs.dump().c_str(), response.dump().c_str());
       // A plugin answering "cache": false (say, a network fallback) is asked again next run.
       if (response.value("cache", true))
         write_atomic(manifest, nlohmann::json{{"stage", sf.stage}, {"plugin", plugin}, {"hash", h.hex()},

@@ -10,6 +10,7 @@
 
 #include "pipeline/module_check.h"
 #include "svgmotion/error.h"
+#include "svgmotion/log.h"
 
 #ifndef SVGM_VERSION
 #define SVGM_VERSION "0.0.0"
@@ -33,8 +34,9 @@ namespace {
 
 void host_log(const svgm_host* host, int level, const char* message) {
   const auto* hooks = static_cast<const HostHooks*>(host ? host->context : nullptr);
+  // level: 0 debug, 1 info, 2 warning, 3 error (svgmotion/plugin.h), as the host logger's.
   if (level == 1 && hooks && hooks->info) hooks->info(message);
-  if (level >= 2) std::fprintf(stderr, "svgmotion: %s: %s\n", level >= 3 ? "error" : "warning", message);
+  else log::write(static_cast<log::Level>(std::clamp(level, 0, 3)), message ? message : "");
 }
 void host_progress(const svgm_host* host, double fraction, const char* note) {
   const auto* hooks = static_cast<const HostHooks*>(host->context);

@@ -28,6 +28,7 @@
 #include "svg/path_data.h"
 #include "svg/svg_number.h"
 #include "svg/svg_style.h"
+#include "svg/smil_transform.h"
 #include "svg/transform_list.h"
 #include "svgmotion/error.h"
 
@@ -621,14 +622,16 @@ void Reader::walk(pugi::xml_node n, const Style& parent, const Affine& parent_ct
   if (props.has_mask) warn(n, "mask ignored (masks are not supported)");
   if (props.has_filter) warn(n, "filter ignored (filters are not supported)");
   if (props.has_marker) warn(n, "markers ignored (markers are not supported)");
-  Affine ctm = parent_ctm;
+  Affine own;
   if (const char* t = n.attribute("transform").value(); *t) {
     bool bad = false;
     const auto m = svg::parse_transform(t, &bad);
     if (bad) fail(describe(n) + " transform: number out of range");
-    if (m) ctm = ctm * *m;
+    if (m) own = *m;
     else warn(n, "invalid transform ignored");  // as resvg and browsers do
   }
+  if (limits_.animation_time >= 0) own = svg::animated_transform(n, limits_.animation_time, own);
+  Affine ctm = parent_ctm * own;
   // A singular transform (e.g. scale(0)) draws nothing, and has no inverse for exporters. One
   // whose determinant overflows (scale(1e200)) puts everything beyond max_coordinate: refused
   // like the coordinates it makes, not silently dropped.
