@@ -61,18 +61,39 @@ void accumulate(std::vector<double>& acc, int w, int h, double x0, double y0, do
 
 }  // namespace
 
-std::vector<float> draw_coverage(const RasterPlan& plan, const std::vector<double>& pts, int draw) {
+Coverage draw_coverage_box(const RasterPlan& plan, const std::vector<double>& pts, int draw) {
   const int w = plan.width, h = plan.height;
-  const size_t stride = static_cast<size_t>(w) + 2;
-  std::vector<double> acc(stride * h, 0.0);
   const Draw& d = plan.draws[draw];
-  // Clips a line to x in [0, w]: parts left of the canvas are projected onto x = 0 (they still
-  // wind every pixel to their right), parts right of it onto x = w (they wind none).
+  // The lines' bounding box, clamped to the canvas (left of it, lines are projected onto x = 0).
+  double bx0 = INFINITY, by0 = INFINITY, bx1 = -INFINITY, by1 = -INFINITY;
+  for (int l = d.first_line; l < d.first_line + d.line_count; ++l)
+    for (int e = 0; e < 2; ++e) {
+      const int p = plan.line_ab[2 * l + e];
+      bx0 = std::min(bx0, pts[2 * p]); bx1 = std::max(bx1, pts[2 * p]);
+      by0 = std::min(by0, pts[2 * p + 1]); by1 = std::max(by1, pts[2 * p + 1]);
+    }
+  Coverage c;
+  if (!(bx0 <= bx1)) return c;
+  c.x0 = std::clamp(static_cast<int>(std::floor(bx0)), 0, w);
+  c.y0 = std::clamp(static_cast<int>(std::floor(by0)), 0, h);
+  const int x1 = std::clamp(static_cast<int>(std::floor(bx1)) + 1, 0, w);
+  const int y1 = std::clamp(static_cast<int>(std::floor(by1)) + 1, 0, h);
+  if (x1 <= c.x0 || y1 <= c.y0) return c;
+  c.w = x1 - c.x0;
+  c.h = y1 - c.y0;
+  // Accumulated in box coordinates: a box of c.w columns (plus 2 cells) and c.h rows.
+  const size_t stride = static_cast<size_t>(c.w) + 2;
+  std::vector<double> acc(stride * c.h, 0.0);
+  const double ox = c.x0, oy = c.y0;
+  // Clips a line to x in [0, c.w] of the box: parts left of it are projected onto its left
+  // side (they still wind every pixel to their right), parts right of it onto its right side
+  // (they wind none).
   auto add = [&](double ax, double ay, double bx, double by) {
+    ax -= ox; bx -= ox; ay -= oy; by -= oy;
     double ts[4] = {0, 1, 1, 1};
     int n = 1;
     if (ax != bx)
-      for (const double edge : {0.0, static_cast<double>(w)}) {
+      for (const double edge : {0.0, static_cast<double>(c.w)}) {
         const double t = (edge - ax) / (bx - ax);
         if (t > 0 && t < 1) ts[n++] = t;
       }
@@ -81,8 +102,8 @@ std::vector<float> draw_coverage(const RasterPlan& plan, const std::vector<doubl
     for (int i = 0; i + 1 < n; ++i) {
       const double ta = ts[i], tb = ts[i + 1];
       if (tb <= ta) continue;
-      auto cl = [&](double x) { return std::clamp(x, 0.0, static_cast<double>(w)); };
-      accumulate(acc, w, h, cl(ax + ta * (bx - ax)), ay + ta * (by - ay), cl(ax + tb * (bx - ax)),
+      auto cl = [&](double x) { return std::clamp(x, 0.0, static_cast<double>(c.w)); };
+      accumulate(acc, c.w, c.h, cl(ax + ta * (bx - ax)), ay + ta * (by - ay), cl(ax + tb * (bx - ax)),
                  ay + tb * (by - ay));
     }
   };
@@ -90,15 +111,24 @@ std::vector<float> draw_coverage(const RasterPlan& plan, const std::vector<doubl
     const int a = plan.line_ab[2 * l], b = plan.line_ab[2 * l + 1];
     add(pts[2 * a], pts[2 * a + 1], pts[2 * b], pts[2 * b + 1]);
   }
-  std::vector<float> out(static_cast<size_t>(w) * h);
-  for (int y = 0; y < h; ++y) {
+  c.a.resize(static_cast<size_t>(c.w) * c.h);
+  for (int y = 0; y < c.h; ++y) {
     double sum = 0;
     const double* row = acc.data() + static_cast<size_t>(y) * stride;
-    for (int x = 0; x < w; ++x) {
+    for (int x = 0; x < c.w; ++x) {
       sum += row[x];
-      out[static_cast<size_t>(y) * w + x] = static_cast<float>(ref::fill_rule_coverage(sum, d.rule));
+      c.a[static_cast<size_t>(y) * c.w + x] = static_cast<float>(ref::fill_rule_coverage(sum, d.rule));
     }
   }
+  return c;
+}
+
+std::vector<float> draw_coverage(const RasterPlan& plan, const std::vector<double>& pts, int draw) {
+  const Coverage c = draw_coverage_box(plan, pts, draw);
+  std::vector<float> out(static_cast<size_t>(plan.width) * plan.height, 0.0f);
+  for (int y = 0; y < c.h; ++y)
+    for (int x = 0; x < c.w; ++x)
+      out[static_cast<size_t>(y + c.y0) * plan.width + x + c.x0] = c.a[static_cast<size_t>(y) * c.w + x];
   return out;
 }
 

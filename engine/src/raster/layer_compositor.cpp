@@ -61,7 +61,7 @@ class Compositor {
       while (k < stack.size() && k < chain.size() && stack[k].layer == chain[k]) ++k;
       while (stack.size() > k) pop();
       while (stack.size() < chain.size()) stack.push_back({chain[stack.size()], Image(pixels() * 4, 0.0f)});
-      paint(top(), path, d.is_stroke, draw_coverage(p.plan, p.pts, static_cast<int>(di)));
+      paint(top(), path, d.is_stroke, draw_coverage_box(p.plan, p.pts, static_cast<int>(di)));
     }
     while (!stack.empty()) pop();
     return root;
@@ -88,23 +88,24 @@ class Compositor {
   }
 
   // Source-over of one fill or stroke with its paint, weighted by coverage.
-  void paint(Image& dst, const Path& path, bool stroke, const std::vector<float>& cov) const {
+  void paint(Image& dst, const Path& path, bool stroke, const Coverage& cov) const {
     const int gi = stroke ? path.stroke_gradient : path.fill_gradient;
     const Rgba flat = stroke ? path.stroke.color : path.fill;
     const Gradient* g = gi >= 0 ? &scene_.gradients[gi] : nullptr;
     const Affine to_gradient = g ? (view_ * g->to_canvas).inverse() : Affine{};
     const float k = path.local_opacity * (g ? g->opacity : 1.0f);
-    for (int y = 0; y < h_; ++y)
-      for (int x = 0; x < w_; ++x) {
+    for (int y = cov.y0; y < cov.y0 + cov.h; ++y)
+      for (int x = cov.x0; x < cov.x0 + cov.w; ++x) {
         const size_t i = static_cast<size_t>(y) * w_ + x;
-        if (cov[i] <= 0) continue;
+        const float cv = cov.a[static_cast<size_t>(y - cov.y0) * cov.w + (x - cov.x0)];
+        if (cv <= 0) continue;
         Rgba c = flat;
         if (g) {
           const auto gc = gradient_color(*g, to_gradient, {x + 0.5, y + 0.5});
           if (!gc) continue;
           c = *gc;
         }
-        const float a = cov[i] * c.a * k;
+        const float a = cv * c.a * k;
         float* o = dst.data() + 4 * i;
         o[0] = c.r * a + o[0] * (1 - a);
         o[1] = c.g * a + o[1] * (1 - a);
