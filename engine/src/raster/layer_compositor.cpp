@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "raster/area_coverage.h"
 #include "raster/gradient_paint.h"

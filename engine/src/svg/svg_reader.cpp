@@ -829,6 +829,12 @@ void Reader::walk(pugi::xml_node n, const Style& parent, const Affine& parent_ct
   const bool masked = !clip_content_ && !props.mask_url.empty();
   const bool layered = !clip_content_ && (clipped || masked || (props.opacity < 1 && (!shape || both_paints)));
   const int saved_layer = layer_;
+  // Every way out of this element (early returns included) leaves the layer it entered in.
+  struct LayerRestore {
+    int& layer;
+    int saved;
+    ~LayerRestore() { layer = saved; }
+  } restore{layer_, layer_};
   int own_layer = -1;
   if (layered) {
     own_layer = static_cast<int>(scene_.layers.size());
