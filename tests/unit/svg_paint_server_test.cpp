@@ -84,6 +84,15 @@ TEST_CASE("group opacity, clip paths and masks become layers; a lone shape folds
   CHECK(s.warnings.empty());
 }
 
+TEST_CASE("an element's layer ends with it, also when it draws nothing") {
+  const Scene s = read_svg_string(
+      "<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10'>"
+      "<use href='#missing' opacity='0.5'/><rect width='4' height='4'/></svg>",
+      "u.svg");
+  REQUIRE(s.paths.size() == 1);
+  CHECK(s.paths[0].layer == -1);
+}
+
 TEST_CASE("stroke-miterlimit is a number: with a unit it is invalid and the default stays") {
   const Scene s = read_svg_string(
       "<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10'>"
