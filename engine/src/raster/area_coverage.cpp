@@ -90,6 +90,7 @@ Coverage draw_coverage_box(const RasterPlan& plan, const std::vector<double>& pt
   // (they wind none).
   auto add = [&](double ax, double ay, double bx, double by) {
     ax -= ox; bx -= ox; ay -= oy; by -= oy;
+    // Split parameters: 0, the crossings of the box's sides in increasing t, 1.
     double ts[4] = {0, 1, 1, 1};
     int n = 1;
     if (ax != bx)
@@ -97,8 +98,8 @@ Coverage draw_coverage_box(const RasterPlan& plan, const std::vector<double>& pt
         const double t = (edge - ax) / (bx - ax);
         if (t > 0 && t < 1) ts[n++] = t;
       }
+    if (n == 3 && ts[1] > ts[2]) std::swap(ts[1], ts[2]);
     ts[n++] = 1;
-    std::sort(ts, ts + n);
     for (int i = 0; i + 1 < n; ++i) {
       const double ta = ts[i], tb = ts[i + 1];
       if (tb <= ta) continue;
