@@ -143,8 +143,9 @@ GradientStop GradientReader::read_stop(pugi::xml_node stop) {
       s.offset = static_cast<float>(std::clamp(v, 0.0, 1.0));
     }
   }
-  // stop-color: inherit takes the nearest ancestor's stop-color, currentColor the nearest
-  // ancestor's color (stops do not see the painted element's style).
+  // stop-color: inherit takes the parent gradient's own stop-color (the property is not
+  // inherited further, so its parent's value is the initial black unless it sets one);
+  // currentColor takes the nearest ancestor's color (stops do not see the painted element).
   auto trimmed = [](std::string v) {
     while (!v.empty() && std::isspace(static_cast<unsigned char>(v.back()))) v.pop_back();
     while (!v.empty() && std::isspace(static_cast<unsigned char>(v.front()))) v.erase(v.begin());
@@ -153,11 +154,8 @@ GradientStop GradientReader::read_stop(pugi::xml_node stop) {
   colour = trimmed(colour);
   if (colour == "inherit") {
     colour = "black";
-    for (pugi::xml_node up = stop.parent(); up; up = up.parent())
-      if (const char* v = up.attribute("stop-color").value(); *v && std::string_view(v) != "inherit") {
-        colour = v;
-        break;
-      }
+    if (const char* v = stop.parent().attribute("stop-color").value(); *v && std::string_view(v) != "inherit")
+      colour = v;
   }
   Rgba c{0, 0, 0, 1};
   if (colour == "currentColor" || colour == "currentcolor") {
