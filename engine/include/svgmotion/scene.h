@@ -43,6 +43,55 @@ struct Stroke {
   double miter_limit = 4;  // SVG default
 };
 
+// A gradient paint server, resolved for one element (href chains, units and transforms folded),
+// drawn by the forward render only (raster/layer_compositor.h). The fitter and the Lottie
+// export use the path's flat colour, which stays the gradient's mean stop colour.
+enum class Spread : uint8_t { Pad, Reflect, Repeat };
+
+struct GradientStop {
+  float offset = 0;  // in [0, 1], non-decreasing along the list
+  Rgba color;        // straight colour, stop-opacity folded into a
+};
+
+struct Gradient {
+  bool radial = false;
+  Vec2 p1, p2;               // linear: the gradient vector, in gradient space
+  Vec2 center, focal;        // radial: end circle centre and focal point, in gradient space
+  double r = 0, fr = 0;      // radial: end and focal radii
+  Spread spread = Spread::Pad;
+  Affine to_canvas;          // gradient space -> canvas (bounding box units, gradientTransform, CTM)
+  std::vector<GradientStop> stops;  // at least one
+  float opacity = 1;         // fill-opacity or stroke-opacity of the painted element
+};
+
+// A compositing layer: an element whose content is drawn offscreen and then composited as one
+// (group opacity, clip-path, mask). Only the forward render builds layers; Path::opacity still
+// multiplies every ancestor's opacity for the fitter, which composites paths one by one.
+struct Layer {
+  int parent = -1;   // enclosing layer, -1 for the canvas (or the mask content's own canvas)
+  float opacity = 1;
+  int clip = -1;     // index into Scene::clips, or -1
+  int mask = -1;     // index into Scene::masks, or -1
+};
+
+struct Path;
+
+// A clipPath resolved for one element: the union of its shapes' coverage (each under its
+// clip-rule, kept in Path::fill_rule), times the coverage of its own clip-path when it has one.
+struct ClipPath {
+  std::vector<Path> paths;  // canvas space; colours unused
+  int clip = -1;            // the clipPath element's own clip-path, index into Scene::clips
+};
+
+// A mask resolved for one element: its content drawn like a scene (paths with their paints and
+// layers) inside its region, then turned into coverage by luminance (or alpha) times alpha.
+struct Mask {
+  std::vector<Path> paths;  // canvas space, paint order; their layers end at -1 (the mask's canvas)
+  std::vector<Subpath> region;  // the mask's x/y/width/height rectangle in canvas space
+  bool luminance = true;        // mask-type: luminance (default) or alpha
+  int mask = -1;                // the mask element's own mask, index into Scene::masks
+};
+
 struct Path {
   std::string id;          // the element's id, or a generated "path-N" (stable across reads)
   std::string locator;     // where it came from, e.g. "/svg/g[2]/rect[1]" (element index paths)
@@ -56,6 +105,11 @@ struct Path {
   float opacity = 1;       // the element's opacity times every ancestor group's opacity
   int group = -1;          // index into Scene::groups, or -1
   Affine to_canvas;        // the element's local user space -> canvas (includes the viewBox map)
+  // Forward render only (see Layer and Gradient): the innermost layer holding the path, the
+  // part of `opacity` that no layer carries, and gradient paints replacing fill/stroke colours.
+  int layer = -1;          // index into Scene::layers, or -1
+  float local_opacity = 1;
+  int fill_gradient = -1, stroke_gradient = -1;  // indices into Scene::gradients, or -1
 };
 
 // A group of paths that move together: today the SVG's top-level <g> elements.
@@ -69,6 +123,14 @@ struct Scene {
   std::vector<Path> paths;       // in paint order (first is drawn first, i.e. at the bottom)
   std::vector<Group> groups;
   std::vector<std::string> warnings;  // one line each: element and what was done
+  // Forward render only (raster/layer_compositor.h): paint servers, layers, clips and masks.
+  std::vector<Gradient> gradients;
+  std::vector<Layer> layers;
+  std::vector<ClipPath> clips;
+  std::vector<Mask> masks;
+
+  // True when drawing the scene needs more than flat colours composited path by path.
+  bool needs_layers() const { return !gradients.empty() || !layers.empty(); }
 
   // Total number of cubic segments over all paths (a size the renderer plans with).
   size_t segment_count() const {

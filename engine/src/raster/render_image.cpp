@@ -1,8 +1,10 @@
-// A still image of a scene (see render_image.h): plan, one-frame raster, 8-bit read-back.
+// A still image of a scene (see render_image.h): plan, one-frame raster, 8-bit read-back; or
+// the CPU layer compositor for scenes with gradients, group opacity, clips or masks.
 #include "raster/render_image.h"
 
 #include <array>
 
+#include "raster/layer_compositor.h"
 #include "raster/raster_cl.h"
 #include "raster/raster_plan.h"
 #include "svgmotion/render_size.h"
@@ -11,6 +13,9 @@ namespace svgm {
 
 RgbaImage render_image(ClRuntime& rt, const Scene& scene, int width, bool transparent) {
   const RenderSize size = render_size(scene, width);
+  // Gradients and layers (group opacity, clips, masks) are drawn by the CPU compositor; the
+  // GPU rasteriser composites flat paths one by one (and stays the fitter's forward pass).
+  if (scene.needs_layers()) return render_layers(scene, size, transparent);
   const RasterPlan plan = plan_raster(scene, size.view, size.width, size.height);
   ClRaster raster(rt, plan, 1);
   raster.set_rest_pose();

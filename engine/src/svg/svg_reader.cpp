@@ -25,6 +25,7 @@
 
 #include "svg/css_color.h"
 #include "svg/css_sheet.h"
+#include "svg/gradient_reader.h"
 #include "svg/path_data.h"
 #include "svg/svg_number.h"
 #include "svg/svg_style.h"
@@ -91,10 +92,25 @@ class Reader {
                      int depth, const Viewport& vp);
   void add_shape(pugi::xml_node n, std::vector<Subpath> subpaths, const Style& s,
                  const Affine& ctm, float opacity, const std::string& locator, int group,
-                 const std::string& id_prefix);
+                 const std::string& id_prefix, float local_opacity, const Viewport& vp);
+  // Clip paths and masks of an element (scene.h's ClipPath and Mask), for an element whose user
+  // space maps to canvas by `ctm` and whose fill bounds there are `bbox`. -1 when the reference
+  // is missing or recursive (drawn unclipped or unmasked, with a warning).
+  int resolve_clip(const std::string& url, pugi::xml_node el, const Affine& ctm,
+                   const std::optional<svg::Box>& bbox, const Viewport& vp, int depth);
+  int resolve_mask(const std::string& url, pugi::xml_node el, const Affine& ctm,
+                   const std::optional<svg::Box>& bbox, const Viewport& vp, int depth);
+  // Walks the children of a <clipPath> or <mask> into `sink` instead of the scene's paths.
+  void walk_content(pugi::xml_node n, const Style& s, const Affine& ctm, bool clip,
+                    std::vector<Path>* sink, int depth, const Viewport& vp);
+  // The bounds, in the user space of `ctm`, of the paths added to the current output from index
+  // `first` on (a container's bounding box).
+  std::optional<svg::Box> added_bounds(size_t first, const Affine& ctm) const;
   std::vector<Subpath> shape_geometry(pugi::xml_node n, std::string_view tag, const Viewport& vp);
   bool animated_path(pugi::xml_node n, double time, std::vector<Subpath>& out);
-  bool resolve_paint(const Paint& p, const Style& s, pugi::xml_node el, Rgba* out);
+  // A paint's flat colour; `gradient` is set to the gradient element of a gradient paint.
+  bool resolve_paint(const Paint& p, const Style& s, pugi::xml_node el, Rgba* out,
+                     pugi::xml_node* gradient);
   std::optional<Rgba> gradient_mean(pugi::xml_node g, int depth);
   Affine viewbox_transform(pugi::xml_node n, double w, double h, Viewport* inner);
   // Unsupported features: one warning line per kind, naming the first element and counting
@@ -127,6 +143,12 @@ class Reader {
   };
   std::vector<WarningKind> warnings_;
   svg::StyleSheet sheet_;
+  svg::GradientReader gradient_reader_{ids_, sheet_};
+  // Where shapes go: the scene's paths, or a clip path's or mask's content while one is read.
+  std::vector<Path>* sink_ = nullptr;
+  bool clip_content_ = false;  // inside a <clipPath>: geometry only, clip-rule for fill-rule
+  int layer_ = -1;             // the innermost compositing layer being read (Scene::layers)
+  std::set<const void*> reference_stack_;  // clipPath and mask elements being resolved
   std::string root_prefix_;
   std::vector<const svg::CssDeclaration*> matched_;
   int generated_ = 0;
@@ -285,7 +307,8 @@ std::optional<Rgba> Reader::gradient_mean(pugi::xml_node g, int depth) {
               static_cast<float>(a / n)};
 }
 
-bool Reader::resolve_paint(const Paint& p, const Style& s, pugi::xml_node el, Rgba* out) {
+bool Reader::resolve_paint(const Paint& p, const Style& s, pugi::xml_node el, Rgba* out,
+                           pugi::xml_node* gradient) {
   switch (p.kind) {
     case PaintKind::None: return false;
     case PaintKind::Color: *out = p.color; return true;
@@ -295,9 +318,10 @@ bool Reader::resolve_paint(const Paint& p, const Style& s, pugi::xml_node el, Rg
       if (it != ids_.end()) {
         const std::string_view tag = local_name(it->second.name());
         if (tag == "linearGradient" || tag == "radialGradient") {
-          warn(el, "gradient paint drawn with its mean stop colour");
+          warn(el, "gradient paint drawn with its mean stop colour in fits and exports");
           if (const auto m = gradient_mean(it->second, 0)) {
             *out = *m;
+            *gradient = it->second;
             return true;
           }
           return false;
@@ -526,9 +550,10 @@ bool Reader::animated_path(pugi::xml_node n, double time, std::vector<Subpath>& 
 
 void Reader::add_shape(pugi::xml_node n, std::vector<Subpath> subpaths, const Style& s,
                        const Affine& ctm, float opacity, const std::string& locator, int group,
-                       const std::string& id_prefix) {
+                       const std::string& id_prefix, float local_opacity, const Viewport& vp) {
   ++generated_;
   if (subpaths.empty() || !s.visible) return;
+  const std::optional<svg::Box> bbox = svg::subpath_bounds(subpaths);
   Path p;
   const char* id = n.attribute("id").value();
   p.id = *id ? std::string(id) : "path-" + std::to_string(generated_);
@@ -537,10 +562,26 @@ void Reader::add_shape(pugi::xml_node n, std::vector<Subpath> subpaths, const St
   p.tag = std::string(local_name(n.name()));
   p.to_canvas = ctm;
   p.opacity = opacity;
-  p.has_fill = resolve_paint(s.fill, s, n, &p.fill);
+  p.layer = layer_;
+  p.local_opacity = local_opacity;
+  // A gradient paint: the flat colour is its mean (for the fitter and exports), the render
+  // draws the gradient itself; one that paints nothing (no stops, an empty box) is none.
+  auto gradient = [&](pugi::xml_node g, float paint_opacity) {
+    std::optional<Gradient> r = gradient_reader_.resolve(g, bbox, ctm, vp.w, vp.h);
+    if (!r) return -2;
+    r->opacity = paint_opacity;
+    scene_.gradients.push_back(std::move(*r));
+    return static_cast<int>(scene_.gradients.size()) - 1;
+  };
+  pugi::xml_node fill_g, stroke_g;
+  p.has_fill = clip_content_ || resolve_paint(s.fill, s, n, &p.fill, &fill_g);
   if (p.has_fill) p.fill.a *= s.fill_opacity;
-  p.fill_rule = s.fill_rule;
-  p.has_stroke = s.stroke_width > 0 && resolve_paint(s.stroke, s, n, &p.stroke.color);
+  if (p.has_fill && fill_g) p.fill_gradient = gradient(fill_g, s.fill_opacity);
+  if (p.fill_gradient == -2) p.has_fill = false, p.fill_gradient = -1;
+  p.fill_rule = clip_content_ ? s.clip_rule : s.fill_rule;
+  p.has_stroke = !clip_content_ && s.stroke_width > 0 && resolve_paint(s.stroke, s, n, &p.stroke.color, &stroke_g);
+  if (p.has_stroke && stroke_g) p.stroke_gradient = gradient(stroke_g, s.stroke_opacity);
+  if (p.stroke_gradient == -2) p.has_stroke = false, p.stroke_gradient = -1;
   if (p.has_stroke) {
     p.stroke.color.a *= s.stroke_opacity;
     p.stroke.width = s.stroke_width * ctm.mean_scale();
@@ -567,6 +608,10 @@ void Reader::add_shape(pugi::xml_node n, std::vector<Subpath> subpaths, const St
   if (segments_ > limits_.max_segments)
     fail("more than " + std::to_string(limits_.max_segments) + " path segments");
   p.subpaths = std::move(subpaths);
+  if (sink_) {  // a clip path's or mask's content: not a part of the scene to fit
+    sink_->push_back(std::move(p));
+    return;
+  }
   const int index = static_cast<int>(scene_.paths.size());
   if (group < 0) {
     p.group = static_cast<int>(scene_.groups.size());
@@ -576,6 +621,141 @@ void Reader::add_shape(pugi::xml_node n, std::vector<Subpath> subpaths, const St
     scene_.groups[group].paths.push_back(index);
   }
   scene_.paths.push_back(std::move(p));
+}
+
+std::optional<svg::Box> Reader::added_bounds(size_t first, const Affine& ctm) const {
+  const std::vector<Path>& paths = sink_ ? *sink_ : scene_.paths;
+  const Affine to_user = ctm.inverse();
+  std::optional<svg::Box> out;
+  for (size_t i = first; i < paths.size(); ++i) {
+    const auto b = svg::subpath_bounds(paths[i].subpaths, to_user);
+    if (!b) continue;
+    if (!out) {
+      out = b;
+      continue;
+    }
+    const double x0 = std::min(out->x, b->x), y0 = std::min(out->y, b->y);
+    const double x1 = std::max(out->x + out->w, b->x + b->w), y1 = std::max(out->y + out->h, b->y + b->h);
+    out = svg::Box{x0, y0, x1 - x0, y1 - y0};
+  }
+  return out;
+}
+
+void Reader::walk_content(pugi::xml_node n, const Style& s, const Affine& ctm, bool clip,
+                          std::vector<Path>* sink, int depth, const Viewport& vp) {
+  // Content paths get no ids of their own: the generated ids of the scene's paths stay what
+  // they were without it.
+  const int generated = generated_, uses = anonymous_uses_;
+  std::vector<Path>* outer_sink = sink_;
+  const bool outer_clip = clip_content_;
+  const int outer_layer = layer_;
+  sink_ = sink;
+  clip_content_ = clip;
+  layer_ = -1;
+  walk_children(n, s, ctm, 1.0f, "", -1, "content", depth + 1, vp);
+  sink_ = outer_sink;
+  clip_content_ = outer_clip;
+  layer_ = outer_layer;
+  generated_ = generated;
+  anonymous_uses_ = uses;
+}
+
+int Reader::resolve_clip(const std::string& url, pugi::xml_node el, const Affine& ctm,
+                         const std::optional<svg::Box>& bbox, const Viewport& vp, int depth) {
+  const auto it = ids_.find(url);
+  if (it == ids_.end() || local_name(it->second.name()) != "clipPath") {
+    warn(el, "clip-path url(#" + url + ") is not a clipPath (drawn unclipped)");
+    return -1;
+  }
+  const pugi::xml_node node = it->second;
+  if (!reference_stack_.insert(node.internal_object()).second) {
+    warn(el, "clip-path url(#" + url + ") refers to itself (drawn unclipped)");
+    return -1;
+  }
+  Style cs;
+  ElementProps cp;
+  compute_style(node, Style{}, cs, cp);
+  Affine m = ctm;
+  if (const char* t = node.attribute("transform").value(); *t)
+    if (const auto tm = svg::parse_transform(t)) m = m * *tm;
+  const int index = static_cast<int>(scene_.clips.size());
+  scene_.clips.emplace_back();
+  const bool bbox_units = std::string_view(node.attribute("clipPathUnits").value()) == "objectBoundingBox";
+  // Bounding box units on an empty box clip everything away (the element is not drawn).
+  if (!bbox_units || (bbox && bbox->w > 0 && bbox->h > 0)) {
+    if (bbox_units) m = m * Affine{bbox->w, 0, 0, bbox->h, bbox->x, bbox->y};
+    std::vector<Path> paths;
+    if (std::fabs(m.det()) > 0 && std::isfinite(m.det())) walk_content(node, cs, m, true, &paths, depth, vp);
+    scene_.clips[index].paths = std::move(paths);
+  }
+  if (cp.has_clip && !cp.clip_url.empty()) {
+    const int nested = resolve_clip(cp.clip_url, node, ctm, bbox, vp, depth);
+    scene_.clips[index].clip = nested;
+  }
+  reference_stack_.erase(node.internal_object());
+  return index;
+}
+
+int Reader::resolve_mask(const std::string& url, pugi::xml_node el, const Affine& ctm,
+                         const std::optional<svg::Box>& bbox, const Viewport& vp, int depth) {
+  const auto it = ids_.find(url);
+  if (it == ids_.end() || local_name(it->second.name()) != "mask") {
+    warn(el, "mask url(#" + url + ") is not a mask (drawn unmasked)");
+    return -1;
+  }
+  const pugi::xml_node node = it->second;
+  if (!reference_stack_.insert(node.internal_object()).second) {
+    warn(el, "mask url(#" + url + ") refers to itself (drawn unmasked)");
+    return -1;
+  }
+  Style ms;
+  ElementProps mp;
+  compute_style(node, Style{}, ms, mp);
+  const int index = static_cast<int>(scene_.masks.size());
+  scene_.masks.emplace_back();
+  scene_.masks[index].luminance = mp.mask_type != "alpha";
+  const bool box_ok = bbox && bbox->w > 0 && bbox->h > 0;
+  const bool region_bbox = std::string_view(node.attribute("maskUnits").value()) != "userSpaceOnUse";
+  const bool content_bbox = std::string_view(node.attribute("maskContentUnits").value()) == "objectBoundingBox";
+  // The region: x, y, width, height (default -10%, -10%, 120%, 120%) in bounding box fractions
+  // or user units; with bounding box units on an empty box the region is empty (nothing drawn).
+  if (!region_bbox || box_ok) {
+    double x, y, w, h;
+    Affine to_user;
+    if (region_bbox) {
+      x = length(node, "x", -0.1, 1), y = length(node, "y", -0.1, 1);
+      w = length(node, "width", 1.2, 1), h = length(node, "height", 1.2, 1);
+      to_user = Affine{bbox->w, 0, 0, bbox->h, bbox->x, bbox->y};
+    } else {
+      x = length(node, "x", -0.1 * vp.w, vp.w), y = length(node, "y", -0.1 * vp.h, vp.h);
+      w = length(node, "width", 1.2 * vp.w, vp.w), h = length(node, "height", 1.2 * vp.h, vp.h);
+    }
+    if (w > 0 && h > 0) {
+      const Affine m = ctm * to_user;
+      Subpath r;
+      r.closed = true;
+      const Vec2 corners[] = {{x, y}, {x + w, y}, {x + w, y + h}, {x, y + h}, {x, y}};
+      r.points.push_back(m.apply(corners[0]));
+      for (int i = 1; i < 5; ++i) {
+        const Vec2 a = m.apply(corners[i - 1]), b = m.apply(corners[i]);
+        r.points.insert(r.points.end(), {a + (1.0 / 3.0) * (b - a), a + (2.0 / 3.0) * (b - a), b});
+      }
+      scene_.masks[index].region.push_back(std::move(r));
+    }
+  }
+  if (!content_bbox || box_ok) {
+    Affine m = ctm;
+    if (content_bbox) m = m * Affine{bbox->w, 0, 0, bbox->h, bbox->x, bbox->y};
+    std::vector<Path> paths;
+    walk_content(node, ms, m, false, &paths, depth, vp);
+    scene_.masks[index].paths = std::move(paths);
+  }
+  if (mp.has_mask && !mp.mask_url.empty()) {
+    const int nested = resolve_mask(mp.mask_url, node, ctm, bbox, vp, depth);
+    scene_.masks[index].mask = nested;
+  }
+  reference_stack_.erase(node.internal_object());
+  return index;
 }
 
 void Reader::walk_children(pugi::xml_node n, const Style& s, const Affine& ctm, float opacity,
@@ -618,8 +798,12 @@ void Reader::walk(pugi::xml_node n, const Style& parent, const Affine& parent_ct
   ElementProps props;
   compute_style(n, parent, s, props);
   if (props.display_none) return;
-  if (props.has_clip) warn(n, "clip-path ignored (clipping is not supported)");
-  if (props.has_mask) warn(n, "mask ignored (masks are not supported)");
+  if (clip_content_ && (props.has_clip || props.has_mask))
+    warn(n, "clip-path or mask inside a clipPath ignored");
+  if (!clip_content_ && props.has_clip && props.clip_url.empty())
+    warn(n, "clip-path ignored (only url(#id) references are supported)");
+  if (!clip_content_ && props.has_mask && props.mask_url.empty())
+    warn(n, "mask ignored (only url(#id) references are supported)");
   if (props.has_filter) warn(n, "filter ignored (filters are not supported)");
   if (props.has_marker) warn(n, "markers ignored (markers are not supported)");
   Affine own;
@@ -641,10 +825,48 @@ void Reader::walk(pugi::xml_node n, const Style& parent, const Affine& parent_ct
     return;
   const float op = opacity * props.opacity;
 
+  // A compositing layer (scene.h) for group opacity, clip-path and mask. A shape's opacity is
+  // folded into its paint when it has a fill or a stroke but not both (one draw, one blend).
+  const bool both_paints = s.fill.kind != PaintKind::None && s.stroke.kind != PaintKind::None && s.stroke_width > 0;
+  const bool clipped = !clip_content_ && !props.clip_url.empty();
+  const bool masked = !clip_content_ && !props.mask_url.empty();
+  const bool layered = !clip_content_ && (clipped || masked || (props.opacity < 1 && (!shape || both_paints)));
+  const int saved_layer = layer_;
+  // Every way out of this element (early returns included) leaves the layer it entered in.
+  struct LayerRestore {
+    int& layer;
+    int saved;
+    ~LayerRestore() { layer = saved; }
+  } restore{layer_, layer_};
+  int own_layer = -1;
+  if (layered) {
+    own_layer = static_cast<int>(scene_.layers.size());
+    scene_.layers.push_back({layer_, props.opacity, -1, -1});
+    layer_ = own_layer;
+  }
+  const size_t first_added = sink_ ? sink_->size() : scene_.paths.size();
+  // Clip and mask are resolved once the content is read, for its bounding box.
+  auto finish_layer = [&](const std::optional<svg::Box>& bbox) {
+    layer_ = saved_layer;
+    if (own_layer < 0) return;
+    if (clipped) {
+      const int c = resolve_clip(props.clip_url, n, ctm, bbox, vp, depth);
+      scene_.layers[own_layer].clip = c;
+    }
+    if (masked) {
+      const int m = resolve_mask(props.mask_url, n, ctm, bbox, vp, depth);
+      scene_.layers[own_layer].mask = m;
+    }
+  };
+
   if (shape) {
-    add_shape(n, shape_geometry(n, tag, vp), s, ctm, op, locator, group, id_prefix);
+    std::vector<Subpath> geometry = shape_geometry(n, tag, vp);
+    const std::optional<svg::Box> bbox = svg::subpath_bounds(geometry);
+    add_shape(n, std::move(geometry), s, ctm, op, locator, group, id_prefix, layered ? 1.0f : props.opacity, vp);
+    finish_layer(bbox);
     return;
   }
+  if (clip_content_ && tag != "use") return;  // a clipPath holds shapes and uses of shapes
   if (tag == "use") {
     const char* href = n.attribute("xlink:href").value();
     if (!*href) href = n.attribute("href").value();
@@ -683,14 +905,22 @@ void Reader::walk(pugi::xml_node n, const Style& parent, const Affine& parent_ct
       Style ts;
       ElementProps tp;
       compute_style(target, s, ts, tp);
-      if (!tp.display_none && w > 0 && h > 0)
+      if (!tp.display_none && w > 0 && h > 0) {
+        const int outer = layer_;
+        if (tp.opacity < 1 && !clip_content_) {
+          scene_.layers.push_back({layer_, tp.opacity, -1, -1});
+          layer_ = static_cast<int>(scene_.layers.size()) - 1;
+        }
         walk_children(target, ts, ctm * vb, op * tp.opacity, locator, use_group, prefix, depth + 1, inner);
+        layer_ = outer;
+      }
     } else {
       walk(target, s, ctm, op, locator, use_group, prefix, depth + 1, vp);
     }
     if (g == -2 && scene_.groups[use_group].paths.empty()) scene_.groups.pop_back();
     use_stack_.erase(n.internal_object());
     use_stack_.erase(target.internal_object());
+    finish_layer(added_bounds(first_added, ctm));
     return;
   }
   Viewport inner = vp;
@@ -718,6 +948,7 @@ void Reader::walk(pugi::xml_node n, const Style& parent, const Affine& parent_ct
     }
   }
   walk_children(n, s, ctm, op, locator, g, id_prefix, depth, inner);
+  finish_layer(added_bounds(first_added, ctm));
   if (new_group && scene_.groups[g].paths.empty()) {
     scene_.groups.pop_back();
     for (auto it = data_groups_.begin(); it != data_groups_.end();)
@@ -793,7 +1024,13 @@ Scene Reader::read(std::string_view text) {
     else if (!(std::fabs(det) > 0))
       return std::move(scene_);
   }
+  if (props.opacity < 1) {
+    scene_.layers.push_back({-1, props.opacity, -1, -1});
+    layer_ = 0;
+  }
   walk_children(root, base, ctm, props.opacity, "/svg", -1, "", 0, vp);
+  if (!props.clip_url.empty() || !props.mask_url.empty())
+    warn(root, "clip-path and mask on the root <svg> ignored");
   for (std::string& line : warning_lines()) scene_.warnings.push_back(std::move(line));
   return std::move(scene_);
 }

@@ -54,6 +54,30 @@ bool parse_paint(std::string_view v, const Style& style, Paint* out) {
   return false;
 }
 
+// The id in "url(#id)" (quotes allowed), or "" for anything else.
+std::string url_id(std::string_view v) {
+  if (v.substr(0, 4) != "url(") return {};
+  const size_t close = v.find(')');
+  if (close == std::string_view::npos) return {};
+  std::string_view ref = trim(v.substr(4, close - 4));
+  if (ref.size() >= 2 && (ref.front() == '\'' || ref.front() == '"')) ref = ref.substr(1, ref.size() - 2);
+  if (ref.empty() || ref.front() != '#') return {};
+  return std::string(ref.substr(1));
+}
+
+// stroke-miterlimit: a plain number (SVG 2, 13.5.3); "4px" or "20%" are invalid, so the
+// declaration is ignored. False when invalid; `bad` for nan/inf/overflow.
+bool parse_plain_number(std::string_view v, double* out, bool* bad) {
+  v = trim(v);
+  if (spells_non_finite(v)) { *bad = true; return false; }
+  Cursor c{v};
+  const auto n = c.number();
+  if (c.out_of_range) { *bad = true; return false; }
+  if (!n || !c.done()) return false;
+  *out = *n;
+  return true;
+}
+
 bool parse_length_number(std::string_view v, double* out, bool* bad) {
   // A stroke width or miter limit: a number with an optional px unit (others are rare here).
   v = trim(v);
@@ -142,7 +166,7 @@ bool apply_declaration(std::string_view name, std::string_view value, const Styl
     else if (value == "square") s.cap = LineCap::Square;
   } else if (name == "stroke-miterlimit") {
     double m;
-    if (parse_length_number(value, &m, &bad) && m >= 1) s.miter_limit = m;
+    if (parse_plain_number(value, &m, &bad) && m >= 1) s.miter_limit = m;
   } else if (name == "stroke-dasharray") {
     s.dashed = value != "none" && !value.empty();
   } else if (name == "visibility") {
@@ -150,10 +174,17 @@ bool apply_declaration(std::string_view name, std::string_view value, const Styl
     else if (value == "visible") s.visible = true;
   } else if (name == "display") {
     props.display_none = value == "none";
+  } else if (name == "clip-rule") {
+    if (value == "evenodd") s.clip_rule = FillRule::EvenOdd;
+    else if (value == "nonzero") s.clip_rule = FillRule::NonZero;
   } else if (name == "clip-path") {
     props.has_clip = value != "none";
+    props.clip_url = url_id(value);
   } else if (name == "mask") {
     props.has_mask = value != "none";
+    props.mask_url = url_id(value);
+  } else if (name == "mask-type") {
+    props.mask_type = std::string(value);
   } else if (name == "filter") {
     props.has_filter = value != "none";
   } else if (name == "marker-start" || name == "marker-mid" || name == "marker-end" || name == "marker") {

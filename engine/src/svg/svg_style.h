@@ -32,6 +32,7 @@ struct Style {
   Rgba color{0, 0, 0, 1};   // `color`, for currentColor
   bool visible = true;
   bool dashed = false;      // stroke-dasharray given (drawn solid, with a warning)
+  FillRule clip_rule = FillRule::NonZero;  // for shapes inside a clipPath
 };
 
 // Per-element, non-inherited values found while applying a declaration.
@@ -39,6 +40,8 @@ struct ElementProps {
   float opacity = 1;
   bool display_none = false;
   bool has_clip = false, has_mask = false, has_filter = false, has_marker = false;
+  std::string clip_url, mask_url;  // the element id of clip-path / mask url(#id), when given so
+  std::string mask_type;           // mask-type (on a <mask>): luminance or alpha
 };
 
 // Applies one declaration `name: value` (a presentation attribute or a `style` entry).
