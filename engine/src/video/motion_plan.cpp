@@ -723,6 +723,11 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
               {"parent", P.parent >= 0 ? rig.parts[P.parent].name : ""},
               {"pivot", {std::round(P.pivot.x * 100) / 100, std::round(P.pivot.y * 100) / 100}},
               {"why", P.why}};
+    p["box"] = {std::round(P.box.x0 * 10) / 10, std::round(P.box.y0 * 10) / 10, std::round(P.box.x1 * 10) / 10, std::round(P.box.y1 * 10) / 10};
+    json ids = json::array();
+    for (size_t pi = 0; pi < rig.part_of_path.size(); ++pi)
+      if (&rig.parts[rig.part_of_path[pi] >= 0 ? rig.part_of_path[pi] : 0] == &P && rig.part_of_path[pi] >= 0) ids.push_back(scene.paths[pi].id);
+    p["paths"] = ids;
     if (P.round) p["round"] = true;
     parts.push_back(p);
   }
