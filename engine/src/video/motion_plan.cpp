@@ -27,8 +27,17 @@ constexpr int kScaleAttempts = 12;
 constexpr double kArmHostTop = 0.6;
 constexpr double kArmHostMinHeight = 0.2;
 constexpr double kArmHostWider = 1.15;
-// A part hanging from a spinning part turns with it when this share of its box is inside.
-constexpr double kInsideShare = 0.7;
+// Wheels: round parts at least this share of the widest one's width; and parts whose centre is
+// within this share of a wheel's width from its centre turn with it.
+constexpr double kWheelShare = 0.5;
+constexpr double kConcentric = 0.1;
+// A part whose middle is within this share of a turning wheel's radius rides round with it.
+// and it is small beside the wheel (at most this share of its box: a cabin, not a stand).
+constexpr double kRideReach = 1.05;
+constexpr double kRideMaxArea = 0.1;
+// A part hanging from a spinning part turns with it when this share of its box is inside (a
+// stand reaching into the wheel's box is not carried).
+constexpr double kSpinInsideShare = 0.9;
 
 bool whole_only(Primitive p) {
   return p == Primitive::Rock || p == Primitive::Hop || p == Primitive::Bob || p == Primitive::Slide ||
@@ -87,12 +96,30 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
     case Target::Tail: v = with_role(rig, {Role::Tail}); break;
     case Target::Background: v = with_role(rig, {Role::Background}); return v;
     case Target::Repeated: return {};
-    case Target::Wheels:
+    case Target::Wheels: {
+      // The large round parts (a bicycle's two wheels), and the round parts concentric with
+      // them (a ferris wheel's rim, inner ring and hub turn together); not small round details.
+      double widest = 0;
+      for (const auto& P : rig.parts)
+        if (P.round && P.role != Role::Background) widest = std::max(widest, P.box.w());
+      std::vector<int> big;
       for (size_t i = 0; i < rig.parts.size(); ++i)
-        if (rig.parts[i].round) v.push_back(static_cast<int>(i));
+        if (rig.parts[i].round && rig.parts[i].role != Role::Background && rig.parts[i].box.w() >= kWheelShare * widest)
+          big.push_back(static_cast<int>(i));
+      for (size_t i = 0; i < rig.parts.size(); ++i) {
+        const RigPart& P = rig.parts[i];
+        bool keep = std::find(big.begin(), big.end(), static_cast<int>(i)) != big.end();
+        for (int b : big) {
+          const Vec2 d = P.box.centre() - rig.parts[b].box.centre();
+          keep = keep || (P.role != Role::Background && P.box.w() < rig.parts[b].box.w() &&
+                          std::hypot(d.x, d.y) <= kConcentric * rig.parts[b].box.w() && (P.round || P.box.w() >= kWheelShare * rig.parts[b].box.w()));
+        }
+        if (keep) v.push_back(static_cast<int>(i));
+      }
       v = topmost(rig, v);
       if (v.empty() && note) *note = "no round part for the wheels";
       return v;
+    }
     case Target::Named:
       for (size_t i = 0; i < rig.parts.size(); ++i)
         if (part_has_word(rig.parts[i], noun)) v.push_back(static_cast<int>(i));
@@ -202,6 +229,9 @@ struct Builder {
     // bicycle drawn as one round-ish part must not spin as a whole. A named wheel may be.
     if (target == Target::Wheels && !primary_retargeted) {
       a.parts.erase(std::remove(a.parts.begin(), a.parts.end(), rig.root), a.parts.end());
+      // ... nor up in the figure (a rider's round collar is not a wheel of the bicycle).
+      a.parts.erase(std::remove_if(a.parts.begin(), a.parts.end(), [&](int p) { return rig.parts[p].box.centre().y < rig.figure.centre().y; }),
+                    a.parts.end());
       if (a.parts.empty() && note.empty()) note = "no round part other than the root for the wheels";
     }
     // No separate part for a limb role: a region of the root bends instead (when it swings).
@@ -564,12 +594,26 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     for (int g : order) world[g] = rig.parts[g].parent >= 0 ? world[rig.parts[g].parent] * local[g] : local[g];
     // A spinning part turns in its own frame, and carries only what hangs from it inside its
     // box (a ferris wheel's cabins, not its stand).
-    for (int g = 0; g < G; ++g)
+    for (int g = 0; g < G; ++g) {
+      bool carried = false;
       for (int a = g, guard = 0; a >= 0 && guard < 64; a = rig.parts[a].parent, ++guard)
-        if (spins[a] && (a == g || overlap_share(rig.parts[g].box, rig.parts[a].box) >= kInsideShare)) {
+        if (spins[a] && (a == g || overlap_share(rig.parts[g].box, rig.parts[a].box) >= kSpinInsideShare)) {
           world[g] = world[g] * spin[a];
+          carried = true;
           break;
         }
+      // Smaller parts elsewhere in the rig with their middle on a turning wheel (a ferris
+      // wheel's cabins) ride round with it, staying upright.
+      if (carried || g == rig.root || rig.parts[g].role == Role::Background) continue;
+      for (int a = 0; a < G; ++a) {
+        const RigPart& A = rig.parts[a];
+        const Vec2 c = rig.parts[g].box.centre(), d = c - A.box.centre();
+        if (!spins[a] || a == g || rig.parts[g].box.area() > kRideMaxArea * A.box.area() || std::hypot(d.x, d.y) > kRideReach * 0.5 * A.box.w()) continue;
+        const Vec2 to = spin[a].apply(c);
+        world[g] = Affine::translate(to.x - c.x, to.y - c.y) * world[g];
+        break;
+      }
+    }
 
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
       const int g = rig.part_of_path[pi];
@@ -683,12 +727,16 @@ void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, 
   for (size_t i = 0; i <= plan.actions.size(); ++i) {
     const bool all = i == plan.actions.size();
     if (!all && plan.actions[i].primitive == Primitive::Spin) continue;
+    // Alone: the other actions stay in the plan at no amplitude (a fall still frees its drops
+    // from the figure's sway).
     MotionPlan one = plan;
-    if (!all) one.actions = {plan.actions[i]};
+    if (!all)
+      for (size_t j = 0; j < one.actions.size(); ++j)
+        if (j != i) one.actions[j].amp = 0;
     double& scale = all ? plan.scale : plan.actions[i].scale;
     std::string first_why;
     for (int attempt = 0;; ++attempt) {
-      if (!all) one.actions[0].scale = scale;
+      if (!all) one.actions[i].scale = scale;
       else one.scale = scale;
       const std::string why = limit_broken(scene, animate_plan(scene, rig, one, frames), exempt, frames, K);
       const std::string what = all ? "the motion" : plan.actions[i].verb + " (" + primitive_name(plan.actions[i].primitive) + ")";

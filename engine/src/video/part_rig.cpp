@@ -34,6 +34,8 @@ constexpr double kRoundFillMax = 0.93;
 // A group whose paths the document names apart splits into at most this many parts (more, and
 // the names are per-path labels rather than parts: the group stays whole).
 constexpr size_t kMaxNamedSplit = 16;
+// A round path at least this share of the canvas is split from its group as a wheel.
+constexpr double kWheelPathArea = 0.02;
 
 bool is_generic_word(const std::string& w) {
   static const std::set<std::string> generic = {
@@ -84,6 +86,17 @@ double overlap(const RigBox& a, const RigBox& b) {
 double gap(const RigBox& a, const RigBox& b) {
   const double dx = std::max({0.0, a.x0 - b.x1, b.x0 - a.x1}), dy = std::max({0.0, a.y0 - b.y1, b.y0 - a.y1});
   return std::hypot(dx, dy);
+}
+
+// A near-square box that its first outline fills about as a circle does, at least `min_area`.
+bool round_outline(const RigBox& box, double outline, double min_area) {
+  const double aspect = box.w() / std::max(box.h(), 1e-9);
+  const double fill = outline / std::max(box.area(), 1e-9);
+  return aspect > 0.8 && aspect < 1.25 && fill > kRoundFillMin && fill < kRoundFillMax && box.area() > min_area;
+}
+
+bool round_path(const Path& p, double min_area) {
+  return !p.subpaths.empty() && round_outline(path_box(p), std::fabs(shoelace(p.subpaths[0].points)), min_area);
 }
 
 }  // namespace
@@ -174,16 +187,30 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
   std::vector<std::vector<int>> unit_paths;
   std::vector<int> unit_group;
   std::vector<char> unit_split;
+  std::set<int> wheel_paths;  // round paths split from their group
   for (size_t g = 0; g < scene.groups.size(); ++g) {
     std::map<std::string, std::vector<int>> by_name;  // innermost named element -> paths
     for (int pi : scene.groups[g].paths) {
       const auto it = names.find(scene.paths[pi].id);
       by_name[it == names.end() ? std::string() : it->second.front().locator].push_back(pi);
     }
-    const bool split = by_name.size() >= 2 && by_name.size() <= kMaxNamedSplit;
+    bool split = by_name.size() >= 2 && by_name.size() <= kMaxNamedSplit;
     if (!split) by_name = {{"", scene.groups[g].paths}};
     std::vector<std::vector<int>> units;
-    for (auto& [loc, ps] : by_name) units.push_back(ps);
+    for (auto& [loc, ps] : by_name) {
+      // A large round path among others (a wheel in a bicycle, a ferris wheel's rim) is a part
+      // of its own, so that it can turn while the frame holds.
+      std::vector<int> rest;
+      for (int pi : ps) {
+        if (ps.size() > 1 && round_path(scene.paths[pi], kWheelPathArea * scene.width * scene.height)) {
+          units.push_back({pi});
+          wheel_paths.insert(pi);
+        }
+        else rest.push_back(pi);
+      }
+      if (!rest.empty()) units.push_back(rest);
+    }
+    split = split || units.size() > 1;
     std::sort(units.begin(), units.end());  // in paint order of their first paths
     for (auto& u : units) {
       unit_paths.push_back(std::move(u));
@@ -240,6 +267,9 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
         }
       }
     }
+    // A wheel split from a named group is that group's wheel ("bicycle_wheel").
+    if (P.named && unit_paths[g].size() == 1 && wheel_paths.count(unit_paths[g][0]) && !has_word(name_words(P.name), {"wheel", "tire", "tyre"}))
+      P.name += "_wheel";
     for (const auto& w : name_words(P.name))
       if (!is_generic_word(w)) P.words.push_back(w);
   }
@@ -387,14 +417,16 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
   for (int g = 0; g < G; ++g) {
     RigPart& P = rig.parts[g];
     if (P.box.empty() || P.role == Role::Background) continue;
-    const double aspect = P.box.w() / std::max(P.box.h(), 1e-9);
     double outline = 0;
     for (int pi : unit_paths[g])
       if (!scene.paths[pi].subpaths.empty())
         outline = std::max(outline, std::fabs(shoelace(scene.paths[pi].subpaths[0].points)));
-    const double fill = outline / std::max(P.box.area(), 1e-9);
-    P.round = has_word(P.words, {"wheel", "tire", "tyre"}) ||
-              (aspect > 0.8 && aspect < 1.25 && fill > kRoundFillMin && fill < kRoundFillMax && P.box.area() > 0.005 * CW * CH);
+    P.round = has_word(P.words, {"wheel", "tire", "tyre"}) || round_outline(P.box, outline, 0.005 * CW * CH);
+    // A wheel split from its group turns; it is no limb to swing.
+    if (unit_paths[g].size() == 1 && wheel_paths.count(unit_paths[g][0]) && g != rig.root) {
+      P.role = Role::Detail;
+      P.why = "a round path of its group (a wheel)";
+    }
   }
 
   // Default names from roles.
@@ -404,7 +436,7 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
     if (!P.name.empty()) continue;
     std::string base = P.role == Role::Root ? "root" : P.role == Role::Head ? "head" : P.role == Role::Tail ? "tail"
                      : P.role == Role::Background ? "background" : P.role == Role::UpperLimb ? "limb_upper"
-                     : P.role == Role::LowerLimb ? "limb_lower" : "detail";
+                     : P.role == Role::LowerLimb ? "limb_lower" : P.round ? "wheel" : "detail";
     if ((P.role == Role::UpperLimb || P.role == Role::LowerLimb) && P.side != 0) base += P.side > 0 ? "_right" : "_left";
     const int k = used[base]++;
     P.name = k == 0 ? base : base + "_" + std::to_string(k + 1);
