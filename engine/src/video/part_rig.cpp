@@ -194,7 +194,15 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
       const auto it = names.find(scene.paths[pi].id);
       by_name[it == names.end() ? std::string() : it->second.front().locator].push_back(pi);
     }
-    bool split = by_name.size() >= 2 && by_name.size() <= kMaxNamedSplit;
+    // Not when one named element holds all of them (the document's own "arm_right" group,
+    // whose paths are "upper_arm_right" and "hand_right": the grouper kept it as a part).
+    std::map<std::string, size_t> holders;
+    for (int pi : scene.groups[g].paths)
+      if (const auto it = names.find(scene.paths[pi].id); it != names.end())
+        for (const auto& e : it->second) ++holders[e.locator];
+    bool held = false;
+    for (const auto& [loc, n] : holders) held = held || n == scene.groups[g].paths.size();
+    bool split = !held && by_name.size() >= 2 && by_name.size() <= kMaxNamedSplit;
     if (!split) by_name = {{"", scene.groups[g].paths}};
     std::vector<std::vector<int>> units;
     for (auto& [loc, ps] : by_name) {
