@@ -3,7 +3,10 @@
 
 Reads a run directory's motion.json: for every control point of the drawing, its rest position
 and how far it travels in the target video (its largest distance from rest, canvas units), and
-for every path the box it sweeps. Labels name regions of the drawing independently of the
+for every path the box it sweeps. With --fitted, the same from the FITTED animation instead:
+animation.json (the Lottie export of animation.svg, keyframed path data in canvas pixels, one
+layer per path id): each control point's rest is its position at the first keyframe and its
+travel its largest distance from there over the keyframes. Labels name regions of the drawing independently of the
 engine's rig:
   all                  every point
   -                    no point
@@ -26,11 +29,67 @@ STILL_RATIO_MAX = 0.25  # still paths move at most a quarter as much as the expe
 LARGE = 0.45        # share of the canvas: a background (as a reader of the drawing would say)
 
 
+def shape_keyframes(sh):
+    """Keyframes of one Lottie path shape: a list of control-point lists (v, v+o, next v+i ...)."""
+    k = sh["ks"]["k"]
+    frames = [kf["s"][0] for kf in k] if sh["ks"]["a"] else [k]
+    out = []
+    for f in frames:
+        v, i, o = f["v"], f["i"], f["o"]
+        pts = []
+        n = len(v)
+        for j in range(n):
+            pts.append(v[j])
+            if j + 1 < n or f.get("c"):
+                nxt = (j + 1) % n
+                pts.append([v[j][0] + o[j][0], v[j][1] + o[j][1]])
+                pts.append([v[nxt][0] + i[nxt][0], v[nxt][1] + i[nxt][1]])
+        out.append(pts)
+    return out
+
+
+def fitted_paths(run_dir, canvas):
+    """motion.json's per-path fields (rest, swept, point_travel) measured on animation.json."""
+    a = json.load(open(run_dir + "/animation.json"))
+    sx, sy = canvas[0] / a["w"], canvas[1] / a["h"]
+    paths = []
+
+    def shapes(items):
+        for it in items:
+            if it.get("ty") == "sh":
+                yield it
+            elif it.get("ty") == "gr":
+                yield from shapes(it.get("it", []))
+
+    for layer in a["layers"]:
+        if layer.get("ty") != 4:
+            continue
+        rest_box = [1e300, 1e300, -1e300, -1e300]
+        swept = [1e300, 1e300, -1e300, -1e300]
+        travel = []
+        for sh in shapes(layer.get("shapes", [])):
+            kfs = shape_keyframes(sh)
+            for j, q in enumerate(kfs[0]):
+                far = 0.0
+                for f in kfs:
+                    x, y = f[j][0] * sx, f[j][1] * sy
+                    far = max(far, math.hypot(x - q[0] * sx, y - q[1] * sy))
+                    swept = [min(swept[0], x), min(swept[1], y), max(swept[2], x), max(swept[3], y)]
+                rx, ry = q[0] * sx, q[1] * sy
+                rest_box = [min(rest_box[0], rx), min(rest_box[1], ry), max(rest_box[2], rx), max(rest_box[3], ry)]
+                travel += [rx, ry, far]
+        if travel:
+            paths.append({"id": layer.get("nm"), "rest": rest_box, "swept": swept, "point_travel": travel})
+    return paths
+
+
 def main():
-    run_dir, move_spec, still_spec = sys.argv[1], sys.argv[2], sys.argv[3]
+    args = [a for a in sys.argv[1:] if a != "--fitted"]
+    fitted = "--fitted" in sys.argv[1:]
+    run_dir, move_spec, still_spec = args[0], args[1], args[2]
     m = json.load(open(run_dir + "/motion.json"))
     cw, ch = m["canvas"]
-    paths = m["paths"]
+    paths = fitted_paths(run_dir, m["canvas"]) if fitted else m["paths"]
 
     def is_large(p):
         x0, y0, x1, y1 = p["rest"]

@@ -180,10 +180,11 @@ TEST_CASE("a jump near the top edge is scaled down to stay in the canvas, with a
   REQUIRE(plan.actions.size() == 1);
   const int F = 25;
   fit_plan(s, rig, plan, F, 9);
-  CHECK(plan.scale < 1.0);
+  CHECK(plan.actions[0].scale < 1.0);  // the jump's own scale; nothing else had to shrink
+  CHECK(plan.scale == 1.0);
   REQUIRE(plan.notes.size() == 1);
-  CHECK(plan.notes[0].find("amplitudes scaled to") == 0);
-  CHECK(plan.notes[0].find(": at full size the motion would leave the canvas") != std::string::npos);
+  CHECK(plan.notes[0].find("the amplitude of jump (hop) scaled to") == 0);
+  CHECK(plan.notes[0].find(": at full size it would leave the canvas") != std::string::npos);
   const auto pts = animate_plan(s, rig, plan, F);
   double top = 1e9;
   for (const Vec2& q : pts) top = std::min(top, q.y);
@@ -249,6 +250,125 @@ TEST_CASE("seeds vary the amplitude; the same seed gives the same frames") {
   const auto b = animate_plan(fx.scene, fx.rig, fx.plan("flapping", 2), 9);
   CHECK(a == animate_plan(fx.scene, fx.rig, fx.plan("flapping", 1), 9));
   CHECK(a != b);
+}
+
+}  // TEST_SUITE
+
+TEST_SUITE("motion") {
+
+TEST_CASE("a sway that would push a canvas-filling drawing out is scaled alone; the rain keeps its size") {
+  // A canopy reaching 4 units from the left and right edges, three drops above it.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
+           <path d="M 4 60 L 96 60 L 50 30 Z" fill="#00f"/><rect x="48" y="60" width="4" height="36" fill="#444"/>
+           <rect x="20" y="5" width="4" height="6" fill="#0af"/><rect x="48" y="8" width="4" height="6" fill="#0af"/>
+           <rect x="76" y="5" width="4" height="6" fill="#0af"/></svg>)", "canopy.svg");
+  const Rig rig = build_rig(s, {});
+  REQUIRE(rig.repeated.size() == 3);
+  MotionPlan plan = plan_from_prompt(parse_prompt("rain falls and it sways wildly"), rig, 1);
+  REQUIRE(plan.actions.size() == 2);
+  REQUIRE(plan.actions[1].primitive == Primitive::Rock);
+  const int F = 25;
+  fit_plan(s, rig, plan, F, 9);
+  CHECK(plan.actions[0].scale == 1.0);  // the fall is not shrunk by the sway's limit
+  CHECK(plan.actions[1].scale < 1.0);
+  CHECK(plan.actions[1].scale > 0.2);   // it still sways visibly
+  CHECK(plan.scale == 1.0);
+  REQUIRE(plan.notes.size() == 1);
+  CHECK(plan.notes[0].find("the amplitude of sway (rock) scaled to") == 0);
+  const auto pts = animate_plan(s, rig, plan, F);
+  for (const Vec2& q : pts) CHECK((q.x >= 1 - 1e-6 && q.x <= 99 + 1e-6 && q.y >= 1 - 1e-6 && q.y <= 99 + 1e-6));
+}
+
+TEST_CASE("a group whose paths the document names apart splits into named parts; a hill is background") {
+  const Fixture fx("rider.svg");
+  std::vector<std::string> names;
+  for (const auto& P : fx.rig.parts) names.push_back(P.name);
+  // The hill, the bicycle (its frame: the group's name), its two wheels split off as round
+  // parts, the torso, the leg, the collar: seven parts from one group.
+  REQUIRE(fx.rig.parts.size() == 7);
+  for (const char* n : {"hill", "bicycle", "bicycle_wheel_1", "bicycle_wheel_2", "torso", "leg", "collar"})
+    CHECK(std::count(names.begin(), names.end(), n) == 1);
+  for (const auto& P : fx.rig.parts) {
+    CHECK(P.group == 0);
+    if (P.name == "hill") CHECK(P.role == Role::Background);
+    if (P.name == "leg") CHECK(P.role == Role::LowerLimb);
+  }
+}
+
+TEST_CASE("pedalling spins the two wheels, not the round collar up on the rider; the hill holds") {
+  const Fixture fx("rider.svg");
+  MotionPlan plan = fx.plan("he is pedalling");
+  REQUIRE(plan.actions.size() == 2);
+  CHECK(plan.actions[0].primitive == Primitive::Swing);
+  for (int p : plan.actions[0].parts) CHECK(!fx.rig.parts[p].round);  // the wheels turn, they do not swing
+  CHECK(plan.actions[1].primitive == Primitive::Spin);
+  REQUIRE(plan.actions[1].parts.size() == 2);
+  for (int p : plan.actions[1].parts) {
+    CHECK(fx.rig.parts[p].round);
+    CHECK(fx.rig.parts[p].box.w() == doctest::Approx(80));
+  }
+  const int F = 13;
+  const auto t = fx.travel(animate_plan(fx.scene, fx.rig, plan, F), F);
+  CHECK(t[0] == 0.0);  // the hill
+  CHECK(t[1] > 60.0);  // a wheel's points go round
+}
+
+TEST_CASE("arms with no part of their own bend the widest upper part, with the hand inside it") {
+  // Trousers (the largest part), a sweater whose sleeves reach out to both sides, a hand at the
+  // end of the left sleeve (a part of its own, hanging inside the sweater's box).
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><path d="M 80 100 L 120 100 L 125 190 L 75 190 Z" fill="#fc0"/></g>
+           <g><path d="M 30 40 L 170 40 L 170 55 L 120 55 L 120 100 L 80 100 L 80 55 L 30 55 Z" fill="#00f"/></g>
+           <g><rect x="30" y="56" width="8" height="8" fill="#fa8"/></g></svg>)", "sweater.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("she is waving her arms"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  REQUIRE(plan.actions[0].parts.size() == 1);
+  CHECK(plan.actions[0].parts[0] == 1);  // the sweater, not the trousers (the root)
+  CHECK(plan.actions[0].region == Region::Sides);
+  const int F = 13;
+  const auto pts = animate_plan(s, rig, plan, F);
+  const size_t per = pts.size() / F;
+  std::vector<double> t(3, 0);
+  size_t i = 0;
+  for (size_t p = 0; p < 3; ++p)
+    for (const auto& sp : s.paths[p].subpaths)
+      for (size_t q = 0; q < sp.points.size(); ++q, ++i)
+        for (int f = 1; f < F; ++f) t[p] = std::max(t[p], std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
+  CHECK(t[0] == 0.0);  // the trousers hold
+  CHECK(t[1] > 10.0);  // the sleeves swing
+  CHECK(t[2] > 10.0);  // and the hand with them
+}
+
+TEST_CASE("a ferris wheel's small cabins ride round with the turning wheel, upright") {
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><path d="M 95 100 L 105 100 L 130 190 L 70 190 Z" fill="#555"/></g>
+           <g><path d="M 40 100 C 40 67 67 40 100 40 C 133 40 160 67 160 100 C 160 133 133 160 100 160 C 67 160 40 133 40 100 Z M 97 45 L 103 45 L 103 155 L 97 155 Z" fill="#d80" fill-rule="evenodd"/></g>
+           <g><rect x="154" y="94" width="12" height="12" fill="#0a0"/></g></svg>)", "ferris.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("the ferris wheel turns slowly"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].primitive == Primitive::Spin);
+  CHECK(plan.actions[0].parts == std::vector<int>{1});
+  const int F = 13;
+  const auto pts = animate_plan(s, rig, plan, F);
+  const size_t per = pts.size() / F;
+  size_t cabin = 0;
+  for (size_t p = 0; p < 2; ++p)
+    for (const auto& sp : s.paths[p].subpaths) cabin += sp.points.size();
+  for (int f = 0; f < F; ++f) {
+    const Vec2 a = pts[f * per + cabin], b = pts[f * per + cabin + 1];
+    CHECK(b.x - a.x == doctest::Approx(pts[cabin + 1].x - pts[cabin].x));  // upright: no turn
+    CHECK(b.y - a.y == doctest::Approx(pts[cabin + 1].y - pts[cabin].y));
+  }
+  // At a quarter of the loop the cabin's corner has gone a quarter round the centre (100,100).
+  const Vec2 q = pts[3 * per + cabin], r = pts[cabin];
+  CHECK(std::hypot(q.x - 100, q.y - 100) == doctest::Approx(std::hypot(r.x - 100, r.y - 100)).epsilon(1e-6));
+  CHECK(std::hypot(q.x - r.x, q.y - r.y) > 50.0);
+  CHECK(std::hypot(pts[0].x - pts[6 * per].x, pts[0].y - pts[6 * per].y) == 0.0);  // the stand holds
 }
 
 }  // TEST_SUITE

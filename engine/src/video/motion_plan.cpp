@@ -18,8 +18,26 @@ constexpr double kTau = 2 * M_PI;
 constexpr double kPhaseSpacing = 0.6180339887498949;
 // A prompt with no motion word: the figure sways this many degrees about its base, once.
 constexpr double kFallbackSwayDeg = 4;
-// A part hanging from a spinning part turns with it when this share of its box is inside.
-constexpr double kInsideShare = 0.7;
+// fit_plan: a point in the canvas margin at rest may come this close to the edge (share of the
+// margin); and it gives up after this many steps of 0.8 (7 % of the size).
+constexpr double kMarginUse = 0.9;
+constexpr int kScaleAttempts = 12;
+// region_host: a part carries the arms when its middle is above this share of the figure's
+// height, it is at least this share of the figure tall, and this much wider than the root.
+constexpr double kArmHostTop = 0.6;
+constexpr double kArmHostMinHeight = 0.2;
+constexpr double kArmHostWider = 1.15;
+// Wheels: round parts at least this share of the widest one's width; and parts whose centre is
+// within this share of a wheel's width from its centre turn with it.
+constexpr double kWheelShare = 0.5;
+constexpr double kConcentric = 0.1;
+// A part whose middle is within this share of a turning wheel's radius rides round with it.
+// and it is small beside the wheel (at most this share of its box: a cabin, not a stand).
+constexpr double kRideReach = 1.05;
+constexpr double kRideMaxArea = 0.1;
+// A part hanging from a spinning part turns with it when this share of its box is inside (a
+// stand reaching into the wheel's box is not carried).
+constexpr double kSpinInsideShare = 0.9;
 
 bool whole_only(Primitive p) {
   return p == Primitive::Rock || p == Primitive::Hop || p == Primitive::Bob || p == Primitive::Slide ||
@@ -78,12 +96,30 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
     case Target::Tail: v = with_role(rig, {Role::Tail}); break;
     case Target::Background: v = with_role(rig, {Role::Background}); return v;
     case Target::Repeated: return {};
-    case Target::Wheels:
+    case Target::Wheels: {
+      // The large round parts (a bicycle's two wheels), and the round parts concentric with
+      // them (a ferris wheel's rim, inner ring and hub turn together); not small round details.
+      double widest = 0;
+      for (const auto& P : rig.parts)
+        if (P.round && P.role != Role::Background) widest = std::max(widest, P.box.w());
+      std::vector<int> big;
       for (size_t i = 0; i < rig.parts.size(); ++i)
-        if (rig.parts[i].round) v.push_back(static_cast<int>(i));
+        if (rig.parts[i].round && rig.parts[i].role != Role::Background && rig.parts[i].box.w() >= kWheelShare * widest)
+          big.push_back(static_cast<int>(i));
+      for (size_t i = 0; i < rig.parts.size(); ++i) {
+        const RigPart& P = rig.parts[i];
+        bool keep = std::find(big.begin(), big.end(), static_cast<int>(i)) != big.end();
+        for (int b : big) {
+          const Vec2 d = P.box.centre() - rig.parts[b].box.centre();
+          keep = keep || (P.role != Role::Background && P.box.w() < rig.parts[b].box.w() &&
+                          std::hypot(d.x, d.y) <= kConcentric * rig.parts[b].box.w() && (P.round || P.box.w() >= kWheelShare * rig.parts[b].box.w()));
+        }
+        if (keep) v.push_back(static_cast<int>(i));
+      }
       v = topmost(rig, v);
       if (v.empty() && note) *note = "no round part for the wheels";
       return v;
+    }
     case Target::Named:
       for (size_t i = 0; i < rig.parts.size(); ++i)
         if (part_has_word(rig.parts[i], noun)) v.push_back(static_cast<int>(i));
@@ -115,6 +151,23 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
     *note = v.empty() ? std::string("no part for the ") + target_name(t)
                       : std::string("no ") + target_name(t) + " found; " + rig.parts[v[0]].name + (v.size() > 1 ? " and others" : "") + " stand in";
   return v;
+}
+
+// The part whose region bends for a limb role that has no part of its own. Arms: the widest
+// of the root and the parts hanging from it whose middle is in the figure's upper part (a
+// sweater drawn with both sleeves is wider than the trousers that are the largest part); the
+// other roles: the root.
+int region_host(const Rig& rig, Target t) {
+  int best = rig.root;
+  if (t != Target::Arms && t != Target::Limbs) return best;
+  const RigBox& F = rig.figure;
+  for (size_t i = 0; i < rig.parts.size(); ++i) {
+    const RigPart& P = rig.parts[i];
+    if (P.parent != rig.root || P.role == Role::Background || P.box.empty()) continue;
+    if (P.box.centre().y > F.y0 + kArmHostTop * F.h() || P.box.h() < kArmHostMinHeight * F.h()) continue;
+    if (P.box.w() > kArmHostWider * rig.parts[best].box.w()) best = static_cast<int>(i);
+  }
+  return best;
 }
 
 // Signs and phases of the parts of one action.
@@ -176,13 +229,16 @@ struct Builder {
     // bicycle drawn as one round-ish part must not spin as a whole. A named wheel may be.
     if (target == Target::Wheels && !primary_retargeted) {
       a.parts.erase(std::remove(a.parts.begin(), a.parts.end(), rig.root), a.parts.end());
+      // ... nor up in the figure (a rider's round collar is not a wheel of the bicycle).
+      a.parts.erase(std::remove_if(a.parts.begin(), a.parts.end(), [&](int p) { return rig.parts[p].box.centre().y < rig.figure.centre().y; }),
+                    a.parts.end());
       if (a.parts.empty() && note.empty()) note = "no round part other than the root for the wheels";
     }
     // No separate part for a limb role: a region of the root bends instead (when it swings).
     const bool limb_role = target == Target::Arms || target == Target::Legs || target == Target::Limbs ||
                            target == Target::Head || target == Target::Tail;
     if (limb_role && !note.empty() && rig.root >= 0 && a.primitive == Primitive::Swing) {
-      a.parts = {rig.root};
+      a.parts = {region_host(rig, target)};
       a.region = target == Target::Arms || target == Target::Limbs ? Region::Sides
                  : target == Target::Legs ? Region::Lower : target == Target::Head ? Region::Top : Region::End;
       a.alternating = base.pairing == Pairing::Alternating;
@@ -193,7 +249,7 @@ struct Builder {
       a.direction = a.region == Region::End ? ((rng() & 1) ? 1 : -1) : a.direction;
       note = std::string("no separate ") + target_name(target) + ": the " +
              (a.region == Region::Sides ? "sides" : a.region == Region::Lower ? "lower part" : a.region == Region::Top ? "top" : "far end") +
-             " of " + rig.parts[rig.root].name + " bend";
+             " of " + rig.parts[a.parts[0]].name + " bend";
       a.sign = {1};
       a.phase = {0};
     }
@@ -244,7 +300,7 @@ std::string MotionPlan::summary() const {
     char amp[64];
     const char* unit = a.primitive == Primitive::Swing || a.primitive == Primitive::Rock || a.primitive == Primitive::Bend ? " deg"
                        : a.primitive == Primitive::Spin ? " turn" : "";
-    std::snprintf(amp, sizeof amp, " %.3g%s x%d", a.amp * (a.primitive == Primitive::Spin ? 1 : scale), unit, a.cycles);
+    std::snprintf(amp, sizeof amp, " %.3g%s x%d", amplitude(a), unit, a.cycles);
     std::string who = a.target == Target::Whole ? "whole" : a.target == Target::Repeated ? "repeated" : "";
     if (who.empty()) {
       for (int p : a.parts) who += (who.empty() ? "" : "+") + std::to_string(p);
@@ -520,7 +576,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     std::vector<char> spins(G, 0);
     Affine whole;
     for (const auto& a : plan.actions) {
-      const double amp = a.primitive == Primitive::Spin ? a.amp : a.amp * plan.scale;
+      const double amp = plan.amplitude(a);
       if (is_deformation(a) || a.target == Target::Repeated) continue;
       if (a.parts.empty()) whole = rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
       for (size_t i = 0; i < a.parts.size(); ++i) {
@@ -538,12 +594,26 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     for (int g : order) world[g] = rig.parts[g].parent >= 0 ? world[rig.parts[g].parent] * local[g] : local[g];
     // A spinning part turns in its own frame, and carries only what hangs from it inside its
     // box (a ferris wheel's cabins, not its stand).
-    for (int g = 0; g < G; ++g)
+    for (int g = 0; g < G; ++g) {
+      bool carried = false;
       for (int a = g, guard = 0; a >= 0 && guard < 64; a = rig.parts[a].parent, ++guard)
-        if (spins[a] && (a == g || overlap_share(rig.parts[g].box, rig.parts[a].box) >= kInsideShare)) {
+        if (spins[a] && (a == g || overlap_share(rig.parts[g].box, rig.parts[a].box) >= kSpinInsideShare)) {
           world[g] = world[g] * spin[a];
+          carried = true;
           break;
         }
+      // Smaller parts elsewhere in the rig with their middle on a turning wheel (a ferris
+      // wheel's cabins) ride round with it, staying upright.
+      if (carried || g == rig.root || rig.parts[g].role == Role::Background) continue;
+      for (int a = 0; a < G; ++a) {
+        const RigPart& A = rig.parts[a];
+        const Vec2 c = rig.parts[g].box.centre(), d = c - A.box.centre();
+        if (!spins[a] || a == g || rig.parts[g].box.area() > kRideMaxArea * A.box.area() || std::hypot(d.x, d.y) > kRideReach * 0.5 * A.box.w()) continue;
+        const Vec2 to = spin[a].apply(c);
+        world[g] = Affine::translate(to.x - c.x, to.y - c.y) * world[g];
+        break;
+      }
+    }
 
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
       const int g = rig.part_of_path[pi];
@@ -560,14 +630,14 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
           if (a.primitive == Primitive::Fall) {
             const double u = std::fmod(a.cycles * t + phase, 1.0);
             const double room = std::max(0.0, scene.height * (1 - kFrameMargin) - eb.y1);
-            const double dist = std::min(a.amp * plan.scale * CH, room);
+            const double dist = std::min(plan.amplitude(a) * CH, room);
             const double s = std::min(1.0, 3 * std::sin(M_PI * u));
             const Vec2 c{eb.centre().x, eb.centre().y + dist * u};
             elem = Affine::translate(c.x, c.y) * Affine::scale(s, s) * Affine::translate(-eb.centre().x, -eb.centre().y) * elem;
           } else {
             PlannedAction one = a;
             one.parts = {};
-            elem = rigid(one, a.amp * plan.scale, 1, phase, t, eb, {eb.centre().x, eb.y1}, W, H) * elem;
+            elem = rigid(one, plan.amplitude(a), 1, phase, t, eb, {eb.centre().x, eb.y1}, W, H) * elem;
           }
         }
       for (const auto& sp : scene.paths[pi].subpaths)
@@ -576,11 +646,15 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
           if (!free_particle) {
             for (const auto& a : plan.actions) {
               if (!is_deformation(a)) continue;
-              const double amp = a.amp * plan.scale;
+              const double amp = plan.amplitude(a);
               if (a.region != Region::None) {
-                // Only the part's own outlines: what hangs from it (legs under a waving
-                // torso) keeps its shape and follows the rig.
-                if (g == a.parts[0]) q = bend_region(a, amp, t, rig.parts[g].box, q);
+                // The part's own outlines and what hangs from it within its box (a hand at
+                // the end of a sleeve); what hangs outside (legs under a waving torso) keeps
+                // its shape and follows the rig.
+                const RigBox& hb = rig.parts[a.parts[0]].box;
+                const Vec2 gc = g >= 0 ? rig.parts[g].box.centre() : Vec2{};
+                if (g == a.parts[0] || (g >= 0 && under(g, a.parts[0]) && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y >= hb.y0 && gc.y <= hb.y1))
+                  q = bend_region(a, amp, t, hb, q);
               } else if (a.parts.empty()) {
                 if (!background) q = deform(a, amp, t, rig.figure, q);
               } else {
@@ -598,11 +672,36 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   return out;
 }
 
-void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
+namespace {
+
+// Why `pts` (frames of animate_plan) breaks a limit of fit_plan, or "" when it does not.
+std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const std::vector<char>& exempt, int frames, int K) {
   const double m = kFrameMargin * std::min(scene.width, scene.height);
   const double x0 = m, y0 = m, x1 = scene.width - m, y1 = scene.height - m;
   const double max_step = kMaxStep * std::hypot(scene.width, scene.height);
   auto outside = [&](Vec2 q) { return std::max({0.0, x0 - q.x, q.x - x1, y0 - q.y, q.y - y1}); };
+  const size_t per = pts.size() / frames;
+  for (size_t i = 0; i < per; ++i) {
+    // A point inside the margin band at rest (a drawing touching the edge) may use the band.
+    const double rest = outside(pts[i]), allowed = rest > 0 ? std::max(rest, kMarginUse * m) : 0.0;
+    for (int f = 1; f < frames; ++f)
+      if (outside(pts[f * per + i]) > allowed + 1e-6) return "would leave the canvas";
+  }
+  for (int k = 1; k < K; ++k) {
+    const int fa = static_cast<int>(std::lround((k - 1) * (frames - 1.0) / (K - 1)));
+    const int fb = static_cast<int>(std::lround(k * (frames - 1.0) / (K - 1)));
+    for (size_t i = 0; i < per; ++i) {
+      if (exempt[i]) continue;
+      const Vec2 d = pts[fb * per + i] - pts[fa * per + i];
+      if (std::hypot(d.x, d.y) > max_step) return "would move too far between keyframes for the fitter to follow";
+    }
+  }
+  return "";
+}
+
+}  // namespace
+
+void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
   // Points exempt from the step limit: falling elements (they jump back while invisible) and
   // spinning parts (whole turns cannot be scaled; rotation is what flow tracking follows best).
   std::vector<char> exempt;
@@ -624,38 +723,38 @@ void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, 
     }
   }
   const int K = std::clamp(keyframes, 2, frames);
-  std::string first_why;
-  for (int attempt = 0; attempt < 12; ++attempt) {
-    const std::vector<Vec2> pts = animate_plan(scene, rig, plan, frames);
-    const size_t per = pts.size() / frames;
-    bool ok = true;
-    std::string why;
-    for (int f = 1; f < frames && ok; ++f)
-      for (size_t i = 0; i < per; ++i)
-        if (outside(pts[f * per + i]) > outside(pts[i]) + 1e-6) { ok = false; why = "would leave the canvas"; break; }
-    for (int k = 1; k < K && ok; ++k) {
-      const int fa = static_cast<int>(std::lround((k - 1) * (frames - 1.0) / (K - 1)));
-      const int fb = static_cast<int>(std::lround(k * (frames - 1.0) / (K - 1)));
-      for (size_t i = 0; i < per; ++i) {
-        if (exempt[i]) continue;
-        const Vec2 d = pts[fb * per + i] - pts[fa * per + i];
-        if (std::hypot(d.x, d.y) > max_step) { ok = false; why = "would move too far between keyframes for the fitter to follow"; break; }
+  // Each action alone first, then all together.
+  for (size_t i = 0; i <= plan.actions.size(); ++i) {
+    const bool all = i == plan.actions.size();
+    if (!all && plan.actions[i].primitive == Primitive::Spin) continue;
+    // Alone: the other actions stay in the plan at no amplitude (a fall still frees its drops
+    // from the figure's sway).
+    MotionPlan one = plan;
+    if (!all)
+      for (size_t j = 0; j < one.actions.size(); ++j)
+        if (j != i) one.actions[j].amp = 0;
+    double& scale = all ? plan.scale : plan.actions[i].scale;
+    std::string first_why;
+    for (int attempt = 0;; ++attempt) {
+      if (!all) one.actions[i].scale = scale;
+      else one.scale = scale;
+      const std::string why = limit_broken(scene, animate_plan(scene, rig, one, frames), exempt, frames, K);
+      const std::string what = all ? "the motion" : plan.actions[i].verb + " (" + primitive_name(plan.actions[i].primitive) + ")";
+      if (why.empty()) {
+        if (scale < 1) {
+          char line[240];
+          std::snprintf(line, sizeof line, "%s scaled to %.0f %%: at full size %s %s", all ? "all amplitudes" : ("the amplitude of " + what).c_str(),
+                        scale * 100, all ? "the motion" : "it", first_why.c_str());
+          plan.notes.push_back(line);
+        }
+        break;
       }
-    }
-    if (ok) {
-      if (plan.scale < 1) {
-        char line[200];
-        std::snprintf(line, sizeof line, "amplitudes scaled to %.0f %%: at full size the motion %s", plan.scale * 100,
-                      first_why.c_str());
-        plan.notes.push_back(line);
+      if (first_why.empty()) first_why = why;
+      if (attempt == kScaleAttempts) {
+        plan.warnings.push_back(what + " " + why + " even at " + std::to_string(static_cast<int>(scale * 100)) + " % of its size");
+        break;
       }
-      return;
-    }
-    if (first_why.empty()) first_why = why;
-    plan.scale *= 0.8;
-    if (attempt == 11) {
-      plan.warnings.push_back("the motion " + why + " even at " + std::to_string(static_cast<int>(plan.scale * 100)) + " % of its size");
-      return;
+      scale *= 0.8;
     }
   }
 }
@@ -672,6 +771,11 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
               {"parent", P.parent >= 0 ? rig.parts[P.parent].name : ""},
               {"pivot", {std::round(P.pivot.x * 100) / 100, std::round(P.pivot.y * 100) / 100}},
               {"why", P.why}};
+    p["box"] = {std::round(P.box.x0 * 10) / 10, std::round(P.box.y0 * 10) / 10, std::round(P.box.x1 * 10) / 10, std::round(P.box.y1 * 10) / 10};
+    json ids = json::array();
+    for (size_t pi = 0; pi < rig.part_of_path.size(); ++pi)
+      if (&rig.parts[rig.part_of_path[pi] >= 0 ? rig.part_of_path[pi] : 0] == &P && rig.part_of_path[pi] >= 0) ids.push_back(scene.paths[pi].id);
+    p["paths"] = ids;
     if (P.round) p["round"] = true;
     parts.push_back(p);
   }
@@ -693,7 +797,7 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
                        {"target", target_name(a.target)},
                        {"parts", a.target == Target::Whole ? json("whole figure") : a.target == Target::Repeated ? json(std::to_string(rig.repeated.size()) + " repeated elements") : names},
                        {"pivots", pivots},
-                       {"amplitude", std::round(a.amp * (a.primitive == Primitive::Spin ? 1 : plan.scale) * 1e4) / 1e4},
+                       {"amplitude", std::round(plan.amplitude(a) * 1e4) / 1e4},
                        {"unit", unit},
                        {"cycles", a.cycles},
                        {"region", a.region == Region::None ? "" : a.region == Region::Sides ? "sides" : a.region == Region::Lower ? "lower part"

@@ -47,6 +47,7 @@ struct PlannedAction {
   Region region = Region::None; // a Swing of a region of parts[0] instead of whole parts
   int region_side = 0;          // Sides/Lower: -1 only the viewer's left, +1 only the right
   bool alternating = false;     // Sides/Lower: the two sides half a cycle apart
+  double scale = 1;             // this action's own amplitude factor (fit_plan), times plan.scale
   std::string why;
 };
 
@@ -56,7 +57,10 @@ struct MotionPlan {
   std::vector<std::string> not_understood;  // prompt words that named no motion, part or modifier
   std::vector<std::string> warnings;        // one line each
   std::vector<std::string> notes;           // informational lines (an amplitude scaled to fit)
-  double scale = 1;             // amplitude factor fit_plan chose (1: as planned)
+  double scale = 1;             // amplitude factor of every action fit_plan chose (1: as planned)
+  // The amplitude `a` moves with: its own, times its scale and the plan's (a spin's whole turns
+  // are never scaled).
+  double amplitude(const PlannedAction& a) const { return a.primitive == Primitive::Spin ? a.amp : a.amp * a.scale * scale; }
   std::string summary() const;  // one line: "flap wing_left+wing_right 30 deg x3; bob whole"
 };
 
@@ -73,9 +77,13 @@ MotionPlan plan_from_steps(const std::vector<ExplicitStep>& steps, const Rig& ri
 // order (paths, subpaths, points), for t = f / (frames - 1).
 std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames);
 
-// Scales the plan's amplitudes (plan.scale) until every frame keeps every control point inside
-// the canvas and no point moves farther than kMaxStep of the diagonal between keyframes
-// (`keyframes` spread over `frames`). Adds a warning when it had to.
+// Scales the plan's amplitudes until every frame keeps every control point inside the canvas
+// and no point moves farther than kMaxStep of the diagonal between keyframes (`keyframes`
+// spread over `frames`): first each action alone (its own scale: a sway that would push a
+// canvas-filling drawing out is made smaller without shrinking the rain falling beside it),
+// then all together (plan.scale). A point already within the margin at rest may move up to
+// 0.9 of the margin from the edge, never beyond it. A note says each scaling; a warning says
+// when even the smallest scale fails.
 void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes);
 
 // The report written to motion.json: the parts found and the plan.

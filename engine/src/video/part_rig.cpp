@@ -31,6 +31,11 @@ constexpr size_t kRepeatedMin = 3;
 // four cubics gives 0.90 (the control polygon is an octagon), a square 1, a triangle 0.5.
 constexpr double kRoundFillMin = 0.65;
 constexpr double kRoundFillMax = 0.93;
+// A group whose paths the document names apart splits into at most this many parts (more, and
+// the names are per-path labels rather than parts: the group stays whole).
+constexpr size_t kMaxNamedSplit = 16;
+// A round path at least this share of the canvas is split from its group as a wheel.
+constexpr double kWheelPathArea = 0.02;
 
 bool is_generic_word(const std::string& w) {
   static const std::set<std::string> generic = {
@@ -81,6 +86,17 @@ double overlap(const RigBox& a, const RigBox& b) {
 double gap(const RigBox& a, const RigBox& b) {
   const double dx = std::max({0.0, a.x0 - b.x1, b.x0 - a.x1}), dy = std::max({0.0, a.y0 - b.y1, b.y0 - a.y1});
   return std::hypot(dx, dy);
+}
+
+// A near-square box that its first outline fills about as a circle does, at least `min_area`.
+bool round_outline(const RigBox& box, double outline, double min_area) {
+  const double aspect = box.w() / std::max(box.h(), 1e-9);
+  const double fill = outline / std::max(box.area(), 1e-9);
+  return aspect > 0.8 && aspect < 1.25 && fill > kRoundFillMin && fill < kRoundFillMax && box.area() > min_area;
+}
+
+bool round_path(const Path& p, double min_area) {
+  return !p.subpaths.empty() && round_outline(path_box(p), std::fabs(shoelace(p.subpaths[0].points)), min_area);
 }
 
 }  // namespace
@@ -166,15 +182,59 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
   Rig rig;
   rig.canvas.add(Vec2{0, 0});
   rig.canvas.add(Vec2{scene.width, scene.height});
-  const int G = static_cast<int>(scene.groups.size());
+  // The parts: the scene's groups, each split by the names of its paths where the document
+  // names them apart (a grouper may merge a rider's named legs into the bicycle they overlap).
+  std::vector<std::vector<int>> unit_paths;
+  std::vector<int> unit_group;
+  std::vector<char> unit_split;
+  std::set<int> wheel_paths;  // round paths split from their group
+  for (size_t g = 0; g < scene.groups.size(); ++g) {
+    std::map<std::string, std::vector<int>> by_name;  // innermost named element -> paths
+    for (int pi : scene.groups[g].paths) {
+      const auto it = names.find(scene.paths[pi].id);
+      by_name[it == names.end() ? std::string() : it->second.front().locator].push_back(pi);
+    }
+    // Not when one named element holds all of them (the document's own "arm_right" group,
+    // whose paths are "upper_arm_right" and "hand_right": the grouper kept it as a part).
+    std::map<std::string, size_t> holders;
+    for (int pi : scene.groups[g].paths)
+      if (const auto it = names.find(scene.paths[pi].id); it != names.end())
+        for (const auto& e : it->second) ++holders[e.locator];
+    bool held = false;
+    for (const auto& [loc, n] : holders) held = held || n == scene.groups[g].paths.size();
+    bool split = !held && by_name.size() >= 2 && by_name.size() <= kMaxNamedSplit;
+    if (!split) by_name = {{"", scene.groups[g].paths}};
+    std::vector<std::vector<int>> units;
+    for (auto& [loc, ps] : by_name) {
+      // A large round path among others (a wheel in a bicycle, a ferris wheel's rim) is a part
+      // of its own, so that it can turn while the frame holds.
+      std::vector<int> rest;
+      for (int pi : ps) {
+        if (ps.size() > 1 && round_path(scene.paths[pi], kWheelPathArea * scene.width * scene.height)) {
+          units.push_back({pi});
+          wheel_paths.insert(pi);
+        }
+        else rest.push_back(pi);
+      }
+      if (!rest.empty()) units.push_back(rest);
+    }
+    split = split || units.size() > 1;
+    std::sort(units.begin(), units.end());  // in paint order of their first paths
+    for (auto& u : units) {
+      unit_paths.push_back(std::move(u));
+      unit_group.push_back(static_cast<int>(g));
+      unit_split.push_back(split);
+    }
+  }
+  const int G = static_cast<int>(unit_paths.size());
   const size_t n_paths = scene.paths.size();
   rig.parts.resize(G);
   rig.part_of_path.assign(n_paths, -1);
   std::vector<double> mean_index(G, 0);
   for (int g = 0; g < G; ++g) {
     RigPart& P = rig.parts[g];
-    P.group = g;
-    for (int pi : scene.groups[g].paths) {
+    P.group = unit_group[g];
+    for (int pi : unit_paths[g]) {
       rig.part_of_path[pi] = g;
       mean_index[g] += pi;
       for (const auto& sp : scene.paths[pi].subpaths) {
@@ -182,7 +242,7 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
         P.area += std::fabs(shoelace(sp.points));
       }
     }
-    if (!scene.groups[g].paths.empty()) mean_index[g] /= static_cast<double>(scene.groups[g].paths.size());
+    if (!unit_paths[g].empty()) mean_index[g] /= static_cast<double>(unit_paths[g].size());
   }
 
   // Names: the named element that best covers the part's paths (precision times recall).
@@ -192,12 +252,12 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
       for (const auto& e : it->second) ++element_total[e.locator];
   for (int g = 0; g < G; ++g) {
     RigPart& P = rig.parts[g];
-    if (g < static_cast<int>(group_names.size()) && meaningful(group_names[g])) {
-      P.name = group_names[g];
+    if (!unit_split[g] && P.group < static_cast<int>(group_names.size()) && meaningful(group_names[P.group])) {
+      P.name = group_names[P.group];
       P.named = true;
     } else {
       std::map<std::string, std::pair<int, std::string>> in_part;
-      for (int pi : scene.groups[g].paths)
+      for (int pi : unit_paths[g])
         if (auto it = names.find(scene.paths[pi].id); it != names.end())
           for (const auto& e : it->second) {
             auto& slot = in_part[e.locator];
@@ -206,7 +266,7 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
           }
       double best = 0.25;  // at least half the part's paths and half the element's
       for (const auto& [loc, hit] : in_part) {
-        const double score = static_cast<double>(hit.first) / scene.groups[g].paths.size() *
+        const double score = static_cast<double>(hit.first) / unit_paths[g].size() *
                              hit.first / std::max(1, element_total[loc]);
         if (score > best || (score == best && P.named && loc.size() > 0)) {
           best = score;
@@ -215,6 +275,9 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
         }
       }
     }
+    // A wheel split from a named group is that group's wheel ("bicycle_wheel").
+    if (P.named && unit_paths[g].size() == 1 && wheel_paths.count(unit_paths[g][0]) && !has_word(name_words(P.name), {"wheel", "tire", "tyre"}))
+      P.name += "_wheel";
     for (const auto& w : name_words(P.name))
       if (!is_generic_word(w)) P.words.push_back(w);
   }
@@ -228,7 +291,8 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
     const double tx = kEdgeTouch * CW, ty = kEdgeTouch * CH;
     const int edges = (P.box.x0 <= tx) + (P.box.y0 <= ty) + (P.box.x1 >= CW - tx) + (P.box.y1 >= CH - ty);
     const bool early = mean_index[g] < 0.35 * static_cast<double>(n_paths);
-    if (has_word(P.words, {"background", "bg", "sky", "ground", "floor", "backdrop", "scenery", "landscape"})) {
+    if (has_word(P.words, {"background", "bg", "sky", "ground", "floor", "backdrop", "scenery", "landscape", "hill", "mountain",
+                             "mud", "grass", "road", "terrain", "field", "wall"})) {
       P.role = Role::Background;
       P.why = "named as background";
     } else if (P.box.area() >= kBackgroundArea * CW * CH && edges >= 2 && early) {
@@ -289,7 +353,7 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
     int count = 0;
     Vec2 nearest;
     double nd = 1e300;
-    for (int pi : scene.groups[g].paths)
+    for (int pi : unit_paths[g])
       for (const auto& sp : scene.paths[pi].subpaths)
         for (const Vec2& q : sp.points) {
           if (q.x >= pb.x0 - pad && q.x <= pb.x1 + pad && q.y >= pb.y0 - pad && q.y <= pb.y1 + pad) {
@@ -361,14 +425,16 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
   for (int g = 0; g < G; ++g) {
     RigPart& P = rig.parts[g];
     if (P.box.empty() || P.role == Role::Background) continue;
-    const double aspect = P.box.w() / std::max(P.box.h(), 1e-9);
     double outline = 0;
-    for (int pi : scene.groups[g].paths)
+    for (int pi : unit_paths[g])
       if (!scene.paths[pi].subpaths.empty())
         outline = std::max(outline, std::fabs(shoelace(scene.paths[pi].subpaths[0].points)));
-    const double fill = outline / std::max(P.box.area(), 1e-9);
-    P.round = has_word(P.words, {"wheel", "tire", "tyre"}) ||
-              (aspect > 0.8 && aspect < 1.25 && fill > kRoundFillMin && fill < kRoundFillMax && P.box.area() > 0.005 * CW * CH);
+    P.round = has_word(P.words, {"wheel", "tire", "tyre"}) || round_outline(P.box, outline, 0.005 * CW * CH);
+    // A wheel split from its group turns; it is no limb to swing.
+    if (unit_paths[g].size() == 1 && wheel_paths.count(unit_paths[g][0]) && g != rig.root) {
+      P.role = Role::Detail;
+      P.why = "a round path of its group (a wheel)";
+    }
   }
 
   // Default names from roles.
@@ -378,7 +444,7 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
     if (!P.name.empty()) continue;
     std::string base = P.role == Role::Root ? "root" : P.role == Role::Head ? "head" : P.role == Role::Tail ? "tail"
                      : P.role == Role::Background ? "background" : P.role == Role::UpperLimb ? "limb_upper"
-                     : P.role == Role::LowerLimb ? "limb_lower" : "detail";
+                     : P.role == Role::LowerLimb ? "limb_lower" : P.round ? "wheel" : "detail";
     if ((P.role == Role::UpperLimb || P.role == Role::LowerLimb) && P.side != 0) base += P.side > 0 ? "_right" : "_left";
     const int k = used[base]++;
     P.name = k == 0 ? base : base + "_" + std::to_string(k + 1);
