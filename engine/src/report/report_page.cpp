@@ -50,9 +50,12 @@ std::string read_bytes(const fs::path& file) {
 
 std::string png_uri(const RgbaImage& img) { return "data:image/png;base64," + base64(encode_png(img)); }
 
-std::string img_tag(const RgbaImage& img, const std::string& alt) {
-  return "<img src=\"" + png_uri(img) + "\" width=\"" + std::to_string(img.width) + "\" height=\"" +
-         std::to_string(img.height) + "\" alt=\"" + html_escape(alt) + "\">";
+// `shown_width` > 0 scales the picture on the page (a 128-px target frame beside a 256-px render).
+std::string img_tag(const RgbaImage& img, const std::string& alt, int shown_width = 0) {
+  const int w = shown_width > 0 ? shown_width : img.width;
+  const int h = static_cast<int>(std::lround(static_cast<double>(img.height) * w / std::max(1, img.width)));
+  return "<img src=\"" + png_uri(img) + "\" width=\"" + std::to_string(w) + "\" height=\"" + std::to_string(h) +
+         "\" alt=\"" + html_escape(alt) + "\">";
 }
 
 std::string text_of(const json& j, const char* key) {
@@ -311,12 +314,13 @@ std::string compare_section(const RunFiles& f, Renderer& r, const ReportOptions&
     const double t = key_times[k] * duration;
     s += "<tr><td>" + std::to_string(k) + "<br><small>" + html_number(t, 3) + " s, frame " +
          (k < frames.size() ? std::to_string(frames[k]) : std::string("?")) + "</small></td><td>";
-    if (k < target.size()) s += img_tag(target[k], "target keyframe " + std::to_string(k));
+    if (k < target.size()) s += img_tag(target[k], "target keyframe " + std::to_string(k), o.thumb_width);
     s += "</td><td>";
     try {
       SvgReadLimits at;
       at.animation_time = t;
-      s += img_tag(r.render(read_svg_file(f.animation, at), o.thumb_width), "fit at keyframe " + std::to_string(k));
+      s += img_tag(r.render(read_svg_file(f.animation, at), o.thumb_width), "fit at keyframe " + std::to_string(k),
+                   o.thumb_width);
     } catch (const Error& e) {
       if (k == 0) notes.push_back(std::string("fit not drawn: ") + e.what());
       s += html_escape(e.what());

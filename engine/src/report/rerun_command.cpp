@@ -18,13 +18,14 @@ fs::path command_file(const fs::path& run) { return run / ".svgmotion" / "comman
 
 }  // namespace
 
-void record_run_command(const fs::path& run, const std::vector<std::string>& args) {
+void record_run_command(const fs::path& run, const std::vector<std::string>& args, const std::string& prompt) {
   std::error_code ec;
   fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (ec) exe = "svgmotion";
   const fs::path cwd = fs::current_path(ec);
   fs::create_directories(run / ".svgmotion", ec);
-  const nlohmann::json j = {{"cwd", cwd.string()}, {"exe", exe.string()}, {"command", "run"}, {"args", args}};
+  const nlohmann::json j = {{"cwd", cwd.string()}, {"exe", exe.string()}, {"command", "run"}, {"args", args},
+                         {"prompt", prompt}};
   write_file_atomic(command_file(run), j.dump(2) + "\n");
 }
 

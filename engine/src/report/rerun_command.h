@@ -17,8 +17,10 @@
 namespace svgm {
 
 // Writes <run>/.svgmotion/command.json for `svgmotion run ARGS` (args without "run"), run
-// from the current directory by this process's binary. Throws svgm::Error.
-void record_run_command(const std::filesystem::path& run, const std::vector<std::string>& args);
+// from the current directory by this process's binary, with the run's prompt (shown by the
+// page). Throws svgm::Error.
+void record_run_command(const std::filesystem::path& run, const std::vector<std::string>& args,
+                        const std::string& prompt);
 
 // The shell command (POSIX sh) re-running <run> with candidate `name`; nothing when the run
 // recorded no command (made before this was recorded, or not by `svgmotion run`).
