@@ -45,7 +45,7 @@ if [[ $mode == example ]]; then
   ./build/frontends/svgmotion run --input tests/data/examples/man.svg \
     --prompt "the man waves his right arm" -o build/example
   echo "setup: the animated example is $(pwd)/build/example/animation.svg" \
-       "(open it in a browser; preview.mp4 shows target | fit)"
+       "(open it in a browser; preview.mp4 shows target | fit, report.html the whole run)"
 else
   # lottie-web and puppeteer-core (pinned in tests/integration/lottie/package.json) go into
   # build/npm, never into the repository.
