@@ -229,9 +229,12 @@ std::string candidates_section(const RunFiles& f, const ReportOptions& o, std::v
     if (rc.is_array())
       for (const json& c : rc)
         if (text_of(c, "name") == name) entry = c;
-    const bool fitted = name == chosen;
-    s += std::string("<div class=\"svgm-candidate") + (fitted ? " svgm-chosen" : "") + "\" data-name=\"" +
-         html_escape(name) + "\"><h3>" + html_escape(name) + (fitted ? " <span class=\"svgm-badge\">fitted</span>" : "") +
+    // Before any fit (every candidate flagged) the chosen one is target.mp4, not yet fitted, and
+    // its command too is worth showing: a hand choice is fitted even when flagged.
+    const bool is_chosen = name == chosen, fitted = is_chosen && f.fit.is_object();
+    s += std::string("<div class=\"svgm-candidate") + (is_chosen ? " svgm-chosen" : "") + "\" data-name=\"" +
+         html_escape(name) + "\"><h3>" + html_escape(name) +
+         (is_chosen ? std::string(" <span class=\"svgm-badge\">") + (fitted ? "fitted" : "chosen") + "</span>" : "") +
          (!ranker_pick.empty() && name == ranker_pick ? " <span class=\"svgm-badge\">ranker's pick</span>" : "") + "</h3>";
     std::error_code ec;
     const std::string ext = file.extension().string();
