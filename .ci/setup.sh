@@ -18,7 +18,8 @@ packages=(
 )
 # Test-only: ffprobe for clip checks, the two Lottie players the export is checked in
 # (Chromium for lottie-web, librlottie), node and npm for lottie-web (tests/integration/export_test.sh),
-# and a one-node Slurm for the batch test (tests/integration/batch_test.sh slurm).
+# and a one-node Slurm for the batch test (tests/integration/batch_test.sh slurm). Chromium
+# and puppeteer-core also open report.html (tests/integration/report_test.sh).
 if [[ $mode == test ]]; then
   packages+=(ffmpeg chromium librlottie-dev munge slurmd slurmctld slurm-client)
   command -v node >/dev/null && command -v npm >/dev/null || packages+=(nodejs npm)
@@ -44,7 +45,7 @@ if [[ $mode == example ]]; then
   ./build/frontends/svgmotion run --input tests/data/examples/man.svg \
     --prompt "the man waves his right arm" -o build/example
   echo "setup: the animated example is $(pwd)/build/example/animation.svg" \
-       "(open it in a browser; preview.mp4 shows target | fit)"
+       "(open it in a browser; preview.mp4 shows target | fit, report.html the whole run)"
 else
   # lottie-web and puppeteer-core (pinned in tests/integration/lottie/package.json) go into
   # build/npm, never into the repository.

@@ -80,8 +80,20 @@ int cmd_fit(const std::vector<std::string>& argv) {
   warn_if_slow(job.svg);
   g_interrupted = 0;
   std::signal(SIGINT, on_sigint);
-  const int rc = run_fit_job(job, [] { return g_interrupted != 0; });
+  // Fitting into a run directory (say with another target.mp4) refreshes its report.html.
+  std::error_code ec;
+  const bool run_dir = std::filesystem::is_directory(job.out / ".svgmotion", ec) &&
+                       std::filesystem::is_regular_file(job.out / "input.svg", ec);
+  int rc = 0;
+  try {
+    rc = run_fit_job(job, [] { return g_interrupted != 0; });
+  } catch (const Rejected&) {
+    std::signal(SIGINT, SIG_DFL);
+    if (run_dir) write_run_report(job.out, job.device, job.quiet);
+    throw;
+  }
   std::signal(SIGINT, SIG_DFL);
+  if (run_dir && rc == 0) write_run_report(job.out, job.device, job.quiet);
   return rc;
 }
 

@@ -21,6 +21,7 @@
 #include "pipeline/config_check.h"
 #include "pipeline/pipeline.h"
 #include "pipeline/plugin_host.h"
+#include "report/rerun_command.h"
 #include "svgmotion/error.h"
 #include "svgmotion/log.h"
 
@@ -147,9 +148,24 @@ int cmd_run(const std::vector<std::string>& argv) {
   std::signal(SIGINT, on_run_sigint);
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<StageReport> reports;
+  // The command (for report.html's "use this one") and the page, after a finished run and
+  // after one stopped for a reason the page shows (a rejected fit, flagged candidates).
+  auto report = [&] {
+    try {
+      record_run_command(dir, argv, config.value("prompt", ""));
+    } catch (const Error& e) {
+      std::fprintf(stderr, "svgmotion: warning: %s\n", e.what());
+    }
+    write_run_report(dir, config.value("device", "auto"), true);
+  };
   try {
     reports = run_pipeline(config, host, a.get("--from"), [&](const std::string& stage) { view.stage(stage); });
     view.end_line();
+  } catch (const Rejected&) {
+    view.end_line();
+    std::signal(SIGINT, SIG_DFL);
+    report();
+    throw;
   } catch (const Error&) {
     view.end_line();
     std::signal(SIGINT, SIG_DFL);
@@ -161,6 +177,7 @@ int cmd_run(const std::vector<std::string>& argv) {
     throw;
   }
   std::signal(SIGINT, SIG_DFL);
+  report();
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   bool all_skipped = true;
   for (const auto& r : reports) {
@@ -171,7 +188,7 @@ int cmd_run(const std::vector<std::string>& argv) {
                r.skipped ? "up to date" : (std::to_string(r.seconds) + " s").c_str());
   }
   if (all_skipped) std::printf("every stage is up to date\n");
-  std::printf("outputs in %s: animation.svg, preview.mp4, fit.json (total %.1f s)\n", dir.c_str(), total);
+  std::printf("outputs in %s: animation.svg, preview.mp4, fit.json, report.html (total %.1f s)\n", dir.c_str(), total);
   return 0;
 }
 

@@ -1,6 +1,7 @@
 // The svgmotion subcommands; each takes the arguments after its name and returns an exit code.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,9 @@ int cmd_palette(const std::vector<std::string>& args);
 int cmd_run(const std::vector<std::string>& args);
 int cmd_plugins(const std::vector<std::string>& args);
 int cmd_batch(const std::vector<std::string>& args);
+int cmd_report(const std::vector<std::string>& args);
+// report.html for a run directory after `run` or `fit`; a failure is a warning (cmd_report.cpp).
+void write_run_report(const std::filesystem::path& run, const std::string& device, bool quiet);
 
 
 }  // namespace svgm::cli

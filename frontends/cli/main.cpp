@@ -26,6 +26,7 @@ usage:
   svgmotion render ANIMATION.svg -o CLIP.mp4|.webm|.gif|DIR/%04d.png [--fps F] [--size W]
   svgmotion batch MANIFEST -o OUT_DIR [CONFIG.yaml] [--shard I/N] [--device D] [--pin]
                   [key.path=value ...]
+  svgmotion report RUN_DIR [--device D]
   svgmotion plugins
   svgmotion devices
   svgmotion palette N
@@ -136,6 +137,7 @@ IoU), peak memory.
 Threads follow SLURM_CPUS_PER_TASK and the CPUs this process may use. Exit status 0 when
 every item of the shard is done, 1 when some are not (see the summary), 130 interrupted.
 )"},
+    {"report", "usage: svgmotion report RUN_DIR [--device D]\n\nWrites RUN_DIR/report.html: the run's self-contained preview page (the animation with play/pause\nand a scrubber, the input, every candidate video with the ranker's scores and the command that\nfits another one, the target beside the fit, the losses, the stage timings). `run` writes it\nat the end of every run.\n"},
     {"plugins", "usage: svgmotion plugins\n\nLists the stage plugins found (stage, name, version, path) and every\nrefused module with its reason.\n"},
     {"devices", "usage: svgmotion devices\n\nLists the OpenCL devices; * marks the one --device auto picks.\n"},
     {"palette", "usage: svgmotion palette N\n\nPrints N maximally distinct colours (white reserved), one #rrggbb per line.\n"},
@@ -220,6 +222,7 @@ int main(int argc, char** argv) {
     if (cmd == "run") return svgm::cli::cmd_run(args);
     if (cmd == "plugins") return svgm::cli::cmd_plugins(args);
     if (cmd == "batch") return svgm::cli::cmd_batch(args);
+    if (cmd == "report") return svgm::cli::cmd_report(args);
     std::fprintf(stderr, "svgmotion: unknown command '%s' (try svgmotion help)\n", cmd.c_str());
     return 2;
   } catch (const svgm::Rejected& e) {

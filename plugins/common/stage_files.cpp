@@ -19,6 +19,7 @@
 #include "fit/palette.h"
 #include "fit/preview_video.h"
 #include "svgmotion/svg_reader.h"
+#include "video/candidates.h"
 
 namespace svgm::plugin {
 
@@ -77,19 +78,7 @@ std::string hex_color(const Rgba& c) {
   return b;
 }
 
-void write_target(const fs::path& chosen, const fs::path& target) {
-  if (fs::is_directory(chosen) || chosen.extension() != ".mp4") {
-    const TargetInfo info = probe_target(chosen);
-    TargetOptions to;
-    to.keyframes = info.frames;
-    const TargetFrames t = load_target(chosen, info.width, info.height, to);
-    write_preview_video(target, info.frames, 1, [&](int k, int) {
-      return rgba8_image(&t.raw[static_cast<size_t>(k) * info.width * info.height * 4], info.width, info.height);
-    }, info.fps);
-  } else {
-    copy_atomic(chosen, target);
-  }
-}
+void write_target(const fs::path& chosen, const fs::path& target) { write_target_video(chosen, target); }
 
 std::vector<Rgba> candidate_colours(const nlohmann::json& req, const std::string& who) {
   const nlohmann::json& stages = req.at("stages");

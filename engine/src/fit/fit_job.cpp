@@ -35,6 +35,9 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kCheckpointEvery = 250;  // iterations between checkpoints
+// The loss is sampled for fit.json's loss_history every this many iterations: 200 samples for
+// the default 2000 iterations, a few kB of JSON, enough for the report's chart.
+constexpr int kLossHistoryEvery = 10;
 
 // Premultiplied float renders over white, as 8-bit images.
 RgbaImage render_panel(const std::vector<float>& renders, int k, int w, int h) {
@@ -231,6 +234,14 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   int best_active = 0, rollbacks = 0;
   FitState good;  // taken at the start of each stage
   std::vector<std::string> rollback_notes;
+  // fit.json's loss_history (report.html charts it): iteration, total loss, image loss and
+  // active keyframes, every kLossHistoryEvery iterations and at the end of each stage.
+  struct LossSample {
+    int iteration;
+    float total, image;
+    int active;
+  };
+  std::vector<LossSample> history;
   // One stage of iterations on fitter `f` (the coarse fit, then the refinement), with the
   // divergence watch, progress over the whole budget and, for the coarse stage, checkpoints.
   auto run_stage = [&](Fitter& f, int done_before, bool checkpoints) {
@@ -257,12 +268,15 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
         log::warning("the fit diverged at %s", rollback_notes.back().c_str());
         f.restore(good);
         f.scale_learning_rates(0.5f);
+        // The history follows the fit that goes on: samples past the restored state go.
+        while (!history.empty() && history.back().iteration > done_before + good.iteration) history.pop_back();
         best_active = f.active_keyframes();
         best = std::numeric_limits<float>::infinity();
         bad_streak = 0;
         continue;
       }
       if (std::isfinite(per) && bad_streak == 0) best = std::min(best, per);
+      if (it % kLossHistoryEvery == 0 || f.done()) history.push_back({it, loss.total(), loss.image, f.active_keyframes()});
       if (it % kSnapshotEvery == 0 && std::isfinite(per) && per <= 2 * best) good = f.state();
       const auto now = std::chrono::steady_clock::now();
       const double elapsed = std::chrono::duration<double>(now - t0).count();
@@ -391,6 +405,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                            {"loss", {{"total", loss.total()}, {"image", loss.image}, {"smoothness", loss.smooth},
                                      {"g1", loss.g1}, {"containment", loss.contain}}},
                            {"keyframe_image_loss", final_fit.keyframe_losses()},
+                           {"keyframe_frames", target.source_index},
                            {"resumed_from", resumed_from},
                            {"rollbacks", rollback_notes},
                            {"gate", gate_json(verdict, gate_options)},
@@ -400,6 +415,18 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     report["group_transforms"] = {{"groups", final_fit.fit_plan().n_groups},
                                   {"as_transforms", group_motion->transform_groups},
                                   {"baked", group_motion->baked}};
+  {
+    nlohmann::json h = {{"every", kLossHistoryEvery}, {"iteration", nlohmann::json::array()},
+                        {"total", nlohmann::json::array()}, {"image", nlohmann::json::array()},
+                        {"active_keyframes", nlohmann::json::array()}};
+    for (const LossSample& s : history) {
+      h["iteration"].push_back(s.iteration);
+      h["total"].push_back(std::isfinite(s.total) ? nlohmann::json(s.total) : nlohmann::json(nullptr));
+      h["image"].push_back(std::isfinite(s.image) ? nlohmann::json(s.image) : nlohmann::json(nullptr));
+      h["active_keyframes"].push_back(s.active);
+    }
+    report["loss_history"] = std::move(h);
+  }
   report["target_frames"] = {{"held", target.held_frames}, {"colour_corrected_keyframes", final_target.colour_corrected}};
   if (job.stabilise) report["target_frames"]["max_shake_removed_px"] = target.max_shake_px;
   if (fine) report["refined"] = {{"size", {W, H}}, {"iterations", final_fit.iteration()}, {"from_size", {size.width, size.height}}};

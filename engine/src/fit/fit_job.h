@@ -10,6 +10,9 @@
 // is written as animation.failed.svg (no animation.svg; a stale one is removed), fit.json says
 // "status": "rejected" with the reasons, and run_fit_job throws svgm::Rejected.
 //
+// fit.json also keeps the loss every 10 iterations (loss_history) and each keyframe's source
+// frame (keyframe_frames), for report.html (report/report_page.h).
+//
 // Timing: keyframe k is written at the time of the target frame it was fitted to (keyTimes =
 // source_index / (N-1), one pass = (N-1) / fps), so frames between keyframes are
 // interpolated at the right moments, along a cubic spline through the keyframes sampled at the

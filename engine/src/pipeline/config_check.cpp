@@ -1,5 +1,6 @@
 // Checking a run's settings up front (see config_check.h).
 #include "pipeline/config_check.h"
+#include "pipeline/candidate_choice.h"
 
 #include <unistd.h>
 
@@ -108,6 +109,7 @@ void check_config(const nlohmann::json& c, const PluginHost& host) {
   if (const nlohmann::json& r = at(c, "stages.fitter.refine_size"); !r.is_null() && !(r.is_string() && r.get<std::string>() == "auto"))
     if (!r.is_number_integer() || r.get<long long>() < 0 || r.get<long long>() > 4096)
       throw Error("stages.fitter.refine_size: must be auto or a whole number from 0 to 4096, not " + shown(r));
+  check_candidate_choice(at(c, "stages.ranker.choose"));
   real(c, "stages.fitter.mask_threshold", 0, 1, true);
   one_of(c, "stages.fitter.colors", {"auto", "palette", "original"});
   one_of(c, "stages.fitter.loop", {"loop", "once", "mirror"});

@@ -1,5 +1,6 @@
 // The pipeline runner (see pipeline.h).
 #include "pipeline/pipeline.h"
+#include "pipeline/candidate_choice.h"
 #include "svgmotion/atomic_file.h"
 
 #include <algorithm>
@@ -179,7 +180,11 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
       h.add(std::to_string(fs::file_size(info->path, fe)));
       h.add(std::to_string(fs::last_write_time(info->path, fe).time_since_epoch().count()));
     }
-    h.add(section.dump());
+    // A hand-chosen candidate is applied by the pipeline after the ranker (candidate_choice.h),
+    // so choosing another one does not ask the ranker again.
+    nlohmann::json hashed = section;
+    if (sf.stage == "ranker" && hashed.is_object()) hashed.erase("choose");
+    h.add(hashed.dump());
     h.add(config.value("prompt", ""));
     h.add(std::to_string(config.value("seed", 0)));
     for (const auto& [k, v] : sf.inputs.items()) {
@@ -221,7 +226,14 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
         fs::remove(manifest, ec);
     }
     reports.push_back(r);
-    if (sf.stage == "ranker") stop_if_every_candidate_flagged(run / "ranking.json", config);
+    if (sf.stage == "ranker") {
+      // A candidate chosen by hand is fitted even when the ranker flagged it: the user saw it.
+      const std::string choose = section.is_object() && section.contains("choose") && section["choose"].is_string()
+                                     ? section["choose"].get<std::string>()
+                                     : "";
+      apply_candidate_choice(run, choose);
+      if (choose.empty()) stop_if_every_candidate_flagged(run / "ranking.json", config);
+    }
   }
   return reports;
 }

@@ -1,0 +1,122 @@
+// Test tool: opens a run's report.html in headless Chromium and prints what a reader sees, one
+// fact per line, for tests/integration/report_test.sh to judge:
+//   node report_page_check.js NODE_MODULES REPORT.html OUT_PREFIX T
+//   section ID WIDTHxHEIGHT text=N ink=F   every section: its size, its text length, and the
+//                                          share of its region of a full-page screenshot that
+//                                          is not background (OUT_PREFIXpage.png)
+//   prompt TEXT                            the prompt as the page shows it (text, not markup)
+//   candidates N videos=V use=U            cards, embedded videos (data: URIs), "use" buttons
+//   command NAME                           after "Use this one": the command shown for NAME,
+//                                          written to OUT_PREFIXcmd_NAME.sh
+//   seek T time=C paused=P label=L size=WxH  after moving the scrubber to T: the SVG's clock,
+//                                          its pause state and the time shown; the animation
+//                                          is screenshot to OUT_PREFIXseek.png
+//   play paused=P advanced=A               after pressing Play: running, and its clock moves
+// Chromium is /usr/bin/chromium (Debian's), or $CHROMIUM. Exit 2 on any failure, with one line.
+'use strict';
+const fs = require('fs');
+const path = require('path');
+
+const kSections = ['svgm-player', 'svgm-input', 'svgm-candidates', 'svgm-compare', 'svgm-losses', 'svgm-timings'];
+
+async function main() {
+  const [modulesArg, report, prefix, tArg] = process.argv.slice(2);
+  if (!tArg) throw new Error('usage: node report_page_check.js NODE_MODULES REPORT.html OUT_PREFIX T');
+  const puppeteer = require(path.join(path.resolve(modulesArg), 'puppeteer-core'));
+  const browser = await puppeteer.launch({
+    executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+    headless: true,
+    args: ['--no-sandbox', '--disable-gpu', '--force-device-scale-factor=1', '--hide-scrollbars'],
+  });
+  try {
+    const page = await browser.newPage();
+    await page.setViewport({ width: 1100, height: 900, deviceScaleFactor: 1 });
+    await page.goto('file://' + path.resolve(report), { waitUntil: 'load' });
+    // Paused at 0 for the screenshot, so it does not depend on when it is taken.
+    await page.evaluate(() => { const s = document.querySelector('#svgm-stage > svg'); s.pauseAnimations(); s.setCurrentTime(0); });
+    const shot = await page.screenshot({ fullPage: true, encoding: 'base64' });
+    fs.writeFileSync(`${prefix}page.png`, Buffer.from(shot, 'base64'));
+    const rects = await page.evaluate((ids) => ids.map((id) => {
+      const e = document.getElementById(id);
+      if (!e) return { id, missing: true };
+      const r = e.getBoundingClientRect();
+      return { id, x: r.left + window.scrollX, y: r.top + window.scrollY, w: r.width, h: r.height,
+               text: e.innerText.trim().length };
+    }), kSections);
+    // The screenshot decoded by a blank page's canvas: the share of each section's pixels that
+    // differ from white by more than 48 levels in some channel.
+    const blank = await browser.newPage();
+    const ink = await blank.evaluate(async (png, rs) => {
+      const img = new Image();
+      img.src = 'data:image/png;base64,' + png;
+      await img.decode();
+      const c = document.createElement('canvas');
+      c.width = img.width; c.height = img.height;
+      const g = c.getContext('2d');
+      g.drawImage(img, 0, 0);
+      return rs.map((r) => {
+        if (r.missing || r.w < 1 || r.h < 1) return 0;
+        const d = g.getImageData(Math.round(r.x), Math.round(r.y), Math.round(r.w), Math.round(r.h)).data;
+        let n = 0;
+        for (let i = 0; i < d.length; i += 4)
+          if (255 - d[i] > 48 || 255 - d[i + 1] > 48 || 255 - d[i + 2] > 48) ++n;
+        return n / (d.length / 4);
+      });
+    }, shot, rects);
+    await blank.close();
+    rects.forEach((r, i) => {
+      if (r.missing) console.log(`section ${r.id} missing`);
+      else console.log(`section ${r.id} ${Math.round(r.w)}x${Math.round(r.h)} text=${r.text} ink=${ink[i].toFixed(4)}`);
+    });
+    console.log(`prompt ${await page.$eval('#svgm-prompt', (e) => e.textContent)}`);
+    const cards = await page.$$eval('.svgm-candidate', (cs) => cs.map((c) => ({
+      name: c.dataset.name,
+      video: !!c.querySelector('video[src^="data:video/"]'),
+      use: !!c.querySelector('.svgm-use'),
+    })));
+    console.log(`candidates ${cards.length} videos=${cards.filter((c) => c.video).length} use=${cards.filter((c) => c.use).length}`);
+    for (const c of cards.filter((c) => c.use)) {
+      const shown = await page.evaluate((name) => {
+        const card = [...document.querySelectorAll('.svgm-candidate')].find((e) => e.dataset.name === name);
+        const pre = card.querySelector('.svgm-cmd');
+        const before = pre.hidden;
+        card.querySelector('.svgm-use').click();
+        return { before, after: pre.hidden, text: pre.textContent };
+      }, c.name);
+      if (!shown.before || shown.after) throw new Error(`"Use this one" of ${c.name} does not reveal its command`);
+      fs.writeFileSync(`${prefix}cmd_${c.name}.sh`, shown.text + '\n');
+      console.log(`command ${c.name}`);
+    }
+    // The scrubber, as a reader moves it: its value set, an input event.
+    const t = Number(tArg);
+    const seek = await page.evaluate(async (t) => {
+      const svg = document.querySelector('#svgm-stage > svg');
+      const scrub = document.getElementById('svgm-scrub');
+      svg.unpauseAnimations();
+      scrub.value = String(t);
+      scrub.dispatchEvent(new Event('input', { bubbles: true }));
+      await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+      const r = svg.getBoundingClientRect();
+      return { time: svg.getCurrentTime(), paused: svg.animationsPaused(), label: document.getElementById('svgm-time').textContent,
+               w: r.width, h: r.height };
+    }, t);
+    const svg = await page.$('#svgm-stage > svg');
+    await svg.screenshot({ path: `${prefix}seek.png` });
+    console.log(`seek ${t} time=${seek.time.toFixed(4)} paused=${seek.paused} label=${seek.label} size=${seek.w}x${seek.h}`);
+    const play = await page.evaluate(async () => {
+      const svg = document.querySelector('#svgm-stage > svg');
+      const before = svg.getCurrentTime();
+      document.getElementById('svgm-play').click();
+      await new Promise((r) => setTimeout(r, 300));
+      return { paused: svg.animationsPaused(), advanced: svg.getCurrentTime() > before };
+    });
+    console.log(`play paused=${play.paused} advanced=${play.advanced}`);
+  } finally {
+    await browser.close();
+  }
+}
+
+main().catch((e) => {
+  console.error(`report_page_check: ${String(e.message || e).split('\n')[0]}`);
+  process.exit(2);
+});
