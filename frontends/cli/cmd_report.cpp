@@ -7,6 +7,7 @@
 #include "cli/commands.h"
 #include "report/report_page.h"
 #include "svgmotion/error.h"
+#include "svgmotion/log.h"
 
 namespace svgm::cli {
 
@@ -15,11 +16,11 @@ void write_run_report(const std::filesystem::path& run, const std::string& devic
     ReportOptions o;
     o.device = device;
     const ReportResult r = write_report(run, o);
-    for (const std::string& n : r.notes) std::fprintf(stderr, "svgmotion: warning: report.html: %s\n", n.c_str());
-    if (!quiet) std::fprintf(stderr, "svgmotion: wrote %s (%zu kB)\n", r.file.c_str(), r.bytes >> 10);
+    for (const std::string& n : r.notes) log::warning("report.html: %s", n.c_str());
+    if (!quiet) log::info("svgmotion: wrote %s (%zu kB)", r.file.c_str(), r.bytes >> 10);
   } catch (const Error& e) {
     // The page shows a run; it never turns a finished run into a failed one.
-    std::fprintf(stderr, "svgmotion: warning: report.html not written: %s\n", e.what());
+    log::warning("report.html not written: %s", e.what());
   }
 }
 
@@ -29,7 +30,7 @@ int cmd_report(const std::vector<std::string>& argv) {
   ReportOptions o;
   o.device = a.get("--device").value_or("auto");
   const ReportResult r = write_report(a.positional[0], o);
-  for (const std::string& n : r.notes) std::fprintf(stderr, "svgmotion: warning: %s\n", n.c_str());
+  for (const std::string& n : r.notes) log::warning("%s", n.c_str());
   std::printf("wrote %s (%zu kB)\n", r.file.c_str(), r.bytes >> 10);
   return 0;
 }
