@@ -180,7 +180,11 @@ TEST_CASE("style declarations: opacities, percentages, keywords, inherit") {
   const double width_before = s.stroke_width;
   CHECK_FALSE(svg::apply_declaration("stroke-width", "1e308in", parent, s, props));
   CHECK(s.stroke_width == width_before);
-  CHECK_FALSE(svg::apply_declaration("stroke-miterlimit", "1e308in", parent, s, props));
+  // A miter limit is a plain number (SVG 2): one with a unit is ignored, whatever its size.
+  const double miter_before = s.miter_limit;
+  svg::apply_declaration("stroke-miterlimit", "1e308in", parent, s, props);
+  CHECK(s.miter_limit == miter_before);
+  CHECK_FALSE(svg::apply_declaration("stroke-miterlimit", "1e999", parent, s, props));
   CHECK(std::isfinite(s.miter_limit));
   CHECK(svg::apply_declaration("stroke-width", "1e300in", parent, s, props));  // finite: kept
   CHECK(s.stroke_width == doctest::Approx(96e300));

@@ -76,14 +76,22 @@ std::vector<std::array<double, 2>> ShakeEstimator::shake(double sigma_frames) co
   if (!(sigma_frames > 0)) return out;
   const int r = static_cast<int>(std::ceil(3 * sigma_frames));
   for (int i = 0; i < n; ++i) {
-    // The low-pass, renormalised where the window runs past either end of the clip.
-    double sw = 0, sx = 0, sy = 0;
+    // The low-pass is a Gaussian-weighted straight line through the path around i, taken at i
+    // (local linear regression): a steady drift passes through whole, also where the window
+    // runs past either end of the clip, where a plain weighted mean would lag it.
+    double s0 = 0, s1 = 0, s2 = 0, sx = 0, sy = 0, sxt = 0, syt = 0;
     for (int j = std::max(0, i - r); j <= std::min(n - 1, i + r); ++j) {
-      const double w = std::exp(-0.5 * (j - i) * (j - i) / (sigma_frames * sigma_frames));
-      sw += w, sx += w * path_[static_cast<size_t>(j)][0], sy += w * path_[static_cast<size_t>(j)][1];
+      const double t = j - i, w = std::exp(-0.5 * t * t / (sigma_frames * sigma_frames));
+      const auto& p = path_[static_cast<size_t>(j)];
+      s0 += w, s1 += w * t, s2 += w * t * t;
+      sx += w * p[0], sy += w * p[1], sxt += w * t * p[0], syt += w * t * p[1];
     }
-    out[static_cast<size_t>(i)] = {(path_[static_cast<size_t>(i)][0] - sx / sw) * scale_,
-                                   (path_[static_cast<size_t>(i)][1] - sy / sw) * scale_};
+    // Intercept of the weighted fit a + b t: (s2 Σwx − s1 Σwtx) / (s0 s2 − s1²).
+    const double det = s0 * s2 - s1 * s1;
+    const double lx = det > 1e-12 ? (s2 * sx - s1 * sxt) / det : sx / s0;
+    const double ly = det > 1e-12 ? (s2 * sy - s1 * syt) / det : sy / s0;
+    const auto& p = path_[static_cast<size_t>(i)];
+    out[static_cast<size_t>(i)] = {(p[0] - lx) * scale_, (p[1] - ly) * scale_};
   }
   return out;
 }
