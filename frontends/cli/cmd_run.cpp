@@ -176,8 +176,15 @@ int cmd_run(const std::vector<std::string>& argv) {
     }
     throw;
   }
-  std::signal(SIGINT, SIG_DFL);
+  // The handler stays while the page is written (a few seconds): a Ctrl-C then says what the
+  // run holds, as one during the stages does, instead of killing the process without a word.
   report();
+  std::signal(SIGINT, SIG_DFL);
+  if (g_interrupted) {
+    log::error("interrupted; %s holds %s (run the same command again to continue)", dir.c_str(),
+               outputs_in(dir).c_str());
+    return 130;
+  }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   bool all_skipped = true;
   for (const auto& r : reports) {
