@@ -67,8 +67,10 @@ struct Setup {
   }
   template <class T>
   cl::Buffer buf(const std::vector<T>& v) {
-    return cl::Buffer(rt.context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR,
-                      std::max<size_t>(v.size() * sizeof(T), 16), const_cast<T*>(v.data()));
+    // At least 16 bytes, copied from a host copy that long (ASan: a 4-byte vector was read for 16).
+    std::vector<T> host(v);
+    host.resize(std::max(v.size(), (16 + sizeof(T) - 1) / sizeof(T)));
+    return cl::Buffer(rt.context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, host.size() * sizeof(T), host.data());
   }
   template <class T>
   void read(const cl::Buffer& b, std::vector<T>& v) {
