@@ -96,6 +96,8 @@ class Reader {
   // Clip paths and masks of an element (scene.h's ClipPath and Mask), for an element whose user
   // space maps to canvas by `ctm` and whose fill bounds there are `bbox`. -1 when the reference
   // is missing or recursive (drawn unclipped or unmasked, with a warning).
+  pugi::xml_node enter_reference(const std::string& url, pugi::xml_node el, const char* kind,
+                                 const char* property, const char* fallback);
   int resolve_clip(const std::string& url, pugi::xml_node el, const Affine& ctm,
                    const std::optional<svg::Box>& bbox, const Viewport& vp, int depth);
   int resolve_mask(const std::string& url, pugi::xml_node el, const Affine& ctm,
@@ -660,18 +662,27 @@ void Reader::walk_content(pugi::xml_node n, const Style& s, const Affine& ctm, b
   anonymous_uses_ = uses;
 }
 
+// The `kind` element that `url` names, now on the reference stack (the caller erases it), or a
+// null node after one warning when there is none or it is already being resolved (a cycle).
+pugi::xml_node Reader::enter_reference(const std::string& url, pugi::xml_node el, const char* kind,
+                                       const char* property, const char* fallback) {
+  const auto it = ids_.find(url);
+  const std::string what = std::string(property) + " url(#" + url + ")";
+  if (it == ids_.end() || local_name(it->second.name()) != kind) {
+    warn(el, what + " is not a " + kind + " (" + fallback + ")");
+    return {};
+  }
+  if (!reference_stack_.insert(it->second.internal_object()).second) {
+    warn(el, what + " refers to itself (" + fallback + ")");
+    return {};
+  }
+  return it->second;
+}
+
 int Reader::resolve_clip(const std::string& url, pugi::xml_node el, const Affine& ctm,
                          const std::optional<svg::Box>& bbox, const Viewport& vp, int depth) {
-  const auto it = ids_.find(url);
-  if (it == ids_.end() || local_name(it->second.name()) != "clipPath") {
-    warn(el, "clip-path url(#" + url + ") is not a clipPath (drawn unclipped)");
-    return -1;
-  }
-  const pugi::xml_node node = it->second;
-  if (!reference_stack_.insert(node.internal_object()).second) {
-    warn(el, "clip-path url(#" + url + ") refers to itself (drawn unclipped)");
-    return -1;
-  }
+  const pugi::xml_node node = enter_reference(url, el, "clipPath", "clip-path", "drawn unclipped");
+  if (!node) return -1;
   Style cs;
   ElementProps cp;
   compute_style(node, Style{}, cs, cp);
@@ -698,16 +709,8 @@ int Reader::resolve_clip(const std::string& url, pugi::xml_node el, const Affine
 
 int Reader::resolve_mask(const std::string& url, pugi::xml_node el, const Affine& ctm,
                          const std::optional<svg::Box>& bbox, const Viewport& vp, int depth) {
-  const auto it = ids_.find(url);
-  if (it == ids_.end() || local_name(it->second.name()) != "mask") {
-    warn(el, "mask url(#" + url + ") is not a mask (drawn unmasked)");
-    return -1;
-  }
-  const pugi::xml_node node = it->second;
-  if (!reference_stack_.insert(node.internal_object()).second) {
-    warn(el, "mask url(#" + url + ") refers to itself (drawn unmasked)");
-    return -1;
-  }
+  const pugi::xml_node node = enter_reference(url, el, "mask", "mask", "drawn unmasked");
+  if (!node) return -1;
   Style ms;
   ElementProps mp;
   compute_style(node, Style{}, ms, mp);
