@@ -7,12 +7,12 @@
 
 #include "fit/colour_correction.h"
 #include "fit/stabilise.h"
+#include "image/video_capture.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
-#include <opencv2/videoio/registry.hpp>
 
 #include <algorithm>
 #include <array>
@@ -156,24 +156,10 @@ FolderSource scan_folder(const fs::path& folder) {
 
 // ---- videos ---------------------------------------------------------------------------------
 
-cv::VideoCapture open_video(const fs::path& file) {
-  // FFmpeg explicitly when available: CAP_ANY would let the image-sequence back end interpret
-  // printf patterns in the name, and other back ends disagree on frame counts.
-  const auto api = cv::videoio_registry::hasBackend(cv::CAP_FFMPEG) ? cv::CAP_FFMPEG : cv::CAP_ANY;
-  cv::VideoCapture cap;
-  try {
-    cap.open(file.string(), api);
-  } catch (const cv::Exception&) {
-    fail(file, "not a readable video");
-  }
-  if (!cap.isOpened()) fail(file, "not a readable video");
-  return cap;
-}
-
 // Counts by reading: CAP_PROP_FRAME_COUNT comes from the container and can be 0 or wrong.
 // grab() decodes without the colour conversion, so counting costs less than reading.
 TargetInfo probe_video(const fs::path& file) {
-  cv::VideoCapture cap = open_video(file);
+  cv::VideoCapture cap = open_video_capture(file);
   TargetInfo info;
   const double fps = cap.get(cv::CAP_PROP_FPS);
   info.fps = std::isfinite(fps) && fps > 0 ? fps : 24.0;
@@ -513,7 +499,7 @@ TargetFrames load_target(const fs::path& source, int width, int height,
     // sampled frames and keeping them at the target size.
     // Every frame is decoded (a thumbnail of each finds held frames); only the sampled ones
     // are kept at the target size.
-    cv::VideoCapture cap = open_video(source);
+    cv::VideoCapture cap = open_video_capture(source);
     int k = 0, run_start = 0;
     cv::Mat prev_thumb;
     try {

@@ -5,11 +5,11 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
-#include <opencv2/videoio/registry.hpp>
 
 #include <algorithm>
 #include <map>
 
+#include "image/video_capture.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -17,17 +17,6 @@ namespace svgm {
 namespace fs = std::filesystem;
 
 namespace {
-
-cv::VideoCapture open(const fs::path& file) {
-  const auto api = cv::videoio_registry::hasBackend(cv::CAP_FFMPEG) ? cv::CAP_FFMPEG : cv::CAP_ANY;
-  cv::VideoCapture cap;
-  try {
-    cap.open(file.string(), api);
-  } catch (const cv::Exception&) {
-  }
-  if (!cap.isOpened()) throw Error(file.string() + ": not a readable video");
-  return cap;
-}
 
 RgbaImage thumbnail(const cv::Mat& bgr, int width) {
   cv::Mat img = bgr;
@@ -47,7 +36,7 @@ RgbaImage thumbnail(const cv::Mat& bgr, int width) {
 }  // namespace
 
 std::vector<RgbaImage> video_frames(const fs::path& file, const std::vector<int>& indices, int width) {
-  cv::VideoCapture cap = open(file);
+  cv::VideoCapture cap = open_video_capture(file);
   std::map<int, RgbaImage> wanted;
   for (int i : indices) wanted[std::max(0, i)];
   const int last_wanted = wanted.empty() ? -1 : wanted.rbegin()->first;
@@ -71,7 +60,7 @@ std::vector<RgbaImage> video_frames(const fs::path& file, const std::vector<int>
 }
 
 int video_frame_count(const fs::path& file) {
-  cv::VideoCapture cap = open(file);
+  cv::VideoCapture cap = open_video_capture(file);
   int n = 0;
   try {
     while (cap.grab()) ++n;

@@ -79,7 +79,7 @@ bool parse_plain_number(std::string_view v, double* out, bool* bad) {
 }
 
 bool parse_length_number(std::string_view v, double* out, bool* bad) {
-  // A stroke width or miter limit: a number with an optional px unit (others are rare here).
+  // A stroke width: a number with an optional unit.
   v = trim(v);
   if (spells_non_finite(v)) { *bad = true; return false; }
   Cursor c{v};
