@@ -270,11 +270,11 @@ namespace {
 // thumbnail pixel differing by more than a codec's re-encoding of a repeat does. The largest
 // difference, not the mean: a small part moving on a still figure (a waving hand) changes few
 // pixels, which a mean over the frame would not see.
-constexpr double kHeldFrameMaxDiff = 6;
+constexpr double kHeldFrameMaxDiff = 6;  // 8-bit levels, after the thumbnail's averaging
 
 // Width at which camera shake is measured: sub-pixel phase correlation is good to about a
 // tenth of a pixel here, and the clip's every frame is measured.
-constexpr int kShakeMeasureWidth = 512;  // 8-bit levels, after the thumbnail's averaging
+constexpr int kShakeMeasureWidth = 512;
 
 cv::Mat held_frame_thumbnail(const cv::Mat& frame) {
   cv::Mat grey, small;
@@ -469,8 +469,14 @@ TargetFrames load_target(const fs::path& source, int width, int height,
     kept_index[static_cast<size_t>(k)] = frame_index;
   };
   if (is_folder) {
-    for (int k = 0; k < K; ++k) {
-      const fs::path& file = folder.frames[static_cast<size_t>(t.source_index[k])].path;
+    // The sampled frames; every frame once when stabilising (each shows the camera's path).
+    for (int i = 0, k = 0; i < N && k < K; ++i) {
+      const bool sampled = i == t.source_index[static_cast<size_t>(k)];
+      if (!sampled && !options.stabilise) {
+        i = t.source_index[static_cast<size_t>(k)] - 1;  // straight to the next sampled frame
+        continue;
+      }
+      const fs::path& file = folder.frames[static_cast<size_t>(i)].path;
       cv::Mat img;
       try {
         img = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
@@ -481,19 +487,9 @@ TargetFrames load_target(const fs::path& source, int width, int height,
       if (img.cols != folder.width || img.rows != folder.height)
         fail(file, "decodes to " + size_text(img.cols, img.rows) + ", but its header says " +
                        size_text(folder.width, folder.height));
-      keep(k, t.source_index[k], std::move(img));
+      if (options.stabilise) shake.add(img);
+      if (sampled) keep(k++, i, std::move(img));
     }
-    if (options.stabilise)  // every frame, not only the sampled ones, shows the camera's path
-      for (const FolderFrame& f : folder.frames) {
-        cv::Mat img;
-        try {
-          img = cv::imread(f.path.string(), cv::IMREAD_UNCHANGED);
-        } catch (const cv::Exception&) {
-          img.release();
-        }
-        if (img.empty()) fail(f.path, "not a readable PNG");
-        shake.add(img);
-      }
   } else {
     // Second pass: sequential reads (seeking is unreliable across codecs), decoding only the
     // sampled frames and keeping them at the target size.
