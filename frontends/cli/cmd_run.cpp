@@ -119,11 +119,18 @@ int cmd_run(const std::vector<std::string>& argv) {
       throw Error("run: unexpected argument '" + p + "' (one config file, then key.path=value)");
     }
   }
-  nlohmann::json config = load_config(file, overrides);
-  if (const auto v = a.get("--input")) config["input"] = *v;
-  if (const auto v = a.get("--prompt")) config["prompt"] = *v;
-  if (const auto v = a.get("-o") ? a.get("-o") : a.get("--output")) config["output"] = *v;
-  if (const auto v = a.get("--device")) config["device"] = *v;
+  ConfigOrigins origins;
+  nlohmann::json config = load_config(file, overrides, &origins);
+  // The options win over the file and overrides; their values name themselves in any error.
+  const auto option = [&](const char* key, std::optional<std::string> v) {
+    if (!v) return;
+    config[key] = *v;
+    origins.erase(key);
+  };
+  option("input", a.get("--input"));
+  option("prompt", a.get("--prompt"));
+  option("output", a.get("-o") ? a.get("-o") : a.get("--output"));
+  option("device", a.get("--device"));
   if (const auto from = a.get("--from")) {
     const auto& st = stage_names();
     if (std::find(st.begin(), st.end(), *from) == st.end())
@@ -132,7 +139,14 @@ int cmd_run(const std::vector<std::string>& argv) {
   std::vector<fs::path> extra;
   for (const auto& p : config["plugin_paths"]) extra.push_back(p.get<std::string>());
   PluginHost host(plugin_search_path(extra));
-  check_config(config, host);
+  try {
+    check_config(config, host);
+  } catch (const Error& e) {
+    // "stages.fitter.iterations: must be ..." becomes "my.yaml:4: stages.fitter.iterations: ...".
+    const std::string origin = origin_of_message(origins, e.what());
+    if (origin.empty()) throw;
+    throw Error(origin + ": " + e.what());
+  }
 
   ProgressView view(log::quiet());
   host.set_hooks({[&view](double f, const std::string& note) { view.update(f, note); },

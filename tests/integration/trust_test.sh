@@ -97,7 +97,7 @@ bad_setting() {  # NAME EXPECTED ARGS...
   check "bad setting $name: one line naming it, nothing run" \
     '[[ $rc -eq 1 && $(wc -l <"$tmp/bs.err") -eq 1 && ! -e $tmp/none ]] && grep -qF -- "$want" "$tmp/bs.err" || { echo "rc=$rc"; cat "$tmp/bs.err"; false; }'
 }
-bad_setting iterations "stages.fitter.iterations: must be a whole number from 1 to 1000000, not -5" stages.fitter.iterations=-5
+bad_setting iterations "command line 'stages.fitter.iterations=-5': stages.fitter.iterations: must be a whole number from 1 to 1000000, not -5" stages.fitter.iterations=-5
 bad_setting huge_iterations "stages.fitter.iterations: must be a whole number" stages.fitter.iterations=1e12
 bad_setting colors "stages.fitter.colors: must be one of auto, palette, original, not rainbow" stages.fitter.colors=rainbow
 bad_setting loop "stages.fitter.loop: must be one of loop, once, mirror, not sideways" stages.fitter.loop=sideways

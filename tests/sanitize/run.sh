@@ -12,6 +12,16 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
 cmake --build build-asan -j "$(nproc 2>/dev/null || echo 2)"
+# The Lottie and report tests open our outputs in lottie-web/Chromium: the same pinned npm
+# packages .ci/setup.sh puts into build/npm (copied from there when present).
+if [[ ! -d build-asan/npm/node_modules/lottie-web ]]; then
+  mkdir -p build-asan/npm
+  if [[ -d build/npm/node_modules/lottie-web ]]; then cp -r build/npm/node_modules build-asan/npm/
+  else
+    cp tests/integration/lottie/package.json build-asan/npm/package.json
+    (cd build-asan/npm && npm install --no-audit --no-fund --no-package-lock --loglevel=error >/dev/null)
+  fi
+fi
 export ASAN_OPTIONS=detect_leaks=0:halt_on_error=1:abort_on_error=0:detect_odr_violation=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 ctest --test-dir build-asan --output-on-failure -j 2

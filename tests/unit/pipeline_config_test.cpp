@@ -92,6 +92,21 @@ TEST_CASE("an alias bomb in a list-valued key or in an override is refused the s
         "(YAML aliases of aliases?)");
 }
 
+TEST_CASE("config: each user setting's origin is known, so a value error can name the file and line") {
+  const TempFile f("stages:\n  fitter:\n    iterations: 0\n    size: 64\n  video:\n    options:\n      frames: 3\n");
+  ConfigOrigins origins;
+  load_config(f.path, {"stages.fitter.size=128"}, &origins);
+  CHECK(origins["stages.fitter.iterations"] == f.path.string() + ":3");
+  CHECK(origins["stages.fitter.size"] == "command line 'stages.fitter.size=128'");  // the override wins
+  CHECK(origins["stages.video.options"] == f.path.string() + ":6");
+  CHECK(origins.count("stages.fitter.keyframes") == 0);  // a default
+  CHECK(origin_of_message(origins, "stages.fitter.iterations: must be a whole number from 1 to 1000000, not 0") ==
+        f.path.string() + ":3");
+  CHECK(origin_of_message(origins, "stages.video.options.motion: must be a string") == f.path.string() + ":6");
+  CHECK(origin_of_message(origins, "stages.fitter.keyframes: must be a whole number") == "");
+  CHECK(origin_of_message(origins, "/tmp/x.svg: cannot open: No such file or directory") == "");
+}
+
 TEST_CASE("ordinary aliases in options still expand") {
   const TempFile f(
       "stages:\n  video:\n    options:\n      base: &b {fps: 12, size: 96}\n      a: *b\n      c: [*b, *b]\n");

@@ -170,7 +170,7 @@ bool free_form(const std::string& path) {
 
 // Merges `user` into `into`, checking every key against `schema`.
 void merge(const YAML::Node& user, nlohmann::json& into, const nlohmann::json& schema,
-           const std::string& path, const std::string& file, ValueBudget& budget) {
+           const std::string& path, const std::string& file, ValueBudget& budget, ConfigOrigins* origins) {
   std::set<std::string> seen;  // YAML maps may not repeat a key; yaml-cpp would keep both
   for (const auto& kv : user) {
     // "file:line" for files; overrides come as "command line 'k=v'" with no line to point at.
@@ -186,12 +186,13 @@ void merge(const YAML::Node& user, nlohmann::json& into, const nlohmann::json& s
     const nlohmann::json& s = schema[key];
     if (s.is_object() && !free_form(full)) {
       if (!kv.second.IsMap()) throw Error(file + line + ": '" + full + "' must be a section of keys");
-      merge(kv.second, into[key], s, full, file, budget);
+      merge(kv.second, into[key], s, full, file, budget, origins);
     } else if (s.is_object()) {
       // Free-form sections merge key by key, so options.x=1 keeps the other options.
       const nlohmann::json v = to_json(kv.second, budget, file + line + ": '" + full + "'");
       if (into[key].is_object() && v.is_object()) into[key].update(v, true);
       else into[key] = v;
+      if (origins) (*origins)[full] = file + line;
     } else {
       const nlohmann::json v = to_json(kv.second, budget, file + line + ": '" + full + "'");
       if (s.is_number() && !v.is_number())
@@ -200,6 +201,7 @@ void merge(const YAML::Node& user, nlohmann::json& into, const nlohmann::json& s
         throw Error(file + line + ": '" + full + "' must be true or false");
       if (s.is_array() && !v.is_array()) throw Error(file + line + ": '" + full + "' must be a list");
       into[key] = v;
+      if (origins) (*origins)[full] = file + line;
     }
   }
 }
@@ -220,7 +222,7 @@ nlohmann::json default_config() {
 }
 
 nlohmann::json load_config(const std::optional<std::filesystem::path>& file,
-                           const std::vector<std::string>& overrides) {
+                           const std::vector<std::string>& overrides, ConfigOrigins* origins) {
   const nlohmann::json schema = default_config();
   nlohmann::json cfg = schema;
   ValueBudget budget;
@@ -240,7 +242,7 @@ nlohmann::json load_config(const std::optional<std::filesystem::path>& file,
     }
     if (!root.IsNull()) {
       if (!root.IsMap()) throw Error(file->string() + ": a config is a YAML map of keys");
-      merge(root, cfg, schema, "", file->string(), budget);
+      merge(root, cfg, schema, "", file->string(), budget, origins);
     }
   }
   for (const std::string& o : overrides) {
@@ -268,9 +270,18 @@ nlohmann::json load_config(const std::optional<std::filesystem::path>& file,
       if (dot == std::string::npos) break;
       end = dot;
     }
-    merge(tree, cfg, schema, "", "command line '" + shown(o) + "'", budget);
+    merge(tree, cfg, schema, "", "command line '" + shown(o) + "'", budget, origins);
   }
   return cfg;
+}
+
+std::string origin_of_message(const ConfigOrigins& origins, const std::string& message) {
+  const std::string key = message.substr(0, message.find(": "));
+  // The setting itself, or the free-form section it lies in (stages.video.options.motion).
+  for (std::string k = key;; k.erase(k.rfind('.'))) {
+    if (const auto it = origins.find(k); it != origins.end()) return it->second;
+    if (k.find('.') == std::string::npos) return "";
+  }
 }
 
 }  // namespace svgm
