@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <string>
 
+#include "color/palette.h"
 #include "svg/utf8.h"
 #include "svgmotion/device.h"
 #include "svgmotion/error.h"
@@ -158,6 +159,12 @@ void check_config(const nlohmann::json& c, const PluginHost& host) {
   {
     const Scene s = read_svg_file(input);  // throws "<input>: <problem>" for malformed SVG
     if (s.paths.empty()) throw Error(input + ": nothing to animate (no visible paths)");
+    // The recolorer gives every path its own colour; known now, so the error names the
+    // user's file instead of the run directory's grouped.svg after the grouper has run.
+    if (at(c, "stages.recolorer.plugin") == "spherepack" && s.paths.size() > static_cast<size_t>(kMaxPaletteSize))
+      throw Error(input + ": " + std::to_string(s.paths.size()) + " paths, more than the " +
+                  std::to_string(kMaxPaletteSize) + " distinct colours the spherepack recolorer makes "
+                  "(stages.recolorer.plugin=none keeps the drawing's own colours)");
   }
   if (at(c, "stages.video.plugin") == "file") {
     const std::string path = at(c, "stages.video.path").is_string() ? at(c, "stages.video.path").get<std::string>() : "";
