@@ -456,7 +456,9 @@ TEST_CASE("one Adam step matches the formula in double precision; inactive keyfr
   const int per = 7, K = 4, first = 1;
   const float lr = 1e-3f, eps = 1e-6f;  // the paper's learning rate and epsilon
   // The paper's settings (β1 = β2 = 0.9), and distinct betas so that a swapped one shows.
-  for (const auto& [b1, b2] : {std::pair{0.9f, 0.9f}, std::pair{0.8f, 0.99f}}) {
+  for (const auto& betas : {std::pair{0.9f, 0.9f}, std::pair{0.8f, 0.99f}}) {
+    // Named copies: clang before 16 cannot capture structured bindings (CAPTURE is a lambda).
+    const float b1 = betas.first, b2 = betas.second;
     CAPTURE(b1);
     CAPTURE(b2);
     std::vector<int> steps{5, 0, 3, 1};
