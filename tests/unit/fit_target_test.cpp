@@ -241,7 +241,8 @@ TEST_CASE("frames are resized to the requested size") {
   for (int i = 0; i < 2; ++i) write_png(dir.path / (std::to_string(i) + ".png"), img);
   TargetOptions o;
   o.keyframes = 2;
-  for (const auto& [w, h] : {std::pair{32, 24}, std::pair{128, 96}, std::pair{50, 50}}) {
+  for (const auto& size : {std::pair{32, 24}, std::pair{128, 96}, std::pair{50, 50}}) {
+    const int w = size.first, h = size.second;  // copies: clang 14 cannot CAPTURE a binding
     CAPTURE(w);
     const TargetFrames t = load_target(dir.path, w, h, o);
     CHECK(t.width == w);
