@@ -39,9 +39,18 @@ constexpr double kRideMaxArea = 0.1;
 // stand reaching into the wheel's box is not carried).
 constexpr double kSpinInsideShare = 0.9;
 
+// The usual amplitude of each primitive on one part, in its unit (motion_verbs.h), in the order
+// of Primitive: for a whole-figure verb a prompt aims at a part ("his legs squatting").
+constexpr double kPartAmplitude[] = {20, 1, 0.07, 0.04, 0.04, 6, 0.05, 15, 0.01, 0.08, 0.08, 0.08, 0.12};
+static_assert(sizeof kPartAmplitude / sizeof kPartAmplitude[0] == static_cast<size_t>(Primitive::Fall) + 1);
+
 bool whole_only(Primitive p) {
   return p == Primitive::Rock || p == Primitive::Hop || p == Primitive::Bob || p == Primitive::Slide ||
          p == Primitive::Squash || p == Primitive::Stretch || p == Primitive::Shake;
+}
+
+bool is_limb_target(Target t) {
+  return t == Target::Arms || t == Target::Legs || t == Target::Limbs || t == Target::Tail;
 }
 
 std::string join(const std::vector<std::string>& v, const char* sep) {
@@ -91,7 +100,12 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
     case Target::Root: return rig.root >= 0 ? std::vector<int>{rig.root} : std::vector<int>{};
     case Target::Head: v = with_role(rig, {Role::Head}); break;
     case Target::Arms: v = with_role(rig, {Role::UpperLimb}); break;
-    case Target::Legs: v = with_role(rig, {Role::LowerLimb}); break;
+    case Target::Legs:
+      v = with_role(rig, {Role::LowerLimb});
+      // A creature wider than tall with nothing below (a spider, a crab seen from above): the
+      // limbs at its sides are its legs.
+      if (v.empty() && rig.figure.w() > rig.figure.h()) v = with_role(rig, {Role::UpperLimb, Role::Tail});
+      break;
     case Target::Limbs: v = with_role(rig, {Role::UpperLimb, Role::LowerLimb, Role::Tail}); break;
     case Target::Tail: v = with_role(rig, {Role::Tail}); break;
     case Target::Background: v = with_role(rig, {Role::Background}); return v;
@@ -210,9 +224,15 @@ struct Builder {
     a.words = words;
     a.primitive = base.primitive;
     a.target = target;
-    if (primary_retargeted && whole_only(a.primitive) && target != Target::Whole) a.primitive = verb.on_part;
+    double amp = base.amp;
+    if (primary_retargeted && whole_only(a.primitive) && target != Target::Whole && verb.on_part != a.primitive) {
+      // The verb's amplitude is in its whole-figure primitive's unit (a squat's figure
+      // heights), not in the part's (degrees): the part's primitive gets its usual size.
+      a.primitive = verb.on_part;
+      amp = kPartAmplitude[static_cast<size_t>(a.primitive)];
+    }
     std::uniform_real_distribution<double> U(0, 1);
-    a.amp = base.amp * mods.size * (a.primitive == Primitive::Spin ? 1 : 0.85 + 0.3 * U(rng));
+    a.amp = amp * mods.size * (a.primitive == Primitive::Spin ? 1 : 0.85 + 0.3 * U(rng));
     a.cycles = std::max(1, static_cast<int>(std::lround(base.cycles * mods.speed)));
     if (mods.once > 0) a.cycles = 1;
     if (mods.once < 0) a.cycles = std::max(2, a.cycles);
@@ -314,6 +334,15 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
   Builder b{rig, std::mt19937(seed), {}};
   b.plan.source = "prompt";
   std::vector<std::string> unknown;
+  // Does the prompt say which limbs move ("waving its arms", "sways its tentacles")? Then the
+  // whole-figure accents of its limb verbs (cheering's hop, flapping's bob, dancing's rock) are
+  // left out: they move every part, the ones the prompt keeps still too, and outweigh the
+  // limbs it names.
+  bool names_limbs = false;
+  for (const Clause& c : prompt.clauses)
+    for (const auto& n : c.nouns)
+      names_limbs = names_limbs || (!n.object_of_preposition && is_limb_target(n.target));
+  std::vector<std::string> accents_left_out;
   for (const Clause& c : prompt.clauses) {
     // The clause's targets: known part nouns, and other words that name a part of the drawing.
     Target target = Target::Whole;
@@ -341,10 +370,16 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
       for (size_t i = 0; i < v->actions.size(); ++i) {
         const Action& act = v->actions[i];
         const bool retarget = i == 0 && have;
+        if (i > 0 && act.target == Target::Whole && names_limbs && is_limb_target(v->actions[0].target)) {
+          accents_left_out.push_back(v->name + "'s " + primitive_name(act.primitive));
+          continue;
+        }
         b.add(*v, act, retarget ? target : act.target, retarget ? named : std::vector<int>{}, target_word, c.mods,
               retarget && plural, c.text, retarget);
       }
   }
+  if (!accents_left_out.empty())
+    b.plan.notes.push_back("the prompt names the limbs that move: the whole-figure " + join(accents_left_out, ", ") + " left out");
   b.plan.not_understood = unknown;
   if (b.plan.actions.empty()) {
     const std::string words = unknown.empty() ? "no words" : join(unknown, ", ");

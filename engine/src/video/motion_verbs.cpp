@@ -55,9 +55,9 @@ const std::vector<Verb> kVerbs = {
   {"sit",     {"sit", "sat", "crouch", "squat", "kneel", "duck"}, {{P::Squash, T::Whole, 0.1, 1}}, P::Swing},
   {"stretch", {"stretch", "extend", "elongat", "lengthen"}, {{P::Stretch, T::Whole, 0.08, 1}}, P::Swing},
   {"move",    {"mov", "go", "went", "advanc", "crawl", "creep", "inch", "proceed", "travel"}, {{P::Slide, T::Whole, 0.04, 1}, {P::Stretch, T::Whole, 0.04, 2}}, P::Swing},
-  {"glide",   {"ski", "skat", "surf", "slid", "sled", "ride", "rid", "maneuver", "manoeuvr", "sail", "row"}, {{P::Slide, T::Whole, 0.04, 1}, {P::Rock, T::Whole, 5, 1}}, P::Swing},
+  {"glide",   {"ski", "skat", "surf", "slid", "sled", "ride", "riding", "rode", "ridden", "maneuver", "manoeuvr", "sail", "row"}, {{P::Slide, T::Whole, 0.04, 1}, {P::Rock, T::Whole, 5, 1}}, P::Swing},
   {"drive",   {"driv", "drove", "roll", "accelerat", "launch", "speed"}, {{P::Shake, T::Whole, 0.006, 6}, {P::Spin, T::Wheels, 1, 1}}, P::Spin},
-  {"dodge",   {"dodg", "duck", "evad"},         {{P::Slide, T::Whole, 0.04, 2}}, P::Swing},
+  {"dodge",   {"dodg", "evad"},                 {{P::Rock, T::Whole, 6, 2}}, P::Swing},  // a lean of the body, the feet planted
   // Bodies that bend.
   {"swim",    {"swim", "swam", "paddl"},        {{P::Undulate, T::Whole, 0.05, 1}, {P::Slide, T::Whole, 0.02, 1}}, P::Undulate},
   {"slither", {"slither", "undulat", "wriggl", "squirm", "sinuous", "snak", "weav"}, {{P::Undulate, T::Whole, 0.06, 1}}, P::Undulate},
