@@ -38,6 +38,10 @@ constexpr double kRideMaxArea = 0.1;
 // A part hanging from a spinning part turns with it when this share of its box is inside (a
 // stand reaching into the wheel's box is not carried).
 constexpr double kSpinInsideShare = 0.9;
+// A Sides bend's still core, each side, in shares of the bending part's width (side_core): at
+// least the middle quarter of it (kCore below), at most 70 % of it (the outer 15 % each side
+// still bends: a ghost's stubby arms).
+constexpr double kCoreMin = 0.12, kCoreMax = 0.35;
 
 // The usual amplitude of each primitive on one part, in its unit (motion_verbs.h), in the order
 // of Primitive: for a whole-figure verb a prompt aims at a part ("his legs squatting").
@@ -184,6 +188,23 @@ int region_host(const Rig& rig, Target t) {
   return best;
 }
 
+// The still core of a Sides bend: the arms are what reaches out beyond the body below them.
+// When the bending part sits on the root (a shirt with its sleeves above the trousers), the
+// root's width; when it is the root (a ghost, a bat), the width of its lowest quarter (the
+// hem, the feet). Each side between kCoreMin and kCoreMax of the part's width from its middle.
+void side_core(const Rig& rig, PlannedAction& a) {
+  const RigPart& P = rig.parts[a.parts[0]];
+  const double W = std::max(P.box.w(), 1e-9), cx = P.box.centre().x;
+  double x0 = P.base_x0, x1 = P.base_x1;
+  if (a.parts[0] != rig.root && rig.root >= 0) {
+    x0 = rig.parts[rig.root].box.x0;
+    x1 = rig.parts[rig.root].box.x1;
+  }
+  if (x1 < x0) x0 = x1 = cx;
+  a.core_left = std::clamp(cx - x0, kCoreMin * W, kCoreMax * W);
+  a.core_right = std::clamp(x1 - cx, kCoreMin * W, kCoreMax * W);
+}
+
 // Signs and phases of the parts of one action.
 void pair_up(const Rig& rig, PlannedAction& a, Pairing pairing, std::mt19937& rng) {
   const Vec2 rc = rig.root >= 0 ? rig.parts[rig.root].box.centre() : rig.figure.centre();
@@ -262,6 +283,7 @@ struct Builder {
       a.region = target == Target::Arms || target == Target::Limbs ? Region::Sides
                  : target == Target::Legs ? Region::Lower : target == Target::Head ? Region::Top : Region::End;
       a.alternating = base.pairing == Pairing::Alternating;
+      if (a.region == Region::Sides) side_core(rig, a);
       if (base.pairing == Pairing::OneSide && !mods.both && !plural) {
         // The figure's own side is drawn on the viewer's other side.
         a.region_side = mods.side != 0 ? -mods.side : ((rng() & 1) ? 1 : -1);
@@ -534,9 +556,10 @@ Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box
   auto wave = [&](double phase) { return std::sin(kTau * (a.cycles * t + phase)); };
   switch (a.region) {
     case Region::Sides: {
-      const double dx = q.x - c.x, core = kCore * W;
-      if (std::fabs(dx) <= core) return q;
+      const double dx = q.x - c.x;
       const int side = dx < 0 ? -1 : 1;  // as the viewer sees it
+      const double core = a.core_left > 0 ? (side < 0 ? a.core_left : a.core_right) : kCore * W;
+      if (std::fabs(dx) <= core) return q;
       if (a.region_side != 0 && side != a.region_side) return q;
       const double w = smoothstep((std::fabs(dx) - core) / (kRamp * W));
       // Mirrored: both sides rise together; alternating: half a cycle apart.
@@ -683,12 +706,13 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
               if (!is_deformation(a)) continue;
               const double amp = plan.amplitude(a);
               if (a.region != Region::None) {
-                // The part's own outlines and what hangs from it within its box (a hand at
-                // the end of a sleeve); what hangs outside (legs under a waving torso) keeps
-                // its shape and follows the rig.
+                // The part's own outlines and what hangs from it within its width and not
+                // below it (a hand at the end of a sleeve, also one raised above the sleeve's
+                // box); what hangs below (legs under a waving torso) keeps its shape and
+                // follows the rig.
                 const RigBox& hb = rig.parts[a.parts[0]].box;
                 const Vec2 gc = g >= 0 ? rig.parts[g].box.centre() : Vec2{};
-                if (g == a.parts[0] || (g >= 0 && under(g, a.parts[0]) && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y >= hb.y0 && gc.y <= hb.y1))
+                if (g == a.parts[0] || (g >= 0 && under(g, a.parts[0]) && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y <= hb.y1))
                   q = bend_region(a, amp, t, hb, q);
               } else if (a.parts.empty()) {
                 if (!background) q = deform(a, amp, t, rig.figure, q);
