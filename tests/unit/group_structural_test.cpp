@@ -82,6 +82,26 @@ TEST_CASE("eyes inside a head join the head; a far part stays apart") {
   CHECK(g == Groups{{0, 1, 2, 3}, {4}});
 }
 
+TEST_CASE("a backdrop painted first does not swallow the figure it contains; it joins last") {
+  // A hill over the lower canvas (at three edges), then a wheel and a leg on it, apart.
+  const std::string hill = "<path d=\"M0 80 L200 60 L200 200 L0 200 Z\" fill=\"#6a4\"/>";
+  const std::string parts = circle(50, 150, 20, "#333") + square(130, 120, 20, "#c33");
+  const Scene scene = read(hill + parts);
+  GroupingOptions o;
+  o.min_groups = 1;
+  const Groups g = group_paths(scene, o);
+  check_partition(scene, g);
+  CHECK(g == Groups{{0}, {1}, {2}});
+  // Three groups at most two: the wheel and the leg, not the hill (the hill joins only when one
+  // group is asked for).
+  o.max_groups = 2;
+  CHECK(group_paths(scene, o) == Groups{{0}, {1, 2}});
+  // The same hill painted last is no backdrop (a large figure's body): it takes its contents.
+  const Scene late = read(parts + hill);
+  o.max_groups = 15;
+  CHECK(group_paths(late, o).size() == 1);
+}
+
 TEST_CASE("containment is geometric: inside the box of an L but outside its fill is not inside") {
   // An L shape; a dot inside its vertical arm (contained) and a dot in the empty corner of its
   // bounding box, far from the L's fill; and a far square. A bounding-box test would put both
