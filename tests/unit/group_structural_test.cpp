@@ -182,6 +182,27 @@ TEST_CASE("existing top-level groups are kept when they are good") {
   }
 }
 
+TEST_CASE("a grouper's part names travel in data-name on every run and are read back as Group::name") {
+  TempDir tmp;
+  const auto src = tmp.path / "in.svg";
+  std::ofstream(src) << svg(square(10, 10, 20) + circle(100, 100, 10) + square(150, 150, 20));
+  const Scene scene = read_svg_file(src);
+  REQUIRE(scene.paths.size() == 3);
+  const auto out = tmp.path / "grouped.svg";
+  write_grouped_svg(src, scene, Groups{{0, 2}, {1}}, out, {"left wing", ""});  // g1 g2 g1-b
+  const Scene back = read_svg_file(out);
+  REQUIRE(back.groups.size() == 2);
+  CHECK(back.groups[0].name == "left wing");  // both runs carry it; read once
+  CHECK(back.groups[0].paths == std::vector<int>{0, 2});
+  CHECK(back.groups[1].name.empty());  // no name: no attribute
+  std::ifstream in(out);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  size_t count = 0;
+  for (size_t at = text.find("data-name=\"left wing\""); at != std::string::npos; at = text.find("data-name=\"left wing\"", at + 1)) ++count;
+  CHECK(count == 2);
+  CHECK(text.find("data-name=\"\"") == std::string::npos);
+}
+
 TEST_CASE("deterministic") {
   std::string body;
   unsigned s = 12345;
