@@ -108,6 +108,11 @@ TEST_CASE("a whole-figure verb aimed at a part swings it by degrees, not by the 
   CHECK(plan.actions[0].primitive == Primitive::Swing);
   CHECK(plan.actions[0].amp > 15.0);  // 20 degrees, +-15 %
   CHECK(plan.actions[0].amp < 25.0);
+  // A rock aimed at a part is a swing in the same unit: a sway stays gentle (5 degrees).
+  const MotionPlan sway = fx.plan("he sways his arms");
+  REQUIRE(!sway.actions.empty());
+  CHECK(sway.actions[0].primitive == Primitive::Swing);
+  CHECK(sway.actions[0].amp < 6.0);
 }
 
 TEST_CASE("waving the right arm moves the part named for the figure's right; nothing else moves") {

@@ -48,6 +48,19 @@ constexpr double kCoreMin = 0.12, kCoreMax = 0.35;
 constexpr double kPartAmplitude[] = {20, 1, 0.07, 0.04, 0.04, 6, 0.05, 15, 0.01, 0.08, 0.08, 0.08, 0.12};
 static_assert(sizeof kPartAmplitude / sizeof kPartAmplitude[0] == static_cast<size_t>(Primitive::Fall) + 1);
 
+// The unit of a primitive's amplitude (motion_verbs.h), as motion.json names it.
+const char* unit_of(Primitive p) {
+  switch (p) {
+    case Primitive::Swing: case Primitive::Rock: case Primitive::Bend: return "degrees";
+    case Primitive::Spin: return "turns";
+    case Primitive::Pulse: case Primitive::Stretch: return "fraction of size";
+    case Primitive::Fall: return "canvas heights";
+    case Primitive::Undulate: return "figure lengths";
+    case Primitive::Slide: return "figure widths";
+    default: return "figure heights";
+  }
+}
+
 bool whole_only(Primitive p) {
   return p == Primitive::Rock || p == Primitive::Hop || p == Primitive::Bob || p == Primitive::Slide ||
          p == Primitive::Squash || p == Primitive::Stretch || p == Primitive::Shake;
@@ -246,11 +259,12 @@ struct Builder {
     a.primitive = base.primitive;
     a.target = target;
     double amp = base.amp;
-    if (primary_retargeted && whole_only(a.primitive) && target != Target::Whole && verb.on_part != a.primitive) {
-      // The verb's amplitude is in its whole-figure primitive's unit (a squat's figure
-      // heights), not in the part's (degrees): the part's primitive gets its usual size.
+    if (primary_retargeted && whole_only(a.primitive) && target != Target::Whole) {
+      // When the verb's amplitude is in another unit than the part's primitive (a squat's
+      // figure heights, a swing's degrees), the part's primitive gets its usual size; a rock's
+      // degrees stay a swing's (a sway stays gentle).
+      if (unit_of(verb.on_part) != unit_of(a.primitive)) amp = kPartAmplitude[static_cast<size_t>(verb.on_part)];
       a.primitive = verb.on_part;
-      amp = kPartAmplitude[static_cast<size_t>(a.primitive)];
     }
     std::uniform_real_distribution<double> U(0, 1);
     a.amp = amp * mods.size * (a.primitive == Primitive::Spin ? 1 : 0.85 + 0.3 * U(rng));
@@ -846,11 +860,7 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
       const Vec2 c = a.primitive == Primitive::Spin ? rig.parts[p].box.centre() : rig.parts[p].pivot;
       pivots.push_back({std::round(c.x * 100) / 100, std::round(c.y * 100) / 100});
     }
-    const char* unit = a.primitive == Primitive::Swing || a.primitive == Primitive::Rock || a.primitive == Primitive::Bend ? "degrees"
-                       : a.primitive == Primitive::Spin ? "turns"
-                       : a.primitive == Primitive::Pulse || a.primitive == Primitive::Stretch ? "fraction of size"
-                       : a.primitive == Primitive::Fall ? "canvas heights"
-                       : a.primitive == Primitive::Undulate ? "figure lengths" : "figure heights";
+    const char* unit = unit_of(a.primitive);
     actions.push_back({{"verb", a.verb},
                        {"motion", primitive_name(a.primitive)},
                        {"target", target_name(a.target)},
