@@ -61,6 +61,9 @@ const char* unit_of(Primitive p) {
   }
 }
 
+// A rock aimed at a part turns it by at most this many times the rock's angle (Builder::add).
+constexpr double kRockToPartMax = 4;
+
 bool whole_only(Primitive p) {
   return p == Primitive::Rock || p == Primitive::Hop || p == Primitive::Bob || p == Primitive::Slide ||
          p == Primitive::Squash || p == Primitive::Stretch || p == Primitive::Shake;
@@ -259,11 +262,12 @@ struct Builder {
     a.primitive = base.primitive;
     a.target = target;
     double amp = base.amp;
+    bool rock_on_part = false;  // a rock's degrees, about the figure's base, now on a part
     if (primary_retargeted && whole_only(a.primitive) && target != Target::Whole) {
       // When the verb's amplitude is in another unit than the part's primitive (a squat's
-      // figure heights, a swing's degrees), the part's primitive gets its usual size; a rock's
-      // degrees stay a swing's (a sway stays gentle).
+      // figure heights, a swing's degrees), the part's primitive gets its usual size.
       if (unit_of(verb.on_part) != unit_of(a.primitive)) amp = kPartAmplitude[static_cast<size_t>(verb.on_part)];
+      else rock_on_part = a.primitive == Primitive::Rock;
       a.primitive = verb.on_part;
     }
     std::uniform_real_distribution<double> U(0, 1);
@@ -280,6 +284,16 @@ struct Builder {
     std::string note;
     if (target == Target::Named) a.parts = named_parts;
     else if (target != Target::Whole && target != Target::Repeated) a.parts = parts_for(rig, target, target_word, &note);
+    if (rock_on_part && !a.parts.empty()) {
+      // The same degrees about a part's pivot move its tips as far as the part is long, not
+      // as the figure is tall: a sway of the leaves turns them by as much more as the figure is
+      // larger than the largest of them (at most kRockToPartMax times), so they move as far
+      // as the whole tree would have.
+      double longest = 0;
+      for (int p : a.parts) longest = std::max(longest, std::hypot(rig.parts[p].box.w(), rig.parts[p].box.h()));
+      const double figure = std::hypot(rig.figure.w(), rig.figure.h());
+      a.amp *= std::clamp(figure / std::max(longest, 1e-9), 1.0, kRockToPartMax);
+    }
     // Wheels a verb implies (pedalling) but the prompt does not name are never the root: a
     // bicycle drawn as one round-ish part must not spin as a whole. A named wheel may be.
     if (target == Target::Wheels && !primary_retargeted) {
