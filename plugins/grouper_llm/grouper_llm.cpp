@@ -206,7 +206,7 @@ json run(const json& req, const svgm_host* host) {
     names.clear();
     source = "structural (fallback: " + reason + ")";
   }
-  svgm::write_grouped_svg(in, scene, groups, P::file(req, "outputs", "svg"));
+  svgm::write_grouped_svg(in, scene, groups, P::file(req, "outputs", "svg"), names);
   json r = {{"message", std::to_string(groups.size()) + " groups (" + (source == "llm" ? "llm" : "structural fallback") + ")"},
             {"source", source},
             {"groups", groups.size()}};

@@ -76,8 +76,12 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host*) {
     by_group[p.group].push_back(i);
   }
   std::vector<std::vector<int>> groups;
-  for (auto& [g, members] : by_group) groups.push_back(members);
-  svgm::write_grouped_svg(in, scene, groups, P::file(req, "outputs", "svg"));
+  std::vector<std::string> names;  // the grouper's part names travel on to the video stage
+  for (auto& [g, members] : by_group) {
+    groups.push_back(members);
+    names.push_back(g >= 0 && g < static_cast<int>(scene.groups.size()) ? scene.groups[static_cast<size_t>(g)].name : "");
+  }
+  svgm::write_grouped_svg(in, scene, groups, P::file(req, "outputs", "svg"), names);
   P::render_png(scene, 512, req.value("device", "auto"), P::file(req, "outputs", "png"));
   P::write_json(P::file(req, "outputs", "palette"), {{"colors", colors}});
   return {{"message", std::to_string(n) + " colours"}};

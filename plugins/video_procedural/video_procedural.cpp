@@ -35,7 +35,10 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   const nlohmann::json& inputs = req.at("inputs");
   const svgm::SourceNames names =
       inputs.contains("original") ? svgm::read_source_names(P::file(req, "inputs", "original").string()) : svgm::SourceNames{};
-  const svgm::Rig rig = svgm::build_rig(scene, names);
+  // The grouper's part names where it gave some (grouper llm: "left wing"), from data-name.
+  std::vector<std::string> group_names;
+  for (const auto& g : scene.groups) group_names.push_back(g.name);
+  const svgm::Rig rig = svgm::build_rig(scene, names, group_names);
   const std::string prompt = req.value("prompt", "");
   const auto steps = explicit_plan.empty() ? std::vector<svgm::ExplicitStep>{} : svgm::parse_explicit_plan(explicit_plan);
   const svgm::ParsedPrompt parsed = svgm::parse_prompt(prompt);

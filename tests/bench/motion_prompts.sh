@@ -8,7 +8,9 @@
 # TARGET is scored (motion.json); with more, the FITTED animation is scored (animation.json, the
 # Lottie export of animation.svg: motion_score.py --fitted), the fitter reduced to ITERATIONS
 # (the full 2000 do not fit a shared CPU's budget; say so with the numbers). CASES (a regular
-# expression over the case names) picks some cases. Fits run one at a time, nice'd. Not part of
+# expression over the case names) picks some cases; SETTINGS (space-separated key=value) adds
+# settings to every run (SETTINGS=stages.ranker.accept_flagged=true fits a video the ranker
+# flagged, to measure the motion of a case the ranker stops). Fits run one at a time, nice'd. Not part of
 # the test suite: the drawings are not ours to copy (see ../shared/bench/*/LICENSES.md).
 #
 #   bash tests/bench/motion_prompts.sh [BUILD_DIR] [OUT_DIR] [ITERATIONS]
@@ -33,7 +35,7 @@ while IFS=$'\t' read -r name svg prompt move still; do
   d=$out/$name
   rm -rf "$d"
   nice "$B" run --input "$bench/$svg" --prompt "$prompt" -o "$d" stages.fitter.iterations="$iters" \
-    stages.video.candidates=1 --quiet < /dev/null > "$d.log" 2>&1
+    stages.video.candidates=1 ${SETTINGS:-} --quiet < /dev/null > "$d.log" 2>&1
   if [ ! -f "$d/motion.json" ] || { [ -n "$fitted" ] && [ ! -f "$d/animation.json" ]; }; then
     printf '%s\tno motion.json or animation.json (see %s.log)\n' "$name" "$d"
     total=$((total + 1))

@@ -77,6 +77,9 @@ for c in valid fenced auth; do
     '[[ $(cat "$tmp/$c.rc") -eq 0 && $got == "$expected" && -s $tmp/$c/animation.svg ]] || { echo "  got: $got"; head -c 400 "$tmp/$c.err"; false; }'
   check "$c: no warning" '! grep -q "grouper llm" "$tmp/$c.err"'
 done
+check "the answer's part names reach the video stage (data-name in grouped.svg and recolored.svg)" \
+  'grep -q "data-name=\"waving arm\"" "$tmp/valid/grouped.svg" && grep -q "data-name=\"waving arm\"" "$tmp/valid/recolored.svg"'
+check "the structural grouper names no part" '! grep -q "data-name=" "$tmp/structural/grouped.svg"'
 check "the request carries the prompt, the SVG, the path ids and a PNG render" \
   '"$py" - "$tmp/requests.log" <<EOF
 import json, sys

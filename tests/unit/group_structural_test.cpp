@@ -82,6 +82,26 @@ TEST_CASE("eyes inside a head join the head; a far part stays apart") {
   CHECK(g == Groups{{0, 1, 2, 3}, {4}});
 }
 
+TEST_CASE("a backdrop painted first does not swallow the figure it contains; it joins last") {
+  // A hill over the lower canvas (at three edges), then a wheel and a leg on it, apart.
+  const std::string hill = "<path d=\"M0 80 L200 60 L200 200 L0 200 Z\" fill=\"#6a4\"/>";
+  const std::string parts = circle(50, 150, 20, "#333") + square(130, 120, 20, "#c33");
+  const Scene scene = read(hill + parts);
+  GroupingOptions o;
+  o.min_groups = 1;
+  const Groups g = group_paths(scene, o);
+  check_partition(scene, g);
+  CHECK(g == Groups{{0}, {1}, {2}});
+  // Three groups at most two: the wheel and the leg, not the hill (the hill joins only when one
+  // group is asked for).
+  o.max_groups = 2;
+  CHECK(group_paths(scene, o) == Groups{{0}, {1, 2}});
+  // The same hill painted last is no backdrop (a large figure's body): it takes its contents.
+  const Scene late = read(parts + hill);
+  o.max_groups = 15;
+  CHECK(group_paths(late, o).size() == 1);
+}
+
 TEST_CASE("containment is geometric: inside the box of an L but outside its fill is not inside") {
   // An L shape; a dot inside its vertical arm (contained) and a dot in the empty corner of its
   // bounding box, far from the L's fill; and a far square. A bounding-box test would put both
@@ -160,6 +180,27 @@ TEST_CASE("existing top-level groups are kept when they are good") {
     check_partition(bad, b);
     CHECK(b == Groups{{0, 2}, {1}, {3}});
   }
+}
+
+TEST_CASE("a grouper's part names travel in data-name on every run and are read back as Group::name") {
+  TempDir tmp;
+  const auto src = tmp.path / "in.svg";
+  std::ofstream(src) << svg(square(10, 10, 20) + circle(100, 100, 10) + square(150, 150, 20));
+  const Scene scene = read_svg_file(src);
+  REQUIRE(scene.paths.size() == 3);
+  const auto out = tmp.path / "grouped.svg";
+  write_grouped_svg(src, scene, Groups{{0, 2}, {1}}, out, {"left wing", ""});  // g1 g2 g1-b
+  const Scene back = read_svg_file(out);
+  REQUIRE(back.groups.size() == 2);
+  CHECK(back.groups[0].name == "left wing");  // both runs carry it; read once
+  CHECK(back.groups[0].paths == std::vector<int>{0, 2});
+  CHECK(back.groups[1].name.empty());  // no name: no attribute
+  std::ifstream in(out);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  size_t count = 0;
+  for (size_t at = text.find("data-name=\"left wing\""); at != std::string::npos; at = text.find("data-name=\"left wing\"", at + 1)) ++count;
+  CHECK(count == 2);
+  CHECK(text.find("data-name=\"\"") == std::string::npos);
 }
 
 TEST_CASE("deterministic") {

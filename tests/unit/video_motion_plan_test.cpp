@@ -54,9 +54,9 @@ double loop_gap(const std::vector<Vec2>& pts, int F) {
 
 TEST_SUITE("motion") {
 
-TEST_CASE("flapping wings: both wings swing, mirrored; the body only bobs; the loop closes") {
+TEST_CASE("flapping: both wings swing, mirrored; the body only bobs; the loop closes") {
   const Fixture fx("bird.svg");
-  MotionPlan plan = fx.plan("A bird flapping its wings");
+  MotionPlan plan = fx.plan("A bird is flapping");
   REQUIRE(plan.actions.size() == 2);
   CHECK(plan.actions[0].verb == "flap");
   CHECK(plan.actions[0].primitive == Primitive::Swing);
@@ -79,6 +79,46 @@ TEST_CASE("flapping wings: both wings swing, mirrored; the body only bobs; the l
   }
   CHECK(rise > 10.0);
   CHECK(loop_gap(pts, F) < 1e-9);
+}
+
+TEST_CASE("a prompt naming the limbs leaves out its limb verbs' whole-figure accents; the body holds") {
+  const Fixture fx("bird.svg");
+  const MotionPlan plan = fx.plan("A bird hovers, flapping its wings");
+  REQUIRE(plan.actions.size() == 1);  // one swing of the wings (flap repeats hover's), no bob
+  for (const auto& a : plan.actions) {
+    CHECK(a.primitive == Primitive::Swing);
+    CHECK(a.parts == std::vector<int>{1, 2});
+  }
+  REQUIRE(plan.notes.size() == 1);
+  CHECK(plan.notes[0] == "the prompt names the limbs that move: the whole-figure hover's bob, flap's bob left out");
+  const auto t = fx.travel(animate_plan(fx.scene, fx.rig, plan, 13), 13);
+  CHECK(t[0] == 0.0);  // the body
+  CHECK(t[1] > 10.0);
+  CHECK(t[2] > 10.0);
+  // A verb of the whole figure the prompt says stays ("jumps"), and an unnamed flap keeps its bob.
+  const MotionPlan jump = fx.plan("the bird jumps and flaps its wings");
+  CHECK(jump.actions.front().primitive == Primitive::Hop);
+  CHECK(fx.plan("the bird flaps").actions.size() == 2);
+}
+
+TEST_CASE("a whole-figure verb aimed at a part swings it by degrees, not by the verb's figure heights") {
+  const Fixture fx("stick_figure.svg");
+  const MotionPlan plan = fx.plan("his legs squatting");
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].primitive == Primitive::Swing);
+  CHECK(plan.actions[0].amp > 15.0);  // 20 degrees, +-15 %
+  CHECK(plan.actions[0].amp < 25.0);
+  // A rock aimed at a part is a swing in the same unit, larger by as much as the figure is
+  // larger than the part (the arms' tips move about as far as the figure's top would have).
+  const MotionPlan sway = fx.plan("he sways his arms");
+  REQUIRE(!sway.actions.empty());
+  CHECK(sway.actions[0].primitive == Primitive::Swing);
+  double longest = 0;
+  for (int p : sway.actions[0].parts) longest = std::max(longest, std::hypot(fx.rig.parts[p].box.w(), fx.rig.parts[p].box.h()));
+  const double ratio = std::hypot(fx.rig.figure.w(), fx.rig.figure.h()) / longest;
+  CHECK(ratio > 1.5);  // the drawing makes the test tell the two apart
+  CHECK(sway.actions[0].amp > 5 * 0.85 * std::min(ratio, 4.0) - 1e-9);
+  CHECK(sway.actions[0].amp < 5 * 1.15 * std::min(ratio, 4.0) + 1e-9);
 }
 
 TEST_CASE("waving the right arm moves the part named for the figure's right; nothing else moves") {

@@ -71,6 +71,32 @@ TEST_CASE("an unnamed bird: body is the root, head above, two wings with mirrore
   CHECK(r.figure.x1 == doctest::Approx(180));
 }
 
+TEST_CASE("a grouper's names (data-name of grouped.svg) name the parts and give their roles") {
+  // The bird of bird.svg as a grouper writes it, the wings named by the grouper only (the
+  // paths' ids say nothing).
+  const Scene s = read_svg_string(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200\" height=\"200\">"
+      "<g id=\"group-1\" data-group=\"group-1\" data-name=\"body\"><path id=\"p1\" d=\"M 70 110 C 70 95 130 95 130 110 C 130 125 70 125 70 110 Z\"/></g>"
+      "<g id=\"group-2\" data-group=\"group-2\" data-name=\"left wing\"><path id=\"p2\" d=\"M 125 105 L 180 70 L 170 110 Z\"/></g>"
+      "<g id=\"group-3\" data-group=\"group-3\" data-name=\"right wing\"><path id=\"p3\" d=\"M 75 105 L 20 70 L 30 110 Z\"/></g>"
+      "<g id=\"group-4\" data-group=\"group-4\"><path id=\"p4\" d=\"M 92 80 C 92 70 108 70 108 80 C 108 90 92 90 92 80 Z\"/></g>"
+      "</svg>", "grouped.svg");
+  std::vector<std::string> names;
+  for (const auto& g : s.groups) names.push_back(g.name);
+  const Rig r = build_rig(s, {}, names);
+  REQUIRE(r.parts.size() == 4);
+  CHECK(r.parts[0].name == "body");
+  CHECK(r.parts[0].role == Role::Root);
+  CHECK(r.parts[1].name == "left wing");
+  CHECK(r.parts[1].named);
+  CHECK(r.parts[1].side == -1);
+  CHECK(r.parts[2].side == 1);
+  CHECK(r.parts[2].role == Role::UpperLimb);
+  CHECK(r.parts[3].name == "head");  // no name given: its role's
+  // Without the names the wings are limbs by geometry only.
+  CHECK(build_rig(s, {}).parts[1].name == "limb_upper_left");
+}
+
 TEST_CASE("a stick figure: names give the sides, geometry the legs (the figure's own side)") {
   const Rig r = rig_of("stick_figure.svg");
   const int torso = part_named(r, "torso"), left = part_named(r, "left arm"), right = part_named(r, "Right Arm");

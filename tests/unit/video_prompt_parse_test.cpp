@@ -62,6 +62,42 @@ TEST_CASE("clauses split at conjunctions; a noun after a preposition is not a ta
   CHECK(p.clauses[1].mods.size == 0.5);
 }
 
+TEST_CASE("a noun of a prepositional phrase split by 'and' stays its object; a verb's word after 'the' is a noun") {
+  const ParsedPrompt p = parse_prompt("A woman in a green dress with black dots and black boots is dancing joyfully.");
+  REQUIRE(p.clauses.size() == 1);
+  bool boots = false;
+  for (const auto& n : p.clauses[0].nouns)
+    if (n.word == "boots") {
+      boots = true;
+      CHECK(n.target == Target::Legs);
+      CHECK(n.object_of_preposition);
+    }
+  CHECK(boots);
+  // "and" after a verb starts a clause of its own: "his legs" there is a target.
+  const ParsedPrompt q = parse_prompt("He sits on a chair and kicks his legs");
+  REQUIRE(q.clauses.size() == 2);
+  REQUIRE(q.clauses[1].nouns.size() == 1);
+  CHECK_FALSE(q.clauses[1].nouns[0].object_of_preposition);
+  // "rides the waves": one verb (glide); "waves" is a noun here.
+  const ParsedPrompt s = parse_prompt("A surfer rides the waves.");
+  REQUIRE(s.clauses.size() == 1);
+  REQUIRE(s.clauses[0].verbs.size() == 1);
+  CHECK(s.clauses[0].verbs[0]->name == "glide");
+  // ... but a participle after an article is still the verb.
+  const ParsedPrompt h = parse_prompt("A galloping horse.");
+  REQUIRE(h.clauses[0].verbs.size() == 1);
+  CHECK(h.clauses[0].verbs[0]->name == "gallop");
+}
+
+TEST_CASE("riding and the rider: whole words, not the stem 'rid' inside other words") {
+  const ParsedPrompt p = parse_prompt("The rider is riding");
+  REQUIRE(p.clauses.size() == 1);
+  REQUIRE(p.clauses[0].verbs.size() == 1);
+  CHECK(p.clauses[0].verb_words == std::vector<std::string>{"riding"});
+  CHECK(parse_prompt("the rider smiles").clauses[0].verbs.empty());
+  CHECK(parse_prompt("she rode off").clauses[0].verbs.size() == 1);
+}
+
 TEST_CASE("modifiers: speed, size, once, the figure's side, both") {
   const ParsedPrompt p = parse_prompt("the man slowly waves his right arm once, then kicks wildly with both legs");
   REQUIRE(p.clauses.size() == 2);

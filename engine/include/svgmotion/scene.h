@@ -116,6 +116,7 @@ struct Path {
 struct Group {
   std::string id;
   std::vector<int> paths;  // indices into Scene::paths, in paint order
+  std::string name = {};   // what the part is, when a grouper said so (data-name, grouped_svg.h)
 };
 
 struct Scene {

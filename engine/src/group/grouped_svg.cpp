@@ -123,7 +123,8 @@ std::string run_suffix(int run) {
 }  // namespace
 
 void write_grouped_svg(const fs::path& source, const Scene& scene,
-                       const std::vector<std::vector<int>>& groups, const fs::path& out) {
+                       const std::vector<std::vector<int>>& groups, const fs::path& out,
+                       const std::vector<std::string>& names) {
   const size_t n = scene.paths.size();
   std::vector<int> group_of(n, -1);
   for (size_t k = 0; k < groups.size(); ++k)
@@ -169,6 +170,8 @@ void write_grouped_svg(const fs::path& source, const Scene& scene,
       g = root.append_child("g");
       g.append_attribute("id") = (name + run_suffix(runs[static_cast<size_t>(k)]++)).c_str();
       g.append_attribute("data-group") = name.c_str();
+      if (static_cast<size_t>(k) < names.size() && !names[static_cast<size_t>(k)].empty())
+        g.append_attribute("data-name") = names[static_cast<size_t>(k)].c_str();
       current = k;
     }
     const Path& p = scene.paths[i];

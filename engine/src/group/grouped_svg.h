@@ -16,12 +16,17 @@
 // "group-k-b", "group-k-c", ... ("group-k-27" and so on past "z"), and every run carries
 // data-group="group-k", so a reader joins the runs of one part by that attribute.
 //
+// `names` (optional, one per group; empty ones are skipped) are what the parts are, from a
+// grouper that knows ("left wing"): written as data-name on every run of the group, read back
+// as Group::name, so that later stages (the procedural video's rig) use them.
+//
 // `groups` must hold every path index exactly once (svgm::Error otherwise). The file is written
 // under a temporary name and renamed. Reading it back with read_svg_file gives the same paths
 // (ids, order, geometry within 1e-5 canvas units, paint).
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "svgmotion/scene.h"
@@ -30,6 +35,6 @@ namespace svgm {
 
 void write_grouped_svg(const std::filesystem::path& source, const Scene& scene,
                        const std::vector<std::vector<int>>& groups,
-                       const std::filesystem::path& out);
+                       const std::filesystem::path& out, const std::vector<std::string>& names = {});
 
 }  // namespace svgm

@@ -945,7 +945,7 @@ void Reader::walk(pugi::xml_node n, const Style& parent, const Affine& parent_ct
     } else {
       g = static_cast<int>(scene_.groups.size());
       const char* id = n.attribute("id").value();
-      scene_.groups.push_back({*part ? part : *id ? id : "group-" + std::to_string(g + 1), {}});
+      scene_.groups.push_back({*part ? part : *id ? id : "group-" + std::to_string(g + 1), {}, n.attribute("data-name").value()});
       if (*part) data_groups_[part] = g;
       new_group = true;
     }

@@ -38,10 +38,39 @@ constexpr double kRideMaxArea = 0.1;
 // A part hanging from a spinning part turns with it when this share of its box is inside (a
 // stand reaching into the wheel's box is not carried).
 constexpr double kSpinInsideShare = 0.9;
+// A Sides bend's still core, each side, in shares of the bending part's width (side_core): at
+// least the middle quarter of it (kCore below), at most 70 % of it (the outer 15 % each side
+// still bends: a ghost's stubby arms).
+constexpr double kCoreMin = 0.12, kCoreMax = 0.35;
+
+// The usual amplitude of each primitive on one part, in its unit (motion_verbs.h), in the order
+// of Primitive: for a whole-figure verb a prompt aims at a part ("his legs squatting").
+constexpr double kPartAmplitude[] = {20, 1, 0.07, 0.04, 0.04, 6, 0.05, 15, 0.01, 0.08, 0.08, 0.08, 0.12};
+static_assert(sizeof kPartAmplitude / sizeof kPartAmplitude[0] == static_cast<size_t>(Primitive::Fall) + 1);
+
+// The unit of a primitive's amplitude (motion_verbs.h), as motion.json names it.
+const char* unit_of(Primitive p) {
+  switch (p) {
+    case Primitive::Swing: case Primitive::Rock: case Primitive::Bend: return "degrees";
+    case Primitive::Spin: return "turns";
+    case Primitive::Pulse: case Primitive::Stretch: return "fraction of size";
+    case Primitive::Fall: return "canvas heights";
+    case Primitive::Undulate: return "figure lengths";
+    case Primitive::Slide: return "figure widths";
+    default: return "figure heights";
+  }
+}
+
+// A rock aimed at a part turns it by at most this many times the rock's angle (Builder::add).
+constexpr double kRockToPartMax = 4;
 
 bool whole_only(Primitive p) {
   return p == Primitive::Rock || p == Primitive::Hop || p == Primitive::Bob || p == Primitive::Slide ||
          p == Primitive::Squash || p == Primitive::Stretch || p == Primitive::Shake;
+}
+
+bool is_limb_target(Target t) {
+  return t == Target::Arms || t == Target::Legs || t == Target::Limbs || t == Target::Tail;
 }
 
 std::string join(const std::vector<std::string>& v, const char* sep) {
@@ -91,7 +120,12 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
     case Target::Root: return rig.root >= 0 ? std::vector<int>{rig.root} : std::vector<int>{};
     case Target::Head: v = with_role(rig, {Role::Head}); break;
     case Target::Arms: v = with_role(rig, {Role::UpperLimb}); break;
-    case Target::Legs: v = with_role(rig, {Role::LowerLimb}); break;
+    case Target::Legs:
+      v = with_role(rig, {Role::LowerLimb});
+      // A creature wider than tall with nothing below (a spider, a crab seen from above): the
+      // limbs at its sides are its legs.
+      if (v.empty() && rig.figure.w() > rig.figure.h()) v = with_role(rig, {Role::UpperLimb, Role::Tail});
+      break;
     case Target::Limbs: v = with_role(rig, {Role::UpperLimb, Role::LowerLimb, Role::Tail}); break;
     case Target::Tail: v = with_role(rig, {Role::Tail}); break;
     case Target::Background: v = with_role(rig, {Role::Background}); return v;
@@ -170,6 +204,23 @@ int region_host(const Rig& rig, Target t) {
   return best;
 }
 
+// The still core of a Sides bend: the arms are what reaches out beyond the body below them.
+// When the bending part sits on the root (a shirt with its sleeves above the trousers), the
+// root's width; when it is the root (a ghost, a bat), the width of its lowest quarter (the
+// hem, the feet). Each side between kCoreMin and kCoreMax of the part's width from its middle.
+void side_core(const Rig& rig, PlannedAction& a) {
+  const RigPart& P = rig.parts[a.parts[0]];
+  const double W = std::max(P.box.w(), 1e-9), cx = P.box.centre().x;
+  double x0 = P.base_x0, x1 = P.base_x1;
+  if (a.parts[0] != rig.root && rig.root >= 0) {
+    x0 = rig.parts[rig.root].box.x0;
+    x1 = rig.parts[rig.root].box.x1;
+  }
+  if (x1 < x0) x0 = x1 = cx;
+  a.core_left = std::clamp(cx - x0, kCoreMin * W, kCoreMax * W);
+  a.core_right = std::clamp(x1 - cx, kCoreMin * W, kCoreMax * W);
+}
+
 // Signs and phases of the parts of one action.
 void pair_up(const Rig& rig, PlannedAction& a, Pairing pairing, std::mt19937& rng) {
   const Vec2 rc = rig.root >= 0 ? rig.parts[rig.root].box.centre() : rig.figure.centre();
@@ -210,9 +261,17 @@ struct Builder {
     a.words = words;
     a.primitive = base.primitive;
     a.target = target;
-    if (primary_retargeted && whole_only(a.primitive) && target != Target::Whole) a.primitive = verb.on_part;
+    double amp = base.amp;
+    bool rock_on_part = false;  // a rock's degrees, about the figure's base, now on a part
+    if (primary_retargeted && whole_only(a.primitive) && target != Target::Whole) {
+      // When the verb's amplitude is in another unit than the part's primitive (a squat's
+      // figure heights, a swing's degrees), the part's primitive gets its usual size.
+      if (unit_of(verb.on_part) != unit_of(a.primitive)) amp = kPartAmplitude[static_cast<size_t>(verb.on_part)];
+      else rock_on_part = a.primitive == Primitive::Rock;
+      a.primitive = verb.on_part;
+    }
     std::uniform_real_distribution<double> U(0, 1);
-    a.amp = base.amp * mods.size * (a.primitive == Primitive::Spin ? 1 : 0.85 + 0.3 * U(rng));
+    a.amp = amp * mods.size * (a.primitive == Primitive::Spin ? 1 : 0.85 + 0.3 * U(rng));
     a.cycles = std::max(1, static_cast<int>(std::lround(base.cycles * mods.speed)));
     if (mods.once > 0) a.cycles = 1;
     if (mods.once < 0) a.cycles = std::max(2, a.cycles);
@@ -225,6 +284,16 @@ struct Builder {
     std::string note;
     if (target == Target::Named) a.parts = named_parts;
     else if (target != Target::Whole && target != Target::Repeated) a.parts = parts_for(rig, target, target_word, &note);
+    if (rock_on_part && !a.parts.empty()) {
+      // The same degrees about a part's pivot move its tips as far as the part is long, not
+      // as the figure is tall: a sway of the leaves turns them by as much more as the figure is
+      // larger than the largest of them (at most kRockToPartMax times), so they move as far
+      // as the whole tree would have.
+      double longest = 0;
+      for (int p : a.parts) longest = std::max(longest, std::hypot(rig.parts[p].box.w(), rig.parts[p].box.h()));
+      const double figure = std::hypot(rig.figure.w(), rig.figure.h());
+      a.amp *= std::clamp(figure / std::max(longest, 1e-9), 1.0, kRockToPartMax);
+    }
     // Wheels a verb implies (pedalling) but the prompt does not name are never the root: a
     // bicycle drawn as one round-ish part must not spin as a whole. A named wheel may be.
     if (target == Target::Wheels && !primary_retargeted) {
@@ -242,6 +311,7 @@ struct Builder {
       a.region = target == Target::Arms || target == Target::Limbs ? Region::Sides
                  : target == Target::Legs ? Region::Lower : target == Target::Head ? Region::Top : Region::End;
       a.alternating = base.pairing == Pairing::Alternating;
+      if (a.region == Region::Sides) side_core(rig, a);
       if (base.pairing == Pairing::OneSide && !mods.both && !plural) {
         // The figure's own side is drawn on the viewer's other side.
         a.region_side = mods.side != 0 ? -mods.side : ((rng() & 1) ? 1 : -1);
@@ -314,6 +384,15 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
   Builder b{rig, std::mt19937(seed), {}};
   b.plan.source = "prompt";
   std::vector<std::string> unknown;
+  // Does the prompt say which limbs move ("waving its arms", "sways its tentacles")? Then the
+  // whole-figure accents of its limb verbs (cheering's hop, flapping's bob, dancing's rock) are
+  // left out: they move every part, the ones the prompt keeps still too, and outweigh the
+  // limbs it names.
+  bool names_limbs = false;
+  for (const Clause& c : prompt.clauses)
+    for (const auto& n : c.nouns)
+      names_limbs = names_limbs || (!n.object_of_preposition && is_limb_target(n.target));
+  std::vector<std::string> accents_left_out;
   for (const Clause& c : prompt.clauses) {
     // The clause's targets: known part nouns, and other words that name a part of the drawing.
     Target target = Target::Whole;
@@ -341,10 +420,16 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
       for (size_t i = 0; i < v->actions.size(); ++i) {
         const Action& act = v->actions[i];
         const bool retarget = i == 0 && have;
+        if (i > 0 && act.target == Target::Whole && names_limbs && is_limb_target(v->actions[0].target)) {
+          accents_left_out.push_back(v->name + "'s " + primitive_name(act.primitive));
+          continue;
+        }
         b.add(*v, act, retarget ? target : act.target, retarget ? named : std::vector<int>{}, target_word, c.mods,
               retarget && plural, c.text, retarget);
       }
   }
+  if (!accents_left_out.empty())
+    b.plan.notes.push_back("the prompt names the limbs that move: the whole-figure " + join(accents_left_out, ", ") + " left out");
   b.plan.not_understood = unknown;
   if (b.plan.actions.empty()) {
     const std::string words = unknown.empty() ? "no words" : join(unknown, ", ");
@@ -499,9 +584,10 @@ Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box
   auto wave = [&](double phase) { return std::sin(kTau * (a.cycles * t + phase)); };
   switch (a.region) {
     case Region::Sides: {
-      const double dx = q.x - c.x, core = kCore * W;
-      if (std::fabs(dx) <= core) return q;
+      const double dx = q.x - c.x;
       const int side = dx < 0 ? -1 : 1;  // as the viewer sees it
+      const double core = a.core_left > 0 ? (side < 0 ? a.core_left : a.core_right) : kCore * W;
+      if (std::fabs(dx) <= core) return q;
       if (a.region_side != 0 && side != a.region_side) return q;
       const double w = smoothstep((std::fabs(dx) - core) / (kRamp * W));
       // Mirrored: both sides rise together; alternating: half a cycle apart.
@@ -648,12 +734,13 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
               if (!is_deformation(a)) continue;
               const double amp = plan.amplitude(a);
               if (a.region != Region::None) {
-                // The part's own outlines and what hangs from it within its box (a hand at
-                // the end of a sleeve); what hangs outside (legs under a waving torso) keeps
-                // its shape and follows the rig.
+                // The part's own outlines and what hangs from it within its width and not
+                // below it (a hand at the end of a sleeve, also one raised above the sleeve's
+                // box); what hangs below (legs under a waving torso) keeps its shape and
+                // follows the rig.
                 const RigBox& hb = rig.parts[a.parts[0]].box;
                 const Vec2 gc = g >= 0 ? rig.parts[g].box.centre() : Vec2{};
-                if (g == a.parts[0] || (g >= 0 && under(g, a.parts[0]) && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y >= hb.y0 && gc.y <= hb.y1))
+                if (g == a.parts[0] || (g >= 0 && under(g, a.parts[0]) && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y <= hb.y1))
                   q = bend_region(a, amp, t, hb, q);
               } else if (a.parts.empty()) {
                 if (!background) q = deform(a, amp, t, rig.figure, q);
@@ -787,11 +874,7 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
       const Vec2 c = a.primitive == Primitive::Spin ? rig.parts[p].box.centre() : rig.parts[p].pivot;
       pivots.push_back({std::round(c.x * 100) / 100, std::round(c.y * 100) / 100});
     }
-    const char* unit = a.primitive == Primitive::Swing || a.primitive == Primitive::Rock || a.primitive == Primitive::Bend ? "degrees"
-                       : a.primitive == Primitive::Spin ? "turns"
-                       : a.primitive == Primitive::Pulse || a.primitive == Primitive::Stretch ? "fraction of size"
-                       : a.primitive == Primitive::Fall ? "canvas heights"
-                       : a.primitive == Primitive::Undulate ? "figure lengths" : "figure heights";
+    const char* unit = unit_of(a.primitive);
     actions.push_back({{"verb", a.verb},
                        {"motion", primitive_name(a.primitive)},
                        {"target", target_name(a.target)},

@@ -47,6 +47,8 @@ struct PlannedAction {
   Region region = Region::None; // a Swing of a region of parts[0] instead of whole parts
   int region_side = 0;          // Sides/Lower: -1 only the viewer's left, +1 only the right
   bool alternating = false;     // Sides/Lower: the two sides half a cycle apart
+  double core_left = 0, core_right = 0;  // Sides: the still core's half-widths left and right
+                                         // of the box centre (0: kCore of the box width)
   double scale = 1;             // this action's own amplitude factor (fit_plan), times plan.scale
   std::string why;
 };

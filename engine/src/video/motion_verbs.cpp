@@ -25,7 +25,7 @@ const std::vector<Verb> kVerbs = {
   {"wave",    {"wav", "greet", "goodby"},       {{P::Swing, T::Arms, 35, 2, Pr::OneSide}}, P::Swing},
   {"clap",    {"clap"},                         {{P::Swing, T::Arms, 22, 4, Pr::Mirrored}}, P::Swing},
   {"cheer",   {"cheer", "celebrat", "rejoic"},  {{P::Swing, T::Arms, 32, 3, Pr::Mirrored}, {P::Hop, T::Whole, 0.03, 3}}, P::Swing},
-  {"punch",   {"punch", "box", "jab", "fight", "fenc"}, {{P::Swing, T::Arms, 26, 3, Pr::Alternating}, {P::Bob, T::Whole, 0.015, 3}}, P::Swing},
+  {"punch",   {"punch", "box", "jab", "fight", "fenc"}, {{P::Swing, T::Arms, 26, 3, Pr::Alternating}, {P::Rock, T::Whole, 3, 3}}, P::Swing},  // the body turns into each punch, the feet planted
   {"lift",    {"lift", "rais", "hold"},         {{P::Swing, T::Arms, 24, 2, Pr::Mirrored}}, P::Swing},
   {"reach",   {"reach", "spread"},              {{P::Swing, T::Arms, 20, 1, Pr::Mirrored}}, P::Swing},
   {"pump",    {"pump"},                         {{P::Swing, T::Arms, 20, 2, Pr::Alternating}}, P::Swing},
@@ -55,9 +55,9 @@ const std::vector<Verb> kVerbs = {
   {"sit",     {"sit", "sat", "crouch", "squat", "kneel", "duck"}, {{P::Squash, T::Whole, 0.1, 1}}, P::Swing},
   {"stretch", {"stretch", "extend", "elongat", "lengthen"}, {{P::Stretch, T::Whole, 0.08, 1}}, P::Swing},
   {"move",    {"mov", "go", "went", "advanc", "crawl", "creep", "inch", "proceed", "travel"}, {{P::Slide, T::Whole, 0.04, 1}, {P::Stretch, T::Whole, 0.04, 2}}, P::Swing},
-  {"glide",   {"ski", "skat", "surf", "slid", "sled", "ride", "rid", "maneuver", "manoeuvr", "sail", "row"}, {{P::Slide, T::Whole, 0.04, 1}, {P::Rock, T::Whole, 5, 1}}, P::Swing},
+  {"glide",   {"ski", "skat", "surf", "slid", "sled", "ride", "riding", "rode", "ridden", "maneuver", "manoeuvr", "sail", "row"}, {{P::Slide, T::Whole, 0.04, 1}, {P::Rock, T::Whole, 5, 1}}, P::Swing},
   {"drive",   {"driv", "drove", "roll", "accelerat", "launch", "speed"}, {{P::Shake, T::Whole, 0.006, 6}, {P::Spin, T::Wheels, 1, 1}}, P::Spin},
-  {"dodge",   {"dodg", "duck", "evad"},         {{P::Slide, T::Whole, 0.04, 2}}, P::Swing},
+  {"dodge",   {"dodg", "evad"},                 {{P::Rock, T::Whole, 6, 2}}, P::Swing},  // a lean of the body, the feet planted
   // Bodies that bend.
   {"swim",    {"swim", "swam", "paddl"},        {{P::Undulate, T::Whole, 0.05, 1}, {P::Slide, T::Whole, 0.02, 1}}, P::Undulate},
   {"slither", {"slither", "undulat", "wriggl", "squirm", "sinuous", "snak", "weav"}, {{P::Undulate, T::Whole, 0.06, 1}}, P::Undulate},

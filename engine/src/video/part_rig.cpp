@@ -20,8 +20,9 @@ namespace {
 // edge and paint-order conditions); chosen so that a figure filling a square icon's middle is
 // not one (emoji figures cover 30-40 % of the canvas).
 constexpr double kBackgroundArea = 0.45;
-// A box within this share of the canvas size of an edge touches it.
-constexpr double kEdgeTouch = 0.02;
+// A box within this share of the canvas size of an edge touches it (Noto emoji keep a 4 px
+// margin on their 128 px canvas: 3.1 %).
+constexpr double kEdgeTouch = 0.04;
 // Repeated elements: paths whose box is at most this share of the canvas area, similar when
 // their widths and heights agree within this factor, at least kRepeatedMin of them.
 constexpr double kRepeatedArea = 0.02;
@@ -243,6 +244,15 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
       }
     }
     if (!unit_paths[g].empty()) mean_index[g] /= static_cast<double>(unit_paths[g].size());
+    P.base_x0 = P.box.x1;
+    P.base_x1 = P.box.x0;
+    for (int pi : unit_paths[g])
+      for (const auto& sp : scene.paths[pi].subpaths)
+        for (const Vec2& q : sp.points)
+          if (q.y >= P.box.y1 - 0.25 * P.box.h()) {
+            P.base_x0 = std::min(P.base_x0, q.x);
+            P.base_x1 = std::max(P.base_x1, q.x);
+          }
   }
 
   // Names: the named element that best covers the part's paths (precision times recall).

@@ -60,6 +60,8 @@ struct RigPart {
   int chain_top = -1;         // the ancestor hanging from the root (itself when it does)
   Vec2 pivot;                 // where it attaches to its parent (the root: its base centre)
   RigBox box;
+  double base_x0 = 0, base_x1 = 0;  // the x-extent of its control points in the lowest quarter
+                                    // of its box (a ghost's hem, a bat's feet): its core's width
   double area = 0;            // fill area of its outlines (shoelace over control polygons)
   bool round = false;         // a wheel-like part
   std::string why;            // one phrase: how its role was found

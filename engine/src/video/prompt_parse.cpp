@@ -28,6 +28,11 @@ bool is_preposition(const std::string& w) {
   return std::find(p.begin(), p.end(), w) != p.end();
 }
 
+bool is_determiner(const std::string& w) {
+  return w == "the" || w == "a" || w == "an" || w == "its" || w == "his" || w == "her" || w == "their" || w == "my" ||
+         w == "your" || w == "our";
+}
+
 const Verb* verb_for_word(const std::string& w) {
   for (const auto& v : motion_verbs())
     for (const auto& s : v.stems)
@@ -41,12 +46,16 @@ const PartNoun* noun_for_word(const std::string& w) {
   return nullptr;
 }
 
-// Words of one clause (lower case, letters only).
-Clause read_clause(const std::vector<std::string>& words) {
+// Words of one clause (lower case, letters only). `after_prep` says the clause continues a
+// prepositional phrase ("with black dots and black boots": "and" split it, and "boots" is
+// still what she is dressed with); on return, whether the clause ends inside one.
+Clause read_clause(const std::vector<std::string>& words, bool& after_prep) {
   Clause c;
-  bool after_prep = false;
+  std::string prev;
   for (const auto& w : words) {
     c.text += (c.text.empty() ? "" : " ") + w;
+    const bool after_determiner = is_determiner(prev);
+    prev = w;
     if (Modifiers probe = c.mods; apply_modifier(w, probe)) {
       c.mods = probe;
       continue;
@@ -58,7 +67,11 @@ Clause read_clause(const std::vector<std::string>& words) {
       after_prep = false;
       continue;
     }
-    if (const Verb* v = verb_for_word(w)) {
+    // A verb's word right after an article or a possessive is a noun ("rides the waves",
+    // "in the breeze"), unless it is a participle ("a galloping horse", "a waving flag").
+    const bool participle = w.size() > 4 && w.compare(w.size() - 3, 3, "ing") == 0;
+    const Verb* v = after_determiner && !participle ? nullptr : verb_for_word(w);
+    if (v) {
       if (std::find(c.verbs.begin(), c.verbs.end(), v) == c.verbs.end()) {
         c.verbs.push_back(v);
         c.verb_words.push_back(w);
@@ -89,11 +102,15 @@ void merge_into(Clause& into, const Clause& from) {
 ParsedPrompt parse_prompt(const std::string& prompt) {
   // Split into raw clauses of words.
   std::vector<std::vector<std::string>> raw(1);
+  std::vector<char> after_and(1, 0);  // per raw clause: split from the one before by "and"
   std::string word;
   auto flush = [&] {
     if (word.empty()) return;
     if (is_conjunction(word)) {
-      if (!raw.back().empty()) raw.emplace_back();
+      if (!raw.back().empty()) {
+        raw.emplace_back();
+        after_and.push_back(word == "and");
+      }
     } else {
       raw.back().push_back(word);
     }
@@ -106,13 +123,21 @@ ParsedPrompt parse_prompt(const std::string& prompt) {
     }
     flush();
     if (ch == ',' || ch == '.' || ch == ';' || ch == ':' || ch == '!' || ch == '?')
-      if (!raw.back().empty()) raw.emplace_back();
+      if (!raw.back().empty()) {
+        raw.emplace_back();
+        after_and.push_back(0);
+      }
   }
   flush();
   ParsedPrompt out;
   std::vector<Clause> clauses;
-  for (const auto& r : raw)
-    if (!r.empty()) clauses.push_back(read_clause(r));
+  bool prep_open = false;  // the clause before ended inside a prepositional phrase, with no verb
+  for (size_t i = 0; i < raw.size(); ++i) {
+    if (raw[i].empty()) continue;
+    bool after_prep = prep_open && after_and[i];
+    clauses.push_back(read_clause(raw[i], after_prep));
+    prep_open = after_prep && clauses.back().verbs.empty();
+  }
   // A clause without a verb joins the one before it (or, first in the prompt, the one after).
   for (const Clause& c : clauses) {
     if (!out.clauses.empty() && (c.verbs.empty() || out.clauses.back().verbs.empty()))
