@@ -203,7 +203,10 @@ void Fitter::adopt_coarse(Fitter& coarse, double scale) {
 int Fitter::activation_iteration(int k) const {
   if (k <= 0 || K_ <= 1) return 0;
   const int interval = std::max(1, static_cast<int>(opt_.activation_share * opt_.iterations / (K_ - 1)));
-  return k * interval;
+  // A pinned rest keyframe has nothing to fit: keyframe 1 starts at once instead of after an
+  // interval in which no parameter moves (the paper's schedule spent its first 100 of 2000
+  // iterations there); the interval goes to the joint refinement.
+  return (opt_.pin_rest_keyframe ? k - 1 : k) * interval;
 }
 
 void Fitter::upload_steps() {
