@@ -11,6 +11,8 @@
 #include <unordered_map>
 #include <utility>
 
+#include "scene/backdrop.h"
+
 namespace svgm {
 
 namespace {
@@ -191,11 +193,6 @@ double colour_similarity(const Rgba& a, const Rgba& b) {
                              (a.b - b.b) * (a.b - b.b));
   return 1 - d / std::sqrt(3.0);
 }
-
-// A backdrop (group_paths): a path whose box covers at least this share of the canvas, within
-// this share of the canvas size of two of its edges, among the first kBackdropEarly of the paths
-// (the part rig's background test, part_rig.cpp).
-constexpr double kBackdropArea = 0.45, kBackdropEdge = 0.04, kBackdropEarly = 0.35;
 
 // Above this many paths group_paths skips the pairwise analysis (outline distances and inside
 // tests cost nearby pairs x segments: minutes and gigabytes at 20,000 paths) for coarse_groups.
@@ -518,14 +515,9 @@ std::vector<std::vector<int>> group_paths(const Scene& scene, const GroupingOpti
   // links it would make the figure's limbs one part with it: its links score below every pair
   // of far-apart paths, so it joins a group last, only when there are too many.
   std::vector<char> backdrop(n, 0);
-  if (scene.width > 0 && scene.height > 0)
-    for (size_t i = 0; i < n; ++i) {
-      const Box& b = boxes[i];
-      const double tx = kBackdropEdge * scene.width, ty = kBackdropEdge * scene.height;
-      const int edges = (b.x0 <= tx) + (b.y0 <= ty) + (b.x1 >= scene.width - tx) + (b.y1 >= scene.height - ty);
-      backdrop[i] = b.area() >= kBackdropArea * scene.width * scene.height && edges >= 2 &&
-                    static_cast<double>(i) < kBackdropEarly * static_cast<double>(n);
-    }
+  for (size_t i = 0; i < n; ++i)
+    backdrop[i] = is_backdrop(boxes[i].x0, boxes[i].y0, boxes[i].x1, boxes[i].y1,
+                              static_cast<double>(i) / static_cast<double>(n), scene.width, scene.height);
   std::vector<Link> links;
   for (const auto& [i, j] : near_box_pairs(boxes, far)) {
     if (backdrop[static_cast<size_t>(i)] || backdrop[static_cast<size_t>(j)]) {

@@ -10,19 +10,13 @@
 #include <set>
 
 #include "fit/document_order.h"
+#include "scene/backdrop.h"
 #include "svgmotion/svg_reader.h"
 
 namespace svgm {
 
 namespace {
 
-// A part whose box covers at least this share of the canvas may be the background (with the
-// edge and paint-order conditions); chosen so that a figure filling a square icon's middle is
-// not one (emoji figures cover 30-40 % of the canvas).
-constexpr double kBackgroundArea = 0.45;
-// A box within this share of the canvas size of an edge touches it (Noto emoji keep a 4 px
-// margin on their 128 px canvas: 3.1 %).
-constexpr double kEdgeTouch = 0.04;
 // Repeated elements: paths whose box is at most this share of the canvas area, similar when
 // their widths and heights agree within this factor, at least kRepeatedMin of them.
 constexpr double kRepeatedArea = 0.02;
@@ -298,14 +292,11 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
   for (int g = 0; g < G; ++g) {
     RigPart& P = rig.parts[g];
     if (P.box.empty()) continue;
-    const double tx = kEdgeTouch * CW, ty = kEdgeTouch * CH;
-    const int edges = (P.box.x0 <= tx) + (P.box.y0 <= ty) + (P.box.x1 >= CW - tx) + (P.box.y1 >= CH - ty);
-    const bool early = mean_index[g] < 0.35 * static_cast<double>(n_paths);
     if (has_word(P.words, {"background", "bg", "sky", "ground", "floor", "backdrop", "scenery", "landscape", "hill", "mountain",
                              "mud", "grass", "road", "terrain", "field", "wall"})) {
       P.role = Role::Background;
       P.why = "named as background";
-    } else if (P.box.area() >= kBackgroundArea * CW * CH && edges >= 2 && early) {
+    } else if (is_backdrop(P.box.x0, P.box.y0, P.box.x1, P.box.y1, mean_index[g] / static_cast<double>(n_paths), CW, CH)) {
       P.role = Role::Background;
       P.why = "large, at the canvas edges, painted first";
     } else {

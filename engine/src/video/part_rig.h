@@ -8,9 +8,9 @@
 // as "limb_upper_left", "head", "root").
 //
 // Roles from geometry (canvas space, y down):
-//  - background: a large part (box at least kBackgroundArea of the canvas) that touches at
-//    least two canvas edges and is painted before most of the drawing, or a part named
-//    background/sky/ground/floor. It stays still unless a prompt asks for it.
+//  - background: a backdrop (scene/backdrop.h: a large box at two canvas edges, painted
+//    early), or a part named background/sky/ground/floor. It stays still unless a prompt
+//    asks for it.
 //  - root: the largest central part of the figure (area times centrality).
 //  - every other part hangs from a larger part (the root for parts larger than the root): the
 //    one its box overlaps most, or the nearest. Its pivot is the centroid of its control
