@@ -392,6 +392,9 @@ TEST_CASE("regularisers: kernel values match the host formulas and gradients mat
         pts[a + 1] = static_cast<float>(kH * (0.5 + 0.56 * U(rng)));
       }
     const auto pts0 = to_double(pts);
+    // Margins per point (the fitter's are the margin plus each point's distance at rest).
+    std::vector<float> margin(n_cp);
+    for (int i = 0; i < n_cp; ++i) margin[i] = static_cast<float>(kMargin + 2 * (1 + U(rng)));
     auto ref = [&](const std::vector<double>& x) {
       double l = 0;
       for (int k = 0; k < K; ++k)
@@ -404,15 +407,16 @@ TEST_CASE("regularisers: kernel values match the host formulas and gradients mat
           auto S = [&](int xx, int yy) { return double(sdf[(static_cast<size_t>(k) * kH + yy) * kW + xx]); };
           const double v = (1 - fy) * ((1 - fx) * S(x0, y0) + fx * S(x0 + 1, y0)) +
                            fy * ((1 - fx) * S(x0, y0 + 1) + fx * S(x0 + 1, y0 + 1));
-          const double d = v - kMargin;
+          const double d = v - margin[i];
           if (d > 0) l += d * d;
         }
       return kScale * l;
     };
     std::vector<float> g(cp.size(), kBase), part(static_cast<size_t>(K) * n_cp, 0.f);
     cl::Buffer bc = s.buf(pts), bgr = s.buf(cp_group), bs = s.buf(sdf), bg = s.buf(g), bp = s.buf(part);
+    cl::Buffer bm = s.buf(margin);
     cl::Kernel k(*s.prog, "containment");
-    set_args(k, bc, bgr, bs, bg, bp, kScale, kMargin, n_cp, kW, kH);
+    set_args(k, bc, bgr, bs, bg, bp, kScale, bm, n_cp, kW, kH);
     s.run(k, n_cp, K);
     s.read(bg, g);
     s.read(bp, part);

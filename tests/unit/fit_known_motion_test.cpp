@@ -146,4 +146,43 @@ TEST_CASE("known motion: rotation, scale, projective warp and bend are recovered
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("containment at rest is zero: handles outside round shapes are not pulled in") {
+  // The figure's head is a circle of radius 12 px drawn with cubic arcs: its handles lie about
+  // 1.7 px outside the disc, beyond the 1 px margin. A target that never moves: containment
+  // must cost nothing at rest (each point's margin includes its own rest distance), so
+  // nothing pulls the handles in and the head keeps its shape.
+  const Scene s = figure();
+  const int K = 3;
+  const auto dir = std::filesystem::temp_directory_path() / ("svgm_still_" + std::to_string(::getpid()));
+  write_known_motion(s, 96, K, [](int, int) { return identity_params(); }, [](int, Vec2) { return Vec2{}; },
+                     dir);
+  TargetOptions to;
+  to.keyframes = K;
+  const TargetFrames target = load_target(dir, 96, 96, to);
+  FitOptions fo;
+  fo.iterations = 200;
+  fo.track = false;
+  Fitter fitter(runtime(), s, target, fo);
+  const RasterPlan& plan = fitter.raster_plan();
+  // The head's handles are outside its foreground at rest (so a plain margin would bite).
+  double outside = 0;
+  for (int i = plan.path_cp_first[2]; i < plan.path_cp_first[2] + plan.path_cp_count[2]; ++i)
+    outside = std::max(outside, std::hypot(plan.rest_cp[2 * i] - 48.0, plan.rest_cp[2 * i + 1] - 28.0) - 12);
+  MESSAGE("head handles reach " << outside << " px outside the disc");
+  CHECK(outside > 1.2);
+  LossTerms first = fitter.step(), last = first;
+  CHECK(first.contain == 0.0f);
+  while (!fitter.done()) last = fitter.step();
+  CHECK(last.contain == 0.0f);
+  const auto pts = fitter.keyframe_points_canvas();
+  double worst = 0;
+  for (int k = 0; k < K; ++k)
+    for (int i = plan.path_cp_first[2]; i < plan.path_cp_first[2] + plan.path_cp_count[2]; ++i)
+      worst = std::max(worst, std::hypot(pts[(k * plan.n_cp + i) * 2] - plan.rest_cp[2 * i],
+                                         pts[(k * plan.n_cp + i) * 2 + 1] - plan.rest_cp[2 * i + 1]));
+  MESSAGE("head drift on a still target " << worst << " px");
+  CHECK(worst < 0.25);
+  std::filesystem::remove_all(dir);
+}
+
 }  // TEST_SUITE

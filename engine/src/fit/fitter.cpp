@@ -16,6 +16,26 @@ namespace {
 constexpr int kMotionParams = 12;  // MOTION_PARAMS in kernels/motion.cl
 const std::array<float, 4> kWhite{1, 1, 1, 1};
 
+// Per-point containment margins (kernels/regularise.cl): `margin` plus the point's distance to
+// the foreground of `sdf` (one frame, [H][W], pixel centres at +0.5), bilinear as the kernel
+// reads it. Given the rest points and the rest frame's distances, every point starts inside
+// its margin, so containment only resists moving further off the subject than at rest.
+std::vector<float> containment_margins(const std::vector<float>& pts, const float* sdf, int width,
+                                       int height, double margin) {
+  std::vector<float> out(pts.size() / 2, static_cast<float>(margin));
+  if (width < 2 || height < 2) return out;
+  for (size_t i = 0; i < out.size(); ++i) {
+    const double x = std::clamp(pts[2 * i] - 0.5, 0.0, width - 1.0);
+    const double y = std::clamp(pts[2 * i + 1] - 0.5, 0.0, height - 1.0);
+    const int x0 = std::min(static_cast<int>(x), width - 2), y0 = std::min(static_cast<int>(y), height - 2);
+    const double fx = x - x0, fy = y - y0;
+    auto S = [&](int xx, int yy) { return static_cast<double>(sdf[static_cast<size_t>(yy) * width + xx]); };
+    const double d = (1 - fy) * ((1 - fx) * S(x0, y0) + fx * S(x0 + 1, y0)) +
+                     fy * ((1 - fx) * S(x0, y0 + 1) + fx * S(x0 + 1, y0 + 1));
+    out[i] = static_cast<float>(margin + std::max(0.0, d));
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -121,6 +141,10 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     nbr_w_ = ro(fplan_.nbr_w);
     joints_ = ro(fplan_.joints);
     sdf_ = ro(target.sdf);
+    // Keyframe 0 is the rest pose (see FitOptions::pin_rest_keyframe): the rest points'
+    // distances to its foreground are how far off the subject each point may be.
+    contain_margin_ = ro(containment_margins(plan_.rest_cp, target.sdf.data(), size_.width,
+                                             size_.height, opt_.contain_margin_px));
     grad_params_ = rw(params.size() * sizeof(float));
     grad_offsets_ = rw(K * n_cp * 2 * sizeof(float));
     m_params_ = rw(params.size() * sizeof(float));
@@ -145,12 +169,11 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
              origin, scale, ncp, G_);
     set_args(k_motion_back_, params_, total_offsets_, rest_, cp_offset_, group_first_, group_cps_,
              raster_->cp_gradient_buffer(), grad_params_, grad_offsets_, origin, scale, ncp, G_);
-    set_args(k_smooth_, total_offsets_, nbr_first_, nbr_, nbr_w_, grad_offsets_, part_smooth_, 0.f, ncp);
+    set_args(k_smooth_, offsets_, nbr_first_, nbr_, nbr_w_, grad_offsets_, part_smooth_, 0.f, ncp);
     set_args(k_g1_, raster_->cp_buffer(), joints_, raster_->cp_gradient_buffer(), part_g1_, 0.f,
              ncp, nj_i);
     set_args(k_contain_, raster_->cp_buffer(), cp_group_, sdf_, raster_->cp_gradient_buffer(),
-             part_contain_, 0.f, static_cast<float>(opt_.contain_margin_px), ncp, size_.width,
-             size_.height);
+             part_contain_, 0.f, contain_margin_, ncp, size_.width, size_.height);
     set_args(k_cohesion_, raster_->cp_buffer(), coh_first_, coh_nbr_, coh_len_,
              raster_->cp_gradient_buffer(), part_coh_, 0.f, ncp);
     set_args(k_adam_p_, params_, grad_params_, m_params_, v_params_, steps_buf_, G_ * kMotionParams,
@@ -360,8 +383,10 @@ LossTerms Fitter::fit_iteration() {
     if (ncoh) q.enqueueNDRangeKernel(k_cohesion_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
     // 4. Back through the motion model to homographies and offsets.
     q.enqueueNDRangeKernel(k_motion_back_, cl::NullRange, cl::NDRange(round_up(G_, 8), Ka));
-    // 5. Smoothness adds to the offset gradient.
-    q.enqueueNDRangeKernel(k_smooth_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
+    // 5. Smoothness of the free offsets adds to the offset gradient (the field is smooth by
+    //    construction; without free offsets there is nothing to smooth).
+    if (opt_.lr_offsets != 0)
+      q.enqueueNDRangeKernel(k_smooth_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
     // 6. Back through the fields to their coefficients (the free offsets' gradient is the
     //    offsets' gradient itself).
     const size_t nn = fplan_.n_nodes;

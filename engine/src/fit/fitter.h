@@ -40,7 +40,9 @@ struct FitOptions {
   float beta1 = 0.9f, beta2 = 0.9f, eps = 1e-6f;  // paper: Adam settings
   double smooth_sigma_frac = 0.01; // σ of smoothness weights, fraction of the canvas width
   double g1_max_angle_deg = 10;    // joints smoother than this at rest keep G1 continuity
-  double contain_margin_px = 1;    // containment margin
+  // Containment margin beyond each point's own distance to the subject at rest (a handle of a
+  // convex curve lies outside the shape it draws; kernels/regularise.cl).
+  double contain_margin_px = 1;
   // Share of the iterations spent activating keyframes (paper: one about every 100 of 2000,
   // i.e. 14 activations over 1400 iterations); the rest is joint refinement.
   double activation_share = 0.7;
@@ -170,7 +172,7 @@ class Fitter {
       node_cp_w_, grad_field_, m_field_, v_field_, coh_first_, coh_nbr_, coh_len_, part_coh_;
   cl::Buffer params_, offsets_, rest_, cp_group_, cp_offset_, group_first_, group_cps_, nbr_first_,
       nbr_, nbr_w_, joints_, sdf_, grad_params_, grad_offsets_, m_params_, v_params_, m_offsets_,
-      v_offsets_, steps_buf_, part_smooth_, part_contain_, part_g1_, terms_;
+      v_offsets_, steps_buf_, part_smooth_, part_contain_, contain_margin_, part_g1_, terms_;
 };
 
 // Initial homography parameters (identity about the group's rest centroid) for every group of
