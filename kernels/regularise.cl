@@ -1,11 +1,9 @@
 /* regularise.cl: the fitter's regularisers (paper, appendix), their values and gradients.
  *
- *   smoothness   Σ_pairs w_ij ‖δ_i − δ_j‖²,  w_ij = exp(−‖r_i − r_j‖ / σ), pairs = consecutive
+ *   smoothness   Σ_pairs w_ij ‖Δ_i − Δ_j‖²,  w_ij = exp(−‖r_i − r_j‖ / σ), pairs = consecutive
  *                control points of a subpath (r at rest, σ = 1% of the canvas width): nearby
- *                free offsets should agree, distant ones are free. Only the free per-point
- *                offsets δ (kernels/field.cl): the displacement field is smooth by
- *                construction, and penalising its differences only resisted the bends it is
- *                there to follow (octopus as above: worst keyframe 36.9 -> 38.6 dB).
+ *                offsets should agree, distant ones are free. Its weight is below the
+ *                paper's (engine/src/fit/fitter.h: the displacement field is smooth already).
  *   G1           Σ_joints (1 − cos θ), θ the angle between the incoming and outgoing tangents
  *                (anchor − in-handle, out-handle − anchor) at joints that were smooth at rest.
  *   containment  Σ_points max(0, sdf_k(x̂) − m_i)², sdf_k the distance to keyframe k's
@@ -32,7 +30,7 @@
  * one joint and owns its own neighbour list, so no two work-items write the same element.
  */
 
-/* Smoothness on the free offsets δ, per (point, keyframe): adds to grad_offsets. */
+/* Smoothness on the offsets, per (point, keyframe): adds to grad_offsets. */
 __kernel void smoothness(__global const float2* offsets, __global const int* nbr_first,
                          __global const int* nbr, __global const float* nbr_w,
                          __global float2* grad_offsets, __global float* partial, float scale,

@@ -169,7 +169,7 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
              origin, scale, ncp, G_);
     set_args(k_motion_back_, params_, total_offsets_, rest_, cp_offset_, group_first_, group_cps_,
              raster_->cp_gradient_buffer(), grad_params_, grad_offsets_, origin, scale, ncp, G_);
-    set_args(k_smooth_, offsets_, nbr_first_, nbr_, nbr_w_, grad_offsets_, part_smooth_, 0.f, ncp);
+    set_args(k_smooth_, total_offsets_, nbr_first_, nbr_, nbr_w_, grad_offsets_, part_smooth_, 0.f, ncp);
     set_args(k_g1_, raster_->cp_buffer(), joints_, raster_->cp_gradient_buffer(), part_g1_, 0.f,
              ncp, nj_i);
     set_args(k_contain_, raster_->cp_buffer(), cp_group_, sdf_, raster_->cp_gradient_buffer(),
@@ -383,10 +383,8 @@ LossTerms Fitter::fit_iteration() {
     if (ncoh) q.enqueueNDRangeKernel(k_cohesion_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
     // 4. Back through the motion model to homographies and offsets.
     q.enqueueNDRangeKernel(k_motion_back_, cl::NullRange, cl::NDRange(round_up(G_, 8), Ka));
-    // 5. Smoothness of the free offsets adds to the offset gradient (the field is smooth by
-    //    construction; without free offsets there is nothing to smooth).
-    if (opt_.lr_offsets != 0)
-      q.enqueueNDRangeKernel(k_smooth_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
+    // 5. Smoothness adds to the offset gradient.
+    q.enqueueNDRangeKernel(k_smooth_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
     // 6. Back through the fields to their coefficients (the free offsets' gradient is the
     //    offsets' gradient itself).
     const size_t nn = fplan_.n_nodes;
