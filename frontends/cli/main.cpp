@@ -91,6 +91,11 @@ Fits the SVG's paths to a target video (mp4, webm, avi, mov, or a folder of numb
                          0 leaves them to the player's straight lines: smallest files)
   --group-transforms     each part's motion, where affine, as <animateTransform> elements
                          (translate, rotate, skewX, scale) and its paths' shapes in its frame
+  --refine-size W|auto   refine every keyframe at width W for the last quarter of the
+                         iterations (auto: twice the fitting width when the video has it)
+  --stabilise            remove camera shake (the whole frame jittering) from the video first
+  --no-colour-correction compare with the video's colours as they are (default: each frame's
+                         colours are corrected towards the palette, absorbing drift and shading)
   --no-gate              write animation.svg even when the result gate rejects the fit
   --resume               continue from OUT_DIR/checkpoint.bin
   --no-track             no optical-flow warm start of new keyframes
