@@ -36,6 +36,19 @@ Scene figure() {
   return s;
 }
 
+// The largest distance of path `path`'s fitted control points from rest, over the K keyframes
+// (pixels: the test canvases are as wide as their fitting size).
+double max_drift(Fitter& fitter, int path, int K) {
+  const auto pts = fitter.keyframe_points_canvas();
+  const RasterPlan& plan = fitter.raster_plan();
+  double worst = 0;
+  for (int k = 0; k < K; ++k)
+    for (int i = plan.path_cp_first[path]; i < plan.path_cp_first[path] + plan.path_cp_count[path]; ++i)
+      worst = std::max(worst, std::hypot(pts[(k * plan.n_cp + i) * 2] - plan.rest_cp[2 * i],
+                                         pts[(k * plan.n_cp + i) * 2 + 1] - plan.rest_cp[2 * i + 1]));
+  return worst;
+}
+
 }  // namespace
 
 TEST_SUITE("fit") {
@@ -112,14 +125,10 @@ TEST_CASE("known motion: rotation, scale, projective warp and bend are recovered
     CHECK(a.iou > 0.97);
   }
   // The body does not move: its fitted points stay within half a pixel of rest.
+  const double worst = max_drift(fitter, 0, K);
+  MESSAGE("body drift " << worst << " px");
   const auto pts = fitter.keyframe_points_canvas();
   const RasterPlan& plan = fitter.raster_plan();
-  double worst = 0;
-  for (int k = 0; k < K; ++k)
-    for (int i = plan.path_cp_first[0]; i < plan.path_cp_first[0] + plan.path_cp_count[0]; ++i)
-      worst = std::max(worst, std::hypot(pts[(k * plan.n_cp + i) * 2] - plan.rest_cp[2 * i],
-                                         pts[(k * plan.n_cp + i) * 2 + 1] - plan.rest_cp[2 * i + 1]));
-  MESSAGE("body drift " << worst << " px");
   CHECK(worst < 0.5);
   // The known motion itself is recovered: every keyframe's control points against the truth
   // the target was drawn from (canvas units are pixels here), mean over the moving points.
@@ -174,12 +183,7 @@ TEST_CASE("containment at rest is zero: handles outside round shapes are not pul
   CHECK(first.contain == 0.0f);
   while (!fitter.done()) last = fitter.step();
   CHECK(last.contain == 0.0f);
-  const auto pts = fitter.keyframe_points_canvas();
-  double worst = 0;
-  for (int k = 0; k < K; ++k)
-    for (int i = plan.path_cp_first[2]; i < plan.path_cp_first[2] + plan.path_cp_count[2]; ++i)
-      worst = std::max(worst, std::hypot(pts[(k * plan.n_cp + i) * 2] - plan.rest_cp[2 * i],
-                                         pts[(k * plan.n_cp + i) * 2 + 1] - plan.rest_cp[2 * i + 1]));
+  const double worst = max_drift(fitter, 2, K);
   MESSAGE("head drift on a still target " << worst << " px");
   CHECK(worst < 0.25);
   std::filesystem::remove_all(dir);
