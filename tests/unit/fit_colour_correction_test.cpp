@@ -64,6 +64,25 @@ TEST_CASE("colour correction: a 15% shading ramp inside a part is snapped flat")
   for (int x = 9; x < 27; ++x) CHECK(px(f, x, 20)[0] == doctest::Approx(0.8f).epsilon(1e-6));
 }
 
+TEST_CASE("colour correction: a shaded part between two similar colours of the drawing is still its own") {
+  // octopus.svg's body pink and its darker cheek pink; the frame shows only the body, darkened
+  // to 0.8..0.9 by a ramp, on 0.95 paper. Every body pixel is then nearer the cheek colour than
+  // the ratio test allows (0.09 against 0.12 at 0.9), so without matching by hue only the paper
+  // was matched and the frame was left as it was.
+  const Colour body{1.f, 0.47f, 0.53f}, cheek{0.98f, 0.38f, 0.49f};
+  std::vector<float> f = two_blocks(body, {0.95f, 0.95f, 0.95f}, {0.95f, 0.95f, 0.95f});
+  for (int y = 10; y < 38; ++y)
+    for (int x = 8; x < 28; ++x)
+      for (int j = 0; j < 3; ++j) f[(static_cast<size_t>(y) * kW + x) * 4 + j] *= 0.8f + 0.1f * (x - 8) / 19.f;
+  const ColourCorrection cc = correct_colours(f.data(), kW, kH, {body, cheek});
+  CHECK(cc.applied);
+  CHECK(cc.colours_matched == 2);  // body and white
+  CHECK(cc.pixels_shaded > 0);
+  for (int x = 10; x < 26; ++x)
+    for (int j = 0; j < 3; ++j) CHECK(px(f, x, 20)[j] == doctest::Approx(body[static_cast<size_t>(j)]).epsilon(1e-6));
+  CHECK(px(f, 45, 20)[0] == 1.f);  // the paper is white
+}
+
 TEST_CASE("colour correction: a clean frame is unchanged, and unknown colours are not invented") {
   const Colour red{0.8f, 0.1f, 0.1f}, blue{0.1f, 0.2f, 0.9f};
   std::vector<float> f = two_blocks(red, blue, {1, 1, 1});

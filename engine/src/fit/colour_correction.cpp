@@ -22,6 +22,15 @@ constexpr int kMinPixels = 16;      // a colour needs this many flat pixels to c
 constexpr int kRounds = 4;          // match / fit alternations
 constexpr double kRidge = 0.02;     // per unit of evidence weight, towards the identity map
 constexpr float kMaxChange = 0.35f; // a map moving some colour further than this is not trusted
+// Shading: a flat pixel's gain against a colour is the g in [kMinGain, kMaxGain] that brings
+// g * colour nearest to it. Only colours at least kShadeLuma bright give evidence (a gain of a
+// near-black is mostly noise; white is the paper, which is not shaded). The gains are smoothed
+// over boxes of kShadeBox of the frame's larger side (three passes: nearly a Gaussian), and a
+// pixel is corrected where the smoothed evidence covers at least kShadeSupport of its window.
+constexpr float kMinGain = 0.7f, kMaxGain = 1.3f;
+constexpr float kShadeLuma = 0.2f;
+constexpr double kShadeBox = 1.0 / 12;
+constexpr float kShadeSupport = 0.05f;
 
 struct Match {
   int index = -1;
@@ -46,6 +55,58 @@ Match nearest(const float* c, const std::vector<std::array<float, 3>>& colours) 
   d2 = std::sqrt(d2);
   if (best < 0 || d1 > kMatchDistance || d1 > kRatio * d2) return {};
   return {best, d1};
+}
+
+// The nearest colour with a free gain per colour (shading darkens or lightens a colour, it does
+// not change its hue): distance from c to g * colour at the best g, with the same acceptance
+// as nearest(). White is skipped (a grey would be "shaded white"). Returns the gain in `gain`.
+Match nearest_shaded(const float* c, const std::vector<std::array<float, 3>>& colours, float& gain) {
+  float d1 = 1e9f, d2 = 1e9f, g1 = 1;
+  int best = -1;
+  for (size_t i = 0; i < colours.size(); ++i) {
+    const auto& p = colours[i];
+    if (p[0] == 1 && p[1] == 1 && p[2] == 1) continue;
+    const float pp = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
+    if (pp <= 0) continue;
+    const float g = std::clamp((c[0] * p[0] + c[1] * p[1] + c[2] * p[2]) / pp, kMinGain, kMaxGain);
+    const float dr = c[0] - g * p[0], dg = c[1] - g * p[1], db = c[2] - g * p[2];
+    const float d = dr * dr + dg * dg + db * db;
+    if (d < d1) {
+      d2 = d1;
+      d1 = d;
+      best = static_cast<int>(i);
+      g1 = g;
+    } else if (d < d2) {
+      d2 = d;
+    }
+  }
+  d1 = std::sqrt(d1);
+  d2 = std::sqrt(d2);
+  if (best < 0 || d1 > kMatchDistance || d1 > kRatio * d2) return {};
+  gain = g1;
+  return {best, d1};
+}
+
+// Three passes of a (2r+1)-wide box blur along rows then columns, in place (edges clamped).
+void box_blur(std::vector<float>& v, int w, int h, int r) {
+  std::vector<float> line;
+  auto pass = [&](int n, int stride, int count, int step) {
+    line.resize(static_cast<size_t>(n));
+    for (int l = 0; l < count; ++l) {
+      float* a = v.data() + static_cast<size_t>(l) * step;
+      for (int rep = 0; rep < 3; ++rep) {
+        for (int i = 0; i < n; ++i) line[static_cast<size_t>(i)] = a[static_cast<size_t>(i) * stride];
+        double acc = 0;
+        for (int i = -r; i <= r; ++i) acc += line[static_cast<size_t>(std::clamp(i, 0, n - 1))];
+        for (int i = 0; i < n; ++i) {
+          a[static_cast<size_t>(i) * stride] = static_cast<float>(acc / (2 * r + 1));
+          acc += line[static_cast<size_t>(std::min(i + r + 1, n - 1))] - line[static_cast<size_t>(std::max(i - r, 0))];
+        }
+      }
+    }
+  };
+  pass(w, 1, h, w);  // rows
+  pass(h, w, w, 1);  // columns
 }
 
 void apply(const std::array<float, 12>& m, const float* c, float* out) {
@@ -87,6 +148,12 @@ ColourCorrection correct_colours(float* rgba, int w, int h, const std::vector<st
       float c[3];
       apply(map, rgba + static_cast<size_t>(flat[i]) * 4, c);
       match[i] = nearest(c, colours);
+      // A shaded part may sit between two colours of the drawing (a darkened body pink beside
+      // its darker cheeks), failing the ratio test; its hue still says which colour it is.
+      // Without these matches a frame whose main colour is shaded had only white left, and
+      // was not corrected at all (octopus, shading ramp: 9 of 15 keyframes).
+      float gain = 1;
+      if (match[i].index < 0) match[i] = nearest_shaded(c, colours, gain);
       if (match[i].index >= 0) ++count[static_cast<size_t>(match[i].index)];
     }
     // Normal equations, each colour weighing 1 in total: (XᵀWX + λI) m_j = XᵀW t_j + λ e_j.
@@ -120,13 +187,37 @@ ColourCorrection correct_colours(float* rgba, int w, int h, const std::vector<st
     apply(map, c, o);
     if (std::max({std::fabs(o[0] - c[0]), std::fabs(o[1] - c[1]), std::fabs(o[2] - c[2])}) > kMaxChange) return out;
   }
+  // Shading: the gain of each flat pixel against the colour it shows, smoothed into a field
+  // (normalised convolution: smoothed gains over smoothed evidence), divides the frame where
+  // there is enough evidence. A darkened part is then its own colour again instead of looking
+  // like a darker colour of the drawing, which the fit would otherwise grow over it.
+  const size_t n = static_cast<size_t>(w) * h;
+  std::vector<float> gain_sum(n, 0.f), support(n, 0.f);
+  for (int i : flat) {
+    float c[3], g = 1;
+    apply(map, rgba + static_cast<size_t>(i) * 4, c);
+    const Match mt = nearest_shaded(c, colours, g);
+    if (mt.index < 0) continue;
+    const auto& col = colours[static_cast<size_t>(mt.index)];
+    if (0.299f * col[0] + 0.587f * col[1] + 0.114f * col[2] < kShadeLuma) continue;
+    gain_sum[static_cast<size_t>(i)] = g;
+    support[static_cast<size_t>(i)] = 1;
+  }
+  const int r = std::max(1, static_cast<int>(std::lround(0.5 * kShadeBox * std::max(w, h))));
+  box_blur(gain_sum, w, h, r);
+  box_blur(support, w, h, r);
   // Apply everywhere, then snap the flat pixels that clearly show one of the colours.
-  std::vector<char> is_flat(static_cast<size_t>(w) * h, 0);
+  std::vector<char> is_flat(n, 0);
   for (int i : flat) is_flat[static_cast<size_t>(i)] = 1;
-  for (size_t i = 0; i < static_cast<size_t>(w) * h; ++i) {
+  for (size_t i = 0; i < n; ++i) {
     float* p = rgba + i * 4;
     float c[3];
     apply(map, p, c);
+    if (support[i] >= kShadeSupport) {
+      const float g = gain_sum[i] / support[i];
+      for (float& x : c) x = std::min(1.f, x / g);
+      ++out.pixels_shaded;
+    }
     if (is_flat[i]) {
       const Match mt = nearest(c, colours);
       if (mt.index >= 0) {

@@ -8,13 +8,18 @@
 // white background. So, per frame:
 //   1. flat pixels (every 8-neighbour within kFlatTolerance) are matched to the nearest of
 //      those colours, accepting only clear matches (close, and much closer than the second
-//      nearest: a ratio test, as in feature matching);
+//      nearest: a ratio test, as in feature matching); a flat pixel that no colour clearly
+//      explains is matched by hue (the colour whose multiple by a gain in 0.7..1.3 is
+//      nearest), since shading darkens a part towards other colours of the drawing without
+//      changing its hue;
 //   2. an affine colour map c' = A c + b is fitted to the matches by least squares, each colour
 //      weighing the same however many pixels show it, with a ridge towards the identity so a
 //      frame showing two colours cannot make up the other dimensions (Eigen solves the 4x4
 //      normal equations); steps 1-2 alternate a few times, as in ICP;
-//   3. the map is applied to the whole frame, and flat pixels that clearly match a colour are
-//      set to it exactly (the low-frequency shading and noise the affine map cannot explain).
+//   3. shading: each flat pixel's gain against its colour, smoothed into a field over 1/12 of
+//      the frame (normalised convolution), divides the frame where there is evidence;
+//   4. the map is applied to the whole frame, and flat pixels that clearly match a colour are
+//      set to it exactly (the shading and noise the steps above leave).
 // Edge pixels keep their corrected values: they hold the sub-pixel edge positions we fit.
 #pragma once
 
@@ -28,6 +33,7 @@ struct ColourCorrection {
   std::array<float, 12> map{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};  // rows of [A | b]
   int colours_matched = 0;  // palette colours (white included) with enough flat pixels
   size_t pixels_snapped = 0;
+  size_t pixels_shaded = 0;  // pixels divided by the smoothed shading gain
   bool applied = false;     // false: the frame was left as it was (too little evidence)
 };
 
