@@ -57,18 +57,25 @@ Match nearest(const float* c, const std::vector<std::array<float, 3>>& colours) 
   return {best, d1};
 }
 
+bool is_white(const std::array<float, 3>& p) { return p[0] == 1 && p[1] == 1 && p[2] == 1; }
+
+// The gain g in [kMinGain, kMaxGain] that brings g * p nearest to c (1 for white: the paper is
+// not shaded, and a grey is not a shaded white).
+float best_gain(const float* c, const std::array<float, 3>& p) {
+  const float pp = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
+  if (is_white(p) || pp <= 0) return 1;
+  return std::clamp((c[0] * p[0] + c[1] * p[1] + c[2] * p[2]) / pp, kMinGain, kMaxGain);
+}
+
 // The nearest colour with a free gain per colour (shading darkens or lightens a colour, it does
 // not change its hue): distance from c to g * colour at the best g, with the same acceptance
-// as nearest(). White is skipped (a grey would be "shaded white"). Returns the gain in `gain`.
+// as nearest(). Returns the gain in `gain`.
 Match nearest_shaded(const float* c, const std::vector<std::array<float, 3>>& colours, float& gain) {
   float d1 = 1e9f, d2 = 1e9f, g1 = 1;
   int best = -1;
   for (size_t i = 0; i < colours.size(); ++i) {
     const auto& p = colours[i];
-    if (p[0] == 1 && p[1] == 1 && p[2] == 1) continue;
-    const float pp = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
-    if (pp <= 0) continue;
-    const float g = std::clamp((c[0] * p[0] + c[1] * p[1] + c[2] * p[2]) / pp, kMinGain, kMaxGain);
+    const float g = best_gain(c, p);
     const float dr = c[0] - g * p[0], dg = c[1] - g * p[1], db = c[2] - g * p[2];
     const float d = dr * dr + dg * dg + db * db;
     if (d < d1) {
@@ -109,6 +116,18 @@ void box_blur(std::vector<float>& v, int w, int h, int r) {
   pass(h, w, w, 1);  // columns
 }
 
+// Which colour a flat pixel shows, and its gain against it: the plain nearest colour when one
+// clearly explains it, else the nearest by hue (a shaded part can sit between two colours of
+// the drawing, a darkened body pink beside its darker cheeks, and fail the ratio test).
+Match classify(const float* c, const std::vector<std::array<float, 3>>& colours, float& gain) {
+  Match m = nearest(c, colours);
+  if (m.index >= 0) {
+    gain = best_gain(c, colours[static_cast<size_t>(m.index)]);
+    return m;
+  }
+  return nearest_shaded(c, colours, gain);
+}
+
 void apply(const std::array<float, 12>& m, const float* c, float* out) {
   for (int j = 0; j < 3; ++j)
     out[j] = std::clamp(m[4 * j] * c[0] + m[4 * j + 1] * c[1] + m[4 * j + 2] * c[2] + m[4 * j + 3], 0.f, 1.f);
@@ -147,13 +166,10 @@ ColourCorrection correct_colours(float* rgba, int w, int h, const std::vector<st
     for (size_t i = 0; i < flat.size(); ++i) {
       float c[3];
       apply(map, rgba + static_cast<size_t>(flat[i]) * 4, c);
-      match[i] = nearest(c, colours);
-      // A shaded part may sit between two colours of the drawing (a darkened body pink beside
-      // its darker cheeks), failing the ratio test; its hue still says which colour it is.
-      // Without these matches a frame whose main colour is shaded had only white left, and
+      // By hue too: without it a frame whose main colour is shaded had only white left, and
       // was not corrected at all (octopus, shading ramp: 9 of 15 keyframes).
       float gain = 1;
-      if (match[i].index < 0) match[i] = nearest_shaded(c, colours, gain);
+      match[i] = classify(c, colours, gain);
       if (match[i].index >= 0) ++count[static_cast<size_t>(match[i].index)];
     }
     // Normal equations, each colour weighing 1 in total: (XᵀWX + λI) m_j = XᵀW t_j + λ e_j.
@@ -196,10 +212,10 @@ ColourCorrection correct_colours(float* rgba, int w, int h, const std::vector<st
   for (int i : flat) {
     float c[3], g = 1;
     apply(map, rgba + static_cast<size_t>(i) * 4, c);
-    const Match mt = nearest_shaded(c, colours, g);
+    const Match mt = classify(c, colours, g);
     if (mt.index < 0) continue;
     const auto& col = colours[static_cast<size_t>(mt.index)];
-    if (0.299f * col[0] + 0.587f * col[1] + 0.114f * col[2] < kShadeLuma) continue;
+    if (is_white(col) || 0.299f * col[0] + 0.587f * col[1] + 0.114f * col[2] < kShadeLuma) continue;
     gain_sum[static_cast<size_t>(i)] = g;
     support[static_cast<size_t>(i)] = 1;
   }
