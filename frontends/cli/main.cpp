@@ -91,8 +91,9 @@ Fits the SVG's paths to a target video (mp4, webm, avi, mov, or a folder of numb
                          0 leaves them to the player's straight lines: smallest files)
   --group-transforms     each part's motion, where affine, as <animateTransform> elements
                          (translate, rotate, skewX, scale) and its paths' shapes in its frame
-  --refine-size W|auto   refine every keyframe at width W for the last quarter of the
-                         iterations (auto: twice the fitting width when the video has it)
+  --refine-size W|auto|0 after the fit, refine every keyframe at width W for an eighth more
+                         iterations (default auto: twice the fitting width when the video
+                         has at least 1.5x it; 0: off)
   --stabilise            remove camera shake (the whole frame jittering) from the video first
   --no-colour-correction compare with the video's colours as they are (default: each frame's
                          colours are corrected towards the palette, absorbing drift and shading)

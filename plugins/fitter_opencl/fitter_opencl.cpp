@@ -32,7 +32,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   job.keyframes = c.value("keyframes", 15);
   job.width = c.value("size", 256);
   job.mask_threshold = c.value("mask_threshold", 0.97);
-  // refine_size: 0 (off, the default), auto or a width in pixels.
+  // refine_size: auto (the default), 0 (off) or a width in pixels.
   if (c.contains("refine_size")) job.refine_width = c.at("refine_size").is_number_integer() ? c.at("refine_size").get<int>() : -1;
   job.device = req.value("device", "auto");
   const std::string deform = c.value("deform", "field");

@@ -160,17 +160,21 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   for (const char* f : {"animation.svg", "animation.failed.svg", "animation.json", "animation.failed.json",
                         "preview.mp4", "fit.json", "checkpoint.bin"})
     output_target(out / f);
-  // Coarse-to-fine: which width the last share of the iterations refines at, if any.
+  // Coarse-to-fine: which width the refinement after the coarse fit runs at, if any.
   int refine_w = job.refine_width;
   if (refine_w < 0)
     refine_w = target.source_width * 2 >= size.width * 3 ? std::min(2 * size.width, target.source_width) : 0;
   if (refine_w > 0 && refine_w <= size.width) refine_w = 0;
   const int refine_iters =
-      refine_w > 0 ? std::clamp(static_cast<int>(std::lround(job.refine_share * fo.iterations)), 0, fo.iterations - 1) : 0;
+      refine_w > 0 ? std::max(0, static_cast<int>(std::lround(job.refine_share * fo.iterations))) : 0;
   if (refine_iters == 0) refine_w = 0;
-  FitOptions coarse_options = fo;
-  coarse_options.iterations = fo.iterations - refine_iters;
-  const int total_iters = fo.iterations;
+  const FitOptions& coarse_options = fo;
+  const int total_iters = fo.iterations + refine_iters;
+  // Progress and ETA count work, not iterations: a refinement iteration costs about as many
+  // coarse ones as it has times the pixels.
+  const double fine_cost = refine_w > 0 ? static_cast<double>(refine_w) * refine_w / (size.width * size.width) : 1;
+  auto work = [&](int it) { return std::min(it, fo.iterations) + std::max(0, it - fo.iterations) * fine_cost; };
+  const double total_work = work(total_iters);
   ClRuntime rt(job.device);
   Fitter fitter(rt, fit_scene, target, coarse_options);
   log::debug("fit: %s: %d keyframes of %d frames (%.3g fps) at %dx%d; %d paths in %d groups, %d control points; "
@@ -210,7 +214,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
       FitState st = load_checkpoint(ckpt, key);
       if (st.iteration < coarse_options.iterations) {
         fitter.restore(st);
-        if (job.progress) job.progress(static_cast<double>(st.iteration) / total_iters,
+        if (job.progress) job.progress(work(st.iteration) / total_work,
                                        "resuming at iteration " + std::to_string(st.iteration));
         else if (!job.quiet) log::info("svgmotion: resuming at iteration %d", st.iteration);
       }
@@ -280,10 +284,10 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
       if (it % kSnapshotEvery == 0 && std::isfinite(per) && per <= 2 * best) good = f.state();
       const auto now = std::chrono::steady_clock::now();
       const double elapsed = std::chrono::duration<double>(now - t0).count();
-      const double eta = elapsed / std::max(1, it - resumed_from) * (total_iters - it);
+      const double eta = elapsed / std::max(1e-9, work(it) - work(resumed_from)) * (total_work - work(it));
       const bool due = now - last_print > std::chrono::milliseconds(job.progress ? 500 : 200) || f.done();
       if (job.progress && due) {
-        job.progress(static_cast<double>(it) / total_iters,
+        job.progress(work(it) / total_work,
                      fmt("iteration %.0f/%.0f, loss %.5f, keyframes %.0f", it, total_iters, loss.total(),
                          f.active_keyframes()) + "/" + std::to_string(f.keyframes()) +
                          fmt(", ETA %.0f s", eta));
@@ -312,7 +316,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   if (refine_w > 0 && !stopped) {
     const RenderSize fine_size = render_size(scene, refine_w);
     fine_target = load_target(*target_path, fine_size.width, fine_size.height, to);
-    FitOptions fine_options = fo;
+    FitOptions fine_options = fo.refined_at(static_cast<double>(fine_size.width) / size.width);
     fine_options.iterations = refine_iters;
     fine = std::make_unique<Fitter>(rt, fit_scene, *fine_target, fine_options);
     fine->adopt_coarse(fitter, static_cast<double>(fine_size.width) / size.width);
