@@ -2,10 +2,13 @@
  *
  * With C the rendered frames composited over the background and T the target frames (RGB),
  *
- *     L = w / N · Σ_{k, pixel, channel} E²,     E = G ∗ (C − T),     N = K · H · W · 3,
+ *     L = w / N · Σ_{k, pixel, channel} E²,     E = G ∗ C − G_t ∗ T,     N = K · H · W · 3,
  *
- * G the 5x5 Gaussian with σ = 1 (paper, appendix), applied separably as g ⊗ g with
- * g = exp(-j²/2) / Σ over j = -2..2, and zero padding outside the frame. The gradient is
+ * G_t the 5x5 Gaussian with σ = 1 (paper, appendix), applied separably as g ⊗ g with
+ * g = exp(-j²/2σ²) / Σ over j = -2..2, and zero padding outside the frame. G, the render's, is
+ * the same unless blur matching widened it, to radius LOSS_R (prelude.cl's taps: a video
+ * softer than the render is matched by blurring the render as much; raster/loss_taps.h).
+ * Only the host touches G_t (in Q below). The gradient is
  *
  *     ∂L/∂C = G ∗ (2 w / N · E)
  *
@@ -15,19 +18,19 @@
  * Only the drawn part changes between iterations. Write C = bg + X with X = P − a·bg, zero
  * wherever nothing is drawn (P the premultiplied render, a its alpha). Then, by linearity,
  *
- *     E = E' + Q,   E' = G ∗ X,   Q = bg·(G ∗ 1) − G ∗ T,
+ *     E = E' + Q,   E' = G ∗ X,   Q = bg·(G ∗ 1) − G_t ∗ T,
  *     Σ E² = Σ Q² + Σ (2 Q·E' + E'·E'),
  *     ∂L/∂C = 2w/N · (R + G ∗ E'),   R = G ∗ Q.
  *
  * Q, R and Σ Q² depend on the targets only and are computed once (ClRaster::set_targets); each
- * iteration touches only the pixels within 2 (or 4, for the gradient) of something drawn: the
+ * iteration touches only the pixels within LOSS_R (or 2 LOSS_R, for the gradient) of something drawn: the
  * work follows the drawing, not the frame. The raster pass writes X' = x-blur of X with each
  * row's extent; blur_y_loss_rows makes E' and the rows' Σ (2 Q·E' + E'·E'); loss_total adds
  * Σ Q²; the backward raster pass evaluates ∂L/∂C at the pixels edges cross
  * (blurred_gradient). Sums run in a fixed order: the loss is bit-reproducible.
  */
 
-/* G0, G1, G2: the 1-D Gaussian taps, defined in prelude.cl. */
+/* G0..G4, LOSS_R, g_tap: the render's 1-D Gaussian taps, defined in prelude.cl. */
 
 /* One separable pass of the blur, along x (dir = 0) or y (dir = 1), times `scale`. */
 __kernel void blur_pass(__global const float4* src, __global float4* dst, float scale, int dir,
@@ -38,14 +41,12 @@ __kernel void blur_pass(__global const float4* src, __global float4* dst, float 
   const int step = dir == 0 ? 1 : width, pos = y * width + x;
   const int at = dir == 0 ? x : y, n = dir == 0 ? width : height;
   float4 s = G0 * f[pos];
-  if (at >= 1) s += G1 * f[pos - step];
-  if (at + 1 < n) s += G1 * f[pos + step];
-  if (at >= 2) s += G2 * f[pos - 2 * step];
-  if (at + 2 < n) s += G2 * f[pos + 2 * step];
+  for (int j = 1; j <= LOSS_R; ++j) {
+    if (at >= j) s += g_tap(j) * f[pos - j * step];
+    if (at + j < n) s += g_tap(j) * f[pos + j * step];
+  }
   dst[(size_t)k * width * height + pos] = scale * s;
 }
-
-inline float g_tap(int j) { return j == 0 ? G0 : (j == 1 || j == -1) ? G1 : G2; }
 
 /* Per (row, frame): E' = the y-blur of X' over the rows' extents, kept (with its extent) for
  * the backward pass, and the row's Σ (2 Q·E' + E'·E') over pixels and channels, in x order. */
@@ -57,7 +58,7 @@ __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* e
   if (y >= height || k >= frames) return;
   __global const int2* ex = ext_x + (size_t)k * height;
   int lo = width, hi = -1;
-  for (int j = -2; j <= 2; ++j) {
+  for (int j = -LOSS_R; j <= LOSS_R; ++j) {
     const int yy = y + j;
     if (yy < 0 || yy >= height || ex[yy].x > ex[yy].y) continue;
     lo = min(lo, ex[yy].x);
@@ -70,17 +71,21 @@ __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* e
   __global const float4* q = Q + ((size_t)k * height + y) * width;
   /* In a scene with a background every row's extent is the whole row: then no tap needs its
    * test (the same sum in the same order, without five branches per pixel). */
-  int inside = y >= 2 && y + 2 < height;
-  for (int j = -2; j <= 2 && inside; ++j) inside = ex[y + j].x <= lo && ex[y + j].y >= hi;
+  int inside = y >= LOSS_R && y + LOSS_R < height;
+  for (int j = -LOSS_R; j <= LOSS_R && inside; ++j) inside = ex[y + j].x <= lo && ex[y + j].y >= hi;
   if (inside) {
-    __global const float4* r = f + (y - 2) * width;
+    __global const float4* r = f + (y - LOSS_R) * width;
     for (int x = lo; x <= hi; ++x) {
       float4 v = (float4)(0.0f);
+#if LOSS_R == 2
       v += G2 * r[x];
       v += G1 * r[width + x];
       v += G0 * r[2 * width + x];
       v += G1 * r[3 * width + x];
       v += G2 * r[4 * width + x];
+#else
+      for (int j = 0; j <= 2 * LOSS_R; ++j) v += g_tap(j - LOSS_R) * r[j * width + x];
+#endif
       e[x] = v;
       s += dot(2.0f * q[x].xyz + v.xyz, v.xyz);
     }
@@ -89,7 +94,7 @@ __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* e
   }
   for (int x = lo; x <= hi; ++x) {
     float4 v = (float4)(0.0f);
-    for (int j = -2; j <= 2; ++j) {
+    for (int j = -LOSS_R; j <= LOSS_R; ++j) {
       const int yy = y + j;
       if (yy >= 0 && yy < height && x >= ex[yy].x && x <= ex[yy].y) v += g_tap(j) * f[yy * width + x];
     }
@@ -106,27 +111,32 @@ inline float3 blurred_gradient(__global const float4* E, __global const int2* ex
   float3 s = R[y * width + x].xyz;
   /* Inside the frame with every tap within its row's extent (a layered scene's usual case):
    * the same sum without the tests. */
-  int inside = x >= 2 && x + 2 < width && y >= 2 && y + 2 < height;
-  for (int dy = -2; dy <= 2 && inside; ++dy) inside = ext_e[y + dy].x <= x - 2 && ext_e[y + dy].y >= x + 2;
+  int inside = x >= LOSS_R && x + LOSS_R < width && y >= LOSS_R && y + LOSS_R < height;
+  for (int dy = -LOSS_R; dy <= LOSS_R && inside; ++dy)
+    inside = ext_e[y + dy].x <= x - LOSS_R && ext_e[y + dy].y >= x + LOSS_R;
   if (inside) {
-    for (int dy = -2; dy <= 2; ++dy) {
+    for (int dy = -LOSS_R; dy <= LOSS_R; ++dy) {
       __global const float4* e = E + (y + dy) * width + x;
       float3 row = (float3)(0.0f);
+#if LOSS_R == 2
       row += G2 * e[-2].xyz;
       row += G1 * e[-1].xyz;
       row += G0 * e[0].xyz;
       row += G1 * e[1].xyz;
       row += G2 * e[2].xyz;
+#else
+      for (int dx = -LOSS_R; dx <= LOSS_R; ++dx) row += g_tap(dx) * e[dx].xyz;
+#endif
       s += g_tap(dy) * row;
     }
     return scale * s;
   }
-  for (int dy = -2; dy <= 2; ++dy) {
+  for (int dy = -LOSS_R; dy <= LOSS_R; ++dy) {
     const int yy = y + dy;
     if (yy < 0 || yy >= height) continue;
     const int2 ex = ext_e[yy];
     float3 row = (float3)(0.0f);
-    for (int dx = -2; dx <= 2; ++dx) {
+    for (int dx = -LOSS_R; dx <= LOSS_R; ++dx) {
       const int xx = x + dx;
       if (xx >= ex.x && xx <= ex.y) row += g_tap(dx) * E[yy * width + xx].xyz;
     }

@@ -30,11 +30,27 @@
 #define CAP_ROUND 1
 #define CAP_SQUARE 2
 
-/* The loss's 1-D Gaussian (σ = 1, 5 taps; paper, appendix): g_j = exp(-j²/2) normalised over
- * j = -2..2, for j = 0, ±1, ±2. Used by loss.cl and by raster.cl's fused residual pass. */
+/* The 1-D Gaussian the loss blurs the render with: g_j = exp(-j²/2σ²) normalised over
+ * j = -LOSS_R..LOSS_R, for j = 0, ±1, ..., σ = 1 and LOSS_R = 2 (5 taps; paper, appendix) unless
+ * the build sets them (blur matching, up to 9 taps: raster/loss_taps.h). Used by loss.cl and by
+ * raster.cl's fused residual pass. */
+#ifndef LOSS_R
+#define LOSS_R 2
 #define G0 0.4026199469f
 #define G1 0.2442019099f
 #define G2 0.0544886845f
+#endif
+#ifndef G3
+#define G3 0.0f
+#endif
+#ifndef G4
+#define G4 0.0f
+#endif
+
+inline float g_tap(int j) {
+  j = abs(j);
+  return j == 0 ? G0 : j == 1 ? G1 : j == 2 ? G2 : j == 3 ? G3 : G4;
+}
 
 inline float cross2(float2 a, float2 b) { return a.x * b.y - a.y * b.x; }
 

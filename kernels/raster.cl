@@ -306,13 +306,13 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
       }
       __local float4* f = band_rgba + r * width;
       for (int x = lo; x <= hi; ++x) f[x] = (float4)(f[x].xyz - background.xyz * f[x].w, 0.0f);
-      const int lo2 = max(lo - 2, 0), hi2 = min(hi + 2, width - 1);
+      const int lo2 = max(lo - LOSS_R, 0), hi2 = min(hi + LOSS_R, width - 1);
       __global float4* o = image + base + (size_t)r * width;
       for (int x = lo2; x <= hi2; ++x) {
         float4 v = (float4)(0.0f);
-        for (int j = -2; j <= 2; ++j) {
+        for (int j = -LOSS_R; j <= LOSS_R; ++j) {
           const int xx = x + j;
-          if (xx >= lo && xx <= hi) v += (j == 0 ? G0 : (j == 1 || j == -1) ? G1 : G2) * f[xx];
+          if (xx >= lo && xx <= hi) v += g_tap(j) * f[xx];
         }
         o[x] = v;
       }

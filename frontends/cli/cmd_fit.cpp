@@ -44,7 +44,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
                             {"--target", "-o", "--output", "--iterations", "--keyframes", "--size",
                              "--palette", "--device", "--mask-threshold", "--loop", "--deform", "--refine-size",
                              "--precision", "--inbetweens"},
-                            {"--resume", "--no-track", "--no-gate", "--no-colour-correction", "--stabilise",
+                            {"--resume", "--no-track", "--no-gate", "--no-colour-correction", "--no-blur-matching", "--stabilise",
                              "--group-transforms"});
   if (a.positional.size() != 1)
     throw Error("fit: expected one input SVG (svgmotion fit IN.svg --target VIDEO -o OUT_DIR)");
@@ -68,6 +68,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
   else if (deform != "field") throw Error("fit: --deform must be field or free, not '" + deform + "'");
   job.gate = !a.has("--no-gate");
   job.colour_correction = !a.has("--no-colour-correction");
+  job.blur_matching = !a.has("--no-blur-matching");
   job.stabilise = a.has("--stabilise");
   job.decimals = a.get_int("--precision", kDefaultDecimals, 0, kMaxDecimals);
   job.inbetweens = a.get_int("--inbetweens", job.inbetweens, 0, kMaxInbetweens);

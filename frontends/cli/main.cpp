@@ -97,6 +97,9 @@ Fits the SVG's paths to a target video (mp4, webm, avi, mov, or a folder of numb
   --stabilise            remove camera shake (the whole frame jittering) from the video first
   --no-colour-correction compare with the video's colours as they are (default: each frame's
                          colours are corrected towards the palette, absorbing drift and shading)
+  --no-blur-matching     blur the drawing in the loss as the paper does, even when the video is
+                         softer (default: the video's blur, measured on its first frame against
+                         the drawing at rest, is matched)
   --no-gate              write animation.svg even when the result gate rejects the fit
   --resume               continue from OUT_DIR/checkpoint.bin
   --no-track             no optical-flow warm start of new keyframes

@@ -39,7 +39,7 @@ Agreement compare(const std::vector<double>& a, const std::vector<double>& b) {
 
 // The reference loss of K frames with control points cp (K * n_cp pairs).
 double ref_loss(const RasterPlan& plan, const std::vector<double>& cp, const std::vector<float>& targets,
-                int K, const std::array<double, 4>& bg) {
+                int K, const std::array<double, 4>& bg, double render_sigma = kLossSigma) {
   const size_t per_cp = static_cast<size_t>(plan.n_cp) * 2;
   const size_t per_px = static_cast<size_t>(plan.width) * plan.height * 4;
   double sum = 0;
@@ -47,7 +47,7 @@ double ref_loss(const RasterPlan& plan, const std::vector<double>& cp, const std
     const std::vector<double> c(cp.begin() + k * per_cp, cp.begin() + (k + 1) * per_cp);
     const auto img = ref::render(plan, c);
     const std::vector<float> t(targets.begin() + k * per_px, targets.begin() + (k + 1) * per_px);
-    sum += ref::blurred_sq_sum(img, t, plan.width, plan.height, bg);
+    sum += ref::blurred_sq_sum(img, t, plan.width, plan.height, bg, render_sigma);
   }
   return kWeight * sum / (static_cast<double>(K) * plan.width * plan.height * 3);
 }
@@ -91,10 +91,11 @@ Case make_case(const Scene& scene, uint32_t seed, int K) {
 // kernel_cp: the kernels' control points when they are not c.cp rounded to float.
 std::pair<std::vector<double>, std::vector<double>> gradients(const Case& c, float* loss_cl = nullptr,
                                                               double* loss_ref = nullptr,
-                                                              const std::vector<float>* kernel_cp = nullptr) {
+                                                              const std::vector<float>* kernel_cp = nullptr,
+                                                              double render_sigma = kLossSigma) {
   const RasterPlan plan = plan_raster(c.scene, Affine{}, static_cast<int>(c.scene.width),
                                       static_cast<int>(c.scene.height));
-  ClRaster r(runtime(), plan, c.K);
+  ClRaster r(runtime(), plan, c.K, render_sigma);
   r.set_control_points(kernel_cp ? *kernel_cp : std::vector<float>(c.cp.begin(), c.cp.end()));
   r.set_targets(c.targets);
   const std::array<float, 4> white{1, 1, 1, 1};
@@ -103,7 +104,7 @@ std::pair<std::vector<double>, std::vector<double>> gradients(const Case& c, flo
   const auto g = r.read_cp_gradient();
   std::vector<double> analytic(g.begin(), g.end());
   const std::array<double, 4> bg{1, 1, 1, 1};
-  if (loss_ref) *loss_ref = ref_loss(plan, c.cp, c.targets, c.K, bg);
+  if (loss_ref) *loss_ref = ref_loss(plan, c.cp, c.targets, c.K, bg, render_sigma);
   std::vector<double> fd(c.cp.size(), 0.0);
   const double h = 1e-5;
   auto cp = c.cp;
@@ -111,9 +112,9 @@ std::pair<std::vector<double>, std::vector<double>> gradients(const Case& c, flo
     if (i % (plan.n_cp * 2) >= static_cast<size_t>(plan.n_cp - 3) * 2) continue;  // padding
     const double keep = cp[i];
     cp[i] = keep + h;
-    const double up = ref_loss(plan, cp, c.targets, c.K, bg);
+    const double up = ref_loss(plan, cp, c.targets, c.K, bg, render_sigma);
     cp[i] = keep - h;
-    const double down = ref_loss(plan, cp, c.targets, c.K, bg);
+    const double down = ref_loss(plan, cp, c.targets, c.K, bg, render_sigma);
     cp[i] = keep;
     fd[i] = (up - down) / (2 * h);
   }
@@ -142,6 +143,27 @@ TEST_CASE("gradient of overlapping opaque and translucent fills matches finite d
   const auto [an, fd] = gradients(c);
   const Agreement a = compare(an, fd);
   MESSAGE("cosine " << a.cosine << ", relative error " << a.rel_error);
+  CHECK(a.cosine > 0.99999);
+  CHECK(a.rel_error < 1e-3);
+}
+
+// Blur matching (raster/loss_taps.h): the render blurred wider than the target. The loss and
+// its gradient follow the reference with the same two blurs, and a target that is the
+// render blurred by the extra amount scores far less than with the paper's blur alone.
+TEST_CASE("blur matching: a wider render blur keeps the loss and gradient exact") {
+  const Case c = make_case(scene_of(40, 32, {filled(circle({20, 16}, 9), {0.9f, 0.2f, 0.1f, 1}),
+                                             filled(polygon({{3, 4}, {30, 6}, {14, 28}}), {0.1f, 0.3f, 0.8f, 0.6f})}),
+                           11, 2);
+  float lc = 0;
+  double lr = 0;
+  const auto [an, fd] = gradients(c, &lc, &lr, nullptr, 1.4);
+  CHECK(lr > 0);
+  CHECK(lc == doctest::Approx(lr).epsilon(1e-4));
+  double lr1 = 0;
+  gradients(c, nullptr, &lr1);
+  CHECK(std::abs(lr - lr1) > 1e-3 * lr1);  // the wider blur is in effect
+  const Agreement a = compare(an, fd);
+  MESSAGE("render sigma 1.4: cosine " << a.cosine << ", relative error " << a.rel_error);
   CHECK(a.cosine > 0.99999);
   CHECK(a.rel_error < 1e-3);
 }

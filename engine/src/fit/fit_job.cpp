@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "export/lottie_writer.h"
+#include "fit/blur_match.h"
 #include "fit/checkpoint.h"
 #include "fit/document_order.h"
 #include "fit/group_transform.h"
@@ -23,6 +24,7 @@
 #include "fit/palette.h"
 #include "fit/preview_video.h"
 #include "fit/smil_writer.h"
+#include "raster/render_image.h"
 #include "svgmotion/error.h"
 #include "svgmotion/log.h"
 #include "svgmotion/svg_reader.h"
@@ -168,7 +170,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   const int refine_iters =
       refine_w > 0 ? std::max(0, static_cast<int>(std::lround(job.refine_share * fo.iterations))) : 0;
   if (refine_iters == 0) refine_w = 0;
-  const FitOptions& coarse_options = fo;
+  FitOptions coarse_options = fo;
   const int total_iters = fo.iterations + refine_iters;
   // Progress and ETA count work, not iterations: a refinement iteration costs about as many
   // coarse ones as it has times the pixels.
@@ -176,6 +178,17 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   auto work = [&](int it) { return std::min(it, fo.iterations) + std::max(0, it - fo.iterations) * fine_cost; };
   const double total_work = work(total_iters);
   ClRuntime rt(job.device);
+  // Blur matching at each width the fit runs at: the render σ of the loss that makes our
+  // rest pose look like the video's first frame (fit/blur_match.h).
+  auto match_blur = [&](const TargetFrames& t, const RenderSize& at) {
+    if (!job.blur_matching) return BlurMatch{};
+    const BlurMatch m = match_render_blur(render_image(rt, fit_scene, at.width, false), t.rgba);
+    log::debug("fit: blur matching at %dx%d: best render sigma %.2f (residual x%.3f, rest pose %.1f dB)%s", at.width,
+               at.height, m.best_sigma, m.residual_ratio, m.rest_psnr_db, m.render_sigma != 1 ? ", adopted" : ", not adopted");
+    return m;
+  };
+  const BlurMatch coarse_blur = match_blur(target, size);
+  coarse_options.render_blur_sigma = coarse_blur.render_sigma;
   Fitter fitter(rt, fit_scene, target, coarse_options);
   log::debug("fit: %s: %d keyframes of %d frames (%.3g fps) at %dx%d; %d paths in %d groups, %d control points; "
              "%d iterations on %s",
@@ -313,11 +326,14 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   // checkpointed: a resumed fit redoes it from the coarse stage's last checkpoint).
   std::optional<TargetFrames> fine_target;
   std::unique_ptr<Fitter> fine;
+  BlurMatch fine_blur;
   if (refine_w > 0 && !stopped) {
     const RenderSize fine_size = render_size(scene, refine_w);
     fine_target = load_target(*target_path, fine_size.width, fine_size.height, to);
     FitOptions fine_options = fo.refined_at(static_cast<double>(fine_size.width) / size.width);
     fine_options.iterations = refine_iters;
+    fine_blur = match_blur(*fine_target, fine_size);
+    fine_options.render_blur_sigma = fine_blur.render_sigma;
     fine = std::make_unique<Fitter>(rt, fit_scene, *fine_target, fine_options);
     fine->adopt_coarse(fitter, static_cast<double>(fine_size.width) / size.width);
     log::debug("fit: refining every keyframe at %dx%d for %d iterations", fine_size.width, fine_size.height,
@@ -432,6 +448,9 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     report["loss_history"] = std::move(h);
   }
   report["target_frames"] = {{"held", target.held_frames}, {"colour_corrected_keyframes", final_target.colour_corrected}};
+  // The loss's render σ (1: the paper's; more: the video was softer and its blur was matched).
+  report["target_frames"]["render_blur_sigma"] = coarse_blur.render_sigma;
+  if (fine) report["target_frames"]["refine_render_blur_sigma"] = fine_blur.render_sigma;
   if (job.stabilise) report["target_frames"]["max_shake_removed_px"] = target.max_shake_px;
   if (fine) report["refined"] = {{"size", {W, H}}, {"iterations", final_fit.iteration()}, {"from_size", {size.width, size.height}}};
   write_file_atomic(out / "fit.json", report.dump(2) + "\n");

@@ -72,6 +72,8 @@ struct FitJob {
   double refine_share = 0.125;
   // Colour-correct every keyframe against the drawing's colours (target_video.h).
   bool colour_correction = true;
+  // Match the video's blur, measured on the rest pose, in the loss (fit/blur_match.h).
+  bool blur_matching = true;
   // Remove camera shake from the video before sampling it (target_video.h).
   bool stabilise = false;
   double mask_threshold = 0.97;

@@ -78,7 +78,7 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
   if (opt_.w_cohesion > 0) fo.cohesion_radius_px = opt_.cohesion_radius_frac * size_.width;
   fplan_ = plan_fit(scene, plan_, fo);
   G_ = fplan_.n_groups;
-  raster_ = std::make_unique<ClRaster>(rt_, plan_, K_);
+  raster_ = std::make_unique<ClRaster>(rt_, plan_, K_, opt_.render_blur_sigma);
   raster_->set_targets(target.rgba);
   steps_.assign(K_, 0);
 

@@ -75,6 +75,9 @@ struct FitOptions {
   // (parrot, non-rigid target, H.264 at 37 dB: keyframe 0 drifted to 40.4 dB at 1024 px
   // where the SVG itself scores 59.5).
   bool pin_rest_keyframe = true;
+  // The σ of the Gaussian the loss blurs the render with (the target's is the paper's 1): set
+  // from the rest pose by blur matching (fit/blur_match.h) when the video is softer.
+  double render_blur_sigma = 1;
 
   // The paper's deformation: free per-point offsets (lr 0.1) with its smoothness weight, no
   // displacement field.

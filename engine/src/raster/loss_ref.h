@@ -6,11 +6,13 @@
 
 namespace svgm::ref {
 
-// One frame's blurred squared residual sum, Σ_{pixel, channel} E², with E = G ∗ (C − T), C the
-// premultiplied RGBA `image` composited over `background` and T the RGB of `target`
-// (width * height * 4 values each). The loss of K frames is weight / (K·H·W·3) times the sum
-// of their frame sums.
+// One frame's blurred squared residual sum, Σ_{pixel, channel} E², with E = G_r ∗ C − G_t ∗ T,
+// C the premultiplied RGBA `image` composited over `background`, T the RGB of `target`
+// (width * height * 4 values each), G_r and G_t the loss's Gaussians of σ `render_sigma` and
+// 1 (raster/loss_taps.h). The loss of K frames is weight / (K·H·W·3) times the sum of their
+// frame sums.
 double blurred_sq_sum(const std::vector<double>& image, const std::vector<float>& target,
-                      int width, int height, const std::array<double, 4>& background);
+                      int width, int height, const std::array<double, 4>& background,
+                      double render_sigma = 1.0);
 
 }  // namespace svgm::ref

@@ -2,6 +2,8 @@
 #include "raster/raster_cl.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <string>
 
 #include "opencl/tuning.h"
 #include "svgmotion/error.h"
@@ -14,8 +16,25 @@ cl::Buffer ClRaster::make(size_t bytes, const void* host) {
   return cl::Buffer(rt_.context(), CL_MEM_READ_WRITE, std::max(bytes, kMinBufferBytes));
 }
 
-ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames)
-    : rt_(rt), plan_(plan), frames_(frames), active_(frames) {
+namespace {
+
+// prelude.cl's render taps when they are not the paper's (whose program stays the cached one).
+std::string loss_tap_options(double sigma) {
+  if (sigma == kLossSigma) return "";
+  const std::vector<double> g = loss_taps(sigma);
+  std::string o = " -DLOSS_R=" + std::to_string(g.size() - 1);
+  for (size_t j = 0; j < g.size(); ++j) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, " -DG%zu=%.9gf", j, g[j]);
+    o += buf;
+  }
+  return o;
+}
+
+}  // namespace
+
+ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double render_sigma)
+    : rt_(rt), plan_(plan), frames_(frames), active_(frames), render_sigma_(render_sigma) {
   if (frames < 1) throw Error("frame count must be at least 1");
   const auto& p = plan_;
   const size_t K = static_cast<size_t>(frames);
@@ -29,7 +48,7 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames)
     cl::Program& prog =
         rt_.program({"flatten.cl", "stroke.cl", "lines.cl", "raster.cl", "loss.cl",
                      "raster_backward.cl", "stroke_backward.cl"},
-                    kernel_build_options(tuning));
+                    kernel_build_options(tuning) + loss_tap_options(render_sigma));
     program_ = &prog;
     local_budget_ = tuning.local_budget;
     k_flatten_ = cl::Kernel(prog, "flatten");

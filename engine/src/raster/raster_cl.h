@@ -12,13 +12,16 @@
 #include <vector>
 
 #include "opencl/runtime.h"
+#include "raster/loss_taps.h"
 #include "raster/raster_plan.h"
 
 namespace svgm {
 
 class ClRaster {
  public:
-  ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames);
+  // `render_sigma`: the σ of the Gaussian the loss blurs the render with (kernels/loss.cl; the
+  // target's is always kLossSigma). Above it, blur matching (fit/blur_match.h).
+  ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double render_sigma = kLossSigma);
 
   int frames() const { return frames_; }
   // Launches cover the first `n` frames only (1..frames()): the fitter activates keyframes
@@ -88,6 +91,7 @@ class ClRaster {
   RasterPlan plan_;
   int frames_;
   int active_ = 0;
+  double render_sigma_ = kLossSigma;
   int band_h_ = 16, bands_ = 0, group_ = 1;
   size_t device_bytes_ = 0;
   std::vector<std::pair<std::string, cl::Event>> events_;
