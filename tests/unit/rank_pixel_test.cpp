@@ -1,7 +1,8 @@
 // The pixel ranker (rank/pixel_ranker.h): a clean candidate made at run time (three palette-
 // coloured shapes moving smoothly, anti-aliased by 4x4 supersampling) against copies corrupted
 // with colour drift, an invented blob, a vanishing part and a frozen copy. The clean one must
-// rank first, across seeds, and each corrupted copy must name its defect. Built in memory as
+// rank first, across seeds, and each corrupted copy must name its defect; a clean line drawing
+// (strokes thinner than the interior test) keeps its colours. Built in memory as
 // TargetFrames, and once more as mp4 files / PNG folders ranked from a directory.
 #include <doctest/doctest.h>
 
@@ -84,13 +85,44 @@ std::vector<float> draw_frame(const Motion& m, Kind kind, int k) {
   return f;
 }
 
-TargetFrames make_candidate(const Motion& m, Kind kind) {
+// A line drawing (the livesketch kind) as the ranker sees it once shrunk to its analysis size:
+// strokes 1.2 px wide, so no pixel holds one colour alone; two of them run side by side (the
+// pixels between are mixtures of the two, and the only interior ones: 3x3 all foreground) and
+// a third crosses them. Each slides 4 px sideways; Drift shifts the colours as draw_frame does.
+std::vector<float> draw_lines(Kind kind, int k) {
+  const double t = static_cast<double>(k) / (kK - 1);
+  Rgba col[3] = {kPalette[0], kPalette[1], kPalette[2]};
+  if (kind == Kind::Drift)
+    for (auto& c : col) c.r += static_cast<float>(0.15 * t), c.g -= static_cast<float>(0.1 * t), c.b += static_cast<float>(0.1 * t);
+  const double seg[3][4] = {{8, 40, 88, 40}, {8, 41.2, 88, 41.2}, {48.5, 8, 48.5, 90}};  // x0 y0 x1 y1
+  std::vector<float> f(static_cast<size_t>(kW) * kH * 4, 1.f);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      double acc[3] = {0, 0, 0};
+      for (int sy = 0; sy < 4; ++sy)
+        for (int sx = 0; sx < 4; ++sx) {
+          const double u = x + (sx + 0.5) / 4 - 4 * t, v = y + (sy + 0.5) / 4;
+          double c[3] = {1, 1, 1};
+          for (int s = 0; s < 3; ++s) {
+            const double dx = seg[s][2] - seg[s][0], dy = seg[s][3] - seg[s][1];
+            const double a = std::clamp(((u - seg[s][0]) * dx + (v - seg[s][1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+            if (std::hypot(u - seg[s][0] - a * dx, v - seg[s][1] - a * dy) < 0.6) c[0] = col[s].r, c[1] = col[s].g, c[2] = col[s].b;
+          }
+          for (int i = 0; i < 3; ++i) acc[i] += c[i] / 16;
+        }
+      float* p = &f[(static_cast<size_t>(y) * kW + x) * 4];
+      for (int i = 0; i < 3; ++i) p[i] = static_cast<float>(acc[i]);
+    }
+  return f;
+}
+
+TargetFrames make_candidate(const Motion& m, Kind kind, bool lines = false) {
   TargetFrames t;
   t.width = kW, t.height = kH, t.keyframes = kK, t.source_frames = kK, t.fps = 24;
   const size_t P = static_cast<size_t>(kW) * kH;
   for (int k = 0; k < kK; ++k) {
     t.source_index.push_back(k);
-    const std::vector<float> f = draw_frame(m, kind, kind == Kind::Frozen ? 0 : k);
+    const std::vector<float> f = lines ? draw_lines(kind, k) : draw_frame(m, kind, kind == Kind::Frozen ? 0 : k);
     t.raw.insert(t.raw.end(), f.begin(), f.end());
     // mask: darkest channel < 0.97; sdf: city-block distance to the mask (two passes).
     std::vector<uint8_t> mask(P);
@@ -234,6 +266,19 @@ TEST_CASE("rank pixel: candidates ranked from a directory of mp4 files and PNG f
   CHECK(j["candidates"][5]["error"].is_string());
 
   CHECK_THROWS(rank_directory(tmp.path, kPalette, {}, [](double, const std::string&) { return false; }));
+}
+
+TEST_CASE("rank pixel: a clean line drawing keeps its colours; a drifting one is flagged") {
+  // Strokes thinner than the 3x3 interior test: the few interior pixels are where strokes
+  // cross, mixtures of two colours, which once flagged a clean line drawing as colour drift.
+  const Motion m = random_motion(3);
+  const CandidateScore clean = score_candidate(make_candidate(m, Kind::Clean, true), kPalette);
+  INFO(clean.to_json().dump(2));
+  CHECK_FALSE(has(clean.defects, "colour drift"));
+  CHECK(clean.colour_drift.value < 0.5);
+  const CandidateScore drift = score_candidate(make_candidate(m, Kind::Drift, true), kPalette);
+  INFO(drift.to_json().dump(2));
+  CHECK(has(drift.defects, "colour drift"));
 }
 
 TEST_CASE("rank pixel: chaotic motion and bad input") {

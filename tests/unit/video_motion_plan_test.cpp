@@ -296,6 +296,32 @@ TEST_CASE("seeds vary the amplitude; the same seed gives the same frames") {
 
 TEST_SUITE("motion") {
 
+TEST_CASE("a stroke's handle outside the canvas does not freeze the motion; its curve stays inside") {
+  // The stroke bulges to x = 6.25 while its handles lie at x = -5 (a line drawing's strokes
+  // near the edge): only the drawn curve has to stay in the canvas.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
+           <rect x="40" y="20" width="30" height="70" fill="#f00"/>
+           <path d="M 40 20 C -5 40 -5 60 40 80" fill="none" stroke="#000" stroke-width="2"/></svg>)", "handle.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("it sways"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  const int F = 25;
+  fit_plan(s, rig, plan, F, 9);
+  CHECK(plan.warnings.empty());
+  CHECK(plan.amplitude(plan.actions[0]) > 0.3 * plan.actions[0].amp);  // it still sways
+  const auto pts = animate_plan(s, rig, plan, F);
+  const size_t per = pts.size() / F;
+  double left = 1e9;
+  for (int f = 0; f < F; ++f) {
+    // The stroke's points are the last four of the frame: its curve at t = 1/2.
+    const Vec2* c = &pts[f * per + per - 4];
+    left = std::min(left, (0.125 * c[0] + 0.375 * c[1] + 0.375 * c[2] + 0.125 * c[3]).x);
+  }
+  CHECK(left >= 1 - 1e-6);  // 1 % of 100: the margin
+  CHECK(left < 6.0);        // and it moved towards the edge
+}
+
 TEST_CASE("a sway that would push a canvas-filling drawing out is scaled alone; the rain keeps its size") {
   // A canopy reaching 4 units from the left and right edges, three drops above it.
   const Scene s = read_svg_string(

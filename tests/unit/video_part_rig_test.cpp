@@ -127,6 +127,37 @@ TEST_CASE("a scene: background rect, the umbrella as root, six drops with their 
   CHECK(r.repeated_why == "6 small paths of similar size");
 }
 
+TEST_CASE("arms drawn as shapes of their own in the body's group are limbs; one shape across the body is not") {
+  // A grouper merged the raised arms with the shirt: one group of three paths (shirt, the arm
+  // on the viewer's left, the arm on the right), the head and the legs groups of their own.
+  const char* head = "<g id=\"group-2\" data-group=\"group-2\"><path id=\"p4\" d=\"M 85 30 L 115 30 L 115 60 L 85 60 Z\"/></g>"
+                     "<g id=\"group-3\" data-group=\"group-3\"><path id=\"p5\" d=\"M 80 150 L 120 150 L 120 190 L 80 190 Z\"/></g></svg>";
+  const std::string top = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200\" height=\"200\">"
+                          "<g id=\"group-1\" data-group=\"group-1\"><path id=\"p1\" d=\"M 75 65 L 125 65 L 125 150 L 75 150 Z\"/>";
+  const Scene s = read_svg_string(top +
+      "<path id=\"p2\" d=\"M 78 75 L 40 20 L 52 14 L 90 70 Z\"/>"
+      "<path id=\"p3\" d=\"M 122 75 L 160 20 L 148 14 L 110 70 Z\"/></g>" + head, "arms.svg");
+  const Rig r = build_rig(s, {});
+  REQUIRE(r.parts.size() == 5);
+  // The shirt alone is the root; each arm hangs from it on its own side.
+  REQUIRE(r.root >= 0);
+  CHECK(r.parts[r.root].box.x0 == doctest::Approx(75));
+  CHECK(r.parts[r.root].box.x1 == doctest::Approx(125));
+  int arms = 0;
+  for (const auto& P : r.parts)
+    if (P.role == Role::UpperLimb) {
+      ++arms;
+      CHECK(P.parent == r.root);
+      CHECK(P.side == (P.box.centre().x < 100 ? 1 : -1));
+    }
+  CHECK(arms == 2);
+  // Both arms as one shape with the shoulders (across the shirt's middle): the group stays whole.
+  const Scene one = read_svg_string(top +
+      "<path id=\"p2\" d=\"M 40 20 L 52 14 L 90 62 L 110 62 L 148 14 L 160 20 L 122 75 L 78 75 Z\"/></g>" + head, "one.svg");
+  const Rig r1 = build_rig(one, {});
+  CHECK(r1.parts.size() == 3);
+}
+
 TEST_CASE("a round part is a wheel; a stand is not") {
   const Rig r = rig_of("wheel.svg");
   REQUIRE(r.parts.size() == 2);

@@ -2,8 +2,9 @@
 // and the palette of the recoloured image they were generated from (palette.json).
 //
 // Five signals, each a value in [0, 1] (0 = fine, 1 = bad) with a one-line reason:
-//   colour_drift      per frame, the median distance of interior foreground pixels (3x3
-//                     all foreground) to the nearest palette colour, capped at far_distance;
+//   colour_drift      per frame, the median over the foreground of each pixel's distance to
+//                     the nearest palette colour (an edge pixel, not 3x3 all foreground: or to
+//                     a palette colour's blend with white), capped at far_distance;
 //                     mean over frames and growth last - first: max((mean - 0.02) / 0.1,
 //                     growth / 0.08) (0.02: what H.264 alone costs a flat colour)
 //   invented_content  8-connected blobs of foreground pixels farther than far_distance from

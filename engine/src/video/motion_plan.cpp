@@ -768,12 +768,40 @@ std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const
   const double max_step = kMaxStep * std::hypot(scene.width, scene.height);
   auto outside = [&](Vec2 q) { return std::max({0.0, x0 - q.x, q.x - x1, y0 - q.y, q.y - y1}); };
   const size_t per = pts.size() / frames;
-  for (size_t i = 0; i < per; ++i) {
-    // A point inside the margin band at rest (a drawing touching the edge) may use the band.
-    const double rest = outside(pts[i]), allowed = rest > 0 ? std::max(rest, kMarginUse * m) : 0.0;
-    for (int f = 1; f < frames; ++f)
-      if (outside(pts[f * per + i]) > allowed + 1e-6) return "would leave the canvas";
-  }
+  // A control point inside the canvas at rest stays inside (a point inside the margin band at
+  // rest, a drawing touching the edge, may use the band). One already outside the canvas (a
+  // line drawing's handle: one 0.7 px out froze a galloping horse) may move: its curve is
+  // held instead, each cubic at t = 0, 1/4, 1/2, 3/4, a point of it already outside at rest
+  // going at most 0.9 of the margin farther out.
+  auto allowed_for = [&](double rest) { return rest > m ? rest + kMarginUse * m : rest > 0 ? std::max(rest, kMarginUse * m) : 0.0; };
+  auto at = [&](int f, size_t i, double t) {
+    const Vec2* c = &pts[f * per + i];
+    const double u = 1 - t;
+    return u * u * u * c[0] + 3 * u * u * t * c[1] + 3 * u * t * t * c[2] + t * t * t * c[3];
+  };
+  size_t i = 0;
+  for (const Path& p : scene.paths)
+    for (const auto& sp : p.subpaths) {
+      const size_t n = sp.points.size();
+      for (size_t k = 0; k < n; ++k) {
+        const double rest = outside(pts[i + k]);
+        if (rest > m) {
+          // The segments this point shapes: the one it starts or ends, or whose handle it is.
+          const size_t s0 = k / 3 * 3, first = (k % 3 == 0 && k >= 3) ? s0 - 3 : s0;
+          for (size_t s = first; s <= s0 && s + 3 < n; s += 3)
+            for (double t : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+              const double allowed = allowed_for(outside(at(0, i + s, t)));
+              for (int f = 1; f < frames; ++f)
+                if (outside(at(f, i + s, t)) > allowed + 1e-6) return "would leave the canvas";
+            }
+          continue;
+        }
+        const double allowed = allowed_for(rest);
+        for (int f = 1; f < frames; ++f)
+          if (outside(pts[f * per + i + k]) > allowed + 1e-6) return "would leave the canvas";
+      }
+      i += n;
+    }
   for (int k = 1; k < K; ++k) {
     const int fa = static_cast<int>(std::lround((k - 1) * (frames - 1.0) / (K - 1)));
     const int fb = static_cast<int>(std::lround(k * (frames - 1.0) / (K - 1)));

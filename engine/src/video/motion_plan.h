@@ -11,8 +11,9 @@
 // repeated elements, which each keep their own phase.
 //
 // Two limits keep the target followable (fit_plan): no control point leaves the canvas (less a
-// margin of kFrameMargin; points already outside at rest may not go farther out), and no point
-// travels farther than kMaxStep of the canvas diagonal between two keyframes. When either fails
+// margin of kFrameMargin; a point already outside it at rest, a line drawing's handle, may move
+// while the curves it shapes stay in), and no point travels farther than kMaxStep of the
+// canvas diagonal between two keyframes. When either fails
 // the amplitudes are scaled down (spins keep whole turns; falls are shortened per element).
 #pragma once
 
@@ -84,8 +85,10 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
 // spread over `frames`): first each action alone (its own scale: a sway that would push a
 // canvas-filling drawing out is made smaller without shrinking the rain falling beside it),
 // then all together (plan.scale). A point already within the margin at rest may move up to
-// 0.9 of the margin from the edge, never beyond it. A note says each scaling; a warning says
-// when even the smallest scale fails.
+// 0.9 of the margin from the edge, never beyond it. A point outside the canvas at rest is held
+// by the cubics it shapes instead (sampled at quarters): their points inside stay inside, those
+// outside go at most 0.9 of the margin farther. A note says each scaling; a warning says when
+// even the smallest scale fails.
 void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes);
 
 // The report written to motion.json: the parts found and the plan.

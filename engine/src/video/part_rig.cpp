@@ -31,6 +31,10 @@ constexpr double kRoundFillMax = 0.93;
 constexpr size_t kMaxNamedSplit = 16;
 // A round path at least this share of the canvas is split from its group as a wheel.
 constexpr double kWheelPathArea = 0.02;
+// A path of a many-path root is a limb of its own (split_root_limbs) when its area is at least
+// this share of the root's core path and less than this share of its box lies in the core's.
+constexpr double kLimbPathArea = 0.15;
+constexpr double kLimbInCore = 0.5;
 
 bool is_generic_word(const std::string& w) {
   static const std::set<std::string> generic = {
@@ -173,16 +177,28 @@ SourceNames read_source_names(const std::string& original) {
   return out;
 }
 
-Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<std::string>& group_names) {
-  Rig rig;
-  rig.canvas.add(Vec2{0, 0});
-  rig.canvas.add(Vec2{scene.width, scene.height});
-  // The parts: the scene's groups, each split by the names of its paths where the document
-  // names them apart (a grouper may merge a rider's named legs into the bicycle they overlap).
-  std::vector<std::vector<int>> unit_paths;
-  std::vector<int> unit_group;
-  std::vector<char> unit_split;
-  std::set<int> wheel_paths;  // round paths split from their group
+namespace {
+
+// The paths of each part to be: per part its paths, scene group, whether its group was split
+// (its name then comes from its own paths, not the grouper's group name), and the round paths
+// split from their group as wheels.
+struct Units {
+  std::vector<std::vector<int>> paths;
+  std::vector<int> group;
+  std::vector<char> split;
+  std::set<int> wheels;
+  int root = -1;  // the root's index when it is already known (split_root_limbs)
+  std::set<int> from_root;  // parts split from the root's group (split_root_limbs)
+};
+
+// The parts: the scene's groups, each split by the names of its paths where the document
+// names them apart (a grouper may merge a rider's named legs into the bicycle they overlap).
+Units units_of(const Scene& scene, const SourceNames& names) {
+  Units U;
+  std::vector<std::vector<int>>& unit_paths = U.paths;
+  std::vector<int>& unit_group = U.group;
+  std::vector<char>& unit_split = U.split;
+  std::set<int>& wheel_paths = U.wheels;
   for (size_t g = 0; g < scene.groups.size(); ++g) {
     std::map<std::string, std::vector<int>> by_name;  // innermost named element -> paths
     for (int pi : scene.groups[g].paths) {
@@ -221,6 +237,18 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
       unit_split.push_back(split);
     }
   }
+  return U;
+}
+
+// The rig of the parts `U` (build_rig's work after the parts are chosen).
+Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std::string>& group_names, const Units& U) {
+  Rig rig;
+  rig.canvas.add(Vec2{0, 0});
+  rig.canvas.add(Vec2{scene.width, scene.height});
+  const std::vector<std::vector<int>>& unit_paths = U.paths;
+  const std::vector<int>& unit_group = U.group;
+  const std::vector<char>& unit_split = U.split;
+  const std::set<int>& wheel_paths = U.wheels;
   const int G = static_cast<int>(unit_paths.size());
   const size_t n_paths = scene.paths.size();
   rig.parts.resize(G);
@@ -321,6 +349,7 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
     const double d = std::hypot(c.x - fc.x, c.y - fc.y) / (0.25 * fdiag);
     double score = std::max(P.area, 1e-9) / (1 + d * d);
     if (has_word(P.words, {"body", "torso", "trunk"})) score = 1e300;
+    if (g == U.root) score = 1e301;
     if (score > best) { best = score; rig.root = g; }
   }
   RigPart& R = rig.parts[rig.root];
@@ -335,7 +364,9 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
     if (g == rig.root || P.role == Role::Background || P.box.empty()) continue;
     int parent = rig.root;
     double best_overlap = overlap(P.box, R.box), best_gap = gap(P.box, R.box);
-    if (P.area < R.area)
+    // A limb split from the root's group hangs from the root (the grouper drew it with the body,
+    // not with a raised arm's neighbour, the head).
+    if (P.area < R.area && !U.from_root.count(g))
       for (int h = 0; h < G; ++h) {
         const RigPart& Q = rig.parts[h];
         if (h == g || h == rig.root || Q.role == Role::Background || Q.box.empty()) continue;
@@ -397,8 +428,15 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
     else { P.role = Role::Detail; P.why = "near the root's middle"; }
     P.side = std::fabs(dx) < 0.1 * rw ? 0 : (dx < 0 ? 1 : -1);  // figure's own side: mirrored
   }
-  for (int g = 0; g < G; ++g)  // only the largest head is the head
-    if (rig.parts[g].role == Role::Head && g != head) { rig.parts[g].role = Role::Detail; rig.parts[g].why = "above the root (a smaller head part)"; }
+  // Only the largest head is the head; a smaller part above the root with its middle beside
+  // the head is an arm raised above the shoulders, the others details of the head.
+  for (int g = 0; g < G; ++g) {
+    RigPart& P = rig.parts[g];
+    if (P.role != Role::Head || g == head) continue;
+    const RigBox& hb = rig.parts[head].box;
+    if (P.box.centre().x < hb.x0 || P.box.centre().x > hb.x1) { P.role = Role::UpperLimb; P.why = "above the root, beside the head (a raised arm)"; }
+    else { P.role = Role::Detail; P.why = "above the root (a smaller head part)"; }
+  }
   // Tail: the attached part reaching farthest sideways at the root's height, not the head.
   int tail = -1;
   double reach = 0.5 * rw;
@@ -511,6 +549,64 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
     }
     rig.repeated_why = std::to_string(rig.repeated.size()) + " small paths of similar size";
   }
+  return rig;
+}
+
+// A root of several paths may hold limbs drawn as shapes of their own that a grouper merged
+// with the body (a figure's two raised arms grouped with its shirt): its core path (the
+// largest central one, as the root is chosen among parts) stays the root, and each path at
+// least kLimbPathArea of the core's area whose middle lies outside the core's box, that
+// mostly lies outside it and keeps to one side of the core's middle, becomes a part of its
+// own that hangs from the core. True when the root was split.
+bool split_root_limbs(const Scene& scene, const Rig& rig, Units& U) {
+  if (rig.root < 0) return false;
+  const std::vector<int> ps = U.paths[rig.root];
+  if (ps.size() < 2) return false;
+  const RigBox& pb = rig.parts[rig.root].box;
+  const double quarter = 0.25 * std::max(std::hypot(pb.w(), pb.h()), 1e-9);
+  std::vector<RigBox> box(ps.size());
+  std::vector<double> area(ps.size(), 0);
+  size_t core = 0;
+  double best = -1;
+  for (size_t i = 0; i < ps.size(); ++i) {
+    box[i] = path_box(scene.paths[ps[i]]);
+    for (const auto& sp : scene.paths[ps[i]].subpaths) area[i] += std::fabs(shoelace(sp.points));
+    const Vec2 d = box[i].centre() - pb.centre();
+    const double score = area[i] / (1 + (d.x * d.x + d.y * d.y) / (quarter * quarter));
+    if (!box[i].empty() && score > best) { best = score; core = i; }
+  }
+  const RigBox& cb = box[core];
+  std::vector<int> rest, limbs;
+  for (size_t i = 0; i < ps.size(); ++i) {
+    const Vec2 c = box[i].centre();
+    // ... and on one side of the core's middle: one path across it (both arms drawn as one
+    // shape with the shoulders) is no single limb.
+    const bool one_side = box[i].x1 < cb.centre().x || box[i].x0 > cb.centre().x;
+    const bool outside = one_side && (c.x < cb.x0 || c.x > cb.x1 || c.y < cb.y0 || c.y > cb.y1);
+    const bool limb = i != core && !box[i].empty() && area[i] >= kLimbPathArea * area[core] && outside &&
+                      overlap(box[i], cb) < kLimbInCore * box[i].area();
+    (limb ? limbs : rest).push_back(ps[i]);
+  }
+  if (limbs.empty()) return false;
+  const auto at = U.paths.begin() + rig.root + 1;
+  const int group = U.group[rig.root];
+  U.paths[rig.root] = rest;
+  const size_t pos = static_cast<size_t>(rig.root) + 1;
+  U.paths.insert(at, limbs.size(), {});
+  U.group.insert(U.group.begin() + pos, limbs.size(), group);
+  U.split.insert(U.split.begin() + pos, limbs.size(), 1);
+  for (size_t k = 0; k < limbs.size(); ++k) U.paths[pos + k] = {limbs[k]};
+  U.root = rig.root;
+  for (size_t k = 0; k < limbs.size(); ++k) U.from_root.insert(static_cast<int>(pos + k));
+  return true;
+}
+
+}  // namespace
+
+Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<std::string>& group_names) {
+  Units U = units_of(scene, names);
+  Rig rig = assemble(scene, names, group_names, U);
+  if (split_root_limbs(scene, rig, U)) rig = assemble(scene, names, group_names, U);
   return rig;
 }
 
