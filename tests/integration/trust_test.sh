@@ -158,7 +158,7 @@ check "a second run on a busy run directory: one line, exit 1" \
 wait $pid
 check "the next run removes temporary files a killed run left" '[[ -z $(ls -a "$tmp/int" | grep "\.part") ]]'
 check "... and the next run resumes the fit" \
-  '"$py" -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d[\"resumed_from\"] >= 250 and d[\"iterations\"] == 3000 else 1)" "$tmp/int/fit.json"'
+  '"$py" -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d[\"resumed_from\"] >= 250 and d[\"iterations\"] == 3000 + d.get(\"refined\", {}).get(\"iterations\", 0) else 1)" "$tmp/int/fit.json"'
 
 # 7. Help and version.
 check "svgmotion --version" '"$bin" --version | grep -Eq "^svgmotion [0-9]+\.[0-9]+\.[0-9]+$"'
