@@ -4,6 +4,7 @@
 // its own centre, loops that close, nothing leaving the canvas, and exact errors and warnings.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "svgmotion/error.h"
@@ -320,6 +321,26 @@ TEST_CASE("a stroke's handle outside the canvas does not freeze the motion; its 
   }
   CHECK(left >= 1 - 1e-6);  // 1 % of 100: the margin
   CHECK(left < 6.0);        // and it moved towards the edge
+}
+
+TEST_CASE("a part low beside a raised body is no stand-in for the head: the body's top bends") {
+  // A cobra drawn as its raised body (the root) and a coil lying beside its base.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
+           <path d="M 40 10 L 60 10 L 60 90 L 40 90 Z" fill="#0a0"/>
+           <path d="M 60 75 L 95 75 L 95 90 L 60 90 Z" fill="#070"/></svg>)", "cobra.svg");
+  const Rig rig = build_rig(s, {});
+  REQUIRE(rig.root == 0);
+  // A swing of the head bends the body's top; a wave along the head has no part to run along
+  // (before, the coil stood in and the motion went to the wrong end of the drawing).
+  const MotionPlan nod = plan_from_prompt(parse_prompt("it nods its head"), rig, 1);
+  REQUIRE(nod.actions.size() == 1);
+  CHECK(nod.actions[0].parts == std::vector<int>{0});
+  CHECK(nod.actions[0].region == Region::Top);
+  const MotionPlan slither = plan_from_prompt(parse_prompt("its head slithers"), rig, 1);
+  for (const auto& a : slither.actions) CHECK(std::find(a.parts.begin(), a.parts.end(), 1) == a.parts.end());
+  REQUIRE_FALSE(slither.warnings.empty());
+  CHECK(slither.warnings[0].find("no part for the head") != std::string::npos);
 }
 
 TEST_CASE("a sway that would push a canvas-filling drawing out is scaled alone; the rain keeps its size") {

@@ -167,12 +167,15 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
     int best = -1;
     for (int i : any.empty() ? std::vector<int>{} : any) {
       const double y = rig.parts[i].box.centre().y;
+      // A head stands in only above the root's middle (a snake's coil beside its raised body
+      // is no hood: the top of the root bends instead, Builder::add).
+      if (t == Target::Head && y >= rig.parts[rig.root].box.centre().y) continue;
       const double far = std::fabs(rig.parts[i].box.centre().x - rig.parts[rig.root].box.centre().x);
       if (best < 0 || (t == Target::Tail ? far > std::fabs(rig.parts[best].box.centre().x - rig.parts[rig.root].box.centre().x)
                                           : y < rig.parts[best].box.centre().y))
         best = i;
     }
-    if (best < 0)
+    if (best < 0 && t != Target::Head)
       for (size_t i = 0; i < rig.parts.size(); ++i)
         if (static_cast<int>(i) != rig.root && rig.parts[i].role != Role::Background &&
             (best < 0 || rig.parts[i].box.area() > rig.parts[best].box.area()))
