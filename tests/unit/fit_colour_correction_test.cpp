@@ -34,6 +34,13 @@ std::vector<float> two_blocks(Colour red, Colour blue, Colour paper) {
 
 const float* px(const std::vector<float>& f, int x, int y) { return &f[(static_cast<size_t>(y) * kW + x) * 4]; }
 
+// The largest change of any channel between two frames.
+double max_change(const std::vector<float>& a, const std::vector<float>& b) {
+  double worst = 0;
+  for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, static_cast<double>(std::fabs(a[i] - b[i])));
+  return worst;
+}
+
 }  // namespace
 
 TEST_SUITE("fit") {
@@ -89,9 +96,7 @@ TEST_CASE("colour correction: a clean frame is unchanged, and unknown colours ar
   const std::vector<float> before = f;
   const ColourCorrection cc = correct_colours(f.data(), kW, kH, {red, blue});
   CHECK(cc.applied);
-  double worst = 0;
-  for (size_t i = 0; i < f.size(); ++i) worst = std::max(worst, static_cast<double>(std::fabs(f[i] - before[i])));
-  CHECK(worst < 1e-6);
+  CHECK(max_change(f, before) < 1e-6);
   // A green block the drawing does not have stays green (no palette colour is near it).
   std::vector<float> g = two_blocks(red, {0.1f, 0.9f, 0.1f}, {1, 1, 1});
   correct_colours(g.data(), kW, kH, {red, blue});
@@ -108,9 +113,7 @@ TEST_CASE("colour correction: the paper is not a shaded light grey") {
   const std::vector<float> before = f;
   const ColourCorrection cc = correct_colours(f.data(), kW, kH, {grey, blue});
   CHECK(cc.applied);
-  double worst = 0;
-  for (size_t i = 0; i < f.size(); ++i) worst = std::max(worst, static_cast<double>(std::fabs(f[i] - before[i])));
-  CHECK(worst < 1e-6);
+  CHECK(max_change(f, before) < 1e-6);
 }
 
 TEST_CASE("colour correction: a frame with too little evidence is left alone") {

@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -46,37 +47,25 @@ Motion random_motion(unsigned seed) {
 
 // One frame, straight RGB over white, 4x4 supersampled. Shapes: a disc, a rotating rectangle
 // and an ellipse, each in one palette colour; plus the corruption of `kind`.
-std::vector<float> draw_frame(const Motion& m, Kind kind, int k) {
-  const double t = static_cast<double>(k) / (kK - 1);
-  double cx[3] = {27, 69, 48}, cy[3] = {28, 28, 69};
-  for (int s = 0; s < 3; ++s) {
-    cx[s] += m.ax[s] * std::sin(6.283 * m.f[s] * t + m.px[s]);
-    cy[s] += m.ay[s] * std::sin(6.283 * m.f[s] * t + m.py[s]);
-  }
-  Rgba col[3] = {kPalette[0], kPalette[1], kPalette[2]};
-  if (kind == Kind::Drift)  // all colours shift progressively, 0.21 away at the end
+// The palette at time t: when kind is Drift all colours shift progressively, 0.21 away at the end.
+std::array<Rgba, 3> colours_at(Kind kind, double t) {
+  std::array<Rgba, 3> col = {kPalette[0], kPalette[1], kPalette[2]};
+  if (kind == Kind::Drift)
     for (auto& c : col) c.r += static_cast<float>(0.15 * t), c.g -= static_cast<float>(0.1 * t), c.b += static_cast<float>(0.1 * t);
-  const bool draw_green = !(kind == Kind::Vanish && k >= kK / 2);
-  const bool blob = kind == Kind::Blob && k >= kK / 3;
-  const double angle = 0.5 * t;
+  return col;
+}
+
+// A frame 4x4 supersampled: paint(u, v, c) sets c, the colour at (u, v), which is white unless set.
+template <class Paint>
+std::vector<float> supersampled(Paint paint) {
   std::vector<float> f(static_cast<size_t>(kW) * kH * 4, 1.f);
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {
       double acc[3] = {0, 0, 0};
       for (int sy = 0; sy < 4; ++sy)
         for (int sx = 0; sx < 4; ++sx) {
-          const double u = x + (sx + 0.5) / 4, v = y + (sy + 0.5) / 4;
           double c[3] = {1, 1, 1};
-          auto set = [&](const Rgba& q) { c[0] = q.r, c[1] = q.g, c[2] = q.b; };
-          if ((u - cx[0]) * (u - cx[0]) + (v - cy[0]) * (v - cy[0]) < 13.0 * 13.0) set(col[0]);
-          if (draw_green) {
-            const double du = u - cx[1], dv = v - cy[1];
-            const double ru = du * std::cos(angle) + dv * std::sin(angle), rv = -du * std::sin(angle) + dv * std::cos(angle);
-            if (std::abs(ru) < 13 && std::abs(rv) < 9) set(col[1]);
-          }
-          const double eu = (u - cx[2]) / 16, ev = (v - cy[2]) / 10;
-          if (eu * eu + ev * ev < 1) set(col[2]);
-          if (blob && (u - 84) * (u - 84) + (v - 84) * (v - 84) < 7.0 * 7.0) c[0] = 0.55, c[1] = 0.35, c[2] = 0.05;
+          paint(x + (sx + 0.5) / 4, y + (sy + 0.5) / 4, c);
           for (int i = 0; i < 3; ++i) acc[i] += c[i] / 16;
         }
       float* p = &f[(static_cast<size_t>(y) * kW + x) * 4];
@@ -85,35 +74,47 @@ std::vector<float> draw_frame(const Motion& m, Kind kind, int k) {
   return f;
 }
 
+std::vector<float> draw_frame(const Motion& m, Kind kind, int k) {
+  const double t = static_cast<double>(k) / (kK - 1);
+  double cx[3] = {27, 69, 48}, cy[3] = {28, 28, 69};
+  for (int s = 0; s < 3; ++s) {
+    cx[s] += m.ax[s] * std::sin(6.283 * m.f[s] * t + m.px[s]);
+    cy[s] += m.ay[s] * std::sin(6.283 * m.f[s] * t + m.py[s]);
+  }
+  const std::array<Rgba, 3> col = colours_at(kind, t);
+  const bool draw_green = !(kind == Kind::Vanish && k >= kK / 2);
+  const bool blob = kind == Kind::Blob && k >= kK / 3;
+  const double angle = 0.5 * t;
+  return supersampled([&](double u, double v, double* c) {
+    auto set = [&](const Rgba& q) { c[0] = q.r, c[1] = q.g, c[2] = q.b; };
+    if ((u - cx[0]) * (u - cx[0]) + (v - cy[0]) * (v - cy[0]) < 13.0 * 13.0) set(col[0]);
+    if (draw_green) {
+      const double du = u - cx[1], dv = v - cy[1];
+      const double ru = du * std::cos(angle) + dv * std::sin(angle), rv = -du * std::sin(angle) + dv * std::cos(angle);
+      if (std::abs(ru) < 13 && std::abs(rv) < 9) set(col[1]);
+    }
+    const double eu = (u - cx[2]) / 16, ev = (v - cy[2]) / 10;
+    if (eu * eu + ev * ev < 1) set(col[2]);
+    if (blob && (u - 84) * (u - 84) + (v - 84) * (v - 84) < 7.0 * 7.0) c[0] = 0.55, c[1] = 0.35, c[2] = 0.05;
+  });
+}
+
 // A line drawing (the livesketch kind) as the ranker sees it once shrunk to its analysis size:
 // strokes 1.2 px wide, so no pixel holds one colour alone; two of them run side by side (the
 // pixels between are mixtures of the two, and the only interior ones: 3x3 all foreground) and
 // a third crosses them. Each slides 4 px sideways; Drift shifts the colours as draw_frame does.
 std::vector<float> draw_lines(Kind kind, int k) {
   const double t = static_cast<double>(k) / (kK - 1);
-  Rgba col[3] = {kPalette[0], kPalette[1], kPalette[2]};
-  if (kind == Kind::Drift)
-    for (auto& c : col) c.r += static_cast<float>(0.15 * t), c.g -= static_cast<float>(0.1 * t), c.b += static_cast<float>(0.1 * t);
+  const std::array<Rgba, 3> col = colours_at(kind, t);
   const double seg[3][4] = {{8, 40, 88, 40}, {8, 41.2, 88, 41.2}, {48.5, 8, 48.5, 90}};  // x0 y0 x1 y1
-  std::vector<float> f(static_cast<size_t>(kW) * kH * 4, 1.f);
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) {
-      double acc[3] = {0, 0, 0};
-      for (int sy = 0; sy < 4; ++sy)
-        for (int sx = 0; sx < 4; ++sx) {
-          const double u = x + (sx + 0.5) / 4 - 4 * t, v = y + (sy + 0.5) / 4;
-          double c[3] = {1, 1, 1};
-          for (int s = 0; s < 3; ++s) {
-            const double dx = seg[s][2] - seg[s][0], dy = seg[s][3] - seg[s][1];
-            const double a = std::clamp(((u - seg[s][0]) * dx + (v - seg[s][1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
-            if (std::hypot(u - seg[s][0] - a * dx, v - seg[s][1] - a * dy) < 0.6) c[0] = col[s].r, c[1] = col[s].g, c[2] = col[s].b;
-          }
-          for (int i = 0; i < 3; ++i) acc[i] += c[i] / 16;
-        }
-      float* p = &f[(static_cast<size_t>(y) * kW + x) * 4];
-      for (int i = 0; i < 3; ++i) p[i] = static_cast<float>(acc[i]);
+  return supersampled([&](double u0, double v, double* c) {
+    const double u = u0 - 4 * t;
+    for (int s = 0; s < 3; ++s) {
+      const double dx = seg[s][2] - seg[s][0], dy = seg[s][3] - seg[s][1];
+      const double a = std::clamp(((u - seg[s][0]) * dx + (v - seg[s][1]) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+      if (std::hypot(u - seg[s][0] - a * dx, v - seg[s][1] - a * dy) < 0.6) c[0] = col[s].r, c[1] = col[s].g, c[2] = col[s].b;
     }
-  return f;
+  });
 }
 
 TargetFrames make_candidate(const Motion& m, Kind kind, bool lines = false) {

@@ -21,30 +21,6 @@ constexpr double kMaxSigma = 2.0, kStep = 0.05;
 constexpr double kMinGain = 0.9;
 constexpr double kMinRestPsnr = 38;
 
-// A separable zero-padded blur of 3-channel planes with the loss's taps for σ (as the loss does it).
-std::vector<double> blur(const std::vector<double>& in, int W, int H, double sigma) {
-  const std::vector<double> g = loss_stencil(sigma);
-  const int R = static_cast<int>(g.size() / 2);
-  std::vector<double> tmp(in.size()), out(in.size());
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x)
-      for (int c = 0; c < 3; ++c) {
-        double s = 0;
-        for (int j = -R; j <= R; ++j)
-          if (x + j >= 0 && x + j < W) s += g[static_cast<size_t>(j + R)] * in[3 * (static_cast<size_t>(y) * W + x + j) + c];
-        tmp[3 * (static_cast<size_t>(y) * W + x) + c] = s;
-      }
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x)
-      for (int c = 0; c < 3; ++c) {
-        double s = 0;
-        for (int j = -R; j <= R; ++j)
-          if (y + j >= 0 && y + j < H) s += g[static_cast<size_t>(j + R)] * tmp[3 * (static_cast<size_t>(y + j) * W + x) + c];
-        out[3 * (static_cast<size_t>(y) * W + x) + c] = s;
-      }
-  return out;
-}
-
 }  // namespace
 
 BlurMatch match_render_blur(const RgbaImage& rest, const std::vector<float>& target_rgba) {
@@ -61,9 +37,9 @@ BlurMatch match_render_blur(const RgbaImage& rest, const std::vector<float>& tar
       render[3 * p + c] = (1 - rest.rgba[4 * p + c] / 255.0) * a;
       target[3 * p + c] = 1 - target_rgba[4 * p + c];
     }
-  const std::vector<double> gt = blur(target, W, H, kLossSigma);
+  const std::vector<double> gt = blur_rgb(target, W, H, loss_stencil(kLossSigma));
   auto residual = [&](double sigma) {
-    const std::vector<double> gr = blur(render, W, H, sigma);
+    const std::vector<double> gr = blur_rgb(render, W, H, loss_stencil(sigma));
     double s = 0;
     for (size_t i = 0; i < gr.size(); ++i) s += (gr[i] - gt[i]) * (gr[i] - gt[i]);
     return s;

@@ -32,6 +32,11 @@ inline std::vector<double> loss_taps(double sigma) {
   return g;
 }
 
+// The loss's blur on the host, in double: `stencil` (g_{-R}..g_R) applied separably, with
+// zero padding, to W x H pixels of 3 interleaved channels. Shared by the loss's constants
+// (raster_cl_backward.cpp) and blur matching (fit/blur_match.cpp).
+std::vector<double> blur_rgb(const std::vector<double>& in, int W, int H, const std::vector<double>& stencil);
+
 // The taps as a full stencil, g_{-R}..g_R.
 inline std::vector<double> loss_stencil(double sigma) {
   const std::vector<double> t = loss_taps(sigma);

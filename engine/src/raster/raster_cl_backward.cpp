@@ -101,43 +101,21 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
   if (bg == q_background_) return;
   const int W = plan_.width, H = plan_.height, K = frames_;
   const size_t px = static_cast<size_t>(W) * H;
-  // The 1-D taps in double (the render's, loss.cl's G0, G1, G2, and the target's) and a
-  // separable zero-padded blur with them.
+  // The render's blur (loss.cl's taps) and the target's, in double.
   const std::vector<double> g_render = loss_stencil(render_sigma_), g_target = loss_stencil(kLossSigma);
-  auto blur = [&](const std::vector<double>& in, std::vector<double>& out, const std::vector<double>& g) {
-    const int R = static_cast<int>(g.size() / 2);
-    std::vector<double> tmp(in.size());
-    for (int y = 0; y < H; ++y)
-      for (int x = 0; x < W; ++x)
-        for (int c = 0; c < 3; ++c) {
-          double s = 0;
-          for (int j = -R; j <= R; ++j)
-            if (x + j >= 0 && x + j < W) s += g[static_cast<size_t>(j + R)] * in[3 * (static_cast<size_t>(y) * W + x + j) + c];
-          tmp[3 * (static_cast<size_t>(y) * W + x) + c] = s;
-        }
-    out.assign(in.size(), 0.0);
-    for (int y = 0; y < H; ++y)
-      for (int x = 0; x < W; ++x)
-        for (int c = 0; c < 3; ++c) {
-          double s = 0;
-          for (int j = -R; j <= R; ++j)
-            if (y + j >= 0 && y + j < H) s += g[static_cast<size_t>(j + R)] * tmp[3 * (static_cast<size_t>(y + j) * W + x) + c];
-          out[3 * (static_cast<size_t>(y) * W + x) + c] = s;
-        }
-  };
-  std::vector<double> ones(px * 3, 1.0), g1, t(px * 3), gt, q(px * 3), r;
-  blur(ones, g1, g_render);
+  const std::vector<double> g1 = blur_rgb(std::vector<double>(px * 3, 1.0), W, H, g_render);
+  std::vector<double> t(px * 3), q(px * 3);
   std::vector<float> qf(px * K * 4), rf(px * K * 4), qsum(K);
   for (int k = 0; k < K; ++k) {
     for (size_t p = 0; p < px; ++p)
       for (int c = 0; c < 3; ++c) t[3 * p + c] = targets_[(k * px + p) * 4 + c];
-    blur(t, gt, g_target);
+    const std::vector<double> gt = blur_rgb(t, W, H, g_target);
     double sum = 0;
     for (size_t i = 0; i < q.size(); ++i) {
       q[i] = bg[i % 3] * g1[i] - gt[i];
       sum += q[i] * q[i];
     }
-    blur(q, r, g_render);
+    const std::vector<double> r = blur_rgb(q, W, H, g_render);
     qsum[k] = static_cast<float>(sum);
     for (size_t p = 0; p < px; ++p)
       for (int c = 0; c < 3; ++c) {
