@@ -226,4 +226,22 @@ TEST_CASE("in-betweens: keyframes kept exactly, a smooth motion followed far clo
   CHECK(in_between(kp, kt, 2, {0, 1}, 3, true).times == kt);
 }
 
+TEST_CASE("in-betweens: a longer interval between retimed keyframes gets proportionally more") {
+  // An 8 fps clip in a 24 fps container: keyframes at the first frame of each held run, one
+  // interval twice as long as the others (frames 9 to 15). With 3 in-betweens per interval of
+  // the mean length (24/7 frames), every frame of the clip is written, the long interval's 5
+  // included; a fixed 3 per interval wrote only 3 of them, and the browser drew a straight
+  // line over the other two.
+  std::vector<double> frames;
+  for (int i = 0; i < 25; ++i) frames.push_back(i / 24.0);
+  std::vector<double> kt, kp;
+  for (int f : {0, 3, 6, 9, 15, 18, 21, 24}) kt.push_back(f / 24.0), kp.push_back(f * f);
+  const InBetween ib = in_between(kp, kt, 1, frames, 3, /*closed=*/false);
+  CHECK(ib.times == frames);
+  // Evenly spaced keyframes keep exactly 3 per interval (one frame of each 4 left out).
+  std::vector<double> even_t, even_p;
+  for (int f = 0; f <= 24; f += 4) even_t.push_back(f / 24.0), even_p.push_back(f);
+  CHECK(in_between(even_p, even_t, 1, frames, 3, false).times.size() == 7 + 6 * 3);
+}
+
 }  // TEST_SUITE

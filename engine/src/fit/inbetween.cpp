@@ -48,7 +48,13 @@ InBetween in_between(const std::vector<double>& points, const std::vector<double
       if (f > t0 + 1e-9 && f < t1 - 1e-9) inside.push_back(f);
     if (inside.empty()) continue;
     std::vector<double> pick;
-    const size_t n = std::min(inside.size(), static_cast<size_t>(std::max(0, max_per_interval)));
+    // `max_per_interval` is for an interval of the mean length; a longer one (keyframes retimed
+    // to held frames are spaced unevenly) gets proportionally more, so in-betweens stay as dense
+    // in time everywhere and no frame of a long interval is left to the browser's straight line.
+    const double mean_h = (times[K - 1] - times[0]) / static_cast<double>(K - 1);
+    const double share = mean_h > 0 ? h / mean_h : 1;
+    const size_t budget = static_cast<size_t>(std::ceil(std::max(0, max_per_interval) * share - 1e-9));
+    const size_t n = std::min(inside.size(), budget);
     if (n == 0) continue;
     for (size_t j = 0; j < n; ++j) pick.push_back(inside[(2 * j + 1) * inside.size() / (2 * n)]);
     for (double f : pick) {

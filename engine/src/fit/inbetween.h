@@ -24,7 +24,8 @@ struct InBetween {
 
 // `points`: K * per_key numbers (keyframe k's control points); `times`: K increasing key times
 // in [0, 1]; `frames`: the times of the target's frames (the candidates for in-betweens);
-// at most `max_per_interval` frames (evenly chosen) are added between two keyframes.
+// at most `max_per_interval` frames (evenly chosen) are added between two keyframes the mean
+// interval apart, proportionally more (rounded up) between two further apart.
 // `closed`: the motion returns to its start and goes on through it; the last keyframe is
 // written as the first one's shape.
 InBetween in_between(const std::vector<double>& points, const std::vector<double>& times,
