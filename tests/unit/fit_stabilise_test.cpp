@@ -47,18 +47,26 @@ std::array<double, 2> jitter(int i) {
   return {1.5 * std::sin(12.9898 * i + 1.0), 1.5 * std::sin(78.233 * i + 2.0)};
 }
 
-// The low-pass the estimator applies: a Gaussian-weighted straight-line fit around each frame,
-// taken at that frame.
+// The low-pass the estimator applies: a Gaussian-weighted parabola fitted around each frame,
+// taken at that frame (weighted least squares through the 3x3 normal equations, by Cramer's
+// rule: an independent route to the estimator's).
 std::vector<double> low_pass(const std::vector<double>& v, double sigma) {
   const int n = static_cast<int>(v.size()), r = static_cast<int>(std::ceil(3 * sigma));
   std::vector<double> out(v.size());
+  auto det3 = [](const double m[3][3]) {
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  };
   for (int i = 0; i < n; ++i) {
-    double s0 = 0, s1 = 0, s2 = 0, sv = 0, svt = 0;
+    double s[5] = {0, 0, 0, 0, 0}, sv[3] = {0, 0, 0};  // Σ w t^k, Σ w t^k v
     for (int j = std::max(0, i - r); j <= std::min(n - 1, i + r); ++j) {
       const double t = j - i, w = std::exp(-0.5 * t * t / (sigma * sigma));
-      s0 += w, s1 += w * t, s2 += w * t * t, sv += w * v[static_cast<size_t>(j)], svt += w * t * v[static_cast<size_t>(j)];
+      for (int k = 0; k < 5; ++k) s[k] += w * std::pow(t, k);
+      for (int k = 0; k < 3; ++k) sv[k] += w * std::pow(t, k) * v[static_cast<size_t>(j)];
     }
-    out[static_cast<size_t>(i)] = (s2 * sv - s1 * svt) / (s0 * s2 - s1 * s1);
+    const double m[3][3] = {{s[0], s[1], s[2]}, {s[1], s[2], s[3]}, {s[2], s[3], s[4]}};
+    const double m0[3][3] = {{sv[0], s[1], s[2]}, {sv[1], s[2], s[3]}, {sv[2], s[3], s[4]}};
+    out[static_cast<size_t>(i)] = det3(m0) / det3(m);
   }
   return out;
 }
@@ -79,18 +87,19 @@ TEST_CASE("stabilise: the shake of a jittered clip is its jitter minus the jitte
   ShakeEstimator est(kW);
   std::vector<double> jx, jy;
   for (int i = 0; i < N; ++i) {
-    // A slow deliberate drift of 0.25 px per frame to the right is motion, not shake.
+    // A slow deliberate drift of 0.25 px per frame to the right and a fall accelerating
+    // downwards (a hop's second half) are motion, not shake.
     const auto j = jitter(i);
     jx.push_back(j[0]), jy.push_back(j[1]);
-    est.add(figure(0.25 * i + j[0], j[1]));
+    est.add(figure(0.25 * i + j[0], 0.008 * i * i + j[1]));
   }
   const auto shake = est.shake(sigma);
   REQUIRE(shake.size() == N);
   const std::vector<double> lx = low_pass(jx, sigma), ly = low_pass(jy, sigma);
   double worst = 0, raw = 0;
   for (int i = 0; i < N; ++i) {
-    // The estimator sees the drift too; its low-pass of a straight line is the line, ends
-    // included.
+    // The estimator sees the drift and the fall too; its low-pass of a parabola is the
+    // parabola, ends included.
     worst = std::max({worst, std::fabs(shake[static_cast<size_t>(i)][0] - (jx[static_cast<size_t>(i)] - lx[static_cast<size_t>(i)])),
                       std::fabs(shake[static_cast<size_t>(i)][1] - (jy[static_cast<size_t>(i)] - ly[static_cast<size_t>(i)]))});
     raw = std::max({raw, std::fabs(jx[static_cast<size_t>(i)]), std::fabs(jy[static_cast<size_t>(i)])});
@@ -114,7 +123,8 @@ TEST_CASE("stabilise: a still clip has no shake, and removing a known shake rest
 
 TEST_CASE("stabilise: load_target's keyframes of a shaking clip come back close to the clean clip") {
   test::TempDir dir("svgm_stabilise_test");
-  constexpr int N = 25, K = 5;
+  // Two seconds at 24 fps (the low-pass's window, 0.2 s either way, needs frames on both sides).
+  constexpr int N = 49, K = 7;
   for (int i = 0; i < N; ++i) {
     const auto j = jitter(i);
     char name[32];

@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include <Eigen/Dense>
+
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
 
@@ -76,22 +78,29 @@ std::vector<std::array<double, 2>> ShakeEstimator::shake(double sigma_frames) co
   if (!(sigma_frames > 0)) return out;
   const int r = static_cast<int>(std::ceil(3 * sigma_frames));
   for (int i = 0; i < n; ++i) {
-    // The low-pass is a Gaussian-weighted straight line through the path around i, taken at i
-    // (local linear regression): a steady drift passes through whole, also where the window
-    // runs past either end of the clip, where a plain weighted mean would lag it.
-    double s0 = 0, s1 = 0, s2 = 0, sx = 0, sy = 0, sxt = 0, syt = 0;
+    // The low-pass is a Gaussian-weighted parabola through the path around i, taken at i
+    // (local quadratic regression): a steady drift and a constant acceleration (a hop's arc, a
+    // swing's turn) pass through whole, also where the window runs past either end of the
+    // clip. A straight line (local linear) bends off a curving motion by a share of its
+    // curvature, which then counted as shake; on non-rigid 49-frame clips with 1-2 px shake
+    // the parabola over a 0.2 s window left 0.53-0.59 px of the shake, the line over 0.125 s
+    // 0.57-0.98 px.
+    Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+    Eigen::Matrix<double, 3, 2> b = Eigen::Matrix<double, 3, 2>::Zero();
     for (int j = std::max(0, i - r); j <= std::min(n - 1, i + r); ++j) {
       const double t = j - i, w = std::exp(-0.5 * t * t / (sigma_frames * sigma_frames));
+      const Eigen::Vector3d basis(1, t, t * t);
       const auto& p = path_[static_cast<size_t>(j)];
-      s0 += w, s1 += w * t, s2 += w * t * t;
-      sx += w * p[0], sy += w * p[1], sxt += w * t * p[0], syt += w * t * p[1];
+      a.noalias() += w * basis * basis.transpose();
+      b.col(0) += w * p[0] * basis;
+      b.col(1) += w * p[1] * basis;
     }
-    // Intercept of the weighted fit a + b t: (s2 Σwx − s1 Σwtx) / (s0 s2 − s1²).
-    const double det = s0 * s2 - s1 * s1;
-    const double lx = det > 1e-12 ? (s2 * sx - s1 * sxt) / det : sx / s0;
-    const double ly = det > 1e-12 ? (s2 * sy - s1 * syt) / det : sy / s0;
+    // Too few frames for a parabola (a clip of one or two): the weighted mean.
+    Eigen::Matrix<double, 3, 2> c = Eigen::Matrix<double, 3, 2>::Zero();
+    if (std::fabs(a.determinant()) > 1e-9) c = a.ldlt().solve(b);
+    else c.row(0) = b.row(0) / a(0, 0);
     const auto& p = path_[static_cast<size_t>(i)];
-    out[static_cast<size_t>(i)] = {(p[0] - lx) * scale_, (p[1] - ly) * scale_};
+    out[static_cast<size_t>(i)] = {(p[0] - c(0, 0)) * scale_, (p[1] - c(0, 1)) * scale_};
   }
   return out;
 }

@@ -7,7 +7,7 @@
 // The camera path is estimated from the frames themselves: the translation between consecutive
 // frames by phase correlation of their "ink" (1 - grey, so the white background weighs nothing),
 // summed into a path. Shake is what remains of that path after a low-pass over time (a
-// Gaussian-weighted local straight line, so a steady drift passes whole);
+// Gaussian-weighted local parabola, so a steady drift or acceleration passes whole);
 // the low-pass part, a figure's deliberate drift or a jump's arc, is kept. This is the classic
 // smoothed-camera-path stabiliser (e.g. Matsushita et al. 2006, "Full-frame video
 // stabilization"; here with translation only, which is what shake of a fixed camera is).
