@@ -451,11 +451,53 @@ TEST_CASE("a ferris wheel's small cabins ride round with the turning wheel, upri
     CHECK(b.x - a.x == doctest::Approx(pts[cabin + 1].x - pts[cabin].x));  // upright: no turn
     CHECK(b.y - a.y == doctest::Approx(pts[cabin + 1].y - pts[cabin].y));
   }
-  // At a quarter of the loop the cabin's corner has gone a quarter round the centre (100,100).
-  const Vec2 q = pts[3 * per + cabin], r = pts[cabin];
-  CHECK(std::hypot(q.x - 100, q.y - 100) == doctest::Approx(std::hypot(r.x - 100, r.y - 100)).epsilon(1e-6));
-  CHECK(std::hypot(q.x - r.x, q.y - r.y) > 50.0);
+  // The cabin hangs from the middle of its top, (160,94): at a quarter of the loop that point
+  // has gone a quarter round the centre (100,100), to (94,40) or (106,160), the cabin below it.
+  RigBox cb;
+  for (size_t i = cabin; i < per; ++i) cb.add(pts[3 * per + i]);
+  const Vec2 q{cb.centre().x, cb.y0};
+  CHECK(std::hypot(q.x - 100, q.y - 100) == doctest::Approx(std::hypot(60.0, 6.0)).epsilon(1e-6));
+  CHECK(std::fabs(q.x - 100) == doctest::Approx(6.0).epsilon(1e-6));
   CHECK(std::hypot(pts[0].x - pts[6 * per].x, pts[0].y - pts[6 * per].y) == 0.0);  // the stand holds
+}
+
+TEST_CASE("a cabin hanging below the rim at the bottom stays in the canvas when it rides to the top") {
+  // A wheel filling its canvas (centre (50,50), radius 45) and a cabin hanging from the rim
+  // at its lowest point, inside the wheel's box (the rig hangs it from the wheel): turned with
+  // the wheel or carried by its middle, it would stand out above the top.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
+           <g><path d="M 5 50 C 5 25 25 5 50 5 C 75 5 95 25 95 50 C 95 75 75 95 50 95 C 25 95 5 75 5 50 Z M 48 8 L 52 8 L 52 92 L 48 92 Z" fill="#d80" fill-rule="evenodd"/></g>
+           <g><rect x="45" y="84" width="10" height="10" fill="#0a0"/></g>
+           <g><rect x="78" y="78" width="12" height="12" fill="#00a"/></g></svg>)", "ferris_low.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("the wheel turns"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].parts == std::vector<int>{0});
+  const int F = 25;
+  const auto pts = animate_plan(s, rig, plan, F);
+  const size_t per = pts.size() / F;
+  size_t cabin = 0;
+  for (const auto& sp : s.paths[0].subpaths) cabin += sp.points.size();
+  size_t corner = cabin;
+  for (const auto& sp : s.paths[1].subpaths) corner += sp.points.size();
+  double top = 1e9;
+  for (int f = 0; f < F; ++f)
+    for (size_t i = cabin; i < corner; ++i) top = std::min(top, pts[f * per + i].y);
+  CHECK(top == doctest::Approx(16.0).epsilon(1e-6));  // its top (50,84) goes round to (50,16)
+  for (int f = 0; f < F; ++f) {  // both upright: level edges, their sizes kept; both in the canvas
+    RigBox b, c;
+    for (size_t i = cabin; i < corner; ++i) b.add(pts[f * per + i]);
+    for (size_t i = corner; i < per; ++i) c.add(pts[f * per + i]);
+    CHECK(b.w() == doctest::Approx(10.0));
+    CHECK(b.h() == doctest::Approx(10.0));
+    CHECK(c.w() == doctest::Approx(12.0));
+    CHECK(c.y0 >= 0.0);
+  }
+  // The rig hangs both from the wheel; the one in the box's corner has its middle (84,84)
+  // beyond the rim's radius (48 > 45) and rides too, hanging from (84,78).
+  CHECK(rig.parts[1].parent == 0);
+  CHECK(rig.parts[2].parent == 0);
 }
 
 }  // TEST_SUITE

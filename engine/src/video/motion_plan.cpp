@@ -31,10 +31,13 @@ constexpr double kArmHostWider = 1.15;
 // within this share of a wheel's width from its centre turn with it.
 constexpr double kWheelShare = 0.5;
 constexpr double kConcentric = 0.1;
-// A part whose middle is within this share of a turning wheel's radius rides round with it.
-// and it is small beside the wheel (at most this share of its box: a cabin, not a stand).
+// A part whose middle is within this share of a turning wheel's radius rides round with it
+// when it is small beside the wheel (at most this share of its box: a cabin, not a stand).
 constexpr double kRideReach = 1.05;
 constexpr double kRideMaxArea = 0.1;
+// ... and its middle at least this share of the radius out from the centre (on the rim, not a
+// spoke: what hangs from the wheel nearer its centre turns with it).
+constexpr double kRimShare = 0.7;
 // A part hanging from a spinning part turns with it when this share of its box is inside (a
 // stand reaching into the wheel's box is not carried).
 constexpr double kSpinInsideShare = 0.9;
@@ -681,27 +684,39 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     auto depth = [&](int g) { int d = 0; for (int p = rig.parts[g].parent; p >= 0 && d < 64; p = rig.parts[p].parent) ++d; return d; };
     std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return depth(x) < depth(y); });
     for (int g : order) world[g] = rig.parts[g].parent >= 0 ? world[rig.parts[g].parent] * local[g] : local[g];
-    // A spinning part turns in its own frame, and carries only what hangs from it inside its
-    // box (a ferris wheel's cabins, not its stand).
+    // A spinning part turns in its own frame, and carries what hangs from it inside its box
+    // (its spokes and hub, not its stand). Small parts with their middle on its rim (a ferris
+    // wheel's cabins, whether the rig hangs them from the wheel or elsewhere) ride round with it
+    // upright: each hangs from the middle of its top, which goes round the wheel's centre.
+    // Turned with the wheel, or carried round by its middle, a cabin hanging below the rim at
+    // the bottom came to stand out above it at the top, and left the canvas.
+    auto on_rim = [&](int g, int a) {
+      const RigPart& A = rig.parts[a];
+      const RigBox& gb = rig.parts[g].box;
+      const Vec2 d = gb.centre() - A.box.centre();
+      const double r = std::hypot(d.x, d.y), R = 0.5 * A.box.w();
+      // (In a corner of the wheel's box a cabin's middle may lie beyond the rim's radius.)
+      return a != g && gb.area() <= kRideMaxArea * A.box.area() && r >= kRimShare * R &&
+             (r <= kRideReach * R || overlap_share(gb, A.box) >= kSpinInsideShare);
+    };
     for (int g = 0; g < G; ++g) {
-      bool carried = false;
+      int turns_with = -1, rides = -1;
       for (int a = g, guard = 0; a >= 0 && guard < 64; a = rig.parts[a].parent, ++guard)
         if (spins[a] && (a == g || overlap_share(rig.parts[g].box, rig.parts[a].box) >= kSpinInsideShare)) {
-          world[g] = world[g] * spin[a];
-          carried = true;
+          (on_rim(g, a) ? rides : turns_with) = a;
           break;
         }
-      // Smaller parts elsewhere in the rig with their middle on a turning wheel (a ferris
-      // wheel's cabins) ride round with it, staying upright.
-      if (carried || g == rig.root || rig.parts[g].role == Role::Background) continue;
-      for (int a = 0; a < G; ++a) {
-        const RigPart& A = rig.parts[a];
-        const Vec2 c = rig.parts[g].box.centre(), d = c - A.box.centre();
-        if (!spins[a] || a == g || rig.parts[g].box.area() > kRideMaxArea * A.box.area() || std::hypot(d.x, d.y) > kRideReach * 0.5 * A.box.w()) continue;
-        const Vec2 to = spin[a].apply(c);
-        world[g] = Affine::translate(to.x - c.x, to.y - c.y) * world[g];
-        break;
+      if (turns_with >= 0) {
+        world[g] = world[g] * spin[turns_with];
+        continue;
       }
+      if (g == rig.root || rig.parts[g].role == Role::Background) continue;
+      for (int a = 0; a < G && rides < 0; ++a)
+        if (spins[a] && on_rim(g, a)) rides = a;
+      if (rides < 0) continue;
+      const RigBox& gb = rig.parts[g].box;
+      const Vec2 hang{gb.centre().x, gb.y0}, to = spin[rides].apply(hang);
+      world[g] = Affine::translate(to.x - hang.x, to.y - hang.y) * world[g];
     }
 
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
@@ -765,7 +780,8 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
 namespace {
 
 // Why `pts` (frames of animate_plan) breaks a limit of fit_plan, or "" when it does not.
-std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const std::vector<char>& exempt, int frames, int K) {
+std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const std::vector<char>& exempt,
+                         const std::vector<char>& by_curve, int frames, int K) {
   const double m = kFrameMargin * std::min(scene.width, scene.height);
   const double x0 = m, y0 = m, x1 = scene.width - m, y1 = scene.height - m;
   const double max_step = kMaxStep * std::hypot(scene.width, scene.height);
@@ -775,7 +791,10 @@ std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const
   // rest, a drawing touching the edge, may use the band). One already outside the canvas (a
   // line drawing's handle: one 0.7 px out froze a galloping horse) may move: its curve is
   // held instead, each cubic at t = 0, 1/4, 1/2, 3/4, a point of it already outside at rest
-  // going at most 0.9 of the margin farther out.
+  // going at most 0.9 of the margin farther out. The points of a spinning part are held by their
+  // curves too: a turning circle stays where it is while its handles (0.55 of the radius off
+  // the circle) sweep out beyond it, past the edge of a canvas the wheel fills; held by
+  // the handles, no turn of a ferris wheel could stay in.
   auto allowed_for = [&](double rest) { return rest > m ? rest + kMarginUse * m : rest > 0 ? std::max(rest, kMarginUse * m) : 0.0; };
   auto at = [&](int f, size_t i, double t) {
     const Vec2* c = &pts[f * per + i];
@@ -788,7 +807,7 @@ std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const
       const size_t n = sp.points.size();
       for (size_t k = 0; k < n; ++k) {
         const double rest = outside(pts[i + k]);
-        if (rest > m) {
+        if (rest > m || by_curve[i + k]) {
           // The segments this point shapes: the one it starts or ends, or whose handle it is.
           const size_t s0 = k / 3 * 3, first = (k % 3 == 0 && k >= 3) ? s0 - 3 : s0;
           for (size_t s = first; s <= s0 && s + 3 < n; s += 3)
@@ -822,7 +841,7 @@ std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const
 void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
   // Points exempt from the step limit: falling elements (they jump back while invisible) and
   // spinning parts (whole turns cannot be scaled; rotation is what flow tracking follows best).
-  std::vector<char> exempt;
+  std::vector<char> exempt, by_curve;
   {
     std::set<int> spinning;
     for (const auto& a : plan.actions)
@@ -834,10 +853,14 @@ void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, 
     if (falls)
       for (const auto& el : rig.repeated) falling.insert(el.begin(), el.end());
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
-      bool ex = falling.count(static_cast<int>(pi)) > 0;
+      bool spin = false;
       for (int g = rig.part_of_path[pi], guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
-        ex = ex || spinning.count(g) > 0;
-      for (const auto& sp : scene.paths[pi].subpaths) exempt.insert(exempt.end(), sp.points.size(), ex);
+        spin = spin || spinning.count(g) > 0;
+      const bool ex = spin || falling.count(static_cast<int>(pi)) > 0;
+      for (const auto& sp : scene.paths[pi].subpaths) {
+        exempt.insert(exempt.end(), sp.points.size(), ex);
+        by_curve.insert(by_curve.end(), sp.points.size(), spin);
+      }
     }
   }
   const int K = std::clamp(keyframes, 2, frames);
@@ -856,7 +879,7 @@ void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, 
     for (int attempt = 0;; ++attempt) {
       if (!all) one.actions[i].scale = scale;
       else one.scale = scale;
-      const std::string why = limit_broken(scene, animate_plan(scene, rig, one, frames), exempt, frames, K);
+      const std::string why = limit_broken(scene, animate_plan(scene, rig, one, frames), exempt, by_curve, frames, K);
       const std::string what = all ? "the motion" : plan.actions[i].verb + " (" + primitive_name(plan.actions[i].primitive) + ")";
       if (why.empty()) {
         if (scale < 1) {
@@ -943,7 +966,6 @@ std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>&
         m.rest.add(rest);
         for (int f = 0; f < frames; ++f) {
           const Vec2 q = pts[f * per + i];
-          m.swept.add(q);
           far = std::max(far, std::hypot(q.x - rest.x, q.y - rest.y));
         }
         m.max_travel = std::max(m.max_travel, far);
@@ -953,6 +975,23 @@ std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>&
         ++i;
       }
     m.mean_travel = m.points ? sum / m.points : 0;
+  }
+  // The box each path's curves sweep: every cubic at t = 0, 1/4, 1/2, 3/4, 1 in every frame
+  // (the drawing, not its handles: a turning circle's handles sweep beyond the circle).
+  for (int f = 0; f < frames; ++f) {
+    size_t j = 0;
+    for (size_t p = 0; p < scene.paths.size(); ++p)
+      for (const auto& sp : scene.paths[p].subpaths) {
+        const Vec2* c = &pts[f * per + j];
+        for (size_t s = 0; s + 3 < sp.points.size(); s += 3)
+          for (double t : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+            const double u = 1 - t;
+            out[p].swept.add(u * u * u * c[s] + 3 * u * u * t * c[s + 1] + 3 * u * t * t * c[s + 2] + t * t * t * c[s + 3]);
+          }
+        if (sp.points.size() < 4)
+          for (size_t s = 0; s < sp.points.size(); ++s) out[p].swept.add(c[s]);
+        j += sp.points.size();
+      }
   }
   return out;
 }

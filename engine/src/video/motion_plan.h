@@ -11,8 +11,8 @@
 // repeated elements, which each keep their own phase.
 //
 // Two limits keep the target followable (fit_plan): no control point leaves the canvas (less a
-// margin of kFrameMargin; a point already outside it at rest, a line drawing's handle, may move
-// while the curves it shapes stay in), and no point travels farther than kMaxStep of the
+// margin of kFrameMargin; a point already outside it at rest, a line drawing's handle, or a
+// point of a spinning part, may move while the curves it shapes stay in), and no point travels farther than kMaxStep of the
 // canvas diagonal between two keyframes. When either fails
 // the amplitudes are scaled down (spins keep whole turns; falls are shortened per element).
 #pragma once
@@ -98,7 +98,8 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
 // (animate_plan's points): the largest and the mean (over points) of each point's largest
 // distance, and the box the path sweeps; in the JSON also each control point's rest position and
 // travel ("point_travel": [x, y, travel, ...] rounded to 0.1), so a reader can check what moved
-// where (tests/bench/motion_score.py).
+// where (tests/bench/motion_score.py). The swept box is that of the path's curves (each cubic
+// at quarters), not of its handles.
 struct PathMotion {
   double max_travel = 0, mean_travel = 0;
   int points = 0;
