@@ -156,7 +156,7 @@ TEST_CASE("rain falls and the umbrella sways: drops fall in their own phases, th
   MotionPlan plan = fx.plan("rain falls on the umbrella and it sways");
   REQUIRE(plan.actions.size() == 2);
   CHECK(plan.actions[0].primitive == Primitive::Fall);
-  CHECK(plan.actions[1].primitive == Primitive::Rock);
+  CHECK(plan.actions[1].primitive == Primitive::Sway);
   const int F = 25;
   fit_plan(fx.scene, fx.rig, plan, F, 9);
   const auto pts = animate_plan(fx.scene, fx.rig, plan, F);
@@ -264,7 +264,7 @@ TEST_CASE("a prompt with no motion word sways gently, naming the words it did no
   const Fixture fx("bird.svg");
   const MotionPlan plan = fx.plan("nothing happens here");
   REQUIRE(plan.actions.size() == 1);
-  CHECK(plan.actions[0].primitive == Primitive::Rock);
+  CHECK(plan.actions[0].primitive == Primitive::Sway);
   REQUIRE(plan.warnings.size() == 1);
   CHECK(plan.warnings[0] == "no motion understood in the prompt (not understood: nothing, happens, here); the figure sways gently");
   CHECK(plan.not_understood == std::vector<std::string>{"nothing", "happens", "here"});
@@ -347,14 +347,14 @@ TEST_CASE("a sway that would push a canvas-filling drawing out is scaled alone; 
   // A canopy reaching 4 units from the left and right edges, three drops above it.
   const Scene s = read_svg_string(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
-           <path d="M 4 60 L 96 60 L 50 30 Z" fill="#00f"/><rect x="48" y="60" width="4" height="36" fill="#444"/>
+           <path d="M 4 20 L 96 20 L 96 45 L 4 45 Z" fill="#00f"/><rect x="48" y="45" width="4" height="51" fill="#444"/>
            <rect x="20" y="5" width="4" height="6" fill="#0af"/><rect x="48" y="8" width="4" height="6" fill="#0af"/>
            <rect x="76" y="5" width="4" height="6" fill="#0af"/></svg>)", "canopy.svg");
   const Rig rig = build_rig(s, {});
   REQUIRE(rig.repeated.size() == 3);
   MotionPlan plan = plan_from_prompt(parse_prompt("rain falls and it sways wildly"), rig, 1);
   REQUIRE(plan.actions.size() == 2);
-  REQUIRE(plan.actions[1].primitive == Primitive::Rock);
+  REQUIRE(plan.actions[1].primitive == Primitive::Sway);
   const int F = 25;
   fit_plan(s, rig, plan, F, 9);
   CHECK(plan.actions[0].scale == 1.0);  // the fall is not shrunk by the sway's limit
@@ -362,7 +362,7 @@ TEST_CASE("a sway that would push a canvas-filling drawing out is scaled alone; 
   CHECK(plan.actions[1].scale > 0.2);   // it still sways visibly
   CHECK(plan.scale == 1.0);
   REQUIRE(plan.notes.size() == 1);
-  CHECK(plan.notes[0].find("the amplitude of sway (rock) scaled to") == 0);
+  CHECK(plan.notes[0].find("the amplitude of sway (sway) scaled to") == 0);
   const auto pts = animate_plan(s, rig, plan, F);
   for (const Vec2& q : pts) CHECK((q.x >= 1 - 1e-6 && q.x <= 99 + 1e-6 && q.y >= 1 - 1e-6 && q.y <= 99 + 1e-6));
 }
@@ -427,6 +427,57 @@ TEST_CASE("arms with no part of their own bend the widest upper part, with the h
   CHECK(t[0] == 0.0);  // the trousers hold
   CHECK(t[1] > 10.0);  // the sleeves swing
   CHECK(t[2] > 10.0);  // and the hand with them
+}
+
+TEST_CASE("a sway leans the figure's top about its middle; the foot and the lower stem stay planted") {
+  // A wine glass: a bowl (y 20-90) on a stem (90-170) on a foot (170-178).
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><path d="M 60 20 L 140 20 L 120 90 L 80 90 Z" fill="#c33"/></g>
+           <g><rect x="97" y="90" width="6" height="80" fill="#888"/></g>
+           <g><rect x="70" y="170" width="60" height="8" fill="#888"/></g></svg>)", "glass.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("the wine in the glass sways from side to side"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].primitive == Primitive::Sway);
+  CHECK(plan.actions[0].parts.empty());  // the whole figure
+  const int F = 25;
+  fit_plan(s, rig, plan, F, 9);
+  const auto pts = animate_plan(s, rig, plan, F);
+  const size_t per = pts.size() / F;
+  // The hinge is at 20 + 0.55 * 158 = 106.9: every point at or below it holds, the rim leans.
+  double below = 0, rim = 0;
+  for (int f = 0; f < F; ++f)
+    for (size_t i = 0; i < per; ++i) {
+      const double d = std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y);
+      if (pts[i].y >= 106.9) below = std::max(below, d);
+      if (pts[i].y == 20.0) rim = std::max(rim, d);
+    }
+  CHECK(below == 0.0);
+  CHECK(rim > 6.0);  // about 87 * sin(8 deg) = 12, less the seed's variation
+  CHECK(loop_gap(pts, F) < 1e-9);
+}
+
+TEST_CASE("a sway the prompt aims at the body turns it about the hips; the legs stay, the arms and head go with it") {
+  const Fixture fx("stick_figure.svg");
+  const MotionPlan plan = fx.plan("he performs with a rhythmic sway, his body sways subtly");
+  // The first clause's sway of the whole figure says the second's again: left out.
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].primitive == Primitive::Swing);
+  CHECK(plan.actions[0].parts == std::vector<int>{fx.rig.root});
+  REQUIRE(plan.notes.size() == 1);
+  CHECK(plan.notes[0] == "'he performs with a rhythmic sway': the prompt aims the same motion at a part elsewhere; the whole figure's left out");
+  const auto t = fx.travel(animate_plan(fx.scene, fx.rig, plan, 13), 13);
+  for (size_t p = 0; p < fx.scene.paths.size(); ++p) {
+    const int part = fx.rig.part_of_path[p];
+    const RigBox& b = fx.rig.parts[part].box;
+    if (b.y0 >= 118) CHECK(t[p] == 0.0);  // the legs (118-178) stand on the ground
+    else CHECK(t[p] > 1.0);               // the torso, the arms and the head sway
+  }
+  // Without the aimed clause, the whole figure sways (its top leans, the legs' feet stay).
+  const MotionPlan whole = fx.plan("he performs with a rhythmic sway");
+  REQUIRE(whole.actions.size() == 1);
+  CHECK(whole.actions[0].primitive == Primitive::Sway);
 }
 
 TEST_CASE("a ferris wheel's small cabins ride round with the turning wheel, upright") {

@@ -16,8 +16,8 @@ namespace {
 constexpr double kTau = 2 * M_PI;
 // Golden-ratio spacing of the phases of repeated elements: no two drops fall in step.
 constexpr double kPhaseSpacing = 0.6180339887498949;
-// A prompt with no motion word: the figure sways this many degrees about its base, once.
-constexpr double kFallbackSwayDeg = 4;
+// A prompt with no motion word: the figure's top leans this many degrees (a Sway), once.
+constexpr double kFallbackSwayDeg = 6;
 // fit_plan: a point in the canvas margin at rest may come this close to the edge (share of the
 // margin); and it gives up after this many steps of 0.8 (7 % of the size).
 constexpr double kMarginUse = 0.9;
@@ -48,13 +48,20 @@ constexpr double kCoreMin = 0.12, kCoreMax = 0.35;
 
 // The usual amplitude of each primitive on one part, in its unit (motion_verbs.h), in the order
 // of Primitive: for a whole-figure verb a prompt aims at a part ("his legs squatting").
-constexpr double kPartAmplitude[] = {20, 1, 0.07, 0.04, 0.04, 6, 0.05, 15, 0.01, 0.08, 0.08, 0.08, 0.12};
-static_assert(sizeof kPartAmplitude / sizeof kPartAmplitude[0] == static_cast<size_t>(Primitive::Fall) + 1);
+constexpr double kPartAmplitude[] = {20, 1, 0.07, 0.04, 0.04, 6, 0.05, 15, 0.01, 0.08, 0.08, 0.08, 0.12, 6};
+static_assert(sizeof kPartAmplitude / sizeof kPartAmplitude[0] == static_cast<size_t>(Primitive::Sway) + 1);
+// A Sway's hinge, in shares of the figure's height from its top: the lower 45 % stays planted
+// (a wine glass's stem and foot, a saxophonist's legs); above it the lean grows over kRamp of
+// the height (bend_region's ramp) to the full angle.
+constexpr double kSwayHinge = 0.55;
+// A chain hanging from the root that reaches the lowest this share of the figure stands on the
+// ground (animate_plan): a saxophonist's legs stay while his upper body sways about the hips.
+constexpr double kPlanted = 0.15;
 
 // The unit of a primitive's amplitude (motion_verbs.h), as motion.json names it.
 const char* unit_of(Primitive p) {
   switch (p) {
-    case Primitive::Swing: case Primitive::Rock: case Primitive::Bend: return "degrees";
+    case Primitive::Swing: case Primitive::Rock: case Primitive::Bend: case Primitive::Sway: return "degrees";
     case Primitive::Spin: return "turns";
     case Primitive::Pulse: case Primitive::Stretch: return "fraction of size";
     case Primitive::Fall: return "canvas heights";
@@ -68,7 +75,7 @@ const char* unit_of(Primitive p) {
 constexpr double kRockToPartMax = 4;
 
 bool whole_only(Primitive p) {
-  return p == Primitive::Rock || p == Primitive::Hop || p == Primitive::Bob || p == Primitive::Slide ||
+  return p == Primitive::Rock || p == Primitive::Sway || p == Primitive::Hop || p == Primitive::Bob || p == Primitive::Slide ||
          p == Primitive::Squash || p == Primitive::Stretch || p == Primitive::Shake;
 }
 
@@ -273,7 +280,12 @@ struct Builder {
       // When the verb's amplitude is in another unit than the part's primitive (a squat's
       // figure heights, a swing's degrees), the part's primitive gets its usual size.
       if (unit_of(verb.on_part) != unit_of(a.primitive)) amp = kPartAmplitude[static_cast<size_t>(verb.on_part)];
-      else rock_on_part = a.primitive == Primitive::Rock;
+      else {
+        rock_on_part = a.primitive == Primitive::Rock || a.primitive == Primitive::Sway;
+        // A sway leans the figure's top about its middle: about the base, the top moves as far
+        // at this share of the angle.
+        if (a.primitive == Primitive::Sway) amp *= kSwayHinge;
+      }
       a.primitive = verb.on_part;
     }
     std::uniform_real_distribution<double> U(0, 1);
@@ -374,7 +386,7 @@ std::string MotionPlan::summary() const {
   std::string s;
   for (const auto& a : actions) {
     char amp[64];
-    const char* unit = a.primitive == Primitive::Swing || a.primitive == Primitive::Rock || a.primitive == Primitive::Bend ? " deg"
+    const char* unit = a.primitive == Primitive::Swing || a.primitive == Primitive::Rock || a.primitive == Primitive::Bend || a.primitive == Primitive::Sway ? " deg"
                        : a.primitive == Primitive::Spin ? " turn" : "";
     std::snprintf(amp, sizeof amp, " %.3g%s x%d", amplitude(a), unit, a.cycles);
     std::string who = a.target == Target::Whole ? "whole" : a.target == Target::Repeated ? "repeated" : "";
@@ -399,33 +411,56 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
     for (const auto& n : c.nouns)
       names_limbs = names_limbs || (!n.object_of_preposition && is_limb_target(n.target));
   std::vector<std::string> accents_left_out;
-  for (const Clause& c : prompt.clauses) {
-    // The clause's targets: known part nouns, and other words that name a part of the drawing.
+  // The clause's targets: known part nouns, and other words that name a part of the drawing.
+  struct ClauseTarget {
     Target target = Target::Whole;
     std::vector<int> named;
-    std::string target_word;
+    std::string word;
     bool plural = false, have = false;
+  };
+  auto target_of = [&](const Clause& c, std::vector<std::string>* unknown_words) {
+    ClauseTarget ct;
     for (const auto& n : c.nouns) {
       std::vector<int> hits;
       if (n.target == Target::Named) {
         std::string ignore;
         hits = parts_for(rig, Target::Named, n.word, &ignore);
         if (hits.empty()) {
-          unknown.push_back(n.word);
+          if (unknown_words) unknown_words->push_back(n.word);
           continue;
         }
       }
-      if (have || n.object_of_preposition) continue;
-      have = true;
-      target = n.target;
-      named = hits;
-      target_word = n.word;
-      plural = n.plural;
+      if (ct.have || n.object_of_preposition) continue;
+      ct.have = true;
+      ct.target = n.target;
+      ct.named = hits;
+      ct.word = n.word;
+      ct.plural = n.plural;
     }
+    return ct;
+  };
+  // Verbs the prompt aims at a part in some clause ("his upper body sways"): the same verb with
+  // no part elsewhere ("performs with a rhythmic sway") says that motion again, and on the whole
+  // figure it would move the parts the aimed clause keeps still (the legs under the body).
+  std::set<std::string> aimed;
+  for (const Clause& c : prompt.clauses)
+    if (const ClauseTarget ct = target_of(c, nullptr); ct.have && ct.target != Target::Whole && ct.target != Target::Repeated)
+      for (const Verb* v : c.verbs) aimed.insert(v->name);
+  std::vector<std::string> restated;
+  for (const Clause& c : prompt.clauses) {
+    const ClauseTarget ct = target_of(c, &unknown);
+    const Target target = ct.target;
+    const std::vector<int>& named = ct.named;
+    const std::string& target_word = ct.word;
+    const bool plural = ct.plural, have = ct.have;
     for (const Verb* v : c.verbs)
       for (size_t i = 0; i < v->actions.size(); ++i) {
         const Action& act = v->actions[i];
         const bool retarget = i == 0 && have;
+        if (i == 0 && !have && act.target == Target::Whole && aimed.count(v->name)) {
+          restated.push_back("'" + c.text + "'");
+          break;
+        }
         if (i > 0 && act.target == Target::Whole && names_limbs && is_limb_target(v->actions[0].target)) {
           accents_left_out.push_back(v->name + "'s " + primitive_name(act.primitive));
           continue;
@@ -436,6 +471,8 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
   }
   if (!accents_left_out.empty())
     b.plan.notes.push_back("the prompt names the limbs that move: the whole-figure " + join(accents_left_out, ", ") + " left out");
+  if (!restated.empty())
+    b.plan.notes.push_back(join(restated, ", ") + ": the prompt aims the same motion at a part elsewhere; the whole figure's left out");
   b.plan.not_understood = unknown;
   if (b.plan.actions.empty()) {
     const std::string words = unknown.empty() ? "no words" : join(unknown, ", ");
@@ -565,7 +602,8 @@ Vec2 deform(const PlannedAction& a, double amp, double t, const RigBox& box, Vec
 }
 
 bool is_deformation(const PlannedAction& a) {
-  return a.primitive == Primitive::Undulate || a.primitive == Primitive::Bend || a.region != Region::None;
+  return a.primitive == Primitive::Undulate || a.primitive == Primitive::Bend || a.primitive == Primitive::Sway ||
+         a.region != Region::None;
 }
 
 double smoothstep(double x) {
@@ -625,6 +663,16 @@ Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box
   return q;
 }
 
+// A Sway of the figure with box `box`: above the hinge the points lean about the hinge's middle,
+// the lean growing smoothly over kRamp of the height (the shape stays in one piece); below it
+// they hold.
+Vec2 sway_lean(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
+  const double H = std::max(box.h(), 1e-9), hinge = box.y0 + kSwayHinge * H;
+  if (q.y >= hinge) return q;
+  const double w = smoothstep((hinge - q.y) / (kRamp * H));
+  return rotate_about(q, {box.centre().x, hinge}, a.direction * amp * std::sin(kTau * a.cycles * t) * w);
+}
+
 // The share of box a inside box b.
 double overlap_share(const RigBox& a, const RigBox& b) {
   const double ox = std::min(a.x1, b.x1) - std::max(a.x0, b.x0), oy = std::min(a.y1, b.y1) - std::max(a.y0, b.y0);
@@ -659,6 +707,12 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   for (int g = 0; g < G; ++g)
     for (int h = 0; h < G; ++h)
       if (under(h, g)) reach[g].add(rig.parts[h].box);
+  // Chains hanging from the root that reach the lowest kPlanted of the figure stand on the
+  // ground (legs, feet): the root's own swing does not carry them.
+  std::vector<char> planted(G, 0);
+  for (int g = 0; g < G; ++g)
+    planted[g] = rig.parts[g].parent == rig.root && rig.root >= 0 && !reach[g].empty() &&
+                 reach[g].y1 >= rig.figure.y1 - kPlanted * rig.figure.h();
 
   std::vector<Vec2> out;
   out.reserve(static_cast<size_t>(frames) * (scene.segment_count() * 3 + scene.paths.size() * 2));
@@ -666,14 +720,15 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     const double t = frames > 1 ? static_cast<double>(f) / (frames - 1) : 0;
     std::vector<Affine> local(G), world(G), spin(G);
     std::vector<char> spins(G, 0);
-    Affine whole;
+    Affine whole, root_turn;
     for (const auto& a : plan.actions) {
       const double amp = plan.amplitude(a);
       if (is_deformation(a) || a.target == Target::Repeated) continue;
       if (a.parts.empty()) whole = rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
       for (size_t i = 0; i < a.parts.size(); ++i) {
         const RigPart& P = rig.parts[a.parts[i]];
-        Affine& into = a.primitive == Primitive::Spin ? spin[a.parts[i]] : local[a.parts[i]];
+        Affine& into = a.primitive == Primitive::Spin ? spin[a.parts[i]]
+                       : a.parts[i] == rig.root && a.primitive == Primitive::Swing ? root_turn : local[a.parts[i]];
         into = rigid(a, amp, a.sign[i], a.phase[i], t, P.box, P.pivot, W, H) * into;
         if (a.primitive == Primitive::Spin) spins[a.parts[i]] = 1;
       }
@@ -683,7 +738,14 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     for (int g = 0; g < G; ++g) order[g] = g;
     auto depth = [&](int g) { int d = 0; for (int p = rig.parts[g].parent; p >= 0 && d < 64; p = rig.parts[p].parent) ++d; return d; };
     std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return depth(x) < depth(y); });
-    for (int g : order) world[g] = rig.parts[g].parent >= 0 ? world[rig.parts[g].parent] * local[g] : local[g];
+    // The root's own turn (the upper body swaying about the hips) leaves what stands on the
+    // ground where it is: the chains hanging from the root that reach down to the figure's feet.
+    for (int g : order) {
+      const int p = rig.parts[g].parent;
+      if (g == rig.root) world[g] = local[g] * root_turn;
+      else if (p == rig.root && planted[g]) world[g] = local[p] * local[g];
+      else world[g] = p >= 0 ? world[p] * local[g] : local[g];
+    }
     // A spinning part turns in its own frame, and carries what hangs from it inside its box
     // (its spokes and hub, not its stand). Small parts with their middle on its rim (a ferris
     // wheel's cabins, whether the rig hangs them from the wheel or elsewhere) ride round with it
@@ -761,7 +823,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
                 if (g == a.parts[0] || (g >= 0 && under(g, a.parts[0]) && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y <= hb.y1))
                   q = bend_region(a, amp, t, hb, q);
               } else if (a.parts.empty()) {
-                if (!background) q = deform(a, amp, t, rig.figure, q);
+                if (!background) q = a.primitive == Primitive::Sway ? sway_lean(a, amp, t, rig.figure, q) : deform(a, amp, t, rig.figure, q);
               } else {
                 for (int p : a.parts)
                   if (g >= 0 && under(g, p)) q = deform(a, amp, t, reach[p], q);

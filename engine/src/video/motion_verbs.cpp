@@ -45,7 +45,7 @@ const std::vector<Verb> kVerbs = {
   {"float",   {"float", "drift", "levitat"},    {{P::Bob, T::Whole, 0.05, 1}, {P::Rock, T::Whole, 3, 1}}, P::Bob},
   {"rise",    {"ris", "rose", "ascend"},        {{P::Bob, T::Whole, 0.06, 1}}, P::Bob},
   {"sink",    {"sink", "sank", "div", "descend"}, {{P::Bob, T::Whole, 0.06, 1}, {P::Rock, T::Whole, 4, 1}}, P::Bob},
-  {"sway",    {"sway", "blow", "breez"},        {{P::Rock, T::Whole, 5, 1}}, P::Swing},
+  {"sway",    {"sway", "blow", "breez"},        {{P::Sway, T::Whole, 8, 1}}, P::Swing},
   {"rock",    {"rock", "swing", "swung"},       {{P::Rock, T::Whole, 7, 1}}, P::Swing},
   {"lean",    {"lean", "tilt", "tip"},          {{P::Rock, T::Whole, 8, 1, Pr::OneSide}}, P::Swing},
   {"bow",     {"bow"},                          {{P::Rock, T::Whole, 10, 1, Pr::OneSide}}, P::Swing},
@@ -150,8 +150,8 @@ bool is_filler_word(std::string_view w) {
 }
 
 const char* primitive_name(Primitive p) {
-  static constexpr std::array<const char*, 13> names = {"swing", "spin", "hop", "bob", "slide", "rock", "undulate",
-                                                        "bend", "shake", "pulse", "squash", "stretch", "fall"};
+  static constexpr std::array<const char*, 14> names = {"swing", "spin", "hop", "bob", "slide", "rock", "undulate",
+                                                        "bend", "shake", "pulse", "squash", "stretch", "fall", "sway"};
   return names[static_cast<size_t>(p)];
 }
 
