@@ -480,6 +480,33 @@ TEST_CASE("a sway the prompt aims at the body turns it about the hips; the legs 
   CHECK(whole.actions[0].primitive == Primitive::Sway);
 }
 
+TEST_CASE("'a surfer rides the waves': the whole figure glides, not a part named after the surfer nor the wave") {
+  // A wave behind everything (a backdrop: large, at three edges, painted first), the surfer,
+  // his shadow named "shadow_surfer" in the document (an emoji's layer names), his board.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g id="wave"><rect x="0" y="100" width="200" height="100" fill="#04c"/></g>
+           <g id="surfer"><rect x="80" y="40" width="40" height="100" fill="#c33"/></g>
+           <g id="shadow_surfer"><rect x="85" y="100" width="20" height="20" fill="#822"/></g>
+           <g id="board"><rect x="50" y="140" width="100" height="10" fill="#ee0"/></g></svg>)", "surfer.svg");
+  const SourceNames names = {{s.paths[0].id, {{"/svg/g[1]", "wave"}}}, {s.paths[2].id, {{"/svg/g[3]", "shadow_surfer"}}}};
+  const Rig rig = build_rig(s, names);
+  REQUIRE(rig.parts[0].name == "wave");
+  REQUIRE(rig.parts[0].role == Role::Background);
+  REQUIRE(rig.parts[2].name == "shadow_surfer");
+  const MotionPlan plan = plan_from_prompt(parse_prompt("A surfer rides the waves."), rig, 1);
+  REQUIRE(!plan.actions.empty());
+  for (const auto& a : plan.actions) {
+    CHECK(a.target == Target::Whole);
+    CHECK(a.parts.empty());
+  }
+  CHECK(plan.not_understood.empty());
+  // As the subject, the wave is what moves.
+  const MotionPlan roll = plan_from_prompt(parse_prompt("the waves ripple"), rig, 1);
+  REQUIRE(!roll.actions.empty());
+  CHECK(roll.actions[0].parts == std::vector<int>{0});
+}
+
 TEST_CASE("a ferris wheel's small cabins ride round with the turning wheel, upright") {
   const Scene s = read_svg_string(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">

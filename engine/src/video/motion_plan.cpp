@@ -429,6 +429,11 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
           if (unknown_words) unknown_words->push_back(n.word);
           continue;
         }
+        // The verb's object naming only the backdrop ("rides the waves") is where the figure
+        // moves, not what moves: the backdrop moves when it is the subject ("the waves roll").
+        bool backdrop = true;
+        for (int h : hits) backdrop = backdrop && rig.parts[h].role == Role::Background;
+        if (backdrop && n.after_verb) continue;
       }
       if (ct.have || n.object_of_preposition) continue;
       ct.have = true;
