@@ -507,6 +507,46 @@ TEST_CASE("'a surfer rides the waves': the whole figure glides, not a part named
   CHECK(roll.actions[0].parts == std::vector<int>{0});
 }
 
+TEST_CASE("a flag ripples from its pole: the pole holds, the free end moves most; a fish has no pole") {
+  // A pole (10-14 x 10-190: taller than the cloth is wide, so the figure's long axis is the
+  // pole's) and a cloth 14-150 x 20-90.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><rect x="10" y="10" width="4" height="180" fill="#444"/></g>
+           <g><path d="M 14 20 L 150 20 L 150 90 L 14 90 Z" fill="#c33"/></g></svg>)", "flag.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("a flag rippling in the wind"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].primitive == Primitive::Undulate);
+  CHECK(plan.actions[0].anchored == 1);  // its left
+  CHECK(plan.actions[0].why.find("held by a pole at its left") != std::string::npos);
+  const int F = 25;
+  fit_plan(s, rig, plan, F, 9);
+  const auto pts = animate_plan(s, rig, plan, F);
+  const size_t per = pts.size() / F;
+  double pole = 0, free_end = 0;
+  for (int f = 0; f < F; ++f)
+    for (size_t i = 0; i < per; ++i) {
+      const Vec2 d = pts[f * per + i] - pts[i];
+      CHECK(d.x == 0.0);  // the wave runs across the pole: up and down
+      if (pts[i].x <= 14) pole = std::max(pole, std::fabs(d.y));
+      if (pts[i].x == 150) free_end = std::max(free_end, std::fabs(d.y));
+    }
+  CHECK(free_end > 3.0);
+  CHECK(pole < 0.05 * free_end);
+  CHECK(loop_gap(pts, F) < 1e-9);
+  // A fish: no thin part at a side, the wave moves both ends.
+  const Scene fish = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><path d="M 20 100 L 100 70 L 160 100 L 100 130 Z" fill="#08c"/></g>
+           <g><path d="M 160 100 L 185 80 L 185 120 Z" fill="#06a"/></g></svg>)", "fish.svg");
+  const Rig fr = build_rig(fish, {});
+  const MotionPlan swim = plan_from_prompt(parse_prompt("the fish swims"), fr, 1);
+  REQUIRE(!swim.actions.empty());
+  CHECK(swim.actions[0].primitive == Primitive::Undulate);
+  CHECK(swim.actions[0].anchored == 0);
+}
+
 TEST_CASE("a ferris wheel's small cabins ride round with the turning wheel, upright") {
   const Scene s = read_svg_string(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">

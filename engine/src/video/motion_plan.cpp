@@ -54,6 +54,10 @@ static_assert(sizeof kPartAmplitude / sizeof kPartAmplitude[0] == static_cast<si
 // (a wine glass's stem and foot, a saxophonist's legs); above it the lean grows over kRamp of
 // the height (bend_region's ramp) to the full angle.
 constexpr double kSwayHinge = 0.55;
+// A whole-figure wave is anchored at a side of the figure where thin parts (at most kPoleWidth
+// of the figure's extent across that side) lying within kPoleEnd of it together span kPoleSpan
+// of the figure along it: a flag's pole. The wave then runs away from that side.
+constexpr double kPoleWidth = 0.05, kPoleEnd = 0.1, kPoleSpan = 0.7;
 // A chain hanging from the root that reaches the lowest this share of the figure stands on the
 // ground (animate_plan): a saxophonist's legs stay while his upper body sways about the hips.
 constexpr double kPlanted = 0.15;
@@ -200,6 +204,38 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
   return v;
 }
 
+// The side of the figure a pole holds (PlannedAction::anchored: 1 left, 2 right, 3 top, 4
+// bottom), 0 for none.
+int anchored_side(const Rig& rig) {
+  const RigBox& F = rig.figure;
+  for (int side = 1; side <= 4; ++side) {
+    const bool across_x = side <= 2;  // a left or right pole: thin in x, spanning y
+    const double L = std::max(across_x ? F.w() : F.h(), 1e-9), span = std::max(across_x ? F.h() : F.w(), 1e-9);
+    std::vector<std::pair<double, double>> spans;
+    for (const auto& P : rig.parts) {
+      if (P.role == Role::Background || P.box.empty()) continue;
+      const double a0 = across_x ? P.box.x0 : P.box.y0, a1 = across_x ? P.box.x1 : P.box.y1;
+      const double s0 = across_x ? F.x0 : F.y0, s1 = across_x ? F.x1 : F.y1;
+      const bool near = side % 2 == 1 ? a1 <= s0 + kPoleEnd * L : a0 >= s1 - kPoleEnd * L;
+      if (near && a1 - a0 <= kPoleWidth * L) spans.push_back(across_x ? std::make_pair(P.box.y0, P.box.y1) : std::make_pair(P.box.x0, P.box.x1));
+    }
+    std::sort(spans.begin(), spans.end());
+    double covered = 0, lo = 0, hi = -1e300;
+    for (const auto& [b0, b1] : spans) {
+      if (b0 > hi) {
+        covered += std::max(0.0, hi - lo);
+        lo = b0;
+        hi = b1;
+      } else {
+        hi = std::max(hi, b1);
+      }
+    }
+    covered += std::max(0.0, hi - lo);
+    if (covered >= kPoleSpan * span) return side;
+  }
+  return 0;
+}
+
 // The part whose region bends for a limb role that has no part of its own. Arms: the widest
 // of the root and the parts hanging from it whose middle is in the figure's upper part (a
 // sweater drawn with both sleeves is wider than the trousers that are the largest part); the
@@ -298,6 +334,7 @@ struct Builder {
       a.cycles = 1;
     }
     a.vertical = mods.vertical;
+    if (a.primitive == Primitive::Undulate && target == Target::Whole) a.anchored = anchored_side(rig);
     a.direction = mods.side != 0 ? mods.side : ((rng() & 1) ? 1 : -1);
     std::string note;
     if (target == Target::Named) a.parts = named_parts;
@@ -375,6 +412,10 @@ struct Builder {
              : target == Target::Repeated ? rig.repeated_why
              : std::string(target_name(target)) + " (" + join(names, ", ") + ")");
     if (!note.empty()) a.why += "; " + note;
+    if (a.anchored != 0) {
+      static const char* sides[] = {"", "left", "right", "top", "bottom"};
+      a.why += std::string("; held by a pole at its ") + sides[a.anchored] + ": the wave runs from there";
+    }
     if (!mods.words.empty()) a.why += "; " + join(mods.words, ", ");
     plan.actions.push_back(std::move(a));
   }
@@ -597,7 +638,16 @@ Vec2 deform(const PlannedAction& a, double amp, double t, const RigBox& box, Vec
   const double L = std::max(horizontal ? box.w() : box.h(), 1e-9);
   const double u = horizontal ? (q.x - box.x0) / L : (q.y - box.y0) / L;
   double d = 0;
-  if (a.primitive == Primitive::Undulate) {
+  if (a.primitive == Primitive::Undulate && a.anchored != 0) {
+    // Held at one side (a flag at its pole): the wave runs away from there, growing to the far
+    // side, across the pole whatever the figure's long axis.
+    const bool across_x = a.anchored <= 2;
+    const double len = std::max(across_x ? box.w() : box.h(), 1e-9);
+    const double f = across_x ? (q.x - box.x0) / len : (q.y - box.y0) / len;
+    const double v = a.anchored % 2 == 1 ? f : 1 - f;
+    const double e = amp * len * v * (std::sin(kTau * (a.cycles * t - v)) - std::sin(kTau * (-v)));
+    return across_x ? Vec2{q.x, q.y + e} : Vec2{q.x + e, q.y};
+  } else if (a.primitive == Primitive::Undulate) {
     const double w = 0.4 + 0.6 * std::fabs(2 * u - 1);  // the ends move most
     d = amp * L * w * (std::sin(kTau * (a.cycles * t - u)) - std::sin(kTau * (-u)));
   } else if (a.primitive == Primitive::Bend) {

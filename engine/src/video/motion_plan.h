@@ -45,6 +45,8 @@ struct PlannedAction {
   int cycles = 1;
   int vertical = 0;             // Bob: +1 only up, -1 only down
   int direction = 1;            // Spin, Slide, Rock one-sided: which way first
+  int anchored = 0;             // Undulate of the whole figure: the side a pole holds it at (a
+                                // flag): 1 left, 2 right, 3 top, 4 bottom; 0 free (a fish)
   Region region = Region::None; // a Swing of a region of parts[0] instead of whole parts
   int region_side = 0;          // Sides/Lower: -1 only the viewer's left, +1 only the right
   bool alternating = false;     // Sides/Lower: the two sides half a cycle apart
