@@ -547,6 +547,40 @@ TEST_CASE("a flag ripples from its pole: the pole holds, the free end moves most
   CHECK(swim.actions[0].anchored == 0);
 }
 
+TEST_CASE("a compact figure swims with its lower limbs; its head holds; named tentacles drop the swim's slide") {
+  // An octopus drawn as one shape, about as wide as tall (160 x 150): no wave along a body.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <path d="M 60 20 L 140 20 L 140 100 L 180 170 L 20 170 L 60 100 Z" fill="#f78"/></svg>)", "octopus.svg");
+  const Rig rig = build_rig(s, {});
+  const MotionPlan swim = plan_from_prompt(parse_prompt("an octopus is swimming"), rig, 1);
+  REQUIRE(swim.actions.size() == 2);
+  CHECK(swim.actions[0].primitive == Primitive::Swing);
+  CHECK(swim.actions[0].region == Region::Lower);
+  CHECK(swim.actions[0].alternating);
+  CHECK(swim.actions[0].why.find("a compact figure: its lower limbs paddle") != std::string::npos);
+  CHECK(swim.actions[1].primitive == Primitive::Slide);
+  const MotionPlan both = plan_from_prompt(parse_prompt("an octopus is swimming and swaying its tentacles"), rig, 1);
+  REQUIRE(both.actions.size() == 2);
+  CHECK(both.actions[0].region == Region::Lower);
+  CHECK(both.actions[1].region == Region::Sides);
+  REQUIRE(both.notes.size() == 1);
+  CHECK(both.notes[0] == "the prompt names the limbs that move: the whole-figure swim's slide left out");
+  // The head (above the hips at 60 % of the height, y < 110) holds; the arms' ends move.
+  const int F = 13;
+  const auto pts = animate_plan(s, rig, both, F);
+  const size_t per = pts.size() / F;
+  double head = 0, ends = 0;
+  for (int f = 0; f < F; ++f)
+    for (size_t i = 0; i < per; ++i) {
+      const double d = std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y);
+      if (pts[i].y < 20 + 0.6 * 150 && pts[i].x > 60 && pts[i].x < 140) head = std::max(head, d);
+      if (pts[i].y == 170) ends = std::max(ends, d);
+    }
+  CHECK(head == 0.0);
+  CHECK(ends > 5.0);
+}
+
 TEST_CASE("a ferris wheel's small cabins ride round with the turning wheel, upright") {
   const Scene s = read_svg_string(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">

@@ -58,6 +58,9 @@ constexpr double kSwayHinge = 0.55;
 // of the figure's extent across that side) lying within kPoleEnd of it together span kPoleSpan
 // of the figure along it: a flag's pole. The wave then runs away from that side.
 constexpr double kPoleWidth = 0.05, kPoleEnd = 0.1, kPoleSpan = 0.7;
+// A figure whose longer side is less than this many times its shorter one is compact: it swims
+// with its lower limbs, not by a wave along its body (Builder::add).
+constexpr double kElongated = 1.6;
 // A chain hanging from the root that reaches the lowest this share of the figure stands on the
 // ground (animate_plan): a saxophonist's legs stay while his upper body sways about the hips.
 constexpr double kPlanted = 0.15;
@@ -297,14 +300,31 @@ void pair_up(const Rig& rig, PlannedAction& a, Pairing pairing, std::mt19937& rn
   }
 }
 
+// A compact figure (an octopus, a frog) does not swim by a wave along its body, which would heave
+// its head as much as its arms: its lower limbs paddle, alternating (Builder::add), and the
+// swim is then a verb of the limbs (plan_from_prompt).
+bool paddles(const Verb& verb, const Rig& rig) {
+  const RigBox& F = rig.figure;
+  const double aspect = std::max(F.w(), F.h()) / std::max(std::min(F.w(), F.h()), 1e-9);
+  return verb.name == "swim" && !verb.actions.empty() && verb.actions[0].primitive == Primitive::Undulate &&
+         aspect < kElongated && anchored_side(rig) == 0;
+}
+
 struct Builder {
   const Rig& rig;
   std::mt19937 rng;
   MotionPlan plan;
 
-  void add(const Verb& verb, const Action& base, Target target, const std::vector<int>& named_parts,
+  void add(const Verb& verb, const Action& base_in, Target target, const std::vector<int>& named_parts,
            const std::string& target_word, const Modifiers& mods, bool plural, const std::string& words,
            bool primary_retargeted) {
+    Action base = base_in;
+    std::string paddle;
+    if (&base_in == &verb.actions[0] && target == Target::Whole && paddles(verb, rig)) {
+      base = {Primitive::Swing, Target::Legs, kPartAmplitude[static_cast<size_t>(Primitive::Swing)], 2 * base.cycles, Pairing::Alternating};
+      target = Target::Legs;
+      paddle = "a compact figure: its lower limbs paddle";
+    }
     PlannedAction a;
     a.verb = verb.name;
     a.words = words;
@@ -412,6 +432,7 @@ struct Builder {
              : target == Target::Repeated ? rig.repeated_why
              : std::string(target_name(target)) + " (" + join(names, ", ") + ")");
     if (!note.empty()) a.why += "; " + note;
+    if (!paddle.empty()) a.why += "; " + paddle;
     if (a.anchored != 0) {
       static const char* sides[] = {"", "left", "right", "top", "bottom"};
       a.why += std::string("; held by a pole at its ") + sides[a.anchored] + ": the wave runs from there";
@@ -507,7 +528,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
           restated.push_back("'" + c.text + "'");
           break;
         }
-        if (i > 0 && act.target == Target::Whole && names_limbs && is_limb_target(v->actions[0].target)) {
+        if (i > 0 && act.target == Target::Whole && names_limbs && (is_limb_target(v->actions[0].target) || paddles(*v, rig))) {
           accents_left_out.push_back(v->name + "'s " + primitive_name(act.primitive));
           continue;
         }
