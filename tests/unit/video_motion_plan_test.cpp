@@ -581,6 +581,23 @@ TEST_CASE("a compact figure swims with its lower limbs; its head holds; named te
   CHECK(ends > 5.0);
 }
 
+TEST_CASE("a boxer's body turns into the punches and leans to dodge about the hips; his legs stay planted") {
+  const Fixture fx("stick_figure.svg");
+  for (const char* prompt : {"the boxer is punching", "he dodges"}) {
+    const MotionPlan plan = fx.plan(prompt);
+    REQUIRE(!plan.actions.empty());
+    const PlannedAction& body = plan.actions.back();
+    CHECK(body.primitive == Primitive::Swing);
+    CHECK(body.parts == std::vector<int>{fx.rig.root});
+    const auto t = fx.travel(animate_plan(fx.scene, fx.rig, plan, 13), 13);
+    for (size_t p = 0; p < fx.scene.paths.size(); ++p) {
+      const RigBox& b = fx.rig.parts[fx.rig.part_of_path[p]].box;
+      if (b.y0 >= 118) CHECK(t[p] == 0.0);  // the legs (118-178)
+      else CHECK(t[p] > 1.0);               // the torso, the arms, the head
+    }
+  }
+}
+
 TEST_CASE("a ferris wheel's small cabins ride round with the turning wheel, upright") {
   const Scene s = read_svg_string(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">

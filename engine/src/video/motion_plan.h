@@ -6,7 +6,9 @@
 // Frames are built part by part down the rig (a limb's segments follow it), in this order for
 // each control point: its repeated element's own motion (a falling drop), deformations of the
 // shape (a swimming wave, a bend), the rig's rotations about the pivots, then the motion of the
-// whole figure (a hop, a bob, a rock about its base). The background stays still unless a plan
+// whole figure (a hop, a bob, a rock about its base). A swing of the root itself (a boxer's
+// body turning into a punch, an upper body swaying) leaves the chains hanging from the root
+// that reach the figure's feet where they are. The background stays still unless a plan
 // names it. The first and the last frame are the rest pose (the loop closes), except for
 // repeated elements, which each keep their own phase.
 //
