@@ -598,6 +598,31 @@ TEST_CASE("a boxer's body turns into the punches and leans to dodge about the hi
   }
 }
 
+TEST_CASE("a bird flaps its raised wing, not its small beak beside the body") {
+  // Body 60-160 x 100-160, a wing raised above its back (tall and thin: an upper limb, not the
+  // head), a beak at the left (an upper limb by place, a tenth of the wing's box).
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><path d="M 60 100 L 160 100 L 160 160 L 60 160 Z" fill="#f9c"/></g>
+           <g><path d="M 95 20 L 115 20 L 115 120 L 95 120 Z" fill="#e7a"/></g>
+           <g><path d="M 40 110 L 62 115 L 40 120 Z" fill="#fa0"/></g></svg>)", "bird_side.svg");
+  const Rig rig = build_rig(s, {});
+  REQUIRE(rig.parts[2].role == Role::UpperLimb);
+  const MotionPlan plan = plan_from_prompt(parse_prompt("a bird hovers, flapping its wings"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].parts == std::vector<int>{1});
+  const auto pts = animate_plan(s, rig, plan, 13);
+  const size_t per = pts.size() / 13;
+  double beak = 0, wing = 0;
+  for (int f = 0; f < 13; ++f)
+    for (size_t i = 0; i < per; ++i) {
+      const double d = std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y);
+      (pts[i].x < 62 && pts[i].y > 105 ? beak : wing) = std::max(pts[i].x < 62 && pts[i].y > 105 ? beak : wing, d);
+    }
+  CHECK(beak == 0.0);
+  CHECK(wing > 10.0);
+}
+
 TEST_CASE("a ferris wheel's small cabins ride round with the turning wheel, upright") {
   const Scene s = read_svg_string(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">

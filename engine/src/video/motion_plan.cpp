@@ -78,6 +78,9 @@ const char* unit_of(Primitive p) {
   }
 }
 
+// Arms: an upper limb whose box is less than this share of the largest one's is left out.
+constexpr double kArmMinShare = 0.2;
+
 // A rock aimed at a part turns it by at most this many times the rock's angle (Builder::add).
 constexpr double kRockToPartMax = 4;
 
@@ -136,7 +139,15 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
     case Target::Whole: return {};
     case Target::Root: return rig.root >= 0 ? std::vector<int>{rig.root} : std::vector<int>{};
     case Target::Head: v = with_role(rig, {Role::Head}); break;
-    case Target::Arms: v = with_role(rig, {Role::UpperLimb}); break;
+    case Target::Arms: {
+      // Arms come in similar sizes: an upper limb far smaller than the largest (a beak or an
+      // ear beside a bird's raised wing) is no arm to swing.
+      v = with_role(rig, {Role::UpperLimb});
+      double largest = 0;
+      for (int p : v) largest = std::max(largest, rig.parts[p].box.area());
+      v.erase(std::remove_if(v.begin(), v.end(), [&](int p) { return rig.parts[p].box.area() < kArmMinShare * largest; }), v.end());
+      break;
+    }
     case Target::Legs:
       v = with_role(rig, {Role::LowerLimb});
       // A creature wider than tall with nothing below (a spider, a crab seen from above): the
