@@ -623,6 +623,35 @@ TEST_CASE("a bird flaps its raised wing, not its small beak beside the body") {
   CHECK(wing > 10.0);
 }
 
+TEST_CASE("a motion too small to see is raised to 2 % of the canvas diagonal, at most three times") {
+  const Fixture fx("stick_figure.svg");
+  // A slight nod: the head turns by about 6 degrees about its neck, its top moving about 4
+  // units of a 283-unit diagonal (under 2 %: 5.7).
+  MotionPlan plan = fx.plan("he nods his head slightly");
+  REQUIRE(plan.actions.size() == 1);
+  const int F = 25;
+  const double diag = std::hypot(200.0, 200.0);
+  auto largest = [&](const MotionPlan& p) {
+    double m = 0;
+    for (double v : fx.travel(animate_plan(fx.scene, fx.rig, p, F), F)) m = std::max(m, v);
+    return m;
+  };
+  const double before = largest(plan);
+  REQUIRE(before < 0.02 * diag);  // the drawing makes the test mean something
+  fit_plan(fx.scene, fx.rig, plan, F, 9);
+  CHECK(plan.scale > 1.0);
+  CHECK(plan.scale <= 3.0);
+  const double after = largest(plan);
+  // (A turn's chord grows a little slower than its angle: within 1 %.)
+  CHECK(after == doctest::Approx(std::min(0.02 * diag, 3 * before)).epsilon(0.01));
+  REQUIRE(plan.notes.size() == 1);
+  CHECK(plan.notes[0].find("all amplitudes raised to") == 0);
+  // A plain motion is left as it is.
+  MotionPlan wave = fx.plan("the man waves his right arm");
+  fit_plan(fx.scene, fx.rig, wave, F, 9);
+  CHECK(wave.scale <= 1.0);
+}
+
 TEST_CASE("a ferris wheel's small cabins ride round with the turning wheel, upright") {
   const Scene s = read_svg_string(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">

@@ -22,6 +22,11 @@ constexpr double kFallbackSwayDeg = 6;
 // margin); and it gives up after this many steps of 0.8 (7 % of the size).
 constexpr double kMarginUse = 0.9;
 constexpr int kScaleAttempts = 12;
+// fit_plan: a plan whose largest motion is under this share of the canvas diagonal is raised to
+// it (the pixel ranker calls a video where under 0.5 % of the foreground changes 'no motion'),
+// by at most this factor (a gentle motion stays gentler than a plain one).
+constexpr double kMinTravel = 0.02;
+constexpr double kMaxBoost = 3;
 // region_host: a part carries the arms when its middle is above this share of the figure's
 // height, it is at least this share of the figure tall, and this much wider than the root.
 constexpr double kArmHostTop = 0.6;
@@ -1013,6 +1018,26 @@ void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, 
     }
   }
   const int K = std::clamp(keyframes, 2, frames);
+  // Too small to see: a gentle sway of a cobra's head moved no point 2 px on a 256 px canvas,
+  // and the ranker stopped the video as 'no motion'. The plan grows until its largest motion
+  // (of the points that are neither falling nor spinning) is kMinTravel of the diagonal, at
+  // most kMaxBoost times; the limits below then scale it back where it would not fit.
+  {
+    const std::vector<Vec2> pts = animate_plan(scene, rig, plan, frames);
+    const size_t per = pts.size() / frames;
+    double largest = 0;
+    for (int f = 1; f < frames; ++f)
+      for (size_t i = 0; i < per; ++i)
+        if (!exempt[i]) largest = std::max(largest, std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
+    const double floor = kMinTravel * std::hypot(scene.width, scene.height);
+    if (largest > 0 && largest < floor) {
+      plan.scale = std::min(kMaxBoost, floor / largest);
+      char line[200];
+      std::snprintf(line, sizeof line, "all amplitudes raised to %.0f %%: the largest motion was %.1f %% of the canvas diagonal, too small to see",
+                    plan.scale * 100, 100 * largest / std::hypot(scene.width, scene.height));
+      plan.notes.push_back(line);
+    }
+  }
   // Each action alone first, then all together.
   for (size_t i = 0; i <= plan.actions.size(); ++i) {
     const bool all = i == plan.actions.size();
