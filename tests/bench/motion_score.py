@@ -6,12 +6,19 @@ and how far it travels in the target video (its largest distance from rest, canv
 for every path the box it sweeps. With --fitted, the same from the FITTED animation instead:
 animation.json (the Lottie export of animation.svg, keyframed path data in canvas pixels, one
 layer per path id): each control point's rest is its position at the first keyframe and its
-travel its largest distance from there over the keyframes. Labels name regions of the drawing independently of the
+travel its largest distance from there over the keyframes; the swept box is that of the curves
+(each cubic at quarters), not of their handles. Labels name regions of the drawing independently of the
 engine's rig:
   all                  every point
   -                    no point
-  large                the points of paths whose rest box covers at least 45 % of the canvas
-                       (backgrounds)
+  large                the points of backgrounds: paths whose rest box covers at least 45 % of
+                       the canvas, reaches two of its edges (within 4 % of the canvas size) and
+                       that are painted in the first 35 % of the paths (the issue's "large
+                       shapes behind everything at the canvas edges"; the same numbers as
+                       engine/src/scene/backdrop.h). Area alone took a figure filling its canvas
+                       for a background: an octopus's body (46 % of the canvas, far from every
+                       edge) and a ferris wheel's rim (59 %) were left out of every region, so
+                       their motion counted against the share and no label could name them.
   x0,y0,x1,y1          points resting in this box, in fractions of the drawing's box (the union
                        of the rest boxes of all paths that are not large), not of large paths
   several joined by '|'
@@ -27,6 +34,8 @@ import sys
 SHARE_MIN = 0.7     # the issue's bar
 STILL_RATIO_MAX = 0.25  # still paths move at most a quarter as much as the expected ones
 LARGE = 0.45        # share of the canvas: a background (as a reader of the drawing would say)
+EDGE = 0.04         # share of the canvas size: a box this close to an edge touches it
+EARLY = 0.35        # share of the paths: a background is painted among the first ones
 
 
 def shape_keyframes(sh):
@@ -46,6 +55,19 @@ def shape_keyframes(sh):
                 pts.append([v[nxt][0] + i[nxt][0], v[nxt][1] + i[nxt][1]])
         out.append(pts)
     return out
+
+
+def curve_samples(pts):
+    """Points of one shape's cubics (shape_keyframes' order) at t = 0, 1/4, 1/2, 3/4, 1."""
+    out = []
+    n = len(pts)
+    for k in range(0, n - 1, 3):
+        c = [pts[k], pts[k + 1], pts[(k + 2) % n], pts[(k + 3) % n]]
+        for t in (0, 0.25, 0.5, 0.75, 1):
+            u = 1 - t
+            w = (u * u * u, 3 * u * u * t, 3 * u * t * t, t * t * t)
+            out.append([sum(w[i] * c[i][0] for i in range(4)), sum(w[i] * c[i][1] for i in range(4))])
+    return out or pts
 
 
 def fitted_paths(run_dir, canvas):
@@ -69,12 +91,15 @@ def fitted_paths(run_dir, canvas):
         travel = []
         for sh in shapes(layer.get("shapes", [])):
             kfs = shape_keyframes(sh)
+            for f in kfs:  # the box the curves sweep (not their handles, as motion.json)
+                for x, y in curve_samples(f):
+                    x, y = x * sx, y * sy
+                    swept = [min(swept[0], x), min(swept[1], y), max(swept[2], x), max(swept[3], y)]
             for j, q in enumerate(kfs[0]):
                 far = 0.0
                 for f in kfs:
                     x, y = f[j][0] * sx, f[j][1] * sy
                     far = max(far, math.hypot(x - q[0] * sx, y - q[1] * sy))
-                    swept = [min(swept[0], x), min(swept[1], y), max(swept[2], x), max(swept[3], y)]
                 rx, ry = q[0] * sx, q[1] * sy
                 rest_box = [min(rest_box[0], rx), min(rest_box[1], ry), max(rest_box[2], rx), max(rest_box[3], ry)]
                 travel += [rx, ry, far]
@@ -91,9 +116,13 @@ def main():
     cw, ch = m["canvas"]
     paths = fitted_paths(run_dir, m["canvas"]) if fitted else m["paths"]
 
+    order = {p["id"]: i for i, p in enumerate(m["paths"])}  # paint order (animation.json keeps the ids)
+
     def is_large(p):
         x0, y0, x1, y1 = p["rest"]
-        return (x1 - x0) * (y1 - y0) >= LARGE * cw * ch
+        edges = (x0 <= EDGE * cw) + (y0 <= EDGE * ch) + (x1 >= cw - EDGE * cw) + (y1 >= ch - EDGE * ch)
+        early = order.get(p["id"], 0) < EARLY * len(m["paths"])
+        return (x1 - x0) * (y1 - y0) >= LARGE * cw * ch and edges >= 2 and early
 
     fig = [p for p in paths if not is_large(p)] or paths
     dx0 = min(p["rest"][0] for p in fig)

@@ -156,7 +156,7 @@ TEST_CASE("rain falls and the umbrella sways: drops fall in their own phases, th
   MotionPlan plan = fx.plan("rain falls on the umbrella and it sways");
   REQUIRE(plan.actions.size() == 2);
   CHECK(plan.actions[0].primitive == Primitive::Fall);
-  CHECK(plan.actions[1].primitive == Primitive::Rock);
+  CHECK(plan.actions[1].primitive == Primitive::Sway);
   const int F = 25;
   fit_plan(fx.scene, fx.rig, plan, F, 9);
   const auto pts = animate_plan(fx.scene, fx.rig, plan, F);
@@ -264,7 +264,7 @@ TEST_CASE("a prompt with no motion word sways gently, naming the words it did no
   const Fixture fx("bird.svg");
   const MotionPlan plan = fx.plan("nothing happens here");
   REQUIRE(plan.actions.size() == 1);
-  CHECK(plan.actions[0].primitive == Primitive::Rock);
+  CHECK(plan.actions[0].primitive == Primitive::Sway);
   REQUIRE(plan.warnings.size() == 1);
   CHECK(plan.warnings[0] == "no motion understood in the prompt (not understood: nothing, happens, here); the figure sways gently");
   CHECK(plan.not_understood == std::vector<std::string>{"nothing", "happens", "here"});
@@ -347,14 +347,14 @@ TEST_CASE("a sway that would push a canvas-filling drawing out is scaled alone; 
   // A canopy reaching 4 units from the left and right edges, three drops above it.
   const Scene s = read_svg_string(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
-           <path d="M 4 60 L 96 60 L 50 30 Z" fill="#00f"/><rect x="48" y="60" width="4" height="36" fill="#444"/>
+           <path d="M 4 20 L 96 20 L 96 45 L 4 45 Z" fill="#00f"/><rect x="48" y="45" width="4" height="51" fill="#444"/>
            <rect x="20" y="5" width="4" height="6" fill="#0af"/><rect x="48" y="8" width="4" height="6" fill="#0af"/>
            <rect x="76" y="5" width="4" height="6" fill="#0af"/></svg>)", "canopy.svg");
   const Rig rig = build_rig(s, {});
   REQUIRE(rig.repeated.size() == 3);
   MotionPlan plan = plan_from_prompt(parse_prompt("rain falls and it sways wildly"), rig, 1);
   REQUIRE(plan.actions.size() == 2);
-  REQUIRE(plan.actions[1].primitive == Primitive::Rock);
+  REQUIRE(plan.actions[1].primitive == Primitive::Sway);
   const int F = 25;
   fit_plan(s, rig, plan, F, 9);
   CHECK(plan.actions[0].scale == 1.0);  // the fall is not shrunk by the sway's limit
@@ -362,7 +362,7 @@ TEST_CASE("a sway that would push a canvas-filling drawing out is scaled alone; 
   CHECK(plan.actions[1].scale > 0.2);   // it still sways visibly
   CHECK(plan.scale == 1.0);
   REQUIRE(plan.notes.size() == 1);
-  CHECK(plan.notes[0].find("the amplitude of sway (rock) scaled to") == 0);
+  CHECK(plan.notes[0].find("the amplitude of sway (sway) scaled to") == 0);
   const auto pts = animate_plan(s, rig, plan, F);
   for (const Vec2& q : pts) CHECK((q.x >= 1 - 1e-6 && q.x <= 99 + 1e-6 && q.y >= 1 - 1e-6 && q.y <= 99 + 1e-6));
 }
@@ -429,6 +429,229 @@ TEST_CASE("arms with no part of their own bend the widest upper part, with the h
   CHECK(t[2] > 10.0);  // and the hand with them
 }
 
+TEST_CASE("a sway leans the figure's top about its middle; the foot and the lower stem stay planted") {
+  // A wine glass: a bowl (y 20-90) on a stem (90-170) on a foot (170-178).
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><path d="M 60 20 L 140 20 L 120 90 L 80 90 Z" fill="#c33"/></g>
+           <g><rect x="97" y="90" width="6" height="80" fill="#888"/></g>
+           <g><rect x="70" y="170" width="60" height="8" fill="#888"/></g></svg>)", "glass.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("the wine in the glass sways from side to side"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].primitive == Primitive::Sway);
+  CHECK(plan.actions[0].parts.empty());  // the whole figure
+  const int F = 25;
+  fit_plan(s, rig, plan, F, 9);
+  const auto pts = animate_plan(s, rig, plan, F);
+  const size_t per = pts.size() / F;
+  // The hinge is at 20 + 0.55 * 158 = 106.9: every point at or below it holds, the rim leans.
+  double below = 0, rim = 0;
+  for (int f = 0; f < F; ++f)
+    for (size_t i = 0; i < per; ++i) {
+      const double d = std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y);
+      if (pts[i].y >= 106.9) below = std::max(below, d);
+      if (pts[i].y == 20.0) rim = std::max(rim, d);
+    }
+  CHECK(below == 0.0);
+  CHECK(rim > 6.0);  // about 87 * sin(8 deg) = 12, less the seed's variation
+  CHECK(loop_gap(pts, F) < 1e-9);
+}
+
+TEST_CASE("a sway the prompt aims at the body turns it about the hips; the legs stay, the arms and head go with it") {
+  const Fixture fx("stick_figure.svg");
+  const MotionPlan plan = fx.plan("he performs with a rhythmic sway, his body sways subtly");
+  // The first clause's sway of the whole figure says the second's again: left out.
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].primitive == Primitive::Swing);
+  CHECK(plan.actions[0].parts == std::vector<int>{fx.rig.root});
+  REQUIRE(plan.notes.size() == 1);
+  CHECK(plan.notes[0] == "'he performs with a rhythmic sway': the prompt aims the same motion at a part elsewhere; the whole figure's left out");
+  const auto t = fx.travel(animate_plan(fx.scene, fx.rig, plan, 13), 13);
+  for (size_t p = 0; p < fx.scene.paths.size(); ++p) {
+    const int part = fx.rig.part_of_path[p];
+    const RigBox& b = fx.rig.parts[part].box;
+    if (b.y0 >= 118) CHECK(t[p] == 0.0);  // the legs (118-178) stand on the ground
+    else CHECK(t[p] > 1.0);               // the torso, the arms and the head sway
+  }
+  // Without the aimed clause, the whole figure sways (its top leans, the legs' feet stay).
+  const MotionPlan whole = fx.plan("he performs with a rhythmic sway");
+  REQUIRE(whole.actions.size() == 1);
+  CHECK(whole.actions[0].primitive == Primitive::Sway);
+}
+
+TEST_CASE("'a surfer rides the waves': the whole figure glides, not a part named after the surfer nor the wave") {
+  // A wave behind everything (a backdrop: large, at three edges, painted first), the surfer,
+  // his shadow named "shadow_surfer" in the document (an emoji's layer names), his board.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g id="wave"><rect x="0" y="100" width="200" height="100" fill="#04c"/></g>
+           <g id="surfer"><rect x="80" y="40" width="40" height="100" fill="#c33"/></g>
+           <g id="shadow_surfer"><rect x="85" y="100" width="20" height="20" fill="#822"/></g>
+           <g id="board"><rect x="50" y="140" width="100" height="10" fill="#ee0"/></g></svg>)", "surfer.svg");
+  const SourceNames names = {{s.paths[0].id, {{"/svg/g[1]", "wave"}}}, {s.paths[2].id, {{"/svg/g[3]", "shadow_surfer"}}}};
+  const Rig rig = build_rig(s, names);
+  REQUIRE(rig.parts[0].name == "wave");
+  REQUIRE(rig.parts[0].role == Role::Background);
+  REQUIRE(rig.parts[2].name == "shadow_surfer");
+  const MotionPlan plan = plan_from_prompt(parse_prompt("A surfer rides the waves."), rig, 1);
+  REQUIRE(!plan.actions.empty());
+  for (const auto& a : plan.actions) {
+    CHECK(a.target == Target::Whole);
+    CHECK(a.parts.empty());
+  }
+  CHECK(plan.not_understood.empty());
+  // As the subject, the wave is what moves.
+  const MotionPlan roll = plan_from_prompt(parse_prompt("the waves ripple"), rig, 1);
+  REQUIRE(!roll.actions.empty());
+  CHECK(roll.actions[0].parts == std::vector<int>{0});
+}
+
+TEST_CASE("a flag ripples from its pole: the pole holds, the free end moves most; a fish has no pole") {
+  // A pole (10-14 x 10-190: taller than the cloth is wide, so the figure's long axis is the
+  // pole's) and a cloth 14-150 x 20-90.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><rect x="10" y="10" width="4" height="180" fill="#444"/></g>
+           <g><path d="M 14 20 L 150 20 L 150 90 L 14 90 Z" fill="#c33"/></g></svg>)", "flag.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("a flag rippling in the wind"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].primitive == Primitive::Undulate);
+  CHECK(plan.actions[0].anchored == 1);  // its left
+  CHECK(plan.actions[0].why.find("held by a pole at its left") != std::string::npos);
+  const int F = 25;
+  fit_plan(s, rig, plan, F, 9);
+  const auto pts = animate_plan(s, rig, plan, F);
+  const size_t per = pts.size() / F;
+  double pole = 0, free_end = 0;
+  for (int f = 0; f < F; ++f)
+    for (size_t i = 0; i < per; ++i) {
+      const Vec2 d = pts[f * per + i] - pts[i];
+      CHECK(d.x == 0.0);  // the wave runs across the pole: up and down
+      if (pts[i].x <= 14) pole = std::max(pole, std::fabs(d.y));
+      if (pts[i].x == 150) free_end = std::max(free_end, std::fabs(d.y));
+    }
+  CHECK(free_end > 3.0);
+  CHECK(pole < 0.05 * free_end);
+  CHECK(loop_gap(pts, F) < 1e-9);
+  // A fish: no thin part at a side, the wave moves both ends.
+  const Scene fish = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><path d="M 20 100 L 100 70 L 160 100 L 100 130 Z" fill="#08c"/></g>
+           <g><path d="M 160 100 L 185 80 L 185 120 Z" fill="#06a"/></g></svg>)", "fish.svg");
+  const Rig fr = build_rig(fish, {});
+  const MotionPlan swim = plan_from_prompt(parse_prompt("the fish swims"), fr, 1);
+  REQUIRE(!swim.actions.empty());
+  CHECK(swim.actions[0].primitive == Primitive::Undulate);
+  CHECK(swim.actions[0].anchored == 0);
+}
+
+TEST_CASE("a compact figure swims with its lower limbs; its head holds; named tentacles drop the swim's slide") {
+  // An octopus drawn as one shape, about as wide as tall (160 x 150): no wave along a body.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <path d="M 60 20 L 140 20 L 140 100 L 180 170 L 20 170 L 60 100 Z" fill="#f78"/></svg>)", "octopus.svg");
+  const Rig rig = build_rig(s, {});
+  const MotionPlan swim = plan_from_prompt(parse_prompt("an octopus is swimming"), rig, 1);
+  REQUIRE(swim.actions.size() == 2);
+  CHECK(swim.actions[0].primitive == Primitive::Swing);
+  CHECK(swim.actions[0].region == Region::Lower);
+  CHECK(swim.actions[0].alternating);
+  CHECK(swim.actions[0].why.find("a compact figure: its lower limbs paddle") != std::string::npos);
+  CHECK(swim.actions[1].primitive == Primitive::Slide);
+  const MotionPlan both = plan_from_prompt(parse_prompt("an octopus is swimming and swaying its tentacles"), rig, 1);
+  REQUIRE(both.actions.size() == 2);
+  CHECK(both.actions[0].region == Region::Lower);
+  CHECK(both.actions[1].region == Region::Sides);
+  REQUIRE(both.notes.size() == 1);
+  CHECK(both.notes[0] == "the prompt names the limbs that move: the whole-figure swim's slide left out");
+  // The head (above the hips at 60 % of the height, y < 110) holds; the arms' ends move.
+  const int F = 13;
+  const auto pts = animate_plan(s, rig, both, F);
+  const size_t per = pts.size() / F;
+  double head = 0, ends = 0;
+  for (int f = 0; f < F; ++f)
+    for (size_t i = 0; i < per; ++i) {
+      const double d = std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y);
+      if (pts[i].y < 20 + 0.6 * 150 && pts[i].x > 60 && pts[i].x < 140) head = std::max(head, d);
+      if (pts[i].y == 170) ends = std::max(ends, d);
+    }
+  CHECK(head == 0.0);
+  CHECK(ends > 5.0);
+}
+
+TEST_CASE("a boxer's body turns into the punches and leans to dodge about the hips; his legs stay planted") {
+  const Fixture fx("stick_figure.svg");
+  for (const char* prompt : {"the boxer is punching", "he dodges"}) {
+    const MotionPlan plan = fx.plan(prompt);
+    REQUIRE(!plan.actions.empty());
+    const PlannedAction& body = plan.actions.back();
+    CHECK(body.primitive == Primitive::Swing);
+    CHECK(body.parts == std::vector<int>{fx.rig.root});
+    const auto t = fx.travel(animate_plan(fx.scene, fx.rig, plan, 13), 13);
+    for (size_t p = 0; p < fx.scene.paths.size(); ++p) {
+      const RigBox& b = fx.rig.parts[fx.rig.part_of_path[p]].box;
+      if (b.y0 >= 118) CHECK(t[p] == 0.0);  // the legs (118-178)
+      else CHECK(t[p] > 1.0);               // the torso, the arms, the head
+    }
+  }
+}
+
+TEST_CASE("a bird flaps its raised wing, not its small beak beside the body") {
+  // Body 60-160 x 100-160, a wing raised above its back (tall and thin: an upper limb, not the
+  // head), a beak at the left (an upper limb by place, a tenth of the wing's box).
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><path d="M 60 100 L 160 100 L 160 160 L 60 160 Z" fill="#f9c"/></g>
+           <g><path d="M 95 20 L 115 20 L 115 120 L 95 120 Z" fill="#e7a"/></g>
+           <g><path d="M 40 110 L 62 115 L 40 120 Z" fill="#fa0"/></g></svg>)", "bird_side.svg");
+  const Rig rig = build_rig(s, {});
+  REQUIRE(rig.parts[2].role == Role::UpperLimb);
+  const MotionPlan plan = plan_from_prompt(parse_prompt("a bird hovers, flapping its wings"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].parts == std::vector<int>{1});
+  const auto pts = animate_plan(s, rig, plan, 13);
+  const size_t per = pts.size() / 13;
+  double beak = 0, wing = 0;
+  for (int f = 0; f < 13; ++f)
+    for (size_t i = 0; i < per; ++i) {
+      const double d = std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y);
+      (pts[i].x < 62 && pts[i].y > 105 ? beak : wing) = std::max(pts[i].x < 62 && pts[i].y > 105 ? beak : wing, d);
+    }
+  CHECK(beak == 0.0);
+  CHECK(wing > 10.0);
+}
+
+TEST_CASE("a motion too small to see is raised to 2 % of the canvas diagonal, at most three times") {
+  const Fixture fx("stick_figure.svg");
+  // A slight nod: the head turns by about 6 degrees about its neck, its top moving about 4
+  // units of a 283-unit diagonal (under 2 %: 5.7).
+  MotionPlan plan = fx.plan("he nods his head slightly");
+  REQUIRE(plan.actions.size() == 1);
+  const int F = 25;
+  const double diag = std::hypot(200.0, 200.0);
+  auto largest = [&](const MotionPlan& p) {
+    double m = 0;
+    for (double v : fx.travel(animate_plan(fx.scene, fx.rig, p, F), F)) m = std::max(m, v);
+    return m;
+  };
+  const double before = largest(plan);
+  REQUIRE(before < 0.02 * diag);  // the drawing makes the test mean something
+  fit_plan(fx.scene, fx.rig, plan, F, 9);
+  CHECK(plan.scale > 1.0);
+  CHECK(plan.scale <= 3.0);
+  const double after = largest(plan);
+  // (A turn's chord grows a little slower than its angle: within 1 %.)
+  CHECK(after == doctest::Approx(std::min(0.02 * diag, 3 * before)).epsilon(0.01));
+  REQUIRE(plan.notes.size() == 1);
+  CHECK(plan.notes[0].find("all amplitudes raised to") == 0);
+  // A plain motion is left as it is.
+  MotionPlan wave = fx.plan("the man waves his right arm");
+  fit_plan(fx.scene, fx.rig, wave, F, 9);
+  CHECK(wave.scale <= 1.0);
+}
+
 TEST_CASE("a ferris wheel's small cabins ride round with the turning wheel, upright") {
   const Scene s = read_svg_string(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
@@ -451,11 +674,53 @@ TEST_CASE("a ferris wheel's small cabins ride round with the turning wheel, upri
     CHECK(b.x - a.x == doctest::Approx(pts[cabin + 1].x - pts[cabin].x));  // upright: no turn
     CHECK(b.y - a.y == doctest::Approx(pts[cabin + 1].y - pts[cabin].y));
   }
-  // At a quarter of the loop the cabin's corner has gone a quarter round the centre (100,100).
-  const Vec2 q = pts[3 * per + cabin], r = pts[cabin];
-  CHECK(std::hypot(q.x - 100, q.y - 100) == doctest::Approx(std::hypot(r.x - 100, r.y - 100)).epsilon(1e-6));
-  CHECK(std::hypot(q.x - r.x, q.y - r.y) > 50.0);
+  // The cabin hangs from the middle of its top, (160,94): at a quarter of the loop that point
+  // has gone a quarter round the centre (100,100), to (94,40) or (106,160), the cabin below it.
+  RigBox cb;
+  for (size_t i = cabin; i < per; ++i) cb.add(pts[3 * per + i]);
+  const Vec2 q{cb.centre().x, cb.y0};
+  CHECK(std::hypot(q.x - 100, q.y - 100) == doctest::Approx(std::hypot(60.0, 6.0)).epsilon(1e-6));
+  CHECK(std::fabs(q.x - 100) == doctest::Approx(6.0).epsilon(1e-6));
   CHECK(std::hypot(pts[0].x - pts[6 * per].x, pts[0].y - pts[6 * per].y) == 0.0);  // the stand holds
+}
+
+TEST_CASE("a cabin hanging below the rim at the bottom stays in the canvas when it rides to the top") {
+  // A wheel filling its canvas (centre (50,50), radius 45) and a cabin hanging from the rim
+  // at its lowest point, inside the wheel's box (the rig hangs it from the wheel): turned with
+  // the wheel or carried by its middle, it would stand out above the top.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
+           <g><path d="M 5 50 C 5 25 25 5 50 5 C 75 5 95 25 95 50 C 95 75 75 95 50 95 C 25 95 5 75 5 50 Z M 48 8 L 52 8 L 52 92 L 48 92 Z" fill="#d80" fill-rule="evenodd"/></g>
+           <g><rect x="45" y="84" width="10" height="10" fill="#0a0"/></g>
+           <g><rect x="78" y="78" width="12" height="12" fill="#00a"/></g></svg>)", "ferris_low.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("the wheel turns"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].parts == std::vector<int>{0});
+  const int F = 25;
+  const auto pts = animate_plan(s, rig, plan, F);
+  const size_t per = pts.size() / F;
+  size_t cabin = 0;
+  for (const auto& sp : s.paths[0].subpaths) cabin += sp.points.size();
+  size_t corner = cabin;
+  for (const auto& sp : s.paths[1].subpaths) corner += sp.points.size();
+  double top = 1e9;
+  for (int f = 0; f < F; ++f)
+    for (size_t i = cabin; i < corner; ++i) top = std::min(top, pts[f * per + i].y);
+  CHECK(top == doctest::Approx(16.0).epsilon(1e-6));  // its top (50,84) goes round to (50,16)
+  for (int f = 0; f < F; ++f) {  // both upright: level edges, their sizes kept; both in the canvas
+    RigBox b, c;
+    for (size_t i = cabin; i < corner; ++i) b.add(pts[f * per + i]);
+    for (size_t i = corner; i < per; ++i) c.add(pts[f * per + i]);
+    CHECK(b.w() == doctest::Approx(10.0));
+    CHECK(b.h() == doctest::Approx(10.0));
+    CHECK(c.w() == doctest::Approx(12.0));
+    CHECK(c.y0 >= 0.0);
+  }
+  // The rig hangs both from the wheel; the one in the box's corner has its middle (84,84)
+  // beyond the rim's radius (48 > 45) and rides too, hanging from (84,78).
+  CHECK(rig.parts[1].parent == 0);
+  CHECK(rig.parts[2].parent == 0);
 }
 
 }  // TEST_SUITE

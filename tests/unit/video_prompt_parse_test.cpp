@@ -89,6 +89,20 @@ TEST_CASE("a noun of a prepositional phrase split by 'and' stays its object; a v
   CHECK(h.clauses[0].verbs[0]->name == "gallop");
 }
 
+TEST_CASE("the one who moves ('a surfer', 'the riders') is the whole figure, not a part noun") {
+  // "surfer": glide's stem "surf" with the agent ending; "rider": the verb's word "ride" + "r".
+  for (const char* prompt : {"A surfer rides the waves.", "the riders are riding", "Runner runs fast", "the biker is pedalling"}) {
+    const ParsedPrompt p = parse_prompt(prompt);
+    REQUIRE(p.clauses.size() == 1);
+    CHECK(p.clauses[0].verbs.size() == 1);
+    for (const auto& n : p.clauses[0].nouns) CHECK(n.word == "waves");  // the only noun left
+  }
+  // Not an agent noun: "flower" is, harmlessly (the whole figure); "tower", "corner" are not.
+  const ParsedPrompt q = parse_prompt("the tower in the corner sways");
+  REQUIRE(q.clauses[0].nouns.size() == 2);
+  CHECK(q.clauses[0].nouns[0].word == "tower");
+}
+
 TEST_CASE("riding and the rider: whole words, not the stem 'rid' inside other words") {
   const ParsedPrompt p = parse_prompt("The rider is riding");
   REQUIRE(p.clauses.size() == 1);

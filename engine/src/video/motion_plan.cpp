@@ -16,12 +16,17 @@ namespace {
 constexpr double kTau = 2 * M_PI;
 // Golden-ratio spacing of the phases of repeated elements: no two drops fall in step.
 constexpr double kPhaseSpacing = 0.6180339887498949;
-// A prompt with no motion word: the figure sways this many degrees about its base, once.
-constexpr double kFallbackSwayDeg = 4;
+// A prompt with no motion word: the figure's top leans this many degrees (a Sway), once.
+constexpr double kFallbackSwayDeg = 6;
 // fit_plan: a point in the canvas margin at rest may come this close to the edge (share of the
 // margin); and it gives up after this many steps of 0.8 (7 % of the size).
 constexpr double kMarginUse = 0.9;
 constexpr int kScaleAttempts = 12;
+// fit_plan: a plan whose largest motion is under this share of the canvas diagonal is raised to
+// it (the pixel ranker calls a video where under 0.5 % of the foreground changes 'no motion'),
+// by at most this factor (a gentle motion stays gentler than a plain one).
+constexpr double kMinTravel = 0.02;
+constexpr double kMaxBoost = 3;
 // region_host: a part carries the arms when its middle is above this share of the figure's
 // height, it is at least this share of the figure tall, and this much wider than the root.
 constexpr double kArmHostTop = 0.6;
@@ -31,10 +36,13 @@ constexpr double kArmHostWider = 1.15;
 // within this share of a wheel's width from its centre turn with it.
 constexpr double kWheelShare = 0.5;
 constexpr double kConcentric = 0.1;
-// A part whose middle is within this share of a turning wheel's radius rides round with it.
-// and it is small beside the wheel (at most this share of its box: a cabin, not a stand).
+// A part whose middle is within this share of a turning wheel's radius rides round with it
+// when it is small beside the wheel (at most this share of its box: a cabin, not a stand).
 constexpr double kRideReach = 1.05;
 constexpr double kRideMaxArea = 0.1;
+// ... and its middle at least this share of the radius out from the centre (on the rim, not a
+// spoke: what hangs from the wheel nearer its centre turns with it).
+constexpr double kRimShare = 0.7;
 // A part hanging from a spinning part turns with it when this share of its box is inside (a
 // stand reaching into the wheel's box is not carried).
 constexpr double kSpinInsideShare = 0.9;
@@ -45,13 +53,27 @@ constexpr double kCoreMin = 0.12, kCoreMax = 0.35;
 
 // The usual amplitude of each primitive on one part, in its unit (motion_verbs.h), in the order
 // of Primitive: for a whole-figure verb a prompt aims at a part ("his legs squatting").
-constexpr double kPartAmplitude[] = {20, 1, 0.07, 0.04, 0.04, 6, 0.05, 15, 0.01, 0.08, 0.08, 0.08, 0.12};
-static_assert(sizeof kPartAmplitude / sizeof kPartAmplitude[0] == static_cast<size_t>(Primitive::Fall) + 1);
+constexpr double kPartAmplitude[] = {20, 1, 0.07, 0.04, 0.04, 6, 0.05, 15, 0.01, 0.08, 0.08, 0.08, 0.12, 6};
+static_assert(sizeof kPartAmplitude / sizeof kPartAmplitude[0] == static_cast<size_t>(Primitive::Sway) + 1);
+// A Sway's hinge, in shares of the figure's height from its top: the lower 45 % stays planted
+// (a wine glass's stem and foot, a saxophonist's legs); above it the lean grows over kRamp of
+// the height (bend_region's ramp) to the full angle.
+constexpr double kSwayHinge = 0.55;
+// A whole-figure wave is anchored at a side of the figure where thin parts (at most kPoleWidth
+// of the figure's extent across that side) lying within kPoleEnd of it together span kPoleSpan
+// of the figure along it: a flag's pole. The wave then runs away from that side.
+constexpr double kPoleWidth = 0.05, kPoleEnd = 0.1, kPoleSpan = 0.7;
+// A figure whose longer side is less than this many times its shorter one is compact: it swims
+// with its lower limbs, not by a wave along its body (Builder::add).
+constexpr double kElongated = 1.6;
+// A chain hanging from the root that reaches the lowest this share of the figure stands on the
+// ground (animate_plan): a saxophonist's legs stay while his upper body sways about the hips.
+constexpr double kPlanted = 0.15;
 
 // The unit of a primitive's amplitude (motion_verbs.h), as motion.json names it.
 const char* unit_of(Primitive p) {
   switch (p) {
-    case Primitive::Swing: case Primitive::Rock: case Primitive::Bend: return "degrees";
+    case Primitive::Swing: case Primitive::Rock: case Primitive::Bend: case Primitive::Sway: return "degrees";
     case Primitive::Spin: return "turns";
     case Primitive::Pulse: case Primitive::Stretch: return "fraction of size";
     case Primitive::Fall: return "canvas heights";
@@ -61,11 +83,14 @@ const char* unit_of(Primitive p) {
   }
 }
 
+// Arms: an upper limb whose box is less than this share of the largest one's is left out.
+constexpr double kArmMinShare = 0.2;
+
 // A rock aimed at a part turns it by at most this many times the rock's angle (Builder::add).
 constexpr double kRockToPartMax = 4;
 
 bool whole_only(Primitive p) {
-  return p == Primitive::Rock || p == Primitive::Hop || p == Primitive::Bob || p == Primitive::Slide ||
+  return p == Primitive::Rock || p == Primitive::Sway || p == Primitive::Hop || p == Primitive::Bob || p == Primitive::Slide ||
          p == Primitive::Squash || p == Primitive::Stretch || p == Primitive::Shake;
 }
 
@@ -119,7 +144,15 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
     case Target::Whole: return {};
     case Target::Root: return rig.root >= 0 ? std::vector<int>{rig.root} : std::vector<int>{};
     case Target::Head: v = with_role(rig, {Role::Head}); break;
-    case Target::Arms: v = with_role(rig, {Role::UpperLimb}); break;
+    case Target::Arms: {
+      // Arms come in similar sizes: an upper limb far smaller than the largest (a beak or an
+      // ear beside a bird's raised wing) is no arm to swing.
+      v = with_role(rig, {Role::UpperLimb});
+      double largest = 0;
+      for (int p : v) largest = std::max(largest, rig.parts[p].box.area());
+      v.erase(std::remove_if(v.begin(), v.end(), [&](int p) { return rig.parts[p].box.area() < kArmMinShare * largest; }), v.end());
+      break;
+    }
     case Target::Legs:
       v = with_role(rig, {Role::LowerLimb});
       // A creature wider than tall with nothing below (a spider, a crab seen from above): the
@@ -190,6 +223,38 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
   return v;
 }
 
+// The side of the figure a pole holds (PlannedAction::anchored: 1 left, 2 right, 3 top, 4
+// bottom), 0 for none.
+int anchored_side(const Rig& rig) {
+  const RigBox& F = rig.figure;
+  for (int side = 1; side <= 4; ++side) {
+    const bool across_x = side <= 2;  // a left or right pole: thin in x, spanning y
+    const double L = std::max(across_x ? F.w() : F.h(), 1e-9), span = std::max(across_x ? F.h() : F.w(), 1e-9);
+    std::vector<std::pair<double, double>> spans;
+    for (const auto& P : rig.parts) {
+      if (P.role == Role::Background || P.box.empty()) continue;
+      const double a0 = across_x ? P.box.x0 : P.box.y0, a1 = across_x ? P.box.x1 : P.box.y1;
+      const double s0 = across_x ? F.x0 : F.y0, s1 = across_x ? F.x1 : F.y1;
+      const bool near = side % 2 == 1 ? a1 <= s0 + kPoleEnd * L : a0 >= s1 - kPoleEnd * L;
+      if (near && a1 - a0 <= kPoleWidth * L) spans.push_back(across_x ? std::make_pair(P.box.y0, P.box.y1) : std::make_pair(P.box.x0, P.box.x1));
+    }
+    std::sort(spans.begin(), spans.end());
+    double covered = 0, lo = 0, hi = -1e300;
+    for (const auto& [b0, b1] : spans) {
+      if (b0 > hi) {
+        covered += std::max(0.0, hi - lo);
+        lo = b0;
+        hi = b1;
+      } else {
+        hi = std::max(hi, b1);
+      }
+    }
+    covered += std::max(0.0, hi - lo);
+    if (covered >= kPoleSpan * span) return side;
+  }
+  return 0;
+}
+
 // The part whose region bends for a limb role that has no part of its own. Arms: the widest
 // of the root and the parts hanging from it whose middle is in the figure's upper part (a
 // sweater drawn with both sleeves is wider than the trousers that are the largest part); the
@@ -251,14 +316,31 @@ void pair_up(const Rig& rig, PlannedAction& a, Pairing pairing, std::mt19937& rn
   }
 }
 
+// A compact figure (an octopus, a frog) does not swim by a wave along its body, which would heave
+// its head as much as its arms: its lower limbs paddle, alternating (Builder::add), and the
+// swim is then a verb of the limbs (plan_from_prompt).
+bool paddles(const Verb& verb, const Rig& rig) {
+  const RigBox& F = rig.figure;
+  const double aspect = std::max(F.w(), F.h()) / std::max(std::min(F.w(), F.h()), 1e-9);
+  return verb.name == "swim" && !verb.actions.empty() && verb.actions[0].primitive == Primitive::Undulate &&
+         aspect < kElongated && anchored_side(rig) == 0;
+}
+
 struct Builder {
   const Rig& rig;
   std::mt19937 rng;
   MotionPlan plan;
 
-  void add(const Verb& verb, const Action& base, Target target, const std::vector<int>& named_parts,
+  void add(const Verb& verb, const Action& base_in, Target target, const std::vector<int>& named_parts,
            const std::string& target_word, const Modifiers& mods, bool plural, const std::string& words,
            bool primary_retargeted) {
+    Action base = base_in;
+    std::string paddle;
+    if (&base_in == &verb.actions[0] && target == Target::Whole && paddles(verb, rig)) {
+      base = {Primitive::Swing, Target::Legs, kPartAmplitude[static_cast<size_t>(Primitive::Swing)], 2 * base.cycles, Pairing::Alternating};
+      target = Target::Legs;
+      paddle = "a compact figure: its lower limbs paddle";
+    }
     PlannedAction a;
     a.verb = verb.name;
     a.words = words;
@@ -270,7 +352,12 @@ struct Builder {
       // When the verb's amplitude is in another unit than the part's primitive (a squat's
       // figure heights, a swing's degrees), the part's primitive gets its usual size.
       if (unit_of(verb.on_part) != unit_of(a.primitive)) amp = kPartAmplitude[static_cast<size_t>(verb.on_part)];
-      else rock_on_part = a.primitive == Primitive::Rock;
+      else {
+        rock_on_part = a.primitive == Primitive::Rock || a.primitive == Primitive::Sway;
+        // A sway leans the figure's top about its middle: about the base, the top moves as far
+        // at this share of the angle.
+        if (a.primitive == Primitive::Sway) amp *= kSwayHinge;
+      }
       a.primitive = verb.on_part;
     }
     std::uniform_real_distribution<double> U(0, 1);
@@ -283,6 +370,7 @@ struct Builder {
       a.cycles = 1;
     }
     a.vertical = mods.vertical;
+    if (a.primitive == Primitive::Undulate && target == Target::Whole) a.anchored = anchored_side(rig);
     a.direction = mods.side != 0 ? mods.side : ((rng() & 1) ? 1 : -1);
     std::string note;
     if (target == Target::Named) a.parts = named_parts;
@@ -360,6 +448,11 @@ struct Builder {
              : target == Target::Repeated ? rig.repeated_why
              : std::string(target_name(target)) + " (" + join(names, ", ") + ")");
     if (!note.empty()) a.why += "; " + note;
+    if (!paddle.empty()) a.why += "; " + paddle;
+    if (a.anchored != 0) {
+      static const char* sides[] = {"", "left", "right", "top", "bottom"};
+      a.why += std::string("; held by a pole at its ") + sides[a.anchored] + ": the wave runs from there";
+    }
     if (!mods.words.empty()) a.why += "; " + join(mods.words, ", ");
     plan.actions.push_back(std::move(a));
   }
@@ -371,7 +464,7 @@ std::string MotionPlan::summary() const {
   std::string s;
   for (const auto& a : actions) {
     char amp[64];
-    const char* unit = a.primitive == Primitive::Swing || a.primitive == Primitive::Rock || a.primitive == Primitive::Bend ? " deg"
+    const char* unit = a.primitive == Primitive::Swing || a.primitive == Primitive::Rock || a.primitive == Primitive::Bend || a.primitive == Primitive::Sway ? " deg"
                        : a.primitive == Primitive::Spin ? " turn" : "";
     std::snprintf(amp, sizeof amp, " %.3g%s x%d", amplitude(a), unit, a.cycles);
     std::string who = a.target == Target::Whole ? "whole" : a.target == Target::Repeated ? "repeated" : "";
@@ -396,34 +489,62 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
     for (const auto& n : c.nouns)
       names_limbs = names_limbs || (!n.object_of_preposition && is_limb_target(n.target));
   std::vector<std::string> accents_left_out;
-  for (const Clause& c : prompt.clauses) {
-    // The clause's targets: known part nouns, and other words that name a part of the drawing.
+  // The clause's targets: known part nouns, and other words that name a part of the drawing.
+  struct ClauseTarget {
     Target target = Target::Whole;
     std::vector<int> named;
-    std::string target_word;
+    std::string word;
     bool plural = false, have = false;
+  };
+  auto target_of = [&](const Clause& c, std::vector<std::string>* unknown_words) {
+    ClauseTarget ct;
     for (const auto& n : c.nouns) {
       std::vector<int> hits;
       if (n.target == Target::Named) {
         std::string ignore;
         hits = parts_for(rig, Target::Named, n.word, &ignore);
         if (hits.empty()) {
-          unknown.push_back(n.word);
+          if (unknown_words) unknown_words->push_back(n.word);
           continue;
         }
+        // The verb's object naming only the backdrop ("rides the waves") is where the figure
+        // moves, not what moves: the backdrop moves when it is the subject ("the waves roll").
+        bool backdrop = true;
+        for (int h : hits) backdrop = backdrop && rig.parts[h].role == Role::Background;
+        if (backdrop && n.after_verb) continue;
       }
-      if (have || n.object_of_preposition) continue;
-      have = true;
-      target = n.target;
-      named = hits;
-      target_word = n.word;
-      plural = n.plural;
+      if (ct.have || n.object_of_preposition) continue;
+      ct.have = true;
+      ct.target = n.target;
+      ct.named = hits;
+      ct.word = n.word;
+      ct.plural = n.plural;
     }
+    return ct;
+  };
+  // Verbs the prompt aims at a part in some clause ("his upper body sways"): the same verb with
+  // no part elsewhere ("performs with a rhythmic sway") says that motion again, and on the whole
+  // figure it would move the parts the aimed clause keeps still (the legs under the body).
+  std::set<std::string> aimed;
+  for (const Clause& c : prompt.clauses)
+    if (const ClauseTarget ct = target_of(c, nullptr); ct.have && ct.target != Target::Whole && ct.target != Target::Repeated)
+      for (const Verb* v : c.verbs) aimed.insert(v->name);
+  std::vector<std::string> restated;
+  for (const Clause& c : prompt.clauses) {
+    const ClauseTarget ct = target_of(c, &unknown);
+    const Target target = ct.target;
+    const std::vector<int>& named = ct.named;
+    const std::string& target_word = ct.word;
+    const bool plural = ct.plural, have = ct.have;
     for (const Verb* v : c.verbs)
       for (size_t i = 0; i < v->actions.size(); ++i) {
         const Action& act = v->actions[i];
         const bool retarget = i == 0 && have;
-        if (i > 0 && act.target == Target::Whole && names_limbs && is_limb_target(v->actions[0].target)) {
+        if (i == 0 && !have && act.target == Target::Whole && aimed.count(v->name)) {
+          restated.push_back("'" + c.text + "'");
+          break;
+        }
+        if (i > 0 && act.target == Target::Whole && names_limbs && (is_limb_target(v->actions[0].target) || paddles(*v, rig))) {
           accents_left_out.push_back(v->name + "'s " + primitive_name(act.primitive));
           continue;
         }
@@ -433,6 +554,8 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
   }
   if (!accents_left_out.empty())
     b.plan.notes.push_back("the prompt names the limbs that move: the whole-figure " + join(accents_left_out, ", ") + " left out");
+  if (!restated.empty())
+    b.plan.notes.push_back(join(restated, ", ") + ": the prompt aims the same motion at a part elsewhere; the whole figure's left out");
   b.plan.not_understood = unknown;
   if (b.plan.actions.empty()) {
     const std::string words = unknown.empty() ? "no words" : join(unknown, ", ");
@@ -552,7 +675,16 @@ Vec2 deform(const PlannedAction& a, double amp, double t, const RigBox& box, Vec
   const double L = std::max(horizontal ? box.w() : box.h(), 1e-9);
   const double u = horizontal ? (q.x - box.x0) / L : (q.y - box.y0) / L;
   double d = 0;
-  if (a.primitive == Primitive::Undulate) {
+  if (a.primitive == Primitive::Undulate && a.anchored != 0) {
+    // Held at one side (a flag at its pole): the wave runs away from there, growing to the far
+    // side, across the pole whatever the figure's long axis.
+    const bool across_x = a.anchored <= 2;
+    const double len = std::max(across_x ? box.w() : box.h(), 1e-9);
+    const double f = across_x ? (q.x - box.x0) / len : (q.y - box.y0) / len;
+    const double v = a.anchored % 2 == 1 ? f : 1 - f;
+    const double e = amp * len * v * (std::sin(kTau * (a.cycles * t - v)) - std::sin(kTau * (-v)));
+    return across_x ? Vec2{q.x, q.y + e} : Vec2{q.x + e, q.y};
+  } else if (a.primitive == Primitive::Undulate) {
     const double w = 0.4 + 0.6 * std::fabs(2 * u - 1);  // the ends move most
     d = amp * L * w * (std::sin(kTau * (a.cycles * t - u)) - std::sin(kTau * (-u)));
   } else if (a.primitive == Primitive::Bend) {
@@ -562,7 +694,8 @@ Vec2 deform(const PlannedAction& a, double amp, double t, const RigBox& box, Vec
 }
 
 bool is_deformation(const PlannedAction& a) {
-  return a.primitive == Primitive::Undulate || a.primitive == Primitive::Bend || a.region != Region::None;
+  return a.primitive == Primitive::Undulate || a.primitive == Primitive::Bend || a.primitive == Primitive::Sway ||
+         a.region != Region::None;
 }
 
 double smoothstep(double x) {
@@ -622,6 +755,16 @@ Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box
   return q;
 }
 
+// A Sway of the figure with box `box`: above the hinge the points lean about the hinge's middle,
+// the lean growing smoothly over kRamp of the height (the shape stays in one piece); below it
+// they hold.
+Vec2 sway_lean(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
+  const double H = std::max(box.h(), 1e-9), hinge = box.y0 + kSwayHinge * H;
+  if (q.y >= hinge) return q;
+  const double w = smoothstep((hinge - q.y) / (kRamp * H));
+  return rotate_about(q, {box.centre().x, hinge}, a.direction * amp * std::sin(kTau * a.cycles * t) * w);
+}
+
 // The share of box a inside box b.
 double overlap_share(const RigBox& a, const RigBox& b) {
   const double ox = std::min(a.x1, b.x1) - std::max(a.x0, b.x0), oy = std::min(a.y1, b.y1) - std::max(a.y0, b.y0);
@@ -656,6 +799,12 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   for (int g = 0; g < G; ++g)
     for (int h = 0; h < G; ++h)
       if (under(h, g)) reach[g].add(rig.parts[h].box);
+  // Chains hanging from the root that reach the lowest kPlanted of the figure stand on the
+  // ground (legs, feet): the root's own swing does not carry them.
+  std::vector<char> planted(G, 0);
+  for (int g = 0; g < G; ++g)
+    planted[g] = rig.parts[g].parent == rig.root && rig.root >= 0 && !reach[g].empty() &&
+                 reach[g].y1 >= rig.figure.y1 - kPlanted * rig.figure.h();
 
   std::vector<Vec2> out;
   out.reserve(static_cast<size_t>(frames) * (scene.segment_count() * 3 + scene.paths.size() * 2));
@@ -663,14 +812,15 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     const double t = frames > 1 ? static_cast<double>(f) / (frames - 1) : 0;
     std::vector<Affine> local(G), world(G), spin(G);
     std::vector<char> spins(G, 0);
-    Affine whole;
+    Affine whole, root_turn;
     for (const auto& a : plan.actions) {
       const double amp = plan.amplitude(a);
       if (is_deformation(a) || a.target == Target::Repeated) continue;
       if (a.parts.empty()) whole = rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
       for (size_t i = 0; i < a.parts.size(); ++i) {
         const RigPart& P = rig.parts[a.parts[i]];
-        Affine& into = a.primitive == Primitive::Spin ? spin[a.parts[i]] : local[a.parts[i]];
+        Affine& into = a.primitive == Primitive::Spin ? spin[a.parts[i]]
+                       : a.parts[i] == rig.root && a.primitive == Primitive::Swing ? root_turn : local[a.parts[i]];
         into = rigid(a, amp, a.sign[i], a.phase[i], t, P.box, P.pivot, W, H) * into;
         if (a.primitive == Primitive::Spin) spins[a.parts[i]] = 1;
       }
@@ -680,28 +830,47 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     for (int g = 0; g < G; ++g) order[g] = g;
     auto depth = [&](int g) { int d = 0; for (int p = rig.parts[g].parent; p >= 0 && d < 64; p = rig.parts[p].parent) ++d; return d; };
     std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return depth(x) < depth(y); });
-    for (int g : order) world[g] = rig.parts[g].parent >= 0 ? world[rig.parts[g].parent] * local[g] : local[g];
-    // A spinning part turns in its own frame, and carries only what hangs from it inside its
-    // box (a ferris wheel's cabins, not its stand).
+    // The root's own turn (the upper body swaying about the hips) leaves what stands on the
+    // ground where it is: the chains hanging from the root that reach down to the figure's feet.
+    for (int g : order) {
+      const int p = rig.parts[g].parent;
+      if (g == rig.root) world[g] = local[g] * root_turn;
+      else if (p == rig.root && planted[g]) world[g] = local[p] * local[g];
+      else world[g] = p >= 0 ? world[p] * local[g] : local[g];
+    }
+    // A spinning part turns in its own frame, and carries what hangs from it inside its box
+    // (its spokes and hub, not its stand). Small parts with their middle on its rim (a ferris
+    // wheel's cabins, whether the rig hangs them from the wheel or elsewhere) ride round with it
+    // upright: each hangs from the middle of its top, which goes round the wheel's centre.
+    // Turned with the wheel, or carried round by its middle, a cabin hanging below the rim at
+    // the bottom came to stand out above it at the top, and left the canvas.
+    auto on_rim = [&](int g, int a) {
+      const RigPart& A = rig.parts[a];
+      const RigBox& gb = rig.parts[g].box;
+      const Vec2 d = gb.centre() - A.box.centre();
+      const double r = std::hypot(d.x, d.y), R = 0.5 * A.box.w();
+      // (In a corner of the wheel's box a cabin's middle may lie beyond the rim's radius.)
+      return a != g && gb.area() <= kRideMaxArea * A.box.area() && r >= kRimShare * R &&
+             (r <= kRideReach * R || overlap_share(gb, A.box) >= kSpinInsideShare);
+    };
     for (int g = 0; g < G; ++g) {
-      bool carried = false;
+      int turns_with = -1, rides = -1;
       for (int a = g, guard = 0; a >= 0 && guard < 64; a = rig.parts[a].parent, ++guard)
         if (spins[a] && (a == g || overlap_share(rig.parts[g].box, rig.parts[a].box) >= kSpinInsideShare)) {
-          world[g] = world[g] * spin[a];
-          carried = true;
+          (on_rim(g, a) ? rides : turns_with) = a;
           break;
         }
-      // Smaller parts elsewhere in the rig with their middle on a turning wheel (a ferris
-      // wheel's cabins) ride round with it, staying upright.
-      if (carried || g == rig.root || rig.parts[g].role == Role::Background) continue;
-      for (int a = 0; a < G; ++a) {
-        const RigPart& A = rig.parts[a];
-        const Vec2 c = rig.parts[g].box.centre(), d = c - A.box.centre();
-        if (!spins[a] || a == g || rig.parts[g].box.area() > kRideMaxArea * A.box.area() || std::hypot(d.x, d.y) > kRideReach * 0.5 * A.box.w()) continue;
-        const Vec2 to = spin[a].apply(c);
-        world[g] = Affine::translate(to.x - c.x, to.y - c.y) * world[g];
-        break;
+      if (turns_with >= 0) {
+        world[g] = world[g] * spin[turns_with];
+        continue;
       }
+      if (g == rig.root || rig.parts[g].role == Role::Background) continue;
+      for (int a = 0; a < G && rides < 0; ++a)
+        if (spins[a] && on_rim(g, a)) rides = a;
+      if (rides < 0) continue;
+      const RigBox& gb = rig.parts[g].box;
+      const Vec2 hang{gb.centre().x, gb.y0}, to = spin[rides].apply(hang);
+      world[g] = Affine::translate(to.x - hang.x, to.y - hang.y) * world[g];
     }
 
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
@@ -746,7 +915,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
                 if (g == a.parts[0] || (g >= 0 && under(g, a.parts[0]) && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y <= hb.y1))
                   q = bend_region(a, amp, t, hb, q);
               } else if (a.parts.empty()) {
-                if (!background) q = deform(a, amp, t, rig.figure, q);
+                if (!background) q = a.primitive == Primitive::Sway ? sway_lean(a, amp, t, rig.figure, q) : deform(a, amp, t, rig.figure, q);
               } else {
                 for (int p : a.parts)
                   if (g >= 0 && under(g, p)) q = deform(a, amp, t, reach[p], q);
@@ -765,7 +934,8 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
 namespace {
 
 // Why `pts` (frames of animate_plan) breaks a limit of fit_plan, or "" when it does not.
-std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const std::vector<char>& exempt, int frames, int K) {
+std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const std::vector<char>& exempt,
+                         const std::vector<char>& by_curve, int frames, int K) {
   const double m = kFrameMargin * std::min(scene.width, scene.height);
   const double x0 = m, y0 = m, x1 = scene.width - m, y1 = scene.height - m;
   const double max_step = kMaxStep * std::hypot(scene.width, scene.height);
@@ -775,7 +945,10 @@ std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const
   // rest, a drawing touching the edge, may use the band). One already outside the canvas (a
   // line drawing's handle: one 0.7 px out froze a galloping horse) may move: its curve is
   // held instead, each cubic at t = 0, 1/4, 1/2, 3/4, a point of it already outside at rest
-  // going at most 0.9 of the margin farther out.
+  // going at most 0.9 of the margin farther out. The points of a spinning part are held by their
+  // curves too: a turning circle stays where it is while its handles (0.55 of the radius off
+  // the circle) sweep out beyond it, past the edge of a canvas the wheel fills; held by
+  // the handles, no turn of a ferris wheel could stay in.
   auto allowed_for = [&](double rest) { return rest > m ? rest + kMarginUse * m : rest > 0 ? std::max(rest, kMarginUse * m) : 0.0; };
   auto at = [&](int f, size_t i, double t) {
     const Vec2* c = &pts[f * per + i];
@@ -788,7 +961,7 @@ std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const
       const size_t n = sp.points.size();
       for (size_t k = 0; k < n; ++k) {
         const double rest = outside(pts[i + k]);
-        if (rest > m) {
+        if (rest > m || by_curve[i + k]) {
           // The segments this point shapes: the one it starts or ends, or whose handle it is.
           const size_t s0 = k / 3 * 3, first = (k % 3 == 0 && k >= 3) ? s0 - 3 : s0;
           for (size_t s = first; s <= s0 && s + 3 < n; s += 3)
@@ -822,7 +995,7 @@ std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const
 void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
   // Points exempt from the step limit: falling elements (they jump back while invisible) and
   // spinning parts (whole turns cannot be scaled; rotation is what flow tracking follows best).
-  std::vector<char> exempt;
+  std::vector<char> exempt, by_curve;
   {
     std::set<int> spinning;
     for (const auto& a : plan.actions)
@@ -834,13 +1007,37 @@ void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, 
     if (falls)
       for (const auto& el : rig.repeated) falling.insert(el.begin(), el.end());
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
-      bool ex = falling.count(static_cast<int>(pi)) > 0;
+      bool spin = false;
       for (int g = rig.part_of_path[pi], guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
-        ex = ex || spinning.count(g) > 0;
-      for (const auto& sp : scene.paths[pi].subpaths) exempt.insert(exempt.end(), sp.points.size(), ex);
+        spin = spin || spinning.count(g) > 0;
+      const bool ex = spin || falling.count(static_cast<int>(pi)) > 0;
+      for (const auto& sp : scene.paths[pi].subpaths) {
+        exempt.insert(exempt.end(), sp.points.size(), ex);
+        by_curve.insert(by_curve.end(), sp.points.size(), spin);
+      }
     }
   }
   const int K = std::clamp(keyframes, 2, frames);
+  // Too small to see: a gentle sway of a cobra's head moved no point 2 px on a 256 px canvas,
+  // and the ranker stopped the video as 'no motion'. The plan grows until its largest motion
+  // (of the points that are neither falling nor spinning) is kMinTravel of the diagonal, at
+  // most kMaxBoost times; the limits below then scale it back where it would not fit.
+  {
+    const std::vector<Vec2> pts = animate_plan(scene, rig, plan, frames);
+    const size_t per = pts.size() / frames;
+    double largest = 0;
+    for (int f = 1; f < frames; ++f)
+      for (size_t i = 0; i < per; ++i)
+        if (!exempt[i]) largest = std::max(largest, std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
+    const double floor = kMinTravel * std::hypot(scene.width, scene.height);
+    if (largest > 0 && largest < floor) {
+      plan.scale = std::min(kMaxBoost, floor / largest);
+      char line[200];
+      std::snprintf(line, sizeof line, "all amplitudes raised to %.0f %%: the largest motion was %.1f %% of the canvas diagonal, too small to see",
+                    plan.scale * 100, 100 * largest / std::hypot(scene.width, scene.height));
+      plan.notes.push_back(line);
+    }
+  }
   // Each action alone first, then all together.
   for (size_t i = 0; i <= plan.actions.size(); ++i) {
     const bool all = i == plan.actions.size();
@@ -856,7 +1053,7 @@ void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, 
     for (int attempt = 0;; ++attempt) {
       if (!all) one.actions[i].scale = scale;
       else one.scale = scale;
-      const std::string why = limit_broken(scene, animate_plan(scene, rig, one, frames), exempt, frames, K);
+      const std::string why = limit_broken(scene, animate_plan(scene, rig, one, frames), exempt, by_curve, frames, K);
       const std::string what = all ? "the motion" : plan.actions[i].verb + " (" + primitive_name(plan.actions[i].primitive) + ")";
       if (why.empty()) {
         if (scale < 1) {
@@ -943,7 +1140,6 @@ std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>&
         m.rest.add(rest);
         for (int f = 0; f < frames; ++f) {
           const Vec2 q = pts[f * per + i];
-          m.swept.add(q);
           far = std::max(far, std::hypot(q.x - rest.x, q.y - rest.y));
         }
         m.max_travel = std::max(m.max_travel, far);
@@ -953,6 +1149,23 @@ std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>&
         ++i;
       }
     m.mean_travel = m.points ? sum / m.points : 0;
+  }
+  // The box each path's curves sweep: every cubic at t = 0, 1/4, 1/2, 3/4, 1 in every frame
+  // (the drawing, not its handles: a turning circle's handles sweep beyond the circle).
+  for (int f = 0; f < frames; ++f) {
+    size_t j = 0;
+    for (size_t p = 0; p < scene.paths.size(); ++p)
+      for (const auto& sp : scene.paths[p].subpaths) {
+        const Vec2* c = &pts[f * per + j];
+        for (size_t s = 0; s + 3 < sp.points.size(); s += 3)
+          for (double t : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+            const double u = 1 - t;
+            out[p].swept.add(u * u * u * c[s] + 3 * u * u * t * c[s + 1] + 3 * u * t * t * c[s + 2] + t * t * t * c[s + 3]);
+          }
+        if (sp.points.size() < 4)
+          for (size_t s = 0; s < sp.points.size(); ++s) out[p].swept.add(c[s]);
+        j += sp.points.size();
+      }
   }
   return out;
 }

@@ -6,13 +6,15 @@
 // Frames are built part by part down the rig (a limb's segments follow it), in this order for
 // each control point: its repeated element's own motion (a falling drop), deformations of the
 // shape (a swimming wave, a bend), the rig's rotations about the pivots, then the motion of the
-// whole figure (a hop, a bob, a rock about its base). The background stays still unless a plan
+// whole figure (a hop, a bob, a rock about its base). A swing of the root itself (a boxer's
+// body turning into a punch, an upper body swaying) leaves the chains hanging from the root
+// that reach the figure's feet where they are. The background stays still unless a plan
 // names it. The first and the last frame are the rest pose (the loop closes), except for
 // repeated elements, which each keep their own phase.
 //
 // Two limits keep the target followable (fit_plan): no control point leaves the canvas (less a
-// margin of kFrameMargin; a point already outside it at rest, a line drawing's handle, may move
-// while the curves it shapes stay in), and no point travels farther than kMaxStep of the
+// margin of kFrameMargin; a point already outside it at rest, a line drawing's handle, or a
+// point of a spinning part, may move while the curves it shapes stay in), and no point travels farther than kMaxStep of the
 // canvas diagonal between two keyframes. When either fails
 // the amplitudes are scaled down (spins keep whole turns; falls are shortened per element).
 #pragma once
@@ -45,6 +47,8 @@ struct PlannedAction {
   int cycles = 1;
   int vertical = 0;             // Bob: +1 only up, -1 only down
   int direction = 1;            // Spin, Slide, Rock one-sided: which way first
+  int anchored = 0;             // Undulate of the whole figure: the side a pole holds it at (a
+                                // flag): 1 left, 2 right, 3 top, 4 bottom; 0 free (a fish)
   Region region = Region::None; // a Swing of a region of parts[0] instead of whole parts
   int region_side = 0;          // Sides/Lower: -1 only the viewer's left, +1 only the right
   bool alternating = false;     // Sides/Lower: the two sides half a cycle apart
@@ -98,7 +102,8 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
 // (animate_plan's points): the largest and the mean (over points) of each point's largest
 // distance, and the box the path sweeps; in the JSON also each control point's rest position and
 // travel ("point_travel": [x, y, travel, ...] rounded to 0.1), so a reader can check what moved
-// where (tests/bench/motion_score.py).
+// where (tests/bench/motion_score.py). The swept box is that of the path's curves (each cubic
+// at quarters), not of its handles.
 struct PathMotion {
   double max_travel = 0, mean_travel = 0;
   int points = 0;

@@ -25,7 +25,7 @@ const std::vector<Verb> kVerbs = {
   {"wave",    {"wav", "greet", "goodby"},       {{P::Swing, T::Arms, 35, 2, Pr::OneSide}}, P::Swing},
   {"clap",    {"clap"},                         {{P::Swing, T::Arms, 22, 4, Pr::Mirrored}}, P::Swing},
   {"cheer",   {"cheer", "celebrat", "rejoic"},  {{P::Swing, T::Arms, 32, 3, Pr::Mirrored}, {P::Hop, T::Whole, 0.03, 3}}, P::Swing},
-  {"punch",   {"punch", "box", "jab", "fight", "fenc"}, {{P::Swing, T::Arms, 26, 3, Pr::Alternating}, {P::Rock, T::Whole, 3, 3}}, P::Swing},  // the body turns into each punch, the feet planted
+  {"punch",   {"punch", "box", "jab", "fight", "fenc"}, {{P::Swing, T::Arms, 26, 3, Pr::Alternating}, {P::Swing, T::Root, 4, 3}}, P::Swing},  // the body turns into each punch about the hips, the legs planted (motion_plan.h)
   {"lift",    {"lift", "rais", "hold"},         {{P::Swing, T::Arms, 24, 2, Pr::Mirrored}}, P::Swing},
   {"reach",   {"reach", "spread"},              {{P::Swing, T::Arms, 20, 1, Pr::Mirrored}}, P::Swing},
   {"pump",    {"pump"},                         {{P::Swing, T::Arms, 20, 2, Pr::Alternating}}, P::Swing},
@@ -45,7 +45,7 @@ const std::vector<Verb> kVerbs = {
   {"float",   {"float", "drift", "levitat"},    {{P::Bob, T::Whole, 0.05, 1}, {P::Rock, T::Whole, 3, 1}}, P::Bob},
   {"rise",    {"ris", "rose", "ascend"},        {{P::Bob, T::Whole, 0.06, 1}}, P::Bob},
   {"sink",    {"sink", "sank", "div", "descend"}, {{P::Bob, T::Whole, 0.06, 1}, {P::Rock, T::Whole, 4, 1}}, P::Bob},
-  {"sway",    {"sway", "blow", "breez"},        {{P::Rock, T::Whole, 5, 1}}, P::Swing},
+  {"sway",    {"sway", "blow", "breez"},        {{P::Sway, T::Whole, 8, 1}}, P::Swing},
   {"rock",    {"rock", "swing", "swung"},       {{P::Rock, T::Whole, 7, 1}}, P::Swing},
   {"lean",    {"lean", "tilt", "tip"},          {{P::Rock, T::Whole, 8, 1, Pr::OneSide}}, P::Swing},
   {"bow",     {"bow"},                          {{P::Rock, T::Whole, 10, 1, Pr::OneSide}}, P::Swing},
@@ -57,7 +57,7 @@ const std::vector<Verb> kVerbs = {
   {"move",    {"mov", "go", "went", "advanc", "crawl", "creep", "inch", "proceed", "travel"}, {{P::Slide, T::Whole, 0.04, 1}, {P::Stretch, T::Whole, 0.04, 2}}, P::Swing},
   {"glide",   {"ski", "skat", "surf", "slid", "sled", "ride", "riding", "rode", "ridden", "maneuver", "manoeuvr", "sail", "row"}, {{P::Slide, T::Whole, 0.04, 1}, {P::Rock, T::Whole, 5, 1}}, P::Swing},
   {"drive",   {"driv", "drove", "roll", "accelerat", "launch", "speed"}, {{P::Shake, T::Whole, 0.006, 6}, {P::Spin, T::Wheels, 1, 1}}, P::Spin},
-  {"dodge",   {"dodg", "evad"},                 {{P::Rock, T::Whole, 6, 2}}, P::Swing},  // a lean of the body, the feet planted
+  {"dodge",   {"dodg", "evad"},                 {{P::Swing, T::Root, 8, 2}}, P::Swing},  // a lean of the body about the hips, the legs planted
   // Bodies that bend.
   {"swim",    {"swim", "swam", "paddl"},        {{P::Undulate, T::Whole, 0.05, 1}, {P::Slide, T::Whole, 0.02, 1}}, P::Undulate},
   {"slither", {"slither", "undulat", "wriggl", "squirm", "sinuous", "snak", "weav"}, {{P::Undulate, T::Whole, 0.06, 1}}, P::Undulate},
@@ -150,8 +150,8 @@ bool is_filler_word(std::string_view w) {
 }
 
 const char* primitive_name(Primitive p) {
-  static constexpr std::array<const char*, 13> names = {"swing", "spin", "hop", "bob", "slide", "rock", "undulate",
-                                                        "bend", "shake", "pulse", "squash", "stretch", "fall"};
+  static constexpr std::array<const char*, 14> names = {"swing", "spin", "hop", "bob", "slide", "rock", "undulate",
+                                                        "bend", "shake", "pulse", "squash", "stretch", "fall", "sway"};
   return names[static_cast<size_t>(p)];
 }
 

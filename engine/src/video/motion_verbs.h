@@ -31,6 +31,8 @@ enum class Primitive {
   Squash,    // down and squashed, then back up (sitting, crouching) [figure heights]
   Stretch,   // longer along the part's long axis, then back [fraction of the length]
   Fall,      // each element falls and is replaced from above, its own phase [canvas heights]
+  Sway,      // the figure's upper part leans side to side about a hinge at its middle, the
+             // lower part planted (a glass on its foot, a tree on its roots) [degrees of lean]
 };
 
 // Which parts an action moves, by role in the rig (part_rig.h).

@@ -35,6 +35,9 @@ constexpr double kWheelPathArea = 0.02;
 // this share of the root's core path and less than this share of its box lies in the core's.
 constexpr double kLimbPathArea = 0.15;
 constexpr double kLimbInCore = 0.5;
+// A part above the root more than this many times as tall as wide is a raised limb, not the
+// head (a bird's wing raised above its back; heads in the bench drawings are 0.6-1.5).
+constexpr double kHeadMaxAspect = 2.0;
 
 bool is_generic_word(const std::string& w) {
   static const std::set<std::string> generic = {
@@ -419,7 +422,10 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
     const double dx = c.x - rc.x;
     const bool inside = overlap(P.box, R.box) >= 0.8 * P.box.area();
     if (inside) { P.role = Role::Detail; P.why = "inside the root"; }
-    else if (std::fabs(dx) < 0.35 * rw && c.y < R.box.y0 + 0.25 * rh) {
+    else if (std::fabs(dx) < 0.35 * rw && c.y < R.box.y0 + 0.25 * rh && P.box.h() > kHeadMaxAspect * P.box.w()) {
+      P.role = Role::UpperLimb;
+      P.why = "above the root, tall and thin (a raised wing or arm)";
+    } else if (std::fabs(dx) < 0.35 * rw && c.y < R.box.y0 + 0.25 * rh) {
       P.role = Role::Head;
       P.why = "central, above the root";
       if (head < 0 || P.area > rig.parts[head].area) head = g;

@@ -16,8 +16,9 @@
 //    one its box overlaps most, or the nearest. Its pivot is the centroid of its control
 //    points inside the parent's box (where it attaches), else its point nearest the parent.
 //    Parts hanging from a non-root part form limb chains and move with their parent.
-//  - relative to the root, the parts hanging from it are the head (central, above), upper
-//    limbs (arms, wings: beside the root, not below its middle), lower limbs (legs: below its
+//  - relative to the root, the parts hanging from it are the head (central, above; a tall thin
+//    part there is a raised wing or arm), upper limbs (arms, wings: beside the root, not below
+//    its middle), lower limbs (legs: below its
 //    middle) and the tail (the attached part farthest from the root, not the head).
 //  - side: the figure's own side. A figure faces the viewer, so its right is drawn on the
 //    viewer's left; a part named "right"/"left" keeps its name's side.

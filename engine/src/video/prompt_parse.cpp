@@ -40,6 +40,14 @@ const Verb* verb_for_word(const std::string& w) {
   return nullptr;
 }
 
+// "surfer", "runners", "biker", "rider": a verb with the agent ending ("er" after a stem, which
+// word_matches reads as an inflection; "r" after a verb's word ending in "e").
+bool is_agent_noun(const std::string& w) {
+  const std::string one = w.size() > 1 && w.back() == 's' ? w.substr(0, w.size() - 1) : w;
+  if (one.size() < 5 || one.compare(one.size() - 2, 2, "er") != 0) return false;
+  return verb_for_word(one) || verb_for_word(one.substr(0, one.size() - 1));
+}
+
 const PartNoun* noun_for_word(const std::string& w) {
   for (const auto& n : part_nouns())
     if (word_matches(w, n.stem) || (n.stem == "leaf" && w == "leaves")) return &n;
@@ -53,6 +61,7 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep) {
   Clause c;
   std::string prev;
   for (const auto& w : words) {
+    const bool prev_was_start = c.text.empty();
     c.text += (c.text.empty() ? "" : " ") + w;
     const bool after_determiner = is_determiner(prev);
     prev = w;
@@ -63,10 +72,14 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep) {
     // A known part noun is a noun even where its word could be a verb ("drops", "hands").
     if (const PartNoun* n = noun_for_word(w)) {
       const bool plural = (w.size() > n->stem.size() && w.back() == 's') || w == "feet" || w == "leaves";
-      c.nouns.push_back({w, n->target, plural, after_prep});
+      c.nouns.push_back({w, n->target, plural, after_prep, !c.verbs.empty()});
       after_prep = false;
       continue;
     }
+    // A verb's agent noun opening the clause or after an article ("a surfer rides", "the
+    // biker is pedalling") is the one who moves: the whole figure, not a part named like it (a
+    // surfer's shadow drawn as "shadow_surfer" swung while the surfer stood still).
+    if ((prev_was_start || after_determiner) && is_agent_noun(w)) continue;
     // A verb's word right after an article or a possessive is a noun ("rides the waves",
     // "in the breeze"), unless it is a participle ("a galloping horse", "a waving flag").
     const bool participle = w.size() > 4 && w.compare(w.size() - 3, 3, "ing") == 0;
@@ -81,7 +94,7 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep) {
     }
     if (is_preposition(w)) { after_prep = true; continue; }
     if (is_filler_word(w)) continue;
-    c.nouns.push_back({w, Target::Named, w.size() > 3 && w.back() == 's', after_prep});
+    c.nouns.push_back({w, Target::Named, w.size() > 3 && w.back() == 's', after_prep, !c.verbs.empty()});
   }
   return c;
 }

@@ -22,6 +22,7 @@ struct PromptNoun {
   Target target;         // Named when it is not a known part noun (matched to part names later)
   bool plural = false;
   bool object_of_preposition = false;  // "on the umbrella": not a target
+  bool after_verb = false;             // "rides the waves": the verb's object
 };
 
 struct Clause {
