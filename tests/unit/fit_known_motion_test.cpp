@@ -189,4 +189,62 @@ TEST_CASE("containment at rest is zero: handles outside round shapes are not pul
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("refinement guard: keyframes taken back from the coarse fit, losses judged at the coarse width") {
+  // The figure's arm turns over 3 keyframes. A coarse fit at 96 px, then a fitter twice as wide
+  // started from it (adopt_coarse), as fit_job's refinement does.
+  const Scene s = figure();
+  const int K = 3;
+  const auto dir = std::filesystem::temp_directory_path() / ("svgm_guard_" + std::to_string(::getpid()));
+  write_known_motion(s, 96, K, [](int k, int g) {
+    MotionParams p = identity_params();
+    if (g == 1) p[9] = 0.27, p[10] = 0.04, p[2] = -0.2 * k;
+    return p;
+  }, [](int, Vec2) { return Vec2{}; }, dir);
+  TargetOptions to;
+  to.keyframes = K;
+  FitOptions fo;
+  fo.iterations = 300;
+  fo.track = false;
+  const TargetFrames coarse_target = load_target(dir, 96, 96, to), fine_target = load_target(dir, 192, 192, to);
+  Fitter coarse(runtime(), s, coarse_target, fo);
+  while (!coarse.done()) coarse.step();
+  const std::vector<float> fitted = coarse.evaluate_keyframe_losses();
+  Fitter fine(runtime(), s, fine_target, fo.refined_at(2));
+  fine.adopt_coarse(coarse, 2);
+
+  // Brought back down to the coarse width, the fine fitter's start is the coarse fit: the same
+  // losses there (the offsets go x2 and x0.5; the field is folded into the offsets).
+  const FitState kept = coarse.state();
+  coarse.adopt_coarse(fine, 0.5);
+  const std::vector<float> round_trip = coarse.evaluate_keyframe_losses();
+  coarse.restore(kept);
+  REQUIRE(round_trip.size() == fitted.size());
+  for (int k = 0; k < K; ++k) CHECK(round_trip[k] == doctest::Approx(fitted[k]).epsilon(1e-3));
+
+  // An unfitted coarse fitter stands for a worse fit. Taking its keyframe 2 puts exactly that
+  // keyframe back to rest (canvas coordinates) and leaves keyframes 0 and 1 as they were.
+  Fitter unfitted(runtime(), s, coarse_target, fo);
+  const auto before = fine.keyframe_points_canvas();
+  fine.take_keyframes(unfitted, 2, {0, 0, 1});
+  const auto after = fine.keyframe_points_canvas();
+  const RasterPlan& plan = fine.raster_plan();
+  const size_t per_key = static_cast<size_t>(plan.n_cp) * 2;
+  double moved_kept = 0, off_rest = 0, arm_moved = 0;
+  for (size_t i = 0; i < 2 * per_key; ++i) moved_kept = std::max(moved_kept, std::fabs(after[i] - before[i]));
+  for (int i = 0; i < plan.n_cp; ++i) {
+    off_rest = std::max(off_rest, std::hypot(after[2 * per_key + 2 * i] - plan.rest_cp[2 * i] / 2,
+                                             after[2 * per_key + 2 * i + 1] - plan.rest_cp[2 * i + 1] / 2));
+    arm_moved = std::max(arm_moved, std::hypot(before[2 * per_key + 2 * i] - after[2 * per_key + 2 * i],
+                                               before[2 * per_key + 2 * i + 1] - after[2 * per_key + 2 * i + 1]));
+  }
+  MESSAGE("keyframe 2 moved by " << arm_moved << " px back to rest; off rest after " << off_rest);
+  CHECK(moved_kept == 0.0);
+  CHECK(arm_moved > 3.0);  // the fitted arm had turned away from rest
+  CHECK(off_rest < 1e-3);
+  // The fine fitter's own loss of that keyframe is now the unfitted one's: clearly worse.
+  const std::vector<float> fine_losses = fine.evaluate_keyframe_losses();
+  CHECK(fine_losses[2] > 5 * fine_losses[1]);
+  std::filesystem::remove_all(dir);
+}
+
 }  // TEST_SUITE

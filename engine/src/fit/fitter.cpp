@@ -447,6 +447,35 @@ std::vector<float> Fitter::render_keyframes() {
 
 std::vector<float> Fitter::keyframe_losses() { return raster_->read_frame_losses(); }
 
+std::vector<float> Fitter::evaluate_keyframe_losses() {
+  enqueue_motion(K_);
+  raster_->set_active_frames(K_);
+  raster_->enqueue_loss_and_gradient(opt_.w_image, kWhite);
+  return raster_->read_frame_losses();
+}
+
+void Fitter::take_keyframes(Fitter& other, double scale, const std::vector<char>& which) {
+  if (other.K_ != K_ || other.G_ != G_ || other.plan_.n_cp != plan_.n_cp || which.size() != static_cast<size_t>(K_))
+    throw Error("internal: keyframes taken from a fit of another shape");
+  auto& oq = other.rt_.queue();
+  const size_t pk = static_cast<size_t>(G_) * kMotionParams, ok = static_cast<size_t>(plan_.n_cp) * 2;
+  std::vector<float> oparams(K_ * pk), ooffsets(K_ * ok);
+  other.enqueue_motion(K_);  // its total offsets (free + field) of every keyframe
+  oq.enqueueReadBuffer(other.params_, CL_TRUE, 0, oparams.size() * sizeof(float), oparams.data());
+  oq.enqueueReadBuffer(other.total_offsets_, CL_TRUE, 0, ooffsets.size() * sizeof(float), ooffsets.data());
+  auto& q = rt_.queue();
+  const size_t fk = static_cast<size_t>(fplan_.n_nodes) * 2;
+  for (int k = 0; k < K_; ++k) {
+    if (!which[static_cast<size_t>(k)]) continue;
+    std::vector<float> off(ooffsets.begin() + k * ok, ooffsets.begin() + (k + 1) * ok);
+    for (float& o : off) o = static_cast<float>(o * scale);
+    q.enqueueWriteBuffer(params_, CL_TRUE, k * pk * sizeof(float), pk * sizeof(float), oparams.data() + k * pk);
+    q.enqueueWriteBuffer(offsets_, CL_TRUE, k * ok * sizeof(float), ok * sizeof(float), off.data());
+    if (fk) q.enqueueFillBuffer(field_, 0.f, k * fk * sizeof(float), fk * sizeof(float));
+  }
+  q.finish();
+}
+
 FitState Fitter::state() {
   FitState s;
   s.iteration = iteration_;

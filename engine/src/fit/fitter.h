@@ -150,6 +150,9 @@ class Fitter {
   std::vector<float> render_keyframes();
   // Per-keyframe image losses of the last iteration.
   std::vector<float> keyframe_losses();
+  // Per-keyframe image losses of the current parameters, every keyframe evaluated (active or
+  // not); the next iteration recomputes what it needs.
+  std::vector<float> evaluate_keyframe_losses();
 
   const RasterPlan& raster_plan() const { return plan_; }
   const FitPlan& fit_plan() const { return fplan_; }
@@ -166,6 +169,11 @@ class Fitter {
   // by `scale` (fine width / coarse width); this fitter's own field starts at zero on top of
   // them. Every keyframe becomes active with fresh Adam moments, at iteration 0.
   void adopt_coarse(Fitter& coarse, double scale);
+  // Keyframes k with `which[k]` set become `other`'s (same drawing and keyframe count, `scale`
+  // times narrower: its homographies, and its total offsets times `scale` with this fitter's
+  // field zero there); every other keyframe, the iteration count and Adam's state are kept.
+  // The refinement's guard puts back the coarse fit of a keyframe the refinement made worse.
+  void take_keyframes(Fitter& other, double scale, const std::vector<char>& which);
 
   // Keyframe-to-keyframe flow from the tracker stage (flow_tracks.h): flows[k] moves keyframe
   // k-1's points to k for the warm start, instead of tracking the fit's own render.
