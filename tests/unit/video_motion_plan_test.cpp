@@ -44,6 +44,15 @@ struct Fixture {
   }
 };
 
+// Calls visit(rest, move) for every point of every frame: its position in frame 0 and how far
+// it is from there.
+template <class Visit>
+void each_move(const std::vector<Vec2>& pts, int F, Visit visit) {
+  const size_t per = pts.size() / F;
+  for (int f = 0; f < F; ++f)
+    for (size_t i = 0; i < per; ++i) visit(pts[i], pts[f * per + i] - pts[i]);
+}
+
 double loop_gap(const std::vector<Vec2>& pts, int F) {
   const size_t per = pts.size() / F;
   double m = 0;
@@ -444,15 +453,13 @@ TEST_CASE("a sway leans the figure's top about its middle; the foot and the lowe
   const int F = 25;
   fit_plan(s, rig, plan, F, 9);
   const auto pts = animate_plan(s, rig, plan, F);
-  const size_t per = pts.size() / F;
   // The hinge is at 20 + 0.55 * 158 = 106.9: every point at or below it holds, the rim leans.
   double below = 0, rim = 0;
-  for (int f = 0; f < F; ++f)
-    for (size_t i = 0; i < per; ++i) {
-      const double d = std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y);
-      if (pts[i].y >= 106.9) below = std::max(below, d);
-      if (pts[i].y == 20.0) rim = std::max(rim, d);
-    }
+  each_move(pts, F, [&](Vec2 rest, Vec2 m) {
+    const double d = std::hypot(m.x, m.y);
+    if (rest.y >= 106.9) below = std::max(below, d);
+    if (rest.y == 20.0) rim = std::max(rim, d);
+  });
   CHECK(below == 0.0);
   CHECK(rim > 6.0);  // about 87 * sin(8 deg) = 12, less the seed's variation
   CHECK(loop_gap(pts, F) < 1e-9);
@@ -523,15 +530,12 @@ TEST_CASE("a flag ripples from its pole: the pole holds, the free end moves most
   const int F = 25;
   fit_plan(s, rig, plan, F, 9);
   const auto pts = animate_plan(s, rig, plan, F);
-  const size_t per = pts.size() / F;
   double pole = 0, free_end = 0;
-  for (int f = 0; f < F; ++f)
-    for (size_t i = 0; i < per; ++i) {
-      const Vec2 d = pts[f * per + i] - pts[i];
-      CHECK(d.x == 0.0);  // the wave runs across the pole: up and down
-      if (pts[i].x <= 14) pole = std::max(pole, std::fabs(d.y));
-      if (pts[i].x == 150) free_end = std::max(free_end, std::fabs(d.y));
-    }
+  each_move(pts, F, [&](Vec2 rest, Vec2 d) {
+    CHECK(d.x == 0.0);  // the wave runs across the pole: up and down
+    if (rest.x <= 14) pole = std::max(pole, std::fabs(d.y));
+    if (rest.x == 150) free_end = std::max(free_end, std::fabs(d.y));
+  });
   CHECK(free_end > 3.0);
   CHECK(pole < 0.05 * free_end);
   CHECK(loop_gap(pts, F) < 1e-9);
@@ -569,14 +573,12 @@ TEST_CASE("a compact figure swims with its lower limbs; its head holds; named te
   // The head (above the hips at 60 % of the height, y < 110) holds; the arms' ends move.
   const int F = 13;
   const auto pts = animate_plan(s, rig, both, F);
-  const size_t per = pts.size() / F;
   double head = 0, ends = 0;
-  for (int f = 0; f < F; ++f)
-    for (size_t i = 0; i < per; ++i) {
-      const double d = std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y);
-      if (pts[i].y < 20 + 0.6 * 150 && pts[i].x > 60 && pts[i].x < 140) head = std::max(head, d);
-      if (pts[i].y == 170) ends = std::max(ends, d);
-    }
+  each_move(pts, F, [&](Vec2 rest, Vec2 m) {
+    const double d = std::hypot(m.x, m.y);
+    if (rest.y < 20 + 0.6 * 150 && rest.x > 60 && rest.x < 140) head = std::max(head, d);
+    if (rest.y == 170) ends = std::max(ends, d);
+  });
   CHECK(head == 0.0);
   CHECK(ends > 5.0);
 }
@@ -601,24 +603,18 @@ TEST_CASE("a boxer's body turns into the punches and leans to dodge about the hi
 TEST_CASE("a bird flaps its raised wing, not its small beak beside the body") {
   // Body 60-160 x 100-160, a wing raised above its back (tall and thin: an upper limb, not the
   // head), a beak at the left (an upper limb by place, a tenth of the wing's box).
-  const Scene s = read_svg_string(
-      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
-           <g><path d="M 60 100 L 160 100 L 160 160 L 60 160 Z" fill="#f9c"/></g>
-           <g><path d="M 95 20 L 115 20 L 115 120 L 95 120 Z" fill="#e7a"/></g>
-           <g><path d="M 40 110 L 62 115 L 40 120 Z" fill="#fa0"/></g></svg>)", "bird_side.svg");
+  const Scene s = read_svg_file(data("bird_side.svg"));
   const Rig rig = build_rig(s, {});
   REQUIRE(rig.parts[2].role == Role::UpperLimb);
   const MotionPlan plan = plan_from_prompt(parse_prompt("a bird hovers, flapping its wings"), rig, 1);
   REQUIRE(plan.actions.size() == 1);
   CHECK(plan.actions[0].parts == std::vector<int>{1});
   const auto pts = animate_plan(s, rig, plan, 13);
-  const size_t per = pts.size() / 13;
   double beak = 0, wing = 0;
-  for (int f = 0; f < 13; ++f)
-    for (size_t i = 0; i < per; ++i) {
-      const double d = std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y);
-      (pts[i].x < 62 && pts[i].y > 105 ? beak : wing) = std::max(pts[i].x < 62 && pts[i].y > 105 ? beak : wing, d);
-    }
+  each_move(pts, 13, [&](Vec2 rest, Vec2 m) {
+    double& part = rest.x < 62 && rest.y > 105 ? beak : wing;
+    part = std::max(part, std::hypot(m.x, m.y));
+  });
   CHECK(beak == 0.0);
   CHECK(wing > 10.0);
 }

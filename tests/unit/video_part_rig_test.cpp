@@ -168,12 +168,7 @@ TEST_CASE("a round part is a wheel; a stand is not") {
 TEST_CASE("a tall thin part above the body is a raised wing, not the head; a round one is the head") {
   // A bird seen from the side: body 60-160 x 100-160, its beak at the left, one wing raised
   // above its back (95-115 x 20-120: five times as tall as wide).
-  const Scene s = read_svg_string(
-      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
-           <g><path d="M 60 100 L 160 100 L 160 160 L 60 160 Z" fill="#f9c"/></g>
-           <g><path d="M 95 20 L 115 20 L 115 120 L 95 120 Z" fill="#e7a"/></g>
-           <g><path d="M 40 110 L 62 115 L 40 120 Z" fill="#fa0"/></g></svg>)", "bird_side.svg");
-  const Rig r = build_rig(s, {});
+  const Rig r = rig_of("bird_side.svg");
   REQUIRE(r.root == 0);
   CHECK(r.parts[1].role == Role::UpperLimb);
   CHECK(r.parts[1].why == "above the root, tall and thin (a raised wing or arm)");

@@ -200,23 +200,15 @@ void Fitter::scale_learning_rates(float s) {
 }
 
 void Fitter::adopt_coarse(Fitter& coarse, double scale) {
-  if (coarse.K_ != K_ || coarse.G_ != G_ || coarse.plan_.n_cp != plan_.n_cp)
-    throw Error("internal: the coarse fit has another shape than the fine one");
-  auto& cq = coarse.rt_.queue();
-  const size_t np = static_cast<size_t>(K_) * G_ * kMotionParams, no = static_cast<size_t>(K_) * plan_.n_cp * 2;
-  std::vector<float> params(np), offsets(no);
-  coarse.enqueue_motion(K_);  // total_offsets_ = free offsets + field, for every keyframe
-  cq.enqueueReadBuffer(coarse.params_, CL_TRUE, 0, np * sizeof(float), params.data());
-  cq.enqueueReadBuffer(coarse.total_offsets_, CL_TRUE, 0, no * sizeof(float), offsets.data());
-  for (float& o : offsets) o = static_cast<float>(o * scale);
+  take_keyframes(coarse, scale, std::vector<char>(static_cast<size_t>(K_), 1));
+  // Fresh Adam moments everywhere (the field itself is zero: take_keyframes folded it away).
   auto& q = rt_.queue();
-  q.enqueueWriteBuffer(params_, CL_TRUE, 0, np * sizeof(float), params.data());
-  q.enqueueWriteBuffer(offsets_, CL_TRUE, 0, no * sizeof(float), offsets.data());
+  const size_t np = static_cast<size_t>(K_) * G_ * kMotionParams, no = static_cast<size_t>(K_) * plan_.n_cp * 2;
   for (cl::Buffer* b : {&m_params_, &v_params_}) q.enqueueFillBuffer(*b, 0.f, 0, np * sizeof(float));
   for (cl::Buffer* b : {&m_offsets_, &v_offsets_}) q.enqueueFillBuffer(*b, 0.f, 0, no * sizeof(float));
   const size_t nf = static_cast<size_t>(K_) * fplan_.n_nodes * 2;
   if (nf)
-    for (cl::Buffer* b : {&field_, &m_field_, &v_field_}) q.enqueueFillBuffer(*b, 0.f, 0, nf * sizeof(float));
+    for (cl::Buffer* b : {&m_field_, &v_field_}) q.enqueueFillBuffer(*b, 0.f, 0, nf * sizeof(float));
   q.finish();
   iteration_ = 0;
   active_ = K_;
