@@ -1,14 +1,28 @@
-// Warm-start pieces: the weighted similarity fit recovers a known similarity, and composing it
-// into a homography equals applying it after the homography.
+// Warm-start pieces: the weighted similarity fit recovers a known similarity, composing it
+// into a homography equals applying it after the homography, the tracker tells corners from
+// edges, the field increment reproduces an affine displacement exactly and leaves untracked
+// groups alone, and in a fit a dot that moves across the part it is painted on is carried to
+// its new place by the field warm start.
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <random>
 
+#include <unistd.h>
+
+#include "fit/field_warm_start.h"
+#include "fit/fit_plan.h"
+#include "fit/fitter.h"
 #include "fit/motion_model.h"
 #include "fit/warm_start.h"
+#include "known_motion.h"
+#include "raster_test_support.h"
+#include "scene_builders.h"
+#include "svgmotion/target_video.h"
 
 using namespace svgm;
+using namespace svgm::test;
 
 TEST_SUITE("fit") {
 
@@ -53,6 +67,141 @@ TEST_CASE("composing a similarity equals applying it after the homography") {
     CHECK(got.x == doctest::Approx(want.x).epsilon(1e-9));
     CHECK(got.y == doctest::Approx(want.y).epsilon(1e-9));
   }
+}
+
+TEST_CASE("track_points: a corner's window pins both directions, a straight edge's only one") {
+  // A dark square (20..44) on white, 64 x 64.
+  const int W = 64, H = 64;
+  std::vector<uint8_t> img(W * H, 255);
+  for (int y = 20; y < 44; ++y)
+    for (int x = 20; x < 44; ++x) img[y * W + x] = 30;
+  const auto t = track_points(img, img, W, H, {{20, 20}, {20, 32}, {32, 20}, {32, 32}, {5, 5}});
+  MESSAGE("isotropy corner " << t.isotropy[0] << ", left edge " << t.isotropy[1] << ", top edge "
+                             << t.isotropy[2] << ", inside " << t.isotropy[3] << ", outside " << t.isotropy[4]);
+  CHECK(t.isotropy[0] > 0.5);    // both edges in the window: equal eigenvalues
+  CHECK(t.isotropy[1] == 0.0);   // a vertical edge: no vertical gradient at all
+  CHECK(t.isotropy[2] == 0.0);
+  CHECK(t.isotropy[3] == 0.0);   // flat: no gradient
+  CHECK(t.isotropy[4] == 0.0);
+  CHECK(t.weight[0] > 0.9);      // the same image: every track stays put and agrees both ways
+  CHECK(std::hypot(t.to[0].x - 20, t.to[0].y - 20) < 1e-3);
+}
+
+namespace {
+
+// A disc (group "disc") and a small square apart from it (group "box"), 96 x 96 pixels.
+FitPlan two_part_plan(RasterPlan& raster) {
+  Scene s = scene_of(96, 96, {filled(circle({40, 44}, 20), {0.2f, 0.5f, 0.8f, 1}),
+                              filled(polygon({{78, 10}, {88, 10}, {88, 20}, {78, 20}}), {0.8f, 0.2f, 0.1f, 1})});
+  s.groups = {{"disc", {0}}, {"box", {1}}};
+  s.paths[0].group = 0;
+  s.paths[1].group = 1;
+  raster = plan_raster(s, Affine{}, 96, 96);
+  FitPlanOptions o;
+  o.field_spacing_px = 8;
+  return plan_fit(s, raster, o);
+}
+
+}  // namespace
+
+TEST_CASE("fit_field_increment: an affine displacement is reproduced exactly, untracked groups stay at zero") {
+  RasterPlan raster;
+  const FitPlan plan = two_part_plan(raster);
+  REQUIRE(plan.n_nodes > 0);
+  // Every point of the disc asks for an affine displacement; the box has no tracks.
+  auto want = [](double x, double y) { return Vec2{0.05 * x - 0.02 * y + 3, 0.03 * x + 0.04 * y - 2}; };
+  FieldTargets t;
+  for (int i = 0; i < plan.n_cp; ++i)
+    if (plan.cp_group[i] == 0 && plan.cp_offset[i] == i) {
+      t.point.push_back(i);
+      t.offset.push_back(want(raster.rest_cp[2 * i], raster.rest_cp[2 * i + 1]));
+      t.weight.push_back(1.0);
+    }
+  // With a vanishing ridge the affine field is the exact minimiser: zero misfit, zero bending.
+  const auto c = fit_field_increment(plan, t, 1.0, 1e-9);
+  double worst = 0;
+  for (size_t j = 0; j < t.point.size(); ++j) {
+    const int i = t.point[j];
+    Vec2 got;
+    for (int e = plan.cp_node_first[i]; e < plan.cp_node_first[i + 1]; ++e)
+      got = got + plan.cp_node_w[e] * c[plan.cp_node[e]];
+    worst = std::max(worst, std::hypot(got.x - t.offset[j].x, got.y - t.offset[j].y));
+  }
+  MESSAGE("largest misfit of the affine field: " << worst << " px");
+  CHECK(worst < 1e-5);
+  for (int i = 0; i < plan.n_cp; ++i)
+    if (plan.cp_group[i] == 1)
+      for (int e = plan.cp_node_first[i]; e < plan.cp_node_first[i + 1]; ++e) {
+        CHECK(c[plan.cp_node[e]].x == 0.0);
+        CHECK(c[plan.cp_node[e]].y == 0.0);
+      }
+  // One point pulled 4 px, every other point of the disc tracked in place: the pull is a local
+  // bend, so the pulled point gets part of the way, and the disc's far side does not move.
+  FieldTargets one = t;
+  for (size_t j = 0; j < one.point.size(); ++j) one.offset[j] = j == 0 ? Vec2{4, 0} : Vec2{};
+  const auto c1 = fit_field_increment(plan, one, 1.0, 1e-3);
+  auto field_at = [&](int i) {
+    Vec2 d;
+    for (int e = plan.cp_node_first[i]; e < plan.cp_node_first[i + 1]; ++e) d = d + plan.cp_node_w[e] * c1[plan.cp_node[e]];
+    return d;
+  };
+  const Vec2 p0{raster.rest_cp[2 * one.point[0]], raster.rest_cp[2 * one.point[0] + 1]};
+  double far_move = 0, far_dist = 0;
+  for (int i : one.point) {
+    const double dist = std::hypot(raster.rest_cp[2 * i] - p0.x, raster.rest_cp[2 * i + 1] - p0.y);
+    if (dist > far_dist) far_dist = dist, far_move = std::hypot(field_at(i).x, field_at(i).y);
+  }
+  MESSAGE("a lone pull of 4 px moves its point " << field_at(one.point[0]).x << " px, the point " << far_dist
+                                                 << " px away " << far_move << " px");
+  CHECK(field_at(one.point[0]).x > 0.5);
+  CHECK(field_at(one.point[0]).x < 4.0);
+  CHECK(far_move < 0.05);
+}
+
+TEST_CASE("field warm start: a dot moving across the part it sits on is carried to its new place") {
+  // A light square with a dark dot painted on it, one part. Between the two keyframes the
+  // square stays and the dot moves 5 px (at the 64 px fitting size; its radius is 2.5 px).
+  // Without the warm start (FitOptions::track off) the fit chases the dot with the whole
+  // part's homography: the square drifted 6.7 px in these 150 iterations. With it, the field
+  // carries the dot and the square stays.
+  Scene s = scene_of(64, 64, {filled(polygon({{8, 8}, {56, 8}, {56, 56}, {8, 56}}), {0.9f, 0.75f, 0.5f, 1}),
+                              filled(circle({26, 30}, 2.5), {0.1f, 0.1f, 0.15f, 1})});
+  s.groups = {{"part", {0, 1}}};
+  s.paths[0].group = s.paths[1].group = 0;
+  const int K = 2;
+  const Vec2 shift{4, 3};
+  const auto dir = std::filesystem::temp_directory_path() / ("svgm_fieldws_" + std::to_string(::getpid()));
+  const auto truth = write_known_motion(s, 64, K, [](int, int) { return identity_params(); },
+                                        [&](int k, Vec2 q) { return std::hypot(q.x - 26, q.y - 30) < 6 ? k * shift : Vec2{}; },
+                                        dir);
+  TargetOptions to;
+  to.keyframes = K;
+  const TargetFrames target = load_target(dir, 64, 64, to);
+  std::filesystem::remove_all(dir);
+  FitOptions fo;
+  fo.iterations = 150;
+  Fitter fitter(runtime(), s, target, fo);
+  while (!fitter.done()) fitter.step();
+  CHECK(fitter.field_warm_starts_tried == 1);
+  CHECK(fitter.field_warm_starts_kept == 1);
+  const auto pts = fitter.keyframe_points_canvas();
+  const RasterPlan& plan = fitter.raster_plan();
+  Vec2 centre, want;
+  const int first = plan.path_cp_first[1], n = plan.path_cp_count[1];
+  for (int i = first; i < first + n; ++i) {
+    centre = centre + Vec2{pts[(plan.n_cp + i) * 2], pts[(plan.n_cp + i) * 2 + 1]};
+    want = want + Vec2{truth[1][2 * i], truth[1][2 * i + 1]};
+  }
+  const double err = std::hypot(centre.x - want.x, centre.y - want.y) / n;
+  // The square has nothing to follow: it stays where it was.
+  double square = 0;
+  for (int i = plan.path_cp_first[0]; i < plan.path_cp_first[0] + plan.path_cp_count[0]; ++i)
+    if (truth[1][2 * i] != 0 || truth[1][2 * i + 1] != 0)
+      square = std::max(square, std::hypot(pts[(plan.n_cp + i) * 2] - truth[1][2 * i], pts[(plan.n_cp + i) * 2 + 1] - truth[1][2 * i + 1]));
+  MESSAGE("the square's largest drift " << square << " px");
+  CHECK(square < 0.5);
+  MESSAGE("the dot's centre is " << err << " px from its target place (it moved " << std::hypot(shift.x, shift.y) << ")");
+  CHECK(err < 0.5);
 }
 
 }  // TEST_SUITE

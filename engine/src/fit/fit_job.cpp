@@ -464,6 +464,9 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                            {"gate", gate_json(verdict, gate_options)},
                            {"device", rt.info().name}};
   if (!map.order.empty()) report["paint_order_applied"] = true;
+  // Warm starts of newly activated keyframes (a resumed fit counts only those after resuming).
+  report["warm_starts"] = {{"similarity_tried", fitter.warm_starts_tried}, {"similarity_kept", fitter.warm_starts_kept},
+                           {"field_tried", fitter.field_warm_starts_tried}, {"field_kept", fitter.field_warm_starts_kept}};
   if (group_motion)
     report["group_transforms"] = {{"groups", final_fit.fit_plan().n_groups},
                                   {"as_transforms", group_motion->transform_groups},

@@ -20,7 +20,8 @@ void quadratic_bspline_weights(double u, int* j0, double w[3]) {
 namespace {
 
 // The field tables of `f` (see FitPlan): per group, knots every `h` pixels from the group's
-// rest bounding box corner; a node exists only where some point has weight on it.
+// rest bounding box corner; a node exists only where some point has weight on it. Then each
+// node's bending neighbours.
 void plan_field(FitPlan& f, const std::vector<float>& rest_cp, double h) {
   std::vector<std::vector<std::pair<int, float>>> cp_nodes(f.n_cp);
   std::vector<std::vector<std::pair<int, float>>> node_cps;
@@ -54,6 +55,17 @@ void plan_field(FitPlan& f, const std::vector<float>& rest_cp, double h) {
             node_cps[it->second].push_back({i, w});
           }
       }
+    }
+    // Bending neighbours: the knot before and after along each axis, where the group has nodes.
+    f.node_bend.assign(static_cast<size_t>(f.n_nodes) * 4, -1);
+    for (const auto& [key, b] : node_of) {
+      const auto [g, jx, jy] = key;
+      auto at = [&, g = g](int x, int y) {
+        const auto it = node_of.find({g, x, y});
+        return it == node_of.end() ? -1 : it->second;
+      };
+      int* nb = f.node_bend.data() + static_cast<size_t>(b) * 4;
+      nb[0] = at(jx - 1, jy), nb[1] = at(jx + 1, jy), nb[2] = at(jx, jy - 1), nb[3] = at(jx, jy + 1);
     }
   }
   f.cp_node_first.assign(f.n_cp + 1, 0);

@@ -61,6 +61,10 @@ struct FitPlan {
   std::vector<int> node_cp_first, node_cp;     // CSR: the control points of each node
   std::vector<float> node_cp_w;                //      and their weights
   std::vector<float> node_pos;                 // rest position (x, y) of every node's knot
+  // Bending of the field (the warm start's regulariser, fit/field_warm_start.h): per node, the
+  // node one knot before and one after it along x, then along y, -1 where its group has none
+  // ([n_nodes][4]).
+  std::vector<int> node_bend;
 
   // Cohesion (kernels/regularise.cl): pairs of control points close at rest, whatever their
   // path or group, keep their distance. Only points that own their offset slot take part.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fit/field_warm_start.h"
 #include "fit/warm_start.h"
 #include "opencl/tuning.h"
 #include "svgmotion/error.h"
@@ -339,6 +340,57 @@ void Fitter::warm_start(int k) {
   } else {
     q.enqueueWriteBuffer(params_, CL_TRUE, k * pb * sizeof(float), pb * sizeof(float), copied.data());
   }
+  if (fplan_.n_nodes) warm_start_field(k, index, tracks);
+}
+
+void Fitter::warm_start_field(int k, const std::vector<int>& index, const PointTracks& tracks) {
+  // A track counts when it is consistent both ways and its window sees both directions of
+  // the motion (an edge's along-edge motion is unknown; its points simply do not vote).
+  constexpr double kMinWeight = 0.5, kMinIsotropy = 0.1;
+  // λ: a node triple's bending against one point's misfit (pixels² each); μ: the ridge.
+  constexpr double kLambda = 1, kMu = 1e-3;
+  auto& q = rt_.queue();
+  const size_t n_cp = plan_.n_cp, pb = static_cast<size_t>(G_) * kMotionParams, fb = static_cast<size_t>(fplan_.n_nodes) * 2;
+  enqueue_motion(k + 1);
+  std::vector<float> cp(n_cp * 2), off(n_cp * 2), par(pb), field(fb);
+  q.enqueueReadBuffer(raster_->cp_buffer(), CL_TRUE, k * n_cp * 2 * sizeof(float), cp.size() * sizeof(float), cp.data());
+  q.enqueueReadBuffer(total_offsets_, CL_TRUE, k * n_cp * 2 * sizeof(float), off.size() * sizeof(float), off.data());
+  q.enqueueReadBuffer(params_, CL_TRUE, k * pb * sizeof(float), pb * sizeof(float), par.data());
+  q.enqueueReadBuffer(field_, CL_TRUE, k * fb * sizeof(float), fb * sizeof(float), field.data());
+  const Vec2 origin{0.5 * size_.width, 0.5 * size_.height};
+  const double scale = 0.5 * size_.width;
+  FieldTargets t;
+  for (size_t j = 0; j < index.size(); ++j) {
+    const double iso = tracks.isotropy.empty() ? 1.0 : tracks.isotropy[j];
+    if (tracks.weight[j] < kMinWeight || iso < kMinIsotropy) continue;
+    const int i = index[j];
+    MotionParams th;
+    for (int e = 0; e < kMotionParams; ++e) th[e] = par[fplan_.cp_group[i] * kMotionParams + e];
+    // The homography's Jacobian at the point (central differences of the host model): an
+    // offset d moves the point by J d.
+    const Vec2 x{plan_.rest_cp[2 * i] + off[2 * i], plan_.rest_cp[2 * i + 1] + off[2 * i + 1]};
+    const double h = 1e-3;
+    const Vec2 jx = (0.5 / h) * (apply_motion(th, x + Vec2{h, 0}, origin, scale) - apply_motion(th, x - Vec2{h, 0}, origin, scale));
+    const Vec2 jy = (0.5 / h) * (apply_motion(th, x + Vec2{0, h}, origin, scale) - apply_motion(th, x - Vec2{0, h}, origin, scale));
+    const double det = jx.x * jy.y - jy.x * jx.y;
+    if (!(std::fabs(det) > 1e-6)) continue;
+    const Vec2 r = tracks.to[j] - Vec2{cp[2 * i], cp[2 * i + 1]};
+    t.point.push_back(i);
+    t.offset.push_back({(jy.y * r.x - jy.x * r.y) / det, (-jx.y * r.x + jx.x * r.y) / det});
+    t.weight.push_back(tracks.weight[j]);
+  }
+  if (t.point.empty()) return;
+  const std::vector<Vec2> inc = fit_field_increment(fplan_, t, kLambda, kMu);
+  ++field_warm_starts_tried;
+  const float before = frame_loss(k);
+  std::vector<float> moved = field;
+  for (size_t b = 0; b < inc.size(); ++b) {
+    moved[2 * b] += static_cast<float>(inc[b].x);
+    moved[2 * b + 1] += static_cast<float>(inc[b].y);
+  }
+  q.enqueueWriteBuffer(field_, CL_TRUE, k * fb * sizeof(float), fb * sizeof(float), moved.data());
+  if (frame_loss(k) < before) ++field_warm_starts_kept;
+  else q.enqueueWriteBuffer(field_, CL_TRUE, k * fb * sizeof(float), fb * sizeof(float), field.data());
 }
 
 LossTerms Fitter::step() {

@@ -17,6 +17,7 @@
 
 #include "fit/fit_plan.h"
 #include "fit/flow_tracks.h"
+#include "fit/warm_start.h"
 #include "opencl/runtime.h"
 #include "raster/raster_cl.h"
 #include "raster/raster_plan.h"
@@ -184,6 +185,9 @@ class Fitter {
   void activate_keyframe(int k);
   // Optical-flow warm start of keyframe k (warm_start.h); keeps it only if it fits better.
   void warm_start(int k);
+  // The field increment of keyframe k that carries its tracked points where the tracks went
+  // beyond their group's homography (field_warm_start.h); kept only if it fits better.
+  void warm_start_field(int k, const std::vector<int>& index, const PointTracks& tracks);
   float frame_loss(int k);  // image loss of keyframe k alone with the current parameters
   // Field and motion forward: control points of keyframes 0 .. frames-1 into the raster's buffer.
   void enqueue_motion(int frames);
@@ -205,6 +209,7 @@ class Fitter {
  public:
   // Warm starts tried and kept so far (for reports and tests).
   int warm_starts_tried = 0, warm_starts_kept = 0;
+  int field_warm_starts_tried = 0, field_warm_starts_kept = 0;
 
  private:
   cl::Kernel k_motion_, k_motion_back_, k_smooth_, k_g1_, k_contain_, k_sum_, k_adam_p_, k_adam_o_,

@@ -3,6 +3,7 @@
 
 #include <opencv2/video/tracking.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace svgm {
@@ -23,6 +24,21 @@ PointTracks track_points(const std::vector<uint8_t>& prev, const std::vector<uin
   const cv::TermCriteria term(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 30, 0.01);
   cv::calcOpticalFlowPyrLK(a, b, p0, p1, st1, err, win, 3, term);
   cv::calcOpticalFlowPyrLK(b, a, p1, back, st2, err, win, 3, term);
+  // The structure tensor over each point's window, from central differences of prev.
+  out.isotropy.assign(from.size(), 0.0);
+  const int r = win.width / 2;
+  for (size_t i = 0; i < from.size(); ++i) {
+    const int px = static_cast<int>(std::floor(from[i].x)), py = static_cast<int>(std::floor(from[i].y));
+    double xx = 0, xy = 0, yy = 0;
+    for (int y = std::max(1, py - r); y <= std::min(height - 2, py + r); ++y)
+      for (int x = std::max(1, px - r); x <= std::min(width - 2, px + r); ++x) {
+        const double gx = 0.5 * (a.at<uchar>(y, x + 1) - a.at<uchar>(y, x - 1));
+        const double gy = 0.5 * (a.at<uchar>(y + 1, x) - a.at<uchar>(y - 1, x));
+        xx += gx * gx, xy += gx * gy, yy += gy * gy;
+      }
+    const double mean = 0.5 * (xx + yy), dev = std::sqrt(0.25 * (xx - yy) * (xx - yy) + xy * xy);
+    if (mean > 0) out.isotropy[i] = (mean - dev) / (mean + dev);
+  }
   for (size_t i = 0; i < from.size(); ++i) {
     if (!st1[i] || !st2[i]) continue;
     const double fb = std::hypot(back[i].x - p0[i].x, back[i].y - p0[i].y);

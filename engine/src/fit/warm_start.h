@@ -16,6 +16,10 @@ namespace svgm {
 struct PointTracks {
   std::vector<Vec2> to;         // tracked positions
   std::vector<double> weight;   // 0 (lost) .. 1 (forward and backward agree exactly)
+  // How well the window around each point pins both directions of its motion: the smaller
+  // over the larger eigenvalue of its structure tensor in the previous image (0 on a straight
+  // edge, where only the motion across the edge is seen: the aperture problem; 0 where flat).
+  std::vector<double> isotropy;
 };
 
 // prev and next: 8-bit grey images of width x height. Points in pixels (centres at +0.5).
