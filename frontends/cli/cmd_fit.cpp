@@ -43,7 +43,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
   const Args a = parse_args("fit", argv,
                             {"--target", "-o", "--output", "--iterations", "--keyframes", "--size",
                              "--palette", "--device", "--mask-threshold", "--loop", "--deform", "--refine-size",
-                             "--precision", "--inbetweens"},
+                             "--precision", "--inbetweens", "--max-segment"},
                             {"--resume", "--no-track", "--no-gate", "--no-colour-correction", "--no-blur-matching", "--stabilise",
                              "--group-transforms"});
   if (a.positional.size() != 1)
@@ -73,6 +73,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
   job.decimals = a.get_int("--precision", kDefaultDecimals, 0, kMaxDecimals);
   job.inbetweens = a.get_int("--inbetweens", job.inbetweens, 0, kMaxInbetweens);
   job.group_transforms = a.has("--group-transforms");
+  job.max_segment = a.get_double("--max-segment", job.max_segment);
   if (const auto p = a.get("--palette")) job.palette = *p;
   job.mask_threshold = a.get_double("--mask-threshold", job.mask_threshold);
   job.resume = a.has("--resume");

@@ -91,6 +91,9 @@ Fits the SVG's paths to a target video (mp4, webm, avi, mov, or a folder of numb
                          0 leaves them to the player's straight lines: smallest files)
   --group-transforms     each part's motion, where affine, as <animateTransform> elements
                          (translate, rotate, skewX, scale) and its paths' shapes in its frame
+  --max-segment F        split (exactly) every path segment longer than F of the canvas's
+                         larger side before fitting, so the motion can bend it (default
+                         0.04; 0: keep the paths' own segments)
   --refine-size W|auto|0 after the fit, refine every keyframe at width W for an eighth more
                          iterations (default auto: twice the fitting width when the video
                          has at least 1.5x it; 0: off)

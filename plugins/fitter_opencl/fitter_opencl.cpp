@@ -44,6 +44,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   job.decimals = c.value("precision", svgm::kDefaultDecimals);
   job.inbetweens = c.value("inbetweens", job.inbetweens);
   job.group_transforms = c.value("group_transforms", false);
+  job.max_segment = c.value("max_segment", job.max_segment);
   job.quiet = true;
   job.resume_unfinished = true;  // after Ctrl-C, the next run goes on where this one stopped
   job.progress = [host](double f, const std::string& note) {

@@ -23,6 +23,7 @@
 #include "fit/result_gate.h"
 #include "fit/palette.h"
 #include "fit/preview_video.h"
+#include "fit/segment_split.h"
 #include "fit/smil_writer.h"
 #include "raster/render_image.h"
 #include "svgmotion/error.h"
@@ -120,9 +121,17 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   const int keyframes = job.keyframes;
   const std::string target_str = job.target.string();
   const std::string* target_path = &target_str;
-  const Scene scene = read_svg_file(input);
-  for (const auto& w : scene.warnings) log::warning("%s", w.c_str());
-  if (scene.paths.empty()) throw Error(input.string() + ": nothing to animate (no visible paths)");
+  const Scene as_read = read_svg_file(input);
+  for (const auto& w : as_read.warnings) log::warning("%s", w.c_str());
+  if (as_read.paths.empty()) throw Error(input.string() + ": nothing to animate (no visible paths)");
+  if (!(job.max_segment >= 0 && job.max_segment <= 1)) throw Error("the longest segment must be 0..1 of the canvas");
+  // Long segments split (exactly) so the motion can bend them; the same split is applied to
+  // the document written into, so the written paths have the fitted structure.
+  const SplitPlan split =
+      plan_segment_split(as_read, job.max_segment * std::max(as_read.width, as_read.height));
+  const Scene scene = split_scene(as_read, split);
+  if (const int added = added_points(split))
+    log::debug("fit: %d control points added by splitting long segments", added);
   const Scene fit_scene =
       job.palette ? apply_palette(scene, read_palette(*job.palette), job.palette->string()) : scene;
   const RenderSize size = render_size(scene, job.width);
@@ -146,7 +155,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   ExportMap map;
   if (job.export_into) {
     export_scene = read_svg_file(into);
-    const std::vector<int> match = match_paths(scene, *export_scene, input.string());
+    const std::vector<int> match = match_paths(as_read, *export_scene, input.string());
     map.fitted_of.assign(export_scene->paths.size(), -1);
     bool reordered = false;
     for (size_t j = 0; j < match.size(); ++j) {
@@ -154,6 +163,9 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
       reordered = reordered || match[j] != static_cast<int>(j);
     }
     if (reordered) map.order = match;
+    for (size_t i = 0; i < export_scene->paths.size(); ++i)
+      if (map.fitted_of[i] >= 0)
+        export_scene->paths[i] = split_path(export_scene->paths[i], split[static_cast<size_t>(map.fitted_of[i])]);
   }
   const TargetFrames target = load_target(*target_path, size.width, size.height, to);
   for (const std::string& w : target_warnings(target, *target_path, size))
@@ -221,7 +233,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                           std::to_string(size.height) + "|" +
                           (fo.track ? "track" : "no-track") + "|" + fmt("%.6g", job.mask_threshold) + "|" +
                           (job.palette ? stamp(*job.palette) : "-") + "|" + (job.tracks ? stamp(*job.tracks) : "-") +
-                          "|refine " + std::to_string(refine_w) + "/" + std::to_string(refine_iters);
+                          "|refine " + std::to_string(refine_w) + "/" + std::to_string(refine_iters) +
+                          "|split " + fmt("%.6g", job.max_segment);
   if (job.resume) {
     if (!fs::exists(ckpt)) throw Error(ckpt.string() + ": no checkpoint to resume from");
     fitter.restore(load_checkpoint(ckpt, key));

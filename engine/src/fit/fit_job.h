@@ -52,6 +52,10 @@ struct FitJob {
   // Each group's motion, where affine, as <animateTransform> elements on its paths, with the
   // paths' `d` values in the group's moving frame (group_transform.h); false: baked into `d`.
   bool group_transforms = false;  // fit --group-transforms, stages.fitter.group_transforms
+  // Segments longer than this fraction of the canvas's larger side are split (exactly) before
+  // fitting, so the motion can bend them (segment_split.h); 0: the paths keep their own
+  // segments. fit --max-segment, stages.fitter.max_segment.
+  double max_segment = 0.04;
   bool gate = true;  // false: write animation.svg even when the result gate rejects the fit
   // Progress: when set, called about twice a second with the fraction done and a short note,
   // instead of the progress line on stderr.

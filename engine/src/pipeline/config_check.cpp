@@ -117,6 +117,7 @@ void check_config(const nlohmann::json& c, const PluginHost& host) {
   one_of(c, "stages.fitter.deform", {"field", "free"});
   whole(c, "stages.fitter.precision", 0, 6);  // kMaxDecimals (smil_writer.h)
   whole(c, "stages.fitter.inbetweens", 0, 16);  // kMaxInbetweens (fit_job.h)
+  real(c, "stages.fitter.max_segment", 0, 1, false);
   if (at(c, "stages.video.plugin") == "procedural" && at(c, "stages.fitter.keyframes").is_number() &&
       at(c, "stages.video.frames").is_number() &&
       at(c, "stages.fitter.keyframes").get<double>() > at(c, "stages.video.frames").get<double>())
