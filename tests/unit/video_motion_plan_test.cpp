@@ -256,6 +256,38 @@ TEST_CASE("a fast spin is not limited by the step check; a swing that is too fas
   }
 }
 
+TEST_CASE("a wild wave turns the arm at most kMaxTurn degrees from one keyframe to the next") {
+  const Fixture fx("stick_figure.svg");
+  const int F = 49, K = 15;
+  // The angle about the arm's pivot of the arm's point farthest from it, at every keyframe.
+  auto turns = [&](const MotionPlan& plan) {
+    const int arm = plan.actions[0].parts[0];
+    const Vec2 c = fx.rig.parts[arm].pivot;
+    const auto pts = animate_plan(fx.scene, fx.rig, plan, F);
+    const size_t per = pts.size() / F;
+    int path = 0;
+    while (fx.rig.part_of_path[path] != arm) ++path;
+    size_t far = fx.first_point(path);
+    for (size_t i = far; i < fx.first_point(path + 1); ++i)
+      if (std::hypot(pts[i].x - c.x, pts[i].y - c.y) > std::hypot(pts[far].x - c.x, pts[far].y - c.y)) far = i;
+    double largest = 0;
+    for (int k = 1; k < K; ++k) {
+      const int fa = static_cast<int>(std::lround((k - 1) * (F - 1.0) / (K - 1))), fb = static_cast<int>(std::lround(k * (F - 1.0) / (K - 1)));
+      const Vec2 a = pts[fa * per + far] - c, b = pts[fb * per + far] - c;
+      largest = std::max(largest, std::fabs(std::atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y)) * 180 / M_PI);
+    }
+    return largest;
+  };
+  MotionPlan plan = fx.plan("The man waves his right arm wildly");
+  REQUIRE(plan.actions.size() == 1);
+  REQUIRE(fx.rig.parts[plan.actions[0].parts[0]].name == "Right Arm");
+  CHECK(turns(plan) > 30.0);  // 35 degrees wildly (x1.6), two waves: about 49 per keyframe
+  fit_plan(fx.scene, fx.rig, plan, F, K);
+  const double after = turns(plan);
+  CHECK(after <= kMaxTurn + 1e-6);
+  CHECK(after > 0.8 * kMaxTurn);  // scaled in steps of 0.8: no more than the turn needs
+}
+
 TEST_CASE("an explicit plan moves exactly the parts it names; a pattern naming nothing is an error") {
   const Fixture fx("stick_figure.svg");
   const MotionPlan plan = plan_from_steps(parse_explicit_plan("wave:left*, nod:head"), fx.rig, 3);

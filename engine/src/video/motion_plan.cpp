@@ -86,6 +86,11 @@ const char* unit_of(Primitive p) {
 // Arms: an upper limb whose box is less than this share of the largest one's is left out.
 constexpr double kArmMinShare = 0.2;
 
+// A one-sided verb with no side named moves the limb reaching this many times farther from the
+// body than the others (reaching_out): a boxer's extended arm reaches 1.4 times as far as the
+// arm he keeps in guard.
+constexpr double kReachLead = 1.2;
+
 // A rock aimed at a part turns it by at most this many times the rock's angle (Builder::add).
 constexpr double kRockToPartMax = 4;
 
@@ -316,6 +321,32 @@ void pair_up(const Rig& rig, PlannedAction& a, Pairing pairing, std::mt19937& rn
   }
 }
 
+// Of several limbs, the one whose chain (the limb and what hangs from it) reaches clearly
+// farthest from the root's middle: the drawing shows it in action (a punch thrown, an arm
+// raised to wave, a leg out in a kick). -1 when none reaches kReachLead farther than every other
+// (the seed picks). A chain's reach is the farthest corner of its box.
+int reaching_out(const Rig& rig, const std::vector<int>& limbs) {
+  if (rig.root < 0 || limbs.size() < 2) return -1;
+  const Vec2 c = rig.parts[rig.root].box.centre();
+  std::vector<double> reach;
+  for (int l : limbs) {
+    RigBox b;
+    for (size_t h = 0; h < rig.parts.size(); ++h)
+      for (int g = static_cast<int>(h), guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
+        if (g == l) {
+          b.add(rig.parts[h].box);
+          break;
+        }
+    double far = 0;
+    for (Vec2 q : {Vec2{b.x0, b.y0}, Vec2{b.x1, b.y0}, Vec2{b.x0, b.y1}, Vec2{b.x1, b.y1}}) far = std::max(far, std::hypot(q.x - c.x, q.y - c.y));
+    reach.push_back(far);
+  }
+  const size_t best = std::max_element(reach.begin(), reach.end()) - reach.begin();
+  for (size_t i = 0; i < reach.size(); ++i)
+    if (i != best && reach[best] < kReachLead * reach[i]) return -1;
+  return limbs[best];
+}
+
 // A compact figure (an octopus, a frog) does not swim by a wave along its body, which would heave
 // its head as much as its arms: its lower limbs paddle, alternating (Builder::add), and the
 // swim is then a verb of the limbs (plan_from_prompt).
@@ -401,9 +432,9 @@ struct Builder {
       a.parts = {region_host(rig, target)};
       a.region = target == Target::Arms || target == Target::Limbs ? Region::Sides
                  : target == Target::Legs ? Region::Lower : target == Target::Head ? Region::Top : Region::End;
-      a.alternating = base.pairing == Pairing::Alternating;
+      a.alternating = base.pairing == Pairing::Alternating || (base.pairing == Pairing::OneAtATime && (mods.both || plural));
       if (a.region == Region::Sides) side_core(rig, a);
-      if (base.pairing == Pairing::OneSide && !mods.both && !plural) {
+      if ((base.pairing == Pairing::OneSide || base.pairing == Pairing::OneAtATime) && !mods.both && !plural) {
         // The figure's own side is drawn on the viewer's other side.
         a.region_side = mods.side != 0 ? -mods.side : ((rng() & 1) ? 1 : -1);
       }
@@ -424,14 +455,19 @@ struct Builder {
     }
     Pairing pairing = base.pairing;
     if (pairing == Pairing::OneSide && (mods.both || plural)) pairing = Pairing::Mirrored;
+    if (pairing == Pairing::OneAtATime) pairing = mods.both || plural ? Pairing::Alternating : Pairing::OneSide;
     if (pairing == Pairing::OneSide && a.parts.size() > 1 && a.region == Region::None) {
       int want = mods.side;
       std::vector<int> sided;
       for (int p : a.parts)
         if (want != 0 && rig.parts[p].side == want) sided.push_back(p);
-      if (sided.empty()) {  // no side asked (or none there): the seed picks one part
-        sided = {a.parts[rng() % a.parts.size()]};
+      if (sided.empty()) {
+        // No side asked (or none there): the limb the drawing shows reaching out (a boxer's
+        // extended fist, not the one folded in guard), else the seed's pick.
+        const int out = reaching_out(rig, a.parts);
+        sided = {out >= 0 ? out : a.parts[rng() % a.parts.size()]};
         if (want != 0) note = std::string("no part on the figure's ") + (want > 0 ? "right" : "left") + "; " + rig.parts[sided[0]].name + " instead";
+        else if (out >= 0) note = rig.parts[out].name + " reaches out farthest";
       }
       a.parts = {sided[0]};
     }
@@ -990,6 +1026,26 @@ std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const
   return "";
 }
 
+// Why a swing of `plan` breaks the turn limit (kMaxTurn between two of the K keyframes spread
+// over `frames`), or "" when none does. The angle of a swing is amplitude * sin(2 pi (cycles t +
+// phase)) (rigid, bend_region), so its turn between keyframes is known without the frames.
+std::string turn_broken(const MotionPlan& plan, int frames, int K) {
+  for (const auto& a : plan.actions) {
+    if (a.primitive != Primitive::Swing) continue;
+    const double amp = plan.amplitude(a);
+    std::vector<double> phases = a.phase;
+    if (a.region != Region::None) phases = a.alternating ? std::vector<double>{0, 0.5} : std::vector<double>{0};
+    for (double phase : phases)
+      for (int k = 1; k < K; ++k) {
+        const double ta = std::lround((k - 1) * (frames - 1.0) / (K - 1)) / std::max(frames - 1.0, 1.0);
+        const double tb = std::lround(k * (frames - 1.0) / (K - 1)) / std::max(frames - 1.0, 1.0);
+        const double turn = amp * std::fabs(std::sin(kTau * (a.cycles * tb + phase)) - std::sin(kTau * (a.cycles * ta + phase)));
+        if (turn > kMaxTurn + 1e-9) return "would turn a part too far between keyframes for the tracker to follow";
+      }
+  }
+  return "";
+}
+
 }  // namespace
 
 void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
@@ -1053,7 +1109,8 @@ void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, 
     for (int attempt = 0;; ++attempt) {
       if (!all) one.actions[i].scale = scale;
       else one.scale = scale;
-      const std::string why = limit_broken(scene, animate_plan(scene, rig, one, frames), exempt, by_curve, frames, K);
+      std::string why = limit_broken(scene, animate_plan(scene, rig, one, frames), exempt, by_curve, frames, K);
+      if (why.empty()) why = turn_broken(one, frames, K);
       const std::string what = all ? "the motion" : plan.actions[i].verb + " (" + primitive_name(plan.actions[i].primitive) + ")";
       if (why.empty()) {
         if (scale < 1) {
