@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
@@ -546,6 +547,47 @@ TEST_CASE("'a surfer rides the waves': the whole figure glides, not a part named
   CHECK(roll.actions[0].parts == std::vector<int>{0});
 }
 
+TEST_CASE("a figure filling its canvas glides when the small splash at the canvas's edge holds still") {
+  // A wave behind everything, a surfer on his board, and a splash cut off by the right edge
+  // (200 x 200: the margin is 2, the splash reaches 199.5).
+  auto scene = [](const char* splash) {
+    return read_svg_string(std::string(R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><rect x="0" y="100" width="200" height="100" fill="#04c"/></g>
+           <g><rect x="60" y="20" width="90" height="150" fill="#c33"/></g>
+           <g><rect x="40" y="170" width="120" height="10" fill="#ee0"/></g>
+           <g>)") + splash + "</g></svg>", "surfer.svg");
+  };
+  const int F = 25;
+  {
+    const Scene s = scene(R"(<rect x="185" y="60" width="14.5" height="10" fill="#fff"/>)");
+    const Rig rig = build_rig(s, {});
+    REQUIRE(rig.parts[0].role == Role::Background);
+    MotionPlan plan = plan_from_prompt(parse_prompt("A surfer rides the waves."), rig, 1);
+    REQUIRE(!plan.actions.empty());
+    fit_plan(s, rig, plan, F, 9);
+    CHECK(plan.warnings.empty());
+    CHECK(plan.held == std::vector<int>{3});
+    const auto pts = animate_plan(s, rig, plan, F);
+    double surfer = 0, splash = 0;
+    each_move(pts, F, [&](Vec2 rest, Vec2 m) {
+      double& part = rest.x > 180 ? splash : surfer;
+      part = std::max(part, std::hypot(m.x, m.y));
+      if (rest.x < 199.9) CHECK(rest.x + m.x <= 199.5 + 1e-9);  // (the wave reaches 200 and holds)
+    });
+    CHECK(splash == 0.0);
+    CHECK(surfer > 0.02 * std::hypot(200.0, 200.0));  // visibly: the ranker's 'no motion' had it
+  }
+  {
+    // A board running off the edge is no splash: too large to hold, the figure barely moves.
+    const Scene s = scene(R"(<rect x="30" y="150" width="169.5" height="20" fill="#fff"/>)");
+    const Rig rig = build_rig(s, {});
+    MotionPlan plan = plan_from_prompt(parse_prompt("A surfer rides the waves."), rig, 1);
+    fit_plan(s, rig, plan, F, 9);
+    CHECK(plan.held.empty());
+    CHECK(!plan.warnings.empty());
+  }
+}
+
 TEST_CASE("a flag ripples from its pole: the pole holds, the free end moves most; a fish has no pole") {
   // A pole (10-14 x 10-190: taller than the cloth is wide, so the figure's long axis is the
   // pole's) and a cloth 14-150 x 20-90.
@@ -630,6 +672,29 @@ TEST_CASE("a boxer's body turns into the punches and leans to dodge about the hi
       else CHECK(t[p] > 1.0);               // the torso, the arms, the head
     }
   }
+}
+
+TEST_CASE("a boxer punches with the arm he has thrown out, the other keeps guard; both arms take turns") {
+  const Fixture fx("boxer.svg");
+  REQUIRE(fx.rig.parts[1].role == Role::UpperLimb);
+  REQUIRE(fx.rig.parts[2].role == Role::UpperLimb);
+  for (uint32_t seed = 0; seed < 4; ++seed) {
+    const MotionPlan plan = fx.plan("the boxer is punching", seed);
+    REQUIRE(!plan.actions.empty());
+    CHECK(plan.actions[0].parts == std::vector<int>{1});
+    const auto t = fx.travel(animate_plan(fx.scene, fx.rig, plan, 13), 13);
+    // The guard arm moves only with the body's turn, the thrown arm with it and its own swing.
+    CHECK(t[1] > 2 * t[2]);
+  }
+  const MotionPlan both = fx.plan("his arms are punching");
+  REQUIRE(!both.actions.empty());
+  CHECK(both.actions[0].parts.size() == 2);
+  CHECK(both.actions[0].phase == std::vector<double>{0, 0.5});
+  // The same arms, told apart by nothing: a wave picks one by the seed, either.
+  const Fixture even("stick_figure.svg");
+  std::set<int> picked;
+  for (uint32_t seed = 0; seed < 8; ++seed) picked.insert(even.plan("the figure waves", seed).actions[0].parts[0]);
+  CHECK(picked.size() == 2);
 }
 
 TEST_CASE("a bird flaps its raised wing, not its small beak beside the body") {

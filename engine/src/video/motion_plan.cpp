@@ -91,6 +91,11 @@ constexpr double kArmMinShare = 0.2;
 // arm he keeps in guard.
 constexpr double kReachLead = 1.2;
 
+// fit_plan: a part at the canvas's edge holds still when the whole figure cannot move otherwise,
+// if it and what hangs from it cover at most this share of the figure's box (a splash, not the
+// body).
+constexpr double kHeldMaxShare = 0.1;
+
 // A rock aimed at a part turns it by at most this many times the rock's angle (Builder::add).
 constexpr double kRockToPartMax = 4;
 
@@ -471,7 +476,10 @@ struct Builder {
       }
       a.parts = {sided[0]};
     }
-    if (a.region == Region::None) pair_up(rig, a, pairing == Pairing::OneSide ? Pairing::Same : pairing, rng);
+    // One limb of a one-at-a-time verb turns as it would in the pair (mirrored about the body:
+    // a fist swings the same way on either side); a one-sided verb's by the seed.
+    if (a.region == Region::None)
+      pair_up(rig, a, pairing != Pairing::OneSide ? pairing : base.pairing == Pairing::OneAtATime ? Pairing::Mirrored : Pairing::Same, rng);
     // One-sided whole-figure motions (lean, bow) go one way and back.
     if (a.primitive == Primitive::Rock && base.pairing == Pairing::OneSide) a.vertical = 2;
     // Skip a repeat: the same primitive on the same parts.
@@ -837,6 +845,10 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
       if (under(h, g)) reach[g].add(rig.parts[h].box);
   // Chains hanging from the root that reach the lowest kPlanted of the figure stand on the
   // ground (legs, feet): the root's own swing does not carry them.
+  // Parts the whole figure's motions leave where they are (fit_plan).
+  std::vector<char> held(G, 0);
+  for (int g = 0; g < G; ++g)
+    for (int h : plan.held) held[g] = held[g] || under(g, h);
   std::vector<char> planted(G, 0);
   for (int g = 0; g < G; ++g)
     planted[g] = rig.parts[g].parent == rig.root && rig.root >= 0 && !reach[g].empty() &&
@@ -912,7 +924,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
       const int g = rig.part_of_path[pi];
       const int e = element_of[pi];
-      const bool background = g >= 0 && rig.parts[g].role == Role::Background;
+      const bool background = g >= 0 && (rig.parts[g].role == Role::Background || held[g]);
       const bool free_particle = particles && e >= 0;
       // The element's own motion (falls, twinkles), one phase per element.
       Affine elem;
@@ -1046,9 +1058,10 @@ std::string turn_broken(const MotionPlan& plan, int frames, int K) {
   return "";
 }
 
-}  // namespace
-
-void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
+// fit_plan's scaling of `plan` (see motion_plan.h). True when a motion of the whole figure
+// would break a limit even at its smallest scale (a warning says so).
+bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
+  bool whole_failed = false;
   // Points exempt from the step limit: falling elements (they jump back while invisible) and
   // spinning parts (whole turns cannot be scaled; rotation is what flow tracking follows best).
   std::vector<char> exempt, by_curve;
@@ -1124,11 +1137,51 @@ void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, 
       if (first_why.empty()) first_why = why;
       if (attempt == kScaleAttempts) {
         plan.warnings.push_back(what + " " + why + " even at " + std::to_string(static_cast<int>(scale * 100)) + " % of its size");
+        whole_failed = whole_failed || (!all && plan.actions[i].target == Target::Whole);
         break;
       }
       scale *= 0.8;
     }
   }
+  return whole_failed;
+}
+
+}  // namespace
+
+void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
+  const MotionPlan asked = plan;
+  if (!fit_scales(scene, rig, plan, frames, keyframes)) return;
+  // The whole figure cannot move in the canvas at all: small parts of it at the canvas's edge
+  // (a splash running off the picture beside a surfer who fills it) hold it there. Those parts
+  // hold, as the background does, and the rest moves; kept when it then fits.
+  const double m = kFrameMargin * std::min(scene.width, scene.height);
+  std::vector<int> edge;
+  for (size_t i = 0; i < rig.parts.size(); ++i) {
+    const RigPart& P = rig.parts[i];
+    if (static_cast<int>(i) == rig.root || P.role == Role::Background || P.box.empty()) continue;
+    if (P.box.x0 <= m || P.box.y0 <= m || P.box.x1 >= scene.width - m || P.box.y1 >= scene.height - m) edge.push_back(static_cast<int>(i));
+  }
+  edge = topmost(rig, edge);
+  std::vector<int> held;
+  for (int e : edge) {
+    RigBox chain;
+    for (size_t h = 0; h < rig.parts.size(); ++h)
+      for (int g = static_cast<int>(h), guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
+        if (g == e) {
+          chain.add(rig.parts[h].box);
+          break;
+        }
+    if (chain.area() <= kHeldMaxShare * rig.figure.area()) held.push_back(e);
+  }
+  if (held.empty()) return;
+  MotionPlan retry = asked;
+  retry.held = held;
+  if (fit_scales(scene, rig, retry, frames, keyframes)) return;
+  std::vector<std::string> names;
+  for (int h : held) names.push_back(rig.parts[h].name);
+  retry.notes.push_back("the whole figure could not move inside the canvas: " + join(names, ", ") + " at its edge hold" +
+                        (held.size() > 1 ? "" : "s") + " still");
+  plan = retry;
 }
 
 nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPlan& plan) {
@@ -1173,7 +1226,10 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
                        {"why", a.why}});
   }
   std::string root = rig.root >= 0 ? rig.parts[rig.root].name : "";
+  json held = json::array();
+  for (int h : plan.held) held.push_back(rig.parts[h].name);
   return {{"source", plan.source},
+          {"held", held},
           {"root", root},
           {"parts", parts},
           {"repeated_elements", rig.repeated.size()},

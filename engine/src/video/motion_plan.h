@@ -66,6 +66,9 @@ struct MotionPlan {
   std::vector<std::string> warnings;        // one line each
   std::vector<std::string> notes;           // informational lines (an amplitude scaled to fit)
   double scale = 1;             // amplitude factor of every action fit_plan chose (1: as planned)
+  std::vector<int> held;        // parts (with what hangs from them) the whole figure's motions
+                                // leave where they are, as the background (fit_plan: small parts
+                                // at the canvas's edge when the figure could not move otherwise)
   // The amplitude `a` moves with: its own, times its scale and the plan's (a spin's whole turns
   // are never scaled).
   double amplitude(const PlannedAction& a) const { return a.primitive == Primitive::Spin ? a.amp : a.amp * a.scale * scale; }
@@ -93,7 +96,9 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
 // 0.9 of the margin from the edge, never beyond it. A point outside the canvas at rest is held
 // by the cubics it shapes instead (sampled at quarters): their points inside stay inside, those
 // outside go at most 0.9 of the margin farther. A note says each scaling; a warning says when
-// even the smallest scale fails.
+// even the smallest scale fails. When a motion of the whole figure fails so, the figure's small
+// parts at the canvas's edge (each with what hangs from it within kHeldMaxShare of the figure's
+// box) are held (MotionPlan::held) and the plan is fitted again, kept when that fits.
 void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes);
 
 // The report written to motion.json: the parts found and the plan.
