@@ -843,12 +843,12 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   for (int g = 0; g < G; ++g)
     for (int h = 0; h < G; ++h)
       if (under(h, g)) reach[g].add(rig.parts[h].box);
-  // Chains hanging from the root that reach the lowest kPlanted of the figure stand on the
-  // ground (legs, feet): the root's own swing does not carry them.
   // Parts the whole figure's motions leave where they are (fit_plan).
   std::vector<char> held(G, 0);
   for (int g = 0; g < G; ++g)
     for (int h : plan.held) held[g] = held[g] || under(g, h);
+  // Chains hanging from the root that reach the lowest kPlanted of the figure stand on the
+  // ground (legs, feet): the root's own swing does not carry them.
   std::vector<char> planted(G, 0);
   for (int g = 0; g < G; ++g)
     planted[g] = rig.parts[g].parent == rig.root && rig.root >= 0 && !reach[g].empty() &&
