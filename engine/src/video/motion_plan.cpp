@@ -1040,14 +1040,15 @@ std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const
 
 // Why a swing of `plan` breaks the turn limit (kMaxTurn between two of the K keyframes spread
 // over `frames`), or "" when none does. The angle of a swing is amplitude * sin(2 pi (cycles t +
-// phase)) (rigid, bend_region), so its turn between keyframes is known without the frames.
+// phase)) (rigid), so its turn between keyframes is known without the frames. Only parts: a
+// part of its own turning far slides behind or out from its neighbours (its visible area jumps),
+// a region of one shape bending (bend_region) keeps its outline whole; capped, a dancer's
+// sleeves bent 18 degrees instead of 29 and his squat outweighed them (fitted share 0.70 -> 0.66).
 std::string turn_broken(const MotionPlan& plan, int frames, int K) {
   for (const auto& a : plan.actions) {
-    if (a.primitive != Primitive::Swing) continue;
+    if (a.primitive != Primitive::Swing || a.region != Region::None) continue;
     const double amp = plan.amplitude(a);
-    std::vector<double> phases = a.phase;
-    if (a.region != Region::None) phases = a.alternating ? std::vector<double>{0, 0.5} : std::vector<double>{0};
-    for (double phase : phases)
+    for (double phase : a.phase)
       for (int k = 1; k < K; ++k) {
         const double ta = std::lround((k - 1) * (frames - 1.0) / (K - 1)) / std::max(frames - 1.0, 1.0);
         const double tb = std::lround(k * (frames - 1.0) / (K - 1)) / std::max(frames - 1.0, 1.0);

@@ -15,8 +15,8 @@
 // Three limits keep the target followable (fit_plan): no control point leaves the canvas (less a
 // margin of kFrameMargin; a point already outside it at rest, a line drawing's handle, or a
 // point of a spinning part, may move while the curves it shapes stay in), no point travels farther than kMaxStep of the
-// canvas diagonal between two keyframes, and no swinging part turns by more than kMaxTurn
-// degrees between two keyframes. When any fails
+// canvas diagonal between two keyframes, and no swinging part (a part of its own, not a
+// region of one shape bending) turns by more than kMaxTurn degrees between two keyframes. When any fails
 // the amplitudes are scaled down (spins keep whole turns; falls are shortened per element).
 #pragma once
 
@@ -89,7 +89,7 @@ MotionPlan plan_from_steps(const std::vector<ExplicitStep>& steps, const Rig& ri
 std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames);
 
 // Scales the plan's amplitudes until every frame keeps every control point inside the canvas,
-// no point moves farther than kMaxStep of the diagonal and no swing turns farther than
+// no point moves farther than kMaxStep of the diagonal and no swinging part turns farther than
 // kMaxTurn between keyframes (`keyframes` spread over `frames`): first each action alone (its own scale: a sway that would push a
 // canvas-filling drawing out is made smaller without shrinking the rain falling beside it),
 // then all together (plan.scale). A point already within the margin at rest may move up to
@@ -122,7 +122,7 @@ nlohmann::json path_motion_json(const Scene& scene, const std::vector<PathMotion
 constexpr double kFrameMargin = 0.01;  // of the canvas size: control points stay this far inside
 constexpr double kMaxStep = 0.08;      // of the canvas diagonal between keyframes (about 29 px
                                        // at the fitter's 256 px: what flow warm starts follow)
-constexpr double kMaxTurn = 20;        // degrees a swinging part (or region) turns between
+constexpr double kMaxTurn = 20;        // degrees a swinging part turns between
                                        // keyframes: a boxer's arm drawn behind his body turned
                                        // 33 degrees per keyframe (26.7 x 3 punches), its visible
                                        // area fell from 39 to 12 px from one keyframe to the next
