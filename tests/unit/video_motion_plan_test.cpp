@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
@@ -254,6 +255,54 @@ TEST_CASE("a fast spin is not limited by the step check; a swing that is too fas
     const int fa = static_cast<int>(std::lround((k - 1) * 48.0 / 14)), fb = static_cast<int>(std::lround(k * 48.0 / 14));
     for (size_t i = 0; i < per; ++i) CHECK(std::hypot(pts[fb * per + i].x - pts[fa * per + i].x, pts[fb * per + i].y - pts[fa * per + i].y) <= max_step + 1e-9);
   }
+}
+
+TEST_CASE("a wild wave turns the arm at most kMaxTurn degrees from one keyframe to the next; bending sleeves are not held to it") {
+  const Fixture fx("stick_figure.svg");
+  const int F = 49, K = 15;
+  // The angle about the arm's pivot of the arm's point farthest from it, at every keyframe.
+  auto turns = [&](const MotionPlan& plan) {
+    const int arm = plan.actions[0].parts[0];
+    const Vec2 c = fx.rig.parts[arm].pivot;
+    const auto pts = animate_plan(fx.scene, fx.rig, plan, F);
+    const size_t per = pts.size() / F;
+    int path = 0;
+    while (fx.rig.part_of_path[path] != arm) ++path;
+    size_t far = fx.first_point(path);
+    for (size_t i = far; i < fx.first_point(path + 1); ++i)
+      if (std::hypot(pts[i].x - c.x, pts[i].y - c.y) > std::hypot(pts[far].x - c.x, pts[far].y - c.y)) far = i;
+    double largest = 0;
+    for (int k = 1; k < K; ++k) {
+      const int fa = static_cast<int>(std::lround((k - 1) * (F - 1.0) / (K - 1))), fb = static_cast<int>(std::lround(k * (F - 1.0) / (K - 1)));
+      const Vec2 a = pts[fa * per + far] - c, b = pts[fb * per + far] - c;
+      largest = std::max(largest, std::fabs(std::atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y)) * 180 / M_PI);
+    }
+    return largest;
+  };
+  MotionPlan plan = fx.plan("The man waves his right arm wildly");
+  REQUIRE(plan.actions.size() == 1);
+  REQUIRE(fx.rig.parts[plan.actions[0].parts[0]].name == "Right Arm");
+  CHECK(turns(plan) > 30.0);  // 35 degrees wildly (x1.6), two waves: about 49 per keyframe
+  fit_plan(fx.scene, fx.rig, plan, F, K);
+  const double after = turns(plan);
+  CHECK(after <= kMaxTurn + 1e-6);
+  CHECK(after > 0.8 * kMaxTurn);  // scaled in steps of 0.8: no more than the turn needs
+
+  // Short sleeves of one sweater shape (no arm parts: its sides bend) wave as far as asked: a
+  // region bending keeps its outline whole, so the turn limit is not for it.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><path d="M 80 100 L 120 100 L 125 190 L 75 190 Z" fill="#fc0"/></g>
+           <g><path d="M 65 40 L 135 40 L 135 55 L 120 55 L 120 100 L 80 100 L 80 55 L 65 55 Z" fill="#00f"/></g></svg>)",
+      "sweater.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan sleeves = plan_from_prompt(parse_prompt("she is waving her arms"), rig, 1);
+  REQUIRE(sleeves.actions.size() == 1);
+  REQUIRE(sleeves.actions[0].region == Region::Sides);
+  REQUIRE(sleeves.actions[0].amp > 1.2 * kMaxTurn);  // 35 degrees, give or take 15 %: two waves turn
+                                                     // that far from one keyframe to the next
+  fit_plan(s, rig, sleeves, F, K);
+  CHECK(sleeves.amplitude(sleeves.actions[0]) == sleeves.actions[0].amp);
 }
 
 TEST_CASE("an explicit plan moves exactly the parts it names; a pattern naming nothing is an error") {
@@ -514,6 +563,47 @@ TEST_CASE("'a surfer rides the waves': the whole figure glides, not a part named
   CHECK(roll.actions[0].parts == std::vector<int>{0});
 }
 
+TEST_CASE("a figure filling its canvas glides when the small splash at the canvas's edge holds still") {
+  // A wave behind everything, a surfer on his board, and a splash cut off by the right edge
+  // (200 x 200: the margin is 2, the splash reaches 199.5).
+  auto scene = [](const char* splash) {
+    return read_svg_string(std::string(R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><rect x="0" y="100" width="200" height="100" fill="#04c"/></g>
+           <g><rect x="60" y="20" width="90" height="150" fill="#c33"/></g>
+           <g><rect x="40" y="170" width="120" height="10" fill="#ee0"/></g>
+           <g>)") + splash + "</g></svg>", "surfer.svg");
+  };
+  const int F = 25;
+  {
+    const Scene s = scene(R"(<rect x="185" y="60" width="14.5" height="10" fill="#fff"/>)");
+    const Rig rig = build_rig(s, {});
+    REQUIRE(rig.parts[0].role == Role::Background);
+    MotionPlan plan = plan_from_prompt(parse_prompt("A surfer rides the waves."), rig, 1);
+    REQUIRE(!plan.actions.empty());
+    fit_plan(s, rig, plan, F, 9);
+    CHECK(plan.warnings.empty());
+    CHECK(plan.held == std::vector<int>{3});
+    const auto pts = animate_plan(s, rig, plan, F);
+    double surfer = 0, splash = 0;
+    each_move(pts, F, [&](Vec2 rest, Vec2 m) {
+      double& part = rest.x > 180 ? splash : surfer;
+      part = std::max(part, std::hypot(m.x, m.y));
+      if (rest.x < 199.9) CHECK(rest.x + m.x <= 199.5 + 1e-9);  // (the wave reaches 200 and holds)
+    });
+    CHECK(splash == 0.0);
+    CHECK(surfer > 0.02 * std::hypot(200.0, 200.0));  // visibly: the ranker's 'no motion' had it
+  }
+  {
+    // A board running off the edge is no splash: too large to hold, the figure barely moves.
+    const Scene s = scene(R"(<rect x="30" y="150" width="169.5" height="20" fill="#fff"/>)");
+    const Rig rig = build_rig(s, {});
+    MotionPlan plan = plan_from_prompt(parse_prompt("A surfer rides the waves."), rig, 1);
+    fit_plan(s, rig, plan, F, 9);
+    CHECK(plan.held.empty());
+    CHECK(!plan.warnings.empty());
+  }
+}
+
 TEST_CASE("a flag ripples from its pole: the pole holds, the free end moves most; a fish has no pole") {
   // A pole (10-14 x 10-190: taller than the cloth is wide, so the figure's long axis is the
   // pole's) and a cloth 14-150 x 20-90.
@@ -598,6 +688,29 @@ TEST_CASE("a boxer's body turns into the punches and leans to dodge about the hi
       else CHECK(t[p] > 1.0);               // the torso, the arms, the head
     }
   }
+}
+
+TEST_CASE("a boxer punches with the arm he has thrown out, the other keeps guard; both arms take turns") {
+  const Fixture fx("boxer.svg");
+  REQUIRE(fx.rig.parts[1].role == Role::UpperLimb);
+  REQUIRE(fx.rig.parts[2].role == Role::UpperLimb);
+  for (uint32_t seed = 0; seed < 4; ++seed) {
+    const MotionPlan plan = fx.plan("the boxer is punching", seed);
+    REQUIRE(!plan.actions.empty());
+    CHECK(plan.actions[0].parts == std::vector<int>{1});
+    const auto t = fx.travel(animate_plan(fx.scene, fx.rig, plan, 13), 13);
+    // The guard arm moves only with the body's turn, the thrown arm with it and its own swing.
+    CHECK(t[1] > 2 * t[2]);
+  }
+  const MotionPlan both = fx.plan("his arms are punching");
+  REQUIRE(!both.actions.empty());
+  CHECK(both.actions[0].parts.size() == 2);
+  CHECK(both.actions[0].phase == std::vector<double>{0, 0.5});
+  // The same arms, told apart by nothing: a wave picks one by the seed, either.
+  const Fixture even("stick_figure.svg");
+  std::set<int> picked;
+  for (uint32_t seed = 0; seed < 8; ++seed) picked.insert(even.plan("the figure waves", seed).actions[0].parts[0]);
+  CHECK(picked.size() == 2);
 }
 
 TEST_CASE("a bird flaps its raised wing, not its small beak beside the body") {

@@ -86,6 +86,16 @@ const char* unit_of(Primitive p) {
 // Arms: an upper limb whose box is less than this share of the largest one's is left out.
 constexpr double kArmMinShare = 0.2;
 
+// A one-sided verb with no side named moves the limb reaching this many times farther from the
+// body than the others (reaching_out): a boxer's extended arm reaches 1.4 times as far as the
+// arm he keeps in guard.
+constexpr double kReachLead = 1.2;
+
+// fit_plan: a part at the canvas's edge holds still when the whole figure cannot move otherwise,
+// if it and what hangs from it cover at most this share of the figure's box (a splash, not the
+// body).
+constexpr double kHeldMaxShare = 0.1;
+
 // A rock aimed at a part turns it by at most this many times the rock's angle (Builder::add).
 constexpr double kRockToPartMax = 4;
 
@@ -316,6 +326,32 @@ void pair_up(const Rig& rig, PlannedAction& a, Pairing pairing, std::mt19937& rn
   }
 }
 
+// Of several limbs, the one whose chain (the limb and what hangs from it) reaches clearly
+// farthest from the root's middle: the drawing shows it in action (a punch thrown, an arm
+// raised to wave, a leg out in a kick). -1 when none reaches kReachLead farther than every other
+// (the seed picks). A chain's reach is the farthest corner of its box.
+int reaching_out(const Rig& rig, const std::vector<int>& limbs) {
+  if (rig.root < 0 || limbs.size() < 2) return -1;
+  const Vec2 c = rig.parts[rig.root].box.centre();
+  std::vector<double> reach;
+  for (int l : limbs) {
+    RigBox b;
+    for (size_t h = 0; h < rig.parts.size(); ++h)
+      for (int g = static_cast<int>(h), guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
+        if (g == l) {
+          b.add(rig.parts[h].box);
+          break;
+        }
+    double far = 0;
+    for (Vec2 q : {Vec2{b.x0, b.y0}, Vec2{b.x1, b.y0}, Vec2{b.x0, b.y1}, Vec2{b.x1, b.y1}}) far = std::max(far, std::hypot(q.x - c.x, q.y - c.y));
+    reach.push_back(far);
+  }
+  const size_t best = std::max_element(reach.begin(), reach.end()) - reach.begin();
+  for (size_t i = 0; i < reach.size(); ++i)
+    if (i != best && reach[best] < kReachLead * reach[i]) return -1;
+  return limbs[best];
+}
+
 // A compact figure (an octopus, a frog) does not swim by a wave along its body, which would heave
 // its head as much as its arms: its lower limbs paddle, alternating (Builder::add), and the
 // swim is then a verb of the limbs (plan_from_prompt).
@@ -401,9 +437,9 @@ struct Builder {
       a.parts = {region_host(rig, target)};
       a.region = target == Target::Arms || target == Target::Limbs ? Region::Sides
                  : target == Target::Legs ? Region::Lower : target == Target::Head ? Region::Top : Region::End;
-      a.alternating = base.pairing == Pairing::Alternating;
+      a.alternating = base.pairing == Pairing::Alternating || (base.pairing == Pairing::OneAtATime && (mods.both || plural));
       if (a.region == Region::Sides) side_core(rig, a);
-      if (base.pairing == Pairing::OneSide && !mods.both && !plural) {
+      if ((base.pairing == Pairing::OneSide || base.pairing == Pairing::OneAtATime) && !mods.both && !plural) {
         // The figure's own side is drawn on the viewer's other side.
         a.region_side = mods.side != 0 ? -mods.side : ((rng() & 1) ? 1 : -1);
       }
@@ -424,18 +460,26 @@ struct Builder {
     }
     Pairing pairing = base.pairing;
     if (pairing == Pairing::OneSide && (mods.both || plural)) pairing = Pairing::Mirrored;
+    if (pairing == Pairing::OneAtATime) pairing = mods.both || plural ? Pairing::Alternating : Pairing::OneSide;
     if (pairing == Pairing::OneSide && a.parts.size() > 1 && a.region == Region::None) {
       int want = mods.side;
       std::vector<int> sided;
       for (int p : a.parts)
         if (want != 0 && rig.parts[p].side == want) sided.push_back(p);
-      if (sided.empty()) {  // no side asked (or none there): the seed picks one part
-        sided = {a.parts[rng() % a.parts.size()]};
+      if (sided.empty()) {
+        // No side asked (or none there): the limb the drawing shows reaching out (a boxer's
+        // extended fist, not the one folded in guard), else the seed's pick.
+        const int out = reaching_out(rig, a.parts);
+        sided = {out >= 0 ? out : a.parts[rng() % a.parts.size()]};
         if (want != 0) note = std::string("no part on the figure's ") + (want > 0 ? "right" : "left") + "; " + rig.parts[sided[0]].name + " instead";
+        else if (out >= 0) note = rig.parts[out].name + " reaches out farthest";
       }
       a.parts = {sided[0]};
     }
-    if (a.region == Region::None) pair_up(rig, a, pairing == Pairing::OneSide ? Pairing::Same : pairing, rng);
+    // One limb of a one-at-a-time verb turns as it would in the pair (mirrored about the body:
+    // a fist swings the same way on either side); a one-sided verb's by the seed.
+    if (a.region == Region::None)
+      pair_up(rig, a, pairing != Pairing::OneSide ? pairing : base.pairing == Pairing::OneAtATime ? Pairing::Mirrored : Pairing::Same, rng);
     // One-sided whole-figure motions (lean, bow) go one way and back.
     if (a.primitive == Primitive::Rock && base.pairing == Pairing::OneSide) a.vertical = 2;
     // Skip a repeat: the same primitive on the same parts.
@@ -799,6 +843,10 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   for (int g = 0; g < G; ++g)
     for (int h = 0; h < G; ++h)
       if (under(h, g)) reach[g].add(rig.parts[h].box);
+  // Parts the whole figure's motions leave where they are (fit_plan).
+  std::vector<char> held(G, 0);
+  for (int g = 0; g < G; ++g)
+    for (int h : plan.held) held[g] = held[g] || under(g, h);
   // Chains hanging from the root that reach the lowest kPlanted of the figure stand on the
   // ground (legs, feet): the root's own swing does not carry them.
   std::vector<char> planted(G, 0);
@@ -876,7 +924,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
       const int g = rig.part_of_path[pi];
       const int e = element_of[pi];
-      const bool background = g >= 0 && rig.parts[g].role == Role::Background;
+      const bool background = g >= 0 && (rig.parts[g].role == Role::Background || held[g]);
       const bool free_particle = particles && e >= 0;
       // The element's own motion (falls, twinkles), one phase per element.
       Affine elem;
@@ -990,9 +1038,31 @@ std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const
   return "";
 }
 
-}  // namespace
+// Why a swing of `plan` breaks the turn limit (kMaxTurn between two of the K keyframes spread
+// over `frames`), or "" when none does. The angle of a swing is amplitude * sin(2 pi (cycles t +
+// phase)) (rigid), so its turn between keyframes is known without the frames. Only parts: a
+// part of its own turning far slides behind or out from its neighbours (its visible area jumps),
+// a region of one shape bending (bend_region) keeps its outline whole; capped, a dancer's
+// sleeves bent 18 degrees instead of 29 and his squat outweighed them (fitted share 0.70 -> 0.66).
+std::string turn_broken(const MotionPlan& plan, int frames, int K) {
+  for (const auto& a : plan.actions) {
+    if (a.primitive != Primitive::Swing || a.region != Region::None) continue;
+    const double amp = plan.amplitude(a);
+    for (double phase : a.phase)
+      for (int k = 1; k < K; ++k) {
+        const double ta = std::lround((k - 1) * (frames - 1.0) / (K - 1)) / std::max(frames - 1.0, 1.0);
+        const double tb = std::lround(k * (frames - 1.0) / (K - 1)) / std::max(frames - 1.0, 1.0);
+        const double turn = amp * std::fabs(std::sin(kTau * (a.cycles * tb + phase)) - std::sin(kTau * (a.cycles * ta + phase)));
+        if (turn > kMaxTurn + 1e-9) return "would turn a part too far between keyframes for the tracker to follow";
+      }
+  }
+  return "";
+}
 
-void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
+// fit_plan's scaling of `plan` (see motion_plan.h). True when a motion of the whole figure
+// would break a limit even at its smallest scale (a warning says so).
+bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
+  bool whole_failed = false;
   // Points exempt from the step limit: falling elements (they jump back while invisible) and
   // spinning parts (whole turns cannot be scaled; rotation is what flow tracking follows best).
   std::vector<char> exempt, by_curve;
@@ -1053,7 +1123,8 @@ void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, 
     for (int attempt = 0;; ++attempt) {
       if (!all) one.actions[i].scale = scale;
       else one.scale = scale;
-      const std::string why = limit_broken(scene, animate_plan(scene, rig, one, frames), exempt, by_curve, frames, K);
+      std::string why = limit_broken(scene, animate_plan(scene, rig, one, frames), exempt, by_curve, frames, K);
+      if (why.empty()) why = turn_broken(one, frames, K);
       const std::string what = all ? "the motion" : plan.actions[i].verb + " (" + primitive_name(plan.actions[i].primitive) + ")";
       if (why.empty()) {
         if (scale < 1) {
@@ -1067,11 +1138,51 @@ void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, 
       if (first_why.empty()) first_why = why;
       if (attempt == kScaleAttempts) {
         plan.warnings.push_back(what + " " + why + " even at " + std::to_string(static_cast<int>(scale * 100)) + " % of its size");
+        whole_failed = whole_failed || (!all && plan.actions[i].target == Target::Whole);
         break;
       }
       scale *= 0.8;
     }
   }
+  return whole_failed;
+}
+
+}  // namespace
+
+void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
+  const MotionPlan asked = plan;
+  if (!fit_scales(scene, rig, plan, frames, keyframes)) return;
+  // The whole figure cannot move in the canvas at all: small parts of it at the canvas's edge
+  // (a splash running off the picture beside a surfer who fills it) hold it there. Those parts
+  // hold, as the background does, and the rest moves; kept when it then fits.
+  const double m = kFrameMargin * std::min(scene.width, scene.height);
+  std::vector<int> edge;
+  for (size_t i = 0; i < rig.parts.size(); ++i) {
+    const RigPart& P = rig.parts[i];
+    if (static_cast<int>(i) == rig.root || P.role == Role::Background || P.box.empty()) continue;
+    if (P.box.x0 <= m || P.box.y0 <= m || P.box.x1 >= scene.width - m || P.box.y1 >= scene.height - m) edge.push_back(static_cast<int>(i));
+  }
+  edge = topmost(rig, edge);
+  std::vector<int> held;
+  for (int e : edge) {
+    RigBox chain;
+    for (size_t h = 0; h < rig.parts.size(); ++h)
+      for (int g = static_cast<int>(h), guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
+        if (g == e) {
+          chain.add(rig.parts[h].box);
+          break;
+        }
+    if (chain.area() <= kHeldMaxShare * rig.figure.area()) held.push_back(e);
+  }
+  if (held.empty()) return;
+  MotionPlan retry = asked;
+  retry.held = held;
+  if (fit_scales(scene, rig, retry, frames, keyframes)) return;
+  std::vector<std::string> names;
+  for (int h : held) names.push_back(rig.parts[h].name);
+  retry.notes.push_back("the whole figure could not move inside the canvas: " + join(names, ", ") + " at its edge hold" +
+                        (held.size() > 1 ? "" : "s") + " still");
+  plan = retry;
 }
 
 nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPlan& plan) {
@@ -1116,7 +1227,10 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
                        {"why", a.why}});
   }
   std::string root = rig.root >= 0 ? rig.parts[rig.root].name : "";
+  json held = json::array();
+  for (int h : plan.held) held.push_back(rig.parts[h].name);
   return {{"source", plan.source},
+          {"held", held},
           {"root", root},
           {"parts", parts},
           {"repeated_elements", rig.repeated.size()},

@@ -38,8 +38,10 @@ enum class Primitive {
 // Which parts an action moves, by role in the rig (part_rig.h).
 enum class Target { Whole, Root, Head, Arms, Legs, Limbs, Tail, Wheels, Repeated, Background, Named };
 
-// How a pair of limbs moves together.
-enum class Pairing { Same, Mirrored, Alternating, OneSide };
+// How a pair of limbs moves together. OneSide: one limb (the side the prompt names, else the one
+// the drawing shows reaching out); both mirrored when the prompt says both. OneAtATime: one limb
+// the same way, both taking turns when the prompt says both (punches).
+enum class Pairing { Same, Mirrored, Alternating, OneSide, OneAtATime };
 
 struct Action {
   Primitive primitive;
