@@ -48,6 +48,7 @@ TEST_CASE("segment split: pieces by control-polygon length, exact curve, closed 
   CHECK(plan_segment_split(s, 50)[0][0][0] == static_cast<int>(std::ceil(poly / 50)));
   CHECK(plan_segment_split(s, 10)[0][0][0] == 4);  // capped
   CHECK(plan_segment_split(s, 0)[0][0][0] == 1);   // off
+  CHECK(plan_segment_split(s, 1e-300)[0][0][0] == 4);  // no int overflow: still capped
   CHECK(added_points(plan) == 9);
 
   const Path out = split_path(in, plan[0]);

@@ -85,6 +85,12 @@ TEST_CASE("track_points: a corner's window pins both directions, a straight edge
   CHECK(t.isotropy[4] == 0.0);
   CHECK(t.weight[0] > 0.9);      // the same image: every track stays put and agrees both ways
   CHECK(std::hypot(t.to[0].x - 20, t.to[0].y - 20) < 1e-3);
+  // The same measure on its own (the tracker stage's flow path), and off the image: zero.
+  const auto iso = window_isotropy(img, W, H, {{20, 20}, {20, 32}, {1e30, 5}, {-500, -500}}, 7);
+  CHECK(iso[0] == t.isotropy[0]);
+  CHECK(iso[1] == 0.0);
+  CHECK(iso[2] == 0.0);
+  CHECK(iso[3] == 0.0);
 }
 
 namespace {
@@ -118,7 +124,9 @@ TEST_CASE("fit_field_increment: an affine displacement is reproduced exactly, un
       t.weight.push_back(1.0);
     }
   // With a vanishing ridge the affine field is the exact minimiser: zero misfit, zero bending.
-  const auto c = fit_field_increment(plan, t, 1.0, 1e-9);
+  const auto solved = fit_field_increment(plan, t, 1.0, 1e-9);
+  REQUIRE(solved);
+  const std::vector<Vec2>& c = *solved;
   double worst = 0;
   for (size_t j = 0; j < t.point.size(); ++j) {
     const int i = t.point[j];
@@ -139,7 +147,9 @@ TEST_CASE("fit_field_increment: an affine displacement is reproduced exactly, un
   // bend, so the pulled point gets part of the way, and the disc's far side does not move.
   FieldTargets one = t;
   for (size_t j = 0; j < one.point.size(); ++j) one.offset[j] = j == 0 ? Vec2{4, 0} : Vec2{};
-  const auto c1 = fit_field_increment(plan, one, 1.0, 1e-3);
+  const auto solved1 = fit_field_increment(plan, one, 1.0, 1e-3);
+  REQUIRE(solved1);
+  const std::vector<Vec2>& c1 = *solved1;
   auto field_at = [&](int i) {
     Vec2 d;
     for (int e = plan.cp_node_first[i]; e < plan.cp_node_first[i + 1]; ++e) d = d + plan.cp_node_w[e] * c1[plan.cp_node[e]];

@@ -6,11 +6,12 @@
 
 namespace svgm {
 
-std::vector<Vec2> fit_field_increment(const FitPlan& plan, const FieldTargets& t, double lambda, double mu) {
+std::optional<std::vector<Vec2>> fit_field_increment(const FitPlan& plan, const FieldTargets& t, double lambda, double mu) {
   const int n = plan.n_nodes;
   std::vector<Vec2> out(static_cast<size_t>(n));
   if (n == 0 || t.point.empty()) return out;
   std::vector<Eigen::Triplet<double>> a;
+  a.reserve(t.point.size() * 81 + static_cast<size_t>(n) * 19);
   Eigen::VectorXd bx = Eigen::VectorXd::Zero(n), by = Eigen::VectorXd::Zero(n);
   // Data: w ‖Σ W_b c_b − d‖² adds w W_a W_b to A(a, b) and w W_b d to the right-hand side.
   for (size_t j = 0; j < t.point.size(); ++j) {
@@ -41,8 +42,9 @@ std::vector<Vec2> fit_field_increment(const FitPlan& plan, const FieldTargets& t
   Eigen::SparseMatrix<double> A(n, n);
   A.setFromTriplets(a.begin(), a.end());  // duplicates are summed
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
-  if (solver.info() != Eigen::Success) return out;
+  if (solver.info() != Eigen::Success) return std::nullopt;
   const Eigen::VectorXd cx = solver.solve(bx), cy = solver.solve(by);
+  if (solver.info() != Eigen::Success || !cx.allFinite() || !cy.allFinite()) return std::nullopt;
   for (int b = 0; b < n; ++b) out[static_cast<size_t>(b)] = {cx[b], cy[b]};
   return out;
 }

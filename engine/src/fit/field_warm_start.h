@@ -27,6 +27,7 @@
 // fit, mean 256 px PSNR: 47.81 without, 46.82 / 45.16 / 40.86 at weights 0.01 / 0.1 / 1.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "fit/fit_plan.h"
@@ -40,8 +41,9 @@ struct FieldTargets {
   std::vector<double> weight;   // w_i > 0
 };
 
-// The increment of every node's coefficients ([n_nodes]); all zero when nothing is tracked.
-std::vector<Vec2> fit_field_increment(const FitPlan& plan, const FieldTargets& targets, double lambda,
+// The increment of every node's coefficients ([n_nodes]); all zero when nothing is tracked;
+// nothing when the solve fails.
+std::optional<std::vector<Vec2>> fit_field_increment(const FitPlan& plan, const FieldTargets& targets, double lambda,
                                       double mu);
 
 }  // namespace svgm

@@ -303,6 +303,7 @@ void Fitter::warm_start(int k) {
       tracks.to[j] = from[j] + Vec2{dx, dy};
       tracks.weight[j] = w;
     }
+    tracks.isotropy = window_isotropy(prev, W, H, from, 7);  // as track_points' 15 px window
   } else {
     tracks = track_points(prev, next, W, H, from);
   }
@@ -330,20 +331,24 @@ void Fitter::warm_start(int k) {
     for (int j = 0; j < kMotionParams; ++j) tracked[g * kMotionParams + j] = static_cast<float>(th[j]);
     any = true;
   }
-  if (!any) return;
-  ++warm_starts_tried;
-  const float copied_loss = frame_loss(k);
-  q.enqueueWriteBuffer(params_, CL_TRUE, k * pb * sizeof(float), pb * sizeof(float), tracked.data());
-  const float tracked_loss = frame_loss(k);
-  if (tracked_loss < copied_loss) {
-    ++warm_starts_kept;
-  } else {
-    q.enqueueWriteBuffer(params_, CL_TRUE, k * pb * sizeof(float), pb * sizeof(float), copied.data());
+  float loss = frame_loss(k);
+  if (any) {
+    ++warm_starts_tried;
+    q.enqueueWriteBuffer(params_, CL_TRUE, k * pb * sizeof(float), pb * sizeof(float), tracked.data());
+    const float tracked_loss = frame_loss(k);
+    if (tracked_loss < loss) {
+      ++warm_starts_kept;
+      loss = tracked_loss;
+    } else {
+      q.enqueueWriteBuffer(params_, CL_TRUE, k * pb * sizeof(float), pb * sizeof(float), copied.data());
+    }
   }
-  if (fplan_.n_nodes) warm_start_field(k, index, tracks);
+  // Also when no part had tracks enough for a similarity: a small feature's few tracks may
+  // still carry it.
+  if (fplan_.n_nodes) warm_start_field(k, index, tracks, loss);
 }
 
-void Fitter::warm_start_field(int k, const std::vector<int>& index, const PointTracks& tracks) {
+void Fitter::warm_start_field(int k, const std::vector<int>& index, const PointTracks& tracks, float before) {
   // A track counts when it is consistent both ways and its window sees both directions of
   // the motion (an edge's along-edge motion is unknown; its points simply do not vote).
   constexpr double kMinWeight = 0.5, kMinIsotropy = 0.1;
@@ -380,13 +385,13 @@ void Fitter::warm_start_field(int k, const std::vector<int>& index, const PointT
     t.weight.push_back(tracks.weight[j]);
   }
   if (t.point.empty()) return;
-  const std::vector<Vec2> inc = fit_field_increment(fplan_, t, kLambda, kMu);
+  const auto inc = fit_field_increment(fplan_, t, kLambda, kMu);
+  if (!inc) return;
   ++field_warm_starts_tried;
-  const float before = frame_loss(k);
   std::vector<float> moved = field;
-  for (size_t b = 0; b < inc.size(); ++b) {
-    moved[2 * b] += static_cast<float>(inc[b].x);
-    moved[2 * b + 1] += static_cast<float>(inc[b].y);
+  for (size_t b = 0; b < inc->size(); ++b) {
+    moved[2 * b] += static_cast<float>((*inc)[b].x);
+    moved[2 * b + 1] += static_cast<float>((*inc)[b].y);
   }
   q.enqueueWriteBuffer(field_, CL_TRUE, k * fb * sizeof(float), fb * sizeof(float), moved.data());
   if (frame_loss(k) < before) ++field_warm_starts_kept;

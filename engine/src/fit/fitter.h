@@ -186,8 +186,9 @@ class Fitter {
   // Optical-flow warm start of keyframe k (warm_start.h); keeps it only if it fits better.
   void warm_start(int k);
   // The field increment of keyframe k that carries its tracked points where the tracks went
-  // beyond their group's homography (field_warm_start.h); kept only if it fits better.
-  void warm_start_field(int k, const std::vector<int>& index, const PointTracks& tracks);
+  // beyond their group's homography (field_warm_start.h); kept only if it fits better than
+  // `before`, keyframe k's image loss as it stands.
+  void warm_start_field(int k, const std::vector<int>& index, const PointTracks& tracks, float before);
   float frame_loss(int k);  // image loss of keyframe k alone with the current parameters
   // Field and motion forward: control points of keyframes 0 .. frames-1 into the raster's buffer.
   void enqueue_motion(int frames);

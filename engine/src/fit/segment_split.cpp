@@ -38,7 +38,9 @@ SplitPlan plan_segment_split(const Scene& scene, double max_length, int max_piec
         double len = 0;
         for (size_t j = 3 * s; j < 3 * s + 3; ++j)
           len += std::hypot(sp.points[j + 1].x - sp.points[j].x, sp.points[j + 1].y - sp.points[j].y);
-        pieces[s] = std::clamp(static_cast<int>(std::ceil(len / max_length)), 1, std::max(1, max_pieces));
+        // Clamped as a double: a tiny max_length or huge coordinates must not overflow an int.
+        const double n = std::isfinite(len) ? std::ceil(len / max_length) : 1.0;
+        pieces[s] = static_cast<int>(std::clamp(n, 1.0, static_cast<double>(std::max(1, max_pieces))));
       }
       plan[p].push_back(std::move(pieces));
     }

@@ -9,7 +9,7 @@
 // so splitting costs nothing at rest and gives the fit the points the motion needs (the same
 // drawing with every segment longer than 4 % of the canvas split in two: 36.67 dB, F 0.970).
 //
-// The split is decided once, on the fitted scene, as a plan (pieces per segment), and the
+// The split is decided once, on the scene as read, as a plan (pieces per segment), and the
 // same plan is applied to whatever document the animation is written into, so the written
 // paths have exactly the fitted structure. At rest every written path draws what the
 // original drew; its `d` has more segments.

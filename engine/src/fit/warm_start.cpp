@@ -8,6 +8,28 @@
 
 namespace svgm {
 
+std::vector<double> window_isotropy(const std::vector<uint8_t>& image, int width, int height,
+                                   const std::vector<Vec2>& at, int r) {
+  std::vector<double> iso(at.size(), 0.0);
+  auto pixel = [&](int x, int y) { return static_cast<double>(image[static_cast<size_t>(y) * width + x]); };
+  for (size_t i = 0; i < at.size(); ++i) {
+    if (!std::isfinite(at[i].x) || !std::isfinite(at[i].y)) continue;
+    // Clamped before the cast: a point far off the image has no window there.
+    const int px = static_cast<int>(std::clamp(std::floor(at[i].x), -1e6, 1e6));
+    const int py = static_cast<int>(std::clamp(std::floor(at[i].y), -1e6, 1e6));
+    double xx = 0, xy = 0, yy = 0;
+    for (int y = std::max(1, py - r); y <= std::min(height - 2, py + r); ++y)
+      for (int x = std::max(1, px - r); x <= std::min(width - 2, px + r); ++x) {
+        const double gx = 0.5 * (pixel(x + 1, y) - pixel(x - 1, y));
+        const double gy = 0.5 * (pixel(x, y + 1) - pixel(x, y - 1));
+        xx += gx * gx, xy += gx * gy, yy += gy * gy;
+      }
+    const double mean = 0.5 * (xx + yy), dev = std::sqrt(0.25 * (xx - yy) * (xx - yy) + xy * xy);
+    if (mean > 0) iso[i] = (mean - dev) / (mean + dev);
+  }
+  return iso;
+}
+
 PointTracks track_points(const std::vector<uint8_t>& prev, const std::vector<uint8_t>& next,
                          int width, int height, const std::vector<Vec2>& from) {
   PointTracks out;
@@ -24,21 +46,7 @@ PointTracks track_points(const std::vector<uint8_t>& prev, const std::vector<uin
   const cv::TermCriteria term(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 30, 0.01);
   cv::calcOpticalFlowPyrLK(a, b, p0, p1, st1, err, win, 3, term);
   cv::calcOpticalFlowPyrLK(b, a, p1, back, st2, err, win, 3, term);
-  // The structure tensor over each point's window, from central differences of prev.
-  out.isotropy.assign(from.size(), 0.0);
-  const int r = win.width / 2;
-  for (size_t i = 0; i < from.size(); ++i) {
-    const int px = static_cast<int>(std::floor(from[i].x)), py = static_cast<int>(std::floor(from[i].y));
-    double xx = 0, xy = 0, yy = 0;
-    for (int y = std::max(1, py - r); y <= std::min(height - 2, py + r); ++y)
-      for (int x = std::max(1, px - r); x <= std::min(width - 2, px + r); ++x) {
-        const double gx = 0.5 * (a.at<uchar>(y, x + 1) - a.at<uchar>(y, x - 1));
-        const double gy = 0.5 * (a.at<uchar>(y + 1, x) - a.at<uchar>(y - 1, x));
-        xx += gx * gx, xy += gx * gy, yy += gy * gy;
-      }
-    const double mean = 0.5 * (xx + yy), dev = std::sqrt(0.25 * (xx - yy) * (xx - yy) + xy * xy);
-    if (mean > 0) out.isotropy[i] = (mean - dev) / (mean + dev);
-  }
+  out.isotropy = window_isotropy(prev, width, height, from, win.width / 2);
   for (size_t i = 0; i < from.size(); ++i) {
     if (!st1[i] || !st2[i]) continue;
     const double fb = std::hypot(back[i].x - p0[i].x, back[i].y - p0[i].y);

@@ -22,6 +22,11 @@ struct PointTracks {
   std::vector<double> isotropy;
 };
 
+// PointTracks::isotropy of windows of radius r (pixels) centred at `at` in an 8-bit grey image
+// (central differences; 0 for a point off the image or flat there).
+std::vector<double> window_isotropy(const std::vector<uint8_t>& image, int width, int height,
+                                   const std::vector<Vec2>& at, int r);
+
 // prev and next: 8-bit grey images of width x height. Points in pixels (centres at +0.5).
 PointTracks track_points(const std::vector<uint8_t>& prev, const std::vector<uint8_t>& next,
                          int width, int height, const std::vector<Vec2>& from);
