@@ -761,6 +761,33 @@ TEST_CASE("a motion too small to see is raised to 2 % of the canvas diagonal, at
   CHECK(wave.scale <= 1.0);
 }
 
+TEST_CASE("'a waving flag': a figure held by a pole waves by rippling from it, no region of it swings") {
+  const Fixture f("flag.svg");
+  MotionPlan plan = f.plan("A waving flag fluttering in the wind.");
+  // wave and flutter (arm verbs) find no arm: both are the one ripple from the pole.
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].primitive == Primitive::Undulate);
+  CHECK(plan.actions[0].target == Target::Whole);
+  CHECK(plan.actions[0].region == Region::None);
+  CHECK(plan.actions[0].anchored == 1);
+  CHECK(plan.actions[0].why.find("wave has no arms on a figure held by a pole") != std::string::npos);
+  const int F = 25;
+  fit_plan(f.scene, f.rig, plan, F, 9);
+  const auto pts = animate_plan(f.scene, f.rig, plan, F);
+  const auto t = f.travel(pts, F);
+  CHECK(t[1] > 3.0);           // the cloth's free end moves
+  CHECK(t[0] < 0.05 * t[1]);   // the pole holds
+  // The same cloth without its pole waves by bending its sides, as any figure without arms.
+  const Scene cloth = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><path d="M 14 20 L 150 20 L 150 90 L 14 90 Z" fill="#c33"/></g>
+           <g><path d="M 14 50 L 150 50 L 150 60 L 14 60 Z" fill="#fff"/></g></svg>)", "cloth.svg");
+  const MotionPlan free = plan_from_prompt(parse_prompt("A waving flag."), build_rig(cloth, {}), 1);
+  REQUIRE(free.actions.size() == 1);
+  CHECK(free.actions[0].primitive == Primitive::Swing);
+  CHECK(free.actions[0].region == Region::Sides);
+}
+
 TEST_CASE("a ferris wheel's small cabins ride round with the turning wheel, upright") {
   const Scene s = read_svg_string(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
