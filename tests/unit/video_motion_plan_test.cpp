@@ -401,6 +401,25 @@ TEST_CASE("a part low beside a raised body is no stand-in for the head: the body
   CHECK(slither.warnings[0].find("no part for the head") != std::string::npos);
 }
 
+TEST_CASE("'the cobra snake sways, its hood slightly flared': the figure sways, its hood is not the target") {
+  // The cobra of the test above: its raised body (the root) and a coil lying beside its base.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
+           <path d="M 40 10 L 60 10 L 60 90 L 40 90 Z" fill="#0a0"/>
+           <path d="M 60 75 L 95 75 L 95 90 L 60 90 Z" fill="#070"/></svg>)", "cobra.svg");
+  const Rig rig = build_rig(s, {});
+  const MotionPlan plan = plan_from_prompt(parse_prompt("The hypnotized cobra snake sways gently, its hood slightly flared."), rig, 1);
+  REQUIRE(plan.actions.size() == 1);  // no slither from "snake"
+  CHECK(plan.actions[0].primitive == Primitive::Sway);
+  CHECK(plan.actions[0].target == Target::Whole);
+  CHECK(plan.actions[0].region == Region::None);  // not the top of the body alone, as a head
+  // Asked of the hood, it is the hood's.
+  const MotionPlan hood = plan_from_prompt(parse_prompt("The snake sways its hood."), rig, 1);
+  REQUIRE(hood.actions.size() == 1);
+  CHECK(hood.actions[0].target == Target::Head);
+  CHECK(hood.actions[0].region == Region::Top);
+}
+
 TEST_CASE("a sway that would push a canvas-filling drawing out is scaled alone; the rain keeps its size") {
   // A canopy reaching 4 units from the left and right edges, three drops above it.
   const Scene s = read_svg_string(

@@ -542,7 +542,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
   bool names_limbs = false;
   for (const Clause& c : prompt.clauses)
     for (const auto& n : c.nouns)
-      names_limbs = names_limbs || (!n.object_of_preposition && is_limb_target(n.target));
+      names_limbs = names_limbs || (!n.object_of_preposition && !n.own_predicate && is_limb_target(n.target));
   std::vector<std::string> accents_left_out;
   // The clause's targets: known part nouns, and other words that name a part of the drawing.
   struct ClauseTarget {
@@ -568,7 +568,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
         for (int h : hits) backdrop = backdrop && rig.parts[h].role == Role::Background;
         if (backdrop && n.after_verb) continue;
       }
-      if (ct.have || n.object_of_preposition) continue;
+      if (ct.have || n.object_of_preposition || n.own_predicate) continue;
       ct.have = true;
       ct.target = n.target;
       ct.named = hits;
