@@ -401,6 +401,25 @@ TEST_CASE("a part low beside a raised body is no stand-in for the head: the body
   CHECK(slither.warnings[0].find("no part for the head") != std::string::npos);
 }
 
+TEST_CASE("'the cobra snake sways, its hood slightly flared': the figure sways, its hood is not the target") {
+  // The cobra of the test above: its raised body (the root) and a coil lying beside its base.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
+           <path d="M 40 10 L 60 10 L 60 90 L 40 90 Z" fill="#0a0"/>
+           <path d="M 60 75 L 95 75 L 95 90 L 60 90 Z" fill="#070"/></svg>)", "cobra.svg");
+  const Rig rig = build_rig(s, {});
+  const MotionPlan plan = plan_from_prompt(parse_prompt("The hypnotized cobra snake sways gently, its hood slightly flared."), rig, 1);
+  REQUIRE(plan.actions.size() == 1);  // no slither from "snake"
+  CHECK(plan.actions[0].primitive == Primitive::Sway);
+  CHECK(plan.actions[0].target == Target::Whole);
+  CHECK(plan.actions[0].region == Region::None);  // not the top of the body alone, as a head
+  // Asked of the hood, it is the hood's.
+  const MotionPlan hood = plan_from_prompt(parse_prompt("The snake sways its hood."), rig, 1);
+  REQUIRE(hood.actions.size() == 1);
+  CHECK(hood.actions[0].target == Target::Head);
+  CHECK(hood.actions[0].region == Region::Top);
+}
+
 TEST_CASE("a sway that would push a canvas-filling drawing out is scaled alone; the rain keeps its size") {
   // A canopy reaching 4 units from the left and right edges, three drops above it.
   const Scene s = read_svg_string(
@@ -759,6 +778,33 @@ TEST_CASE("a motion too small to see is raised to 2 % of the canvas diagonal, at
   MotionPlan wave = fx.plan("the man waves his right arm");
   fit_plan(fx.scene, fx.rig, wave, F, 9);
   CHECK(wave.scale <= 1.0);
+}
+
+TEST_CASE("'a waving flag': a figure held by a pole waves by rippling from it, no region of it swings") {
+  const Fixture f("flag.svg");
+  MotionPlan plan = f.plan("A waving flag fluttering in the wind.");
+  // wave and flutter (arm verbs) find no arm: both are the one ripple from the pole.
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].primitive == Primitive::Undulate);
+  CHECK(plan.actions[0].target == Target::Whole);
+  CHECK(plan.actions[0].region == Region::None);
+  CHECK(plan.actions[0].anchored == 1);
+  CHECK(plan.actions[0].why.find("wave has no arms on a figure held by a pole") != std::string::npos);
+  const int F = 25;
+  fit_plan(f.scene, f.rig, plan, F, 9);
+  const auto pts = animate_plan(f.scene, f.rig, plan, F);
+  const auto t = f.travel(pts, F);
+  CHECK(t[1] > 3.0);           // the cloth's free end moves
+  CHECK(t[0] < 0.05 * t[1]);   // the pole holds
+  // The same cloth without its pole waves by bending its sides, as any figure without arms.
+  const Scene cloth = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><path d="M 14 20 L 150 20 L 150 90 L 14 90 Z" fill="#c33"/></g>
+           <g><path d="M 14 50 L 150 50 L 150 60 L 14 60 Z" fill="#fff"/></g></svg>)", "cloth.svg");
+  const MotionPlan free = plan_from_prompt(parse_prompt("A waving flag."), build_rig(cloth, {}), 1);
+  REQUIRE(free.actions.size() == 1);
+  CHECK(free.actions[0].primitive == Primitive::Swing);
+  CHECK(free.actions[0].region == Region::Sides);
 }
 
 TEST_CASE("a ferris wheel's small cabins ride round with the turning wheel, upright") {

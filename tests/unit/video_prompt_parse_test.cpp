@@ -112,6 +112,35 @@ TEST_CASE("riding and the rider: whole words, not the stem 'rid' inside other wo
   CHECK(parse_prompt("she rode off").clauses[0].verbs.size() == 1);
 }
 
+TEST_CASE("'the cobra snake sways': the word before a verb is who does it; 'its hood flared' is not what sways") {
+  const ParsedPrompt p = parse_prompt("The hypnotized cobra snake sways gently, its hood slightly flared.");
+  REQUIRE(p.clauses.size() == 1);  // the verbless clause joins the one before it
+  REQUIRE(p.clauses[0].verbs.size() == 1);
+  CHECK(p.clauses[0].verbs[0]->name == "sway");  // "snake" (slither's stem "snak") is the subject
+  bool hood = false;
+  for (const auto& n : p.clauses[0].nouns)
+    if (n.word == "hood") {
+      hood = true;
+      CHECK(n.target == Target::Head);
+      CHECK(n.own_predicate);  // the hood flares
+    }
+  CHECK(hood);
+  // Without a participle of its own the joined noun is the verb's target, as before.
+  const ParsedPrompt q = parse_prompt("The snake sways, its hood up and down.");
+  REQUIRE(q.clauses.size() == 1);
+  for (const auto& n : q.clauses[0].nouns) CHECK_FALSE(n.own_predicate);
+  // A verb's word not followed by another verb is still the verb, inflected or not.
+  for (const char* prompt : {"the snake snakes along", "snake along the branch", "it is snaking"}) {
+    const ParsedPrompt r = parse_prompt(prompt);
+    REQUIRE(r.clauses.size() == 1);
+    REQUIRE(r.clauses[0].verbs.size() == 1);
+    CHECK(r.clauses[0].verbs[0]->name == "slither");
+  }
+  // ... and a verb in the third person followed by another is both ("flies flapping").
+  const ParsedPrompt f = parse_prompt("the bird flies flapping its wings");
+  CHECK(f.clauses[0].verbs.size() == 2);
+}
+
 TEST_CASE("modifiers: speed, size, once, the figure's side, both") {
   const ParsedPrompt p = parse_prompt("the man slowly waves his right arm once, then kicks wildly with both legs");
   REQUIRE(p.clauses.size() == 2);

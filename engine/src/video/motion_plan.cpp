@@ -369,7 +369,7 @@ struct Builder {
 
   void add(const Verb& verb, const Action& base_in, Target target, const std::vector<int>& named_parts,
            const std::string& target_word, const Modifiers& mods, bool plural, const std::string& words,
-           bool primary_retargeted) {
+           bool primary_retargeted, const std::string& instead = "") {
     Action base = base_in;
     std::string paddle;
     if (&base_in == &verb.actions[0] && target == Target::Whole && paddles(verb, rig)) {
@@ -433,6 +433,16 @@ struct Builder {
     // No separate part for a limb role: a region of the root bends instead (when it swings).
     const bool limb_role = target == Target::Arms || target == Target::Legs || target == Target::Limbs ||
                            target == Target::Head || target == Target::Tail;
+    // A figure held by a pole (a flag) has no limbs: a limb verb with no limb part of its own
+    // ("a waving flag") is the wave from the pole, as a ripple, not a bend of a region (the
+    // flag's edge along the pole swung 36 degrees across it and the fit dragged the pole's
+    // strokes along).
+    if (limb_role && !note.empty() && rig.root >= 0 && a.primitive == Primitive::Swing && anchored_side(rig) != 0)
+      if (const Verb* ripple = find_verb_by_name("ripple")) {
+        add(*ripple, ripple->actions[0], Target::Whole, {}, "", mods, plural, words, false,
+            verb.name + " has no " + target_name(target) + " on a figure held by a pole: it ripples");
+        return;
+      }
     if (limb_role && !note.empty() && rig.root >= 0 && a.primitive == Primitive::Swing) {
       a.parts = {region_host(rig, target)};
       a.region = target == Target::Arms || target == Target::Limbs ? Region::Sides
@@ -493,6 +503,7 @@ struct Builder {
              : std::string(target_name(target)) + " (" + join(names, ", ") + ")");
     if (!note.empty()) a.why += "; " + note;
     if (!paddle.empty()) a.why += "; " + paddle;
+    if (!instead.empty()) a.why += "; " + instead;
     if (a.anchored != 0) {
       static const char* sides[] = {"", "left", "right", "top", "bottom"};
       a.why += std::string("; held by a pole at its ") + sides[a.anchored] + ": the wave runs from there";
@@ -531,7 +542,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
   bool names_limbs = false;
   for (const Clause& c : prompt.clauses)
     for (const auto& n : c.nouns)
-      names_limbs = names_limbs || (!n.object_of_preposition && is_limb_target(n.target));
+      names_limbs = names_limbs || (!n.object_of_preposition && !n.own_predicate && is_limb_target(n.target));
   std::vector<std::string> accents_left_out;
   // The clause's targets: known part nouns, and other words that name a part of the drawing.
   struct ClauseTarget {
@@ -557,7 +568,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
         for (int h : hits) backdrop = backdrop && rig.parts[h].role == Role::Background;
         if (backdrop && n.after_verb) continue;
       }
-      if (ct.have || n.object_of_preposition) continue;
+      if (ct.have || n.object_of_preposition || n.own_predicate) continue;
       ct.have = true;
       ct.target = n.target;
       ct.named = hits;

@@ -60,7 +60,8 @@ const PartNoun* noun_for_word(const std::string& w) {
 Clause read_clause(const std::vector<std::string>& words, bool& after_prep) {
   Clause c;
   std::string prev;
-  for (const auto& w : words) {
+  for (size_t wi = 0; wi < words.size(); ++wi) {
+    const std::string& w = words[wi];
     const bool prev_was_start = c.text.empty();
     c.text += (c.text.empty() ? "" : " ") + w;
     const bool after_determiner = is_determiner(prev);
@@ -83,7 +84,15 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep) {
     // A verb's word right after an article or a possessive is a noun ("rides the waves",
     // "in the breeze"), unless it is a participle ("a galloping horse", "a waving flag").
     const bool participle = w.size() > 4 && w.compare(w.size() - 3, 3, "ing") == 0;
-    const Verb* v = after_determiner && !participle ? nullptr : verb_for_word(w);
+    // ... and so is one right before a verb that says what it does ("the cobra snake sways": the
+    // snake is who sways, it does not slither): a bare word followed by another verb's word
+    // in the third person ("sways", not "swaying"). Two words of one verb say it once ("rain
+    // falls").
+    const std::string next = wi + 1 < words.size() ? words[wi + 1] : std::string();
+    const bool bare = w.back() != 's' && !participle && !(w.size() > 3 && w.compare(w.size() - 2, 2, "ed") == 0);
+    const Verb* next_verb = next.size() > 3 && next.back() == 's' && next[next.size() - 2] != 's' ? verb_for_word(next) : nullptr;
+    const bool subject = bare && next_verb && next_verb != verb_for_word(w);
+    const Verb* v = (after_determiner && !participle) || subject ? nullptr : verb_for_word(w);
     if (v) {
       if (std::find(c.verbs.begin(), c.verbs.end(), v) == c.verbs.end()) {
         c.verbs.push_back(v);
@@ -99,7 +108,20 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep) {
   return c;
 }
 
-void merge_into(Clause& into, const Clause& from) {
+// A verbless clause saying something of its nouns with a past participle the vocabulary does
+// not know ("its hood slightly flared", "her eyes closed"): the unknown words are kept as
+// nouns by read_clause, a participle among them ends in "ed".
+bool has_unknown_participle(const Clause& c) {
+  if (!c.verbs.empty()) return false;
+  for (const auto& n : c.nouns)
+    if (n.target == Target::Named && n.word.size() > 4 && n.word.compare(n.word.size() - 2, 2, "ed") == 0) return true;
+  return false;
+}
+
+void merge_into(Clause& into, Clause from) {
+  // Its nouns are described by the participle: not the targets of the verb it joins.
+  if (has_unknown_participle(from))
+    for (auto& n : from.nouns) n.own_predicate = true;
   into.text += " " + from.text;
   for (size_t i = 0; i < from.verbs.size(); ++i)
     if (std::find(into.verbs.begin(), into.verbs.end(), from.verbs[i]) == into.verbs.end()) {

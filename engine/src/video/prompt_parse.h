@@ -6,7 +6,9 @@
 //
 // Clauses split at punctuation and at conjunctions (and, while, then, as, but); a clause with no
 // verb ("down" in "up and down", "his hands in the air") joins the clause before it, so its
-// nouns and modifiers apply to that verb. A noun right after a preposition ("falls on the
+// nouns and modifiers apply to that verb, unless it has a participle of its own that the
+// vocabulary does not know ("sways gently, its hood slightly flared": the hood flares, it is not
+// what sways). A noun right after a preposition ("falls on the
 // umbrella", "the wheels of the bicycle") is where or whose, not what moves, and is kept apart.
 #pragma once
 
@@ -23,6 +25,8 @@ struct PromptNoun {
   bool plural = false;
   bool object_of_preposition = false;  // "on the umbrella": not a target
   bool after_verb = false;             // "rides the waves": the verb's object
+  bool own_predicate = false;          // "its hood slightly flared": said to do something the
+                                       // vocabulary does not know, so not another verb's target
 };
 
 struct Clause {
