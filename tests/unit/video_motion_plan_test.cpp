@@ -381,12 +381,21 @@ TEST_CASE("a stroke's handle outside the canvas does not freeze the motion; its 
   CHECK(left < 6.0);        // and it moved towards the edge
 }
 
-TEST_CASE("a part low beside a raised body is no stand-in for the head: the body's top bends") {
-  // A cobra drawn as its raised body (the root) and a coil lying beside its base.
-  const Scene s = read_svg_string(
+namespace {
+
+// A cobra drawn as its raised body (the root) and a coil lying beside its base.
+Scene cobra() {
+  return read_svg_string(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
            <path d="M 40 10 L 60 10 L 60 90 L 40 90 Z" fill="#0a0"/>
            <path d="M 60 75 L 95 75 L 95 90 L 60 90 Z" fill="#070"/></svg>)", "cobra.svg");
+}
+
+}  // namespace
+
+TEST_CASE("a part low beside a raised body is no stand-in for the head: the body's top bends") {
+  // A cobra drawn as its raised body (the root) and a coil lying beside its base.
+  const Scene s = cobra();
   const Rig rig = build_rig(s, {});
   REQUIRE(rig.root == 0);
   // A swing of the head bends the body's top; a wave along the head has no part to run along
@@ -403,10 +412,7 @@ TEST_CASE("a part low beside a raised body is no stand-in for the head: the body
 
 TEST_CASE("'the cobra snake sways, its hood slightly flared': the figure sways, its hood is not the target") {
   // The cobra of the test above: its raised body (the root) and a coil lying beside its base.
-  const Scene s = read_svg_string(
-      R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
-           <path d="M 40 10 L 60 10 L 60 90 L 40 90 Z" fill="#0a0"/>
-           <path d="M 60 75 L 95 75 L 95 90 L 60 90 Z" fill="#070"/></svg>)", "cobra.svg");
+  const Scene s = cobra();
   const Rig rig = build_rig(s, {});
   const MotionPlan plan = plan_from_prompt(parse_prompt("The hypnotized cobra snake sways gently, its hood slightly flared."), rig, 1);
   REQUIRE(plan.actions.size() == 1);  // no slither from "snake"

@@ -331,6 +331,7 @@ void Fitter::warm_start(int k) {
     for (int j = 0; j < kMotionParams; ++j) tracked[g * kMotionParams + j] = static_cast<float>(th[j]);
     any = true;
   }
+  if (!any && !fplan_.n_nodes) return;
   float loss = frame_loss(k);
   if (any) {
     ++warm_starts_tried;
@@ -366,8 +367,7 @@ void Fitter::warm_start_field(int k, const std::vector<int>& index, const PointT
   const double scale = 0.5 * size_.width;
   FieldTargets t;
   for (size_t j = 0; j < index.size(); ++j) {
-    const double iso = tracks.isotropy.empty() ? 1.0 : tracks.isotropy[j];
-    if (tracks.weight[j] < kMinWeight || iso < kMinIsotropy) continue;
+    if (tracks.weight[j] < kMinWeight || tracks.isotropy[j] < kMinIsotropy) continue;
     const int i = index[j];
     MotionParams th;
     for (int e = 0; e < kMotionParams; ++e) th[e] = par[fplan_.cp_group[i] * kMotionParams + e];

@@ -326,6 +326,21 @@ void pair_up(const Rig& rig, PlannedAction& a, Pairing pairing, std::mt19937& rn
   }
 }
 
+// Whether part p is at or under part a (a descendant through the parents).
+bool part_under(const Rig& rig, int p, int a) {
+  for (int g = p, guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
+    if (g == a) return true;
+  return false;
+}
+
+// The box of part a with everything that hangs from it.
+RigBox chain_box(const Rig& rig, int a) {
+  RigBox b;
+  for (size_t h = 0; h < rig.parts.size(); ++h)
+    if (part_under(rig, static_cast<int>(h), a)) b.add(rig.parts[h].box);
+  return b;
+}
+
 // Of several limbs, the one whose chain (the limb and what hangs from it) reaches clearly
 // farthest from the root's middle: the drawing shows it in action (a punch thrown, an arm
 // raised to wave, a leg out in a kick). -1 when none reaches kReachLead farther than every other
@@ -335,13 +350,7 @@ int reaching_out(const Rig& rig, const std::vector<int>& limbs) {
   const Vec2 c = rig.parts[rig.root].box.centre();
   std::vector<double> reach;
   for (int l : limbs) {
-    RigBox b;
-    for (size_t h = 0; h < rig.parts.size(); ++h)
-      for (int g = static_cast<int>(h), guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
-        if (g == l) {
-          b.add(rig.parts[h].box);
-          break;
-        }
+    const RigBox b = chain_box(rig, l);
     double far = 0;
     for (Vec2 q : {Vec2{b.x0, b.y0}, Vec2{b.x1, b.y0}, Vec2{b.x0, b.y1}, Vec2{b.x1, b.y1}}) far = std::max(far, std::hypot(q.x - c.x, q.y - c.y));
     reach.push_back(far);
@@ -832,12 +841,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   const int G = static_cast<int>(rig.parts.size());
   const double W = std::max(rig.figure.w(), 1e-9), H = std::max(rig.figure.h(), 1e-9);
   const double CH = scene.height;
-  // Descendant test: is part p at or under part a?
-  auto under = [&](int p, int a) {
-    for (int g = p, guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
-      if (g == a) return true;
-    return false;
-  };
+  auto under = [&](int p, int a) { return part_under(rig, p, a); };
   // Repeated elements: which element each path belongs to; and whether they fly free.
   std::vector<int> element_of(scene.paths.size(), -1);
   std::vector<RigBox> element_box(rig.repeated.size());
@@ -851,9 +855,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   for (const auto& a : plan.actions) particles = particles || (a.target == Target::Repeated && a.primitive == Primitive::Fall);
   // Each part's box including what hangs from it (the extent a deformation spans).
   std::vector<RigBox> reach(G);
-  for (int g = 0; g < G; ++g)
-    for (int h = 0; h < G; ++h)
-      if (under(h, g)) reach[g].add(rig.parts[h].box);
+  for (int g = 0; g < G; ++g) reach[g] = chain_box(rig, g);
   // Parts the whole figure's motions leave where they are (fit_plan).
   std::vector<char> held(G, 0);
   for (int g = 0; g < G; ++g)
@@ -1175,16 +1177,8 @@ void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, 
   }
   edge = topmost(rig, edge);
   std::vector<int> held;
-  for (int e : edge) {
-    RigBox chain;
-    for (size_t h = 0; h < rig.parts.size(); ++h)
-      for (int g = static_cast<int>(h), guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
-        if (g == e) {
-          chain.add(rig.parts[h].box);
-          break;
-        }
-    if (chain.area() <= kHeldMaxShare * rig.figure.area()) held.push_back(e);
-  }
+  for (int e : edge)
+    if (chain_box(rig, e).area() <= kHeldMaxShare * rig.figure.area()) held.push_back(e);
   if (held.empty()) return;
   MotionPlan retry = asked;
   retry.held = held;
