@@ -14,6 +14,7 @@
 #include "fit/document_order.h"
 #include "fit/inbetween.h"
 #include "fit/result_gate.h"
+#include "raster/raster_ref.h"
 #include "fit/smil_writer.h"
 #include "raster/raster_plan.h"
 #include "svgmotion/error.h"
@@ -188,6 +189,65 @@ TEST_CASE("result gate: passes a faithful fit, rejects points far off the canvas
   v = judge_fit(t, empty, pts, plan, scene, Affine{});
   CHECK_FALSE(v.passed);
   CHECK(v.iou[0] == doctest::Approx(0.0));
+}
+
+TEST_CASE("result gate: a path grown beyond the figure passes where the target shows it, not elsewhere") {
+  // A 4 x 4 red square (an eye) on a black 48 x 48 body. In keyframe 1 the eye is stretched
+  // to 24 x 4 (its box diagonal 4.3x the rest's; the figure's box keeps its size).
+  const Scene scene = read_svg_string(R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="64" height="64">
+    <rect id="body" x="8" y="8" width="48" height="48" fill="#000"/>
+    <rect id="eye" x="28" y="28" width="4" height="4" fill="#f00"/></svg>)svg", "g");
+  const RasterPlan plan = plan_raster(scene, Affine{}, 64, 64);
+  const int W = 64, H = 64, K = 2;
+  const size_t px = static_cast<size_t>(W) * H, n = static_cast<size_t>(plan.n_cp);
+  std::vector<double> rest(plan.rest_cp.begin(), plan.rest_cp.begin() + 2 * n), stretched = rest;
+  for (int i = 0; i < plan.path_cp_count[1]; ++i) {  // the eye: x about its centre 30, times 6
+    double& x = stretched[2 * static_cast<size_t>(plan.path_cp_first[1] + i)];
+    x = 30 + 6 * (x - 30);
+  }
+  auto render = [&](const std::vector<double>& cp) {
+    const std::vector<double> img = ref::render(plan, cp);
+    return std::vector<float>(img.begin(), img.end());
+  };
+  auto over_white = [&](const std::vector<float>& img) {
+    std::vector<float> o(img.size());
+    for (size_t i = 0; i < px; ++i) {
+      for (int c = 0; c < 3; ++c) o[4 * i + c] = img[4 * i + c] + (1 - img[4 * i + 3]);
+      o[4 * i + 3] = 1;
+    }
+    return o;
+  };
+  auto frames = [&](const std::vector<float>& a, const std::vector<float>& b) {
+    std::vector<float> f(a);
+    f.insert(f.end(), b.begin(), b.end());
+    return f;
+  };
+  const std::vector<float> r0 = render(rest), r1 = render(stretched);
+  std::vector<double> pts(rest);
+  pts.insert(pts.end(), stretched.begin(), stretched.end());
+  const std::vector<float> renders = frames(r0, r1);
+  TargetFrames t;
+  t.width = W, t.height = H, t.keyframes = K;
+  t.mask.assign(static_cast<size_t>(K) * px, 1);
+
+  // The target stretches the eye too: the growth is what it shows, and the fit passes.
+  t.rgba = frames(over_white(r0), over_white(r1));
+  t.raw = t.rgba;
+  GateVerdict v = judge_fit(t, renders, pts, plan, scene, Affine{});
+  CHECK(v.passed);
+  REQUIRE(v.waived.size() == 1);
+  CHECK(v.waived[0].find("keyframe 1: path 'eye' grew 4.3x") == 0);
+  CHECK(v.waived[0].find("(1.00 of its pixels agree)") != std::string::npos);
+
+  // The target keeps the eye small: 4 of its 24 columns show red where the target does.
+  t.rgba = frames(over_white(r0), over_white(r0));
+  t.raw = t.rgba;
+  v = judge_fit(t, renders, pts, plan, scene, Affine{});
+  CHECK_FALSE(v.passed);
+  REQUIRE(v.reasons.size() == 1);
+  CHECK(v.reasons[0] == "keyframe 1: path 'eye' grew 4.3x (the target's figure 1.00x), and only 0.17 of it shows "
+                        "what the target shows");
+  CHECK(v.waived.empty());
 }
 
 TEST_CASE("in-betweens: keyframes kept exactly, a smooth motion followed far closer than straight lines") {

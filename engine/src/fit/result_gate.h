@@ -9,7 +9,10 @@
 //  - geometry: every control point within half a canvas of the canvas (a fit that throws
 //    points far outside has diverged), and no path whose bounding-box diagonal grew more than
 //    `max_growth` times, or shrank below `min_shrink` of, its rest size beyond what the target's
-//    foreground did between keyframe 0 and this one (a target that zooms in may grow paths).
+//    foreground did between keyframe 0 and this one (a target that zooms in may grow paths),
+//    unless the grown path's pixels show what the target shows there (min_shown of its
+//    coverage within 0.2 of the target: a warp may stretch one feature, an eye pulled into a
+//    line, while the figure as a whole keeps its size; an exploded path covers background).
 // The thresholds are loose on purpose: they separate broken results (noise targets, motions
 // that leave the frame, diverged fits: PSNR well under 15 dB, points canvases away) from weak
 // but honest ones (a good fit scores 35-50 dB, IoU > 0.95; a figure left at rest against a
@@ -31,12 +34,14 @@ struct GateOptions {
   double min_iou = 0.5;
   double max_outside = 0.5;  // points may lie this fraction of the canvas size outside it
   double max_growth = 4;     // path bbox diagonal / rest, relative to the target's own change
+  double min_shown = 0.75;   // ...unless this share of the grown path shows what the target shows
   double min_shrink = 0.2;
 };
 
 struct GateVerdict {
   bool passed = true;
   std::vector<std::string> reasons;  // one line each, "keyframe k: ..."
+  std::vector<std::string> waived;   // growth let through because the target shows it
   std::vector<double> psnr_db, iou;  // per keyframe
 };
 
