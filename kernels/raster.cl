@@ -219,6 +219,63 @@ inline uchar4 to_rgba8_pixel(float4 c, float4 background) {
   return convert_uchar4_sat((float4)(rgb, clamp(a, 0.0f, 1.0f)) * 255.0f + 0.5f); /* round half up */
 }
 
+/* The output stage of a band (raster and raster_taped): `band_rgba` holds the band's
+ * premultiplied colours, valid within each row's hull (hull[2r], hull[2r + 1]); the work-items
+ * of the group share the rows. */
+inline void write_band(__local float4* band_rgba, __local const int* hull, __global float4* image,
+                       __global uchar4* rgba8, __global int2* extents, float4 background,
+                       int out_mode, int k, int y0, int rows, int width, int height, int lid,
+                       int lsize) {
+  const size_t base = ((size_t)k * height + y0) * width;
+  if (out_mode == OUT_RGBA8) {
+    /* Outside a row's hull no draw wrote: background. Over an opaque background the result is
+     * opaque, so no un-premultiplying there either. */
+    const uchar4 bg8 = to_rgba8_pixel((float4)(0.0f), background);
+    const int opaque = background.w == 1.0f;
+    for (int r = lid; r < rows; r += lsize) {
+      const int lo = hull[2 * r], hi = hull[2 * r + 1];
+      __local const float4* row = band_rgba + r * width;
+      __global uchar4* o = rgba8 + base + (size_t)r * width;
+      for (int x = 0; x < width; ++x) {
+        if (x < lo || x > hi) {
+          o[x] = bg8;
+        } else if (opaque) {
+          const float4 c = row[x] + background * (1.0f - row[x].w);
+          o[x] = convert_uchar4_sat((float4)(c.xyz, 1.0f) * 255.0f + 0.5f);
+        } else {
+          o[x] = to_rgba8_pixel(row[x], background);
+        }
+      }
+    }
+  } else if (out_mode == OUT_RESIDUAL) {
+    /* X = C − background = P − a·bg, zero where nothing was drawn, then its x-blur X' for the
+     * pixels it can reach (the hull ± 2), with the row's extent for loss.cl. */
+    for (int r = lid; r < rows; r += lsize) {
+      const int lo = hull[2 * r], hi = hull[2 * r + 1];
+      __global int2* ext = extents + (size_t)k * height + y0 + r;
+      if (hi < lo) {
+        *ext = (int2)(1, 0); /* empty */
+        continue;
+      }
+      __local float4* f = band_rgba + r * width;
+      for (int x = lo; x <= hi; ++x) f[x] = (float4)(f[x].xyz - background.xyz * f[x].w, 0.0f);
+      const int lo2 = max(lo - LOSS_R, 0), hi2 = min(hi + LOSS_R, width - 1);
+      __global float4* o = image + base + (size_t)r * width;
+      for (int x = lo2; x <= hi2; ++x) {
+        float4 v = (float4)(0.0f);
+        for (int j = -LOSS_R; j <= LOSS_R; ++j) {
+          const int xx = x + j;
+          if (xx >= lo && xx <= hi) v += g_tap(j) * f[xx];
+        }
+        o[x] = v;
+      }
+      *ext = (int2)(lo2, hi2);
+    }
+  } else {
+    for (int i = lid; i < rows * width; i += lsize) image[base + i] = band_rgba[i];
+  }
+}
+
 __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
                      __global const int2* draw_chunks,  /* [n_draws] (first chunk, count) */
                      __global const int2* chunk_lines,  /* [n_chunks] (first line, count) */
@@ -273,53 +330,7 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
   }
   }
   barrier(CLK_LOCAL_MEM_FENCE);
-  const size_t base = ((size_t)k * height + y0) * width;
-  if (out_mode == OUT_RGBA8) {
-    /* Outside a row's hull no draw wrote: background. Over an opaque background the result is
-     * opaque, so no un-premultiplying there either. */
-    const uchar4 bg8 = to_rgba8_pixel((float4)(0.0f), background);
-    const int opaque = background.w == 1.0f;
-    for (int r = lid; r < rows; r += lsize) {
-      const int lo = hull[2 * r], hi = hull[2 * r + 1];
-      __local const float4* row = band_rgba + r * width;
-      __global uchar4* o = rgba8 + base + (size_t)r * width;
-      for (int x = 0; x < width; ++x) {
-        if (x < lo || x > hi) {
-          o[x] = bg8;
-        } else if (opaque) {
-          const float4 c = row[x] + background * (1.0f - row[x].w);
-          o[x] = convert_uchar4_sat((float4)(c.xyz, 1.0f) * 255.0f + 0.5f);
-        } else {
-          o[x] = to_rgba8_pixel(row[x], background);
-        }
-      }
-    }
-  } else if (out_mode == OUT_RESIDUAL) {
-    /* X = C − background = P − a·bg, zero where nothing was drawn, then its x-blur X' for the
-     * pixels it can reach (the hull ± 2), with the row's extent for loss.cl. */
-    for (int r = lid; r < rows; r += lsize) {
-      const int lo = hull[2 * r], hi = hull[2 * r + 1];
-      __global int2* ext = extents + (size_t)k * height + y0 + r;
-      if (hi < lo) {
-        *ext = (int2)(1, 0); /* empty */
-        continue;
-      }
-      __local float4* f = band_rgba + r * width;
-      for (int x = lo; x <= hi; ++x) f[x] = (float4)(f[x].xyz - background.xyz * f[x].w, 0.0f);
-      const int lo2 = max(lo - LOSS_R, 0), hi2 = min(hi + LOSS_R, width - 1);
-      __global float4* o = image + base + (size_t)r * width;
-      for (int x = lo2; x <= hi2; ++x) {
-        float4 v = (float4)(0.0f);
-        for (int j = -LOSS_R; j <= LOSS_R; ++j) {
-          const int xx = x + j;
-          if (xx >= lo && xx <= hi) v += g_tap(j) * f[xx];
-        }
-        o[x] = v;
-      }
-      *ext = (int2)(lo2, hi2);
-    }
-  } else {
-    for (int i = lid; i < rows * width; i += lsize) image[base + i] = band_rgba[i];
-  }
+  write_band(band_rgba, hull, image, rgba8, extents, background, out_mode, k, y0, rows, width,
+             height, lid, lsize);
 }
 

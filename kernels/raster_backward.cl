@@ -12,8 +12,10 @@
  * T_i is known walking the draws from the top down; B_i is known walking them from the bottom
  * up. B_i is only needed where the coverage has a non-zero derivative, i.e. where the winding
  * integral a is fractional, which happens only in pixels an edge of the draw crosses. So the
- * kernel first replays the forward pass bottom-up and keeps B_i on a tape for exactly those
- * pixels (in local memory, in the order (draw, row, x)), then walks the draws top-down,
+ * fit's forward pass (raster_taped, below) keeps B_i on a tape for exactly those pixels (in
+ * the order (draw, row, x)) while it composites bottom-up, and hands it over in a pool in
+ * global memory; a band whose tape did not fit replays the forward pass here (replay_band,
+ * the same code, so the same bits). The kernel then walks the draws top-down,
  * recomputes each draw's winding integrals (same lines, same order, so the same bits), reads
  * B_i back from the tape and forms
  *
@@ -222,10 +224,12 @@ inline void replay_span(__local float* acc, __local uchar* mark, __local float4*
   }
 }
 
-/* The top-down sweep of one draw's span: the one-sided g±(p) into gcell, then T *= (1 - α). */
+/* The top-down sweep of one draw's span: the one-sided g±(p) into gcell, then T *= (1 - α).
+ * `dC` caches ∂L/∂C per pixel of the row (w < 0: not yet evaluated): a pixel on the edges of
+ * several draws (a fill and its outline, abutting shapes) evaluates the 25-tap sum once. */
 inline void backward_span(__local float* acc, __local uchar* mark, __local float* T, int* tlo,
                           int* thi, __local float2* gcell, int* glo, int* ghi,
-                          __global const float4* E,
+                          __local float4* dC_cache, __global const float4* E,
                           __global const int2* ext_e, __global const float4* R,
                           int row, int height, float scale, int xlo, int xhi, int width,
                           float4 color, int rule, __local const float4* tape, int* tp, int cap) {
@@ -244,8 +248,12 @@ inline void backward_span(__local float* acc, __local uchar* mark, __local float
        * this draw: g is 0 exactly, without the 25-tap ∂L/∂C (whose reads of E' and R miss the
        * cache; in a layered scene most of the lower draws' edges are hidden). */
       if (*tp < cap && T[x] != 0.0f) {
-        const float3 dC = blurred_gradient(E, ext_e, R, x, row, width, height, scale);
-        const float ga = dot(dC, T[x] * (color.xyz - tape[*tp].xyz));
+        float4 c = dC_cache[x];
+        if (c.w < 0.0f) {
+          c = (float4)(blurred_gradient(E, ext_e, R, x, row, width, height, scale), 1.0f);
+          dC_cache[x] = c;
+        }
+        const float ga = dot(c.xyz, T[x] * (color.xyz - tape[*tp].xyz));
         g = ga * color.w * fill_rule_slopes(s, rule);
       }
       ++*tp;
@@ -336,6 +344,103 @@ inline float4 walk_line_grad(float4 l, int on, float at, int row, int width,
   return (float4)(c0 * n, c1 * n);
 }
 
+/* The forward pass of one band replayed bottom-up with its tape: every draw's span composited
+ * into band_rgba (the rows' hulls in hlo, hhi) and B pushed onto `tape` at each pixel whose
+ * winding integral is fractional or that borders a line on a pixel boundary, in the order
+ * (draw, row, x); draw_tape[d] gets the index of draw d's first entry. Returns the tape's
+ * length, which may exceed `cap` (the entries past it are not stored). `mark` must be clear;
+ * it is clear again after. Shared by raster_taped and raster_backward's fallback, so both
+ * tape the same bits. */
+inline int replay_band(__global const float4* L, __global const float4* B,
+                       __global const int2* draw_chunks, __global const int2* chunk_lines,
+                       __global const float4* draw_color, __global const int* draw_rule,
+                       int n_draws, int y0, int rows, int width, int stride, __local float* acc,
+                       __local float4* band_rgba, __local uchar* mark, float4 background,
+                       __local float4* tape, int cap, __global int* draw_tape, int* hlo,
+                       int* hhi) {
+  int xlo[BAND_H], xhi[BAND_H], alo[BAND_H], ahi[BAND_H];
+  for (int r = 0; r < BAND_H; ++r) {
+    xlo[r] = width; xhi[r] = -1;
+    alo[r] = width + 2; ahi[r] = -1;
+    hlo[r] = width; hhi[r] = -1;
+  }
+  int tp = 0;
+  for (int d = 0; d < n_draws; ++d) {
+    draw_tape[d] = tp;
+    accumulate_draw(L, B, chunk_lines, draw_chunks[d], y0, rows, width, stride, acc, xlo, xhi,
+                    alo, ahi);
+    mark_boundary_lines(L, B, chunk_lines, draw_chunks[d], y0, rows, width, stride, acc, mark,
+                        xlo, xhi, alo, ahi);
+    const float4 color = draw_color[d];
+    const int rule = draw_rule[d];
+    for (int r = 0; r < rows; ++r) {
+      if (xhi[r] >= xlo[r])
+        replay_span(acc + r * stride, mark + r * width, band_rgba + r * width, &hlo[r], &hhi[r],
+                    xlo[r], xhi[r], width, color, rule, background, tape, &tp, cap);
+      xlo[r] = width;
+      xhi[r] = -1;
+    }
+  }
+  return tp;
+}
+
+/* The fit's forward pass: raster's OUT_RESIDUAL output (loss.cl's first step), made by
+ * replay_band so that the band's tape comes out of the same sweep. The tape is copied to a
+ * pool in global memory, at an offset taken with an atomic add (the order in which bands
+ * finish decides where a tape lies, never what it holds), and raster_backward reads it back
+ * instead of replaying the band: one pass over the draws instead of two. A band whose tape
+ * does not fit its local capacity or the pool gets the offset -1 and raster_backward replays
+ * it; pool_used[0] ends as the total the bands asked for, so the host can grow the pool. */
+__kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
+                           __global const int2* draw_chunks,   /* [n_draws] */
+                           __global const int2* chunk_lines,   /* [n_chunks] */
+                           __global const float4* draw_color,  /* [n_draws] */
+                           __global const int* draw_rule,      /* [n_draws] */
+                           __global const float4* bounds,      /* [K][n_chunks] */
+                           __local float* acc,                 /* [BAND_H][W + 2] */
+                           __local float4* band_rgba,          /* [BAND_H][W] */
+                           __local uchar* mark,                /* [BAND_H][W] */
+                           __local float4* tape, int tape_cap,
+                           __global float4* image,             /* [K][H][W] X' (loss.cl) */
+                           __global int2* extents,             /* [K][H] its row extents */
+                           float4 background,
+                           __global float4* pool, int pool_cap,
+                           __global int* pool_draw,            /* [K][n_bands][n_draws] */
+                           __global int2* pool_at,             /* [K][n_bands] (offset, length) */
+                           __global int* pool_used,            /* [1] */
+                           int n_lines, int n_chunks, int n_draws, int n_bands, int width,
+                           int height) {
+  const int band = get_group_id(0), k = get_group_id(1);
+  const int lid = get_local_id(0), lsize = get_local_size(0);
+  const int y0 = band * BAND_H, rows = min(BAND_H, height - y0);
+  __local int hull[4 * MAX_BAND_H];
+  if (lid == 0) {
+    int hlo[BAND_H], hhi[BAND_H];
+    for (int i = 0; i < rows * width; ++i) mark[i] = 0;
+    const int slot = k * n_bands + band;
+    const int tp = replay_band(lines + (size_t)k * n_lines, bounds + (size_t)k * n_chunks,
+                               draw_chunks, chunk_lines, draw_color, draw_rule, n_draws, y0, rows,
+                               width, width + 2, acc, band_rgba, mark, background, tape, tape_cap,
+                               pool_draw + (size_t)slot * n_draws, hlo, hhi);
+    int2 at = (int2)(-1, tp);
+    if (tp <= tape_cap) {
+      const int off = atomic_add(pool_used, tp);
+      if (off <= pool_cap - tp) {
+        for (int i = 0; i < tp; ++i) pool[off + i] = tape[i];
+        at.x = off;
+      }
+    }
+    pool_at[slot] = at;
+    for (int r = 0; r < rows; ++r) {
+      hull[2 * r] = hlo[r];
+      hull[2 * r + 1] = hhi[r];
+    }
+  }
+  barrier(CLK_LOCAL_MEM_FENCE);
+  write_band(band_rgba, hull, image, (__global uchar4*)image, extents, background, OUT_RESIDUAL,
+             k, y0, rows, width, height, lid, lsize);
+}
+
 __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines] */
                               __global const int2* draw_chunks,   /* [n_draws] */
                               __global const int2* chunk_lines,   /* [n_chunks] */
@@ -348,12 +453,14 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               float grad_scale,                   /* 2w/N */
                               float4 background,
                               __local float* acc,                 /* [BAND_H][W + 2] */
-                              __local float4* band_rgba,          /* [BAND_H][W] */
+                              __local float4* band_rgba,          /* [BAND_H][W] colours, then ∂L/∂C */
                               __local float* band_T,              /* [BAND_H][W] */
                               __local float2* gcell,              /* [BAND_H][W] (g+, g−) */
                               __local uchar* mark,                /* [BAND_H][W] */
                               __local float4* tape, int tape_cap,
-                              __local int* draw_tape,             /* [n_draws] */
+                              __global const float4* pool,        /* raster_taped's tapes */
+                              __global int* pool_draw,            /* [K][n_bands][n_draws] */
+                              __global const int2* pool_at,       /* [K][n_bands] */
                               __global float4* partial,           /* [K][n_lines][n_bands] */
                               __global int* overflow,             /* [1]: tape overflows */
                               int n_lines, int n_chunks, int n_draws, int n_bands, int width,
@@ -380,30 +487,26 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
       hlo[r] = tlo[r] = glo[r] = width;
       hhi[r] = thi[r] = ghi[r] = -1;
     }
-    int tp = 0;
     for (int i = 0; i < rows * width; ++i) mark[i] = 0; /* the sweeps keep it clear after this */
+    const int slot = k * n_bands + band;
+    __global int* draw_tape = pool_draw + (size_t)slot * n_draws;
 
-    /* 1. Bottom-up replay of the forward pass, taping B at fractional pixels. */
-    for (int d = 0; d < n_draws; ++d) {
-      draw_tape[d] = tp;
-      accumulate_draw(L, B, chunk_lines, draw_chunks[d], y0, rows, width, stride, acc, xlo, xhi,
-                      alo, ahi);
-      mark_boundary_lines(L, B, chunk_lines, draw_chunks[d], y0, rows, width, stride, acc, mark,
-                          xlo, xhi, alo, ahi);
-      const float4 color = draw_color[d];
-      const int rule = draw_rule[d];
-      for (int r = 0; r < rows; ++r) {
-        if (xhi[r] >= xlo[r])
-          replay_span(acc + r * stride, mark + r * width, band_rgba + r * width, &hlo[r],
-                      &hhi[r], xlo[r], xhi[r], width, color, rule, background, tape, &tp,
-                      tape_cap);
-        xlo[r] = width;
-        xhi[r] = -1;
-      }
+    /* 1. The band's tape: raster_taped's copy, or (when it did not fit the pool) a bottom-up
+     *    replay of the forward pass. */
+    const int2 at = pool_at[slot];
+    int tp = at.y;
+    if (at.x >= 0) {
+      for (int i = 0; i < tp; ++i) tape[i] = pool[at.x + i];
+    } else {
+      tp = replay_band(L, B, draw_chunks, chunk_lines, draw_color, draw_rule, n_draws, y0, rows,
+                       width, stride, acc, band_rgba, mark, background, tape, tape_cap, draw_tape,
+                       hlo, hhi);
     }
     if (tp > tape_cap) atomic_max(overflow, tp);
 
-    /* 2. Top-down: ∂L/∂a per edge pixel, then the boundary integrals of every line. */
+    /* 2. Top-down: ∂L/∂a per edge pixel, then the boundary integrals of every line. The
+     * band's colours are done with: they hold the ∂L/∂C cache (backward_span) from here. */
+    for (int i = 0; i < rows * width; ++i) band_rgba[i] = (float4)(0.0f, 0.0f, 0.0f, -1.0f);
     for (int d = n_draws - 1; d >= 0; --d) {
       const int2 chunks = draw_chunks[d];
       accumulate_draw(L, B, chunk_lines, chunks, y0, rows, width, stride, acc, xlo, xhi, alo,
@@ -420,7 +523,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
         shi[r] = min(xhi[r], width - 1);
         if (xhi[r] >= xlo[r])
           backward_span(acc + r * stride, mark + r * width, band_T + r * width, &tlo[r], &thi[r],
-                        gcell + r * width, &glo[r], &ghi[r], Ek, Xk, Rk, y0 + r, height, grad_scale, xlo[r], xhi[r], width,
+                        gcell + r * width, &glo[r], &ghi[r], band_rgba + r * width, Ek, Xk, Rk, y0 + r, height, grad_scale, xlo[r], xhi[r], width,
                         color, rule, tape, &tq, tape_cap);
         xlo[r] = width;
         xhi[r] = -1;

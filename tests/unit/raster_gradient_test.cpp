@@ -251,6 +251,43 @@ TEST_CASE("two runs of the backward pass give identical bits") {
   CHECK(norm > 0);
 }
 
+TEST_CASE("a band's tape from the forward pass and from the backward pass's replay give the same bits") {
+  // raster_taped hands each band's tape to raster_backward through a pool; a band that does
+  // not fit it is replayed by raster_backward itself. Pool capacities: the default, none (every
+  // band replays), and 400 entries (5 of the 9 bands fit, the rest replay). An integer-aligned
+  // rectangle puts marked pixels (edges on pixel boundaries) on the tape too.
+  const Case c = make_case(scene_of(40, 48, {filled(polygon({{4, 8}, {24, 8}, {24, 24}, {4, 24}}), {0.2f, 0.7f, 0.3f, 1}),
+                                             filled(circle({20, 24}, 11), {0.9f, 0.2f, 0.1f, 1}),
+                                             filled(polygon({{3, 4}, {36, 6}, {14, 44}}), {0.1f, 0.3f, 0.8f, 0.6f})}),
+                           7, 3);
+  const RasterPlan plan = plan_raster(c.scene, Affine{}, 40, 48);
+  ClRaster r(runtime(), plan, c.K);
+  r.set_control_points(std::vector<float>(c.cp.begin(), c.cp.end()));
+  r.set_targets(c.targets);
+  const int bands = c.K * 3;  // 48 rows in bands of 16
+  auto run = [&](int pool, int misses) {
+    if (pool >= 0) r.set_tape_pool_capacity(pool);
+    const float loss = r.loss_and_gradient(kWeight, {1, 1, 1, 1});
+    std::vector<float> g = r.read_cp_gradient();
+    g.push_back(loss);
+    const int m = r.tape_pool_misses();
+    MESSAGE("pool " << pool << ": " << m << " bands replayed");
+    CAPTURE(pool);
+    if (misses >= 0) CHECK(m == misses);
+    else CHECK((m > 0 && m < bands));
+    return g;
+  };
+  const auto taped = run(-1, 0), replayed = run(0, bands), mixed = run(400, -1), regrown = run(-1, 0);
+  REQUIRE(taped.size() == replayed.size());
+  CHECK(std::memcmp(taped.data(), replayed.data(), taped.size() * sizeof(float)) == 0);
+  CHECK(std::memcmp(taped.data(), mixed.data(), taped.size() * sizeof(float)) == 0);
+  CHECK(std::memcmp(taped.data(), regrown.data(), taped.size() * sizeof(float)) == 0);
+  CHECK(r.tape_overflow() == 0);
+  double norm = 0;
+  for (size_t i = 0; i + 1 < taped.size(); ++i) norm += taped[i] * taped[i];
+  CHECK(norm > 0);
+}
+
 }  // TEST_SUITE
 
 // Edges exactly on pixel boundaries (kernels/raster_backward.cl, "Edges on pixel boundaries"):

@@ -40,4 +40,11 @@ void set_args(cl::Kernel& k, const A&... args) {
   (k.setArg(i++, args), ...);
 }
 
+// Sets a kernel's arguments first, first + 1, ... in order.
+template <class... A>
+void set_args_at(cl::Kernel& k, cl_uint first, const A&... args) {
+  cl_uint i = first;
+  (k.setArg(i++, args), ...);
+}
+
 }  // namespace svgm

@@ -136,7 +136,6 @@ void ClRaster::set_active_frames(int n) {
 void ClRaster::forward(Output output, const std::array<float, 4>& background) {
   const auto& p = plan_;
   const size_t K = static_cast<size_t>(active_);
-  const size_t wg = 64;  // a multiple of every device's preferred work-group granularity
   const size_t pixels = K * p.height * static_cast<size_t>(p.width);
   events_.clear();
   try {
@@ -151,17 +150,24 @@ void ClRaster::forward(Output output, const std::array<float, 4>& background) {
     k_raster_.setArg(11, cl_float4{{background[0], background[1], background[2], background[3]}});
     k_raster_.setArg(12, static_cast<int>(output));
 
-    if (p.n_flat > 0) launch("flatten", k_flatten_, cl::NDRange(round_up(p.n_flat, wg), K));
-    if (!p.strokes.empty()) launch("stroke", k_stroke_, cl::NDRange(round_up(p.strokes.size(), 8), K));
-    if (p.n_lines > 0) launch("gather_lines", k_lines_, cl::NDRange(round_up(p.n_lines, wg), K));
-    if (!p.chunk_lines.empty())
-      launch("chunk_bounds", k_bounds_, cl::NDRange(round_up(p.chunk_lines.size() / 2, wg), K));
+    enqueue_geometry();
     // One work-group per (band, frame); see raster.cl for how its work-items share the work.
     launch("raster", k_raster_, cl::NDRange(bands_ * group_, K), cl::NDRange(group_, 1));
   } catch (const cl::Error& e) {
     throw Error(std::string("OpenCL rasteriser launch failed on ") + rt_.info().name + ": " +
                 e.what() + " " + cl_status_name(e.err()));
   }
+}
+
+void ClRaster::enqueue_geometry() {
+  const auto& p = plan_;
+  const size_t K = static_cast<size_t>(active_);
+  const size_t wg = 64;  // a multiple of every device's preferred work-group granularity
+  if (p.n_flat > 0) launch("flatten", k_flatten_, cl::NDRange(round_up(p.n_flat, wg), K));
+  if (!p.strokes.empty()) launch("stroke", k_stroke_, cl::NDRange(round_up(p.strokes.size(), 8), K));
+  if (p.n_lines > 0) launch("gather_lines", k_lines_, cl::NDRange(round_up(p.n_lines, wg), K));
+  if (!p.chunk_lines.empty())
+    launch("chunk_bounds", k_bounds_, cl::NDRange(round_up(p.chunk_lines.size() / 2, wg), K));
 }
 
 void ClRaster::launch(const char* name, cl::Kernel& k, const cl::NDRange& global,

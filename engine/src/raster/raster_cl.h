@@ -2,7 +2,9 @@
 //
 // Per batch: flatten (F = B P) -> stroke (outline points) -> gather_lines -> chunk_bounds ->
 // raster (coverage + compositing per band of rows). All buffers stay on the device; the host enqueues
-// the five launches on an in-order queue and only reads back what is asked for.
+// the five launches on an in-order queue and only reads back what is asked for. A fit's pass
+// (enqueue_loss_and_gradient) runs raster_taped instead of raster, which also tapes what the
+// backward pass needs, then the loss and the backward kernels (raster_cl_backward.cpp).
 #pragma once
 
 #include <array>
@@ -77,6 +79,11 @@ class ClRaster {
   // Largest tape a band needed beyond its capacity in the last backward pass (0: none). The
   // gradient of an overflowing band misses the pixels past the capacity.
   int tape_overflow();
+  // For tests: the tape pool's capacity in entries (0: every band replays its forward pass in
+  // the backward kernel). The pool grows again to what the bands asked for on the next call.
+  void set_tape_pool_capacity(int entries);
+  // Bands of the last pass whose tape was not in the pool (raster_backward replayed them).
+  int tape_pool_misses();
 
   // Bytes of device memory this routine allocated.
   size_t device_bytes() const { return device_bytes_; }
@@ -86,6 +93,11 @@ class ClRaster {
   void launch(const char* name, cl::Kernel& k, const cl::NDRange& global,
               const cl::NDRange& local = cl::NullRange);
   void init_backward();
+  // flatten, stroke, gather_lines and chunk_bounds for the active frames.
+  void enqueue_geometry();
+  // The fit's forward pass (kernels/raster_backward.cl, raster_taped): the residual output and
+  // each band's tape, kept in the tape pool for raster_backward.
+  void forward_taped(const std::array<float, 4>& background);
 
   ClRuntime& rt_;
   RasterPlan plan_;
@@ -100,6 +112,14 @@ class ClRaster {
 
   bool backward_ready_ = false;
   int tape_cap_ = 0;
+  // The tape pool (raster_taped -> raster_backward): tapes, each band's per-draw offsets and
+  // its (offset, length), the entries the bands asked for, and that count as last read.
+  cl::Kernel k_taped_;
+  cl::Buffer pool_, pool_draw_, pool_at_, pool_used_;
+  int pool_cap_ = 0;
+  int pool_asked_ = 0;
+  cl::Event pool_read_;
+  void resize_pool(int entries);
   cl::Kernel k_blur_y_loss_, k_loss_total_, k_backward_, k_gather_lines_,
       k_gather_points_, k_stroke_back_, k_flatten_back_;
   // The loss's constant parts (kernels/loss.cl): Q = bg·(G∗1) − G∗T, R = G∗Q, Σ Q² per frame,

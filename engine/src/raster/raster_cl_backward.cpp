@@ -9,6 +9,12 @@
 
 namespace svgm {
 
+namespace {
+// The tape pool's largest size in entries (float4): 2^27, 2 GiB, far above any drawing's need
+// (a 1024 px frame with an edge on every pixel of every draw of a 100-draw scene is 10^8).
+constexpr size_t kMaxPoolEntries = size_t{1} << 27;
+}  // namespace
+
 void ClRaster::init_backward() {
   if (backward_ready_) return;
   const auto& p = plan_;
@@ -21,6 +27,7 @@ void ClRaster::init_backward() {
     k_blur_y_loss_ = cl::Kernel(prog, "blur_y_loss_rows");
     k_loss_total_ = cl::Kernel(prog, "loss_total");
     k_backward_ = cl::Kernel(prog, "raster_backward");
+    k_taped_ = cl::Kernel(prog, "raster_taped");
     k_gather_lines_ = cl::Kernel(prog, "gather_line_grads");
     k_gather_points_ = cl::Kernel(prog, "gather_point_grads");
     k_stroke_back_ = cl::Kernel(prog, "stroke_backward");
@@ -47,11 +54,11 @@ void ClRaster::init_backward() {
     cp_entries_ = make(p.cp_entries.size() * sizeof(int), p.cp_entries.data());
 
     // Local memory of the backward band: rows of accumulation, colour, transmittance, the two
-    // one-sided ∂L/∂a and the boundary marks, the per-draw tape offsets, and the tape in what
-    // is left.
+    // one-sided ∂L/∂a and the boundary marks, and the tape in what is left (raster_taped
+    // needs less: no transmittance or ∂L/∂a).
     const size_t rows_bytes = static_cast<size_t>(band_h_) *
                               ((p.width + 2) * sizeof(float) + p.width * (16 + 4 + 8 + 1));
-    const size_t fixed = rows_bytes + std::max<size_t>(n_draws, 1) * sizeof(int);
+    const size_t fixed = rows_bytes;
     if (fixed + 16 * 1024 > local_budget_)
       throw Error("the backward pass needs " + std::to_string(fixed + 16 * 1024) +
                   " bytes of local memory per band, the device offers " +
@@ -70,9 +77,21 @@ void ClRaster::init_backward() {
              cl::Local(static_cast<size_t>(band_h_) * p.width * sizeof(float)),
              cl::Local(static_cast<size_t>(band_h_) * p.width * 2 * sizeof(float)),
              cl::Local(static_cast<size_t>(band_h_) * p.width),
-             cl::Local(static_cast<size_t>(tape_cap_) * 4 * sizeof(float)), tape_cap_,
-             cl::Local(std::max<size_t>(n_draws, 1) * sizeof(int)), partial_, overflow_,
-             p.n_lines, n_chunks, n_draws, bands_, W, H);
+             cl::Local(static_cast<size_t>(tape_cap_) * 4 * sizeof(float)), tape_cap_);
+    // Arguments 18..20 (the pool) are set by resize_pool.
+    set_args_at(k_backward_, 21, partial_, overflow_, p.n_lines, n_chunks, n_draws, bands_, W, H);
+    pool_draw_ = make(K * bands_ * std::max<size_t>(n_draws, 1) * sizeof(int));
+    pool_at_ = make(K * bands_ * 2 * sizeof(int));
+    pool_used_ = make(sizeof(int));
+    set_args(k_taped_, lines_, draw_chunks_, chunk_lines_, draw_color_, draw_rule_, bounds_,
+             cl::Local(static_cast<size_t>(band_h_) * (p.width + 2) * sizeof(float)),
+             cl::Local(static_cast<size_t>(band_h_) * p.width * 4 * sizeof(float)),
+             cl::Local(static_cast<size_t>(band_h_) * p.width),
+             cl::Local(static_cast<size_t>(tape_cap_) * 4 * sizeof(float)), tape_cap_, image_, ext_x_);
+    // Argument 13 (background) is set per pass, 14..15 (the pool) by resize_pool.
+    set_args_at(k_taped_, 16, pool_draw_, pool_at_, pool_used_, p.n_lines, n_chunks, n_draws, bands_, W, H);
+    // A first pool of a quarter of the frames' pixels; it grows to what the bands ask for.
+    resize_pool(static_cast<int>(std::min<size_t>(pixels / 4 + 1, kMaxPoolEntries)));
     set_args(k_gather_lines_, lines_, line_chunk_, bounds_, partial_, line_grad_, p.n_lines,
              n_chunks, bands_, W, H);
     set_args(k_gather_points_, line_grad_, pt_first_, pt_entries_, grad_pts_, p.n_lines, p.n_pts);
@@ -85,6 +104,46 @@ void ClRaster::init_backward() {
                 ": " + e.what() + " " + cl_status_name(e.err()));
   }
   backward_ready_ = true;
+}
+
+void ClRaster::resize_pool(int entries) {
+  if (pool_()) device_bytes_ -= std::max<size_t>(std::max(pool_cap_, 1), 1) * 4 * sizeof(float);
+  pool_cap_ = std::max(entries, 0);
+  pool_ = make(static_cast<size_t>(std::max(pool_cap_, 1)) * 4 * sizeof(float));
+  set_args_at(k_taped_, 14, pool_, pool_cap_);
+  set_args_at(k_backward_, 18, pool_, pool_draw_, pool_at_);
+}
+
+void ClRaster::set_tape_pool_capacity(int entries) {
+  init_backward();
+  if (pool_read_()) {  // the last pass's request must not regrow the pool before the next pass
+    pool_read_.wait();
+    pool_read_ = cl::Event();
+  }
+  resize_pool(entries);
+}
+
+int ClRaster::tape_pool_misses() {
+  std::vector<cl_int2> at(static_cast<size_t>(active_) * bands_);
+  rt_.queue().enqueueReadBuffer(pool_at_, CL_TRUE, 0, at.size() * sizeof(cl_int2), at.data());
+  return static_cast<int>(std::count_if(at.begin(), at.end(), [](const cl_int2& a) { return a.s[0] < 0; }));
+}
+
+void ClRaster::forward_taped(const std::array<float, 4>& background) {
+  // The bands' request of the previous pass (read without blocking; done by now): grow the
+  // pool by a quarter beyond it, so a fit whose drawing moves does not regrow every pass.
+  if (pool_read_()) {
+    pool_read_.wait();
+    pool_read_ = cl::Event();
+    if (pool_asked_ > pool_cap_)
+      resize_pool(static_cast<int>(std::min<size_t>(static_cast<size_t>(pool_asked_) * 5 / 4, kMaxPoolEntries)));
+  }
+  events_.clear();
+  auto& q = rt_.queue();
+  k_taped_.setArg(13, cl_float4{{background[0], background[1], background[2], background[3]}});
+  q.enqueueFillBuffer(pool_used_, 0, 0, sizeof(int));
+  enqueue_geometry();
+  launch("raster_taped", k_taped_, cl::NDRange(bands_ * group_, active_), cl::NDRange(group_, 1));
 }
 
 void ClRaster::set_targets(const std::vector<float>& rgba) {
@@ -152,7 +211,7 @@ void ClRaster::enqueue_loss_and_gradient(float weight, const std::array<float, 4
   // L = weight / N · Σ E², N = K·H·W·3; ∂L/∂C = blur(2 · weight / N · E).
   const float scale = weight / static_cast<float>(pixels * 3);
   try {
-    forward(Output::Residual, background);
+    forward_taped(background);
     auto& q = rt_.queue();
     k_backward_.setArg(9, 2.0f * scale);
     k_backward_.setArg(10, bg);
@@ -169,6 +228,7 @@ void ClRaster::enqueue_loss_and_gradient(float weight, const std::array<float, 4
     if (!p.strokes.empty())
       launch("stroke_backward", k_stroke_back_, cl::NDRange(round_up(p.strokes.size(), 8), K));
     launch("flatten_backward", k_flatten_back_, cl::NDRange(round_up(p.n_cp, 64), K));
+    q.enqueueReadBuffer(pool_used_, CL_FALSE, 0, sizeof(int), &pool_asked_, nullptr, &pool_read_);
   } catch (const cl::Error& e) {
     throw Error(std::string("OpenCL backward pass failed on ") + rt_.info().name + ": " +
                 e.what() + " " + cl_status_name(e.err()));
