@@ -476,7 +476,13 @@ TEST_CASE("one Adam step matches the formula in double precision; inactive keyfr
       v[i] = static_cast<float>(0.5 * (1 + U(rng)));
     }
     const auto theta0 = theta, m0 = m, v0 = v;
-    cl::Buffer bt = s.buf(theta), bg = s.buf(grad), bm = s.buf(m), bv = s.buf(v), bs = s.buf(steps);
+    // The fitter's bias-correction denominators per keyframe (Fitter::upload_steps).
+    std::vector<cl_float2> bias;
+    for (int t : steps)
+      bias.push_back(t > 0 ? cl_float2{{static_cast<float>(1 - std::pow(double(b1), t)),
+                                        static_cast<float>(1 - std::pow(double(b2), t))}}
+                           : cl_float2{{0, 0}});
+    cl::Buffer bt = s.buf(theta), bg = s.buf(grad), bm = s.buf(m), bv = s.buf(v), bs = s.buf(bias);
     cl::Kernel k(*s.prog, "adam");
     set_args(k, bt, bg, bm, bv, bs, per, first, lr, b1, b2, eps, K * per);
     s.rt.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(round_up(K * per, 64)));

@@ -152,7 +152,7 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     v_params_ = rw(params.size() * sizeof(float));
     m_offsets_ = rw(K * n_cp * 2 * sizeof(float));
     v_offsets_ = rw(K * n_cp * 2 * sizeof(float));
-    steps_buf_ = rw(K * sizeof(int));
+    bias_buf_ = rw(K * sizeof(cl_float2));
     const size_t nj = fplan_.n_joints();
     part_smooth_ = rw(K * n_cp * sizeof(float));
     part_contain_ = rw(K * n_cp * sizeof(float));
@@ -177,13 +177,13 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
              part_contain_, 0.f, contain_margin_, ncp, size_.width, size_.height);
     set_args(k_cohesion_, raster_->cp_buffer(), coh_first_, coh_nbr_, coh_len_,
              raster_->cp_gradient_buffer(), part_coh_, 0.f, ncp);
-    set_args(k_adam_p_, params_, grad_params_, m_params_, v_params_, steps_buf_, G_ * kMotionParams,
+    set_args(k_adam_p_, params_, grad_params_, m_params_, v_params_, bias_buf_, G_ * kMotionParams,
              1, opt_.lr_homography, opt_.beta1, opt_.beta2, opt_.eps,
              static_cast<int>(K * G_ * kMotionParams));
     const int first_free = opt_.pin_rest_keyframe ? 1 : 0;
-    set_args(k_adam_o_, offsets_, grad_offsets_, m_offsets_, v_offsets_, steps_buf_, ncp * 2, first_free,
+    set_args(k_adam_o_, offsets_, grad_offsets_, m_offsets_, v_offsets_, bias_buf_, ncp * 2, first_free,
              opt_.lr_offsets, opt_.beta1, opt_.beta2, opt_.eps, static_cast<int>(K * n_cp * 2));
-    set_args(k_adam_f_, field_, grad_field_, m_field_, v_field_, steps_buf_, std::max(nn * 2, 1), first_free,
+    set_args(k_adam_f_, field_, grad_field_, m_field_, v_field_, bias_buf_, std::max(nn * 2, 1), first_free,
              opt_.lr_field, opt_.beta1, opt_.beta2, opt_.eps, static_cast<int>(K * n_nodes * 2));
   } catch (const cl::Error& e) {
     throw Error(std::string("OpenCL setup of the fitter failed on ") + rt_.info().name + ": " +
@@ -226,7 +226,14 @@ int Fitter::activation_iteration(int k) const {
 }
 
 void Fitter::upload_steps() {
-  rt_.queue().enqueueWriteBuffer(steps_buf_, CL_FALSE, 0, steps_.size() * sizeof(int), steps_.data());
+  bias_.resize(steps_.size());
+  for (size_t k = 0; k < steps_.size(); ++k) {
+    const int t = steps_[k];
+    bias_[k] = t > 0 ? cl_float2{{static_cast<float>(1 - std::pow(static_cast<double>(opt_.beta1), t)),
+                                  static_cast<float>(1 - std::pow(static_cast<double>(opt_.beta2), t))}}
+                     : cl_float2{{0, 0}};
+  }
+  rt_.queue().enqueueWriteBuffer(bias_buf_, CL_FALSE, 0, bias_.size() * sizeof(cl_float2), bias_.data());
 }
 
 void Fitter::activate_keyframe(int k) {

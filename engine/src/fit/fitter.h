@@ -192,6 +192,8 @@ class Fitter {
   float frame_loss(int k);  // image loss of keyframe k alone with the current parameters
   // Field and motion forward: control points of keyframes 0 .. frames-1 into the raster's buffer.
   void enqueue_motion(int frames);
+  // Each keyframe's Adam bias-correction denominators (1 − β1^t, 1 − β2^t) from steps_, to
+  // the device (kernels/adam.cl).
   void upload_steps();
 
   ClRuntime& rt_;
@@ -203,6 +205,7 @@ class Fitter {
   int K_ = 0, G_ = 0;
   int iteration_ = 0, active_ = 1;
   std::vector<int> steps_;
+  std::vector<cl_float2> bias_;  // upload_steps' host copy (the write does not block)
   std::vector<FlowField> flows_;
   std::unique_ptr<ClRaster> raster_;
   int real_cps_ = 0;  // control points that are not padding
@@ -220,7 +223,7 @@ class Fitter {
       node_cp_w_, grad_field_, m_field_, v_field_, coh_first_, coh_nbr_, coh_len_, part_coh_;
   cl::Buffer params_, offsets_, rest_, cp_group_, cp_offset_, group_first_, group_cps_, nbr_first_,
       nbr_, nbr_w_, joints_, sdf_, grad_params_, grad_offsets_, m_params_, v_params_, m_offsets_,
-      v_offsets_, steps_buf_, part_smooth_, part_contain_, contain_margin_, part_g1_, terms_;
+      v_offsets_, bias_buf_, part_smooth_, part_contain_, contain_margin_, part_g1_, terms_;
 };
 
 // Initial homography parameters (identity about the group's rest centroid) for every group of
