@@ -225,11 +225,11 @@ inline void replay_span(__local float* acc, __local uchar* mark, __local float4*
 }
 
 /* The top-down sweep of one draw's span: the one-sided g±(p) into gcell, then T *= (1 - α).
- * `dC` caches ∂L/∂C per pixel of the row (w < 0: not yet evaluated): a pixel on the edges of
- * several draws (a fill and its outline, abutting shapes) evaluates the 25-tap sum once. */
+ * (Caching ∂L/∂C per pixel, for pixels on the edges of several draws, was tried: in a layered
+ * scene so few visible edge pixels repeat that the cache cost more than it saved.) */
 inline void backward_span(__local float* acc, __local uchar* mark, __local float* T, int* tlo,
                           int* thi, __local float2* gcell, int* glo, int* ghi,
-                          __local float4* dC_cache, __global const float4* E,
+                          __global const float4* E,
                           __global const int2* ext_e, __global const float4* R,
                           int row, int height, float scale, int xlo, int xhi, int width,
                           float4 color, int rule, __local const float4* tape, int* tp, int cap) {
@@ -248,12 +248,8 @@ inline void backward_span(__local float* acc, __local uchar* mark, __local float
        * this draw: g is 0 exactly, without the 25-tap ∂L/∂C (whose reads of E' and R miss the
        * cache; in a layered scene most of the lower draws' edges are hidden). */
       if (*tp < cap && T[x] != 0.0f) {
-        float4 c = dC_cache[x];
-        if (c.w < 0.0f) {
-          c = (float4)(blurred_gradient(E, ext_e, R, x, row, width, height, scale), 1.0f);
-          dC_cache[x] = c;
-        }
-        const float ga = dot(c.xyz, T[x] * (color.xyz - tape[*tp].xyz));
+        const float3 dC = blurred_gradient(E, ext_e, R, x, row, width, height, scale);
+        const float ga = dot(dC, T[x] * (color.xyz - tape[*tp].xyz));
         g = ga * color.w * fill_rule_slopes(s, rule);
       }
       ++*tp;
@@ -453,7 +449,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               float grad_scale,                   /* 2w/N */
                               float4 background,
                               __local float* acc,                 /* [BAND_H][W + 2] */
-                              __local float4* band_rgba,          /* [BAND_H][W] colours, then ∂L/∂C */
+                              __local float4* band_rgba,          /* [BAND_H][W] (replay) */
                               __local float* band_T,              /* [BAND_H][W] */
                               __local float2* gcell,              /* [BAND_H][W] (g+, g−) */
                               __local uchar* mark,                /* [BAND_H][W] */
@@ -504,9 +500,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
     }
     if (tp > tape_cap) atomic_max(overflow, tp);
 
-    /* 2. Top-down: ∂L/∂a per edge pixel, then the boundary integrals of every line. The
-     * band's colours are done with: they hold the ∂L/∂C cache (backward_span) from here. */
-    for (int i = 0; i < rows * width; ++i) band_rgba[i] = (float4)(0.0f, 0.0f, 0.0f, -1.0f);
+    /* 2. Top-down: ∂L/∂a per edge pixel, then the boundary integrals of every line. */
     for (int d = n_draws - 1; d >= 0; --d) {
       const int2 chunks = draw_chunks[d];
       accumulate_draw(L, B, chunk_lines, chunks, y0, rows, width, stride, acc, xlo, xhi, alo,
@@ -523,7 +517,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
         shi[r] = min(xhi[r], width - 1);
         if (xhi[r] >= xlo[r])
           backward_span(acc + r * stride, mark + r * width, band_T + r * width, &tlo[r], &thi[r],
-                        gcell + r * width, &glo[r], &ghi[r], band_rgba + r * width, Ek, Xk, Rk, y0 + r, height, grad_scale, xlo[r], xhi[r], width,
+                        gcell + r * width, &glo[r], &ghi[r], Ek, Xk, Rk, y0 + r, height, grad_scale, xlo[r], xhi[r], width,
                         color, rule, tape, &tq, tape_cap);
         xlo[r] = width;
         xhi[r] = -1;
