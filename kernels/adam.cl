@@ -5,8 +5,8 @@
  *
  * Keyframes are activated progressively, so each keyframe has its own step count t (0: not
  * active, the parameters are left alone; the host resets m and v when it activates one). The
- * host passes each keyframe's bias-correction denominators (1 − β1^t, 1 − β2^t), computed in
- * double and rounded once, (0, 0) for an inactive one: the same for every element of the
+ * host passes each keyframe's bias-correction denominators (1 − β1^t, 1 − β2^t), in float
+ * as this kernel once computed them per element, (0, 0) for an inactive one: the same for every element of the
  * keyframe, so no work-item raises β to a power (a per-element power loop was most of this
  * kernel's time in a layered scene's fit). `first` skips keyframes below it (keyframe 0's
  * homography stays the identity). One work-item per element; `per_frame` elements per

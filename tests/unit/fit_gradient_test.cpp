@@ -476,7 +476,8 @@ TEST_CASE("one Adam step matches the formula in double precision; inactive keyfr
       v[i] = static_cast<float>(0.5 * (1 + U(rng)));
     }
     const auto theta0 = theta, m0 = m, v0 = v;
-    // The fitter's bias-correction denominators per keyframe (Fitter::upload_steps).
+    // Each keyframe's bias-correction denominators (Fitter::upload_steps computes them in
+    // float; rounded from double here, within the bounds below either way).
     std::vector<cl_float2> bias;
     for (int t : steps)
       bias.push_back(t > 0 ? cl_float2{{static_cast<float>(1 - std::pow(double(b1), t)),
