@@ -160,23 +160,34 @@ inline int accumulate_draw(__global const float4* L, __global const float4* B,
  * hull is [*hlo, *hhi]). Past xhi the cells are zero, so a winding integral still nonzero there
  * (the draw's closing edges lie right of the canvas) is a constant coverage for the rest of the
  * row. */
+/* The draw's straight colour and alpha at pixel x of a row: its flat colour, or its paint
+ * image's row (a gradient, RasterPlan::paint) when `painted`. */
+inline float4 paint_at(float4 color, __global const float4* prow, int painted, int x) {
+  return painted ? prow[x] : color;
+}
+
 inline void composite_span(__local float* acc, __local float4* out, int* hlo, int* hhi, int xlo,
-                           int xhi, int width, float4 color, int rule) {
+                           int xhi, int width, float4 color, __global const float4* prow,
+                           int painted, int rule) {
   float s = 0.0f;
   const int xe = min(xhi, width - 1);
-  const float4 premul = (float4)(color.xyz, 1.0f);
   grow_hull4(out, hlo, hhi, xlo, xe);
   for (int x = xlo; x <= xe; ++x) {
     s += acc[x];
     acc[x] = 0.0f;
-    const float a = fill_rule_coverage(s, rule) * color.w;
-    if (a > 0.0f) out[x] = premul * a + out[x] * (1.0f - a);
+    const float4 c = paint_at(color, prow, painted, x);
+    const float a = fill_rule_coverage(s, rule) * c.w;
+    if (a > 0.0f) out[x] = (float4)(c.xyz, 1.0f) * a + out[x] * (1.0f - a);
   }
   acc[xe + 1] = 0.0f; /* the spill cell of the last pixel */
-  const float a = fill_rule_coverage(s, rule) * color.w;
-  if (a > RESIDUAL_COVERAGE && xe + 1 < width) {
+  const float cov = fill_rule_coverage(s, rule);
+  if (cov * (painted ? 1.0f : color.w) > RESIDUAL_COVERAGE && xe + 1 < width) {
     grow_hull4(out, hlo, hhi, xe + 1, width - 1);
-    for (int x = xe + 1; x < width; ++x) out[x] = premul * a + out[x] * (1.0f - a);
+    for (int x = xe + 1; x < width; ++x) {
+      const float4 c = paint_at(color, prow, painted, x);
+      const float a = cov * c.w;
+      out[x] = (float4)(c.xyz, 1.0f) * a + out[x] * (1.0f - a);
+    }
   }
 }
 
@@ -288,7 +299,9 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
                      __global uchar4* rgba8,            /* [K][H][W] (OUT_RGBA8) */
                      __global int2* extents,            /* [K][H] row extents (OUT_RESIDUAL) */
                      float4 background, int out_mode,
-                     int n_lines, int n_chunks, int n_draws, int width, int height) {
+                     int n_lines, int n_chunks, int n_draws, int width, int height,
+                     __global const int* draw_paint,    /* [n_draws] paint image or -1 */
+                     __global const float4* paint) {    /* [n_images][H][W] (RasterPlan::paint) */
   /* One work-group per (band, frame). Clearing and the final write are spread over the group's
    * work-items (PoCL vectorises such loops across work-items); the draw loop, which must run
    * in paint order, is done by work-item 0. */
@@ -315,10 +328,12 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
                     ahi);
     const float4 color = draw_color[d];
     const int rule = draw_rule[d];
+    const int painted = draw_paint[d] >= 0;
+    __global const float4* pimg = paint + (size_t)max(draw_paint[d], 0) * height * width;
     for (int r = 0; r < rows; ++r) {
       if (xhi[r] >= xlo[r])
         composite_span(acc + r * stride, band_rgba + r * width, &hlo[r], &hhi[r], xlo[r], xhi[r],
-                       width, color, rule);
+                       width, color, pimg + (size_t)(y0 + r) * width, painted, rule);
       xlo[r] = width;
       xhi[r] = -1;
     }

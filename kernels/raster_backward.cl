@@ -198,11 +198,11 @@ inline int mark_boundary_lines(__global const float4* L, __global const float4* 
 /* The forward sweep of one draw's span (composite_span), also pushing B onto the tape at every
  * fractional or marked pixel. */
 inline void replay_span(__local float* acc, __local uchar* mark, __local float4* out, int* hlo,
-                        int* hhi, int xlo, int xhi, int width, float4 color, int rule,
+                        int* hhi, int xlo, int xhi, int width, float4 color,
+                        __global const float4* prow, int painted, int rule,
                         float4 background, __local float4* tape, int* tp, int cap) {
   float s = 0.0f;
   const int xe = min(xhi, width - 1);
-  const float4 premul = (float4)(color.xyz, 1.0f);
   grow_hull4(out, hlo, hhi, xlo, xe);
   for (int x = xlo; x <= xe; ++x) {
     s += acc[x];
@@ -213,14 +213,19 @@ inline void replay_span(__local float* acc, __local uchar* mark, __local float4*
       if (*tp < cap) tape[*tp] = out[x] + background * (1.0f - out[x].w);
       ++*tp;
     }
-    const float a = fill_rule_coverage(s, rule) * color.w;
-    if (a > 0.0f) out[x] = premul * a + out[x] * (1.0f - a);
+    const float4 c = paint_at(color, prow, painted, x);
+    const float a = fill_rule_coverage(s, rule) * c.w;
+    if (a > 0.0f) out[x] = (float4)(c.xyz, 1.0f) * a + out[x] * (1.0f - a);
   }
   acc[xe + 1] = 0.0f;
-  const float a = fill_rule_coverage(s, rule) * color.w;
-  if (a > RESIDUAL_COVERAGE && xe + 1 < width) {
+  const float cov = fill_rule_coverage(s, rule);
+  if (cov * (painted ? 1.0f : color.w) > RESIDUAL_COVERAGE && xe + 1 < width) {
     grow_hull4(out, hlo, hhi, xe + 1, width - 1);
-    for (int x = xe + 1; x < width; ++x) out[x] = premul * a + out[x] * (1.0f - a);
+    for (int x = xe + 1; x < width; ++x) {
+      const float4 c = paint_at(color, prow, painted, x);
+      const float a = cov * c.w;
+      out[x] = (float4)(c.xyz, 1.0f) * a + out[x] * (1.0f - a);
+    }
   }
 }
 
@@ -232,7 +237,8 @@ inline void backward_span(__local float* acc, __local uchar* mark, __local float
                           __global const float4* E,
                           __global const int2* ext_e, __global const float4* R,
                           int row, int height, float scale, int xlo, int xhi, int width,
-                          float4 color, int rule, __local const float4* tape, int* tp, int cap) {
+                          float4 color, __global const float4* prow, int painted, int rule,
+                          __local const float4* tape, int* tp, int cap) {
   float s = 0.0f;
   const int xe = min(xhi, width - 1);
   grow_hull_fill(T, tlo, thi, xlo, xe, 1.0f);  /* transmittance starts at 1 */
@@ -243,25 +249,26 @@ inline void backward_span(__local float* acc, __local uchar* mark, __local float
     const int marked = mark[x];
     mark[x] = 0;
     float2 g = (float2)(0.0f);
+    const float4 c = paint_at(color, prow, painted, x);
     if (marked || is_fractional(s, rule)) {
       /* Where the draws in front are opaque (T = 0) the pixel's colour does not depend on
        * this draw: g is 0 exactly, without the 25-tap ∂L/∂C (whose reads of E' and R miss the
        * cache; in a layered scene most of the lower draws' edges are hidden). */
       if (*tp < cap && T[x] != 0.0f) {
         const float3 dC = blurred_gradient(E, ext_e, R, x, row, width, height, scale);
-        const float ga = dot(dC, T[x] * (color.xyz - tape[*tp].xyz));
-        g = ga * color.w * fill_rule_slopes(s, rule);
+        const float ga = dot(dC, T[x] * (c.xyz - tape[*tp].xyz));
+        g = ga * c.w * fill_rule_slopes(s, rule);
       }
       ++*tp;
     }
     gcell[x] = g;
-    T[x] *= 1.0f - fill_rule_coverage(s, rule) * color.w;
+    T[x] *= 1.0f - fill_rule_coverage(s, rule) * c.w;
   }
   acc[xe + 1] = 0.0f;
-  const float a = fill_rule_coverage(s, rule) * color.w;
-  if (a > RESIDUAL_COVERAGE && xe + 1 < width) {
+  const float cov = fill_rule_coverage(s, rule);
+  if (cov * (painted ? 1.0f : color.w) > RESIDUAL_COVERAGE && xe + 1 < width) {
     grow_hull_fill(T, tlo, thi, xe + 1, width - 1, 1.0f);
-    for (int x = xe + 1; x < width; ++x) T[x] *= 1.0f - a;
+    for (int x = xe + 1; x < width; ++x) T[x] *= 1.0f - cov * paint_at(color, prow, painted, x).w;
   }
 }
 
@@ -350,6 +357,7 @@ inline float4 walk_line_grad(float4 l, int on, float at, int row, int width,
 inline int replay_band(__global const float4* L, __global const float4* B,
                        __global const int2* draw_chunks, __global const int2* chunk_lines,
                        __global const float4* draw_color, __global const int* draw_rule,
+                       __global const int* draw_paint, __global const float4* paint, int height,
                        int n_draws, int y0, int rows, int width, int stride, __local float* acc,
                        __local float4* band_rgba, __local uchar* mark, float4 background,
                        __local float4* tape, int cap, __global int* draw_tape, int* hlo,
@@ -369,10 +377,13 @@ inline int replay_band(__global const float4* L, __global const float4* B,
                         xlo, xhi, alo, ahi);
     const float4 color = draw_color[d];
     const int rule = draw_rule[d];
+    const int painted = draw_paint[d] >= 0;
+    __global const float4* pimg = paint + (size_t)max(draw_paint[d], 0) * height * width;
     for (int r = 0; r < rows; ++r) {
       if (xhi[r] >= xlo[r])
         replay_span(acc + r * stride, mark + r * width, band_rgba + r * width, &hlo[r], &hhi[r],
-                    xlo[r], xhi[r], width, color, rule, background, tape, &tp, cap);
+                    xlo[r], xhi[r], width, color, pimg + (size_t)(y0 + r) * width, painted, rule,
+                    background, tape, &tp, cap);
       xlo[r] = width;
       xhi[r] = -1;
     }
@@ -405,7 +416,9 @@ __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
                            __global int2* pool_at,             /* [K][n_bands] (offset, length) */
                            __global int* pool_used,            /* [1] */
                            int n_lines, int n_chunks, int n_draws, int n_bands, int width,
-                           int height) {
+                           int height,
+                           __global const int* draw_paint,     /* [n_draws] */
+                           __global const float4* paint) {     /* [n_images][H][W] */
   const int band = get_group_id(0), k = get_group_id(1);
   const int lid = get_local_id(0), lsize = get_local_size(0);
   const int y0 = band * BAND_H, rows = min(BAND_H, height - y0);
@@ -415,8 +428,9 @@ __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
     for (int i = 0; i < rows * width; ++i) mark[i] = 0;
     const int slot = k * n_bands + band;
     const int tp = replay_band(lines + (size_t)k * n_lines, bounds + (size_t)k * n_chunks,
-                               draw_chunks, chunk_lines, draw_color, draw_rule, n_draws, y0, rows,
-                               width, width + 2, acc, band_rgba, mark, background, tape, tape_cap,
+                               draw_chunks, chunk_lines, draw_color, draw_rule, draw_paint, paint,
+                               height, n_draws, y0, rows, width, width + 2, acc, band_rgba, mark,
+                               background, tape, tape_cap,
                                pool_draw + (size_t)slot * n_draws, hlo, hhi);
     int2 at = (int2)(-1, tp);
     if (tp <= tape_cap) {
@@ -460,7 +474,9 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               __global float4* partial,           /* [K][n_lines][n_bands] */
                               __global int* overflow,             /* [1]: tape overflows */
                               int n_lines, int n_chunks, int n_draws, int n_bands, int width,
-                              int height) {
+                              int height,
+                              __global const int* draw_paint,     /* [n_draws] */
+                              __global const float4* paint) {     /* [n_images][H][W] */
   const int band = get_group_id(0), k = get_group_id(1);
   const int lid = get_local_id(0), lsize = get_local_size(0);
   const int y0 = band * BAND_H, rows = min(BAND_H, height - y0);
@@ -494,9 +510,9 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
     if (at.x >= 0) {
       for (int i = 0; i < tp; ++i) tape[i] = pool[at.x + i];
     } else {
-      tp = replay_band(L, B, draw_chunks, chunk_lines, draw_color, draw_rule, n_draws, y0, rows,
-                       width, stride, acc, band_rgba, mark, background, tape, tape_cap, draw_tape,
-                       hlo, hhi);
+      tp = replay_band(L, B, draw_chunks, chunk_lines, draw_color, draw_rule, draw_paint, paint,
+                       height, n_draws, y0, rows, width, stride, acc, band_rgba, mark, background,
+                       tape, tape_cap, draw_tape, hlo, hhi);
     }
     if (tp > tape_cap) atomic_max(overflow, tp);
 
@@ -510,6 +526,8 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
         continue; /* no chunk reaches the band (band_reaches), so nothing was accumulated */
       const float4 color = draw_color[d];
       const int rule = draw_rule[d];
+      const int painted = draw_paint[d] >= 0;
+      __global const float4* pimg = paint + (size_t)max(draw_paint[d], 0) * height * width;
       int tq = draw_tape[d];
       int slo[BAND_H], shi[BAND_H]; /* the spans written into gcell, cleared after the walk */
       for (int r = 0; r < rows; ++r) {
@@ -518,7 +536,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
         if (xhi[r] >= xlo[r])
           backward_span(acc + r * stride, mark + r * width, band_T + r * width, &tlo[r], &thi[r],
                         gcell + r * width, &glo[r], &ghi[r], Ek, Xk, Rk, y0 + r, height, grad_scale, xlo[r], xhi[r], width,
-                        color, rule, tape, &tq, tape_cap);
+                        color, pimg + (size_t)(y0 + r) * width, painted, rule, tape, &tq, tape_cap);
         xlo[r] = width;
         xhi[r] = -1;
       }

@@ -11,6 +11,7 @@
 #include "fit/fit_plan.h"
 #include "fit/fitter.h"
 #include "opencl/tuning.h"
+#include "raster/layer_compositor.h"
 #include "raster/loss_ref.h"
 #include "raster_test_support.h"
 #include "scene_builders.h"
@@ -140,6 +141,61 @@ TEST_CASE("gradient of overlapping opaque and translucent fills matches finite d
   const Case c = make_case(scene_of(40, 32, {filled(circle({20, 16}, 9), {0.9f, 0.2f, 0.1f, 1}),
                                              filled(polygon({{3, 4}, {30, 6}, {14, 28}}), {0.1f, 0.3f, 0.8f, 0.6f})}),
                            11, 2);
+  const auto [an, fd] = gradients(c);
+  const Agreement a = compare(an, fd);
+  MESSAGE("cosine " << a.cosine << ", relative error " << a.rel_error);
+  CHECK(a.cosine > 0.99999);
+  CHECK(a.rel_error < 1e-3);
+}
+
+// A scene whose circle is painted with a linear gradient (red to blue across the canvas) under
+// a translucent triangle with a radial one (opaque white at its centre to transparent green):
+// the kernels read the draws' paint images (RasterPlan::paint).
+Scene gradient_scene() {
+  Scene s = scene_of(40, 32, {filled(circle({20, 16}, 9), {0.5f, 0.f, 0.5f, 1}),
+                              filled(polygon({{3, 4}, {30, 6}, {14, 28}}), {0.5f, 0.9f, 0.5f, 0.8f})});
+  Gradient lin;
+  lin.p1 = {0, 0};
+  lin.p2 = {40, 0};
+  lin.stops = {{0, {1, 0, 0, 1}}, {1, {0, 0, 1, 1}}};
+  Gradient rad;
+  rad.radial = true;
+  rad.center = rad.focal = {15, 12};
+  rad.r = 14;
+  rad.stops = {{0, {1, 1, 1, 1}}, {1, {0, 0.8f, 0, 0}}};
+  rad.opacity = 0.8f;
+  s.gradients = {lin, rad};
+  s.paths[0].fill_gradient = 0;
+  s.paths[1].fill_gradient = 1;
+  return s;
+}
+
+TEST_CASE("gradient paints: the kernels composite the paint images, and the gradient matches finite differences") {
+  const Scene scene = gradient_scene();
+  const RasterPlan plan = plan_raster(scene, Affine{}, 40, 32);
+  REQUIRE(plan.draws.size() == 2);
+  CHECK(plan.draws[0].paint == 0);
+  CHECK(plan.draws[1].paint == 1);
+  // The paint image is the gradient at pixel centres: pixel (3, 16) has t = 3.5 / 40.
+  const float* px = &plan.paint[4 * (16 * 40 + 3)];
+  CHECK(px[0] == doctest::Approx(1 - 3.5 / 40).epsilon(1e-6));
+  CHECK(px[2] == doctest::Approx(3.5 / 40).epsilon(1e-6));
+  // The forward pass against the reference, and the CPU compositor (which paints gradients its
+  // own way) at the rest pose.
+  const std::vector<float> cl = render_cl(scene);
+  const std::vector<double> ref = render_ref(scene);
+  const std::vector<float> lc = composite_layers(scene, render_size(scene, 40));
+  double worst_ref = 0, worst_lc = 0;
+  for (size_t i = 0; i < cl.size(); ++i) {
+    worst_ref = std::max(worst_ref, std::abs(cl[i] - ref[i]));
+    worst_lc = std::max(worst_lc, static_cast<double>(std::abs(cl[i] - lc[i])));
+  }
+  MESSAGE("largest difference: reference " << worst_ref << ", layer compositor " << worst_lc);
+  CHECK(worst_ref < 1e-5);
+  CHECK(worst_lc < 1e-5);
+  // The circle's centre is the gradient's colour there, not the draw's flat colour.
+  CHECK(cl[4 * (16 * 40 + 24) + 0] == doctest::Approx(1 - 24.5 / 40).epsilon(1e-5));  // right of the triangle
+  const Case c = make_case(scene, 5, 2);
   const auto [an, fd] = gradients(c);
   const Agreement a = compare(an, fd);
   MESSAGE("cosine " << a.cosine << ", relative error " << a.rel_error);

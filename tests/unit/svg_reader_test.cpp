@@ -259,7 +259,7 @@ TEST_CASE("paint values: invalid paints are ignored, gradients give their mean c
   CHECK(color(s.paths[6].fill, 0, 0, 1));          // pattern: the fallback
   CHECK(color(s.paths[7].fill, 0, 0, 0, 0));
   REQUIRE(s.warnings.size() == 3);
-  CHECK(s.warnings[0] == "t.svg: <rect> and 2 more elements: gradient paint drawn with its mean stop colour in fits and exports");
+  CHECK(s.warnings[0] == "t.svg: <rect> and 2 more elements: gradient paint drawn with its mean stop colour in Lottie exports");
   CHECK(s.warnings[1] == "t.svg: <rect> and 1 more element: paint url(#nothing) not found (fallback colour or none used)");
   CHECK(s.warnings[2] == "t.svg: <rect>: pattern paint not supported (fallback colour or none used)");
 }
@@ -280,7 +280,7 @@ TEST_CASE("the cascade: presentation attributes, then <style> rules by specifici
   REQUIRE(s.warnings.size() == 2);
   const std::string name = SVGM_TEST_DATA "/svg/style_sheet.svg";
   CHECK(s.warnings[0] == name + ": <style>: 2 CSS rules ignored (only tag, .class and #id selectors are supported)");
-  CHECK(s.warnings[1] == name + ": <path>: gradient paint drawn with its mean stop colour in fits and exports");
+  CHECK(s.warnings[1] == name + ": <path>: gradient paint drawn with its mean stop colour in Lottie exports");
 }
 
 TEST_CASE("a file with every shape: counts, groups, canvas mapping") {

@@ -142,7 +142,7 @@ TEST_CASE("unsupported content gives one warning per kind and is skipped") {
   REQUIRE(s.warnings.size() == 4);
   CHECK(s.warnings[0] == "t.svg: 2 <text> elements skipped (text is not supported)");
   CHECK(s.warnings[1] == "t.svg: 1 <image> element skipped (images are not supported)");
-  CHECK(s.warnings[2] == "t.svg: <rect>: gradient paint drawn with its mean stop colour in fits and exports");
+  CHECK(s.warnings[2] == "t.svg: <rect>: gradient paint drawn with its mean stop colour in Lottie exports");
   CHECK(s.warnings[3] == "t.svg: <rect>: clip-path url(#c) is not a clipPath (drawn unclipped)");
 }
 

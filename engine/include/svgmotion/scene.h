@@ -44,8 +44,9 @@ struct Stroke {
 };
 
 // A gradient paint server, resolved for one element (href chains, units and transforms folded),
-// drawn by the forward render only (raster/layer_compositor.h). The fitter and the Lottie
-// export use the path's flat colour, which stays the gradient's mean stop colour.
+// drawn by the forward render (raster/layer_compositor.h) and by the fitter's rasteriser as a
+// paint image fixed in canvas space (RasterPlan::paint). The Lottie export uses the path's flat
+// colour, which stays the gradient's mean stop colour.
 enum class Spread : uint8_t { Pad, Reflect, Repeat };
 
 struct GradientStop {

@@ -17,7 +17,7 @@ namespace {
 
 // The reader's warning for a gradient drawn with its mean stop colour (svg_reader.cpp,
 // resolve_paint): the scene keeps only that colour, so the export says so once.
-constexpr std::string_view kGradientWarning = "gradient paint drawn with its mean stop colour in fits and exports";
+constexpr std::string_view kGradientWarning = "gradient paint drawn with its mean stop colour in Lottie exports";
 // Colours are written to 1/10000 (far below one 8-bit level), opacities (0..100) to 1/100,
 // frame times to 1/1000 of a frame.
 constexpr double kColourScale = 1e4, kOpacityScale = 1e2, kFrameScale = 1e3;

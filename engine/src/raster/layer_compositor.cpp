@@ -81,7 +81,10 @@ class Compositor {
       q.stroke.color.a = 1;
       q.opacity = 1;
     }
-    Planned p{plan_raster(opaque, view_, w_, h_), {}};
+    // Coverage only: this compositor paints gradients itself (paint()), so no paint images.
+    RasterPlanOptions coverage_only;
+    coverage_only.max_paint_bytes = 0;
+    Planned p{plan_raster(opaque, view_, w_, h_, coverage_only), {}};
     const std::vector<double> cp(p.plan.rest_cp.begin(), p.plan.rest_cp.end());
     p.pts = ref::flatten(p.plan, cp);
     ref::stroke(p.plan, p.pts);

@@ -65,10 +65,11 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double ren
       f.insert(f.end(), {s.half_width, s.miter_limit});
     }
     std::vector<float> dcol;
-    std::vector<int> drule, dchunks;
+    std::vector<int> drule, dchunks, dpaint;
     for (const auto& d : p.draws) {
       dcol.insert(dcol.end(), d.rgba, d.rgba + 4);
       drule.push_back(d.rule);
+      dpaint.push_back(d.paint);
       dchunks.insert(dchunks.end(), {d.first_chunk, d.chunk_count});
     }
     cp_ = make(K * p.n_cp * 2 * sizeof(float));
@@ -84,6 +85,8 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double ren
     draw_color_ = make(dcol.size() * sizeof(float), dcol.data());
     draw_rule_ = make(drule.size() * sizeof(int), drule.data());
     draw_chunks_ = make(dchunks.size() * sizeof(int), dchunks.data());
+    draw_paint_ = make(dpaint.size() * sizeof(int), dpaint.data());
+    paint_ = make(p.paint.size() * sizeof(float), p.paint.data());
     chunk_lines_ = make(p.chunk_lines.size() * sizeof(int), p.chunk_lines.data());
     bounds_ = make(K * (p.chunk_lines.size() / 2) * 4 * sizeof(float));
     // The output buffers are made on first use: a render needs only the 8-bit one.
@@ -105,6 +108,8 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double ren
     k_raster_.setArg(15, n_draws);
     k_raster_.setArg(16, p.width);
     k_raster_.setArg(17, p.height);
+    k_raster_.setArg(18, draw_paint_);
+    k_raster_.setArg(19, paint_);
   } catch (const cl::Error& e) {
     throw Error(std::string("OpenCL setup of the rasteriser failed on ") + rt_.info().name +
                 ": " + e.what() + " " + cl_status_name(e.err()));

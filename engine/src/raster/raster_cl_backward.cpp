@@ -79,7 +79,8 @@ void ClRaster::init_backward() {
              cl::Local(static_cast<size_t>(band_h_) * p.width),
              cl::Local(static_cast<size_t>(tape_cap_) * 4 * sizeof(float)), tape_cap_);
     // Arguments 18..20 (the pool) are set by resize_pool.
-    set_args_at(k_backward_, 21, partial_, overflow_, p.n_lines, n_chunks, n_draws, bands_, W, H);
+    set_args_at(k_backward_, 21, partial_, overflow_, p.n_lines, n_chunks, n_draws, bands_, W, H,
+                draw_paint_, paint_);
     pool_draw_ = make(K * bands_ * std::max<size_t>(n_draws, 1) * sizeof(int));
     pool_at_ = make(K * bands_ * 2 * sizeof(int));
     pool_used_ = make(sizeof(int));
@@ -89,7 +90,8 @@ void ClRaster::init_backward() {
              cl::Local(static_cast<size_t>(band_h_) * p.width),
              cl::Local(static_cast<size_t>(tape_cap_) * 4 * sizeof(float)), tape_cap_, image_, ext_x_);
     // Argument 13 (background) is set per pass, 14..15 (the pool) by resize_pool.
-    set_args_at(k_taped_, 16, pool_draw_, pool_at_, pool_used_, p.n_lines, n_chunks, n_draws, bands_, W, H);
+    set_args_at(k_taped_, 16, pool_draw_, pool_at_, pool_used_, p.n_lines, n_chunks, n_draws, bands_, W, H,
+                draw_paint_, paint_);
     // A first pool of a quarter of the frames' pixels; it grows to what the bands ask for.
     resize_pool(static_cast<int>(std::min<size_t>(pixels / 4 + 1, kMaxPoolEntries)));
     set_args(k_gather_lines_, lines_, line_chunk_, bounds_, partial_, line_grad_, p.n_lines,

@@ -1,9 +1,12 @@
 // Building the raster plan (see raster_plan.h): segment counts, weights, stroke layout, draws.
 #include "raster/raster_plan.h"
 
+#include "raster/gradient_paint.h"
+
 #include <algorithm>
 #include <cmath>
 
+#include "raster/gradient_paint.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -121,6 +124,27 @@ RasterPlan plan_raster(const Scene& scene, const Affine& view, int width, int he
   auto add_contour = [&](int first, int count) {
     for (int i = 0; i < count; ++i) add_line(first + i, first + (i + 1) % count);
   };
+  // The last draw's gradient as a paint image (RasterPlan::paint), within the byte budget.
+  const size_t image_floats = static_cast<size_t>(width) * height * 4;
+  auto paint_draw = [&](const Path& path, int gi) {
+    if ((plan.paint.size() + image_floats) * sizeof(float) > opt.max_paint_bytes) return;
+    if (gi < 0 || static_cast<size_t>(gi) >= scene.gradients.size())
+      throw Error("internal: path gradient " + std::to_string(gi) + " outside the scene's " +
+                  std::to_string(scene.gradients.size()));
+    const Gradient& g = scene.gradients[static_cast<size_t>(gi)];
+    const Affine to_gradient = (view * g.to_canvas).inverse();
+    const float k = g.opacity * path.opacity;
+    plan.draws.back().paint = static_cast<int>(plan.paint.size() / image_floats);
+    plan.paint.resize(plan.paint.size() + image_floats, 0.0f);
+    float* img = plan.paint.data() + plan.paint.size() - image_floats;
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const auto c = gradient_color(g, to_gradient, {x + 0.5, y + 0.5});
+        if (!c) continue;  // unpainted: alpha 0
+        float* o = img + 4 * (static_cast<size_t>(y) * width + x);
+        o[0] = c->r, o[1] = c->g, o[2] = c->b, o[3] = c->a * k;
+      }
+  };
   for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
     const Path& path = scene.paths[pi];
     const float fill_alpha = path.fill.a * path.opacity;
@@ -136,6 +160,7 @@ RasterPlan plan_raster(const Scene& scene, const Affine& view, int width, int he
         if (r.vertex_count >= 2) add_contour(r.first_vertex, r.vertex_count);
       plan.draws.back().line_count = plan.n_lines - plan.draws.back().first_line;
       if (plan.draws.back().line_count == 0) plan.draws.pop_back();
+      else if (path.fill_gradient >= 0) paint_draw(path, path.fill_gradient);
     }
     const float stroke_alpha = path.stroke.color.a * path.opacity;
     const double half_width = 0.5 * path.stroke.width * view_scale;
@@ -174,6 +199,7 @@ RasterPlan plan_raster(const Scene& scene, const Affine& view, int width, int he
       }
       plan.draws.back().line_count = plan.n_lines - plan.draws.back().first_line;
       if (plan.draws.back().line_count == 0) plan.draws.pop_back();
+      else if (path.stroke_gradient >= 0) paint_draw(path, path.stroke_gradient);
     }
   }
   // Chunks: consecutive lines of one draw, kChunkLines at most.

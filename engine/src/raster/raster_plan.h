@@ -26,6 +26,9 @@ enum : int { kRuleNonZero = 0, kRuleEvenOdd = 1 };
 struct RasterPlanOptions {
   double flatten_tolerance_px = 0.1;  // max distance of a flattened chord from its curve
   int max_segments_per_cubic = 64;
+  // Gradient paints as per-pixel paint images (RasterPlan::paint) while they take at most this
+  // many bytes; beyond it (a large render of many gradients) draws keep their mean colour.
+  size_t max_paint_bytes = size_t{256} << 20;
 };
 
 struct StrokeSubpath {
@@ -49,6 +52,7 @@ struct Draw {
   int path = 0;          // index into Scene::paths
   bool is_stroke = false;
   float rgba[4] = {0, 0, 0, 1};  // straight colour; alpha already times the path's opacity
+  int paint = -1;  // a gradient's paint image in RasterPlan::paint, or -1: rgba everywhere
   int rule = kRuleNonZero;
   int first_line = 0, line_count = 0;
   int first_chunk = 0, chunk_count = 0;
@@ -77,6 +81,12 @@ struct RasterPlan {
   std::vector<int> line_ab;    // point index pairs
   std::vector<int> line_draw;  // draw index of each line (non-decreasing)
   std::vector<Draw> draws;
+  // Paint images of the draws painted with gradients: per image, height * width straight RGBA
+  // floats sampled at the pixel centres (raster/gradient_paint.h), alpha times the path's
+  // opacity; alpha 0 where a radial gradient leaves a pixel unpainted. The gradient stays where
+  // the document puts it (canvas space), as an exported animation whose path data moves draws
+  // it; its own motion has no gradient (only the boundary's).
+  std::vector<float> paint;
   std::vector<int> chunk_lines;  // (first line, count) pairs
   std::vector<int> line_chunk;   // chunk index of every line
 

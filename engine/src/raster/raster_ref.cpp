@@ -238,10 +238,12 @@ std::vector<double> raster(const RasterPlan& plan, const std::vector<double>& pt
   for (size_t di = 0; di < plan.draws.size(); ++di) {
     const Draw& d = plan.draws[di];
     const auto a = winding_integrals(plan, pts, static_cast<int>(di));
+    const size_t image = static_cast<size_t>(plan.width) * plan.height * 4;
     for (size_t p = 0; p < a.size(); ++p) {
-      const double alpha = fill_rule_coverage(a[p], d.rule) * d.rgba[3];
+      const float* col = d.paint >= 0 ? &plan.paint[d.paint * image + 4 * p] : d.rgba;
+      const double alpha = fill_rule_coverage(a[p], d.rule) * col[3];
       for (int c = 0; c < 4; ++c) {
-        const double src = (c < 3 ? d.rgba[c] : 1.0) * alpha;
+        const double src = (c < 3 ? col[c] : 1.0) * alpha;
         img[4 * p + c] = src + img[4 * p + c] * (1.0 - alpha);
       }
     }
