@@ -230,20 +230,35 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
   return v;
 }
 
+// The pole's parts at `side` of the figure (1 left, 2 right, 3 top, 4 bottom): the thin parts
+// (at most kPoleWidth of the figure's extent across that side) lying within kPoleEnd of it.
+std::vector<int> pole_parts(const Rig& rig, int side) {
+  const RigBox& F = rig.figure;
+  const bool across_x = side <= 2;  // a left or right pole: thin in x, spanning y
+  const double L = std::max(across_x ? F.w() : F.h(), 1e-9);
+  std::vector<int> out;
+  for (size_t i = 0; i < rig.parts.size(); ++i) {
+    const RigPart& P = rig.parts[i];
+    if (P.role == Role::Background || P.box.empty()) continue;
+    const double a0 = across_x ? P.box.x0 : P.box.y0, a1 = across_x ? P.box.x1 : P.box.y1;
+    const double s0 = across_x ? F.x0 : F.y0, s1 = across_x ? F.x1 : F.y1;
+    const bool near = side % 2 == 1 ? a1 <= s0 + kPoleEnd * L : a0 >= s1 - kPoleEnd * L;
+    if (near && a1 - a0 <= kPoleWidth * L) out.push_back(static_cast<int>(i));
+  }
+  return out;
+}
+
 // The side of the figure a pole holds (PlannedAction::anchored: 1 left, 2 right, 3 top, 4
-// bottom), 0 for none.
+// bottom), 0 for none: where the pole's parts together span kPoleSpan of the figure.
 int anchored_side(const Rig& rig) {
   const RigBox& F = rig.figure;
   for (int side = 1; side <= 4; ++side) {
-    const bool across_x = side <= 2;  // a left or right pole: thin in x, spanning y
-    const double L = std::max(across_x ? F.w() : F.h(), 1e-9), span = std::max(across_x ? F.h() : F.w(), 1e-9);
+    const bool across_x = side <= 2;
+    const double span = std::max(across_x ? F.h() : F.w(), 1e-9);
     std::vector<std::pair<double, double>> spans;
-    for (const auto& P : rig.parts) {
-      if (P.role == Role::Background || P.box.empty()) continue;
-      const double a0 = across_x ? P.box.x0 : P.box.y0, a1 = across_x ? P.box.x1 : P.box.y1;
-      const double s0 = across_x ? F.x0 : F.y0, s1 = across_x ? F.x1 : F.y1;
-      const bool near = side % 2 == 1 ? a1 <= s0 + kPoleEnd * L : a0 >= s1 - kPoleEnd * L;
-      if (near && a1 - a0 <= kPoleWidth * L) spans.push_back(across_x ? std::make_pair(P.box.y0, P.box.y1) : std::make_pair(P.box.x0, P.box.x1));
+    for (int p : pole_parts(rig, side)) {
+      const RigBox& b = rig.parts[p].box;
+      spans.push_back(across_x ? std::make_pair(b.y0, b.y1) : std::make_pair(b.x0, b.x1));
     }
     std::sort(spans.begin(), spans.end());
     double covered = 0, lo = 0, hi = -1e300;
@@ -952,6 +967,11 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   std::vector<char> held(G, 0);
   for (int g = 0; g < G; ++g)
     for (int h : plan.held) held[g] = held[g] || under(g, h);
+  // The pole a wave runs from holds still (the wave's weight is small but not nothing across
+  // its width: a flag's pole moved 0.8 px and the fitted one drifted out of the canvas).
+  for (const auto& a : plan.actions)
+    if (a.primitive == Primitive::Undulate && a.anchored != 0)
+      for (int p : pole_parts(rig, a.anchored)) held[p] = 1;
   // Chains hanging from the root that reach the lowest kPlanted of the figure stand on the
   // ground (legs, feet): the root's own swing does not carry them.
   std::vector<char> planted(G, 0);
