@@ -854,7 +854,7 @@ TEST_CASE("a ferris wheel's small cabins ride round with the turning wheel, upri
 }
 
 TEST_CASE("a ferris wheel with four cabins turns a quarter a loop: spokes about its centre, each cabin upright as one, the stand still") {
-  const Fixture fx("ferris.svg");  // paths 0-7 cabins (roof, body), 8 rim, 9-11 spokes and hub, 12-14 stand
+  const Fixture fx("ferris.svg");  // paths 0-7 cabins (roof, body), 8 rim, 9-11 spokes and hub, 12-14 stand, 15 shadow
   const MotionPlan plan = fx.plan("the ferris wheel turns slowly");
   REQUIRE(plan.actions.size() == 1);
   const PlannedAction& a = plan.actions[0];
@@ -868,6 +868,7 @@ TEST_CASE("a ferris wheel with four cabins turns a quarter a loop: spokes about 
   CHECK(t[12] == 0.0);
   CHECK(t[13] == 0.0);
   CHECK(t[14] == 0.0);
+  CHECK(t[15] == 0.0);  // the rim's shadow drawn once does not ride
   // The horizontal spoke's end (156,88) turns a quarter about (100,90): to (102,146) or (98,34).
   const Vec2 q = pts[(F - 1) * per + fx.first_point(9) + 3] - pts[fx.first_point(9) + 3];
   const Vec2 end = pts[(F - 1) * per + fx.first_point(9) + 3];

@@ -183,7 +183,7 @@ TEST_CASE("a tall thin part above the body is a raised wing, not the head; a rou
 }
 
 TEST_CASE("a wheel drawn in one group with its cabins and stand: its spokes hang from it, each cabin piece is a part, the stand holds") {
-  const Rig r = rig_of("ferris.svg");  // paths 0-7 cabins (roof, body), 8 rim, 9-11 spokes and hub, 12-14 stand
+  const Rig r = rig_of("ferris.svg");  // paths 0-7 cabins (roof, body), 8 rim, 9-11 spokes and hub, 12-14 stand, 15 shadow
   const int rim = r.part_of_path[8], spokes = r.part_of_path[9], stand = r.part_of_path[12];
   CHECK(r.part_of_path[10] == spokes);
   CHECK(r.part_of_path[11] == spokes);
@@ -192,6 +192,7 @@ TEST_CASE("a wheel drawn in one group with its cabins and stand: its spokes hang
   CHECK(r.parts[spokes].carried);
   CHECK(r.part_of_path[13] == stand);
   CHECK(r.part_of_path[14] == stand);
+  CHECK(r.part_of_path[15] == stand);  // the rim's shadow drawn once is no cabin
   CHECK(stand != rim);
   CHECK(stand != spokes);
   CHECK_FALSE(r.parts[stand].carried);

@@ -46,4 +46,11 @@ TEST_CASE("riders evenly round a wheel give its symmetry, stacked pieces counted
   CHECK(rider_symmetry(rider_stacks(two), wheel) == 0);  // fewer than kMinSymmetricRiders
 }
 
+TEST_CASE("riders come in sets: a piece drawn once among cabins does not ride; a lone cabin or two do") {
+  const std::vector<RigBox> many{{94, 24, 106, 31}, {154, 86, 166, 93}, {94, 146, 106, 153}, {34, 86, 46, 93}, {80, 147, 120, 152}};
+  CHECK(in_rider_sets(many) == std::vector<char>{1, 1, 1, 1, 0});
+  const std::vector<RigBox> two{{94, 24, 106, 31}, {80, 147, 120, 152}};
+  CHECK(in_rider_sets(two) == std::vector<char>{1, 1});
+}
+
 }  // TEST_SUITE

@@ -909,6 +909,14 @@ WheelLoads wheel_loads(const Rig& rig, const std::vector<char>& spins) {
         riders.push_back(g);
         boxes.push_back(rig.parts[g].box);
       }
+    // Only riders in sets ride (in_rider_sets); a piece drawn once stays where the rig has it.
+    const std::vector<char> in_set = in_rider_sets(boxes);
+    for (size_t i = riders.size(); i-- > 0;)
+      if (!in_set[i]) {
+        L.rides[riders[i]] = -1;
+        riders.erase(riders.begin() + static_cast<long>(i));
+        boxes.erase(boxes.begin() + static_cast<long>(i));
+      }
     const std::vector<RigBox> stacks = rider_stacks(boxes);
     const Vec2 c = rig.parts[a].box.centre();
     const double R = 0.5 * rig.parts[a].box.w();

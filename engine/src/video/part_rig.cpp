@@ -216,7 +216,7 @@ std::vector<Vec2> curve_points(const Path& p) {
 // cabins grouped with its stand; a spoke grouped with a leg of the stand): in every part of
 // several paths, the paths that turn with a wheel (wheel_riders.h, the largest wheel first)
 // become a part of their own that hangs from it, and when at least kMinSymmetricRiders of
-// its paths ride on the wheel's rim (cabins), each of those becomes a part of its own (it rides
+// its paths ride on the wheel's rim (cabins, in sets: in_rider_sets), each of those becomes a part of its own (it rides
 // round upright, motion_plan.cpp). What is left (the stand) stays a part that holds still.
 // Kept whole, the spokes held still with the stand while the rim turned, and cabins grouped
 // with them never rode.
@@ -224,6 +224,44 @@ void split_wheel_loads(const Scene& scene, Units& U) {
   std::vector<int> wheels(U.wheels.begin(), U.wheels.end());
   std::sort(wheels.begin(), wheels.end(), [&](int a, int b) { return path_box(scene.paths[a]).area() > path_box(scene.paths[b]).area(); });
   if (wheels.empty()) return;
+  // The riders of each wheel among all the scene's paths: on its rim (rides_wheel), or small
+  // and stacked under one that is (a cabin's body hanging below the rim under its roof); of
+  // those, the ones in sets (in_rider_sets).
+  std::map<int, std::set<int>> riders_of;
+  for (int w : wheels) {
+    const RigBox wb = path_box(scene.paths[w]);
+    std::vector<int> cand;
+    std::vector<char> is_cand(scene.paths.size(), 0);
+    std::vector<char> turns(scene.paths.size(), 0);
+    for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
+      if (static_cast<int>(pi) == w) continue;
+      const RigBox b = path_box(scene.paths[pi]);
+      turns[pi] = turns_with_wheel(b, curve_points(scene.paths[pi]), wb);
+      if (!turns[pi] && rides_wheel(b, wb)) {
+        cand.push_back(static_cast<int>(pi));
+        is_cand[pi] = 1;
+      }
+    }
+    for (bool grew = !cand.empty(); grew;) {
+      grew = false;
+      for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
+        if (static_cast<int>(pi) == w || is_cand[pi] || turns[pi]) continue;
+        const RigBox b = path_box(scene.paths[pi]);
+        bool stacked = false;
+        for (int r : cand) stacked = stacked || riders_stack(b, path_box(scene.paths[r]));
+        if (stacked && b.area() <= kRideMaxArea * wb.area()) {
+          cand.push_back(static_cast<int>(pi));
+          is_cand[pi] = 1;
+          grew = true;
+        }
+      }
+    }
+    std::vector<RigBox> boxes;
+    for (int pi : cand) boxes.push_back(path_box(scene.paths[pi]));
+    const std::vector<char> in_set = in_rider_sets(boxes);
+    for (size_t i = 0; i < cand.size(); ++i)
+      if (in_set[i]) riders_of[w].insert(cand[i]);
+  }
   Units out = U;
   out.paths.clear();
   out.group.clear();
@@ -238,24 +276,8 @@ void split_wheel_loads(const Scene& scene, Units& U) {
       for (int pi : rest) {
         const RigBox b = path_box(scene.paths[pi]);
         if (turns_with_wheel(b, curve_points(scene.paths[pi]), wb)) inside.push_back(pi);
-        else if (rides_wheel(b, wb)) riders.push_back(pi);
+        else if (riders_of[w].count(pi)) riders.push_back(pi);
         else others.push_back(pi);
-      }
-      // A small path stacked under a rider rides with it (a cabin's body hanging below the rim
-      // under its roof).
-      for (bool grew = !riders.empty(); grew;) {
-        grew = false;
-        for (size_t i = 0; i < others.size(); ++i) {
-          const RigBox b = path_box(scene.paths[others[i]]);
-          bool stacked = false;
-          for (int r : riders) stacked = stacked || riders_stack(b, path_box(scene.paths[r]));
-          if (stacked && b.area() <= kRideMaxArea * wb.area()) {
-            riders.push_back(others[i]);
-            others.erase(others.begin() + static_cast<long>(i));
-            grew = true;
-            break;
-          }
-        }
       }
       if (riders.size() < static_cast<size_t>(kMinSymmetricRiders)) {
         others.insert(others.end(), riders.begin(), riders.end());

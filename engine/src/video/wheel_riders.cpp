@@ -43,6 +43,19 @@ bool rides_wheel(const RigBox& part, const RigBox& wheel) {
          (r <= kRideReach * R || overlap_area(part, wheel) >= 0.9 * part.area());
 }
 
+std::vector<char> in_rider_sets(const std::vector<RigBox>& boxes) {
+  auto ratio = [](double a, double b) { return std::max(a, b) / std::max(std::min(a, b), 1e-9); };
+  std::vector<char> out(boxes.size(), 1);
+  if (boxes.size() < static_cast<size_t>(kMinSymmetricRiders)) return out;  // a lone cabin or two ride
+  for (size_t i = 0; i < boxes.size(); ++i) {
+    int alike = 0;
+    for (size_t j = 0; j < boxes.size(); ++j)
+      alike += j != i && ratio(boxes[i].w(), boxes[j].w()) <= kRiderSimilar && ratio(boxes[i].h(), boxes[j].h()) <= kRiderSimilar;
+    out[i] = alike >= kMinSymmetricRiders - 1;
+  }
+  return out;
+}
+
 bool riders_stack(const RigBox& a, const RigBox& b) {
   const double ox = std::min(a.x1, b.x1) - std::max(a.x0, b.x0);
   return ox >= 0.5 * std::min(a.w(), b.w()) && a.y0 <= b.y1 && b.y0 <= a.y1;

@@ -26,6 +26,13 @@ bool turns_with_wheel(const RigBox& box, const std::vector<Vec2>& pts, const Rig
 // middle may lie beyond the radius).
 bool rides_wheel(const RigBox& part, const RigBox& wheel);
 
+// Riders come in sets (a ferris wheel's cabins, or their roofs and their bodies): of the boxes
+// of the parts that ride a wheel (rides_wheel, or stacked under one that does), those with at
+// least kMinSymmetricRiders - 1 others of about their size (width and height each within
+// kRiderSimilar) ride, all of them when there are fewer than kMinSymmetricRiders; a piece of the rim's shading or a bracket near the hub drawn once does
+// not (ridden round upright, a dark arc under the bottom cabin stood out of the rim as a bar).
+std::vector<char> in_rider_sets(const std::vector<RigBox>& boxes);
+
 // Two riders stack (one hangs under the other, a cabin's roof and its body): their x-ranges
 // overlap by at least half the narrower width and their y-ranges meet.
 bool riders_stack(const RigBox& a, const RigBox& b);
@@ -43,5 +50,6 @@ constexpr double kRimShare = 0.7;
 constexpr double kRideReach = 1.05;
 constexpr double kWheelInsidePad = 0.1;
 constexpr int kMinSymmetricRiders = 3;
+constexpr double kRiderSimilar = 1.3;
 
 }  // namespace svgm
