@@ -26,6 +26,14 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   else if (colors != "original" && colors != "auto")
     throw std::runtime_error("stages.fitter.colors must be auto, palette or original, not '" + colors + "'");
   job.tracks = P::file(req, "inputs", "tracks");
+  // The procedural video's report says which paths its target moves (motion_groups.h). It is
+  // the video stage's output beside the chosen candidate: its parts and travels are those of
+  // the first candidate, and the candidates differ only in amplitudes and directions.
+  // stages.fitter.motion_groups: false fits the grouper's groups as they are.
+  if (!user_video && c.value("motion_groups", true) && req.at("stages").at("video").value("plugin", "") == "procedural") {
+    const std::filesystem::path motion = std::filesystem::path(req.at("run_dir").get<std::string>()) / "motion.json";
+    if (std::filesystem::exists(motion)) job.motion = motion;
+  }
   job.out = req.at("run_dir").get<std::string>();
   job.options.iterations = c.value("iterations", 2000);
   job.options.track = c.value("track", true);

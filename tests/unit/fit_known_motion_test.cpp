@@ -155,6 +155,35 @@ TEST_CASE("known motion: rotation, scale, projective warp and bend are recovered
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("a held group stays exactly at rest while the others follow their motion") {
+  const Scene s = figure();
+  const int K = 3;
+  const auto dir = std::filesystem::temp_directory_path() / ("svgm_held_" + std::to_string(::getpid()));
+  auto motion = [](int k, int g) {
+    MotionParams p = identity_params();
+    if (g == 1) {  // the arm turns about the shoulder
+      p[9] = 0.27; p[10] = 0.04;
+      p[2] = -0.3 * k / 2.0;
+    } else if (g == 2) {
+      p[0] = 0.06 * k / 2.0;  // the head slides
+    }
+    return p;
+  };
+  write_known_motion(s, 96, K, motion, [](int, Vec2) { return Vec2{}; }, dir);
+  TargetOptions to;
+  to.keyframes = K;
+  const TargetFrames target = load_target(dir, 96, 96, to);
+  FitOptions fo;
+  fo.iterations = 120;
+  fo.held_groups = {"body", "no_such_group"};
+  Fitter fitter(runtime(), s, target, fo);
+  while (!fitter.done()) fitter.step();
+  CHECK(max_drift(fitter, 0, K) == 0.0);  // the body: not one control point off rest
+  CHECK(max_drift(fitter, 1, K) > 3.0);   // the arm turned (its tip 26 px out: about 8 px)
+  CHECK(max_drift(fitter, 2, K) > 3.0);   // the head slid (0.06 of the half width: about 3 px)
+  std::filesystem::remove_all(dir);
+}
+
 TEST_CASE("containment at rest is zero: handles outside round shapes are not pulled in") {
   // The figure's head is a circle of radius 12 px drawn with cubic arcs: its handles lie about
   // 1.7 px outside the disc, beyond the 1 px margin. A target that never moves: containment

@@ -654,6 +654,14 @@ TEST_CASE("a flag ripples from its pole: the pole holds, the free end moves most
   CHECK(free_end > 3.0);
   CHECK(pole < 0.05 * free_end);
   CHECK(loop_gap(pts, F) < 1e-9);
+  // The pole's own points do not move at all (the cloth's edge along it may, a little).
+  size_t pole_points = 0;
+  for (const auto& sp : s.paths[0].subpaths) pole_points += sp.points.size();
+  const size_t per = pts.size() / F;
+  double pole_travel = 0;
+  for (int f = 0; f < F; ++f)
+    for (size_t i = 0; i < pole_points; ++i) pole_travel = std::max(pole_travel, std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
+  CHECK(pole_travel == 0.0);
   // A fish: no thin part at a side, the wave moves both ends.
   const Scene fish = read_svg_string(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
@@ -843,6 +851,42 @@ TEST_CASE("a ferris wheel's small cabins ride round with the turning wheel, upri
   CHECK(std::hypot(q.x - 100, q.y - 100) == doctest::Approx(std::hypot(60.0, 6.0)).epsilon(1e-6));
   CHECK(std::fabs(q.x - 100) == doctest::Approx(6.0).epsilon(1e-6));
   CHECK(std::hypot(pts[0].x - pts[6 * per].x, pts[0].y - pts[6 * per].y) == 0.0);  // the stand holds
+}
+
+TEST_CASE("a ferris wheel with four cabins turns a quarter a loop: spokes about its centre, each cabin upright as one, the stand still") {
+  const Fixture fx("ferris.svg");  // paths 0-7 cabins (roof, body), 8 rim, 9-11 spokes and hub, 12-14 stand, 15 shadow
+  const MotionPlan plan = fx.plan("the ferris wheel turns slowly");
+  REQUIRE(plan.actions.size() == 1);
+  const PlannedAction& a = plan.actions[0];
+  CHECK(a.primitive == Primitive::Spin);
+  CHECK(a.parts == std::vector<int>{fx.rig.part_of_path[8]});
+  CHECK(a.amp == doctest::Approx(0.25));  // four riders evenly round it: one spacing a loop
+  const int F = 13;
+  const auto pts = animate_plan(fx.scene, fx.rig, plan, F);
+  const size_t per = pts.size() / F;
+  const auto t = fx.travel(pts, F);
+  CHECK(t[12] == 0.0);
+  CHECK(t[13] == 0.0);
+  CHECK(t[14] == 0.0);
+  CHECK(t[15] == 0.0);  // the rim's shadow drawn once does not ride
+  // The horizontal spoke's end (156,88) turns a quarter about (100,90): to (102,146) or (98,34).
+  const Vec2 q = pts[(F - 1) * per + fx.first_point(9) + 3] - pts[fx.first_point(9) + 3];
+  const Vec2 end = pts[(F - 1) * per + fx.first_point(9) + 3];
+  CHECK(pts[fx.first_point(9) + 3].x == doctest::Approx(156.0));
+  CHECK(std::min(std::hypot(end.x - 102, end.y - 146), std::hypot(end.x - 98, end.y - 34)) < 1e-6);
+  CHECK(std::hypot(q.x, q.y) > 50.0);
+  // Each cabin's roof and body move by one vector in every frame (upright, together).
+  for (int c = 0; c < 4; ++c) {
+    CHECK(t[2 * c] > 10.0);
+    const size_t a0 = fx.first_point(2 * c), a1 = fx.first_point(2 * c + 2);
+    for (int f = 0; f < F; ++f) {
+      const Vec2 d = pts[f * per + a0] - pts[a0];
+      for (size_t i = a0; i < a1; ++i) {
+        CHECK(pts[f * per + i].x - pts[i].x == doctest::Approx(d.x));
+        CHECK(pts[f * per + i].y - pts[i].y == doctest::Approx(d.y));
+      }
+    }
+  }
 }
 
 TEST_CASE("a cabin hanging below the rim at the bottom stays in the canvas when it rides to the top") {

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <set>
 
 #include "svgmotion/svg_reader.h"
 #include "video/part_rig.h"
@@ -179,6 +180,27 @@ TEST_CASE("a tall thin part above the body is a raised wing, not the head; a rou
            <g><path d="M 90 60 L 130 60 L 130 105 L 90 105 Z" fill="#e7a"/></g></svg>)", "head.svg");
   const Rig rh = build_rig(h, {});
   CHECK(rh.parts[1].role == Role::Head);
+}
+
+TEST_CASE("a wheel drawn in one group with its cabins and stand: its spokes hang from it, each cabin piece is a part, the stand holds") {
+  const Rig r = rig_of("ferris.svg");  // paths 0-7 cabins (roof, body), 8 rim, 9-11 spokes and hub, 12-14 stand, 15 shadow
+  const int rim = r.part_of_path[8], spokes = r.part_of_path[9], stand = r.part_of_path[12];
+  CHECK(r.part_of_path[10] == spokes);
+  CHECK(r.part_of_path[11] == spokes);
+  CHECK(spokes != rim);
+  CHECK(r.parts[spokes].parent == rim);
+  CHECK(r.parts[spokes].carried);
+  CHECK(r.part_of_path[13] == stand);
+  CHECK(r.part_of_path[14] == stand);
+  CHECK(r.part_of_path[15] == stand);  // the rim's shadow drawn once is no cabin
+  CHECK(stand != rim);
+  CHECK(stand != spokes);
+  CHECK_FALSE(r.parts[stand].carried);
+  std::set<int> cabins;
+  for (int p = 0; p < 8; ++p) cabins.insert(r.part_of_path[p]);
+  CHECK(cabins.size() == 8);  // the bottom body too: it hangs below the wheel's box, under its roof
+  CHECK(cabins.count(stand) == 0);
+  CHECK(cabins.count(spokes) == 0);
 }
 
 }  // TEST_SUITE

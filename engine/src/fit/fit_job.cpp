@@ -20,6 +20,7 @@
 #include "fit/document_order.h"
 #include "fit/group_transform.h"
 #include "fit/inbetween.h"
+#include "fit/motion_groups.h"
 #include "fit/result_gate.h"
 #include "fit/palette.h"
 #include "fit/preview_video.h"
@@ -132,8 +133,23 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   const Scene scene = split_scene(as_read, split);
   if (const int added = added_points(split))
     log::debug("fit: %d control points added by splitting long segments", added);
-  const Scene fit_scene =
+  std::vector<std::string> held_groups;
+  Scene palette_scene =
       job.palette ? apply_palette(scene, read_palette(*job.palette), job.palette->string()) : scene;
+  // A procedural target's groups split where its motion moves them apart (motion_groups.h); not
+  // when group transforms are exported (a document group has one transform).
+  if (job.motion && !job.group_transforms) {
+    std::ifstream in(*job.motion);
+    const nlohmann::json motion = nlohmann::json::parse(in, nullptr, false);
+    std::vector<std::string> notes;
+    if (!motion.is_discarded()) {
+      palette_scene = split_groups_by_motion(palette_scene, motion, &notes);
+      held_groups = still_groups(palette_scene, motion);
+    }
+    for (const std::string& n : notes) log::info("fit: group %s", n.c_str());
+    if (!held_groups.empty()) log::info("fit: %zu groups the target holds still are held at rest", held_groups.size());
+  }
+  const Scene fit_scene = std::move(palette_scene);
   const RenderSize size = render_size(scene, job.width);
   TargetOptions to;
   to.keyframes = keyframes;
@@ -188,6 +204,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
       refine_w > 0 ? std::max(0, static_cast<int>(std::lround(job.refine_share * fo.iterations))) : 0;
   if (refine_iters == 0) refine_w = 0;
   FitOptions coarse_options = fo;
+  coarse_options.held_groups = held_groups;
   const int total_iters = fo.iterations + refine_iters;
   // Progress and ETA count work, not iterations: a refinement iteration costs about as many
   // coarse ones as it has times the pixels.
@@ -351,6 +368,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     const RenderSize fine_size = render_size(scene, refine_w);
     fine_target = load_target(*target_path, fine_size.width, fine_size.height, to);
     FitOptions fine_options = fo.refined_at(static_cast<double>(fine_size.width) / size.width);
+    fine_options.held_groups = held_groups;
     fine_options.iterations = refine_iters;
     fine_blur = match_blur(*fine_target, fine_size);
     fine_options.render_blur_sigma = fine_blur.render_sigma;

@@ -37,6 +37,9 @@ struct FitJob {
   std::filesystem::path svg, target, out;
   std::optional<std::filesystem::path> palette;
   std::optional<std::filesystem::path> tracks;  // tracks.json of the tracker stage
+  // The procedural video stage's report (motion.json): groups it moves apart are fitted as
+  // several (motion_groups.h).
+  std::optional<std::filesystem::path> motion;
   // The document the animation is written into (default: svg). The fitter plugin fits the
   // pipeline's working copy (layered.svg) and exports into the user's own input.svg: paths are
   // matched by id and the working copy's paint order is applied (document_order.h).

@@ -79,6 +79,17 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
   if (opt_.w_cohesion > 0) fo.cohesion_radius_px = opt_.cohesion_radius_frac * size_.width;
   fplan_ = plan_fit(scene, plan_, fo);
   G_ = fplan_.n_groups;
+  held_group_.assign(G_, 0);
+  for (int g = 0; g < G_; ++g)
+    held_group_[g] = std::find(opt_.held_groups.begin(), opt_.held_groups.end(), fplan_.group_ids[g]) != opt_.held_groups.end();
+  for (int b = 0; b < fplan_.n_nodes; ++b) {
+    // A node's group is that of its control points (nodes are made per group).
+    const int first = fplan_.node_cp_first[b];
+    const bool held = first < fplan_.node_cp_first[b + 1] && held_group_[fplan_.cp_group[fplan_.node_cp[first]]];
+    if (!held) continue;
+    if (!held_nodes_.empty() && held_nodes_.back().first + held_nodes_.back().second == b) ++held_nodes_.back().second;
+    else held_nodes_.push_back({b, 1});
+  }
   raster_ = std::make_unique<ClRaster>(rt_, plan_, K_, opt_.render_blur_sigma);
   raster_->set_targets(target.rgba);
   steps_.assign(K_, 0);
@@ -280,6 +291,20 @@ void Fitter::enqueue_motion(int frames) {
   q.enqueueNDRangeKernel(k_motion_, cl::NullRange, range);
 }
 
+void Fitter::zero_held_gradients() {
+  auto& q = rt_.queue();
+  const float zero = 0;
+  for (int k = 0; k < K_; ++k) {
+    for (int g = 0; g < G_; ++g)
+      if (held_group_[g])
+        q.enqueueFillBuffer(grad_params_, zero, (static_cast<size_t>(k) * G_ + g) * kMotionParams * sizeof(float),
+                            kMotionParams * sizeof(float));
+    for (const auto& [first, count] : held_nodes_)
+      q.enqueueFillBuffer(grad_field_, zero, (static_cast<size_t>(k) * fplan_.n_nodes + first) * 2 * sizeof(float),
+                          static_cast<size_t>(count) * 2 * sizeof(float));
+  }
+}
+
 float Fitter::frame_loss(int k) {
   enqueue_motion(k + 1);
   raster_->set_active_frames(k + 1);
@@ -338,6 +363,7 @@ void Fitter::warm_start(int k) {
   std::vector<float> tracked = copied;
   bool any = false;
   for (int g = 0; g < G_; ++g) {
+    if (held_group_[g]) continue;
     std::vector<Vec2> f, t;
     std::vector<double> w;
     for (size_t j = 0; j < index.size(); ++j)
@@ -392,6 +418,7 @@ void Fitter::warm_start_field(int k, const std::vector<int>& index, const PointT
   for (size_t j = 0; j < index.size(); ++j) {
     if (tracks.weight[j] < kMinWeight || tracks.isotropy[j] < kMinIsotropy) continue;
     const int i = index[j];
+    if (held_group_[fplan_.cp_group[i]]) continue;
     MotionParams th;
     for (int e = 0; e < kMotionParams; ++e) th[e] = par[fplan_.cp_group[i] * kMotionParams + e];
     // The homography's Jacobian at the point (central differences of the host model): an
@@ -461,7 +488,9 @@ LossTerms Fitter::fit_iteration() {
     //    offsets' gradient itself).
     const size_t nn = fplan_.n_nodes;
     if (nn) q.enqueueNDRangeKernel(k_field_back_, cl::NullRange, cl::NDRange(round_up(nn, 64), Ka));
-    // 7. Adam on every active keyframe (keyframe 0's homography stays the identity).
+    // 7. Adam on every active keyframe (keyframe 0's homography stays the identity; so do the
+    //    held groups' in every keyframe).
+    zero_held_gradients();
     q.enqueueNDRangeKernel(k_adam_p_, cl::NullRange,
                            cl::NDRange(round_up(static_cast<size_t>(K_) * G_ * kMotionParams, 64)));
     if (opt_.lr_offsets != 0)

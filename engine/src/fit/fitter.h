@@ -13,6 +13,8 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "fit/fit_plan.h"
@@ -101,6 +103,11 @@ struct FitOptions {
   // coarse width, not four times as much at twice the width: the image loss is a mean over
   // pixels and does not grow with the width. (Unscaled, parrot's refinement at 512 px held
   // its worst keyframe at 39.23 dB; scaled, 39.93.)
+  // Groups (by FitPlan::group_ids) that stay at rest in every keyframe: their homographies
+  // stay the identity and their fields zero (the warm starts pass them by and their gradients
+  // are zeroed before Adam). A procedural target holds them exactly (motion_groups.h). Free
+  // per-point offsets (deform: free) are not held.
+  std::vector<std::string> held_groups;
   FitOptions refined_at(double scale) const {
     FitOptions o = *this;
     const float s2 = static_cast<float>(scale * scale);
@@ -209,6 +216,9 @@ class Fitter {
   std::vector<FlowField> flows_;
   std::unique_ptr<ClRaster> raster_;
   int real_cps_ = 0;  // control points that are not padding
+  std::vector<char> held_group_;                  // FitOptions::held_groups, per fit group
+  std::vector<std::pair<int, int>> held_nodes_;   // their field nodes: (first, count) runs
+  void zero_held_gradients();
   float lr_scale_ = 1;
  public:
   // Warm starts tried and kept so far (for reports and tests).

@@ -8,8 +8,12 @@
 #include <set>
 
 #include "svgmotion/error.h"
+#include "video/wheel_riders.h"
 
 namespace svgm {
+
+// The riders evenly spaced round the spinning `parts` (defined with animate_plan's wheel loads).
+int spin_symmetry(const Rig& rig, const std::vector<int>& parts);
 
 namespace {
 
@@ -36,13 +40,6 @@ constexpr double kArmHostWider = 1.15;
 // within this share of a wheel's width from its centre turn with it.
 constexpr double kWheelShare = 0.5;
 constexpr double kConcentric = 0.1;
-// A part whose middle is within this share of a turning wheel's radius rides round with it
-// when it is small beside the wheel (at most this share of its box: a cabin, not a stand).
-constexpr double kRideReach = 1.05;
-constexpr double kRideMaxArea = 0.1;
-// ... and its middle at least this share of the radius out from the centre (on the rim, not a
-// spoke: what hangs from the wheel nearer its centre turns with it).
-constexpr double kRimShare = 0.7;
 // A part hanging from a spinning part turns with it when this share of its box is inside (a
 // stand reaching into the wheel's box is not carried).
 constexpr double kSpinInsideShare = 0.9;
@@ -233,20 +230,35 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
   return v;
 }
 
+// The pole's parts at `side` of the figure (1 left, 2 right, 3 top, 4 bottom): the thin parts
+// (at most kPoleWidth of the figure's extent across that side) lying within kPoleEnd of it.
+std::vector<int> pole_parts(const Rig& rig, int side) {
+  const RigBox& F = rig.figure;
+  const bool across_x = side <= 2;  // a left or right pole: thin in x, spanning y
+  const double L = std::max(across_x ? F.w() : F.h(), 1e-9);
+  std::vector<int> out;
+  for (size_t i = 0; i < rig.parts.size(); ++i) {
+    const RigPart& P = rig.parts[i];
+    if (P.role == Role::Background || P.box.empty()) continue;
+    const double a0 = across_x ? P.box.x0 : P.box.y0, a1 = across_x ? P.box.x1 : P.box.y1;
+    const double s0 = across_x ? F.x0 : F.y0, s1 = across_x ? F.x1 : F.y1;
+    const bool near = side % 2 == 1 ? a1 <= s0 + kPoleEnd * L : a0 >= s1 - kPoleEnd * L;
+    if (near && a1 - a0 <= kPoleWidth * L) out.push_back(static_cast<int>(i));
+  }
+  return out;
+}
+
 // The side of the figure a pole holds (PlannedAction::anchored: 1 left, 2 right, 3 top, 4
-// bottom), 0 for none.
+// bottom), 0 for none: where the pole's parts together span kPoleSpan of the figure.
 int anchored_side(const Rig& rig) {
   const RigBox& F = rig.figure;
   for (int side = 1; side <= 4; ++side) {
-    const bool across_x = side <= 2;  // a left or right pole: thin in x, spanning y
-    const double L = std::max(across_x ? F.w() : F.h(), 1e-9), span = std::max(across_x ? F.h() : F.w(), 1e-9);
+    const bool across_x = side <= 2;
+    const double span = std::max(across_x ? F.h() : F.w(), 1e-9);
     std::vector<std::pair<double, double>> spans;
-    for (const auto& P : rig.parts) {
-      if (P.role == Role::Background || P.box.empty()) continue;
-      const double a0 = across_x ? P.box.x0 : P.box.y0, a1 = across_x ? P.box.x1 : P.box.y1;
-      const double s0 = across_x ? F.x0 : F.y0, s1 = across_x ? F.x1 : F.y1;
-      const bool near = side % 2 == 1 ? a1 <= s0 + kPoleEnd * L : a0 >= s1 - kPoleEnd * L;
-      if (near && a1 - a0 <= kPoleWidth * L) spans.push_back(across_x ? std::make_pair(P.box.y0, P.box.y1) : std::make_pair(P.box.x0, P.box.x1));
+    for (int p : pole_parts(rig, side)) {
+      const RigBox& b = rig.parts[p].box;
+      spans.push_back(across_x ? std::make_pair(b.y0, b.y1) : std::make_pair(b.x0, b.x1));
     }
     std::sort(spans.begin(), spans.end());
     double covered = 0, lo = 0, hi = -1e300;
@@ -477,6 +489,16 @@ struct Builder {
       plan.warnings.push_back("'" + words + "': " + (note.empty() ? std::string("no part for it") : note) + "; " + verb.name + " is left out");
       return;
     }
+    // A wheel with riders evenly spaced round it (a ferris wheel's cabins) looks the same after
+    // one spacing of a turn: it turns by that much a loop, so the loop goes on where it began.
+    // A whole turn went 24 degrees a keyframe, past half the spacing of eight spokes, and the
+    // fitter followed each spoke back to its neighbour's place.
+    std::string spacing;
+    if (a.primitive == Primitive::Spin)
+      if (const int n = spin_symmetry(rig, a.parts); n > 0) {
+        a.amp = (mods.speed > 1 ? 2.0 : 1.0) / n;
+        spacing = std::to_string(n) + " riders evenly round it: " + (mods.speed > 1 ? "two spacings" : "one spacing") + " of a turn a loop";
+      }
     Pairing pairing = base.pairing;
     if (pairing == Pairing::OneSide && (mods.both || plural)) pairing = Pairing::Mirrored;
     if (pairing == Pairing::OneAtATime) pairing = mods.both || plural ? Pairing::Alternating : Pairing::OneSide;
@@ -513,6 +535,7 @@ struct Builder {
     if (!note.empty()) a.why += "; " + note;
     if (!paddle.empty()) a.why += "; " + paddle;
     if (!instead.empty()) a.why += "; " + instead;
+    if (!spacing.empty()) a.why += "; " + spacing;
     if (a.anchored != 0) {
       static const char* sides[] = {"", "left", "right", "top", "bottom"};
       a.why += std::string("; held by a pole at its ") + sides[a.anchored] + ": the wave runs from there";
@@ -835,7 +858,99 @@ double overlap_share(const RigBox& a, const RigBox& b) {
   return ox > 0 && oy > 0 ? ox * oy / std::max(a.area(), 1e-12) : 0;
 }
 
+// What each spinning part moves (wheel_riders.h): per part, the spinning part it turns with (in
+// its own frame: itself, or an ancestor holding at least kSpinInsideShare of its box, its spokes
+// and hub, not its stand), or the one it rides round upright (a small part on its rim, a ferris
+// wheel's cabin, whatever the rig hangs it from; a small part stacked under a rider rides with
+// it), where each rider hangs from and the box of its stack. A stack hangs from the middle of
+// the top of its piece whose top lies nearest the rim (a cabin's roof; its body below rides
+// with it, a bracket reaching in towards the hub does not lift it), which goes round the
+// wheel's centre. Turned with the wheel, or carried round by its middle, a cabin hanging below
+// the rim at the bottom came to stand out above it at the top, and left the canvas; its roof
+// and body hanging each from its own top parted as they went round.
+struct WheelLoads {
+  std::vector<int> turns_with, rides;
+  std::vector<Vec2> hang;
+  std::vector<RigBox> stack;
+};
+
+WheelLoads wheel_loads(const Rig& rig, const std::vector<char>& spins) {
+  const int G = static_cast<int>(rig.parts.size());
+  WheelLoads L{std::vector<int>(G, -1), std::vector<int>(G, -1), std::vector<Vec2>(G), std::vector<RigBox>(G)};
+  auto free_part = [&](int g) { return g != rig.root && rig.parts[g].role != Role::Background; };
+  for (int g = 0; g < G; ++g) {
+    const RigBox& gb = rig.parts[g].box;
+    for (int a = g, guard = 0; a >= 0 && guard < 64; a = rig.parts[a].parent, ++guard)
+      if (spins[a] && (a == g || (rig.parts[g].carried && a == rig.parts[g].parent) || overlap_share(gb, rig.parts[a].box) >= kSpinInsideShare)) {
+        (a != g && !rig.parts[g].carried && rides_wheel(gb, rig.parts[a].box) ? L.rides : L.turns_with)[g] = a;
+        break;
+      }
+    for (int a = 0; a < G && L.turns_with[g] < 0 && L.rides[g] < 0 && free_part(g) && !rig.parts[g].carried; ++a)
+      if (spins[a] && a != g && rides_wheel(gb, rig.parts[a].box)) L.rides[g] = a;
+  }
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (int g = 0; g < G; ++g) {
+      if (L.turns_with[g] >= 0 || L.rides[g] >= 0 || !free_part(g)) continue;
+      for (int h = 0; h < G && L.rides[g] < 0; ++h)
+        if (L.rides[h] >= 0 && rig.parts[g].box.area() <= kRideMaxArea * rig.parts[L.rides[h]].box.area() &&
+            riders_stack(rig.parts[g].box, rig.parts[h].box)) {
+          L.rides[g] = L.rides[h];
+          grew = true;
+        }
+    }
+  }
+  for (int a = 0; a < G; ++a) {
+    if (!spins[a]) continue;
+    std::vector<int> riders;
+    std::vector<RigBox> boxes;
+    for (int g = 0; g < G; ++g)
+      if (L.rides[g] == a) {
+        riders.push_back(g);
+        boxes.push_back(rig.parts[g].box);
+      }
+    // Only riders in sets ride (in_rider_sets); a piece drawn once stays where the rig has it.
+    const std::vector<char> in_set = in_rider_sets(boxes);
+    for (size_t i = riders.size(); i-- > 0;)
+      if (!in_set[i]) {
+        L.rides[riders[i]] = -1;
+        riders.erase(riders.begin() + static_cast<long>(i));
+        boxes.erase(boxes.begin() + static_cast<long>(i));
+      }
+    const std::vector<RigBox> stacks = rider_stacks(boxes);
+    const Vec2 c = rig.parts[a].box.centre();
+    const double R = 0.5 * rig.parts[a].box.w();
+    for (size_t i = 0; i < riders.size(); ++i) {
+      L.stack[riders[i]] = stacks[i];
+      double best = 1e300;
+      for (size_t j = 0; j < riders.size(); ++j) {
+        if (!(stacks[j].x0 == stacks[i].x0 && stacks[j].y0 == stacks[i].y0 && stacks[j].x1 == stacks[i].x1 && stacks[j].y1 == stacks[i].y1))
+          continue;
+        const Vec2 top{boxes[j].centre().x, boxes[j].y0};
+        const double off = std::fabs(std::hypot(top.x - c.x, top.y - c.y) - R);
+        if (off < best) { best = off; L.hang[riders[i]] = top; }
+      }
+    }
+  }
+  return L;
+}
+
 }  // namespace
+
+// The riders evenly spaced round the spinning `parts` (rider_symmetry), the most of any.
+int spin_symmetry(const Rig& rig, const std::vector<int>& parts) {
+  std::vector<char> spins(rig.parts.size(), 0);
+  for (int p : parts) spins[p] = 1;
+  const WheelLoads L = wheel_loads(rig, spins);
+  int n = 0;
+  for (int p : parts) {
+    std::vector<RigBox> stacks;
+    for (size_t g = 0; g < rig.parts.size(); ++g)
+      if (L.rides[g] == p) stacks.push_back(L.stack[g]);
+    n = std::max(n, rider_symmetry(stacks, rig.parts[p].box));
+  }
+  return n;
+}
 
 std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames) {
   const int G = static_cast<int>(rig.parts.size());
@@ -860,12 +975,23 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   std::vector<char> held(G, 0);
   for (int g = 0; g < G; ++g)
     for (int h : plan.held) held[g] = held[g] || under(g, h);
+  // The pole a wave runs from holds still (the wave's weight is small but not nothing across
+  // its width: a flag's pole moved 0.8 px and the fitted one drifted out of the canvas).
+  for (const auto& a : plan.actions)
+    if (a.primitive == Primitive::Undulate && a.anchored != 0)
+      for (int p : pole_parts(rig, a.anchored)) held[p] = 1;
   // Chains hanging from the root that reach the lowest kPlanted of the figure stand on the
   // ground (legs, feet): the root's own swing does not carry them.
   std::vector<char> planted(G, 0);
   for (int g = 0; g < G; ++g)
     planted[g] = rig.parts[g].parent == rig.root && rig.root >= 0 && !reach[g].empty() &&
                  reach[g].y1 >= rig.figure.y1 - kPlanted * rig.figure.h();
+
+  std::vector<char> spinning(G, 0);
+  for (const auto& a : plan.actions)
+    if (a.primitive == Primitive::Spin)
+      for (int p : a.parts) spinning[p] = 1;
+  const WheelLoads loads = wheel_loads(rig, spinning);
 
   std::vector<Vec2> out;
   out.reserve(static_cast<size_t>(frames) * (scene.segment_count() * 3 + scene.paths.size() * 2));
@@ -899,38 +1025,12 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
       else if (p == rig.root && planted[g]) world[g] = local[p] * local[g];
       else world[g] = p >= 0 ? world[p] * local[g] : local[g];
     }
-    // A spinning part turns in its own frame, and carries what hangs from it inside its box
-    // (its spokes and hub, not its stand). Small parts with their middle on its rim (a ferris
-    // wheel's cabins, whether the rig hangs them from the wheel or elsewhere) ride round with it
-    // upright: each hangs from the middle of its top, which goes round the wheel's centre.
-    // Turned with the wheel, or carried round by its middle, a cabin hanging below the rim at
-    // the bottom came to stand out above it at the top, and left the canvas.
-    auto on_rim = [&](int g, int a) {
-      const RigPart& A = rig.parts[a];
-      const RigBox& gb = rig.parts[g].box;
-      const Vec2 d = gb.centre() - A.box.centre();
-      const double r = std::hypot(d.x, d.y), R = 0.5 * A.box.w();
-      // (In a corner of the wheel's box a cabin's middle may lie beyond the rim's radius.)
-      return a != g && gb.area() <= kRideMaxArea * A.box.area() && r >= kRimShare * R &&
-             (r <= kRideReach * R || overlap_share(gb, A.box) >= kSpinInsideShare);
-    };
+    // A spinning part turns in its own frame and carries what turns with it; its riders go
+    // round upright (wheel_loads).
     for (int g = 0; g < G; ++g) {
-      int turns_with = -1, rides = -1;
-      for (int a = g, guard = 0; a >= 0 && guard < 64; a = rig.parts[a].parent, ++guard)
-        if (spins[a] && (a == g || overlap_share(rig.parts[g].box, rig.parts[a].box) >= kSpinInsideShare)) {
-          (on_rim(g, a) ? rides : turns_with) = a;
-          break;
-        }
-      if (turns_with >= 0) {
-        world[g] = world[g] * spin[turns_with];
-        continue;
-      }
-      if (g == rig.root || rig.parts[g].role == Role::Background) continue;
-      for (int a = 0; a < G && rides < 0; ++a)
-        if (spins[a] && on_rim(g, a)) rides = a;
-      if (rides < 0) continue;
-      const RigBox& gb = rig.parts[g].box;
-      const Vec2 hang{gb.centre().x, gb.y0}, to = spin[rides].apply(hang);
+      if (loads.turns_with[g] >= 0) world[g] = world[g] * spin[loads.turns_with[g]];
+      if (loads.rides[g] < 0) continue;
+      const Vec2 hang = loads.hang[g], to = spin[loads.rides[g]].apply(hang);
       world[g] = Affine::translate(to.x - hang.x, to.y - hang.y) * world[g];
     }
 

@@ -12,6 +12,7 @@
 #include "fit/document_order.h"
 #include "scene/backdrop.h"
 #include "svgmotion/svg_reader.h"
+#include "video/wheel_riders.h"
 
 namespace svgm {
 
@@ -192,7 +193,114 @@ struct Units {
   std::set<int> wheels;
   int root = -1;  // the root's index when it is already known (split_root_limbs)
   std::set<int> from_root;  // parts split from the root's group (split_root_limbs)
+  std::map<int, int> carried_by;  // a path that turns with a wheel -> the wheel's path (split_wheel_loads)
 };
+
+// Points on a path's curves (each cubic at quarters): a circle's handles lie 0.14 of its
+// radius beyond it.
+std::vector<Vec2> curve_points(const Path& p) {
+  std::vector<Vec2> out;
+  for (const auto& sp : p.subpaths) {
+    const auto& c = sp.points;
+    for (size_t s = 0; s + 3 < c.size(); s += 3)
+      for (double t : {0.0, 0.25, 0.5, 0.75}) {
+        const double u = 1 - t;
+        out.push_back(u * u * u * c[s] + 3 * u * u * t * c[s + 1] + 3 * u * t * t * c[s + 2] + t * t * t * c[s + 3]);
+      }
+    if (!c.empty()) out.push_back(c.back());
+  }
+  return out;
+}
+
+// What a wheel carries, drawn in one group with what holds it (a ferris wheel's spokes, hub and
+// cabins grouped with its stand; a spoke grouped with a leg of the stand): in every part of
+// several paths, the paths that turn with a wheel (wheel_riders.h, the largest wheel first)
+// become a part of their own that hangs from it, and when at least kMinSymmetricRiders of
+// its paths ride on the wheel's rim (cabins, in sets: in_rider_sets), each of those becomes a part of its own (it rides
+// round upright, motion_plan.cpp). What is left (the stand) stays a part that holds still.
+// Kept whole, the spokes held still with the stand while the rim turned, and cabins grouped
+// with them never rode.
+void split_wheel_loads(const Scene& scene, Units& U) {
+  std::vector<int> wheels(U.wheels.begin(), U.wheels.end());
+  std::sort(wheels.begin(), wheels.end(), [&](int a, int b) { return path_box(scene.paths[a]).area() > path_box(scene.paths[b]).area(); });
+  if (wheels.empty()) return;
+  // The riders of each wheel among all the scene's paths: on its rim (rides_wheel), or small
+  // and stacked under one that is (a cabin's body hanging below the rim under its roof); of
+  // those, the ones in sets (in_rider_sets).
+  std::map<int, std::set<int>> riders_of;
+  for (int w : wheels) {
+    const RigBox wb = path_box(scene.paths[w]);
+    std::vector<int> cand;
+    std::vector<char> is_cand(scene.paths.size(), 0);
+    std::vector<char> turns(scene.paths.size(), 0);
+    for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
+      if (static_cast<int>(pi) == w) continue;
+      const RigBox b = path_box(scene.paths[pi]);
+      turns[pi] = turns_with_wheel(b, curve_points(scene.paths[pi]), wb);
+      if (!turns[pi] && rides_wheel(b, wb)) {
+        cand.push_back(static_cast<int>(pi));
+        is_cand[pi] = 1;
+      }
+    }
+    for (bool grew = !cand.empty(); grew;) {
+      grew = false;
+      for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
+        if (static_cast<int>(pi) == w || is_cand[pi] || turns[pi]) continue;
+        const RigBox b = path_box(scene.paths[pi]);
+        bool stacked = false;
+        for (int r : cand) stacked = stacked || riders_stack(b, path_box(scene.paths[r]));
+        if (stacked && b.area() <= kRideMaxArea * wb.area()) {
+          cand.push_back(static_cast<int>(pi));
+          is_cand[pi] = 1;
+          grew = true;
+        }
+      }
+    }
+    std::vector<RigBox> boxes;
+    for (int pi : cand) boxes.push_back(path_box(scene.paths[pi]));
+    const std::vector<char> in_set = in_rider_sets(boxes);
+    for (size_t i = 0; i < cand.size(); ++i)
+      if (in_set[i]) riders_of[w].insert(cand[i]);
+  }
+  Units out = U;
+  out.paths.clear();
+  out.group.clear();
+  out.split.clear();
+  for (size_t u = 0; u < U.paths.size(); ++u) {
+    std::vector<int> rest = U.paths[u];
+    std::vector<std::vector<int>> pieces;
+    for (int w : wheels) {
+      if (rest.size() < 2 || std::find(rest.begin(), rest.end(), w) != rest.end()) break;
+      const RigBox wb = path_box(scene.paths[w]);
+      std::vector<int> inside, riders, others;
+      for (int pi : rest) {
+        const RigBox b = path_box(scene.paths[pi]);
+        if (turns_with_wheel(b, curve_points(scene.paths[pi]), wb)) inside.push_back(pi);
+        else if (riders_of[w].count(pi)) riders.push_back(pi);
+        else others.push_back(pi);
+      }
+      if (riders.size() < static_cast<size_t>(kMinSymmetricRiders)) {
+        others.insert(others.end(), riders.begin(), riders.end());
+        riders.clear();
+      }
+      if (inside.empty() && riders.empty()) continue;
+      for (int pi : inside) out.carried_by[pi] = w;
+      if (!inside.empty()) pieces.push_back(inside);
+      for (int pi : riders) pieces.push_back({pi});
+      std::sort(others.begin(), others.end());
+      rest = others;
+      if (rest.empty()) break;
+    }
+    if (!rest.empty()) pieces.push_back(rest);
+    std::sort(pieces.begin(), pieces.end());  // in paint order of their first paths
+    for (auto& piece : pieces) {
+      out.paths.push_back(piece);
+      out.group.push_back(U.group[u]);
+      out.split.push_back(U.split[u] || pieces.size() > 1);
+    }
+  }
+  U = std::move(out);
+}
 
 // The parts: the scene's groups, each split by the names of its paths where the document
 // names them apart (a grouper may merge a rider's named legs into the bicycle they overlap).
@@ -240,6 +348,7 @@ Units units_of(const Scene& scene, const SourceNames& names) {
       unit_split.push_back(split);
     }
   }
+  split_wheel_loads(scene, U);
   return U;
 }
 
@@ -353,6 +462,8 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
     double score = std::max(P.area, 1e-9) / (1 + d * d);
     if (has_word(P.words, {"body", "torso", "trunk"})) score = 1e300;
     if (g == U.root) score = 1e301;
+    // What a wheel carries hangs from the wheel: it is never the root (its wheel may be).
+    if (U.carried_by.count(unit_paths[g].front())) score = 0;
     if (score > best) { best = score; rig.root = g; }
   }
   RigPart& R = rig.parts[rig.root];
@@ -367,12 +478,24 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
     if (g == rig.root || P.role == Role::Background || P.box.empty()) continue;
     int parent = rig.root;
     double best_overlap = overlap(P.box, R.box), best_gap = gap(P.box, R.box);
-    // A limb split from the root's group hangs from the root (the grouper drew it with the body,
-    // not with a raised arm's neighbour, the head).
-    if (P.area < R.area && !U.from_root.count(g))
+    // What turns with a wheel hangs from it (split_wheel_loads), not from the stand whose box
+    // holds its box. A limb split from the root's group hangs from the root (the grouper drew
+    // it with the body, not with a raised arm's neighbour, the head).
+    int wheel = -1;
+    if (const auto it = U.carried_by.find(unit_paths[g].front()); it != U.carried_by.end())
+      for (int h = 0; h < G; ++h)
+        if (h != g && unit_paths[h].size() == 1 && unit_paths[h][0] == it->second) wheel = h;
+    if (wheel >= 0) {
+      parent = wheel;
+      P.carried = true;
+    }
+    else if (P.area < R.area && !U.from_root.count(g))
       for (int h = 0; h < G; ++h) {
         const RigPart& Q = rig.parts[h];
         if (h == g || h == rig.root || Q.role == Role::Background || Q.box.empty()) continue;
+        // A wheel does not hang from what it carries.
+        if (const auto it = U.carried_by.find(unit_paths[h].front()); it != U.carried_by.end() && it->second == unit_paths[g].front())
+          continue;
         if (!(Q.area > P.area || (Q.area == P.area && h < g))) continue;
         const double o = overlap(P.box, Q.box), gp = gap(P.box, Q.box);
         if (o > best_overlap || (best_overlap == 0 && o == 0 && gp < best_gap)) {

@@ -65,6 +65,8 @@ struct RigPart {
                                     // of its box (a ghost's hem, a bat's feet): its core's width
   double area = 0;            // fill area of its outlines (shoelace over control polygons)
   bool round = false;         // a wheel-like part
+  bool carried = false;       // turns with the wheel it hangs from (its spokes and hub drawn in
+                              // one group with its stand: part_rig.cpp's split_wheel_loads)
   std::string why;            // one phrase: how its role was found
 };
 
