@@ -166,6 +166,12 @@ inline float4 paint_at(float4 color, __global const float4* prow, int painted, i
   return painted ? prow[x] : color;
 }
 
+/* The first row of draw image `p`'s paint (any valid address when p < 0: paint_at ignores it). */
+inline __global const float4* paint_image(__global const float4* paint, int p, int width,
+                                          int height) {
+  return paint + (size_t)max(p, 0) * height * width;
+}
+
 inline void composite_span(__local float* acc, __local float4* out, int* hlo, int* hhi, int xlo,
                            int xhi, int width, float4 color, __global const float4* prow,
                            int painted, int rule) {
@@ -329,7 +335,7 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
     const float4 color = draw_color[d];
     const int rule = draw_rule[d];
     const int painted = draw_paint[d] >= 0;
-    __global const float4* pimg = paint + (size_t)max(draw_paint[d], 0) * height * width;
+    __global const float4* pimg = paint_image(paint, draw_paint[d], width, height);
     for (int r = 0; r < rows; ++r) {
       if (xhi[r] >= xlo[r])
         composite_span(acc + r * stride, band_rgba + r * width, &hlo[r], &hhi[r], xlo[r], xhi[r],

@@ -378,7 +378,7 @@ inline int replay_band(__global const float4* L, __global const float4* B,
     const float4 color = draw_color[d];
     const int rule = draw_rule[d];
     const int painted = draw_paint[d] >= 0;
-    __global const float4* pimg = paint + (size_t)max(draw_paint[d], 0) * height * width;
+    __global const float4* pimg = paint_image(paint, draw_paint[d], width, height);
     for (int r = 0; r < rows; ++r) {
       if (xhi[r] >= xlo[r])
         replay_span(acc + r * stride, mark + r * width, band_rgba + r * width, &hlo[r], &hhi[r],
@@ -527,7 +527,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
       const float4 color = draw_color[d];
       const int rule = draw_rule[d];
       const int painted = draw_paint[d] >= 0;
-      __global const float4* pimg = paint + (size_t)max(draw_paint[d], 0) * height * width;
+      __global const float4* pimg = paint_image(paint, draw_paint[d], width, height);
       int tq = draw_tape[d];
       int slo[BAND_H], shi[BAND_H]; /* the spans written into gcell, cleared after the walk */
       for (int r = 0; r < rows; ++r) {

@@ -120,6 +120,8 @@ class ClRaster {
   int pool_asked_ = 0;
   cl::Event pool_read_;
   void resize_pool(int entries);
+  // Waits for the pending read of pool_asked_, if any; returns whether there was one.
+  bool finish_pool_read();
   cl::Kernel k_blur_y_loss_, k_loss_total_, k_backward_, k_gather_lines_,
       k_gather_points_, k_stroke_back_, k_flatten_back_;
   // The loss's constant parts (kernels/loss.cl): Q = bg·(G∗1) − G∗T, R = G∗Q, Σ Q² per frame,

@@ -109,19 +109,23 @@ void ClRaster::init_backward() {
 }
 
 void ClRaster::resize_pool(int entries) {
-  if (pool_()) device_bytes_ -= std::max<size_t>(std::max(pool_cap_, 1), 1) * 4 * sizeof(float);
+  if (pool_()) device_bytes_ -= static_cast<size_t>(std::max(pool_cap_, 1)) * 4 * sizeof(float);
   pool_cap_ = std::max(entries, 0);
   pool_ = make(static_cast<size_t>(std::max(pool_cap_, 1)) * 4 * sizeof(float));
   set_args_at(k_taped_, 14, pool_, pool_cap_);
   set_args_at(k_backward_, 18, pool_, pool_draw_, pool_at_);
 }
 
+bool ClRaster::finish_pool_read() {
+  if (!pool_read_()) return false;
+  pool_read_.wait();
+  pool_read_ = cl::Event();
+  return true;
+}
+
 void ClRaster::set_tape_pool_capacity(int entries) {
   init_backward();
-  if (pool_read_()) {  // the last pass's request must not regrow the pool before the next pass
-    pool_read_.wait();
-    pool_read_ = cl::Event();
-  }
+  finish_pool_read();  // the last pass's request must not regrow the pool before the next pass
   resize_pool(entries);
 }
 
@@ -134,12 +138,8 @@ int ClRaster::tape_pool_misses() {
 void ClRaster::forward_taped(const std::array<float, 4>& background) {
   // The bands' request of the previous pass (read without blocking; done by now): grow the
   // pool by a quarter beyond it, so a fit whose drawing moves does not regrow every pass.
-  if (pool_read_()) {
-    pool_read_.wait();
-    pool_read_ = cl::Event();
-    if (pool_asked_ > pool_cap_)
-      resize_pool(static_cast<int>(std::min<size_t>(static_cast<size_t>(pool_asked_) * 5 / 4, kMaxPoolEntries)));
-  }
+  if (finish_pool_read() && pool_asked_ > pool_cap_)
+    resize_pool(static_cast<int>(std::min<size_t>(static_cast<size_t>(pool_asked_) * 5 / 4, kMaxPoolEntries)));
   events_.clear();
   auto& q = rt_.queue();
   k_taped_.setArg(13, cl_float4{{background[0], background[1], background[2], background[3]}});
