@@ -69,7 +69,9 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
                 std::to_string(size_.height) + " at that width");
   if (opt.iterations < 1) throw Error("iterations must be at least 1");
   K_ = target.keyframes;
-  plan_ = plan_raster(scene, size_.view, size_.width, size_.height);
+  RasterPlanOptions po;
+  po.max_chord_px = opt.max_chord_px;
+  plan_ = plan_raster(scene, size_.view, size_.width, size_.height, po);
   FitPlanOptions fo;
   fo.smooth_sigma_px = opt_.smooth_sigma_frac * size_.width;
   fo.g1_max_angle_deg = opt_.g1_max_angle_deg;

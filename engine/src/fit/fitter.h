@@ -63,6 +63,14 @@ struct FitOptions {
   // parrot 35.63 -> 36.66 dB; bug 40.68 -> 40.68 (1/48: octopus 36.34, little more).
   double field_spacing_frac = 1.0 / 32;
   float lr_field = 1e-1f;          // Adam learning rate of the field coefficients (pixels)
+  // Every cubic is drawn with at least one chord per this many pixels of its control polygon
+  // (RasterPlanOptions::max_chord_px). Wang's bound, taken at rest, gives a segment straight at
+  // rest one chord, which depends on its end points only: the loss never saw its handles, and
+  // the exported curve bulged wherever they drifted (kite: a straight edge bent into an S came
+  // out with a kink). Non-rigid 512-px targets judged at 1024 px, worst keyframe, Wang's bound
+  // alone -> 4 px: kite 35.68 -> 45.11 dB, man_skiing 34.03 -> 44.64, woman_wave 33.22 ->
+  // 41.46; octopus, parrot, bug, snail within +-0.5. 0: Wang's bound alone.
+  double max_chord_px = 4;
   // Ungrouped paths smaller than this fraction of the canvas width (both sides of the rest
   // bounding box) move with the path they sit on (FitPlanOptions::attach_small_px); 0: off.
   double attach_small_frac = 0.025;

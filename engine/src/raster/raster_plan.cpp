@@ -93,7 +93,16 @@ RasterPlan plan_raster(const Scene& scene, const Affine& view, int width, int he
       plan.vert_join.push_back(jk);
       ++plan.n_flat;
       for (size_t c = 0; c < sp.segment_count(); ++c) {
-        const int n = wang_segments(&px[3 * c], tol, opt.max_segments_per_cubic);
+        int n = wang_segments(&px[3 * c], tol, opt.max_segments_per_cubic);
+        if (opt.max_chord_px > 0) {  // at least one chord per max_chord_px of control polygon
+          const Vec2* q = &px[3 * c];
+          const double len = std::hypot(q[1].x - q[0].x, q[1].y - q[0].y) +
+                             std::hypot(q[2].x - q[1].x, q[2].y - q[1].y) +
+                             std::hypot(q[3].x - q[2].x, q[3].y - q[2].y);
+          const double chords = std::ceil(len / opt.max_chord_px);
+          if (std::isfinite(chords))
+            n = std::max(n, static_cast<int>(std::min<double>(chords, opt.max_segments_per_cubic)));
+        }
         for (int j = 1; j <= n; ++j) {
           const double t = static_cast<double>(j) / n, u = 1.0 - t;
           plan.vert_cp.push_back(cp0 + static_cast<int>(3 * c));

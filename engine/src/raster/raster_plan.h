@@ -26,6 +26,12 @@ enum : int { kRuleNonZero = 0, kRuleEvenOdd = 1 };
 struct RasterPlanOptions {
   double flatten_tolerance_px = 0.1;  // max distance of a flattened chord from its curve
   int max_segments_per_cubic = 64;
+  // When > 0, every cubic gets at least one chord per this many pixels of its control polygon,
+  // whatever its curvature at rest. The fitter needs it: a segment straight at rest gets one
+  // chord from Wang's bound, and that chord depends on the segment's end points only, so the
+  // loss never sees its handles, which are then free to bulge where no one looks (the exported
+  // curve does not draw what was fitted). Enough chords let the loss see a segment bend.
+  double max_chord_px = 0;
   // Gradient paints as per-pixel paint images (RasterPlan::paint) while they take at most this
   // many bytes; beyond it (a large render of many gradients) draws keep their mean colour.
   size_t max_paint_bytes = size_t{256} << 20;
