@@ -1,5 +1,7 @@
 // `svgmotion bench fit IN.svg --target VIDEO`: the fitter's speed at the fit's defaults (or the
-// given iterations, keyframes and size), without the outputs a fit writes. Times the setup
+// given iterations, keyframes and size), without the outputs a fit writes. The drawing is
+// fitted as `fit` fits it: long segments split (fit_job.h's max_segment), and the iterations
+// end where the loss stops falling (FitOptions::plateau_window), as in `fit`. Times the setup
 // (target loading, planning, kernel build) and the iterations apart, and reports the
 // iterations' wall time and CPU time (user + sys of every thread: PoCL's workers included,
 // the comparable figure on a shared machine), milliseconds per iteration and peak memory.
@@ -13,7 +15,9 @@
 #include <cstdio>
 
 #include "cli/cli_args.h"
+#include "fit/fit_job.h"
 #include "fit/fitter.h"
+#include "fit/segment_split.h"
 #include "opencl/runtime.h"
 #include "svgmotion/error.h"
 #include "svgmotion/render_size.h"
@@ -51,7 +55,9 @@ int bench_fit(const std::vector<std::string>& argv) {
   const int width = a.get_int("--size", 256, 32, 4096);
   const auto t0 = std::chrono::steady_clock::now();
   const double c0 = cpu_seconds();
-  const Scene scene = read_svg_file(a.positional[0]);
+  const Scene as_read = read_svg_file(a.positional[0]);
+  const Scene scene = split_scene(
+      as_read, plan_segment_split(as_read, FitJob{}.max_segment * std::max(as_read.width, as_read.height)));
   if (scene.paths.empty()) throw Error(a.positional[0] + ": nothing to animate (no visible paths)");
   const RenderSize size = render_size(scene, width);
   TargetOptions to;
@@ -72,15 +78,16 @@ int bench_fit(const std::vector<std::string>& argv) {
   const RasterPlan& plan = fitter.raster_plan();
   if (a.has("--json")) {
     std::printf("{\"svg\": \"%s\", \"paths\": %zu, \"lines\": %d, \"size\": [%d, %d], \"keyframes\": %d, "
-                "\"iterations\": %d, \"setup_s\": %.3f, \"wall_s\": %.3f, \"cpu_s\": %.3f, "
+                "\"iterations\": %d, \"converged\": %s, \"setup_s\": %.3f, \"wall_s\": %.3f, \"cpu_s\": %.3f, "
                 "\"ms_per_iteration\": %.3f, \"cpu_ms_per_iteration\": %.3f, \"loss\": %.6g, "
                 "\"peak_rss_mb\": %.1f, \"device\": \"%s\"}\n",
                 a.positional[0].c_str(), scene.paths.size(), plan.n_lines, size.width, size.height, keyframes,
-                n, setup_s, wall_s, cpu_s, 1e3 * wall_s / n, 1e3 * cpu_s / n, loss.total(), peak_rss_mb(),
+                n, fitter.converged() ? "true" : "false", setup_s, wall_s, cpu_s, 1e3 * wall_s / n, 1e3 * cpu_s / n, loss.total(), peak_rss_mb(),
                 rt.info().name.c_str());
   } else {
-    std::printf("%s: %zu paths, %d lines, %dx%d, %d keyframes, %d iterations\n", a.positional[0].c_str(),
-                scene.paths.size(), plan.n_lines, size.width, size.height, keyframes, n);
+    std::printf("%s: %zu paths, %d lines, %dx%d, %d keyframes, %d iterations%s\n", a.positional[0].c_str(),
+                scene.paths.size(), plan.n_lines, size.width, size.height, keyframes, n,
+                fitter.converged() ? " (the loss stopped falling)" : "");
     std::printf("  setup %.2f s (target, plan, kernels; CPU %.2f s)\n", setup_s, c1 - c0);
     std::printf("  iterations: wall %.2f s, CPU %.2f s (%.2f ms, CPU %.2f ms per iteration), final loss %.5g\n",
                 wall_s, cpu_s, 1e3 * wall_s / n, 1e3 * cpu_s / n, loss.total());

@@ -358,4 +358,34 @@ TEST_CASE("a straight edge bent by the target is fitted as the curve the export 
   std::filesystem::remove_all(dir);
 }
 
+// The fit stops when the loss stops falling, not before every keyframe is active and has had
+// its windows. A still figure on a still target: nothing to gain from the first window on.
+// K = 3 and 2000 iterations: keyframe 2 is activated at 0.7 * 2000 / 2 = 700 (keyframe 1 at 0,
+// the rest keyframe being pinned); the window ending at 800 is the reference, the one ending
+// at 900 gains nothing, so the fit ends at 900. Without the test it runs all 2000.
+TEST_CASE("the fit ends when no keyframe's loss falls over a window, after the last activation") {
+  const Scene s = figure();
+  const int K = 3;
+  const auto dir = std::filesystem::temp_directory_path() / ("svgm_plateau_" + std::to_string(::getpid()));
+  write_known_motion(s, 96, K, [](int, int) { return identity_params(); }, [](int, Vec2) { return Vec2{}; }, dir);
+  TargetOptions to;
+  to.keyframes = K;
+  const TargetFrames target = load_target(dir, 96, 96, to);
+  FitOptions fo;
+  fo.iterations = 2000;
+  REQUIRE(fo.plateau_window == 100);
+  Fitter fitter(runtime(), s, target, fo);
+  CHECK(fitter.activation_iteration(K - 1) == 700);
+  while (!fitter.done()) fitter.step();
+  CHECK(fitter.converged());
+  CHECK(fitter.iteration() == 900);
+  fo.plateau_window = 0;
+  fo.iterations = 1000;
+  Fitter full(runtime(), s, target, fo);
+  while (!full.done()) full.step();
+  CHECK_FALSE(full.converged());
+  CHECK(full.iteration() == 1000);
+  std::filesystem::remove_all(dir);
+}
+
 }  // TEST_SUITE

@@ -205,12 +205,15 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   if (refine_iters == 0) refine_w = 0;
   FitOptions coarse_options = fo;
   coarse_options.held_groups = held_groups;
-  const int total_iters = fo.iterations + refine_iters;
+  // The coarse stage's iterations: the budget, or fewer when its loss stops falling
+  // (FitOptions::plateau_window; set when the stage ends).
+  int coarse_iters = fo.iterations;
+  int total_iters = coarse_iters + refine_iters;
   // Progress and ETA count work, not iterations: a refinement iteration costs about as many
   // coarse ones as it has times the pixels.
   const double fine_cost = refine_w > 0 ? static_cast<double>(refine_w) * refine_w / (size.width * size.width) : 1;
-  auto work = [&](int it) { return std::min(it, fo.iterations) + std::max(0, it - fo.iterations) * fine_cost; };
-  const double total_work = work(total_iters);
+  auto work = [&](int it) { return std::min(it, coarse_iters) + std::max(0, it - coarse_iters) * fine_cost; };
+  double total_work = work(total_iters);
   ClRuntime rt(job.device);
   // Blur matching at each width the fit runs at: the render σ of the loss that makes our
   // rest pose look like the video's first frame (fit/blur_match.h).
@@ -357,6 +360,13 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   };
   run_stage(fitter, 0, true);
   save_checkpoint(ckpt, key, fitter.state());
+  const bool coarse_converged = fitter.converged();
+  if (coarse_converged) {
+    log::debug("fit: the loss stopped falling; the fit ends at iteration %d of %d", fitter.iteration(), fo.iterations);
+    coarse_iters = fitter.iteration();
+    total_iters = coarse_iters + refine_iters;
+    total_work = work(total_iters);
+  }
   // The refinement: every keyframe at the finer width, from the coarse result (not
   // checkpointed: a resumed fit redoes it from the coarse stage's last checkpoint).
   std::optional<TargetFrames> fine_target;
@@ -379,7 +389,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                refine_iters);
     // The guard's baseline: how well each coarse keyframe matches the video at the coarse width.
     const std::vector<float> coarse_losses = fitter.evaluate_keyframe_losses();
-    run_stage(*fine, coarse_options.iterations, false);
+    run_stage(*fine, coarse_iters, false);
     if (!stopped) {
       // The refinement's guard. A keyframe the refinement made worse at the coarse width (the
       // snail's pupil, off by more than the fine loss's reach, shrank to a hairline at 512 px:
@@ -477,7 +487,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                            {"svg", input.string()},
                            {"target", *target_path},
                            {"animation", anim.filename().string()},
-                           {"iterations", (fine ? coarse_options.iterations : 0) + final_fit.iteration()},
+                           {"iterations", (fine ? coarse_iters : 0) + final_fit.iteration()},
+                           {"converged_at", coarse_converged ? nlohmann::json(coarse_iters) : nlohmann::json()},
                            {"keyframes", final_fit.keyframes()},
                            {"key_times", timing.key_times},
                            {"duration_s", timing.duration_s},
@@ -528,7 +539,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   write_file_atomic(out / "fit.json", report.dump(2) + "\n");
   if (stopped) {
     log::error("interrupted at iteration %d; wrote %s (continue with --resume)",
-                 (fine ? coarse_options.iterations : 0) + final_fit.iteration(), anim.c_str());
+                 (fine ? coarse_iters : 0) + final_fit.iteration(), anim.c_str());
     return 130;
   }
   if (rejected) {

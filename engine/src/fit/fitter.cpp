@@ -215,6 +215,9 @@ void Fitter::scale_learning_rates(float s) {
 
 void Fitter::adopt_coarse(Fitter& coarse, double scale) {
   take_keyframes(coarse, scale, std::vector<char>(static_cast<size_t>(K_), 1));
+  last_activation_ = 0;
+  plateau_ref_.clear();
+  converged_ = false;
   // Fresh Adam moments everywhere (the field itself is zero: take_keyframes folded it away).
   auto& q = rt_.queue();
   const size_t np = static_cast<size_t>(K_) * G_ * kMotionParams, no = static_cast<size_t>(K_) * plan_.n_cp * 2;
@@ -454,10 +457,39 @@ LossTerms Fitter::step() {
   while (active_ < K_ && iteration_ >= activation_iteration(active_)) {
     activate_keyframe(active_);
     ++active_;
+    last_activation_ = iteration_;
+    plateau_ref_.clear();
   }
   const LossTerms t = fit_iteration();
   ++iteration_;
+  check_plateau();
   return t;
+}
+
+void Fitter::check_plateau() {
+  const int w = opt_.plateau_window;
+  if (w <= 0 || active_ < K_ || (iteration_ - last_activation_) % w != 0) return;
+  // The losses of the iteration just done. The fit has converged when the keyframes' mean loss
+  // fell by less than plateau_tol over the window, and no keyframe's by more than
+  // plateau_tol_keyframe of its own loss or the mean, whichever is larger: a keyframe still
+  // settling (the last activated: tens of percent per window) keeps the fit going however flat
+  // the mean is, while Adam's wobble (single keyframes up and down by 1-2 % per window while
+  // the mean moves 0.1 %: kite) does not.
+  const std::vector<float> now = raster_->read_frame_losses();
+  if (!plateau_ref_.empty()) {
+    double ref_mean = 0, now_mean = 0;
+    for (size_t k = 0; k < now.size(); ++k) {
+      ref_mean += plateau_ref_[k];
+      now_mean += now[k];
+    }
+    ref_mean /= static_cast<double>(now.size());
+    now_mean /= static_cast<double>(now.size());
+    bool flat = !(ref_mean - now_mean > opt_.plateau_tol * ref_mean);
+    for (size_t k = 0; k < now.size() && flat; ++k)
+      flat = !(plateau_ref_[k] - now[k] > opt_.plateau_tol_keyframe * std::max<double>(plateau_ref_[k], ref_mean));
+    converged_ = flat;
+  }
+  plateau_ref_ = now;
 }
 
 LossTerms Fitter::fit_iteration() {
@@ -626,6 +658,10 @@ void Fitter::restore(const FitState& s) {
   }
   iteration_ = s.iteration;
   active_ = s.active;
+  // The plateau test starts afresh: a window from here on.
+  last_activation_ = iteration_;
+  plateau_ref_.clear();
+  converged_ = false;
   steps_ = s.steps;
 }
 
