@@ -360,9 +360,12 @@ TEST_CASE("a straight edge bent by the target is fitted as the curve the export 
 
 // The fit stops when the loss stops falling, not before every keyframe is active and has had
 // its windows. A still figure on a still target: nothing to gain from the first window on.
-// K = 3 and 2000 iterations: keyframe 2 is activated at 0.7 * 2000 / 2 = 700 (keyframe 1 at 0,
-// the rest keyframe being pinned); the window ending at 800 is the reference, the one ending
-// at 900 gains nothing, so the fit ends at 900. Without the test it runs all 2000.
+// K = 3 and 2000 iterations on the paper's schedule: keyframe 2 is activated at
+// 0.7 * 2000 / 2 = 700 (keyframe 1 at 0, the rest keyframe being pinned); the window ending at
+// 800 is the reference, the one ending at 900 gains nothing, so the fit ends at 900. With
+// adaptive activation keyframe 2 comes as soon as keyframe 1 has settled, at a window's end
+// (20 iterations), and the fit ends two plateau windows later. Without the plateau test it
+// runs all its iterations.
 TEST_CASE("the fit ends when no keyframe's loss falls over a window, after the last activation") {
   const Scene s = figure();
   const int K = 3;
@@ -374,11 +377,28 @@ TEST_CASE("the fit ends when no keyframe's loss falls over a window, after the l
   FitOptions fo;
   fo.iterations = 2000;
   REQUIRE(fo.plateau_window == 100);
-  Fitter fitter(runtime(), s, target, fo);
-  CHECK(fitter.activation_iteration(K - 1) == 700);
-  while (!fitter.done()) fitter.step();
-  CHECK(fitter.converged());
-  CHECK(fitter.iteration() == 900);
+  REQUIRE(fo.activation_window == 20);
+  {
+    FitOptions paper = fo;
+    paper.activation_window = 0;
+    Fitter fitter(runtime(), s, target, paper);
+    CHECK(fitter.activation_iteration(K - 1) == 700);
+    while (!fitter.done()) fitter.step();
+    CHECK(fitter.converged());
+    CHECK(fitter.last_activation() == 700);
+    CHECK(fitter.iteration() == 900);
+  }
+  {
+    Fitter fitter(runtime(), s, target, fo);
+    while (!fitter.done()) fitter.step();
+    MESSAGE("adaptive activation: keyframe 2 at iteration " << fitter.last_activation() << ", converged at "
+                                                             << fitter.iteration());
+    CHECK(fitter.converged());
+    CHECK(fitter.last_activation() % 20 == 0);
+    CHECK(fitter.last_activation() >= 40);  // a reference window, then a settled one
+    CHECK(fitter.last_activation() < 700);
+    CHECK(fitter.iteration() == fitter.last_activation() + 200);
+  }
   fo.plateau_window = 0;
   fo.iterations = 1000;
   Fitter full(runtime(), s, target, fo);

@@ -217,6 +217,7 @@ void Fitter::adopt_coarse(Fitter& coarse, double scale) {
   take_keyframes(coarse, scale, std::vector<char>(static_cast<size_t>(K_), 1));
   last_activation_ = 0;
   plateau_ref_.clear();
+  newest_ref_ = -1;
   converged_ = false;
   // Fresh Adam moments everywhere (the field itself is zero: take_keyframes folded it away).
   auto& q = rt_.queue();
@@ -454,16 +455,39 @@ void Fitter::warm_start_field(int k, const std::vector<int>& index, const PointT
 }
 
 LossTerms Fitter::step() {
-  while (active_ < K_ && iteration_ >= activation_iteration(active_)) {
+  while (active_ < K_ && activation_due()) {
     activate_keyframe(active_);
     ++active_;
     last_activation_ = iteration_;
     plateau_ref_.clear();
+    newest_ref_ = -1;
   }
   const LossTerms t = fit_iteration();
   ++iteration_;
   check_plateau();
   return t;
+}
+
+bool Fitter::activation_due() {
+  // The paper's schedule: keyframe 1 (after a pinned rest keyframe) at once, then one every
+  // interval; never later than that after the previous activation.
+  const int w = opt_.activation_window;
+  if (w <= 0) return iteration_ >= activation_iteration(active_);
+  const int since = iteration_ - last_activation_;
+  if (since >= activation_iteration(active_) - activation_iteration(active_ - 1)) return true;
+  if (since == 0 || since % w != 0) return false;
+  // The newest keyframe's loss after the last iteration (read_frame_losses: the active ones);
+  // its fall is measured against its loss or the active keyframes' mean, whichever is larger
+  // (a keyframe matched almost exactly wobbles by more than the tolerance of its tiny loss).
+  const std::vector<float> losses = raster_->read_frame_losses();
+  const float now = losses.back();
+  double mean = 0;
+  for (float l : losses) mean += l;
+  mean /= static_cast<double>(losses.size());
+  const bool settled =
+      newest_ref_ >= 0 && !(newest_ref_ - now > opt_.activation_tol * std::max<double>(newest_ref_, mean));
+  newest_ref_ = now;
+  return settled;
 }
 
 void Fitter::check_plateau() {
@@ -661,8 +685,10 @@ void Fitter::restore(const FitState& s) {
   // The plateau test starts afresh: a window from here on.
   last_activation_ = iteration_;
   plateau_ref_.clear();
+  newest_ref_ = -1;
   converged_ = false;
   steps_ = s.steps;
 }
 
 }  // namespace svgm
+
