@@ -1,6 +1,7 @@
 // Fit groups along a procedural motion (fit/motion_groups.h): a group whose paths the motion
 // report partly holds still and partly moves is split, still paths keeping the group and the
-// moving ones grouped by rig part; other groups and unknown reports leave the scene as it is.
+// moving ones grouped by rig part; so is one whose moving paths belong to several parts; other
+// groups and unknown reports leave the scene as it is.
 #include <doctest/doctest.h>
 
 #include "fit/motion_groups.h"
@@ -42,9 +43,31 @@ TEST_CASE("a group the motion moves apart is split: its still paths keep it, eac
   CHECK(notes[0] == s.groups[0].id + ": 1 still paths keep the group; the moving ones fit as 2 groups (spokes, wheel)");
 }
 
-TEST_CASE("a group that moves whole, or holds whole, or a report without the paths, is not split") {
+TEST_CASE("a group whose paths move as two parts is split: the part with the most paths keeps it") {
+  // Hands the rig took from the head's group: the head (two paths) turns with the body, the
+  // gloves (one path) swing with the arm.
   const Scene s = read_svg_string(kDrawing, "wheel.svg");
-  CHECK(split_groups_by_motion(s, report(5, 30, 40), nullptr).groups.size() == 2);
+  nlohmann::json m = report(5, 30, 40);
+  m["parts"] = {{{"name", "head"}, {"paths", {"stand", "rim", "puff"}}}, {{"name", "gloves"}, {"paths", {"spoke"}}}};
+  std::vector<std::string> notes;
+  const Scene out = split_groups_by_motion(s, m, &notes);
+  REQUIRE(out.groups.size() == 3);
+  CHECK(out.groups[0].id == s.groups[0].id);
+  CHECK(out.groups[0].paths == std::vector<int>{0, 2});
+  CHECK(out.groups[1].id == s.groups[0].id + "-gloves");
+  CHECK(out.groups[1].paths == std::vector<int>{1});
+  CHECK(out.groups[2].paths == s.groups[1].paths);
+  for (size_t g = 0; g < out.groups.size(); ++g)
+    for (int p : out.groups[g].paths) CHECK(out.paths[p].group == static_cast<int>(g));
+  REQUIRE(notes.size() == 1);
+  CHECK(notes[0] == s.groups[0].id + ": its paths move as 2 parts; head keeps the group, the others fit as groups of their own (gloves)");
+}
+
+TEST_CASE("a group that moves whole as one part, or holds whole, or a report without the paths, is not split") {
+  const Scene s = read_svg_string(kDrawing, "wheel.svg");
+  nlohmann::json one = report(5, 30, 40);
+  one["parts"] = {{{"name", "wheel"}, {"paths", {"stand", "spoke", "rim", "puff"}}}};
+  CHECK(split_groups_by_motion(s, one, nullptr).groups.size() == 2);
   CHECK(split_groups_by_motion(s, report(0, 0, 0.01), nullptr).groups.size() == 2);  // 0.01 px: still
   CHECK(split_groups_by_motion(s, nlohmann::json::object(), nullptr).groups.size() == 2);
   nlohmann::json partial = report(0, 30, 40);

@@ -723,6 +723,37 @@ TEST_CASE("a boxer's body turns into the punches and leans to dodge about the hi
   }
 }
 
+TEST_CASE("the body's turn carries the head upright: it follows its neck without turning") {
+  const Fixture fx("stick_figure.svg");
+  int head = -1;
+  for (size_t g = 0; g < fx.rig.parts.size(); ++g)
+    if (fx.rig.parts[g].role == Role::Head && fx.rig.parts[g].parent == fx.rig.root) head = static_cast<int>(g);
+  REQUIRE(head >= 0);
+  const MotionPlan plan = fx.plan("he dodges");
+  REQUIRE(plan.actions.size() == 1);
+  REQUIRE(plan.actions[0].parts == std::vector<int>{fx.rig.root});
+  const int F = 13;
+  const std::vector<Vec2> pts = animate_plan(fx.scene, fx.rig, plan, F);
+  const size_t per = pts.size() / F;
+  double moved = 0, spread = 0;
+  for (size_t p = 0; p < fx.scene.paths.size(); ++p) {
+    if (fx.rig.part_of_path[p] != head) continue;
+    const size_t i0 = fx.first_point(static_cast<int>(p));
+    size_t n = 0;
+    for (const auto& sp : fx.scene.paths[p].subpaths) n += sp.points.size();
+    for (int f = 1; f < F; ++f) {
+      const Vec2 d0 = pts[f * per + i0] - pts[i0];
+      moved = std::max(moved, std::hypot(d0.x, d0.y));
+      for (size_t i = i0; i < i0 + n; ++i) {
+        const Vec2 d = pts[f * per + i] - pts[i];
+        spread = std::max(spread, std::hypot(d.x - d0.x, d.y - d0.y));
+      }
+    }
+  }
+  CHECK(moved > 1.0);      // it goes with the neck
+  CHECK(spread < 1e-9);    // every point of it by the same step: no turn
+}
+
 TEST_CASE("a boxer punches with the arm he has thrown out, the other keeps guard; both arms take turns") {
   const Fixture fx("boxer.svg");
   REQUIRE(fx.rig.parts[1].role == Role::UpperLimb);

@@ -159,6 +159,32 @@ TEST_CASE("arms drawn as shapes of their own in the body's group are limbs; one 
   CHECK(r1.parts.size() == 3);
 }
 
+TEST_CASE("a glove held before the face, grouped with the head, hangs from the arm it lies on") {
+  // A boxer in guard: the shirt (root), the head's group holding the face, an eye, the glove
+  // beside the face (its middle left of the face's box) and the glove's lacing, an arm reaching
+  // up from the shirt to the glove, the legs.
+  const std::string top = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200\" height=\"200\">"
+                          "<g id=\"group-1\"><path id=\"p1\" d=\"M 75 65 L 125 65 L 125 150 L 75 150 Z\"/></g>"
+                          "<g id=\"group-2\"><path id=\"p2\" d=\"M 80 20 L 120 20 L 120 62 L 80 62 Z\"/>"
+                          "<path id=\"p3\" d=\"M 90 30 L 96 30 L 96 36 L 90 36 Z\"/>"
+                          "<path id=\"p4\" d=\"M 55 40 L 82 40 L 82 68 L 55 68 Z\"/>"
+                          "<path id=\"p5\" d=\"M 58 44 L 64 44 L 64 50 L 58 50 Z\"/></g>";
+  const std::string arm = "<g id=\"group-3\"><path id=\"p6\" d=\"M 60 62 L 70 62 L 90 105 L 80 105 Z\"/></g>";
+  const std::string legs = "<g id=\"group-4\"><path id=\"p7\" d=\"M 80 150 L 120 150 L 120 190 L 80 190 Z\"/></g></svg>";
+  const Rig r = build_rig(read_svg_string(top + arm + legs, "guard.svg"), {});
+  const int face = r.part_of_path[1], glove = r.part_of_path[3], arm_part = r.part_of_path[5];
+  CHECK(r.parts[face].role == Role::Head);
+  CHECK(r.part_of_path[2] == face);   // the eye, on the face, stays
+  CHECK(glove != face);
+  CHECK(r.part_of_path[4] == glove);  // the lacing goes with its glove
+  CHECK(r.parts[arm_part].role == Role::UpperLimb);
+  CHECK(r.parts[glove].parent == arm_part);
+  CHECK(r.parts[glove].role == Role::UpperLimb);
+  // With no arm to hold it, the glove stays with the head.
+  const Rig alone = build_rig(read_svg_string(top + legs, "no_arm.svg"), {});
+  CHECK(alone.part_of_path[3] == alone.part_of_path[1]);
+}
+
 TEST_CASE("a round part is a wheel; a stand is not") {
   const Rig r = rig_of("wheel.svg");
   REQUIRE(r.parts.size() == 2);

@@ -28,22 +28,32 @@ Scene split_groups_by_motion(const Scene& scene, const nlohmann::json& motion, s
       if (m->second) moved[part->second].push_back(pi);
       else still.push_back(pi);
     }
-    if (!known || still.empty() || moved.empty()) {
+    // Split when it holds some paths still and moves others, or moves paths of two parts (hands
+    // the rig took from the head's group: the arm swings them while the head turns with the body).
+    if (!known || moved.empty() || (still.empty() && moved.size() < 2)) {
       out.groups.push_back(g);
       continue;
     }
+    std::string keeper;  // with no still paths, the part with the most moving paths keeps the group
+    if (still.empty())
+      for (const auto& [name, paths] : moved)
+        if (keeper.empty() || paths.size() > moved[keeper].size()) keeper = name;
     Group kept = g;
-    kept.paths = still;
+    kept.paths = still.empty() ? moved[keeper] : still;
     out.groups.push_back(kept);
     std::string names;
     for (auto& [name, paths] : moved) {
+      if (name == keeper) continue;
       Group piece = g;
       piece.id = g.id + "-" + name;
       piece.paths = paths;
       out.groups.push_back(piece);
       names += (names.empty() ? "" : ", ") + name;
     }
-    if (notes)
+    if (notes && still.empty())
+      notes->push_back(g.id + ": its paths move as " + std::to_string(moved.size()) + " parts; " + keeper +
+                       " keeps the group, the others fit as groups of their own (" + names + ")");
+    else if (notes)
       notes->push_back(g.id + ": " + std::to_string(still.size()) + " still paths keep the group; the moving ones fit as " +
                        std::to_string(moved.size()) + " groups (" + names + ")");
   }

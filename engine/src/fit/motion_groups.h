@@ -6,7 +6,10 @@
 // rejected it). When the video stage was the procedural one, its report (motion.json: the
 // rig's parts and each path's travel) says what moves: a group whose paths it partly holds
 // still and partly moves is split, its still paths keeping the group and its moving paths
-// getting a group per rig part; and the groups it holds wholly still are held still in the fit
+// getting a group per rig part; a group whose moving paths belong to several rig parts is split
+// the same way, the part with the most paths keeping it (a boxer's gloves, grouped with his head,
+// swing with the arm while the head turns with the body); and the groups it holds wholly still
+// are held still in the fit
 // (flag1's pole, drawn past the canvas's edge, drifted 1.3 px farther out in the fit while the
 // target held it; the ferris wheel's stand still bent with the spokes passing behind it).
 #pragma once

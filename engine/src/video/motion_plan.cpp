@@ -1019,10 +1019,17 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return depth(x) < depth(y); });
     // The root's own turn (the upper body swaying about the hips) leaves what stands on the
     // ground where it is: the chains hanging from the root that reach down to the figure's feet.
+    // The head rides on the turning body upright (the eyes stay level, on the opponent a boxer
+    // turns into): it goes where its neck goes without the turn. Turned with the body, a boxer's
+    // densely drawn head swung 19 px at its top for a 4-degree turn and outweighed the punch.
     for (int g : order) {
       const int p = rig.parts[g].parent;
       if (g == rig.root) world[g] = local[g] * root_turn;
       else if (p == rig.root && planted[g]) world[g] = local[p] * local[g];
+      else if (p == rig.root && rig.parts[g].role == Role::Head) {
+        const Vec2 h = rig.parts[g].pivot, to = root_turn.apply(h);
+        world[g] = local[p] * Affine::translate(to.x - h.x, to.y - h.y) * local[g];
+      }
       else world[g] = p >= 0 ? world[p] * local[g] : local[g];
     }
     // A spinning part turns in its own frame and carries what turns with it; its riders go

@@ -8,7 +8,8 @@
 // shape (a swimming wave, a bend), the rig's rotations about the pivots, then the motion of the
 // whole figure (a hop, a bob, a rock about its base). A swing of the root itself (a boxer's
 // body turning into a punch, an upper body swaying) leaves the chains hanging from the root
-// that reach the figure's feet where they are. The background stays still unless a plan
+// that reach the figure's feet where they are, and carries the head upright (it follows its
+// neck without the turn). The background stays still unless a plan
 // names it. The first and the last frame are the rest pose (the loop closes), except for
 // repeated elements, which each keep their own phase.
 //

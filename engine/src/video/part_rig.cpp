@@ -12,6 +12,7 @@
 #include "fit/document_order.h"
 #include "scene/backdrop.h"
 #include "svgmotion/svg_reader.h"
+#include "video/hands_at_head.h"
 #include "video/wheel_riders.h"
 
 namespace svgm {
@@ -194,6 +195,8 @@ struct Units {
   int root = -1;  // the root's index when it is already known (split_root_limbs)
   std::set<int> from_root;  // parts split from the root's group (split_root_limbs)
   std::map<int, int> carried_by;  // a path that turns with a wheel -> the wheel's path (split_wheel_loads)
+  std::map<int, int> held_by;     // the first path of hands taken from the head -> the first path of
+                                  // the arm holding them (split_head_holds)
 };
 
 // Points on a path's curves (each cubic at quarters): a circle's handles lie 0.14 of its
@@ -485,10 +488,15 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
     if (const auto it = U.carried_by.find(unit_paths[g].front()); it != U.carried_by.end())
       for (int h = 0; h < G; ++h)
         if (h != g && unit_paths[h].size() == 1 && unit_paths[h][0] == it->second) wheel = h;
+    int arm = -1;
+    if (const auto it = U.held_by.find(unit_paths[g].front()); it != U.held_by.end())
+      for (int h = 0; h < G; ++h)
+        if (h != g && !unit_paths[h].empty() && unit_paths[h].front() == it->second) arm = h;
     if (wheel >= 0) {
       parent = wheel;
       P.carried = true;
     }
+    else if (arm >= 0) parent = arm;  // hands taken from the head hang from their arm (split_head_holds)
     else if (P.area < R.area && !U.from_root.count(g))
       for (int h = 0; h < G; ++h) {
         const RigPart& Q = rig.parts[h];
@@ -730,12 +738,54 @@ bool split_root_limbs(const Scene& scene, const Rig& rig, Units& U) {
   return true;
 }
 
+// Hands drawn at the face (hands_at_head.h): in the head's part, the paths an arm holds become
+// a part of their own per arm (appended, so no part's index moves) that hangs from that arm. True
+// when the head was split.
+bool split_head_holds(const Scene& scene, const Rig& rig, Units& U) {
+  std::vector<int> arms;
+  std::vector<RigBox> arm_boxes;
+  for (size_t g = 0; g < rig.parts.size(); ++g)
+    if (rig.parts[g].role == Role::UpperLimb && !U.paths[g].empty()) {
+      arms.push_back(static_cast<int>(g));
+      arm_boxes.push_back(rig.parts[g].box);
+    }
+  bool split = false;
+  for (size_t g = 0; g < rig.parts.size() && !arms.empty(); ++g) {
+    if (rig.parts[g].role != Role::Head || rig.parts[g].parent != rig.root || U.paths[g].size() < 2) continue;
+    const std::vector<int> ps = U.paths[g];
+    std::vector<RigBox> boxes;
+    std::vector<double> areas;
+    for (int pi : ps) {
+      boxes.push_back(path_box(scene.paths[pi]));
+      double a = 0;
+      for (const auto& sp : scene.paths[pi].subpaths) a += std::fabs(shoelace(sp.points));
+      areas.push_back(a);
+    }
+    const std::vector<int> held = held_at_head(boxes, areas, arm_boxes);
+    std::map<int, std::vector<int>> by_arm;
+    std::vector<int> rest;
+    for (size_t i = 0; i < ps.size(); ++i) (held[i] >= 0 ? by_arm[held[i]] : rest).push_back(ps[i]);
+    if (by_arm.empty() || rest.empty()) continue;
+    U.paths[g] = rest;
+    U.split[g] = 1;
+    for (const auto& [a, hand] : by_arm) {
+      U.paths.push_back(hand);
+      U.group.push_back(U.group[g]);
+      U.split.push_back(1);
+      U.held_by[hand.front()] = U.paths[arms[a]].front();
+    }
+    split = true;
+  }
+  return split;
+}
+
 }  // namespace
 
 Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<std::string>& group_names) {
   Units U = units_of(scene, names);
   Rig rig = assemble(scene, names, group_names, U);
   if (split_root_limbs(scene, rig, U)) rig = assemble(scene, names, group_names, U);
+  if (split_head_holds(scene, rig, U)) rig = assemble(scene, names, group_names, U);
   return rig;
 }
 

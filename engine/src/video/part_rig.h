@@ -23,6 +23,8 @@
 //  - side: the figure's own side. A figure faces the viewer, so its right is drawn on the
 //    viewer's left; a part named "right"/"left" keeps its name's side.
 //  - round parts (a near-square box whose outline fills about pi/4 of it) are wheels.
+//  - hands drawn at the face (a boxer's gloves in guard) that a grouper put with the head hang
+//    from the arm they lie on (hands_at_head.h).
 //  - repeated elements: at least three small paths of similar size (drops, stars, leaves),
 //    each with any smaller paths drawn inside its box (a highlight), moved one by one.
 #pragma once
