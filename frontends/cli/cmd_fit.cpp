@@ -45,7 +45,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
                              "--palette", "--device", "--mask-threshold", "--loop", "--deform", "--refine-size",
                              "--precision", "--inbetweens", "--max-segment"},
                             {"--resume", "--no-track", "--no-gate", "--no-colour-correction", "--no-blur-matching", "--stabilise",
-                             "--group-transforms"});
+                             "--group-transforms", "--all-iterations"});
   if (a.positional.size() != 1)
     throw Error("fit: expected one input SVG (svgmotion fit IN.svg --target VIDEO -o OUT_DIR)");
   FitJob job;
@@ -58,6 +58,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
   job.out = *out;
   job.options.iterations = a.get_int("--iterations", 2000, 1, 10000000);
   job.options.track = !a.has("--no-track");
+  if (a.has("--all-iterations")) job.options.plateau_window = 0;
   job.keyframes = a.get_int("--keyframes", 15, 2, 1000);
   job.width = a.get_int("--size", 256, 32, 4096);
   if (const auto r = a.get("--refine-size"))

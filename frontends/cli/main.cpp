@@ -106,6 +106,8 @@ Fits the SVG's paths to a target video (mp4, webm, avi, mov, or a folder of numb
   --no-gate              write animation.svg even when the result gate rejects the fit
   --resume               continue from OUT_DIR/checkpoint.bin
   --no-track             no optical-flow warm start of new keyframes
+  --all-iterations       run every iteration (default: the fit ends once every keyframe is
+                         active and the loss has stopped falling; fit.json converged_at)
   --device D             OpenCL device
   --quiet                no progress line
 

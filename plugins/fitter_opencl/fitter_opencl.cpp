@@ -37,6 +37,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   job.out = req.at("run_dir").get<std::string>();
   job.options.iterations = c.value("iterations", 2000);
   job.options.track = c.value("track", true);
+  if (!c.value("stop_when_converged", true)) job.options.plateau_window = 0;
   job.keyframes = c.value("keyframes", 15);
   job.width = c.value("size", 256);
   job.mask_threshold = c.value("mask_threshold", 0.97);

@@ -143,7 +143,7 @@ fit)
   "$bin" fit "$data/examples/man.svg" --target "$tmp/nothere" -o "$tmp/out5" 2>"$tmp/few_err"
   check "... and an ordinary drawing does not" '! grep -q "path segments" "$tmp/few_err"'
   # Ctrl-C: the best result so far is written and the exit status says interrupted.
-  "$bin" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out4" --iterations 1000000 --keyframes 3 --size 64 --quiet 2>/dev/null &
+  "$bin" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out4" --iterations 1000000 --all-iterations --keyframes 3 --size 64 --quiet 2>/dev/null &
   pid=$!
   for _ in $(seq 50); do [[ -f $tmp/out4/checkpoint.bin ]] && break; sleep 0.2; done
   kill -INT $pid

@@ -134,7 +134,7 @@ check "render -o X.PNG writes a PNG" '[[ $? -eq 0 && $(head -c 4 "$tmp/OUT.PNG" 
 #    resumes the fit from its checkpoint instead of starting again.
 int=("$bin" run --input "$tmp/ball.svg" -o "$tmp/int" --quiet stages.video.plugin=file "stages.video.path=$tmp/leave"
      stages.ranker.plugin=first stages.fitter.iterations=3000 stages.fitter.keyframes=3 stages.fitter.size=64
-     stages.fitter.gate=false)
+     stages.fitter.gate=false stages.fitter.stop_when_converged=false)
 "${int[@]}" >/dev/null 2>"$tmp/int.err" &
 pid=$!
 # Interrupted as soon as the first checkpoint (iteration 250 of 3000) is on disk, so the fit is
