@@ -13,7 +13,11 @@
  *                the shape it draws, and a fixed margin pulled such handles inwards in every
  *                keyframe, flattening the curves against the image loss (octopus, non-rigid
  *                target fitted to clean frames: worst keyframe at 1024 px 34.7 dB with a
- *                1 px margin for all, 36.9 with containment off).
+ *                1 px margin for all, 36.9 with containment off). Beyond the canvas the
+ *                distance goes on growing: sdf at the nearest sampled point plus the distance
+ *                to it. No pixel sees a point out there, so nothing else holds it, and a
+ *                straight edge of a sun's ray, drawn to the canvas's edge, went 64 px out
+ *                (emoji_u1f304, refused by the result gate).
  *   cohesion     Σ_pairs (‖x̂_i − x̂_j‖ − ℓ_ij)², pairs = control points closer than a few pixels
  *                at rest (ℓ_ij their rest distance), in any path or group: what touches at rest
  *                keeps touching and what is thin stays as thick. Parts drawn in one colour
@@ -95,15 +99,19 @@ __kernel void containment(__global const float2* cp, __global const int* cp_grou
     __global const float* S = sdf + (size_t)k * width * height;
     const float s00 = S[y0 * width + x0], s10 = S[y0 * width + x1];
     const float s01 = S[y1 * width + x0], s11 = S[y1 * width + x1];
-    const float s = (1 - fy) * ((1 - fx) * s00 + fx * s10) + fy * ((1 - fx) * s01 + fx * s11);
+    const float2 out = q - (float2)(x, y); /* beyond the sampled pixel centres */
+    const float o = length(out);
+    const float s = (1 - fy) * ((1 - fx) * s00 + fx * s10) + fy * ((1 - fx) * s01 + fx * s11) + o;
     const float d = s - margin[i];
     if (d > 0.0f) {
       l = scale * d * d;
-      /* The gradient of the bilinear interpolant; zero along an axis where q was clamped. */
+      /* The gradient of the bilinear interpolant, zero along an axis where q was clamped, plus
+       * that of the distance beyond the canvas. */
       float2 grad = (float2)((1 - fy) * (s10 - s00) + fy * (s11 - s01),
                              (1 - fx) * (s01 - s00) + fx * (s11 - s10));
       if (q.x != x) grad.x = 0.0f;
       if (q.y != y) grad.y = 0.0f;
+      if (o > 0.0f) grad += out / o;
       grad_cp[at] += 2.0f * scale * d * grad;
     }
   }

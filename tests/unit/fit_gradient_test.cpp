@@ -376,7 +376,8 @@ TEST_CASE("regularisers: kernel values match the host formulas and gradients mat
 
   SUBCASE("containment") {
     // A distance-like field: positive away from a disc, with ripples so the bilinear cells
-    // differ; points scattered over the canvas and a few beyond it (clamped axes).
+    // differ; points scattered over the canvas and a few beyond it (clamped axes, and the
+    // distance beyond the canvas added).
     std::vector<float> sdf(static_cast<size_t>(K) * kW * kH);
     for (int k = 0; k < K; ++k)
       for (int y = 0; y < kH; ++y)
@@ -402,11 +403,12 @@ TEST_CASE("regularisers: kernel values match the host formulas and gradients mat
           if (p.cp_group[i] < 0) continue;
           const size_t a = 2 * (static_cast<size_t>(k) * n_cp + i);
           const double qx = std::clamp(x[a] - 0.5, 0.0, kW - 1.0), qy = std::clamp(x[a + 1] - 0.5, 0.0, kH - 1.0);
+          const double beyond = std::hypot(x[a] - 0.5 - qx, x[a + 1] - 0.5 - qy);
           const int x0 = std::min(static_cast<int>(qx), kW - 2), y0 = std::min(static_cast<int>(qy), kH - 2);
           const double fx = qx - x0, fy = qy - y0;
           auto S = [&](int xx, int yy) { return double(sdf[(static_cast<size_t>(k) * kH + yy) * kW + xx]); };
           const double v = (1 - fy) * ((1 - fx) * S(x0, y0) + fx * S(x0 + 1, y0)) +
-                           fy * ((1 - fx) * S(x0, y0 + 1) + fx * S(x0 + 1, y0 + 1));
+                           fy * ((1 - fx) * S(x0, y0 + 1) + fx * S(x0 + 1, y0 + 1)) + beyond;
           const double d = v - margin[i];
           if (d > 0) l += d * d;
         }

@@ -19,20 +19,21 @@ const std::array<float, 4> kWhite{1, 1, 1, 1};
 
 // Per-point containment margins (kernels/regularise.cl): `margin` plus the point's distance to
 // the foreground of `sdf` (one frame, [H][W], pixel centres at +0.5), bilinear as the kernel
-// reads it. Given the rest points and the rest frame's distances, every point starts inside
+// reads it, plus the distance beyond the sampled pixel centres. Given the rest points and the rest frame's distances, every point starts inside
 // its margin, so containment only resists moving further off the subject than at rest.
 std::vector<float> containment_margins(const std::vector<float>& pts, const float* sdf, int width,
                                        int height, double margin) {
   std::vector<float> out(pts.size() / 2, static_cast<float>(margin));
   if (width < 2 || height < 2) return out;
   for (size_t i = 0; i < out.size(); ++i) {
-    const double x = std::clamp(pts[2 * i] - 0.5, 0.0, width - 1.0);
-    const double y = std::clamp(pts[2 * i + 1] - 0.5, 0.0, height - 1.0);
+    const double qx = pts[2 * i] - 0.5, qy = pts[2 * i + 1] - 0.5;
+    const double x = std::clamp(qx, 0.0, width - 1.0), y = std::clamp(qy, 0.0, height - 1.0);
     const int x0 = std::min(static_cast<int>(x), width - 2), y0 = std::min(static_cast<int>(y), height - 2);
     const double fx = x - x0, fy = y - y0;
     auto S = [&](int xx, int yy) { return static_cast<double>(sdf[static_cast<size_t>(yy) * width + xx]); };
     const double d = (1 - fy) * ((1 - fx) * S(x0, y0) + fx * S(x0 + 1, y0)) +
-                     fy * ((1 - fx) * S(x0, y0 + 1) + fx * S(x0 + 1, y0 + 1));
+                     fy * ((1 - fx) * S(x0, y0 + 1) + fx * S(x0 + 1, y0 + 1)) +
+                     std::hypot(qx - x, qy - y);
     out[i] = static_cast<float>(margin + std::max(0.0, d));
   }
   return out;
