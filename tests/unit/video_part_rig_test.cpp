@@ -1,6 +1,7 @@
 // The part rig: names from the document (id, <title>, inkscape:label), roles from geometry
 // (root, head, limbs, the figure's own side), pivots where parts attach, the background, round
-// parts and repeated elements, on drawings made for these tests (tests/data/motion).
+// parts and repeated elements, limbs drawn as single strokes, on drawings made for these tests
+// (tests/data/motion, or inline).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -227,6 +228,48 @@ TEST_CASE("a wheel drawn in one group with its cabins and stand: its spokes hang
   CHECK(cabins.size() == 8);  // the bottom body too: it hangs below the wheel's box, under its roof
   CHECK(cabins.count(stand) == 0);
   CHECK(cabins.count(spokes) == 0);
+}
+
+TEST_CASE("a limb drawn as one stroke turns about its end nearest the shoulders or hips, a folded stroke about its fold") {
+  // A line drawing: a filled torso 80-120 x 60-140 (the root; shoulders at its top centre
+  // 100,60, hips at its bottom 100,140), an arm drawn as a hairpin beside it (down from the
+  // shoulder and back, both ends at hip height inside the torso's edge), an arm drawn as one
+  // straight stroke from the hand in to the shoulder, a leg drawn from the foot up to the hip.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><path d="M 80 60 L 120 60 L 120 140 L 80 140 Z" fill="#f9c"/></g>
+           <g><path d="M 84 110 C 56 40 70 40 80 112" fill="none" stroke="#000" stroke-width="3"/></g>
+           <g><path d="M 160 110 C 148 95 134 80 122 66" fill="none" stroke="#000" stroke-width="3"/></g>
+           <g><path d="M 92 190 C 93 170 94 150 95 138" fill="none" stroke="#000" stroke-width="3"/></g></svg>)",
+      "strokes.svg");
+  const Rig r = build_rig(s, {});
+  REQUIRE(r.root == 0);
+  REQUIRE(r.parts[1].role == Role::UpperLimb);
+  REQUIRE(r.parts[2].role == Role::UpperLimb);
+  REQUIRE(r.parts[3].role == Role::LowerLimb);
+  // The hairpin turns about its fold's tip (its curve's top, t = 0.5: 67.75,57.75), not about
+  // its ends' middle (82,111), the centroid of its points in the torso's box.
+  CHECK(r.parts[1].pivot.x == doctest::Approx(67.75));
+  CHECK(r.parts[1].pivot.y == doctest::Approx(57.75));
+  // The straight arm about its shoulder end, the leg about its hip end (not the foot it starts at).
+  CHECK(r.parts[2].pivot.x == doctest::Approx(122));
+  CHECK(r.parts[2].pivot.y == doctest::Approx(66));
+  CHECK(r.parts[3].pivot.x == doctest::Approx(95));
+  CHECK(r.parts[3].pivot.y == doctest::Approx(138));
+  // Filled or closed paths have no stroke ends: their pivot is found as before.
+  CHECK_FALSE(stroke_limb_pivot(s.paths[0], {100, 60}).has_value());
+  const Scene f = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <path d="M 160 110 C 148 95 134 80 122 66" fill="#000"/>
+           <path d="M 160 110 C 148 95 134 80 122 66 Z" fill="none" stroke="#000"/></svg>)",
+      "filled.svg");
+  CHECK_FALSE(stroke_limb_pivot(f.paths[0], {100, 60}).has_value());
+  CHECK_FALSE(stroke_limb_pivot(f.paths[1], {100, 60}).has_value());
+  // An open stroke's end nearest the joint: the same stroke from the hips' side gives its other end.
+  const auto hips = stroke_limb_pivot(s.paths[2], {170, 120});
+  REQUIRE(hips.has_value());
+  CHECK(hips->x == doctest::Approx(160));
+  CHECK(hips->y == doctest::Approx(110));
 }
 
 }  // TEST_SUITE

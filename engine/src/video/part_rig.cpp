@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "fit/document_order.h"
@@ -37,6 +38,9 @@ constexpr double kWheelPathArea = 0.02;
 // this share of the root's core path and less than this share of its box lies in the core's.
 constexpr double kLimbPathArea = 0.15;
 constexpr double kLimbInCore = 0.5;
+// A single stroke folds back on itself (a hairpin) when its endpoints lie closer together than
+// this share of the farthest reach of its curve from their middle.
+constexpr double kStrokeFold = 0.5;
 // A part above the root more than this many times as tall as wide is a raised limb, not the
 // head (a bird's wing raised above its back; heads in the bench drawings are 0.6-1.5).
 constexpr double kHeadMaxAspect = 2.0;
@@ -214,6 +218,29 @@ std::vector<Vec2> curve_points(const Path& p) {
   }
   return out;
 }
+
+}  // namespace
+
+std::optional<Vec2> stroke_limb_pivot(const Path& p, Vec2 joint) {
+  // Only an open stroke drawn without fill: a filled outline's ends say nothing of its shape.
+  const bool filled = p.has_fill && p.fill.a > 0;
+  if (filled || !p.has_stroke || p.subpaths.size() != 1 || p.subpaths[0].closed || p.subpaths[0].points.size() < 4)
+    return std::nullopt;
+  const std::vector<Vec2> on = curve_points(p);
+  const Vec2 a = on.front(), b = on.back(), mid = 0.5 * (a + b);
+  auto dist = [](Vec2 u, Vec2 v) { return std::hypot(u.x - v.x, u.y - v.y); };
+  // The stroke's two ends: its endpoints, or, when it folds back on itself (its endpoints
+  // closer together than kStrokeFold of its reach from their middle: a hairpin, as a sketch
+  // draws an arm down and back up), the endpoints' middle and the fold's tip.
+  Vec2 apex = mid;
+  for (const Vec2& q : on)
+    if (dist(q, mid) > dist(apex, mid)) apex = q;
+  Vec2 e0 = a, e1 = b;
+  if (dist(a, b) < kStrokeFold * dist(apex, mid)) { e0 = mid; e1 = apex; }
+  return dist(e0, joint) <= dist(e1, joint) ? e0 : e1;
+}
+
+namespace {
 
 // What a wheel carries, drawn in one group with what holds it (a ferris wheel's spokes, hub and
 // cabins grouped with its stand; a spoke grouped with a leg of the stand): in every part of
@@ -595,6 +622,22 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
     else if (has_word(P.words, {"tail"})) { P.role = Role::Tail; P.why = "named"; }
     if (has_word(P.words, {"right"})) P.side = 1;
     else if (has_word(P.words, {"left"})) P.side = -1;
+  }
+
+  // A limb drawn as one open stroke (a line drawing's arm or leg) turns about its end nearest
+  // the body's joints: the root's top centre (shoulders) for an upper limb, its bottom centre
+  // (hips) for a lower limb (stroke_limb_pivot). The centroid of its points inside the root's
+  // box took a stroke hanging from the shoulder to the hip by its lower end: its top swung
+  // across the neck (a runner sketch's arm strokes).
+  for (int g = 0; g < G; ++g) {
+    RigPart& P = rig.parts[g];
+    if (P.parent != rig.root || unit_paths[g].size() != 1 || (P.role != Role::UpperLimb && P.role != Role::LowerLimb))
+      continue;
+    const Vec2 joint = {R.box.centre().x, P.role == Role::UpperLimb ? R.box.y0 : R.box.y1};
+    if (const auto end = stroke_limb_pivot(scene.paths[unit_paths[g][0]], joint)) {
+      P.pivot = *end;
+      P.why += "; one stroke, turns about its end nearest the root's " + std::string(P.role == Role::UpperLimb ? "top" : "bottom");
+    }
   }
 
   // Round parts (wheels).

@@ -14,7 +14,9 @@
 //  - root: the largest central part of the figure (area times centrality).
 //  - every other part hangs from a larger part (the root for parts larger than the root): the
 //    one its box overlaps most, or the nearest. Its pivot is the centroid of its control
-//    points inside the parent's box (where it attaches), else its point nearest the parent.
+//    points inside the parent's box (where it attaches), else its point nearest the parent; a
+//    limb drawn as one open stroke turns about its end nearest the root's top (an arm) or
+//    bottom (a leg).
 //    Parts hanging from a non-root part form limb chains and move with their parent.
 //  - relative to the root, the parts hanging from it are the head (central, above; a tall thin
 //    part there is a raised wing or arm), upper limbs (arms, wings: beside the root, not below
@@ -30,6 +32,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -98,6 +101,11 @@ SourceNames read_source_names(const std::string& original);
 
 // `group_names` (optional, per scene group) are names a grouper gave.
 Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<std::string>& group_names = {});
+
+// The pivot of a limb drawn as one open, unfilled stroke: of its two ends (its endpoints, or for
+// a stroke folding back on itself, their middle and the fold's tip) the one nearest `joint`
+// (the body's shoulders or hips). Nothing for filled or closed paths and several subpaths.
+std::optional<Vec2> stroke_limb_pivot(const Path& p, Vec2 joint);
 
 // Lower-case words of a name: "upperArm_Right-2" -> {"upper", "arm", "right"}.
 std::vector<std::string> name_words(const std::string& name);
