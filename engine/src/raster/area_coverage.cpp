@@ -26,7 +26,11 @@ void accumulate(std::vector<double>& acc, int w, int h, double x0, double y0, do
   for (int y = row0; y < row1; ++y) {
     const double ya = std::max<double>(y, y0), yb = std::min<double>(y + 1, y1);
     if (yb <= ya) continue;
-    const double xa = x0 + (ya - y0) * dxdy, xb = x0 + (yb - y0) * dxdy;
+    // The ends' x are within [0, w] (the caller clamps them), but the interpolation between
+    // them may round a hair outside, and a cell at -1 is before the row (heap corruption: a
+    // fitted ground drawn from x = -0.1 crashed `render` of a clip).
+    const double xa = std::clamp(x0 + (ya - y0) * dxdy, 0.0, static_cast<double>(w));
+    const double xb = std::clamp(x0 + (yb - y0) * dxdy, 0.0, static_cast<double>(w));
     const double d = (yb - ya) * dir;
     double* row = acc.data() + static_cast<size_t>(y) * stride;
     const double lo = std::min(xa, xb), hi = std::max(xa, xb);
