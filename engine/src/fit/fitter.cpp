@@ -469,6 +469,23 @@ LossTerms Fitter::step() {
   return t;
 }
 
+namespace {
+
+double mean_of(const std::vector<float>& v) {
+  double m = 0;
+  for (float x : v) m += x;
+  return v.empty() ? 0 : m / static_cast<double>(v.size());
+}
+
+// Whether a loss fell from `before` to `after` by more than `tol` of `before` or `floor`,
+// whichever is larger (the adaptive activation's and the plateau's test: a loss matched almost
+// exactly wobbles by more than the tolerance of itself, and the floor keeps that from counting).
+bool fell(double before, double after, double tol, double floor) {
+  return before - after > tol * std::max(before, floor);
+}
+
+}  // namespace
+
 bool Fitter::activation_due() {
   // The paper's schedule: keyframe 1 (after a pinned rest keyframe) at once, then one every
   // interval; never later than that after the previous activation.
@@ -482,11 +499,7 @@ bool Fitter::activation_due() {
   // (a keyframe matched almost exactly wobbles by more than the tolerance of its tiny loss).
   const std::vector<float> losses = raster_->read_frame_losses();
   const float now = losses.back();
-  double mean = 0;
-  for (float l : losses) mean += l;
-  mean /= static_cast<double>(losses.size());
-  const bool settled =
-      newest_ref_ >= 0 && !(newest_ref_ - now > opt_.activation_tol * std::max<double>(newest_ref_, mean));
+  const bool settled = newest_ref_ >= 0 && !fell(newest_ref_, now, opt_.activation_tol, mean_of(losses));
   newest_ref_ = now;
   return settled;
 }
@@ -502,16 +515,10 @@ void Fitter::check_plateau() {
   // the mean moves 0.1 %: kite) does not.
   const std::vector<float> now = raster_->read_frame_losses();
   if (!plateau_ref_.empty()) {
-    double ref_mean = 0, now_mean = 0;
-    for (size_t k = 0; k < now.size(); ++k) {
-      ref_mean += plateau_ref_[k];
-      now_mean += now[k];
-    }
-    ref_mean /= static_cast<double>(now.size());
-    now_mean /= static_cast<double>(now.size());
-    bool flat = !(ref_mean - now_mean > opt_.plateau_tol * ref_mean);
+    const double ref_mean = mean_of(plateau_ref_);
+    bool flat = !fell(ref_mean, mean_of(now), opt_.plateau_tol, 0);
     for (size_t k = 0; k < now.size() && flat; ++k)
-      flat = !(plateau_ref_[k] - now[k] > opt_.plateau_tol_keyframe * std::max<double>(plateau_ref_[k], ref_mean));
+      flat = !fell(plateau_ref_[k], now[k], opt_.plateau_tol_keyframe, ref_mean);
     converged_ = flat;
   }
   plateau_ref_ = now;
