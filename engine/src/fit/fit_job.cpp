@@ -17,6 +17,7 @@
 #include "export/lottie_writer.h"
 #include "fit/blur_match.h"
 #include "fit/checkpoint.h"
+#include "fit/correction_palette.h"
 #include "fit/document_order.h"
 #include "fit/group_transform.h"
 #include "fit/inbetween.h"
@@ -155,14 +156,16 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   to.keyframes = keyframes;
   to.white_threshold = job.mask_threshold;
   to.stabilise = job.stabilise;
-  // The colours the target should show: the fitted scene's opaque fills and strokes.
-  if (job.colour_correction)
-    for (const Path& p : fit_scene.paths) {
-      if (p.opacity < 0.99f) continue;
-      if (p.has_fill && p.fill.a >= 0.99f) to.palette.push_back({p.fill.r, p.fill.g, p.fill.b});
-      if (p.has_stroke && p.stroke.color.a >= 0.99f)
-        to.palette.push_back({p.stroke.color.r, p.stroke.color.g, p.stroke.color.b});
-    }
+  ClRuntime rt(job.device);
+  // The colours the target should show: the fitted scene's opaque flat fills and strokes; none
+  // (no correction) when gradients cover much of the drawing (fit/correction_palette.h).
+  if (job.colour_correction) {
+    CorrectionPalette cp = correction_palette(rt, fit_scene, size.width);
+    if (cp.gradient_share > 0)
+      log::debug("fit: gradient paint covers %.1f%% of the canvas: %s", 100 * cp.gradient_share,
+                 cp.usable ? "colours corrected" : "too much for colour correction, the video's colours are compared as they are");
+    if (cp.usable) to.palette = std::move(cp.colours);
+  }
   if (!(to.white_threshold > 0 && to.white_threshold <= 1))
     throw Error("the mask threshold must be in (0, 1]");
   // The document written into, and how the fitted paths map onto it, checked before fitting.
@@ -214,7 +217,6 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   const double fine_cost = refine_w > 0 ? static_cast<double>(refine_w) * refine_w / (size.width * size.width) : 1;
   auto work = [&](int it) { return std::min(it, coarse_iters) + std::max(0, it - coarse_iters) * fine_cost; };
   double total_work = work(total_iters);
-  ClRuntime rt(job.device);
   // Blur matching at each width the fit runs at: the render σ of the loss that makes our
   // rest pose look like the video's first frame (fit/blur_match.h).
   auto match_blur = [&](const TargetFrames& t, const RenderSize& at) {
