@@ -159,8 +159,10 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   ClRuntime rt(job.device);
   // The colours the target should show: the fitted scene's opaque flat fills and strokes; none
   // (no correction) when gradients cover much of the drawing (fit/correction_palette.h).
+  double gradient_share = 0;
   if (job.colour_correction) {
     CorrectionPalette cp = correction_palette(rt, fit_scene, size.width);
+    gradient_share = cp.gradient_share;
     if (cp.gradient_share > 0)
       log::debug("fit: gradient paint covers %.1f%% of the canvas: %s", 100 * cp.gradient_share,
                  cp.usable ? "colours corrected" : "too much for colour correction, the video's colours are compared as they are");
@@ -527,7 +529,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     }
     report["loss_history"] = std::move(h);
   }
-  report["target_frames"] = {{"held", target.held_frames}, {"colour_corrected_keyframes", final_target.colour_corrected}};
+  report["target_frames"] = {{"held", target.held_frames}, {"colour_corrected_keyframes", final_target.colour_corrected},
+                             {"gradient_share", gradient_share}};
   // The loss's render σ (1: the paper's; more: the video was softer and its blur was matched).
   report["target_frames"]["render_blur_sigma"] = coarse_blur.render_sigma;
   if (fine) report["target_frames"]["refine_render_blur_sigma"] = fine_blur.render_sigma;
