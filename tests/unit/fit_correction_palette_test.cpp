@@ -26,6 +26,8 @@ Scene canvas_with(const std::string& extra) {
 
 }  // namespace
 
+TEST_SUITE("fit") {
+
 TEST_CASE("gradients give no colour to the correction, and a quarter of the canvas in gradients turns it off") {
   const CorrectionPalette p = correction_palette(runtime(), canvas_with(""), 40);
   // 400 of 1600 pixels, exactly covered: black renders as 0, so the share is exact.
@@ -65,3 +67,5 @@ TEST_CASE("a drawing without gradients is measured without a render") {
   CHECK(p.usable);
   CHECK(p.colours.size() == 1);
 }
+
+}  // TEST_SUITE
