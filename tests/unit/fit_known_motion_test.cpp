@@ -361,11 +361,10 @@ TEST_CASE("a straight edge bent by the target is fitted as the curve the export 
 // The fit stops when the loss stops falling, not before every keyframe is active and has had
 // its windows. A still figure on a still target: nothing to gain from the first window on.
 // K = 3 and 2000 iterations on the paper's schedule: keyframe 2 is activated at
-// 0.7 * 2000 / 2 = 700 (keyframe 1 at 0, the rest keyframe being pinned); the window ending at
-// 800 is the reference, the one ending at 900 gains nothing, so the fit ends at 900. With
-// adaptive activation keyframe 2 comes as soon as keyframe 1 has settled, at a window's end
-// (20 iterations), and the fit ends two plateau windows later. Without the plateau test it
-// runs all its iterations.
+// 0.7 * 2000 / 2 = 700 (keyframe 1 at 0, the rest keyframe being pinned), and the fit ends at
+// a plateau window's end after it, long before the budget. With adaptive activation keyframe 2
+// comes as soon as keyframe 1 has settled, at an activation window's end (10 iterations).
+// Without the plateau test it runs all its iterations.
 TEST_CASE("the fit ends when no keyframe's loss falls over a window, after the last activation") {
   const Scene s = figure();
   const int K = 3;
@@ -376,8 +375,18 @@ TEST_CASE("the fit ends when no keyframe's loss falls over a window, after the l
   const TargetFrames target = load_target(dir, 96, 96, to);
   FitOptions fo;
   fo.iterations = 2000;
-  REQUIRE(fo.plateau_window == 100);
-  REQUIRE(fo.activation_window == 20);
+  REQUIRE(fo.plateau_window == 50);
+  REQUIRE(fo.activation_window == 10);
+  // The end is at a plateau window's end after the last activation: the first window is the
+  // reference, so at least two. How many more depends on how long the newest keyframe takes to
+  // settle (Adam still moves a near-zero loss by more than the tolerance for a few windows:
+  // 3 on the paper's schedule, 5 adaptive, measured), so the test bounds it.
+  auto ends_on_a_window = [&](const Fitter& f) {
+    const int after = f.iteration() - f.last_activation();
+    CHECK(after % fo.plateau_window == 0);
+    CHECK(after >= 2 * fo.plateau_window);
+    CHECK(after <= 6 * fo.plateau_window);
+  };
   {
     FitOptions paper = fo;
     paper.activation_window = 0;
@@ -386,7 +395,7 @@ TEST_CASE("the fit ends when no keyframe's loss falls over a window, after the l
     while (!fitter.done()) fitter.step();
     CHECK(fitter.converged());
     CHECK(fitter.last_activation() == 700);
-    CHECK(fitter.iteration() == 900);
+    ends_on_a_window(fitter);
   }
   {
     Fitter fitter(runtime(), s, target, fo);
@@ -394,10 +403,10 @@ TEST_CASE("the fit ends when no keyframe's loss falls over a window, after the l
     MESSAGE("adaptive activation: keyframe 2 at iteration " << fitter.last_activation() << ", converged at "
                                                              << fitter.iteration());
     CHECK(fitter.converged());
-    CHECK(fitter.last_activation() % 20 == 0);
-    CHECK(fitter.last_activation() >= 40);  // a reference window, then a settled one
+    CHECK(fitter.last_activation() % 10 == 0);
+    CHECK(fitter.last_activation() >= 20);  // a reference window, then a settled one
     CHECK(fitter.last_activation() < 700);
-    CHECK(fitter.iteration() == fitter.last_activation() + 200);
+    ends_on_a_window(fitter);
   }
   fo.plateau_window = 0;
   fo.iterations = 1000;
