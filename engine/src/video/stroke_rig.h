@@ -9,8 +9,9 @@
 //  - strokes lying alongside the root (within its extent along its long axis, close across it)
 //    are the body with it (a torso drawn as a bundle of hairpins);
 //  - a limb stroke turns about its end nearer the body (the end in or nearest the body's box);
-//  - a stroke hangs from a longer stroke of the same limb when that end touches its curve (a
-//    foot drawn on from a shin), else from the root.
+//  - a stroke hangs from a longer stroke of the same limb when one of its ends touches that
+//    stroke's curve (a foot drawn on from a shin, the strokes of one leg meeting at its foot),
+//    else from the root.
 #pragma once
 
 #include <array>
