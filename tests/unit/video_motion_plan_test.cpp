@@ -1022,6 +1022,26 @@ TEST_CASE("arms drawn in one body outline: only the arm lobes bend, about their 
   CHECK(travel_at({100, 20}) == 0);  // the head
   CHECK(travel_at({90, 60}) == 0);   // the eye
   CHECK(loop_gap(pts, F) < 1e-9);
+  // One arm asked for: its lobe alone. Limbs (tentacles, petals) reach out all round: the
+  // sides bend, not two lobes.
+  const MotionPlan left = plan_from_prompt(parse_prompt("the ghost waves its left arm"), rig, 1);
+  REQUIRE(left.actions.size() == 1);
+  CHECK(left.actions[0].region_side == 1);  // the figure's left, drawn on the viewer's right
+  CHECK(left.actions[0].lobes.size() == 2);
+  const auto one = animate_plan(s, rig, left, F);
+  double right_tip = 0, left_tip = 0;
+  for (size_t i = 0; i < per; ++i)
+    for (int f = 1; f < F; ++f) {
+      const double d = std::hypot(one[f * per + i].x - one[i].x, one[f * per + i].y - one[i].y);
+      if (std::hypot(one[i].x - 178, one[i].y - 56) < 1e-6) right_tip = std::max(right_tip, d);
+      if (std::hypot(one[i].x - 20, one[i].y - 92) < 1e-6) left_tip = std::max(left_tip, d);
+    }
+  CHECK(right_tip > 5);
+  CHECK(left_tip == 0);
+  const MotionPlan limbs = plan_from_prompt(parse_prompt("the ghost sways its limbs"), rig, 1);
+  REQUIRE(limbs.actions.size() == 1);
+  CHECK(limbs.actions[0].region == Region::Sides);
+  CHECK(limbs.actions[0].lobes.empty());
 }
 
 }  // TEST_SUITE

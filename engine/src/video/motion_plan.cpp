@@ -470,13 +470,19 @@ struct Builder {
       a.region = target == Target::Arms || target == Target::Limbs ? Region::Sides
                  : target == Target::Legs ? Region::Lower : target == Target::Head ? Region::Top : Region::End;
       a.alternating = base.pairing == Pairing::Alternating || (base.pairing == Pairing::OneAtATime && (mods.both || plural));
-      if (a.region == Region::Sides) {
-        side_core(rig, a);
-        a.lobes = rig.parts[a.parts[0]].arm_lobes;
-      }
+      if (a.region == Region::Sides) side_core(rig, a);
       if ((base.pairing == Pairing::OneSide || base.pairing == Pairing::OneAtATime) && !mods.both && !plural) {
         // The figure's own side is drawn on the viewer's other side.
         a.region_side = mods.side != 0 ? -mods.side : ((rng() & 1) ? 1 : -1);
+      }
+      // Arms drawn in the outline (part_rig.h) bend instead of the sides, when there is one on
+      // every side that moves: a girl waving both arms has one lobe, her raised sleeve, and the
+      // sides' bend also swings the arm hanging along her body. Only for arms: a flower's petals
+      // and an octopus's tentacles (limbs) reach out all round, and one lobe of them is no pair.
+      if (a.region == Region::Sides && target == Target::Arms) {
+        const auto& lobes = rig.parts[a.parts[0]].arm_lobes;
+        auto on = [&](int side) { return std::any_of(lobes.begin(), lobes.end(), [&](const ArmLobe& l) { return l.side == side; }); };
+        if (a.region_side != 0 ? on(a.region_side) : on(-1) && on(1)) a.lobes = lobes;
       }
       a.direction = a.region == Region::End ? ((rng() & 1) ? 1 : -1) : a.direction;
       note = std::string("no separate ") + target_name(target) + ": the " +
