@@ -959,4 +959,89 @@ TEST_CASE("a cabin hanging below the rim at the bottom stays in the canvas when 
   CHECK(rig.parts[2].parent == 0);
 }
 
+TEST_CASE("a verb's whole-figure accents scale down with its limbs' swing when the turn limit cuts it") {
+  // Running: three strides a loop over 9 keyframes turn the legs too far between keyframes, so
+  // their swing is cut; the body's bob, the run's accent, is cut by as much (at full size it
+  // outweighed the legs of a galloping line-drawn horse).
+  const Fixture fx("stick_figure.svg");
+  MotionPlan plan = fx.plan("the man runs");
+  fit_plan(fx.scene, fx.rig, plan, 49, 9);
+  REQUIRE(plan.actions.size() == 3);
+  REQUIRE(plan.actions[2].primitive == Primitive::Bob);
+  const double limbs = std::min(plan.actions[0].scale, plan.actions[1].scale);
+  REQUIRE(limbs < 1);
+  CHECK(plan.actions[2].scale == doctest::Approx(limbs));
+  CHECK(std::find_if(plan.notes.begin(), plan.notes.end(), [](const std::string& n) { return n.find("with its limbs' swing") != std::string::npos; }) != plan.notes.end());
+}
+
+TEST_CASE("arms drawn in one body outline: only the arm lobes bend, about their bases; the hem and the head hold") {
+  // A ghost drawn as one outline (y down): its head's top at 100,20, a raised right arm (the
+  // viewer's right) out to 175-178,50-56 between its shoulder 140,60 and armpit 145,85, a left
+  // arm out to 20-22,92-100 between 60,70 and 58,95, and a scalloped hem whose right corner
+  // (172,160) sticks out sideways too, but low and joined to the body along most of its side.
+  // An eye inside the body.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><path d="M 100 20 L 130 30 L 140 60 L 175 50 L 178 56 L 145 85 L 150 140 L 172 160 L 160 175
+                       L 140 165 L 120 180 L 100 168 L 80 180 L 65 168 L 50 160 L 55 140 L 58 95 L 22 100
+                       L 20 92 L 60 70 L 70 30 Z" fill="#eee"/></g>
+           <g><path d="M 90 60 L 96 60 L 96 66 L 90 66 Z" fill="#222"/></g></svg>)",
+      "ghost.svg");
+  const std::vector<ArmLobe> lobes = arm_lobes(s.paths[0]);
+  REQUIRE(lobes.size() == 2);
+  CHECK(lobes[0].side == -1);
+  CHECK(lobes[0].tip.x == doctest::Approx(20).epsilon(0.05));
+  CHECK(lobes[1].side == 1);
+  CHECK(lobes[1].tip.x > 170);
+  // The arm's tip is in its lobe, the body's middle, the hem corner and the head are not.
+  CHECK(lobe_depth(lobes[0], {25, 95}) > 0);
+  CHECK(lobe_depth(lobes[0], {100, 100}) == 0);
+  CHECK(lobe_depth(lobes[1], {170, 160}) == 0);
+  CHECK(lobe_depth(lobes[1], {100, 25}) == 0);
+
+  const Rig rig = build_rig(s, {});
+  REQUIRE(rig.root == 0);
+  CHECK(rig.parts[0].arm_lobes.size() == 2);
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the ghost is waving its arms"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].region == Region::Sides);
+  CHECK(plan.actions[0].lobes.size() == 2);
+  const int F = 25;
+  const auto pts = animate_plan(s, rig, plan, F);
+  const size_t per = pts.size() / F;
+  auto travel_at = [&](Vec2 rest) {
+    double t = 0;
+    for (size_t i = 0; i < per; ++i)
+      if (std::hypot(pts[i].x - rest.x, pts[i].y - rest.y) < 1e-6)
+        for (int f = 1; f < F; ++f) t = std::max(t, std::hypot(pts[f * per + i].x - rest.x, pts[f * per + i].y - rest.y));
+    return t;
+  };
+  CHECK(travel_at({20, 92}) > 5);    // the left arm's tip
+  CHECK(travel_at({178, 56}) > 5);   // the right arm's tip
+  CHECK(travel_at({172, 160}) == 0); // the hem's corner
+  CHECK(travel_at({100, 20}) == 0);  // the head
+  CHECK(travel_at({90, 60}) == 0);   // the eye
+  CHECK(loop_gap(pts, F) < 1e-9);
+  // One arm asked for: its lobe alone. Limbs (tentacles, petals) reach out all round: the
+  // sides bend, not two lobes.
+  const MotionPlan left = plan_from_prompt(parse_prompt("the ghost waves its left arm"), rig, 1);
+  REQUIRE(left.actions.size() == 1);
+  CHECK(left.actions[0].region_side == 1);  // the figure's left, drawn on the viewer's right
+  CHECK(left.actions[0].lobes.size() == 2);
+  const auto one = animate_plan(s, rig, left, F);
+  double right_tip = 0, left_tip = 0;
+  for (size_t i = 0; i < per; ++i)
+    for (int f = 1; f < F; ++f) {
+      const double d = std::hypot(one[f * per + i].x - one[i].x, one[f * per + i].y - one[i].y);
+      if (std::hypot(one[i].x - 178, one[i].y - 56) < 1e-6) right_tip = std::max(right_tip, d);
+      if (std::hypot(one[i].x - 20, one[i].y - 92) < 1e-6) left_tip = std::max(left_tip, d);
+    }
+  CHECK(right_tip > 5);
+  CHECK(left_tip == 0);
+  const MotionPlan limbs = plan_from_prompt(parse_prompt("the ghost sways its limbs"), rig, 1);
+  REQUIRE(limbs.actions.size() == 1);
+  CHECK(limbs.actions[0].region == Region::Sides);
+  CHECK(limbs.actions[0].lobes.empty());
+}
+
 }  // TEST_SUITE

@@ -9,6 +9,7 @@
 
 #include "svgmotion/svg_reader.h"
 #include "video/part_rig.h"
+#include "video/stroke_rig.h"
 
 using namespace svgm;
 
@@ -270,6 +271,66 @@ TEST_CASE("a limb drawn as one stroke turns about its end nearest the shoulders 
   REQUIRE(hips.has_value());
   CHECK(hips->x == doctest::Approx(160));
   CHECK(hips->y == doctest::Approx(110));
+}
+
+TEST_CASE("a line drawing: the longest central stroke is the root, strokes alongside it the body, limbs hang where their ends touch") {
+  // A stick figure drawn as open strokes only (a sketch): a torso stroke 100,60-100,140 and a
+  // second torso stroke drawn alongside it, a head arc above, an arm from the shoulder and a
+  // forearm drawn on from the arm's hand, a leg from the hip and a stroke drawn down the back of
+  // the leg whose lower end meets the leg at the foot (its upper end touches nothing).
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="220">
+           <g>
+             <path d="M 100 60 C 100 87 100 113 100 140" fill="none" stroke="#000" stroke-width="3"/>
+             <path d="M 96 65 C 96 90 97 110 97 135" fill="none" stroke="#000" stroke-width="3"/>
+             <path d="M 90 45 C 90 25 106 25 106 45" fill="none" stroke="#000" stroke-width="3"/>
+           </g>
+           <g>
+             <path d="M 104 64 C 120 76 135 88 150 100" fill="none" stroke="#000" stroke-width="3"/>
+             <path d="M 150 101 C 160 103 170 105 180 106" fill="none" stroke="#000" stroke-width="3"/>
+           </g>
+           <g>
+             <path d="M 103 142 C 110 160 118 178 125 195" fill="none" stroke="#000" stroke-width="3"/>
+             <path d="M 118 150 C 120 165 122 180 124 193" fill="none" stroke="#000" stroke-width="3"/>
+           </g></svg>)",
+      "sketch.svg");
+  const Rig r = build_rig(s, {});
+  // Each stroke is a part of its own (the groups join strokes of different limbs).
+  REQUIRE(r.parts.size() == 7);
+  for (size_t i = 0; i < r.parts.size(); ++i) REQUIRE(r.part_of_path[i] == static_cast<int>(i));
+  CHECK(r.root == 0);
+  // The torso stroke alongside the root is the body: a detail hanging from the root.
+  CHECK(r.parts[1].role == Role::Detail);
+  CHECK(r.parts[1].parent == 0);
+  CHECK(r.parts[2].role == Role::Head);
+  // The arm hangs from the root (its box overlaps nothing larger) and turns about its shoulder end.
+  CHECK(r.parts[3].role == Role::UpperLimb);
+  CHECK(r.parts[3].parent == 0);
+  CHECK(r.parts[3].pivot.x == doctest::Approx(104));
+  CHECK(r.parts[3].pivot.y == doctest::Approx(64));
+  // The forearm (an upper limb too: its middle is beside the body's upper half) touches the
+  // arm's curve at the hand with its end: it hangs from the arm.
+  CHECK(r.parts[4].parent == 3);
+  CHECK(r.parts[4].chain_top == 3);
+  // The leg turns about its hip end; the stroke down its back meets it at the foot and hangs from it.
+  CHECK(r.parts[5].role == Role::LowerLimb);
+  CHECK(r.parts[5].parent == 0);
+  CHECK(r.parts[5].pivot.x == doctest::Approx(103));
+  CHECK(r.parts[5].pivot.y == doctest::Approx(142));
+  CHECK(r.parts[6].parent == 5);
+  // A filled path makes the drawing no line drawing: the rules for shapes hold.
+  CHECK(is_line_drawing(s));
+  CHECK_FALSE(is_line_drawing(read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <path d="M 80 60 L 120 60 L 120 140 L 80 140 Z" fill="#f9c"/>
+           <path d="M 84 110 C 56 40 70 40 80 112" fill="none" stroke="#000"/>
+           <path d="M 160 110 C 148 95 134 80 122 66" fill="none" stroke="#000"/>
+           <path d="M 92 190 C 93 170 94 150 95 138" fill="none" stroke="#000"/></svg>)",
+      "mixed.svg")));
+  // Lengths and curve boxes are the curve's, not the handles'.
+  CHECK(stroke_length(s.paths[0]) == doctest::Approx(80).epsilon(0.001));
+  const RigBox hb = stroke_box(s.paths[2]);
+  CHECK(hb.y0 == doctest::Approx(30));  // the arc's top at t = 0.5 (its handles stand at 25)
 }
 
 }  // TEST_SUITE

@@ -454,11 +454,12 @@ struct Builder {
     // No separate part for a limb role: a region of the root bends instead (when it swings).
     const bool limb_role = target == Target::Arms || target == Target::Legs || target == Target::Limbs ||
                            target == Target::Head || target == Target::Tail;
-    // A figure held by a pole (a flag) has no limbs: a limb verb with no limb part of its own
-    // ("a waving flag") is the wave from the pole, as a ripple, not a bend of a region (the
-    // flag's edge along the pole swung 36 degrees across it and the fit dragged the pole's
-    // strokes along).
-    if (limb_role && !note.empty() && rig.root >= 0 && a.primitive == Primitive::Swing && anchored_side(rig) != 0)
+    // A figure held by a pole (a flag) has no limbs: a limb verb ("a waving flag") is the wave
+    // from the pole, as a ripple, not a bend of a region (the flag's edge along the pole swung
+    // 36 degrees across it and the fit dragged the pole's strokes along), nor a swing of the
+    // strokes that a line drawing's rig takes for limbs (a flag's folds swung as arms about
+    // their ends).
+    if (limb_role && rig.root >= 0 && a.primitive == Primitive::Swing && anchored_side(rig) != 0)
       if (const Verb* ripple = find_verb_by_name("ripple")) {
         add(*ripple, ripple->actions[0], Target::Whole, {}, "", mods, plural, words, false,
             verb.name + " has no " + target_name(target) + " on a figure held by a pole: it ripples");
@@ -474,10 +475,22 @@ struct Builder {
         // The figure's own side is drawn on the viewer's other side.
         a.region_side = mods.side != 0 ? -mods.side : ((rng() & 1) ? 1 : -1);
       }
+      // Arms drawn in the outline (part_rig.h) bend instead of the sides, when there is one on
+      // every side that moves: a girl waving both arms has one lobe, her raised sleeve, and the
+      // sides' bend also swings the arm hanging along her body. Only for arms: a flower's petals
+      // and an octopus's tentacles (limbs) reach out all round, and one lobe of them is no pair.
+      if (a.region == Region::Sides && target == Target::Arms) {
+        const auto& lobes = rig.parts[a.parts[0]].arm_lobes;
+        auto on = [&](int side) { return std::any_of(lobes.begin(), lobes.end(), [&](const ArmLobe& l) { return l.side == side; }); };
+        if (a.region_side != 0 ? on(a.region_side) : on(-1) && on(1)) a.lobes = lobes;
+      }
       a.direction = a.region == Region::End ? ((rng() & 1) ? 1 : -1) : a.direction;
       note = std::string("no separate ") + target_name(target) + ": the " +
              (a.region == Region::Sides ? "sides" : a.region == Region::Lower ? "lower part" : a.region == Region::Top ? "top" : "far end") +
              " of " + rig.parts[a.parts[0]].name + " bend";
+      if (!a.lobes.empty())
+        note = std::string("no separate ") + target_name(target) + ": the " + std::to_string(a.lobes.size()) +
+               " arm" + (a.lobes.size() > 1 ? "s" : "") + " drawn in the outline of " + rig.parts[a.parts[0]].name + " bend";
       a.sign = {1};
       a.phase = {0};
     }
@@ -800,6 +813,8 @@ Vec2 rotate_about(Vec2 q, Vec2 c, double deg) {
 // one shape usually has its joints: the core of a body is the middle quarter of its width
 // (kCore each side), hips at 60 % of its height, a neck at 30 %, a tail the last 30 %.
 constexpr double kCore = 0.12, kHip = 0.6, kNeck = 0.3, kTailStart = 0.3, kRamp = 0.25;
+// An arm lobe's turn grows over this share of its base's width beyond the base.
+constexpr double kLobeRamp = 0.5;
 
 Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
   const double W = std::max(box.w(), 1e-9), H = std::max(box.h(), 1e-9);
@@ -807,6 +822,20 @@ Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box
   auto wave = [&](double phase) { return std::sin(kTau * (a.cycles * t + phase)); };
   switch (a.region) {
     case Region::Sides: {
+      // Arms drawn in the part's outline: each bends about the middle of its base, the turn
+      // growing from nothing at the base over half its width (the outline stays in one piece).
+      if (!a.lobes.empty()) {
+        for (const ArmLobe& l : a.lobes) {
+          if (a.region_side != 0 && l.side != a.region_side) continue;
+          const double depth = lobe_depth(l, q);
+          if (depth <= 0) continue;
+          const double base = std::hypot(l.base1.x - l.base0.x, l.base1.y - l.base0.y);
+          const double w = smoothstep(depth / std::max(kLobeRamp * base, 1e-9));
+          const double ang = amp * (l.side < 0 ? 1 : -1) * wave(a.alternating && l.side > 0 ? 0.5 : 0) * w;
+          return rotate_about(q, l.pivot, ang);
+        }
+        return q;
+      }
       const double dx = q.x - c.x;
       const int side = dx < 0 ? -1 : 1;  // as the viewer sees it
       const double core = a.core_left > 0 ? (side < 0 ? a.core_left : a.core_right) : kCore * W;
@@ -1179,6 +1208,26 @@ std::string turn_broken(const MotionPlan& plan, int frames, int K) {
   return "";
 }
 
+// A verb's whole-figure accents (a gallop's rock and bob) keep their size next to its limbs'
+// swing: when the turn or step limit scaled the limbs' swing down, its accents of the same
+// words scale down with it. At full size beside legs cut to half, a galloping horse rocked and
+// bobbed more than its legs moved (share of the motion on the legs 0.35).
+void accents_follow_limbs(MotionPlan& plan) {
+  for (auto& a : plan.actions) {
+    if (a.target != Target::Whole || a.primitive == Primitive::Spin) continue;
+    double limbs = 1;
+    for (const auto& b : plan.actions)
+      if (&b != &a && b.verb == a.verb && b.words == a.words && is_limb_target(b.target) && b.primitive == Primitive::Swing)
+        limbs = std::min(limbs, b.scale);
+    if (limbs >= a.scale) continue;
+    a.scale = limbs;
+    char line[240];
+    std::snprintf(line, sizeof line, "%s (%s) of the whole figure scaled to %.0f %% with its limbs' swing", a.verb.c_str(),
+                  primitive_name(a.primitive), limbs * 100);
+    plan.notes.push_back(line);
+  }
+}
+
 // fit_plan's scaling of `plan` (see motion_plan.h). True when a motion of the whole figure
 // would break a limit even at its smallest scale (a warning says so).
 bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
@@ -1231,6 +1280,7 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
   // Each action alone first, then all together.
   for (size_t i = 0; i <= plan.actions.size(); ++i) {
     const bool all = i == plan.actions.size();
+    if (all) accents_follow_limbs(plan);
     if (!all && plan.actions[i].primitive == Primitive::Spin) continue;
     // Alone: the other actions stay in the plan at no amplitude (a fall still frees its drops
     // from the figure's sway).

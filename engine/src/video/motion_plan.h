@@ -56,6 +56,8 @@ struct PlannedAction {
   bool alternating = false;     // Sides/Lower: the two sides half a cycle apart
   double core_left = 0, core_right = 0;  // Sides: the still core's half-widths left and right
                                          // of the box centre (0: kCore of the box width)
+  std::vector<ArmLobe> lobes;   // Sides: the arms drawn in the part's outline, when it has
+                                // some (part_rig.h): only they bend, each about its base
   double scale = 1;             // this action's own amplitude factor (fit_plan), times plan.scale
   std::string why;
 };

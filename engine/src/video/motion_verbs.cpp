@@ -32,7 +32,10 @@ const std::vector<Verb> kVerbs = {
   // Legs and gaits.
   {"walk",    {"walk", "march", "stroll", "step", "strid"}, {{P::Swing, T::Legs, 18, 2, Pr::Alternating}, {P::Swing, T::Arms, 12, 2, Pr::Alternating}, {P::Bob, T::Whole, 0.015, 4}}, P::Swing},
   {"run",     {"run", "ran", "sprint", "jog", "rush", "dash"}, {{P::Swing, T::Legs, 28, 3, Pr::Alternating}, {P::Swing, T::Arms, 20, 3, Pr::Alternating}, {P::Bob, T::Whole, 0.025, 6}}, P::Swing},
-  {"gallop",  {"gallop", "trot", "canter"},     {{P::Swing, T::Legs, 24, 3, Pr::Alternating}, {P::Rock, T::Whole, 4, 3}, {P::Bob, T::Whole, 0.03, 3}}, P::Swing},
+  // A gallop's body rises at each stride as a runner's does. Rocked about its base as well, the
+  // whole horse (a line drawing's head and mane are most of its strokes) moved as much as its
+  // legs, which the turn limit cuts to half at three strides a loop (share on the legs 0.48).
+  {"gallop",  {"gallop", "trot", "canter"},     {{P::Swing, T::Legs, 24, 3, Pr::Alternating}, {P::Bob, T::Whole, 0.025, 6}}, P::Swing},
   {"kick",    {"kick"},                         {{P::Swing, T::Legs, 30, 2, Pr::OneSide}}, P::Swing},
   {"pedal",   {"pedal", "cycl", "bik"},         {{P::Swing, T::Legs, 22, 2, Pr::Alternating}, {P::Spin, T::Wheels, 1, 1}}, P::Swing},
   {"climb",   {"climb", "scrambl"},             {{P::Swing, T::Arms, 20, 2, Pr::Alternating}, {P::Swing, T::Legs, 16, 2, Pr::Alternating}, {P::Bob, T::Whole, 0.02, 2}}, P::Swing},

@@ -14,6 +14,7 @@
 #include "scene/backdrop.h"
 #include "svgmotion/svg_reader.h"
 #include "video/hands_at_head.h"
+#include "video/stroke_rig.h"
 #include "video/wheel_riders.h"
 
 namespace svgm {
@@ -44,6 +45,14 @@ constexpr double kStrokeFold = 0.5;
 // A part above the root more than this many times as tall as wide is a raised limb, not the
 // head (a bird's wing raised above its back; heads in the bench drawings are 0.6-1.5).
 constexpr double kHeadMaxAspect = 2.0;
+// In a line drawing (stroke_rig.h): the head's middle lies above this share of the body's height
+// from its top (its strokes sit on the shoulders; an arm stroke drawn from the shoulder out and
+// up is no head), strokes alongside the root lie within this share of the figure's extent across
+// the root's middle, and a stroke's end touches another's curve within this share of the
+// figure's diagonal.
+constexpr double kLineHeadTop = 0.1;
+constexpr double kLineAcross = 0.2;
+constexpr double kLineTouch = 0.03;
 
 bool is_generic_word(const std::string& w) {
   static const std::set<std::string> generic = {
@@ -340,6 +349,17 @@ Units units_of(const Scene& scene, const SourceNames& names) {
   std::vector<int>& unit_group = U.group;
   std::vector<char>& unit_split = U.split;
   std::set<int>& wheel_paths = U.wheels;
+  // A line drawing's strokes are each a part: a grouper joins a sketch's strokes by where they
+  // cross (a horse's neck with its foreleg), not by the limb they draw.
+  if (is_line_drawing(scene)) {
+    for (size_t g = 0; g < scene.groups.size(); ++g)
+      for (int pi : scene.groups[g].paths) {
+        unit_paths.push_back({pi});
+        unit_group.push_back(static_cast<int>(g));
+        unit_split.push_back(scene.groups[g].paths.size() > 1);
+      }
+    return U;
+  }
   for (size_t g = 0; g < scene.groups.size(); ++g) {
     std::map<std::string, std::vector<int>> by_name;  // innermost named element -> paths
     for (int pi : scene.groups[g].paths) {
@@ -480,16 +500,33 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
     if (P.role != Role::Background) rig.figure.add(P.box);
   if (rig.figure.empty()) return rig;
 
+  // A line drawing (stroke_rig.h): each part one stroke, sized by its curve's length and
+  // placed by its curve's box; elsewhere the part's area and its control points' box.
+  const bool line = is_line_drawing(scene);
+  std::vector<RigBox> cbox(G);
+  std::vector<double> size(G, 0);
+  RigBox cfigure;
+  for (int g = 0; g < G; ++g) {
+    cbox[g] = rig.parts[g].box;
+    size[g] = rig.parts[g].area;
+    if (!line || unit_paths[g].size() != 1) continue;
+    cbox[g] = stroke_box(scene.paths[unit_paths[g][0]]);
+    size[g] = stroke_length(scene.paths[unit_paths[g][0]]);
+    if (rig.parts[g].role != Role::Background) cfigure.add(cbox[g]);
+  }
+  if (!line) cfigure = rig.figure;
+
   // Root: a part named body/torso, else the largest central part.
-  const Vec2 fc = rig.figure.centre();
+  const Vec2 fc = cfigure.centre();
   const double fdiag = std::hypot(rig.figure.w(), rig.figure.h());
+  const double cdiag = std::hypot(cfigure.w(), cfigure.h());
   double best = -1;
   for (int g = 0; g < G; ++g) {
     const RigPart& P = rig.parts[g];
     if (P.role == Role::Background || P.box.empty()) continue;
-    const Vec2 c = P.box.centre();
-    const double d = std::hypot(c.x - fc.x, c.y - fc.y) / (0.25 * fdiag);
-    double score = std::max(P.area, 1e-9) / (1 + d * d);
+    const Vec2 c = cbox[g].centre();
+    const double d = std::hypot(c.x - fc.x, c.y - fc.y) / (0.25 * cdiag);
+    double score = std::max(size[g], 1e-9) / (1 + d * d);
     if (has_word(P.words, {"body", "torso", "trunk"})) score = 1e300;
     if (g == U.root) score = 1e301;
     // What a wheel carries hangs from the wheel: it is never the root (its wheel may be).
@@ -524,7 +561,7 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
       P.carried = true;
     }
     else if (arm >= 0) parent = arm;  // hands taken from the head hang from their arm (split_head_holds)
-    else if (P.area < R.area && !U.from_root.count(g))
+    else if (!line && P.area < R.area && !U.from_root.count(g))
       for (int h = 0; h < G; ++h) {
         const RigPart& Q = rig.parts[h];
         if (h == g || h == rig.root || Q.role == Role::Background || Q.box.empty()) continue;
@@ -569,21 +606,38 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
     P.chain_top = top;
   }
 
+  // The body the limbs are placed against: the root; in a line drawing the root with the
+  // strokes alongside it (a torso drawn as a bundle of hairpins), which hold still with it.
+  RigBox body = line ? cbox[rig.root] : R.box;
+  std::vector<char> in_body(G, 0);
+  if (line) {
+    const bool upright = cbox[rig.root].h() >= cbox[rig.root].w();
+    const double across = kLineAcross * (upright ? cfigure.w() : cfigure.h());
+    for (int g = 0; g < G; ++g)
+      if (g != rig.root && rig.parts[g].role != Role::Background && lies_alongside(cbox[g], cbox[rig.root], across)) {
+        in_body[g] = 1;
+        body.add(cbox[g]);
+      }
+  }
+  const double head_top = line ? kLineHeadTop : 0.25;
+
   // Roles of the parts hanging from the root, then names decide where they say something.
-  const Vec2 rc = R.box.centre();
-  const double rw = std::max(R.box.w(), 1e-9), rh = std::max(R.box.h(), 1e-9);
+  const Vec2 rc = body.centre();
+  const double rw = std::max(body.w(), 1e-9), rh = std::max(body.h(), 1e-9);
   int head = -1;
   for (int g = 0; g < G; ++g) {
     RigPart& P = rig.parts[g];
     if (P.parent != rig.root) continue;
-    const Vec2 c = P.box.centre();
+    const RigBox& pbox = cbox[g];
+    const Vec2 c = pbox.centre();
     const double dx = c.x - rc.x;
-    const bool inside = overlap(P.box, R.box) >= 0.8 * P.box.area();
-    if (inside) { P.role = Role::Detail; P.why = "inside the root"; }
-    else if (std::fabs(dx) < 0.35 * rw && c.y < R.box.y0 + 0.25 * rh && P.box.h() > kHeadMaxAspect * P.box.w()) {
+    const bool inside = overlap(pbox, body) >= 0.8 * pbox.area();
+    if (in_body[g]) { P.role = Role::Detail; P.why = "a stroke alongside the root (the body)"; }
+    else if (inside) { P.role = Role::Detail; P.why = "inside the root"; }
+    else if (std::fabs(dx) < 0.35 * rw && c.y < body.y0 + head_top * rh && pbox.h() > kHeadMaxAspect * pbox.w()) {
       P.role = Role::UpperLimb;
       P.why = "above the root, tall and thin (a raised wing or arm)";
-    } else if (std::fabs(dx) < 0.35 * rw && c.y < R.box.y0 + 0.25 * rh) {
+    } else if (std::fabs(dx) < 0.35 * rw && c.y < body.y0 + head_top * rh) {
       P.role = Role::Head;
       P.why = "central, above the root";
       if (head < 0 || P.area > rig.parts[head].area) head = g;
@@ -597,8 +651,8 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
   for (int g = 0; g < G; ++g) {
     RigPart& P = rig.parts[g];
     if (P.role != Role::Head || g == head) continue;
-    const RigBox& hb = rig.parts[head].box;
-    if (P.box.centre().x < hb.x0 || P.box.centre().x > hb.x1) { P.role = Role::UpperLimb; P.why = "above the root, beside the head (a raised arm)"; }
+    const RigBox& hb = cbox[head];
+    if (cbox[g].centre().x < hb.x0 || cbox[g].centre().x > hb.x1) { P.role = Role::UpperLimb; P.why = "above the root, beside the head (a raised arm)"; }
     else { P.role = Role::Detail; P.why = "above the root (a smaller head part)"; }
   }
   // Tail: the attached part reaching farthest sideways at the root's height, not the head.
@@ -607,11 +661,49 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
   for (int g = 0; g < G; ++g) {
     const RigPart& P = rig.parts[g];
     if (P.parent != rig.root || P.role == Role::Head || P.role == Role::Detail) continue;
-    const Vec2 c = P.box.centre();
-    const double far = std::max(std::fabs(P.box.x0 - rc.x), std::fabs(P.box.x1 - rc.x));
-    if (c.y >= R.box.y0 && c.y <= R.box.y1 && far > reach && rig.figure.w() > rig.figure.h()) { reach = far; tail = g; }
+    const RigBox& pbox = cbox[g];
+    const Vec2 c = pbox.centre();
+    const double far = std::max(std::fabs(pbox.x0 - rc.x), std::fabs(pbox.x1 - rc.x));
+    if (c.y >= body.y0 && c.y <= body.y1 && far > reach && cfigure.w() > cfigure.h()) { reach = far; tail = g; }
   }
   if (tail >= 0) { rig.parts[tail].role = Role::Tail; rig.parts[tail].why = "reaches farthest sideways at the root's height"; }
+
+  // A line drawing's limb strokes turn about their end nearer the body (stroke_body_end), and
+  // hang from a longer stroke of the same limb whose curve one of their ends touches (a shin
+  // drawn on from a thigh, a foot from a shin, the strokes of one leg meeting at its foot), else
+  // from the root. Hung from the stroke its box overlaps most, a torso stroke swung with a
+  // smaller arm stroke and the arms hung from a detail; a runner's back-leg strokes, meeting at
+  // the foot but each turning about its own end, crossed each other and the target tore (the
+  // ranker flagged a stroke's visible area falling from 40 to 11 px in a frame).
+  if (line) {
+    const double touch = kLineTouch * cdiag;
+    for (int g = 0; g < G; ++g) {
+      RigPart& P = rig.parts[g];
+      if (g == rig.root || P.parent != rig.root || in_body[g] || unit_paths[g].size() != 1 ||
+          (P.role != Role::UpperLimb && P.role != Role::LowerLimb && P.role != Role::Tail))
+        continue;
+      const Vec2 joint = {body.centre().x, P.role == Role::UpperLimb ? body.y0 : body.y1};
+      P.pivot = stroke_body_end(scene.paths[unit_paths[g][0]], body, joint);
+      P.why += "; one stroke, turns about its end nearer the body";
+      double nearest = touch;
+      const auto ends = stroke_ends(scene.paths[unit_paths[g][0]]);
+      for (int h = 0; h < G; ++h) {
+        const RigPart& Q = rig.parts[h];
+        if (h == g || h == rig.root || in_body[h] || Q.role != P.role || unit_paths[h].size() != 1 || size[h] <= size[g]) continue;
+        for (const Vec2& e : ends) {
+          const double d = distance_to_stroke(e, scene.paths[unit_paths[h][0]]);
+          if (d <= nearest) { nearest = d; P.parent = h; }
+        }
+      }
+    }
+    for (int g = 0; g < G; ++g) {
+      RigPart& P = rig.parts[g];
+      if (P.parent < 0) continue;
+      int top = g, guard = 0;
+      while (rig.parts[top].parent != rig.root && rig.parts[top].parent >= 0 && guard++ < G) top = rig.parts[top].parent;
+      P.chain_top = top;
+    }
+  }
   for (int g = 0; g < G; ++g) {
     RigPart& P = rig.parts[g];
     if (P.role == Role::Background || g == rig.root) continue;
@@ -631,13 +723,28 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
   // across the neck (a runner sketch's arm strokes).
   for (int g = 0; g < G; ++g) {
     RigPart& P = rig.parts[g];
-    if (P.parent != rig.root || unit_paths[g].size() != 1 || (P.role != Role::UpperLimb && P.role != Role::LowerLimb))
+    if (line || P.parent != rig.root || unit_paths[g].size() != 1 || (P.role != Role::UpperLimb && P.role != Role::LowerLimb))
       continue;
     const Vec2 joint = {R.box.centre().x, P.role == Role::UpperLimb ? R.box.y0 : R.box.y1};
     if (const auto end = stroke_limb_pivot(scene.paths[unit_paths[g][0]], joint)) {
       P.pivot = *end;
       P.why += "; one stroke, turns about its end nearest the root's " + std::string(P.role == Role::UpperLimb ? "top" : "bottom");
     }
+  }
+
+  // Arms drawn in a part's largest filled, closed outline (outline_lobes.h).
+  for (int g = 0; g < G; ++g) {
+    RigPart& P = rig.parts[g];
+    if (P.role == Role::Background) continue;
+    int largest = -1;
+    double most = 0;
+    for (int pi : unit_paths[g]) {
+      const Path& p = scene.paths[pi];
+      if (!(p.has_fill && p.fill.a > 0) || p.subpaths.empty() || !p.subpaths[0].closed) continue;
+      const double a = std::fabs(shoelace(p.subpaths[0].points));
+      if (a > most) { most = a; largest = pi; }
+    }
+    if (largest >= 0) P.arm_lobes = arm_lobes(scene.paths[largest]);
   }
 
   // Round parts (wheels).

@@ -29,6 +29,14 @@
 //    from the arm they lie on (hands_at_head.h).
 //  - repeated elements: at least three small paths of similar size (drops, stars, leaves),
 //    each with any smaller paths drawn inside its box (a highlight), moved one by one.
+//  - arms drawn in a part's largest filled outline (a ghost's body path going out round each
+//    arm and back): its arm lobes (outline_lobes.h), which a prompt's arms bend when the part
+//    is the region that stands in for arms.
+//  - a line drawing (every path an open stroke, stroke_rig.h): each stroke is a part, sized by
+//    its length and placed by its curve's box; the strokes alongside the root are the body with
+//    it, the head is above the body's top tenth, and a limb stroke hangs from a longer stroke of
+//    its limb that one of its ends touches, else from the root, turning about its end nearer
+//    the body.
 #pragma once
 
 #include <map>
@@ -38,6 +46,7 @@
 
 #include "svgmotion/affine.h"
 #include "svgmotion/scene.h"
+#include "video/outline_lobes.h"
 
 namespace svgm {
 
@@ -72,6 +81,7 @@ struct RigPart {
   bool round = false;         // a wheel-like part
   bool carried = false;       // turns with the wheel it hangs from (its spokes and hub drawn in
                               // one group with its stand: part_rig.cpp's split_wheel_loads)
+  std::vector<ArmLobe> arm_lobes;  // arms drawn in its largest outline (outline_lobes.h)
   std::string why;            // one phrase: how its role was found
 };
 

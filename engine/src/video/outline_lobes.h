@@ -1,0 +1,38 @@
+// Arms drawn as part of one body outline: a ghost's stubby arms, where the path of its body goes
+// out round each arm and back. No part of the drawing is the arm, so the motion bends a region of
+// the outline (motion_plan.h's Sides region); which region is found here, from the outline's own
+// shape, instead of everything beyond a vertical line either side of the body's middle (which
+// also took a tilted ghost's hem corner and its hat's brim).
+//
+// The outline's concavities (where it falls in from its convex hull by at least kDefectDepth of
+// its size: armpits, the neck, the gaps of a hem) cut it into lobes. A lobe is an arm when it
+// leaves the body sideways (its base, the segment between the two concavities, faces left or
+// right), from the body's upper part (its base's middle above kArmBaseLow of the outline's
+// height), through a narrow base (at most kArmBaseMax of the outline's height: a hem corner
+// joins the body along most of its side) and sticks out at least kArmReach of its base's width
+// (a bump is no arm).
+#pragma once
+
+#include <vector>
+
+#include "svgmotion/scene.h"
+
+namespace svgm {
+
+struct ArmLobe {
+  int side = 0;               // as the viewer sees it: -1 left, +1 right
+  Vec2 base0, base1;          // where the lobe leaves the body (its two concavities)
+  Vec2 pivot;                 // the base's middle: the arm turns about it
+  Vec2 tip;                   // the lobe's point farthest from its base
+  std::vector<Vec2> outline;  // the lobe's stretch of the outline, base0 .. base1
+};
+
+// The arm lobes of `outline`'s first subpath (closed, at least a few cubics), left first.
+std::vector<ArmLobe> arm_lobes(const Path& outline);
+
+// How far q is into `lobe` beyond its base, 0 when q is not in the lobe: on the base's outer
+// side and inside the lobe's outline, or within kLobeMargin of the base's width of it (the
+// handles of its curves lie just outside the curves).
+double lobe_depth(const ArmLobe& lobe, Vec2 q);
+
+}  // namespace svgm
