@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "video/curve_samples.h"
+
 namespace svgm {
 
 namespace {
@@ -61,11 +63,7 @@ std::vector<ArmLobe> arm_lobes(const Path& outline) {
   const auto& c = outline.subpaths[0].points;
   if (c.size() < 13) return out;  // at least four cubics: a lobe needs room
   std::vector<Vec2> p;
-  for (size_t s = 0; s + 3 < c.size(); s += 3)
-    for (int k = 0; k < kSteps; ++k) {
-      const double t = static_cast<double>(k) / kSteps, u = 1 - t;
-      p.push_back(u * u * u * c[s] + 3 * u * u * t * c[s + 1] + 3 * u * t * t * c[s + 2] + t * t * t * c[s + 3]);
-    }
+  append_curve_samples(outline.subpaths[0], kSteps, false, p);  // closed: its end is its start
   const int n = static_cast<int>(p.size());
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
   for (const Vec2& q : p) {

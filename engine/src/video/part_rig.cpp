@@ -13,6 +13,7 @@
 #include "fit/document_order.h"
 #include "scene/backdrop.h"
 #include "svgmotion/svg_reader.h"
+#include "video/curve_samples.h"
 #include "video/hands_at_head.h"
 #include "video/stroke_rig.h"
 #include "video/wheel_riders.h"
@@ -212,21 +213,21 @@ struct Units {
                                   // the arm holding them (split_head_holds)
 };
 
-// Points on a path's curves (each cubic at quarters): a circle's handles lie 0.14 of its
-// radius beyond it.
-std::vector<Vec2> curve_points(const Path& p) {
-  std::vector<Vec2> out;
-  for (const auto& sp : p.subpaths) {
-    const auto& c = sp.points;
-    for (size_t s = 0; s + 3 < c.size(); s += 3)
-      for (double t : {0.0, 0.25, 0.5, 0.75}) {
-        const double u = 1 - t;
-        out.push_back(u * u * u * c[s] + 3 * u * u * t * c[s + 1] + 3 * u * t * t * c[s + 2] + t * t * t * c[s + 3]);
-      }
-    if (!c.empty()) out.push_back(c.back());
+// Each hanging part's chain top: the part its chain hangs from the root by (the guard stops a
+// cycle of parents).
+void set_chain_tops(Rig& rig) {
+  const int G = static_cast<int>(rig.parts.size());
+  for (int g = 0; g < G; ++g) {
+    RigPart& P = rig.parts[g];
+    if (P.parent < 0) continue;
+    int top = g, guard = 0;
+    while (rig.parts[top].parent != rig.root && rig.parts[top].parent >= 0 && guard++ < G) top = rig.parts[top].parent;
+    P.chain_top = top;
   }
-  return out;
 }
+
+// Points on a path's curves, each cubic at quarters.
+std::vector<Vec2> curve_points(const Path& p) { return curve_samples(p, 4); }
 
 }  // namespace
 
@@ -598,13 +599,7 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
     P.pivot = count > 0 ? (1.0 / count) * sum : nearest;
   }
   // Chains: a limb's segments move with it.
-  for (int g = 0; g < G; ++g) {
-    RigPart& P = rig.parts[g];
-    if (P.parent < 0) continue;
-    int top = g, guard = 0;
-    while (rig.parts[top].parent != rig.root && rig.parts[top].parent >= 0 && guard++ < G) top = rig.parts[top].parent;
-    P.chain_top = top;
-  }
+  set_chain_tops(rig);
 
   // The body the limbs are placed against: the root; in a line drawing the root with the
   // strokes alongside it (a torso drawn as a bundle of hairpins), which hold still with it.
@@ -696,13 +691,7 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
         }
       }
     }
-    for (int g = 0; g < G; ++g) {
-      RigPart& P = rig.parts[g];
-      if (P.parent < 0) continue;
-      int top = g, guard = 0;
-      while (rig.parts[top].parent != rig.root && rig.parts[top].parent >= 0 && guard++ < G) top = rig.parts[top].parent;
-      P.chain_top = top;
-    }
+    set_chain_tops(rig);
   }
   for (int g = 0; g < G; ++g) {
     RigPart& P = rig.parts[g];

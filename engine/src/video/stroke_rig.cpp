@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "video/curve_samples.h"
+
 namespace svgm {
 
 namespace {
@@ -38,19 +40,7 @@ bool is_line_drawing(const Scene& scene) {
   return std::all_of(scene.paths.begin(), scene.paths.end(), [](const Path& p) { return is_open_stroke(p); });
 }
 
-std::vector<Vec2> stroke_curve(const Path& p) {
-  std::vector<Vec2> out;
-  for (const auto& sp : p.subpaths) {
-    const auto& c = sp.points;
-    for (size_t s = 0; s + 3 < c.size(); s += 3)
-      for (int k = 0; k < kCurveSteps; ++k) {
-        const double t = static_cast<double>(k) / kCurveSteps, u = 1 - t;
-        out.push_back(u * u * u * c[s] + 3 * u * u * t * c[s + 1] + 3 * u * t * t * c[s + 2] + t * t * t * c[s + 3]);
-      }
-    if (!c.empty()) out.push_back(c.back());
-  }
-  return out;
-}
+std::vector<Vec2> stroke_curve(const Path& p) { return curve_samples(p, kCurveSteps); }
 
 double stroke_length(const Path& p) {
   const std::vector<Vec2> on = stroke_curve(p);
