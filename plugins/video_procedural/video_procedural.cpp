@@ -88,7 +88,9 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
     const std::vector<svgm::Vec2> pts = svgm::animate_plan(scene, rig, plan, o.frames);
     if (i == 0) {
       report["canvas"] = {scene.width, scene.height};
-      report["paths"] = svgm::path_motion_json(scene, svgm::path_motion(scene, pts, o.frames));
+      std::vector<std::vector<svgm::Affine>> maps;
+      report["paths"] = svgm::path_motion_json(scene, svgm::path_motion(scene, pts, o.frames, &maps));
+      report["bodies"] = svgm::body_maps_json(maps);
     }
     svgm::write_procedural_video(scene, pts, seed, o, dir / (std::string(name) + ".mp4"));
     made.push_back({{"name", std::string(name) + ".mp4"}, {"seed", seed}, {"amplitude_scale", plan.scale},

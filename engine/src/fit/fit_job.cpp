@@ -135,6 +135,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   if (const int added = added_points(split))
     log::debug("fit: %d control points added by splitting long segments", added);
   std::vector<std::string> held_groups;
+  KnownMotion known;
   Scene palette_scene =
       job.palette ? apply_palette(scene, read_palette(*job.palette), job.palette->string()) : scene;
   // A procedural target's groups split where its motion moves them apart (motion_groups.h); not
@@ -145,8 +146,12 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     std::vector<std::string> notes;
     if (!motion.is_discarded()) {
       palette_scene = split_groups_by_motion(palette_scene, motion, &notes);
+      palette_scene = merge_groups_by_body(palette_scene, motion, &notes);
       held_groups = still_groups(palette_scene, motion);
+      known = known_motion(palette_scene, motion);
     }
+    if (!known.body.empty())
+      log::debug("fit: the target's own motion: %zu rigid bodies warm-start the keyframes", known.maps.size());
     for (const std::string& n : notes) log::info("fit: group %s", n.c_str());
     if (!held_groups.empty()) log::info("fit: %zu groups the target holds still are held at rest", held_groups.size());
   }
@@ -210,6 +215,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   if (refine_iters == 0) refine_w = 0;
   FitOptions coarse_options = fo;
   coarse_options.held_groups = held_groups;
+  coarse_options.known_body = known.body;
+  coarse_options.known_maps = known.maps;
   // The coarse stage's iterations: the budget, or fewer when its loss stops falling
   // (FitOptions::plateau_window; set when the stage ends).
   int coarse_iters = fo.iterations;
@@ -383,6 +390,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     fine_target = load_target(*target_path, fine_size.width, fine_size.height, to);
     FitOptions fine_options = fo.refined_at(static_cast<double>(fine_size.width) / size.width);
     fine_options.held_groups = held_groups;
+    fine_options.known_body = known.body;
+    fine_options.known_maps = known.maps;
     fine_options.iterations = refine_iters;
     fine_blur = match_blur(*fine_target, fine_size);
     fine_options.render_blur_sigma = fine_blur.render_sigma;
@@ -512,7 +521,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   if (!map.order.empty()) report["paint_order_applied"] = true;
   // Warm starts of newly activated keyframes (a resumed fit counts only those after resuming).
   report["warm_starts"] = {{"similarity_tried", fitter.warm_starts_tried}, {"similarity_kept", fitter.warm_starts_kept},
-                           {"field_tried", fitter.field_warm_starts_tried}, {"field_kept", fitter.field_warm_starts_kept}};
+                           {"field_tried", fitter.field_warm_starts_tried}, {"field_kept", fitter.field_warm_starts_kept},
+                           {"known_motion_tried", fitter.known_starts_tried}, {"known_motion_kept", fitter.known_starts_kept}};
   if (group_motion)
     report["group_transforms"] = {{"groups", final_fit.fit_plan().n_groups},
                                   {"as_transforms", group_motion->transform_groups},

@@ -82,6 +82,9 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
   if (opt_.w_cohesion > 0) fo.cohesion_radius_px = opt_.cohesion_radius_frac * size_.width;
   fplan_ = plan_fit(scene, plan_, fo);
   G_ = fplan_.n_groups;
+  cp_path_.assign(static_cast<size_t>(plan_.n_cp), -1);
+  for (size_t p = 0; p < plan_.path_cp_first.size(); ++p)
+    for (int i = 0; i < plan_.path_cp_count[p]; ++i) cp_path_[static_cast<size_t>(plan_.path_cp_first[p] + i)] = static_cast<int>(p);
   held_group_.assign(G_, 0);
   for (int g = 0; g < G_; ++g)
     held_group_[g] = std::find(opt_.held_groups.begin(), opt_.held_groups.end(), fplan_.group_ids[g]) != opt_.held_groups.end();
@@ -367,42 +370,86 @@ void Fitter::warm_start(int k) {
   const size_t pb = static_cast<size_t>(G_) * kMotionParams;
   std::vector<float> copied(pb);
   q.enqueueReadBuffer(params_, CL_TRUE, k * pb * sizeof(float), pb * sizeof(float), copied.data());
-  std::vector<float> tracked = copied;
-  bool any = false;
-  for (int g = 0; g < G_; ++g) {
-    if (held_group_[g]) continue;
-    std::vector<Vec2> f, t;
-    std::vector<double> w;
-    for (size_t j = 0; j < index.size(); ++j)
-      if (fplan_.cp_group[index[j]] == g) {
-        f.push_back(from[j]);
-        t.push_back(tracks.to[j]);
-        w.push_back(tracks.weight[j]);
-      }
-    const auto sim = fit_similarity(f, t, w);
-    if (!sim) continue;
-    MotionParams th;
-    for (int j = 0; j < kMotionParams; ++j) th[j] = copied[g * kMotionParams + j];
-    compose_similarity(th, *sim, {0.5 * W, 0.5 * H}, 0.5 * W);
-    for (int j = 0; j < kMotionParams; ++j) tracked[g * kMotionParams + j] = static_cast<float>(th[j]);
-    any = true;
-  }
-  if (!any && !fplan_.n_nodes) return;
+  auto propose = [&](const PointTracks& tr, std::vector<float>& out) {
+    out = copied;
+    bool any = false;
+    for (int g = 0; g < G_; ++g) {
+      if (held_group_[g]) continue;
+      std::vector<Vec2> f, t;
+      std::vector<double> w;
+      for (size_t j = 0; j < index.size(); ++j)
+        if (fplan_.cp_group[index[j]] == g) {
+          f.push_back(from[j]);
+          t.push_back(tr.to[j]);
+          w.push_back(tr.weight[j]);
+        }
+      const auto sim = fit_similarity(f, t, w);
+      if (!sim) continue;
+      MotionParams th;
+      for (int j = 0; j < kMotionParams; ++j) th[j] = copied[g * kMotionParams + j];
+      compose_similarity(th, *sim, {0.5 * W, 0.5 * H}, 0.5 * W);
+      for (int j = 0; j < kMotionParams; ++j) out[g * kMotionParams + j] = static_cast<float>(th[j]);
+      any = true;
+    }
+    return any;
+  };
+  std::vector<float> tracked, known_params;
+  const bool any = propose(tracks, tracked);
+  std::optional<PointTracks> known = known_tracks(k, index, tracks);
+  const bool any_known = known && propose(*known, known_params);
+  if (!any && !any_known && !fplan_.n_nodes) return;
   float loss = frame_loss(k);
+  const PointTracks* used = &tracks;
+  auto try_params = [&](const std::vector<float>& params) {
+    q.enqueueWriteBuffer(params_, CL_TRUE, k * pb * sizeof(float), pb * sizeof(float), params.data());
+    const float l = frame_loss(k);
+    if (l < loss) {
+      loss = l;
+      return true;
+    }
+    return false;
+  };
+  std::vector<float> best = copied;
   if (any) {
     ++warm_starts_tried;
-    q.enqueueWriteBuffer(params_, CL_TRUE, k * pb * sizeof(float), pb * sizeof(float), tracked.data());
-    const float tracked_loss = frame_loss(k);
-    if (tracked_loss < loss) {
+    if (try_params(tracked)) {
       ++warm_starts_kept;
-      loss = tracked_loss;
-    } else {
-      q.enqueueWriteBuffer(params_, CL_TRUE, k * pb * sizeof(float), pb * sizeof(float), copied.data());
+      best = tracked;
     }
   }
+  if (any_known) {
+    ++known_starts_tried;
+    if (try_params(known_params)) {
+      ++known_starts_kept;
+      best = known_params;
+      used = &*known;
+    }
+  }
+  q.enqueueWriteBuffer(params_, CL_TRUE, k * pb * sizeof(float), pb * sizeof(float), best.data());
   // Also when no part had tracks enough for a similarity: a small feature's few tracks may
   // still carry it.
-  if (fplan_.n_nodes) warm_start_field(k, index, tracks, loss);
+  if (fplan_.n_nodes) warm_start_field(k, index, *used, loss);
+}
+
+std::optional<PointTracks> Fitter::known_tracks(int k, const std::vector<int>& index, const PointTracks& tracks) const {
+  if (opt_.known_body.empty() || k >= static_cast<int>(target_.source_index.size())) return std::nullopt;
+  const int f = target_.source_index[static_cast<size_t>(k)];
+  PointTracks out = tracks;
+  const Affine inv = size_.view.inverse();
+  bool any = false;
+  for (size_t j = 0; j < index.size(); ++j) {
+    const int p = cp_path_[static_cast<size_t>(index[j])];
+    const int b = p >= 0 && p < static_cast<int>(opt_.known_body.size()) ? opt_.known_body[static_cast<size_t>(p)] : -1;
+    if (b < 0 || b >= static_cast<int>(opt_.known_maps.size()) || f >= static_cast<int>(opt_.known_maps[b].size())) continue;
+    const size_t i = static_cast<size_t>(index[j]);
+    const Vec2 rest{plan_.rest_cp[2 * i], plan_.rest_cp[2 * i + 1]};
+    out.to[j] = size_.view.apply(opt_.known_maps[static_cast<size_t>(b)][static_cast<size_t>(f)].apply(inv.apply(rest)));
+    out.weight[j] = 1;
+    out.isotropy[j] = 1;
+    any = true;
+  }
+  if (!any) return std::nullopt;
+  return out;
 }
 
 void Fitter::warm_start_field(int k, const std::vector<int>& index, const PointTracks& tracks, float before) {

@@ -13,6 +13,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -150,6 +151,15 @@ struct FitOptions {
   // are zeroed before Adam). A procedural target holds them exactly (motion_groups.h). Free
   // per-point offsets (deform: free) are not held.
   std::vector<std::string> held_groups;
+  // The target's own motion, when the video stage made it (a procedural video's rigid bodies,
+  // video/rigid_bodies.h): per path of the fitted scene the body that moves it (-1: none, or
+  // empty), and per body its map from rest in every source frame (canvas units). A newly
+  // activated keyframe is then also warm-started from where those maps put each point, and
+  // kept when it fits the keyframe better than the copied and the flow-tracked starts: the
+  // flow, sampled on a grid, follows a thin arm's swing only in part, and a hand or a
+  // trident's head left a few pixels off collapsed where it was (man_demon).
+  std::vector<int> known_body;
+  std::vector<std::vector<Affine>> known_maps;
   FitOptions refined_at(double scale) const {
     FitOptions o = *this;
     const float s2 = static_cast<float>(scale * scale);
@@ -243,6 +253,10 @@ class Fitter {
   // beyond their group's homography (field_warm_start.h); kept only if it fits better than
   // `before`, keyframe k's image loss as it stands.
   void warm_start_field(int k, const std::vector<int>& index, const PointTracks& tracks, float before);
+  // `tracks` with the points of known rigid bodies (FitOptions::known_body) put where keyframe
+  // k's map takes their rest positions; nothing when no point has a known body.
+  std::optional<PointTracks> known_tracks(int k, const std::vector<int>& index, const PointTracks& tracks) const;
+  std::vector<int> cp_path_;  // path of every control point (-1: padding)
   float frame_loss(int k);  // image loss of keyframe k alone with the current parameters
   // Field and motion forward: control points of keyframes 0 .. frames-1 into the raster's buffer.
   void enqueue_motion(int frames);
@@ -281,6 +295,7 @@ class Fitter {
   // Warm starts tried and kept so far (for reports and tests).
   int warm_starts_tried = 0, warm_starts_kept = 0;
   int field_warm_starts_tried = 0, field_warm_starts_kept = 0;
+  int known_starts_tried = 0, known_starts_kept = 0;  // from the target's known motion
 
  private:
   cl::Kernel k_motion_, k_motion_back_, k_smooth_, k_g1_, k_contain_, k_sum_, k_adam_p_, k_adam_o_,

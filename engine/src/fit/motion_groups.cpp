@@ -1,6 +1,7 @@
 // Fit groups along a procedural motion (see motion_groups.h).
 #include "fit/motion_groups.h"
 
+#include <algorithm>
 #include <map>
 
 namespace svgm {
@@ -62,6 +63,99 @@ Scene split_groups_by_motion(const Scene& scene, const nlohmann::json& motion, s
   for (size_t gi = 0; gi < out.groups.size(); ++gi)
     for (int pi : out.groups[gi].paths) out.paths[pi].group = static_cast<int>(gi);
   return out;
+}
+
+Scene merge_groups_by_body(const Scene& scene, const nlohmann::json& motion, std::vector<std::string>* notes) {
+  if (!motion.contains("paths")) return scene;
+  std::map<std::string, int> body_of;  // path id -> its moving body
+  for (const auto& p : motion["paths"]) {
+    const int b = p.value("body", -1);
+    if (b >= 0 && p.value("max_travel", 0.0) > kMovingTravel) body_of[p.value("id", "")] = b;
+  }
+  // The one moving body that carries all of `paths`, or -1.
+  auto body = [&](const std::vector<int>& paths) {
+    int b = -1;
+    for (int pi : paths) {
+      const auto it = body_of.find(scene.paths[pi].id);
+      if (it == body_of.end() || (b >= 0 && it->second != b)) return -1;
+      b = it->second;
+    }
+    return b;
+  };
+  // The fit's groups in scene order: each scene group, and each path in none as a group of its own.
+  struct Unit {
+    Group group;
+    bool own = false;  // a group-less path
+  };
+  std::vector<Unit> units;
+  for (const Group& g : scene.groups) units.push_back({g, false});
+  for (size_t pi = 0; pi < scene.paths.size(); ++pi)
+    if (scene.paths[pi].group < 0) units.push_back({Group{scene.paths[pi].id, {static_cast<int>(pi)}, ""}, true});
+  std::map<int, std::vector<size_t>> of_body;  // body -> its units
+  for (size_t u = 0; u < units.size(); ++u)
+    if (const int b = body(units[u].group.paths); b >= 0) of_body[b].push_back(u);
+
+  std::vector<char> absorbed(units.size(), 0);
+  bool changed = false;
+  for (auto& [b, us] : of_body) {
+    if (us.size() < 2) continue;
+    // The first unit that is a scene group keeps its id (a group-less path's id names a path).
+    size_t keeper = us.front();
+    for (size_t u : us)
+      if (!units[u].own) {
+        keeper = u;
+        break;
+      }
+    std::string names;
+    for (size_t u : us) {
+      if (u == keeper) continue;
+      auto& into = units[keeper].group.paths;
+      into.insert(into.end(), units[u].group.paths.begin(), units[u].group.paths.end());
+      absorbed[u] = 1;
+      names += (names.empty() ? "" : ", ") + units[u].group.id;
+    }
+    std::sort(units[keeper].group.paths.begin(), units[keeper].group.paths.end());
+    units[keeper].own = false;
+    changed = true;
+    if (notes)
+      notes->push_back(units[keeper].group.id + ": " + std::to_string(us.size()) +
+                       " groups the target moves as one rigid body fit as one (with " + names + ")");
+  }
+  if (!changed) return scene;
+  Scene out = scene;
+  out.groups.clear();
+  for (size_t u = 0; u < units.size(); ++u)
+    if (!absorbed[u] && !units[u].own) out.groups.push_back(units[u].group);
+  for (Path& p : out.paths) p.group = -1;
+  for (size_t gi = 0; gi < out.groups.size(); ++gi)
+    for (int pi : out.groups[gi].paths) out.paths[pi].group = static_cast<int>(gi);
+  return out;
+}
+
+KnownMotion known_motion(const Scene& scene, const nlohmann::json& motion) {
+  KnownMotion k;
+  if (!motion.contains("bodies") || !motion.contains("paths") || !motion["bodies"].is_array()) return k;
+  for (const auto& body : motion["bodies"]) {
+    std::vector<Affine> maps;
+    for (const auto& m : body) {
+      if (!m.is_array() || m.size() != 6) return {};
+      for (const auto& v : m)
+        if (!v.is_number()) return {};
+      maps.push_back({m[0].get<double>(), m[1].get<double>(), m[2].get<double>(), m[3].get<double>(), m[4].get<double>(),
+                      m[5].get<double>()});
+    }
+    k.maps.push_back(std::move(maps));
+  }
+  std::map<std::string, int> body_of;
+  for (const auto& p : motion["paths"]) body_of[p.value("id", "")] = p.value("body", -1);
+  k.body.assign(scene.paths.size(), -1);
+  for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
+    const auto it = body_of.find(scene.paths[pi].id);
+    if (it == body_of.end()) return {};
+    if (it->second >= static_cast<int>(k.maps.size())) return {};
+    k.body[pi] = it->second;
+  }
+  return k;
 }
 
 std::vector<std::string> still_groups(const Scene& scene, const nlohmann::json& motion) {

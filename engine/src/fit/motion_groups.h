@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "svgmotion/affine.h"
 #include "svgmotion/scene.h"
 
 namespace svgm {
@@ -30,6 +31,25 @@ constexpr double kMovingTravel = 0.05;
 // One line per split group in `notes` (may be null). The scene is returned unchanged when the
 // report names no parts or paths.
 Scene split_groups_by_motion(const Scene& scene, const nlohmann::json& motion, std::vector<std::string>* notes);
+
+// `scene` with the groups (and group-less paths) that one moving rigid body of `motion` carries
+// wholly merged into one group, the first of them in scene order (motion.json's "body": the
+// paths one affine map moves in every frame, video/rigid_bodies.h). The fitter moves a group
+// by one homography: a body cut into many small groups (the fingers of a fist, a trident's
+// arrowheads) has each piece found again at every keyframe from its own few pixels, and a thin
+// one that moved farther than its width between keyframes collapsed or tore (man_demon's
+// raised hand shrank to a point; rejected by the result gate). One line per merged body in
+// `notes` (may be null). Unchanged when the report has no bodies.
+Scene merge_groups_by_body(const Scene& scene, const nlohmann::json& motion, std::vector<std::string>* notes);
+
+// The target's own motion from `motion`'s "bodies" (per body, per frame, [a b c d e f] in canvas
+// units) and each path's "body", matched to `scene`'s paths by id: FitOptions::known_body and
+// known_maps. Empty when the report has no bodies, or when a path it names is not in the scene.
+struct KnownMotion {
+  std::vector<int> body;
+  std::vector<std::vector<Affine>> maps;
+};
+KnownMotion known_motion(const Scene& scene, const nlohmann::json& motion);
 
 // The fit groups of `scene` (as fit_plan.h names them: a group's id, a path's own id when it is
 // in none) whose every path `motion` holds still: the fitter holds them at rest (FitOptions::

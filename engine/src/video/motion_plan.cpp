@@ -8,6 +8,7 @@
 #include <set>
 
 #include "svgmotion/error.h"
+#include "video/rigid_bodies.h"
 #include "video/wheel_riders.h"
 
 namespace svgm {
@@ -1403,7 +1404,8 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
           {"notes", plan.notes}};
 }
 
-std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>& pts, int frames) {
+std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>& pts, int frames,
+                                    std::vector<std::vector<Affine>>* body_maps) {
   std::vector<PathMotion> out(scene.paths.size());
   const size_t per = frames > 0 ? pts.size() / frames : 0;
   size_t i = 0;
@@ -1426,6 +1428,11 @@ std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>&
       }
     m.mean_travel = m.points ? sum / m.points : 0;
   }
+  // To a ten-thousandth of the canvas's diagonal: the rig's maps are exact in double, and a
+  // bending region's points leave any one map by far more.
+  RigidBodies rb = rigid_bodies(scene, pts, frames, 1e-4 * std::hypot(scene.width, scene.height));
+  for (size_t p = 0; p < out.size(); ++p) out[p].body = rb.body[p];
+  if (body_maps) *body_maps = std::move(rb.maps);
   // The box each path's curves sweep: every cubic at t = 0, 1/4, 1/2, 3/4, 1 in every frame
   // (the drawing, not its handles: a turning circle's handles sweep beyond the circle).
   for (int f = 0; f < frames; ++f) {
@@ -1444,6 +1451,17 @@ std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>&
       }
   }
   return out;
+}
+
+nlohmann::json body_maps_json(const std::vector<std::vector<Affine>>& maps) {
+  auto r = [](double v) { return std::round(v * 1e6) / 1e6; };
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& body : maps) {
+    nlohmann::json frames = nlohmann::json::array();
+    for (const Affine& m : body) frames.push_back({r(m.a), r(m.b), r(m.c), r(m.d), r(m.e), r(m.f)});
+    a.push_back(frames);
+  }
+  return a;
 }
 
 nlohmann::json path_motion_json(const Scene& scene, const std::vector<PathMotion>& motion) {
@@ -1466,6 +1484,7 @@ nlohmann::json path_motion_json(const Scene& scene, const std::vector<PathMotion
                  {"points", m.points},
                  {"max_travel", r(m.max_travel)},
                  {"mean_travel", r(m.mean_travel)},
+                 {"body", m.body},
                  {"rest", {r(m.rest.x0), r(m.rest.y0), r(m.rest.x1), r(m.rest.y1)}},
                  {"swept", {r(m.swept.x0), r(m.swept.y0), r(m.swept.x1), r(m.swept.y1)}}});
   }

@@ -112,15 +112,22 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
 // distance, and the box the path sweeps; in the JSON also each control point's rest position and
 // travel ("point_travel": [x, y, travel, ...] rounded to 0.1), so a reader can check what moved
 // where (tests/bench/motion_score.py). The swept box is that of the path's curves (each cubic
-// at quarters), not of its handles.
+// at quarters), not of its handles. "body" numbers the rigid bodies: paths one affine map moves
+// in every frame (video/rigid_bodies.h; -1: a path no single map moves).
 struct PathMotion {
   double max_travel = 0, mean_travel = 0;
   int points = 0;
   RigBox rest, swept;
   std::vector<float> travel;  // each control point's largest distance from rest, in order
+  int body = -1;  // its rigid body (video/rigid_bodies.h: the paths one affine map moves), -1: none
 };
-std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>& points, int frames);
+// `body_maps` (may be null): each rigid body's map from rest in every frame.
+std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>& points, int frames,
+                                    std::vector<std::vector<Affine>>* body_maps = nullptr);
 nlohmann::json path_motion_json(const Scene& scene, const std::vector<PathMotion>& motion);
+// motion.json's "bodies": per body, per frame, its map [a, b, c, d, e, f] (SVG's matrix order;
+// canvas units).
+nlohmann::json body_maps_json(const std::vector<std::vector<Affine>>& maps);
 
 constexpr double kFrameMargin = 0.01;  // of the canvas size: control points stay this far inside
 constexpr double kMaxStep = 0.08;      // of the canvas diagonal between keyframes (about 29 px

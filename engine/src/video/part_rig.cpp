@@ -12,6 +12,7 @@
 
 #include "fit/document_order.h"
 #include "scene/backdrop.h"
+#include "video/shape_overlap.h"
 #include "svgmotion/svg_reader.h"
 #include "video/curve_samples.h"
 #include "video/hands_at_head.h"
@@ -540,12 +541,15 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
   R.pivot = {R.box.centre().x, R.box.y1};
   R.chain_top = rig.root;
 
-  // Parents and pivots.
+  // Parents and pivots. A part hangs from the larger part whose shape it overlaps most
+  // (video/shape_overlap.h: boxes let a trident across the head take the horn from the hood).
+  std::vector<PartShape> shape(static_cast<size_t>(G));
+  for (int g = 0; g < G; ++g) shape[static_cast<size_t>(g)] = part_shape(scene, unit_paths[g]);
   for (int g = 0; g < G; ++g) {
     RigPart& P = rig.parts[g];
     if (g == rig.root || P.role == Role::Background || P.box.empty()) continue;
     int parent = rig.root;
-    double best_overlap = overlap(P.box, R.box), best_gap = gap(P.box, R.box);
+    double best_overlap = shape_overlap(shape[g], shape[rig.root]), best_gap = gap(P.box, R.box);
     // What turns with a wheel hangs from it (split_wheel_loads), not from the stand whose box
     // holds its box. A limb split from the root's group hangs from the root (the grouper drew
     // it with the body, not with a raised arm's neighbour, the head).
@@ -570,7 +574,7 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
         if (const auto it = U.carried_by.find(unit_paths[h].front()); it != U.carried_by.end() && it->second == unit_paths[g].front())
           continue;
         if (!(Q.area > P.area || (Q.area == P.area && h < g))) continue;
-        const double o = overlap(P.box, Q.box), gp = gap(P.box, Q.box);
+        const double o = shape_overlap(shape[g], shape[h]), gp = gap(P.box, Q.box);
         if (o > best_overlap || (best_overlap == 0 && o == 0 && gp < best_gap)) {
           best_overlap = o;
           best_gap = gp;
