@@ -54,6 +54,25 @@ BlurMatch match_render_blur(const RgbaImage& rest, const std::vector<float>& tar
   m.residual_ratio = base > 0 ? best / base : 1;
   m.rest_psnr_db = best > 0 ? 10 * std::log10(3.0 * px / best) : 99;
   if (m.residual_ratio <= kMinGain && m.rest_psnr_db >= kMinRestPsnr) m.render_sigma = m.best_sigma;
+
+  // The chroma blur on top of the luma σ just chosen (see blur_match.h).
+  const double sl = m.render_sigma;
+  auto chroma_residual = [&](double sc) {
+    const std::vector<double> gr = render_blur(render, W, H, sl, sc);
+    double s = 0;
+    for (size_t i = 0; i < gr.size(); ++i) s += (gr[i] - gt[i]) * (gr[i] - gt[i]);
+    return s;
+  };
+  const double luma_only = sl == kLossSigma ? base : residual(sl);
+  double best_c = luma_only;
+  m.chroma_sigma = m.best_chroma_sigma = sl;
+  for (int i = 1; sl + i * kStep <= kMaxSigma + 1e-9; ++i) {
+    const double s = sl + i * kStep, r = chroma_residual(s);
+    if (r < best_c) best_c = r, m.best_chroma_sigma = s;
+  }
+  m.chroma_residual_ratio = luma_only > 0 ? best_c / luma_only : 1;
+  m.chroma_rest_psnr_db = best_c > 0 ? 10 * std::log10(3.0 * px / best_c) : 99;
+  if (m.chroma_residual_ratio <= kMinGain && m.chroma_rest_psnr_db >= kMinRestPsnr) m.chroma_sigma = m.best_chroma_sigma;
   return m;
 }
 
