@@ -25,6 +25,7 @@ struct BlurMatch {
   // staying at render_sigma. Equal to render_sigma unless adopted.
   double chroma_sigma = 1;
   double best_chroma_sigma = 1;       // the best found, whether adopted or not
+  double chroma_luma_sigma = 1;       // the luma σ of that pair (adopted as render_sigma with it)
   double chroma_residual_ratio = 1;   // its residual / the residual at render_sigma alone
   double chroma_rest_psnr_db = 0;     // as rest_psnr_db, at the best chroma σ
 };
@@ -38,8 +39,9 @@ struct BlurMatch {
 // Then chroma alone: codecs keep luma sharp and soften chroma (4:2:0 subsampling, JPEG-like
 // quantisation), which a blur of all channels alike cannot match; the fitter then moves edges
 // between colours of similar luma to imitate the soft chroma. With luma at the render σ just
-// chosen, σ_chroma is searched from there to 2 in the same steps and adopted by the same rule
-// (a tenth off the residual, the rest pose at 38 dB).
+// chosen, σ_chroma is searched from there to 2 in the same steps, then luma again (1 up to
+// σ_chroma) with chroma fixed, then chroma again; the pair replaces the render σ by the same
+// rule (a tenth off the luma-only residual, the rest pose at 38 dB).
 BlurMatch match_render_blur(const RgbaImage& rest, const std::vector<float>& target_rgba);
 
 }  // namespace svgm

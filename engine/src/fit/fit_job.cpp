@@ -225,9 +225,10 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     if (!job.blur_matching) return BlurMatch{};
     const BlurMatch m = match_render_blur(render_image(rt, fit_scene, at.width, false), t.rgba);
     log::debug("fit: blur matching at %dx%d: best render sigma %.2f (residual x%.3f, rest pose %.1f dB)%s; "
-               "best chroma sigma %.2f (residual x%.3f)%s", at.width, at.height, m.best_sigma, m.residual_ratio,
-               m.rest_psnr_db, m.render_sigma != 1 ? ", adopted" : ", not adopted", m.best_chroma_sigma,
-               m.chroma_residual_ratio, m.chroma_sigma != m.render_sigma ? ", adopted" : ", not adopted");
+               "best chroma sigma %.2f with luma %.2f (residual x%.3f)%s; render sigma %.2f, chroma %.2f", at.width,
+               at.height, m.best_sigma, m.residual_ratio, m.rest_psnr_db, m.best_sigma == m.render_sigma ? ", adopted" : "",
+               m.best_chroma_sigma, m.chroma_luma_sigma, m.chroma_residual_ratio,
+               m.chroma_sigma != m.render_sigma ? ", adopted" : ", not adopted", m.render_sigma, m.chroma_sigma);
     return m;
   };
   const BlurMatch coarse_blur = match_blur(target, size);
