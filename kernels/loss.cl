@@ -22,6 +22,14 @@
  *     Σ E² = Σ Q² + Σ (2 Q·E' + E'·E'),
  *     ∂L/∂C = 2w/N · (R + G ∗ E'),   R = G ∗ Q.
  *
+ * Chroma blur matching generalises G to a per-group blur in YCbCr (prelude.cl):
+ * B = A⁻¹ · diag(G, G_c, G_c) · A, luma sharp at the render σ, chroma soft at its own σ
+ * (codecs subsample and quantise chroma harder). Then E' = B X, Q = bg·(B 1) − G_t ∗ T,
+ * R = Bᵀ Q and ∂L/∂C = 2w/N · (R + Bᵀ E'), Bᵀ = Aᵀ · diag(G, G_c, G_c) · A⁻ᵀ: the raster pass
+ * blurs A·X along x, blur_y_loss_rows finishes the blur and keeps A⁻ᵀ E', blurred_gradient
+ * blurs that and applies Aᵀ. With G_c = G the build leaves CHROMA_R undefined and the code is
+ * the plain one above.
+ *
  * Q, R and Σ Q² depend on the targets only and are computed once (ClRaster::set_targets); each
  * iteration touches only the pixels within LOSS_R (or 2 LOSS_R, for the gradient) of something drawn: the
  * work follows the drawing, not the frame. The raster pass writes X' = x-blur of X with each
@@ -32,7 +40,10 @@
 
 /* G0..G4, LOSS_R, g_tap: the render's 1-D Gaussian taps, defined in prelude.cl. */
 
-/* One separable pass of the blur, along x (dir = 0) or y (dir = 1), times `scale`. */
+/* One separable pass of the blur, along x (dir = 0) or y (dir = 1), times `scale`. No host
+ * routine launches it today (the fit's passes are raster.cl's residual output and the kernels
+ * below); it is kept as the plain form of one pass. With the per-group blur its pixels are in
+ * YCbCr and each group takes its own taps, as in the fused passes. */
 __kernel void blur_pass(__global const float4* src, __global float4* dst, float scale, int dir,
                         int width, int height, int frames) {
   const int x = get_global_id(0), y = get_global_id(1), k = get_global_id(2);
@@ -40,13 +51,33 @@ __kernel void blur_pass(__global const float4* src, __global float4* dst, float 
   __global const float4* f = src + (size_t)k * width * height;
   const int step = dir == 0 ? 1 : width, pos = y * width + x;
   const int at = dir == 0 ? x : y, n = dir == 0 ? width : height;
+#ifdef CHROMA_R
+  float4 s = gv_tap(0) * f[pos];
+  for (int j = 1; j <= LOSS_R; ++j) {
+    if (at >= j) s += gv_tap(j) * f[pos - j * step];
+    if (at + j < n) s += gv_tap(j) * f[pos + j * step];
+  }
+#else
   float4 s = G0 * f[pos];
   for (int j = 1; j <= LOSS_R; ++j) {
     if (at >= j) s += g_tap(j) * f[pos - j * step];
     if (at + j < n) s += g_tap(j) * f[pos + j * step];
   }
+#endif
   dst[(size_t)k * width * height + pos] = scale * s;
 }
+
+#ifdef CHROMA_R
+/* With the per-group blur (prelude.cl) the y-blur `v` is B·X in YCbCr: E' = A⁻¹ v in RGB makes
+ * the row's term with the RGB q; what is kept for the backward pass is A⁻ᵀ E', so that its
+ * blur (the same per-group taps, the operator's adjoint Aᵀ·diag(G)·A⁻ᵀ) works in the same
+ * coordinates. */
+inline float chroma_residual(float3 q, float3 v, __global float4* e) {
+  const float3 E = rgb_from_ycc(v);
+  *e = (float4)(ycc_adjoint_from_rgb(E), 0.0f);
+  return dot(2.0f * q + E, E);
+}
+#endif
 
 /* Per (row, frame): E' = the y-blur of X' over the rows' extents, kept (with its extent) for
  * the backward pass, and the row's Σ (2 Q·E' + E'·E') over pixels and channels, in x order. */
@@ -77,7 +108,9 @@ __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* e
     __global const float4* r = f + (y - LOSS_R) * width;
     for (int x = lo; x <= hi; ++x) {
       float4 v = (float4)(0.0f);
-#if LOSS_R == 2
+#if defined(CHROMA_R)
+      for (int j = 0; j <= 2 * LOSS_R; ++j) v += gv_tap(j - LOSS_R) * r[j * width + x];
+#elif LOSS_R == 2
       v += G2 * r[x];
       v += G1 * r[width + x];
       v += G0 * r[2 * width + x];
@@ -86,8 +119,12 @@ __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* e
 #else
       for (int j = 0; j <= 2 * LOSS_R; ++j) v += g_tap(j - LOSS_R) * r[j * width + x];
 #endif
+#ifdef CHROMA_R
+      s += chroma_residual(q[x].xyz, v.xyz, e + x);
+#else
       e[x] = v;
       s += dot(2.0f * q[x].xyz + v.xyz, v.xyz);
+#endif
     }
     row_sums[(size_t)k * height + y] = s;
     return;
@@ -96,10 +133,18 @@ __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* e
     float4 v = (float4)(0.0f);
     for (int j = -LOSS_R; j <= LOSS_R; ++j) {
       const int yy = y + j;
+#ifdef CHROMA_R
+      if (yy >= 0 && yy < height && x >= ex[yy].x && x <= ex[yy].y) v += gv_tap(j) * f[yy * width + x];
+#else
       if (yy >= 0 && yy < height && x >= ex[yy].x && x <= ex[yy].y) v += g_tap(j) * f[yy * width + x];
+#endif
     }
+#ifdef CHROMA_R
+    s += chroma_residual(q[x].xyz, v.xyz, e + x);
+#else
     e[x] = v;
     s += dot(2.0f * q[x].xyz + v.xyz, v.xyz);
+#endif
   }
   row_sums[(size_t)k * height + y] = s;
 }
@@ -109,6 +154,23 @@ inline float3 blurred_gradient(__global const float4* E, __global const int2* ex
                                __global const float4* R, int x, int y, int width, int height,
                                float scale) {
   float3 s = R[y * width + x].xyz;
+#ifdef CHROMA_R
+  /* The per-group blur's adjoint: blur the stored A⁻ᵀ E' per channel group, then Aᵀ (loss.cl's
+   * chroma_residual). The same taps and order whether or not the extents need tests. */
+  float4 acc = (float4)(0.0f);
+  for (int dy = -LOSS_R; dy <= LOSS_R; ++dy) {
+    const int yy = y + dy;
+    if (yy < 0 || yy >= height) continue;
+    const int2 ex = ext_e[yy];
+    float4 row = (float4)(0.0f);
+    for (int dx = -LOSS_R; dx <= LOSS_R; ++dx) {
+      const int xx = x + dx;
+      if (xx >= ex.x && xx <= ex.y) row += gv_tap(dx) * E[yy * width + xx];
+    }
+    acc += gv_tap(dy) * row;
+  }
+  return scale * (s + rgb_adjoint_from_ycc(acc.xyz));
+#endif
   /* Inside the frame with every tap within its row's extent (a layered scene's usual case):
    * the same sum without the tests. */
   int inside = x >= LOSS_R && x + LOSS_R < width && y >= LOSS_R && y + LOSS_R < height;

@@ -52,6 +52,50 @@ inline float g_tap(int j) {
   return j == 0 ? G0 : j == 1 ? G1 : j == 2 ? G2 : j == 3 ? G3 : G4;
 }
 
+/* Chroma blur matching (raster/loss_taps.h, render_blur): when the build defines CHROMA_R and
+ * GC0..GC4, the render is blurred per channel group in YCbCr (BT.601 without offsets), luma Y
+ * by G0..G4 and chroma Cb, Cr by GC0..GC4, B = A⁻¹ · diag(G, GC, GC) · A: codecs keep luma
+ * sharp and chroma soft, and a loss that blurs both alike makes the fitter move edges between
+ * colours of similar luma. LOSS_R is then the larger of the two radii (a tap beyond a
+ * channel's own radius weighs 0). Without CHROMA_R none of this is compiled. */
+#ifdef CHROMA_R
+#ifndef GC3
+#define GC3 0.0f
+#endif
+#ifndef GC4
+#define GC4 0.0f
+#endif
+/* The taps of both groups in one vector: (luma, chroma, chroma, 0), for float4 pixels in YCbCr. */
+inline float4 gv_tap(int j) {
+  j = abs(j);
+  return j == 0 ? (float4)(G0, GC0, GC0, 0.0f) : j == 1 ? (float4)(G1, GC1, GC1, 0.0f)
+       : j == 2 ? (float4)(G2, GC2, GC2, 0.0f) : j == 3 ? (float4)(G3, GC3, GC3, 0.0f)
+       : (float4)(G4, GC4, GC4, 0.0f);
+}
+/* A: RGB -> YCbCr, Y = .299R + .587G + .114B, Cb = (B − Y)/1.772, Cr = (R − Y)/1.402. */
+inline float3 ycc_from_rgb(float3 c) {
+  return (float3)(0.299f * c.x + 0.587f * c.y + 0.114f * c.z,
+                  -0.168735892f * c.x - 0.331264108f * c.y + 0.5f * c.z,
+                  0.5f * c.x - 0.418687589f * c.y - 0.0813124108f * c.z);
+}
+/* A⁻¹: YCbCr -> RGB. */
+inline float3 rgb_from_ycc(float3 v) {
+  return (float3)(v.x + 1.402f * v.z, v.x - 0.344136286f * v.y - 0.714136286f * v.z,
+                  v.x + 1.772f * v.y);
+}
+/* A⁻ᵀ: an RGB gradient into the coordinates the blur's adjoint works in. */
+inline float3 ycc_adjoint_from_rgb(float3 e) {
+  return (float3)(e.x + e.y + e.z, -0.344136286f * e.y + 1.772f * e.z,
+                  1.402f * e.x - 0.714136286f * e.y);
+}
+/* Aᵀ: back to RGB after the adjoint's blur. */
+inline float3 rgb_adjoint_from_ycc(float3 v) {
+  return (float3)(0.299f * v.x - 0.168735892f * v.y + 0.5f * v.z,
+                  0.587f * v.x - 0.331264108f * v.y - 0.418687589f * v.z,
+                  0.114f * v.x + 0.5f * v.y - 0.0813124108f * v.z);
+}
+#endif
+
 inline float cross2(float2 a, float2 b) { return a.x * b.y - a.y * b.x; }
 
 /* Coverage from the winding integral a of one pixel (the box-filtered winding number). */

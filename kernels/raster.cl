@@ -275,14 +275,23 @@ inline void write_band(__local float4* band_rgba, __local const int* hull, __glo
         continue;
       }
       __local float4* f = band_rgba + r * width;
+#ifdef CHROMA_R
+      /* The per-group blur works in YCbCr (prelude.cl): X' = x-blur of A·X. */
+      for (int x = lo; x <= hi; ++x) f[x] = (float4)(ycc_from_rgb(f[x].xyz - background.xyz * f[x].w), 0.0f);
+#else
       for (int x = lo; x <= hi; ++x) f[x] = (float4)(f[x].xyz - background.xyz * f[x].w, 0.0f);
+#endif
       const int lo2 = max(lo - LOSS_R, 0), hi2 = min(hi + LOSS_R, width - 1);
       __global float4* o = image + base + (size_t)r * width;
       for (int x = lo2; x <= hi2; ++x) {
         float4 v = (float4)(0.0f);
         for (int j = -LOSS_R; j <= LOSS_R; ++j) {
           const int xx = x + j;
+#ifdef CHROMA_R
+          if (xx >= lo && xx <= hi) v += gv_tap(j) * f[xx];
+#else
           if (xx >= lo && xx <= hi) v += g_tap(j) * f[xx];
+#endif
         }
         o[x] = v;
       }

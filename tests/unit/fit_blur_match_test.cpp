@@ -1,14 +1,17 @@
 // Blur matching (fit/blur_match.h): the render σ of the loss found from the rest pose. A first
 // frame that is the render itself keeps the paper's σ; one blurred by a Gaussian of σ_b is
 // matched near sqrt(1 + σ_b²) (the two blurs compose); one shifted by two pixels (not the rest
-// pose) is not matched by blurring.
+// pose) is not matched by blurring. A frame whose chroma alone was blurred (colours of equal
+// luma, as a codec's soft chroma) is matched by the chroma σ and not by the render σ.
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
 #include "fit/blur_match.h"
+#include "raster/loss_taps.h"
 
 using namespace svgm;
 
@@ -80,9 +83,95 @@ std::vector<float> frame_of(const std::vector<double>& cov) {
   return f;
 }
 
+// A grey field (0.5) with a disc of red and a bar of blue of the same luma (chroma edges only)
+// and a dark grey bar (a luma edge), each 8x8 supersampled; the frame's border is grey, so no
+// chroma reaches the loss's zero padding. As YCbCr planes, H * W each.
+struct Planes {
+  std::vector<double> y, cb, cr;
+};
+
+Planes two_colour_scene() {
+  const auto disc = coverage(0);
+  auto box = [](double x0, double x1, double y0, double y1) {
+    std::vector<double> c(static_cast<size_t>(kW) * kH);
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x) {
+        double s = 0;
+        for (int j = 0; j < 8; ++j)
+          for (int i = 0; i < 8; ++i) {
+            const double px = x + (i + 0.5) / 8, py = y + (j + 0.5) / 8;
+            s += px >= x0 && px < x1 && py >= y0 && py < y1;
+          }
+        c[static_cast<size_t>(y) * kW + x] = s / 64;
+      }
+    return c;
+  };
+  // coverage(0) has the disc and a 2-px bar at x 40..42; the blue bar is 46..52 and the dark
+  // one 6..10.
+  const auto blue = box(46, 52, 6, 42), dark = box(6, 10, 4, 44);
+  Planes p{std::vector<double>(disc.size(), 0.5), std::vector<double>(disc.size(), 0),
+           std::vector<double>(disc.size(), 0)};
+  for (size_t i = 0; i < disc.size(); ++i) {
+    p.cr[i] = 0.2 * disc[i];
+    p.cb[i] = 0.2 * blue[i];
+    p.y[i] = 0.5 - 0.35 * dark[i];
+  }
+  return p;
+}
+
+std::array<double, 3> rgb_of(const Planes& p, size_t i) {
+  std::array<double, 3> c{};
+  for (int ch = 0; ch < 3; ++ch) c[ch] = kYccInv[ch][0] * p.y[i] + kYccInv[ch][1] * p.cb[i] + kYccInv[ch][2] * p.cr[i];
+  return c;
+}
+
+RgbaImage render_of(const Planes& p) {
+  RgbaImage im{kW, kH, std::vector<uint8_t>(static_cast<size_t>(kW) * kH * 4)};
+  for (size_t i = 0; i < p.y.size(); ++i) {
+    const auto c = rgb_of(p, i);
+    for (int ch = 0; ch < 3; ++ch) im.rgba[4 * i + ch] = static_cast<uint8_t>(std::lround(255 * c[ch]));
+    im.rgba[4 * i + 3] = 255;
+  }
+  return im;
+}
+
+std::vector<float> frame_of(const Planes& p) {
+  std::vector<float> f(p.y.size() * 4, 1.f);
+  for (size_t i = 0; i < p.y.size(); ++i) {
+    const auto c = rgb_of(p, i);
+    for (int ch = 0; ch < 3; ++ch) f[4 * i + ch] = static_cast<float>(c[ch]);
+  }
+  return f;
+}
+
 }  // namespace
 
 TEST_SUITE("fit") {
+
+TEST_CASE("chroma blur matching: a frame whose chroma alone is soft is matched by the chroma blur") {
+  const Planes clean = two_colour_scene();
+  const BlurMatch m0 = match_render_blur(render_of(clean), frame_of(clean));
+  CAPTURE(m0.best_chroma_sigma);
+  CAPTURE(m0.chroma_residual_ratio);
+  CHECK(m0.render_sigma == 1);
+  CHECK(m0.chroma_sigma == 1);  // a clean frame: nothing to match
+  for (double sb : {1.0, 1.5}) {
+    Planes soft = clean;
+    soft.cb = gaussian(clean.cb, sb);
+    soft.cr = gaussian(clean.cr, sb);
+    const BlurMatch m = match_render_blur(render_of(clean), frame_of(soft));
+    CAPTURE(sb);
+    CAPTURE(m.best_sigma);
+    CAPTURE(m.residual_ratio);
+    CAPTURE(m.best_chroma_sigma);
+    CAPTURE(m.chroma_residual_ratio);
+    CHECK(m.render_sigma <= 1.1);  // luma is sharp: at most a compromise, not the chroma's blur
+    CHECK(m.chroma_sigma == m.best_chroma_sigma);  // adopted
+    CHECK(std::abs(m.chroma_sigma - std::sqrt(1 + sb * sb)) <= 0.15);
+    CHECK(m.chroma_residual_ratio < 0.5);
+  }
+}
+
 
 TEST_CASE("blur matching: a sharp first frame keeps the paper's blur") {
   const auto cov = coverage(0);
@@ -90,6 +179,7 @@ TEST_CASE("blur matching: a sharp first frame keeps the paper's blur") {
   CHECK(m.render_sigma == 1);
   CHECK(m.best_sigma == 1);
   CHECK(m.rest_psnr_db > 45);
+  CHECK(m.chroma_sigma == 1);
 }
 
 TEST_CASE("blur matching: a blurred first frame is matched by the composed blur") {

@@ -40,7 +40,8 @@ Agreement compare(const std::vector<double>& a, const std::vector<double>& b) {
 
 // The reference loss of K frames with control points cp (K * n_cp pairs).
 double ref_loss(const RasterPlan& plan, const std::vector<double>& cp, const std::vector<float>& targets,
-                int K, const std::array<double, 4>& bg, double render_sigma = kLossSigma) {
+                int K, const std::array<double, 4>& bg, double render_sigma = kLossSigma,
+                double chroma_sigma = 0) {
   const size_t per_cp = static_cast<size_t>(plan.n_cp) * 2;
   const size_t per_px = static_cast<size_t>(plan.width) * plan.height * 4;
   double sum = 0;
@@ -48,7 +49,7 @@ double ref_loss(const RasterPlan& plan, const std::vector<double>& cp, const std
     const std::vector<double> c(cp.begin() + k * per_cp, cp.begin() + (k + 1) * per_cp);
     const auto img = ref::render(plan, c);
     const std::vector<float> t(targets.begin() + k * per_px, targets.begin() + (k + 1) * per_px);
-    sum += ref::blurred_sq_sum(img, t, plan.width, plan.height, bg, render_sigma);
+    sum += ref::blurred_sq_sum(img, t, plan.width, plan.height, bg, render_sigma, chroma_sigma);
   }
   return kWeight * sum / (static_cast<double>(K) * plan.width * plan.height * 3);
 }
@@ -93,10 +94,11 @@ Case make_case(const Scene& scene, uint32_t seed, int K) {
 std::pair<std::vector<double>, std::vector<double>> gradients(const Case& c, float* loss_cl = nullptr,
                                                               double* loss_ref = nullptr,
                                                               const std::vector<float>* kernel_cp = nullptr,
-                                                              double render_sigma = kLossSigma) {
+                                                              double render_sigma = kLossSigma,
+                                                              double chroma_sigma = 0) {
   const RasterPlan plan = plan_raster(c.scene, Affine{}, static_cast<int>(c.scene.width),
                                       static_cast<int>(c.scene.height));
-  ClRaster r(runtime(), plan, c.K, render_sigma);
+  ClRaster r(runtime(), plan, c.K, render_sigma, chroma_sigma);
   r.set_control_points(kernel_cp ? *kernel_cp : std::vector<float>(c.cp.begin(), c.cp.end()));
   r.set_targets(c.targets);
   const std::array<float, 4> white{1, 1, 1, 1};
@@ -105,7 +107,7 @@ std::pair<std::vector<double>, std::vector<double>> gradients(const Case& c, flo
   const auto g = r.read_cp_gradient();
   std::vector<double> analytic(g.begin(), g.end());
   const std::array<double, 4> bg{1, 1, 1, 1};
-  if (loss_ref) *loss_ref = ref_loss(plan, c.cp, c.targets, c.K, bg, render_sigma);
+  if (loss_ref) *loss_ref = ref_loss(plan, c.cp, c.targets, c.K, bg, render_sigma, chroma_sigma);
   std::vector<double> fd(c.cp.size(), 0.0);
   const double h = 1e-5;
   auto cp = c.cp;
@@ -113,9 +115,9 @@ std::pair<std::vector<double>, std::vector<double>> gradients(const Case& c, flo
     if (i % (plan.n_cp * 2) >= static_cast<size_t>(plan.n_cp - 3) * 2) continue;  // padding
     const double keep = cp[i];
     cp[i] = keep + h;
-    const double up = ref_loss(plan, cp, c.targets, c.K, bg, render_sigma);
+    const double up = ref_loss(plan, cp, c.targets, c.K, bg, render_sigma, chroma_sigma);
     cp[i] = keep - h;
-    const double down = ref_loss(plan, cp, c.targets, c.K, bg, render_sigma);
+    const double down = ref_loss(plan, cp, c.targets, c.K, bg, render_sigma, chroma_sigma);
     cp[i] = keep;
     fd[i] = (up - down) / (2 * h);
   }
@@ -222,6 +224,40 @@ TEST_CASE("blur matching: a wider render blur keeps the loss and gradient exact"
   MESSAGE("render sigma 1.4: cosine " << a.cosine << ", relative error " << a.rel_error);
   CHECK(a.cosine > 0.99999);
   CHECK(a.rel_error < 1e-3);
+}
+
+// Chroma blur matching (raster/loss_taps.h, render_blur): luma blurred at the render σ,
+// chroma in YCbCr at its own. The kernels' loss follows the reference's per-group blur and the
+// gradient its finite differences, with the chroma blur wider than luma's radius (1 / 1.6: radii
+// 2 and 4) and both widened (1.3 / 1.9). A chroma σ equal to the render σ is today's loss, bit
+// for bit.
+TEST_CASE("chroma blur matching: a softer chroma blur keeps the loss and gradient exact") {
+  const Case c = make_case(scene_of(40, 32, {filled(circle({20, 16}, 9), {0.9f, 0.2f, 0.1f, 1}),
+                                             filled(polygon({{3, 4}, {30, 6}, {14, 28}}), {0.1f, 0.6f, 0.3f, 0.7f})}),
+                           13, 2);
+  for (const auto& [sl, sc] : {std::pair{1.0, 1.6}, std::pair{1.3, 1.9}}) {
+    CAPTURE(sl);
+    CAPTURE(sc);
+    float lc = 0;
+    double lr = 0, lr_plain = 0;
+    const auto [an, fd] = gradients(c, &lc, &lr, nullptr, sl, sc);
+    gradients(c, nullptr, &lr_plain, nullptr, sl);
+    CHECK(lr > 0);
+    CHECK(lc == doctest::Approx(lr).epsilon(1e-5));
+    CHECK(std::abs(lr - lr_plain) > 1e-3 * lr_plain);  // the chroma blur is in effect
+    const Agreement a = compare(an, fd);
+    MESSAGE("luma sigma " << sl << ", chroma sigma " << sc << ": cosine " << a.cosine << ", relative error " << a.rel_error);
+    CHECK(a.cosine > 0.99999);
+    CHECK(a.rel_error < 1e-3);
+  }
+  // σ_c = σ: the plain build, the same bits as without a chroma σ.
+  for (double s : {1.0, 1.4}) {
+    float l0 = 0, l1 = 0;
+    const auto g0 = gradients(c, &l0, nullptr, nullptr, s).first;
+    const auto g1 = gradients(c, &l1, nullptr, nullptr, s, s).first;
+    CHECK(l0 == l1);
+    CHECK(g0 == g1);
+  }
 }
 
 TEST_CASE("gradient on random scenes: curves, evenodd, opacity, off-canvas, tiny and huge shapes") {

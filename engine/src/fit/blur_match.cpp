@@ -54,6 +54,43 @@ BlurMatch match_render_blur(const RgbaImage& rest, const std::vector<float>& tar
   m.residual_ratio = base > 0 ? best / base : 1;
   m.rest_psnr_db = best > 0 ? 10 * std::log10(3.0 * px / best) : 99;
   if (m.residual_ratio <= kMinGain && m.rest_psnr_db >= kMinRestPsnr) m.render_sigma = m.best_sigma;
+
+  // The chroma blur on top of the luma σ just chosen (see blur_match.h). The overall σ is a
+  // compromise when only chroma is soft (it blurs sharp luma to meet soft chroma), so the pair
+  // is refined by coordinate descent: chroma with luma fixed, luma (1..σ_c) with chroma fixed,
+  // chroma again. The pair is adopted by the same rule against the luma-only choice.
+  auto pair_residual = [&](double sl, double sc) {
+    const std::vector<double> gr = render_blur(render, W, H, sl, sc);
+    double s = 0;
+    for (size_t i = 0; i < gr.size(); ++i) s += (gr[i] - gt[i]) * (gr[i] - gt[i]);
+    return s;
+  };
+  const double luma_only = m.render_sigma == kLossSigma ? base : residual(m.render_sigma);
+  double sl = m.render_sigma, sc = sl, best_c = luma_only;
+  auto search_chroma = [&] {
+    for (int i = 1; sl + i * kStep <= kMaxSigma + 1e-9; ++i) {
+      const double s = sl + i * kStep, r = pair_residual(sl, s);
+      if (r < best_c) best_c = r, sc = s;
+    }
+  };
+  search_chroma();
+  if (sc != sl) {
+    const double keep = sl;
+    for (int i = 0; kLossSigma + i * kStep < sc - 1e-9; ++i) {
+      const double s = kLossSigma + i * kStep;
+      if (s == keep) continue;
+      const double r = pair_residual(s, sc);
+      if (r < best_c) best_c = r, sl = s;
+    }
+    if (sl != keep) search_chroma();
+  }
+  m.best_chroma_sigma = sc;
+  m.chroma_luma_sigma = sl;
+  m.chroma_residual_ratio = luma_only > 0 ? best_c / luma_only : 1;
+  m.chroma_rest_psnr_db = best_c > 0 ? 10 * std::log10(3.0 * px / best_c) : 99;
+  m.chroma_sigma = m.render_sigma;
+  if (sc != sl && m.chroma_residual_ratio <= kMinGain && m.chroma_rest_psnr_db >= kMinRestPsnr)
+    m.render_sigma = sl, m.chroma_sigma = sc;
   return m;
 }
 

@@ -231,12 +231,16 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   auto match_blur = [&](const TargetFrames& t, const RenderSize& at) {
     if (!job.blur_matching) return BlurMatch{};
     const BlurMatch m = match_render_blur(render_image(rt, fit_scene, at.width, false), t.rgba);
-    log::debug("fit: blur matching at %dx%d: best render sigma %.2f (residual x%.3f, rest pose %.1f dB)%s", at.width,
-               at.height, m.best_sigma, m.residual_ratio, m.rest_psnr_db, m.render_sigma != 1 ? ", adopted" : ", not adopted");
+    log::debug("fit: blur matching at %dx%d: best render sigma %.2f (residual x%.3f, rest pose %.1f dB)%s; "
+               "best chroma sigma %.2f with luma %.2f (residual x%.3f)%s; render sigma %.2f, chroma %.2f", at.width,
+               at.height, m.best_sigma, m.residual_ratio, m.rest_psnr_db, m.best_sigma == m.render_sigma ? ", adopted" : "",
+               m.best_chroma_sigma, m.chroma_luma_sigma, m.chroma_residual_ratio,
+               m.chroma_sigma != m.render_sigma ? ", adopted" : ", not adopted", m.render_sigma, m.chroma_sigma);
     return m;
   };
   const BlurMatch coarse_blur = match_blur(target, size);
   coarse_options.render_blur_sigma = coarse_blur.render_sigma;
+  coarse_options.chroma_blur_sigma = coarse_blur.chroma_sigma;
   Fitter fitter(rt, fit_scene, target, coarse_options);
   log::debug("fit: %s: %d keyframes of %d frames (%.3g fps) at %dx%d; %d paths in %d groups, %d control points; "
              "%d iterations on %s",
@@ -395,6 +399,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     fine_options.iterations = refine_iters;
     fine_blur = match_blur(*fine_target, fine_size);
     fine_options.render_blur_sigma = fine_blur.render_sigma;
+    fine_options.chroma_blur_sigma = fine_blur.chroma_sigma;
     fine = std::make_unique<Fitter>(rt, fit_scene, *fine_target, fine_options);
     const double scale = static_cast<double>(fine_size.width) / size.width;
     fine->adopt_coarse(fitter, scale);
@@ -544,6 +549,9 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   // The loss's render σ (1: the paper's; more: the video was softer and its blur was matched).
   report["target_frames"]["render_blur_sigma"] = coarse_blur.render_sigma;
   if (fine) report["target_frames"]["refine_render_blur_sigma"] = fine_blur.render_sigma;
+  // The chroma σ in YCbCr (= the render σ unless the video's chroma was found softer).
+  report["target_frames"]["chroma_sigma"] = coarse_blur.chroma_sigma;
+  if (fine) report["target_frames"]["refine_chroma_sigma"] = fine_blur.chroma_sigma;
   if (job.stabilise) report["target_frames"]["max_shake_removed_px"] = target.max_shake_px;
   if (fine)
     report["refined"] = {{"size", {W, H}},

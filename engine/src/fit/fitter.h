@@ -124,6 +124,10 @@ struct FitOptions {
   // The σ of the Gaussian the loss blurs the render with (the target's is the paper's 1): set
   // from the rest pose by blur matching (fit/blur_match.h) when the video is softer.
   double render_blur_sigma = 1;
+  // The σ of the render's chroma blur in YCbCr when blur matching found the video's chroma
+  // softer than its luma (raster/loss_taps.h, render_blur); 0: render_blur_sigma, every
+  // channel alike.
+  double chroma_blur_sigma = 0;
 
   // The paper's deformation: free per-point offsets (lr 0.1) with its smoothness weight, no
   // displacement field.

@@ -1,4 +1,5 @@
-// The blurred-MSE reference (see loss_ref.h), written plainly: a direct 2-D stencil.
+// The blurred-MSE reference (see loss_ref.h), written plainly: a direct 2-D stencil, per
+// channel group in YCbCr when the chroma blur has its own σ.
 #include "raster/loss_ref.h"
 
 #include <algorithm>
@@ -8,9 +9,58 @@
 
 namespace svgm::ref {
 
+namespace {
+
+// The per-group form, as plainly: C to YCbCr by A, each channel's own direct 2-D stencil (luma
+// at render σ, chroma at chroma σ), back to RGB by A⁻¹, minus the target's blur in RGB.
+double chroma_sq_sum(const std::vector<double>& image, const std::vector<float>& target, int width,
+                     int height, const std::array<double, 4>& background, double render_sigma,
+                     double chroma_sigma) {
+  const std::vector<double> gl = loss_stencil(render_sigma), gc = loss_stencil(chroma_sigma),
+                            gt = loss_stencil(kLossSigma);
+  auto tap = [](const std::vector<double>& g, int j) {
+    const int r = static_cast<int>(g.size() / 2);
+    return std::abs(j) <= r ? g[static_cast<size_t>(j + r)] : 0.0;
+  };
+  const int R = static_cast<int>(std::max({gl.size(), gc.size(), gt.size()}) / 2);
+  std::vector<double> ycc(static_cast<size_t>(width) * height * 3), t(ycc.size());
+  for (size_t p = 0; p < ycc.size() / 3; ++p) {
+    double c[3];
+    for (int ch = 0; ch < 3; ++ch) {
+      c[ch] = image[4 * p + ch] + background[ch] * (1.0 - image[4 * p + 3]);
+      t[3 * p + ch] = target[4 * p + ch];
+    }
+    for (int i = 0; i < 3; ++i) ycc[3 * p + i] = kYcc[i][0] * c[0] + kYcc[i][1] * c[1] + kYcc[i][2] * c[2];
+  }
+  double sum = 0;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      double v[3] = {0, 0, 0}, gtt[3] = {0, 0, 0};
+      for (int dy = -R; dy <= R; ++dy)
+        for (int dx = -R; dx <= R; ++dx) {
+          const int xx = x + dx, yy = y + dy;
+          if (xx < 0 || yy < 0 || xx >= width || yy >= height) continue;  // zero padding
+          const size_t at = 3 * (static_cast<size_t>(yy) * width + xx);
+          for (int ch = 0; ch < 3; ++ch) {
+            const std::vector<double>& g = ch == 0 ? gl : gc;
+            v[ch] += tap(g, dx) * tap(g, dy) * ycc[at + ch];
+            gtt[ch] += tap(gt, dx) * tap(gt, dy) * t[at + ch];
+          }
+        }
+      for (int ch = 0; ch < 3; ++ch) {
+        const double e = kYccInv[ch][0] * v[0] + kYccInv[ch][1] * v[1] + kYccInv[ch][2] * v[2] - gtt[ch];
+        sum += e * e;
+      }
+    }
+  return sum;
+}
+
+}  // namespace
+
 double blurred_sq_sum(const std::vector<double>& image, const std::vector<float>& target,
                       int width, int height, const std::array<double, 4>& background,
-                      double render_sigma) {
+                      double render_sigma, double chroma_sigma) {
+  if (chroma_sigma > 0 && chroma_sigma != render_sigma) return chroma_sq_sum(image, target, width, height, background, render_sigma, chroma_sigma);
   const std::vector<double> gr = loss_stencil(render_sigma), gt = loss_stencil(kLossSigma);
   const int Rr = static_cast<int>(gr.size() / 2), Rt = static_cast<int>(gt.size() / 2), R = std::max(Rr, Rt);
   // A tap outside a stencil's radius weighs 0.

@@ -10,9 +10,10 @@ namespace svgm::ref {
 // C the premultiplied RGBA `image` composited over `background`, T the RGB of `target`
 // (width * height * 4 values each), G_r and G_t the loss's Gaussians of σ `render_sigma` and
 // 1 (raster/loss_taps.h). The loss of K frames is weight / (K·H·W·3) times the sum of their
-// frame sums.
+// frame sums. With `chroma_sigma` > 0 and not `render_sigma`, G_r ∗ C is the per-group blur
+// of chroma blur matching, A⁻¹ · diag(G_r, G_c, G_c) · A · C in YCbCr (raster/loss_taps.h).
 double blurred_sq_sum(const std::vector<double>& image, const std::vector<float>& target,
                       int width, int height, const std::array<double, 4>& background,
-                      double render_sigma = 1.0);
+                      double render_sigma = 1.0, double chroma_sigma = 0);
 
 }  // namespace svgm::ref

@@ -1,4 +1,5 @@
-// The loss's separable blur on the host (see loss_taps.h).
+// The loss's separable blurs on the host (see loss_taps.h): the plain one and the per-group
+// YCbCr one of chroma blur matching.
 #include "raster/loss_taps.h"
 
 namespace svgm {
@@ -23,6 +24,31 @@ std::vector<double> blur_rgb(const std::vector<double>& in, int W, int H, const 
           if (y + j >= 0 && y + j < H) s += g[static_cast<size_t>(j + R)] * tmp[at(x, y + j, c)];
         out[at(x, y, c)] = s;
       }
+  return out;
+}
+
+std::vector<double> render_blur(const std::vector<double>& in, int W, int H, double sigma, double chroma_sigma,
+                                bool adjoint) {
+  if (chroma_sigma == sigma) return blur_rgb(in, W, H, loss_stencil(sigma));
+  // Into the blur's coordinates: A (forward) or A⁻ᵀ (adjoint); out: A⁻¹ or Aᵀ.
+  auto into = [&](int i, int j) { return adjoint ? kYccInv[j][i] : kYcc[i][j]; };
+  auto out_of = [&](int i, int j) { return adjoint ? kYcc[j][i] : kYccInv[i][j]; };
+  const size_t px = in.size() / 3;
+  std::vector<double> f(in.size());
+  for (size_t p = 0; p < px; ++p)
+    for (int i = 0; i < 3; ++i) {
+      double s = 0;
+      for (int j = 0; j < 3; ++j) s += into(i, j) * in[3 * p + j];
+      f[3 * p + i] = s;
+    }
+  // Every channel blurred at both σ; luma keeps the first, chroma the second.
+  const std::vector<double> luma = blur_rgb(f, W, H, loss_stencil(sigma));
+  const std::vector<double> chroma = blur_rgb(f, W, H, loss_stencil(chroma_sigma));
+  std::vector<double> out(in.size());
+  for (size_t p = 0; p < px; ++p) {
+    const double v[3] = {luma[3 * p], chroma[3 * p + 1], chroma[3 * p + 2]};
+    for (int i = 0; i < 3; ++i) out[3 * p + i] = out_of(i, 0) * v[0] + out_of(i, 1) * v[1] + out_of(i, 2) * v[2];
+  }
   return out;
 }
 

@@ -46,4 +46,24 @@ inline std::vector<double> loss_stencil(double sigma) {
   return s;
 }
 
+// Chroma blur matching: the render's blur per channel group in YCbCr (BT.601 without
+// offsets), B = A⁻¹ · diag(G_σ, G_σc, G_σc) · A. A⁻¹'s first column is (1, 1, 1) and its
+// chroma columns span the colours of zero luma weight, so B is "luma blurred at σ, chroma at
+// σc", and B = G_σ when σc = σ. Video codecs keep luma sharp and chroma soft (4:2:0
+// subsampling, coarser chroma quantisation): matching that by a softer chroma blur keeps the
+// fitter from moving edges between colours of similar luma to imitate it.
+// kYcc: A (rows Y, Cb, Cr of R, G, B); kYccInv: A⁻¹ (rows R, G, B of Y, Cb, Cr).
+constexpr double kYcc[3][3] = {{0.299, 0.587, 0.114},
+                               {-0.299 / 1.772, -0.587 / 1.772, (1 - 0.114) / 1.772},
+                               {(1 - 0.299) / 1.402, -0.587 / 1.402, -0.114 / 1.402}};
+constexpr double kYccInv[3][3] = {{1, 0, 1.402},
+                                  {1, -0.114 * 1.772 / 0.587, -0.299 * 1.402 / 0.587},
+                                  {1, 1.772, 0}};
+
+// B (or, with `adjoint`, Bᵀ = Aᵀ · diag(G_σ, G_σc, G_σc) · A⁻ᵀ) applied to W x H pixels of 3
+// interleaved RGB channels, zero padding, in double. With σc = σ it is blur_rgb with
+// loss_stencil(σ), the same arithmetic.
+std::vector<double> render_blur(const std::vector<double>& in, int W, int H, double sigma, double chroma_sigma,
+                                bool adjoint = false);
+
 }  // namespace svgm

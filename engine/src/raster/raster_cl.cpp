@@ -19,22 +19,35 @@ cl::Buffer ClRaster::make(size_t bytes, const void* host) {
 namespace {
 
 // prelude.cl's render taps when they are not the paper's (whose program stays the cached one).
-std::string loss_tap_options(double sigma) {
-  if (sigma == kLossSigma) return "";
+// A chroma σ of its own adds the chroma taps GC0.. and CHROMA_R, and LOSS_R becomes the larger
+// radius (the luma taps beyond their own radius are prelude.cl's zeros).
+std::string loss_tap_options(double sigma, double chroma_sigma) {
+  if (sigma == kLossSigma && chroma_sigma == sigma) return "";
+  auto taps = [](const char* name, const std::vector<double>& g) {
+    std::string o;
+    for (size_t j = 0; j < g.size(); ++j) {
+      char buf[48];
+      std::snprintf(buf, sizeof buf, " -D%s%zu=%.9gf", name, j, g[j]);
+      o += buf;
+    }
+    return o;
+  };
   const std::vector<double> g = loss_taps(sigma);
-  std::string o = " -DLOSS_R=" + std::to_string(g.size() - 1);
-  for (size_t j = 0; j < g.size(); ++j) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, " -DG%zu=%.9gf", j, g[j]);
-    o += buf;
-  }
-  return o;
+  if (chroma_sigma == sigma) return " -DLOSS_R=" + std::to_string(g.size() - 1) + taps("G", g);
+  const std::vector<double> gc = loss_taps(chroma_sigma);
+  return " -DLOSS_R=" + std::to_string(std::max(g.size(), gc.size()) - 1) + taps("G", g) +
+         " -DCHROMA_R=" + std::to_string(gc.size() - 1) + taps("GC", gc);
 }
 
 }  // namespace
 
-ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double render_sigma)
-    : rt_(rt), plan_(plan), frames_(frames), active_(frames), render_sigma_(render_sigma) {
+ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double render_sigma, double chroma_sigma)
+    : rt_(rt),
+      plan_(plan),
+      frames_(frames),
+      active_(frames),
+      render_sigma_(render_sigma),
+      chroma_sigma_(chroma_sigma > 0 ? chroma_sigma : render_sigma) {
   if (frames < 1) throw Error("frame count must be at least 1");
   const auto& p = plan_;
   const size_t K = static_cast<size_t>(frames);
@@ -48,7 +61,7 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double ren
     cl::Program& prog =
         rt_.program({"flatten.cl", "stroke.cl", "lines.cl", "raster.cl", "loss.cl",
                      "raster_backward.cl", "stroke_backward.cl"},
-                    kernel_build_options(tuning) + loss_tap_options(render_sigma));
+                    kernel_build_options(tuning) + loss_tap_options(render_sigma_, chroma_sigma_));
     program_ = &prog;
     local_budget_ = tuning.local_budget;
     k_flatten_ = cl::Kernel(prog, "flatten");

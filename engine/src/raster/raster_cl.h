@@ -23,7 +23,10 @@ class ClRaster {
  public:
   // `render_sigma`: the σ of the Gaussian the loss blurs the render with (kernels/loss.cl; the
   // target's is always kLossSigma). Above it, blur matching (fit/blur_match.h).
-  ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double render_sigma = kLossSigma);
+  // `chroma_sigma`: the σ of the render's chroma blur in YCbCr (raster/loss_taps.h,
+  // render_blur); 0 means render_sigma, the plain blur of every channel alike.
+  ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double render_sigma = kLossSigma,
+           double chroma_sigma = 0);
 
   int frames() const { return frames_; }
   // Launches cover the first `n` frames only (1..frames()): the fitter activates keyframes
@@ -104,6 +107,7 @@ class ClRaster {
   int frames_;
   int active_ = 0;
   double render_sigma_ = kLossSigma;
+  double chroma_sigma_ = kLossSigma;  // = render_sigma_ unless the chroma blur is its own
   int band_h_ = 16, bands_ = 0, group_ = 1;
   size_t device_bytes_ = 0;
   std::vector<std::pair<std::string, cl::Event>> events_;

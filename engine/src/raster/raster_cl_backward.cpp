@@ -162,9 +162,11 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
   if (bg == q_background_) return;
   const int W = plan_.width, H = plan_.height, K = frames_;
   const size_t px = static_cast<size_t>(W) * H;
-  // The render's blur (loss.cl's taps) and the target's, in double.
-  const std::vector<double> g_render = loss_stencil(render_sigma_), g_target = loss_stencil(kLossSigma);
-  const std::vector<double> g1 = blur_rgb(std::vector<double>(px * 3, 1.0), W, H, g_render);
+  // The render's blur B (loss.cl's taps; per channel group with a chroma σ of its own,
+  // raster/loss_taps.h render_blur) and the target's, in double: Q = bg·(B 1) − G_t ∗ T,
+  // R = Bᵀ Q.
+  const std::vector<double> g_target = loss_stencil(kLossSigma);
+  const std::vector<double> g1 = render_blur(std::vector<double>(px * 3, 1.0), W, H, render_sigma_, chroma_sigma_);
   std::vector<double> t(px * 3), q(px * 3);
   std::vector<float> qf(px * K * 4), rf(px * K * 4), qsum(K);
   for (int k = 0; k < K; ++k) {
@@ -176,7 +178,7 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
       q[i] = bg[i % 3] * g1[i] - gt[i];
       sum += q[i] * q[i];
     }
-    const std::vector<double> r = blur_rgb(q, W, H, g_render);
+    const std::vector<double> r = render_blur(q, W, H, render_sigma_, chroma_sigma_, true);
     qsum[k] = static_cast<float>(sum);
     for (size_t p = 0; p < px; ++p)
       for (int c = 0; c < 3; ++c) {
