@@ -512,6 +512,47 @@ TEST_CASE("arms with no part of their own bend the widest upper part, with the h
   CHECK(t[2] > 10.0);  // and the hand with them
 }
 
+TEST_CASE("a hand hanging at the cuff of a bending sleeve, outside the sweater's box, goes with the cuff") {
+  // Trousers, a sweater with its left sleeve out and its right sleeve hanging down to a cuff at
+  // y = 100 (x 162..172), and a hand below the cuff: outside the sweater's box, beside its middle.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><path d="M 80 100 L 120 100 L 125 190 L 75 190 Z" fill="#fc0"/></g>
+           <g><path d="M 30 40 L 150 40 L 170 60 L 172 100 L 162 100 L 158 65 L 120 60 L 120 100 L 80 100 L 80 55 L 30 55 Z" fill="#00f"/></g>
+           <g><path d="M 162 100 L 172 100 L 172 110 L 162 110 Z" fill="#fa8"/></g></svg>)", "sleeve.svg");
+  const Rig rig = build_rig(s, {});
+  REQUIRE(rig.parts[2].parent == 1);  // the hand hangs from the sweater
+  MotionPlan plan = plan_from_prompt(parse_prompt("she is waving her arms"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  REQUIRE(plan.actions[0].region == Region::Sides);
+  const int F = 13;
+  const auto pts = animate_plan(s, rig, plan, F);
+  const size_t per = pts.size() / F;
+  // The sweater's cuff corner (162, 100) and the hand's, which start together.
+  auto index_at = [&](int path, Vec2 at) {
+    size_t i = 0;
+    for (int p = 0; p < path; ++p)
+      for (const auto& sp : s.paths[p].subpaths) i += sp.points.size();
+    for (const auto& sp : s.paths[path].subpaths)
+      for (const Vec2& q : sp.points) {
+        if (std::hypot(q.x - at.x, q.y - at.y) < 1e-9) return i;
+        ++i;
+      }
+    return size_t(-1);
+  };
+  const size_t cuff = index_at(1, {162, 100}), hand = index_at(2, {162, 100});
+  REQUIRE(cuff != size_t(-1));
+  REQUIRE(hand != size_t(-1));
+  double cuff_travel = 0, apart = 0;
+  for (int f = 1; f < F; ++f) {
+    const Vec2 c = pts[f * per + cuff], h = pts[f * per + hand];
+    cuff_travel = std::max(cuff_travel, std::hypot(c.x - 162, c.y - 100));
+    apart = std::max(apart, std::hypot(c.x - h.x, c.y - h.y));
+  }
+  CHECK(cuff_travel > 5.0);  // the sleeve swings
+  CHECK(apart < 1.0);        // and the hand stays on its cuff (it stood still before: apart = travel)
+}
+
 TEST_CASE("a sway leans the figure's top about its middle; the foot and the lower stem stay planted") {
   // A wine glass: a bowl (y 20-90) on a stem (90-170) on a foot (170-178).
   const Scene s = read_svg_string(

@@ -872,6 +872,20 @@ Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box
   return q;
 }
 
+// A part hanging beside a bending shape, outside its box (not under its middle half, where legs
+// hang from a torso and keep to the rig): moved whole as the bend
+// moves the point where it attaches, turned as the bend turns there. Bent point by point it
+// would not move at all (outside the region's box nothing bends): woman_wave's lowered hand,
+// drawn as its own shapes beyond the sweater's box, stayed where it was while the sleeve above
+// it swung out, 10-15 px off the cuff in the target and so in the fit.
+Vec2 carried_by_bend(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 pivot, Vec2 q) {
+  const double eps = 1e-3 * std::max(box.w(), 1e-9);
+  const Vec2 p = bend_region(a, amp, t, box, pivot), e = bend_region(a, amp, t, box, pivot + Vec2{eps, 0});
+  const double ang = std::atan2(e.y - p.y, e.x - p.x);
+  const double cs = std::cos(ang), sn = std::sin(ang), dx = q.x - pivot.x, dy = q.y - pivot.y;
+  return p + Vec2{cs * dx - sn * dy, sn * dx + cs * dy};
+}
+
 // A Sway of the figure with box `box`: above the hinge the points lean about the hinge's middle,
 // the lean growing smoothly over kRamp of the height (the shape stays in one piece); below it
 // they hold.
@@ -1112,6 +1126,8 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
                 const Vec2 gc = g >= 0 ? rig.parts[g].box.centre() : Vec2{};
                 if (g == a.parts[0] || (g >= 0 && under(g, a.parts[0]) && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y <= hb.y1))
                   q = bend_region(a, amp, t, hb, q);
+                else if (g >= 0 && under(g, a.parts[0]) && (gc.y <= hb.y1 || std::fabs(gc.x - hb.centre().x) > 0.25 * hb.w()))
+                  q = carried_by_bend(a, amp, t, hb, rig.parts[g].pivot, q);
               } else if (a.parts.empty()) {
                 if (!background) q = a.primitive == Primitive::Sway ? sway_lean(a, amp, t, rig.figure, q) : deform(a, amp, t, rig.figure, q);
               } else {
