@@ -5,6 +5,8 @@
 // animated, the layers stage's paint order applied by moving just the elements it must), the
 // same animation as Lottie (animation.json), preview.mp4, fit.json and checkpoint.bin. A fit the result gate rejects answers
 // "rejected": 3 (svgm::Rejected) with animation.failed.svg written instead.
+#include <fstream>
+
 #include "common/plugin_glue.h"
 #include "fit/fit_job.h"
 
@@ -33,6 +35,10 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   if (!user_video && c.value("motion_groups", true) && req.at("stages").at("video").value("plugin", "") == "procedural") {
     const std::filesystem::path motion = std::filesystem::path(req.at("run_dir").get<std::string>()) / "motion.json";
     if (std::filesystem::exists(motion)) job.motion = motion;
+    // The ranker's choice names the candidate whose known motion is the target's.
+    std::ifstream ranking(std::filesystem::path(req.at("run_dir").get<std::string>()) / "ranking.json");
+    const nlohmann::json r = nlohmann::json::parse(ranking, nullptr, false);
+    if (!r.is_discarded() && r.is_object()) job.motion_candidate = r.value("chosen", "");
   }
   job.out = req.at("run_dir").get<std::string>();
   job.options.iterations = c.value("iterations", 2000);

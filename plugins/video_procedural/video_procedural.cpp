@@ -86,15 +86,21 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
       }
     }
     const std::vector<svgm::Vec2> pts = svgm::animate_plan(scene, rig, plan, o.frames);
+    // Each candidate's rigid bodies and their maps (the fitter warm-starts from the chosen
+    // one's: the candidates differ in amplitudes and directions); the paths' travels are the
+    // first candidate's.
+    std::vector<std::vector<svgm::Affine>> maps;
+    const std::vector<svgm::PathMotion> motion = svgm::path_motion(scene, pts, o.frames, &maps);
+    nlohmann::json path_body = nlohmann::json::array();
+    for (const auto& m : motion) path_body.push_back(m.body);
     if (i == 0) {
       report["canvas"] = {scene.width, scene.height};
-      std::vector<std::vector<svgm::Affine>> maps;
-      report["paths"] = svgm::path_motion_json(scene, svgm::path_motion(scene, pts, o.frames, &maps));
+      report["paths"] = svgm::path_motion_json(scene, motion);
       report["bodies"] = svgm::body_maps_json(maps);
     }
     svgm::write_procedural_video(scene, pts, seed, o, dir / (std::string(name) + ".mp4"));
     made.push_back({{"name", std::string(name) + ".mp4"}, {"seed", seed}, {"amplitude_scale", plan.scale},
-                    {"plan", plan.summary()}});
+                    {"plan", plan.summary()}, {"path_body", path_body}, {"bodies", svgm::body_maps_json(maps)}});
     if (host && host->progress) host->progress(host, (i + 1.0) / n, name);
   }
   report["candidates"] = made;

@@ -118,6 +118,19 @@ TEST_CASE("the known motion reads each body's maps and matches paths by id") {
   nlohmann::json other = report;
   other["paths"].erase(0);
   CHECK(known_motion(s, other).body.empty());
+  // The chosen candidate's own maps and bodies (this one moves the tail with the fist's body and
+  // holds the fist still); a candidate the report does not list gives none.
+  nlohmann::json chosen = report;
+  nlohmann::json path_body = nlohmann::json::array();
+  for (const Path& p : s.paths) path_body.push_back(p.id == "fist" ? 1 : p.id == "tail" ? 0 : p.id == "torso" ? 1 : 0);
+  chosen["candidates"] = {{{"name", "00.mp4"}}, {{"name", "01.mp4"}, {"path_body", path_body}, {"bodies", {{{1, 0, 0, 1, 0, 0}, {1, 0, 0, 1, -3, 0}}, {{1, 0, 0, 1, 0, 0}, {1, 0, 0, 1, 0, 0}}}}}};
+  const KnownMotion c = known_motion(s, chosen, "01.mp4");
+  REQUIRE(c.maps.size() == 2);
+  CHECK(c.maps[0][1].apply({10, 10}) == Vec2{7, 10});
+  CHECK(c.body[static_cast<size_t>(index_of(s, "fist"))] == 1);
+  CHECK(c.body[static_cast<size_t>(index_of(s, "tail"))] == 0);
+  CHECK(known_motion(s, chosen, "02.mp4").body.empty());
+  CHECK(known_motion(s, chosen, "00.mp4").body.empty());  // listed, but without its bodies
   // A malformed map: none either.
   nlohmann::json bad = report;
   bad["bodies"][0][1] = {1, 0, 0};

@@ -148,7 +148,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
       palette_scene = split_groups_by_motion(palette_scene, motion, &notes);
       palette_scene = merge_groups_by_body(palette_scene, motion, &notes);
       held_groups = still_groups(palette_scene, motion);
-      known = known_motion(palette_scene, motion);
+      known = known_motion(palette_scene, motion, job.motion_candidate);
     }
     if (!known.body.empty())
       log::debug("fit: the target's own motion: %zu rigid bodies warm-start the keyframes", known.maps.size());

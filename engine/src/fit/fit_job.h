@@ -40,6 +40,9 @@ struct FitJob {
   // The procedural video stage's report (motion.json): groups it moves apart are fitted as
   // several (motion_groups.h).
   std::optional<std::filesystem::path> motion;
+  // The candidate video the ranker chose ("01.mp4"), whose known motion warm-starts the fit
+  // (motion_groups.h known_motion); empty: the report's first.
+  std::string motion_candidate;
   // The document the animation is written into (default: svg). The fitter plugin fits the
   // pipeline's working copy (layered.svg) and exports into the user's own input.svg: paths are
   // matched by id and the working copy's paint order is applied (document_order.h).

@@ -132,10 +132,27 @@ Scene merge_groups_by_body(const Scene& scene, const nlohmann::json& motion, std
   return out;
 }
 
-KnownMotion known_motion(const Scene& scene, const nlohmann::json& motion) {
+KnownMotion known_motion(const Scene& scene, const nlohmann::json& motion, const std::string& candidate) {
   KnownMotion k;
-  if (!motion.contains("bodies") || !motion.contains("paths") || !motion["bodies"].is_array()) return k;
-  for (const auto& body : motion["bodies"]) {
+  if (!motion.contains("paths") || !motion["paths"].is_array()) return k;
+  // The maps and each listed path's body: the report's own, or the chosen candidate's.
+  const nlohmann::json* bodies = motion.contains("bodies") ? &motion["bodies"] : nullptr;
+  std::vector<int> listed;  // body of each entry of "paths", in order
+  for (const auto& p : motion["paths"]) listed.push_back(p.value("body", -1));
+  if (!candidate.empty()) {
+    bodies = nullptr;
+    // By reference into `motion`: `bodies` points into it.
+    static const nlohmann::json none = nlohmann::json::array();
+    const nlohmann::json& candidates = motion.contains("candidates") && motion["candidates"].is_array() ? motion["candidates"] : none;
+    for (const auto& c : candidates)
+      if (c.is_object() && c.value("name", "") == candidate && c.contains("bodies") && c.contains("path_body") && c["path_body"].is_array() &&
+          c["path_body"].size() == listed.size()) {
+        bodies = &c["bodies"];
+        for (size_t i = 0; i < listed.size(); ++i) listed[i] = c["path_body"][i].is_number_integer() ? c["path_body"][i].get<int>() : -1;
+      }
+  }
+  if (!bodies || !bodies->is_array()) return k;
+  for (const auto& body : *bodies) {
     std::vector<Affine> maps;
     for (const auto& m : body) {
       if (!m.is_array() || m.size() != 6) return {};
@@ -147,12 +164,11 @@ KnownMotion known_motion(const Scene& scene, const nlohmann::json& motion) {
     k.maps.push_back(std::move(maps));
   }
   std::map<std::string, int> body_of;
-  for (const auto& p : motion["paths"]) body_of[p.value("id", "")] = p.value("body", -1);
+  for (size_t i = 0; i < listed.size(); ++i) body_of[motion["paths"][i].value("id", "")] = listed[i];
   k.body.assign(scene.paths.size(), -1);
   for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
     const auto it = body_of.find(scene.paths[pi].id);
-    if (it == body_of.end()) return {};
-    if (it->second >= static_cast<int>(k.maps.size())) return {};
+    if (it == body_of.end() || it->second >= static_cast<int>(k.maps.size())) return {};
     k.body[pi] = it->second;
   }
   return k;

@@ -44,12 +44,15 @@ Scene merge_groups_by_body(const Scene& scene, const nlohmann::json& motion, std
 
 // The target's own motion from `motion`'s "bodies" (per body, per frame, [a b c d e f] in canvas
 // units) and each path's "body", matched to `scene`'s paths by id: FitOptions::known_body and
-// known_maps. Empty when the report has no bodies, or when a path it names is not in the scene.
+// known_maps. With `candidate` (the video the ranker chose, "01.mp4"), that candidate's own
+// "bodies" and "path_body" (in the order of "paths") from motion.json's "candidates"; nothing
+// when the report does not list it. Empty when the report has no bodies, or when a path it
+// names is not in the scene.
 struct KnownMotion {
   std::vector<int> body;
   std::vector<std::vector<Affine>> maps;
 };
-KnownMotion known_motion(const Scene& scene, const nlohmann::json& motion);
+KnownMotion known_motion(const Scene& scene, const nlohmann::json& motion, const std::string& candidate = "");
 
 // The fit groups of `scene` (as fit_plan.h names them: a group's id, a path's own id when it is
 // in none) whose every path `motion` holds still: the fitter holds them at rest (FitOptions::
