@@ -69,6 +69,32 @@ TEST_CASE("composing a similarity equals applying it after the homography") {
   }
 }
 
+TEST_CASE("compose_affine: the composed homography is the affine map applied after the group's motion") {
+  // A sheared, scaled, turned group (no projective part), then a turn in a slanted plane
+  // M R M^-1 (a wheel seen at a slant) about a point: the composition refactored into
+  // R · Sh · S with shy = 0 moves every point where the two steps in turn do.
+  MotionParams th = identity_params(0.1, -0.2);
+  th[0] = 0.05; th[1] = -0.03; th[2] = 0.3; th[3] = 1.2; th[4] = 0.8; th[5] = 0.15; th[6] = -0.1;
+  const Affine M{1.4, 0.3, 0.0, 0.7, 0, 0};
+  const Vec2 c{70, 40};
+  const Affine turn = Affine::translate(c.x, c.y) * M * Affine::rotate_deg(37) * M.inverse() * Affine::translate(-c.x, -c.y);
+  MotionParams composed = th;
+  const Vec2 o{64, 48};
+  const double scale = 64;
+  REQUIRE(compose_affine(composed, turn, o, scale));
+  CHECK(composed[6] == 0.0);
+  for (const Vec2 p : {Vec2{10, 20}, Vec2{100, 80}, Vec2{64, 48}, Vec2{0, 95}}) {
+    const Vec2 want = turn.apply(apply_motion(th, p, o, scale));
+    const Vec2 got = apply_motion(composed, p, o, scale);
+    CHECK(got.x == doctest::Approx(want.x).epsilon(1e-9));
+    CHECK(got.y == doctest::Approx(want.y).epsilon(1e-9));
+  }
+  // A mirroring map is refused, and leaves the parameters as they were.
+  MotionParams kept = th;
+  CHECK_FALSE(compose_affine(kept, Affine::scale(-1, 1), o, scale));
+  CHECK(kept == th);
+}
+
 TEST_CASE("track_points: a corner's window pins both directions, a straight edge's only one") {
   // A dark square (20..44) on white, 64 x 64.
   const int W = 64, H = 64;

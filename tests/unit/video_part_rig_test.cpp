@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <set>
 
 #include "svgmotion/svg_reader.h"
@@ -271,6 +272,38 @@ TEST_CASE("a limb drawn as one stroke turns about its end nearest the shoulders 
   REQUIRE(hips.has_value());
   CHECK(hips->x == doctest::Approx(160));
   CHECK(hips->y == doctest::Approx(110));
+}
+
+TEST_CASE("a sketched wheel: one stroke round an oval is a loop; its plane turns it in place") {
+  // An ellipse with semi-axes 30 (x) and 15 (y) about (100, 150), drawn as three of its four
+  // quarter cubics (kappa 0.5523) and most of the fourth: an open stroke that winds 0.9 turn.
+  // An S-shaped stroke (its turns cancel) and a hairpin (half a turn) are no loops.
+  const double k = 0.5523;
+  char d[512];
+  std::snprintf(d, sizeof d,
+                "M 130 150 C 130 %g %g 135 100 135 C %g 135 70 %g 70 150 C 70 %g %g 165 100 165 C %g 165 126 160 127 157",
+                150 - 15 * k, 100 + 30 * k, 100 - 30 * k, 150 - 15 * k, 150 + 15 * k, 100 - 30 * k, 100 + 30 * k);
+  auto stroke = [](const std::string& path_d) {
+    Scene s = read_svg_string("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200\" height=\"200\"><path d=\"" + path_d +
+                                  "\" fill=\"none\" stroke=\"#000\"/></svg>",
+                              "stroke.svg");
+    return s.paths.at(0);
+  };
+  const Path wheel = stroke(d);
+  CHECK(is_loop_stroke(wheel));
+  CHECK_FALSE(is_loop_stroke(stroke("M 20 20 C 60 0 60 60 100 40 C 140 20 140 80 180 60")));  // S
+  CHECK_FALSE(is_loop_stroke(stroke("M 84 110 C 56 40 70 40 80 112")));                          // hairpin
+  // The plane: M R M^-1 keeps every point of the ellipse on the ellipse (x/30)^2 + (y/15)^2 = 1
+  // about its centre, where R alone (a turn in the drawing's plane) takes (30, 0) to (0, 30),
+  // twice as far out as the ellipse reaches there.
+  const Affine M = loop_plane(wheel);
+  CHECK(M.det() == doctest::Approx(1).epsilon(1e-9));
+  const Affine turn = M * Affine::rotate_deg(90) * M.inverse();
+  for (double a = 0; a < 6.28; a += 0.5) {
+    const Vec2 q = turn.apply({30 * std::cos(a), 15 * std::sin(a)});
+    const double on = (q.x / 30) * (q.x / 30) + (q.y / 15) * (q.y / 15);
+    CHECK(on == doctest::Approx(1).epsilon(0.03));  // the stroke's gap makes its moments an ellipse's within 3 %
+  }
 }
 
 TEST_CASE("a line drawing: the longest central stroke is the root, strokes alongside it the body, limbs hang where their ends touch") {

@@ -7,6 +7,7 @@
 
 #include "fit/field_warm_start.h"
 #include "fit/warm_start.h"
+#include "video/rigid_bodies.h"
 #include "opencl/tuning.h"
 #include "svgmotion/error.h"
 
@@ -370,23 +371,45 @@ void Fitter::warm_start(int k) {
   const size_t pb = static_cast<size_t>(G_) * kMotionParams;
   std::vector<float> copied(pb);
   q.enqueueReadBuffer(params_, CL_TRUE, k * pb * sizeof(float), pb * sizeof(float), copied.data());
-  auto propose = [&](const PointTracks& tr, std::vector<float>& out) {
+  // `exact`: points whose target is known exactly (a rigid body's map). A group all of whose
+  // points are exact is put where its body is: the affine map from its rest points to their
+  // targets (a wheel turning in its own slanted plane is affine: a similarity tumbled the oval)
+  // as its homography, its offsets cleared (`reset`). Composed onto the previous keyframe as
+  // fitted instead, the shape its offsets had drifted into was carried on, and no affine map
+  // took it to the target (14 px off by keyframe 3 on a sketched wheel). Tracked points, noisy,
+  // give a similarity composed onto the copied homography.
+  std::vector<char> reset(static_cast<size_t>(G_), 0);
+  auto propose = [&](const PointTracks& tr, const std::vector<char>* exact, std::vector<float>& out) {
     out = copied;
     bool any = false;
     for (int g = 0; g < G_; ++g) {
       if (held_group_[g]) continue;
-      std::vector<Vec2> f, t;
+      std::vector<Vec2> f, t, r;
       std::vector<double> w;
+      bool all_exact = exact != nullptr;
       for (size_t j = 0; j < index.size(); ++j)
         if (fplan_.cp_group[index[j]] == g) {
+          const size_t i = static_cast<size_t>(index[j]);
           f.push_back(from[j]);
           t.push_back(tr.to[j]);
           w.push_back(tr.weight[j]);
+          r.push_back({plan_.rest_cp[2 * i], plan_.rest_cp[2 * i + 1]});
+          all_exact = all_exact && (*exact)[j];
         }
-      const auto sim = fit_similarity(f, t, w);
-      if (!sim) continue;
       MotionParams th;
       for (int j = 0; j < kMotionParams; ++j) th[j] = copied[g * kMotionParams + j];
+      if (all_exact) {
+        MotionParams from_rest = identity_params(th[9], th[10]);
+        const auto map = least_squares_affine(r.data(), t.data(), r.size());
+        if (map && compose_affine(from_rest, *map, {0.5 * W, 0.5 * H}, 0.5 * W)) {
+          for (int j = 0; j < kMotionParams; ++j) out[g * kMotionParams + j] = static_cast<float>(from_rest[j]);
+          reset[static_cast<size_t>(g)] = 1;
+          any = true;
+          continue;
+        }
+      }
+      const auto sim = fit_similarity(f, t, w);
+      if (!sim) continue;
       compose_similarity(th, *sim, {0.5 * W, 0.5 * H}, 0.5 * W);
       for (int j = 0; j < kMotionParams; ++j) out[g * kMotionParams + j] = static_cast<float>(th[j]);
       any = true;
@@ -394,9 +417,10 @@ void Fitter::warm_start(int k) {
     return any;
   };
   std::vector<float> tracked, known_params;
-  const bool any = propose(tracks, tracked);
-  std::optional<PointTracks> known = known_tracks(k, index, tracks);
-  const bool any_known = known && propose(*known, known_params);
+  const bool any = propose(tracks, nullptr, tracked);
+  std::vector<char> exact;
+  std::optional<PointTracks> known = known_tracks(k, index, tracks, exact);
+  const bool any_known = known && propose(*known, &exact, known_params);
   if (!any && !any_known && !fplan_.n_nodes) return;
   float loss = frame_loss(k);
   const PointTracks* used = &tracks;
@@ -419,10 +443,30 @@ void Fitter::warm_start(int k) {
   }
   if (any_known) {
     ++known_starts_tried;
+    // The offsets (and field) of the groups put at their bodies' maps, cleared while the known
+    // start is tried; put back if it is not kept.
+    const size_t no = static_cast<size_t>(plan_.n_cp) * 2, nf = static_cast<size_t>(fplan_.n_nodes) * 2;
+    std::vector<float> off(no), field(nf), off_kept, field_kept;
+    q.enqueueReadBuffer(offsets_, CL_TRUE, k * no * sizeof(float), no * sizeof(float), off.data());
+    if (nf) q.enqueueReadBuffer(field_, CL_TRUE, k * nf * sizeof(float), nf * sizeof(float), field.data());
+    off_kept = off;
+    field_kept = field;
+    for (int i = 0; i < plan_.n_cp; ++i)
+      if (fplan_.cp_group[i] >= 0 && reset[static_cast<size_t>(fplan_.cp_group[i])]) off[2 * i] = off[2 * i + 1] = 0;
+    for (int b = 0; b < fplan_.n_nodes; ++b) {
+      const int first = fplan_.node_cp_first[b];
+      if (first < fplan_.node_cp_first[b + 1] && reset[static_cast<size_t>(fplan_.cp_group[fplan_.node_cp[first]])])
+        field[2 * b] = field[2 * b + 1] = 0;
+    }
+    q.enqueueWriteBuffer(offsets_, CL_TRUE, k * no * sizeof(float), no * sizeof(float), off.data());
+    if (nf) q.enqueueWriteBuffer(field_, CL_TRUE, k * nf * sizeof(float), nf * sizeof(float), field.data());
     if (try_params(known_params)) {
       ++known_starts_kept;
       best = known_params;
       used = &*known;
+    } else {
+      q.enqueueWriteBuffer(offsets_, CL_TRUE, k * no * sizeof(float), no * sizeof(float), off_kept.data());
+      if (nf) q.enqueueWriteBuffer(field_, CL_TRUE, k * nf * sizeof(float), nf * sizeof(float), field_kept.data());
     }
   }
   q.enqueueWriteBuffer(params_, CL_TRUE, k * pb * sizeof(float), pb * sizeof(float), best.data());
@@ -431,7 +475,9 @@ void Fitter::warm_start(int k) {
   if (fplan_.n_nodes) warm_start_field(k, index, *used, loss);
 }
 
-std::optional<PointTracks> Fitter::known_tracks(int k, const std::vector<int>& index, const PointTracks& tracks) const {
+std::optional<PointTracks> Fitter::known_tracks(int k, const std::vector<int>& index, const PointTracks& tracks,
+                                                std::vector<char>& exact) const {
+  exact.assign(index.size(), 0);
   if (opt_.known_body.empty() || k >= static_cast<int>(target_.source_index.size())) return std::nullopt;
   const int f = target_.source_index[static_cast<size_t>(k)];
   PointTracks out = tracks;
@@ -446,6 +492,7 @@ std::optional<PointTracks> Fitter::known_tracks(int k, const std::vector<int>& i
     out.to[j] = size_.view.apply(opt_.known_maps[static_cast<size_t>(b)][static_cast<size_t>(f)].apply(inv.apply(rest)));
     out.weight[j] = 1;
     out.isotropy[j] = 1;
+    exact[j] = 1;
     any = true;
   }
   if (!any) return std::nullopt;

@@ -258,8 +258,10 @@ class Fitter {
   // `before`, keyframe k's image loss as it stands.
   void warm_start_field(int k, const std::vector<int>& index, const PointTracks& tracks, float before);
   // `tracks` with the points of known rigid bodies (FitOptions::known_body) put where keyframe
-  // k's map takes their rest positions; nothing when no point has a known body.
-  std::optional<PointTracks> known_tracks(int k, const std::vector<int>& index, const PointTracks& tracks) const;
+  // k's map takes their rest positions; nothing when no point has a known body. `exact` marks
+  // those points (per entry of `index`).
+  std::optional<PointTracks> known_tracks(int k, const std::vector<int>& index, const PointTracks& tracks,
+                                          std::vector<char>& exact) const;
   std::vector<int> cp_path_;  // path of every control point (-1: padding)
   float frame_loss(int k);  // image loss of keyframe k alone with the current parameters
   // Field and motion forward: control points of keyframes 0 .. frames-1 into the raster's buffer.

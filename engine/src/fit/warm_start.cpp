@@ -106,4 +106,33 @@ void compose_similarity(MotionParams& th, const Similarity& s, Vec2 origin, doub
   th[4] *= s.scale;
 }
 
+bool compose_affine(MotionParams& th, const Affine& m, Vec2 origin, double scale) {
+  if (th[7] != 0 || th[8] != 0) return false;
+  // The group's linear part L = R(rot) [[1, shx], [shy, 1]] diag(sx, sy) and its new one A L.
+  const double cr = std::cos(th[2]), sr = std::sin(th[2]);
+  const double b00 = th[3], b01 = th[5] * th[4], b10 = th[6] * th[3], b11 = th[4];  // Sh S
+  const double l00 = cr * b00 - sr * b10, l01 = cr * b01 - sr * b11, l10 = sr * b00 + cr * b10, l11 = sr * b01 + cr * b11;
+  const double n00 = m.a * l00 + m.c * l10, n01 = m.a * l01 + m.c * l11, n10 = m.b * l00 + m.d * l10, n11 = m.b * l01 + m.d * l11;
+  if (!(n00 * n11 - n01 * n10 > 0)) return false;
+  // QR: the first column fixes the turn and sx; R^T (A L) is then [[sx, shx sy], [0, sy]].
+  const double sx = std::hypot(n00, n10), rot = std::atan2(n10, n00);
+  const double c2 = std::cos(rot), s2 = std::sin(rot);
+  const double u = c2 * n01 + s2 * n11, sy = -s2 * n01 + c2 * n11;
+  // Translation: f = A L (n - c) + A (c + t) + t_a, in normalised units t_a = (A o + b - o) / s.
+  const Vec2 cc{th[9], th[10]}, t{th[0], th[1]};
+  const Vec2 ao = m.apply(origin);
+  const Vec2 ta = (1.0 / scale) * (ao - origin);
+  const Vec2 ct{cc.x + t.x, cc.y + t.y};
+  const Vec2 act{m.a * ct.x + m.c * ct.y, m.b * ct.x + m.d * ct.y};
+  th[0] = act.x + ta.x - cc.x;
+  th[1] = act.y + ta.y - cc.y;
+  th[2] = rot;
+  th[3] = sx;
+  th[4] = sy;
+  th[5] = u / sy;
+  th[6] = 0;
+  return true;
+}
+
 }  // namespace svgm
+

@@ -45,4 +45,11 @@ std::optional<Similarity> fit_similarity(const std::vector<Vec2>& from, const st
 // of kernels/motion.cl). Exact when th has no projective part, otherwise an approximation.
 void compose_similarity(MotionParams& th, const Similarity& s, Vec2 origin, double scale);
 
+// Applies a pixel-space affine map after the homography `th`, as compose_similarity. The
+// result is refactored into kernels/motion.cl's R · Sh · S with shy = 0 (a QR factorisation of
+// the linear part). A known motion of a wheel seen at a slant (a turn in its own tilted plane)
+// is affine, not a similarity. False, th untouched, when th has a projective part or the map
+// would mirror the group.
+bool compose_affine(MotionParams& th, const Affine& m, Vec2 origin, double scale);
+
 }  // namespace svgm

@@ -723,14 +723,14 @@ namespace {
 // The rigid motion of one action at time t on a part (or the figure) with box `box` and
 // attachment `pivot`; `H`, `W` the figure's size (units of the translations).
 Affine rigid(const PlannedAction& a, double amp, double sign, double phase, double t, const RigBox& box, Vec2 pivot,
-             double W, double H) {
+             double W, double H, const Affine& plane = {}) {
   const double u = a.cycles * t + phase;
   const double s = std::sin(kTau * u), k = 0.5 - 0.5 * std::cos(kTau * u);
   const Vec2 base{box.centre().x, box.y1}, centre = box.centre();
   auto about = [](Vec2 c, const Affine& m) { return Affine::translate(c.x, c.y) * m * Affine::translate(-c.x, -c.y); };
   switch (a.primitive) {
     case Primitive::Swing: return about(pivot, Affine::rotate_deg(sign * amp * s));
-    case Primitive::Spin: return about(centre, Affine::rotate_deg(360.0 * amp * a.direction * t));
+    case Primitive::Spin: return about(centre, plane * Affine::rotate_deg(360.0 * amp * a.direction * t) * plane.inverse());
     case Primitive::Rock:
       return about(a.parts.empty() ? base : pivot, Affine::rotate_deg(a.vertical == 2 ? a.direction * amp * k : sign * amp * s));
     case Primitive::Bob: {
@@ -1052,7 +1052,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         const RigPart& P = rig.parts[a.parts[i]];
         Affine& into = a.primitive == Primitive::Spin ? spin[a.parts[i]]
                        : a.parts[i] == rig.root && a.primitive == Primitive::Swing ? root_turn : local[a.parts[i]];
-        into = rigid(a, amp, a.sign[i], a.phase[i], t, P.box, P.pivot, W, H) * into;
+        into = rigid(a, amp, a.sign[i], a.phase[i], t, P.box, P.pivot, W, H, P.wheel_plane) * into;
         if (a.primitive == Primitive::Spin) spins[a.parts[i]] = 1;
       }
     }
@@ -1121,7 +1121,9 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
                 // The part's own outlines and what hangs from it within its width and not
                 // below it (a hand at the end of a sleeve, also one raised above the sleeve's
                 // box); what hangs below (legs under a waving torso) keeps its shape and
-                // follows the rig.
+                // follows the rig. A wheel (and what turns with it) keeps to its own frame: a
+                // pedalling leg's bend bent a sketched bicycle's wheels with it.
+                if (g >= 0 && g != a.parts[0] && (spins[g] || loads.turns_with[g] >= 0)) continue;
                 const RigBox& hb = rig.parts[a.parts[0]].box;
                 const Vec2 gc = g >= 0 ? rig.parts[g].box.centre() : Vec2{};
                 if (g == a.parts[0] || (g >= 0 && under(g, a.parts[0]) && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y <= hb.y1))

@@ -754,6 +754,17 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
       P.role = Role::Detail;
       P.why = "a round path of its group (a wheel)";
     }
+    // A line drawing's stroke that winds once round an oval (a sketched bicycle's wheel) is
+    // round too, and no limb: the rig took a wheel below the body for a leg, and pedalling
+    // swung it about its top like a shin. Its box is its curve's: a wheel spins about the middle
+    // of the oval drawn, not of the cubic's handles (18 units off in livesketch's biking).
+    if (line && g != rig.root && unit_paths[g].size() == 1 && is_loop_stroke(scene.paths[unit_paths[g][0]])) {
+      P.box = cbox[g];
+      P.wheel_plane = loop_plane(scene.paths[unit_paths[g][0]]);
+      P.round = true;
+      P.role = Role::Detail;
+      P.why = "a stroke drawn round an oval (a wheel)";
+    }
   }
 
   // Default names from roles.

@@ -79,6 +79,8 @@ struct RigPart {
                                     // of its box (a ghost's hem, a bat's feet): its core's width
   double area = 0;            // fill area of its outlines (shoelace over control polygons)
   bool round = false;         // a wheel-like part
+  Affine wheel_plane;         // a round part's turn R is wheel_plane R wheel_plane^-1 (a wheel
+                              // seen at a slant: stroke_rig.h's loop_plane); identity if upright
   bool carried = false;       // turns with the wheel it hangs from (its spokes and hub drawn in
                               // one group with its stand: part_rig.cpp's split_wheel_loads)
   std::vector<ArmLobe> arm_lobes;  // arms drawn in its largest outline (outline_lobes.h)

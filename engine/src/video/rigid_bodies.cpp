@@ -7,11 +7,7 @@
 
 namespace svgm {
 
-namespace {
-
-// The least-squares affine map taking rest[i] to moved[i], or nothing when the rest points do
-// not span the plane (their spread across the thinnest direction is under half a canvas unit).
-std::optional<Affine> fit_affine(const Vec2* rest, const Vec2* moved, size_t n) {
+std::optional<Affine> least_squares_affine(const Vec2* rest, const Vec2* moved, size_t n) {
   if (n < 3) return std::nullopt;
   Vec2 c{0, 0};
   for (size_t i = 0; i < n; ++i) c = c + rest[i];
@@ -31,8 +27,6 @@ std::optional<Affine> fit_affine(const Vec2* rest, const Vec2* moved, size_t n) 
   const Eigen::Vector3d px = ldlt.solve(bx), py = ldlt.solve(by);
   return Affine{px(0), py(0), px(1), py(1), px(2) - px(0) * c.x - px(1) * c.y, py(2) - py(0) * c.x - py(1) * c.y};
 }
-
-}  // namespace
 
 RigidBodies rigid_bodies(const Scene& scene, const std::vector<Vec2>& pts, int frames, double tol) {
   const size_t P = scene.paths.size();
@@ -68,7 +62,7 @@ RigidBodies rigid_bodies(const Scene& scene, const std::vector<Vec2>& pts, int f
   for (size_t p = 0; p < P; ++p) {
     std::vector<Affine> maps;
     for (int f = 0; f < frames && count[p] > 0; ++f) {
-      const auto m = fit_affine(&pts[first[p]], &pts[static_cast<size_t>(f) * per + first[p]], count[p]);
+      const auto m = least_squares_affine(&pts[first[p]], &pts[static_cast<size_t>(f) * per + first[p]], count[p]);
       if (!m) break;
       maps.push_back(*m);
     }

@@ -11,6 +11,7 @@
 // Knowing the bodies, the fitter moves each as one group (fit/motion_groups.h), as the video did.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "svgmotion/affine.h"
@@ -31,5 +32,10 @@ struct RigidBodies {
   std::vector<std::vector<Affine>> maps;   // per body, per frame: rest -> that frame
 };
 RigidBodies rigid_bodies(const Scene& scene, const std::vector<Vec2>& pts, int frames, double tol);
+
+// The least-squares affine map taking from[i] to to[i] (i < n), or nothing when the `from`
+// points do not span the plane (their spread across the thinnest direction is under half a
+// unit).
+std::optional<Affine> least_squares_affine(const Vec2* from, const Vec2* to, size_t n);
 
 }  // namespace svgm

@@ -20,6 +20,13 @@ constexpr double kStrokeFold = 0.5;
 // A stroke lies alongside the root when at least this share of its extent along the root's
 // long axis is within the root's.
 constexpr double kAlongInside = 0.8;
+// is_loop_stroke: a wheel's stroke turns one way through at least this share of a full turn
+// (a sketched wheel drawn as one cubic loop leaves a gap: 0.69 and 0.73 in livesketch's biking),
+// its curve encloses at least this share of the ellipse its box holds, and its box is at most
+// this many times longer than wide (a wheel seen at a slant is an oval, not a sliver).
+constexpr double kLoopTurn = 0.6;
+constexpr double kLoopFill = 0.6;
+constexpr double kLoopAspect = 2.5;
 
 double dist(Vec2 u, Vec2 v) { return std::hypot(u.x - v.x, u.y - v.y); }
 
@@ -71,6 +78,53 @@ Vec2 stroke_body_end(const Path& p, const RigBox& body, Vec2 joint) {
   const double g0 = box_distance(e[0], body), g1 = box_distance(e[1], body);
   if (std::fabs(g0 - g1) > 1e-9) return g0 < g1 ? e[0] : e[1];
   return dist(e[0], joint) <= dist(e[1], joint) ? e[0] : e[1];
+}
+
+bool is_loop_stroke(const Path& p) {
+  if (!is_open_stroke(p)) return false;
+  const std::vector<Vec2> on = stroke_curve(p);
+  double turn = 0, area = 0;
+  for (size_t i = 0; i + 1 < on.size(); ++i) area += on[i].x * on[i + 1].y - on[i + 1].x * on[i].y;
+  area += on.back().x * on.front().y - on.front().x * on.back().y;
+  for (size_t i = 1; i + 1 < on.size(); ++i) {
+    const Vec2 u = on[i] - on[i - 1], v = on[i + 1] - on[i];
+    if (std::hypot(u.x, u.y) < 1e-9 || std::hypot(v.x, v.y) < 1e-9) continue;  // a repeated point
+    turn += std::atan2(u.x * v.y - u.y * v.x, u.x * v.x + u.y * v.y);
+  }
+  const RigBox b = stroke_box(p);
+  const double lo = std::min(b.w(), b.h()), hi = std::max(b.w(), b.h());
+  const double ellipse = 0.25 * 3.14159265358979323846 * b.w() * b.h();
+  return lo > 0 && hi <= kLoopAspect * lo && std::fabs(turn) >= kLoopTurn * 2 * 3.14159265358979323846 &&
+         0.5 * std::fabs(area) >= kLoopFill * ellipse;
+}
+
+Affine loop_plane(const Path& p) {
+  // Second moments of the region the closed curve bounds (Green's theorem over its polygon),
+  // about its centroid: for an ellipse with semi-axes a, b they are a^2/4, b^2/4 along its axes.
+  const std::vector<Vec2> on = stroke_curve(p);
+  double A = 0, cx = 0, cy = 0, xx = 0, yy = 0, xy = 0;
+  for (size_t i = 0; i < on.size(); ++i) {
+    const Vec2 u = on[i], v = on[(i + 1) % on.size()];
+    const double w = u.x * v.y - v.x * u.y;
+    A += w;
+    cx += (u.x + v.x) * w;
+    cy += (u.y + v.y) * w;
+    xx += (u.x * u.x + u.x * v.x + v.x * v.x) * w;
+    yy += (u.y * u.y + u.y * v.y + v.y * v.y) * w;
+    xy += (u.x * v.y + 2 * u.x * u.y + 2 * v.x * v.y + v.x * u.y) * w;
+  }
+  if (std::fabs(A) < 1e-9) return {};
+  A *= 0.5;
+  cx /= 6 * A;
+  cy /= 6 * A;
+  const double sxx = xx / (12 * A) - cx * cx, syy = yy / (12 * A) - cy * cy, sxy = xy / (24 * A) - cx * cy;
+  // Symmetric square root of [[sxx sxy] [sxy syy]]: sqrt(S) = (S + sqrt(det) I) / sqrt(tr + 2 sqrt(det)).
+  const double det = sxx * syy - sxy * sxy;
+  if (!(det > 0) || !(sxx > 0)) return {};
+  const double r = std::sqrt(det), k = 1 / std::sqrt(sxx + syy + 2 * r);
+  const Affine m{(sxx + r) * k, sxy * k, sxy * k, (syy + r) * k, 0, 0};
+  const double s = 1 / std::sqrt(m.det());
+  return {m.a * s, m.b * s, m.c * s, m.d * s, 0, 0};
 }
 
 double distance_to_stroke(Vec2 q, const Path& p) {

@@ -42,6 +42,20 @@ std::array<Vec2, 2> stroke_ends(const Path& p);
 // nearer `joint` when both are as near.
 Vec2 stroke_body_end(const Path& p, const RigBox& body, Vec2 joint);
 
+// A stroke drawn as a wheel: an open stroke that winds round once (its curve turns one way
+// through most of a full turn, kLoopTurn) about an oval that its curve fills as an ellipse
+// fills its box (at least kLoopFill of it), no more than kLoopAspect times longer than wide.
+// A sketched bicycle's wheels are such ovals; an S-shaped leg turns both ways (its turns
+// cancel) and a hairpin arm turns half a turn.
+bool is_loop_stroke(const Path& p);
+
+// The plane a loop stroke's wheel turns in, seen at a slant: the linear map taking a circle
+// about the origin to the oval its curve encloses, up to scale (the symmetric square root of
+// the enclosed region's second-moment matrix, normalised to determinant 1). A turn R in the
+// wheel's own plane is M R M^-1 in the drawing: the oval keeps its outline while the stroke
+// runs round it, as a wheel drawn in perspective spins; R alone tumbles the oval about.
+Affine loop_plane(const Path& p);
+
 // The distance from q to the curve of p.
 double distance_to_stroke(Vec2 q, const Path& p);
 
