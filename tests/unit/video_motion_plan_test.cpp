@@ -11,6 +11,7 @@
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
 #include "video/motion_plan.h"
+#include "video/rigid_bodies.h"
 
 using namespace svgm;
 
@@ -482,6 +483,51 @@ TEST_CASE("pedalling spins the two wheels, not the round collar up on the rider;
   const auto t = fx.travel(animate_plan(fx.scene, fx.rig, plan, F), F);
   CHECK(t[0] == 0.0);  // the hill
   CHECK(t[1] > 60.0);  // a wheel's points go round
+}
+
+TEST_CASE("a sketched bicycle's wheels, each one stroke round an oval, spin in their slanted planes; the leg's bend leaves them whole") {
+  // tests/data/motion/sketch_bike.svg: a line drawing whose wheels are open strokes winding
+  // most of the way round ovals 36 wide and 52 tall. Pedalling spins them (the rig took a wheel
+  // for a leg before) about their own centres, in the plane the oval is drawn in: every point on
+  // the oval stays on it (a turn in the drawing's plane would tumble the oval: a point 26 above
+  // the centre goes to 26 beside it, 8 outside the oval's half width). The rider's body stroke
+  // bends at its lower part for the legs; the wheels keep out of that bend, each moved by one
+  // affine map per frame (the body stroke's handles reach over both wheels, so without that
+  // the bend took them: 0.8 off their ovals, and no single map moved them).
+  const Fixture fx("sketch_bike.svg");
+  MotionPlan plan = fx.plan("he is pedalling");
+  std::vector<int> wheels;
+  for (const auto& a : plan.actions)
+    if (a.primitive == Primitive::Spin) wheels = a.parts;
+  REQUIRE(wheels.size() == 2);
+  for (int w : wheels) {
+    CHECK(fx.rig.parts[w].round);
+    CHECK(fx.rig.parts[w].role != Role::LowerLimb);
+  }
+  const int F = 13;
+  fit_plan(fx.scene, fx.rig, plan, F, 9);
+  CHECK(plan.warnings.empty());
+  const auto pts = animate_plan(fx.scene, fx.rig, plan, F);
+  const size_t per = pts.size() / F;
+  // The handlebar, a straight stroke whose box has no area, does not ride round a wheel.
+  CHECK(fx.travel(pts, F)[5] < 2.0);
+  for (int path : {3, 4}) {
+    const double cx = path == 3 ? 58 : 146, cy = 128;
+    const size_t first = fx.first_point(path);
+    double off = 0, moved = 0;
+    for (int f = 0; f < F; ++f)
+      for (size_t i = first; i < first + 13; i += 3) {  // the on-curve points
+        const Vec2 q = pts[f * per + i];
+        off = std::max(off, std::fabs(std::hypot((q.x - cx) / 18, (q.y - cy) / 26) - 1));
+        moved = std::max(moved, std::hypot(q.x - pts[i].x, q.y - pts[i].y));
+      }
+    CHECK(off < 0.01);    // on the oval (the last point, short of closing, sits on it too)
+    CHECK(moved > 30.0);  // round it
+  }
+  const RigidBodies bodies = rigid_bodies(fx.scene, pts, F, 1e-6);
+  CHECK(bodies.body[3] >= 0);
+  CHECK(bodies.body[4] >= 0);
+  CHECK(bodies.body[3] != bodies.body[4]);
 }
 
 TEST_CASE("arms with no part of their own bend the widest upper part, with the hand inside it") {

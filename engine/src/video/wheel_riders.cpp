@@ -39,8 +39,10 @@ bool rides_wheel(const RigBox& part, const RigBox& wheel) {
   if (part.empty() || wheel.empty()) return false;
   const Vec2 d = part.centre() - wheel.centre();
   const double r = std::hypot(d.x, d.y), R = 0.5 * wheel.w();
+  // A part with no area (a straight stroke's box) lies "90 % inside" anything: only its
+  // distance counts (a sketched handlebar rode round a wheel it crossed nowhere).
   return part.area() <= kRideMaxArea * wheel.area() && r >= kRimShare * R &&
-         (r <= kRideReach * R || overlap_area(part, wheel) >= 0.9 * part.area());
+         (r <= kRideReach * R || (part.area() > 0 && overlap_area(part, wheel) >= 0.9 * part.area()));
 }
 
 std::vector<char> in_rider_sets(const std::vector<RigBox>& boxes) {
