@@ -67,15 +67,33 @@ __kernel void blur_pass(__global const float4* src, __global float4* dst, float 
   dst[(size_t)k * width * height + pos] = scale * s;
 }
 
+#ifdef CHROMA_W
+/* The chroma weight w (CHROMA_W, fit/blur_match.h): the squared residual is measured as
+ * Eᵀ M E with M = w·I + (1 − w)·y yᵀ/|y|², y = (.299, .587, .114) the luma row of A. A residual
+ * of luma alone (along y) counts fully; one of chroma alone (yᵀE = 0: a codec's chroma error,
+ * A⁻¹ (0, Cb, Cr)) counts w times. M is symmetric and constant, so it commutes with the blur:
+ * with it, Σ E² becomes Σ (Qᵀ M Q + 2 Qᵀ M E' + E'ᵀ M E'), the host's Σ Q² and R take M
+ * (ClRaster::prepare_loss_constants) and the backward pass blurs M E' where it blurred E'. */
+inline float3 loss_metric(float3 e) {
+  const float3 y = (float3)(0.299f, 0.587f, 0.114f);
+  return CHROMA_W * e + ((1.0f - CHROMA_W) * dot(y, e) / dot(y, y)) * y;
+}
+#endif
+
 #ifdef CHROMA_R
 /* With the per-group blur (prelude.cl) the y-blur `v` is B·X in YCbCr: E' = A⁻¹ v in RGB makes
- * the row's term with the RGB q; what is kept for the backward pass is A⁻ᵀ E', so that its
- * blur (the same per-group taps, the operator's adjoint Aᵀ·diag(G)·A⁻ᵀ) works in the same
- * coordinates. */
+ * the row's term with the RGB q; what is kept for the backward pass is A⁻ᵀ E' (A⁻ᵀ M E' with a
+ * chroma weight), so that its blur (the same per-group taps, the operator's adjoint
+ * Aᵀ·diag(G)·A⁻ᵀ) works in the same coordinates. */
 inline float chroma_residual(float3 q, float3 v, __global float4* e) {
   const float3 E = rgb_from_ycc(v);
-  *e = (float4)(ycc_adjoint_from_rgb(E), 0.0f);
-  return dot(2.0f * q + E, E);
+#ifdef CHROMA_W
+  const float3 M = loss_metric(E);
+#else
+  const float3 M = E;
+#endif
+  *e = (float4)(ycc_adjoint_from_rgb(M), 0.0f);
+  return dot(2.0f * q + E, M);
 }
 #endif
 
@@ -119,8 +137,12 @@ __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* e
 #else
       for (int j = 0; j <= 2 * LOSS_R; ++j) v += g_tap(j - LOSS_R) * r[j * width + x];
 #endif
-#ifdef CHROMA_R
+#if defined(CHROMA_R)
       s += chroma_residual(q[x].xyz, v.xyz, e + x);
+#elif defined(CHROMA_W)
+      const float3 m = loss_metric(v.xyz);
+      e[x] = (float4)(m, 0.0f);
+      s += dot(2.0f * q[x].xyz + v.xyz, m);
 #else
       e[x] = v;
       s += dot(2.0f * q[x].xyz + v.xyz, v.xyz);
@@ -139,8 +161,12 @@ __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* e
       if (yy >= 0 && yy < height && x >= ex[yy].x && x <= ex[yy].y) v += g_tap(j) * f[yy * width + x];
 #endif
     }
-#ifdef CHROMA_R
+#if defined(CHROMA_R)
     s += chroma_residual(q[x].xyz, v.xyz, e + x);
+#elif defined(CHROMA_W)
+    const float3 m = loss_metric(v.xyz);
+    e[x] = (float4)(m, 0.0f);
+    s += dot(2.0f * q[x].xyz + v.xyz, m);
 #else
     e[x] = v;
     s += dot(2.0f * q[x].xyz + v.xyz, v.xyz);

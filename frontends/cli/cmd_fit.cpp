@@ -43,7 +43,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
   const Args a = parse_args("fit", argv,
                             {"--target", "-o", "--output", "--iterations", "--keyframes", "--size",
                              "--palette", "--device", "--mask-threshold", "--loop", "--deform", "--refine-size",
-                             "--precision", "--inbetweens", "--max-segment"},
+                             "--precision", "--inbetweens", "--max-segment", "--chroma-weight"},
                             {"--resume", "--no-track", "--no-gate", "--no-colour-correction", "--no-blur-matching", "--stabilise",
                              "--group-transforms", "--all-iterations"});
   if (a.positional.size() != 1)
@@ -70,6 +70,11 @@ int cmd_fit(const std::vector<std::string>& argv) {
   job.gate = !a.has("--no-gate");
   job.colour_correction = !a.has("--no-colour-correction");
   job.blur_matching = !a.has("--no-blur-matching");
+  if (const auto w = a.get("--chroma-weight")) {
+    job.chroma_weight = a.get_double("--chroma-weight", 1);
+    if (!(job.chroma_weight > 0 && job.chroma_weight <= 1))
+      throw Error("fit: --chroma-weight must be a number in (0, 1], not '" + *w + "'");
+  }
   job.stabilise = a.has("--stabilise");
   job.decimals = a.get_int("--precision", kDefaultDecimals, 0, kMaxDecimals);
   job.inbetweens = a.get_int("--inbetweens", job.inbetweens, 0, kMaxInbetweens);

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <random>
 #include <string>
+#include <tuple>
 
 #include "fit/fit_plan.h"
 #include "fit/fitter.h"
@@ -41,7 +42,7 @@ Agreement compare(const std::vector<double>& a, const std::vector<double>& b) {
 // The reference loss of K frames with control points cp (K * n_cp pairs).
 double ref_loss(const RasterPlan& plan, const std::vector<double>& cp, const std::vector<float>& targets,
                 int K, const std::array<double, 4>& bg, double render_sigma = kLossSigma,
-                double chroma_sigma = 0) {
+                double chroma_sigma = 0, double chroma_weight = 1) {
   const size_t per_cp = static_cast<size_t>(plan.n_cp) * 2;
   const size_t per_px = static_cast<size_t>(plan.width) * plan.height * 4;
   double sum = 0;
@@ -49,7 +50,7 @@ double ref_loss(const RasterPlan& plan, const std::vector<double>& cp, const std
     const std::vector<double> c(cp.begin() + k * per_cp, cp.begin() + (k + 1) * per_cp);
     const auto img = ref::render(plan, c);
     const std::vector<float> t(targets.begin() + k * per_px, targets.begin() + (k + 1) * per_px);
-    sum += ref::blurred_sq_sum(img, t, plan.width, plan.height, bg, render_sigma, chroma_sigma);
+    sum += ref::blurred_sq_sum(img, t, plan.width, plan.height, bg, render_sigma, chroma_sigma, chroma_weight);
   }
   return kWeight * sum / (static_cast<double>(K) * plan.width * plan.height * 3);
 }
@@ -95,10 +96,11 @@ std::pair<std::vector<double>, std::vector<double>> gradients(const Case& c, flo
                                                               double* loss_ref = nullptr,
                                                               const std::vector<float>* kernel_cp = nullptr,
                                                               double render_sigma = kLossSigma,
-                                                              double chroma_sigma = 0) {
+                                                              double chroma_sigma = 0,
+                                                              double chroma_weight = 1) {
   const RasterPlan plan = plan_raster(c.scene, Affine{}, static_cast<int>(c.scene.width),
                                       static_cast<int>(c.scene.height));
-  ClRaster r(runtime(), plan, c.K, render_sigma, chroma_sigma);
+  ClRaster r(runtime(), plan, c.K, render_sigma, chroma_sigma, chroma_weight);
   r.set_control_points(kernel_cp ? *kernel_cp : std::vector<float>(c.cp.begin(), c.cp.end()));
   r.set_targets(c.targets);
   const std::array<float, 4> white{1, 1, 1, 1};
@@ -107,7 +109,7 @@ std::pair<std::vector<double>, std::vector<double>> gradients(const Case& c, flo
   const auto g = r.read_cp_gradient();
   std::vector<double> analytic(g.begin(), g.end());
   const std::array<double, 4> bg{1, 1, 1, 1};
-  if (loss_ref) *loss_ref = ref_loss(plan, c.cp, c.targets, c.K, bg, render_sigma, chroma_sigma);
+  if (loss_ref) *loss_ref = ref_loss(plan, c.cp, c.targets, c.K, bg, render_sigma, chroma_sigma, chroma_weight);
   std::vector<double> fd(c.cp.size(), 0.0);
   const double h = 1e-5;
   auto cp = c.cp;
@@ -115,9 +117,9 @@ std::pair<std::vector<double>, std::vector<double>> gradients(const Case& c, flo
     if (i % (plan.n_cp * 2) >= static_cast<size_t>(plan.n_cp - 3) * 2) continue;  // padding
     const double keep = cp[i];
     cp[i] = keep + h;
-    const double up = ref_loss(plan, cp, c.targets, c.K, bg, render_sigma, chroma_sigma);
+    const double up = ref_loss(plan, cp, c.targets, c.K, bg, render_sigma, chroma_sigma, chroma_weight);
     cp[i] = keep - h;
-    const double down = ref_loss(plan, cp, c.targets, c.K, bg, render_sigma, chroma_sigma);
+    const double down = ref_loss(plan, cp, c.targets, c.K, bg, render_sigma, chroma_sigma, chroma_weight);
     cp[i] = keep;
     fd[i] = (up - down) / (2 * h);
   }
@@ -257,6 +259,40 @@ TEST_CASE("chroma blur matching: a softer chroma blur keeps the loss and gradien
     const auto g1 = gradients(c, &l1, nullptr, nullptr, s, s).first;
     CHECK(l0 == l1);
     CHECK(g0 == g1);
+  }
+}
+
+TEST_CASE("chroma weight: chroma residuals count w times, luma fully; the loss and gradient stay exact") {
+  // The red disc and the green triangle differ in luma and chroma. With the plain blur and with
+  // a chroma blur of its own, the kernels' weighted loss equals the reference's and the
+  // gradient its finite differences; the weight changes the loss (it is in effect).
+  const Case c = make_case(scene_of(40, 32, {filled(circle({20, 16}, 9), {0.9f, 0.2f, 0.1f, 1}),
+                                             filled(polygon({{3, 4}, {30, 6}, {14, 28}}), {0.1f, 0.6f, 0.3f, 0.7f})}),
+                           17, 2);
+  for (const auto& [sl, sc, w] : {std::tuple{1.0, 0.0, 0.3}, std::tuple{1.2, 0.0, 0.6}, std::tuple{1.0, 1.6, 0.25}}) {
+    CAPTURE(sl);
+    CAPTURE(sc);
+    CAPTURE(w);
+    float lc = 0;
+    double lr = 0, lr_plain = 0;
+    const auto [an, fd] = gradients(c, &lc, &lr, nullptr, sl, sc, w);
+    gradients(c, nullptr, &lr_plain, nullptr, sl, sc);
+    CHECK(lr > 0);
+    CHECK(lc == doctest::Approx(lr).epsilon(1e-5));
+    CHECK(lr < 0.999 * lr_plain);  // the chroma part of the residual counts less
+    const Agreement a = compare(an, fd);
+    MESSAGE("sigma " << sl << "/" << sc << ", weight " << w << ": cosine " << a.cosine << ", relative error " << a.rel_error);
+    CHECK(a.cosine > 0.99999);
+    CHECK(a.rel_error < 1e-3);
+  }
+  // The metric by hand: a pure luma residual (along y = (.299, .587, .114)) counts fully, a pure
+  // chroma one (y·e = 0) w times.
+  const double w = 0.25;
+  const std::vector<double> luma{0.299, 0.587, 0.114}, chroma{0.587, -0.299, 0};
+  const auto ml = chroma_metric(luma, w), mc = chroma_metric(chroma, w);
+  for (int i = 0; i < 3; ++i) {
+    CHECK(ml[i] == doctest::Approx(luma[i]).epsilon(1e-12));
+    CHECK(mc[i] == doctest::Approx(w * chroma[i]).epsilon(1e-12));
   }
 }
 

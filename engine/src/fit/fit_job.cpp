@@ -241,6 +241,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   const BlurMatch coarse_blur = match_blur(target, size);
   coarse_options.render_blur_sigma = coarse_blur.render_sigma;
   coarse_options.chroma_blur_sigma = coarse_blur.chroma_sigma;
+  coarse_options.chroma_weight = job.chroma_weight;
   Fitter fitter(rt, fit_scene, target, coarse_options);
   log::debug("fit: %s: %d keyframes of %d frames (%.3g fps) at %dx%d; %d paths in %d groups, %d control points; "
              "%d iterations on %s",
@@ -400,6 +401,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     fine_blur = match_blur(*fine_target, fine_size);
     fine_options.render_blur_sigma = fine_blur.render_sigma;
     fine_options.chroma_blur_sigma = fine_blur.chroma_sigma;
+    fine_options.chroma_weight = job.chroma_weight;
     fine = std::make_unique<Fitter>(rt, fit_scene, *fine_target, fine_options);
     const double scale = static_cast<double>(fine_size.width) / size.width;
     fine->adopt_coarse(fitter, scale);

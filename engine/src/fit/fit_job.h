@@ -84,6 +84,9 @@ struct FitJob {
   bool colour_correction = true;
   // Match the video's blur, measured on the rest pose, in the loss (fit/blur_match.h).
   bool blur_matching = true;
+  // How much a residual of chroma alone counts in the loss against one of luma (kernels/
+  // loss.cl's loss_metric), in (0, 1]; 1: the plain squared error.
+  double chroma_weight = 1;
   // Remove camera shake from the video before sampling it (target_video.h).
   bool stabilise = false;
   double mask_threshold = 0.97;

@@ -97,7 +97,7 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     if (!held_nodes_.empty() && held_nodes_.back().first + held_nodes_.back().second == b) ++held_nodes_.back().second;
     else held_nodes_.push_back({b, 1});
   }
-  raster_ = std::make_unique<ClRaster>(rt_, plan_, K_, opt_.render_blur_sigma, opt_.chroma_blur_sigma);
+  raster_ = std::make_unique<ClRaster>(rt_, plan_, K_, opt_.render_blur_sigma, opt_.chroma_blur_sigma, opt_.chroma_weight);
   raster_->set_targets(target.rgba);
   steps_.assign(K_, 0);
 

@@ -128,6 +128,9 @@ struct FitOptions {
   // softer than its luma (raster/loss_taps.h, render_blur); 0: render_blur_sigma, every
   // channel alike.
   double chroma_blur_sigma = 0;
+  // How much a residual of chroma alone counts against one of luma (kernels/loss.cl's
+  // loss_metric); 1: the plain squared error.
+  double chroma_weight = 1;
 
   // The paper's deformation: free per-point offsets (lr 0.1) with its smoothness weight, no
   // displacement field.

@@ -13,9 +13,17 @@ namespace {
 
 // The per-group form, as plainly: C to YCbCr by A, each channel's own direct 2-D stencil (luma
 // at render σ, chroma at chroma σ), back to RGB by A⁻¹, minus the target's blur in RGB.
+// eᵀ M e for one pixel's RGB residual e: M = w·I + (1 − w)·y yᵀ/|y|² (loss_taps.h's
+// chroma_metric, written out).
+double metric_sq(const double e[3], double w) {
+  const double* y = kYcc[0];
+  const double l = y[0] * e[0] + y[1] * e[1] + y[2] * e[2];
+  return w * (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) + (1 - w) * l * l / (y[0] * y[0] + y[1] * y[1] + y[2] * y[2]);
+}
+
 double chroma_sq_sum(const std::vector<double>& image, const std::vector<float>& target, int width,
                      int height, const std::array<double, 4>& background, double render_sigma,
-                     double chroma_sigma) {
+                     double chroma_sigma, double chroma_weight) {
   const std::vector<double> gl = loss_stencil(render_sigma), gc = loss_stencil(chroma_sigma),
                             gt = loss_stencil(kLossSigma);
   auto tap = [](const std::vector<double>& g, int j) {
@@ -47,10 +55,9 @@ double chroma_sq_sum(const std::vector<double>& image, const std::vector<float>&
             gtt[ch] += tap(gt, dx) * tap(gt, dy) * t[at + ch];
           }
         }
-      for (int ch = 0; ch < 3; ++ch) {
-        const double e = kYccInv[ch][0] * v[0] + kYccInv[ch][1] * v[1] + kYccInv[ch][2] * v[2] - gtt[ch];
-        sum += e * e;
-      }
+      double e[3];
+      for (int ch = 0; ch < 3; ++ch) e[ch] = kYccInv[ch][0] * v[0] + kYccInv[ch][1] * v[1] + kYccInv[ch][2] * v[2] - gtt[ch];
+      sum += metric_sq(e, chroma_weight);
     }
   return sum;
 }
@@ -59,8 +66,9 @@ double chroma_sq_sum(const std::vector<double>& image, const std::vector<float>&
 
 double blurred_sq_sum(const std::vector<double>& image, const std::vector<float>& target,
                       int width, int height, const std::array<double, 4>& background,
-                      double render_sigma, double chroma_sigma) {
-  if (chroma_sigma > 0 && chroma_sigma != render_sigma) return chroma_sq_sum(image, target, width, height, background, render_sigma, chroma_sigma);
+                      double render_sigma, double chroma_sigma, double chroma_weight) {
+  if (chroma_sigma > 0 && chroma_sigma != render_sigma)
+    return chroma_sq_sum(image, target, width, height, background, render_sigma, chroma_sigma, chroma_weight);
   const std::vector<double> gr = loss_stencil(render_sigma), gt = loss_stencil(kLossSigma);
   const int Rr = static_cast<int>(gr.size() / 2), Rt = static_cast<int>(gt.size() / 2), R = std::max(Rr, Rt);
   // A tap outside a stencil's radius weighs 0.
@@ -73,18 +81,18 @@ double blurred_sq_sum(const std::vector<double>& image, const std::vector<float>
     }
   double sum = 0;
   for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x)
-      for (int ch = 0; ch < 3; ++ch) {
-        double e = 0;
+    for (int x = 0; x < width; ++x) {
+      double e[3] = {0, 0, 0};
+      for (int ch = 0; ch < 3; ++ch)
         for (int dy = -R; dy <= R; ++dy)
           for (int dx = -R; dx <= R; ++dx) {
             const int xx = x + dx, yy = y + dy;
             if (xx < 0 || yy < 0 || xx >= width || yy >= height) continue;  // zero padding
             const size_t at = 3 * (static_cast<size_t>(yy) * width + xx) + ch;
-            e += tap(gr, Rr, dx) * tap(gr, Rr, dy) * c[at] - tap(gt, Rt, dx) * tap(gt, Rt, dy) * t[at];
+            e[ch] += tap(gr, Rr, dx) * tap(gr, Rr, dy) * c[at] - tap(gt, Rt, dx) * tap(gt, Rt, dy) * t[at];
           }
-        sum += e * e;
-      }
+      sum += metric_sq(e, chroma_weight);
+    }
   return sum;
 }
 

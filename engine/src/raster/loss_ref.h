@@ -12,8 +12,10 @@ namespace svgm::ref {
 // 1 (raster/loss_taps.h). The loss of K frames is weight / (K·H·W·3) times the sum of their
 // frame sums. With `chroma_sigma` > 0 and not `render_sigma`, G_r ∗ C is the per-group blur
 // of chroma blur matching, A⁻¹ · diag(G_r, G_c, G_c) · A · C in YCbCr (raster/loss_taps.h).
+// With `chroma_weight` w < 1 each pixel's E² is Eᵀ M E, M = w·I + (1 − w)·y yᵀ/|y|² (y the
+// luma row): chroma alone counts w times (kernels/loss.cl's loss_metric).
 double blurred_sq_sum(const std::vector<double>& image, const std::vector<float>& target,
                       int width, int height, const std::array<double, 4>& background,
-                      double render_sigma = 1.0, double chroma_sigma = 0);
+                      double render_sigma = 1.0, double chroma_sigma = 0, double chroma_weight = 1);
 
 }  // namespace svgm::ref

@@ -52,4 +52,16 @@ std::vector<double> render_blur(const std::vector<double>& in, int W, int H, dou
   return out;
 }
 
+std::vector<double> chroma_metric(const std::vector<double>& e, double w) {
+  const double* y = kYcc[0];
+  const double yy = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
+  std::vector<double> out(e.size());
+  for (size_t i = 0; i + 2 < e.size(); i += 3) {
+    const double l = (1 - w) * (y[0] * e[i] + y[1] * e[i + 1] + y[2] * e[i + 2]) / yy;
+    for (int c = 0; c < 3; ++c) out[i + c] = w * e[i + c] + l * y[c];
+  }
+  return out;
+}
+
 }  // namespace svgm
+

@@ -66,4 +66,9 @@ constexpr double kYccInv[3][3] = {{1, 0, 1.402},
 std::vector<double> render_blur(const std::vector<double>& in, int W, int H, double sigma, double chroma_sigma,
                                 bool adjoint = false);
 
+// M·e at every RGB triple of `e` (interleaved): M = w·I + (1 − w)·y yᵀ/|y|², y = kYcc's luma
+// row. A residual of chroma alone (yᵀe = 0) counts w times, one of luma alone fully
+// (kernels/loss.cl's loss_metric, in double).
+std::vector<double> chroma_metric(const std::vector<double>& e, double w);
+
 }  // namespace svgm

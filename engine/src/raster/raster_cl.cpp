@@ -21,8 +21,14 @@ namespace {
 // prelude.cl's render taps when they are not the paper's (whose program stays the cached one).
 // A chroma σ of its own adds the chroma taps GC0.. and CHROMA_R, and LOSS_R becomes the larger
 // radius (the luma taps beyond their own radius are prelude.cl's zeros).
-std::string loss_tap_options(double sigma, double chroma_sigma) {
-  if (sigma == kLossSigma && chroma_sigma == sigma) return "";
+std::string loss_tap_options(double sigma, double chroma_sigma, double chroma_weight) {
+  std::string weight;
+  if (chroma_weight != 1) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, " -DCHROMA_W=%.9gf", chroma_weight);
+    weight = buf;
+  }
+  if (sigma == kLossSigma && chroma_sigma == sigma) return weight;
   auto taps = [](const char* name, const std::vector<double>& g) {
     std::string o;
     for (size_t j = 0; j < g.size(); ++j) {
@@ -33,22 +39,25 @@ std::string loss_tap_options(double sigma, double chroma_sigma) {
     return o;
   };
   const std::vector<double> g = loss_taps(sigma);
-  if (chroma_sigma == sigma) return " -DLOSS_R=" + std::to_string(g.size() - 1) + taps("G", g);
+  if (chroma_sigma == sigma) return " -DLOSS_R=" + std::to_string(g.size() - 1) + taps("G", g) + weight;
   const std::vector<double> gc = loss_taps(chroma_sigma);
   return " -DLOSS_R=" + std::to_string(std::max(g.size(), gc.size()) - 1) + taps("G", g) +
-         " -DCHROMA_R=" + std::to_string(gc.size() - 1) + taps("GC", gc);
+         " -DCHROMA_R=" + std::to_string(gc.size() - 1) + taps("GC", gc) + weight;
 }
 
 }  // namespace
 
-ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double render_sigma, double chroma_sigma)
+ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double render_sigma, double chroma_sigma,
+                   double chroma_weight)
     : rt_(rt),
       plan_(plan),
       frames_(frames),
       active_(frames),
       render_sigma_(render_sigma),
-      chroma_sigma_(chroma_sigma > 0 ? chroma_sigma : render_sigma) {
+      chroma_sigma_(chroma_sigma > 0 ? chroma_sigma : render_sigma),
+      chroma_weight_(chroma_weight) {
   if (frames < 1) throw Error("frame count must be at least 1");
+  if (!(chroma_weight > 0 && chroma_weight <= 1)) throw Error("the chroma weight must be in (0, 1]");
   const auto& p = plan_;
   const size_t K = static_cast<size_t>(frames);
   const RasterTuning tuning = raster_tuning(rt_.info(), p.width);
@@ -61,7 +70,7 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double ren
     cl::Program& prog =
         rt_.program({"flatten.cl", "stroke.cl", "lines.cl", "raster.cl", "loss.cl",
                      "raster_backward.cl", "stroke_backward.cl"},
-                    kernel_build_options(tuning) + loss_tap_options(render_sigma_, chroma_sigma_));
+                    kernel_build_options(tuning) + loss_tap_options(render_sigma_, chroma_sigma_, chroma_weight_));
     program_ = &prog;
     local_budget_ = tuning.local_budget;
     k_flatten_ = cl::Kernel(prog, "flatten");

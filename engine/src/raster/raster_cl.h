@@ -25,8 +25,10 @@ class ClRaster {
   // target's is always kLossSigma). Above it, blur matching (fit/blur_match.h).
   // `chroma_sigma`: the σ of the render's chroma blur in YCbCr (raster/loss_taps.h,
   // render_blur); 0 means render_sigma, the plain blur of every channel alike.
+  // `chroma_weight` (0, 1]: how much a residual of chroma alone counts against one of luma
+  // (kernels/loss.cl's loss_metric; 1, the plain squared error, compiles the plain kernels).
   ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double render_sigma = kLossSigma,
-           double chroma_sigma = 0);
+           double chroma_sigma = 0, double chroma_weight = 1);
 
   int frames() const { return frames_; }
   // Launches cover the first `n` frames only (1..frames()): the fitter activates keyframes
@@ -108,6 +110,7 @@ class ClRaster {
   int active_ = 0;
   double render_sigma_ = kLossSigma;
   double chroma_sigma_ = kLossSigma;  // = render_sigma_ unless the chroma blur is its own
+  double chroma_weight_ = 1;          // loss.cl's CHROMA_W
   int band_h_ = 16, bands_ = 0, group_ = 1;
   size_t device_bytes_ = 0;
   std::vector<std::pair<std::string, cl::Event>> events_;

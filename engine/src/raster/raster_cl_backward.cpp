@@ -174,11 +174,12 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
       for (int c = 0; c < 3; ++c) t[3 * p + c] = targets_[(k * px + p) * 4 + c];
     const std::vector<double> gt = blur_rgb(t, W, H, g_target);
     double sum = 0;
-    for (size_t i = 0; i < q.size(); ++i) {
-      q[i] = bg[i % 3] * g1[i] - gt[i];
-      sum += q[i] * q[i];
-    }
-    const std::vector<double> r = render_blur(q, W, H, render_sigma_, chroma_sigma_, true);
+    for (size_t i = 0; i < q.size(); ++i) q[i] = bg[i % 3] * g1[i] - gt[i];
+    // With a chroma weight the metric M (loss.cl's loss_metric): Σ Qᵀ M Q and R = Bᵀ M Q.
+    std::vector<double> mq = q;
+    if (chroma_weight_ != 1) mq = chroma_metric(q, chroma_weight_);
+    for (size_t i = 0; i < q.size(); ++i) sum += q[i] * mq[i];
+    const std::vector<double> r = render_blur(mq, W, H, render_sigma_, chroma_sigma_, true);
     qsum[k] = static_cast<float>(sum);
     for (size_t p = 0; p < px; ++p)
       for (int c = 0; c < 3; ++c) {
