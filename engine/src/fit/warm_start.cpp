@@ -135,4 +135,3 @@ bool compose_affine(MotionParams& th, const Affine& m, Vec2 origin, double scale
 }
 
 }  // namespace svgm
-

@@ -64,4 +64,3 @@ std::vector<double> chroma_metric(const std::vector<double>& e, double w) {
 }
 
 }  // namespace svgm
-

@@ -93,8 +93,8 @@ bool is_loop_stroke(const Path& p) {
   }
   const RigBox b = stroke_box(p);
   const double lo = std::min(b.w(), b.h()), hi = std::max(b.w(), b.h());
-  const double ellipse = 0.25 * 3.14159265358979323846 * b.w() * b.h();
-  return lo > 0 && hi <= kLoopAspect * lo && std::fabs(turn) >= kLoopTurn * 2 * 3.14159265358979323846 &&
+  const double ellipse = 0.25 * M_PI * b.w() * b.h();
+  return lo > 0 && hi <= kLoopAspect * lo && std::fabs(turn) >= kLoopTurn * 2 * M_PI &&
          0.5 * std::fabs(area) >= kLoopFill * ellipse;
 }
 
