@@ -141,15 +141,15 @@ KnownMotion known_motion(const Scene& scene, const nlohmann::json& motion, const
   for (const auto& p : motion["paths"]) listed.push_back(p.value("body", -1));
   if (!candidate.empty()) {
     bodies = nullptr;
-    // By reference into `motion`: `bodies` points into it.
-    static const nlohmann::json none = nlohmann::json::array();
-    const nlohmann::json& candidates = motion.contains("candidates") && motion["candidates"].is_array() ? motion["candidates"] : none;
-    for (const auto& c : candidates)
-      if (c.is_object() && c.value("name", "") == candidate && c.contains("bodies") && c.contains("path_body") && c["path_body"].is_array() &&
-          c["path_body"].size() == listed.size()) {
-        bodies = &c["bodies"];
-        for (size_t i = 0; i < listed.size(); ++i) listed[i] = c["path_body"][i].is_number_integer() ? c["path_body"][i].get<int>() : -1;
-      }
+    const auto it = motion.find("candidates");
+    if (it != motion.end() && it->is_array())
+      for (const auto& c : *it)
+        if (c.is_object() && c.value("name", "") == candidate && c.contains("bodies") && c.contains("path_body") &&
+            c["path_body"].is_array() && c["path_body"].size() == listed.size()) {
+          bodies = &c["bodies"];
+          for (size_t i = 0; i < listed.size(); ++i)
+            listed[i] = c["path_body"][i].is_number_integer() ? c["path_body"][i].get<int>() : -1;
+        }
   }
   if (!bodies || !bodies->is_array()) return k;
   for (const auto& body : *bodies) {
