@@ -3,12 +3,12 @@
 # clean fit and one fit per defect in the target video, all judged against the clean frames by
 # ../shared/tools/fitcheck.py (tests/bench/fit_nonrigid.sh does each row). Prints the table and
 # each defect's PSNR and IoU against the clean fit.
-#   usage: [FIT_ARGS="..."] fit_degraded.sh [-b BIN] [-w WORKDIR] [-s VIDEO_SIZE] SVG...
+#   usage: [FIT_ARGS="..."] fit_degraded.sh [-b BIN] [-w WORKDIR] [-s VIDEO_SIZE] [-k HOLD] SVG...
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 args=()
-while getopts "b:w:s:" o; do
-  case $o in b|w|s) args+=("-$o" "$OPTARG") ;; *) exit 2 ;; esac
+while getopts "b:w:s:k:" o; do
+  case $o in b|w|s|k) args+=("-$o" "$OPTARG") ;; *) exit 2 ;; esac
 done
 shift $((OPTIND - 1))
 for svg in "$@"; do

@@ -4,16 +4,19 @@
 # (moving-least-squares rigid warp of a librsvg render, a 512 px H.264 video and clean frames at
 # 256 and 1024 px), `svgmotion fit` fits it, and ../shared/tools/fitcheck.py judges every keyframe
 # at 1024 px (PSNR, IoU, boundary F) and every frame between keyframes at 256 px.
-#   usage: [FIT_ARGS="..."] fit_nonrigid.sh [-b BIN] [-w WORKDIR] [-d DEFECT] [-s VIDEO_SIZE] SVG...
+#   usage: [FIT_ARGS="..."] fit_nonrigid.sh [-b BIN] [-w WORKDIR] [-d DEFECT] [-s VIDEO_SIZE]
+#          [-k HOLD] SVG...
 # DEFECT: one of nonrigid_target.py's --degrade names (the video gets it, the judge sees clean).
+# HOLD: nonrigid_target.py's --hold (handles that stay still: a body that holds; default 1).
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 bin=$here/../../build/frontends/svgmotion
 work=/tmp/svgm_nonrigid
 defect=""
 vsize=512
-while getopts "b:w:d:s:" o; do
-  case $o in b) bin=$OPTARG ;; w) work=$OPTARG ;; d) defect=$OPTARG ;; s) vsize=$OPTARG ;; *) exit 2 ;; esac
+hold=1
+while getopts "b:w:d:s:k:" o; do
+  case $o in b) bin=$OPTARG ;; w) work=$OPTARG ;; d) defect=$OPTARG ;; s) vsize=$OPTARG ;; k) hold=$OPTARG ;; *) exit 2 ;; esac
 done
 shift $((OPTIND - 1))
 svgs=()
@@ -25,8 +28,9 @@ printf '%-14s %7s %7s %7s %7s %7s %7s %8s %7s %7s\n' svg psnr min_iou hires min_
 for svg in "${svgs[@]}"; do
   name=$(basename "$svg" .svg)
   dir=$work/$name${defect:+_$defect}
+  [[ $hold == 1 ]] || dir=${dir}_hold$hold
   [[ -f $dir/target.mp4 ]] || $py "$here/nonrigid_target.py" "$svg" "$dir" --size "$vsize" --hires 1024 \
-    ${defect:+--degrade $defect} >/dev/null 2>&1
+    --hold "$hold" ${defect:+--degrade $defect} >/dev/null 2>&1
   # The judge compares with clean frames at 256 px (the fit's size) and 1024 px.
   if [[ ! -d $dir/clean256 ]]; then
     $py - "$dir" <<'PY'

@@ -2,7 +2,7 @@
 """Non-rigid known-motion targets for judging fits at display size (needs librsvg through gi).
 
   nonrigid_target.py X.svg OUTDIR [--frames 49] [--size 256] [--hires 1024] [--seed 0]
-                     [--degrade NAME]
+                     [--degrade NAME] [--hold K]
 
 Renders X.svg with librsvg (not our renderer) at twice the hires width, deforms it with a
 moving-least-squares *rigid* warp (Schaefer, McPhail and Warren, "Image deformation using
@@ -20,6 +20,11 @@ stay clean, so the fit is judged against what should have been generated):
   blur      Gaussian blur sigma 1.5 px                            drift    colour drift up to 8%
   jpeg      JPEG quality 20 per frame                             fps8     8 fps (frames held)
   jitter    1-2 px camera shake
+
+--hold K keeps the anchor and the K - 1 handles nearest it still (default 1: the anchor alone):
+a body that holds while its limbs move, the usual shape of a character animation ("the man
+waves his right arm"). With K = 1 every part of the figure swings, and nothing in the frame
+says where a camera shake ends and the motion begins.
 """
 import math
 import os
@@ -68,17 +73,24 @@ def handles(img, count, seed):
     return centres, anchor
 
 
-def motion(centres, anchor, t, seed):
-    """Handle positions at time t in [0, 1] (one loop): each swings about the anchor."""
+def held_handles(centres, anchor, hold):
+    """The anchor and the hold - 1 handles nearest it (indices)."""
+    return np.argsort(((centres - centres[anchor]) ** 2).sum(axis=1))[:max(1, hold)]
+
+
+def motion(centres, anchor, t, seed, hold=1):
+    """Handle positions at time t in [0, 1] (one loop): each swings about the anchor, but for
+    the `hold` handles nearest the anchor (the anchor among them), which stay put."""
     rng = np.random.default_rng(seed + 1)
     n = len(centres)
     amp = rng.uniform(6, 14, n) * np.where(rng.random(n) < 0.5, -1, 1)  # degrees
     phase = rng.uniform(0, 2 * math.pi, n)
     stretch = rng.uniform(-0.04, 0.04, n)
     a0 = centres[anchor]
+    held = set(held_handles(centres, anchor, hold).tolist())
     out = centres.copy()
     for i in range(n):
-        if i == anchor:
+        if i in held:
             continue
         s = math.sin(2 * math.pi * t + phase[i]) - math.sin(phase[i])  # 0 at t = 0
         ang = math.radians(amp[i] * s)
@@ -88,8 +100,12 @@ def motion(centres, anchor, t, seed):
     return out
 
 
-def warp(img, p_unit, q_unit, grid=8):
-    """Warp img by the MLS map, evaluated on a coarse grid and interpolated (smooth anyway)."""
+def warp(img, p_unit, q_unit, grid=8, held=()):
+    """Warp img by the MLS map, evaluated on a coarse grid and interpolated (smooth anyway).
+    `held`: handles whose neighbourhood holds exactly still. An MLS map with 1/d^2 weights
+    reaches everywhere (a still handle's surroundings still drift with the others), so the
+    displacement is faded out near held handles: zero within r of one, whole from 2r on, r half
+    the distance from the held handles to the nearest moving one (smoothstep between)."""
     h, w = img.shape[:2]
     gw, gh = w // grid + 2, h // grid + 2
     # Evaluate at grid nodes spaced `grid` pixels, then resize the map to full size.
@@ -97,6 +113,15 @@ def warp(img, p_unit, q_unit, grid=8):
     # coordinate (i + 0.5) / grid - 0.5, so node j is pixel (j + 0.5) * grid - 0.5.
     yy, xx = (np.mgrid[0:gh, 0:gw].astype(np.float64) + 0.5) * grid - 0.5
     gx, gy = mls_rigid_inverse(xx, yy, p_unit * w, q_unit * w)
+    if len(held) > 1:  # (one held handle, the anchor, is the plain MLS warp)
+        hp = p_unit[list(held)] * w
+        moving = np.delete(p_unit, list(held), axis=0) * w
+        if len(moving):
+            r = 0.5 * np.sqrt(((moving[:, None] - hp[None]) ** 2).sum(-1)).min()
+            dist = np.sqrt((xx[..., None] - hp[:, 0]) ** 2 + (yy[..., None] - hp[:, 1]) ** 2).min(-1)
+            u = np.clip((dist - r) / r, 0, 1)
+            fade = u * u * (3 - 2 * u)
+            gx, gy = xx + fade * (gx - xx), yy + fade * (gy - yy)
     mx = cv2.resize(gx.astype(np.float32), (gw * grid, gh * grid), interpolation=cv2.INTER_LINEAR)[:h, :w]
     my = cv2.resize(gy.astype(np.float32), (gw * grid, gh * grid), interpolation=cv2.INTER_LINEAR)[:h, :w]
     return cv2.remap(img, mx, my, cv2.INTER_LINEAR, borderValue=(255, 255, 255))
@@ -162,7 +187,7 @@ def main(argv):
     opts = dict(zip(argv[3::2], argv[4::2]))
     frames, size = int(opts.get("--frames", 49)), int(opts.get("--size", 256))
     hires, seed = int(opts.get("--hires", 1024)), int(opts.get("--seed", 0))
-    defect = opts.get("--degrade", "")
+    defect, hold = opts.get("--degrade", ""), int(opts.get("--hold", 1))
     big = render(svg, 2 * hires)
     h, w = big.shape[:2]
     centres, anchor = handles(cv2.resize(big, (w // 8, h // 8), interpolation=cv2.INTER_AREA), 7, seed)
@@ -173,8 +198,8 @@ def main(argv):
     rng, state = np.random.default_rng(seed + 7), {}
     for i in range(frames):
         t = i / (frames - 1)
-        q = motion(centres, anchor, t, seed)
-        f = warp(big, centres, q)
+        q = motion(centres, anchor, t, seed, hold)
+        f = warp(big, centres, q, held=held_handles(centres, anchor, hold) if hold > 1 else ())
         hi = cv2.resize(f, (hires, round(hires * h / w)), interpolation=cv2.INTER_AREA)
         lo = cv2.resize(f, (size, sh), interpolation=cv2.INTER_AREA)
         cv2.imwrite(os.path.join(outdir, "clean_hires", f"{i:03d}.png"), hi)

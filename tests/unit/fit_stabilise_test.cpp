@@ -93,8 +93,11 @@ TEST_CASE("stabilise: the shake of a jittered clip is its jitter minus the jitte
     jx.push_back(j[0]), jy.push_back(j[1]);
     est.add(figure(0.25 * i + j[0], 0.008 * i * i + j[1]));
   }
-  const auto shake = est.shake(sigma);
+  const ShakeEstimate estimate = est.estimate(sigma);
+  const auto& shake = estimate.shake;
   REQUIRE(shake.size() == N);
+  MESSAGE("model " << estimate.model << ", still share " << estimate.still_share << ", residual " << estimate.still_residual_px
+                   << " px, low-pass ratio " << estimate.path_lowpass_ratio);
   const std::vector<double> lx = low_pass(jx, sigma), ly = low_pass(jy, sigma);
   double worst = 0, raw = 0;
   for (int i = 0; i < N; ++i) {

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace svgm {
@@ -35,8 +36,9 @@ struct TargetOptions {
   // Held frames (a clip at a lower frame rate than its container repeats each frame): a keyframe
   // that falls on a repeat is timed at the first frame of its run, where that pose was made.
   bool retime_held_frames = true;
-  // Camera shake (the whole frame jittering a pixel or two) removed before sampling: the path
-  // of frame-to-frame translations minus its low-pass over time (fit/stabilise.h). Off by
+  // Camera shake (the whole frame jittering a pixel or two) removed before sampling: read off
+  // the part of the figure that holds still where there is one, else the path of
+  // frame-to-frame translations minus its low-pass over time (fit/stabilise.h). Off by
   // default: a figure moving in genuine sharp jerks would be smoothed a little.
   bool stabilise = false;
   // The low-pass's standard deviation. Shake is independent from frame to frame, so what the
@@ -61,6 +63,8 @@ struct TargetFrames {
   int held_frames = 0;            // frames that repeat the one before (video sources)
   int colour_corrected = 0;       // keyframes whose colours were corrected
   double max_shake_px = 0;        // largest shake removed from a keyframe, target pixels
+  std::string shake_model;        // how shake was told from motion (ShakeEstimate::model)
+  double still_share = 0;         // the still part's share of the first frame's edges
   // K*H*W*4, row-major per keyframe: the cleaned target, straight RGB in [0,1], A = 1; pixels
   // outside the dilated mask are exactly white (1, 1, 1).
   std::vector<float> rgba;

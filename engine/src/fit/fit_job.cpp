@@ -554,7 +554,11 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   // The chroma σ in YCbCr (= the render σ unless the video's chroma was found softer).
   report["target_frames"]["chroma_sigma"] = coarse_blur.chroma_sigma;
   if (fine) report["target_frames"]["refine_chroma_sigma"] = fine_blur.chroma_sigma;
-  if (job.stabilise) report["target_frames"]["max_shake_removed_px"] = target.max_shake_px;
+  if (job.stabilise) {
+    report["target_frames"]["max_shake_removed_px"] = target.max_shake_px;
+    report["target_frames"]["shake_model"] = target.shake_model;
+    report["target_frames"]["still_share"] = target.still_share;
+  }
   if (fine)
     report["refined"] = {{"size", {W, H}},
                          {"iterations", final_fit.iteration()},

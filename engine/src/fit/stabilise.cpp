@@ -2,6 +2,9 @@
 #include "fit/stabilise.h"
 
 #include <cmath>
+#include <limits>
+
+#include "fit/still_region.h"
 
 #include <Eigen/Dense>
 
@@ -16,8 +19,13 @@ namespace {
 // frame, content replaced): the step is taken as no camera motion.
 constexpr double kMinResponse = 0.05;
 
-// 1 - grey in [0, 1] at `width` pixels wide, as 64-bit floats (phaseCorrelate's precision).
-cv::Mat ink_of(const cv::Mat& frame, int width) {
+// When the still part's path has a low-pass no larger than this many times a white path's of
+// the same high-pass energy, the figure is taken as not moving: all of the path is shake. (A
+// white path scores about 1; a drift of a pixel over the clip, tens.)
+constexpr double kWhitePathRatio = 3;
+
+// The frame as grey at `width` pixels wide, in its own depth (8 or 16 bits).
+cv::Mat grey_at(const cv::Mat& frame, int width) {
   cv::Mat grey;
   if (frame.channels() >= 3)
     cv::cvtColor(frame, grey, frame.channels() == 4 ? cv::COLOR_BGRA2GRAY : cv::COLOR_BGR2GRAY);
@@ -27,16 +35,109 @@ cv::Mat ink_of(const cv::Mat& frame, int width) {
   const int h = std::max(1, static_cast<int>(std::lround(static_cast<double>(w) * grey.rows / grey.cols)));
   cv::Mat small;
   cv::resize(grey, small, cv::Size(w, h), 0, 0, w < grey.cols ? cv::INTER_AREA : cv::INTER_LINEAR);
+  return small;
+}
+
+// 1 - grey in [0, 1], as 64-bit floats (phaseCorrelate's precision).
+cv::Mat ink_of(const cv::Mat& grey) {
   cv::Mat ink;
-  small.convertTo(ink, CV_64F, grey.depth() == CV_16U ? -1.0 / 65535 : -1.0 / 255, 1.0);
+  grey.convertTo(ink, CV_64F, grey.depth() == CV_16U ? -1.0 / 65535 : -1.0 / 255, 1.0);
   return ink;
+}
+
+// The low-pass as a matrix, row by row: row i holds the weights (from frame first[i] on) that
+// give the Gaussian-weighted parabola through the path around i, taken at i (local quadratic
+// regression). A steady drift and a constant acceleration (a hop's arc, a swing's turn) pass
+// through whole, also where the window runs past either end of the clip. A straight line
+// (local linear) bends off a curving motion by a share of its curvature, which then counted as
+// shake; on non-rigid 49-frame clips with 1-2 px shake the parabola over a 0.2 s window left
+// 0.53-0.59 px of the shake, the line over 0.125 s 0.57-0.98 px.
+struct LowPass {
+  std::vector<int> first;
+  std::vector<std::vector<double>> rows;
+};
+
+LowPass local_parabola(int n, double sigma_frames) {
+  LowPass lp;
+  const int r = static_cast<int>(std::ceil(3 * sigma_frames));
+  for (int i = 0; i < n; ++i) {
+    const int j0 = std::max(0, i - r), j1 = std::min(n - 1, i + r);
+    Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+    std::vector<double> w;
+    for (int j = j0; j <= j1; ++j) {
+      const double t = j - i;
+      w.push_back(std::exp(-0.5 * t * t / (sigma_frames * sigma_frames)));
+      const Eigen::Vector3d basis(1, t, t * t);
+      a.noalias() += w.back() * basis * basis.transpose();
+    }
+    std::vector<double> row(w.size());
+    if (std::fabs(a.determinant()) > 1e-9) {
+      // The parabola's value at i is e0' A^-1 sum_j w_j b_j p_j: row_j = w_j (A^-1 e0) . b_j.
+      const Eigen::Vector3d c = a.ldlt().solve(Eigen::Vector3d(1, 0, 0));
+      for (int j = j0; j <= j1; ++j) {
+        const double t = j - i;
+        row[static_cast<size_t>(j - j0)] = w[static_cast<size_t>(j - j0)] * (c[0] + c[1] * t + c[2] * t * t);
+      }
+    } else {
+      // Too few frames for a parabola (a clip of one or two): the weighted mean.
+      double sum = 0;
+      for (double v : w) sum += v;
+      for (size_t k = 0; k < w.size(); ++k) row[k] = w[k] / sum;
+    }
+    lp.first.push_back(j0);
+    lp.rows.push_back(std::move(row));
+  }
+  return lp;
+}
+
+std::vector<std::array<double, 2>> apply(const LowPass& lp, const std::vector<std::array<double, 2>>& path) {
+  std::vector<std::array<double, 2>> out(path.size(), {0, 0});
+  for (size_t i = 0; i < path.size(); ++i)
+    for (size_t k = 0; k < lp.rows[i].size(); ++k) {
+      const auto& p = path[static_cast<size_t>(lp.first[i]) + k];
+      out[i][0] += lp.rows[i][k] * p[0];
+      out[i][1] += lp.rows[i][k] * p[1];
+    }
+  return out;
+}
+
+// How much larger the path's low-pass (about its mean) is than a white path's would be, given
+// the noise its high-pass shows. For a white path p = mu + e (variance s² per axis), the
+// low-pass L p - mean has expected energy s² tr((L - J)'(L - J)) = s² (sum L² - 1) per axis (L
+// keeps constants, so its rows sum to 1; J averages), and the high-pass p - L p has
+// s² tr((I - L)'(I - L)) = s² (n - 2 tr L + sum L²).
+double lowpass_ratio(const LowPass& lp, const std::vector<std::array<double, 2>>& path) {
+  const size_t n = path.size();
+  const auto smooth = apply(lp, path);
+  std::array<double, 2> mean{0, 0};
+  for (const auto& p : path) mean[0] += p[0] / static_cast<double>(n), mean[1] += p[1] / static_cast<double>(n);
+  double low = 0, high = 0, sum_l2 = 0, trace = 0;
+  for (size_t i = 0; i < n; ++i) {
+    for (int a = 0; a < 2; ++a) {
+      low += (smooth[i][a] - mean[a]) * (smooth[i][a] - mean[a]);
+      high += (path[i][a] - smooth[i][a]) * (path[i][a] - smooth[i][a]);
+    }
+    for (size_t k = 0; k < lp.rows[i].size(); ++k) {
+      sum_l2 += lp.rows[i][k] * lp.rows[i][k];
+      if (static_cast<size_t>(lp.first[i]) + k == i) trace += lp.rows[i][k];
+    }
+  }
+  const double low_dof = sum_l2 - 1, high_dof = static_cast<double>(n) - 2 * trace + sum_l2;
+  if (!(low_dof > 1e-9) || !(high_dof > 1e-9)) return 0;
+  const double noise = high / high_dof;
+  if (!(noise > 0)) return low > 0 ? std::numeric_limits<double>::infinity() : 0;
+  return (low / low_dof) / noise;
 }
 
 }  // namespace
 
 void ShakeEstimator::add(const cv::Mat& frame) {
-  cv::Mat ink = ink_of(frame, width_);
+  const cv::Mat grey = grey_at(frame, width_);
+  cv::Mat ink = ink_of(grey);
   scale_ = static_cast<double>(frame.cols) / ink.cols;
+  cv::Mat grey8;
+  grey.convertTo(grey8, CV_8U, grey.depth() == CV_16U ? 1.0 / 257 : 1.0);
+  greys_.push_back(std::move(grey8));
   std::array<double, 2> at = path_.empty() ? std::array<double, 2>{0, 0} : path_.back();
   if (!prev_.empty() && prev_.size() == ink.size() && cv::sum(prev_)[0] > 0 && cv::sum(ink)[0] > 0) {
     // Phase correlation finds the step whole (several pixels, robust to the figure's own
@@ -72,37 +173,37 @@ void ShakeEstimator::add(const cv::Mat& frame) {
   prev_ = ink;
 }
 
-std::vector<std::array<double, 2>> ShakeEstimator::shake(double sigma_frames) const {
-  const int n = static_cast<int>(path_.size());
-  std::vector<std::array<double, 2>> out(static_cast<size_t>(n), {0, 0});
-  if (!(sigma_frames > 0)) return out;
-  const int r = static_cast<int>(std::ceil(3 * sigma_frames));
-  for (int i = 0; i < n; ++i) {
-    // The low-pass is a Gaussian-weighted parabola through the path around i, taken at i
-    // (local quadratic regression): a steady drift and a constant acceleration (a hop's arc, a
-    // swing's turn) pass through whole, also where the window runs past either end of the
-    // clip. A straight line (local linear) bends off a curving motion by a share of its
-    // curvature, which then counted as shake; on non-rigid 49-frame clips with 1-2 px shake
-    // the parabola over a 0.2 s window left 0.53-0.59 px of the shake, the line over 0.125 s
-    // 0.57-0.98 px.
-    Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
-    Eigen::Matrix<double, 3, 2> b = Eigen::Matrix<double, 3, 2>::Zero();
-    for (int j = std::max(0, i - r); j <= std::min(n - 1, i + r); ++j) {
-      const double t = j - i, w = std::exp(-0.5 * t * t / (sigma_frames * sigma_frames));
-      const Eigen::Vector3d basis(1, t, t * t);
-      const auto& p = path_[static_cast<size_t>(j)];
-      a.noalias() += w * basis * basis.transpose();
-      b.col(0) += w * p[0] * basis;
-      b.col(1) += w * p[1] * basis;
+ShakeEstimate ShakeEstimator::estimate(double sigma_frames) const {
+  ShakeEstimate est;
+  const size_t n = path_.size();
+  est.shake.assign(n, {0, 0});
+  est.model = "smooth";
+  if (!(sigma_frames > 0) || n == 0) return est;
+  const LowPass lp = local_parabola(static_cast<int>(n), sigma_frames);
+  const StillRegionPath still = register_still_region(greys_);
+  est.still_share = still.still_share;
+  est.still_residual_px = still.still_residual_px;
+  std::vector<std::array<double, 2>> shake;
+  if (still.found) {
+    est.path_lowpass_ratio = lowpass_ratio(lp, still.path);
+    if (est.path_lowpass_ratio <= kWhitePathRatio) {
+      // The figure held still: every step of the path is the camera's, about its mean (the
+      // first frame is shaken too; the mean is where the camera stood).
+      est.model = "still";
+      std::array<double, 2> mean{0, 0};
+      for (const auto& p : still.path) mean[0] += p[0] / static_cast<double>(n), mean[1] += p[1] / static_cast<double>(n);
+      for (const auto& p : still.path) shake.push_back({p[0] - mean[0], p[1] - mean[1]});
+    } else {
+      est.model = "still_smooth";
+      const auto smooth = apply(lp, still.path);
+      for (size_t i = 0; i < n; ++i) shake.push_back({still.path[i][0] - smooth[i][0], still.path[i][1] - smooth[i][1]});
     }
-    // Too few frames for a parabola (a clip of one or two): the weighted mean.
-    Eigen::Matrix<double, 3, 2> c = Eigen::Matrix<double, 3, 2>::Zero();
-    if (std::fabs(a.determinant()) > 1e-9) c = a.ldlt().solve(b);
-    else c.row(0) = b.row(0) / a(0, 0);
-    const auto& p = path_[static_cast<size_t>(i)];
-    out[static_cast<size_t>(i)] = {(p[0] - c(0, 0)) * scale_, (p[1] - c(0, 1)) * scale_};
+  } else {
+    const auto smooth = apply(lp, path_);
+    for (size_t i = 0; i < n; ++i) shake.push_back({path_[i][0] - smooth[i][0], path_[i][1] - smooth[i][1]});
   }
-  return out;
+  for (size_t i = 0; i < n; ++i) est.shake[i] = {shake[i][0] * scale_, shake[i][1] * scale_};
+  return est;
 }
 
 cv::Mat remove_shake(const cv::Mat& frame, const std::array<double, 2>& shake) {

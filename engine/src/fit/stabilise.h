@@ -4,22 +4,41 @@
 // defect of a real video (bug, non-rigid target, 1-2 px shake in a 512-px clip: -14 dB at
 // 1024 px).
 //
-// The camera path is estimated from the frames themselves: the translation between consecutive
-// frames by phase correlation of their "ink" (1 - grey, so the white background weighs nothing),
-// summed into a path. Shake is what remains of that path after a low-pass over time (a
-// Gaussian-weighted local parabola, so a steady drift or acceleration passes whole);
-// the low-pass part, a figure's deliberate drift or a jump's arc, is kept. This is the classic
-// smoothed-camera-path stabiliser (e.g. Matsushita et al. 2006, "Full-frame video
-// stabilization"; here with translation only, which is what shake of a fixed camera is).
+// Shake and motion are told apart by one of two priors, whichever the clip supports:
+//  - Part of the figure holds still (fit/still_region.h). The translation that puts the still
+//    part back onto the first frame is the camera's path, measured to a few hundredths of a
+//    pixel. When that path is white (its low-pass is no larger than a white path's would be),
+//    the figure did not move and all of it is shake (model "still"); when it has a course of
+//    its own (the whole figure drifting or hopping), only what its low-pass leaves is
+//    (model "still_smooth").
+//  - Nothing holds still: the path of frame-to-frame translations (phase correlation of the
+//    ink, refined by ECC), minus its low-pass over time (model "smooth"). This leaves about
+//    sigma * sqrt(p / N) of the shake in (p the low-pass's degrees of freedom over N frames):
+//    nothing in such a clip tells the rest apart from the motion.
+// The low-pass is a Gaussian-weighted local parabola, so a steady drift or acceleration passes
+// whole. This is the classic smoothed-camera-path stabiliser (e.g. Matsushita et al. 2006,
+// "Full-frame video stabilization"; here with translation only, which is what shake of a fixed
+// camera is), with the still part as its reference where there is one.
 // Off by default: a whole figure that genuinely moves quickly (a hop) would be damped too.
 #pragma once
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include <opencv2/core.hpp>
 
 namespace svgm {
+
+// The shake of every frame, in the frame's own pixels (x, y): the frame shows the scene moved by
+// this much, so shifting it by minus this stabilises it. And how it was told from the motion.
+struct ShakeEstimate {
+  std::vector<std::array<double, 2>> shake;
+  std::string model;             // "still", "still_smooth" or "smooth" (see above)
+  double still_share = 0;        // the still part's share of the first frame's edges
+  double still_residual_px = 0;  // its median residual, px of displacement at the measuring width
+  double path_lowpass_ratio = 0; // the still part's path: low-pass energy over a white path's
+};
 
 // Accumulates the frames of a clip one at a time and reports the shake of each.
 class ShakeEstimator {
@@ -31,15 +50,16 @@ class ShakeEstimator {
   // The next frame of the clip, 8-bit or 16-bit BGR(A) or grey, any size.
   void add(const cv::Mat& frame);
 
-  // Shake of every frame added, in the frame's own pixels (x, y): the frame shows the scene
-  // moved by this much, so shifting it by minus this stabilises it. `sigma_frames` is the
-  // low-pass's standard deviation in frames.
-  std::vector<std::array<double, 2>> shake(double sigma_frames) const;
+  // The shake of every frame added. `sigma_frames` is the low-pass's standard deviation in
+  // frames.
+  ShakeEstimate estimate(double sigma_frames) const;
+  std::vector<std::array<double, 2>> shake(double sigma_frames) const { return estimate(sigma_frames).shake; }
 
  private:
   int width_;
   double scale_ = 1;                       // frame pixels per measuring pixel
   cv::Mat prev_;                           // the previous frame's ink at the measuring width
+  std::vector<cv::Mat> greys_;             // every frame, 8-bit grey at the measuring width
   std::vector<std::array<double, 2>> path_;  // accumulated translation, measuring pixels
 };
 

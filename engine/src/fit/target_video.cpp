@@ -525,7 +525,10 @@ TargetFrames load_target(const fs::path& source, int width, int height,
     }
   }
   if (options.stabilise) {
-    const auto shakes = shake.shake(options.stabilise_sigma_s * t.fps);
+    const ShakeEstimate est = shake.estimate(options.stabilise_sigma_s * t.fps);
+    const auto& shakes = est.shake;
+    t.shake_model = est.model;
+    t.still_share = est.still_share;
     for (int k = 0; k < K; ++k) {
       const auto& d = shakes[static_cast<size_t>(kept_index[static_cast<size_t>(k)])];
       const double fit_px = std::hypot(d[0], d[1]) * width / std::max(1, t.source_width);
