@@ -129,53 +129,59 @@ double lowpass_ratio(const LowPass& lp, const std::vector<std::array<double, 2>>
   return (low / low_dof) / noise;
 }
 
+// The camera's path when nothing holds still: the translation from each frame to the next,
+// summed. Phase correlation finds each step whole (several pixels, robust to the figure's own
+// motion), but its sub-pixel centroid is biased by a few hundredths of a pixel even between
+// identical frames; enhanced correlation (ECC, Evangelidis and Psarakis 2008), a Gauss-Newton
+// fit of the translation started there, makes it exact.
+std::vector<std::array<double, 2>> consecutive_path(const std::vector<cv::Mat>& greys) {
+  std::vector<std::array<double, 2>> path;
+  cv::Mat prev;
+  for (const cv::Mat& grey : greys) {
+    const cv::Mat ink = ink_of(grey);
+    std::array<double, 2> at = path.empty() ? std::array<double, 2>{0, 0} : path.back();
+    if (!prev.empty() && prev.size() == ink.size() && cv::sum(prev)[0] > 0 && cv::sum(ink)[0] > 0) {
+      cv::Mat window;
+      cv::createHanningWindow(window, ink.size(), CV_64F);
+      double response = 0;
+      // On copies: with a window and sizes the DFT takes as they are, OpenCV 4.6 multiplies the
+      // window into its inputs in place (seen here: the previous frame came back windowed).
+      const cv::Point2d d = cv::phaseCorrelate(prev.clone(), ink.clone(), window, &response);
+      if (response >= kMinResponse && std::isfinite(d.x) && std::isfinite(d.y)) {
+        cv::Mat warp = (cv::Mat_<float>(2, 3) << 1, 0, static_cast<float>(d.x), 0, 1, static_cast<float>(d.y));
+        cv::Point2d step = d;
+        try {
+          cv::Mat a, b;
+          prev.convertTo(a, CV_32F);
+          ink.convertTo(b, CV_32F);
+          cv::findTransformECC(a, b, warp, cv::MOTION_TRANSLATION,
+                               cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-5), cv::noArray(), 3);
+          const cv::Point2d refined(warp.at<float>(0, 2), warp.at<float>(1, 2));
+          // Kept only when it stays near the whole step (ECC can slide off on a frame whose
+          // figure moved more than the camera).
+          if (std::isfinite(refined.x) && std::isfinite(refined.y) && std::hypot(refined.x - d.x, refined.y - d.y) < 1.0) step = refined;
+        } catch (const cv::Exception&) {
+          // A degenerate frame (ECC found no correlation): the phase estimate stands.
+        }
+        at = {at[0] + step.x, at[1] + step.y};
+      }
+    }
+    path.push_back(at);
+    prev = ink;
+  }
+  return path;
+}
+
 }  // namespace
 
 void ShakeEstimator::add(const cv::Mat& frame) {
-  const cv::Mat grey = grey_at(frame, width_);
-  cv::Mat ink = ink_of(grey);
-  scale_ = static_cast<double>(frame.cols) / ink.cols;
-  cv::Mat grey8;
-  grey.convertTo(grey8, CV_8U, grey.depth() == CV_16U ? 1.0 / 257 : 1.0);
-  greys_.push_back(std::move(grey8));
-  std::array<double, 2> at = path_.empty() ? std::array<double, 2>{0, 0} : path_.back();
-  if (!prev_.empty() && prev_.size() == ink.size() && cv::sum(prev_)[0] > 0 && cv::sum(ink)[0] > 0) {
-    // Phase correlation finds the step whole (several pixels, robust to the figure's own
-    // motion), but its sub-pixel centroid is biased by a few hundredths of a pixel even between
-    // identical frames; enhanced correlation (ECC, Evangelidis and Psarakis 2008), a
-    // Gauss-Newton fit of the translation started there, makes it exact.
-    cv::Mat window;
-    cv::createHanningWindow(window, ink.size(), CV_64F);
-    double response = 0;
-    // On copies: with a window and sizes the DFT takes as they are, OpenCV 4.6 multiplies the
-    // window into its inputs in place (seen here: the previous frame came back windowed).
-    const cv::Point2d d = cv::phaseCorrelate(prev_.clone(), ink.clone(), window, &response);
-    if (response >= kMinResponse && std::isfinite(d.x) && std::isfinite(d.y)) {
-      cv::Mat warp = (cv::Mat_<float>(2, 3) << 1, 0, static_cast<float>(d.x), 0, 1, static_cast<float>(d.y));
-      cv::Point2d step = d;
-      try {
-        cv::Mat a, b;
-        prev_.convertTo(a, CV_32F);
-        ink.convertTo(b, CV_32F);
-        cv::findTransformECC(a, b, warp, cv::MOTION_TRANSLATION,
-                             cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-5), cv::noArray(), 3);
-        const cv::Point2d refined(warp.at<float>(0, 2), warp.at<float>(1, 2));
-        // Kept only when it stays near the whole step (ECC can slide off on a frame whose
-        // figure moved more than the camera).
-        if (std::isfinite(refined.x) && std::isfinite(refined.y) && std::hypot(refined.x - d.x, refined.y - d.y) < 1.0) step = refined;
-      } catch (const cv::Exception&) {
-        // A degenerate frame (ECC found no correlation): the phase estimate stands.
-      }
-      at = {at[0] + step.x, at[1] + step.y};
-    }
-  }
-  path_.push_back(at);
-  prev_ = ink;
+  greys_.push_back(grey_at(frame, width_));
+  scale_ = static_cast<double>(frame.cols) / greys_.back().cols;
 }
 
 ShakeEstimate ShakeEstimator::estimate(double sigma_frames) const {
   ShakeEstimate est;
-  const size_t n = path_.size();
+  const size_t n = greys_.size();
   est.shake.assign(n, {0, 0});
   est.model = "smooth";
   if (!(sigma_frames > 0) || n == 0) return est;
@@ -199,8 +205,9 @@ ShakeEstimate ShakeEstimator::estimate(double sigma_frames) const {
       for (size_t i = 0; i < n; ++i) shake.push_back({still.path[i][0] - smooth[i][0], still.path[i][1] - smooth[i][1]});
     }
   } else {
-    const auto smooth = apply(lp, path_);
-    for (size_t i = 0; i < n; ++i) shake.push_back({path_[i][0] - smooth[i][0], path_[i][1] - smooth[i][1]});
+    const auto path = consecutive_path(greys_);
+    const auto smooth = apply(lp, path);
+    for (size_t i = 0; i < n; ++i) shake.push_back({path[i][0] - smooth[i][0], path[i][1] - smooth[i][1]});
   }
   for (size_t i = 0; i < n; ++i) est.shake[i] = {shake[i][0] * scale_, shake[i][1] * scale_};
   return est;

@@ -43,8 +43,8 @@ struct ShakeEstimate {
 // Accumulates the frames of a clip one at a time and reports the shake of each.
 class ShakeEstimator {
  public:
-  // `width`: the width frames are measured at (a thumbnail keeps this cheap; sub-pixel phase
-  // correlation stays accurate to about a tenth of a pixel at 256 px).
+  // `width`: the width frames are measured at (a thumbnail keeps this cheap). Every frame is
+  // kept at it until estimate(): 49 frames of a 512-px clip take 13 MB.
   explicit ShakeEstimator(int width) : width_(width) {}
 
   // The next frame of the clip, 8-bit or 16-bit BGR(A) or grey, any size.
@@ -58,9 +58,7 @@ class ShakeEstimator {
  private:
   int width_;
   double scale_ = 1;                       // frame pixels per measuring pixel
-  cv::Mat prev_;                           // the previous frame's ink at the measuring width
-  std::vector<cv::Mat> greys_;             // every frame, 8-bit grey at the measuring width
-  std::vector<std::array<double, 2>> path_;  // accumulated translation, measuring pixels
+  std::vector<cv::Mat> greys_;             // every frame, grey at the measuring width (own depth)
 };
 
 // `frame` moved by (-shake), same size, edges repeated (the background continues).

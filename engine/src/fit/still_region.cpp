@@ -19,6 +19,10 @@ constexpr double kTukeyShare = 0.06;
 // An edge pixel of the first frame: gradient above this share of the contrast per pixel (a
 // sharp edge blurred by kInkBlur peaks at 0.4 of it).
 constexpr double kEdgeShare = 0.055;
+// Pixels sampled at all: gradient above this share of the contrast (the edges and their blurred
+// tails; the first, robust registration needs the tails: on edges alone it settled, on a
+// non-rigid clip, 0.2 px off towards the motion, from where the still mask never recovered).
+constexpr double kSampleShare = 0.005;
 // Still: a mean squared residual within kStillFactor² of the lowest kLowestShare of the edges'.
 constexpr double kLowestShare = 0.05;
 constexpr double kStillFactor = 2;
@@ -28,6 +32,9 @@ constexpr double kStillFactor = 2;
 constexpr double kStillMaxPx = 0.25;
 constexpr double kMinStillShare = 0.02;
 constexpr int kMinEdgePixels = 50;
+// The still edges' normal matrix: smaller eigenvalue over larger at least this (a disc: 1; the
+// still part of a drawing of straight vertical strokes: near 0).
+constexpr double kMinConditioning = 0.05;
 constexpr int kRounds = 6;
 constexpr int kMaxIterations = 40;
 // A phase-correlation peak weaker than this is not a translation (fit/stabilise.cpp's bound).
@@ -35,20 +42,24 @@ constexpr double kMinResponse = 0.05;
 
 cv::Mat ink_of(const cv::Mat& grey) {
   cv::Mat ink;
-  grey.convertTo(ink, CV_32F, -1.0 / 255, 1.0);
+  grey.convertTo(ink, CV_32F, grey.depth() == CV_16U ? -1.0 / 65535 : -1.0 / 255, 1.0);
   cv::GaussianBlur(ink, ink, cv::Size(), kInkBlur, kInkBlur, cv::BORDER_REPLICATE);
   return ink;
 }
 
-// The first frame and what every registration against it needs.
+// The first frame's edge pixels, where all the information on a translation is (a pixel of
+// zero gradient adds nothing to Gauss-Newton's sums), as 1 x M rows: only they are sampled,
+// a tenth or less of the frame.
 struct Reference {
-  cv::Mat ink, gx, gy, xs, ys;  // CV_32F: ink, its central differences, the pixel grid
+  cv::Mat xs, ys;        // pixel positions, CV_32F
+  cv::Mat ink, gx, gy;   // the first frame's ink and central differences there, CV_32F
+  cv::Mat grad;          // |gradient|
   double tukey_c = 0;
 };
 
 struct Registration {
   std::array<double, 2> t{0, 0};
-  cv::Mat residual;  // ink(x + t) - reference ink(x), CV_32F
+  cv::Mat residual;  // ink(x + t) - reference ink(x) at the edge pixels, CV_32F
 };
 
 cv::Mat residual_at(const cv::Mat& ink, const Reference& ref, const std::array<double, 2>& t) {
@@ -63,8 +74,8 @@ cv::Mat residual_at(const cv::Mat& ink, const Reference& ref, const std::array<d
 
 // The translation t with ink(x + t) closest to the reference: inverse-compositional
 // Gauss-Newton (Baker and Matthews 2004), so the gradient is the reference's and the normal
-// matrix changes only with the weights. `mask` (CV_32F 0/1) weighs the pixels when given;
-// otherwise Tukey's biweight of each residual does.
+// matrix changes only with the weights. `mask` (CV_32F 0/1 per edge pixel) weighs the pixels
+// when given; otherwise Tukey's biweight of each residual does.
 Registration register_frame(const cv::Mat& ink, const Reference& ref, std::array<double, 2> t, const cv::Mat& mask) {
   Registration out;
   cv::Mat r = residual_at(ink, ref, t), w, gxw, gyw;
@@ -72,8 +83,7 @@ Registration register_frame(const cv::Mat& ink, const Reference& ref, std::array
     if (!mask.empty()) {
       w = mask;
     } else {
-      cv::Mat u2 = r.mul(r, 1.0 / (ref.tukey_c * ref.tukey_c));
-      cv::Mat one_minus = 1.0 - u2;
+      cv::Mat one_minus = 1.0 - r.mul(r, 1.0 / (ref.tukey_c * ref.tukey_c));
       cv::max(one_minus, 0.0, one_minus);
       w = one_minus.mul(one_minus);
     }
@@ -101,6 +111,7 @@ double quantile(std::vector<float> v, double share) {
   return v[k];
 }
 
+
 }  // namespace
 
 StillRegionPath register_still_region(const std::vector<cv::Mat>& greys) {
@@ -112,28 +123,39 @@ StillRegionPath register_still_region(const std::vector<cv::Mat>& greys) {
   inks.reserve(n);
   for (const cv::Mat& g : greys) inks.push_back(ink_of(g));
 
-  Reference ref;
-  ref.ink = inks[0];
   double lo = 0, contrast = 0;
-  cv::minMaxLoc(ref.ink, &lo, &contrast);
+  cv::minMaxLoc(inks[0], &lo, &contrast);
   if (contrast < 0.02) return out;  // a blank first frame
-  ref.tukey_c = kTukeyShare * contrast;
-  cv::Sobel(ref.ink, ref.gx, CV_32F, 1, 0, 1, 0.5, 0, cv::BORDER_REPLICATE);
-  cv::Sobel(ref.ink, ref.gy, CV_32F, 0, 1, 1, 0.5, 0, cv::BORDER_REPLICATE);
-  ref.xs.create(ref.ink.size(), CV_32F);
-  ref.ys.create(ref.ink.size(), CV_32F);
-  for (int y = 0; y < ref.ink.rows; ++y)
-    for (int x = 0; x < ref.ink.cols; ++x) ref.xs.at<float>(y, x) = static_cast<float>(x), ref.ys.at<float>(y, x) = static_cast<float>(y);
-  cv::Mat grad;
-  cv::magnitude(ref.gx, ref.gy, grad);
-  const cv::Mat edges = grad > kEdgeShare * contrast;
-  const int edge_count = cv::countNonZero(edges);
+  cv::Mat gx, gy, grad;
+  cv::Sobel(inks[0], gx, CV_32F, 1, 0, 1, 0.5, 0, cv::BORDER_REPLICATE);
+  cv::Sobel(inks[0], gy, CV_32F, 0, 1, 1, 0.5, 0, cv::BORDER_REPLICATE);
+  cv::magnitude(gx, gy, grad);
+  // Two samplings of the first frame: `wide` (edges and their tails) for the robust start,
+  // `ref` (edges alone) for the mask and the registrations on it.
+  auto reference_at = [&](double share) {
+    Reference r;
+    r.tukey_c = kTukeyShare * contrast;
+    std::vector<float> xs, ys, i0, gxs, gys, gs;
+    for (int y = 0; y < grad.rows; ++y)
+      for (int x = 0; x < grad.cols; ++x)
+        if (grad.at<float>(y, x) > share * contrast) {
+          xs.push_back(static_cast<float>(x)), ys.push_back(static_cast<float>(y));
+          i0.push_back(inks[0].at<float>(y, x)), gs.push_back(grad.at<float>(y, x));
+          gxs.push_back(gx.at<float>(y, x)), gys.push_back(gy.at<float>(y, x));
+        }
+    auto row = [](const std::vector<float>& v) { return cv::Mat(v, true).reshape(1, 1); };
+    if (!xs.empty()) r.xs = row(xs), r.ys = row(ys), r.ink = row(i0), r.gx = row(gxs), r.gy = row(gys), r.grad = row(gs);
+    return r;
+  };
+  const Reference ref = reference_at(kEdgeShare);
+  const int edge_count = ref.xs.cols;
   if (edge_count < kMinEdgePixels) return out;
+  const Reference wide = reference_at(kSampleShare);
 
   // 1. Robust registration of every frame, each started at its phase correlation with the first.
   cv::Mat window, ref64;
-  cv::createHanningWindow(window, ref.ink.size(), CV_64F);
-  ref.ink.convertTo(ref64, CV_64F);
+  cv::createHanningWindow(window, inks[0].size(), CV_64F);
+  inks[0].convertTo(ref64, CV_64F);
   std::vector<std::array<double, 2>> t(n, {0, 0});
   cv::Mat sum_sq = cv::Mat::zeros(ref.ink.size(), CV_32F);
   const cv::Mat no_mask;
@@ -145,23 +167,17 @@ StillRegionPath register_still_region(const std::vector<cv::Mat>& greys) {
     const cv::Point2d d = cv::phaseCorrelate(ref64.clone(), ink64, window, &response);
     std::array<double, 2> start = t[i - 1];
     if (response >= kMinResponse && std::isfinite(d.x) && std::isfinite(d.y)) start = {d.x, d.y};
-    Registration r = register_frame(inks[i], ref, start, no_mask);
-    t[i] = r.t;
-    cv::accumulateSquare(r.residual, sum_sq);
+    t[i] = register_frame(inks[i], wide, start, no_mask).t;
+    cv::accumulateSquare(residual_at(inks[i], ref, t[i]), sum_sq);
   }
 
   // 2-3. The still mask from the residuals over the whole clip, and registration on it alone.
-  cv::Mat mask, prev_mask;
+  cv::Mat mask, still, prev_still;
   for (int round = 0; round < kRounds; ++round) {
-    std::vector<float> edge_values;
-    edge_values.reserve(static_cast<size_t>(edge_count));
-    for (int y = 0; y < sum_sq.rows; ++y)
-      for (int x = 0; x < sum_sq.cols; ++x)
-        if (edges.at<uchar>(y, x)) edge_values.push_back(sum_sq.at<float>(y, x));
-    const double base = std::max(quantile(edge_values, kLowestShare), 1e-12);
-    const cv::Mat still = (sum_sq <= kStillFactor * kStillFactor * base) & edges;
-    if (!prev_mask.empty() && cv::countNonZero(still != prev_mask) == 0) break;  // settled
-    prev_mask = still;
+    const double base = std::max(quantile(std::vector<float>(sum_sq.begin<float>(), sum_sq.end<float>()), kLowestShare), 1e-12);
+    still = sum_sq <= kStillFactor * kStillFactor * base;
+    if (!prev_still.empty() && cv::countNonZero(still != prev_still) == 0) break;  // settled
+    prev_still = still;
     still.convertTo(mask, CV_32F, 1.0 / 255);
     sum_sq.setTo(0);
     for (size_t i = 1; i < n; ++i) {
@@ -173,14 +189,22 @@ StillRegionPath register_still_region(const std::vector<cv::Mat>& greys) {
 
   // Accept the still part when its residual is at noise level.
   std::vector<float> px_residual;
-  for (int y = 0; y < sum_sq.rows; ++y)
-    for (int x = 0; x < sum_sq.cols; ++x)
-      if (prev_mask.at<uchar>(y, x))
-        px_residual.push_back(static_cast<float>(std::sqrt(sum_sq.at<float>(y, x) / static_cast<double>(n - 1)) /
-                                                 std::max(grad.at<float>(y, x), 1e-6f)));
+  for (int k = 0; k < prev_still.cols; ++k)
+    if (prev_still.at<uchar>(0, k))
+      px_residual.push_back(static_cast<float>(std::sqrt(sum_sq.at<float>(0, k) / static_cast<double>(n - 1)) /
+                                               std::max(ref.grad.at<float>(0, k), 1e-6f)));
   out.still_share = static_cast<double>(px_residual.size()) / edge_count;
   out.still_residual_px = quantile(px_residual, 0.5);
-  out.found = !px_residual.empty() && out.still_share >= kMinStillShare && out.still_residual_px <= kStillMaxPx;
+  // And its edges must run in more than one direction: a still part of parallel edges pins the
+  // translation across them only (the aperture problem).
+  cv::Mat still_f;
+  prev_still.convertTo(still_f, CV_32F, 1.0 / 255);
+  const cv::Mat gxm = still_f.mul(ref.gx), gym = still_f.mul(ref.gy);
+  const double h00 = gxm.dot(ref.gx), h01 = gxm.dot(ref.gy), h11 = gym.dot(ref.gy);
+  const double mid = 0.5 * (h00 + h11), half = std::sqrt(0.25 * (h00 - h11) * (h00 - h11) + h01 * h01);
+  out.conditioning = mid + half > 0 ? (mid - half) / (mid + half) : 0;
+  out.found = !px_residual.empty() && out.still_share >= kMinStillShare && out.still_residual_px <= kStillMaxPx &&
+              out.conditioning >= kMinConditioning;
   out.path = t;
   return out;
 }

@@ -36,9 +36,10 @@ struct StillRegionPath {
   std::vector<std::array<double, 2>> path;   // translation of each frame against the first, px
   double still_share = 0;                    // the still part's share of the first frame's edges
   double still_residual_px = 0;              // its median residual in px of displacement
+  double conditioning = 0;                   // its edges' normal matrix: min / max eigenvalue
 };
 
-// `greys`: the clip's frames as 8-bit grey, all the same size (white paper, dark ink).
+// `greys`: the clip's frames as 8- or 16-bit grey, all the same size (white paper, dark ink).
 StillRegionPath register_still_region(const std::vector<cv::Mat>& greys);
 
 }  // namespace svgm
