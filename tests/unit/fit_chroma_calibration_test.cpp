@@ -120,6 +120,27 @@ TEST_CASE("chroma calibration: a still target is frame 0 repeated") {
   CHECK(s.sdf == std::vector<float>{0, 1, 0, 1, 0, 1});
 }
 
+TEST_CASE("chroma calibration: a failure falls back to weight 1 with a note, never an error") {
+  const TargetFrames none;  // no frames at all
+  ChromaCalibration cal;
+  CHECK_NOTHROW(cal = calibrate_chroma_weight(runtime(), two_hues(false), ChromaStage{&none, FitOptions{}}, nullptr));
+  CHECK(cal.chosen == 1.0);
+  CHECK(cal.note.find("calibration failed") != std::string::npos);
+  // A target the fitter refuses (not the drawing's aspect) fails inside a still fit.
+  TargetFrames wrong;
+  wrong.width = 20;
+  wrong.height = 10;
+  wrong.keyframes = 1;
+  wrong.rgba.assign(800, 1.f);
+  wrong.raw = wrong.rgba;
+  wrong.mask.assign(200, 0);
+  wrong.sdf.assign(200, 30.f);
+  CHECK_NOTHROW(cal = calibrate_chroma_weight(runtime(), two_hues(false), ChromaStage{&wrong, FitOptions{}}, nullptr));
+  CHECK(cal.chosen == 1.0);
+  CHECK(!cal.note.empty());
+  MESSAGE(cal.note);
+}
+
 TEST_CASE("chroma calibration: damaged colour chooses a weight below 1, a clean target keeps 1") {
   for (bool equal_luma : {false, true}) {
     CAPTURE(equal_luma);
