@@ -70,6 +70,8 @@ int cmd_fit(const std::vector<std::string>& argv) {
   job.gate = !a.has("--no-gate");
   job.colour_correction = !a.has("--no-colour-correction");
   job.blur_matching = !a.has("--no-blur-matching");
+  // The chroma weight: auto (fit/chroma_calibration.h) unless a number is given.
+  job.chroma_weight_auto = true;
   if (const auto w = a.get("--chroma-weight")) {
     job.chroma_weight_auto = *w == "auto";
     if (!job.chroma_weight_auto) {

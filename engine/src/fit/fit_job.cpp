@@ -609,7 +609,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     }
     report["chroma_weight"]["drift"] = std::move(drift);
     report["chroma_weight"]["drift_px"] = std::move(drift_px);
-    report["chroma_weight"]["seconds"] = chroma_cal->seconds;
+    report["chroma_weight"]["calibration_seconds"] = chroma_cal->seconds;
     if (!chroma_cal->note.empty()) report["chroma_weight"]["note"] = chroma_cal->note;
   }
   if (fine)
