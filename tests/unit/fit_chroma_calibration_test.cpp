@@ -14,7 +14,9 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "fit/blur_match.h"
 #include "fit/chroma_calibration.h"
+#include "raster/render_image.h"
 #include "raster_test_support.h"
 #include "scene_builders.h"
 #include "supersampled_fill.h"
@@ -47,7 +49,8 @@ Scene two_hues(bool equal_luma) {
 // The drawing at rest, `frames` times, into `dir`; with `damage`, each frame's chroma is
 // replaced by a quarter-resolution copy whose samples are off by Gaussian noise (σ 0.06 in Cb
 // and Cr), as JPEG or H.264 at a low quality leave it; its luma is kept.
-void write_target(const Scene& s, const std::filesystem::path& dir, int frames, bool damage, uint64_t seed) {
+void write_target(const Scene& s, const std::filesystem::path& dir, int frames, bool damage, uint64_t seed,
+                  double noise = 0.06) {
   const RgbaImage clean = draw_over_white(filled_outlines(s, [](size_t, Vec2 p) { return p; }), kSize, kSize);
   cv::Mat rgba(kSize, kSize, CV_8UC4, const_cast<uint8_t*>(clean.rgba.data()));
   cv::Mat rgb, f, ycc;
@@ -61,10 +64,10 @@ void write_target(const Scene& s, const std::filesystem::path& dir, int frames, 
       std::vector<cv::Mat> ch;
       cv::split(out, ch);
       for (int c = 1; c < 3; ++c) {
-        cv::Mat small, noise(kSize / 4, kSize / 4, CV_32F);
+        cv::Mat small, off(kSize / 4, kSize / 4, CV_32F);
         cv::resize(ch[c], small, {kSize / 4, kSize / 4}, 0, 0, cv::INTER_AREA);
-        rng.fill(noise, cv::RNG::NORMAL, 0, 0.06);
-        cv::resize(small + noise, ch[c], {kSize, kSize}, 0, 0, cv::INTER_LINEAR);
+        rng.fill(off, cv::RNG::NORMAL, 0, noise);
+        cv::resize(small + off, ch[c], {kSize, kSize}, 0, 0, cv::INTER_LINEAR);
       }
       cv::merge(ch, out);
     }
@@ -95,6 +98,24 @@ ChromaCalibration calibrate(bool equal_luma, bool damage, uint64_t seed = 1) {
   MESSAGE(what << ": chosen " << cal.chosen << " in " << cal.seconds << " s"
                << (cal.note.empty() ? std::string() : ": " + cal.note));
   return cal;
+}
+
+// The gate on the fixture, as fit_job runs it: blur matching of the target's frame 0 against
+// the rest render, then the gate on its σs (the frames are the video's own width).
+ChromaGate gate_on(bool damage, double noise, uint64_t seed = 1) {
+  const Scene s = two_hues(false);
+  TempDir dir("svgm_chroma_gate");
+  write_target(s, dir.path, 1, damage, seed, noise);
+  TargetOptions to;
+  to.keyframes = 1;
+  const TargetFrames t = load_target(dir.path, kSize, kSize, to);
+  const BlurMatch m = match_render_blur(render_image(runtime(), s, kSize, false), t.rgba);
+  const ChromaGate g = chroma_calibration_gate(m, t.width, t.source_width);
+  MESSAGE(std::string(damage ? "damaged" : "clean") << " (noise " << noise << ", seed " << seed << "): best chroma sigma "
+                                         << m.best_chroma_sigma << " with luma " << m.chroma_luma_sigma << ", residual x"
+                                         << m.chroma_residual_ratio << ", rest " << m.chroma_rest_psnr_db
+                                         << " dB; gate: " << g.reason);
+  return g;
 }
 
 }  // namespace
@@ -163,6 +184,65 @@ TEST_CASE("chroma calibration: damaged colour chooses a weight below 1, a clean 
     MESSAGE(std::string(equal_luma ? "equal luma: " : "distinct luma: ") << below << " of 6 noise draws chose below 1");
     CHECK(below >= 4);
   }
+}
+
+TEST_CASE("chroma calibration gate: the fixture's clean target skips, its chroma-damaged ones calibrate") {
+  // The targets on which the calibration keeps 1 (clean) and chooses below 1 (damaged chroma,
+  // distinct luma: 6 of 6 draws), above: the gate must let the calibration run on the damaged
+  // ones and spare it on the clean one.
+  const ChromaGate clean = gate_on(false, 0.06);
+  CHECK_FALSE(clean.calibrate);
+  CHECK(clean.excess < 0.2);
+  CHECK(clean.reason.find("below") != std::string::npos);
+  for (uint64_t seed : {1, 2, 3}) {
+    CAPTURE(seed);
+    const ChromaGate damaged = gate_on(true, 0.06, seed);
+    CHECK(damaged.calibrate);
+    CHECK(damaged.excess >= 0.6);
+  }
+  // Chroma subsampled without noise: softer colour alone, measured and adopted by blur matching.
+  const ChromaGate soft = gate_on(true, 0);
+  CHECK(soft.calibrate);
+  CHECK(soft.excess >= 0.6);
+}
+
+TEST_CASE("chroma calibration gate: the measured videos' sigmas") {
+  // (luma σ, chroma σ) of blur matching on the bench's non-rigid targets (a 512 px video),
+  // at the refinement's 512 px and at the fitting width of 256 px (fit/chroma_calibration.h).
+  struct Measured {
+    const char* name;
+    double luma, chroma;
+    int width;
+    bool damaged;
+  };
+  const Measured measured[] = {
+      {"bug", 1.05, 1.2, 512, false},         {"parrot", 1.05, 1.2, 512, false},
+      {"octopus", 1.05, 1.15, 512, false},    {"bug jpeg", 1.2, 2.0, 512, true},
+      {"parrot jpeg", 1.15, 2.0, 512, true},  {"octopus jpeg", 1.3, 1.9, 512, true},
+      {"bug", 1.0, 1.0, 256, false},          {"parrot", 1.0, 1.0, 256, false},
+      {"octopus", 1.0, 1.0, 256, false},      {"bug jpeg", 1.05, 1.3, 256, true},
+      {"parrot jpeg", 1.05, 1.25, 256, true}, {"octopus jpeg", 1.1, 1.25, 256, true},
+  };
+  for (const Measured& m : measured) {
+    CAPTURE(m.name);
+    CAPTURE(m.width);
+    const ChromaGate g = chroma_calibration_gate(m.luma, m.chroma, m.width, 512);
+    CHECK(g.calibrate == m.damaged);
+    CHECK(g.measured_width == m.width);
+    CHECK(g.threshold == kChromaExcessThreshold);
+  }
+  // At the video's own width the σs are taken as measured.
+  CHECK(sigma_at_source(1.7, 512, 512) == doctest::Approx(1.7));
+  CHECK(chroma_calibration_gate(1.2, 2.0, 512, 512).excess == doctest::Approx(0.8));
+  // Blur in quadrature with the loss's σ = 1, scaling with the width: a blur of 1 px at half
+  // the video's width is 2 px at its own, σ sqrt(2) -> sqrt(5); none stays none.
+  CHECK(sigma_at_source(std::sqrt(2.0), 256, 512) == doctest::Approx(std::sqrt(5.0)));
+  CHECK(sigma_at_source(1, 256, 512) == 1.0);
+  // One grid step of chroma at half the width stays below the threshold; a pair one step
+  // above it calibrates; a measurement that says nothing (NaN) calibrates.
+  CHECK_FALSE(chroma_calibration_gate(1.0, 1.05, 256, 512).calibrate);
+  CHECK(chroma_calibration_gate(1.0, 1.45, 512, 512).calibrate);
+  CHECK(chroma_calibration_gate(1.0, std::nan(""), 512, 512).calibrate);
 }
 
 }  // TEST_SUITE

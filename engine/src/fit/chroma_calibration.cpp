@@ -142,4 +142,29 @@ ChromaCalibration calibrate_chroma_weight(ClRuntime& rt, const Scene& scene, con
   return cal;
 }
 
+double sigma_at_source(double sigma, int width, int source_width) {
+  if (!(width > 0 && source_width > 0) || !(sigma > 1)) return sigma;
+  const double scale = static_cast<double>(source_width) / width;
+  return std::sqrt(1 + (sigma * sigma - 1) * scale * scale);
+}
+
+ChromaGate chroma_calibration_gate(double luma_sigma, double chroma_sigma, int width, int source_width,
+                                   double threshold) {
+  ChromaGate g;
+  g.threshold = threshold;
+  g.measured_width = width;
+  g.excess = sigma_at_source(chroma_sigma, width, source_width) - sigma_at_source(luma_sigma, width, source_width);
+  // A NaN excess calibrates (the measurement says nothing).
+  g.calibrate = !(g.excess < threshold);
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "chroma sigma %.2f over luma sigma %.2f at %d px: excess %.2f at the video's %d px, %s %.2f",
+                chroma_sigma, luma_sigma, width, g.excess, source_width, g.calibrate ? "at least" : "below", threshold);
+  g.reason = buf;
+  return g;
+}
+
+ChromaGate chroma_calibration_gate(const BlurMatch& match, int width, int source_width, double threshold) {
+  return chroma_calibration_gate(match.chroma_luma_sigma, match.best_chroma_sigma, width, source_width, threshold);
+}
+
 }  // namespace svgm

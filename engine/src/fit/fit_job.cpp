@@ -262,24 +262,37 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     fine_target = std::move(t);
   };
   // The chroma weight: the job's, or the one under which a still fit of the first frame
-  // drifts least from rest (fit/chroma_calibration.h).
+  // drifts least from rest (fit/chroma_calibration.h), when blur matching has seen the
+  // video's chroma damaged (chroma_calibration_gate; 1 otherwise, without the calibration's
+  // seconds).
   double chroma_weight = job.chroma_weight;
   std::optional<ChromaCalibration> chroma_cal;
+  std::optional<ChromaGate> chroma_gate;
   if (job.chroma_weight_auto) {
+    try {
+      if (refine_w > 0) prepare_fine();
+    } catch (const Error&) {
+      // The refinement will say what is wrong with its target; measure and calibrate at the
+      // fitting width.
+    }
+    // The blur matches above are the gate's measurement (none without blur matching: then
+    // the calibration runs, as it cannot be told the chroma is clean).
+    if (job.blur_matching) {
+      const BlurMatch& m = fine_target ? fine_blur : coarse_blur;
+      chroma_gate = chroma_calibration_gate(m, fine_target ? fine_target->width : target.width, target.source_width);
+      if (!chroma_gate->calibrate) chroma_weight = 1;
+      if (!chroma_gate->calibrate && !job.quiet && !job.progress)
+        log::info("fit: chroma weight 1, not calibrated (%s)", chroma_gate->reason.c_str());
+    }
+  }
+  if (job.chroma_weight_auto && (!chroma_gate || chroma_gate->calibrate)) {
     if (job.progress) job.progress(0, "choosing the chroma weight on the first frame");
     // Never a longer budget than the fit's own (a quick trial fit stays quick).
     ChromaCalibrationOptions co;
     co.iterations = std::min(co.iterations, coarse_options.iterations);
     co.fine_iterations = std::min(co.fine_iterations, std::max(1, refine_iters));
-    std::optional<ChromaStage> fine_stage;
-    try {
-      if (refine_w > 0) {
-        prepare_fine();
-        fine_stage = ChromaStage{&*fine_target, fine_options};
-      }
-    } catch (const Error&) {
-      // The refinement will say what is wrong with its target; calibrate at the fitting width.
-    }
+    const std::optional<ChromaStage> fine_stage =
+        fine_target ? std::optional<ChromaStage>(ChromaStage{&*fine_target, fine_options}) : std::nullopt;
     chroma_cal = calibrate_chroma_weight(rt, fit_scene, ChromaStage{&target, coarse_options},
                                          fine_stage ? &*fine_stage : nullptr, co);
     chroma_weight = chroma_cal->chosen;
@@ -601,6 +614,13 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   // drift from rest in the still fit of the first frame (mean squared RGB difference of the
   // render, and RMS control-point displacement in pixels of the last stage's width).
   report["chroma_weight"] = {{"chosen", chroma_weight}, {"auto", job.chroma_weight_auto}};
+  // With auto: the gate's measurement (chroma σ over render σ, at the video's width), and why
+  // the calibration was skipped when it was.
+  if (chroma_gate) {
+    report["chroma_weight"]["chroma_sigma_excess"] = chroma_gate->excess;
+    report["chroma_weight"]["excess_threshold"] = chroma_gate->threshold;
+    if (!chroma_gate->calibrate) report["chroma_weight"]["skipped"] = chroma_gate->reason;
+  }
   if (chroma_cal) {
     nlohmann::json drift = nlohmann::json::object(), drift_px = nlohmann::json::object();
     for (const ChromaCandidate& c : chroma_cal->candidates) {
