@@ -70,10 +70,21 @@ int cmd_fit(const std::vector<std::string>& argv) {
   job.gate = !a.has("--no-gate");
   job.colour_correction = !a.has("--no-colour-correction");
   job.blur_matching = !a.has("--no-blur-matching");
+  // The chroma weight: auto (fit/chroma_calibration.h) unless a number is given.
+  job.chroma_weight_auto = true;
   if (const auto w = a.get("--chroma-weight")) {
-    job.chroma_weight = a.get_double("--chroma-weight", 1);
-    if (!(job.chroma_weight > 0 && job.chroma_weight <= 1))
-      throw Error("fit: --chroma-weight must be a number in (0, 1], not '" + *w + "'");
+    job.chroma_weight_auto = *w == "auto";
+    if (!job.chroma_weight_auto) {
+      // One line for anything else than auto or a number in (0, 1] ("2", "abc", "nan").
+      double v = 0;
+      try {
+        v = a.get_double("--chroma-weight", 1);
+      } catch (const Error&) {
+        v = 0;
+      }
+      if (!(v > 0 && v <= 1)) throw Error("fit: --chroma-weight must be auto or a number in (0, 1], not '" + *w + "'");
+      job.chroma_weight = v;
+    }
   }
   job.stabilise = a.has("--stabilise");
   job.decimals = a.get_int("--precision", kDefaultDecimals, 0, kMaxDecimals);

@@ -103,9 +103,12 @@ Fits the SVG's paths to a target video (mp4, webm, avi, mov, or a folder of numb
   --no-blur-matching     blur the drawing in the loss as the paper does, even when the video is
                          softer (default: the video's blur, measured on its first frame against
                          the drawing at rest, is matched)
-  --chroma-weight W      how much an error of colour alone (chroma) counts in the loss against
-                         one of brightness (luma), in (0, 1] (default 1; codecs keep chroma at
-                         a quarter of the resolution and quantise it harder)
+  --chroma-weight auto|W how much an error of colour alone (chroma) counts in the loss against
+                         one of brightness (luma), in (0, 1]; codecs keep chroma at a quarter
+                         of the resolution and quantise it harder (default auto: 1 unless the
+                         first frame's chroma is visibly softer than its luma; then the weight
+                         of 1, 0.5, 0.25 under which a short fit of the first frame, the drawing
+                         at rest, drifts least from rest; 1 unless another is clearly better)
   --no-gate              write animation.svg even when the result gate rejects the fit
   --resume               continue from OUT_DIR/checkpoint.bin
   --no-track             no optical-flow warm start of new keyframes

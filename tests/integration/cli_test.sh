@@ -49,6 +49,10 @@ bad_input)
   expect_error "bad --size" "--size" "$tmp/o10.png" render "$data/examples/man.svg" -o "$tmp/o10.png" --size 0
   expect_error "unwritable output" "nodir" "$tmp/nodir/x.png" render "$data/examples/man.svg" -o "$tmp/nodir/x.png"
   expect_error "unknown device" "--device" "$tmp/o11.png" render "$data/examples/man.svg" -o "$tmp/o11.png" --device nosuchdevice
+  for w in 2 abc 0 nan; do
+    expect_error "fit --chroma-weight $w is one line" "svgmotion: fit: --chroma-weight must be auto or a number in (0, 1], not '$w'" \
+      "$tmp/cw_$w" fit "$data/examples/man.svg" --target "$data/examples/man.svg" -o "$tmp/cw_$w" --chroma-weight "$w"
+  done
   # The output path must be a regular file (or absent): a FIFO or a folder is refused and stays.
   # (Only files of our own: a broken writer must not get the chance to replace a real device.)
   mkfifo "$tmp/fifo.png"

@@ -17,6 +17,7 @@
 #include "export/lottie_writer.h"
 #include "fit/blur_match.h"
 #include "fit/checkpoint.h"
+#include "fit/chroma_calibration.h"
 #include "fit/correction_palette.h"
 #include "fit/document_order.h"
 #include "fit/group_transform.h"
@@ -241,7 +242,69 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   const BlurMatch coarse_blur = match_blur(target, size);
   coarse_options.render_blur_sigma = coarse_blur.render_sigma;
   coarse_options.chroma_blur_sigma = coarse_blur.chroma_sigma;
-  coarse_options.chroma_weight = job.chroma_weight;
+  // The refinement's target and options (its chroma weight is set below), made on first use:
+  // before the coarse fit when the chroma weight's calibration mirrors the refinement too.
+  std::optional<TargetFrames> fine_target;
+  BlurMatch fine_blur;
+  FitOptions fine_options;
+  auto prepare_fine = [&] {
+    if (fine_target) return;
+    const RenderSize fine_size = render_size(scene, refine_w);
+    TargetFrames t = load_target(*target_path, fine_size.width, fine_size.height, to);
+    fine_options = fo.refined_at(static_cast<double>(fine_size.width) / size.width);
+    fine_options.held_groups = held_groups;
+    fine_options.known_body = known.body;
+    fine_options.known_maps = known.maps;
+    fine_options.iterations = refine_iters;
+    fine_blur = match_blur(t, fine_size);
+    fine_options.render_blur_sigma = fine_blur.render_sigma;
+    fine_options.chroma_blur_sigma = fine_blur.chroma_sigma;
+    fine_target = std::move(t);
+  };
+  // The chroma weight: the job's, or the one under which a still fit of the first frame
+  // drifts least from rest (fit/chroma_calibration.h), when blur matching has seen the
+  // video's chroma damaged (chroma_calibration_gate; 1 otherwise, without the calibration's
+  // seconds).
+  double chroma_weight = job.chroma_weight;
+  std::optional<ChromaCalibration> chroma_cal;
+  std::optional<ChromaGate> chroma_gate;
+  if (job.chroma_weight_auto) {
+    try {
+      if (refine_w > 0) prepare_fine();
+    } catch (const Error&) {
+      // The refinement will say what is wrong with its target; measure and calibrate at the
+      // fitting width.
+    }
+    // The blur matches above are the gate's measurement (none without blur matching: then
+    // the calibration runs, as it cannot be told the chroma is clean).
+    if (job.blur_matching) {
+      const BlurMatch& m = fine_target ? fine_blur : coarse_blur;
+      chroma_gate = chroma_calibration_gate(m, fine_target ? fine_target->width : target.width, target.source_width);
+      if (!chroma_gate->calibrate) chroma_weight = 1;
+      if (!chroma_gate->calibrate && !job.quiet && !job.progress)
+        log::info("fit: chroma weight 1, not calibrated (%s)", chroma_gate->reason.c_str());
+    }
+  }
+  if (job.chroma_weight_auto && (!chroma_gate || chroma_gate->calibrate)) {
+    if (job.progress) job.progress(0, "choosing the chroma weight on the first frame");
+    // Never a longer budget than the fit's own (a quick trial fit stays quick).
+    ChromaCalibrationOptions co;
+    co.iterations = std::min(co.iterations, coarse_options.iterations);
+    co.fine_iterations = std::min(co.fine_iterations, std::max(1, refine_iters));
+    const std::optional<ChromaStage> fine_stage =
+        fine_target ? std::optional<ChromaStage>(ChromaStage{&*fine_target, fine_options}) : std::nullopt;
+    chroma_cal = calibrate_chroma_weight(rt, fit_scene, ChromaStage{&target, coarse_options},
+                                         fine_stage ? &*fine_stage : nullptr, co);
+    chroma_weight = chroma_cal->chosen;
+    std::string drifts;
+    for (const ChromaCandidate& c : chroma_cal->candidates)
+      drifts += (drifts.empty() ? "" : ", ") + fmt("%.3g at %g", 1e6 * c.drift, c.weight);
+    if (!chroma_cal->note.empty()) log::warning("fit: chroma weight: %s", chroma_cal->note.c_str());
+    else if (!job.quiet && !job.progress)
+      log::info("fit: chroma weight %g, chosen on the first frame in %.1fs (its still fit's drift from rest, x1e-6: %s)",
+                chroma_weight, chroma_cal->seconds, drifts.c_str());
+  }
+  coarse_options.chroma_weight = chroma_weight;
   Fitter fitter(rt, fit_scene, target, coarse_options);
   log::debug("fit: %s: %d keyframes of %d frames (%.3g fps) at %dx%d; %d paths in %d groups, %d control points; "
              "%d iterations on %s",
@@ -385,23 +448,13 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   }
   // The refinement: every keyframe at the finer width, from the coarse result (not
   // checkpointed: a resumed fit redoes it from the coarse stage's last checkpoint).
-  std::optional<TargetFrames> fine_target;
   std::unique_ptr<Fitter> fine;
   std::vector<int> refine_kept_coarse;  // keyframes the refinement's guard put back
   std::vector<float> refine_loss_ratio;  // per keyframe: refined / coarse loss at the coarse width
-  BlurMatch fine_blur;
   if (refine_w > 0 && !stopped) {
     const RenderSize fine_size = render_size(scene, refine_w);
-    fine_target = load_target(*target_path, fine_size.width, fine_size.height, to);
-    FitOptions fine_options = fo.refined_at(static_cast<double>(fine_size.width) / size.width);
-    fine_options.held_groups = held_groups;
-    fine_options.known_body = known.body;
-    fine_options.known_maps = known.maps;
-    fine_options.iterations = refine_iters;
-    fine_blur = match_blur(*fine_target, fine_size);
-    fine_options.render_blur_sigma = fine_blur.render_sigma;
-    fine_options.chroma_blur_sigma = fine_blur.chroma_sigma;
-    fine_options.chroma_weight = job.chroma_weight;
+    prepare_fine();
+    fine_options.chroma_weight = chroma_weight;
     fine = std::make_unique<Fitter>(rt, fit_scene, *fine_target, fine_options);
     const double scale = static_cast<double>(fine_size.width) / size.width;
     fine->adopt_coarse(fitter, scale);
@@ -438,7 +491,9 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   const TargetFrames& final_target = fine ? *fine_target : target;
   const RenderSize final_size = fine ? render_size(scene, refine_w) : size;
   if (tty) std::fputc('\n', stderr);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // The fit's seconds include the chroma weight's calibration before it.
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() +
+                         (chroma_cal ? chroma_cal->seconds : 0);
 
   // Outputs: the animation in the original colours, the preview, a small report.
   const auto points = final_fit.keyframe_points_canvas();
@@ -558,6 +613,28 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     report["target_frames"]["max_shake_removed_px"] = target.max_shake_px;
     report["target_frames"]["shake_model"] = target.shake_model;
     report["target_frames"]["still_share"] = target.still_share;
+  }
+  // The chroma weight fitted with; with --chroma-weight auto, what chose it: each candidate's
+  // drift from rest in the still fit of the first frame (mean squared RGB difference of the
+  // render, and RMS control-point displacement in pixels of the last stage's width).
+  report["chroma_weight"] = {{"chosen", chroma_weight}, {"auto", job.chroma_weight_auto}};
+  // With auto: the gate's measurement (chroma σ over render σ, at the video's width), and why
+  // the calibration was skipped when it was.
+  if (chroma_gate) {
+    report["chroma_weight"]["chroma_sigma_excess"] = chroma_gate->excess;
+    report["chroma_weight"]["excess_threshold"] = chroma_gate->threshold;
+    if (!chroma_gate->calibrate) report["chroma_weight"]["skipped"] = chroma_gate->reason;
+  }
+  if (chroma_cal) {
+    nlohmann::json drift = nlohmann::json::object(), drift_px = nlohmann::json::object();
+    for (const ChromaCandidate& c : chroma_cal->candidates) {
+      drift[fmt("%g", c.weight)] = c.drift;
+      drift_px[fmt("%g", c.weight)] = c.drift_px;
+    }
+    report["chroma_weight"]["drift"] = std::move(drift);
+    report["chroma_weight"]["drift_px"] = std::move(drift_px);
+    report["chroma_weight"]["calibration_seconds"] = chroma_cal->seconds;
+    if (!chroma_cal->note.empty()) report["chroma_weight"]["note"] = chroma_cal->note;
   }
   if (fine)
     report["refined"] = {{"size", {W, H}},

@@ -87,6 +87,9 @@ struct FitJob {
   // How much a residual of chroma alone counts in the loss against one of luma (kernels/
   // loss.cl's loss_metric), in (0, 1]; 1: the plain squared error.
   double chroma_weight = 1;
+  // Choose chroma_weight from the video's first frame instead (fit/chroma_calibration.h):
+  // `svgmotion fit`'s default; the pipeline's fitter keeps 1.
+  bool chroma_weight_auto = false;
   // Remove camera shake from the video before sampling it (target_video.h).
   bool stabilise = false;
   double mask_threshold = 0.97;
