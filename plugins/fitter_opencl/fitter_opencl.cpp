@@ -56,6 +56,13 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   job.loop = svgm::parse_loop_mode(c.value("loop", "loop"), "stages.fitter.loop");
   job.gate = c.value("gate", true);
   job.stabilise = c.value("stabilise", false);
+  // chroma_weight: auto (the default: calibrated only when the video's chroma is softer than
+  // its luma, a codec's damage; a clean render keeps 1) or a number in (0, 1].
+  const nlohmann::json cw = c.value("chroma_weight", nlohmann::json("auto"));
+  job.chroma_weight_auto = cw.is_string();
+  if (cw.is_string() && cw.get<std::string>() != "auto")
+    throw std::runtime_error("stages.fitter.chroma_weight must be auto or a number in (0, 1], not '" + cw.get<std::string>() + "'");
+  if (cw.is_number()) job.chroma_weight = cw.get<double>();
   job.decimals = c.value("precision", svgm::kDefaultDecimals);
   job.inbetweens = c.value("inbetweens", job.inbetweens);
   job.group_transforms = c.value("group_transforms", false);

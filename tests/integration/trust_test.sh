@@ -105,6 +105,8 @@ bad_setting size "stages.fitter.size: must be a whole number from 32 to 4096, no
 bad_setting small_size "stages.fitter.size: must be a whole number from 32 to 4096, not 8" stages.fitter.size=8
 bad_setting keyframes "stages.fitter.keyframes: must be a whole number from 2 to 1000, not 1" stages.fitter.keyframes=1
 bad_setting mask "stages.fitter.mask_threshold: must be a number in (0, 1]" stages.fitter.mask_threshold=1.5
+bad_setting chroma "stages.fitter.chroma_weight: must be auto or a number in (0, 1], not 2" stages.fitter.chroma_weight=2
+bad_setting chroma_word "stages.fitter.chroma_weight: must be auto or a number in (0, 1], not often" stages.fitter.chroma_weight=often
 bad_setting device "device: no OpenCL device matches" --device nosuchdevice
 bad_setting bare_key "'stages.fitter.iterations' is not a config file; a setting needs a value" stages.fitter.iterations
 bad_setting from "--from fittr: no such stage" --from fittr
