@@ -32,7 +32,7 @@ for svg in "${svgs[@]}"; do
   [[ -f $dir/target.mp4 ]] || $py "$here/nonrigid_target.py" "$svg" "$dir" --size "$vsize" --hires 1024 \
     --hold "$hold" ${defect:+--degrade $defect} >/dev/null 2>&1
   # The judge compares with clean frames at 256 px (the fit's size) and 1024 px.
-  if [[ ! -d $dir/clean256 ]]; then
+  if [[ ! -d $dir/clean_video ]]; then  # once: clean/ becomes the 256-px frames, the video-size ones move aside
     $py - "$dir" <<'PY'
 import sys, os, cv2
 d = sys.argv[1]
