@@ -197,6 +197,17 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   const TargetFrames target = load_target(*target_path, size.width, size.height, to);
   for (const std::string& w : target_warnings(target, *target_path, size))
     log::warning("%s", w.c_str());
+  // Which prior told the shake from the motion matters to the user: a figure with nothing
+  // still keeps about a third of a 1-2 px shake (fit/stabilise.h).
+  if (job.stabilise && !job.quiet && !job.progress) {
+    if (target.shake_model == "smooth")
+      log::info("fit: camera shake of up to %.2f px (fitting width) removed (nothing in the figure holds still: told from the motion by its "
+                "smoothness alone, some of it stays)", target.max_shake_px);
+    else
+      log::info("fit: camera shake of up to %.2f px (fitting width) removed (read off the part that holds still, %.0f%% of the edges%s)",
+                target.max_shake_px, 100 * target.still_share,
+                target.shake_model == "still_smooth" ? "; its own slow course is kept" : "");
+  }
 
   std::error_code ec;
   fs::create_directories(out, ec);
