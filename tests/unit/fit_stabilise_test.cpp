@@ -212,6 +212,15 @@ TEST_CASE("stabilise: load_target's keyframes of a shaking clip come back close 
   }
   MESSAGE("mean |keyframe - clean|: " << err_plain << " as decoded, " << err_steady << " stabilised");
   CHECK(err_steady < 0.5 * err_plain);
+
+  // A second load (the refinement's) reuses the first load's camera path: the same shake for
+  // every frame and the same keyframes, without measuring again.
+  REQUIRE(steady.frame_shake.size() == N);
+  opt.shake_from = &steady;
+  const TargetFrames again = load_target(dir.path, kW, kH, opt);
+  CHECK(again.frame_shake == steady.frame_shake);
+  CHECK(again.shake_model == steady.shake_model);
+  CHECK(again.raw == steady.raw);
 }
 
 }  // TEST_SUITE

@@ -15,6 +15,8 @@
 
 namespace svgm {
 
+struct TargetFrames;
+
 struct TargetOptions {
   int keyframes = 15;            // K: uniformly sampled frames, first and last included
   // A pixel is foreground when a channel differs from the frame's background colour by more
@@ -50,6 +52,9 @@ struct TargetOptions {
   // parabola now, which follows a sway's turns: 5 frames (0.2 s) left 0.53-0.59 px (at 512 px)
   // of the non-rigid targets' 1-2 px shake where the straight line over 3 frames left 0.57-0.98.
   double stabilise_sigma_s = 0.2;
+  // An earlier load of the same source with `stabilise` on (the fit's coarse width, when the
+  // refinement loads the clip again at its own): its camera path is reused, not measured twice.
+  const TargetFrames* shake_from = nullptr;
 };
 
 struct TargetFrames {
@@ -64,6 +69,7 @@ struct TargetFrames {
   int colour_corrected = 0;       // keyframes whose colours were corrected
   double max_shake_px = 0;        // largest shake removed from a keyframe, target pixels
   std::string shake_model;        // how shake was told from motion (ShakeEstimate::model)
+  std::vector<std::array<double, 2>> frame_shake;  // every source frame's shake, its own pixels
   double still_share = 0;         // the still part's share of the first frame's edges
   // K*H*W*4, row-major per keyframe: the cleaned target, straight RGB in [0,1], A = 1; pixels
   // outside the dilated mask are exactly white (1, 1, 1).

@@ -261,7 +261,9 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   auto prepare_fine = [&] {
     if (fine_target) return;
     const RenderSize fine_size = render_size(scene, refine_w);
-    TargetFrames t = load_target(*target_path, fine_size.width, fine_size.height, to);
+    TargetOptions fine_to = to;
+    if (to.stabilise) fine_to.shake_from = &target;  // the camera path of the first load
+    TargetFrames t = load_target(*target_path, fine_size.width, fine_size.height, fine_to);
     fine_options = fo.refined_at(static_cast<double>(fine_size.width) / size.width);
     fine_options.held_groups = held_groups;
     fine_options.known_body = known.body;

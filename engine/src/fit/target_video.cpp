@@ -461,6 +461,7 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   // Sampled frames go straight to `raw`, or, when stabilising, wait for the whole clip's
   // camera path (kept at their own size, K frames at most).
   ShakeEstimator shake(kShakeMeasureWidth);
+  const bool measure_shake = options.stabilise && !options.shake_from;  // every frame decoded
   std::vector<cv::Mat> kept(static_cast<size_t>(K));
   std::vector<int> kept_index(static_cast<size_t>(K), 0);
   auto keep = [&](int k, int frame_index, cv::Mat frame) {
@@ -472,7 +473,7 @@ TargetFrames load_target(const fs::path& source, int width, int height,
     // The sampled frames; every frame once when stabilising (each shows the camera's path).
     for (int i = 0, k = 0; i < N && k < K; ++i) {
       const bool sampled = i == t.source_index[static_cast<size_t>(k)];
-      if (!sampled && !options.stabilise) {
+      if (!sampled && !measure_shake) {
         i = t.source_index[static_cast<size_t>(k)] - 1;  // straight to the next sampled frame
         continue;
       }
@@ -487,7 +488,7 @@ TargetFrames load_target(const fs::path& source, int width, int height,
       if (img.cols != folder.width || img.rows != folder.height)
         fail(file, "decodes to " + size_text(img.cols, img.rows) + ", but its header says " +
                        size_text(folder.width, folder.height));
-      if (options.stabilise) shake.add(img);
+      if (measure_shake) shake.add(img);
       if (sampled) keep(k++, i, std::move(img));
     }
   } else {
@@ -502,11 +503,11 @@ TargetFrames load_target(const fs::path& source, int width, int height,
       for (int i = 0; i < N && k < K; ++i) {
         if (!cap.grab()) fail(source, "frame " + std::to_string(i) + " cannot be read");
         const bool sampled = i == t.source_index[static_cast<size_t>(k)];
-        if (!sampled && !options.retime_held_frames && !options.stabilise) continue;
+        if (!sampled && !options.retime_held_frames && !measure_shake) continue;
         cv::Mat frame;
         if (!cap.retrieve(frame) || frame.empty())
           fail(source, "frame " + std::to_string(i) + " cannot be decoded");
-        if (options.stabilise) shake.add(frame);
+        if (measure_shake) shake.add(frame);
         if (options.retime_held_frames) {
           cv::Mat thumb = held_frame_thumbnail(frame);
           if (!prev_thumb.empty() && same_frame(thumb, prev_thumb)) ++t.held_frames;
@@ -525,12 +526,18 @@ TargetFrames load_target(const fs::path& source, int width, int height,
     }
   }
   if (options.stabilise) {
-    const ShakeEstimate est = shake.estimate(options.stabilise_sigma_s * t.fps);
-    const auto& shakes = est.shake;
-    t.shake_model = est.model;
-    t.still_share = est.still_share;
+    if (options.shake_from) {
+      t.frame_shake = options.shake_from->frame_shake;
+      t.shake_model = options.shake_from->shake_model;
+      t.still_share = options.shake_from->still_share;
+    } else {
+      ShakeEstimate est = shake.estimate(options.stabilise_sigma_s * t.fps);
+      t.frame_shake = std::move(est.shake);
+      t.shake_model = est.model;
+      t.still_share = est.still_share;
+    }
     for (int k = 0; k < K; ++k) {
-      const auto& d = shakes[static_cast<size_t>(kept_index[static_cast<size_t>(k)])];
+      const auto& d = t.frame_shake.at(static_cast<size_t>(kept_index[static_cast<size_t>(k)]));
       const double fit_px = std::hypot(d[0], d[1]) * width / std::max(1, t.source_width);
       t.max_shake_px = std::max(t.max_shake_px, fit_px);
       store_raw(remove_shake(kept[static_cast<size_t>(k)], d), k, width, height, t.raw);
