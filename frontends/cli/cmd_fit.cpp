@@ -43,7 +43,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
   const Args a = parse_args("fit", argv,
                             {"--target", "-o", "--output", "--iterations", "--keyframes", "--size",
                              "--palette", "--device", "--mask-threshold", "--loop", "--deform", "--refine-size",
-                             "--precision", "--inbetweens", "--max-segment", "--chroma-weight"},
+                             "--precision", "--inbetweens", "--max-segment", "--chroma-weight", "--denoise"},
                             {"--resume", "--no-track", "--no-gate", "--no-colour-correction", "--no-blur-matching", "--stabilise",
                              "--group-transforms", "--all-iterations"});
   if (a.positional.size() != 1)
@@ -87,6 +87,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
     }
   }
   job.stabilise = a.has("--stabilise");
+  job.denoise_radius = a.get_int("--denoise", job.denoise_radius, 0, kMaxDenoiseRadius);
   job.decimals = a.get_int("--precision", kDefaultDecimals, 0, kMaxDecimals);
   job.inbetweens = a.get_int("--inbetweens", job.inbetweens, 0, kMaxInbetweens);
   job.group_transforms = a.has("--group-transforms");

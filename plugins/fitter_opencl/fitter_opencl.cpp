@@ -56,6 +56,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   job.loop = svgm::parse_loop_mode(c.value("loop", "loop"), "stages.fitter.loop");
   job.gate = c.value("gate", true);
   job.stabilise = c.value("stabilise", false);
+  job.denoise_radius = c.value("denoise", job.denoise_radius);
   // chroma_weight: auto (the default: calibrated only when the video's chroma is softer than
   // its luma, a codec's damage; a clean render keeps 1) or a number in (0, 1].
   const nlohmann::json cw = c.value("chroma_weight", nlohmann::json("auto"));

@@ -53,6 +53,10 @@ bad_input)
     expect_error "fit --chroma-weight $w is one line" "svgmotion: fit: --chroma-weight must be auto or a number in (0, 1], not '$w'" \
       "$tmp/cw_$w" fit "$data/examples/man.svg" --target "$data/examples/man.svg" -o "$tmp/cw_$w" --chroma-weight "$w"
   done
+  for r in 9 x; do
+    expect_error "fit --denoise $r is one line" "svgmotion: --denoise wants an integer in 0..4, got '$r'" \
+      "$tmp/dn_$r" fit "$data/examples/man.svg" --target "$data/examples/man.svg" -o "$tmp/dn_$r" --denoise "$r"
+  done
   # The output path must be a regular file (or absent): a FIFO or a folder is refused and stays.
   # (Only files of our own: a broken writer must not get the chance to replace a real device.)
   mkfifo "$tmp/fifo.png"

@@ -107,6 +107,7 @@ bad_setting keyframes "stages.fitter.keyframes: must be a whole number from 2 to
 bad_setting mask "stages.fitter.mask_threshold: must be a number in (0, 1]" stages.fitter.mask_threshold=1.5
 bad_setting chroma "stages.fitter.chroma_weight: must be auto or a number in (0, 1], not 2" stages.fitter.chroma_weight=2
 bad_setting chroma_word "stages.fitter.chroma_weight: must be auto or a number in (0, 1], not often" stages.fitter.chroma_weight=often
+bad_setting denoise "stages.fitter.denoise: must be a whole number from 0 to 4, not 7" stages.fitter.denoise=7
 bad_setting device "device: no OpenCL device matches" --device nosuchdevice
 bad_setting bare_key "'stages.fitter.iterations' is not a config file; a setting needs a value" stages.fitter.iterations
 bad_setting from "--from fittr: no such stage" --from fittr

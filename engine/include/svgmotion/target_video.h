@@ -52,6 +52,11 @@ struct TargetOptions {
   // parabola now, which follows a sway's turns: 5 frames (0.2 s) left 0.53-0.59 px (at 512 px)
   // of the non-rigid targets' 1-2 px shake where the straight line over 3 frames left 0.57-0.98.
   double stabilise_sigma_s = 0.2;
+  // Codec noise (blocking, ringing, smeared colour) averaged away: each sampled frame becomes
+  // the average of itself and its `denoise_radius` neighbours on either side, warped onto it by
+  // optical flow, each pixel of a neighbour weighted by how well it agrees (fit/temporal_denoise.h).
+  // Done at the frames' size, at most twice the target width. 0: the frames as decoded.
+  int denoise_radius = 0;
   // An earlier load of the same source with `stabilise` on (the fit's coarse width, when the
   // refinement loads the clip again at its own): its camera path is reused, not measured twice.
   const TargetFrames* shake_from = nullptr;
@@ -71,6 +76,7 @@ struct TargetFrames {
   std::string shake_model;        // how shake was told from motion (ShakeEstimate::model)
   std::vector<std::array<double, 2>> frame_shake;  // every source frame's shake, its own pixels
   double still_share = 0;         // the still part's share of the first frame's edges
+  double denoise_seconds = 0;     // spent averaging keyframes with their neighbours (denoise_radius)
   // K*H*W*4, row-major per keyframe: the cleaned target, straight RGB in [0,1], A = 1; pixels
   // outside the dilated mask are exactly white (1, 1, 1).
   std::vector<float> rgba;

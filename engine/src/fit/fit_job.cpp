@@ -162,6 +162,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   to.keyframes = keyframes;
   to.white_threshold = job.mask_threshold;
   to.stabilise = job.stabilise;
+  to.denoise_radius = job.denoise_radius;
   ClRuntime rt(job.device);
   // The colours the target should show: the fitted scene's opaque flat fills and strokes; none
   // (no correction) when gradients cover much of the drawing (fit/correction_palette.h).
@@ -622,6 +623,9 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   // The chroma σ in YCbCr (= the render σ unless the video's chroma was found softer).
   report["target_frames"]["chroma_sigma"] = coarse_blur.chroma_sigma;
   if (fine) report["target_frames"]["refine_chroma_sigma"] = fine_blur.chroma_sigma;
+  // Codec noise: each keyframe averaged with this many flow-aligned neighbours either side.
+  report["target_frames"]["denoise_radius"] = job.denoise_radius;
+  report["target_frames"]["denoise_seconds"] = target.denoise_seconds + (fine_target ? fine_target->denoise_seconds : 0.0);
   if (job.stabilise) {
     report["target_frames"]["max_shake_removed_px"] = target.max_shake_px;
     report["target_frames"]["shake_model"] = target.shake_model;

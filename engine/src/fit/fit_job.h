@@ -32,6 +32,10 @@ namespace svgm {
 
 // More in-betweens than this add nothing a viewer sees (targets have a few frames per keyframe).
 constexpr int kMaxInbetweens = 16;
+// Codec noise: each keyframe averaged with this many flow-aligned neighbours on either side
+// (fit/temporal_denoise.h), and the most `fit --denoise` / stages.fitter.denoise accept.
+constexpr int kDefaultDenoiseRadius = 2;
+constexpr int kMaxDenoiseRadius = 4;
 
 struct FitJob {
   std::filesystem::path svg, target, out;
@@ -92,6 +96,9 @@ struct FitJob {
   bool chroma_weight_auto = false;
   // Remove camera shake from the video before sampling it (target_video.h).
   bool stabilise = false;
+  // Average each sampled frame with this many flow-aligned neighbours on either side
+  // (TargetOptions::denoise_radius; 0: off).
+  int denoise_radius = kDefaultDenoiseRadius;
   double mask_threshold = 0.97;
   bool resume = false;
   // Resume from out/checkpoint.bin when it holds an unfinished fit of exactly this problem

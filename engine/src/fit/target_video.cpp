@@ -7,6 +7,7 @@
 
 #include "fit/colour_correction.h"
 #include "fit/stabilise.h"
+#include "fit/temporal_denoise.h"
 #include "image/video_capture.h"
 
 #include <opencv2/core.hpp>
@@ -231,9 +232,9 @@ cv::Mat resize_to(const cv::Mat& rgb, int width, int height) {
   return out;
 }
 
-// Stores a decoded frame as keyframe k of `raw` (RGBA float, A = 1).
-void store_raw(const cv::Mat& decoded, int k, int width, int height, std::vector<float>& raw) {
-  const cv::Mat rgb = resize_to(to_rgb_float(decoded), width, height);
+// Stores an RGB float frame (any size) as keyframe k of `raw` (RGBA float, A = 1).
+void store_rgb(const cv::Mat& rgb_any_size, int k, int width, int height, std::vector<float>& raw) {
+  const cv::Mat rgb = resize_to(rgb_any_size, width, height);
   float* dst = raw.data() + static_cast<size_t>(k) * width * height * 4;
   for (int y = 0; y < height; ++y) {
     const float* s = rgb.ptr<float>(y);
@@ -244,6 +245,11 @@ void store_raw(const cv::Mat& decoded, int k, int width, int height, std::vector
       dst[3] = 1.0f;
     }
   }
+}
+
+// Stores a decoded frame as keyframe k of `raw`.
+void store_raw(const cv::Mat& decoded, int k, int width, int height, std::vector<float>& raw) {
+  store_rgb(to_rgb_float(decoded), k, width, height, raw);
 }
 
 }  // namespace
@@ -464,19 +470,35 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   const bool measure_shake = options.stabilise && !options.shake_from;  // every frame decoded
   std::vector<cv::Mat> kept(static_cast<size_t>(K));
   std::vector<int> kept_index(static_cast<size_t>(K), 0);
+  // Denoised frames are RGB float at the working size (at most twice the target's width);
+  // without denoising, kept frames are as decoded.
+  const bool denoise = options.denoise_radius > 0;
+  const int work_w = std::min(info.width, 2 * width);
+  const cv::Size work(work_w, std::max(1, static_cast<int>(std::lround(double(info.height) * work_w / info.width))));
   auto keep = [&](int k, int frame_index, cv::Mat frame) {
-    if (!options.stabilise) return store_raw(frame, k, width, height, t.raw);
+    if (!options.stabilise)
+      return denoise ? store_rgb(frame, k, width, height, t.raw) : store_raw(frame, k, width, height, t.raw);
     kept[static_cast<size_t>(k)] = std::move(frame);
     kept_index[static_cast<size_t>(k)] = frame_index;
   };
+  // Denoising, the sampled frames wait in the denoiser until their later neighbours are decoded
+  // and come back in order, the j-th one keyframe j.
+  TemporalDenoiser denoiser(options.denoise_radius, t.source_index);
+  int denoised_k = 0;
+  auto near_sample = [&](int i) { return denoise && denoiser.needs(i); };
+  auto deliver = [&](int k, int i, bool sampled, const cv::Mat& frame) {
+    if (!denoise) {
+      if (sampled) keep(k, i, options.stabilise ? frame.clone() : frame);
+      return;
+    }
+    for (auto& [index, avg] : denoiser.push(i, resize_to(to_rgb_float(frame), work.width, work.height)))
+      keep(denoised_k++, index, std::move(avg));
+  };
   if (is_folder) {
     // The sampled frames; every frame once when stabilising (each shows the camera's path).
-    for (int i = 0, k = 0; i < N && k < K; ++i) {
-      const bool sampled = i == t.source_index[static_cast<size_t>(k)];
-      if (!sampled && !measure_shake) {
-        i = t.source_index[static_cast<size_t>(k)] - 1;  // straight to the next sampled frame
-        continue;
-      }
+    for (int i = 0, k = 0; i < N && (k < K || near_sample(i)); ++i) {
+      const bool sampled = k < K && i == t.source_index[static_cast<size_t>(k)];
+      if (!sampled && !measure_shake && !near_sample(i)) continue;  // not read
       const fs::path& file = folder.frames[static_cast<size_t>(i)].path;
       cv::Mat img;
       try {
@@ -489,7 +511,8 @@ TargetFrames load_target(const fs::path& source, int width, int height,
         fail(file, "decodes to " + size_text(img.cols, img.rows) + ", but its header says " +
                        size_text(folder.width, folder.height));
       if (measure_shake) shake.add(img);
-      if (sampled) keep(k++, i, std::move(img));
+      deliver(k, i, sampled, img);
+      if (sampled) ++k;
     }
   } else {
     // Second pass: sequential reads (seeking is unreliable across codecs), decoding only the
@@ -500,10 +523,10 @@ TargetFrames load_target(const fs::path& source, int width, int height,
     int k = 0, run_start = 0;
     cv::Mat prev_thumb;
     try {
-      for (int i = 0; i < N && k < K; ++i) {
+      for (int i = 0; i < N && (k < K || near_sample(i)); ++i) {
         if (!cap.grab()) fail(source, "frame " + std::to_string(i) + " cannot be read");
-        const bool sampled = i == t.source_index[static_cast<size_t>(k)];
-        if (!sampled && !options.retime_held_frames && !measure_shake) continue;
+        const bool sampled = k < K && i == t.source_index[static_cast<size_t>(k)];
+        if (!sampled && !options.retime_held_frames && !measure_shake && !near_sample(i)) continue;
         cv::Mat frame;
         if (!cap.retrieve(frame) || frame.empty())
           fail(source, "frame " + std::to_string(i) + " cannot be decoded");
@@ -514,8 +537,8 @@ TargetFrames load_target(const fs::path& source, int width, int height,
           else run_start = i;
           prev_thumb = thumb;
         }
+        if (sampled || near_sample(i)) deliver(k, i, sampled, frame);
         if (!sampled) continue;
-        keep(k, i, options.stabilise ? frame.clone() : frame);
         // A repeat shows the pose of the run's first frame: time the keyframe there (never at
         // or before the previous keyframe, so times stay increasing).
         if (k > 0 && run_start > t.source_index[static_cast<size_t>(k - 1)]) t.source_index[static_cast<size_t>(k)] = run_start;
@@ -524,6 +547,11 @@ TargetFrames load_target(const fs::path& source, int width, int height,
     } catch (const cv::Exception&) {
       fail(source, "not a readable video");
     }
+  }
+  if (denoise) {
+    for (auto& [index, avg] : denoiser.finish()) keep(denoised_k++, index, std::move(avg));
+    t.denoise_seconds = denoiser.seconds();
+    if (denoised_k != K) throw Error("internal: " + std::to_string(denoised_k) + " of " + std::to_string(K) + " keyframes denoised");
   }
   if (options.stabilise) {
     if (options.shake_from) {
@@ -540,7 +568,12 @@ TargetFrames load_target(const fs::path& source, int width, int height,
       const auto& d = t.frame_shake.at(static_cast<size_t>(kept_index[static_cast<size_t>(k)]));
       const double fit_px = std::hypot(d[0], d[1]) * width / std::max(1, t.source_width);
       t.max_shake_px = std::max(t.max_shake_px, fit_px);
-      store_raw(remove_shake(kept[static_cast<size_t>(k)], d), k, width, height, t.raw);
+      if (!denoise) {
+        store_raw(remove_shake(kept[static_cast<size_t>(k)], d), k, width, height, t.raw);
+        continue;
+      }
+      const double s = double(work.width) / t.source_width;  // denoised frames: working size
+      store_rgb(remove_shake(kept[static_cast<size_t>(k)], {d[0] * s, d[1] * s}), k, width, height, t.raw);
     }
   }
   for (int k = 0; k < K; ++k) {

@@ -118,6 +118,7 @@ void check_config(const nlohmann::json& c, const PluginHost& host) {
   whole(c, "stages.fitter.precision", 0, 6);  // kMaxDecimals (smil_writer.h)
   whole(c, "stages.fitter.inbetweens", 0, 16);  // kMaxInbetweens (fit_job.h)
   real(c, "stages.fitter.max_segment", 0, 1, false);
+  whole(c, "stages.fitter.denoise", 0, 4);  // kMaxDenoiseRadius (fit_job.h)
   if (const nlohmann::json& w = at(c, "stages.fitter.chroma_weight"); !w.is_null() && !(w.is_string() && w.get<std::string>() == "auto")) {
     const double x = w.is_number() ? w.get<double>() : NAN;
     if (!(std::isfinite(x) && x > 0 && x <= 1))
