@@ -515,10 +515,9 @@ TargetFrames load_target(const fs::path& source, int width, int height,
       if (sampled) ++k;
     }
   } else {
-    // Second pass: sequential reads (seeking is unreliable across codecs), decoding only the
-    // sampled frames and keeping them at the target size.
-    // Every frame is decoded (a thumbnail of each finds held frames); only the sampled ones
-    // are kept at the target size.
+    // Second pass: sequential reads (seeking is unreliable across codecs). Every frame is
+    // decoded (a thumbnail of each finds held frames); only the sampled ones are kept at the
+    // target size, and, when denoising, their neighbours go to the denoiser.
     cv::VideoCapture cap = open_video_capture(source);
     int k = 0, run_start = 0;
     cv::Mat prev_thumb;
