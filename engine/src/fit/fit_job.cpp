@@ -347,7 +347,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                           (fo.track ? "track" : "no-track") + "|" + fmt("%.6g", job.mask_threshold) + "|" +
                           (job.palette ? stamp(*job.palette) : "-") + "|" + (job.tracks ? stamp(*job.tracks) : "-") +
                           "|refine " + std::to_string(refine_w) + "/" + std::to_string(refine_iters) +
-                          "|split " + fmt("%.6g", job.max_segment);
+                          "|split " + fmt("%.6g", job.max_segment) + "|denoise " + std::to_string(job.denoise_radius) +
+                          (job.stabilise ? "|stabilise" : "") + "|chroma " + fmt("%.6g", chroma_weight);
   if (job.resume) {
     if (!fs::exists(ckpt)) throw Error(ckpt.string() + ": no checkpoint to resume from");
     fitter.restore(load_checkpoint(ckpt, key));
