@@ -167,6 +167,22 @@ TEST_CASE("temporal denoise: load_target's denoised keyframes are closer to the 
   // Same inputs, same bits.
   const TargetFrames again = load_target(dir.path, kW, kH, opt);
   CHECK(again.raw == calm.raw);
+
+  // A load at half the width keeps its denoised keyframes (made at the frames' own size, which
+  // is at most twice its width); a second load at full width reuses them and gives exactly what
+  // decoding and aligning again gives.
+  TargetOptions half = opt;
+  half.keep_denoised = true;
+  const TargetFrames coarse = load_target(dir.path, kW / 2, kH / 2, half);
+  CHECK(coarse.denoised_width == kW);
+  CHECK(coarse.denoised.size() == static_cast<size_t>(K) * px * 3);
+  CHECK(coarse.denoised_frame == coarse.source_index);
+  TargetOptions reuse = opt;
+  reuse.denoised_from = &coarse;
+  const TargetFrames fine = load_target(dir.path, kW, kH, reuse);
+  CHECK(fine.raw == calm.raw);
+  CHECK(fine.denoise_seconds == 0);  // nothing aligned a second time
+  CHECK(calm.denoise_seconds > 0);
 }
 
 }  // TEST_SUITE

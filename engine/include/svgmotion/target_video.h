@@ -57,6 +57,12 @@ struct TargetOptions {
   // optical flow, each pixel of a neighbour weighted by how well it agrees (fit/temporal_denoise.h).
   // Done at the frames' size, at most twice the target width. 0: the frames as decoded.
   int denoise_radius = 0;
+  // Keep the denoised keyframes at the working size in TargetFrames::denoised, for a second
+  // load at another width (the refinement's) to reuse instead of decoding and aligning again.
+  bool keep_denoised = false;
+  // An earlier load of the same source that kept its denoised keyframes: reused when this load
+  // has the same working size and keyframes (nothing is decoded); otherwise ignored.
+  const TargetFrames* denoised_from = nullptr;
   // An earlier load of the same source with `stabilise` on (the fit's coarse width, when the
   // refinement loads the clip again at its own): its camera path is reused, not measured twice.
   const TargetFrames* shake_from = nullptr;
@@ -77,6 +83,11 @@ struct TargetFrames {
   std::vector<std::array<double, 2>> frame_shake;  // every source frame's shake, its own pixels
   double still_share = 0;         // the still part's share of the first frame's edges
   double denoise_seconds = 0;     // spent averaging keyframes with their neighbours (denoise_radius)
+  // With TargetOptions::keep_denoised: the denoised keyframes before shake removal, RGB float at
+  // the working size (K*H*W*3), and the frame each was decoded from (before retiming).
+  int denoised_width = 0, denoised_height = 0;
+  std::vector<float> denoised;
+  std::vector<int> denoised_frame;
   // K*H*W*4, row-major per keyframe: the cleaned target, straight RGB in [0,1], A = 1; pixels
   // outside the dilated mask are exactly white (1, 1, 1).
   std::vector<float> rgba;

@@ -163,6 +163,9 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   to.white_threshold = job.mask_threshold;
   to.stabilise = job.stabilise;
   to.denoise_radius = job.denoise_radius;
+  // The refinement's load reuses these keyframes when it works at the same size (a 512-px video
+  // fitted at 256 and refined at 512 denoises at 512 both times); released once it has.
+  to.keep_denoised = job.denoise_radius > 0 && job.refine_width != 0;
   ClRuntime rt(job.device);
   // The colours the target should show: the fitted scene's opaque flat fills and strokes; none
   // (no correction) when gradients cover much of the drawing (fit/correction_palette.h).
@@ -195,7 +198,11 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
       if (map.fitted_of[i] >= 0)
         export_scene->paths[i] = split_path(export_scene->paths[i], split[static_cast<size_t>(map.fitted_of[i])]);
   }
-  const TargetFrames target = load_target(*target_path, size.width, size.height, to);
+  TargetFrames target = load_target(*target_path, size.width, size.height, to);
+  auto release_denoised = [&target] {
+    std::vector<float>().swap(target.denoised);
+    target.denoised_frame.clear();
+  };
   for (const std::string& w : target_warnings(target, *target_path, size))
     log::warning("%s", w.c_str());
   // Which prior told the shake from the motion matters to the user: a figure with nothing
@@ -226,6 +233,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   const int refine_iters =
       refine_w > 0 ? std::max(0, static_cast<int>(std::lround(job.refine_share * fo.iterations))) : 0;
   if (refine_iters == 0) refine_w = 0;
+  if (refine_w == 0) release_denoised();
   FitOptions coarse_options = fo;
   coarse_options.held_groups = held_groups;
   coarse_options.known_body = known.body;
@@ -264,7 +272,10 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     const RenderSize fine_size = render_size(scene, refine_w);
     TargetOptions fine_to = to;
     if (to.stabilise) fine_to.shake_from = &target;  // the camera path of the first load
+    fine_to.keep_denoised = false;
+    fine_to.denoised_from = &target;
     TargetFrames t = load_target(*target_path, fine_size.width, fine_size.height, fine_to);
+    release_denoised();
     fine_options = fo.refined_at(static_cast<double>(fine_size.width) / size.width);
     fine_options.held_groups = held_groups;
     fine_options.known_body = known.body;

@@ -476,6 +476,12 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   const int work_w = std::min(info.width, 2 * width);
   const cv::Size work(work_w, std::max(1, static_cast<int>(std::lround(double(info.height) * work_w / info.width))));
   auto keep = [&](int k, int frame_index, cv::Mat frame) {
+    if (denoise && options.keep_denoised) {
+      const auto* f = frame.ptr<float>(0);  // continuous: made by resize / average_aligned
+      CV_Assert(frame.isContinuous() && frame.type() == CV_32FC3);
+      t.denoised.insert(t.denoised.end(), f, f + frame.total() * 3);
+      t.denoised_frame.push_back(frame_index);
+    }
     if (!options.stabilise)
       return denoise ? store_rgb(frame, k, width, height, t.raw) : store_raw(frame, k, width, height, t.raw);
     kept[static_cast<size_t>(k)] = std::move(frame);
@@ -494,7 +500,26 @@ TargetFrames load_target(const fs::path& source, int width, int height,
     for (auto& [index, avg] : denoiser.push(i, resize_to(to_rgb_float(frame), work.width, work.height)))
       keep(denoised_k++, index, std::move(avg));
   };
-  if (is_folder) {
+  // The refinement's second load reuses the first load's denoised keyframes when they were
+  // made at the same working size: no decoding, no aligning (the camera path comes from
+  // shake_from, as the keyframes' retimed indices come from the first load).
+  const TargetFrames* from = options.denoised_from;
+  const bool reuse = denoise && from && !from->denoised.empty() && from->denoised_width == work.width &&
+                     from->denoised_height == work.height && from->keyframes == K && from->source_frames == N &&
+                     !measure_shake;
+  if (denoise && options.keep_denoised) {
+    t.denoised_width = work.width;
+    t.denoised_height = work.height;
+  }
+  if (reuse) {
+    t.source_index = from->source_index;
+    t.held_frames = from->held_frames;
+    const size_t n = static_cast<size_t>(work.width) * work.height * 3;
+    for (int k = 0; k < K; ++k) {
+      cv::Mat f(work.height, work.width, CV_32FC3, const_cast<float*>(from->denoised.data() + k * n));
+      keep(denoised_k++, from->denoised_frame[static_cast<size_t>(k)], f.clone());
+    }
+  } else if (is_folder) {
     // The sampled frames; every frame once when stabilising (each shows the camera's path).
     for (int i = 0, k = 0; i < N && (k < K || near_sample(i)); ++i) {
       const bool sampled = k < K && i == t.source_index[static_cast<size_t>(k)];
@@ -547,7 +572,7 @@ TargetFrames load_target(const fs::path& source, int width, int height,
       fail(source, "not a readable video");
     }
   }
-  if (denoise) {
+  if (denoise && !reuse) {
     for (auto& [index, avg] : denoiser.finish()) keep(denoised_k++, index, std::move(avg));
     t.denoise_seconds = denoiser.seconds();
     if (denoised_k != K) throw Error("internal: " + std::to_string(denoised_k) + " of " + std::to_string(K) + " keyframes denoised");
