@@ -250,6 +250,63 @@ TEST_CASE("result gate: a path grown beyond the figure passes where the target s
   CHECK(v.waived.empty());
 }
 
+TEST_CASE("result gate: a path folded flat is passed with a warning naming it and its keyframes") {
+  // An 8 x 8 red square (a hand) on a black 48 x 48 body, three keyframes. Keyframes 1 and 2
+  // squash the hand about x = 30 to a factor f of its width: f = 0.02 encloses 2% of its area,
+  // its box diagonal still 8.0 against 11.3 at rest (0.71x, not a collapse by size).
+  const Scene scene = read_svg_string(R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="64" height="64">
+    <rect id="body" x="8" y="8" width="48" height="48" fill="#000"/>
+    <rect id="hand" x="26" y="26" width="8" height="8" fill="#f00"/></svg>)svg", "g");
+  const RasterPlan plan = plan_raster(scene, Affine{}, 64, 64);
+  const int W = 64, H = 64, K = 3;
+  const size_t px = static_cast<size_t>(W) * H, n = static_cast<size_t>(plan.n_cp);
+  const std::vector<double> rest(plan.rest_cp.begin(), plan.rest_cp.begin() + 2 * n);
+  auto squash = [&](double f) {
+    std::vector<double> cp = rest;
+    for (int i = 0; i < plan.path_cp_count[1]; ++i) {
+      double& x = cp[2 * static_cast<size_t>(plan.path_cp_first[1] + i)];
+      x = 30 + f * (x - 30);
+    }
+    return cp;
+  };
+  auto over_white = [&](const std::vector<double>& cp) {
+    const std::vector<double> img = ref::render(plan, cp);
+    std::vector<float> o(img.size());
+    for (size_t i = 0; i < px; ++i) {
+      for (int c = 0; c < 3; ++c) o[4 * i + c] = static_cast<float>(img[4 * i + c] + (1 - img[4 * i + 3]));
+      o[4 * i + 3] = 1;
+    }
+    return o;
+  };
+  TargetFrames t;
+  t.width = W, t.height = H, t.keyframes = K;
+  t.mask.assign(static_cast<size_t>(K) * px, 1);
+  for (int k = 0; k < K; ++k) {  // the target keeps the hand whole
+    const std::vector<float> f = over_white(rest);
+    t.rgba.insert(t.rgba.end(), f.begin(), f.end());
+  }
+  t.raw = t.rgba;
+  auto judge = [&](double f) {
+    std::vector<double> pts = rest;
+    std::vector<float> renders;
+    for (int k = 0; k < K; ++k) {
+      const std::vector<double> cp = k == 0 ? rest : squash(f);
+      if (k > 0) pts.insert(pts.end(), cp.begin(), cp.end());
+      const std::vector<double> img = ref::render(plan, cp);
+      renders.insert(renders.end(), img.begin(), img.end());
+    }
+    return judge_fit(t, renders, pts, plan, scene, Affine{});
+  };
+  const GateVerdict folded = judge(0.02);
+  CHECK(folded.passed);  // a fit a user may keep, but should look at
+  REQUIRE(folded.warnings.size() == 1);
+  CHECK(folded.warnings[0] == "path 'hand' folds flat at keyframes 1-2: its enclosed area falls to 2.0% of the first "
+                              "keyframe's while the target's figure keeps its size");
+  // Half as wide is a deformation, not a fold; the body never changes: no warning.
+  CHECK(judge(0.5).warnings.empty());
+  CHECK(judge(1.0).warnings.empty());
+}
+
 TEST_CASE("in-betweens: keyframes kept exactly, a smooth motion followed far closer than straight lines") {
   // One coordinate moving as sin(2 pi t), keyframes at 7 uneven times, in-betweens at 25 frames.
   const double pi = 3.14159265358979323846;

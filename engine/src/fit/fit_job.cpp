@@ -677,6 +677,9 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                  (fine ? coarse_iters : 0) + final_fit.iteration(), anim.c_str());
     return 130;
   }
+  // A part that vanishes (a shape folded edge-on) is not a broken fit, but the user should
+  // look at those keyframes: said even with --quiet, as every warning is.
+  for (const std::string& w : verdict.warnings) log::warning("fit: %s", w.c_str());
   if (rejected) {
     std::string why = verdict.reasons.front();
     if (verdict.reasons.size() > 1) why += " (and " + std::to_string(verdict.reasons.size() - 1) + " more in fit.json)";

@@ -69,6 +69,45 @@ double shown_share(const RasterPlan& plan, const double* cp, const Affine& view,
   return covered > 0 ? shown / covered : 1;
 }
 
+// The signed area enclosed by path p's fills at one keyframe (`q`: its control points): the
+// flattened outline's lines, vertex v = sum_j w[4v + j] * cp[vert_cp[v] + j], by the shoelace
+// formula. Holes wound the other way subtract; a shape folded flat encloses next to nothing.
+double fill_area(const RasterPlan& plan, const double* q, int p) {
+  auto vertex = [&](int v) {
+    double x = 0, y = 0;
+    for (int j = 0; j < 4; ++j) {
+      const double w = plan.vert_w[4 * static_cast<size_t>(v) + j];
+      const size_t c = static_cast<size_t>(plan.vert_cp[static_cast<size_t>(v)] + j);
+      x += w * q[2 * c], y += w * q[2 * c + 1];
+    }
+    return Vec2{x, y};
+  };
+  double twice = 0;
+  for (const Draw& d : plan.draws) {
+    if (d.path != p || d.is_stroke) continue;
+    for (int l = d.first_line; l < d.first_line + d.line_count; ++l) {
+      const int a = plan.line_ab[2 * static_cast<size_t>(l)], b = plan.line_ab[2 * static_cast<size_t>(l) + 1];
+      if (a >= plan.n_flat || b >= plan.n_flat) continue;  // not an outline vertex
+      const Vec2 u = vertex(a), w = vertex(b);
+      twice += u.x * w.y - u.y * w.x;
+    }
+  }
+  return twice / 2;
+}
+
+// "2-5, 7, 9-10" for increasing keyframe indices.
+std::string ranges(const std::vector<int>& ks) {
+  std::string s;
+  for (size_t i = 0; i < ks.size();) {
+    size_t j = i;
+    while (j + 1 < ks.size() && ks[j + 1] == ks[j] + 1) ++j;
+    if (!s.empty()) s += ", ";
+    s += std::to_string(ks[i]) + (j > i ? "-" + std::to_string(ks[j]) : "");
+    i = j + 1;
+  }
+  return s;
+}
+
 }  // namespace
 
 GateVerdict judge_fit(const TargetFrames& target, const std::vector<float>& renders,
@@ -178,6 +217,23 @@ GateVerdict judge_fit(const TargetFrames& target, const std::vector<float>& rend
       v.reasons.push_back(at + (std::isfinite(worst) ? format("control points lie %.1f canvas sizes outside the canvas", worst)
                                                      : std::string("control points are not finite")));
   }
+  // Folded paths (GateVerdict::warnings), against keyframe 0, the drawing at rest.
+  for (size_t p = 0; p < scene.paths.size(); ++p) {
+    if (rest_diag[p] < 0.01 * canvas_diag) continue;  // specks
+    const double a0 = std::fabs(fill_area(plan, points.data(), static_cast<int>(p)));
+    if (!(a0 > 0)) continue;  // strokes only, or nothing enclosed at rest
+    std::vector<int> folded;
+    double least = 1;
+    for (int k = 1; k < K; ++k) {
+      const double target_change = fg_diag[0] > 0 ? fg_diag[static_cast<size_t>(k)] / fg_diag[0] : 1;
+      const double share = std::fabs(fill_area(plan, &points[static_cast<size_t>(k) * n_cp * 2], static_cast<int>(p))) / a0;
+      if (share < kFoldedArea && target_change >= 0.5) folded.push_back(k), least = std::min(least, share);
+    }
+    if (!folded.empty())
+      v.warnings.push_back("path '" + scene.paths[p].id + "' folds flat at keyframe" + (folded.size() > 1 ? "s " : " ") +
+                           ranges(folded) + format(": its enclosed area falls to %.1f%% of the first keyframe's while the "
+                                                   "target's figure keeps its size", 100 * least));
+  }
   v.passed = v.reasons.empty();
   return v;
 }
@@ -186,6 +242,7 @@ nlohmann::json gate_json(const GateVerdict& v, const GateOptions& o) {
   return {{"passed", v.passed},
           {"reasons", v.reasons},
           {"waived", v.waived},
+          {"warnings", v.warnings},
           {"keyframe_psnr_db", v.psnr_db},
           {"keyframe_iou", v.iou},
           {"thresholds",

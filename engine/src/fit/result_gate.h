@@ -29,6 +29,9 @@
 
 namespace svgm {
 
+// A filled path whose enclosed area falls below this share of keyframe 0's is folded flat.
+inline constexpr double kFoldedArea = 0.1;
+
 struct GateOptions {
   double min_psnr_db = 15;
   double min_iou = 0.5;
@@ -42,6 +45,11 @@ struct GateVerdict {
   bool passed = true;
   std::vector<std::string> reasons;  // one line each, "keyframe k: ..."
   std::vector<std::string> waived;   // growth let through because the target shows it
+  // Not reasons to reject, but what a user should look at: a filled path folded flat (its
+  // enclosed area under kFoldedArea of keyframe 0's while the target's figure keeps at least
+  // half its size), one line per path naming its keyframes. A shape folded edge-on keeps its
+  // box, so the shrink check above does not see it; the drawing shows a part vanishing.
+  std::vector<std::string> warnings;
   std::vector<double> psnr_db, iou;  // per keyframe
 };
 
