@@ -24,6 +24,21 @@ using namespace svgm;
 
 namespace {
 
+// The reference rasteriser's render of `cp` (premultiplied RGBA) and the same over white (what
+// a target frame shows), as the gate's float images.
+std::vector<float> render_f(const RasterPlan& plan, const std::vector<double>& cp) {
+  const std::vector<double> img = ref::render(plan, cp);
+  return std::vector<float>(img.begin(), img.end());
+}
+std::vector<float> over_white(const std::vector<float>& premultiplied) {
+  std::vector<float> o(premultiplied.size());
+  for (size_t i = 0; i + 3 < o.size(); i += 4) {
+    for (int c = 0; c < 3; ++c) o[i + c] = premultiplied[i + c] + (1 - premultiplied[i + 3]);
+    o[i + 3] = 1;
+  }
+  return o;
+}
+
 std::vector<std::string> ids_in_order(const std::string& text) {
   std::vector<std::string> ids;
   for (const Path& p : read_svg_string(text, "t").paths) ids.push_back(p.id);
@@ -205,24 +220,12 @@ TEST_CASE("result gate: a path grown beyond the figure passes where the target s
     double& x = stretched[2 * static_cast<size_t>(plan.path_cp_first[1] + i)];
     x = 30 + 6 * (x - 30);
   }
-  auto render = [&](const std::vector<double>& cp) {
-    const std::vector<double> img = ref::render(plan, cp);
-    return std::vector<float>(img.begin(), img.end());
-  };
-  auto over_white = [&](const std::vector<float>& img) {
-    std::vector<float> o(img.size());
-    for (size_t i = 0; i < px; ++i) {
-      for (int c = 0; c < 3; ++c) o[4 * i + c] = img[4 * i + c] + (1 - img[4 * i + 3]);
-      o[4 * i + 3] = 1;
-    }
-    return o;
-  };
   auto frames = [&](const std::vector<float>& a, const std::vector<float>& b) {
     std::vector<float> f(a);
     f.insert(f.end(), b.begin(), b.end());
     return f;
   };
-  const std::vector<float> r0 = render(rest), r1 = render(stretched);
+  const std::vector<float> r0 = render_f(plan, rest), r1 = render_f(plan, stretched);
   std::vector<double> pts(rest);
   pts.insert(pts.end(), stretched.begin(), stretched.end());
   const std::vector<float> renders = frames(r0, r1);
@@ -269,20 +272,11 @@ TEST_CASE("result gate: a path folded flat is passed with a warning naming it an
     }
     return cp;
   };
-  auto over_white = [&](const std::vector<double>& cp) {
-    const std::vector<double> img = ref::render(plan, cp);
-    std::vector<float> o(img.size());
-    for (size_t i = 0; i < px; ++i) {
-      for (int c = 0; c < 3; ++c) o[4 * i + c] = static_cast<float>(img[4 * i + c] + (1 - img[4 * i + 3]));
-      o[4 * i + 3] = 1;
-    }
-    return o;
-  };
   TargetFrames t;
   t.width = W, t.height = H, t.keyframes = K;
   t.mask.assign(static_cast<size_t>(K) * px, 1);
   for (int k = 0; k < K; ++k) {  // the target keeps the hand whole
-    const std::vector<float> f = over_white(rest);
+    const std::vector<float> f = over_white(render_f(plan, rest));
     t.rgba.insert(t.rgba.end(), f.begin(), f.end());
   }
   t.raw = t.rgba;
@@ -292,7 +286,7 @@ TEST_CASE("result gate: a path folded flat is passed with a warning naming it an
     for (int k = 0; k < K; ++k) {
       const std::vector<double> cp = k == 0 ? rest : squash(f);
       if (k > 0) pts.insert(pts.end(), cp.begin(), cp.end());
-      const std::vector<double> img = ref::render(plan, cp);
+      const std::vector<float> img = render_f(plan, cp);
       renders.insert(renders.end(), img.begin(), img.end());
     }
     return judge_fit(t, renders, pts, plan, scene, Affine{});

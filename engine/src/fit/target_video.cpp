@@ -492,11 +492,14 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   TemporalDenoiser denoiser(options.denoise_radius, t.source_index);
   int denoised_k = 0;
   auto near_sample = [&](int i) { return denoise && denoiser.needs(i); };
+  // A decoded frame: kept when sampled; when denoising, the denoiser takes it if a sampled frame
+  // needs it (and hands back the sampled frames it completes).
   auto deliver = [&](int k, int i, bool sampled, const cv::Mat& frame) {
     if (!denoise) {
       if (sampled) keep(k, i, options.stabilise ? frame.clone() : frame);
       return;
     }
+    if (!denoiser.needs(i)) return;
     for (auto& [index, avg] : denoiser.push(i, resize_to(to_rgb_float(frame), work.width, work.height)))
       keep(denoised_k++, index, std::move(avg));
   };
@@ -561,7 +564,7 @@ TargetFrames load_target(const fs::path& source, int width, int height,
           else run_start = i;
           prev_thumb = thumb;
         }
-        if (sampled || near_sample(i)) deliver(k, i, sampled, frame);
+        deliver(k, i, sampled, frame);
         if (!sampled) continue;
         // A repeat shows the pose of the run's first frame: time the keyframe there (never at
         // or before the previous keyframe, so times stay increasing).
