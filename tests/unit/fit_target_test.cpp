@@ -311,6 +311,41 @@ TEST_CASE("foreground mask: components filtered, dilated by a 1-px disc, the res
   CHECK(mask_at(load_target(dir.path, 64, 64, o), 0, 41, 41) == 1);
 }
 
+TEST_CASE("a detached part as large as the drawing's smallest is kept however large the figure") {
+  // A 40x40 figure (1600 px) and a 5x5 loose part (25 px): the fraction alone (0.02 * 1600 =
+  // 32 > 25) whitens the part; keep_part_share at half the drawing's smallest part keeps it.
+  TempDir dir;
+  RgbaImage img = solid(64, 64);
+  fill(img, 4, 4, 44, 44, {50, 50, 60});
+  fill(img, 54, 54, 59, 59, {200, 150, 0});
+  write_png(dir.path / "0.png", img);
+  // The drawing at rest: the same figure and a 6x6 loose part (36 px), plus a 1-px and a
+  // 3-px mark, too small to count as parts (under 4 px).
+  RgbaImage rest = solid(64, 64);
+  fill(rest, 4, 4, 44, 44, {50, 50, 60});
+  fill(rest, 53, 53, 59, 59, {200, 150, 0});
+  fill(rest, 60, 2, 61, 3, {0, 0, 0});
+  fill(rest, 50, 2, 53, 3, {0, 0, 0});
+  const double share = smallest_part_share(rest.rgba, 64, 64, 0.97);
+  CHECK(share == 36.0 / (64 * 64));
+  CHECK(smallest_part_share(solid(64, 64).rgba, 64, 64, 0.97) == 0.0);
+
+  TargetOptions o;
+  o.keyframes = 1;
+  const TargetFrames before = load_target(dir.path, 64, 64, o);
+  CHECK(mask_at(before, 0, 56, 56) == 0);
+  CHECK(at(before, before.rgba, 0, 56, 56, 2) == 1.0f);  // whitened
+  o.keep_part_share = 0.5 * share;  // 18 px
+  const TargetFrames after = load_target(dir.path, 64, 64, o);
+  CHECK(mask_at(after, 0, 56, 56) == 1);
+  CHECK(at(after, after.rgba, 0, 56, 56, 0) == doctest::Approx(200 / 255.0).epsilon(1e-6));
+  // A part under the share is still a speck: 25 px against a share of 26 px.
+  o.keep_part_share = 26.0 / (64 * 64);
+  CHECK(mask_at(load_target(dir.path, 64, 64, o), 0, 56, 56) == 0);
+  o.keep_part_share = 1.5;
+  CHECK_THROWS_WITH(load_target(dir.path, 64, 64, o), doctest::Contains("kept part share must be in [0, 1]"));
+}
+
 TEST_CASE("distance field: 0 inside, Euclidean distance to the nearest foreground outside") {
   TempDir dir;
   RgbaImage img = solid(64, 64);

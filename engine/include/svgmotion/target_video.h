@@ -27,6 +27,12 @@ struct TargetOptions {
   // within a couple of levels of 255, well above 0.97.
   double white_threshold = 0.97;
   double min_component_fraction = 0.02;  // keep components with area >= this * the largest
+  // Components covering at least this share of the frame are kept whatever the largest's
+  // size; 0: the fraction alone. The fitter sets it to half the drawing's own smallest separate
+  // part at rest (smallest_part_share): a scene's figure is so large that 2% of it was more
+  // than a whole detached part, and the phoenix's loose flame (359 px of a 32736-px figure at
+  // 256) was whitened out of every keyframe, so the fit folded it flat where the video shows it.
+  double keep_part_share = 0;
   // Dilation radius of the foreground mask, in pixels: a Euclidean disc of this radius (offsets
   // with dx² + dy² <= r²), so 1 is the 3x3 cross; 0 = no dilation.
   int dilate_px = 1;
@@ -117,10 +123,16 @@ TargetInfo probe_target(const std::filesystem::path& source);
 // width x height (cv::INTER_AREA when neither side grows, INTER_LINEAR otherwise; the aspect is
 // the caller's business). Foreground per keyframe: a channel differs from the background (see
 // TargetOptions::white_threshold) by more than 1 - white_threshold, 8-connected
-// components with area >= max(4, min_component_fraction * largest) kept, dilated by dilate_px.
+// components with area >= max(4, min(min_component_fraction * largest, keep_part_share * the
+// frame)) kept, dilated by dilate_px.
 // A video is read twice (once to count, once keeping only the sampled frames), so memory stays
 // at K frames whatever the video's length. Throws svgm::Error "<path>: <problem>", including
 // "has N frames, fewer than the K keyframes asked for".
+// The share of the frame covered by the smallest separate part (8-connected ink component,
+// ink as load_target finds it on white) of `rgba8` (8-bit RGBA, opaque, width x height) that
+// has at least 4 pixels; 0 when there is none.
+double smallest_part_share(const std::vector<uint8_t>& rgba8, int width, int height, double white_threshold);
+
 // Per-channel median of a frame's border pixels (straight RGBA floats, width x height): the
 // background colour of a frame whose figure does not cover most of its border.
 std::array<float, 3> border_median_rgb(const float* rgba, int width, int height);

@@ -198,6 +198,12 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
       if (map.fitted_of[i] >= 0)
         export_scene->paths[i] = split_path(export_scene->paths[i], split[static_cast<size_t>(map.fitted_of[i])]);
   }
+  // A detached part as large as half the drawing's smallest is never taken for a speck
+  // (TargetOptions::keep_part_share): the share is the same at every width the fit loads.
+  {
+    const RgbaImage rest = render_image(rt, fit_scene, size.width, false);
+    to.keep_part_share = 0.5 * smallest_part_share(rest.rgba, rest.width, rest.height, to.white_threshold);
+  }
   TargetFrames target = load_target(*target_path, size.width, size.height, to);
   auto release_denoised = [&target] {
     std::vector<float>().swap(target.denoised);
@@ -635,6 +641,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   // The chroma σ in YCbCr (= the render σ unless the video's chroma was found softer).
   report["target_frames"]["chroma_sigma"] = coarse_blur.chroma_sigma;
   if (fine) report["target_frames"]["refine_chroma_sigma"] = fine_blur.chroma_sigma;
+  // Detached ink at least this share of the frame was kept as figure, not whitened as a speck.
+  report["target_frames"]["kept_part_share"] = to.keep_part_share;
   // Codec noise: each keyframe averaged with this many flow-aligned neighbours either side.
   report["target_frames"]["denoise_radius"] = job.denoise_radius;
   report["target_frames"]["denoise_seconds"] = target.denoise_seconds + (fine_target ? fine_target->denoise_seconds : 0.0);

@@ -300,6 +300,18 @@ bool same_frame(const cv::Mat& a, const cv::Mat& b) {
   return hi <= kHeldFrameMaxDiff;
 }
 
+// Ink: 1 where a channel of `rgba` differs from the background colour by more than tol.
+void mark_ink(const float* rgba, int w, int h, const std::array<float, 3>& bg, float tol, cv::Mat& ink) {
+  ink.create(h, w, CV_8U);
+  for (int y = 0; y < h; ++y) {
+    uint8_t* row = ink.ptr<uint8_t>(y);
+    for (int x = 0; x < w; ++x) {
+      const float* p = rgba + (static_cast<size_t>(y) * w + x) * 4;
+      row[x] = std::max({std::fabs(p[0] - bg[0]), std::fabs(p[1] - bg[1]), std::fabs(p[2] - bg[2])}) > tol ? 1 : 0;
+    }
+  }
+}
+
 // Mask, cleaned target and distance field of keyframe k from its raw frame.
 void clean_keyframe(TargetFrames& t, int k, const TargetOptions& opt) {
   const int w = t.width, h = t.height;
@@ -310,7 +322,7 @@ void clean_keyframe(TargetFrames& t, int k, const TargetOptions& opt) {
   // 1 - white_threshold in some channel. The background is white, or the light colour most of
   // the border shows (a generated video's off-white, drifting background); on white this is
   // exactly "darkest channel < white_threshold".
-  cv::Mat ink(h, w, CV_8U);
+  cv::Mat ink;
   const float tol = 1.0f - static_cast<float>(opt.white_threshold);
   // Only a light background that most of the border agrees on stands in for white: a figure
   // covering half the border, or a drawing's own dark backdrop (a scene's sky), is figure.
@@ -326,21 +338,18 @@ void clean_keyframe(TargetFrames& t, int k, const TargetOptions& opt) {
     for (int y = 1; y + 1 < h; ++y) near(0, y), near(w - 1, y);
     if (std::min({bg[0], bg[1], bg[2]}) < 0.85f || agree * 10 < border * 6) bg = {1, 1, 1};
   }
-  for (int y = 0; y < h; ++y) {
-    uint8_t* row = ink.ptr<uint8_t>(y);
-    for (int x = 0; x < w; ++x) {
-      const float* p = raw + (static_cast<size_t>(y) * w + x) * 4;
-      row[x] = std::max({std::fabs(p[0] - bg[0]), std::fabs(p[1] - bg[1]), std::fabs(p[2] - bg[2])}) > tol ? 1 : 0;
-    }
-  }
+  mark_ink(raw, w, h, bg, tol, ink);
 
   // The component filter removes compression specks and stray marks far from the figure; the
-  // floor of 4 px applies even when the figure itself is tiny.
+  // floor of 4 px applies even when the figure itself is tiny. A part as large as the
+  // drawing's own smallest (keep_part_share) is never taken for one.
   cv::Mat labels, stats, centroids;
   const int n = cv::connectedComponentsWithStats(ink, labels, stats, centroids, 8, CV_32S);
   int largest = 0;
   for (int i = 1; i < n; ++i) largest = std::max(largest, stats.at<int>(i, cv::CC_STAT_AREA));
-  const double min_area = std::max(4.0, opt.min_component_fraction * largest);
+  double min_area = opt.min_component_fraction * largest;
+  if (opt.keep_part_share > 0) min_area = std::min(min_area, opt.keep_part_share * static_cast<double>(px));
+  min_area = std::max(4.0, min_area);
   std::vector<uint8_t> keep(static_cast<size_t>(std::max(n, 1)), 0);
   bool any = false;
   for (int i = 1; i < n; ++i) {
@@ -402,6 +411,8 @@ void check_options(const fs::path& source, int width, int height, const TargetOp
   if (!(o.white_threshold > 0.0 && o.white_threshold <= 1.0))
     fail(source, "white threshold must be in (0, 1] (got " + std::to_string(o.white_threshold) +
                      ")");
+  if (!(o.keep_part_share >= 0.0 && o.keep_part_share <= 1.0))
+    fail(source, "kept part share must be in [0, 1] (got " + std::to_string(o.keep_part_share) + ")");
   if (!(o.min_component_fraction >= 0.0 && o.min_component_fraction <= 1.0))
     fail(source, "minimum component fraction must be in [0, 1] (got " +
                      std::to_string(o.min_component_fraction) + ")");
@@ -411,6 +422,22 @@ void check_options(const fs::path& source, int width, int height, const TargetOp
 }
 
 }  // namespace
+
+double smallest_part_share(const std::vector<uint8_t>& rgba8, int width, int height, double white_threshold) {
+  const size_t px = static_cast<size_t>(std::max(width, 0)) * std::max(height, 0);
+  if (px == 0 || rgba8.size() < px * 4) return 0;
+  std::vector<float> rgba(px * 4);
+  for (size_t i = 0; i < px * 4; ++i) rgba[i] = rgba8[i] / 255.0f;
+  cv::Mat ink, labels, stats, centroids;
+  mark_ink(rgba.data(), width, height, {1, 1, 1}, 1.0f - static_cast<float>(white_threshold), ink);
+  const int n = cv::connectedComponentsWithStats(ink, labels, stats, centroids, 8, CV_32S);
+  int smallest = 0;
+  for (int i = 1; i < n; ++i) {
+    const int a = stats.at<int>(i, cv::CC_STAT_AREA);
+    if (a >= 4 && (smallest == 0 || a < smallest)) smallest = a;
+  }
+  return static_cast<double>(smallest) / (static_cast<double>(width) * height);
+}
 
 TargetInfo probe_target(const fs::path& source) {
   if (!classify_source(source)) return probe_video(source);
