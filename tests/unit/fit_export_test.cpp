@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "fit/smil_writer.h"
+#include "raster/gradient_paint.h"
 #include "raster/raster_plan.h"
 #include "svgmotion/svg_reader.h"
 
@@ -77,6 +78,78 @@ TEST_CASE("animation.svg round trip: keyframes come back at their times, in the 
   mid.animation_time = 0.5;  // halfway between keyframes 0 and 1: moved by (1.5, -1)
   const Scene half = read_svg_file(out, mid);
   CHECK(half.paths[1].subpaths[0].points[0].x == doctest::Approx(plan.rest_cp[2 * plan.path_cp_first[1]] + 1.5).epsilon(1e-4));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a user-space gradient moves with its path's shape; a shared one stays") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("svgm_export_grad_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path in = dir / "in.svg", out = dir / "animation.svg";
+  // "ramp" paints one square in its user space (with a transform of its own); "both" paints
+  // two squares, so moving it for one would move it for the other.
+  std::ofstream(in) << R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100" viewBox="0 0 100 100">
+  <defs>
+    <linearGradient id="ramp" gradientUnits="userSpaceOnUse" x1="0" y1="0" x2="20" y2="0" gradientTransform="translate(10 10)">
+      <stop offset="0" stop-color="#f00"/><stop offset="1" stop-color="#00f"/>
+    </linearGradient>
+    <linearGradient id="both" gradientUnits="userSpaceOnUse" x1="60" y1="0" x2="80" y2="0">
+      <stop offset="0" stop-color="#0f0"/><stop offset="1" stop-color="#000"/>
+    </linearGradient>
+  </defs>
+  <rect id="a" x="10" y="10" width="20" height="20" fill="url(#ramp)"/>
+  <rect id="b" x="60" y="10" width="20" height="20" fill="url(#both)"/>
+  <rect id="c" x="60" y="60" width="20" height="20" fill="url(#both)"/>
+</svg>)svg";
+  const Scene scene = read_svg_file(in);
+  REQUIRE(scene.paths.size() == 3);
+  REQUIRE(scene.gradients.size() == 3);
+  CHECK(scene.gradients[0].id == "ramp");
+  CHECK(scene.gradients[0].user_space);
+  const RasterPlan plan = plan_raster(scene, Affine{}, 100, 100);
+  // Keyframe 1 turns every shape by 90 degrees about (50, 50) and moves it by (5, 0): the
+  // same similarity must come back as the gradient's motion.
+  const Affine move = Affine::translate(55, 50) * Affine{0, 1, -1, 0, 0, 0} * Affine::translate(-50, -50);
+  std::vector<double> pts(plan.rest_cp.begin(), plan.rest_cp.end());
+  for (int i = 0; i < plan.n_cp; ++i) {
+    const Vec2 q = move.apply({plan.rest_cp[2 * i], plan.rest_cp[2 * i + 1]});
+    pts.push_back(q.x);
+    pts.push_back(q.y);
+  }
+  AnimationTiming timing;
+  timing.keyframes = 2;
+  timing.duration_s = 2;
+  timing.loop = LoopMode::Once;
+  const std::vector<std::string> warnings = write_animation_svg(in, scene, plan, pts, timing, out);
+  REQUIRE(warnings.size() == 1);
+  CHECK(warnings[0].find("1 gradients shared by several shapes stay where the document puts them") != std::string::npos);
+
+  SvgReadLimits end;
+  end.animation_time = 2;  // frozen on keyframe 1
+  const Scene back = read_svg_file(out, end);
+  REQUIRE(back.gradients.size() == 3);
+  // ramp: the shape's motion after the gradient's own transform, to the written precision.
+  const Affine want = move * Affine::translate(10, 10);
+  const Affine& got = back.gradients[0].to_canvas;
+  for (const auto& [g, w] : {std::pair{got.a, want.a}, {got.b, want.b}, {got.c, want.c}, {got.d, want.d}, {got.e, want.e}, {got.f, want.f}})
+    CHECK(g == doctest::Approx(w).epsilon(1e-4));
+  // Its stops therefore stay on the square: red where its left edge went, blue at its right.
+  const Affine to_gradient = got.inverse();
+  const auto left = gradient_color(back.gradients[0], to_gradient, move.apply({10, 20}));
+  const auto right = gradient_color(back.gradients[0], to_gradient, move.apply({30, 20}));
+  REQUIRE(left);
+  REQUIRE(right);
+  CHECK(left->r == doctest::Approx(1).epsilon(1e-3));
+  CHECK(left->b == doctest::Approx(0).epsilon(1e-3));
+  CHECK(right->b == doctest::Approx(1).epsilon(1e-3));
+  CHECK(back.gradients[1].to_canvas.e == 0.0);  // both: untouched
+  CHECK(back.gradients[2].to_canvas.e == 0.0);
+  // At rest nothing has moved.
+  SvgReadLimits start;
+  start.animation_time = 0;
+  const Scene rest = read_svg_file(out, start);
+  CHECK(rest.gradients[0].to_canvas.e == doctest::Approx(10));
+  CHECK(rest.gradients[0].to_canvas.a == doctest::Approx(1));
   fs::remove_all(dir);
 }
 

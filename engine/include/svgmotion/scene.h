@@ -63,6 +63,10 @@ struct Gradient {
   Affine to_canvas;          // gradient space -> canvas (bounding box units, gradientTransform, CTM)
   std::vector<GradientStop> stops;  // at least one
   float opacity = 1;         // fill-opacity or stroke-opacity of the painted element
+  // The element the paint names (its id) and whether its units are the painted element's user
+  // space (userSpaceOnUse): the SMIL export moves such a gradient with its path's shape.
+  std::string id;
+  bool user_space = false;
 };
 
 // A compositing layer: an element whose content is drawn offscreen and then composited as one

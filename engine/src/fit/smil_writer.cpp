@@ -10,10 +10,13 @@
 #include <functional>
 #include <algorithm>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 
 #include "fit/document_order.h"
+#include "fit/warm_start.h"
+#include "svg/transform_list.h"
 #include "svg/svg_number.h"
 #include "svgmotion/error.h"
 
@@ -81,9 +84,12 @@ std::vector<TransformParts> local_motion(const PathMotion& motion, int f, const 
 // The additive animateTransform children (translate, rotate, skewX, scale, in the order SVG
 // post-multiplies them) of a path whose group moves as a transform; a component that stays the
 // identity is not written.
+// `attribute`: transform, or a gradient's gradientTransform. `replace_first`: the translate is
+// always written and replaces the attribute's own value (the parts are then the whole
+// transform, not a motion added to it).
 void append_transform_animations(pugi::xml_node el, const std::vector<TransformParts>& parts,
                                  const std::vector<int>& seq, const std::function<void(pugi::xml_node)>& timing_attrs,
-                                 int decimals) {
+                                 int decimals, const char* attribute = "transform", bool replace_first = false) {
   struct Component {
     const char* type;
     std::function<std::string(const TransformParts&)> text;
@@ -105,19 +111,86 @@ void append_transform_animations(pugi::xml_node el, const std::vector<TransformP
        [](const TransformParts& p) { return p.sx == 1 && p.sy == 1; }},
   };
   for (const Component& c : components) {
-    if (std::all_of(parts.begin(), parts.end(), c.identity)) continue;
+    const bool first = &c == &components[0];
+    if (!(first && replace_first) && std::all_of(parts.begin(), parts.end(), c.identity)) continue;
     std::string values;
     for (size_t i = 0; i < seq.size(); ++i) {
       if (i) values += ';';
       values += c.text(parts[static_cast<size_t>(seq[i])]);
     }
     pugi::xml_node anim = el.append_child("animateTransform");
-    anim.append_attribute("attributeName") = "transform";
+    anim.append_attribute("attributeName") = attribute;
     anim.append_attribute("type") = c.type;
-    anim.append_attribute("additive") = "sum";
+    if (!(first && replace_first)) anim.append_attribute("additive") = "sum";
     timing_attrs(anim);
     anim.append_attribute("values") = values.c_str();
   }
+}
+
+// How many times the document names `id` as a paint or link target: url(#id) in any attribute
+// or <style> text, href="#id" (also xlink:href).
+int count_references(const pugi::xml_document& doc, const std::string& id) {
+  const std::string url = "url(#" + id + ")", href = "#" + id;
+  int n = 0;
+  auto in_text = [&](std::string_view text) {
+    for (size_t at = text.find(url); at != std::string_view::npos; at = text.find(url, at + 1)) ++n;
+  };
+  std::function<void(pugi::xml_node)> walk = [&](pugi::xml_node node) {
+    for (pugi::xml_attribute a : node.attributes()) {
+      const std::string_view name = local_name(a.name()), value = a.value();
+      if (name == "href") n += value == href;
+      else in_text(value);
+    }
+    if (local_name(node.name()) == "style") in_text(node.child_value());
+    for (pugi::xml_node c = node.first_child(); c; c = c.next_sibling())
+      if (c.type() == pugi::node_element) walk(c);
+  };
+  walk(doc.document_element());
+  return n;
+}
+
+// The gradient transform that carries a user-space gradient along with its path's shape, per
+// written value: the similarity (least squares, Umeyama) from the path's points at rest to its
+// points in that value, in the path's own coordinates, before the gradient's own transform.
+// Nothing when the shape only ever moves by less than the written precision.
+std::optional<std::vector<TransformParts>> gradient_motion(const Path& path, const RasterPlan& plan, int f,
+                                                           const std::vector<double>& points, int keyframes,
+                                                           const Affine& own, int decimals) {
+  const size_t first = plan.path_cp_first[static_cast<size_t>(f)];
+  const size_t count = static_cast<size_t>(plan.path_cp_count[static_cast<size_t>(f)]);
+  const Affine to_local = path.to_canvas.inverse();
+  auto local_points = [&](int v) {
+    std::vector<Vec2> out(count);
+    const double* cp = &points[(static_cast<size_t>(v) * plan.n_cp + first) * 2];
+    for (size_t i = 0; i < count; ++i) out[i] = to_local.apply({cp[2 * i], cp[2 * i + 1]});
+    return out;
+  };
+  const std::vector<Vec2> rest = local_points(0);
+  const std::vector<double> weight(count, 1.0);
+  std::vector<TransformParts> out;
+  double moved = 0;
+  for (int v = 0; v < keyframes; ++v) {
+    Affine s;  // identity at rest
+    if (v > 0) {
+      const std::optional<Similarity> sim = fit_similarity(rest, local_points(v), weight);
+      if (!sim) return std::nullopt;
+      const double c = sim->scale * std::cos(sim->angle), d = sim->scale * std::sin(sim->angle);
+      s = Affine{c, d, -d, c, sim->shift.x, sim->shift.y};
+      for (const Vec2& r : rest) {
+        const Vec2 m = s.apply(r) - r;
+        moved = std::max({moved, std::fabs(m.x), std::fabs(m.y)});
+      }
+    }
+    TransformParts p = decompose_affine(s * own);
+    if (v > 0) {
+      p.rotate_deg = unwrap_degrees(p.rotate_deg, out.back().rotate_deg);
+      p.skew_x_deg = unwrap_degrees(p.skew_x_deg, out.back().skew_x_deg);
+    }
+    out.push_back({rounded(p.tx, decimals), rounded(p.ty, decimals), rounded(p.rotate_deg, kAngleDecimals),
+                   rounded(p.skew_x_deg, kAngleDecimals), rounded(p.sx, kScaleDecimals), rounded(p.sy, kScaleDecimals)});
+  }
+  if (moved <= std::pow(10.0, -decimals)) return std::nullopt;
+  return out;
 }
 
 }  // namespace
@@ -222,7 +295,8 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
   std::snprintf(dur, sizeof dur, "%.4gs", duration);
 
   std::vector<std::string> warnings;
-  int skipped_use = 0;
+  int skipped_use = 0, shared_gradients = 0;
+  std::set<std::string> animated_gradients;  // each gradient element is considered once
   // Find every element before changing any: turning a <rect> into a <path> renumbers the
   // locators of the paths after it.
   std::vector<pugi::xml_node> elements;
@@ -306,7 +380,49 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
     anim.append_attribute("attributeName") = "d";
     timing_attrs(anim);
     anim.append_attribute("values") = values.c_str();
+    // A gradient in the path's user space stays where the document puts it while the `d`
+    // animation moves the shape through it; a video moves it with the part (a flame's yellow
+    // tip turned orange as it travelled down its own ramp). Carried along by the shape's
+    // similarity, the gradient stays on the part. A group transform (moving) carries it already.
+    if (moving) continue;
+    for (const int gi : {path.fill_gradient, path.stroke_gradient}) {
+      if (gi < 0) continue;
+      const Gradient& g = scene.gradients[static_cast<size_t>(gi)];
+      if (!g.user_space || g.id.empty()) continue;
+      pugi::xml_node gn = doc.find_node([&](pugi::xml_node n) {
+        const std::string_view t = local_name(n.name());
+        return (t == "linearGradient" || t == "radialGradient") && g.id == n.attribute("id").value();
+      });
+      if (!gn || !animated_gradients.insert(g.id).second) continue;
+      // Shared with another shape, inherited by another gradient, or transformed through its
+      // href: moving it for this path would move it wrongly elsewhere.
+      const pugi::xml_attribute own_attr = gn.attribute("gradientTransform");
+      if (count_references(doc, g.id) != 1 || (own_attr.empty() && !gn.attribute("href").empty()) ||
+          (own_attr.empty() && !gn.attribute("xlink:href").empty())) {
+        ++shared_gradients;
+        continue;
+      }
+      Affine own;
+      if (!own_attr.empty()) {
+        const std::optional<Affine> t = svg::parse_transform(own_attr.value());
+        if (!t) continue;
+        own = *t;
+      }
+      const auto gparts = gradient_motion(path, plan, f, points, timing.keyframes, own, decimals);
+      if (!gparts) continue;
+      for (pugi::xml_node a = gn.first_child(); a;) {
+        pugi::xml_node next = a.next_sibling();
+        if (local_name(a.name()) == "animateTransform" &&
+            std::string_view(a.attribute("attributeName").value()) == "gradientTransform")
+          gn.remove_child(a);
+        a = next;
+      }
+      append_transform_animations(gn, *gparts, seq, timing_attrs, decimals, "gradientTransform", true);
+    }
   }
+  if (shared_gradients)
+    warnings.push_back(source.string() + ": " + std::to_string(shared_gradients) +
+                       " gradients shared by several shapes stay where the document puts them");
   if (map && !map->order.empty()) {
     const ReorderResult r = reorder_elements(elements, scene, map->order);
     if (r.refused) throw Error(source.string() + ": cannot apply the paint order: " + *r.refused);

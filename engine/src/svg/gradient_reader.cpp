@@ -8,6 +8,7 @@
 #include <set>
 
 #include "svg/css_color.h"
+#include "svg/smil_transform.h"
 #include "svg/svg_number.h"
 #include "svg/svg_style.h"
 #include "svg/transform_list.h"
@@ -190,7 +191,8 @@ std::vector<GradientStop> GradientReader::stops(pugi::xml_node g) {
 }
 
 std::optional<Gradient> GradientReader::resolve(pugi::xml_node g, const std::optional<Box>& bbox,
-                                                const Affine& ctm, double vp_w, double vp_h) {
+                                                const Affine& ctm, double vp_w, double vp_h,
+                                                double animation_time) {
   const std::vector<pugi::xml_node> nodes = chain(g);
   if (nodes.empty()) return std::nullopt;
   const bool radial = tag_of(g) == "radialGradient";
@@ -218,11 +220,16 @@ std::optional<Gradient> GradientReader::resolve(pugi::xml_node g, const std::opt
     if (!bbox || !(bbox->w > 0) || !(bbox->h > 0)) return std::nullopt;
     m = m * Affine{bbox->w, 0, 0, bbox->h, bbox->x, bbox->y};
   }
+  Affine gt;
   if (const char* t = attr("gradientTransform", false)) {
-    if (const auto gt = parse_transform(t)) m = m * *gt;
+    if (const auto parsed = parse_transform(t)) gt = *parsed;
   }
+  if (animation_time >= 0) gt = animated_transform(g, animation_time, gt, "gradientTransform");
+  m = m * gt;
   if (!(std::fabs(m.det()) > 0) || !std::isfinite(m.det())) return std::nullopt;
   out.to_canvas = m;
+  out.id = g.attribute("id").value();
+  out.user_space = !bbox_units;
 
   const double diag = std::sqrt(0.5 * (vp_w * vp_w + vp_h * vp_h));
   auto num = [&](const char* name, const char* fallback, double percent_of) {

@@ -39,8 +39,10 @@ class GradientReader {
   // whose user space maps to canvas by `ctm`, in a viewport of vp_w x vp_h user units.
   // Nothing when the gradient paints nothing (no stops, bounding box units on an empty box,
   // a singular gradientTransform).
+  // At `animation_time` seconds (>= 0), g's own <animateTransform attributeName=
+  // "gradientTransform"> children apply.
   std::optional<Gradient> resolve(pugi::xml_node g, const std::optional<Box>& bbox,
-                                  const Affine& ctm, double vp_w, double vp_h);
+                                  const Affine& ctm, double vp_w, double vp_h, double animation_time = -1);
 
   // The stops of `g` or of the first gradient in its href chain that has any.
   std::vector<GradientStop> stops(pugi::xml_node g);

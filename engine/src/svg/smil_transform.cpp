@@ -76,10 +76,10 @@ Affine of_type(std::string_view type, const std::vector<double>& v) {
 
 }  // namespace
 
-Affine animated_transform(pugi::xml_node element, double seconds, const Affine& base) {
+Affine animated_transform(pugi::xml_node element, double seconds, const Affine& base, std::string_view attribute) {
   Affine m = base;
   for (pugi::xml_node a = element.first_child(); a; a = a.next_sibling()) {
-    if (local(a.name()) != "animateTransform" || std::string_view(a.attribute("attributeName").value()) != "transform")
+    if (local(a.name()) != "animateTransform" || std::string_view(a.attribute("attributeName").value()) != attribute)
       continue;
     const std::vector<std::string_view> values = items(a.attribute("values").value());
     const std::optional<double> f = fraction(a, seconds);

@@ -11,13 +11,16 @@
 #pragma once
 
 #include <pugixml.hpp>
+#include <string_view>
 
 #include "svgmotion/affine.h"
 
 namespace svgm::svg {
 
 // The element's transform at `seconds`: `base` (its transform attribute) with its
-// animateTransform children applied.
-Affine animated_transform(pugi::xml_node element, double seconds, const Affine& base);
+// animateTransform children applied. `attribute`: the animated attribute (a gradient's is
+// gradientTransform; the SMIL export moves gradients with their paths, fit/smil_writer.h).
+Affine animated_transform(pugi::xml_node element, double seconds, const Affine& base,
+                          std::string_view attribute = "transform");
 
 }  // namespace svgm::svg

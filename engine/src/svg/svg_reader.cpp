@@ -569,7 +569,7 @@ void Reader::add_shape(pugi::xml_node n, std::vector<Subpath> subpaths, const St
   // A gradient paint: the flat colour is its mean (for the fitter and exports), the render
   // draws the gradient itself; one that paints nothing (no stops, an empty box) is none.
   auto gradient = [&](pugi::xml_node g, float paint_opacity) {
-    std::optional<Gradient> r = gradient_reader_.resolve(g, bbox, ctm, vp.w, vp.h);
+    std::optional<Gradient> r = gradient_reader_.resolve(g, bbox, ctm, vp.w, vp.h, limits_.animation_time);
     if (!r) return -2;
     r->opacity = paint_opacity;
     scene_.gradients.push_back(std::move(*r));
