@@ -39,6 +39,16 @@ std::vector<float> over_white(const std::vector<float>& premultiplied) {
   return o;
 }
 
+// `cp` with path `path`'s points scaled along x about x = cx by f (the result-gate cases stretch
+// or squash one part of a still body).
+std::vector<double> scale_path_x(const RasterPlan& plan, std::vector<double> cp, int path, double cx, double f) {
+  for (int i = 0; i < plan.path_cp_count[path]; ++i) {
+    double& x = cp[2 * static_cast<size_t>(plan.path_cp_first[path] + i)];
+    x = cx + f * (x - cx);
+  }
+  return cp;
+}
+
 std::vector<std::string> ids_in_order(const std::string& text) {
   std::vector<std::string> ids;
   for (const Path& p : read_svg_string(text, "t").paths) ids.push_back(p.id);
@@ -215,11 +225,8 @@ TEST_CASE("result gate: a path grown beyond the figure passes where the target s
   const RasterPlan plan = plan_raster(scene, Affine{}, 64, 64);
   const int W = 64, H = 64, K = 2;
   const size_t px = static_cast<size_t>(W) * H, n = static_cast<size_t>(plan.n_cp);
-  std::vector<double> rest(plan.rest_cp.begin(), plan.rest_cp.begin() + 2 * n), stretched = rest;
-  for (int i = 0; i < plan.path_cp_count[1]; ++i) {  // the eye: x about its centre 30, times 6
-    double& x = stretched[2 * static_cast<size_t>(plan.path_cp_first[1] + i)];
-    x = 30 + 6 * (x - 30);
-  }
+  const std::vector<double> rest(plan.rest_cp.begin(), plan.rest_cp.begin() + 2 * n);
+  const std::vector<double> stretched = scale_path_x(plan, rest, 1, 30, 6);  // the eye, about its centre
   auto frames = [&](const std::vector<float>& a, const std::vector<float>& b) {
     std::vector<float> f(a);
     f.insert(f.end(), b.begin(), b.end());
@@ -264,14 +271,6 @@ TEST_CASE("result gate: a path folded flat is passed with a warning naming it an
   const int W = 64, H = 64, K = 3;
   const size_t px = static_cast<size_t>(W) * H, n = static_cast<size_t>(plan.n_cp);
   const std::vector<double> rest(plan.rest_cp.begin(), plan.rest_cp.begin() + 2 * n);
-  auto squash = [&](double f) {
-    std::vector<double> cp = rest;
-    for (int i = 0; i < plan.path_cp_count[1]; ++i) {
-      double& x = cp[2 * static_cast<size_t>(plan.path_cp_first[1] + i)];
-      x = 30 + f * (x - 30);
-    }
-    return cp;
-  };
   TargetFrames t;
   t.width = W, t.height = H, t.keyframes = K;
   t.mask.assign(static_cast<size_t>(K) * px, 1);
@@ -284,7 +283,7 @@ TEST_CASE("result gate: a path folded flat is passed with a warning naming it an
     std::vector<double> pts = rest;
     std::vector<float> renders;
     for (int k = 0; k < K; ++k) {
-      const std::vector<double> cp = k == 0 ? rest : squash(f);
+      const std::vector<double> cp = k == 0 ? rest : scale_path_x(plan, rest, 1, 30, f);
       if (k > 0) pts.insert(pts.end(), cp.begin(), cp.end());
       const std::vector<float> img = render_f(plan, cp);
       renders.insert(renders.end(), img.begin(), img.end());

@@ -10,6 +10,8 @@
 #include <functional>
 #include <algorithm>
 #include <fstream>
+#include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -127,26 +129,47 @@ void append_transform_animations(pugi::xml_node el, const std::vector<TransformP
   }
 }
 
-// How many times the document names `id` as a paint or link target: url(#id) in any attribute
-// or <style> text, href="#id" (also xlink:href).
-int count_references(const pugi::xml_document& doc, const std::string& id) {
-  const std::string url = "url(#" + id + ")", href = "#" + id;
-  int n = 0;
-  auto in_text = [&](std::string_view text) {
-    for (size_t at = text.find(url); at != std::string_view::npos; at = text.find(url, at + 1)) ++n;
+// The document's gradient elements by id, and how many times each id is named as a paint or
+// link target (url(#id) in any attribute or <style> text, href="#id" with or without xlink:),
+// read in one walk. A gradient named once paints one shape and no other gradient inherits it.
+struct GradientIndex {
+  std::map<std::string, pugi::xml_node, std::less<>> gradients;
+  std::map<std::string, int, std::less<>> references;
+};
+GradientIndex index_gradients(const pugi::xml_document& doc) {
+  GradientIndex out;
+  auto count_urls = [&](std::string_view text) {
+    for (size_t at = text.find("url(#"); at != std::string_view::npos; at = text.find("url(#", at + 1)) {
+      const size_t end = text.find(')', at);
+      if (end == std::string_view::npos) break;
+      ++out.references[std::string(text.substr(at + 5, end - at - 5))];
+    }
   };
   std::function<void(pugi::xml_node)> walk = [&](pugi::xml_node node) {
+    const std::string_view tag = local_name(node.name());
+    if (tag == "linearGradient" || tag == "radialGradient")
+      if (const char* id = node.attribute("id").value(); *id) out.gradients.emplace(id, node);
     for (pugi::xml_attribute a : node.attributes()) {
-      const std::string_view name = local_name(a.name()), value = a.value();
-      if (name == "href") n += value == href;
-      else in_text(value);
+      const std::string_view value = a.value();
+      if (local_name(a.name()) == "href") {
+        if (value.starts_with('#')) ++out.references[std::string(value.substr(1))];
+      } else {
+        count_urls(value);
+      }
     }
-    if (local_name(node.name()) == "style") in_text(node.child_value());
+    if (tag == "style") count_urls(node.child_value());
     for (pugi::xml_node c = node.first_child(); c; c = c.next_sibling())
       if (c.type() == pugi::node_element) walk(c);
   };
   walk(doc.document_element());
-  return n;
+  return out;
+}
+
+// The gradient's own href (with or without xlink:), empty when none.
+std::string_view href_of(pugi::xml_node n) {
+  for (pugi::xml_attribute a : n.attributes())
+    if (local_name(a.name()) == "href") return a.value();
+  return {};
 }
 
 // The gradient transform that carries a user-space gradient along with its path's shape, per
@@ -297,6 +320,7 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
   std::vector<std::string> warnings;
   int skipped_use = 0, shared_gradients = 0;
   std::set<std::string> animated_gradients;  // each gradient element is considered once
+  std::optional<GradientIndex> gradient_index;  // read on the first user-space gradient
   // Find every element before changing any: turning a <rect> into a <path> renumbers the
   // locators of the paths after it.
   std::vector<pugi::xml_node> elements;
@@ -389,16 +413,15 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
       if (gi < 0) continue;
       const Gradient& g = scene.gradients[static_cast<size_t>(gi)];
       if (!g.user_space || g.id.empty()) continue;
-      pugi::xml_node gn = doc.find_node([&](pugi::xml_node n) {
-        const std::string_view t = local_name(n.name());
-        return (t == "linearGradient" || t == "radialGradient") && g.id == n.attribute("id").value();
-      });
-      if (!gn || !animated_gradients.insert(g.id).second) continue;
+      if (!gradient_index) gradient_index = index_gradients(doc);
+      const auto found = gradient_index->gradients.find(g.id);
+      if (found == gradient_index->gradients.end() || !animated_gradients.insert(g.id).second) continue;
+      pugi::xml_node gn = found->second;
       // Shared with another shape, inherited by another gradient, or transformed through its
       // href: moving it for this path would move it wrongly elsewhere.
       const pugi::xml_attribute own_attr = gn.attribute("gradientTransform");
-      if (count_references(doc, g.id) != 1 || (own_attr.empty() && !gn.attribute("href").empty()) ||
-          (own_attr.empty() && !gn.attribute("xlink:href").empty())) {
+      const auto refs = gradient_index->references.find(g.id);
+      if (refs == gradient_index->references.end() || refs->second != 1 || (own_attr.empty() && !href_of(gn).empty())) {
         ++shared_gradients;
         continue;
       }
