@@ -153,4 +153,54 @@ TEST_CASE("a user-space gradient moves with its path's shape; a shared one stays
   fs::remove_all(dir);
 }
 
+TEST_CASE("a gradient follows the part of its shape that shows; points under transparent paint do not count") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("svgm_export_fade_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path in = dir / "in.svg", out = dir / "animation.svg";
+  // A ray from x = 10 to 90 whose paint fades out by x = 50 (a sun ray fading before its tip):
+  // the fit never sees its right end, so its points there are free to wander.
+  std::ofstream(in) << R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100" viewBox="0 0 100 100">
+  <defs>
+    <linearGradient id="fade" gradientUnits="userSpaceOnUse" x1="10" y1="0" x2="50" y2="0">
+      <stop offset="0" stop-color="#f00"/><stop offset="0.5" stop-color="#f00"/>
+      <stop offset="1" stop-color="#f00" stop-opacity="0"/>
+    </linearGradient>
+  </defs>
+  <rect id="ray" x="10" y="45" width="80" height="10" fill="url(#fade)"/>
+</svg>)svg";
+  const Scene scene = read_svg_file(in);
+  REQUIRE(scene.paths.size() == 1);
+  const RasterPlan plan = plan_raster(scene, Affine{}, 100, 100);
+  // Keyframe 1: the ray moves by (5, 0); the points under transparent paint (x >= 50) also
+  // swing 15 px down. The shape's plain similarity fit would turn the gradient with them.
+  std::vector<double> pts(plan.rest_cp.begin(), plan.rest_cp.end());
+  int wandering = 0;
+  for (int i = 0; i < plan.n_cp; ++i) {
+    const double x = plan.rest_cp[2 * i], y = plan.rest_cp[2 * i + 1];
+    wandering += x >= 50;
+    pts.push_back(x + 5);
+    pts.push_back(y + (x >= 50 ? 15 : 0));
+  }
+  REQUIRE(wandering >= 2);
+  REQUIRE(wandering < plan.n_cp - 2);
+  AnimationTiming timing;
+  timing.keyframes = 2;
+  timing.duration_s = 2;
+  timing.loop = LoopMode::Once;
+  CHECK(write_animation_svg(in, scene, plan, pts, timing, out).empty());
+  SvgReadLimits end;
+  end.animation_time = 2;
+  const Scene back = read_svg_file(out, end);
+  REQUIRE(back.gradients.size() == 1);
+  const Affine& got = back.gradients[0].to_canvas;
+  CHECK(got.a == doctest::Approx(1).epsilon(1e-4));
+  CHECK(got.b == doctest::Approx(0).epsilon(1e-4));
+  CHECK(got.c == doctest::Approx(0).epsilon(1e-4));
+  CHECK(got.d == doctest::Approx(1).epsilon(1e-4));
+  CHECK(got.e == doctest::Approx(5).epsilon(1e-3));
+  CHECK(got.f == doctest::Approx(0).epsilon(1e-3));
+  fs::remove_all(dir);
+}
+
 }  // TEST_SUITE

@@ -2,6 +2,7 @@
 #include "fit/smil_writer.h"
 #include "svgmotion/atomic_file.h"
 
+#include <Eigen/Dense>
 #include <pugixml.hpp>
 
 #include <charconv>
@@ -18,6 +19,7 @@
 
 #include "fit/document_order.h"
 #include "fit/warm_start.h"
+#include "raster/gradient_paint.h"
 #include "svg/transform_list.h"
 #include "svg/svg_number.h"
 #include "svgmotion/error.h"
@@ -172,12 +174,65 @@ std::string_view href_of(pugi::xml_node n) {
   return {};
 }
 
-// The gradient transform that carries a user-space gradient along with its path's shape, per
-// written value: the similarity (least squares, Umeyama) from the path's points at rest to its
-// points in that value, in the path's own coordinates, before the gradient's own transform.
-// Nothing when the shape only ever moves by less than the written precision.
-std::optional<std::vector<TransformParts>> gradient_motion(const Path& path, const RasterPlan& plan, int f,
-                                                           const std::vector<double>& points, int keyframes,
+// Which way a gradient's colour changes at each of `points` (path-local): the unit gradient of
+// its parameter (a linear gradient's vector; a radial one's direction from its centre, focal
+// point aside), zero where it has none. `to_gradient` maps path-local to gradient space.
+std::vector<Vec2> colour_directions(const Gradient& g, const Affine& to_gradient, const std::vector<Vec2>& points) {
+  const Affine& m = to_gradient;  // ∇_x t = mᵀ ∇_u t for u = m(x)
+  std::vector<Vec2> out(points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Vec2 du = g.radial ? m.apply(points[i]) - g.center : g.p2 - g.p1;
+    const Vec2 dx{m.a * du.x + m.b * du.y, m.c * du.x + m.d * du.y};
+    const double len = std::hypot(dx.x, dx.y);
+    if (len > 1e-12) out[i] = (1.0 / len) * dx;
+  }
+  return out;
+}
+
+// The similarity M (x ↦ [a −b; b a] x + t) that carries a gradient with a moving shape: least
+// squares over the shape's points of (m_i · (M x_i − y_i))² + μ |M x_i − y_i|², m_i the colour
+// direction at x_i turned by M's own turn. A gradient shows a point's motion only along its
+// colour direction, so that component is what must be right; across it (the length of a ray
+// under a radial gradient centred far off, a ramp's own direction) μ only keeps the solution
+// near the shape's plain fit. Umeyama's fit (all directions alike) lets a ray that bends or
+// thickens pull its scale, which a far centre multiplies into a colour shift along the ray.
+// Started from that fit; two passes turn the m_i with M.
+std::optional<Similarity> fit_colour_similarity(const std::vector<Vec2>& from, const std::vector<Vec2>& to,
+                                                const std::vector<Vec2>& directions, const std::vector<double>& weight,
+                                                const Similarity& start) {
+  constexpr double kAcross = 0.05;  // μ: weight of the error across the colour direction
+  Similarity s = start;
+  for (int pass = 0; pass < 2; ++pass) {
+    const double c = std::cos(s.angle), sn = std::sin(s.angle);
+    Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
+    Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
+    for (size_t i = 0; i < from.size(); ++i) {
+      const Vec2 n = directions[i];
+      const Vec2 m{c * n.x - sn * n.y, sn * n.x + c * n.y};
+      Eigen::Matrix2d Q;
+      Q << m.x * m.x + kAcross, m.x * m.y, m.x * m.y, m.y * m.y + kAcross;
+      Q *= weight[i];
+      Eigen::Matrix<double, 2, 4> J;
+      J << from[i].x, -from[i].y, 1, 0, from[i].y, from[i].x, 0, 1;
+      A += J.transpose() * Q * J;
+      rhs += J.transpose() * Q * Eigen::Vector2d(to[i].x, to[i].y);
+    }
+    const Eigen::Vector4d p = A.ldlt().solve(rhs);
+    if (!p.allFinite()) return std::nullopt;
+    const double scale = std::hypot(p[0], p[1]);
+    if (!(scale > 0.5 && scale < 2.0)) return std::nullopt;
+    s = Similarity{scale, std::atan2(p[1], p[0]), Vec2{p[2], p[3]}};
+  }
+  return s;
+}
+
+// The gradient transform that carries a user-space gradient `g` along with its path's shape,
+// per written value: the similarity from the path's points at rest to its points in that value
+// that keeps their colours (fit_colour_similarity), in the path's own coordinates, before the
+// gradient's own transform `own`. Nothing when the shape only ever moves by less than the
+// written precision.
+std::optional<std::vector<TransformParts>> gradient_motion(const Path& path, const Gradient& g, Vec2 canvas,
+                                                           const RasterPlan& plan, int f, const std::vector<double>& points, int keyframes,
                                                            const Affine& own, int decimals) {
   const size_t first = plan.path_cp_first[static_cast<size_t>(f)];
   const size_t count = static_cast<size_t>(plan.path_cp_count[static_cast<size_t>(f)]);
@@ -189,13 +244,31 @@ std::optional<std::vector<TransformParts>> gradient_motion(const Path& path, con
     return out;
   };
   const std::vector<Vec2> rest = local_points(0);
-  const std::vector<double> weight(count, 1.0);
+  const std::vector<Vec2> directions = colour_directions(g, (to_local * g.to_canvas).inverse(), rest);
+  // A point where the paint is transparent, or off the canvas, was never seen by the fit: it
+  // says nothing of where the shape went (a sun ray fading out before its tip leaves the tip's
+  // points free to wander, and they tilted and shrank the ray's fit). Each point counts with
+  // the paint's opacity there; all alike when fewer than three are seen.
+  std::vector<double> weight(count, 0.0);
+  const Affine canvas_to_gradient = g.to_canvas.inverse();
+  int seen = 0;
+  for (size_t i = 0; i < count; ++i) {
+    const Vec2 p{points[(first + i) * 2], points[(first + i) * 2 + 1]};
+    if (p.x < 0 || p.y < 0 || p.x > canvas.x || p.y > canvas.y) continue;
+    const std::optional<Rgba> c = gradient_color(g, canvas_to_gradient, p);
+    weight[i] = c ? c->a : 0.0;
+    seen += weight[i] > 0.05;
+  }
+  if (seen < 3) std::fill(weight.begin(), weight.end(), 1.0);
   std::vector<TransformParts> out;
   double moved = 0;
   for (int v = 0; v < keyframes; ++v) {
     Affine s;  // identity at rest
     if (v > 0) {
-      const std::optional<Similarity> sim = fit_similarity(rest, local_points(v), weight);
+      const std::vector<Vec2> moved_points = local_points(v);
+      const std::optional<Similarity> plain = fit_similarity(rest, moved_points, weight);
+      if (!plain) return std::nullopt;
+      const std::optional<Similarity> sim = fit_colour_similarity(rest, moved_points, directions, weight, *plain);
       if (!sim) return std::nullopt;
       const double c = sim->scale * std::cos(sim->angle), d = sim->scale * std::sin(sim->angle);
       s = Affine{c, d, -d, c, sim->shift.x, sim->shift.y};
@@ -431,7 +504,7 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
         if (!t) continue;
         own = *t;
       }
-      const auto gparts = gradient_motion(path, plan, f, points, timing.keyframes, own, decimals);
+      const auto gparts = gradient_motion(path, g, {scene.width, scene.height}, plan, f, points, timing.keyframes, own, decimals);
       if (!gparts) continue;
       for (pugi::xml_node a = gn.first_child(); a;) {
         pugi::xml_node next = a.next_sibling();
