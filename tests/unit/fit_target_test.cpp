@@ -311,6 +311,37 @@ TEST_CASE("foreground mask: components filtered, dilated by a 1-px disc, the res
   CHECK(mask_at(load_target(dir.path, 64, 64, o), 0, 41, 41) == 1);
 }
 
+TEST_CASE("a small mark enclosed by the figure is its detail and kept; one outside is a speck") {
+  // A ring (1200 px: 40x40 less its 20x20 hole) with a 2x2 grain in its hole and a 2x2 speck
+  // outside it: both are under the size floor (0.02 * 1200 = 24 px); only the speck is whitened.
+  TempDir dir;
+  RgbaImage img = solid(64, 64);
+  fill(img, 10, 10, 50, 50, {50, 50, 60});
+  fill(img, 20, 20, 40, 40, {255, 255, 255});
+  fill(img, 29, 29, 31, 31, {200, 190, 170});
+  fill(img, 56, 56, 58, 58, {200, 190, 170});
+  write_png(dir.path / "0.png", img);
+  TargetOptions o;
+  o.keyframes = 1;
+  o.dilate_px = 0;
+  const TargetFrames t = load_target(dir.path, 64, 64, o);
+  CHECK(mask_at(t, 0, 29, 29) == 1);
+  CHECK(mask_at(t, 0, 30, 30) == 1);
+  CHECK(at(t, t.rgba, 0, 30, 30, 2) == doctest::Approx(170 / 255.0).epsilon(1e-6));
+  CHECK(mask_at(t, 0, 56, 56) == 0);
+  CHECK(at(t, t.rgba, 0, 56, 56, 2) == 1.0f);
+  CHECK(mask_at(t, 0, 25, 25) == 0);  // the hole itself stays background
+  int count = 0;
+  for (uint8_t m : t.mask) count += m;
+  CHECK(count == 1200 + 4);
+
+  // A gap in the ring opens the hole to the outside: the grain is then a speck like the other.
+  fill(img, 30, 40, 32, 50, {255, 255, 255});
+  write_png(dir.path / "0.png", img);
+  const TargetFrames open = load_target(dir.path, 64, 64, o);
+  CHECK(mask_at(open, 0, 30, 30) == 0);
+}
+
 TEST_CASE("a detached part as large as the drawing's smallest is kept however large the figure") {
   // A 40x40 figure (1600 px) and a 5x5 loose part (25 px): the fraction alone (0.02 * 1600 =
   // 32 > 25) whitens the part; keep_part_share at half the drawing's smallest part keeps it.

@@ -124,7 +124,8 @@ TargetInfo probe_target(const std::filesystem::path& source);
 // the caller's business). Foreground per keyframe: a channel differs from the background (see
 // TargetOptions::white_threshold) by more than 1 - white_threshold, 8-connected
 // components with area >= max(4, min(min_component_fraction * largest, keep_part_share * the
-// frame)) kept, dilated by dilate_px.
+// frame)) kept, and so is any smaller one those enclose (not reachable from the frame's border
+// without crossing them: a detail inside the figure, not a stray mark), dilated by dilate_px.
 // A video is read twice (once to count, once keeping only the sampled frames), so memory stays
 // at K frames whatever the video's length. Throws svgm::Error "<path>: <problem>", including
 // "has N frames, fewer than the K keyframes asked for".

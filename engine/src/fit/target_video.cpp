@@ -357,6 +357,35 @@ void clean_keyframe(TargetFrames& t, int k, const TargetOptions& opt) {
     keep[static_cast<size_t>(i)] = 1;
     any = true;
   }
+  // A small component that the kept figure encloses is the drawing's own detail, not a stray
+  // mark: light grains on near-white rice, whose codec noise leaves the rice around them under
+  // the ink threshold, came out as islands under the size floor, were whitened, and the fit
+  // folded the grains flat. Stray specks lie outside the figure: everything reachable from the
+  // frame's border without crossing a kept component.
+  if (any) {
+    cv::Mat open(h, w, CV_8U);  // 1: not part of a kept component
+    for (int y = 0; y < h; ++y) {
+      const int* l = labels.ptr<int>(y);
+      uint8_t* o = open.ptr<uint8_t>(y);
+      for (int x = 0; x < w; ++x) o[x] = keep[static_cast<size_t>(l[x])] ? 0 : 1;
+    }
+    cv::Mat open_labels;
+    cv::connectedComponents(open, open_labels, 4, CV_32S);  // 4: a diagonal gap in a kept outline closes it
+    std::vector<uint8_t> outside(static_cast<size_t>(w) * h + 1, 0);  // by open_labels' label
+    auto seed = [&](int x, int y) {
+      if (open.at<uint8_t>(y, x)) outside[static_cast<size_t>(open_labels.at<int>(y, x))] = 1;
+    };
+    for (int x = 0; x < w; ++x) seed(x, 0), seed(x, h - 1);
+    for (int y = 0; y < h; ++y) seed(0, y), seed(w - 1, y);
+    std::vector<uint8_t> enclosed(static_cast<size_t>(n), 1);  // per ink component
+    for (int y = 0; y < h; ++y) {
+      const int* l = labels.ptr<int>(y);
+      const int* ol = open_labels.ptr<int>(y);
+      for (int x = 0; x < w; ++x)
+        if (l[x] > 0 && outside[static_cast<size_t>(ol[x])]) enclosed[static_cast<size_t>(l[x])] = 0;
+    }
+    for (int i = 1; i < n; ++i) keep[static_cast<size_t>(i)] |= enclosed[static_cast<size_t>(i)];
+  }
 
   // Background = 255 (non-zero) so that distanceTransform measures the distance to the
   // nearest kept foreground pixel; the precise mask makes it the exact Euclidean distance
