@@ -88,6 +88,7 @@ struct TargetFrames {
   std::string shake_model;        // how shake was told from motion (ShakeEstimate::model)
   std::vector<std::array<double, 2>> frame_shake;  // every source frame's shake, its own pixels
   double still_share = 0;         // the still part's share of the first frame's edges
+  bool shake_loop = false;        // the clip is a loop and its shake was told round it
   double denoise_seconds = 0;     // spent averaging keyframes with their neighbours (denoise_radius)
   // With TargetOptions::keep_denoised: the denoised keyframes before shake removal, RGB float at
   // the working size (K*H*W*3), and the frame each was decoded from (before retiming).

@@ -650,6 +650,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     report["target_frames"]["max_shake_removed_px"] = target.max_shake_px;
     report["target_frames"]["shake_model"] = target.shake_model;
     report["target_frames"]["still_share"] = target.still_share;
+    report["target_frames"]["shake_loop"] = target.shake_loop;
   }
   // The chroma weight fitted with; with --chroma-weight auto, what chose it: each candidate's
   // drift from rest in the still fit of the first frame (mean squared RGB difference of the

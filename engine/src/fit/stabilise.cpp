@@ -1,8 +1,10 @@
 // Camera-shake removal: see stabilise.h for the method and why it is off by default.
 #include "fit/stabilise.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "fit/still_region.h"
 
@@ -23,6 +25,15 @@ constexpr double kMinResponse = 0.05;
 // the same high-pass energy, the figure is taken as not moving: all of the path is shake. (A
 // white path scores about 1; a drift of a pixel over the clip, tens.)
 constexpr double kWhitePathRatio = 3;
+
+// A clip is a loop when its last frame registers onto its first with a residual under this
+// share of the mean step's between frames kLoopIntervals apart over the clip (the fitter's
+// loop test with its default 15 keyframes).
+constexpr double kLoopResidualShare = 0.25;
+constexpr int kLoopIntervals = 14;
+// ... and when the camera's move between them is within this many times the rms shake a
+// straight low-pass finds (or half a pixel): a figure that slid along is not a loop.
+constexpr double kLoopShakeRms = 4;
 
 // The frame as grey at `width` pixels wide, in its own depth (8 or 16 bits).
 cv::Mat grey_at(const cv::Mat& frame, int width) {
@@ -90,7 +101,7 @@ LowPass local_parabola(int n, double sigma_frames) {
   return lp;
 }
 
-std::vector<std::array<double, 2>> apply(const LowPass& lp, const std::vector<std::array<double, 2>>& path) {
+std::vector<std::array<double, 2>> apply_lowpass(const LowPass& lp, const std::vector<std::array<double, 2>>& path) {
   std::vector<std::array<double, 2>> out(path.size(), {0, 0});
   for (size_t i = 0; i < path.size(); ++i)
     for (size_t k = 0; k < lp.rows[i].size(); ++k) {
@@ -108,7 +119,7 @@ std::vector<std::array<double, 2>> apply(const LowPass& lp, const std::vector<st
 // s² tr((I - L)'(I - L)) = s² (n - 2 tr L + sum L²).
 double lowpass_ratio(const LowPass& lp, const std::vector<std::array<double, 2>>& path) {
   const size_t n = path.size();
-  const auto smooth = apply(lp, path);
+  const auto smooth = apply_lowpass(lp, path);
   std::array<double, 2> mean{0, 0};
   for (const auto& p : path) mean[0] += p[0] / static_cast<double>(n), mean[1] += p[1] / static_cast<double>(n);
   double low = 0, high = 0, sum_l2 = 0, trace = 0;
@@ -129,47 +140,114 @@ double lowpass_ratio(const LowPass& lp, const std::vector<std::array<double, 2>>
   return (low / low_dof) / noise;
 }
 
+// The translation that carries ink image `a` onto `b` (b shows a's content moved by it), and
+// the mean absolute difference left once `b` is moved back by it; nothing when the two do not
+// correlate (a cut, a blank frame). Phase correlation finds the step whole (several pixels,
+// robust to the figure's own motion), but its sub-pixel centroid is biased by a few hundredths
+// of a pixel even between identical frames; enhanced correlation (ECC, Evangelidis and
+// Psarakis 2008), a Gauss-Newton fit of the translation started there, makes it exact.
+struct Registration {
+  cv::Point2d step;
+  double residual = 0;
+};
+std::optional<Registration> register_translation(const cv::Mat& a, const cv::Mat& b) {
+  if (a.size() != b.size() || !(cv::sum(a)[0] > 0) || !(cv::sum(b)[0] > 0)) return std::nullopt;
+  cv::Mat window;
+  cv::createHanningWindow(window, a.size(), CV_64F);
+  double response = 0;
+  // On copies: with a window and sizes the DFT takes as they are, OpenCV 4.6 multiplies the
+  // window into its inputs in place (seen here: the previous frame came back windowed).
+  const cv::Point2d d = cv::phaseCorrelate(a.clone(), b.clone(), window, &response);
+  if (!(response >= kMinResponse) || !std::isfinite(d.x) || !std::isfinite(d.y)) return std::nullopt;
+  cv::Mat warp = (cv::Mat_<float>(2, 3) << 1, 0, static_cast<float>(d.x), 0, 1, static_cast<float>(d.y));
+  Registration r{d, 0};
+  cv::Mat fa, fb;
+  a.convertTo(fa, CV_32F);
+  b.convertTo(fb, CV_32F);
+  try {
+    cv::findTransformECC(fa, fb, warp, cv::MOTION_TRANSLATION,
+                         cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-5), cv::noArray(), 3);
+    const cv::Point2d refined(warp.at<float>(0, 2), warp.at<float>(1, 2));
+    // Kept only when it stays near the whole step (ECC can slide off on a frame whose figure
+    // moved more than the camera).
+    if (std::isfinite(refined.x) && std::isfinite(refined.y) && std::hypot(refined.x - d.x, refined.y - d.y) < 1.0) r.step = refined;
+  } catch (const cv::Exception&) {
+    // A degenerate frame (ECC found no correlation): the phase estimate stands.
+  }
+  cv::Mat back;
+  const cv::Matx23d m(1, 0, r.step.x, 0, 1, r.step.y);  // samples b at x + step: a's frame
+  cv::warpAffine(fb, back, m, fb.size(), cv::INTER_LINEAR | cv::WARP_INVERSE_MAP, cv::BORDER_REPLICATE);
+  r.residual = cv::mean(cv::abs(back - fa))[0];
+  return r;
+}
+
 // The camera's path when nothing holds still: the translation from each frame to the next,
-// summed. Phase correlation finds each step whole (several pixels, robust to the figure's own
-// motion), but its sub-pixel centroid is biased by a few hundredths of a pixel even between
-// identical frames; enhanced correlation (ECC, Evangelidis and Psarakis 2008), a Gauss-Newton
-// fit of the translation started there, makes it exact.
+// summed (a step that does not register counts as no camera motion).
 std::vector<std::array<double, 2>> consecutive_path(const std::vector<cv::Mat>& greys) {
   std::vector<std::array<double, 2>> path;
   cv::Mat prev;
   for (const cv::Mat& grey : greys) {
     const cv::Mat ink = ink_of(grey);
     std::array<double, 2> at = path.empty() ? std::array<double, 2>{0, 0} : path.back();
-    if (!prev.empty() && prev.size() == ink.size() && cv::sum(prev)[0] > 0 && cv::sum(ink)[0] > 0) {
-      cv::Mat window;
-      cv::createHanningWindow(window, ink.size(), CV_64F);
-      double response = 0;
-      // On copies: with a window and sizes the DFT takes as they are, OpenCV 4.6 multiplies the
-      // window into its inputs in place (seen here: the previous frame came back windowed).
-      const cv::Point2d d = cv::phaseCorrelate(prev.clone(), ink.clone(), window, &response);
-      if (response >= kMinResponse && std::isfinite(d.x) && std::isfinite(d.y)) {
-        cv::Mat warp = (cv::Mat_<float>(2, 3) << 1, 0, static_cast<float>(d.x), 0, 1, static_cast<float>(d.y));
-        cv::Point2d step = d;
-        try {
-          cv::Mat a, b;
-          prev.convertTo(a, CV_32F);
-          ink.convertTo(b, CV_32F);
-          cv::findTransformECC(a, b, warp, cv::MOTION_TRANSLATION,
-                               cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-5), cv::noArray(), 3);
-          const cv::Point2d refined(warp.at<float>(0, 2), warp.at<float>(1, 2));
-          // Kept only when it stays near the whole step (ECC can slide off on a frame whose
-          // figure moved more than the camera).
-          if (std::isfinite(refined.x) && std::isfinite(refined.y) && std::hypot(refined.x - d.x, refined.y - d.y) < 1.0) step = refined;
-        } catch (const cv::Exception&) {
-          // A degenerate frame (ECC found no correlation): the phase estimate stands.
-        }
-        at = {at[0] + step.x, at[1] + step.y};
-      }
-    }
+    if (!prev.empty())
+      if (const auto r = register_translation(prev, ink)) at = {at[0] + r->step.x, at[1] + r->step.y};
     path.push_back(at);
     prev = ink;
   }
   return path;
+}
+
+// Where the clip may end as it began (a loop: the last frame shows the first's figure, moved
+// only by the camera), the camera's move from the first frame to the last; nothing otherwise.
+// The rule is the fitter's loop test on its keyframes (fit_job's returns_to_start: the first
+// and last differ by under a quarter of a mean step between keyframes, at their default
+// spacing), with the last frame registered onto the first. The caller still checks that the
+// move is shake-sized: a figure that only slid along keeps its shape too.
+std::optional<std::array<double, 2>> loop_closure(const std::vector<cv::Mat>& greys) {
+  const int n = static_cast<int>(greys.size());
+  if (n < 4) return std::nullopt;
+  const auto closure = register_translation(ink_of(greys.front()), ink_of(greys.back()));
+  if (!closure) return std::nullopt;
+  const int stride = std::max(1, static_cast<int>(std::lround((n - 1) / static_cast<double>(kLoopIntervals))));
+  double sum = 0;
+  int count = 0;
+  for (int i = 0; i + stride < n; i += stride, ++count)
+    sum += cv::mean(cv::abs(ink_of(greys[static_cast<size_t>(i)]) - ink_of(greys[static_cast<size_t>(i + stride)])))[0];
+  if (count == 0 || !(closure->residual <= kLoopResidualShare * sum / count)) return std::nullopt;
+  return std::array<double, 2>{closure->step.x, closure->step.y};
+}
+
+// The shake in `path` (the camera's path plus the figure's common motion): the path less its
+// low-pass. On a loop the motion is periodic with the clip's length less one (the last frame
+// is the first again), so the low-pass runs round the loop: every frame has a whole window (at
+// the ends the parabola otherwise leans on one side, and there it left a 1-2 px shake in the
+// last frame, a jump at every pass of the loop's seam), and the last frame's shake is the
+// first's plus the camera's move between them (`closure`), measured directly: the stabilised
+// clip ends exactly where it began. `closure` is taken only when it is shake-sized (within
+// kLoopShakeRms rms of the straight estimate, or half a pixel); `*loop` says whether it was.
+std::vector<std::array<double, 2>> shake_of(const std::vector<std::array<double, 2>>& path, double sigma_frames,
+                                            const std::optional<std::array<double, 2>>& closure, bool* loop) {
+  const size_t n = path.size();
+  std::vector<std::array<double, 2>> shake(n);
+  const auto smooth = apply_lowpass(local_parabola(static_cast<int>(n), sigma_frames), path);
+  double ms = 0;
+  for (size_t i = 0; i < n; ++i) {
+    shake[i] = {path[i][0] - smooth[i][0], path[i][1] - smooth[i][1]};
+    ms += (shake[i][0] * shake[i][0] + shake[i][1] * shake[i][1]) / static_cast<double>(n);
+  }
+  *loop = closure && std::hypot((*closure)[0], (*closure)[1]) <= std::max(0.5, kLoopShakeRms * std::sqrt(ms));
+  if (!*loop) return shake;
+  const int period = static_cast<int>(n) - 1;
+  const int r = std::min(static_cast<int>(std::ceil(3 * sigma_frames)), 4 * period);
+  std::vector<std::array<double, 2>> ring(static_cast<size_t>(period + 2 * r));
+  for (int j = 0; j < period + 2 * r; ++j) ring[static_cast<size_t>(j)] = path[static_cast<size_t>(((j - r) % period + period) % period)];
+  const auto round = apply_lowpass(local_parabola(period + 2 * r, sigma_frames), ring);
+  for (int i = 0; i < period; ++i) {
+    const auto& m = round[static_cast<size_t>(i + r)];
+    shake[static_cast<size_t>(i)] = {path[static_cast<size_t>(i)][0] - m[0], path[static_cast<size_t>(i)][1] - m[1]};
+  }
+  shake[n - 1] = {shake[0][0] + (*closure)[0], shake[0][1] + (*closure)[1]};
+  return shake;
 }
 
 }  // namespace
@@ -189,6 +267,7 @@ ShakeEstimate ShakeEstimator::estimate(double sigma_frames) const {
   const StillRegionPath still = register_still_region(greys_);
   est.still_share = still.still_share;
   est.still_residual_px = still.still_residual_px;
+  const std::optional<std::array<double, 2>> closure = loop_closure(greys_);
   std::vector<std::array<double, 2>> shake;
   if (still.found) {
     est.path_lowpass_ratio = lowpass_ratio(lp, still.path);
@@ -201,13 +280,13 @@ ShakeEstimate ShakeEstimator::estimate(double sigma_frames) const {
       for (const auto& p : still.path) shake.push_back({p[0] - mean[0], p[1] - mean[1]});
     } else {
       est.model = "still_smooth";
-      const auto smooth = apply(lp, still.path);
-      for (size_t i = 0; i < n; ++i) shake.push_back({still.path[i][0] - smooth[i][0], still.path[i][1] - smooth[i][1]});
+      // The still part's path is measured against the first frame, so a loop closes on its
+      // own last value.
+      const std::optional<std::array<double, 2>> own = closure ? std::optional(still.path.back()) : std::nullopt;
+      shake = shake_of(still.path, sigma_frames, own, &est.loop);
     }
   } else {
-    const auto path = consecutive_path(greys_);
-    const auto smooth = apply(lp, path);
-    for (size_t i = 0; i < n; ++i) shake.push_back({path[i][0] - smooth[i][0], path[i][1] - smooth[i][1]});
+    shake = shake_of(consecutive_path(greys_), sigma_frames, closure, &est.loop);
   }
   for (size_t i = 0; i < n; ++i) est.shake[i] = {shake[i][0] * scale_, shake[i][1] * scale_};
   return est;

@@ -16,7 +16,9 @@
 //    sigma * sqrt(p / N) of the shake in (p the low-pass's degrees of freedom over N frames):
 //    nothing in such a clip tells the rest apart from the motion.
 // The low-pass is a Gaussian-weighted local parabola, so a steady drift or acceleration passes
-// whole. This is the classic smoothed-camera-path stabiliser (e.g. Matsushita et al. 2006,
+// whole. On a loop (the last frame registers onto the first as well as a still frame would) it
+// runs round the loop, and the last frame's shake is the first's plus the camera's move between
+// them, so the stabilised clip closes and the fit's loop seam does not jump. This is the classic smoothed-camera-path stabiliser (e.g. Matsushita et al. 2006,
 // "Full-frame video stabilization"; here with translation only, which is what shake of a fixed
 // camera is), with the still part as its reference where there is one.
 // Off by default: a whole figure that genuinely moves quickly (a hop) would be damped too.
@@ -38,6 +40,7 @@ struct ShakeEstimate {
   double still_share = 0;        // the still part's share of the first frame's edges
   double still_residual_px = 0;  // its median residual, px of displacement at the measuring width
   double path_lowpass_ratio = 0; // the still part's path: low-pass energy over a white path's
+  bool loop = false;             // the clip ends as it began: the low-pass ran round the loop
 };
 
 // Accumulates the frames of a clip one at a time and reports the shake of each.

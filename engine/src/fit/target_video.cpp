@@ -641,11 +641,13 @@ TargetFrames load_target(const fs::path& source, int width, int height,
       t.frame_shake = options.shake_from->frame_shake;
       t.shake_model = options.shake_from->shake_model;
       t.still_share = options.shake_from->still_share;
+      t.shake_loop = options.shake_from->shake_loop;
     } else {
       ShakeEstimate est = shake.estimate(options.stabilise_sigma_s * t.fps);
       t.frame_shake = std::move(est.shake);
       t.shake_model = est.model;
       t.still_share = est.still_share;
+      t.shake_loop = est.loop;
     }
     for (int k = 0; k < K; ++k) {
       const auto& d = t.frame_shake.at(static_cast<size_t>(kept_index[static_cast<size_t>(k)]));
