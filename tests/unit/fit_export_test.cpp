@@ -5,6 +5,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 #include <unistd.h>
 
@@ -200,6 +202,57 @@ TEST_CASE("a gradient follows the part of its shape that shows; points under tra
   CHECK(got.d == doctest::Approx(1).epsilon(1e-4));
   CHECK(got.e == doctest::Approx(5).epsilon(1e-3));
   CHECK(got.f == doctest::Approx(0).epsilon(1e-3));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a gradient whose shape shows none of its motion along the ramp stays put") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("svgm_export_ray_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path in = dir / "in.svg", out = dir / "animation.svg";
+  // Two thin wedges (rays from a sun at (10, 50)): "along" under a radial ramp centred on the
+  // sun, fading out before the tip, so its outline runs along its ramp (n · m is sin 2.9° on
+  // its sides, its tip transparent); "across" under a ramp across the wedge, which its long
+  // sides show fully.
+  std::ofstream(in) << R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100" viewBox="0 0 100 100">
+  <defs>
+    <radialGradient id="along" gradientUnits="userSpaceOnUse" cx="10" cy="50" r="60">
+      <stop offset="0" stop-color="#fc0"/><stop offset="1" stop-color="#f80" stop-opacity="0"/>
+    </radialGradient>
+    <linearGradient id="across" gradientUnits="userSpaceOnUse" x1="0" y1="20" x2="0" y2="30">
+      <stop offset="0" stop-color="#00f"/><stop offset="1" stop-color="#0ff"/>
+    </linearGradient>
+  </defs>
+  <path id="a" d="M10 50 L90 46 L90 54 Z" fill="url(#along)"/>
+  <path id="b" d="M10 25 L90 21 L90 29 Z" fill="url(#across)"/>
+</svg>)svg";
+  const Scene scene = read_svg_file(in);
+  REQUIRE(scene.paths.size() == 2);
+  const RasterPlan plan = plan_raster(scene, Affine{}, 100, 100);
+  // Keyframe 1: both wedges turn by 6 degrees about the sun and move (2, 1).
+  const double a = 6 * 3.14159265358979 / 180;
+  const Affine move = Affine::translate(12, 51) * Affine{std::cos(a), std::sin(a), -std::sin(a), std::cos(a), 0, 0} *
+                      Affine::translate(-10, -50);
+  std::vector<double> pts(plan.rest_cp.begin(), plan.rest_cp.end());
+  for (int i = 0; i < plan.n_cp; ++i) {
+    const Vec2 q = move.apply({plan.rest_cp[2 * i], plan.rest_cp[2 * i + 1]});
+    pts.push_back(q.x);
+    pts.push_back(q.y);
+  }
+  AnimationTiming timing;
+  timing.keyframes = 2;
+  timing.duration_s = 2;
+  timing.loop = LoopMode::Once;
+  CHECK(write_animation_svg(in, scene, plan, pts, timing, out).empty());
+  std::ifstream f(out);
+  const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  const size_t along = text.find("<radialGradient"), across = text.find("<linearGradient");
+  REQUIRE(along != std::string::npos);
+  REQUIRE(across != std::string::npos);
+  const std::string along_el = text.substr(along, text.find("</radialGradient>", along) - along);
+  const std::string across_el = text.substr(across, text.find("</linearGradient>", across) - across);
+  CHECK(along_el.find("gradientTransform") == std::string::npos);
+  CHECK(across_el.find("attributeName=\"gradientTransform\"") != std::string::npos);
   fs::remove_all(dir);
 }
 

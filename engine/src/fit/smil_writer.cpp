@@ -61,6 +61,12 @@ constexpr const char* kShapeGeometry[] = {"x", "y", "width", "height", "rx", "ry
 // (1e-4 degrees moves a point 1000 units away by 0.002; 1e-6 of scale, by 0.001).
 constexpr int kAngleDecimals = 4, kScaleDecimals = 6;
 
+// A gradient is carried with its shape only when the shape's outline shows at least this much
+// of its motion along the gradient's colour direction (colour_visibility: 0.5 for a round
+// outline, sin² of the half-angle for a wedge along a radial ramp).
+constexpr double kMinColourVisibility = 0.1;
+constexpr int kVisibilitySamples = 8;  // per cubic segment
+
 double rounded(double v, int decimals) {
   const double f = std::pow(10.0, decimals);
   const double r = std::round(v * f) / f;
@@ -226,11 +232,50 @@ std::optional<Similarity> fit_colour_similarity(const std::vector<Vec2>& from, c
   return s;
 }
 
+// How much of its motion along its colour direction a shape's outline shows: over the visible
+// outline at rest (length-weighted samples, each counting with the paint's opacity there, none
+// off the canvas), the mean of (n · m)², n the outline's normal and m the colour direction. An
+// edge shows only its motion across itself, so an outline running along its ramp (a sun ray
+// under a radial ramp centred at its base: its long sides follow the ramp, its tip has faded
+// out and its base hides behind the sun) shows none of the motion its ramp would need, and the
+// fit never placed it along the ramp either (it fitted the shape under a gradient that stayed
+// put). 0.5 for a round outline under any gradient. `cp`: the path's rest points, canvas space.
+double colour_visibility(const Path& path, const Gradient& g, const double* cp, Vec2 canvas) {
+  const Affine m = g.to_canvas.inverse();  // canvas -> gradient space; ∇_x t = mᵀ ∇_u t
+  double seen = 0, total = 0;
+  for (const Subpath& sp : path.subpaths) {
+    for (size_t s = 0; s + 3 < sp.points.size(); s += 3) {
+      const Vec2 p0{cp[2 * s], cp[2 * s + 1]}, p1{cp[2 * s + 2], cp[2 * s + 3]}, p2{cp[2 * s + 4], cp[2 * s + 5]},
+          p3{cp[2 * s + 6], cp[2 * s + 7]};
+      for (int j = 0; j < kVisibilitySamples; ++j) {
+        const double t = (j + 0.5) / kVisibilitySamples, u = 1 - t;
+        const Vec2 b = (u * u * u) * p0 + (3 * u * u * t) * p1 + (3 * u * t * t) * p2 + (t * t * t) * p3;
+        const Vec2 d = (3 * u * u) * (p1 - p0) + (6 * u * t) * (p2 - p1) + (3 * t * t) * (p3 - p2);
+        const double len = std::hypot(d.x, d.y);
+        if (!(len > 1e-12) || b.x < 0 || b.y < 0 || b.x > canvas.x || b.y > canvas.y) continue;
+        const std::optional<Rgba> c = gradient_color(g, m, b);
+        const double w = (c ? c->a : 0.0) * len;
+        if (!(w > 0)) continue;
+        const Vec2 du = g.radial ? m.apply(b) - g.center : g.p2 - g.p1;
+        const Vec2 dx{m.a * du.x + m.b * du.y, m.c * du.x + m.d * du.y};
+        const double dl = std::hypot(dx.x, dx.y);
+        if (!(dl > 1e-12)) continue;
+        const double along = (-d.y * dx.x + d.x * dx.y) / (len * dl);  // n · m, n = perp(d) / |d|
+        seen += w * along * along;
+        total += w;
+      }
+    }
+    cp += 2 * sp.points.size();
+  }
+  return total > 0 ? seen / total : 0.5;
+}
+
 // The gradient transform that carries a user-space gradient `g` along with its path's shape,
 // per written value: the similarity from the path's points at rest to its points in that value
 // that keeps their colours (fit_colour_similarity), in the path's own coordinates, before the
 // gradient's own transform `own`. Nothing when the shape only ever moves by less than the
-// written precision.
+// written precision, or when its outline does not show its motion along the ramp
+// (colour_visibility): the gradient then stays where the document and the fit put it.
 std::optional<std::vector<TransformParts>> gradient_motion(const Path& path, const Gradient& g, Vec2 canvas,
                                                            const RasterPlan& plan, int f, const std::vector<double>& points, int keyframes,
                                                            const Affine& own, int decimals) {
@@ -243,6 +288,10 @@ std::optional<std::vector<TransformParts>> gradient_motion(const Path& path, con
     for (size_t i = 0; i < count; ++i) out[i] = to_local.apply({cp[2 * i], cp[2 * i + 1]});
     return out;
   };
+  size_t outline_points = 0;
+  for (const Subpath& sp : path.subpaths) outline_points += sp.points.size();
+  if (outline_points == count && colour_visibility(path, g, &points[first * 2], canvas) < kMinColourVisibility)
+    return std::nullopt;
   const std::vector<Vec2> rest = local_points(0);
   const std::vector<Vec2> directions = colour_directions(g, (to_local * g.to_canvas).inverse(), rest);
   // A point where the paint is transparent, or off the canvas, was never seen by the fit: it
