@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <string>
 
@@ -16,6 +17,27 @@
 #include "svgmotion/svg_reader.h"
 
 using namespace svgm;
+
+namespace {
+
+// Exports `in` with two keyframes, 2 s apart, played once: the rest pose and every rest point
+// moved by `move` (canvas space, the plan at 100 x 100 px of a 100-unit canvas).
+std::vector<std::string> export_moved(const std::filesystem::path& in, const Scene& scene, const RasterPlan& plan,
+                                      const std::function<Vec2(Vec2)>& move, const std::filesystem::path& out) {
+  std::vector<double> pts(plan.rest_cp.begin(), plan.rest_cp.end());
+  for (int i = 0; i < plan.n_cp; ++i) {
+    const Vec2 q = move({plan.rest_cp[2 * i], plan.rest_cp[2 * i + 1]});
+    pts.push_back(q.x);
+    pts.push_back(q.y);
+  }
+  AnimationTiming timing;
+  timing.keyframes = 2;
+  timing.duration_s = 2;
+  timing.loop = LoopMode::Once;
+  return write_animation_svg(in, scene, plan, pts, timing, out);
+}
+
+}  // namespace
 
 TEST_SUITE("fit") {
 
@@ -112,17 +134,7 @@ TEST_CASE("a user-space gradient moves with its path's shape; a shared one stays
   // Keyframe 1 turns every shape by 90 degrees about (50, 50) and moves it by (5, 0): the
   // same similarity must come back as the gradient's motion.
   const Affine move = Affine::translate(55, 50) * Affine{0, 1, -1, 0, 0, 0} * Affine::translate(-50, -50);
-  std::vector<double> pts(plan.rest_cp.begin(), plan.rest_cp.end());
-  for (int i = 0; i < plan.n_cp; ++i) {
-    const Vec2 q = move.apply({plan.rest_cp[2 * i], plan.rest_cp[2 * i + 1]});
-    pts.push_back(q.x);
-    pts.push_back(q.y);
-  }
-  AnimationTiming timing;
-  timing.keyframes = 2;
-  timing.duration_s = 2;
-  timing.loop = LoopMode::Once;
-  const std::vector<std::string> warnings = write_animation_svg(in, scene, plan, pts, timing, out);
+  const std::vector<std::string> warnings = export_moved(in, scene, plan, [&](Vec2 p) { return move.apply(p); }, out);
   REQUIRE(warnings.size() == 1);
   CHECK(warnings[0].find("1 gradients shared by several shapes stay where the document puts them") != std::string::npos);
 
@@ -176,21 +188,11 @@ TEST_CASE("a gradient follows the part of its shape that shows; points under tra
   const RasterPlan plan = plan_raster(scene, Affine{}, 100, 100);
   // Keyframe 1: the ray moves by (5, 0); the points under transparent paint (x >= 50) also
   // swing 15 px down. The shape's plain similarity fit would turn the gradient with them.
-  std::vector<double> pts(plan.rest_cp.begin(), plan.rest_cp.end());
   int wandering = 0;
-  for (int i = 0; i < plan.n_cp; ++i) {
-    const double x = plan.rest_cp[2 * i], y = plan.rest_cp[2 * i + 1];
-    wandering += x >= 50;
-    pts.push_back(x + 5);
-    pts.push_back(y + (x >= 50 ? 15 : 0));
-  }
+  for (int i = 0; i < plan.n_cp; ++i) wandering += plan.rest_cp[2 * i] >= 50;
   REQUIRE(wandering >= 2);
   REQUIRE(wandering < plan.n_cp - 2);
-  AnimationTiming timing;
-  timing.keyframes = 2;
-  timing.duration_s = 2;
-  timing.loop = LoopMode::Once;
-  CHECK(write_animation_svg(in, scene, plan, pts, timing, out).empty());
+  CHECK(export_moved(in, scene, plan, [](Vec2 p) { return Vec2{p.x + 5, p.y + (p.x >= 50 ? 15 : 0)}; }, out).empty());
   SvgReadLimits end;
   end.animation_time = 2;
   const Scene back = read_svg_file(out, end);
@@ -233,17 +235,7 @@ TEST_CASE("a gradient whose shape shows none of its motion along the ramp stays 
   const double a = 6 * 3.14159265358979 / 180;
   const Affine move = Affine::translate(12, 51) * Affine{std::cos(a), std::sin(a), -std::sin(a), std::cos(a), 0, 0} *
                       Affine::translate(-10, -50);
-  std::vector<double> pts(plan.rest_cp.begin(), plan.rest_cp.end());
-  for (int i = 0; i < plan.n_cp; ++i) {
-    const Vec2 q = move.apply({plan.rest_cp[2 * i], plan.rest_cp[2 * i + 1]});
-    pts.push_back(q.x);
-    pts.push_back(q.y);
-  }
-  AnimationTiming timing;
-  timing.keyframes = 2;
-  timing.duration_s = 2;
-  timing.loop = LoopMode::Once;
-  CHECK(write_animation_svg(in, scene, plan, pts, timing, out).empty());
+  CHECK(export_moved(in, scene, plan, [&](Vec2 p) { return move.apply(p); }, out).empty());
   std::ifstream f(out);
   const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
   const size_t along = text.find("<radialGradient"), across = text.find("<linearGradient");

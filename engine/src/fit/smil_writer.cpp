@@ -180,19 +180,15 @@ std::string_view href_of(pugi::xml_node n) {
   return {};
 }
 
-// Which way a gradient's colour changes at each of `points` (path-local): the unit gradient of
-// its parameter (a linear gradient's vector; a radial one's direction from its centre, focal
-// point aside), zero where it has none. `to_gradient` maps path-local to gradient space.
-std::vector<Vec2> colour_directions(const Gradient& g, const Affine& to_gradient, const std::vector<Vec2>& points) {
+// Which way a gradient's colour changes at point x: the unit gradient of its parameter (a
+// linear gradient's vector; a radial one's direction from its centre, focal point aside), zero
+// where it has none. `to_gradient` maps x's space to gradient space.
+Vec2 colour_direction(const Gradient& g, const Affine& to_gradient, Vec2 x) {
   const Affine& m = to_gradient;  // ∇_x t = mᵀ ∇_u t for u = m(x)
-  std::vector<Vec2> out(points.size());
-  for (size_t i = 0; i < points.size(); ++i) {
-    const Vec2 du = g.radial ? m.apply(points[i]) - g.center : g.p2 - g.p1;
-    const Vec2 dx{m.a * du.x + m.b * du.y, m.c * du.x + m.d * du.y};
-    const double len = std::hypot(dx.x, dx.y);
-    if (len > 1e-12) out[i] = (1.0 / len) * dx;
-  }
-  return out;
+  const Vec2 du = g.radial ? m.apply(x) - g.center : g.p2 - g.p1;
+  const Vec2 dx{m.a * du.x + m.b * du.y, m.c * du.x + m.d * du.y};
+  const double len = std::hypot(dx.x, dx.y);
+  return len > 1e-12 ? (1.0 / len) * dx : Vec2{};
 }
 
 // The similarity M (x ↦ [a −b; b a] x + t) that carries a gradient with a moving shape: least
@@ -256,11 +252,9 @@ double colour_visibility(const Path& path, const Gradient& g, const double* cp, 
         const std::optional<Rgba> c = gradient_color(g, m, b);
         const double w = (c ? c->a : 0.0) * len;
         if (!(w > 0)) continue;
-        const Vec2 du = g.radial ? m.apply(b) - g.center : g.p2 - g.p1;
-        const Vec2 dx{m.a * du.x + m.b * du.y, m.c * du.x + m.d * du.y};
-        const double dl = std::hypot(dx.x, dx.y);
-        if (!(dl > 1e-12)) continue;
-        const double along = (-d.y * dx.x + d.x * dx.y) / (len * dl);  // n · m, n = perp(d) / |d|
+        const Vec2 dir = colour_direction(g, m, b);
+        if (dir.x == 0 && dir.y == 0) continue;
+        const double along = (-d.y * dir.x + d.x * dir.y) / len;  // n · m, n = perp(d) / |d|
         seen += w * along * along;
         total += w;
       }
@@ -293,7 +287,9 @@ std::optional<std::vector<TransformParts>> gradient_motion(const Path& path, con
   if (outline_points == count && colour_visibility(path, g, &points[first * 2], canvas) < kMinColourVisibility)
     return std::nullopt;
   const std::vector<Vec2> rest = local_points(0);
-  const std::vector<Vec2> directions = colour_directions(g, (to_local * g.to_canvas).inverse(), rest);
+  const Affine local_to_gradient = (to_local * g.to_canvas).inverse();
+  std::vector<Vec2> directions;
+  for (const Vec2& r : rest) directions.push_back(colour_direction(g, local_to_gradient, r));
   // A point where the paint is transparent, or off the canvas, was never seen by the fit: it
   // says nothing of where the shape went (a sun ray fading out before its tip leaves the tip's
   // points free to wander, and they tilted and shrank the ray's fit). Each point counts with

@@ -206,13 +206,18 @@ std::vector<std::array<double, 2>> consecutive_path(const std::vector<cv::Mat>& 
 std::optional<std::array<double, 2>> loop_closure(const std::vector<cv::Mat>& greys) {
   const int n = static_cast<int>(greys.size());
   if (n < 4) return std::nullopt;
-  const auto closure = register_translation(ink_of(greys.front()), ink_of(greys.back()));
+  const cv::Mat first = ink_of(greys.front());
+  const auto closure = register_translation(first, ink_of(greys.back()));
   if (!closure) return std::nullopt;
   const int stride = std::max(1, static_cast<int>(std::lround((n - 1) / static_cast<double>(kLoopIntervals))));
   double sum = 0;
   int count = 0;
-  for (int i = 0; i + stride < n; i += stride, ++count)
-    sum += cv::mean(cv::abs(ink_of(greys[static_cast<size_t>(i)]) - ink_of(greys[static_cast<size_t>(i + stride)])))[0];
+  cv::Mat prev = first;
+  for (int i = 0; i + stride < n; i += stride, ++count) {
+    cv::Mat next = ink_of(greys[static_cast<size_t>(i + stride)]);
+    sum += cv::mean(cv::abs(prev - next))[0];
+    prev = next;
+  }
   if (count == 0 || !(closure->residual <= kLoopResidualShare * sum / count)) return std::nullopt;
   return std::array<double, 2>{closure->step.x, closure->step.y};
 }
@@ -267,7 +272,6 @@ ShakeEstimate ShakeEstimator::estimate(double sigma_frames) const {
   const StillRegionPath still = register_still_region(greys_);
   est.still_share = still.still_share;
   est.still_residual_px = still.still_residual_px;
-  const std::optional<std::array<double, 2>> closure = loop_closure(greys_);
   std::vector<std::array<double, 2>> shake;
   if (still.found) {
     est.path_lowpass_ratio = lowpass_ratio(lp, still.path);
@@ -282,11 +286,12 @@ ShakeEstimate ShakeEstimator::estimate(double sigma_frames) const {
       est.model = "still_smooth";
       // The still part's path is measured against the first frame, so a loop closes on its
       // own last value.
-      const std::optional<std::array<double, 2>> own = closure ? std::optional(still.path.back()) : std::nullopt;
+      const std::optional<std::array<double, 2>> own =
+          loop_closure(greys_) ? std::optional(still.path.back()) : std::nullopt;
       shake = shake_of(still.path, sigma_frames, own, &est.loop);
     }
   } else {
-    shake = shake_of(consecutive_path(greys_), sigma_frames, closure, &est.loop);
+    shake = shake_of(consecutive_path(greys_), sigma_frames, loop_closure(greys_), &est.loop);
   }
   for (size_t i = 0; i < n; ++i) est.shake[i] = {shake[i][0] * scale_, shake[i][1] * scale_};
   return est;

@@ -370,8 +370,9 @@ void clean_keyframe(TargetFrames& t, int k, const TargetOptions& opt) {
       for (int x = 0; x < w; ++x) o[x] = keep[static_cast<size_t>(l[x])] ? 0 : 1;
     }
     cv::Mat open_labels;
-    cv::connectedComponents(open, open_labels, 4, CV_32S);  // 4: a diagonal gap in a kept outline closes it
-    std::vector<uint8_t> outside(static_cast<size_t>(w) * h + 1, 0);  // by open_labels' label
+    // 4-connected: a diagonal gap in a kept outline closes it.
+    const int open_count = cv::connectedComponents(open, open_labels, 4, CV_32S);
+    std::vector<uint8_t> outside(static_cast<size_t>(open_count), 0);  // by open_labels' label
     auto seed = [&](int x, int y) {
       if (open.at<uint8_t>(y, x)) outside[static_cast<size_t>(open_labels.at<int>(y, x))] = 1;
     };
