@@ -165,6 +165,39 @@ TEST_CASE("stabilise: on a loop the low-pass runs round it and the last frame la
   }
 }
 
+TEST_CASE("stabilise: on a loop the summed path is closed on the camera's own first-to-last move") {
+  // A camera path round a loop (a circle, the figure's common motion, plus a white jitter),
+  // measured as a sum of frame-to-frame steps that each err by the same small bias: a figure
+  // that deforms pulls every registration a little the same way. Summed over 36 steps the bias
+  // leaves the path's end 36 biases from where the last frame registers onto the first (the
+  // closure), and read as periodic the path would jump by that much at the seam. Closed, it is
+  // the true path exactly: a constant bias per step is a ramp, and the ramp is what is spread.
+  constexpr int P = 36, N = P + 1;
+  constexpr double kPi = 3.14159265358979323846;
+  const std::array<double, 2> bias{0.07, -0.05};
+  std::vector<std::array<double, 2>> truth, summed;
+  for (int i = 0; i < N; ++i) {
+    const double a = 2 * kPi * (i % P) / P;
+    const auto j = white_jitter(i + 3);
+    truth.push_back({5 * std::sin(a) + j[0], 3 * (1 - std::cos(a)) + j[1]});
+    summed.push_back(i == 0 ? truth[0]
+                            : std::array<double, 2>{summed.back()[0] + truth[i][0] - truth[i - 1][0] + bias[0],
+                                                    summed.back()[1] + truth[i][1] - truth[i - 1][1] + bias[1]});
+  }
+  const std::array<double, 2> closure{truth[N - 1][0] - truth[0][0], truth[N - 1][1] - truth[0][1]};
+  CHECK(std::fabs(summed[N - 1][0] - summed[0][0] - closure[0] - P * bias[0]) < 1e-12);
+  const auto closed = close_loop(summed, closure);
+  REQUIRE(closed.size() == N);
+  double worst = 0;
+  for (int i = 0; i < N; ++i)
+    for (int a = 0; a < 2; ++a) worst = std::max(worst, std::fabs(closed[i][a] - truth[i][a]));
+  CHECK(worst < 1e-12);
+  CHECK(std::fabs(closed[N - 1][0] - closed[0][0] - closure[0]) < 1e-12);
+  CHECK(std::fabs(closed[N - 1][1] - closed[0][1] - closure[1]) < 1e-12);
+  // Fewer than two frames: nothing to spread.
+  CHECK(close_loop({{1.0, 2.0}}, {5.0, 5.0}) == std::vector<std::array<double, 2>>{{1.0, 2.0}});
+}
+
 TEST_CASE("stabilise: on a body that holds while a limb moves, the shake is the whole jitter") {
   // The disc holds; the bar swings 6 px to and fro and bobs (its own smooth motion); the camera
   // jitters. The still disc shows the jitter itself, about its mean (the first frame is shaken

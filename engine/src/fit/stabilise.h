@@ -64,6 +64,13 @@ class ShakeEstimator {
   std::vector<cv::Mat> greys_;             // every frame, grey at the measuring width (own depth)
 };
 
+// A camera path summed from frame-to-frame steps round a loop, closed: its first-to-last move
+// made equal to `closure` (the camera's move from the first frame to the last, registered
+// directly) by spreading the difference evenly over the steps. A constant error per step
+// (a ramp) comes back out whole.
+std::vector<std::array<double, 2>> close_loop(const std::vector<std::array<double, 2>>& path,
+                                              const std::array<double, 2>& closure);
+
 // `frame` moved by (-shake), same size, edges repeated (the background continues).
 cv::Mat remove_shake(const cv::Mat& frame, const std::array<double, 2>& shake);
 
