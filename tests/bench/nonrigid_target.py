@@ -20,6 +20,10 @@ stay clean, so the fit is judged against what should have been generated):
   blur      Gaussian blur sigma 1.5 px                            drift    colour drift up to 8%
   jpeg      JPEG quality 20 per frame                             fps8     8 fps (frames held)
   jitter    1-2 px camera shake
+  inband    the same shake's part in the loop's lowest two harmonics alone: what is left of it
+            when everything the figure's motion (one swing per handle) does not also have is
+            taken out. With --hold 1 no stabiliser can leave less; fitting this video is their
+            bound (the clean fit is the bound when a part holds still)
 
 --hold K keeps the anchor and the K - 1 handles nearest it still (default 1: the anchor alone):
 a body that holds while its limbs move, the usual shape of a character animation ("the man
@@ -173,13 +177,25 @@ def degrade(frame, name, i, frames, rng, state):
     elif name == "fps8":
         if i % 3:
             return state["held"]
-    elif name == "jitter":
-        dx, dy = rng.uniform(-2, 2, 2)
+    elif name in ("jitter", "inband"):
+        dx, dy = rng.uniform(-2, 2, 2) if name == "jitter" else state["inband"][i]
         m = np.float32([[1, 0, dx], [0, 1, dy]])
         f = cv2.warpAffine(f, m, (f.shape[1], f.shape[0]), borderValue=(255, 255, 255))
     out = np.clip(f + 0.5, 0, 255).astype(np.uint8)
     state["held"] = out
     return out
+
+
+def inband_shake(rng, frames, harmonics=2):
+    """The jitter `jitter` draws (same generator, same order), low-passed round the loop (period
+    frames - 1; the last frame is the first again) to its mean and first `harmonics` harmonics:
+    the frequencies each handle's swing (one harmonic, plus the second its stretch and rotation
+    make) occupies, where no low-pass can tell shake from motion."""
+    shake = np.array([rng.uniform(-2, 2, 2) for _ in range(frames)])
+    spec = np.fft.rfft(shake[:-1], axis=0)
+    spec[harmonics + 1:] = 0
+    low = np.fft.irfft(spec, n=frames - 1, axis=0)
+    return np.vstack([low, low[:1]])
 
 
 def main(argv):
@@ -196,6 +212,8 @@ def main(argv):
     sh = round(size * h / w)
     vw = cv2.VideoWriter(os.path.join(outdir, "target.mp4"), cv2.VideoWriter_fourcc(*"avc1"), 24, (size, sh))
     rng, state = np.random.default_rng(seed + 7), {}
+    if defect == "inband":
+        state["inband"] = inband_shake(np.random.default_rng(seed + 7), frames)
     for i in range(frames):
         t = i / (frames - 1)
         q = motion(centres, anchor, t, seed, hold)

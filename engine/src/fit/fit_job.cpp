@@ -18,6 +18,7 @@
 #include "fit/blur_match.h"
 #include "fit/checkpoint.h"
 #include "fit/chroma_calibration.h"
+#include "fit/coincident_paths.h"
 #include "fit/correction_palette.h"
 #include "fit/document_order.h"
 #include "fit/group_transform.h"
@@ -139,6 +140,13 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   KnownMotion known;
   Scene palette_scene =
       job.palette ? apply_palette(scene, read_palette(*job.palette), job.palette->string()) : scene;
+  // Overlays with the outline of the path they cover move with it (coincident_paths.h); not
+  // when group transforms are exported (the document's groups are the fit's there).
+  if (!job.group_transforms) {
+    std::vector<std::string> notes;
+    palette_scene = merge_coincident_paths(palette_scene, &notes);
+    for (const std::string& n : notes) log::info("fit: group %s", n.c_str());
+  }
   // A procedural target's groups split where its motion moves them apart (motion_groups.h); not
   // when group transforms are exported (a document group has one transform).
   if (job.motion && !job.group_transforms) {
