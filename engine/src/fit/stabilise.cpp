@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "fit/still_region.h"
+#include "fit/tile_steps.h"
 
 #include <Eigen/Dense>
 
@@ -31,6 +32,8 @@ constexpr double kWhitePathRatio = 3;
 // loop test with its default 15 keyframes).
 constexpr double kLoopResidualShare = 0.25;
 constexpr int kLoopIntervals = 14;
+// The ink is smoothed by this (measuring pixels) for the tiles' Gauss-Newton.
+constexpr double kTileInkBlur = 1.0;
 // ... and when the camera's move between them is within this many times the rms shake a
 // straight low-pass finds (or half a pixel): a figure that slid along is not a loop.
 constexpr double kLoopShakeRms = 4;
@@ -181,18 +184,33 @@ std::optional<Registration> register_translation(const cv::Mat& a, const cv::Mat
   return r;
 }
 
-// The camera's path when nothing holds still: the translation from each frame to the next,
-// summed (a step that does not register counts as no camera motion).
+// The camera's path when nothing holds still: the steps from each frame to the next, summed (a
+// step that does not register counts as no camera motion). Each step is the whole frame's
+// registration, refined into a fixed blend of tile steps where the clip has the texture for it
+// (fit/tile_steps.h: a whole-frame registration of a deforming figure wobbles from step to step).
 std::vector<std::array<double, 2>> consecutive_path(const std::vector<cv::Mat>& greys) {
-  std::vector<std::array<double, 2>> path;
+  std::vector<std::optional<std::array<double, 2>>> starts;
+  std::vector<cv::Mat> smooth;  // the ink as tile_steps wants it
   cv::Mat prev;
   for (const cv::Mat& grey : greys) {
     const cv::Mat ink = ink_of(grey);
-    std::array<double, 2> at = path.empty() ? std::array<double, 2>{0, 0} : path.back();
-    if (!prev.empty())
-      if (const auto r = register_translation(prev, ink)) at = {at[0] + r->step.x, at[1] + r->step.y};
-    path.push_back(at);
+    if (!prev.empty()) {
+      const auto r = register_translation(prev, ink);
+      starts.push_back(r ? std::optional(std::array<double, 2>{r->step.x, r->step.y}) : std::nullopt);
+    }
+    cv::Mat f;
+    ink.convertTo(f, CV_32F);
+    cv::GaussianBlur(f, f, cv::Size(), kTileInkBlur, kTileInkBlur, cv::BORDER_REPLICATE);
+    smooth.push_back(std::move(f));
     prev = ink;
+  }
+  const auto blended = blended_steps(smooth, starts);
+  std::vector<std::array<double, 2>> path{{0, 0}};
+  for (size_t t = 0; t < starts.size(); ++t) {
+    std::array<double, 2> step{0, 0};
+    if (blended) step = (*blended)[t];
+    else if (starts[t]) step = *starts[t];
+    path.push_back({path.back()[0] + step[0], path.back()[1] + step[1]});
   }
   return path;
 }

@@ -11,10 +11,13 @@
 //    the figure did not move and all of it is shake (model "still"); when it has a course of
 //    its own (the whole figure drifting or hopping), only what its low-pass leaves is
 //    (model "still_smooth").
-//  - Nothing holds still: the path of frame-to-frame translations (phase correlation of the
-//    ink, refined by ECC), minus its low-pass over time (model "smooth"). This leaves about
-//    sigma * sqrt(p / N) of the shake in (p the low-pass's degrees of freedom over N frames):
-//    nothing in such a clip tells the rest apart from the motion.
+//  - Nothing holds still: the path of frame-to-frame steps, minus its low-pass over time (model
+//    "smooth"). Each step is a fixed blend of tile steps started at the whole frame's phase
+//    correlation and ECC (fit/tile_steps.h), so the figure's motion enters the path smoothly.
+//    This leaves about sigma * sqrt(p / N) of the shake in (p the low-pass's degrees of freedom
+//    over N frames): nothing in such a clip tells that part apart from the motion. On the
+//    non-rigid bench clips (49 frames, 1.6 px rms shake at 512 px) it is 0.44-0.48 px, as much
+//    as an ideal low-pass of the motion's own band leaves (0.47).
 // The low-pass is a Gaussian-weighted local parabola, so a steady drift or acceleration passes
 // whole. On a loop (the last frame registers onto the first as well as a still frame would) it
 // runs round the loop, and the last frame's shake is the first's plus the camera's move between
