@@ -116,6 +116,18 @@ std::vector<std::string> target_warnings(const TargetFrames& t, const std::strin
   return out;
 }
 
+// The fit's groups as the checkpoint's key names them: each group's paths by index, so a
+// checkpoint made under another grouping (another version's rules) is not resumed into this one.
+std::string group_membership(const Scene& s) {
+  std::string out;
+  for (const Group& g : s.groups) {
+    out += "[";
+    for (int p : g.paths) out += std::to_string(p) + ",";
+    out += "]";
+  }
+  return out;
+}
+
 }  // namespace
 
 int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
@@ -373,7 +385,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                           (job.palette ? stamp(*job.palette) : "-") + "|" + (job.tracks ? stamp(*job.tracks) : "-") +
                           "|refine " + std::to_string(refine_w) + "/" + std::to_string(refine_iters) +
                           "|split " + fmt("%.6g", job.max_segment) + "|denoise " + std::to_string(job.denoise_radius) +
-                          (job.stabilise ? "|stabilise" : "") + "|chroma " + fmt("%.6g", chroma_weight);
+                          (job.stabilise ? "|stabilise" : "") + "|chroma " + fmt("%.6g", chroma_weight) + "|groups " +
+                          group_membership(fit_scene);
   if (job.resume) {
     if (!fs::exists(ckpt)) throw Error(ckpt.string() + ": no checkpoint to resume from");
     fitter.restore(load_checkpoint(ckpt, key));
