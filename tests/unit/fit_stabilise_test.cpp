@@ -279,7 +279,9 @@ TEST_CASE("stabilise: tile steps recover a translated clip's steps from rough st
   std::vector<std::optional<std::array<double, 2>>> starts;
   for (int i = 0; i + 1 < N; ++i) starts.push_back(std::array<double, 2>{jit[i + 1][0] - jit[i][0] + 0.4, jit[i + 1][1] - jit[i][1] - 0.4});
   starts[3] = std::nullopt;  // a step that did not register stays no motion
-  const auto steps = blended_steps(inks, starts);
+  TileStepBlend blend(inks[0].size());
+  for (int i = 0; i + 1 < N; ++i) blend.add(inks[i], inks[i + 1], starts[i]);
+  const auto steps = blend.steps();
   REQUIRE(steps);
   REQUIRE(steps->size() == N - 1);
   double worst = 0;
@@ -290,8 +292,10 @@ TEST_CASE("stabilise: tile steps recover a translated clip's steps from rough st
   MESSAGE("largest step error " << worst << " px");
   CHECK(worst < 0.05);  // cubic resampling of one-pixel edges in 20-px tiles: a few hundredths
   // A blank clip has no texture to blend: nothing, and the caller keeps the whole-frame steps.
-  const std::vector<cv::Mat> blank(3, cv::Mat::zeros(kH, kW, CV_32F));
-  CHECK_FALSE(blended_steps(blank, {std::array<double, 2>{0, 0}, std::array<double, 2>{0, 0}}));
+  const cv::Mat blank = cv::Mat::zeros(kH, kW, CV_32F);
+  TileStepBlend plain(blank.size());
+  for (int i = 0; i < 2; ++i) plain.add(blank, blank, std::array<double, 2>{0, 0});
+  CHECK_FALSE(plain.steps());
 }
 
 TEST_CASE("stabilise: on a body that holds while a limb moves, the shake is the whole jitter") {

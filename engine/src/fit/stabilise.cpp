@@ -190,21 +190,23 @@ std::optional<Registration> register_translation(const cv::Mat& a, const cv::Mat
 // (fit/tile_steps.h: a whole-frame registration of a deforming figure wobbles from step to step).
 std::vector<std::array<double, 2>> consecutive_path(const std::vector<cv::Mat>& greys) {
   std::vector<std::optional<std::array<double, 2>>> starts;
-  std::vector<cv::Mat> smooth;  // the ink as tile_steps wants it
-  cv::Mat prev;
+  std::optional<TileStepBlend> blend;
+  cv::Mat prev, prev_smooth;
   for (const cv::Mat& grey : greys) {
     const cv::Mat ink = ink_of(grey);
+    cv::Mat smooth;  // the ink as the tiles want it
+    ink.convertTo(smooth, CV_32F);
+    cv::GaussianBlur(smooth, smooth, cv::Size(), kTileInkBlur, kTileInkBlur, cv::BORDER_REPLICATE);
     if (!prev.empty()) {
       const auto r = register_translation(prev, ink);
       starts.push_back(r ? std::optional(std::array<double, 2>{r->step.x, r->step.y}) : std::nullopt);
+      if (!blend) blend.emplace(smooth.size());
+      blend->add(prev_smooth, smooth, starts.back());
     }
-    cv::Mat f;
-    ink.convertTo(f, CV_32F);
-    cv::GaussianBlur(f, f, cv::Size(), kTileInkBlur, kTileInkBlur, cv::BORDER_REPLICATE);
-    smooth.push_back(std::move(f));
     prev = ink;
+    prev_smooth = smooth;
   }
-  const auto blended = blended_steps(smooth, starts);
+  const auto blended = blend ? blend->steps() : std::nullopt;
   std::vector<std::array<double, 2>> path{{0, 0}};
   for (size_t t = 0; t < starts.size(); ++t) {
     std::array<double, 2> step{0, 0};

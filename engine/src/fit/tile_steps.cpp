@@ -24,13 +24,6 @@ constexpr int kMaxIterations = 20;
 // The blend's weights must pin both directions: smaller over larger eigenvalue at least this.
 constexpr double kMinConditioning = 1e-3;
 
-struct Tile {
-  cv::Rect rect;
-  bool usable = true;
-  cv::Matx22d weight = cv::Matx22d::zeros();  // sum over the steps of its normal matrices
-  std::vector<cv::Vec2d> step;                // per registered step
-};
-
 // The tile's translation d from `a` to `b` (b(x + d) = a(x) over the tile), started at `start`:
 // inverse-compositional Gauss-Newton, so the gradient and normal matrix are the template's.
 // Nothing when the tile lacks texture or the fit slides off.
@@ -61,54 +54,58 @@ std::optional<cv::Vec2d> tile_step(const cv::Mat& a, const cv::Mat& b, const cv:
 
 }  // namespace
 
-std::optional<std::vector<std::array<double, 2>>> blended_steps(
-    const std::vector<cv::Mat>& inks, const std::vector<std::optional<std::array<double, 2>>>& starts) {
-  if (inks.size() < 2 || starts.size() + 1 != inks.size()) return std::nullopt;
-  const cv::Size size = inks[0].size();
+TileStepBlend::TileStepBlend(cv::Size size) : size_(size) {
   const int side = std::max(kMinTile, size.width / kTileShare), stride = std::max(1, side / 2);
-  if (side > size.width || side > size.height) return std::nullopt;
-  std::vector<Tile> tiles;
   for (int y = 0; y + side <= size.height; y += stride)
-    for (int x = 0; x + side <= size.width; x += stride) tiles.push_back(Tile{cv::Rect(x, y, side, side), true, cv::Matx22d::zeros(), {}});
+    for (int x = 0; x + side <= size.width; x += stride) tiles_.push_back(TileStepBlend::Tile{cv::Rect(x, y, side, side), true, cv::Matx22d::zeros(), {}});
+}
 
-  cv::Mat gx, gy;
-  for (size_t t = 0; t + 1 < inks.size(); ++t) {
-    if (!starts[t]) continue;
-    cv::Sobel(inks[t], gx, CV_32F, 1, 0, 1, 0.5, 0, cv::BORDER_REPLICATE);
-    cv::Sobel(inks[t], gy, CV_32F, 0, 1, 1, 0.5, 0, cv::BORDER_REPLICATE);
-    const cv::Vec2d start((*starts[t])[0], (*starts[t])[1]);
-    for (Tile& tile : tiles) {
-      if (!tile.usable) continue;
-      cv::Matx22d normal;
-      const auto d = tile_step(inks[t], inks[t + 1], gx, gy, tile.rect, start, &normal);
-      if (!d) {
-        tile.usable = false;
-        continue;
-      }
-      tile.weight += normal;
-      tile.step.push_back(*d);
-    }
+TileStepBlend::~TileStepBlend() = default;
+
+void TileStepBlend::add(const cv::Mat& a, const cv::Mat& b, const std::optional<std::array<double, 2>>& start) {
+  registered_.push_back(start.has_value());
+  if (!start || a.size() != size_ || b.size() != size_) {
+    registered_.back() = false;
+    return;
   }
+  cv::Mat gx, gy;
+  cv::Sobel(a, gx, CV_32F, 1, 0, 1, 0.5, 0, cv::BORDER_REPLICATE);
+  cv::Sobel(a, gy, CV_32F, 0, 1, 1, 0.5, 0, cv::BORDER_REPLICATE);
+  const cv::Vec2d from((*start)[0], (*start)[1]);
+  for (Tile& tile : tiles_) {
+    if (!tile.usable) continue;
+    cv::Matx22d normal;
+    const auto d = tile_step(a, b, gx, gy, tile.rect, from, &normal);
+    if (!d) {
+      tile.usable = false;
+      tile.step.clear();
+      continue;
+    }
+    tile.weight += normal;
+    tile.step.push_back(*d);
+  }
+}
+
+std::optional<std::vector<std::array<double, 2>>> TileStepBlend::steps() const {
   cv::Matx22d total = cv::Matx22d::zeros();
-  for (const Tile& tile : tiles)
+  for (const Tile& tile : tiles_)
     if (tile.usable) total += tile.weight;
   const double mid = 0.5 * (total(0, 0) + total(1, 1));
   const double half = std::sqrt(0.25 * (total(0, 0) - total(1, 1)) * (total(0, 0) - total(1, 1)) + total(0, 1) * total(0, 1));
   if (!(mid > 0) || !((mid - half) / (mid + half) >= kMinConditioning)) return std::nullopt;
   const cv::Matx22d inverse = total.inv();
-
-  std::vector<std::array<double, 2>> steps(starts.size(), {0, 0});
+  std::vector<std::array<double, 2>> out(registered_.size(), {0, 0});
   size_t k = 0;  // index among the registered steps
-  for (size_t t = 0; t < starts.size(); ++t) {
-    if (!starts[t]) continue;
+  for (size_t t = 0; t < registered_.size(); ++t) {
+    if (!registered_[t]) continue;
     cv::Vec2d sum(0, 0);
-    for (const Tile& tile : tiles)
+    for (const Tile& tile : tiles_)
       if (tile.usable) sum += tile.weight * tile.step[k];
     const cv::Vec2d s = inverse * sum;
-    steps[t] = {s[0], s[1]};
+    out[t] = {s[0], s[1]};
     ++k;
   }
-  return steps;
+  return out;
 }
 
 }  // namespace svgm

@@ -25,16 +25,39 @@
 #include <vector>
 
 #include <opencv2/core.hpp>
+#include <opencv2/core/matx.hpp>
 
 namespace svgm {
 
-// `inks`: the clip's frames as ink (1 - grey, 0..1), CV_32F, all the same size, smoothed a
-// little (Gauss-Newton needs gradients wider than a pixel). `starts[t]`: the whole frame's step
-// from frame t to t + 1 (frame t + 1 shows frame t's content moved by it), nothing where the
-// step did not register (it then stays as it is: no camera motion). Returns one step per pair
-// of frames, or nothing when no tile has texture throughout (a blank or plain clip) or the
-// tiles pin only one direction.
-std::optional<std::vector<std::array<double, 2>>> blended_steps(
-    const std::vector<cv::Mat>& inks, const std::vector<std::optional<std::array<double, 2>>>& starts);
+// Fed the clip's frames a pair at a time (only two frames are held: a long clip's frames are
+// not all kept as floats), it blends once the last step is in.
+class TileStepBlend {
+ public:
+  // `size`: the frames' size.
+  explicit TileStepBlend(cv::Size size);
+  ~TileStepBlend();
+
+  // The step from frame `a` to the next, `b`, both as ink (1 - grey, 0..1), CV_32F, smoothed a
+  // little (Gauss-Newton needs gradients wider than a pixel). `start`: the whole frame's step
+  // (b shows a's content moved by it); nothing where it did not register, and that step then
+  // stays no camera motion.
+  void add(const cv::Mat& a, const cv::Mat& b, const std::optional<std::array<double, 2>>& start);
+
+  // One step per add(), or nothing when no tile had texture throughout (a blank or plain clip)
+  // or the tiles pin only one direction: the caller keeps the whole frame's steps then.
+  std::optional<std::vector<std::array<double, 2>>> steps() const;
+
+ private:
+  struct Tile {  // a tile stays usable only while every step fits in it
+    cv::Rect rect;
+    bool usable = true;
+    cv::Matx22d weight = cv::Matx22d::zeros();  // sum over the steps of its normal matrices
+    std::vector<cv::Vec2d> step;                // per registered step
+  };
+
+  cv::Size size_;
+  std::vector<Tile> tiles_;
+  std::vector<bool> registered_;  // per add(): was there a start
+};
 
 }  // namespace svgm
