@@ -279,11 +279,11 @@ TEST_CASE("result gate: a path folded flat is passed with a warning naming it an
     t.rgba.insert(t.rgba.end(), f.begin(), f.end());
   }
   t.raw = t.rgba;
-  auto judge = [&](double f) {
+  auto judge = [&](double f, double about = 30) {
     std::vector<double> pts = rest;
     std::vector<float> renders;
     for (int k = 0; k < K; ++k) {
-      const std::vector<double> cp = k == 0 ? rest : scale_path_x(plan, rest, 1, 30, f);
+      const std::vector<double> cp = k == 0 ? rest : scale_path_x(plan, rest, 1, about, f);
       if (k > 0) pts.insert(pts.end(), cp.begin(), cp.end());
       const std::vector<float> img = render_f(plan, cp);
       renders.insert(renders.end(), img.begin(), img.end());
@@ -298,6 +298,11 @@ TEST_CASE("result gate: a path folded flat is passed with a warning naming it an
   // Half as wide is a deformation, not a fold; the body never changes: no warning.
   CHECK(judge(0.5).warnings.empty());
   CHECK(judge(1.0).warnings.empty());
+  // Squashed about x = 66, past the canvas's right edge (its middle at x = 65.3), it is leaving
+  // the frame, where nothing shows it: no warning. About x = 62 (its middle at 61.4, 2.6 px in
+  // from the edge, over 1% of the canvas) it is still on the canvas and warned of.
+  CHECK(judge(0.02, 66).warnings.empty());
+  CHECK(judge(0.02, 62).warnings.size() == 1);
 }
 
 TEST_CASE("in-betweens: keyframes kept exactly, a smooth motion followed far closer than straight lines") {

@@ -95,6 +95,21 @@ double fill_area(const RasterPlan& plan, const double* q, int p) {
   return twice / 2;
 }
 
+// Path p's middle (the mean of its control points `q`, canvas units) lies within
+// kEdgeShare of the canvas's larger side from an edge, or beyond it: the path is leaving the
+// frame, where the target shows nothing of it, and the fit presses it flat against the edge
+// (emoji_u1f46b: a shoe the warp carries below the canvas, its box 0.6 px tall at y = 128,
+// warned of as a fold though nobody can see it).
+constexpr double kEdgeShare = 0.01;
+bool at_canvas_edge(const RasterPlan& plan, const double* q, int p, const Scene& scene) {
+  const int first = plan.path_cp_first[static_cast<size_t>(p)], count = plan.path_cp_count[static_cast<size_t>(p)];
+  if (count <= 0) return false;
+  double x = 0, y = 0;
+  for (int i = first; i < first + count; ++i) x += q[2 * i] / count, y += q[2 * i + 1] / count;
+  const double m = kEdgeShare * std::max(scene.width, scene.height);
+  return x < m || y < m || x > scene.width - m || y > scene.height - m;
+}
+
 // "2-5, 7, 9-10" for increasing keyframe indices.
 std::string ranges(const std::vector<int>& ks) {
   std::string s;
@@ -226,7 +241,9 @@ GateVerdict judge_fit(const TargetFrames& target, const std::vector<float>& rend
     double least = 1;
     for (int k = 1; k < K; ++k) {
       const double target_change = fg_diag[0] > 0 ? fg_diag[static_cast<size_t>(k)] / fg_diag[0] : 1;
-      const double share = std::fabs(fill_area(plan, &points[static_cast<size_t>(k) * n_cp * 2], static_cast<int>(p))) / a0;
+      const double* q = &points[static_cast<size_t>(k) * n_cp * 2];
+      if (at_canvas_edge(plan, q, static_cast<int>(p), scene)) continue;
+      const double share = std::fabs(fill_area(plan, q, static_cast<int>(p))) / a0;
       if (share < kFoldedArea && target_change >= 0.5) folded.push_back(k), least = std::min(least, share);
     }
     if (!folded.empty())
