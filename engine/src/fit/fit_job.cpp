@@ -232,7 +232,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   for (const std::string& w : target_warnings(target, *target_path, size))
     log::warning("%s", w.c_str());
   // Which prior told the shake from the motion matters to the user: a figure with nothing
-  // still keeps about a third of a 1-2 px shake (fit/stabilise.h).
+  // still keeps the part of the shake inside its motion's band, about 0.45 of 1.6 px rms (fit/stabilise.h).
   if (job.stabilise && !job.quiet && !job.progress) {
     if (target.shake_model == "smooth")
       log::info("fit: camera shake of up to %.2f px (fitting width) removed (nothing in the figure holds still: told from the motion by its "
