@@ -1,6 +1,7 @@
 // `svgmotion bench render|raster`: speed of the OpenCL renderer and of one differentiable
 // iteration (forward + loss + backward), peak memory, device; `bench raster --scaling` sweeps
-// paths, size and frames on procedural scenes to show how the cost grows.
+// paths, size and frames on procedural scenes to show how the cost grows. `bench fit` and
+// `bench target` (their own files) time a whole fit and the loading of a target.
 //
 // Each measurement times whole batches of K frames with the device finished, over several
 // repetitions after a warm-up that includes kernel compilation (excluded), and reports medians.
@@ -13,6 +14,7 @@
 #include <cstdio>
 
 #include "cli/bench_fit.h"
+#include "cli/bench_target.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "opencl/runtime.h"
@@ -200,7 +202,8 @@ int cmd_bench(const std::vector<std::string>& argv) {
   if (argv[0] == "render") return bench_render(rest);
   if (argv[0] == "raster") return bench_raster(rest);
   if (argv[0] == "fit") return bench_fit(rest);
-  throw Error("bench: unknown benchmark '" + argv[0] + "' (available: render, raster, fit)");
+  if (argv[0] == "target") return bench_target(rest);
+  throw Error("bench: unknown benchmark '" + argv[0] + "' (available: render, raster, fit, target)");
 }
 
 }  // namespace svgm::cli

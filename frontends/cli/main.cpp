@@ -33,6 +33,9 @@ usage:
   svgmotion bench render|raster IN.svg [--frames K] [--size N] [--repeat R] [--json] [--profile]
                    [--device D]
   svgmotion bench raster --scaling [--json]
+  svgmotion bench fit IN.svg --target VIDEO [--iterations N] [--keyframes K] [--size N] [--json]
+  svgmotion bench target VIDEO [--size N] [--keyframes K] [--denoise R] [--stabilise] [--repeat R]
+                   [--json]
   svgmotion help | --version | CMD --help
 
 --device picks the OpenCL device: auto (default), cpu, gpu, or part of its name.
@@ -165,13 +168,23 @@ every item of the shard is done, 1 when some are not (see the summary), 130 inte
     {"palette", "usage: svgmotion palette N\n\nPrints N maximally distinct colours (white reserved), one #rrggbb per line.\n"},
     {"bench", R"(usage: svgmotion bench render|raster IN.svg [options]
        svgmotion bench raster --scaling [--json]
+       svgmotion bench fit IN.svg --target VIDEO [options]
+       svgmotion bench target VIDEO [options]
 
   render        median time per frame of K frames rendered in one batch
   raster        one differentiable iteration (forward, loss, backward) over K frames
+  fit           a whole fit at fit's defaults, without its outputs: setup, iterations, CPU time
+  target        loading a target as fit does (decode, denoise, --stabilise), median of R loads
   --frames K    frames per batch (default 15)
   --size N      width in pixels (default 256)
   --repeat R    repetitions (the median is reported)
-  --json        one JSON object (ms_per_frame / forward_ms, backward_ms, total_ms, peak_rss_mb, device)
+  --keyframes K keyframes sampled (fit, target; default 15)
+  --iterations N  the fit's iteration budget (fit)
+  --target VIDEO  the video the fit follows (fit)
+  --denoise R   temporal denoising radius (target; default 2, as fit)
+  --stabilise   remove camera shake too (target)
+  --json        one JSON object (ms_per_frame / forward_ms, backward_ms, total_ms, peak_rss_mb, device;
+                target: wall_s, cpu_s, denoise_s, shake_model, max_shake_px, peak_rss_mb)
   --profile     per-kernel times
   --scaling     sweep paths, size and frames on procedural scenes (raster)
   --device D    OpenCL device

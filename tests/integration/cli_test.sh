@@ -90,6 +90,13 @@ bench)
     '[[ $(grep -c "" "$tmp/f.json") -eq 1 ]] && grep -q "\"iterations\": 12," "$tmp/f.json" && grep -q "\"keyframes\": 3," "$tmp/f.json" && grep -Eq "\"cpu_ms_per_iteration\": [0-9.]+" "$tmp/f.json" && grep -Eq "\"peak_rss_mb\": [0-9.]+" "$tmp/f.json"'
   expect_error "bench fit without a target names the option" "bench fit: --target VIDEO is required" "$tmp/none" \
     bench fit "$data/examples/man.svg"
+  # bench target: loading those three identical frames with the stabiliser on finds a figure
+  # that holds still and no shake at all.
+  must "$bin" bench target "$tmp/bf" --keyframes 3 --size 64 --stabilise --repeat 1 --json >"$tmp/t.json" 2>"$tmp/err"
+  check "bench target --json reports the load's time, the stabiliser's model and no shake on still frames" \
+    '[[ $(grep -c "" "$tmp/t.json") -eq 1 ]] && grep -q "\"keyframes\": 3," "$tmp/t.json" && grep -Eq "\"wall_s\": [0-9.]+" "$tmp/t.json" && grep -q "\"shake_model\": \"still\"" "$tmp/t.json" && grep -q "\"max_shake_px\": 0.000" "$tmp/t.json"'
+  expect_error "bench target with two sources names the problem" "bench target: expected one video (or folder of frames)" "$tmp/none" \
+    bench target "$tmp/bf" "$tmp/bf"
   ;;
 fit)
   # A small target: the example rendered at 64 px into a folder of 4 frames.
