@@ -9,11 +9,10 @@
 // schedule (--iterations N runs the fit's schedule for N) compares with another.
 #include "cli/bench_fit.h"
 
-#include <sys/resource.h>
-
 #include <chrono>
 #include <cstdio>
 
+#include "cli/bench_util.h"
 #include "cli/cli_args.h"
 #include "fit/fit_job.h"
 #include "fit/fitter.h"
@@ -25,23 +24,6 @@
 #include "svgmotion/target_video.h"
 
 namespace svgm::cli {
-
-namespace {
-
-double cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
-         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
-
-double peak_rss_mb() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;  // Linux reports kilobytes
-}
-
-}  // namespace
 
 int bench_fit(const std::vector<std::string>& argv) {
   const Args a = parse_args("bench fit", argv, {"--target", "--iterations", "--keyframes", "--size", "--device"},

@@ -1,40 +1,22 @@
 // `svgmotion bench target VIDEO`: the target stage's speed as `fit` loads a video: decoding,
 // temporal denoising (fit's default radius 2) and, with --stabilise, camera-shake removal,
-// then the cleanup (colour, mask, distance field) of every keyframe. load_target times its own
-// denoising; the rest is the whole load's wall time less that. Reports the median over the
-// repetitions, CPU time, peak memory, and what the stabiliser found (its model, the largest
-// shake removed), so the stabiliser's cost on a real clip can be read off without a fit.
+// then the cleanup (colour, mask, distance field) of every keyframe. Reports the medians over
+// the repetitions of the load's wall and CPU time and of the denoising's share (load_target
+// times it), peak memory, and what the stabiliser found (its model, the largest shake
+// removed), so the stabiliser's cost on a real clip can be read off without a fit.
 #include "cli/bench_target.h"
-
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
+#include "cli/bench_util.h"
 #include "cli/cli_args.h"
 #include "svgmotion/error.h"
 #include "svgmotion/target_video.h"
 
 namespace svgm::cli {
-
-namespace {
-
-double cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
-         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
-
-double peak_rss_mb() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;  // Linux reports kilobytes
-}
-
-}  // namespace
 
 int bench_target(const std::vector<std::string>& argv) {
   const Args a = parse_args("bench target", argv, {"--size", "--keyframes", "--denoise", "--repeat"},
@@ -59,11 +41,6 @@ int bench_target(const std::vector<std::string>& argv) {
     cpu.push_back(cpu_seconds() - c0);
     denoise.push_back(t.denoise_seconds);
   }
-  auto median = [](std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-  };
   const double wall_s = median(wall), cpu_s = median(cpu), denoise_s = median(denoise);
   if (a.has("--json")) {
     std::printf("{\"source\": \"%s\", \"frames\": %d, \"source_size\": [%d, %d], \"size\": [%d, %d], "

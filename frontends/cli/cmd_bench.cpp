@@ -6,8 +6,6 @@
 // Each measurement times whole batches of K frames with the device finished, over several
 // repetitions after a warm-up that includes kernel compilation (excluded), and reports medians.
 // Uploads of control points and targets are excluded: in fitting they live on the device.
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -15,6 +13,7 @@
 
 #include "cli/bench_fit.h"
 #include "cli/bench_target.h"
+#include "cli/bench_util.h"
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "opencl/runtime.h"
@@ -29,18 +28,6 @@
 namespace svgm::cli {
 
 namespace {
-
-double peak_rss_mb() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;  // Linux reports kilobytes
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 int bench_render(const std::vector<std::string>& argv) {
   const Args a = parse_args("bench render", argv, {"--frames", "--size", "--device", "--repeat"},

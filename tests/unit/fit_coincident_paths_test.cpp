@@ -10,6 +10,8 @@
 #include "fit/coincident_paths.h"
 #include "svgmotion/svg_reader.h"
 
+#include "scene_builders.h"
+
 using namespace svgm;
 
 namespace {
@@ -31,11 +33,6 @@ std::string drawing(double overlay_dx) {
          R"(</svg>)";
 }
 
-int index_of(const Scene& s, const std::string& id) {
-  for (size_t i = 0; i < s.paths.size(); ++i)
-    if (s.paths[i].id == id) return static_cast<int>(i);
-  return -1;
-}
 
 }  // namespace
 
@@ -47,8 +44,8 @@ TEST_CASE("overlays with the outline of the shape they cover are fitted in its g
   REQUIRE(s.groups.size() == 5);  // screen, bevel, bevel2, disc (each a part of its own), stand
   std::vector<std::string> notes;
   const Scene out = merge_coincident_paths(s, &notes);
-  const int base = index_of(out, "base"), bevel = index_of(out, "bevel"), bevel2 = index_of(out, "bevel2");
-  const int disc = index_of(out, "disc"), copy = index_of(out, "copy"), bar = index_of(out, "bar");
+  const int base = test::path_index(out, "base"), bevel = test::path_index(out, "bevel"), bevel2 = test::path_index(out, "bevel2");
+  const int disc = test::path_index(out, "disc"), copy = test::path_index(out, "copy"), bar = test::path_index(out, "bar");
   REQUIRE(out.groups.size() == 3);  // the bevels' own groups are gone
   CHECK(out.groups[0].id == "screen");
   CHECK(out.groups[0].paths == std::vector<int>{base, bevel, bevel2});
@@ -70,8 +67,8 @@ TEST_CASE("an overlay offset by more than the tolerance is a shape of its own") 
   std::vector<std::string> notes;
   const Scene out = merge_coincident_paths(s, &notes);
   REQUIRE(out.groups.size() == 4);
-  CHECK(out.groups[0].paths == std::vector<int>{index_of(out, "base"), index_of(out, "bevel")});
-  CHECK(out.groups[1].paths == std::vector<int>{index_of(out, "bevel2")});
+  CHECK(out.groups[0].paths == std::vector<int>{test::path_index(out, "base"), test::path_index(out, "bevel")});
+  CHECK(out.groups[1].paths == std::vector<int>{test::path_index(out, "bevel2")});
   REQUIRE(notes.size() == 1);
   CHECK(notes[0] == "screen: bevel fit with base, whose outline it shares");
   // Nothing coincides: the scene comes back as it was.

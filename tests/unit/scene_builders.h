@@ -1,8 +1,9 @@
 // Test-only helpers that build scenes directly (no SVG), so raster tests state their geometry
-// exactly and do not depend on the reader.
+// exactly and do not depend on the reader; and one that finds a path of a scene by its id.
 #pragma once
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "svgmotion/scene.h"
@@ -63,6 +64,13 @@ inline Scene scene_of(double w, double h, std::vector<Path> paths) {
   s.paths = std::move(paths);
   for (size_t i = 0; i < s.paths.size(); ++i) s.paths[i].id = "p" + std::to_string(i + 1);
   return s;
+}
+
+// The index of the path with id `id` in `s`, or -1.
+inline int path_index(const Scene& s, const std::string& id) {
+  for (size_t i = 0; i < s.paths.size(); ++i)
+    if (s.paths[i].id == id) return static_cast<int>(i);
+  return -1;
 }
 
 }  // namespace svgm::test

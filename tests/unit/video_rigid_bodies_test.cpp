@@ -10,6 +10,8 @@
 #include "video/rigid_bodies.h"
 #include "video/shape_overlap.h"
 
+#include "scene_builders.h"
+
 using namespace svgm;
 
 namespace {
@@ -41,11 +43,6 @@ std::vector<Vec2> frames_of(const Scene& s, int frames, double deg) {
   return out;
 }
 
-int index_of(const Scene& s, const std::string& id) {
-  for (size_t i = 0; i < s.paths.size(); ++i)
-    if (s.paths[i].id == id) return static_cast<int>(i);
-  return -1;
-}
 
 }  // namespace
 
@@ -54,13 +51,13 @@ TEST_SUITE("motion") {
 TEST_CASE("paths one map moves in every frame share a rigid body; a bending path has none") {
   const Scene s = read_svg_string(kDrawing, "bodies.svg");
   const RigidBodies rb = rigid_bodies(s, frames_of(s, 5, 7.0), 5, 1e-6);
-  const int sleeve = rb.body[index_of(s, "sleeve")], fist = rb.body[index_of(s, "fist")];
-  const int stick = rb.body[index_of(s, "stick")], torso = rb.body[index_of(s, "torso")];
+  const int sleeve = rb.body[test::path_index(s, "sleeve")], fist = rb.body[test::path_index(s, "fist")];
+  const int stick = rb.body[test::path_index(s, "stick")], torso = rb.body[test::path_index(s, "torso")];
   CHECK(sleeve == 0);  // numbered by first path
   CHECK(fist == sleeve);
   CHECK(stick == sleeve);  // a straight line cannot determine a map, but the arm's carries it
   CHECK(torso == 1);       // held still: the identity's body
-  CHECK(rb.body[index_of(s, "tail")] == -1);
+  CHECK(rb.body[test::path_index(s, "tail")] == -1);
   REQUIRE(rb.maps.size() == 2);
   REQUIRE(rb.maps[0].size() == 5);
   // The arm's map at frame 3 is the turn by 21 degrees about (10, 15).
@@ -90,11 +87,11 @@ TEST_CASE("groups one moving body carries merge into one; still and bending path
   REQUIRE(s.groups.size() == 5);
   REQUIRE(out.groups.size() == 3);
   CHECK(out.groups[0].id == "arm");
-  CHECK(out.groups[0].paths == std::vector<int>{index_of(s, "sleeve"), index_of(s, "fist"), index_of(s, "stick")});
+  CHECK(out.groups[0].paths == std::vector<int>{test::path_index(s, "sleeve"), test::path_index(s, "fist"), test::path_index(s, "stick")});
   CHECK(out.groups[1].id == "body");
-  CHECK(out.groups[2].paths == std::vector<int>{index_of(s, "tail")});
-  CHECK(out.paths[static_cast<size_t>(index_of(s, "stick"))].group == 0);
-  CHECK(out.paths[static_cast<size_t>(index_of(s, "tail"))].group == 2);
+  CHECK(out.groups[2].paths == std::vector<int>{test::path_index(s, "tail")});
+  CHECK(out.paths[static_cast<size_t>(test::path_index(s, "stick"))].group == 0);
+  CHECK(out.paths[static_cast<size_t>(test::path_index(s, "tail"))].group == 2);
   REQUIRE(notes.size() == 1);
   CHECK(notes[0] == "arm: 3 groups the target moves as one rigid body fit as one (with hand, stick)");
   // No bodies in the report: the scene as it was.
@@ -111,9 +108,9 @@ TEST_CASE("the known motion reads each body's maps and matches paths by id") {
   const KnownMotion k = known_motion(s, report);
   REQUIRE(k.maps.size() == 2);
   CHECK(k.maps[0][1].apply({10, 10}) == Vec2{12.5, 9});
-  CHECK(k.body[static_cast<size_t>(index_of(s, "fist"))] == 0);
-  CHECK(k.body[static_cast<size_t>(index_of(s, "torso"))] == 1);
-  CHECK(k.body[static_cast<size_t>(index_of(s, "tail"))] == -1);
+  CHECK(k.body[static_cast<size_t>(test::path_index(s, "fist"))] == 0);
+  CHECK(k.body[static_cast<size_t>(test::path_index(s, "torso"))] == 1);
+  CHECK(k.body[static_cast<size_t>(test::path_index(s, "tail"))] == -1);
   // A report about another drawing (a path it does not name) gives no known motion.
   nlohmann::json other = report;
   other["paths"].erase(0);
@@ -127,8 +124,8 @@ TEST_CASE("the known motion reads each body's maps and matches paths by id") {
   const KnownMotion c = known_motion(s, chosen, "01.mp4");
   REQUIRE(c.maps.size() == 2);
   CHECK(c.maps[0][1].apply({10, 10}) == Vec2{7, 10});
-  CHECK(c.body[static_cast<size_t>(index_of(s, "fist"))] == 1);
-  CHECK(c.body[static_cast<size_t>(index_of(s, "tail"))] == 0);
+  CHECK(c.body[static_cast<size_t>(test::path_index(s, "fist"))] == 1);
+  CHECK(c.body[static_cast<size_t>(test::path_index(s, "tail"))] == 0);
   CHECK(known_motion(s, chosen, "02.mp4").body.empty());
   CHECK(known_motion(s, chosen, "00.mp4").body.empty());  // listed, but without its bodies
   // A malformed map: none either.

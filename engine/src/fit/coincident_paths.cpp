@@ -6,6 +6,8 @@
 #include <limits>
 #include <map>
 
+#include "video/curve_samples.h"
+
 namespace svgm {
 
 namespace {
@@ -18,32 +20,17 @@ struct Outline {
 
 constexpr int kSteps = 8;
 
-Vec2 cubic_at(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d, double t) {
-  const double u = 1 - t;
-  return {u * u * u * a.x + 3 * u * u * t * b.x + 3 * u * t * t * c.x + t * t * t * d.x,
-          u * u * u * a.y + 3 * u * u * t * b.y + 3 * u * t * t * c.y + t * t * t * d.y};
-}
-
 Outline outline_of(const Path& p) {
   Outline o;
   for (const Subpath& s : p.subpaths) {
     if (s.points.empty()) continue;
-    std::vector<Vec2> line{s.points[0]};
-    for (size_t k = 0; k < s.segment_count(); ++k)
-      for (int i = 1; i <= kSteps; ++i)
-        line.push_back(cubic_at(s.points[3 * k], s.points[3 * k + 1], s.points[3 * k + 2], s.points[3 * k + 3],
-                                static_cast<double>(i) / kSteps));
-    if (s.closed) line.push_back(s.points[0]);
+    std::vector<Vec2> line;
+    append_curve_samples(s, kSteps, true, line);
+    if (s.closed) line.push_back(s.points[0]);  // the closing edge
     for (const Vec2& v : line) o.x0 = std::min(o.x0, v.x), o.y0 = std::min(o.y0, v.y), o.x1 = std::max(o.x1, v.x), o.y1 = std::max(o.y1, v.y);
     o.lines.push_back(std::move(line));
   }
   return o;
-}
-
-double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
-  const double t = len2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
-  return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
 }
 
 // `b`'s polyline segments bucketed in a uniform grid (cells at least `tol` wide, at most
@@ -107,7 +94,7 @@ bool within(const Outline& a, const Outline& b, double tol) {
         const auto& other = b.lines[static_cast<size_t>(l)];
         const Vec2& q = other[static_cast<size_t>(i)];
         const Vec2& r = other[static_cast<size_t>(i == 0 ? 0 : i - 1)];
-        if (distance_to_segment(p, r, q) <= tol) {
+        if (segment_distance(p, r, q) <= tol) {
           near = true;
           break;
         }

@@ -32,11 +32,11 @@ constexpr double kWhitePathRatio = 3;
 // loop test with its default 15 keyframes).
 constexpr double kLoopResidualShare = 0.25;
 constexpr int kLoopIntervals = 14;
-// The ink is smoothed by this (measuring pixels) for the tiles' Gauss-Newton.
-constexpr double kTileInkBlur = 1.0;
 // ... and when the camera's move between them is within this many times the rms shake a
 // straight low-pass finds (or half a pixel): a figure that slid along is not a loop.
 constexpr double kLoopShakeRms = 4;
+// The ink is smoothed by this (measuring pixels) for the tiles' Gauss-Newton.
+constexpr double kTileInkBlur = 1.0;
 
 // The frame as grey at `width` pixels wide, in its own depth (8 or 16 bits).
 cv::Mat grey_at(const cv::Mat& frame, int width) {
@@ -190,7 +190,7 @@ std::optional<Registration> register_translation(const cv::Mat& a, const cv::Mat
 // (fit/tile_steps.h: a whole-frame registration of a deforming figure wobbles from step to step).
 std::vector<std::array<double, 2>> consecutive_path(const std::vector<cv::Mat>& greys) {
   std::vector<std::optional<std::array<double, 2>>> starts;
-  std::optional<TileStepBlend> blend;
+  TileStepBlend blend(greys.empty() ? cv::Size() : greys[0].size());  // all frames are this size
   cv::Mat prev, prev_smooth;
   for (const cv::Mat& grey : greys) {
     const cv::Mat ink = ink_of(grey);
@@ -200,13 +200,12 @@ std::vector<std::array<double, 2>> consecutive_path(const std::vector<cv::Mat>& 
     if (!prev.empty()) {
       const auto r = register_translation(prev, ink);
       starts.push_back(r ? std::optional(std::array<double, 2>{r->step.x, r->step.y}) : std::nullopt);
-      if (!blend) blend.emplace(smooth.size());
-      blend->add(prev_smooth, smooth, starts.back());
+      blend.add(prev_smooth, smooth, starts.back());
     }
     prev = ink;
     prev_smooth = smooth;
   }
-  const auto blended = blend ? blend->steps() : std::nullopt;
+  const auto blended = blend.steps();
   std::vector<std::array<double, 2>> path{{0, 0}};
   for (size_t t = 0; t < starts.size(); ++t) {
     std::array<double, 2> step{0, 0};

@@ -1,9 +1,11 @@
-// Points along a path's cubics, for the part rig's geometry (part_rig.cpp, stroke_rig.cpp,
-// outline_lobes.cpp): each reads a drawing's shape from its curves, not from its control points
-// (a circle's handles lie 0.14 of its radius beyond it; a sketch's handles reach far past its
-// strokes).
+// Points along a path's cubics, for the geometry that reads a drawing's shape (the part rig:
+// part_rig.cpp, stroke_rig.cpp, outline_lobes.cpp; fit/coincident_paths.cpp): from its curves,
+// not from its control points (a circle's handles lie 0.14 of its radius beyond it; a sketch's
+// handles reach far past its strokes). And the distance to the chords between such samples.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "svgmotion/scene.h"
@@ -16,5 +18,14 @@ void append_curve_samples(const Subpath& sp, int steps, bool with_end, std::vect
 
 // Every subpath of `p` sampled so, each with its last point.
 std::vector<Vec2> curve_samples(const Path& p, int steps);
+
+// The distance from q to the segment from a to b (to a, when the two coincide).
+inline double segment_distance(Vec2 q, Vec2 a, Vec2 b) {
+  const Vec2 d = b - a;
+  const double len2 = d.x * d.x + d.y * d.y;
+  const double t = len2 > 0 ? std::clamp(((q.x - a.x) * d.x + (q.y - a.y) * d.y) / len2, 0.0, 1.0) : 0.0;
+  const Vec2 n = a + t * d;
+  return std::hypot(q.x - n.x, q.y - n.y);
+}
 
 }  // namespace svgm

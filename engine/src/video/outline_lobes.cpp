@@ -48,13 +48,6 @@ std::vector<int> hull_of(const std::vector<Vec2>& p) {
   return h;
 }
 
-double segment_distance(Vec2 q, Vec2 a, Vec2 b) {
-  const Vec2 d = b - a;
-  const double len2 = d.x * d.x + d.y * d.y;
-  const double t = len2 > 0 ? std::clamp(((q.x - a.x) * d.x + (q.y - a.y) * d.y) / len2, 0.0, 1.0) : 0.0;
-  return dist(q, a + t * d);
-}
-
 }  // namespace
 
 std::vector<ArmLobe> arm_lobes(const Path& outline) {
