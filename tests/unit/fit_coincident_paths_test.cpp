@@ -1,13 +1,15 @@
 // Paths with one outline fitted as one (fit/coincident_paths.h): a top-level overlay drawn with
 // the outline of the shape under it (offset by a tenth of a unit, as Illustrator's exports do)
-// joins that shape's group; an outline that differs by more than the tolerance, a different
-// shape, and a path among others in a group stay where they are.
+// has that shape as its host and shares its fit group; an outline that differs by more than the
+// tolerance, a different shape, and a path among others in a group stay where they are.
 #include <doctest/doctest.h>
 
 #include <string>
 #include <vector>
 
 #include "fit/coincident_paths.h"
+#include "fit/fit_plan.h"
+#include "raster/raster_plan.h"
 #include "svgmotion/svg_reader.h"
 
 #include "scene_builders.h"
@@ -42,41 +44,40 @@ TEST_CASE("overlays with the outline of the shape they cover are fitted in its g
   const Scene s = read_svg_string(drawing(0.1), "screen.svg");
   REQUIRE(s.paths.size() == 6);
   REQUIRE(s.groups.size() == 5);  // screen, bevel, bevel2, disc (each a part of its own), stand
-  std::vector<std::string> notes;
-  const Scene out = merge_coincident_paths(s, &notes);
-  const int base = test::path_index(out, "base"), bevel = test::path_index(out, "bevel"), bevel2 = test::path_index(out, "bevel2");
-  const int disc = test::path_index(out, "disc"), copy = test::path_index(out, "copy"), bar = test::path_index(out, "bar");
-  REQUIRE(out.groups.size() == 3);  // the bevels' own groups are gone
-  CHECK(out.groups[0].id == "screen");
-  CHECK(out.groups[0].paths == std::vector<int>{base, bevel, bevel2});
-  for (const int p : {base, bevel, bevel2}) CHECK(out.paths[p].group == 0);
-  // The disc keeps its own group, and the copy stays with the bar: its group is a part already.
-  CHECK(out.groups[1].paths == std::vector<int>{disc});
-  CHECK(out.groups[2].id == "stand");
-  CHECK(out.groups[2].paths == std::vector<int>{copy, bar});
-  CHECK(out.paths[copy].group == 2);
-  REQUIRE(notes.size() == 1);
-  CHECK(notes[0] == "screen: bevel, bevel2 fit with base, whose outline they share");
-  // The paths themselves are untouched.
-  for (size_t i = 0; i < s.paths.size(); ++i) CHECK(out.paths[i].subpaths[0].points.size() == s.paths[i].subpaths[0].points.size());
+  const int base = test::path_index(s, "base"), bevel = test::path_index(s, "bevel"), bevel2 = test::path_index(s, "bevel2");
+  const int disc = test::path_index(s, "disc"), copy = test::path_index(s, "copy"), bar = test::path_index(s, "bar");
+  const std::vector<int> host = coincident_hosts(s);
+  CHECK(host[bevel] == base);
+  CHECK(host[bevel2] == base);
+  // The disc has an outline of its own, and the copy stays with the bar: its group is a part
+  // already.
+  for (const int p : {base, disc, copy, bar}) CHECK(host[p] == -1);
+  // The fit plan takes them as hosts: the bevels' points move in the screen's group, and the
+  // fit has three groups (screen, disc, stand) instead of five. The paths are untouched.
+  const RasterPlan raster = plan_raster(s, Affine{}, 100, 100);
+  FitPlanOptions opt;
+  opt.attach_coincident = true;
+  const FitPlan f = plan_fit(s, raster, opt);
+  auto group_of = [&](int p) { return f.cp_group[static_cast<size_t>(raster.path_cp_first[static_cast<size_t>(p)])]; };
+  CHECK(f.n_groups == 3);
+  CHECK(group_of(bevel) == group_of(base));
+  CHECK(group_of(bevel2) == group_of(base));
+  CHECK(group_of(disc) != group_of(base));
+  CHECK(group_of(copy) == group_of(bar));
+  CHECK(group_of(copy) != group_of(base));
+  opt.attach_coincident = false;
+  CHECK(plan_fit(s, raster, opt).n_groups == 5);
 }
 
 TEST_CASE("an overlay offset by more than the tolerance is a shape of its own") {
   // 0.8 units is over 0.5% of the canvas: bevel2 keeps its group, bevel still joins.
   const Scene s = read_svg_string(drawing(0.8), "screen.svg");
-  std::vector<std::string> notes;
-  const Scene out = merge_coincident_paths(s, &notes);
-  REQUIRE(out.groups.size() == 4);
-  CHECK(out.groups[0].paths == std::vector<int>{test::path_index(out, "base"), test::path_index(out, "bevel")});
-  CHECK(out.groups[1].paths == std::vector<int>{test::path_index(out, "bevel2")});
-  REQUIRE(notes.size() == 1);
-  CHECK(notes[0] == "screen: bevel fit with base, whose outline it shares");
-  // Nothing coincides: the scene comes back as it was.
+  const std::vector<int> host = coincident_hosts(s);
+  CHECK(host[test::path_index(s, "bevel")] == test::path_index(s, "base"));
+  CHECK(host[test::path_index(s, "bevel2")] == -1);
+  // Nothing coincides: no host.
   const Scene lone = read_svg_string(R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100"><circle cx="30" cy="30" r="9"/><circle cx="30" cy="30" r="12"/></svg>)", "discs.svg");
-  std::vector<std::string> none;
-  const Scene same = merge_coincident_paths(lone, &none);
-  CHECK(none.empty());
-  CHECK(same.groups.size() == lone.groups.size());
+  CHECK(coincident_hosts(lone) == std::vector<int>{-1, -1});
 }
 
 }  // TEST_SUITE

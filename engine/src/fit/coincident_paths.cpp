@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 
 #include "video/curve_samples.h"
 
@@ -114,68 +113,23 @@ bool coincide(const Outline& a, const Outline& b, double tol) {
 
 }  // namespace
 
-Scene merge_coincident_paths(const Scene& scene, std::vector<std::string>* notes) {
-  const double tol = kCoincidentShare * std::max(scene.width, scene.height);
+std::vector<int> coincident_hosts(const Scene& scene, double share) {
+  const double tol = share * std::max(scene.width, scene.height);
   const size_t n = scene.paths.size();
   std::vector<Outline> outlines;
   outlines.reserve(n);
   for (const Path& p : scene.paths) outlines.push_back(outline_of(p));
-  // A path alone in its unit (no group, or a group of its own: the reader gives each top-level
-  // path one) may join another's; a path among others stays with them.
-  auto alone = [&](size_t q) {
-    const int g = scene.paths[q].group;
-    return g < 0 || scene.groups[static_cast<size_t>(g)].paths.size() == 1;
-  };
-  Scene out = scene;
-  std::vector<int> moved_to(n, -1);  // the path whose unit each path joined
+  std::vector<int> host(n, -1);
   for (size_t q = 0; q < n; ++q) {
-    if (!alone(q)) continue;
+    const int g = scene.paths[q].group;
+    if (g >= 0 && scene.groups[static_cast<size_t>(g)].paths.size() > 1) continue;  // a part with others
     for (size_t p = 0; p < q; ++p)
       if (coincide(outlines[q], outlines[p], tol)) {
-        moved_to[q] = moved_to[p] >= 0 ? moved_to[p] : static_cast<int>(p);
+        host[q] = static_cast<int>(p);
         break;
       }
   }
-  if (std::none_of(moved_to.begin(), moved_to.end(), [](int v) { return v >= 0; })) return scene;
-
-  // Units rebuilt in scene order: each group less the paths that left it, and the joiners added
-  // to the unit of the path they cover (a new group named after it when it had none).
-  std::vector<Group> groups = scene.groups;
-  for (Group& g : groups) g.paths.clear();
-  std::vector<int> group_of(n, -1);
-  for (size_t q = 0; q < n; ++q)
-    if (moved_to[q] < 0) group_of[q] = scene.paths[q].group;
-  std::map<int, std::vector<std::string>> joined;  // host path -> ids that joined its unit
-  for (size_t q = 0; q < n; ++q) {
-    if (moved_to[q] < 0) continue;
-    const size_t host = static_cast<size_t>(moved_to[q]);
-    if (group_of[host] < 0) {
-      group_of[host] = static_cast<int>(groups.size());
-      groups.push_back(Group{scene.paths[host].id, {}, ""});
-    }
-    group_of[q] = group_of[host];
-    joined[static_cast<int>(host)].push_back(scene.paths[q].id);
-  }
-  for (size_t q = 0; q < n; ++q)
-    if (group_of[q] >= 0) groups[static_cast<size_t>(group_of[q])].paths.push_back(static_cast<int>(q));
-  // Groups emptied by the move go; the rest keep their order.
-  std::vector<int> renumber(groups.size(), -1);
-  out.groups.clear();
-  for (size_t g = 0; g < groups.size(); ++g)
-    if (!groups[g].paths.empty()) {
-      renumber[g] = static_cast<int>(out.groups.size());
-      out.groups.push_back(std::move(groups[g]));
-    }
-  for (size_t q = 0; q < n; ++q) out.paths[q].group = group_of[q] >= 0 ? renumber[static_cast<size_t>(group_of[q])] : -1;
-  if (notes)
-    for (const auto& [host, ids] : joined) {
-      std::string names;
-      for (const std::string& id : ids) names += (names.empty() ? "" : ", ") + id;
-      notes->push_back(out.groups[static_cast<size_t>(out.paths[static_cast<size_t>(host)].group)].id + ": " + names +
-                       " fit with " + scene.paths[static_cast<size_t>(host)].id + ", whose outline " +
-                       (ids.size() == 1 ? "it shares" : "they share"));
-    }
-  return out;
+  return host;
 }
 
 }  // namespace svgm

@@ -7,12 +7,11 @@
 // fitter gave each its own homography and field. The video moves them together and a fit at
 // 256 px barely sees them part (a few tenths of a pixel, a faint anti-aliased line), but at
 // 1024 px the light overlay's edge stands out as a grey rim round the dark screen
-// (emoji_u1f9d1_200d_1f4bb, keyframe 8). Fitted in the group of the path they cover, they move
-// by the same map and field, which carries equal points to equal points: the outlines cannot
-// part.
+// (emoji_u1f9d1_200d_1f4bb, keyframe 8). Fitted in the group of the path they cover (the fit
+// plan's path hosts, fit_plan.h), they move by the same map and field, which carries equal
+// points to equal points: the outlines cannot part.
 #pragma once
 
-#include <string>
 #include <vector>
 
 #include "svgmotion/scene.h"
@@ -23,11 +22,10 @@ namespace svgm {
 // side of the other (the technologist's bevel is offset 0.17 of 128 units: 0.0013).
 constexpr double kCoincidentShare = 0.005;
 
-// `scene` with every path that is alone in its unit (in no group, or in a group of its own) and
-// whose outline coincides with an earlier path's moved into that path's fit group (a new group
-// named after it when it has none); groups left empty go. One line per covered path that took
-// others in `notes` (may be null). Unchanged when no outlines coincide. A path among others in
-// a group stays there: the group is a part that moves together already.
-Scene merge_coincident_paths(const Scene& scene, std::vector<std::string>* notes);
+// For every path alone in its unit (in no group, or in a group of its own: the reader gives each
+// top-level path one), the first earlier path whose outline coincides with its own (within
+// `share` of the canvas's larger side); -1 for the others. fit_plan.h's path hosts take it: the
+// path is fitted in that path's group.
+std::vector<int> coincident_hosts(const Scene& scene, double share = kCoincidentShare);
 
 }  // namespace svgm

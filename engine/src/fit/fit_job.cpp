@@ -18,7 +18,6 @@
 #include "fit/blur_match.h"
 #include "fit/checkpoint.h"
 #include "fit/chroma_calibration.h"
-#include "fit/coincident_paths.h"
 #include "fit/correction_palette.h"
 #include "fit/document_order.h"
 #include "fit/group_transform.h"
@@ -116,15 +115,13 @@ std::vector<std::string> target_warnings(const TargetFrames& t, const std::strin
   return out;
 }
 
-// The fit's groups as the checkpoint's key names them: each group's paths by index, so a
-// checkpoint made under another grouping (another version's rules) is not resumed into this one.
-std::string group_membership(const Scene& s) {
+// The fit's groups as the checkpoint's key names them: the fit group of every path (of its
+// first control point), so a checkpoint made under another grouping (another version's rules)
+// is not resumed into this one.
+std::string group_membership(const FitPlan& f, const RasterPlan& plan) {
   std::string out;
-  for (const Group& g : s.groups) {
-    out += "[";
-    for (int p : g.paths) out += std::to_string(p) + ",";
-    out += "]";
-  }
+  for (size_t p = 0; p < plan.path_cp_first.size(); ++p)
+    out += std::to_string(plan.path_cp_count[p] > 0 ? f.cp_group[static_cast<size_t>(plan.path_cp_first[p])] : -1) + ",";
   return out;
 }
 
@@ -152,13 +149,6 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   KnownMotion known;
   Scene palette_scene =
       job.palette ? apply_palette(scene, read_palette(*job.palette), job.palette->string()) : scene;
-  // Overlays with the outline of the path they cover move with it (coincident_paths.h); not
-  // when group transforms are exported (the document's groups are the fit's there).
-  if (!job.group_transforms) {
-    std::vector<std::string> notes;
-    palette_scene = merge_coincident_paths(palette_scene, &notes);
-    for (const std::string& n : notes) log::info("fit: group %s", n.c_str());
-  }
   // A procedural target's groups split where its motion moves them apart (motion_groups.h); not
   // when group transforms are exported (a document group has one transform).
   if (job.motion && !job.group_transforms) {
@@ -386,7 +376,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                           "|refine " + std::to_string(refine_w) + "/" + std::to_string(refine_iters) +
                           "|split " + fmt("%.6g", job.max_segment) + "|denoise " + std::to_string(job.denoise_radius) +
                           (job.stabilise ? "|stabilise" : "") + "|chroma " + fmt("%.6g", chroma_weight) + "|groups " +
-                          group_membership(fit_scene);
+                          group_membership(fitter.fit_plan(), fitter.raster_plan());
   if (job.resume) {
     if (!fs::exists(ckpt)) throw Error(ckpt.string() + ": no checkpoint to resume from");
     fitter.restore(load_checkpoint(ckpt, key));

@@ -6,6 +6,8 @@
 #include <map>
 #include <tuple>
 
+#include "fit/coincident_paths.h"
+
 namespace svgm {
 
 void quadratic_bspline_weights(double u, int* j0, double w[3]) {
@@ -175,12 +177,12 @@ bool invisible_on_white(const Path& path, double tol) {
   return (!path.has_fill || white(path.fill)) && (!path.has_stroke || white(path.stroke.color));
 }
 
-// host[p]: the path whose group path p joins (see FitPlanOptions::attach_small_px and
-// attach_invisible_tol), or -1. Pixel-space boxes come from the raster plan's rest points;
-// containment is tested in canvas space on the scene's own points.
+// host[p]: the path whose group path p joins (see FitPlanOptions::attach_coincident,
+// attach_small_px and attach_invisible_tol), or -1. Pixel-space boxes come from the raster
+// plan's rest points; containment is tested in canvas space on the scene's own points.
 std::vector<int> path_hosts(const Scene& scene, const RasterPlan& raster, const FitPlanOptions& opt) {
   const size_t P = scene.paths.size();
-  std::vector<int> host(P, -1);
+  std::vector<int> host = opt.attach_coincident ? coincident_hosts(scene) : std::vector<int>(P, -1);
   if (opt.attach_small_px <= 0 && opt.attach_invisible_tol < 0) return host;
   std::vector<Box> px(P), canvas(P);
   for (size_t p = 0; p < P; ++p) {
@@ -193,7 +195,7 @@ std::vector<int> path_hosts(const Scene& scene, const RasterPlan& raster, const 
     const Path& path = scene.paths[p];
     const int sg = path.group;
     const bool alone = sg < 0 || scene.groups[sg].paths.size() <= 1;  // a top-level element
-    if (!alone || raster.path_cp_count[p] == 0) continue;
+    if (!alone || raster.path_cp_count[p] == 0 || host[p] >= 0) continue;
     // Small: under the absolute size, or tiny beside the path it sits on (a freckle on a
     // whole body; checked per host below).
     const bool small = px[p].side() < opt.attach_small_px;

@@ -30,6 +30,10 @@ struct FitPlanOptions {
   // path the image loss cannot see it, and on a group of its own it grows there unseen
   // (octopus: a white highlight 4-5x its size). Negative: off.
   double attach_invisible_tol = -1;
+  // A path alone in its group whose outline is an earlier path's (fit/coincident_paths.h: a
+  // gradient overlay, a bevel or a highlight stacked on a shape) joins that path's group, so the
+  // two cannot part.
+  bool attach_coincident = false;
   // Cohesion pairs: each control point with its nearest other control points (any path,
   // any group) closer than this at rest (pixels); 0: no cohesion term.
   double cohesion_radius_px = 0;

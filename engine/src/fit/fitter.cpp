@@ -80,6 +80,7 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
   fo.field_spacing_px = opt_.field_spacing_frac * size_.width;
   fo.attach_small_px = opt_.attach_small_frac * size_.width;
   fo.attach_invisible_tol = opt_.attach_invisible_tol;
+  fo.attach_coincident = opt_.attach_coincident;
   if (opt_.w_cohesion > 0) fo.cohesion_radius_px = opt_.cohesion_radius_frac * size_.width;
   fplan_ = plan_fit(scene, plan_, fo);
   G_ = fplan_.n_groups;

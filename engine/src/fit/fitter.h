@@ -113,6 +113,9 @@ struct FitOptions {
   // default white threshold's 1 - 0.97) move with the visible path they sit on
   // (FitPlanOptions::attach_invisible_tol); negative: off.
   double attach_invisible_tol = 0.03;
+  // Paths alone in their group with an earlier path's outline move with it
+  // (FitPlanOptions::attach_coincident).
+  bool attach_coincident = true;
   float w_cohesion = 0;            // weight of cohesion (kernels/regularise.cl); 0: off
   double cohesion_radius_frac = 0.015;  // cohesion pairs: rest distance below this x width
   // Keyframe 0 is the rest pose: an image-to-video model starts from the input image, so the
