@@ -15,6 +15,7 @@ packages=(
   libeigen3-dev libpugixml-dev libopencv-dev libyaml-cpp-dev
   libpng-dev doctest-dev nlohmann-json3-dev libcurl4-openssl-dev
   clang libclang-rt-dev
+  wordnet-base
 )
 # Test-only: ffprobe for clip checks, the two Lottie players the export is checked in
 # (Chromium for lottie-web, librlottie), node and npm for lottie-web (tests/integration/export_test.sh),

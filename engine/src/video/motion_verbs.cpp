@@ -115,6 +115,16 @@ const Verb* find_verb_by_name(std::string_view name) {
   return nullptr;
 }
 
+const Verb* find_verb_by_word(std::string_view word) {
+  // The longest stem wins: "flicker" is twinkle's stem, not wag's "flick" with the agent ending.
+  const Verb* best = nullptr;
+  size_t best_len = 0;
+  for (const auto& v : kVerbs)
+    for (const auto& s : v.stems)
+      if (s.size() > best_len && word_matches(word, s)) best = &v, best_len = s.size();
+  return best;
+}
+
 const std::vector<PartNoun>& part_nouns() { return kNouns; }
 
 bool word_matches(std::string_view word, std::string_view stem) {
@@ -138,6 +148,10 @@ bool apply_modifier(std::string_view w, Modifiers& m) {
   else if (in(w, {"both", "two", "all"})) { m.both = true; m.side = 0; }
   else if (in(w, {"up", "upward", "upwards"})) m.vertical = m.vertical == -1 ? 0 : (m.vertical == 2 ? 0 : 1);
   else if (in(w, {"down", "downward", "downwards"})) m.vertical = m.vertical == 1 ? 0 : -1;
+  else if (in(w, {"rightward", "rightwards"})) m.travel = m.travel == -1 ? 0 : 1;
+  else if (in(w, {"leftward", "leftwards"})) m.travel = m.travel == 1 ? 0 : -1;
+  else if (in(w, {"away", "receding"})) m.depth = -1;
+  else if (in(w, {"approaching", "closer", "nearer"})) m.depth = 1;
   else hit = false;
   if (hit) m.words.emplace_back(w);
   return hit;

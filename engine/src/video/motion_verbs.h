@@ -61,6 +61,8 @@ struct Verb {
 // Every verb (at least 40), in table order.
 const std::vector<Verb>& motion_verbs();
 const Verb* find_verb_by_name(std::string_view name);
+// The verb whose stem `word` (lower case) inflects, the longest stem when several do.
+const Verb* find_verb_by_word(std::string_view word);
 
 struct PartNoun {
   std::string stem;
@@ -76,6 +78,11 @@ struct Modifiers {
   int side = 0;      // the figure's own side: +1 right, -1 left, 0 neither or both
   bool both = false;
   int vertical = 0;  // +1 up, -1 down, 0 neither or both
+  // Where the whole figure travels, in the viewer's frame and apart from `side` (the figure's
+  // own side: "his right arm"): "drifts right", "walks to the left" (prompt_parse reads which
+  // a "left" or "right" is), "rightwards".
+  int travel = 0;    // +1 to the viewer's right, -1 to the left, 0 neither or both
+  int depth = 0;     // +1 towards the viewer ("towards the camera"), -1 away ("into the distance")
   std::vector<std::string> words;  // the modifier words seen, for the report
 };
 

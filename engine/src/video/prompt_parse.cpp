@@ -33,12 +33,7 @@ bool is_determiner(const std::string& w) {
          w == "your" || w == "our";
 }
 
-const Verb* verb_for_word(const std::string& w) {
-  for (const auto& v : motion_verbs())
-    for (const auto& s : v.stems)
-      if (word_matches(w, s)) return &v;
-  return nullptr;
-}
+const Verb* verb_for_word(const std::string& w) { return find_verb_by_word(w); }
 
 // "surfer", "runners", "biker", "rider": a verb with the agent ending ("er" after a stem, which
 // word_matches reads as an inflection; "r" after a verb's word ending in "e").
@@ -54,18 +49,80 @@ const PartNoun* noun_for_word(const std::string& w) {
   return nullptr;
 }
 
+bool is_possessive(const std::string& w) {
+  return w == "his" || w == "her" || w == "its" || w == "their" || w == "my" || w == "your" || w == "our";
+}
+
+bool is_particle(const std::string& w) {
+  return w == "off" || w == "out" || w == "up" || w == "down" || w == "away" || w == "over" || w == "around";
+}
+
+// "left" or "right" where the whole figure goes ("drifts right", "walks to the left"), not the
+// figure's own side ("his right arm", "the left wing", "to his left"): no possessive before it
+// and no noun after it. A bare one ("leans left") keeps setting the side as it always has; "to
+// the left" is only the travel.
+bool read_travel(const std::string& w, const std::string& prev, const std::string& prev2, const std::string& next,
+                 Modifiers& m) {
+  if (w != "left" && w != "right") return false;
+  Modifiers probe;
+  const bool next_is_noun = !next.empty() && !is_filler_word(next) && !is_preposition(next) && !is_conjunction(next) &&
+                            !apply_modifier(next, probe);
+  if (is_possessive(prev) || next_is_noun) return false;
+  const int dir = w == "right" ? 1 : -1;
+  m.travel = m.travel == -dir ? 0 : dir;
+  const bool phrase = prev == "the" && (prev2 == "to" || prev2 == "toward" || prev2 == "towards");
+  if (!phrase) apply_modifier(w, m);
+  m.words.push_back(phrase ? "to the " + w : w + " (travel)");
+  return true;
+}
+
+// "towards the viewer", "into the distance": the figure comes nearer or goes away.
+int depth_of(const std::vector<std::string>& words, size_t at) {
+  const std::string& w = words[at];
+  if (w != "toward" && w != "towards" && w != "into") return 0;
+  for (size_t k = at + 1; k < std::min(words.size(), at + 3); ++k) {
+    const std::string& n = words[k];
+    if (n == "viewer" || n == "camera" || n == "us" || n == "me" || n == "you" || n == "screen" || n == "foreground")
+      return w == "into" ? 0 : 1;
+    if (n == "distance" || n == "horizon" || n == "background") return -1;
+  }
+  return 0;
+}
+
+bool ends_with(const std::string& w, const char* suffix) {
+  const size_t n = std::char_traits<char>::length(suffix);
+  return w.size() > n && w.compare(w.size() - n, n, suffix) == 0;
+}
+
 // Words of one clause (lower case, letters only). `after_prep` says the clause continues a
 // prepositional phrase ("with black dots and black boots": "and" split it, and "boots" is
-// still what she is dressed with); on return, whether the clause ends inside one.
-Clause read_clause(const std::vector<std::string>& words, bool& after_prep) {
+// still what she is dressed with); on return, whether the clause ends inside one. Words the
+// lexicon could not place and what it read go to `out`.
+Clause read_clause(const std::vector<std::string>& words, bool& after_prep, ParsedPrompt& out) {
+  const Lexicon& lexicon = Lexicon::shared();
   Clause c;
-  std::string prev;
+  FigureClass agent_figure = FigureClass::None;
+  std::string prev, prev2;
+  bool prev_was_verb = false, prev_was_noun = false;
+  std::vector<bool> modifier_noun;  // per noun: followed by another noun ("candle" in "candle flame")
   for (size_t wi = 0; wi < words.size(); ++wi) {
     const std::string& w = words[wi];
     const bool prev_was_start = c.text.empty();
     c.text += (c.text.empty() ? "" : " ") + w;
     const bool after_determiner = is_determiner(prev);
+    // "to" before a verb is the infinitive's ("starts to wave"), not a place.
+    const bool after_preposition = is_preposition(prev) && prev != "to";
+    const std::string before = prev, before2 = prev2;
+    const bool after_verb = prev_was_verb, after_noun_word = prev_was_noun;
+    prev2 = prev;
     prev = w;
+    prev_was_verb = prev_was_noun = false;
+    const std::string next = wi + 1 < words.size() ? words[wi + 1] : std::string();
+    if (read_travel(w, before, before2, next, c.mods)) continue;
+    if (const int d = depth_of(words, wi)) {
+      c.mods.depth = d;
+      c.mods.words.push_back(d > 0 ? "towards the viewer" : "away");
+    }
     if (Modifiers probe = c.mods; apply_modifier(w, probe)) {
       c.mods = probe;
       continue;
@@ -74,36 +131,110 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep) {
     if (const PartNoun* n = noun_for_word(w)) {
       const bool plural = (w.size() > n->stem.size() && w.back() == 's') || w == "feet" || w == "leaves";
       c.nouns.push_back({w, n->target, plural, after_prep, !c.verbs.empty()});
+      if (after_noun_word && !modifier_noun.empty()) modifier_noun.back() = true;
+      modifier_noun.push_back(false);
+      prev_was_noun = true;
       after_prep = false;
       continue;
     }
     // A verb's agent noun opening the clause or after an article ("a surfer rides", "the
     // biker is pedalling") is the one who moves: the whole figure, not a part named like it (a
     // surfer's shadow drawn as "shadow_surfer" swung while the surfer stood still).
-    if ((prev_was_start || after_determiner) && is_agent_noun(w)) continue;
-    // A verb's word right after an article or a possessive is a noun ("rides the waves",
-    // "in the breeze"), unless it is a participle ("a galloping horse", "a waving flag").
+    if ((prev_was_start || after_determiner) && is_agent_noun(w)) {
+      if (agent_figure == FigureClass::None) agent_figure = lexicon.noun(w).figure;
+      continue;
+    }
+    // A verb's word right after an article, a possessive or a preposition is a noun ("rides the
+    // waves", "in the breeze", "on waves"), unless it is a participle ("a galloping horse", "a
+    // waving flag"); so is a plural right after a verb, its object ("riding waves").
     const bool participle = w.size() > 4 && w.compare(w.size() - 3, 3, "ing") == 0;
+    const bool object = after_verb && w.size() > 3 && w.back() == 's' && !ends_with(w, "ss") && verb_for_word(w) != verb_for_word(before);
     // ... and so is one right before a verb that says what it does ("the cobra snake sways": the
     // snake is who sways, it does not slither): a bare word followed by another verb's word
     // in the third person ("sways", not "swaying"). Two words of one verb say it once ("rain
     // falls").
-    const std::string next = wi + 1 < words.size() ? words[wi + 1] : std::string();
     const bool bare = w.back() != 's' && !participle && !(w.size() > 3 && w.compare(w.size() - 2, 2, "ed") == 0);
-    const Verb* next_verb = next.size() > 3 && next.back() == 's' && next[next.size() - 2] != 's' ? verb_for_word(next) : nullptr;
+    const bool next_third = next.size() > 3 && next.back() == 's' && next[next.size() - 2] != 's';
+    const Verb* next_verb = next_third ? verb_for_word(next) : nullptr;
     const bool subject = bare && next_verb && next_verb != verb_for_word(w);
-    const Verb* v = (after_determiner && !participle) || subject ? nullptr : verb_for_word(w);
+    const bool noun_place = ((after_determiner || after_preposition) && !participle) || object;
+    const Verb* v = noun_place || subject ? nullptr : verb_for_word(w);
     if (v) {
       if (std::find(c.verbs.begin(), c.verbs.end(), v) == c.verbs.end()) {
         c.verbs.push_back(v);
         c.verb_words.push_back(w);
       }
       after_prep = false;
+      prev_was_verb = true;
       continue;
     }
     if (is_preposition(w)) { after_prep = true; continue; }
     if (is_filler_word(w)) continue;
-    c.nouns.push_back({w, Target::Named, w.size() > 3 && w.back() == 's', after_prep, !c.verbs.empty()});
+    // Not in the vocabulary: the lexicon, as a verb in a verb's place. Not in a noun's: inside
+    // a prepositional phrase ("with black dots"), or as the subject of a verb after it ("horses
+    // gallop", "the candle flame flickers"). A past participle says a state ("its hood
+    // flared", "a hypnotized cobra"), not a motion. An "-s" word is a verb after a noun ("the
+    // plane lands"; not after an adjective: "black boots") or when WordNet sees it used as a
+    // verb at least as often as a noun; a bare word when it opens the clause (an imperative),
+    // follows "to" or can only be a verb.
+    const bool before_verb = !next.empty() && (verb_for_word(next) || (next_third && lexicon.verb(next).verb));
+    const bool s_form = w.size() > 3 && w.back() == 's' && !ends_with(w, "ss");
+    const bool past = ends_with(w, "ed");
+    using wordnet::Pos;
+    const bool after_noun = after_noun_word && lexicon.tagged_senses(before, Pos::Noun) >= lexicon.tagged_senses(before, Pos::Adj);
+    const bool used_as_verb = lexicon.tagged_senses(w, Pos::Verb) >= lexicon.tagged_senses(w, Pos::Noun);
+    const bool verb_form = participle || (s_form && (after_noun || used_as_verb)) ||
+                           (!s_form && !past && (prev_was_start || before == "to" || !lexicon.knows_noun(w)));
+    if (lexicon.has_wordnet() && verb_form && !noun_place && !after_prep && !before_verb) {
+      VerbReading r = is_particle(next) ? lexicon.phrasal_verb(w, next) : VerbReading{};
+      const std::string said = r.verb ? w + " " + next : w;
+      if (!r.verb) r = lexicon.verb(w);
+      if (r.verb) {
+        if (std::find(c.verbs.begin(), c.verbs.end(), r.verb) == c.verbs.end()) {
+          c.verbs.push_back(r.verb);
+          c.verb_words.push_back(said + "->" + r.verb->name);
+        }
+        out.readings.push_back("'" + said + "' read as " + r.verb->name + (r.via == "anchor" ? "" : " (WordNet: " + r.via + ")"));
+        after_prep = false;
+        prev_was_verb = true;
+        continue;
+      }
+    }
+    PromptNoun n{w, Target::Named, w.size() > 3 && w.back() == 's', after_prep, !c.verbs.empty()};
+    // In a verb's place, a verb WordNet knows and the lexicon could not place ("the cat
+    // yawns"): kept as a noun as before (a part may be named so), but it names no figure.
+    if (lexicon.has_wordnet() && verb_form && !noun_place && !after_prep && !before_verb && lexicon.knows_verb(w)) {
+      out.unplaced.push_back(w);
+      c.nouns.push_back(n);
+      modifier_noun.push_back(false);
+      continue;
+    }
+    if (lexicon.has_wordnet()) {
+      const NounReading r = lexicon.noun(w);
+      n.figure = r.figure;
+      n.motion = r.motion;
+      // A kind or a part of a body part the vocabulary knows ("talons": claws, "fingers": hands).
+      // Not the body itself ("figure" is a synonym of body in WordNet, and a prompt's "figure"
+      // is the whole), nor repeated elements or the background (a "sun" is not stars).
+      if (r.part && r.part->target != Target::Root && r.part->target != Target::Repeated &&
+          r.part->target != Target::Background) {
+        n.target = r.part->target;
+        out.readings.push_back("'" + w + "' read as " + r.part->stem);
+      }
+      if (r.figure != FigureClass::None)
+        out.readings.push_back("'" + w + "': " + figure_class_name(r.figure) + (r.motion ? ", moves by itself as " + r.motion->name : ""));
+    }
+    if (after_noun_word && !modifier_noun.empty()) modifier_noun.back() = true;
+    c.nouns.push_back(n);
+    modifier_noun.push_back(false);
+    prev_was_noun = true;
+  }
+  // Who moves: an agent noun, else the first noun with a class that is not in a prepositional
+  // phrase nor the modifier of a compound (the flame of "the candle flame").
+  c.figure = agent_figure;
+  for (size_t i = 0; i < c.nouns.size() && c.figure == FigureClass::None; ++i) {
+    const PromptNoun& n = c.nouns[i];
+    if (!n.object_of_preposition && !n.own_predicate && !(i < modifier_noun.size() && modifier_noun[i])) c.figure = n.figure;
   }
   return c;
 }
@@ -129,7 +260,12 @@ void merge_into(Clause& into, Clause from) {
       into.verb_words.push_back(from.verb_words[i]);
     }
   into.nouns.insert(into.nouns.end(), from.nouns.begin(), from.nouns.end());
-  for (const auto& w : from.mods.words) apply_modifier(w, into.mods);
+  if (into.figure == FigureClass::None) into.figure = from.figure;
+  // Travel words are read in context (read_travel), not by apply_modifier: carried over as read.
+  for (const auto& w : from.mods.words)
+    if (!apply_modifier(w, into.mods)) into.mods.words.push_back(w);
+  if (from.mods.travel) into.mods.travel = into.mods.travel == -from.mods.travel ? 0 : from.mods.travel;
+  if (from.mods.depth) into.mods.depth = from.mods.depth;
 }
 
 }  // namespace
@@ -170,7 +306,7 @@ ParsedPrompt parse_prompt(const std::string& prompt) {
   for (size_t i = 0; i < raw.size(); ++i) {
     if (raw[i].empty()) continue;
     bool after_prep = prep_open && after_and[i];
-    clauses.push_back(read_clause(raw[i], after_prep));
+    clauses.push_back(read_clause(raw[i], after_prep, out));
     prep_open = after_prep && clauses.back().verbs.empty();
   }
   // A clause without a verb joins the one before it (or, first in the prompt, the one after).

@@ -10,11 +10,19 @@
 // vocabulary does not know ("sways gently, its hood slightly flared": the hood flares, it is not
 // what sways). A noun right after a preposition ("falls on the
 // umbrella", "the wheels of the bicycle") is where or whose, not what moves, and is kept apart.
+//
+// Words the vocabulary does not list are read by the motion lexicon (motion/lexicon.h) when
+// WordNet is installed: in a verb's place, as the nearest vocabulary verb ("shuffles" read as
+// walk); in a noun's place (after an article, a possessive or a preposition, or before a verb:
+// "rides the waves", "the hummingbird hovers"), as a figure class and the motion such a thing
+// makes by itself. "left" and "right" before a part ("his right arm") are the figure's own side;
+// elsewhere ("drifts right", "walks to the left") where the whole figure travels.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "motion/lexicon.h"
 #include "video/motion_verbs.h"
 
 namespace svgm {
@@ -27,18 +35,28 @@ struct PromptNoun {
   bool after_verb = false;             // "rides the waves": the verb's object
   bool own_predicate = false;          // "its hood slightly flared": said to do something the
                                        // vocabulary does not know, so not another verb's target
+  FigureClass figure = FigureClass::None;  // the lexicon's class of the thing it names
+  const Verb* motion = nullptr;            // the motion such a thing makes by itself (lexicon)
 };
 
 struct Clause {
   std::string text;                 // the clause's words, space-separated
   std::vector<const Verb*> verbs;   // in order, no repeats
-  std::vector<std::string> verb_words;
+  std::vector<std::string> verb_words;  // as written; "shuffles->walk" when the lexicon read it
   std::vector<PromptNoun> nouns;    // known part nouns and every other content word, in order
   Modifiers mods;
+  FigureClass figure = FigureClass::None;  // of who moves: its first noun with a class that is
+                                           // not after a preposition ("a surfer" -> biped)
 };
 
 struct ParsedPrompt {
   std::vector<Clause> clauses;
+  // Words in a verb's place that neither the vocabulary nor the lexicon could place ("yawns"
+  // with no motion above it in WordNet); they are kept as nouns too, as before.
+  std::vector<std::string> unplaced;
+  // What the lexicon read, one line each for the report: "shuffles read as walk",
+  // "hummingbird: a bird".
+  std::vector<std::string> readings;
 };
 
 ParsedPrompt parse_prompt(const std::string& prompt);

@@ -1,0 +1,97 @@
+// The lexicon's anchors (see lexicon_anchors.h). Sense numbers are WordNet 3.0's, the only
+// version Debian ships; an anchor whose sense is missing is skipped (lexicon.cpp).
+#include "motion/lexicon_anchors.h"
+
+namespace svgm {
+
+namespace {
+
+using F = FigureClass;
+
+// clang-format off
+const std::vector<VerbAnchor> kVerbAnchors = {
+  // Every sense of "erupt" is a beginning, an increase, an appearance or catching fire; what a
+  // drawing of an eruption shows is its plume going up.
+  {"erupt", "rise"},
+  // "explode" and "burst" are changes of integrity in WordNet (no motion above them); drawn,
+  // a burst is a quick swelling.
+  {"explode", "swell"},
+  // "unfurl", "unfold": changes of shape; drawn, the thing lengthens.
+  {"unfurl", "stretch"},
+  {"unfold", "stretch"},
+};
+
+const std::vector<NounAnchor> kNounAnchors = {
+  // Bodies, by how they move.
+  {"person", 1, F::Biped, "wave"},
+  {"mammal", 1, F::Quadruped, "walk"},
+  // WordNet files Homo ("man" in one sense) under the primates: a person's body.
+  {"hominid", 1, F::Biped, "wave"},
+  {"reptile", 1, F::Quadruped, "walk"},
+  {"amphibian", 3, F::Quadruped, "hop"},
+  {"bird", 1, F::Bird, "flap"},
+  // WordNet files bats under the placental mammals; their body is a pair of wings.
+  {"chiropteran", 1, F::Bird, "flap"},
+  {"fish", 1, F::FishOrSnake, "swim"},
+  {"aquatic_mammal", 1, F::FishOrSnake, "swim"},  // whales, dolphins, seals: a swimmer's body
+  {"cephalopod", 1, F::FishOrSnake, "swim"},      // octopus, squid
+  {"snake", 1, F::FishOrSnake, "slither"},
+  {"worm", 1, F::FishOrSnake, "slither"},
+  {"arthropod", 1, F::Insect, "crawl"},
+  {"insect", 1, F::Insect, "flutter"},
+  {"plant", 2, F::Plant, "sway"},
+  {"fungus", 1, F::Plant, "sway"},
+  {"plant_part", 1, F::Plant, "sway"},
+  // Vehicles: wheels turn; boats rock on the water; aircraft glide (a flap would move wings).
+  {"wheeled_vehicle", 1, F::Wheeled, "drive"},
+  {"vessel", 2, F::Object, "rock"},
+  {"aircraft", 1, F::Object, "soar"},
+  // Fire and light. "fire" 1 is the event of burning, 3 the flame itself.
+  {"fire", 1, F::Flame, "flicker"},
+  {"fire", 3, F::Flame, "flicker"},
+  {"source_of_illumination", 1, F::None, "flicker"},  // candle, lamp, lantern, torch
+  {"celestial_body", 1, F::Object, "twinkle"},        // sun, star, moon
+  // Water and weather. A wave of the sea is a "movement" (an event) in WordNet.
+  {"precipitation", 3, F::Liquid, "fall"},
+  {"drop", 2, F::Liquid, "fall"},
+  {"liquid", 1, F::Liquid, "flow"},
+  {"liquid", 3, F::Liquid, "flow"},
+  {"wave", 1, F::Liquid, "ripple"},
+  {"body_of_water", 1, F::Scene, "ripple"},
+  {"cloud", 1, F::None, "rise"},  // smoke, steam, dust: particles in the air go up
+  {"cloud", 2, F::Object, "float"},
+  {"steam", 1, F::None, "rise"},  // WordNet files steam as water (a liquid)
+  {"plume", 1, F::None, "rise"},  // "a plume of smoke" is a shape (an abstraction) in WordNet
+  // A volcano is a mountain (or a vent) in WordNet; its motion is its plume going up.
+  {"volcano", 1, F::Scene, "rise"},
+  {"volcano", 2, F::Scene, "rise"},
+  {"flag", 1, F::Object, "ripple"},  // cloth on a pole: the wind runs along it
+  // Still things: where the figure is, or a thing among others.
+  {"geological_formation", 1, F::Scene, nullptr},
+  {"location", 1, F::Scene, nullptr},
+  {"structure", 1, F::Scene, nullptr},  // buildings, bridges
+  {"physical_entity", 1, F::Object, nullptr},
+};
+// clang-format on
+
+}  // namespace
+
+const std::vector<VerbAnchor>& verb_anchors() { return kVerbAnchors; }
+const std::vector<NounAnchor>& noun_anchors() { return kNounAnchors; }
+
+const char* class_motion(FigureClass c) {
+  switch (c) {
+    case F::Biped: return "wave";
+    case F::Quadruped: return "walk";
+    case F::Bird: return "flap";
+    case F::FishOrSnake: return "swim";
+    case F::Insect: return "flutter";
+    case F::Plant: return "sway";
+    case F::Wheeled: return "drive";
+    case F::Flame: return "flicker";
+    case F::Liquid: return "ripple";
+    default: return nullptr;
+  }
+}
+
+}  // namespace svgm

@@ -1,0 +1,33 @@
+// The motion lexicon's hand anchors (lexicon.h): the few places where WordNet's graph does not
+// lead from a word to a motion, and the noun synsets that name a figure class or a motion of
+// their own. Data only; each row says why it is needed.
+#pragma once
+
+#include <vector>
+
+#include "motion/lexicon.h"
+
+namespace svgm {
+
+// A verb lemma WordNet does not connect to any motion verb, and the vocabulary word it means.
+struct VerbAnchor {
+  const char* lemma;
+  const char* motion;  // a word the vocabulary's stems match
+};
+const std::vector<VerbAnchor>& verb_anchors();
+
+// A noun synset (lemma and WordNet 3.0 sense number, 1-based): the class of every noun under it,
+// and the motion such a thing makes by itself (null: none). The nearest anchor up a noun's
+// hypernym chain gives its class; the nearest with a motion, its motion.
+struct NounAnchor {
+  const char* lemma;
+  int sense;
+  FigureClass figure;  // None: only a motion
+  const char* motion;
+};
+const std::vector<NounAnchor>& noun_anchors();
+
+// The motion word of each class (default_verb).
+const char* class_motion(FigureClass c);
+
+}  // namespace svgm

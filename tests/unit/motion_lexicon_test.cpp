@@ -1,0 +1,187 @@
+// The motion lexicon and its place in the prompt parse: new verbs read as the nearest
+// vocabulary verb (shuffle -> walk), nouns as figure classes (hummingbird -> bird) and parts
+// (talon -> claw), noun-driven motion (a flame flickers), "waves" after a verb or a preposition
+// as a noun, and the travel direction of the whole figure ("to the right") apart from the
+// figure's own side ("his right arm"). Tests that need WordNet are skipped without it.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+
+#include "motion/lexicon.h"
+#include "svgmotion/svg_reader.h"
+#include "video/motion_plan.h"
+#include "video/prompt_parse.h"
+
+using namespace svgm;
+
+namespace {
+
+bool wordnet_or_skip() {
+  if (Lexicon::shared().has_wordnet()) return true;
+  MESSAGE("WordNet is not installed (apt install wordnet-base): skipped");
+  return false;
+}
+
+std::string verb_of(const char* word) {
+  const VerbReading r = Lexicon::shared().verb(word);
+  return r.verb ? r.verb->name : "-";
+}
+
+std::vector<std::string> verb_names(const Clause& c) {
+  std::vector<std::string> out;
+  for (const Verb* v : c.verbs) out.push_back(v->name);
+  return out;
+}
+
+}  // namespace
+
+TEST_SUITE("motion") {
+
+TEST_CASE("lexicon: new verbs read as the nearest vocabulary verb up WordNet's hypernyms") {
+  if (!wordnet_or_skip()) return;
+  CHECK(verb_of("shuffle") == "walk");
+  CHECK(verb_of("shuffles") == "walk");
+  CHECK(verb_of("plodding") == "walk");
+  CHECK(verb_of("scurry") == "run");
+  CHECK(verb_of("scampered") == "run");
+  CHECK(verb_of("swivel") == "spin");
+  CHECK(verb_of("applaud") == "clap");
+  CHECK(verb_of("hoist") == "lift");
+  CHECK(verb_of("drizzle") == "fall");
+  // A synonym is nearer than any hypernym: "bound" is in jump's own synset.
+  const VerbReading bound = Lexicon::shared().verb("bounds");
+  REQUIRE(bound.verb);
+  CHECK(bound.verb->name == "jump");
+  CHECK(bound.depth == 0);
+  // No motion above it, and none on the anchors: not placed.
+  CHECK(verb_of("yawn") == "-");
+  CHECK(verb_of("xyzzy") == "-");
+  // A verb made from a noun that moves by itself moves as it does (burn: fire flickers).
+  CHECK(verb_of("burns") == "twinkle");
+  // The anchor table, where WordNet's graph reaches no motion.
+  CHECK(verb_of("erupts") == "rise");
+}
+
+TEST_CASE("lexicon: nouns get a figure class through their hypernyms") {
+  if (!wordnet_or_skip()) return;
+  const Lexicon& lx = Lexicon::shared();
+  CHECK(lx.noun("hummingbird").figure == FigureClass::Bird);
+  CHECK(lx.noun("gazelle").figure == FigureClass::Quadruped);
+  CHECK(lx.noun("tractor").figure == FigureClass::Wheeled);
+  CHECK(lx.noun("tulips").figure == FigureClass::Plant);
+  CHECK(lx.noun("geese").figure == FigureClass::Bird);
+  CHECK(lx.noun("salmon").figure == FigureClass::FishOrSnake);
+  CHECK(lx.noun("surfer").figure == FigureClass::Biped);
+  CHECK(lx.noun("man").figure == FigureClass::Biped);        // not Homo the primate
+  CHECK(lx.noun("whale").figure == FigureClass::FishOrSnake);  // not "a large person"
+  CHECK(lx.noun("turtle").figure == FigureClass::Quadruped);   // not the turtleneck sweater
+  CHECK(lx.noun("happiness").figure == FigureClass::None);
+  CHECK(std::string(figure_class_name(FigureClass::FishOrSnake)) == "fish_or_snake");
+}
+
+TEST_CASE("lexicon: noun-driven motion: flames flicker, rain falls, smoke rises, the sea's waves roll") {
+  if (!wordnet_or_skip()) return;
+  const Lexicon& lx = Lexicon::shared();
+  const Verb* flicker = find_verb_by_word("flicker");
+  REQUIRE(flicker);
+  CHECK(flicker->name == "twinkle");  // its own stem, not wag's "flick" with the agent ending
+  CHECK(lx.noun("flame").figure == FigureClass::Flame);
+  CHECK(lx.noun("flame").motion == flicker);
+  CHECK(lx.noun("candle").motion == flicker);
+  CHECK(lx.noun("rain").motion == find_verb_by_name("fall"));
+  CHECK(lx.noun("smoke").motion == find_verb_by_name("rise"));
+  CHECK(lx.noun("waves").motion == find_verb_by_name("ripple"));
+  CHECK(lx.noun("waves").figure == FigureClass::Liquid);
+  CHECK(default_verb(FigureClass::Bird) == find_verb_by_name("flap"));
+  CHECK(default_verb(FigureClass::Flame) == flicker);
+  CHECK(default_verb(FigureClass::Scene) == nullptr);
+}
+
+TEST_CASE("lexicon: nouns reach the part nouns they are kinds or parts of") {
+  if (!wordnet_or_skip()) return;
+  const Lexicon& lx = Lexicon::shared();
+  REQUIRE(lx.noun("talons").part);
+  CHECK(lx.noun("talons").part->stem == "claw");
+  REQUIRE(lx.noun("fingers").part);
+  CHECK(lx.noun("fingers").part->target == Target::Arms);
+  REQUIRE(lx.noun("toes").part);
+  CHECK(lx.noun("toes").part->target == Target::Legs);
+}
+
+TEST_CASE("parse: a word the vocabulary lacks is read by the lexicon, and the reading recorded") {
+  if (!wordnet_or_skip()) return;
+  const ParsedPrompt p = parse_prompt("the old man shuffles slowly");
+  REQUIRE(p.clauses.size() == 1);
+  CHECK(verb_names(p.clauses[0]) == std::vector<std::string>{"walk"});
+  CHECK(p.clauses[0].verb_words == std::vector<std::string>{"shuffles->walk"});
+  CHECK(p.clauses[0].mods.speed == 0.5);
+  CHECK(p.clauses[0].figure == FigureClass::Biped);
+  CHECK(std::count(p.readings.begin(), p.readings.end(), "'shuffles' read as walk (WordNet: walk)") == 1);
+  // The subject before a verb is a noun ("the candle flame flickers": not "to flame"), with its class.
+  const ParsedPrompt f = parse_prompt("the candle flame flickers");
+  REQUIRE(f.clauses.size() == 1);
+  CHECK(verb_names(f.clauses[0]) == std::vector<std::string>{"twinkle"});
+  CHECK(f.clauses[0].figure == FigureClass::Flame);
+  // A hummingbird hovers: the class is recorded, the verb is the vocabulary's.
+  const ParsedPrompt h = parse_prompt("a hummingbird hovers");
+  CHECK(h.clauses[0].figure == FigureClass::Bird);
+  CHECK(verb_names(h.clauses[0]) == std::vector<std::string>{"hover"});
+  // A verb WordNet knows but the lexicon cannot place is listed, and kept as a noun as before.
+  const ParsedPrompt y = parse_prompt("the cat yawns");
+  CHECK(y.clauses[0].verbs.empty());
+  CHECK(y.unplaced == std::vector<std::string>{"yawns"});
+}
+
+TEST_CASE("parse: 'waves' after a verb, an article or a preposition is the sea's, not a hand wave") {
+  for (const char* prompt : {"a surfer riding waves", "the surfer rides the waves", "a boat bobs on waves"}) {
+    CAPTURE(prompt);
+    const ParsedPrompt p = parse_prompt(prompt);
+    for (const Clause& c : p.clauses) CHECK(std::find(c.verbs.begin(), c.verbs.end(), find_verb_by_name("wave")) == c.verbs.end());
+  }
+  CHECK(verb_names(parse_prompt("she waves her hand").clauses[0]) == std::vector<std::string>{"wave"});
+  // On a drawing: a surfer on a wave backdrop glides as a whole; no arm waves.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g id="wave"><rect x="0" y="100" width="200" height="100" fill="#04c"/></g>
+           <g id="surfer"><rect x="80" y="40" width="40" height="100" fill="#c33"/></g>
+           <g id="board"><rect x="50" y="140" width="100" height="10" fill="#ee0"/></g></svg>)", "surfer.svg");
+  const Rig rig = build_rig(s, {{s.paths[0].id, {{"/svg/g[1]", "wave"}}}});
+  const MotionPlan plan = plan_from_prompt(parse_prompt("A surfer riding waves"), rig, 1);
+  REQUIRE(!plan.actions.empty());
+  for (const auto& a : plan.actions) CHECK(a.verb != "wave");
+  CHECK(plan.actions[0].verb == "glide");
+}
+
+TEST_CASE("modifiers: the whole figure's travel is read apart from the figure's own side") {
+  const Modifiers gallop = parse_prompt("a horse gallops to the right").clauses.at(0).mods;
+  CHECK(gallop.travel == 1);
+  CHECK(gallop.side == 0);
+  const Modifiers walk = parse_prompt("the snail walks to the left").clauses.at(0).mods;
+  CHECK(walk.travel == -1);
+  CHECK(walk.side == 0);
+  const Modifiers drift = parse_prompt("the balloon floats right").clauses.at(0).mods;
+  CHECK(drift.travel == 1);
+  const Modifiers arm = parse_prompt("the man waves his right arm").clauses.at(0).mods;
+  CHECK(arm.side == 1);
+  CHECK(arm.travel == 0);
+  CHECK(parse_prompt("kicks with the left leg").clauses.at(0).mods.side == -1);
+  CHECK(parse_prompt("kicks with the left leg").clauses.at(0).mods.travel == 0);
+  CHECK(parse_prompt("it sways left and right").clauses.at(0).mods.travel == 0);
+  CHECK(parse_prompt("the car drives towards the viewer").clauses.at(0).mods.depth == 1);
+  CHECK(parse_prompt("the ship sails away").clauses.at(0).mods.depth == -1);
+  CHECK(parse_prompt("it drifts leftwards").clauses.at(0).mods.travel == -1);
+  const Modifiers up = parse_prompt("the rocket rises up slowly, once").clauses.at(0).mods;
+  CHECK(up.vertical == 1);
+  CHECK(up.speed == 0.5);
+  CHECK(up.once == 1);
+  CHECK(parse_prompt("flaps wildly").clauses.at(0).mods.size == doctest::Approx(1.6));
+}
+
+TEST_CASE("lexicon: without WordNet nothing is placed") {
+  const Lexicon none(nullptr);
+  CHECK_FALSE(none.has_wordnet());
+  CHECK(none.verb("shuffle").verb == nullptr);
+  CHECK(none.noun("hummingbird").figure == FigureClass::None);
+}
+
+}  // TEST_SUITE
