@@ -10,6 +10,10 @@ namespace svgm::motion {
 
 namespace {
 
+constexpr double kSpineSpread = 0.35;  // a snake's width varies by a third of its mean at most
+constexpr double kThinLeg = 0.3;       // a bird's leg: under a third of its body's inscribed radius
+constexpr double kStem = 0.5;          // a plant's stem: under half the thickness it holds up
+
 struct Score {
   FigureClass cls = FigureClass::Object;
   double score = 0;
@@ -22,10 +26,10 @@ std::string fmt(const char* f, double a = 0, double b = 0) {
   return buf;
 }
 
-// The longest end-to-end path of the figure's skeleton (its length and mean radius), and the
-// skeleton's whole length, in the figure's component.
+// The longest end-to-end path of the figure's skeleton (its length, and the mean and spread of
+// the inscribed radius along it), and the skeleton's whole length, in the figure's component.
 struct Spine {
-  double length = 0, mean_radius = 0, total = 0;
+  double length = 0, mean_radius = 0, radius_spread = 0, total = 0;  // spread: std dev / mean
 };
 
 Spine spine(const Skeleton& s, const Figure& f) {
@@ -33,9 +37,11 @@ Spine spine(const Skeleton& s, const Figure& f) {
   for (const auto& e : s.edges)
     if (s.nodes[e.a].component == f.component) out.total += e.length;
   const double inf = std::numeric_limits<double>::infinity();
+  std::vector<int> best_path;  // edges
   for (size_t from = 0; from < s.nodes.size(); ++from) {
     if (s.nodes[from].component != f.component || s.nodes[from].degree() > 1) continue;
-    std::vector<double> dist(s.nodes.size(), inf), rsum(s.nodes.size(), 0);
+    std::vector<double> dist(s.nodes.size(), inf);
+    std::vector<int> via(s.nodes.size(), -1);
     std::vector<char> done(s.nodes.size(), 0);
     dist[from] = 0;
     for (;;) {
@@ -44,17 +50,31 @@ Spine spine(const Skeleton& s, const Figure& f) {
         if (!done[n] && dist[n] < inf && (u < 0 || dist[n] < dist[u])) u = static_cast<int>(n);
       if (u < 0) break;
       done[u] = 1;
-      if (dist[u] > out.length) out.length = dist[u], out.mean_radius = dist[u] > 0 ? rsum[u] / dist[u] : 0;
+      if (dist[u] > out.length) {
+        out.length = dist[u];
+        best_path.clear();
+        for (int n = u; via[n] >= 0; n = s.edges[via[n]].a == n ? s.edges[via[n]].b : s.edges[via[n]].a)
+          best_path.push_back(via[n]);
+      }
       for (int e : s.nodes[u].edges) {
         const auto& E = s.edges[e];
         const int v = E.a == u ? E.b : E.a;
-        if (dist[u] + E.length < dist[v]) dist[v] = dist[u] + E.length, rsum[v] = rsum[u] + E.mean_radius * E.length;
+        if (dist[u] + E.length < dist[v]) dist[v] = dist[u] + E.length, via[v] = e;
       }
     }
   }
-  if (out.length == 0)  // a loop or a dot
-    for (const auto& e : s.edges)
-      if (s.nodes[e.a].component == f.component && e.length > out.length) out.length = e.length, out.mean_radius = e.mean_radius;
+  if (best_path.empty())  // a loop or a dot: its longest branch
+    for (size_t e = 0; e < s.edges.size(); ++e)
+      if (s.nodes[s.edges[e].a].component == f.component &&
+          (best_path.empty() || s.edges[e].length > s.edges[best_path[0]].length))
+        best_path = {static_cast<int>(e)}, out.length = s.edges[e].length;
+  double sum = 0, sum2 = 0, n = 0;
+  for (int e : best_path)
+    for (double r : s.edges[e].radius) sum += r, sum2 += r * r, ++n;
+  if (n > 0) {
+    out.mean_radius = sum / n;
+    out.radius_spread = out.mean_radius > 0 ? std::sqrt(std::max(0.0, sum2 / n - out.mean_radius * out.mean_radius)) / out.mean_radius : 0;
+  }
   return out;
 }
 
@@ -117,11 +137,16 @@ FigureVerdict classify_shape(const cv::Mat& mask, const Skeleton& s, const Figur
   if (cover >= 0.85) consider(best, FigureClass::Scene, 0.8, fmt("the drawing fills %.0f%% of the canvas", 100 * cover));
   if (large >= 4) consider(best, FigureClass::Scene, 0.55, fmt("%.0f large separate parts", large));
 
-  // Wheeled: circles in the lower half of the figure, not the figure itself.
+  // Wheeled: circles in the lower half of the figure standing on its ground line (the
+  // drawing's lowest row), not the figure itself.
   int wheels = 0;
-  double rmin = 1e300, rmax = 0;
+  double rmin = 1e300, rmax = 0, bottom = 0;
+  for (int y = 0; y < mask.rows; ++y)
+    if (cv::countNonZero(mask.row(y))) bottom = y;
   for (const auto& c : find_circles(mask)) {
-    if (c.centre.y < f.y0 + 0.5 * fh || c.radius > 0.4 * std::max(fw, fh) || c.radius < 0.05 * std::max(fw, fh)) continue;
+    if (c.centre.y < f.y0 + 0.5 * fh || c.radius > 0.4 * std::max(fw, fh) || c.radius < 0.05 * std::max(fw, fh) ||
+        c.centre.y + c.radius < bottom - std::max(3.0, 0.06 * fh))
+      continue;
     ++wheels;
     rmin = std::min(rmin, c.radius), rmax = std::max(rmax, c.radius);
   }
@@ -143,6 +168,17 @@ FigureVerdict classify_shape(const cv::Mat& mask, const Skeleton& s, const Figur
       if (!w || L.length > w->length) w = &L;
     }
   }
+  // A bird's legs are thin under its body, a person's about as thick as the torso; a plant's
+  // stem is one thin central leg on the ground.
+  bool thin_legs = legs > 0, stem_central = false;
+  for (const auto& L : f.limbs) {
+    if (L.kind != LimbKind::Leg) continue;
+    double r = 0;
+    for (size_t i = L.base_index; i < L.radius.size(); ++i) r += L.radius[i];
+    r /= std::max<size_t>(1, L.radius.size() - L.base_index);
+    thin_legs = thin_legs && r <= kThinLeg * f.core_radius;
+    stem_central = L.grounded && L.side == 0 && r <= kStem * f.core_radius;
+  }
   // Wings: about as long as each other, mirrored (rising or falling alike), from one place.
   const bool wings = wing[0] && wing[1] &&
                      std::max(wing[0]->length, wing[1]->length) <= 1.6 * std::min(wing[0]->length, wing[1]->length) &&
@@ -154,7 +190,8 @@ FigureVerdict classify_shape(const cv::Mat& mask, const Skeleton& s, const Figur
   const Spine sp = spine(s, f);
   const double carried = sp.total > 0 ? sp.length / sp.total : 0;
   const double elongation = sp.mean_radius > 0 ? sp.length / (2 * sp.mean_radius) : 0;
-  if (carried >= 0.75 && elongation >= 3.5 && legs < 2 && !wings)  // wing tip to wing tip is no spine
+  // (a swan's neck on its body, a beaver's tail on its body: one branch too, but not of one width)
+  if (carried >= 0.75 && elongation >= 4 && sp.radius_spread <= kSpineSpread && legs < 2 && !wings)
     consider(best, FigureClass::FishOrSnake, std::min(0.75, 0.45 + 0.03 * elongation),
              fmt("one branch %.1f times its width carries %.0f%% of the skeleton", elongation, 100 * carried));
   if (f.upright && legs >= 1 && legs <= 2 && (arms >= 1 || head))
@@ -166,6 +203,10 @@ FigureVerdict classify_shape(const cv::Mat& mask, const Skeleton& s, const Figur
   if (wings) consider(best, FigureClass::Bird, 0.65, "two long mirrored side branches: wings");
   if (!f.upright && legs == 2 && (head || tails))
     consider(best, FigureClass::Bird, 0.5, "a lying body on two legs");
+  if ((legs == 1 || legs == 2) && thin_legs)
+    consider(best, FigureClass::Bird, 0.72, fmt("a body on %.0f legs under a third of its thickness", legs));
+  if (stems == 1 && legs == 1 && stem_central && up >= 1)
+    consider(best, FigureClass::Plant, 0.7, fmt("%.0f branches rising above one central stem", up));
   if (up >= 3 && legs <= 1)
     consider(best, FigureClass::Plant, stems == 1 ? 0.7 : 0.6,
              fmt("%.0f branches rising", up) + (stems == 1 ? " above one stem" : ""));

@@ -8,14 +8,15 @@
 // taken:
 //  - scene: the mask fills the canvas, or it is four or more large separate parts;
 //  - wheeled: two or more circles (round holes, round parts, arcs bulging out of the bottom
-//    outline) in the lower half of the figure;
-//  - fish or snake: one long branch, several times its width, carries most of the skeleton;
+//    outline) in the lower half of the figure, standing on its ground line;
+//  - fish or snake: one long branch, several times its width and of about one width all along,
+//    carries most of the skeleton;
 //  - biped: an upright body with one or two legs down and arms or a head;
 //  - quadruped: a lying body with three or more legs down;
 //  - bird: two long side branches of about the same length, mirrored, from one place (wings),
-//    or a lying body on two legs;
-//  - plant: three or more branches rising (above a single stem: surer), or a narrow stem under
-//    a wide top;
+//    a body on one or two legs under a third of its thickness, or a lying body on two legs;
+//  - plant: branches rising above one central stem on the ground, three or more branches
+//    rising, or a narrow stem under a wide top;
 //  - object: anything else.
 // The verdict keeps the shape's own answer beside the final one, and a reason in words
 // ("4 legs below a lying body: quadruped").

@@ -14,6 +14,21 @@ constexpr double kRound = 0.8;         // 4 pi area / perimeter^2 of a polygonis
 constexpr double kArcFit = 0.06;       // RMS residual of a bottom arc, share of its radius (+0.6 px)
 constexpr double kArcSpan = 0.55;      // a bottom arc's half-width as a share of its radius
 constexpr double kArcDepth = 0.2;      // how far it bulges below its sides, share of its radius
+constexpr double kArcFilled = 0.9;     // share of its disc inside the mask
+
+// Share of the disc (centre c, 0.9 r) inside the mask: a wheel's arc bounds a filled disc; a
+// rounded paw's arc fitted to a bigger circle than the leg is wide does not.
+double disc_filled(const cv::Mat& mask, Vec2 c, double r) {
+  int in = 0, all = 0;
+  const double rr = 0.9 * r;
+  for (int y = static_cast<int>(c.y - rr); y <= static_cast<int>(c.y + rr); ++y)
+    for (int x = static_cast<int>(c.x - rr); x <= static_cast<int>(c.x + rr); ++x) {
+      if ((x - c.x) * (x - c.x) + (y - c.y) * (y - c.y) > rr * rr) continue;
+      ++all;
+      in += x >= 0 && y >= 0 && x < mask.cols && y < mask.rows && mask.at<uchar>(y, x);
+    }
+  return all ? static_cast<double>(in) / all : 0;
+}
 
 double circularity(const std::vector<cv::Point>& c) {
   const double a = cv::contourArea(c), p = cv::arcLength(c, true);
@@ -84,7 +99,7 @@ void bottom_arcs(const cv::Mat& mask, double min_radius, std::vector<Circle>& ou
     if (!fit_circle(pts, c, rad, rms) || rad < min_radius) continue;
     const double depth = bottom[x] - std::max(bottom[l], bottom[r]);
     const bool ok = rms <= kArcFit * rad + 0.6 && 0.5 * (r - l) >= kArcSpan * rad && depth >= kArcDepth * rad &&
-                    c.y < bottom[x] && c.x >= l && c.x <= r;
+                    c.y < bottom[x] && c.x >= l && c.x <= r && disc_filled(mask, c, rad) >= kArcFilled;
     if (ok) out.push_back({c, rad, "bottom arc"});
     x = run_end;
   }

@@ -6,8 +6,9 @@
 // from the body), and a circular arc bulging out of the figure's bottom outline (a car's wheel
 // drawn over its body's lower edge: the mask's lowest pixel per column traces the wheel's lower
 // arc; a least-squares circle through it is a wheel when it fits to about a pixel and spans a
-// good part of a half circle). A leg's foot is flat-bottomed and its sides are straight, so its
-// circle fit fails.
+// good part of a half circle and the disc it bounds is filled). A leg's foot is flat-bottomed
+// and its sides are straight, so its circle fit fails; a rounded paw's arc fits a circle wider
+// than the leg, whose disc is not filled.
 #pragma once
 
 #include <string>
