@@ -6,7 +6,8 @@
 # two confusion tables (tests/tools/figure_class_probe.cpp). MASK is `fills` (the default:
 # strokes dropped, outline gaps closed; better on this sample) or `all` (every painted pixel);
 # DUMP=DIR writes each mask with its skeleton as a PNG. Not part of the test suite: the
-# drawings are not ours to copy, and are installed by ../shared/tools/emoji_corpus.sh under EMOJI (default /work/emoji/node_modules).
+# drawings are not ours to copy, and are installed by ../shared/tools/emoji_corpus.sh under
+# EMOJI (default /work/emoji/node_modules).
 #
 #   bash tests/bench/figure_class.sh [BUILD_DIR]
 set -eu
