@@ -1,0 +1,327 @@
+// Body core, limbs and their labels from a silhouette skeleton (limbs.h says the rules).
+#include "motion/limbs.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace svgm::motion {
+
+namespace {
+
+constexpr double kCoreGrow = 0.5;     // an internal branch joins the core at half its thickness
+constexpr double kBendShare = 0.1;    // a bend a tenth of the chord off it is a real elbow
+constexpr double kGroundShare = 0.05; // ground tolerance: a twentieth of the figure's height
+
+double len(Vec2 v) { return std::hypot(v.x, v.y); }
+double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+Vec2 unit(Vec2 v) {
+  const double l = len(v);
+  return l > 0 ? (1.0 / l) * v : Vec2{};
+}
+
+int component_of(const Skeleton& s, const SkeletonEdge& e) { return s.nodes[e.a].component; }
+
+void pick_core(const Skeleton& s, Figure& f) {
+  std::vector<int> internal;
+  for (size_t i = 0; i < s.edges.size(); ++i)
+    if (component_of(s, s.edges[i]) == f.component && !s.edges[i].terminal) internal.push_back(static_cast<int>(i));
+  std::vector<char> in_core(s.nodes.size(), 0);
+  auto add_node = [&](int n) {
+    if (!in_core[n]) f.core_nodes.push_back(n);
+    in_core[n] = 1;
+  };
+  if (!internal.empty()) {
+    int seed = internal[0];
+    auto body = [&](int e) { return s.edges[e].mean_radius * s.edges[e].mean_radius * s.edges[e].length; };
+    for (int e : internal)
+      if (body(e) > body(seed)) seed = e;
+    std::vector<char> taken(s.edges.size(), 0);
+    f.core_edges.push_back(seed);
+    taken[seed] = 1;
+    add_node(s.edges[seed].a);
+    add_node(s.edges[seed].b);
+    for (bool grew = true; grew;) {
+      grew = false;
+      for (int e : internal) {
+        const auto& E = s.edges[e];
+        if (taken[e] || !(in_core[E.a] || in_core[E.b]) || E.mean_radius < kCoreGrow * s.edges[seed].mean_radius)
+          continue;
+        taken[e] = grew = true;
+        f.core_edges.push_back(e);
+        add_node(E.a);
+        add_node(E.b);
+      }
+    }
+    return;
+  }
+  int best = -1;
+  for (size_t n = 0; n < s.nodes.size(); ++n)
+    if (s.nodes[n].component == f.component && s.nodes[n].junction() &&
+        (best < 0 || s.nodes[n].radius > s.nodes[best].radius))
+      best = static_cast<int>(n);
+  if (best >= 0) return add_node(best);
+  for (size_t e = 0; e < s.edges.size(); ++e)  // one branch (or a loop): the longest is the core
+    if (component_of(s, s.edges[e]) == f.component &&
+        (f.single_branch < 0 || s.edges[e].length > s.edges[f.single_branch].length))
+      f.single_branch = static_cast<int>(e);
+  if (f.single_branch >= 0) {
+    f.core_edges.push_back(f.single_branch);
+    add_node(s.edges[f.single_branch].a);
+    add_node(s.edges[f.single_branch].b);
+    return;
+  }
+  for (size_t n = 0; n < s.nodes.size(); ++n)
+    if (s.nodes[n].component == f.component) return add_node(static_cast<int>(n));
+}
+
+void core_geometry(const Skeleton& s, Figure& f) {
+  std::vector<Vec2> pts;
+  for (int e : f.core_edges) pts.insert(pts.end(), s.edges[e].points.begin(), s.edges[e].points.end());
+  for (int n : f.core_nodes) {
+    pts.push_back(s.nodes[n].pos);
+    f.core_radius = std::max(f.core_radius, s.nodes[n].radius);
+  }
+  for (int e : f.core_edges) f.core_radius = std::max(f.core_radius, s.edges[e].max_radius);
+  if (pts.empty()) return;
+  Vec2 c;
+  for (const auto& p : pts) c = c + p;
+  c = (1.0 / static_cast<double>(pts.size())) * c;
+  double sxx = 0, sxy = 0, syy = 0;
+  for (const auto& p : pts) {
+    const Vec2 d = p - c;
+    sxx += d.x * d.x, sxy += d.x * d.y, syy += d.y * d.y;
+  }
+  const double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);  // principal direction
+  Vec2 axis{std::cos(angle), std::sin(angle)};
+  double lo = 0, hi = 0;
+  for (const auto& p : pts) lo = std::min(lo, dot(p - c, axis)), hi = std::max(hi, dot(p - c, axis));
+  f.core_centre = c;
+  f.core_length = hi - lo;
+  if (f.core_length > 2 * f.core_radius)
+    f.upright = std::fabs(axis.y) >= std::cos(M_PI / 4);
+  else
+    f.upright = f.y1 - f.y0 >= f.x1 - f.x0;
+  if (f.upright ? axis.y < 0 : axis.x < 0) axis = -1.0 * axis;
+  f.core_axis = axis;
+}
+
+// Shortest paths (by branch length) from `from` inside a sub-tree's edges; returns the node path
+// to `to` as edge indices.
+std::vector<int> path_edges(const Skeleton& s, const std::vector<int>& edges, int from, int to) {
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> dist(s.nodes.size(), inf);
+  std::vector<int> via(s.nodes.size(), -1);
+  std::vector<char> done(s.nodes.size(), 0);
+  dist[from] = 0;
+  for (;;) {
+    int u = -1;
+    for (size_t n = 0; n < s.nodes.size(); ++n)
+      if (!done[n] && dist[n] < inf && (u < 0 || dist[n] < dist[u])) u = static_cast<int>(n);
+    if (u < 0 || u == to) break;
+    done[u] = 1;
+    for (int e : edges) {
+      const auto& E = s.edges[e];
+      if (E.a != u && E.b != u) continue;
+      const int v = E.a == u ? E.b : E.a;
+      if (dist[u] + E.length < dist[v]) dist[v] = dist[u] + E.length, via[v] = e;
+    }
+  }
+  std::vector<int> out;
+  for (int n = to; n != from && via[n] >= 0;) {
+    out.push_back(via[n]);
+    n = s.edges[via[n]].a == n ? s.edges[via[n]].b : s.edges[via[n]].a;
+  }
+  std::reverse(out.begin(), out.end());
+  return out;
+}
+
+double path_length(const Skeleton& s, const std::vector<int>& edges) {
+  double l = 0;
+  for (int e : edges) l += s.edges[e].length;
+  return l;
+}
+
+void limb_geometry(const Skeleton& s, const Figure& f, Limb& L, const std::vector<int>& path) {
+  int at = L.joint;
+  for (int e : path) {
+    const auto& E = s.edges[e];
+    const bool forward = E.a == at;
+    for (size_t k = 0; k < E.points.size(); ++k) {
+      const size_t i = forward ? k : E.points.size() - 1 - k;
+      if (k == 0 && !L.path.empty()) continue;
+      L.path.push_back(E.points[i]);
+      L.radius.push_back(E.radius[i]);
+    }
+    at = forward ? E.b : E.a;
+  }
+  const SkeletonNode& joint = s.nodes[L.joint];
+  L.base_index = L.path.size() / 2;
+  for (size_t i = 0; i < L.path.size(); ++i)
+    if (len(L.path[i] - joint.pos) >= joint.radius) {
+      L.base_index = std::min(i, L.path.size() - 1);
+      break;
+    }
+  L.base = L.path[L.base_index];
+  L.tip_pos = L.path.back();
+  L.tip_radius = s.nodes[L.tip].radius;
+  for (size_t i = L.base_index + 1; i < L.path.size(); ++i) L.length += len(L.path[i] - L.path[i - 1]);
+  L.relative_length = L.length / std::max(1.0, std::max(f.x1 - f.x0, f.y1 - f.y0));
+  L.direction = unit(L.tip_pos - (L.length > 0 ? L.base : joint.pos));
+  const Vec2 chord = L.tip_pos - L.base;
+  const double chord_len = len(chord);
+  double far = 0;
+  L.bend = 0.5 * (L.base + L.tip_pos);
+  for (size_t i = L.base_index; i < L.path.size() && chord_len > 0; ++i) {
+    const Vec2 d = L.path[i] - L.base;
+    const double off = std::fabs(d.x * chord.y - d.y * chord.x) / chord_len;
+    if (off > far) far = off, L.bend = L.path[i];
+  }
+  L.bent = far >= kBendShare * chord_len && chord_len > 0;
+}
+
+// A core shorter than it is thick is a point: a star of limbs (a plus sign, a bird's wings and
+// head round one junction) has no axis to place them along.
+bool point_core(const Figure& f) { return f.core_length < std::max(2.0, f.core_radius); }
+
+// Where a limb's joint lies along the core axis: 0 at the top (upright) or left end, 1 at the
+// other; a point core places limbs by direction (down-pointing limbs in the lower half).
+double joint_t(const Skeleton& s, const Figure& f, const Limb& L) {
+  if (point_core(f)) return L.direction.y > 0.3 ? 1.0 : 0.0;
+  double lo = 1e300, hi = -1e300;
+  for (int e : f.core_edges)
+    for (const auto& p : s.edges[e].points) lo = std::min(lo, dot(p, f.core_axis)), hi = std::max(hi, dot(p, f.core_axis));
+  for (int n : f.core_nodes) lo = std::min(lo, dot(s.nodes[n].pos, f.core_axis)), hi = std::max(hi, dot(s.nodes[n].pos, f.core_axis));
+  return std::clamp((dot(s.nodes[L.joint].pos, f.core_axis) - lo) / std::max(1e-9, hi - lo), 0.0, 1.0);
+}
+
+void label(const Skeleton& s, Figure& f) {
+  const double tol = std::max(3.0, kGroundShare * (f.y1 - f.y0));
+  f.ground_y = f.y1;
+  double lowest = -1e300;
+  for (const auto& L : f.limbs) lowest = std::max(lowest, L.tip_pos.y + L.tip_radius);
+  if (!f.limbs.empty()) f.ground_y = lowest;
+  for (auto& L : f.limbs) {
+    L.grounded = lowest >= f.y1 - tol && L.tip_pos.y + L.tip_radius >= lowest - tol && L.direction.y > 0.2;
+    const double dx = L.tip_pos.x - f.core_centre.x, w = std::max(4.0, 0.1 * (f.x1 - f.x0));
+    L.side = dx < -w ? -1 : dx > w ? 1 : 0;
+  }
+  std::vector<double> t;
+  for (const auto& L : f.limbs) t.push_back(joint_t(s, f, L));
+  auto set = [](Limb& L, LimbKind k, const char* why) { L.kind = k, L.why = why; };
+  if (f.upright || point_core(f)) {
+    int head = -1;
+    for (size_t i = 0; i < f.limbs.size(); ++i) {
+      Limb& L = f.limbs[i];
+      if (L.grounded) set(L, LimbKind::Leg, "its tip is on the ground line");
+      else if (t[i] >= 0.5 && L.direction.y > 0.3) set(L, LimbKind::Leg, "down from the lower body");
+      else if (t[i] >= 0.5 && L.direction.y > -0.5) set(L, LimbKind::Tail, "sideways from the lower body");
+      else {
+        set(L, LimbKind::Arm, "from the upper body");
+        const double off = std::fabs(L.tip_pos.x - f.core_centre.x);
+        if (L.direction.y < -0.6 && (head < 0 || off < std::fabs(f.limbs[head].tip_pos.x - f.core_centre.x))) head = static_cast<int>(i);
+      }
+    }
+    if (head >= 0) set(f.limbs[head], LimbKind::Head, "the most central limb up from the upper body");
+    return;
+  }
+  int end[2] = {-1, -1};  // the longest limb out of each end of the core: head or tail
+  for (size_t i = 0; i < f.limbs.size(); ++i) {
+    Limb& L = f.limbs[i];
+    const double along = dot(L.direction, f.core_axis);
+    if (L.grounded || L.direction.y > 0.5) set(L, LimbKind::Leg, L.grounded ? "its tip is on the ground line" : "down from the body");
+    else if ((t[i] <= 0.25 && along < -0.3) || (t[i] >= 0.75 && along > 0.3)) {
+      set(L, LimbKind::Other, "out of an end of the body");
+      int& e = end[along > 0];
+      if (e < 0 || L.length > f.limbs[e].length) e = static_cast<int>(i);
+    } else if (L.direction.y < -0.3) set(L, LimbKind::Arm, "rising from the body");
+    else set(L, LimbKind::Other, "beside the body");
+  }
+  if (end[0] >= 0 && end[1] >= 0) {
+    const Limb &a = f.limbs[end[0]], &b = f.limbs[end[1]];
+    const bool a_head = a.tip_radius > 1.2 * b.tip_radius || (b.tip_radius <= 1.2 * a.tip_radius && a.tip_pos.y < b.tip_pos.y);
+    set(f.limbs[end[a_head ? 0 : 1]], LimbKind::Head, "the end limb with the larger or higher tip");
+    set(f.limbs[end[a_head ? 1 : 0]], LimbKind::Tail, "the other end limb");
+  } else if (end[0] >= 0 || end[1] >= 0) {
+    Limb& L = f.limbs[std::max(end[0], end[1])];
+    const bool head = L.tip_radius >= 0.4 * f.core_radius;
+    set(L, head ? LimbKind::Head : LimbKind::Tail, head ? "the one end limb, a big tip" : "the one end limb, thin");
+  }
+}
+
+}  // namespace
+
+const char* limb_kind_name(LimbKind k) {
+  switch (k) {
+    case LimbKind::Head: return "head";
+    case LimbKind::Arm: return "arm";
+    case LimbKind::Leg: return "leg";
+    case LimbKind::Tail: return "tail";
+    case LimbKind::Other: return "other";
+  }
+  return "other";
+}
+
+Figure find_limbs(const Skeleton& s) {
+  Figure f;
+  for (size_t c = 0; c < s.component_area.size(); ++c)
+    if (f.component < 0 || s.component_area[c] > s.component_area[f.component]) f.component = static_cast<int>(c);
+  if (f.component < 0) return f;
+  f.x0 = f.y0 = 1e300;
+  f.x1 = f.y1 = -1e300;
+  for (int y = 0; y < s.height; ++y)
+    for (int x = 0; x < s.width; ++x)
+      if (s.labels.at<int>(y, x) == f.component)
+        f.x0 = std::min<double>(f.x0, x), f.x1 = std::max<double>(f.x1, x), f.y0 = std::min<double>(f.y0, y),
+        f.y1 = std::max<double>(f.y1, y);
+  pick_core(s, f);
+  core_geometry(s, f);
+  if (f.single_branch >= 0) return f;
+  std::vector<char> core_node(s.nodes.size(), 0), used(s.edges.size(), 0);
+  for (int n : f.core_nodes) core_node[n] = 1;
+  for (int e : f.core_edges) used[e] = 1;
+  for (int c : f.core_nodes)
+    for (int first : s.nodes[c].edges) {
+      if (used[first]) continue;
+      // The sub-tree behind `first`, not crossing the core.
+      Limb L;
+      L.joint = c;
+      std::vector<int> stack = {first};
+      used[first] = 1;
+      std::vector<int> ends;
+      while (!stack.empty()) {
+        const int e = stack.back();
+        stack.pop_back();
+        L.edges.push_back(e);
+        for (int n : {s.edges[e].a, s.edges[e].b}) {
+          if (core_node[n]) continue;
+          if (s.nodes[n].end() && std::find(ends.begin(), ends.end(), n) == ends.end()) ends.push_back(n);
+          for (int next : s.nodes[n].edges)
+            if (!used[next]) used[next] = 1, stack.push_back(next);
+        }
+      }
+      if (ends.empty()) continue;
+      std::sort(ends.begin(), ends.end());
+      std::vector<int> best;
+      for (int tip : ends) {
+        std::vector<int> p = path_edges(s, L.edges, c, tip);
+        if (L.tip < 0 || path_length(s, p) > path_length(s, best)) L.tip = tip, best = p;
+      }
+      for (int tip : ends)
+        if (tip != L.tip) L.more_tips.push_back(tip);
+      if (best.empty()) continue;
+      limb_geometry(s, f, L, best);
+      f.limbs.push_back(std::move(L));
+    }
+  label(s, f);
+  std::vector<std::pair<double, size_t>> order;
+  for (size_t i = 0; i < f.limbs.size(); ++i)
+    order.push_back({joint_t(s, f, f.limbs[i]) * 10 + std::atan2(f.limbs[i].direction.y, f.limbs[i].direction.x), i});
+  std::sort(order.begin(), order.end());
+  std::vector<Limb> sorted;
+  for (const auto& o : order) sorted.push_back(std::move(f.limbs[o.second]));
+  f.limbs = std::move(sorted);
+  return f;
+}
+
+}  // namespace svgm::motion

@@ -1,0 +1,114 @@
+// Limbs from the silhouette skeleton (motion/limbs.h): a stick figure's five limbs with their
+// labels, sides and tips, a quadruped's legs, head and tail, a bent arm's elbow, and which limb
+// owns which points, paths and pixels.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "motion/limbs.h"
+#include "motion_masks.h"
+
+using namespace svgm;
+using namespace svgm::motion;
+
+namespace {
+
+double distance(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+int count(const Figure& f, LimbKind k) {
+  int n = 0;
+  for (const auto& L : f.limbs) n += L.kind == k;
+  return n;
+}
+
+// The limb of kind k whose tip is nearest `near`, or -1.
+int find(const Figure& f, LimbKind k, Vec2 near) {
+  int best = -1;
+  for (size_t i = 0; i < f.limbs.size(); ++i)
+    if (f.limbs[i].kind == k && (best < 0 || distance(f.limbs[i].tip_pos, near) < distance(f.limbs[best].tip_pos, near)))
+      best = static_cast<int>(i);
+  return best;
+}
+
+}  // namespace
+
+TEST_SUITE("motion") {
+  TEST_CASE("a stick figure has a head, two arms and two legs on the ground") {
+    const Skeleton s = skeletonise(motion_masks::stick_figure());
+    const Figure f = find_limbs(s);
+    CHECK(f.upright);
+    REQUIRE(f.limbs.size() == 5);
+    CHECK(count(f, LimbKind::Head) == 1);
+    CHECK(count(f, LimbKind::Arm) == 2);
+    CHECK(count(f, LimbKind::Leg) == 2);
+    const int head = find(f, LimbKind::Head, {80, 30});
+    REQUIRE(head >= 0);
+    CHECK(distance(f.limbs[head].tip_pos, {80, 30}) <= 3);
+    CHECK(f.limbs[head].tip_radius == doctest::Approx(14).epsilon(0.1));
+    const int arm_l = find(f, LimbKind::Arm, {50, 80}), arm_r = find(f, LimbKind::Arm, {110, 80});
+    REQUIRE((arm_l >= 0 && arm_r >= 0 && arm_l != arm_r));
+    CHECK(f.limbs[arm_l].side == -1);
+    CHECK(f.limbs[arm_r].side == 1);
+    CHECK(distance(f.limbs[arm_l].tip_pos, {50, 80}) <= 3);
+    CHECK(distance(f.limbs[arm_r].tip_pos, {110, 80}) <= 3);
+    for (Vec2 foot : {Vec2{60, 145}, Vec2{100, 145}}) {
+      const int leg = find(f, LimbKind::Leg, foot);
+      REQUIRE(leg >= 0);
+      CHECK(f.limbs[leg].grounded);
+      CHECK(distance(f.limbs[leg].tip_pos, foot) <= 3);
+      CHECK(distance(s.nodes[f.limbs[leg].joint].pos, {80, 95}) <= 8);  // the hips: the axis forks below the lines' meeting point
+      CHECK_FALSE(f.limbs[leg].bent);
+    }
+    CHECK_FALSE(f.limbs[arm_l].grounded);
+  }
+
+  TEST_CASE("a quadruped has four legs down, a head at its front and a tail at its back") {
+    const Figure f = find_limbs(skeletonise(motion_masks::quadruped()));
+    CHECK_FALSE(f.upright);
+    CHECK(count(f, LimbKind::Leg) == 4);
+    CHECK(count(f, LimbKind::Head) == 1);
+    CHECK(count(f, LimbKind::Tail) == 1);
+    const int head = find(f, LimbKind::Head, {188, 25}), tail = find(f, LimbKind::Tail, {25, 45});
+    REQUIRE((head >= 0 && tail >= 0));
+    CHECK(distance(f.limbs[head].tip_pos, {188, 25}) <= 10);
+    CHECK(distance(f.limbs[tail].tip_pos, {25, 45}) <= 3);
+    for (const auto& L : f.limbs)
+      if (L.kind == LimbKind::Leg) CHECK(L.tip_pos.y >= 135);
+  }
+
+  TEST_CASE("a bent arm's elbow is where it bends") {
+    cv::Mat m = motion_masks::stick_figure();
+    cv::line(m, {80, 55}, {115, 60}, 255, 8);  // upper arm out to the right, forearm up
+    cv::line(m, {115, 60}, {120, 25}, 255, 8);
+    const Figure f = find_limbs(skeletonise(m));
+    int bent = -1;
+    for (size_t i = 0; i < f.limbs.size(); ++i)
+      if (distance(f.limbs[i].tip_pos, {120, 25}) <= 4) bent = static_cast<int>(i);
+    REQUIRE(bent >= 0);
+    CHECK(f.limbs[bent].bent);
+    CHECK(distance(f.limbs[bent].bend, {115, 60}) <= 5);
+  }
+
+  TEST_CASE("points, paths and pixels go to the limb they lie on") {
+    const Skeleton s = skeletonise(motion_masks::stick_figure());
+    const Figure f = find_limbs(s);
+    const int head = find(f, LimbKind::Head, {80, 30}), arm_l = find(f, LimbKind::Arm, {50, 80}),
+              leg_r = find(f, LimbKind::Leg, {100, 145});
+    REQUIRE((head >= 0 && arm_l >= 0 && leg_r >= 0));
+    // Control points: a head outline point, a hand, the belly (the core), a foot.
+    const std::vector<Vec2> pts = {{70, 22}, {52, 79}, {83, 78}, {98, 140}, {57, 76}, {81, 20}};
+    const std::vector<int> owner = assign_points(s, f, pts);
+    CHECK(owner == std::vector<int>{head, arm_l, -1, leg_r, arm_l, head});
+    // Paths by their points' votes: path 0 = head points, path 1 = two hand points and a belly one.
+    const std::vector<int> paths = assign_paths(s, f, {{70, 22}, {81, 20}, {52, 79}, {57, 76}, {83, 78}}, {0, 0, 1, 1, 1}, 3);
+    CHECK(paths == std::vector<int>{head, arm_l, -1});
+    // Pixels: the right foot's pixels are the right leg's, the belly's the core's.
+    const cv::Mat regions = limb_regions(s, f);
+    CHECK(regions.at<int>(140, 98) == leg_r);
+    CHECK(regions.at<int>(75, 80) == -1);
+    CHECK(regions.at<int>(5, 5) == -2);
+    cv::Mat foot(s.height, s.width, CV_8U, cv::Scalar(0)), empty = foot.clone();
+    cv::circle(foot, {99, 142}, 5, 255, cv::FILLED);
+    CHECK(assign_path_masks(regions, static_cast<int>(f.limbs.size()), {foot, empty}) == std::vector<int>{leg_r, -1});
+  }
+}
