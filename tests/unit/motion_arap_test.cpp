@@ -291,6 +291,9 @@ TEST_CASE("a piece without handles follows the handles' best rigid fit; bad hand
         "ArapDeformer: a handle's weight must be positive and finite");
   CHECK(test::error_of([&] { ArapDeformer(m, {ArapHandle::at_vertex(static_cast<int>(m.vertices.size()))}); }) ==
         "ArapDeformer: a handle names no vertex of the mesh");
+  CHECK(test::error_of([&] { ArapDeformer(m, {}, ArapOptions{6, 0.0, true}); }) ==
+        "ArapDeformer: the stiffness must be positive and finite");
+  CHECK(test::error_of([&] { ArapHandle::at(m, MeshBinding{}); }) == "ArapHandle: the point is not bound to this mesh");
   CHECK(test::error_of([&] { arap.deform({}); }) == "ArapDeformer::deform: one target per handle is needed");
   const std::vector<Vec2> short_warm(3);
   CHECK(test::error_of([&] { arap.deform(arap.handle_rest(), &short_warm); }) ==

@@ -203,6 +203,8 @@ ArapDeformer::ArapDeformer(const ShapeMesh& mesh, std::vector<ArapHandle> handle
   m.vertex_piece = mesh.vertex_piece;
   m.pieces = mesh.pieces;
   m.iterations = options.iterations;
+  if (!(options.stiffness > 0) || !std::isfinite(options.stiffness))
+    throw Error("ArapDeformer: the stiffness must be positive and finite");
   const int n = static_cast<int>(mesh.vertices.size());
   std::vector<bool> piece_held(static_cast<size_t>(mesh.pieces), false);
   for (const ArapHandle& h : handles) {

@@ -51,6 +51,7 @@
 #include <vector>
 
 #include "motion/shape_mesh.h"
+#include "svgmotion/error.h"
 
 namespace svgm {
 
@@ -72,14 +73,16 @@ struct ArapHandle {
   double weight = 1;  // > 0
   static ArapHandle at_vertex(int v, double weight = 1) { return {{v, v, v}, {1, 0, 0}, weight}; }
   static ArapHandle at(const ShapeMesh& mesh, const MeshBinding& b, double weight = 1) {
-    return {mesh.triangles.at(static_cast<size_t>(b.triangle)), b.bary, weight};
+    if (b.triangle < 0 || static_cast<size_t>(b.triangle) >= mesh.triangles.size())
+      throw Error("ArapHandle: the point is not bound to this mesh");
+    return {mesh.triangles[static_cast<size_t>(b.triangle)], b.bary, weight};
   }
 };
 
 class ArapDeformer {
  public:
-  // Builds the system and factorises it. Throws svgm::Error for a handle naming no
-  // vertex or with a weight that is not positive and finite.
+  // Builds the system and factorises it. Throws svgm::Error for a handle naming no vertex, a
+  // handle weight or a stiffness that is not positive and finite.
   ArapDeformer(const ShapeMesh& mesh, std::vector<ArapHandle> handles, ArapOptions options = {});
   ~ArapDeformer();
   ArapDeformer(ArapDeformer&&) noexcept;
