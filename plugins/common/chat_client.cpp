@@ -36,8 +36,8 @@ Settings read_settings(const json& options, const std::string& stage) {
 }
 
 std::string one_line(std::string s, size_t max_chars) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  for (char& c : s)  // newlines, tabs, and the escape sequences a hostile server could send a terminal
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
   if (s.size() > max_chars) s = s.substr(0, max_chars) + "...";
   return s;
 }

@@ -29,7 +29,7 @@ struct Settings {
 // names the stage in the messages ("no url configured (stages.<stage>.options.url)").
 Settings read_settings(const nlohmann::json& options, const std::string& stage);
 
-// s with newlines and tabs as spaces, cut to max_chars (then "...").
+// s with control characters (newlines, tabs, ESC) as spaces, cut to max_chars (then "...").
 std::string one_line(std::string s, size_t max_chars = 300);
 
 using svgm::base64;  // net/base64.h

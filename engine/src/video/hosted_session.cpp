@@ -49,8 +49,8 @@ bool retryable(const HttpReply& r) {
 }  // namespace
 
 std::string one_line(std::string s, size_t max_chars) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  for (char& c : s)  // newlines, tabs, and the escape sequences a hostile server could send a terminal
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
   while (!s.empty() && s.back() == ' ') s.pop_back();
   if (s.size() > max_chars) s = s.substr(0, max_chars) + "...";
   return s;

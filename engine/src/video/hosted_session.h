@@ -103,7 +103,7 @@ class HostedSession {
   double poll_pause_;
 };
 
-// s on one line (newlines and tabs as spaces, trailing spaces dropped), cut to max_chars.
+// s on one line (control characters as spaces, trailing spaces dropped), cut to max_chars.
 std::string one_line(std::string s, size_t max_chars = 200);
 
 // The human part of an error answer: error.message, error (a string), detail or message of a
