@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "common/curl_http.h"
+#include "net/secret_scrub.h"
 #include "svgmotion/error.h"
 
 namespace svgm::plugin::chat {
@@ -35,8 +36,8 @@ Settings read_settings(const json& options, const std::string& stage) {
 }
 
 std::string one_line(std::string s, size_t max_chars) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  for (char& c : s)  // newlines, tabs, and the escape sequences a hostile server could send a terminal
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
   if (s.size() > max_chars) s = s.substr(0, max_chars) + "...";
   return s;
 }
@@ -44,23 +45,28 @@ std::string one_line(std::string s, size_t max_chars) {
 std::string post(const Settings& s, const std::string& body, const svgm_host* host,
                  const std::string& who) {
   auto cancelled = [host] { return host && host->cancelled && host->cancelled(host) != 0; };
-  std::vector<std::string> headers = {"Accept: application/json"};
-  if (!s.api_key.empty()) headers.push_back("Authorization: Bearer " + s.api_key);
+  // The key goes only to the configured endpoint's origin (curl_http.h).
+  ScopedHeaders key;
+  if (!s.api_key.empty()) key = {s.url, {"Authorization: Bearer " + s.api_key}};
   std::string agent = "svgmotion-" + who + "/1";  // "svgmotion-grouper-llm/1"
   std::replace(agent.begin(), agent.end(), ' ', '-');
-  CurlTransport http(cancelled, agent, std::move(headers));
+  CurlTransport http(cancelled, agent, {"Accept: application/json"}, std::move(key));
   const HttpReply r = http.post_json(s.url, body, s.timeout_s);
   if (!r.connected && cancelled()) throw svgm::Error(who + ": cancelled");
+  if (r.refused) throw Failure(r.error);
   if (r.timed_out) {
     std::ostringstream m;
     m << "timeout: no answer from " << s.url << " within " << s.timeout_s << " s";
     throw Failure(m.str());
   }
   if (!r.connected) throw Failure("request to " + s.url + " failed: " + one_line(r.error));
+  // The key is scrubbed from the whole body before any of it is cut or shown, and the reply
+  // handed on is scrubbed too: an answer parsed, quoted in a fallback reason or logged by the
+  // plugins cannot show it.
   if (r.status < 200 || r.status > 299)
     throw Failure("HTTP " + std::to_string(r.status) + " from " + s.url +
-                  (r.body.empty() ? "" : ": " + one_line(r.body, 200)));
-  return r.body;
+                  (r.body.empty() ? "" : ": " + safe_excerpt(r.body, s.api_key, 200)));
+  return scrub_secret(r.body, s.api_key);
 }
 
 // The text of choices[0].message.content (a string, or a list of text parts).

@@ -29,13 +29,14 @@ struct Settings {
 // names the stage in the messages ("no url configured (stages.<stage>.options.url)").
 Settings read_settings(const nlohmann::json& options, const std::string& stage);
 
-// s with newlines and tabs as spaces, cut to max_chars (then "...").
+// s with control characters (newlines, tabs, ESC) as spaces, cut to max_chars (then "...").
 std::string one_line(std::string s, size_t max_chars = 300);
 
 using svgm::base64;  // net/base64.h
 
-// POSTs `body` (JSON) to s.url and returns the body of a 2xx reply; Failure for a timeout, a
-// transport error or another status. `who` names the plugin in the user agent and messages.
+// POSTs `body` (JSON) to s.url and returns the body of a 2xx reply, the key scrubbed out
+// (net/secret_scrub.h); Failure for a timeout, a transport error, a reply over kMaxReplyBytes
+// or another status (with a short, scrubbed excerpt of its body). `who` names the plugin in the user agent and messages.
 std::string post(const Settings& s, const std::string& body, const svgm_host* host,
                  const std::string& who);
 

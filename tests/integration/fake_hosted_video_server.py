@@ -40,6 +40,25 @@ Replicate predictions, key as "Authorization: Bearer KEY" (else 401 {"detail": .
 
 Storage host: GET /blob/ID.mp4 -> the bytes of --video (403 if an API key header arrives).
 
+Hostile variants, http-job shaped, any "Authorization: Bearer KEY" accepted (hosted_video_hostile_test.sh):
+    POST /evil/MODE -> {"id", "status": "queued", "status_url": API/evil/MODE/status}
+    GET  /evil/MODE/status -> {"status": "done", "video_url": API/evil/MODE/video}
+    GET  /evil/MODE/video -> the bytes of --video, unless MODE says otherwise
+  MODE:
+    redirect-file           the video answers 302 to file:///etc/passwd
+    redirect-dict           the video answers 302 to dict://127.0.0.1:TRAP/info, TRAP a raw TCP
+                            listener that logs {"host": "trap"} for every connection it accepts
+    redirect-absolute-path  the video answers 302 to "/evil/redirect-absolute-path/video.mp4"
+    redirect-relative-path  the video answers 302 to "video.mp4" (-> /evil/MODE/video.mp4)
+    redirect-other-host     the video answers 302 to http://localhost:STORAGE/blob/ID.mp4 (the
+                            storage host by another name)
+    status-file             the submit reply's status_url is file:///etc/passwd
+    echo-key                the submit answers 500 {"detail": 190 "x", then the key sent, ...}
+    echo-key-encoded        the same with the key percent-encoded
+    endless-status          the status poll answers 200 with a JSON body that never ends
+    endless-video           the video never ends
+    big-status              the status poll announces a 100 MiB body (Content-Length)
+
 With --log, every request (and every 429 the fal queue sends, as method "429") is appended to FILE as one JSON line:
 {"t": seconds, "host": "api"|"storage", "method", "path", "headers", "body"} (body parsed as
 JSON when it is; image data replaced by its size to keep the log small).
@@ -48,14 +67,16 @@ import argparse
 import base64
 import json
 import os
+import socket
 import sys
 import threading
 import time
+import urllib.parse
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 
 lock = threading.Lock()
 args = None
-state = {"ops": {}, "jobs": {}, "counter": 100, "ratelimited": set(), "storage_port": 0}
+state = {"ops": {}, "jobs": {}, "counter": 100, "ratelimited": set(), "storage_port": 0, "trap_port": 0}
 
 
 def log(entry):
@@ -268,11 +289,74 @@ class Handler(BaseHTTPRequestHandler):
             return self.reply(200, self.prediction(pid, "failed", error="CUDA out of memory"))
         return self.reply(200, self.prediction(pid, "succeeded", output=self.storage(pid + ".mp4")))
 
+    # ---- hostile variants -------------------------------------------------------------------
+    def endless(self, head):
+        """200 with a body that never ends (no length, then the connection closes): written until
+        the client hangs up or the server's lifetime ends."""
+        try:
+            self.send_response(200)
+            self.send_header("Content-Type", "application/json")
+            self.send_header("Connection", "close")
+            self.end_headers()
+            self.wfile.write(head)
+            chunk = b"a" * 65536
+            while True:
+                self.wfile.write(chunk)
+        except (BrokenPipeError, ConnectionResetError):
+            pass
+        log({"t": time.time(), "host": "api", "method": "closed", "path": self.path, "headers": {}, "body": None})
+
+    def evil_post(self, mode):
+        if mode.startswith("echo-key"):
+            sent = (self.headers.get("Authorization") or "")[len("Bearer "):]
+            echoed = urllib.parse.quote(sent, safe="") if mode == "echo-key-encoded" else sent
+            return self.reply(500, {"detail": "x" * 190 + echoed + " is not a key we know"})
+        rid = next_id()
+        status_url = "file:///etc/passwd" if mode == "status-file" else self.base() + "/evil/%s/status" % mode
+        return self.reply(200, {"id": rid, "status": "queued", "status_url": status_url})
+
+    def evil_get(self, mode, tail):
+        if tail == "status":
+            if mode == "endless-status":
+                return self.endless(b'{"status": "')
+            if mode == "big-status":
+                return self.big_header()
+            return self.reply(200, {"status": "done", "video_url": self.base() + "/evil/%s/video" % mode})
+        if tail == "video":
+            location = {"redirect-file": "file:///etc/passwd",
+                        "redirect-dict": "dict://127.0.0.1:%d/info" % state["trap_port"],
+                        "redirect-absolute-path": "/evil/%s/video.mp4" % mode,
+                        "redirect-relative-path": "video.mp4",
+                        "redirect-other-host": "http://localhost:%d/blob/%s.mp4" % (state["storage_port"], next_id()),
+                        }.get(mode)
+            if location:
+                return self.reply(302, b"", "text/plain", headers=[("Location", location)])
+            if mode == "endless-video":
+                return self.endless(b"")
+        if tail in ("video", "video.mp4"):
+            with open(args.video, "rb") as f:
+                return self.reply(200, f.read(), "video/mp4")
+        return self.reply(404, {"error": "not found"})
+
+    def big_header(self):
+        """Announces a 100 MiB body, sends a little of it, then closes."""
+        try:
+            self.send_response(200)
+            self.send_header("Content-Type", "application/json")
+            self.send_header("Content-Length", str(100 << 20))
+            self.send_header("Connection", "close")
+            self.end_headers()
+            self.wfile.write(b'{"status": "')
+        except (BrokenPipeError, ConnectionResetError):
+            pass
+
     # ---- dispatch ---------------------------------------------------------------------------
     def do_POST(self):
         body = self.read_body()
         self.record(body)
         p = self.path
+        if p.startswith("/evil/"):
+            return self.evil_post(p[len("/evil/"):])
         if p.startswith("/v1beta/models/") and p.endswith(":predictLongRunning"):
             if self.google_key_ok():
                 self.veo_submit(p[len("/v1beta/models/"):-len(":predictLongRunning")], body)
@@ -290,6 +374,9 @@ class Handler(BaseHTTPRequestHandler):
     def do_GET(self):
         self.record(None)
         p = self.path
+        if p.startswith("/evil/"):
+            mode, _, tail = p[len("/evil/"):].partition("/")
+            return self.evil_get(mode, tail)
         if p.startswith("/v1beta/models/") and "/operations/" in p:
             if self.google_key_ok():
                 self.veo_poll(p[len("/v1beta/"):])
@@ -329,6 +416,19 @@ class StorageHandler(Handler):
         self.reply(405, {"error": "read only"})
 
 
+def serve_trap(sock):
+    """A raw TCP port no client of ours may reach: every connection is logged and closed."""
+    while True:
+        conn, _ = sock.accept()
+        conn.settimeout(1)
+        try:
+            data = conn.recv(200)
+        except OSError:
+            data = b""
+        conn.close()
+        log({"t": time.time(), "host": "trap", "method": "", "path": "", "headers": {}, "body": data.decode("latin-1")})
+
+
 def main():
     global args
     ap = argparse.ArgumentParser()
@@ -341,6 +441,11 @@ def main():
     ThreadingHTTPServer.daemon_threads = True
     storage = ThreadingHTTPServer(("127.0.0.1", 0), StorageHandler)
     state["storage_port"] = storage.server_address[1]
+    trap = socket.socket()
+    trap.bind(("127.0.0.1", 0))
+    trap.listen(8)
+    state["trap_port"] = trap.getsockname()[1]
+    threading.Thread(target=serve_trap, args=(trap,), daemon=True).start()
     api = ThreadingHTTPServer(("127.0.0.1", 0), Handler)
     for s in (storage, api):
         threading.Thread(target=s.serve_forever, kwargs={"poll_interval": 0.1}, daemon=True).start()

@@ -20,6 +20,8 @@ match gets HTTP 400 naming what is wrong. The model name selects the reply:
     hang        no answer for --hang seconds (default 10), then the valid grouping
     http500     HTTP 500 with an error object
     auth        the valid grouping if "Authorization: Bearer test-secret" is sent, else HTTP 401
+    echo_key    HTTP 401 whose body echoes the bearer token sent, starting at character 190 (a
+                hostile server: the client's 200-character excerpt must show none of it)
 
 A request whose instructions ask for a "best" candidate is the `llm` ranker's: it must hold a
 text part listing the candidates and, per candidate, a "Candidate NAME:" text part followed by
@@ -279,6 +281,9 @@ class Handler(BaseHTTPRequestHandler):
             return self.reply(200, completion(json.dumps(GROUPS)))
         if model == "http500":
             return self.reply(500, {"error": {"message": "the fake model fell over"}})
+        if model == "echo_key":
+            sent = (self.headers.get("Authorization") or "")[len("Bearer "):]
+            return self.reply(401, "x" * 190 + sent + " is not a key we know")
         if model == "auth":
             if self.headers.get("Authorization") != "Bearer test-secret":
                 return self.reply(401, {"error": {"message": "missing or wrong API key"}})

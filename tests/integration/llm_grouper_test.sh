@@ -63,6 +63,9 @@ run_case malformed stages.grouper.plugin=llm "$(llm "$url" malformed)" & cases+=
 run_case hang stages.grouper.plugin=llm "$(llm "$url" hang)" & cases+=($!)
 run_case http500 stages.grouper.plugin=llm "$(llm "$url" http500)" & cases+=($!)
 run_case noauth stages.grouper.plugin=llm "$(llm "$url" auth)" & cases+=($!)
+echo_key="sk-live/Ab+Cd=Ef:Gh.Ij_Kl-Mn0123456789opqrstuv"
+API_KEY_FOR_TEST=$echo_key run_case echokey stages.grouper.plugin=llm \
+  "stages.grouper.options={url: \"$url\", model: \"echo_key\", api_key_env: API_KEY_FOR_TEST, timeout_s: 2}" & cases+=($!)
 wait "${cases[@]}"
 
 check "the structural reference run succeeds" '[[ $(cat "$tmp/structural.rc") -eq 0 && -s $tmp/structural/grouped.svg ]]'
@@ -126,6 +129,10 @@ fallback malformed "malformed JSON in the answer"
 fallback hang "timeout"
 fallback http500 "HTTP 500"
 fallback noauth "HTTP 401"
+fallback echokey "HTTP 401 from $url: $(printf 'x%.0s' {1..190})<key> is n..."
+check "echokey: no 8-character piece of the echoed key on stderr, stdout or in the run folder (log.txt included)" \
+  '"$py" -c "import sys; k = sys.argv[1]; [print(k[i:i + 8]) for i in range(len(k) - 7)]" "$echo_key" >"$tmp/pieces" &&
+   [[ -s $tmp/echokey/log.txt ]] && ! grep -rqsF -f "$tmp/pieces" "$tmp/echokey.err" "$tmp/echokey.out" "$tmp/echokey"'
 # The grouper stage's own time, from the run's summary (a fallback leaves no manifest: it is
 # asked again next run).
 hang_s=$(awk '$1 == "grouper" && $2 == "llm" {print $3}' "$tmp/hang.out")

@@ -432,4 +432,94 @@ TEST_CASE("http-job: a queue API (submit, status, result URLs from the reply) an
   CHECK(polls["req0"] == 3);
 }
 
+// The hostile server of the security issue, through the session every client shares.
+HttpJobOptions hostile_job(int retries = 0) {
+  return parse_http_job_options(json{{"submit_url", "https://q.test/submit"}, {"body", {{"p", "{prompt}"}}},
+                                     {"headers", {{"Authorization", "Bearer {api_key}"}}}, {"api_key_env", "K"},
+                                     {"status_url", "{submit.status_url}"}, {"done_values", {"done"}},
+                                     {"video_url_field", "video_url"}, {"candidates", 1}, {"retries", retries},
+                                     {"poll_s", 0.01}, {"poll_max_s", 0.01}, {"timeout_s", 30}});
+}
+
+TEST_CASE("hosted: a key echoed across the excerpt's cut leaves no 8-character piece on any message") {
+  RunDir d;
+  FakeHttp http;
+  const std::string key = "sk-live/Ab+Cd=Ef:Gh.Ij_Kl-Mn0123456789opqrstuv";
+  http.handler = [&](const Request&) {
+    return answer(500, json{{"detail", std::string(190, 'x') + key + " is not a key we know"}}.dump());
+  };
+  std::vector<std::string> logs;
+  HostedHooks hooks;
+  hooks.log = [&](const std::string& l) { logs.push_back(l); };
+  const std::string e =
+      error_of([&] { generate_http_job_candidates(hostile_job(1), d.run, "w", 0, {key, "K"}, http, hooks); });
+  CHECK(e == "video http-job: candidate 00: HTTP 500 from https://q.test/submit: " + std::string(190, 'x') + "<key> is n...");
+  REQUIRE(logs.size() == 1);  // the retry
+  CHECK(logs[0].find("<key> is n...; retrying in") != std::string::npos);
+  for (const std::string& text : {e, logs[0]})
+    for (size_t i = 0; i + 8 <= key.size(); ++i) CHECK(text.find(key.substr(i, 8)) == std::string::npos);
+}
+
+TEST_CASE("hosted: a status_url that is not http(s) is refused, naming its scheme only, and never fetched") {
+  RunDir d;
+  FakeHttp http;
+  http.handler = [&](const Request& r) {
+    if (r.method == "POST") return answer(200, R"({"status": "queued", "status_url": "file:///etc/passwd?token=t0p"})");
+    return answer(200, "root:x:0:0:root:/root:/bin/bash");
+  };
+  CHECK(error_of([&] { generate_http_job_candidates(hostile_job(), d.run, "w", 0, {}, http); }) ==
+        "video http-job: candidate 00: refused to fetch a file: URL (only http and https)");
+  CHECK(http.of("GET").empty());
+}
+
+TEST_CASE("hosted: a refusal by the transport (size limit, scheme) is one line and not retried") {
+  RunDir d;
+  FakeHttp http;
+  http.handler = [&](const Request& r) {
+    if (r.method == "POST") return answer(200, R"({"status": "queued", "status_url": "https://q.test/s"})");
+    HttpReply big;
+    big.refused = true;
+    big.error = too_large_message("reply", r.url, kMaxReplyBytes);
+    return big;
+  };
+  CHECK(error_of([&] { generate_http_job_candidates(hostile_job(3), d.run, "w", 0, {}, http); }) ==
+        "video http-job: candidate 00: the reply from q.test is larger than 16 MiB");
+  CHECK(http.of("GET").size() == 1);
+}
+
+TEST_CASE("hosted: a video over max_video_mib is cut off; a download the disk refuses names the file") {
+  RunDir d;
+  // Through the default download (get, then write): a body of 1 MiB and a byte.
+  FakeHttp http;
+  http.handler = [&](const Request& r) {
+    if (r.method == "POST")
+      return answer(200, R"({"status": "done", "status_url": "https://q.test/s", "video_url": "https://cdn.test/v.mp4"})");
+    return answer(200, std::string((size_t{1} << 20) + 1, 'v'));
+  };
+  HttpJobOptions opts = parse_http_job_options(json{{"submit_url", "https://q.test/submit"}, {"body", json::object()},
+                                                     {"status_url", "{submit.status_url}"}, {"done_values", {"done"}},
+                                                     {"video_url_field", "video_url"}, {"candidates", 1},
+                                                     {"retries", 2}, {"max_video_mib", 1}});
+  CHECK(error_of([&] { generate_http_job_candidates(opts, d.run, "w", 0, {}, http); }) ==
+        "video http-job: candidate 00: the download from cdn.test is larger than 1 MiB");
+  CHECK(http.of("GET").size() == 1);
+  CHECK(fs::is_empty(d.run / "candidates"));
+
+  // An injected writer that fails as a full disk does.
+  struct FullDisk : FakeHttp {
+    HttpReply download(const std::string& url, const fs::path& file, uint64_t, double) override {
+      serve({"GET", url, ""});
+      std::ofstream(file) << "part";  // what was written before the disk filled
+      HttpReply r = answer(200, "");
+      r.write_error = "No space left on device";
+      return r;
+    }
+  } full;
+  full.handler = http.handler;
+  CHECK(error_of([&] { generate_http_job_candidates(opts, d.run, "w", 0, {}, full); }) ==
+        "video http-job: candidate 00: candidates/00.mp4: cannot write: No space left on device");
+  CHECK(full.of("GET").size() == 1);  // not retried
+  CHECK(fs::is_empty(d.run / "candidates"));  // nor left half-written
+}
+
 }  // TEST_SUITE

@@ -15,6 +15,7 @@
 #include <string>
 #include <system_error>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include "svgmotion/atomic_file.h"
@@ -42,6 +43,44 @@ struct TempFile {
     fs::remove(path, ec);
   }
 };
+
+// Bytes a write probe writes (64 KiB: more than a filesystem's last free block or two, so a
+// nearly full disk fails it as it failed the encoder).
+constexpr size_t kProbeBytes = size_t{64} << 10;
+
+// Why a file cannot be written in `dir` ("No space left on device", "File too large"), or ""
+// when a probe file of kProbeBytes is written, synced and removed there without error. OpenCV's
+// VideoWriter reports no errno: a writer that cannot open, or output that is empty or not a
+// readable video, may come from a full disk as well as from a missing encoder, and only a write
+// of our own tells them apart.
+std::string write_problem(const fs::path& dir) {
+  const fs::path probe = dir / (".svgm-write-probe." + std::to_string(::getpid()));
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0) return std::strerror(errno);
+  const std::string block(kProbeBytes, '\0');
+  int err = 0;
+  size_t done = 0;
+  while (done < block.size() && !err) {
+    const ssize_t n = ::write(fd, block.data() + done, block.size() - done);
+    if (n < 0 && errno != EINTR) err = errno;
+    if (n > 0) done += static_cast<size_t>(n);
+  }
+  if (!err && ::fsync(fd) != 0 && errno != EINVAL) err = errno;  // NFS and the like report here
+  if (::close(fd) != 0 && !err) err = errno;
+  ::unlink(probe.c_str());
+  return err ? std::strerror(err) : "";
+}
+
+// Whether `path` opens as a video with at least one frame (an mp4 cut short by a failed write
+// has no index, "moov atom not found", and does not open).
+bool readable_video(const fs::path& path, int api) {
+  try {
+    cv::VideoCapture cap(path.string(), api);
+    return cap.isOpened() && cap.get(cv::CAP_PROP_FRAME_COUNT) >= 1;
+  } catch (const cv::Exception&) {
+    return false;
+  }
+}
 
 // Composites an RGBA panel over white into the BGR frame at column x0.
 void blit(const RgbaImage& img, cv::Mat& frame, int x0) {
@@ -93,6 +132,7 @@ void write_preview_video(const fs::path& file, int frames, int panels,
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   const bool webm = ext == ".webm";
   tmp.path = dir / ("." + target.filename().string() + ".part" + std::to_string(::getpid()) + (webm ? ".webm" : ".mp4"));
+  const auto api = cv::videoio_registry::hasBackend(cv::CAP_FFMPEG) ? cv::CAP_FFMPEG : cv::CAP_ANY;
 
   for (int k = 0; k < frames; ++k) {
     std::vector<RgbaImage> row;
@@ -124,8 +164,6 @@ void write_preview_video(const fs::path& file, int frames, int panels,
       const int height = sizes[0].second;
       // H.264 in 4:2:0 needs even sides; FFmpeg would silently crop the last column/row.
       const cv::Size size(width + width % 2, height + height % 2);
-      const auto api =
-          cv::videoio_registry::hasBackend(cv::CAP_FFMPEG) ? cv::CAP_FFMPEG : cv::CAP_ANY;
       // WebM holds VP9 or VP8; mp4 H.264, else MPEG-4 Part 2.
       const std::array<const char*, 2> codecs = webm ? std::array<const char*, 2>{"VP90", "VP80"}
                                                      : std::array<const char*, 2>{"avc1", "mp4v"};
@@ -142,6 +180,7 @@ void write_preview_video(const fs::path& file, int frames, int panels,
         std::error_code ec;
         if (!fs::is_directory(dir, ec))
           fail(file, "cannot write: " + std::generic_category().message(ENOENT));
+        if (const std::string why = write_problem(dir); !why.empty()) fail(file, "cannot write: " + why);
         fail(file, webm ? "cannot write: no VP9 or VP8 video encoder could be opened"
                         : "cannot write: no H.264 (avc1) or MPEG-4 (mp4v) video encoder could be opened");
       }
@@ -162,10 +201,15 @@ void write_preview_video(const fs::path& file, int frames, int panels,
   }
   writer.release();
 
-  // VideoWriter::write reports nothing; an empty file is the one visible sign of failure.
+  // VideoWriter::write and release report nothing: an empty file, or one that does not read
+  // back as a video (a full disk cuts an mp4 short of its index), is the visible sign.
   std::error_code ec;
   const auto bytes = fs::file_size(tmp.path, ec);
-  if (ec || bytes == 0) fail(file, "cannot write: the encoder produced no output");
+  if (ec || bytes == 0 || !readable_video(tmp.path, api)) {
+    if (const std::string why = write_problem(dir); !why.empty()) fail(file, "cannot write: " + why);
+    fail(file, bytes == 0 ? "cannot write: the encoder produced no output"
+                          : "cannot write: the encoder's output does not read back as a video");
+  }
   fs::rename(tmp.path, target, ec);
   if (ec) fail(file, "cannot write: " + ec.message());
   tmp.keep = true;

@@ -23,8 +23,10 @@ using PreviewPanelFn = std::function<RgbaImage(int frame, int panel)>;
 // Writes `frames` frames at `fps` to `file` as an mp4: H.264 (fourcc avc1), or MPEG-4 Part 2
 // (mp4v) when no H.264 encoder can be opened; a file named .webm gets VP9 (else VP8) in WebM. Odd frame sizes are padded with white on the
 // right/bottom to even ones (4:2:0 chroma needs them; encoders would crop instead). Written to
-// a hidden temporary name in the same folder and renamed, so a failure never leaves a partial
-// file. Throws svgm::Error "<file>: <problem>".
+// a hidden temporary name in the same folder and renamed once it reads back as a video, so a
+// failure never leaves a partial file. Throws svgm::Error "<file>: <problem>"; a write the disk
+// refuses is named as such ("<file>: cannot write: No space left on device"), not as a missing
+// encoder.
 void write_preview_video(const std::filesystem::path& file, int frames, int panels,
                          const PreviewPanelFn& panel_image, double fps);
 

@@ -25,7 +25,8 @@ namespace {
 
 ComfyuiOptions parse_comfyui_options(const json& options) {
   const PluginOptions opt(options, "video comfyui",
-                          {"url", "workflow", "candidates", "frames", "timeout_s", "retries", "poll_s", "prompt_template"});
+                          {"url", "workflow", "candidates", "frames", "timeout_s", "retries", "poll_s", "max_video_mib",
+                           "prompt_template"});
   ComfyuiOptions o;
   o.url = opt.string("url", o.url);
   o.workflow = opt.string("workflow", o.workflow.string());
@@ -36,6 +37,7 @@ ComfyuiOptions parse_comfyui_options(const json& options) {
   o.retries = opt.whole("retries", o.retries, 0, 10);
   o.poll_s = opt.number("poll_s", o.poll_s);
   if (o.poll_s <= 0 || o.poll_s > 60) opt.fail("options.poll_s must be in (0, 60] seconds");
+  o.max_video_bytes = static_cast<uint64_t>(opt.whole("max_video_mib", static_cast<int>(o.max_video_bytes >> 20), 1, 65536)) << 20;
   o.prompt_template = opt.string("prompt_template", kDefaultVideoPromptTemplate);
   while (!o.url.empty() && o.url.back() == '/') o.url.pop_back();
   if (o.url.empty())
@@ -163,7 +165,8 @@ std::vector<fs::path> generate_comfyui_candidates(const ComfyuiOptions& options,
   const std::string prompt_url = options.url + "/prompt";
   std::vector<fs::path> outputs;
   const int n = options.candidates;
-  const SessionLimits limits{options.timeout_s, options.retries};
+  SessionLimits limits{options.timeout_s, options.retries};
+  limits.max_video_bytes = options.max_video_bytes;
   for (int i = 0; i < n; ++i) {
     const std::string nn = two_digits(i);
     const std::string label = "candidate " + nn + ": ";
@@ -178,7 +181,7 @@ std::vector<fs::path> generate_comfyui_candidates(const ComfyuiOptions& options,
     progress(0, "uploading the image");
     const json up = s.parse(upload_url, s.post_file(upload_url, "image", image));
     if (!up.is_object() || !up.contains("name") || !up["name"].is_string())
-      s.fail("no \"name\" in the reply from " + upload_url + ": " + one_line(up.dump(), 120));
+      s.fail("no \"name\" in the reply from " + upload_url + ": " + s.excerpt(up.dump(), 120));
     std::string uploaded = up["name"].get<std::string>();
     if (up.contains("subfolder") && up["subfolder"].is_string() &&
         !up["subfolder"].get<std::string>().empty())
@@ -194,7 +197,7 @@ std::vector<fs::path> generate_comfyui_candidates(const ComfyuiOptions& options,
     if (!queued.is_object() || !queued.contains("prompt_id") ||
         !(queued["prompt_id"].is_string() || queued["prompt_id"].is_number()))
       s.fail("no \"prompt_id\" in the reply from " + prompt_url + ": " +
-             one_line(queued.dump(), 120));
+             s.excerpt(queued.dump(), 120));
     const std::string prompt_id = queued["prompt_id"].is_string()
                                       ? queued["prompt_id"].get<std::string>()
                                       : queued["prompt_id"].dump();
@@ -219,7 +222,7 @@ std::vector<fs::path> generate_comfyui_candidates(const ComfyuiOptions& options,
               if (m.is_array() && m.size() == 2 && m[0] == "execution_error" && m[1].is_object())
                 detail = ": " + m[1].value("node_type", std::string("?")) + ": " +
                          m[1].value("exception_message", std::string());
-          s.fail("ComfyUI failed on prompt " + prompt_id + one_line(detail));
+          s.fail("ComfyUI failed on prompt " + prompt_id + s.excerpt(detail));
         }
         if (entry.contains("outputs"))
           s.fail("prompt " + prompt_id +
@@ -238,10 +241,9 @@ std::vector<fs::path> generate_comfyui_candidates(const ComfyuiOptions& options,
     const std::string view_url = options.url + "/view?filename=" + url_encode(result->filename) +
                                  "&subfolder=" + url_encode(result->subfolder) +
                                  "&type=" + url_encode(result->type);
-    const std::string bytes = s.get(view_url);
     const std::string out_rel = "candidates/" + nn + "." + ext;
     const fs::path out = dir / (nn + "." + ext);
-    save_candidate_video(s, bytes, out, out_rel);
+    download_candidate_video(s, view_url, out, out_rel);
     outputs.push_back(out);
   }
   if (hooks.progress) hooks.progress(1.0, "done");

@@ -25,6 +25,7 @@ struct ComfyuiOptions {
   double timeout_s = 600;          // per candidate: upload + queue + poll + download
   int retries = 2;                 // per request, for connection errors and HTTP 5xx
   double poll_s = 1;               // between GET /history/<id>
+  uint64_t max_video_bytes = uint64_t{2} << 30;  // options.max_video_mib (SessionLimits)
   std::string prompt_template;     // "{prompt}" = the user's prompt; default as `command`
 };
 

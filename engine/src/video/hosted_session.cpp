@@ -9,8 +9,10 @@
 #include <iterator>
 #include <thread>
 
+#include <unistd.h>
+
+#include "net/secret_scrub.h"
 #include "pipeline/plugin_options.h"
-#include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
 #include "svgmotion/target_video.h"
 #include "video/command_runner.h"
@@ -47,26 +49,30 @@ bool retryable(const HttpReply& r) {
 }  // namespace
 
 std::string one_line(std::string s, size_t max_chars) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  for (char& c : s)  // newlines, tabs, and the escape sequences a hostile server could send a terminal
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
   while (!s.empty() && s.back() == ' ') s.pop_back();
   if (s.size() > max_chars) s = s.substr(0, max_chars) + "...";
   return s;
 }
 
-std::string reply_message(const std::string& body) {
+std::string reply_message(const std::string& raw, const std::string& secret) {
+  // Scrubbed whole before anything is cut: a key straddling the cut would otherwise survive in
+  // part.
+  const std::string body = scrub_secret(raw, secret);
+  auto shown = [](const std::string& s) { return safe_excerpt(s, "", 200); };
   const json j = json::parse(body, nullptr, false);
   if (j.is_object()) {
     if (j.contains("error")) {
       const json& e = j["error"];
-      if (e.is_string()) return one_line(e.get<std::string>());
+      if (e.is_string()) return shown(e.get<std::string>());
       if (e.is_object() && e.contains("message") && e["message"].is_string())
-        return one_line(e["message"].get<std::string>());
+        return shown(e["message"].get<std::string>());
     }
     for (const char* key : {"detail", "message"})
-      if (j.contains(key) && j[key].is_string()) return one_line(j[key].get<std::string>());
+      if (j.contains(key) && j[key].is_string()) return shown(j[key].get<std::string>());
   }
-  return one_line(body);
+  return shown(body);
 }
 
 double retry_after_seconds(const std::string& value) {
@@ -90,6 +96,7 @@ SessionLimits read_session_limits(const PluginOptions& opt, const SessionLimits&
   if (l.poll_s <= 0 || l.poll_s > 600) opt.fail("options.poll_s must be in (0, 600] seconds");
   l.poll_max_s = opt.number("poll_max_s", std::max(d.poll_max_s, l.poll_s));
   if (l.poll_max_s < l.poll_s || l.poll_max_s > 600) opt.fail("options.poll_max_s must be in [poll_s, 600] seconds");
+  l.max_video_bytes = static_cast<uint64_t>(opt.whole("max_video_mib", static_cast<int>(d.max_video_bytes >> 20), 1, 65536)) << 20;
   return l;
 }
 
@@ -123,11 +130,10 @@ double HostedSession::left() const {
   return std::chrono::duration<double>(end_ - Clock::now()).count();
 }
 
-std::string HostedSession::scrub(std::string s) const {
-  if (secret_.value.empty()) return s;
-  for (size_t at = s.find(secret_.value); at != std::string::npos; at = s.find(secret_.value, at))
-    s.replace(at, secret_.value.size(), "<key>");
-  return s;
+std::string HostedSession::scrub(std::string s) const { return scrub_secret(std::move(s), secret_.value); }
+
+std::string HostedSession::excerpt(const std::string& s, size_t max_chars) const {
+  return safe_excerpt(s, secret_.value, max_chars);
 }
 
 void HostedSession::fail(const std::string& message) const {
@@ -160,18 +166,27 @@ void HostedSession::pause(double seconds) const {
 }
 
 template <class Send>
-std::string HostedSession::request(const std::string& url, Send&& send) {
+HttpReply HostedSession::request(const std::string& url, Send&& send) {
+  // Whoever named the URL (a submit reply's status_url, a result's video URL), only http and
+  // https are fetched: file: would read a local file, dict: or gopher: talk to a local port.
+  // The URL itself is not shown: a server-given one may carry a token.
+  if (!is_http_url(url)) fail("refused to fetch " + scheme_for_message(url) + " (only http and https)");
   for (int attempt = 0;; ++attempt) {
     check_cancelled();
     const double budget = left();
     if (budget <= 0) timeout(url);
-    const HttpReply r = send(budget);
+    HttpReply r = send(budget);
     check_cancelled();
     if (r.timed_out) timeout(url);
-    if (r.connected && r.status >= 200 && r.status < 300) return r.body;
+    if (r.refused) fail(r.error);
+    if (r.connected && r.status >= 200 && r.status < 300) {
+      r.body = scrub(std::move(r.body));  // nothing derived from a reply can show the key
+      return r;
+    }
     std::string why = r.connected ? "HTTP " + std::to_string(r.status) + " from " + url
                                   : "cannot connect to " + url + ": " + one_line(r.error);
-    if (r.connected && !reply_message(r.body).empty()) why += ": " + reply_message(r.body);
+    const std::string message = r.connected ? reply_message(r.body, secret_.value) : "";
+    if (!message.empty()) why += ": " + message;
     if (r.connected && key_refused(r) && !secret_.env.empty())
       fail("the API key in $" + secret_.env + " was refused: " + why);
     if (!retryable(r) || attempt >= limits_.retries) fail(why);
@@ -189,47 +204,70 @@ std::string HostedSession::request(const std::string& url, Send&& send) {
 }
 
 std::string HostedSession::get(const std::string& url) {
-  return request(url, [&](double t) { return http_.get(url, t); });
+  return request(url, [&](double t) { return http_.get(url, t); }).body;
 }
 
 std::string HostedSession::post_json(const std::string& url, const std::string& body) {
-  return request(url, [&](double t) { return http_.post_json(url, body, t); });
+  return request(url, [&](double t) { return http_.post_json(url, body, t); }).body;
 }
 
 std::string HostedSession::post_file(const std::string& url, const std::string& field,
                                      const fs::path& file) {
-  return request(url, [&](double t) { return http_.post_file(url, field, file, t); });
+  return request(url, [&](double t) { return http_.post_file(url, field, file, t); }).body;
+}
+
+void HostedSession::download(const std::string& url, const fs::path& file, const std::string& shown) {
+  request(url, [&](double t) {
+    HttpReply r = http_.download(url, file, limits_.max_video_bytes, t);
+    // A write the disk refuses is no reason to retry, nor a connection problem.
+    if (!r.write_error.empty()) fail(shown + ": cannot write: " + r.write_error);
+    return r;
+  });
 }
 
 json HostedSession::parse(const std::string& url, const std::string& body) const {
   json j = json::parse(body, nullptr, false);
-  if (j.is_discarded()) fail("malformed JSON from " + url + ": " + one_line(body, 120));
+  if (j.is_discarded()) fail("malformed JSON from " + url + ": " + excerpt(body, 120));
   return j;
 }
 
-void save_candidate_video(const HostedSession& s, const std::string& bytes, const fs::path& out,
-                          const std::string& out_rel) {
-  try {
-    write_file_atomic(out, bytes);
-  } catch (const Error& e) {
-    s.fail(std::string("cannot write ") + e.what());
+namespace {
+
+// Removes a download's temporary file unless it was renamed into place.
+struct PartFile {
+  fs::path path;
+  ~PartFile() {
+    std::error_code ec;
+    if (!path.empty()) fs::remove(path, ec);
   }
+};
+
+}  // namespace
+
+void download_candidate_video(HostedSession& s, const std::string& url, const fs::path& out,
+                              const std::string& out_rel) {
+  // A hidden name beside `out` keeping its extension (the probe reads it); the pid keeps two
+  // runs in one folder apart, the candidate number in the name keeps candidates apart.
+  PartFile part{out.parent_path() / ("." + out.stem().string() + ".part" + std::to_string(::getpid()) +
+                                     out.extension().string())};
+  s.download(url, part.path, out_rel);
   std::string why;
   try {
-    const TargetInfo info = probe_target(out);
+    const TargetInfo info = probe_target(part.path);
     if (info.frames < 1) why = "it has no frames";
     else
       s.log(out_rel + ": " + std::to_string(info.frames) + " frames of " + std::to_string(info.width) +
             "x" + std::to_string(info.height) + " at " + short_number(info.fps) + " fps");
   } catch (const Error& e) {
     why = e.what();
-    const std::string prefix = out.string() + ": ";
+    const std::string prefix = part.path.string() + ": ";
     if (why.rfind(prefix, 0) == 0) why = why.substr(prefix.size());
   }
-  if (why.empty()) return;
+  if (!why.empty()) s.fail("the result of " + s.job + " (" + out_rel + ") is not a readable video: " + one_line(why));
   std::error_code ec;
-  fs::remove(out, ec);
-  s.fail("the result of " + s.job + " (" + out_rel + ") is not a readable video: " + one_line(why));
+  fs::rename(part.path, out, ec);
+  if (ec) s.fail(out_rel + ": cannot write: " + ec.message());
+  part.path.clear();
 }
 
 std::string read_recolored_png(const fs::path& run_dir, const std::string& who) {
@@ -246,7 +284,10 @@ std::string video_prompt(const std::string& prompt_template, const std::string& 
   return full;
 }
 
-bool is_http_url(const std::string& u) { return u.rfind("http://", 0) == 0 || u.rfind("https://", 0) == 0; }
+bool is_http_url(const std::string& u) {
+  const std::string scheme = url_scheme(u);
+  return (scheme == "http" || scheme == "https") && u.compare(scheme.size(), 3, "://") == 0;
+}
 
 fs::path reset_candidates_dir(const fs::path& run_dir, const std::string& who) {
   const fs::path dir = run_dir / "candidates";

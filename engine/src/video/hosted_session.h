@@ -2,11 +2,15 @@
 // queue-style HTTP API) under one deadline: each request retried with backoff for connection
 // errors, HTTP 5xx and rate limiting (429, honouring Retry-After), pauses that wake for a
 // cancel and never pass the deadline, one-line errors naming the candidate, and the API key
-// scrubbed from every message (a server may echo it). The clients (comfyui_client,
-// veo_client, http_job_client) keep only what their API adds: URLs, bodies, replies.
+// scrubbed from every reply as it arrives and from every message (a server may echo it; see
+// net/secret_scrub.h). Only http and https URLs are fetched, whoever named them (the config, a
+// submit reply's status_url, a result's video URL); videos stream to disk under a size limit.
+// The clients (comfyui_client, veo_client, http_job_client) keep only what their API adds:
+// URLs, bodies, replies.
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -28,12 +32,16 @@ struct SessionLimits {
   double backoff_s = 0.5;
   // The first pause between polls of a job; each grows by half, up to poll_max_s.
   double poll_s = 1, poll_max_s = 1;
+  // The largest video a download may bring (bytes); past it the transfer is aborted. A hosted
+  // 8 s 720p clip is a few MB; 2 GiB stops a server that streams without end before the disk
+  // fills.
+  uint64_t max_video_bytes = uint64_t{2} << 30;
 };
 
 class PluginOptions;
 
-// Reads options timeout_s (> 0), retries (0..10), poll_s (0..600] and poll_max_s
-// [poll_s, 600], each defaulting to `defaults`' (poll_max_s to at least poll_s).
+// Reads options timeout_s (> 0), retries (0..10), poll_s (0..600], poll_max_s [poll_s, 600]
+// and max_video_mib (1..65536), each defaulting to `defaults`' (poll_max_s to at least poll_s).
 SessionLimits read_session_limits(const PluginOptions& opt, const SessionLimits& defaults);
 
 // The credential a session must never show: the key's value (scrubbed from messages) and the
@@ -63,22 +71,28 @@ class HostedSession {
   void wait_to_poll(const std::string& url);
   void log(const std::string& line) const;  // "<who>: <label><line>", if the host listens
 
-  // The body of a 2xx answer to GET / POST `url`, after retries; fails with one line
-  // otherwise ("HTTP 403 from URL: <the server's message>", "cannot connect to URL: <why>",
-  // "the API key in $ENV was refused: HTTP 401 from ...").
+  // The body of a 2xx answer to GET / POST `url`, after retries, with the secret scrubbed
+  // out; fails with one line otherwise ("HTTP 403 from URL: <the server's message>", "cannot
+  // connect to URL: <why>", "the API key in $ENV was refused: HTTP 401 from ...", "refused to
+  // fetch a file: URL (only http and https)", "the reply from HOST is larger than 16 MiB").
   std::string get(const std::string& url);
   std::string post_json(const std::string& url, const std::string& body);
   std::string post_file(const std::string& url, const std::string& field,
                         const std::filesystem::path& file);
+  // GET `url` into `file` (at most limits.max_video_bytes), after retries; fails as get() does,
+  // or with "<shown>: cannot write: <why>" when the file cannot be written (a full disk).
+  void download(const std::string& url, const std::filesystem::path& file, const std::string& shown);
 
   nlohmann::json parse(const std::string& url, const std::string& body) const;
 
-  // `s` without the secret's value.
+  // `s` without the secret (verbatim or encoded, net/secret_scrub.h).
   std::string scrub(std::string s) const;
+  // What may be shown of a server's text: scrubbed, then on one line and cut to max_chars.
+  std::string excerpt(const std::string& s, size_t max_chars = 200) const;
 
  private:
   template <class Send>
-  std::string request(const std::string& url, Send&& send);
+  HttpReply request(const std::string& url, Send&& send);
 
   std::string who_, label_;
   SessionLimits limits_;
@@ -89,12 +103,13 @@ class HostedSession {
   double poll_pause_;
 };
 
-// s on one line (newlines and tabs as spaces, trailing spaces dropped), cut to max_chars.
+// s on one line (control characters as spaces, trailing spaces dropped), cut to max_chars.
 std::string one_line(std::string s, size_t max_chars = 200);
 
 // The human part of an error answer: error.message, error (a string), detail or message of a
-// JSON body (Google, OpenAI, FastAPI/fal, Replicate shapes), else the body on one line.
-std::string reply_message(const std::string& body);
+// JSON body (Google, OpenAI, FastAPI/fal, Replicate shapes), else the body; `secret` scrubbed
+// from the whole body first, then on one line (control characters as spaces), cut to 200.
+std::string reply_message(const std::string& body, const std::string& secret = "");
 
 // Seconds a Retry-After header asks for (delta-seconds; an HTTP date or garbage gives -1).
 double retry_after_seconds(const std::string& value);
@@ -105,11 +120,12 @@ bool is_video_extension(const std::string& ext);
 // "00", "01", ... (candidate file names).
 std::string two_digits(int i);
 
-// Writes `bytes` to `out` (through a temporary name) and checks it is a video with frames,
-// logging its size; otherwise removes it (it must not be ranked) and fails with "the result of
-// <s.job> (<out_rel>) is not a readable video: <why>".
-void save_candidate_video(const HostedSession& s, const std::string& bytes,
-                          const std::filesystem::path& out, const std::string& out_rel);
+// Downloads `url` to `out` (streamed to a temporary name beside it, renamed once it checks
+// out as a video with frames), logging its size; otherwise nothing is left (it must not be
+// ranked) and it fails with "the result of <s.job> (<out_rel>) is not a readable video: <why>",
+// "<out_rel>: cannot write: No space left on device", or as HostedSession::download.
+void download_candidate_video(HostedSession& s, const std::string& url,
+                              const std::filesystem::path& out, const std::string& out_rel);
 
 // The bytes of run_dir/recolored.png (the first frame); "<who>: <file>: cannot read ...".
 std::string read_recolored_png(const std::filesystem::path& run_dir, const std::string& who);
@@ -118,7 +134,7 @@ std::string read_recolored_png(const std::filesystem::path& run_dir, const std::
 // trailing spaces and newlines dropped.
 std::string video_prompt(const std::string& prompt_template, const std::string& prompt);
 
-bool is_http_url(const std::string& url);  // starts with http:// or https://
+bool is_http_url(const std::string& url);  // an http:// or https:// URL (any case)
 
 // Empties and recreates run_dir/candidates; fails with "<who>: <dir>: cannot ..." otherwise.
 std::filesystem::path reset_candidates_dir(const std::filesystem::path& run_dir,

@@ -60,7 +60,7 @@ HttpJobOptions parse_http_job_options(const json& options) {
                           {"submit_url", "body", "headers", "api_key_env", "id_field", "status_url",
                            "status_field", "done_values", "failed_values", "error_field", "result_url",
                            "video_url_field", "candidates", "concurrency", "frames", "fps", "timeout_s",
-                           "retries", "poll_s", "poll_max_s", "prompt_template"});
+                           "retries", "poll_s", "poll_max_s", "max_video_mib", "prompt_template"});
   HttpJobOptions o;
   o.submit_url = opt.string("submit_url", "");
   if (!is_http_url(o.submit_url)) opt.fail("options.submit_url must be an http:// or https:// URL, not '" + o.submit_url + "'");
@@ -225,7 +225,7 @@ std::vector<fs::path> generate_http_job_candidates(const HttpJobOptions& o, cons
       if (in(o.failed_values, status)) {
         const json why = field_at(reply, o.error_field);
         s.fail(s.job + " failed (" + o.status_field + " " + status + ")" +
-               (why.is_null() ? "" : ": " + one_line(as_text(why))));
+               (why.is_null() ? "" : ": " + s.excerpt(as_text(why))));
       }
       if (h.progress) h.progress(0.1, "waiting (" + one_line(status, 40) + ")");
       s.wait_to_poll(status_url);
@@ -234,15 +234,16 @@ std::vector<fs::path> generate_http_job_candidates(const HttpJobOptions& o, cons
     if (!result_url.empty()) reply = s.parse(result_url, s.get(result_url));
     json video = field_at(reply, o.video_url_field);
     if (video.is_array() && !video.empty()) video = video[0];
-    if (!video.is_string() || !is_http_url(video.get<std::string>()))
-      s.fail(s.job + " finished without a video URL at " + o.video_url_field + ": " + one_line(reply.dump(), 120));
+    if (!video.is_string()) s.fail(s.job + " finished without a video URL at " + o.video_url_field + ": " + s.excerpt(reply.dump(), 120));
+    if (!is_http_url(video.get<std::string>()))
+      s.fail(s.job + " finished with a video URL that is " + scheme_for_message(video.get<std::string>()) + ", not http(s)");
     const std::string url = video.get<std::string>();
 
     if (h.progress) h.progress(0.9, "downloading");
     const std::string ext = video_extension(url);
     const std::string out_rel = "candidates/" + nn + "." + ext;
     const fs::path out = dir / (nn + "." + ext);
-    save_candidate_video(s, s.get(url), out, out_rel);
+    download_candidate_video(s, url, out, out_rel);
     return out;
   });
 }

@@ -25,7 +25,7 @@ VeoOptions parse_veo_options(const json& options) {
   const PluginOptions opt(options, kWho,
                           {"base_url", "model", "api_key_env", "candidates", "concurrency", "aspect_ratio",
                            "duration_s", "resolution", "negative_prompt", "seed", "timeout_s", "retries",
-                           "poll_s", "poll_max_s", "prompt_template"});
+                           "poll_s", "poll_max_s", "max_video_mib", "prompt_template"});
   VeoOptions o;
   o.base_url = opt.string("base_url", o.base_url);
   while (!o.base_url.empty() && o.base_url.back() == '/') o.base_url.pop_back();
@@ -107,7 +107,7 @@ std::vector<fs::path> generate_veo_candidates(const VeoOptions& o, const fs::pat
     const json submitted = s.parse(submit_url, s.post_json(submit_url, body.dump()));
     if (!submitted.is_object() || !submitted.contains("name") || !submitted["name"].is_string() ||
         submitted["name"].get<std::string>().empty())
-      s.fail("no operation \"name\" in the reply from " + submit_url + ": " + one_line(submitted.dump(), 120));
+      s.fail("no operation \"name\" in the reply from " + submit_url + ": " + s.excerpt(submitted.dump(), 120));
     const std::string name = submitted["name"].get<std::string>();
     s.job = "operation " + name;
     s.log("submitted as operation " + name + (o.send_seed ? " (seed " + std::to_string(seed + i) + ")" : ""));
@@ -120,12 +120,13 @@ std::vector<fs::path> generate_veo_candidates(const VeoOptions& o, const fs::pat
       op = read_veo_operation(s.parse(poll_url, s.get(poll_url)));
     }
     if (!op.error.empty()) s.fail(s.job + " failed: " + op.error);
-    if (!is_http_url(op.video_uri)) s.fail(s.job + " gave a video uri that is not an http(s) URL: " + one_line(op.video_uri, 120));
+    if (!is_http_url(op.video_uri))
+      s.fail(s.job + " gave a video uri that is " + scheme_for_message(op.video_uri) + ", not http(s)");
 
     if (h.progress) h.progress(0.9, "downloading");
     const std::string out_rel = "candidates/" + nn + ".mp4";
     const fs::path out = dir / (nn + ".mp4");
-    save_candidate_video(s, s.get(op.video_uri), out, out_rel);
+    download_candidate_video(s, op.video_uri, out, out_rel);
     return out;
   });
 }
