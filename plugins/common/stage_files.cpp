@@ -98,4 +98,25 @@ std::vector<Rgba> candidate_colours(const nlohmann::json& req, const std::string
   return out;
 }
 
+int fitter_keyframes(const nlohmann::json& req, std::string* why) {
+  const nlohmann::json& stages = req.at("stages");
+  const int asked = stages.at("fitter").value("keyframes", 15);
+  if (stages.at("video").value("plugin", "") != "procedural" || !req.contains("run_dir")) return asked;
+  const std::filesystem::path run = req.at("run_dir").get<std::string>();
+  std::ifstream in(run / "motion.json"), ranking(run / "ranking.json");
+  const nlohmann::json m = nlohmann::json::parse(in, nullptr, false), r = nlohmann::json::parse(ranking, nullptr, false);
+  if (!m.is_object() || !m.contains("candidates") || !m.at("candidates").is_array() || m.at("candidates").empty()) return asked;
+  const std::string chosen = r.is_object() && r.contains("chosen") && r.at("chosen").is_string() ? r.at("chosen").get<std::string>() : "";
+  const nlohmann::json* cand = &m.at("candidates").front();
+  for (const auto& c : m.at("candidates"))
+    if (c.is_object() && c.value("name", "") == chosen) cand = &c;
+  if (!cand->is_object() || !cand->contains("keyframes") || !cand->at("keyframes").is_number_integer()) return asked;
+  const int need = std::min(cand->at("keyframes").get<int>(), 2 * (asked - 1) + 1);
+  if (need <= asked) return asked;
+  if (why)
+    *why = std::to_string(need) + " keyframes instead of " + std::to_string(asked) + ": the procedural motion moves too far between " +
+           std::to_string(asked) + " to follow";
+  return need;
+}
+
 }  // namespace svgm::plugin

@@ -36,4 +36,10 @@ void write_target(const std::filesystem::path& chosen, const std::filesystem::pa
 // stages.fitter.colors (auto | palette | original). `who` names the ranker in errors.
 std::vector<Rgba> candidate_colours(const nlohmann::json& request, const std::string& who);
 
+// The fitter's keyframes for this run: stages.fitter.keyframes, raised to the count the chosen
+// procedural candidate asks for (motion.json's candidates[].keyframes, ranking.json's choice,
+// else the first candidate; motion_plan.h fit_plan), at most twice as many gaps. The tracker
+// samples its flows at the same keyframes. `why` (may be null) gets a line when it was raised.
+int fitter_keyframes(const nlohmann::json& request, std::string* why = nullptr);
+
 }  // namespace svgm::plugin

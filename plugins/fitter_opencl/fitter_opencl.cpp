@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "common/plugin_glue.h"
+#include "common/stage_files.h"
 #include "fit/fit_job.h"
 
 namespace {
@@ -44,7 +45,10 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   job.options.iterations = c.value("iterations", 2000);
   job.options.track = c.value("track", true);
   if (!c.value("stop_when_converged", true)) job.options.plateau_window = 0;
-  job.keyframes = c.value("keyframes", 15);
+  // A procedural motion too fast to follow between that many keyframes asks for more.
+  std::string more;
+  job.keyframes = svgm::plugin::fitter_keyframes(req, &more);
+  if (!more.empty() && host && host->log) host->log(host, 1, ("fitter: " + more).c_str());
   job.width = c.value("size", 256);
   job.mask_threshold = c.value("mask_threshold", 0.97);
   // refine_size: auto (the default), 0 (off) or a width in pixels.

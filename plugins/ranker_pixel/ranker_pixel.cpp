@@ -5,7 +5,9 @@
 //
 // Options (stages.ranker.options): size (analysis width in px, default 128), keyframes
 // (frames sampled per candidate, default 16).
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,17 @@ svgm::PixelRankOptions options_of(const nlohmann::json& req) {
   svgm::PixelRankOptions o;
   o.analysis_width = opt.whole("size", o.analysis_width, 1, 4096);
   o.keyframes = opt.whole("keyframes", o.keyframes, 1, 4096);
+  // A procedural motion that asks the fitter for more keyframes (motion.json, fit_plan) is
+  // judged at as many frames: its parts' areas change between the frames the fitter will see,
+  // not between 16 (generator and ranker agree on what is followable).
+  if (req.at("stages").at("video").value("plugin", "") == "procedural") {
+    std::ifstream in(std::filesystem::path(req.at("run_dir").get<std::string>()) / "motion.json");
+    const nlohmann::json m = nlohmann::json::parse(in, nullptr, false);
+    if (m.is_object() && m.contains("candidates") && m.at("candidates").is_array())
+      for (const auto& cand : m.at("candidates"))
+        if (cand.is_object() && cand.contains("keyframes") && cand.at("keyframes").is_number_integer())
+          o.keyframes = std::max(o.keyframes, cand.at("keyframes").get<int>() + 1);
+  }
   return o;
 }
 

@@ -3,6 +3,7 @@
 // to tracks.json (engine/src/fit/flow_tracks.h). The fitter warm-starts each newly activated
 // keyframe by moving the previous keyframe's fitted points along it.
 #include "common/plugin_glue.h"
+#include "common/stage_files.h"
 #include "fit/flow_tracks.h"
 #include "svgmotion/render_size.h"
 #include "svgmotion/svg_reader.h"
@@ -17,7 +18,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host*) {
   const svgm::Scene scene = svgm::read_svg_file(P::file(req, "inputs", "svg"));
   const svgm::RenderSize size = svgm::render_size(scene, fitter.value("size", 256));
   svgm::TargetOptions o;
-  o.keyframes = fitter.value("keyframes", 15);
+  o.keyframes = P::fitter_keyframes(req);
   o.white_threshold = fitter.value("mask_threshold", 0.97);
   const svgm::TargetFrames t = svgm::load_target(P::file(req, "inputs", "target"), size.width, size.height, o);
   const auto flows = svgm::compute_flows(t, req.at("config").value("grid", 32));

@@ -99,7 +99,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
       report["bodies"] = svgm::body_maps_json(maps);
     }
     svgm::write_procedural_video(scene, pts, seed, o, dir / (std::string(name) + ".mp4"));
-    made.push_back({{"name", std::string(name) + ".mp4"}, {"seed", seed}, {"amplitude_scale", plan.scale},
+    made.push_back({{"name", std::string(name) + ".mp4"}, {"seed", seed}, {"amplitude_scale", plan.scale}, {"keyframes", plan.keyframes},
                     {"plan", plan.summary()}, {"path_body", path_body}, {"bodies", svgm::body_maps_json(maps)}});
     if (host && host->progress) host->progress(host, (i + 1.0) / n, name);
   }

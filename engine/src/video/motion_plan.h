@@ -59,6 +59,9 @@ struct PlannedAction {
   std::vector<ArmLobe> lobes;   // Sides: the arms drawn in the part's outline, when it has
                                 // some (part_rig.h): only they bend, each about its base
   double scale = 1;             // this action's own amplitude factor (fit_plan), times plan.scale
+  int one_sided = 0;            // Swing, Rock, Bend, Sway, region bends: 0 back and forth about
+                                // rest; +1 / -1 out to one side only and back (fit_plan: the
+                                // other side would leave the canvas)
   std::string why;
 };
 
@@ -69,6 +72,8 @@ struct MotionPlan {
   std::vector<std::string> warnings;        // one line each
   std::vector<std::string> notes;           // informational lines (an amplitude scaled to fit)
   double scale = 1;             // amplitude factor of every action fit_plan chose (1: as planned)
+  int keyframes = 0;            // keyframes the fitter needs to follow the motion (fit_plan: at
+                                // least the fitter's own count; 0 before fit_plan)
   std::vector<int> held;        // parts (with what hangs from them) the whole figure's motions
                                 // leave where they are, as the background (fit_plan: small parts
                                 // at the canvas's edge when the figure could not move otherwise)
