@@ -389,13 +389,15 @@ std::string timings_section(const RunFiles& f) {
   return section("svgm-timings", "Timings per stage", s);
 }
 
+// #svgm-stage clips what it holds (overflow, contain: paint): the user's drawing, however it is
+// transformed, never paints over the page's own text (a made-up command beside the real ones).
 constexpr const char* kStyle = R"(<style>
 body{font:14px/1.4 system-ui,sans-serif;margin:16px 24px;color:#222;background:#fafafa}
 section{background:#fff;border:1px solid #ddd;border-radius:6px;padding:8px 16px;margin:12px 0}
 h1{font-size:20px}h2{font-size:17px;margin:6px 0}h3{font-size:15px;margin:4px 0}
 figure{display:inline-block;margin:4px 12px 4px 0;vertical-align:top}figcaption{font-size:12px;color:#555}
 img,video{border:1px solid #ccc;background:#fff;max-width:100%}
-#svgm-stage{border:1px solid #ccc;background:#fff}#svgm-stage>svg{display:block}
+#svgm-stage{border:1px solid #ccc;background:#fff;overflow:hidden;contain:paint}#svgm-stage>svg{display:block}
 .svgm-controls{margin:8px 0}#svgm-scrub{width:300px;vertical-align:middle}
 .svgm-grid{display:flex;flex-wrap:wrap;gap:12px}
 .svgm-candidate{border:1px solid #ddd;border-radius:6px;padding:8px;width:300px}

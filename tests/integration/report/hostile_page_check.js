@@ -8,6 +8,8 @@
 //   navigated NAME URL        the page (main frame) went somewhere else
 //   svg NAME count=N paths=P animations=A player=B   the inlined animation in the DOM; B: the
 //                             page's own script ran (its Content-Security-Policy let it)
+//   overlay NAME clear|covered  whether the drawing paints over the page outside its box (the
+//                             Play button and the input section are what is hit there)
 //   tree NAME same|differs|xml-error   the animation's markup parsed as XML (DOMParser) against
 //                             the tree the page's HTML parser built from it
 //   error NAME MESSAGE        the check of that page could not finish (it navigated away)
@@ -54,6 +56,17 @@ async function check(page, name, file) {
     player: typeof window.svgmSeek === 'function',
   }));
   console.log(`svg ${name} count=${svg.count} paths=${svg.paths} animations=${svg.animations} player=${svg.player}`);
+  const covered = await page.evaluate(() => {
+    const stage = document.getElementById('svgm-stage');
+    return ['svgm-play', 'svgm-input'].some((id) => {
+      const e = document.getElementById(id);
+      e.scrollIntoView({ block: 'center' });  // elementFromPoint sees the viewport only
+      const r = e.getBoundingClientRect();
+      const hit = document.elementFromPoint(r.left + Math.min(r.width / 2, 20), r.top + Math.min(r.height / 2, 20));
+      return !hit || stage.contains(hit);
+    });
+  });
+  console.log(`overlay ${name} ${covered ? 'covered' : 'clear'}`);
   const html = fs.readFileSync(file, 'utf8');
   const m = /<div id="svgm-stage"[^>]*>([\s\S]*?)<\/div><div class="svgm-controls">/.exec(html);
   const tree = await page.evaluate((markup) => {
