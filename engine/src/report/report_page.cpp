@@ -138,8 +138,8 @@ std::string player_section(const RunFiles& f, const ReportOptions& o, std::vecto
                   " as your browser plays it (SMIL). Drag the scrubber to see any moment.</p>";
   if (!svg.dropped.empty()) {
     notes.push_back("dropped from the inlined animation: " + svg.dropped);
-    s += "<p class=\"svgm-missing\" id=\"svgm-dropped\">Left out of the animation on this page (they could run or "
-         "fetch something): " + html_escape(svg.dropped) + ".</p>";
+    s += "<p class=\"svgm-missing\" id=\"svgm-dropped\">Left out of the animation on this page, which keeps only what "
+         "a drawing and its animation need (nothing that could run or load a file): " + html_escape(svg.dropped) + ".</p>";
   }
   s += "<div id=\"svgm-stage\" style=\"width:" + std::to_string(o.player_width) + "px;height:" + std::to_string(height) +
        "px\">" + svg.markup + "</div>";
