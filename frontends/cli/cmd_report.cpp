@@ -11,16 +11,18 @@
 
 namespace svgm::cli {
 
-void write_run_report(const std::filesystem::path& run, const std::string& device, bool quiet) {
+bool write_run_report(const std::filesystem::path& run, const std::string& device, bool quiet) {
   try {
     ReportOptions o;
     o.device = device;
     const ReportResult r = write_report(run, o);
     for (const std::string& n : r.notes) log::warning("report.html: %s", n.c_str());
     if (!quiet) log::info("svgmotion: wrote %s (%zu kB)", r.file.c_str(), r.bytes >> 10);
+    return true;
   } catch (const Error& e) {
     // The page shows a run; it never turns a finished run into a failed one.
     log::warning("report.html not written: %s", e.what());
+    return false;
   }
 }
 
@@ -30,7 +32,7 @@ int cmd_report(const std::vector<std::string>& argv) {
   ReportOptions o;
   o.device = a.get("--device").value_or("auto");
   const ReportResult r = write_report(a.positional[0], o);
-  for (const std::string& n : r.notes) log::warning("%s", n.c_str());
+  for (const std::string& n : r.notes) log::warning("report.html: %s", n.c_str());  // as `run` says them
   std::printf("wrote %s (%zu kB)\n", r.file.c_str(), r.bytes >> 10);
   return 0;
 }

@@ -164,13 +164,14 @@ int cmd_run(const std::vector<std::string>& argv) {
   std::vector<StageReport> reports;
   // The command (for report.html's "use this one") and the page, after a finished run and
   // after one stopped for a reason the page shows (a rejected fit, flagged candidates).
+  bool report_written = false;
   auto report = [&] {
     try {
       record_run_command(dir, argv, config.value("prompt", ""));
     } catch (const Error& e) {
       std::fprintf(stderr, "svgmotion: warning: %s\n", e.what());
     }
-    write_run_report(dir, config.value("device", "auto"), true);
+    report_written = write_run_report(dir, config.value("device", "auto"), true);
   };
   try {
     reports = run_pipeline(config, host, a.get("--from"), [&](const std::string& stage) { view.stage(stage); });
@@ -209,7 +210,8 @@ int cmd_run(const std::vector<std::string>& argv) {
                r.skipped ? "up to date" : (std::to_string(r.seconds) + " s").c_str());
   }
   if (all_skipped) std::printf("every stage is up to date\n");
-  std::printf("outputs in %s: animation.svg, preview.mp4, fit.json, report.html (total %.1f s)\n", dir.c_str(), total);
+  std::printf("outputs in %s: animation.svg, preview.mp4, fit.json%s (total %.1f s)\n", dir.c_str(),
+              report_written ? ", report.html" : "", total);
   return 0;
 }
 

@@ -7,7 +7,9 @@
 #   shows what `svgmotion render --time` draws then (PSNR); Play runs it again. The command that
 #   "Use this one" shows is run as written: it fits that candidate (target.mp4 is it, the stages
 #   before the ranker are up to date, ranking.json records the choice, the page marks it).
-#   `svgmotion report` rewrites the page; bad choices and non-run directories are one line.
+#   `svgmotion report` rewrites the page; bad choices and non-run directories are one line. A
+#   page that cannot be written is one warning line of `run` (exit 0), and its summary does not
+#   list it.
 # TOOLS_DIR holds png_psnr (tests/tools); NODE_MODULES holds puppeteer-core (.ci/setup.sh
 # installs it into build/npm). Debian's chromium.
 set -u
@@ -72,6 +74,17 @@ at_t=$(psnr "$tmp/ours_t.png" "$tmp/p_seek.png") at_0=$(psnr "$tmp/ours_0.png" "
 echo "# the page after seeking to $t s against svgmotion render: --time $t $at_t dB, --time 0 $at_0 dB"
 check "the page shows the frame at $t s: render --time $t within $bar dB ($at_t)" 'at_least "$at_t" "$bar"'
 check "and not the frame at 0 ($at_0 dB < $bar)" '! at_least "$at_0" "$bar"'
+
+# A page that cannot be written (report.html is a folder) is one line, and no summary lists it.
+rm "$tmp/run/report.html" && mkdir "$tmp/run/report.html"
+one_line_error "report when report.html is a folder" "$tmp/run/report.html: not a regular file" report "$tmp/run"
+(cd "$tmp" && "${run[@]}") >"$tmp/rerun_out" 2>"$tmp/rerun_err"
+rc=$?
+check "run with report.html a folder: exit $rc, one warning line ($(head -c 300 "$tmp/rerun_err"))" \
+  '[[ $rc -eq 0 && $(grep -c "" "$tmp/rerun_err") -eq 1 ]] && grep -qxF "svgmotion: warning: report.html not written: $tmp/run/report.html: not a regular file" "$tmp/rerun_err"'
+check "and its summary does not list report.html ($(grep "^outputs in" "$tmp/rerun_out"))" \
+  'grep -q "^outputs in $tmp/run: animation.svg" "$tmp/rerun_out" && ! grep -q "report.html" "$tmp/rerun_out"'
+rmdir "$tmp/run/report.html"  # the run of "Use this one" below writes it again
 
 # "Use this one": the command as the page shows it, run as written.
 chosen=$("$py" -c 'import json,sys; print(json.load(open(sys.argv[1]))["chosen"])' "$tmp/run/ranking.json")

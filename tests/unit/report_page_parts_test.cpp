@@ -95,7 +95,8 @@ TEST_SUITE("report") {
                         "height=\"100\" onload=\"alert(1)\"><script>alert(2)</script><a href=\" JavaScript:alert(3)\">"
                         "<path id=\"p\" d=\"M0 0H10V10Z\" onclick=\"x()\"><animate attributeName=\"d\" dur=\"1s\" "
                         "values=\"M0 0H10V10Z;M0 0H20V20Z\"/></path></a></svg>";
-    const std::string s = inline_svg(f);
+    const InlinedSvg inlined = inline_svg(f);
+    const std::string& s = inlined.markup;
     CHECK(s.rfind("<svg ", 0) == 0);
     CHECK(s.find("<?xml") == std::string::npos);
     CHECK(s.find("script") == std::string::npos);
@@ -103,7 +104,8 @@ TEST_SUITE("report") {
     CHECK(s.find("onclick") == std::string::npos);
     CHECK(s.find("viewBox=\"0 0 200 100\"") != std::string::npos);
     CHECK(s.find("width=\"100%\" height=\"100%\"") != std::string::npos);
-    CHECK(s.find("<animate attributeName=\"d\" dur=\"1s\" values=\"M0 0H10V10Z;M0 0H20V20Z\"/>") != std::string::npos);
+    CHECK(s.find("<animate attributeName=\"d\" dur=\"1s\" values=\"M0 0H10V10Z;M0 0H20V20Z\"></animate>") != std::string::npos);
+    CHECK(inlined.dropped == "2 on* attributes, 1 <script>, 1 href outside the drawing");
     std::ofstream(dir.path / "b.svg") << "<html/>";
     CHECK(test::error_of([&] { inline_svg(dir.path / "b.svg"); }) == (dir.path / "b.svg").string() + ": not an SVG document (no <svg> root)");
   }

@@ -11,8 +11,10 @@
 #include <string>
 
 #include "error_of.h"
+#include "net/base64.h"
 #include "report/report_page.h"
 #include "report/rerun_command.h"
+#include "report/sha256.h"
 #include "temp_dir.h"
 
 using namespace svgm;
@@ -70,6 +72,13 @@ TEST_SUITE("report") {
     CHECK(page.find("No animation.svg in the run directory yet.") != std::string::npos);
     CHECK(page.find("No fit.json yet.") != std::string::npos);
     CHECK(page.find("data:image/png;base64,") != std::string::npos);  // the input, drawn
+    // The policy comes first in <head> and lets run only the page's own script, by its hash.
+    const size_t open = page.find("<script>") + 8, close = page.find("</script>");
+    const std::string policy = "<head><meta charset=\"utf-8\"><meta http-equiv=\"Content-Security-Policy\" content=\""
+                               "default-src 'none'; script-src 'sha256-" + base64(sha256(page.substr(open, close - open))) +
+                               "'; style-src 'unsafe-inline'; img-src data:; media-src data:; base-uri 'none'; "
+                               "form-action 'none'\"><title>";
+    CHECK(page.find(policy) != std::string::npos);
   }
 
   TEST_CASE("a folder that is not a run directory is refused in one line") {

@@ -20,6 +20,7 @@
 #include "report/inline_svg.h"
 #include "report/report_charts.h"
 #include "report/rerun_command.h"
+#include "report/sha256.h"
 #include "report/video_frames.h"
 #include "pipeline/candidate_choice.h"
 #include "svgmotion/atomic_file.h"
@@ -123,7 +124,7 @@ std::string player_section(const RunFiles& f, const ReportOptions& o, std::vecto
   if (f.animation.empty()) return section("svgm-player", "The animation", missing("No animation.svg in the run directory yet."));
   const std::string text = read_bytes(f.animation);
   double duration = 0;
-  std::string svg;
+  InlinedSvg svg;
   int height = 0;
   try {
     duration = smil_clock(text, f.animation.string()).duration_s;
@@ -135,8 +136,13 @@ std::string player_section(const RunFiles& f, const ReportOptions& o, std::vecto
   }
   std::string s = "<p>" + html_escape(f.animation.filename().string()) +
                   " as your browser plays it (SMIL). Drag the scrubber to see any moment.</p>";
+  if (!svg.dropped.empty()) {
+    notes.push_back("dropped from the inlined animation: " + svg.dropped);
+    s += "<p class=\"svgm-missing\" id=\"svgm-dropped\">Left out of the animation on this page, which keeps only what "
+         "a drawing and its animation need (nothing that could run or load a file): " + html_escape(svg.dropped) + ".</p>";
+  }
   s += "<div id=\"svgm-stage\" style=\"width:" + std::to_string(o.player_width) + "px;height:" + std::to_string(height) +
-       "px\">" + svg + "</div>";
+       "px\">" + svg.markup + "</div>";
   s += "<div class=\"svgm-controls\"><button id=\"svgm-play\" type=\"button\">Pause</button> "
        "<input id=\"svgm-scrub\" type=\"range\" min=\"0\" max=\"" + html_number(duration, 9) +
        "\" step=\"any\" value=\"0\" aria-label=\"time\"> <span id=\"svgm-time\">0.00</span> / " +
@@ -383,13 +389,15 @@ std::string timings_section(const RunFiles& f) {
   return section("svgm-timings", "Timings per stage", s);
 }
 
+// #svgm-stage clips what it holds (overflow, contain: paint): the user's drawing, however it is
+// transformed, never paints over the page's own text (a made-up command beside the real ones).
 constexpr const char* kStyle = R"(<style>
 body{font:14px/1.4 system-ui,sans-serif;margin:16px 24px;color:#222;background:#fafafa}
 section{background:#fff;border:1px solid #ddd;border-radius:6px;padding:8px 16px;margin:12px 0}
 h1{font-size:20px}h2{font-size:17px;margin:6px 0}h3{font-size:15px;margin:4px 0}
 figure{display:inline-block;margin:4px 12px 4px 0;vertical-align:top}figcaption{font-size:12px;color:#555}
 img,video{border:1px solid #ccc;background:#fff;max-width:100%}
-#svgm-stage{border:1px solid #ccc;background:#fff}#svgm-stage>svg{display:block}
+#svgm-stage{border:1px solid #ccc;background:#fff;overflow:hidden;contain:paint}#svgm-stage>svg{display:block}
 .svgm-controls{margin:8px 0}#svgm-scrub{width:300px;vertical-align:middle}
 .svgm-grid{display:flex;flex-wrap:wrap;gap:12px}
 .svgm-candidate{border:1px solid #ddd;border-radius:6px;padding:8px;width:300px}
@@ -446,6 +454,19 @@ constexpr const char* kScript = R"(<script>
 })();
 </script>)";
 
+// The page's policy, first in <head> so it governs everything after it: only the page's own
+// script runs (by its hash, so no inline handler, javascript: URL or injected <script> does),
+// pictures and videos come only from the data: URIs the page embeds, and nothing is fetched,
+// framed, submitted or used as a base. Styles stay 'unsafe-inline' (the page and the drawing
+// style inline): CSS cannot run script, and every load it could make is refused by the rest.
+std::string content_security_policy() {
+  std::string script(kScript);
+  const size_t open = script.find('>') + 1, close = script.rfind("</script>");
+  const std::string hash = base64(sha256(std::string_view(script).substr(open, close - open)));
+  return "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'sha256-" + hash +
+         "'; style-src 'unsafe-inline'; img-src data:; media-src data:; base-uri 'none'; form-action 'none'\">";
+}
+
 }  // namespace
 
 ReportResult write_report(const fs::path& run_in, const ReportOptions& o) {
@@ -468,7 +489,8 @@ ReportResult write_report(const fs::path& run_in, const ReportOptions& o) {
     }
   ReportResult result;
   Renderer renderer(o.device);
-  std::string page = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>svgmotion: " +
+  std::string page = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">" + content_security_policy() +
+                     "<title>svgmotion: " +
                      html_escape(f.run.filename().string()) + "</title>" + kStyle + "</head><body>\n";
   page += summary_section(f);
   page += player_section(f, o, result.notes);

@@ -9,9 +9,10 @@
 // iterations and per keyframe (svgm-losses), and the seconds of every stage (svgm-timings).
 // A section whose files are missing (a run stopped before fitting) says what is missing.
 //
-// Everything taken from files is escaped (report/html_text.h); the animation is inlined with
-// its scripts removed (report/inline_svg.h). The page is written under a temporary name and
-// renamed.
+// Everything taken from files is escaped (report/html_text.h); the animation is inlined from an
+// allow-list (report/inline_svg.h), what it leaves out named in a note and on the page. A
+// Content-Security-Policy, first in <head>, lets run only the page's own script (by its hash)
+// and load only data: URIs. The page is written under a temporary name and renamed.
 #pragma once
 
 #include <cstddef>
