@@ -18,6 +18,7 @@
 #include "raster/render_image.h"
 #include "report/html_text.h"
 #include "report/inline_svg.h"
+#include "report/report_motion.h"
 #include "report/report_charts.h"
 #include "report/rerun_command.h"
 #include "report/sha256.h"
@@ -148,6 +149,18 @@ std::string player_section(const RunFiles& f, const ReportOptions& o, std::vecto
        "\" step=\"any\" value=\"0\" aria-label=\"time\"> <span id=\"svgm-time\">0.00</span> / " +
        html_number(duration, 4) + " s</div>";
   return section("svgm-player", "The animation", s);
+}
+
+// The drawing at rest for the motion section's outlines, as a data: URI ("" when it cannot be
+// drawn, or when there is no motion.json to outline).
+std::string motion_drawing(const RunFiles& f, Renderer& r, const ReportOptions& o, std::vector<std::string>& notes) {
+  if (!f.motion.is_object()) return "";
+  try {
+    return png_uri(r.render(read_svg_file(f.run / "input.svg"), o.thumb_width));
+  } catch (const Error& e) {
+    notes.push_back(std::string("motion outlines not drawn: ") + e.what());
+    return "";
+  }
 }
 
 std::string input_section(const RunFiles& f, Renderer& r, const ReportOptions& o, std::vector<std::string>& notes) {
@@ -406,6 +419,8 @@ img,video{border:1px solid #ccc;background:#fff;max-width:100%}
 table{border-collapse:collapse}td,th{border-bottom:1px solid #eee;padding:2px 6px;text-align:left;vertical-align:top;font-size:13px}
 .svgm-signals td{font-size:12px}pre.svgm-cmd{white-space:pre-wrap;word-break:break-all;background:#f3f3f3;padding:6px;font-size:12px}
 .svgm-status-ok{color:#2a7a2a}.svgm-status-rejected{color:#a33}
+.svgm-row{display:flex;flex-wrap:wrap;gap:12px;align-items:flex-start}.svgm-warn{color:#a33;font-weight:600}
+svg.svgm-motion-parts{border:1px solid #ccc;background:#fff;max-width:100%;height:auto}
 </style>)";
 
 // The player: play/pause and a scrubber over the inline SVG's SMIL clock. The scrubber follows
@@ -494,6 +509,7 @@ ReportResult write_report(const fs::path& run_in, const ReportOptions& o) {
                      html_escape(f.run.filename().string()) + "</title>" + kStyle + "</head><body>\n";
   page += summary_section(f);
   page += player_section(f, o, result.notes);
+  page += motion_section(f.motion, motion_drawing(f, renderer, o, result.notes));
   page += input_section(f, renderer, o, result.notes);
   page += candidates_section(f, o, result.notes);
   page += compare_section(f, renderer, o, result.notes);

@@ -430,6 +430,9 @@ struct Builder {
     a.vertical = mods.vertical;
     if (a.primitive == Primitive::Undulate && target == Target::Whole) a.anchored = anchored_side(rig);
     a.direction = mods.side != 0 ? mods.side : ((rng() & 1) ? 1 : -1);
+    // Where the prompt sends the figure ("drifts to the right"): a slide of the whole figure
+    // goes that way first, in the viewer's frame.
+    if (mods.travel != 0 && a.primitive == Primitive::Slide && target == Target::Whole) a.direction = mods.travel;
     std::string note;
     if (target == Target::Named) a.parts = named_parts;
     else if (target != Target::Whole && target != Target::Repeated) a.parts = parts_for(rig, target, target_word, &note);
@@ -657,7 +660,28 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
     b.plan.notes.push_back("the prompt names the limbs that move: the whole-figure " + join(accents_left_out, ", ") + " left out");
   if (!restated.empty())
     b.plan.notes.push_back(join(restated, ", ") + ": the prompt aims the same motion at a part elsewhere; the whole figure's left out");
+  // Nouns that move by themselves when no verb says how (the lexicon: "the candle's flame" flickers,
+  // "rain" falls, "the sea's waves" roll), else the motion of the figure's class.
+  if (b.plan.actions.empty())
+    for (const Clause& c : prompt.clauses) {
+      const Verb* v = nullptr;
+      std::string what;
+      for (const auto& n : c.nouns)
+        if (n.motion && !n.object_of_preposition) {
+          v = n.motion;
+          what = "'" + n.word + "'";
+          break;
+        }
+      if (!v && c.figure != FigureClass::None && (v = default_verb(c.figure))) what = std::string("a ") + figure_class_name(c.figure);
+      if (!v) continue;
+      for (const Action& act : v->actions) b.add(*v, act, act.target, {}, "", c.mods, false, c.text, false);
+      b.plan.notes.push_back(what + " moves by itself: " + v->name + " (no verb in '" + c.text + "')");
+      break;
+    }
+  for (const auto& r : prompt.readings) b.plan.notes.push_back(r);
   b.plan.not_understood = unknown;
+  for (const auto& w : prompt.unplaced)
+    if (std::find(unknown.begin(), unknown.end(), w) == unknown.end()) b.plan.not_understood.push_back(w);
   if (b.plan.actions.empty()) {
     const std::string words = unknown.empty() ? "no words" : join(unknown, ", ");
     b.plan.warnings.push_back("no motion understood in the prompt (not understood: " + words + "); the figure sways gently");
@@ -666,9 +690,11 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
     gentle.amp = kFallbackSwayDeg;
     b.add(*sway, gentle, Target::Whole, {}, "", Modifiers{}, false, "(fallback)", false);
   } else {
-    std::vector<std::string> verbs_missed;
+    // Verbs the lexicon could not place, and words in -ing (a participle no table knows).
+    std::vector<std::string> verbs_missed = prompt.unplaced;
     for (const auto& w : unknown)
-      if (w.size() > 4 && w.compare(w.size() - 3, 3, "ing") == 0) verbs_missed.push_back(w);
+      if (w.size() > 4 && w.compare(w.size() - 3, 3, "ing") == 0 && std::find(verbs_missed.begin(), verbs_missed.end(), w) == verbs_missed.end())
+        verbs_missed.push_back(w);
     if (!verbs_missed.empty()) b.plan.warnings.push_back("words not understood: " + join(verbs_missed, ", "));
   }
   return b.plan;
