@@ -50,9 +50,9 @@ ownership)
   rc=$?
   check "--force writes the run beside the user's file" \
     '[[ $rc -eq 0 && -s $mine/animation.svg && $(cat "$mine/thesis.part1.pdf") == thesis ]] || { cat "$tmp/e3"; false; }'
-  # What a kill -9 leaves: our temporaries (by a process that has ended), and the user's files
-  # named alike in the old pattern, which must stay.
-  sleep 30 & dead=$!; kill $dead; wait $dead 2>/dev/null
+  # What a kill -9 leaves: our temporaries (of a process that no longer runs), and the user's
+  # files named alike in the old pattern, which must stay.
+  dead=$(($(cat /proc/sys/kernel/pid_max) + 1))  # a pid no process has
   touch "$mine/.preview.mp4.svgm-tmp-$dead.mp4" "$mine/.fit.json.svgm-tmp-$dead" "$mine/candidates/.00.mp4.svgm-tmp-$dead" \
     "$mine/report.part2.pdf"
   "$bin" run --input "$data/examples/man.svg" -o "$mine" --quiet "${fast[@]}" "stages.video.path=$tmp/frames" \
@@ -81,6 +81,7 @@ ownership)
     '[[ $? -eq 0 && ! -e $tmp/fo/.preview.mp4.svgm-tmp-$dead.mp4 && -e $tmp/fo/preview.part1.mp4 ]] || { cat "$tmp/e5c"; ls -a "$tmp/fo"; false; }'
   # A run holding the run directory (its lock taken here as a run takes it): fit -o is refused.
   (
+    trap - EXIT  # killed below: this subshell must not clean up the test's folder
     exec 9<>"$mine/.svgmotion/lock"
     flock -x 9 && printf '%s' "$BASHPID" >"$mine/.svgmotion/lock" && sleep 20
   ) &
@@ -115,10 +116,11 @@ ownership)
 names)
   # Latin-1 names: "caf\xe9.svg" and an output folder "out\xe9" (bytes, not UTF-8).
   still_frames
-  svg=$tmp/$'caf\xe9.svg' out=$tmp/$'out\xe9' fout=$tmp/$'fit\xe9'
+  svg=$tmp/$'caf\xe9.svg' out=$tmp/$'out\xe9' fout=$tmp/$'fit\xe9' fr=$tmp/$'fr\xe9'
+  png=$out/$'p\xe9.png' missing=$tmp/$'nothere\xe9.svg'
   cp "$data/examples/man.svg" "$svg"
-  cp -r "$tmp/frames" "$tmp/$'fr\xe9'"
-  "$bin" fit "$svg" --target "$tmp/$'fr\xe9'" -o "$fout" --iterations 20 --keyframes 3 --size 64 --quiet 2>"$tmp/e1"
+  cp -r "$tmp/frames" "$fr"
+  "$bin" fit "$svg" --target "$fr" -o "$fout" --iterations 20 --keyframes 3 --size 64 --quiet 2>"$tmp/e1"
   rc=$?
   check "fit with Latin-1 names exits 0 and writes every output" \
     '[[ $rc -eq 0 && -s $fout/animation.svg && -s $fout/animation.json && -s $fout/fit.json && -s $fout/preview.mp4 ]] || { cat "$tmp/e1"; false; }'
@@ -129,12 +131,12 @@ names)
   check "run with a Latin-1 input and run directory exits 0 and writes every output" \
     '[[ $rc -eq 0 && -s $out/animation.svg && -s $out/animation.json && -s $out/fit.json && -s $out/preview.mp4 && -s $out/report.html ]] || { cat "$tmp/e2"; false; }'
   check "... every JSON file of the run is valid" \
-    '"$py" -c "import json, sys, glob; [json.load(open(f, encoding=\"utf-8\")) for f in glob.glob(sys.argv[1].encode(\"utf-8\", \"surrogateescape\").decode(\"utf-8\", \"surrogateescape\") + \"/**/*.json\", recursive=True)]" "$out"'
+    '"$py" -c "import json, sys, glob; fs = glob.glob(sys.argv[1] + \"/**/*.json\", recursive=True) + glob.glob(sys.argv[1] + \"/.svgmotion/*.json\"); [json.load(open(f, encoding=\"utf-8\")) for f in fs]; sys.exit(0 if len(fs) >= 10 else 1)" "$out"'
   check "... report.html is valid UTF-8" '"$py" -c "import sys; open(sys.argv[1], encoding=\"utf-8\").read()" "$out/report.html"'
-  "$bin" render "$svg" -o "$out/$'p\xe9.png'" --size 32 2>"$tmp/e3"
+  "$bin" render "$svg" -o "$png" --size 32 2>"$tmp/e3"
   rc=$?
-  check "render with Latin-1 names" '[[ $rc -eq 0 && -s $out/$'"'"'p\xe9.png'"'"' ]] || { cat "$tmp/e3"; false; }'
-  "$bin" render "$tmp/$'nothere\xe9.svg'" -o "$tmp/x.png" 2>"$tmp/e4"
+  check "render with Latin-1 names" '[[ $rc -eq 0 && -s $png ]] && "$py" -c "import sys; open(sys.argv[1], encoding=\"utf-8\").read()" "$tmp/e3" || { cat "$tmp/e3"; false; }'
+  "$bin" render "$missing" -o "$tmp/x.png" 2>"$tmp/e4"
   check "an error naming a Latin-1 file is one line of valid UTF-8" \
     'one_line "$tmp/e4" && "$py" -c "import sys; open(sys.argv[1], encoding=\"utf-8\").read()" "$tmp/e4" && grep -q "nothere" "$tmp/e4"'
   ;;
@@ -159,7 +161,7 @@ resume)
   rm "$tmp/b/animation.svg"
   "${fit[@]}" -o "$tmp/b" --resume 2>"$tmp/e2"
   check "fit --resume after convergence gives the same animation.svg bytes" \
-    'cmp "$tmp/a/animation.svg" "$tmp/b/animation.svg" || cat "$tmp/e2"'
+    'cmp "$tmp/a/animation.svg" "$tmp/b/animation.svg" || { cat "$tmp/e2"; false; }'
   check "... and runs no coarse iteration more" \
     '"$py" -c "import json, sys; a, b = (json.load(open(f)) for f in sys.argv[1:]); sys.exit(0 if a[\"converged_at\"] == b[\"converged_at\"] == b[\"resumed_from\"] else 1)" "$tmp/a/fit.json" "$tmp/b/fit.json"'
   ;;
@@ -175,8 +177,8 @@ signals)
     kill -$sig $pid
     wait $pid
     rc=$?
-    check "SIG$sig stops run as Ctrl-C does: exit 130 and one line naming what was written" \
-      '[[ $rc -eq 130 ]] && one_line "$tmp/$sig.err" && grep -q "^svgmotion: interrupted (SIG$sig); $tmp/$sig holds .*animation.svg.*checkpoint.bin" "$tmp/$sig.err" || { echo rc=$rc; cat "$tmp/$sig.err"; false; }'
+    check "SIG$sig stops run as Ctrl-C does: exit 130, the fit's state written, a line naming what the run holds" \
+      '[[ $rc -eq 130 ]] && grep -q "^svgmotion: interrupted at iteration [0-9]*; wrote $tmp/$sig/animation.svg" "$tmp/$sig.err" && grep -q "^svgmotion: interrupted (SIG$sig); $tmp/$sig holds .*animation.svg.*checkpoint.bin" "$tmp/$sig.err" || { echo rc=$rc; cat "$tmp/$sig.err"; false; }'
   done
   ;;
 usage)
@@ -202,24 +204,24 @@ inputs)
   cp "$data/examples/man.svg" "$tmp/man.mp4"
   "$bin" fit "$data/examples/man.svg" --target "$tmp/man.mp4" -o "$tmp/o1" --keyframes 2 --size 32 2>"$tmp/e1"
   check "an SVG named .mp4 as the target: one line saying what it holds" \
-    '[[ $? -eq 1 ]] && one_line "$tmp/e1" && grep -qx "svgmotion: $tmp/man.mp4: not a readable video (it holds an SVG document)" "$tmp/e1" && [[ ! -e $tmp/o1 ]] || cat "$tmp/e1"'
+    '[[ $? -eq 1 ]] && one_line "$tmp/e1" && grep -qx "svgmotion: $tmp/man.mp4: not a readable video (it holds an SVG document)" "$tmp/e1" && [[ ! -e $tmp/o1 ]] || { cat "$tmp/e1"; false; }'
   # Frames wider than the limit are refused before one is decoded (a 2-frame clip: quick to make;
   # this one loaded in 42 s and 457 MB before).
   ffmpeg -nostdin -v error -f lavfi -i color=white:s=4112x2304:d=0.2 -r 10 -pix_fmt yuv420p "$tmp/wide.mp4"
   "$bin" fit "$data/examples/man.svg" --target "$tmp/wide.mp4" -o "$tmp/o2" --keyframes 2 --size 32 2>"$tmp/e2"
   check "a video wider than 4096 px: one line stating the limit" \
-    '[[ $? -eq 1 ]] && one_line "$tmp/e2" && grep -q "^svgmotion: $tmp/wide.mp4: frames of 4112x2304 are too large (limit 4096 px a side; " "$tmp/e2" || cat "$tmp/e2"'
+    '[[ $? -eq 1 ]] && one_line "$tmp/e2" && grep -q "^svgmotion: $tmp/wide.mp4: frames of 4112x2304 are too large (limit 4096 px a side; " "$tmp/e2" || { cat "$tmp/e2"; false; }'
   printf 'stages:\n  video:\n    plugin: [1, 2]\n' >"$tmp/bad_plugin.yaml"
   "$bin" run "$tmp/bad_plugin.yaml" --input "$data/examples/man.svg" -o "$tmp/o3" 2>"$tmp/e3"
   check "a plugin named by a list: one line naming the file, the key and the type" \
-    '[[ $? -eq 1 ]] && one_line "$tmp/e3" && grep -q "^svgmotion: $tmp/bad_plugin.yaml:3: stages.video.plugin: must name a video plugin" "$tmp/e3" && ! grep -q "internal error" "$tmp/e3" || cat "$tmp/e3"'
+    '[[ $? -eq 1 ]] && one_line "$tmp/e3" && grep -q "^svgmotion: $tmp/bad_plugin.yaml:3: stages.video.plugin: must name a video plugin" "$tmp/e3" && ! grep -q "internal error" "$tmp/e3" || { cat "$tmp/e3"; false; }'
   printf 'plugin_paths: [true]\n' >"$tmp/bad_paths.yaml"
   "$bin" run "$tmp/bad_paths.yaml" --input "$data/examples/man.svg" -o "$tmp/o4" 2>"$tmp/e4"
   check "plugin_paths: [true]: one line naming the file, the key and the type" \
-    '[[ $? -eq 1 ]] && one_line "$tmp/e4" && grep -qx "svgmotion: $tmp/bad_paths.yaml:1: plugin_paths: must be a list of folders (strings); true is not a string" "$tmp/e4" || cat "$tmp/e4"'
+    '[[ $? -eq 1 ]] && one_line "$tmp/e4" && grep -qx "svgmotion: $tmp/bad_paths.yaml:1: plugin_paths: must be a list of folders (strings); true is not a string" "$tmp/e4" || { cat "$tmp/e4"; false; }'
   "$bin" run --input "$data/examples/man.svg" -o "$tmp/o5" "plugin_paths=[1, 2]" 2>"$tmp/e5"
   check "plugin_paths=[1, 2]: one line naming the key and the type" \
-    '[[ $? -eq 1 ]] && one_line "$tmp/e5" && grep -q "plugin_paths: must be a list of folders (strings); 1 is not a string" "$tmp/e5" || cat "$tmp/e5"'
+    '[[ $? -eq 1 ]] && one_line "$tmp/e5" && grep -q "plugin_paths: must be a list of folders (strings); 1 is not a string" "$tmp/e5" || { cat "$tmp/e5"; false; }'
   ;;
 *) echo "unknown group $group"; exit 2 ;;
 esac

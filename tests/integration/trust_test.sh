@@ -148,8 +148,8 @@ wait $pid
 rc=$?
 check "Ctrl-C in run: exit 130 and one line naming what was written" \
   '[[ $rc -eq 130 ]] && grep -q "interrupted; $tmp/int holds .*checkpoint.bin" "$tmp/int.err" || { echo rc=$rc; cat "$tmp/int.err"; false; }'
-# Left by a kill -9 (by a process that has ended), beside a file of the user's named alike.
-sleep 30 & dead=$!; kill $dead; wait $dead 2>/dev/null
+# Left by a kill -9 (of a process that no longer runs), beside a file of the user's named alike.
+dead=$(($(cat /proc/sys/kernel/pid_max) + 1))  # a pid no process has
 touch "$tmp/int/.preview.mp4.svgm-tmp-$dead.mp4" "$tmp/int/.fit.json.svgm-tmp-$dead" "$tmp/int/thesis.part1.pdf"
 "${int[@]}" >/dev/null 2>&1 &
 pid=$!
