@@ -28,9 +28,9 @@ namespace svgm::cli {
 int bench_fit(const std::vector<std::string>& argv) {
   const Args a = parse_args("bench fit", argv, {"--target", "--iterations", "--keyframes", "--size", "--device"},
                             {"--json"});
-  if (a.positional.size() != 1) throw Error("bench fit: expected one input SVG");
+  if (a.positional.size() != 1) throw UsageError("bench fit: expected one input SVG");
   const auto target_path = a.get("--target");
-  if (!target_path) throw Error("bench fit: --target VIDEO is required (a video or a folder of frames)");
+  if (!target_path) throw UsageError("bench fit: --target VIDEO is required (a video or a folder of frames)");
   FitOptions fo;
   fo.iterations = a.get_int("--iterations", fo.iterations, 1, 10000000);
   const int keyframes = a.get_int("--keyframes", 15, 2, 1000);

@@ -21,7 +21,7 @@ namespace svgm::cli {
 int bench_target(const std::vector<std::string>& argv) {
   const Args a = parse_args("bench target", argv, {"--size", "--keyframes", "--denoise", "--repeat"},
                             {"--stabilise", "--json"});
-  if (a.positional.size() != 1) throw Error("bench target: expected one video (or folder of frames)");
+  if (a.positional.size() != 1) throw UsageError("bench target: expected one video (or folder of frames)");
   const std::string source = a.positional[0];
   const int width = a.get_int("--size", 256, 32, 4096);
   const int repeat = a.get_int("--repeat", 3, 1, 1000);

@@ -4,6 +4,7 @@
 #include <charconv>
 
 #include "svgmotion/error.h"
+#include "svgmotion/log.h"
 
 namespace svgm::cli {
 
@@ -34,11 +35,29 @@ double Args::get_double(const std::string& key, double fallback) const {
   return out;
 }
 
+bool is_log_flag(const std::string& arg, int& quiet, int& verbose) {
+  if (arg == "--quiet" || arg == "-q") ++quiet;
+  else if (arg == "-qq") quiet += 2;
+  else if (arg == "--verbose" || arg == "-v") ++verbose;
+  else return false;
+  return true;
+}
+
+void add_log_flags(int quiet, int verbose) {
+  static int q = 0, v = 0;
+  q += quiet;
+  v += verbose;
+  if (q && v) throw UsageError("--quiet and --verbose contradict each other");
+  log::set_console_level(v ? log::Level::Debug : q >= 2 ? log::Level::Error : q ? log::Level::Warning : log::Level::Info);
+}
+
 Args parse_args(const std::string& command, const std::vector<std::string>& argv,
                 const std::set<std::string>& valued, const std::set<std::string>& flags) {
   Args a;
+  int quiet = 0, verbose = 0;
   for (size_t i = 0; i < argv.size(); ++i) {
     std::string s = argv[i];
+    if (is_log_flag(s, quiet, verbose)) continue;
     if (s.size() > 1 && s[0] == '-' && s != "-") {
       std::string key = s, value;
       bool has_value = false;
@@ -49,19 +68,20 @@ Args parse_args(const std::string& command, const std::vector<std::string>& argv
       }
       if (valued.count(key)) {
         if (!has_value) {
-          if (i + 1 >= argv.size()) throw Error(command + ": " + key + " needs a value");
+          if (i + 1 >= argv.size()) throw UsageError(command + ": " + key + " needs a value");
           value = argv[++i];
         }
         a.options[key] = value;
       } else if (flags.count(key) && !has_value) {
         a.options[key] = "";
       } else {
-        throw Error(command + ": unknown option " + key + " (see svgmotion help)");
+        throw UsageError(command + ": unknown option " + key + " (see svgmotion help)");
       }
     } else {
       a.positional.push_back(s);
     }
   }
+  if (quiet || verbose) add_log_flags(quiet, verbose);
   return a;
 }
 

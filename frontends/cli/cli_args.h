@@ -8,7 +8,16 @@
 #include <string>
 #include <vector>
 
+#include "svgmotion/error.h"
+
 namespace svgm::cli {
+
+// A usage mistake on the command line (an unknown option, an option without its value, a
+// missing argument): main() exits with status 2 for it (README "Exit statuses"), not 1.
+class UsageError : public Error {
+ public:
+  explicit UsageError(const std::string& message) : Error(message) {}
+};
 
 struct Args {
   std::vector<std::string> positional;
@@ -21,8 +30,16 @@ struct Args {
   double get_double(const std::string& key, double fallback) const;
 };
 
-// `valued` options take a value, `flags` take none; anything else is an error.
+// `valued` options take a value, `flags` take none; anything else is an error (UsageError).
+// The global message levels (--quiet/-q, -qq, --verbose/-v) are taken wherever they stand as
+// options of their own, never as another option's value (`--prompt -q` is a prompt).
 Args parse_args(const std::string& command, const std::vector<std::string>& argv,
                 const std::set<std::string>& valued, const std::set<std::string>& flags);
+
+// Adds --quiet / --verbose counts (from before the command, or from parse_args) and sets the
+// console level (svgmotion/log.h); both at once is a UsageError.
+void add_log_flags(int quiet, int verbose);
+// Whether `arg` is one of those flags; adds its counts to `quiet` and `verbose`.
+bool is_log_flag(const std::string& arg, int& quiet, int& verbose);
 
 }  // namespace svgm::cli

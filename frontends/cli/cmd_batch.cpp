@@ -35,11 +35,11 @@ int cmd_batch(const std::vector<std::string>& argv) {
     if (p.find('=') != std::string::npos) overrides.push_back(p);
     else if (!manifest) manifest = p;
     else if (!config) config = fs::absolute(p);
-    else throw Error("batch: unexpected argument '" + p + "' (MANIFEST, one config file, then key.path=value)");
+    else throw UsageError("batch: unexpected argument '" + p + "' (MANIFEST, one config file, then key.path=value)");
   }
-  if (!manifest) throw Error("batch: no manifest (usage: svgmotion batch MANIFEST -o OUT_DIR)");
+  if (!manifest) throw UsageError("batch: no manifest (usage: svgmotion batch MANIFEST -o OUT_DIR)");
   const auto out = a.get("-o") ? a.get("-o") : a.get("--output");
-  if (!out) throw Error("batch: -o OUT_DIR is required");
+  if (!out) throw UsageError("batch: -o OUT_DIR is required");
   if (config && !fs::is_regular_file(*config)) throw Error(config->string() + ": cannot open: No such file");
 
   BatchOptions o;

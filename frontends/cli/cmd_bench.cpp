@@ -32,7 +32,7 @@ namespace {
 int bench_render(const std::vector<std::string>& argv) {
   const Args a = parse_args("bench render", argv, {"--frames", "--size", "--device", "--repeat"},
                             {"--json", "--profile"});
-  if (a.positional.size() != 1) throw Error("bench render: expected one input SVG");
+  if (a.positional.size() != 1) throw UsageError("bench render: expected one input SVG");
   const int frames = a.get_int("--frames", 15, 1, 1000);
   const int width = a.get_int("--size", 256, 1, 16384);
   const int repeat = a.get_int("--repeat", 15, 1, 100000);
@@ -160,7 +160,7 @@ int bench_raster(const std::vector<std::string>& argv) {
       std::printf("device: %s, peak memory %.1f MB\n", rt.info().name.c_str(), peak_rss_mb());
     return 0;
   }
-  if (a.positional.size() != 1) throw Error("bench raster: expected one input SVG (or --scaling)");
+  if (a.positional.size() != 1) throw UsageError("bench raster: expected one input SVG (or --scaling)");
   const Scene scene = read_svg_file(a.positional[0]);
   const IterationTimes t = time_iteration(rt, scene, width, frames, repeat);
   if (a.has("--json")) {

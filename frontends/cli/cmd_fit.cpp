@@ -18,8 +18,12 @@ namespace svgm::cli {
 
 namespace {
 
+// Ctrl-C, SIGTERM and SIGHUP all stop the fit early, which then writes its result so far.
 volatile std::sig_atomic_t g_interrupted = 0;
-extern "C" void on_sigint(int) { g_interrupted = 1; }
+extern "C" void on_stop_signal(int) { g_interrupted = 1; }
+void catch_stop_signals(bool on) {
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, on ? on_stop_signal : SIG_DFL);
+}
 
 // Above this many path segments a fit is slow enough to deserve a warning: every iteration draws
 // and differentiates every segment of every keyframe. Issue 12 measured 3 s per iteration for a
@@ -45,16 +49,16 @@ int cmd_fit(const std::vector<std::string>& argv) {
                              "--palette", "--device", "--mask-threshold", "--loop", "--deform", "--refine-size",
                              "--precision", "--inbetweens", "--max-segment", "--chroma-weight", "--denoise"},
                             {"--resume", "--no-track", "--no-gate", "--no-colour-correction", "--no-blur-matching", "--stabilise",
-                             "--group-transforms", "--all-iterations"});
+                             "--group-transforms", "--all-iterations", "--force"});
   if (a.positional.size() != 1)
-    throw Error("fit: expected one input SVG (svgmotion fit IN.svg --target VIDEO -o OUT_DIR)");
+    throw UsageError("fit: expected one input SVG (svgmotion fit IN.svg --target VIDEO -o OUT_DIR)");
   FitJob job;
   job.svg = a.positional[0];
   const auto target = a.get("--target");
-  if (!target) throw Error("fit: missing --target VIDEO|FRAMES_DIR");
+  if (!target) throw UsageError("fit: missing --target VIDEO|FRAMES_DIR");
   job.target = *target;
   const auto out = a.get("-o") ? a.get("-o") : a.get("--output");
-  if (!out) throw Error("fit: missing -o OUT_DIR");
+  if (!out) throw UsageError("fit: missing -o OUT_DIR");
   job.out = *out;
   job.options.iterations = a.get_int("--iterations", 2000, 1, 10000000);
   job.options.track = !a.has("--no-track");
@@ -95,11 +99,15 @@ int cmd_fit(const std::vector<std::string>& argv) {
   if (const auto p = a.get("--palette")) job.palette = *p;
   job.mask_threshold = a.get_double("--mask-threshold", job.mask_threshold);
   job.resume = a.has("--resume");
+  // The output folder becomes a run directory of its own (a user's folder is not taken over),
+  // and a `run` working in it is not overwritten (pipeline/run_directory.h).
+  job.claim_out = true;
+  job.force = a.has("--force");
   job.quiet = log::quiet();
   job.device = a.get("--device").value_or("auto");
   warn_if_slow(job.svg);
   g_interrupted = 0;
-  std::signal(SIGINT, on_sigint);
+  catch_stop_signals(true);
   // Fitting into a run directory (say with another target.mp4) refreshes its report.html.
   std::error_code ec;
   const bool run_dir = std::filesystem::is_directory(job.out / ".svgmotion", ec) &&
@@ -108,11 +116,11 @@ int cmd_fit(const std::vector<std::string>& argv) {
   try {
     rc = run_fit_job(job, [] { return g_interrupted != 0; });
   } catch (const Rejected&) {
-    std::signal(SIGINT, SIG_DFL);
+    catch_stop_signals(false);
     if (run_dir) write_run_report(job.out, job.device, job.quiet);
     throw;
   }
-  std::signal(SIGINT, SIG_DFL);
+  catch_stop_signals(false);
   if (run_dir && rc == 0) write_run_report(job.out, job.device, job.quiet);
   return rc;
 }

@@ -4,14 +4,16 @@
 #include <cstdio>
 #include <string>
 
+#include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "color/palette.h"
 #include "svgmotion/error.h"
 
 namespace svgm::cli {
 
-int cmd_palette(const std::vector<std::string>& args) {
-  if (args.size() != 1) throw Error("palette: usage: svgmotion palette N");
+int cmd_palette(const std::vector<std::string>& argv) {
+  const std::vector<std::string> args = parse_args("palette", argv, {}, {}).positional;
+  if (args.size() != 1) throw UsageError("palette: usage: svgmotion palette N");
   const std::string& s = args[0];
   int n = 0;
   auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), n);

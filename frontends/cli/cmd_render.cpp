@@ -37,10 +37,10 @@ int cmd_render(const std::vector<std::string>& argv) {
                             {"-o", "--output", "--size", "--background", "--device", "--time", "--fps"},
                             {"--strict"});
   if (a.positional.size() != 1)
-    throw Error("render: expected one input SVG (svgmotion render IN.svg -o OUT.png)");
+    throw UsageError("render: expected one input SVG (svgmotion render IN.svg -o OUT.png)");
   const std::string input = a.positional[0];
   const auto out = a.get("-o") ? a.get("-o") : a.get("--output");
-  if (!out || out->empty()) throw Error("render: missing -o OUT.png");
+  if (!out || out->empty()) throw UsageError("render: missing -o OUT.png");
   std::error_code ec;
   if (std::filesystem::equivalent(input, *out, ec))
     throw Error(*out + ": is the input file; choose another output name");

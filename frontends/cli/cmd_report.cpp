@@ -28,7 +28,7 @@ bool write_run_report(const std::filesystem::path& run, const std::string& devic
 
 int cmd_report(const std::vector<std::string>& argv) {
   const Args a = parse_args("report", argv, {"--device"}, {});
-  if (a.positional.size() != 1) throw Error("report: expected one run directory (svgmotion report RUN_DIR)");
+  if (a.positional.size() != 1) throw UsageError("report: expected one run directory (svgmotion report RUN_DIR)");
   ReportOptions o;
   o.device = a.get("--device").value_or("auto");
   const ReportResult r = write_report(a.positional[0], o);

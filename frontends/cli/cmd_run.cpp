@@ -21,9 +21,11 @@
 #include "pipeline/config_check.h"
 #include "pipeline/pipeline.h"
 #include "pipeline/plugin_host.h"
+#include "pipeline/run_directory.h"
 #include "report/rerun_command.h"
 #include "svgmotion/error.h"
 #include "svgmotion/log.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm::cli {
 
@@ -31,10 +33,20 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The signal that stopped the run (SIGINT from Ctrl-C, SIGTERM from kill or a scheduler's
+// time limit, SIGHUP from a closed terminal): each stops the running stage the same way.
 volatile std::sig_atomic_t g_interrupted = 0;
-extern "C" void on_run_sigint(int) {
-  g_interrupted = 1;
-  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C stops at once
+extern "C" void on_run_signal(int sig) {
+  g_interrupted = sig;
+  std::signal(sig, SIG_DFL);  // a second one stops at once
+}
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
+void catch_stop_signals(bool on) {
+  for (int sig : kStopSignals) std::signal(sig, on ? on_run_signal : SIG_DFL);
+}
+// "interrupted" after Ctrl-C, "interrupted (SIGTERM)" after the others.
+const char* stopped_by(int sig) {
+  return sig == SIGTERM ? "interrupted (SIGTERM)" : sig == SIGHUP ? "interrupted (SIGHUP)" : "interrupted";
 }
 
 bool looks_like_key(const std::string& s) {
@@ -102,7 +114,7 @@ std::string outputs_in(const fs::path& dir) {
 
 int cmd_run(const std::vector<std::string>& argv) {
   const Args a = parse_args("run", argv, {"--input", "--prompt", "-o", "--output", "--from", "--device"},
-                            {});
+                            {"--force"});
   // Positionals: an optional CONFIG.yaml first, then key.path=value overrides.
   std::optional<fs::path> file;
   std::vector<std::string> overrides;
@@ -116,7 +128,7 @@ int cmd_run(const std::vector<std::string>& argv) {
       if (fs::is_directory(p, ec)) throw Error(p + ": is a folder, not a config file");
       file = p;
     } else {
-      throw Error("run: unexpected argument '" + p + "' (one config file, then key.path=value)");
+      throw UsageError("run: unexpected argument '" + p + "' (one config file, then key.path=value)");
     }
   }
   ConfigOrigins origins;
@@ -137,7 +149,18 @@ int cmd_run(const std::vector<std::string>& argv) {
       throw Error("--from " + *from + ": no such stage (stages: grouper, recolorer, video, ranker, layers, tracker, fitter)");
   }
   std::vector<fs::path> extra;
-  for (const auto& p : config["plugin_paths"]) extra.push_back(p.get<std::string>());
+  if (config.contains("plugin_paths") && !config["plugin_paths"].is_null()) {
+    const nlohmann::json& paths = config["plugin_paths"];
+    const auto wrong = [&](const std::string& what) {
+      const std::string origin = origin_of_message(origins, "plugin_paths: ");
+      throw Error((origin.empty() ? std::string() : origin + ": ") + "plugin_paths: " + what);
+    };
+    if (!paths.is_array()) wrong("must be a list of folders (strings), not " + json_text(paths));
+    for (const auto& p : paths) {
+      if (!p.is_string()) wrong("must be a list of folders (strings); " + json_text(p) + " is not a string");
+      extra.push_back(p.get<std::string>());
+    }
+  }
   PluginHost host(plugin_search_path(extra));
   try {
     check_config(config, host);
@@ -153,13 +176,12 @@ int cmd_run(const std::vector<std::string>& argv) {
                   [] { return g_interrupted != 0; },
                   [&view](const std::string& line) { view.info(line); }});
   const fs::path dir = fs::absolute(config.value("output", "run"));
+  // A folder of the user's is never taken over (run_directory.h); one run at a time.
+  const RunLock lock(dir, a.has("--force"), run_output_names());
   // Every message of this run at debug level, appended to RUN_DIR/log.txt (svgmotion/log.h).
-  std::error_code dir_error;
-  fs::create_directories(dir, dir_error);
-  if (dir_error) throw Error(dir.string() + ": cannot create: " + dir_error.message());
   log::open_file(dir / "log.txt");
   g_interrupted = 0;
-  std::signal(SIGINT, on_run_sigint);
+  catch_stop_signals(true);
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<StageReport> reports;
   // The command (for report.html's "use this one") and the page, after a finished run and
@@ -178,15 +200,15 @@ int cmd_run(const std::vector<std::string>& argv) {
     view.end_line();
   } catch (const Rejected&) {
     view.end_line();
-    std::signal(SIGINT, SIG_DFL);
+    catch_stop_signals(false);
     report();
     throw;
   } catch (const Error&) {
     view.end_line();
-    std::signal(SIGINT, SIG_DFL);
+    catch_stop_signals(false);
     if (g_interrupted) {
-      log::error("interrupted; %s holds %s (run the same command again to continue)",
-                   dir.c_str(), outputs_in(dir).c_str());
+      log::error("%s; %s holds %s (run the same command again to continue)", stopped_by(g_interrupted),
+                 dir.c_str(), outputs_in(dir).c_str());
       return 130;
     }
     throw;
@@ -194,10 +216,10 @@ int cmd_run(const std::vector<std::string>& argv) {
   // The handler stays while the page is written (a few seconds): a Ctrl-C then says what the
   // run holds, as one during the stages does, instead of killing the process without a word.
   report();
-  std::signal(SIGINT, SIG_DFL);
+  catch_stop_signals(false);
   if (g_interrupted) {
-    log::error("interrupted; %s holds %s (run the same command again to continue)", dir.c_str(),
-               outputs_in(dir).c_str());
+    log::error("%s; %s holds %s (run the same command again to continue)", stopped_by(g_interrupted),
+               dir.c_str(), outputs_in(dir).c_str());
     return 130;
   }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -210,7 +232,7 @@ int cmd_run(const std::vector<std::string>& argv) {
                r.skipped ? "up to date" : (std::to_string(r.seconds) + " s").c_str());
   }
   if (all_skipped) std::printf("every stage is up to date\n");
-  std::printf("outputs in %s: animation.svg, preview.mp4, fit.json%s (total %.1f s)\n", dir.c_str(),
+  std::printf("outputs in %s: animation.svg, preview.mp4, fit.json%s (total %.1f s)\n", shown_path(dir).c_str(),
               report_written ? ", report.html" : "", total);
   return 0;
 }

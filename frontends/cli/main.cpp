@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "svgmotion/error.h"
 #include "svgmotion/log.h"
@@ -64,6 +65,8 @@ first stage runs.
   --prompt TEXT      the motion in words (prompt)
   -o, --output DIR   the run directory (output; default: run)
   --from STAGE       run STAGE and everything after it even if up to date
+  --force            use DIR even if it is a non-empty folder that is not a run directory
+                     (the run writes beside your files, never over one)
   --device D         OpenCL device: auto, cpu, gpu or part of a name (device)
   --quiet            no progress on stderr
   key.path=value     any setting, e.g. stages.fitter.iterations=500 stages.video.plugin=file
@@ -71,7 +74,7 @@ first stage runs.
 Writes animation.svg (your own document, only `d` animated), animation.json (Lottie),
 preview.mp4, fit.json and every intermediate. Exit status 3: the fit was rejected (animation.failed.svg, reasons in fit.json);
 4: every candidate video was flagged (set stages.ranker.accept_flagged=true to fit anyway);
-130: interrupted (run again to continue).
+130: interrupted by Ctrl-C, SIGTERM or SIGHUP (run again to continue).
 )"},
     {"fit", R"(usage: svgmotion fit IN.svg --target VIDEO|FRAMES_DIR -o OUT_DIR [options]
 
@@ -117,6 +120,8 @@ Fits the SVG's paths to a target video (mp4, webm, avi, mov, or a folder of numb
   --no-gate              write animation.svg even when the result gate rejects the fit
   --resume               continue from OUT_DIR/checkpoint.bin
   --no-track             no optical-flow warm start of new keyframes
+  --force                use OUT_DIR even if it is a non-empty folder that is not a run
+                         directory (written beside your files, never over one)
   --all-iterations       run every iteration (default: the fit ends once every keyframe is
                          active and the loss has stopped falling; fit.json converged_at)
   --device D             OpenCL device
@@ -205,28 +210,22 @@ int main(int argc, char** argv) {
   setenv("OPENCV_LOG_LEVEL", "SILENT", 0);
   setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);  // AV_LOG_QUIET
   std::vector<std::string> args(argv + 1, argv + argc);
-  // The global levels (svgmotion/log.h), before or after the command; a command never sees them.
+  // The global levels (svgmotion/log.h) before the command; after it, the command's own parser
+  // takes them (cli_args.h), so that an option's value is never taken for one (`--prompt -q`).
   {
     std::string line = "svgmotion";
     for (int i = 1; i < argc; ++i) line += std::string(" ") + argv[i];
     svgm::log::set_command_line(line);
     int quiet = 0, verbose = 0;
-    std::vector<std::string> rest;
-    for (const std::string& a : args) {
-      if (a == "--quiet" || a == "-q") ++quiet;
-      else if (a == "-qq") quiet += 2;
-      else if (a == "--verbose" || a == "-v") ++verbose;
-      else rest.push_back(a);
-    }
-    if (quiet && verbose) {
-      std::fputs("svgmotion: --quiet and --verbose contradict each other\n", stderr);
+    size_t lead = 0;
+    while (lead < args.size() && svgm::cli::is_log_flag(args[lead], quiet, verbose)) ++lead;
+    args.erase(args.begin(), args.begin() + static_cast<long>(lead));
+    try {
+      svgm::cli::add_log_flags(quiet, verbose);
+    } catch (const svgm::Error& e) {
+      std::fprintf(stderr, "svgmotion: %s\n", e.what());
       return 2;
     }
-    svgm::log::set_console_level(verbose ? svgm::log::Level::Debug
-                                 : quiet >= 2 ? svgm::log::Level::Error
-                                 : quiet ? svgm::log::Level::Warning
-                                         : svgm::log::Level::Info);
-    args = std::move(rest);
   }
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || (args[0] == "help" && args.size() == 1)) {
     std::fputs(kUsage, args.empty() ? stderr : stdout);
@@ -263,6 +262,9 @@ int main(int argc, char** argv) {
   } catch (const svgm::Rejected& e) {
     svgm::log::error("%s", e.what());
     return e.exit_status();
+  } catch (const svgm::cli::UsageError& e) {
+    svgm::log::error("%s", e.what());
+    return 2;
   } catch (const svgm::Error& e) {
     svgm::log::error("%s", e.what());
     return 1;

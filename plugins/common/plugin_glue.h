@@ -14,6 +14,7 @@
 #include "svgmotion/error.h"
 #include "svgmotion/log.h"
 #include "svgmotion/plugin.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm::plugin {
 
@@ -34,14 +35,17 @@ inline int call(StageFn fn, const svgm_host* host, const char* request, char** r
       host->log(host, static_cast<int>(level), m.c_str());
     });
   try {
-    json r = fn(json::parse(request), host);
+    // Paths that are not UTF-8 (file names are bytes) come back as they are on disk.
+    json req = json::parse(request);
+    svgm::unpack_raw_strings(req);
+    json r = fn(req, host);
     r["ok"] = true;
-    *response = copy_string(r.dump());
+    *response = copy_string(svgm::json_text(r));
     return 0;
   } catch (const svgm::Rejected& e) {  // a result that must not be trusted (svgmotion/error.h)
-    *response = copy_string(json{{"ok", false}, {"error", e.what()}, {"rejected", e.exit_status()}}.dump());
+    *response = copy_string(svgm::json_text(json{{"ok", false}, {"error", e.what()}, {"rejected", e.exit_status()}}));
   } catch (const std::exception& e) {
-    *response = copy_string(json{{"ok", false}, {"error", e.what()}}.dump());
+    *response = copy_string(svgm::json_text(json{{"ok", false}, {"error", e.what()}}));
   } catch (...) {
     *response = copy_string(R"({"ok": false, "error": "unknown failure"})");
   }

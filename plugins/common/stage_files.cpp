@@ -2,6 +2,7 @@
 #include "common/stage_files.h"
 #include "common/plugin_glue.h"
 #include "svgmotion/atomic_file.h"
+#include "svgmotion/temporary_name.h"
 
 #include <unistd.h>
 
@@ -20,6 +21,7 @@
 #include "fit/preview_video.h"
 #include "svgmotion/svg_reader.h"
 #include "video/candidates.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm::plugin {
 
@@ -37,7 +39,7 @@ void copy_atomic(const fs::path& from, const fs::path& to) {
         t != fs::file_type::regular)
       throw Error(to.string() + ": not a directory");
   }
-  const fs::path tmp = dest.string() + ".part" + std::to_string(::getpid());
+  const fs::path tmp = temporary_path(dest);
   fs::remove_all(tmp, ec);
   fs::copy(from, tmp, fs::copy_options::recursive, ec);
   if (ec) {
@@ -54,7 +56,7 @@ void copy_atomic(const fs::path& from, const fs::path& to) {
 }
 
 void write_json(const fs::path& file, const nlohmann::json& j) {
-  write_file_atomic(file, j.dump(2) + "\n");
+  write_file_atomic(file, json_text(j, 2) + "\n");
 }
 
 RgbaImage render_image(const Scene& scene, int width, const std::string& device) {

@@ -42,6 +42,7 @@
 #include "svgmotion/error.h"
 #include "svgmotion/png_io.h"
 #include "svgmotion/target_video.h"
+#include "svgmotion/utf8_text.h"
 
 namespace {
 
@@ -121,7 +122,7 @@ std::string ask(const Settings& s, const char* instructions, const json& content
                      {"messages", json::array({{{"role", "system"}, {"content", instructions}},
                                                {{"role", "user"}, {"content", content}}})},
                      {"temperature", 0}};
-  return chat::strip_fences(chat::answer_text(chat::post(s, body.dump(), host, "ranker llm")));
+  return chat::strip_fences(chat::answer_text(chat::post(s, svgm::json_text(body), host, "ranker llm")));
 }
 
 std::string findings(const svgm::CandidateScore& c) {

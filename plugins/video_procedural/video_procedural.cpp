@@ -16,6 +16,7 @@
 #include "svgmotion/svg_reader.h"
 #include "video/motion_plan.h"
 #include "video/procedural_video.h"
+#include "svgmotion/utf8_text.h"
 
 namespace {
 
@@ -104,7 +105,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
     if (host && host->progress) host->progress(host, (i + 1.0) / n, name);
   }
   report["candidates"] = made;
-  svgm::write_file_atomic(fs::path(req.at("run_dir").get<std::string>()) / "motion.json", report.dump(2) + "\n");
+  svgm::write_file_atomic(fs::path(req.at("run_dir").get<std::string>()) / "motion.json", svgm::json_text(report, 2) + "\n");
   return {{"message", std::to_string(n) + " candidates (" + summary + ")"}, {"candidates", made}};
 }
 

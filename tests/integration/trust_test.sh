@@ -148,7 +148,9 @@ wait $pid
 rc=$?
 check "Ctrl-C in run: exit 130 and one line naming what was written" \
   '[[ $rc -eq 130 ]] && grep -q "interrupted; $tmp/int holds .*checkpoint.bin" "$tmp/int.err" || { echo rc=$rc; cat "$tmp/int.err"; false; }'
-touch "$tmp/int/.preview.mp4.part999999.mp4" "$tmp/int/fit.json.part999999"  # left by a kill -9
+# Left by a kill -9 (of a process that no longer runs), beside a file of the user's named alike.
+dead=$(($(cat /proc/sys/kernel/pid_max) + 1))  # a pid no process has
+touch "$tmp/int/.preview.mp4.svgm-tmp-$dead.mp4" "$tmp/int/.fit.json.svgm-tmp-$dead" "$tmp/int/thesis.part1.pdf"
 "${int[@]}" >/dev/null 2>&1 &
 pid=$!
 # A second run on the same directory while the first resumes: refused in one line naming the
@@ -159,7 +161,7 @@ rc2=$?
 check "a second run on a busy run directory: one line, exit 1" \
   '[[ $rc2 -eq 1 && $(wc -l <"$tmp/second.err") -eq 1 ]] && grep -q "another svgmotion run is using this run directory (pid $pid)" "$tmp/second.err"'
 wait $pid
-check "the next run removes temporary files a killed run left" '[[ -z $(ls -a "$tmp/int" | grep "\.part") ]]'
+check "the next run removes temporary files a killed run left, and no file of the user's" '[[ -z $(ls -a "$tmp/int" | grep "svgm-tmp") && -e $tmp/int/thesis.part1.pdf ]]'
 check "... and the next run resumes the fit" \
   '"$py" -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d[\"resumed_from\"] >= 250 and d[\"iterations\"] == 3000 + d.get(\"refined\", {}).get(\"iterations\", 0) else 1)" "$tmp/int/fit.json"'
 

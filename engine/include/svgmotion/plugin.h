@@ -11,6 +11,10 @@
  *   "config": {...this stage's config section...}, "prompt": "...", "seed": 0}
  * Paths in "inputs"/"outputs" are relative to run_dir. A stage reads its inputs and writes
  * exactly the promised outputs there; the host checks they exist afterwards.
+ * File names are bytes: a string that is not valid UTF-8 (a Latin-1 run directory, say) is
+ * sent with U+FFFD in place of each stray byte, and its bytes, in hex, under
+ * "raw_strings": {"<JSON pointer, e.g. /run_dir>": "2f746d70..."}; put them back before
+ * opening the path (svgmotion/utf8_text.h unpack_raw_strings does). The response must be UTF-8.
  * Response: {"ok": true, "message": "...", ...} or {"ok": false, "error": "one line"}.
  *
  * Contract:

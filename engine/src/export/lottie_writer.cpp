@@ -10,6 +10,7 @@
 #include "svg/svg_number.h"
 #include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm {
 
@@ -37,7 +38,7 @@ class JsonText {
     return *this;
   }
   JsonText& coord(double v) { return num(v, coord_scale_); }
-  JsonText& str(const std::string& t) { return raw(nlohmann::json(t).dump()); }
+  JsonText& str(const std::string& t) { return raw(json_text(nlohmann::json(t))); }
   // {"a":0,"k":v}
   JsonText& fixed(double v, double scale) {
     raw("{\"a\":0,\"k\":");

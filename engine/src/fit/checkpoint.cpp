@@ -1,4 +1,5 @@
-// The checkpoint file (see checkpoint.h): "SVGMFIT2", the key, then counts and raw arrays.
+// The checkpoint file (see checkpoint.h): "SVGMFIT3", the key, then counts and raw arrays; the
+// schedule's state last ("SVGMFIT2" files, without it, are still read).
 #include "fit/checkpoint.h"
 
 #include <cstring>
@@ -15,7 +16,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr char kMagic[8] = {'S', 'V', 'G', 'M', 'F', 'I', 'T', '2'};
+constexpr char kMagic[8] = {'S', 'V', 'G', 'M', 'F', 'I', 'T', '3'};
+constexpr char kMagicWithoutSchedule[8] = {'S', 'V', 'G', 'M', 'F', 'I', 'T', '2'};
 
 template <class T>
 void put(std::ostream& f, const std::vector<T>& v) {
@@ -43,6 +45,9 @@ void save_checkpoint(const fs::path& file, const std::string& key, const FitStat
   for (const auto* v : {&s.params, &s.m_params, &s.v_params, &s.offsets, &s.m_offsets, &s.v_offsets,
                         &s.field, &s.m_field, &s.v_field})
     put(f, *v);
+  put(f, std::vector<int>{s.converged ? 1 : 0, s.last_activation});
+  put(f, std::vector<float>{s.newest_ref, s.lr_scale});
+  put(f, s.plateau_ref);
   write_file_atomic(file, f.str());
 }
 
@@ -53,7 +58,8 @@ FitState load_checkpoint(const fs::path& file, const std::string& key) {
   std::vector<char> k;
   std::vector<int> head;
   FitState s;
-  if (!f.read(magic, sizeof magic) || std::memcmp(magic, kMagic, sizeof magic) != 0)
+  if (!f.read(magic, sizeof magic) ||
+      (std::memcmp(magic, kMagic, sizeof magic) != 0 && std::memcmp(magic, kMagicWithoutSchedule, sizeof magic) != 0))
     throw Error(file.string() + ": not an svgmotion checkpoint");
   if (!get(f, k) || !get(f, head) || head.size() != 2 || !get(f, s.steps))
     throw Error(file.string() + ": truncated checkpoint");
@@ -64,6 +70,17 @@ FitState load_checkpoint(const fs::path& file, const std::string& key) {
     if (!get(f, *v)) throw Error(file.string() + ": truncated checkpoint");
   s.iteration = head[0];
   s.active = head[1];
+  if (std::memcmp(magic, kMagic, sizeof magic) == 0) {
+    std::vector<int> ints;
+    std::vector<float> floats;
+    if (!get(f, ints) || ints.size() != 2 || !get(f, floats) || floats.size() != 2 || !get(f, s.plateau_ref))
+      throw Error(file.string() + ": truncated checkpoint");
+    s.schedule = true;
+    s.converged = ints[0] != 0;
+    s.last_activation = ints[1];
+    s.newest_ref = floats[0];
+    s.lr_scale = floats[1];
+  }
   return s;
 }
 

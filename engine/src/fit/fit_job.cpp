@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -28,11 +29,13 @@
 #include "fit/preview_video.h"
 #include "fit/segment_split.h"
 #include "fit/smil_writer.h"
+#include "pipeline/run_directory.h"
 #include "raster/render_image.h"
 #include "svgmotion/error.h"
 #include "svgmotion/log.h"
 #include "svgmotion/svg_reader.h"
 #include "svgmotion/target_video.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm {
 
@@ -234,10 +237,13 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   }
 
   std::error_code ec;
+  std::optional<RunLock> lock;
+  if (job.claim_out) lock.emplace(out, job.force, fit_output_names());
   fs::create_directories(out, ec);
   if (ec) throw Error(out.string() + ": cannot create: " + ec.message());
   // Refuse an unwritable folder or a non-file output now, not after minutes of fitting.
-  if (::access(out.c_str(), W_OK | X_OK) != 0) throw Error(out.string() + ": cannot write there (permission denied)");
+  if (::access(out.c_str(), W_OK | X_OK) != 0)
+    throw Error(out.string() + ": cannot write (" + (errno == EROFS ? "read-only file system" : "permission denied") + ")");
   for (const char* f : {"animation.svg", "animation.failed.svg", "animation.json", "animation.failed.json",
                         "preview.mp4", "fit.json", "checkpoint.bin"})
     output_target(out / f);
@@ -379,14 +385,15 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                           group_membership(fitter.fit_plan(), fitter.raster_plan());
   if (job.resume) {
     if (!fs::exists(ckpt)) throw Error(ckpt.string() + ": no checkpoint to resume from");
-    fitter.restore(load_checkpoint(ckpt, key));
-    log::info("svgmotion: resuming at iteration %d", fitter.iteration());
+    fitter.resume(load_checkpoint(ckpt, key));
+    log::info("svgmotion: resuming at iteration %d%s", fitter.iteration(),
+              fitter.converged() ? " (the loss had stopped falling)" : "");
   } else if (job.resume_unfinished && fs::exists(ckpt)) {
     // An interrupted fit of exactly this problem goes on; anything else starts afresh.
     try {
       FitState st = load_checkpoint(ckpt, key);
       if (st.iteration < coarse_options.iterations) {
-        fitter.restore(st);
+        fitter.resume(st);
         if (job.progress) job.progress(work(st.iteration) / total_work,
                                        "resuming at iteration " + std::to_string(st.iteration));
         else if (!job.quiet) log::info("svgmotion: resuming at iteration %d", st.iteration);
@@ -490,7 +497,8 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     total_work = work(total_iters);
   }
   // The refinement: every keyframe at the finer width, from the coarse result (not
-  // checkpointed: a resumed fit redoes it from the coarse stage's last checkpoint).
+  // checkpointed: a resumed fit redoes it from the checkpoint above, which records that the
+  // coarse stage had ended, so it is the same refinement).
   std::unique_ptr<Fitter> fine;
   std::vector<int> refine_kept_coarse;  // keyframes the refinement's guard put back
   std::vector<float> refine_loss_ratio;  // per keyframe: refined / coarse loss at the coarse width
@@ -691,7 +699,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                          {"from_size", {size.width, size.height}},
                          {"kept_coarse_keyframes", refine_kept_coarse},
                          {"loss_ratio_at_coarse_width", refine_loss_ratio}};
-  write_file_atomic(out / "fit.json", report.dump(2) + "\n");
+  write_file_atomic(out / "fit.json", json_text(report, 2) + "\n");
   if (stopped) {
     log::error("interrupted at iteration %d; wrote %s (continue with --resume)",
                  (fine ? coarse_iters : 0) + final_fit.iteration(), anim.c_str());

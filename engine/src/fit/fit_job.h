@@ -101,6 +101,11 @@ struct FitJob {
   int denoise_radius = kDefaultDenoiseRadius;
   double mask_threshold = 0.97;
   bool resume = false;
+  // `svgmotion fit`: claim `out` as a run directory and hold its lock (pipeline/run_directory.h)
+  // before writing there; `force` takes a non-empty folder that is not one. The pipeline's
+  // fitter leaves this off: its run holds the lock.
+  bool claim_out = false;
+  bool force = false;
   // Resume from out/checkpoint.bin when it holds an unfinished fit of exactly this problem
   // (the pipeline's fitter after a Ctrl-C); otherwise fit from the start.
   bool resume_unfinished = false;

@@ -743,6 +743,12 @@ FitState Fitter::state() {
   s.iteration = iteration_;
   s.active = active_;
   s.steps = steps_;
+  s.schedule = true;
+  s.converged = converged_;
+  s.last_activation = last_activation_;
+  s.newest_ref = newest_ref_;
+  s.lr_scale = lr_scale_;
+  s.plateau_ref = plateau_ref_;
   auto rd = [&](cl::Buffer& b, std::vector<float>& v, size_t n) {
     v.resize(n);
     if (n) rt_.queue().enqueueReadBuffer(b, CL_TRUE, 0, n * sizeof(float), v.data());
@@ -793,5 +799,14 @@ void Fitter::restore(const FitState& s) {
   steps_ = s.steps;
 }
 
-}  // namespace svgm
+void Fitter::resume(const FitState& s) {
+  restore(s);
+  if (!s.schedule) return;
+  converged_ = s.converged && opt_.plateau_window > 0;
+  last_activation_ = s.last_activation;
+  newest_ref_ = s.newest_ref;
+  plateau_ref_ = s.plateau_ref;
+  if (s.lr_scale != lr_scale_) scale_learning_rates(s.lr_scale / lr_scale_);
+}
 
+}  // namespace svgm

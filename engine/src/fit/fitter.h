@@ -194,6 +194,16 @@ struct FitState {
   std::vector<float> params, m_params, v_params;
   std::vector<float> offsets, m_offsets, v_offsets;  // free per-point offsets
   std::vector<float> field, m_field, v_field;        // field coefficients
+  // Where the schedule stands (Fitter::resume), so a resumed fit takes the very steps the
+  // uninterrupted one would: whether the loss had stopped falling (a fit stopped after that,
+  // in its refinement or while writing, goes straight on to them), the activation and plateau
+  // tests' references and the learning rates' scale after rollbacks. `schedule` is false for
+  // a checkpoint written before these were kept.
+  bool schedule = false;
+  bool converged = false;
+  int last_activation = 0;
+  float newest_ref = -1, lr_scale = 1;
+  std::vector<float> plateau_ref;
 };
 
 class Fitter {
@@ -234,7 +244,12 @@ class Fitter {
   const RenderSize& size() const { return size_; }
 
   FitState state();
+  // The parameters and Adam's state of `s`; the schedule's tests start afresh from here (a
+  // rollback, the refinement's guard).
   void restore(const FitState& s);
+  // restore() and, when `s` has it, the schedule too (FitState::schedule): a resumed fit goes on
+  // exactly as it would have (a converged one stays converged unless every iteration is asked).
+  void resume(const FitState& s);
   // Multiplies both Adam learning rates by `s` from the next iteration on (the result gate's
   // rollback retries a diverged stretch with smaller steps).
   void scale_learning_rates(float s);

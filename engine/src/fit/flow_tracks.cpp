@@ -12,6 +12,7 @@
 
 
 #include "svgmotion/error.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm {
 
@@ -80,7 +81,7 @@ void write_tracks(const std::filesystem::path& file, const std::vector<FlowField
   for (const FlowField& f : flows)
     j["flows"].push_back({{"grid", f.grid}, {"width", f.width}, {"height", f.height}, {"dx", f.dx},
                           {"dy", f.dy}, {"certainty", f.certainty}});
-  write_file_atomic(file, j.dump() + "\n");
+  write_file_atomic(file, json_text(j) + "\n");
 }
 
 std::vector<FlowField> read_tracks(const std::filesystem::path& file) {

@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "svgmotion/atomic_file.h"
+#include "svgmotion/temporary_name.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -131,7 +132,7 @@ void write_preview_video(const fs::path& file, int frames, int panels,
   std::string ext = target.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   const bool webm = ext == ".webm";
-  tmp.path = dir / ("." + target.filename().string() + ".part" + std::to_string(::getpid()) + (webm ? ".webm" : ".mp4"));
+  tmp.path = temporary_path(dir / target.filename(), webm ? ".webm" : ".mp4");
   const auto api = cv::videoio_registry::hasBackend(cv::CAP_FFMPEG) ? cv::CAP_FFMPEG : cv::CAP_ANY;
 
   for (int k = 0; k < frames; ++k) {

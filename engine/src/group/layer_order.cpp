@@ -21,6 +21,7 @@
 #include "svgmotion/error.h"
 #include "svgmotion/render_size.h"
 #include "svgmotion/svg_reader.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm {
 
@@ -557,7 +558,7 @@ LayerResult run_layers(const fs::path& svg, const fs::path& target, const fs::pa
     }
   }
   if (!written) copy_atomic(svg, out_svg);
-  write_file_atomic(out_json, layers_json(r, options).dump(2) + "\n");
+  write_file_atomic(out_json, json_text(layers_json(r, options), 2) + "\n");
   return r;
 }
 

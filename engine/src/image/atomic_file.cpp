@@ -1,5 +1,6 @@
 // Atomic file writes (see svgmotion/atomic_file.h).
 #include "svgmotion/atomic_file.h"
+#include "svgmotion/temporary_name.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -19,7 +20,34 @@ namespace {
 // The kernel's own limit on links followed in one lookup (Linux MAXSYMLINKS).
 constexpr int kMaxLinks = 40;
 
+constexpr std::string_view kTempMark = ".svgm-tmp-";
+
 }  // namespace
+
+fs::path temporary_path(const fs::path& target, std::string_view suffix) {
+  // The pid keeps two processes writing the same file from sharing a temporary.
+  return target.parent_path() /
+         ("." + target.filename().string() + std::string(kTempMark) + std::to_string(::getpid()) + std::string(suffix));
+}
+
+long temporary_name_pid(std::string_view name) {
+  for (std::string_view ext : {".mp4", ".webm"})
+    if (name.size() > ext.size() && name.substr(name.size() - ext.size()) == ext) {
+      const std::string_view rest = name.substr(0, name.size() - ext.size());
+      if (const long pid = temporary_name_pid(rest); pid >= 0) return pid;
+    }
+  const size_t at = name.rfind(kTempMark);
+  // "." + a name of at least one character before the mark, digits after it.
+  if (name.size() < 2 || name[0] != '.' || at == std::string_view::npos || at < 2) return -1;
+  const std::string_view digits = name.substr(at + kTempMark.size());
+  if (digits.empty() || digits.size() > 10) return -1;
+  long pid = 0;
+  for (char c : digits) {
+    if (c < '0' || c > '9') return -1;
+    pid = pid * 10 + (c - '0');
+  }
+  return pid;
+}
 
 fs::path output_target(const fs::path& file) {
   fs::path p = file;
@@ -43,8 +71,7 @@ fs::path output_target(const fs::path& file) {
 
 void write_file_atomic(const fs::path& file, std::string_view bytes) {
   const fs::path target = output_target(file);
-  // The pid keeps two processes writing the same file from sharing a temporary.
-  const fs::path tmp = target.string() + ".part" + std::to_string(::getpid());
+  const fs::path tmp = temporary_path(target);
   auto fail = [&](const std::string& why) {
     ::unlink(tmp.c_str());
     throw Error(file.string() + ": cannot write: " + why);

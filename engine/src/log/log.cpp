@@ -1,13 +1,16 @@
 // Levelled logging (see svgmotion/log.h).
 #include "svgmotion/log.h"
 
+#include <cerrno>
 #include <cstdarg>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <mutex>
 #include <sys/time.h>
 
 #include "svgmotion/error.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm::log {
 
@@ -84,10 +87,11 @@ void open_file(const std::filesystem::path& path) {
   Logger& l = logger();
   std::lock_guard lock(l.mutex);
   std::FILE* f = std::fopen(path.c_str(), "a");
-  if (!f) throw Error(path.string() + ": cannot open the log file for writing");
+  if (!f) throw Error(path.string() + ": cannot open the log file for writing (" + std::strerror(errno) + ")");
   if (l.file) std::fclose(l.file);
   l.file = f;
-  std::fprintf(f, "%s ===== svgmotion %s: %s\n", timestamp().c_str(), SVGM_VERSION, l.command_line.c_str());
+  std::fprintf(f, "%s ===== svgmotion %s: %s\n", timestamp().c_str(), SVGM_VERSION,
+               shown_utf8(l.command_line).c_str());
   std::fflush(f);
 }
 
@@ -102,7 +106,10 @@ void set_forward(std::function<void(Level, const std::string&)> forward) {
   logger().forward = std::move(forward);
 }
 
-void write(Level level, const std::string& message) {
+void write(Level level, const std::string& raw_message) {
+  // A message naming a file whose name is not UTF-8 shows U+FFFD for the stray bytes
+  // (svgmotion/utf8_text.h): the console, log.txt and the host's log all get valid UTF-8.
+  const std::string message = shown_utf8(raw_message);
   Logger& l = logger();
   std::function<void(Level, const std::string&)> forward;
   {

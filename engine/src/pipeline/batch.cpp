@@ -230,7 +230,7 @@ BatchOutcome run_batch(const std::vector<BatchItem>& items, const BatchOptions& 
     ++position;
     const BatchItem& item = items[i];
     const fs::path dir = o.out_dir / item.id;
-    fs::create_directories(dir, ec);
+    fs::create_directories(dir / ".svgmotion", ec);  // a run directory (run_directory.h): batch.log goes in first
     const std::string tag = "[" + std::to_string(position) + "/" + std::to_string(outcome.items) + "] " + item.id;
     if (o.say) o.say(tag + ": running");
     const std::optional<BatchItemResult> before = read_record(dir / kRecord);

@@ -6,6 +6,7 @@
 #include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
 #include "video/candidates.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm {
 
@@ -13,7 +14,7 @@ namespace fs = std::filesystem;
 
 void check_candidate_choice(const nlohmann::json& v) {
   if (v.is_null() || (v.is_string() && v.get<std::string>().empty())) return;
-  const std::string shown = v.is_string() ? v.get<std::string>() : v.dump();
+  const std::string shown = v.is_string() ? v.get<std::string>() : json_text(v);
   if (!v.is_string())
     throw Error(std::string(kChooseKey) + ": must name a file in the run's candidates/ folder (such as 01.mp4), not " + shown);
   const std::string s = v.get<std::string>();
@@ -58,7 +59,7 @@ bool apply_candidate_choice(const fs::path& run, const std::string& choose) {
     ranking["ranker_chosen"] = ranker_pick;
     ranking["chosen_by"] = kChooseKey;
   }
-  write_file_atomic(ranking_file, ranking.dump(2) + "\n");
+  write_file_atomic(ranking_file, json_text(ranking, 2) + "\n");
   return true;
 }
 

@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,6 +17,7 @@
 #include "svgmotion/svg_reader.h"
 #include "svgmotion/target_video.h"
 #include "video/prompt_parse.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm {
 
@@ -44,7 +46,7 @@ std::string number(double x) {
   return buf;
 }
 
-std::string shown(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
+std::string shown(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : json_text(v); }
 
 void whole(const nlohmann::json& c, const std::string& key, long long lo, long long hi) {
   const nlohmann::json& v = at(c, key);
@@ -192,8 +194,10 @@ void check_config(const nlohmann::json& c, const PluginHost& host) {
     throw Error(output + ": exists and is not a folder (the run directory)");
   fs::path probe = fs::absolute(output, ec);
   while (!probe.empty() && !fs::exists(probe, ec)) probe = probe.parent_path();
+  // Named by the folder that cannot be written (the run directory or the nearest existing
+  // folder above it), with the reason.
   if (!probe.empty() && ::access(probe.c_str(), W_OK | X_OK) != 0)
-    throw Error(output + ": cannot write there (" + probe.string() + " is not writable)");
+    throw Error(probe.string() + ": cannot write (" + (errno == EROFS ? "read-only file system" : "permission denied") + ")");
 }
 
 }  // namespace svgm

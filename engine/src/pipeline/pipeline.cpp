@@ -6,16 +6,10 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
-#include <cctype>
-#include <cerrno>
-#include <cstring>
 
 #include "svgmotion/error.h"
 #include "svgmotion/log.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm {
 
@@ -79,42 +73,6 @@ void write_atomic(const fs::path& file, const std::string& text) {
   write_file_atomic(file, text);
 }
 
-// One run per run directory at a time: an advisory lock on .svgmotion/lock, held for the
-// whole run and released by the kernel however the process ends. Holding it, the run also
-// removes temporary files ("NAME.part<pid>...") that a killed run left behind.
-class RunLock {
- public:
-  explicit RunLock(const fs::path& run) {
-    std::error_code ec;
-    fs::create_directories(run / ".svgmotion", ec);
-    const fs::path file = run / ".svgmotion" / "lock";
-    fd_ = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ < 0) throw Error(run.string() + ": cannot lock the run directory: " + std::strerror(errno));
-    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-      char pid[32] = {0};
-      const ssize_t n = ::pread(fd_, pid, sizeof pid - 1, 0);
-      ::close(fd_);
-      throw Error(run.string() + ": another svgmotion run is using this run directory" +
-                  (n > 0 ? " (pid " + std::string(pid, static_cast<size_t>(n)) + ")" : std::string()));
-    }
-    const std::string me = std::to_string(::getpid());
-    if (::ftruncate(fd_, 0) == 0 && ::pwrite(fd_, me.data(), me.size(), 0) < 0) {}
-    for (const fs::path& dir : {run, run / "candidates"})
-      for (const auto& e : fs::directory_iterator(dir, ec)) {
-        const std::string name = e.path().filename().string();
-        const size_t at = name.find(".part");
-        if (at != std::string::npos && at + 5 < name.size() && std::isdigit(static_cast<unsigned char>(name[at + 5])))
-          fs::remove_all(e.path(), ec);
-      }
-  }
-  ~RunLock() { ::close(fd_); }
-  RunLock(const RunLock&) = delete;
-  RunLock& operator=(const RunLock&) = delete;
-
- private:
-  int fd_ = -1;
-};
-
 // The ranker may flag every candidate (chaotic motion, invented content, ...): fitting one of
 // them would hand the user a broken animation, so the run stops here with the reasons, unless
 // stages.ranker.accept_flagged is set. Read from ranking.json each run (also when the ranker
@@ -154,9 +112,6 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
   }
   const fs::path run = fs::absolute(config.value("output", "run"));
   std::error_code ec;
-  fs::create_directories(run, ec);
-  if (ec) throw Error(run.string() + ": cannot create: " + ec.message());
-  const RunLock lock(run);
   // The input is copied into the run directory, so the run is self-contained; the copy only
   // changes (and invalidates later stages) when the input's content does.
   {
@@ -184,7 +139,7 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
     // so choosing another one does not ask the ranker again.
     nlohmann::json hashed = section;
     if (sf.stage == "ranker" && hashed.is_object()) hashed.erase("choose");
-    h.add(hashed.dump());
+    h.add(json_text(hashed));
     h.add(config.value("prompt", ""));
     h.add(std::to_string(config.value("seed", 0)));
     for (const auto& [k, v] : sf.inputs.items()) {
@@ -201,7 +156,7 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
     }
     StageReport r{sf.stage, plugin, up_to_date, 0};
     log::debug("%s: plugin %s (%s), inputs %s, key %s: %s", sf.stage.c_str(), plugin.c_str(),
-               info ? info->path.c_str() : "not found", sf.inputs.dump().c_str(), h.hex().c_str(),
+               info ? info->path.c_str() : "not found", json_text(sf.inputs).c_str(), h.hex().c_str(),
                up_to_date ? "up to date" : forced ? "forced by --from" : "runs");
     if (!up_to_date) {
       if (on_stage) on_stage(sf.stage + " (" + plugin + ")");
@@ -217,11 +172,11 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
           throw Error(sf.stage + " plugin '" + plugin + "' did not write its output " + v.get<std::string>());
       r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       log::debug("%s: done in %.2f s, wrote %s; the plugin answered %s", sf.stage.c_str(), r.seconds,
-                 sf.outputs.dump().c_str(), response.dump().c_str());
+                 json_text(sf.outputs).c_str(), json_text(response).c_str());
       // A plugin answering "cache": false (say, a network fallback) is asked again next run.
       if (response.value("cache", true))
-        write_atomic(manifest, nlohmann::json{{"stage", sf.stage}, {"plugin", plugin}, {"hash", h.hex()},
-                                              {"seconds", r.seconds}}.dump(2) + "\n");
+        write_atomic(manifest, json_text(nlohmann::json{{"stage", sf.stage}, {"plugin", plugin}, {"hash", h.hex()},
+                                                        {"seconds", r.seconds}}, 2) + "\n");
       else
         fs::remove(manifest, ec);
     }

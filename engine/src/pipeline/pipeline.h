@@ -34,7 +34,8 @@ struct StageReport {
 };
 
 // `on_stage` is told when a stage starts (for progress). Throws svgm::Error on any failure;
-// what earlier stages wrote stays in the run directory.
+// what earlier stages wrote stays in the run directory. The caller holds a RunLock on the run
+// directory (config "output"; run_directory.h), which also made sure it is one.
 std::vector<StageReport> run_pipeline(const nlohmann::json& config, const PluginHost& host,
                                       const std::optional<std::string>& from,
                                       const std::function<void(const std::string&)>& on_stage = {});

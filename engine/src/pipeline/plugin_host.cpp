@@ -11,6 +11,7 @@
 #include "pipeline/module_check.h"
 #include "svgmotion/error.h"
 #include "svgmotion/log.h"
+#include "svgmotion/utf8_text.h"
 
 #ifndef SVGM_VERSION
 #define SVGM_VERSION "0.0.0"
@@ -152,7 +153,10 @@ nlohmann::json PluginHost::run(const std::string& stage, const std::string& name
     throw Error(who + " not found" + why + "; available " + stage + " plugins: " +
                 (have.empty() ? "none" : have));
   }
-  const std::string text = request.dump();
+  // A path that is not UTF-8 travels as its shown form plus its bytes (svgmotion/utf8_text.h).
+  nlohmann::json packed = request;
+  if (packed.is_object()) pack_raw_strings(packed);
+  const std::string text = json_text(packed);
   char* response = nullptr;
   const svgm_host host = {SVGM_PLUGIN_ABI, sizeof(svgm_host), SVGM_VERSION, const_cast<HostHooks*>(&hooks_),
                           host_log, host_progress, host_cancelled};

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "svgmotion/error.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm {
 
@@ -12,7 +13,7 @@ PluginOptions::PluginOptions(const nlohmann::json& options, std::string who,
     : o_(options.is_null() ? nlohmann::json::object() : options), who_(std::move(who)) {
   std::string list;
   for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-  if (!o_.is_object()) fail("options must be a map (" + list + "), not " + options.dump());
+  if (!o_.is_object()) fail("options must be a map (" + list + "), not " + json_text(options));
   for (const auto& [key, value] : o_.items()) {
     bool ok = false;
     for (const char* k : known) ok = ok || key == k;
@@ -23,7 +24,7 @@ PluginOptions::PluginOptions(const nlohmann::json& options, std::string who,
 double PluginOptions::number(const char* key, double fallback) const {
   if (!has(key)) return fallback;
   const nlohmann::json& v = o_.at(key);
-  if (!v.is_number()) fail(std::string("options.") + key + " must be a number, not " + v.dump());
+  if (!v.is_number()) fail(std::string("options.") + key + " must be a number, not " + json_text(v));
   const double d = v.get<double>();
   if (!std::isfinite(d)) fail(std::string("options.") + key + " must be a finite number");
   return d;
@@ -34,21 +35,21 @@ int PluginOptions::whole(const char* key, int fallback, int lo, int hi) const {
   const double d = number(key, 0);
   if (d != std::round(d) || d < lo || d > hi)
     fail(std::string("options.") + key + " must be a whole number in " + std::to_string(lo) + ".." +
-         std::to_string(hi) + ", not " + o_.at(key).dump());
+         std::to_string(hi) + ", not " + json_text(o_.at(key)));
   return static_cast<int>(d);
 }
 
 std::string PluginOptions::string(const char* key, const std::string& fallback) const {
   if (!has(key)) return fallback;
   const nlohmann::json& v = o_.at(key);
-  if (!v.is_string()) fail(std::string("options.") + key + " must be a string, not " + v.dump());
+  if (!v.is_string()) fail(std::string("options.") + key + " must be a string, not " + json_text(v));
   return v.get<std::string>();
 }
 
 bool PluginOptions::flag(const char* key, bool fallback) const {
   if (!has(key)) return fallback;
   const nlohmann::json& v = o_.at(key);
-  if (!v.is_boolean()) fail(std::string("options.") + key + " must be true or false, not " + v.dump());
+  if (!v.is_boolean()) fail(std::string("options.") + key + " must be true or false, not " + json_text(v));
   return v.get<bool>();
 }
 

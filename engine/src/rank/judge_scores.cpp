@@ -5,6 +5,7 @@
 #include <cctype>
 
 #include "svgmotion/error.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm {
 
@@ -66,7 +67,7 @@ JudgeScore read_judge_score(const std::string& candidate, const std::string& ans
   if (v.is_boolean()) s.viable = v.get<bool>();
   else if (v.is_string() && (lower(v.get<std::string>()) == "yes" || lower(v.get<std::string>()) == "no"))
     s.viable = lower(v.get<std::string>()) == "yes";
-  else throw bad("\"viable\" is " + v.dump() + ", not true or false");
+  else throw bad("\"viable\" is " + json_text(v) + ", not true or false");
   if (a.contains("reason") && a["reason"].is_string()) s.reason = a["reason"].get<std::string>();
   return s;
 }

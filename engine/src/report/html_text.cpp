@@ -4,9 +4,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include "svgmotion/utf8_text.h"
+
 namespace svgm {
 
-std::string html_escape(std::string_view text) {
+std::string html_escape(std::string_view raw) {
+  // The page is UTF-8: a name that is not (a Latin-1 file name) shows U+FFFD for its stray bytes.
+  const std::string text = shown_utf8(raw);
   std::string out;
   out.reserve(text.size());
   for (const char c : text) {

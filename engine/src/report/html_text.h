@@ -8,7 +8,8 @@
 
 namespace svgm {
 
-// & < > " ' as character references; everything else (UTF-8 included) as it is.
+// & < > " ' as character references; everything else (UTF-8 included) as it is, except bytes
+// that are not UTF-8, which become U+FFFD (svgmotion/utf8_text.h).
 std::string html_escape(std::string_view text);
 
 // A number for display: `digits` significant digits (printf %g), "-" when not finite.

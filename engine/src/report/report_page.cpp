@@ -30,6 +30,7 @@
 #include "svgmotion/render_size.h"
 #include "svgmotion/svg_reader.h"
 #include "video/candidates.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm {
 
@@ -214,7 +215,7 @@ std::string candidate_scores(const json& c, const json& judge, const std::string
         s += "<p class=\"svgm-judge\">Judge: ";
         for (const auto& [k, v] : j.items())
           if (k != "candidate" && k != "answer" && k != "reason" && (v.is_string() || v.is_boolean() || v.is_number()))
-            s += html_escape(k) + " " + html_escape(v.is_string() ? v.get<std::string>() : v.dump()) + "; ";
+            s += html_escape(k) + " " + html_escape(v.is_string() ? v.get<std::string>() : json_text(v)) + "; ";
         s += html_escape(text_of(j, "reason")) + "</p>";
       }
   return s;

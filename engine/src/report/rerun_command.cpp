@@ -7,6 +7,7 @@
 #include "pipeline/candidate_choice.h"
 #include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm {
 
@@ -26,7 +27,7 @@ void record_run_command(const fs::path& run, const std::vector<std::string>& arg
   fs::create_directories(run / ".svgmotion", ec);
   const nlohmann::json j = {{"cwd", cwd.string()}, {"exe", exe.string()}, {"command", "run"}, {"args", args},
                          {"prompt", prompt}};
-  write_file_atomic(command_file(run), j.dump(2) + "\n");
+  write_file_atomic(command_file(run), json_text(j, 2) + "\n");
 }
 
 std::string shell_quote(const std::string& w) {

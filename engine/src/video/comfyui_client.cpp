@@ -11,6 +11,7 @@
 #include "video/command_runner.h"
 #include "video/command_video.h"
 #include "video/hosted_session.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm {
 
@@ -181,7 +182,7 @@ std::vector<fs::path> generate_comfyui_candidates(const ComfyuiOptions& options,
     progress(0, "uploading the image");
     const json up = s.parse(upload_url, s.post_file(upload_url, "image", image));
     if (!up.is_object() || !up.contains("name") || !up["name"].is_string())
-      s.fail("no \"name\" in the reply from " + upload_url + ": " + s.excerpt(up.dump(), 120));
+      s.fail("no \"name\" in the reply from " + upload_url + ": " + s.excerpt(json_text(up), 120));
     std::string uploaded = up["name"].get<std::string>();
     if (up.contains("subfolder") && up["subfolder"].is_string() &&
         !up["subfolder"].get<std::string>().empty())
@@ -193,14 +194,14 @@ std::vector<fs::path> generate_comfyui_candidates(const ComfyuiOptions& options,
         {"prompt", fill_comfyui_workflow(workflow, uploaded, full_prompt, candidate_seed,
                                          options.frames)},
         {"client_id", "svgmotion"}};
-    const json queued = s.parse(prompt_url, s.post_json(prompt_url, body.dump()));
+    const json queued = s.parse(prompt_url, s.post_json(prompt_url, json_text(body)));
     if (!queued.is_object() || !queued.contains("prompt_id") ||
         !(queued["prompt_id"].is_string() || queued["prompt_id"].is_number()))
       s.fail("no \"prompt_id\" in the reply from " + prompt_url + ": " +
-             s.excerpt(queued.dump(), 120));
+             s.excerpt(json_text(queued), 120));
     const std::string prompt_id = queued["prompt_id"].is_string()
                                       ? queued["prompt_id"].get<std::string>()
-                                      : queued["prompt_id"].dump();
+                                      : json_text(queued["prompt_id"]);
     s.job = "prompt " + prompt_id;
     s.log("queued as prompt " + prompt_id + " (seed " + std::to_string(candidate_seed) + ")");
 

@@ -7,6 +7,7 @@
 #include "svgmotion/target_video.h"
 #include "pipeline/plugin_options.h"
 #include "video/command_runner.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm {
 
@@ -37,11 +38,11 @@ CommandVideoOptions parse_command_video_options(const nlohmann::json& options) {
   o.prompt_template = opt.string("prompt_template", o.prompt_template);
   if (opt.has("argv")) {
     const auto& a = opt.at("argv");
-    if (!a.is_array()) fail("options.argv must be a list of strings, not " + a.dump());
+    if (!a.is_array()) fail("options.argv must be a list of strings, not " + json_text(a));
     for (const auto& e : a) {
       if (e.is_string()) o.argv.push_back(e.get<std::string>());
-      else if (e.is_number()) o.argv.push_back(e.dump());
-      else fail("options.argv elements must be strings, not " + e.dump());
+      else if (e.is_number()) o.argv.push_back(json_text(e));
+      else fail("options.argv elements must be strings, not " + json_text(e));
     }
   }
   if (o.argv.empty())

@@ -10,6 +10,7 @@
 #include "video/candidate_pool.h"
 #include "video/command_runner.h"
 #include "video/command_video.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm {
 
@@ -25,9 +26,9 @@ std::vector<std::string> string_list(const PluginOptions& opt, const char* key) 
   if (!opt.has(key)) return out;
   const json& v = opt.at(key);
   if (v.is_string()) return {v.get<std::string>()};
-  if (!v.is_array()) opt.fail(std::string("options.") + key + " must be a list of strings, not " + v.dump());
+  if (!v.is_array()) opt.fail(std::string("options.") + key + " must be a list of strings, not " + json_text(v));
   for (const auto& e : v) {
-    if (!e.is_string()) opt.fail(std::string("options.") + key + " must be a list of strings, not " + v.dump());
+    if (!e.is_string()) opt.fail(std::string("options.") + key + " must be a list of strings, not " + json_text(v));
     out.push_back(e.get<std::string>());
   }
   return out;
@@ -51,7 +52,7 @@ std::string video_extension(const std::string& url) {
   return is_video_extension(ext) ? ext : "mp4";
 }
 
-std::string as_text(const json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
+std::string as_text(const json& v) { return v.is_string() ? v.get<std::string>() : json_text(v); }
 
 }  // namespace
 
@@ -69,7 +70,7 @@ HttpJobOptions parse_http_job_options(const json& options) {
   o.body = opt.at("body");
   if (opt.has("headers")) {
     const json& h = opt.at("headers");
-    if (!h.is_object()) opt.fail("options.headers must be a map of header name to value, not " + h.dump());
+    if (!h.is_object()) opt.fail("options.headers must be a map of header name to value, not " + json_text(h));
     for (const auto& [k, v] : h.items()) {
       if (!v.is_string()) opt.fail("options.headers." + k + " must be a string");
       o.headers.emplace_back(k, v.get<std::string>());
@@ -177,7 +178,7 @@ std::string fill_job_url(const std::string& url, const json& reply, const std::s
     const json v = field_at(reply, path);
     if (!(v.is_string() || v.is_number()) || as_text(v).empty())
       throw Error(std::string(kWho) + ": the submit reply has no field " + path + " for {" + name + "}: " +
-                  one_line(reply.dump(), 120));
+                  one_line(json_text(reply), 120));
     out += as_text(v);
     i = close + 1;
   }
@@ -207,7 +208,7 @@ std::vector<fs::path> generate_http_job_candidates(const HttpJobOptions& o, cons
     HostedSession s(kWho, "candidate " + nn + ": ", o.limits, http, h, key);
     if (h.progress) h.progress(0, "submitting");
     const json body = fill_job_body(o.body, full_prompt, png, seed + i, o.frames, o.fps);
-    const json submitted = s.parse(o.submit_url, s.post_json(o.submit_url, body.dump()));
+    const json submitted = s.parse(o.submit_url, s.post_json(o.submit_url, json_text(body)));
     std::string status_url, result_url;
     try {
       status_url = fill_job_url(o.status_url, submitted, o.id_field);
@@ -234,7 +235,7 @@ std::vector<fs::path> generate_http_job_candidates(const HttpJobOptions& o, cons
     if (!result_url.empty()) reply = s.parse(result_url, s.get(result_url));
     json video = field_at(reply, o.video_url_field);
     if (video.is_array() && !video.empty()) video = video[0];
-    if (!video.is_string()) s.fail(s.job + " finished without a video URL at " + o.video_url_field + ": " + s.excerpt(reply.dump(), 120));
+    if (!video.is_string()) s.fail(s.job + " finished without a video URL at " + o.video_url_field + ": " + s.excerpt(json_text(reply), 120));
     if (!is_http_url(video.get<std::string>()))
       s.fail(s.job + " finished with a video URL that is " + scheme_for_message(video.get<std::string>()) + ", not http(s)");
     const std::string url = video.get<std::string>();

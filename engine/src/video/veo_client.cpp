@@ -9,6 +9,7 @@
 #include "video/candidate_pool.h"
 #include "video/command_runner.h"
 #include "video/command_video.h"
+#include "svgmotion/utf8_text.h"
 
 namespace svgm {
 
@@ -67,7 +68,7 @@ VeoOperation read_veo_operation(const json& op) {
   if (op.contains("error") && op["error"].is_object()) {
     const json& e = op["error"];
     r.error = one_line(e.value("message", std::string("no message"))) +
-              (e.contains("code") ? " (code " + e["code"].dump() + ")" : "");
+              (e.contains("code") ? " (code " + json_text(e["code"]) + ")" : "");
     return r;
   }
   const json response = op.value("response", json::object());
@@ -104,10 +105,10 @@ std::vector<fs::path> generate_veo_candidates(const VeoOptions& o, const fs::pat
     HostedSession s(kWho, "candidate " + nn + ": ", o.limits, http, h, key);
     if (h.progress) h.progress(0, "submitting");
     const json body = veo_request(o, png, full_prompt, seed + i);
-    const json submitted = s.parse(submit_url, s.post_json(submit_url, body.dump()));
+    const json submitted = s.parse(submit_url, s.post_json(submit_url, json_text(body)));
     if (!submitted.is_object() || !submitted.contains("name") || !submitted["name"].is_string() ||
         submitted["name"].get<std::string>().empty())
-      s.fail("no operation \"name\" in the reply from " + submit_url + ": " + s.excerpt(submitted.dump(), 120));
+      s.fail("no operation \"name\" in the reply from " + submit_url + ": " + s.excerpt(json_text(submitted), 120));
     const std::string name = submitted["name"].get<std::string>();
     s.job = "operation " + name;
     s.log("submitted as operation " + name + (o.send_seed ? " (seed " + std::to_string(seed + i) + ")" : ""));
