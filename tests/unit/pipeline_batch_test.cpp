@@ -340,4 +340,21 @@ TEST_SUITE("pipeline") {
     CHECK(j["counts"]["failed"] == 1);
     CHECK(j["counts"]["pending"] == 1);
   }
+
+  TEST_CASE("a summary assembled before another one was written does not replace it") {
+    test::TempDir dir("svgm_batch");
+    const std::vector<BatchItem> items = {{"a", "/a.svg", "", {}, {}, 2}};
+    // Tickets "NEXT WRITTEN": assemblies 1..3 started, number 5 already written (a shard that
+    // began later finished first), so the one starting now (4) read older records.
+    write(dir.path / ".summary.lock", "3 5\n");
+    write_batch_summary(items, dir.path);
+    CHECK(!fs::exists(dir.path / "summary.csv"));
+    write(dir.path / ".summary.lock", "5 5\n");
+    write_batch_summary(items, dir.path);
+    CHECK(fs::exists(dir.path / "summary.csv"));
+    std::ifstream lock(dir.path / ".summary.lock");
+    std::string tickets;
+    std::getline(lock, tickets);
+    CHECK(tickets == "6 6");
+  }
 }
