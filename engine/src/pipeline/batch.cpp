@@ -362,7 +362,10 @@ BatchOutcome run_batch(const std::vector<BatchItem>& items, const BatchOptions& 
     CommandResult r;
     BatchItemResult res;
     try {
-      if (!wait_for_earlier_run(dir, o.cancelled, [&](const std::string& line) { if (o.say) o.say(tag + ": " + line); })) {
+      const auto say_item = [&](const std::string& line) {
+        if (o.say) o.say(tag + ": " + line);
+      };
+      if (!wait_for_earlier_run(dir, o.cancelled, say_item)) {
         res.id = item.id;
         res.status = "interrupted";
         res.reason = "stopped; run the batch again to resume";

@@ -243,7 +243,8 @@ void flatten(const YAML::Node& n, const std::string& prefix, std::vector<std::st
     if (path.size() >= static_cast<size_t>(kMaxYamlDepth)) {
       for (size_t i = 0; i < path.size(); ++i)
         for (size_t j = i + 1; j < path.size(); ++j)
-          if (path[i]->is(*path[j])) throw Error(where + ": overrides contain themselves (a YAML alias inside its own anchor)");
+          if (path[i]->is(*path[j]))
+            throw Error(where + ": overrides contain themselves (a YAML alias inside its own anchor)");
       throw Error(where + ": overrides nested too deeply (more than " + std::to_string(kMaxYamlDepth) + " levels)");
     }
     path.push_back(&n);
@@ -368,13 +369,15 @@ std::vector<BatchItem> read_batch_manifest(const fs::path& file) {
   const bool yaml = ext == ".yaml" || ext == ".yml";
   if (!yaml && ext != ".csv") throw Error(name + ": a manifest is .csv, .yaml or .yml");
   if (const uintmax_t size = fs::file_size(file, ec); !ec && size > kMaxManifestBytes)
-    throw Error(name + ": larger than " + std::to_string(kMaxManifestBytes >> 20) + " MB (split it into several manifests)");
+    throw Error(name + ": larger than " + std::to_string(kMaxManifestBytes >> 20) +
+                " MB (split it into several manifests)");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw Error(name + ": cannot open");
   std::ostringstream ss;
   ss << in.rdbuf();
   std::string text = ss.str();
-  if (const int line = nul_line(text)) throw Error(name + ":" + std::to_string(line) + ": a NUL byte (a manifest is text)");
+  if (const int line = nul_line(text))
+    throw Error(name + ":" + std::to_string(line) + ": a NUL byte (a manifest is text)");
   // A byte order mark (spreadsheets write one) would be part of the first column's name.
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
   std::vector<BatchItem> items = yaml ? read_yaml(file, text) : read_csv(file, text);

@@ -63,7 +63,8 @@ std::optional<Shard> shard_from_slurm(const std::function<const char*(const char
     throw Error("SLURM_ARRAY_TASK_ID=" + std::to_string(id) + ": above SLURM_ARRAY_TASK_MAX=" + std::to_string(*max));
   if (!count && max) {
     if (*max < min)
-      throw Error("SLURM_ARRAY_TASK_MAX=" + std::to_string(*max) + ": below SLURM_ARRAY_TASK_MIN=" + std::to_string(min));
+      throw Error("SLURM_ARRAY_TASK_MAX=" + std::to_string(*max) + ": below SLURM_ARRAY_TASK_MIN=" +
+                  std::to_string(min));
     count = (*max - min) / step + 1;
     if (*count > kMaxShards)
       throw Error("SLURM_ARRAY_TASK_MAX=" + std::to_string(*max) + ": more than " + std::to_string(kMaxShards) +
