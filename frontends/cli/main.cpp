@@ -11,6 +11,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/commands.h"
+#include "pipeline/batch.h"
 #include "svgmotion/error.h"
 #include "svgmotion/log.h"
 
@@ -149,23 +150,27 @@ The format follows OUT's extension, and OUT may not be the input.
 
 Runs `svgmotion run` for every item of MANIFEST (CSV with a header row, or YAML) in
 OUT_DIR/<id>/, one process per item, so a failing item never stops the others. Finished items
-are up to date on a re-run (the runs' manifests), failed and interrupted ones resume. After
-every item OUT_DIR/summary.csv and summary.json list every item: status (done, failed,
+are up to date on a re-run (the runs' manifests), failed and interrupted ones resume. Each
+item's record is OUT_DIR/<id>/batch.json; when the shard ends (and at most once a minute while
+it runs) OUT_DIR/summary.csv and summary.json list every item: status (done, failed,
 rejected, flagged, interrupted, pending), reason, seconds, fidelity (worst keyframe PSNR and
 IoU), peak memory.
 
   MANIFEST           columns/keys: input (required), id, prompt, target (a video: fitted to it
-                     through the file provider), overrides ("key=value ..."); paths relative to it
+                     through the file provider), overrides ("key.path=value ...": settings,
+                     not options); paths relative to it
   -o, --output DIR   where the run directories and the summary go (required)
   CONFIG.yaml        a config for every item; key.path=value settings follow (items' last)
   --shard I/N        take items I, I+N, I+2N, ... (counted from 0); under a Slurm job array
                      the array variables pick the shard
   --device D         OpenCL device for every item
   --pin              pin PoCL's threads to cores (only for a batch alone on its machine)
+  --summary          only write the summary from the items' records (no item runs)
   --quiet            no line per item
 
 Threads follow SLURM_CPUS_PER_TASK and the CPUs this process may use. Exit status 0 when
-every item of the shard is done, 1 when some are not (see the summary), 130 interrupted.
+every item of the shard is done, 1 when some are not (see the summary), 2 for a bad Slurm
+array variable, 130 interrupted.
 )"},
     {"report", "usage: svgmotion report RUN_DIR [--device D]\n\nWrites RUN_DIR/report.html: the run's self-contained preview page (the animation with play/pause\nand a scrubber, the input, every candidate video with the ranker's scores and the command that\nfits another one, the target beside the fit, the losses, the stage timings). `run` writes it\nat the end of every run.\n"},
     {"plugins", "usage: svgmotion plugins\n\nLists the stage plugins found (stage, name, version, path) and every\nrefused module with its reason.\n"},
@@ -205,6 +210,7 @@ const char* command_help(const std::string& cmd) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  svgm::follow_batch_parent();  // an item of `svgmotion batch` ends with its batch
   // Bad input must give our one error line, not FFmpeg's or OpenCV's chatter before it. These
   // are read when OpenCV first loads its video back end, i.e. after this point.
   setenv("OPENCV_LOG_LEVEL", "SILENT", 0);

@@ -2,6 +2,10 @@
 # `svgmotion batch` integration tests: batch_test.sh MODE SVGMOTION_BINARY SOURCE_DIR
 #   local  the command itself: manifest errors, a failing item among good ones, the summary,
 #          the re-run that skips finished items, two shards of one manifest
+#   robust bad Slurm variables (exit 2), a folder as the manifest, options among overrides,
+#          a reason that is not UTF-8, a second batch of a running shard, SIGKILL of a batch
+#          (its item's run ends too), a re-run waiting for a run still in the item's folder,
+#          the summary on demand
 #   slurm  a real one-node Slurm (munged, slurmctld, slurmd on localhost, from the Debian
 #          packages, with a config written here and stopped on exit) runs
 #          examples/slurm/svgmotion_array.sbatch as a 3-task array over 6 items with
@@ -114,6 +118,87 @@ local)
   "$bin" batch "$tmp/in/manifest.csv" -o "$tmp/none" --shard 2/2 >/dev/null 2>"$tmp/e4"
   rc=$?
   check "a bad --shard is one line, exit 1" '[[ $rc -eq 1 && ! -e $tmp/none ]] && grep -qx "svgmotion: --shard 2/2: I must be in 0..1 and N at least 1" "$tmp/e4"'
+  finish
+  ;;
+robust)
+  # Bad input and crossed batches, each one line and nothing half-done; the items here never
+  # fit (they fail at their config check or wait on a generator that sleeps), so this is quick.
+  make_items 1  # d0, broken
+  export SVGMOTION_CACHE_DIR=$tmp/cache
+  alive() { [[ -e /proc/$1 ]] && ! grep -q '^[0-9]* ([^)]*) Z' "/proc/$1/stat" 2>/dev/null; }
+  # Slurm's variables, full-string and range-checked: 2^32 tasks was a count of 0 (SIGFPE).
+  SLURM_ARRAY_TASK_ID=0 SLURM_ARRAY_TASK_COUNT=4294967296 "$bin" batch "$tmp/in/manifest.csv" -o "$tmp/none" \
+    >"$tmp/o1" 2>"$tmp/e1"
+  rc=$?
+  check "SLURM_ARRAY_TASK_COUNT=4294967296: exit 2, one line naming the variable and value, nothing written" \
+    '[[ $rc -eq 2 && ! -s $tmp/o1 && ! -e $tmp/none &&
+       $(cat "$tmp/e1") == "svgmotion: SLURM_ARRAY_TASK_COUNT=4294967296: must be a whole number from 1 to 1000000" ]]'
+  mkdir "$tmp/in/folder.csv"
+  "$bin" batch "$tmp/in/folder.csv" -o "$tmp/none" >/dev/null 2>"$tmp/e2"
+  rc=$?
+  check "a folder given as the manifest: one line" \
+    '[[ $rc -eq 1 && ! -e $tmp/none && $(cat "$tmp/e2") == "svgmotion: $tmp/in/folder.csv: is a directory, not a manifest" ]]'
+  # An override that `svgmotion run` would read as its own -o: the item ran elsewhere, "done".
+  printf 'id,input,prompt,target,overrides\nd0,d0.svg,it moves,t0,-o=%s\n' "$tmp/elsewhere" >"$tmp/in/opt.csv"
+  "$bin" batch "$tmp/in/opt.csv" -o "$tmp/none" "${small[@]}" >/dev/null 2>"$tmp/e3"
+  rc=$?
+  want="svgmotion: $tmp/in/opt.csv:2: override '-o=$tmp/elsewhere' is a command-line option, not a setting (overrides are key.path=value)"
+  check "an option among an item's overrides is refused before anything runs" \
+    '[[ $rc -eq 1 && ! -e $tmp/none && ! -e $tmp/elsewhere && $(cat "$tmp/e3") == "$want" ]]'
+  # A reason that is not UTF-8 (a Latin-1 file name in the run's error line) stopped the batch
+  # with "internal error: [json.exception.type_error.316]" and no record.
+  printf 'id,input\nlatin,caf\xe9.svg\n' >"$tmp/in/latin.csv"
+  "$bin" batch "$tmp/in/latin.csv" -o "$tmp/latin" >/dev/null 2>"$tmp/e4"
+  rc=$?
+  check "an item whose error line is not UTF-8 is recorded failed, the summary written" \
+    '[[ $rc -eq 1 ]] && ! grep -q "internal error" "$tmp/e4" && grep -q "\"status\": \"failed\"" "$tmp/latin/latin/batch.json" &&
+       grep -q "\"failed\": 1" "$tmp/latin/summary.json"'
+  # An item whose run waits on a generator that sleeps (video `command`): the batch stays busy.
+  printf '#!/bin/sh\necho $$ >"%s"\nexec sleep 300\n' "$tmp/sleeper.pid" >"$tmp/sleeper.sh"
+  chmod +x "$tmp/sleeper.sh"
+  printf 'id,input,prompt\nh,d0.svg,it moves\n' >"$tmp/in/hang.csv"
+  hang=(stages.video.plugin=command "stages.video.options={argv: [\"$tmp/sleeper.sh\", \"{out}\"], timeout_s: 600, candidates: 1}")
+  "$bin" batch "$tmp/in/hang.csv" -o "$tmp/h" "${hang[@]}" >"$tmp/h1" 2>&1 &
+  batch_pid=$!
+  for _ in $(seq 300); do [[ -s $tmp/sleeper.pid ]] && break; sleep 0.1; done
+  run_pid=$(cat "$tmp/h/h/.svgmotion/lock" 2>/dev/null)
+  sleeper=$(cat "$tmp/sleeper.pid" 2>/dev/null)
+  check "the item's run is working (its generator started)" '[[ -n $run_pid && -n $sleeper ]] && alive "$run_pid"'
+  "$bin" batch "$tmp/in/hang.csv" -o "$tmp/h" "${hang[@]}" >/dev/null 2>"$tmp/e5"
+  rc=$?
+  check "a second batch of the same shard into the same folder is refused, naming the first one's pid" \
+    '[[ $rc -eq 1 && $(cat "$tmp/e5") == "svgmotion: $tmp/h: shard 0/1 is already running into this folder (batch pid $batch_pid)" ]]'
+  kill -9 "$batch_pid"
+  wait "$batch_pid" 2>/dev/null
+  for _ in $(seq 100); do alive "$run_pid" || alive "$sleeper" || break; sleep 0.1; done
+  check "SIGKILL of the batch ends its item's run and the run's generator (no orphan)" \
+    '! alive "$run_pid" && ! alive "$sleeper"'
+  for p in $run_pid $sleeper; do alive "$p" && kill "$p" 2>/dev/null; done  # (only if the check failed)
+  # A run still holding the item's run directory (an orphan of some earlier batch): the lock
+  # file holds its pid. The re-run waits for it instead of recording "another svgmotion run".
+  flock "$tmp/h/h/.svgmotion/lock" sh -c 'echo 4242 >"$0"; while [ ! -e "$1" ]; do sleep 0.1; done' \
+    "$tmp/h/h/.svgmotion/lock" "$tmp/release" &
+  holder=$!
+  for _ in $(seq 100); do [[ $(cat "$tmp/h/h/.svgmotion/lock") == 4242 ]] && break; sleep 0.1; done
+  "$bin" batch "$tmp/in/hang.csv" -o "$tmp/h" stages.video.plugin=file >"$tmp/h3" 2>&1 &
+  rerun=$!
+  for _ in $(seq 300); do grep -q "waiting for" "$tmp/h3" && break; sleep 0.1; done
+  check "a re-run finding the item's run directory in use waits, naming that run's pid" \
+    'grep -qx "batch: \[1/1\] h: waiting for svgmotion run pid 4242, still working in $tmp/h/h (an earlier batch.s?)" "$tmp/h3"'
+  touch "$tmp/release"
+  wait "$holder"
+  wait "$rerun"
+  rc=$?
+  check "... then runs the item itself: the run's own result, not 'another svgmotion run'" \
+    '[[ $rc -eq 1 ]] && grep -q "waiting for" "$tmp/h3" && grep -q "h: failed (stages.video.path: " "$tmp/h3" &&
+       ! grep -q "another svgmotion run" "$tmp/h3" "$tmp/h/summary.csv"'
+  # The summary on demand, from the items' records.
+  rm -f "$tmp/h/summary.csv" "$tmp/h/summary.json"
+  "$bin" batch "$tmp/in/hang.csv" -o "$tmp/h" --summary >"$tmp/o6" 2>&1
+  rc=$?
+  check "batch --summary rebuilds the summary from the records without running anything" \
+    '[[ $rc -eq 0 && $(cat "$tmp/o6") == "batch: 0 of 1 items done; summary in $tmp/h/summary.csv" &&
+       $(cut -d, -f1,2 "$tmp/h/summary.csv" | tr "\n" " ") == "id,status h,failed " ]]'
   finish
   ;;
 slurm)
@@ -232,7 +317,7 @@ PY'
   finish
   ;;
 *)
-  echo "usage: batch_test.sh local|slurm SVGMOTION_BINARY SOURCE_DIR" >&2
+  echo "usage: batch_test.sh local|robust|slurm SVGMOTION_BINARY SOURCE_DIR" >&2
   exit 2
   ;;
 esac

@@ -1,7 +1,10 @@
 // Batch manifests, shards and the summary (pipeline/batch_manifest.h, batch_shard.h, batch.h):
 // what a manifest yields (paths resolved, ids, overrides), the exact error for each malformed
-// manifest, that N shards cover every item exactly once, the Slurm array arithmetic, the run
-// arguments of an item, and a summary rebuilt from records with missing items pending.
+// manifest, that N shards cover every item exactly once, the Slurm array arithmetic and its
+// range checks, the run arguments of an item, and a summary rebuilt from records with missing
+// items pending. The security issue's manifest findings each have a check here: alias bombs
+// stop at the config loader's cap, overrides are settings and never options, odd ids, a BOM,
+// a NUL byte, a folder, YAML keys and values of the wrong kind.
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -13,6 +16,7 @@
 #include "pipeline/batch.h"
 #include "pipeline/batch_manifest.h"
 #include "pipeline/batch_shard.h"
+#include "pipeline/config.h"
 #include "svgmotion/error.h"
 #include "temp_dir.h"
 
@@ -117,6 +121,111 @@ TEST_SUITE("pipeline") {
     CHECK(error_of(dir.path / "missing.csv") == d + "/missing.csv: cannot open: No such file");
   }
 
+  TEST_CASE("a YAML alias bomb in a manifest stops at the config loader's cap, in one line") {
+    test::TempDir dir("svgm_batch");
+    const std::string d = dir.path.string();
+    // Nine levels of ten aliases each: 10^9 overrides (1.8 GB in 30 s before the cap).
+    std::string bomb = "- input: x.svg\n  overrides:\n    stages:\n      video:\n        options:\n"
+                       "          a0: &a0 {k: v}\n";
+    for (int i = 1; i <= 9; ++i) {
+      bomb += "          a" + std::to_string(i) + ": &a" + std::to_string(i) + " {";
+      for (int j = 0; j < 10; ++j) bomb += (j ? ", k" : "k") + std::to_string(j) + ": *a" + std::to_string(i - 1);
+      bomb += "}\n";
+    }
+    CHECK(error_of(write(dir.path / "bomb.yaml", bomb)) ==
+          d + "/bomb.yaml:2: item 1: overrides expand to more than " + std::to_string(kMaxConfigValues) +
+              " values (YAML aliases of aliases?)");
+    CHECK(error_of(write(dir.path / "cycle.yaml", "- input: x.svg\n  overrides: &o {stages: *o}\n")) ==
+          d + "/cycle.yaml:2: item 1: overrides contain themselves (a YAML alias inside its own anchor)");
+    // Many items repeating one long text: each alias is cheap in the file, not in memory.
+    std::string many = "- {input: x.svg, id: i0, prompt: &p " + std::string(1 << 20, 'w') + "}\n";
+    for (int i = 1; i < 70; ++i) many += "- {input: x.svg, id: i" + std::to_string(i) + ", prompt: *p}\n";
+    CHECK(error_of(write(dir.path / "many.yaml", many)) ==
+          d + "/many.yaml:64: the manifest expands to more than 64 MB of text (YAML aliases?)");
+    std::string deep = "- input: x.svg\n  overrides: ";
+    for (int i = 0; i < 600; ++i) deep += "{a: ";
+    deep += "1" + std::string(600, '}') + "\n";
+    CHECK(error_of(write(dir.path / "deep.yaml", deep)).find(d + "/deep.yaml:2: nested too deeply") == 0);
+  }
+
+  TEST_CASE("overrides are config settings, never options, and not the batch's own input, prompt, output") {
+    test::TempDir dir("svgm_batch");
+    const std::string d = dir.path.string();
+    // `svgmotion run` read these as its -o and --input: the item ran elsewhere, reported done.
+    CHECK(error_of(write(dir.path / "a.csv", "input,overrides\nx.svg,-o=/elsewhere\n")) ==
+          d + "/a.csv:2: override '-o=/elsewhere' is a command-line option, not a setting (overrides are key.path=value)");
+    CHECK(error_of(write(dir.path / "b.csv", "input,overrides\nx.svg,seed=1 --input=y.svg\n")) ==
+          d + "/b.csv:2: override '--input=y.svg' is a command-line option, not a setting (overrides are key.path=value)");
+    CHECK(error_of(write(dir.path / "c.yaml", "- input: x.svg\n  overrides: [\"-o=/elsewhere\"]\n")) ==
+          d + "/c.yaml:2: override '-o=/elsewhere' is a command-line option, not a setting (overrides are key.path=value)");
+    CHECK(error_of(write(dir.path / "d.csv", "input,overrides\nx.svg,output=/elsewhere\n")) ==
+          d + "/d.csv:2: override 'output=/elsewhere': an item's run directory is OUT_DIR/<id>, not an override");
+    CHECK(error_of(write(dir.path / "e.yaml", "- input: x.svg\n  overrides: {input: y.svg}\n")) ==
+          d + "/e.yaml:1: override 'input=y.svg': an item's input is its manifest field 'input', not an override");
+    CHECK(error_of(write(dir.path / "f.csv", "input,overrides\nx.svg,stages.fitter.iterationz=3\n")) ==
+          d + "/f.csv:2: override 'stages.fitter.iterationz=3': unknown key 'stages.fitter.iterationz' (did you mean "
+              "'stages.fitter.iterations'?)");
+    CHECK(error_of(write(dir.path / "g.csv", "input,overrides\nx.svg,stages.fitter.iterations=many\n")) ==
+          d + "/g.csv:2: override 'stages.fitter.iterations=many': 'stages.fitter.iterations' must be a number");
+    CHECK_NOTHROW(check_batch_override("stages.video.options.motion=flap:wing*"));
+    CHECK_NOTHROW(check_batch_override("device=cpu"));
+    CHECK_THROWS_WITH_AS(check_batch_override("prompt=it waves"),
+                         "override 'prompt=it waves': an item's prompt is its manifest field 'prompt', not an override",
+                         Error);
+  }
+
+  TEST_CASE("small manifest defects: BOM, NUL, a folder, the extension's case, ids from odd names") {
+    test::TempDir dir("svgm_batch");
+    const std::string d = dir.path.string();
+    // A spreadsheet's byte order mark was part of the first column's name: unknown column 'ï»¿id'.
+    auto items = read_batch_manifest(write(dir.path / "bom.csv", "\xEF\xBB\xBFid,input\nm,x.svg\n"));
+    REQUIRE(items.size() == 1);
+    CHECK(items[0].id == "m");
+    CHECK(error_of(write(dir.path / "nul.csv", std::string("id,input\nm,x\0.svg\n", 18))) ==
+          d + "/nul.csv:2: a NUL byte (a manifest is text)");
+    CHECK(error_of(write(dir.path / "nul.yaml", std::string("- input: x.svg\n\n- input: y\0\n", 28))) ==
+          d + "/nul.yaml:3: a NUL byte (a manifest is text)");
+    fs::create_directories(dir.path / "folder.csv");
+    CHECK(error_of(dir.path / "folder.csv") == d + "/folder.csv: is a directory, not a manifest");
+    CHECK(read_batch_manifest(write(dir.path / "upper.YAML", "- input: x.svg\n")).size() == 1);
+    CHECK(read_batch_manifest(write(dir.path / "upper.Csv", "input\nx.svg\n")).size() == 1);
+    // Ids from file names: leading dots go (a hidden run directory), nothing left is an error.
+    items = read_batch_manifest(write(dir.path / "ids.csv", "input\n.hidden.svg\n..x.y.svg\nweird name!.svg\n"));
+    REQUIRE(items.size() == 3);
+    CHECK(items[0].id == "hidden");
+    CHECK(items[1].id == "x.y");
+    CHECK(items[2].id == "weird_name_");
+    CHECK(error_of(write(dir.path / "stem.csv", "input\nsub/\n")) ==
+          d + "/stem.csv:2: no id can be made from the input's name 'sub/' (give the item an id)");
+    CHECK(error_of(write(dir.path / "dots.csv", "input\n..\n")) ==
+          d + "/dots.csv:2: no id can be made from the input's name '..' (give the item an id)");
+  }
+
+  TEST_CASE("ids never name the batch's own files or leave OUT_DIR; YAML keys and values of the wrong kind") {
+    test::TempDir dir("svgm_batch");
+    const std::string d = dir.path.string();
+    CHECK(error_of(write(dir.path / "a.csv", "id,input\nok,x.svg\nsummary.csv,y.svg\n")) ==
+          d + "/a.csv:3: id 'summary.csv' is taken by the batch's own summary.csv (give the item another id)");
+    CHECK(error_of(write(dir.path / "b.csv", "id,input\nSummary.JSON,y.svg\n")) ==
+          d + "/b.csv:2: id 'Summary.JSON' is taken by the batch's own summary.json (give the item another id)");
+    CHECK(error_of(write(dir.path / "c.csv", "input\nsummary.csv.svg\n")) ==
+          d + "/c.csv:2: id 'summary.csv' is taken by the batch's own summary.csv (give the item another id)");
+    CHECK(error_of(write(dir.path / "d.csv", "id,input\na..b,y.svg\n")) == d + "/d.csv:2: id 'a..b' may not contain '..'");
+    CHECK(error_of(write(dir.path / "e.csv", "id,input\na/b,y.svg\n")) ==
+          d + "/e.csv:2: id 'a/b' may hold only letters, digits, '.', '_' and '-'");
+    CHECK(error_of(write(dir.path / "f.csv", "id,input\n.lock,y.svg\n")) == d + "/f.csv:2: id '.lock' may not start with '.'");
+    // yaml-cpp's own conversion said "internal error: yaml-cpp: ... bad conversion".
+    CHECK(error_of(write(dir.path / "g.yaml", "- input: x.svg\n- input: [a.svg, b.svg]\n")) ==
+          d + "/g.yaml:2: item 2: 'input' must be a single value, not a list");
+    CHECK(error_of(write(dir.path / "h.yaml", "- input: x.svg\n  ? [a, b]\n  : x\n")) ==
+          d + "/h.yaml:2: item 1: a key must be a name, not a list or a map");
+    CHECK(error_of(write(dir.path / "i.yaml", "- input: x.svg\n  overrides: {stages: {? [a]: 1}}\n")) ==
+          d + "/i.yaml:2: item 1: overrides 'stages': a key must be a name, not a list or a map");
+    CHECK(error_of(write(dir.path / "j.yaml", "? {a: 1}\n: x\n")) == d + "/j.yaml:1: a key must be a name, not a list or a map");
+    CHECK(error_of(write(dir.path / "k.yaml", "- input: x.svg\n  overrides: [{seed: 1}]\n")) ==
+          d + "/k.yaml:2: item 1: each override is one key.path=value, not a map");
+  }
+
   TEST_CASE("N shards take every item exactly once, sizes within one") {
     for (int n = 1; n <= 5; ++n) {
       std::vector<int> taken(13, 0);
@@ -157,7 +266,42 @@ TEST_SUITE("pipeline") {
                          "is (pass --shard I/N)",
                          Error);
     CHECK_THROWS_WITH_AS(shard_from_slurm(env_of({{"SLURM_ARRAY_TASK_ID", "x"}, {"SLURM_ARRAY_TASK_COUNT", "2"}})),
-                         "SLURM_ARRAY_TASK_ID=x: not a whole number", Error);
+                         "SLURM_ARRAY_TASK_ID=x: must be a whole number from 0 to 4000000", Error);
+  }
+
+  TEST_CASE("Slurm array variables are whole numbers in range, the task id within [MIN, MAX]") {
+    const auto error = [](const std::map<std::string, std::string>& vars) {
+      try {
+        shard_from_slurm(env_of(vars));
+      } catch (const Error& e) {
+        return std::string(e.what());
+      }
+      return std::string("no error");
+    };
+    // 2^32 wrapped to a count of 0 and Shard::takes divided by it: SIGFPE.
+    CHECK(error({{"SLURM_ARRAY_TASK_ID", "0"}, {"SLURM_ARRAY_TASK_COUNT", "4294967296"}}) ==
+          "SLURM_ARRAY_TASK_COUNT=4294967296: must be a whole number from 1 to 1000000");
+    // 2^32 + 2 wrapped to 2 and ran shard 1/2 of a count nobody asked for.
+    CHECK(error({{"SLURM_ARRAY_TASK_ID", "1"}, {"SLURM_ARRAY_TASK_COUNT", "4294967298"}}) ==
+          "SLURM_ARRAY_TASK_COUNT=4294967298: must be a whole number from 1 to 1000000");
+    CHECK(error({{"SLURM_ARRAY_TASK_ID", "99999999999999999999"}, {"SLURM_ARRAY_TASK_COUNT", "2"}}) ==
+          "SLURM_ARRAY_TASK_ID=99999999999999999999: must be a whole number from 0 to 4000000");
+    CHECK(error({{"SLURM_ARRAY_TASK_ID", "-1"}, {"SLURM_ARRAY_TASK_COUNT", "2"}}) ==
+          "SLURM_ARRAY_TASK_ID=-1: must be a whole number from 0 to 4000000");
+    CHECK(error({{"SLURM_ARRAY_TASK_ID", " 1"}, {"SLURM_ARRAY_TASK_COUNT", "2"}}) ==
+          "SLURM_ARRAY_TASK_ID= 1: must be a whole number from 0 to 4000000");
+    CHECK(error({{"SLURM_ARRAY_TASK_ID", "1"}, {"SLURM_ARRAY_TASK_COUNT", "2x"}}) ==
+          "SLURM_ARRAY_TASK_COUNT=2x: must be a whole number from 1 to 1000000");
+    CHECK(error({{"SLURM_ARRAY_TASK_ID", "0"}, {"SLURM_ARRAY_TASK_COUNT", "0"}}) ==
+          "SLURM_ARRAY_TASK_COUNT=0: must be a whole number from 1 to 1000000");
+    CHECK(error({{"SLURM_ARRAY_TASK_ID", "0"}, {"SLURM_ARRAY_TASK_COUNT", "2"}, {"SLURM_ARRAY_TASK_STEP", "0"}}) ==
+          "SLURM_ARRAY_TASK_STEP=0: must be a whole number from 1 to 4000000");
+    CHECK(error({{"SLURM_ARRAY_TASK_ID", "2"}, {"SLURM_ARRAY_TASK_MIN", "3"}, {"SLURM_ARRAY_TASK_MAX", "5"}}) ==
+          "SLURM_ARRAY_TASK_ID=2: below SLURM_ARRAY_TASK_MIN=3");
+    CHECK(error({{"SLURM_ARRAY_TASK_ID", "6"}, {"SLURM_ARRAY_TASK_MIN", "3"}, {"SLURM_ARRAY_TASK_MAX", "5"},
+                 {"SLURM_ARRAY_TASK_COUNT", "9"}}) == "SLURM_ARRAY_TASK_ID=6: above SLURM_ARRAY_TASK_MAX=5");
+    CHECK(error({{"SLURM_ARRAY_TASK_ID", "0"}, {"SLURM_ARRAY_TASK_MAX", "4000000"}}) ==
+          "SLURM_ARRAY_TASK_MAX=4000000: more than 1000000 tasks from SLURM_ARRAY_TASK_MIN=0");
   }
 
   TEST_CASE("an item's run arguments: config, item, device, target through the file provider, overrides last") {
@@ -195,5 +339,22 @@ TEST_SUITE("pipeline") {
     CHECK(j["total"] == 2);
     CHECK(j["counts"]["failed"] == 1);
     CHECK(j["counts"]["pending"] == 1);
+  }
+
+  TEST_CASE("a summary assembled before another one was written does not replace it") {
+    test::TempDir dir("svgm_batch");
+    const std::vector<BatchItem> items = {{"a", "/a.svg", "", {}, {}, 2}};
+    // Tickets "NEXT WRITTEN": assemblies 1..3 started, number 5 already written (a shard that
+    // began later finished first), so the one starting now (4) read older records.
+    write(dir.path / ".summary.lock", "3 5\n");
+    write_batch_summary(items, dir.path);
+    CHECK(!fs::exists(dir.path / "summary.csv"));
+    write(dir.path / ".summary.lock", "5 5\n");
+    write_batch_summary(items, dir.path);
+    CHECK(fs::exists(dir.path / "summary.csv"));
+    std::ifstream lock(dir.path / ".summary.lock");
+    std::string tickets;
+    std::getline(lock, tickets);
+    CHECK(tickets == "6 6");
   }
 }

@@ -3,14 +3,20 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/prctl.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
+#include <climits>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
+#include <thread>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -28,6 +34,18 @@ namespace {
 
 constexpr const char* kRecord = "batch.json";  // an item's record, in its run directory
 constexpr const char* kLog = "batch.log";      // the item's `svgmotion run` output
+constexpr const char* kParentVariable = "SVGMOTION_BATCH_PARENT";  // see follow_batch_parent()
+
+// The summary is assembled from every item's record, O(items) in files read: a 100,000-item
+// manifest took 2-5 s, which after every item made that the batch's cost. While items run it
+// is refreshed at most this often, and at most a twentieth of the time (20x the last assembly),
+// besides once at the end of the shard.
+constexpr std::chrono::seconds kSummaryEvery{60};
+constexpr int kSummaryTimeShare = 20;
+
+// How often a re-run looks whether an earlier run still holding an item's run directory has
+// ended (and whether it was cancelled meanwhile).
+constexpr std::chrono::milliseconds kWaitPoll{200};
 
 std::string read_text(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -60,6 +78,15 @@ nlohmann::json to_json(const BatchItemResult& r) {
   j["fidelity_psnr_db"] = r.psnr_db ? nlohmann::json(*r.psnr_db) : nlohmann::json(nullptr);
   j["fidelity_iou"] = r.iou ? nlohmann::json(*r.iou) : nlohmann::json(nullptr);
   return j;
+}
+
+// JSON text of a record or summary. Reasons quote the run's error line and inputs are paths,
+// either of which may hold bytes that are not UTF-8 (a Latin-1 file name), which nlohmann
+// refuses to write (type_error 316, an "internal error" that ended the batch): those bytes
+// become U+FFFD. (The shared bytes-to-UTF-8 function of the non-UTF-8 names work may replace
+// this once it lands.)
+std::string dump(const nlohmann::json& j) {
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 std::optional<BatchItemResult> read_record(const fs::path& file) {
@@ -109,25 +136,78 @@ std::string host_name() {
 }
 
 // An exclusive advisory lock on a file, released on destruction (or by the kernel when the
-// process dies).
+// process dies). Non-blocking, `held()` says whether it was had; the file holds a little text
+// (a pid, the summary's tickets) read and replaced under the lock.
 class FileLock {
  public:
-  explicit FileLock(const fs::path& file) {
+  explicit FileLock(const fs::path& file, bool wait = true) {
     fd_ = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ < 0) throw Error(file.string() + ": cannot open the summary lock: " + std::strerror(errno));
-    while (::flock(fd_, LOCK_EX) != 0)
+    if (fd_ < 0) throw Error(file.string() + ": cannot open the lock: " + std::strerror(errno));
+    while (::flock(fd_, LOCK_EX | (wait ? 0 : LOCK_NB)) != 0) {
+      if (errno == EWOULDBLOCK && !wait) return;
       if (errno != EINTR) {
         ::close(fd_);
         throw Error(file.string() + ": cannot lock: " + std::strerror(errno));
       }
+    }
+    held_ = true;
   }
   ~FileLock() { ::close(fd_); }
   FileLock(const FileLock&) = delete;
   FileLock& operator=(const FileLock&) = delete;
+  bool held() const { return held_; }
+  std::string text() const {
+    char b[64] = {0};
+    const ssize_t n = ::pread(fd_, b, sizeof b - 1, 0);
+    return n > 0 ? std::string(b, static_cast<size_t>(n)) : std::string();
+  }
+  void set_text(const std::string& t) const {
+    if (::ftruncate(fd_, 0) == 0 && ::pwrite(fd_, t.data(), t.size(), 0) < 0) {}
+  }
 
  private:
   int fd_ = -1;
+  bool held_ = false;
 };
+
+// The pid in a lock file's text, for messages ("" when there is none).
+std::string pid_in(const std::string& text) {
+  const size_t end = text.find_first_not_of("0123456789");
+  return text.substr(0, end);
+}
+
+// An `svgmotion run` still working in the item's run directory holds its lock (RunLock in
+// pipeline.cpp: .svgmotion/lock, flock, its pid inside): an item run that outlived its batch
+// (one killed with SIGKILL before follow_batch_parent() existed, or another batch's). Starting
+// our own run now would only fail ("another svgmotion run is using this run directory") and
+// record the item failed while that run finishes it; waiting lets ours find it up to date.
+// Returns false when cancelled while waiting.
+bool wait_for_earlier_run(const fs::path& dir, const std::function<bool()>& cancelled,
+                          const std::function<void(const std::string&)>& say) {
+  const int fd = ::open((dir / ".svgmotion" / "lock").c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return true;  // never run
+  bool said = false, ok = true;
+  for (;;) {
+    if (::flock(fd, LOCK_SH | LOCK_NB) == 0) break;
+    if (errno == EINTR) continue;
+    if (errno != EWOULDBLOCK) break;  // cannot tell: let the run itself decide
+    if (!said && say) {
+      char b[32] = {0};
+      const ssize_t n = ::pread(fd, b, sizeof b - 1, 0);
+      const std::string pid = pid_in(n > 0 ? std::string(b, static_cast<size_t>(n)) : "");
+      say("waiting for svgmotion run" + (pid.empty() ? std::string() : " pid " + pid) +
+          ", still working in " + dir.string() + " (an earlier batch's?)");
+      said = true;
+    }
+    if (cancelled && cancelled()) {
+      ok = false;
+      break;
+    }
+    std::this_thread::sleep_for(kWaitPoll);
+  }
+  ::close(fd);  // releases our shared lock before our own run takes it exclusively
+  return ok;
+}
 
 // What one finished `svgmotion run` means for the item.
 BatchItemResult judge(const BatchItem& item, const CommandResult& r, const fs::path& dir,
@@ -190,8 +270,21 @@ std::vector<std::string> batch_run_argv(const BatchItem& item, const BatchOption
   return a;
 }
 
+// Summaries are numbered (tickets, in OUT/.summary.lock: "NEXT WRITTEN") when their assembly
+// starts, and one replaces the files only when none started later has been written: a shard
+// that began reading the records before another shard's last item finished must not overwrite
+// that shard's newer summary. The records are read without the lock, so shards finishing at
+// once read side by side; the lock covers only taking a ticket and the rename.
 std::vector<BatchItemResult> write_batch_summary(const std::vector<BatchItem>& items, const fs::path& out) {
-  const FileLock lock(out / ".summary.lock");
+  const fs::path lock_file = out / ".summary.lock";
+  unsigned long long ticket = 0;
+  {
+    const FileLock lock(lock_file);
+    unsigned long long next = 0, written = 0;
+    std::sscanf(lock.text().c_str(), "%llu %llu", &next, &written);
+    ticket = next + 1;
+    lock.set_text(std::to_string(ticket) + " " + std::to_string(written) + "\n");
+  }
   std::vector<BatchItemResult> rows;
   std::map<std::string, int> counts;
   nlohmann::json jrows = nlohmann::json::array();
@@ -208,8 +301,15 @@ std::vector<BatchItemResult> write_batch_summary(const std::vector<BatchItem>& i
     rows.push_back(std::move(r));
   }
   const nlohmann::json summary = {{"items", jrows}, {"counts", counts}, {"total", items.size()}, {"updated", utc_now()}};
-  write_file_atomic(out / "summary.csv", csv);
-  write_file_atomic(out / "summary.json", summary.dump(2) + "\n");
+  const std::string json = dump(summary);
+  const FileLock lock(lock_file);
+  unsigned long long next = 0, written = 0;
+  std::sscanf(lock.text().c_str(), "%llu %llu", &next, &written);
+  if (ticket > written) {
+    write_file_atomic(out / "summary.csv", csv);
+    write_file_atomic(out / "summary.json", json);
+    lock.set_text(std::to_string(std::max(next, ticket)) + " " + std::to_string(ticket) + "\n");
+  }
   return rows;
 }
 
@@ -217,9 +317,32 @@ BatchOutcome run_batch(const std::vector<BatchItem>& items, const BatchOptions& 
   std::error_code ec;
   fs::create_directories(o.out_dir, ec);
   if (ec) throw Error(o.out_dir.string() + ": cannot create: " + ec.message());
+  // One batch per shard and output folder: a second one would start the same items, find
+  // them locked by the first one's runs and record them failed while the first finishes them.
+  const FileLock shard_lock(o.out_dir / (".shard-" + std::to_string(o.shard.index) + "-of-" +
+                                         std::to_string(o.shard.count) + ".lock"),
+                            false);
+  if (!shard_lock.held()) {
+    const std::string pid = pid_in(shard_lock.text());
+    throw Error(o.out_dir.string() + ": shard " + o.shard.name() + " is already running into this folder" +
+                (pid.empty() ? std::string() : " (batch pid " + pid + ")"));
+  }
+  shard_lock.set_text(std::to_string(::getpid()) + "\n");
   BatchOutcome outcome;
   for (size_t i = 0; i < items.size(); ++i)
     outcome.items += o.shard.takes(i);
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point summary_due = Clock::now() + kSummaryEvery;
+  auto summarise = [&] {
+    const Clock::time_point t0 = Clock::now();
+    try {
+      write_batch_summary(items, o.out_dir);
+    } catch (const Error& e) {
+      if (o.say) o.say(std::string("cannot write the summary: ") + e.what());
+    }
+    const Clock::time_point t1 = Clock::now();
+    summary_due = t1 + std::max<Clock::duration>(kSummaryEvery, (t1 - t0) * kSummaryTimeShare);
+  };
   int position = 0;
   for (size_t i = 0; i < items.size(); ++i) {
     if (!o.shard.takes(i)) continue;
@@ -239,8 +362,17 @@ BatchOutcome run_batch(const std::vector<BatchItem>& items, const BatchOptions& 
     CommandResult r;
     BatchItemResult res;
     try {
-      r = run_command(argv, dir / kLog, 0, o.cancelled);
-      res = judge(item, r, dir, before);
+      const auto say_item = [&](const std::string& line) {
+        if (o.say) o.say(tag + ": " + line);
+      };
+      if (!wait_for_earlier_run(dir, o.cancelled, say_item)) {
+        res.id = item.id;
+        res.status = "interrupted";
+        res.reason = "stopped; run the batch again to resume";
+      } else {
+        r = run_command(argv, dir / kLog, 0, o.cancelled);
+        res = judge(item, r, dir, before);
+      }
     } catch (const Error& e) {  // the log could not be created: the item fails, the batch goes on
       res.id = item.id;
       res.status = "failed";
@@ -252,11 +384,11 @@ BatchOutcome run_batch(const std::vector<BatchItem>& items, const BatchOptions& 
     record["host"] = host_name();
     record["shard"] = o.shard.name();
     try {
-      write_file_atomic(dir / kRecord, record.dump(2) + "\n");
-      write_batch_summary(items, o.out_dir);
+      write_file_atomic(dir / kRecord, dump(record));
     } catch (const Error& e) {
       if (o.say) o.say(tag + ": cannot write its record: " + e.what());
     }
+    if (Clock::now() >= summary_due) summarise();
     (res.status == "done" ? outcome.done : outcome.not_done) += 1;
     if (o.say) {
       std::string line = tag + ": " + res.status;
@@ -270,8 +402,26 @@ BatchOutcome run_batch(const std::vector<BatchItem>& items, const BatchOptions& 
       break;
     }
   }
-  if (outcome.items == 0) write_batch_summary(items, o.out_dir);
+  summarise();
   return outcome;
 }
+
+void follow_batch_parent() {
+  const char* v = std::getenv(kParentVariable);
+  if (!v) return;
+  char* end = nullptr;
+  const long parent = std::strtol(v, &end, 10);
+  const bool valid = end != v && *end == '\0' && parent > 1 && parent <= INT_MAX;
+  // Not for this process's own children (a video generator, a nested svgmotion): their parent
+  // is this run, which ends them itself.
+  ::unsetenv(kParentVariable);
+  if (!valid) return;
+  ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+  // The batch may have died between starting us and the prctl: then our parent is already
+  // init (or a subreaper) and no signal would come.
+  if (::getppid() != static_cast<pid_t>(parent)) ::raise(SIGTERM);
+}
+
+void mark_batch_parent() { ::setenv(kParentVariable, std::to_string(::getpid()).c_str(), 1); }
 
 }  // namespace svgm

@@ -8,12 +8,18 @@
 // manifests make a batch idempotent: a finished item is up to date and costs a few seconds, a
 // failed or interrupted one resumes from where it stopped.
 //
-// After every item its record goes to OUT/<id>/batch.json, and the summary of the whole
-// manifest (all shards: items without a record are "pending") is rewritten to
-// OUT/summary.csv and OUT/summary.json under an advisory lock (OUT/.summary.lock), so shards
-// finishing at once never lose each other's rows. Statuses: done, failed (exit 1 or a crash:
-// the reason is the run's error line), rejected (the result gate; exit 3), flagged (every
-// candidate video; exit 4), interrupted, pending.
+// After every item its record goes to OUT/<id>/batch.json (one small file: an item costs the
+// same in a manifest of 10 or 100,000). The summary of the whole manifest (all shards: items
+// without a record are "pending"), OUT/summary.csv and OUT/summary.json, is assembled from the
+// records when the shard ends, while it runs at most once a minute (and at most a twentieth of
+// its time), and on demand (`batch --summary`); numbered assemblies (write_batch_summary) keep
+// shards finishing at once from replacing a newer summary with an older one. Statuses: done,
+// failed (exit 1 or a crash: the reason is the run's error line), rejected (the result gate;
+// exit 3), flagged (every candidate video; exit 4), interrupted, pending.
+//
+// One batch per shard and output folder at a time (OUT/.shard-I-of-N.lock, holding its pid). An
+// item's run dies with its batch (follow_batch_parent), and a run still working in an item's
+// directory (an earlier batch's, which outlived it) is waited for, not reported as a failure.
 #pragma once
 
 #include <filesystem>
@@ -53,15 +59,27 @@ struct BatchOutcome {
 };
 
 // Runs the items of `options.shard`, in manifest order. Throws svgm::Error only when OUT
-// cannot be created; every problem of an item is in its record.
+// cannot be created or another batch is running the same shard into it ("OUT: shard 0/2 is
+// already running into this folder (batch pid 123)"); every problem of an item is in its
+// record.
 BatchOutcome run_batch(const std::vector<BatchItem>& items, const BatchOptions& options);
 
 // The `svgmotion run` arguments for one item (after the program name).
 std::vector<std::string> batch_run_argv(const BatchItem& item, const BatchOptions& options);
 
-// Rewrites OUT/summary.csv and OUT/summary.json from the records of every item of the
-// manifest, under the summary lock; returns the rows written.
+// Assembles OUT/summary.csv and OUT/summary.json from the records of every item of the
+// manifest; returns the rows. The files are replaced unless a summary whose assembly started
+// later (another shard's) has been written meanwhile.
 std::vector<BatchItemResult> write_batch_summary(const std::vector<BatchItem>& items,
                                                  const std::filesystem::path& out_dir);
+
+// The batch side and the item side of "an item's run dies with its batch": the batch puts its
+// pid in the environment its items inherit (SVGMOTION_BATCH_PARENT); the item's process, first
+// thing, asks the kernel for SIGTERM when that parent dies (prctl PR_SET_PDEATHSIG: a batch
+// killed with SIGKILL left its item's run working on as an orphan), ends at once if the parent
+// is already gone, and removes the variable so its own children do not inherit it.
+// posix_spawn runs no code of ours in the child, hence the variable.
+void mark_batch_parent();
+void follow_batch_parent();
 
 }  // namespace svgm

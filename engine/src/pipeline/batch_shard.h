@@ -30,8 +30,9 @@ struct Shard {
 Shard parse_shard(const std::string& text);
 
 // The shard a Slurm job array task is, from an environment lookup (`env(name)` is nullptr when
-// unset); nothing when SLURM_ARRAY_TASK_ID is unset. Throws svgm::Error naming the variable
-// when the array variables are inconsistent.
+// unset); nothing when SLURM_ARRAY_TASK_ID is unset. Each variable must be a whole number in
+// range (task ids 0..4000000, COUNT 1..1000000, STEP at least 1) and the task id within
+// [MIN, MAX]; otherwise throws svgm::Error "NAME=VALUE: problem" (the CLI exits 2).
 std::optional<Shard> shard_from_slurm(const std::function<const char*(const char*)>& env);
 
 }  // namespace svgm

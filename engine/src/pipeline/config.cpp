@@ -18,15 +18,7 @@ namespace svgm {
 
 namespace {
 
-// The most values (maps, lists and scalars) one config may expand to. A YAML alias repeats its
-// anchor's whole node wherever it is used, so aliases of aliases let a file of a few hundred
-// bytes name 10^9 values (the "billion laughs"); yaml-cpp shares them, but JSON copies each.
-// default.yaml holds about 60 values and an inline ComfyUI workflow a few thousand.
-constexpr size_t kMaxConfigValues = 100000;
-
-// yaml-cpp 0.7's own nesting limit (DepthGuard<500> in its single-document parser); deeper
-// documents throw YAML::DeepRecursion, whose message reads "bad file".
-constexpr int kMaxYamlDepth = 500;
+// kMaxConfigValues and kMaxYamlDepth (config.h) bound what one config may expand to.
 
 // Values left to produce, shared by one file and its overrides; `where` names the source
 // ("file:line: 'key.path'") in the error.

@@ -13,6 +13,17 @@
 
 namespace svgm {
 
+// The most values (maps, lists and scalars) one config may expand to. A YAML alias repeats its
+// anchor's whole node wherever it is used, so aliases of aliases let a file of a few hundred
+// bytes name 10^9 values (the "billion laughs"); yaml-cpp shares them, but JSON copies each.
+// default.yaml holds about 60 values and an inline ComfyUI workflow a few thousand. Batch
+// manifests hold each item's overrides to the same cap (batch_manifest.h).
+inline constexpr size_t kMaxConfigValues = 100000;
+
+// yaml-cpp 0.7's own nesting limit (DepthGuard<500> in its single-document parser); deeper
+// documents throw YAML::DeepRecursion, whose message reads "bad file".
+inline constexpr int kMaxYamlDepth = 500;
+
 // Where each setting the user gave came from, by key path ("stages.fitter.iterations"; a
 // free-form options section by its own path): "FILE:LINE" or "command line 'k=v'" (an override
 // replaces the file's entry). Defaults are not listed.
