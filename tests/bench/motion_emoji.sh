@@ -57,7 +57,7 @@ run_case() {
 
 printf 'case\tshare\tstill_ratio\tout_of_canvas\tflagged\tplan\tnot_understood\tresult\n'
 total=0 pass=0 bars=0 unflagged=0 seconds=$SECONDS
-while IFS=$'\t' read -r name set file prompt move still; do
+while IFS=$'\t' read -r name set file prompt move still backdrop; do
   [ -z "$name" ] || [ "${name:0:1}" = "#" ] && continue
   [[ "$name" =~ $cases ]] || continue
   case "$set" in
@@ -74,7 +74,9 @@ while IFS=$'\t' read -r name set file prompt move still; do
     printf '%s\tno motion.json (see %s.log)\t\t\t\t\t\tFAIL(run)\n' "$name" "$d"
     continue
   fi
-  line=$(python3 "$here/motion_score.py" "$d" "$move" "$still" --verdict)
+  flags=--verdict
+  [ "$backdrop" = none ] && flags="$flags --no-backdrop"
+  line=$(python3 "$here/motion_score.py" "$d" "$move" "$still" $flags)
   printf '%s\t%s\n' "$name" "$line"
   case "$line" in
     *pass) pass=$((pass + 1)) bars=$((bars + 1)) unflagged=$((unflagged + 1)) ;;
