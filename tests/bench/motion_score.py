@@ -33,7 +33,8 @@ Pass: share >= 0.7, still ratio <= 0.25, nothing out of the canvas.
 With --verdict (tests/bench/motion_emoji.sh), the line also says what the ranker thought of the
 candidates and what the prompt's parser did not understand: share, still ratio, paths out of
 the canvas, flagged candidates (ranking.json: those with defects or an error, "k/N" and the
-first reason), the plan, motion.json's not_understood words, then pass, or FAIL naming the bars
+first reason), the plan, motion.json's not_understood words ("(fallback sway)" when none of the
+prompt's words was a motion the engine knows), then pass, or FAIL naming the bars
 missed (share, still, out, flagged: every candidate must pass the ranker).
 """
 import json
@@ -209,6 +210,10 @@ def main():
         v = ranker_verdict(run_dir)
         flags = "no ranking.json" if v is None else f"{v[0]}/{v[1]}" + (f" {v[2]}" if v[0] else "")
         words = ",".join(m.get("not_understood", [])) or "-"
+        # No motion word understood: the plan is the gentle sway every such prompt gets, which a
+        # label of 'all' (or of a figure's top) scores as if it were the motion asked for.
+        if any("no motion understood" in w for w in m.get("warnings", [])):
+            words += " (fallback sway)"
         why = [w for w, bad in (("share", share < SHARE_MIN), ("still", ratio > STILL_RATIO_MAX), ("out", out > 0),
                                 ("flagged", v is None or v[0] > 0)) if bad]
         print(f"{share:.2f}\t{ratio:.2f}\t{out}\t{flags}\t{plan}\t{words}\t{'FAIL(' + ','.join(why) + ')' if why else 'pass'}")
