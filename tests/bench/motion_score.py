@@ -22,10 +22,20 @@ engine's rig:
   x0,y0,x1,y1          points resting in this box, in fractions of the drawing's box (the union
                        of the rest boxes of all paths that are not large), not of large paths
   several joined by '|'
+With --no-backdrop the drawing has no background (a reader's word for it): no path is large, the
+drawing's box is that of every path. An emoji's figure often fills its canvas (a dog's body, a
+mermaid's tail, a waving hand: 45 % of the canvas, touching its edges, painted first), and the
+large rule took it for a background and left it out of every box.
 Prints one tab-separated line: share of the motion (summed travel) on the expected points, the
 ratio of the mean travel of the still points to that of the expected points, the largest travel
 of a still point (in % of the canvas diagonal), how many paths left the canvas, and pass/FAIL.
 Pass: share >= 0.7, still ratio <= 0.25, nothing out of the canvas.
+With --verdict (tests/bench/motion_emoji.sh), the line also says what the ranker thought of the
+candidates and what the prompt's parser did not understand: share, still ratio, paths out of
+the canvas, flagged candidates (ranking.json: those with defects or an error, "k/N" and the
+first reason), the plan, motion.json's not_understood words ("(fallback sway)" when none of the
+prompt's words was a motion the engine knows), then pass, or FAIL naming the bars
+missed (share, still, out, flagged: every candidate must pass the ranker).
 """
 import json
 import math
@@ -108,9 +118,26 @@ def fitted_paths(run_dir, canvas):
     return paths
 
 
+def ranker_verdict(run_dir):
+    """(flagged candidates, candidates, the first flagged one's first reason) from ranking.json."""
+    try:
+        r = json.load(open(run_dir + "/ranking.json"))
+    except (OSError, ValueError):
+        return None
+    cands = r.get("candidates", [])
+    flagged = [c for c in cands if c.get("defects") or c.get("error")]
+    first = ""
+    if flagged:
+        c = flagged[0]
+        first = c["error"] if c.get("error") else c["defects"][0]
+    return len(flagged), len(cands), first
+
+
 def main():
-    args = [a for a in sys.argv[1:] if a != "--fitted"]
+    args = [a for a in sys.argv[1:] if a not in ("--fitted", "--verdict", "--no-backdrop")]
+    no_backdrop = "--no-backdrop" in sys.argv[1:]
     fitted = "--fitted" in sys.argv[1:]
+    verdict = "--verdict" in sys.argv[1:]
     run_dir, move_spec, still_spec = args[0], args[1], args[2]
     m = json.load(open(run_dir + "/motion.json"))
     cw, ch = m["canvas"]
@@ -119,6 +146,8 @@ def main():
     order = {p["id"]: i for i, p in enumerate(m["paths"])}  # paint order (animation.json keeps the ids)
 
     def is_large(p):
+        if no_backdrop:
+            return False
         x0, y0, x1, y1 = p["rest"]
         edges = (x0 <= EDGE * cw) + (y0 <= EDGE * ch) + (x1 >= cw - EDGE * cw) + (y1 >= ch - EDGE * ch)
         early = order.get(p["id"], 0) < EARLY * len(m["paths"])
@@ -177,6 +206,18 @@ def main():
     ok = share >= SHARE_MIN and ratio <= STILL_RATIO_MAX and out == 0
     plan = "; ".join(a["verb"] + ":" + (a["parts"] if isinstance(a["parts"], str) else "+".join(a["parts"]))
                      + ("(" + a["region"] + ")" if a.get("region") else "") for a in m["plan"])
+    if verdict:
+        v = ranker_verdict(run_dir)
+        flags = "no ranking.json" if v is None else f"{v[0]}/{v[1]}" + (f" {v[2]}" if v[0] else "")
+        words = ",".join(m.get("not_understood", [])) or "-"
+        # No motion word understood: the plan is the gentle sway every such prompt gets, which a
+        # label of 'all' (or of a figure's top) scores as if it were the motion asked for.
+        if any("no motion understood" in w for w in m.get("warnings", [])):
+            words += " (fallback sway)"
+        why = [w for w, bad in (("share", share < SHARE_MIN), ("still", ratio > STILL_RATIO_MAX), ("out", out > 0),
+                                ("flagged", v is None or v[0] > 0)) if bad]
+        print(f"{share:.2f}\t{ratio:.2f}\t{out}\t{flags}\t{plan}\t{words}\t{'FAIL(' + ','.join(why) + ')' if why else 'pass'}")
+        return
     print(f"{share:.2f}\t{ratio:.2f}\t{still_max:.2f}\t{out}\t{'pass' if ok else 'FAIL'}\t{len(move)}/{len(still)}/{len(pts)}\t{plan}")
 
 
