@@ -105,7 +105,9 @@ std::string motion_section(const json& motion, const std::string& drawing_uri) {
            "</td><td>" + html_escape(str(a, "why")) + "</td></tr>";
     }
   s += "</table></div>";
-  const auto not_understood = strings(motion, "not_understood"), warnings = strings(motion, "warnings"), notes = strings(motion, "notes");
+  const auto not_understood = strings(motion, "not_understood"), warnings = strings(motion, "warnings"), notes = strings(motion, "notes"),
+             readings = strings(motion, "readings");
+  if (!readings.empty()) s += "<p>Words read through the lexicon (WordNet):</p>" + list(readings, "svgm-readings");
   if (!not_understood.empty()) s += "<p class=\"svgm-warn\">Words not understood:</p>" + list(not_understood, "svgm-not-understood");
   if (!warnings.empty()) s += "<p class=\"svgm-warn\">Warnings:</p>" + list(warnings, "svgm-motion-warnings");
   if (!notes.empty()) s += "<p>Notes:</p>" + list(notes, "svgm-motion-notes");

@@ -678,7 +678,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
       b.plan.notes.push_back(what + " moves by itself: " + v->name + " (no verb in '" + c.text + "')");
       break;
     }
-  for (const auto& r : prompt.readings) b.plan.notes.push_back(r);
+  b.plan.readings = prompt.readings;
   b.plan.not_understood = unknown;
   for (const auto& w : prompt.unplaced)
     if (std::find(unknown.begin(), unknown.end(), w) == unknown.end()) b.plan.not_understood.push_back(w);
@@ -1536,6 +1536,7 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
           {"amplitude_scale", std::round(plan.scale * 1e4) / 1e4},
           {"keyframes", plan.keyframes},
           {"not_understood", plan.not_understood},
+          {"readings", plan.readings},
           {"warnings", plan.warnings},
           {"notes", plan.notes}};
 }

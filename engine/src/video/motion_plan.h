@@ -71,6 +71,7 @@ struct MotionPlan {
   std::vector<std::string> not_understood;  // prompt words that named no motion, part or modifier
   std::vector<std::string> warnings;        // one line each
   std::vector<std::string> notes;           // informational lines (an amplitude scaled to fit)
+  std::vector<std::string> readings;        // words the lexicon read ("'shuffles' read as walk")
   double scale = 1;             // amplitude factor of every action fit_plan chose (1: as planned)
   int keyframes = 0;            // keyframes the fitter needs to follow the motion (fit_plan: at
                                 // least the fitter's own count; 0 before fit_plan)
