@@ -5,12 +5,14 @@
 // is rendered as raster frames with a colour drift, blur and H.264 compression; candidate i uses
 // seed + i, which varies the amplitudes and, where the prompt leaves a choice, the side.
 // motion.json in the run directory reports the parts and the plan; one line says it on the
-// terminal.
+// terminal. Under the pixel ranker each candidate is scored as the ranker will score it, and
+// one it would flag for continuity or chaotic motion is made again with smaller amplitudes.
 #include <filesystem>
 
 #include "common/plugin_glue.h"
 #include "common/stage_files.h"
 #include "pipeline/plugin_options.h"
+#include "rank/pixel_ranker.h"
 #include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
@@ -22,6 +24,9 @@ namespace {
 
 // The fitter's keyframes when the request does not carry them (configs/default.yaml).
 constexpr int kDefaultKeyframes = 15;
+// A candidate the pixel ranker would flag is made again at 0.8 of its amplitudes, at most this
+// many times (0.8^4: 41 %).
+constexpr int kSelfCheckAttempts = 4;
 
 nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   namespace fs = std::filesystem;
@@ -61,12 +66,55 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   nlohmann::json made = nlohmann::json::array();
   nlohmann::json report;
   std::string summary;
+  // The pixel ranker's view of a candidate (stages.ranker: its analysis size and frames, at
+  // least as many as the fitter's keyframes the plan asks for), in the recoloured drawing's
+  // colours: generator and ranker agree, or the candidate is made again, smaller.
+  const nlohmann::json& stages = req.contains("stages") ? req.at("stages") : nlohmann::json::object();
+  const bool self_check = stages.contains("ranker") && stages.at("ranker").value("plugin", "") == "pixel";
+  svgm::PixelRankOptions ro;
+  if (self_check && stages.at("ranker").contains("options") && stages.at("ranker").at("options").is_object()) {
+    const nlohmann::json& ropt = stages.at("ranker").at("options");
+    if (ropt.contains("size") && ropt.at("size").is_number_integer()) ro.analysis_width = ropt.at("size").get<int>();
+    if (ropt.contains("keyframes") && ropt.at("keyframes").is_number_integer()) ro.keyframes = ropt.at("keyframes").get<int>();
+  }
+  std::vector<svgm::Rgba> palette;
+  for (const svgm::Path& p : scene.paths) {
+    if (p.has_fill) palette.push_back(p.fill);
+    if (p.has_stroke) palette.push_back(p.stroke.color);
+  }
   for (int i = 0; i < n; ++i) {
     char name[16];
     std::snprintf(name, sizeof name, "%02d", i);
     const uint32_t seed = static_cast<uint32_t>(req.value("seed", 0) + i);
     svgm::MotionPlan plan = steps.empty() ? svgm::plan_from_prompt(parsed, rig, seed) : svgm::plan_from_steps(steps, rig, seed);
     svgm::fit_plan(scene, rig, plan, o.frames, keyframes);
+    std::vector<svgm::Vec2> pts;
+    for (int attempt = 0;; ++attempt) {
+      pts = svgm::animate_plan(scene, rig, plan, o.frames);
+      svgm::write_procedural_video(scene, pts, seed, o, dir / (std::string(name) + ".mp4"));
+      if (!self_check || palette.empty()) break;
+      svgm::PixelRankOptions check = ro;
+      check.keyframes = std::max(check.keyframes, plan.keyframes + 1);
+      const svgm::CandidateScore sc = svgm::score_candidate_file(dir / (std::string(name) + ".mp4"), palette, check);
+      // What a smaller motion cures: parts whose visible area jumps between the ranker's
+      // frames (continuity), and chaotic motion. 'No motion' is not cured by less of it.
+      std::string why;
+      if (sc.continuity.value >= check.defect_threshold) why = "continuity: " + sc.continuity.reason;
+      else if (sc.motion.value >= check.defect_threshold && sc.motion.reason.find("chaotic") != std::string::npos)
+        why = "chaotic motion: " + sc.motion.reason;
+      if (why.empty()) break;
+      char line[400];
+      if (attempt == kSelfCheckAttempts) {
+        std::snprintf(line, sizeof line, "candidate %s: the pixel ranker still flags it at %.0f %% of its amplitudes (%s)", name,
+                      plan.scale * 100, why.c_str());
+        plan.warnings.push_back(line);
+        break;
+      }
+      plan.scale *= 0.8;
+      std::snprintf(line, sizeof line, "candidate %s: amplitudes scaled to %.0f %%: the pixel ranker saw %s", name, plan.scale * 100,
+                    why.c_str());
+      plan.notes.push_back(line);
+    }
     if (i == 0) {
       report = svgm::motion_report(scene, rig, plan);
       report["prompt"] = prompt;
@@ -86,7 +134,6 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
         host->log(host, 1, ("video procedural: " + line + " (motion.json)").c_str());
       }
     }
-    const std::vector<svgm::Vec2> pts = svgm::animate_plan(scene, rig, plan, o.frames);
     // Each candidate's rigid bodies and their maps (the fitter warm-starts from the chosen
     // one's: the candidates differ in amplitudes and directions); the paths' travels are the
     // first candidate's.
@@ -99,7 +146,6 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
       report["paths"] = svgm::path_motion_json(scene, motion);
       report["bodies"] = svgm::body_maps_json(maps);
     }
-    svgm::write_procedural_video(scene, pts, seed, o, dir / (std::string(name) + ".mp4"));
     made.push_back({{"name", std::string(name) + ".mp4"}, {"seed", seed}, {"amplitude_scale", plan.scale}, {"keyframes", plan.keyframes},
                     {"plan", plan.summary()}, {"path_body", path_body}, {"bodies", svgm::body_maps_json(maps)}});
     if (host && host->progress) host->progress(host, (i + 1.0) / n, name);

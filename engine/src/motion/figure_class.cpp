@@ -36,32 +36,15 @@ Spine spine(const Skeleton& s, const Figure& f) {
   Spine out;
   for (const auto& e : s.edges)
     if (s.nodes[e.a].component == f.component) out.total += e.length;
-  const double inf = std::numeric_limits<double>::infinity();
   std::vector<int> best_path;  // edges
   for (size_t from = 0; from < s.nodes.size(); ++from) {
     if (s.nodes[from].component != f.component || s.nodes[from].degree() > 1) continue;
-    std::vector<double> dist(s.nodes.size(), inf);
-    std::vector<int> via(s.nodes.size(), -1);
-    std::vector<char> done(s.nodes.size(), 0);
-    dist[from] = 0;
-    for (;;) {
-      int u = -1;
-      for (size_t n = 0; n < s.nodes.size(); ++n)
-        if (!done[n] && dist[n] < inf && (u < 0 || dist[n] < dist[u])) u = static_cast<int>(n);
-      if (u < 0) break;
-      done[u] = 1;
-      if (dist[u] > out.length) {
-        out.length = dist[u];
-        best_path.clear();
-        for (int n = u; via[n] >= 0; n = s.edges[via[n]].a == n ? s.edges[via[n]].b : s.edges[via[n]].a)
-          best_path.push_back(via[n]);
+    const SkeletonPaths p = shortest_paths(s, static_cast<int>(from));
+    for (size_t u = 0; u < s.nodes.size(); ++u)
+      if (p.dist[u] < std::numeric_limits<double>::infinity() && p.dist[u] > out.length) {
+        out.length = p.dist[u];
+        best_path = p.edges_to(s, static_cast<int>(u));
       }
-      for (int e : s.nodes[u].edges) {
-        const auto& E = s.edges[e];
-        const int v = E.a == u ? E.b : E.a;
-        if (dist[u] + E.length < dist[v]) dist[v] = dist[u] + E.length, via[v] = e;
-      }
-    }
   }
   if (best_path.empty())  // a loop or a dot: its longest branch
     for (size_t e = 0; e < s.edges.size(); ++e)

@@ -106,34 +106,9 @@ void core_geometry(const Skeleton& s, Figure& f) {
   f.core_axis = axis;
 }
 
-// Shortest paths (by branch length) from `from` inside a sub-tree's edges; returns the node path
-// to `to` as edge indices.
+// The path (edge indices) from `from` to `to` inside a sub-tree's edges, shortest by length.
 std::vector<int> path_edges(const Skeleton& s, const std::vector<int>& edges, int from, int to) {
-  const double inf = std::numeric_limits<double>::infinity();
-  std::vector<double> dist(s.nodes.size(), inf);
-  std::vector<int> via(s.nodes.size(), -1);
-  std::vector<char> done(s.nodes.size(), 0);
-  dist[from] = 0;
-  for (;;) {
-    int u = -1;
-    for (size_t n = 0; n < s.nodes.size(); ++n)
-      if (!done[n] && dist[n] < inf && (u < 0 || dist[n] < dist[u])) u = static_cast<int>(n);
-    if (u < 0 || u == to) break;
-    done[u] = 1;
-    for (int e : edges) {
-      const auto& E = s.edges[e];
-      if (E.a != u && E.b != u) continue;
-      const int v = E.a == u ? E.b : E.a;
-      if (dist[u] + E.length < dist[v]) dist[v] = dist[u] + E.length, via[v] = e;
-    }
-  }
-  std::vector<int> out;
-  for (int n = to; n != from && via[n] >= 0;) {
-    out.push_back(via[n]);
-    n = s.edges[via[n]].a == n ? s.edges[via[n]].b : s.edges[via[n]].a;
-  }
-  std::reverse(out.begin(), out.end());
-  return out;
+  return shortest_paths(s, from, &edges).edges_to(s, to);
 }
 
 double path_length(const Skeleton& s, const std::vector<int>& edges) {

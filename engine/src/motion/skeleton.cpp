@@ -34,6 +34,7 @@
 #include "motion/skeleton.h"
 
 #include <algorithm>
+#include <limits>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -358,6 +359,34 @@ Skeleton skeletonise(const cv::Mat& mask_in, const SkeletonOptions& options) {
   }
   for (auto& e : s.edges) e.terminal = s.nodes[e.a].end() || s.nodes[e.b].end();
   return s;
+}
+
+SkeletonPaths shortest_paths(const Skeleton& s, int from, const std::vector<int>* edges) {
+  const double inf = std::numeric_limits<double>::infinity();
+  SkeletonPaths p{std::vector<double>(s.nodes.size(), inf), std::vector<int>(s.nodes.size(), -1)};
+  std::vector<char> done(s.nodes.size(), 0);
+  p.dist[from] = 0;
+  for (;;) {
+    int u = -1;  // the nearest unsettled node (the lowest index among equals: deterministic)
+    for (size_t n = 0; n < s.nodes.size(); ++n)
+      if (!done[n] && p.dist[n] < inf && (u < 0 || p.dist[n] < p.dist[u])) u = static_cast<int>(n);
+    if (u < 0) break;
+    done[u] = 1;
+    for (int e : edges ? *edges : s.nodes[u].edges) {
+      const auto& E = s.edges[e];
+      if (E.a != u && E.b != u) continue;
+      const int v = E.a == u ? E.b : E.a;
+      if (p.dist[u] + E.length < p.dist[v]) p.dist[v] = p.dist[u] + E.length, p.via[v] = e;
+    }
+  }
+  return p;
+}
+
+std::vector<int> SkeletonPaths::edges_to(const Skeleton& s, int to) const {
+  std::vector<int> out;
+  for (int n = to; via[n] >= 0; n = s.edges[via[n]].a == n ? s.edges[via[n]].b : s.edges[via[n]].a) out.push_back(via[n]);
+  std::reverse(out.begin(), out.end());
+  return out;
 }
 
 }  // namespace svgm::motion

@@ -64,4 +64,15 @@ Skeleton skeletonise(const cv::Mat& mask, const SkeletonOptions& options = {});
 // no staircase corners). Exposed for tests.
 cv::Mat thin(const cv::Mat& mask);
 
+// Shortest paths by branch length from node `from` (Dijkstra): each node's distance (infinity
+// where it is not reached) and the edge it was reached by (-1 for `from` and the unreached).
+// Through `edges` only when given (a sub-tree), else through every node's own edges.
+struct SkeletonPaths {
+  std::vector<double> dist;
+  std::vector<int> via;
+  // The edges from `from` to `to`, in order from `from`.
+  std::vector<int> edges_to(const Skeleton& s, int to) const;
+};
+SkeletonPaths shortest_paths(const Skeleton& s, int from, const std::vector<int>* edges = nullptr);
+
 }  // namespace svgm::motion

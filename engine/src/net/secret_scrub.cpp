@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "net/base64.h"
+#include "net/percent_encode.h"
 
 namespace svgm {
 
@@ -13,20 +14,6 @@ namespace {
 // Encoded forms of a key shorter than this are not looked for: a fragment of two or three
 // characters would match ordinary text. (Real keys are 20-60 characters.)
 constexpr size_t kMinEncodedKey = 4;
-
-std::string percent_encoded(const std::string& s, const char* hex) {
-  std::string out;
-  for (unsigned char c : s) {
-    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') {
-      out += static_cast<char>(c);
-    } else {
-      out += '%';
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    }
-  }
-  return out;
-}
 
 std::string json_escaped(const std::string& s) {
   std::string out;
@@ -59,8 +46,8 @@ std::string scrub_secret(std::string text, const std::string& secret) {
   const std::string mark = "<key>";
   replace_all(text, secret, mark);
   if (secret.size() < kMinEncodedKey) return text;
-  std::vector<std::string> forms = {percent_encoded(secret, "0123456789ABCDEF"),
-                                    percent_encoded(secret, "0123456789abcdef"), json_escaped(secret)};
+  std::vector<std::string> forms = {percent_encode(secret, true),
+                                    percent_encode(secret, false), json_escaped(secret)};
   for (size_t shift = 0; shift < 3; ++shift) {
     std::string b = base64_core(secret, shift);
     forms.push_back(b);

@@ -387,6 +387,20 @@ Ranking rank(std::vector<CandidateScore> scores) {
   return r;
 }
 
+CandidateScore score_candidate_file(const std::filesystem::path& video, const std::vector<Rgba>& palette,
+                                    const PixelRankOptions& o) {
+  const TargetInfo info = probe_target(video);
+  if (info.width <= 0 || info.height <= 0 || info.frames <= 0) throw Error(video.string() + ": no frames");
+  const int w = std::max(1, std::min(info.width, o.analysis_width));
+  const int h = std::max(1, static_cast<int>(std::lround(static_cast<double>(info.height) * w / info.width)));
+  TargetOptions to;
+  to.keyframes = std::clamp(info.frames, 1, std::max(1, o.keyframes));
+  to.white_threshold = o.white_threshold;
+  CandidateScore s = score_candidate(load_target(video, w, h, to), palette, o);
+  s.name = video.filename().string();
+  return s;
+}
+
 Ranking rank_directory(const std::filesystem::path& dir, const std::vector<Rgba>& palette,
                        const PixelRankOptions& o,
                        const std::function<bool(double, const std::string&)>& progress) {
@@ -402,14 +416,7 @@ Ranking rank_directory(const std::filesystem::path& dir, const std::vector<Rgba>
     if (progress && !progress(static_cast<double>(i) / entries.size(), "scoring " + name))
       throw Error("cancelled");
     try {
-      const TargetInfo info = probe_target(entries[i]);
-      if (info.width <= 0 || info.height <= 0 || info.frames <= 0) throw Error(entries[i].string() + ": no frames");
-      const int w = std::max(1, std::min(info.width, o.analysis_width));
-      const int h = std::max(1, static_cast<int>(std::lround(static_cast<double>(info.height) * w / info.width)));
-      TargetOptions to;
-      to.keyframes = std::clamp(info.frames, 1, std::max(1, o.keyframes));
-      to.white_threshold = o.white_threshold;
-      CandidateScore s = score_candidate(load_target(entries[i], w, h, to), palette, o);
+      CandidateScore s = score_candidate_file(entries[i], palette, o);
       s.name = name;
       scores.push_back(std::move(s));
     } catch (const std::exception& e) {

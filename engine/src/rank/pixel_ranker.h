@@ -74,6 +74,13 @@ inline constexpr double kPixelRankWeights[5] = {1.0, 1.5, 1.2, 0.8, 1.0};
 CandidateScore score_candidate(const TargetFrames& frames, const std::vector<Rgba>& palette,
                                const PixelRankOptions& options = {});
 
+// Scores one candidate video file (or folder of PNG frames) as rank_directory does: frames
+// resized to at most options.analysis_width, options.keyframes of them sampled uniformly.
+// Throws svgm::Error when it cannot be read. The procedural video checks its own candidates
+// with it before they reach the ranker.
+CandidateScore score_candidate_file(const std::filesystem::path& video, const std::vector<Rgba>& palette,
+                                    const PixelRankOptions& options = {});
+
 struct Ranking {
   std::vector<CandidateScore> candidates;  // best first (score, then name); unreadable last
   std::string chosen;                      // name of candidates.front()

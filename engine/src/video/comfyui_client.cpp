@@ -1,5 +1,7 @@
 #include "video/comfyui_client.h"
 
+#include "net/percent_encode.h"
+
 #include <cctype>
 #include <fstream>
 #include <functional>
@@ -123,20 +125,7 @@ std::optional<ComfyuiFile> find_comfyui_output(const json& history, const std::s
   return std::nullopt;
 }
 
-std::string url_encode(const std::string& s) {
-  static const char* hex = "0123456789ABCDEF";
-  std::string out;
-  for (unsigned char c : s) {
-    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') {
-      out += static_cast<char>(c);
-    } else {
-      out += '%';
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    }
-  }
-  return out;
-}
+std::string url_encode(const std::string& s) { return percent_encode(s); }
 
 namespace {
 
