@@ -17,7 +17,7 @@
 const fs = require('fs');
 const path = require('path');
 
-const kSections = ['svgm-player', 'svgm-input', 'svgm-candidates', 'svgm-compare', 'svgm-losses', 'svgm-timings'];
+const kSections = ['svgm-player', 'svgm-motion', 'svgm-input', 'svgm-candidates', 'svgm-compare', 'svgm-losses', 'svgm-timings'];
 
 async function main() {
   const [modulesArg, report, prefix, tArg] = process.argv.slice(2);
