@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -27,17 +28,6 @@ svgm::PixelRankOptions options_of(const nlohmann::json& req) {
   svgm::PixelRankOptions o;
   o.analysis_width = opt.whole("size", o.analysis_width, 1, 4096);
   o.keyframes = opt.whole("keyframes", o.keyframes, 1, 4096);
-  // A procedural motion that asks the fitter for more keyframes (motion.json, fit_plan) is
-  // judged at as many frames: its parts' areas change between the frames the fitter will see,
-  // not between 16 (generator and ranker agree on what is followable).
-  if (req.at("stages").at("video").value("plugin", "") == "procedural") {
-    std::ifstream in(std::filesystem::path(req.at("run_dir").get<std::string>()) / "motion.json");
-    const nlohmann::json m = nlohmann::json::parse(in, nullptr, false);
-    if (m.is_object() && m.contains("candidates") && m.at("candidates").is_array())
-      for (const auto& cand : m.at("candidates"))
-        if (cand.is_object() && cand.contains("keyframes") && cand.at("keyframes").is_number_integer())
-          o.keyframes = std::max(o.keyframes, cand.at("keyframes").get<int>() + 1);
-  }
   return o;
 }
 
@@ -48,10 +38,30 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   // The colours the candidates are drawn in: the palette's, or the SVG's own for a user's video.
   const std::vector<svgm::Rgba> palette = svgm::plugin::candidate_colours(req, "ranker pixel");
 
-  const svgm::Ranking r = svgm::rank_directory(dir, palette, o, [&](double f, const std::string& note) {
-    if (host && host->progress) host->progress(host, 0.9 * f, note.c_str());
-    return !(host && host->cancelled && host->cancelled(host));
-  });
+  // A procedural candidate whose motion asks the fitter for more keyframes (motion.json,
+  // fit_plan) is judged at that many frames + 1: its parts' areas change between the frames the
+  // fitter will see. The procedural video scored it the same way before handing it over
+  // (generator and ranker agree).
+  std::map<std::string, int> keyframes;
+  if (req.at("stages").at("video").value("plugin", "") == "procedural") {
+    std::ifstream in(fs::path(req.at("run_dir").get<std::string>()) / "motion.json");
+    const nlohmann::json m = nlohmann::json::parse(in, nullptr, false);
+    if (m.is_object() && m.contains("candidates") && m.at("candidates").is_array())
+      for (const auto& cand : m.at("candidates"))
+        if (cand.is_object() && cand.contains("name") && cand.at("name").is_string() && cand.contains("keyframes") &&
+            cand.at("keyframes").is_number_integer())
+          keyframes[cand.at("name").get<std::string>()] = std::max(o.keyframes, cand.at("keyframes").get<int>() + 1);
+  }
+  const svgm::Ranking r = svgm::rank_directory(
+      dir, palette, o,
+      [&](double f, const std::string& note) {
+        if (host && host->progress) host->progress(host, 0.9 * f, note.c_str());
+        return !(host && host->cancelled && host->cancelled(host));
+      },
+      [&](const std::string& name) {
+        const auto it = keyframes.find(name);
+        return it == keyframes.end() ? 0 : it->second;
+      });
   if (host && host->log)
     for (const auto& c : r.candidates) {
       std::string line = c.name + ": " + (c.error.empty() ? "score " + std::to_string(c.score) : c.error);

@@ -403,7 +403,8 @@ CandidateScore score_candidate_file(const std::filesystem::path& video, const st
 
 Ranking rank_directory(const std::filesystem::path& dir, const std::vector<Rgba>& palette,
                        const PixelRankOptions& o,
-                       const std::function<bool(double, const std::string&)>& progress) {
+                       const std::function<bool(double, const std::string&)>& progress,
+                       const std::function<int(const std::string&)>& keyframes_of) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw Error(dir.string() + ": no candidates folder");
@@ -416,7 +417,10 @@ Ranking rank_directory(const std::filesystem::path& dir, const std::vector<Rgba>
     if (progress && !progress(static_cast<double>(i) / entries.size(), "scoring " + name))
       throw Error("cancelled");
     try {
-      CandidateScore s = score_candidate_file(entries[i], palette, o);
+      PixelRankOptions oi = o;
+      if (keyframes_of)
+        if (const int k = keyframes_of(name); k > 0) oi.keyframes = k;
+      CandidateScore s = score_candidate_file(entries[i], palette, oi);
       s.name = name;
       scores.push_back(std::move(s));
     } catch (const std::exception& e) {

@@ -92,10 +92,13 @@ struct Ranking {
 Ranking rank(std::vector<CandidateScore> scores);
 
 // Scores every entry of `dir` (video files or folders of PNG frames, by name order) and ranks
-// them. Unreadable candidates are kept with their error and never chosen. `progress(fraction,
+// them. Unreadable candidates are kept with their error and never chosen. `keyframes_of(name)`,
+// when given and positive, samples that candidate at that many frames instead of
+// options.keyframes (a procedural candidate, at the keyframes its motion asks of the fitter). `progress(fraction,
 // note)` is called before each candidate; returning false cancels (svgm::Error "cancelled").
 Ranking rank_directory(const std::filesystem::path& dir, const std::vector<Rgba>& palette,
                        const PixelRankOptions& options = {},
-                       const std::function<bool(double, const std::string&)>& progress = {});
+                       const std::function<bool(double, const std::string&)>& progress = {},
+                       const std::function<int(const std::string&)>& keyframes_of = {});
 
 }  // namespace svgm
