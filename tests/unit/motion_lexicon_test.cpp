@@ -184,4 +184,16 @@ TEST_CASE("lexicon: without WordNet nothing is placed") {
   CHECK(none.noun("hummingbird").figure == FigureClass::None);
 }
 
+TEST_CASE("lexicon: a word right before a part noun modifies it and is no part of its own") {
+  if (!wordnet_or_skip()) return;
+  // WordNet's noun "upper" is part of a shoe (a boot, so the legs): in "his upper body" it says
+  // which body, and the body is what sways.
+  const ParsedPrompt p = parse_prompt("his upper body sways subtly");
+  REQUIRE(p.clauses.size() == 1);
+  for (const auto& n : p.clauses[0].nouns) CHECK(n.target != Target::Legs);
+  bool body = false;
+  for (const auto& n : p.clauses[0].nouns) body = body || (n.word == "body" && n.target == Target::Root);
+  CHECK(body);
+}
+
 }  // TEST_SUITE

@@ -216,7 +216,12 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
       // A kind or a part of a body part the vocabulary knows ("talons": claws, "fingers": hands).
       // Not the body itself ("figure" is a synonym of body in WordNet, and a prompt's "figure"
       // is the whole), nor repeated elements or the background (a "sun" is not stars).
-      if (r.part && r.part->target != Target::Root && r.part->target != Target::Repeated &&
+      // Nor a word right before a part noun the vocabulary knows: it is that noun's modifier
+      // ("his upper body": WordNet's noun "upper" is part of a shoe, read as a boot, and the
+      // saxophonist's legs swayed instead of his body).
+      bool modifies_part = false;
+      for (const PartNoun& pn : part_nouns()) modifies_part = modifies_part || word_matches(next, pn.stem);
+      if (r.part && !modifies_part && r.part->target != Target::Root && r.part->target != Target::Repeated &&
           r.part->target != Target::Background) {
         n.target = r.part->target;
         out.readings.push_back("'" + w + "' read as " + r.part->stem);
