@@ -100,20 +100,28 @@ std::vector<Rgba> candidate_colours(const nlohmann::json& req, const std::string
   return out;
 }
 
-int fitter_keyframes(const nlohmann::json& req, std::string* why) {
-  const nlohmann::json& stages = req.at("stages");
-  const int asked = stages.at("fitter").value("keyframes", 15);
-  if (stages.at("video").value("plugin", "") != "procedural" || !req.contains("run_dir")) return asked;
-  const std::filesystem::path run = req.at("run_dir").get<std::string>();
-  std::ifstream in(run / "motion.json"), ranking(run / "ranking.json");
-  const nlohmann::json m = nlohmann::json::parse(in, nullptr, false), r = nlohmann::json::parse(ranking, nullptr, false);
-  if (!m.is_object() || !m.contains("candidates") || !m.at("candidates").is_array() || m.at("candidates").empty()) return asked;
-  const std::string chosen = r.is_object() && r.contains("chosen") && r.at("chosen").is_string() ? r.at("chosen").get<std::string>() : "";
-  const nlohmann::json* cand = &m.at("candidates").front();
+std::map<std::string, int> candidate_keyframes(const nlohmann::json& req) {
+  std::map<std::string, int> out;
+  if (req.at("stages").at("video").value("plugin", "") != "procedural" || !req.contains("run_dir")) return out;
+  std::ifstream in(std::filesystem::path(req.at("run_dir").get<std::string>()) / "motion.json");
+  const nlohmann::json m = nlohmann::json::parse(in, nullptr, false);
+  if (!m.is_object() || !m.contains("candidates") || !m.at("candidates").is_array()) return out;
   for (const auto& c : m.at("candidates"))
-    if (c.is_object() && c.value("name", "") == chosen) cand = &c;
-  if (!cand->is_object() || !cand->contains("keyframes") || !cand->at("keyframes").is_number_integer()) return asked;
-  const int need = std::min(cand->at("keyframes").get<int>(), 2 * (asked - 1) + 1);
+    if (c.is_object() && c.contains("name") && c.at("name").is_string() && c.contains("keyframes") && c.at("keyframes").is_number_integer())
+      out[c.at("name").get<std::string>()] = c.at("keyframes").get<int>();
+  return out;
+}
+
+int fitter_keyframes(const nlohmann::json& req, std::string* why) {
+  const int asked = req.at("stages").at("fitter").value("keyframes", 15);
+  const std::map<std::string, int> asks = candidate_keyframes(req);
+  if (asks.empty()) return asked;
+  // The ranker's choice, else the first candidate (the one motion.json describes).
+  std::ifstream ranking(std::filesystem::path(req.at("run_dir").get<std::string>()) / "ranking.json");
+  const nlohmann::json r = nlohmann::json::parse(ranking, nullptr, false);
+  const std::string chosen = r.is_object() && r.contains("chosen") && r.at("chosen").is_string() ? r.at("chosen").get<std::string>() : "";
+  const auto it = asks.count(chosen) ? asks.find(chosen) : asks.begin();
+  const int need = std::min(it->second, 2 * (asked - 1) + 1);
   if (need <= asked) return asked;
   if (why)
     *why = std::to_string(need) + " keyframes instead of " + std::to_string(asked) + ": the procedural motion moves too far between " +

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -41,5 +42,9 @@ std::vector<Rgba> candidate_colours(const nlohmann::json& request, const std::st
 // else the first candidate; motion_plan.h fit_plan), at most twice as many gaps. The tracker
 // samples its flows at the same keyframes. `why` (may be null) gets a line when it was raised.
 int fitter_keyframes(const nlohmann::json& request, std::string* why = nullptr);
+
+// The keyframes each procedural candidate's motion asks of the fitter, by candidate name
+// ("00.mp4"), from the run directory's motion.json; empty for any other video plugin.
+std::map<std::string, int> candidate_keyframes(const nlohmann::json& request);
 
 }  // namespace svgm::plugin

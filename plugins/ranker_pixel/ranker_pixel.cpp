@@ -5,9 +5,7 @@
 //
 // Options (stages.ranker.options): size (analysis width in px, default 128), keyframes
 // (frames sampled per candidate, default 16).
-#include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -42,16 +40,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   // fit_plan) is judged at that many frames + 1: its parts' areas change between the frames the
   // fitter will see. The procedural video scored it the same way before handing it over
   // (generator and ranker agree).
-  std::map<std::string, int> keyframes;
-  if (req.at("stages").at("video").value("plugin", "") == "procedural") {
-    std::ifstream in(fs::path(req.at("run_dir").get<std::string>()) / "motion.json");
-    const nlohmann::json m = nlohmann::json::parse(in, nullptr, false);
-    if (m.is_object() && m.contains("candidates") && m.at("candidates").is_array())
-      for (const auto& cand : m.at("candidates"))
-        if (cand.is_object() && cand.contains("name") && cand.at("name").is_string() && cand.contains("keyframes") &&
-            cand.at("keyframes").is_number_integer())
-          keyframes[cand.at("name").get<std::string>()] = std::max(o.keyframes, cand.at("keyframes").get<int>() + 1);
-  }
+  const std::map<std::string, int> keyframes = svgm::plugin::candidate_keyframes(req);
   const svgm::Ranking r = svgm::rank_directory(
       dir, palette, o,
       [&](double f, const std::string& note) {
@@ -60,7 +49,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
       },
       [&](const std::string& name) {
         const auto it = keyframes.find(name);
-        return it == keyframes.end() ? 0 : it->second;
+        return it == keyframes.end() ? 0 : svgm::frames_to_rank(o, it->second);
       });
   if (host && host->log)
     for (const auto& c : r.candidates) {

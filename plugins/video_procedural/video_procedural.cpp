@@ -94,7 +94,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
       svgm::write_procedural_video(scene, pts, seed, o, dir / (std::string(name) + ".mp4"));
       if (!self_check || palette.empty()) break;
       svgm::PixelRankOptions check = ro;
-      check.keyframes = std::max(check.keyframes, plan.keyframes + 1);
+      check.keyframes = svgm::frames_to_rank(ro, plan.keyframes);
       const svgm::CandidateScore sc = svgm::score_candidate_file(dir / (std::string(name) + ".mp4"), palette, check);
       // What a smaller motion cures: parts whose visible area jumps between the ranker's
       // frames (continuity), and chaotic motion. 'No motion' is not cured by less of it.

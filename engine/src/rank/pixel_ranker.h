@@ -81,6 +81,12 @@ CandidateScore score_candidate(const TargetFrames& frames, const std::vector<Rgb
 CandidateScore score_candidate_file(const std::filesystem::path& video, const std::vector<Rgba>& palette,
                                     const PixelRankOptions& options = {});
 
+// The frames a candidate is sampled at when the fitter will take `fitter_keyframes` keyframes
+// of it: at least options.keyframes, and one more than the fitter's (0: options.keyframes).
+inline int frames_to_rank(const PixelRankOptions& options, int fitter_keyframes) {
+  return fitter_keyframes + 1 > options.keyframes ? fitter_keyframes + 1 : options.keyframes;
+}
+
 struct Ranking {
   std::vector<CandidateScore> candidates;  // best first (score, then name); unreadable last
   std::string chosen;                      // name of candidates.front()
