@@ -105,6 +105,10 @@ void check_config(const nlohmann::json& c, const PluginHost& host) {
   whole(c, "stages.video.frames", 2, 10000);
   real(c, "stages.video.fps", 0, 1000, true);
   whole(c, "stages.video.size", 32, 4096);
+  if (const nlohmann::json& r = at(c, "stages.video.room"); !(r.is_string() && r.get<std::string>() == "auto")) {
+    const double x = r.is_number() ? r.get<double>() : NAN;
+    if (!(x >= 0 && x <= 0.5)) throw Error("stages.video.room: must be auto or a share from 0 to 0.5, not " + shown(r));
+  }
   whole(c, "stages.tracker.grid", 2, 512);
   whole(c, "stages.fitter.iterations", 1, 1000000);
   whole(c, "stages.fitter.keyframes", 2, 1000);

@@ -1,14 +1,19 @@
 // The pipeline runner (see pipeline.h).
 #include "pipeline/pipeline.h"
 #include "pipeline/candidate_choice.h"
+#include "pipeline/canvas_room.h"
 #include "svgmotion/atomic_file.h"
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <fstream>
+#include <sstream>
 
 #include "svgmotion/error.h"
 #include "svgmotion/log.h"
+#include "svgmotion/svg_reader.h"
 #include "svgmotion/utf8_text.h"
 
 namespace svgm {
@@ -97,6 +102,39 @@ void stop_if_every_candidate_flagged(const fs::path& ranking, const nlohmann::js
                  Rejected::kCandidatesFlagged);
 }
 
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return in ? s.str() : std::string("<missing>");
+}
+
+// The input as the stages read it: the user's file, or, when stages.video.room asks for it
+// (canvas_room.h), the same document with room around the figure, said once on the terminal.
+std::string staged_input(const nlohmann::json& config, const std::string& input) {
+  std::string text = read_text(input);
+  const nlohmann::json& video = config["stages"]["video"];
+  const nlohmann::json room = video.value("room", nlohmann::json("auto"));
+  double share = 0;
+  char why[160] = "";
+  const Scene scene = read_svg_file(input);
+  if (room.is_number()) {
+    share = room.get<double>();
+    std::snprintf(why, sizeof why, "stages.video.room is %g", share);
+  } else if (room == "auto" && video.value("plugin", "") == "procedural") {
+    const FigureSpan span = figure_span(scene);
+    if (!span.empty && std::max(span.x, span.y) >= kFillsCanvas) {
+      share = kAutoRoom;
+      std::snprintf(why, sizeof why, "the drawing fills %.0f %% of its canvas's %s", 100 * std::max(span.x, span.y),
+                    span.x >= span.y ? "width" : "height");
+    }
+  }
+  if (share <= 0) return text;
+  log::info("%s: %s: its canvas grows by %.0f %% on each side so the motion stays in view "
+            "(stages.video.room=0 keeps the canvas as it is)", shown_path(input).c_str(), why, 100 * share);
+  return give_canvas_room(text, shown_path(input), scene, share);
+}
+
 }  // namespace
 
 std::vector<StageReport> run_pipeline(const nlohmann::json& config, const PluginHost& host,
@@ -112,13 +150,15 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
   }
   const fs::path run = fs::absolute(config.value("output", "run"));
   std::error_code ec;
-  // The input is copied into the run directory, so the run is self-contained; the copy only
-  // changes (and invalidates later stages) when the input's content does.
+  // The input is copied into the run directory, so the run is self-contained (given room to
+  // move when it fills its canvas: canvas_room.h); the copy only changes (and invalidates later
+  // stages) when its content does.
   {
+    const std::string staged = staged_input(config, input);
     Hash a, b;
-    a.add_file(input);
-    b.add_file(run / "input.svg");
-    if (a.h != b.h) fs::copy_file(input, run / "input.svg", fs::copy_options::overwrite_existing);
+    a.add(staged);
+    b.add(read_text(run / "input.svg"));
+    if (a.h != b.h) write_file_atomic(run / "input.svg", staged);
   }
   bool forced = false;
   std::vector<StageReport> reports;

@@ -1,0 +1,42 @@
+// Room to move: a drawing that fills its canvas (an emoji, an icon) cannot move without leaving
+// it, so the offline motion library scaled every such motion down to nothing (issue 35: 17 of 86
+// suite cases, a waving hand, a hopping rabbit, a shaking alarm clock, were still). The pipeline
+// gives such a drawing room before anything reads it: input.svg's viewBox grows by a share of
+// its size on every side, and its width and height by the same factor, so the figure keeps its
+// size in pixels and its place in the middle, and the canvas around it grows. Every later stage
+// (grouper, recolorer, video, fitter, exporters) reads that input.svg, so the animation the user
+// gets has the larger canvas, said on the terminal and in the report.
+//
+// When: stages.video.room (auto | 0 | a share in (0, 0.5]). auto gives kAutoRoom when the video
+// is made by the procedural plugin from this canvas and the figure spans at least kFillsCanvas of
+// the canvas's width or height (a backdrop, a shape covering the whole canvas, is not the
+// figure); a video the user brings is drawn on the canvas as it is, so auto leaves it alone.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "svgmotion/scene.h"
+
+namespace svgm {
+
+constexpr double kAutoRoom = 0.15;     // of the canvas's size, added on each side
+constexpr double kFillsCanvas = 0.92;  // the figure's share of the canvas's width or height
+
+// The figure's extent as shares of the canvas's width and height: the box of every painted
+// path's control points (a stroke's half width added), backdrops left out.
+struct FigureSpan {
+  double x = 0, y = 0;
+  bool empty = true;
+};
+FigureSpan figure_span(const Scene& scene);
+
+// `text`: an SVG document; `share` > 0. The same document with the root's viewBox grown by
+// `share` of its width and height on each side (a viewBox is added from the canvas size when
+// there is none) and width and height (when given in an absolute unit) by 1 + 2 share; the rest
+// is kept (comments, doctype and the formatting inside the root; pugixml drops whitespace
+// between the nodes outside it). Throws svgm::Error "<name>: ..." when the
+// document has no <svg> root or an unreadable viewBox.
+std::string give_canvas_room(std::string_view text, std::string_view name, const Scene& scene, double share);
+
+}  // namespace svgm

@@ -1,0 +1,74 @@
+// Room to move (pipeline/canvas_room.h): which drawings fill their canvas, and the document
+// with room around it, checked against numbers worked out by hand.
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "error_of.h"
+#include "pipeline/canvas_room.h"
+#include "svgmotion/svg_reader.h"
+
+using namespace svgm;
+using svgm::test::error_of;
+
+namespace {
+
+Scene read(const std::string& text) { return read_svg_string(text, "t.svg"); }
+
+}  // namespace
+
+TEST_SUITE("pipeline") {
+
+TEST_CASE("canvas room: the figure's span leaves out a backdrop rectangle but not a disc filling the canvas") {
+  // A 36-unit canvas: a backdrop rectangle over all of it and a 10-wide square from 13 to 23.
+  const Scene boxed = read(R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 36 36">
+    <rect width="36" height="36" fill="#ccc"/><rect x="13" y="4" width="10" height="20" fill="red"/></svg>)");
+  const FigureSpan s = figure_span(boxed);
+  CHECK_FALSE(s.empty);
+  CHECK(s.x == doctest::Approx(10.0 / 36));
+  CHECK(s.y == doctest::Approx(20.0 / 36));
+  // A face: a disc touching all four sides is the figure itself.
+  const FigureSpan face = figure_span(read(R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 36 36">
+    <circle cx="18" cy="18" r="18" fill="gold"/></svg>)"));
+  CHECK(face.x == doctest::Approx(1.0));
+  CHECK(face.y == doctest::Approx(1.0));
+  // A stroke's half width counts; what hangs off the canvas does not.
+  const FigureSpan line = figure_span(read(R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="50">
+    <path d="M10 25 H 200" stroke="black" stroke-width="4" fill="none"/></svg>)"));
+  CHECK(line.x == doctest::Approx(0.92));  // from 8 to the edge at 100
+  CHECK(line.y == doctest::Approx(4.0 / 50));
+  CHECK(figure_span(read(R"(<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"/>)")).empty);
+}
+
+TEST_CASE("canvas room: the viewBox grows by the share on each side, width and height by 1 + 2 share, the rest kept") {
+  const std::string doc = "<?xml version=\"1.0\"?>\n<!-- mine -->\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
+                          "width=\"72px\" height=\"36\" viewBox=\"10 0 72 36\">\n  <path d=\"M10 0h72v36z\"/>\n</svg>";
+  const std::string out = give_canvas_room(doc, "t.svg", read(doc), 0.25);
+  // (pugixml keeps no whitespace between the nodes outside the root; the fitter's writer does
+  // not either.)
+  CHECK(out == "<?xml version=\"1.0\"?><!-- mine --><svg xmlns=\"http://www.w3.org/2000/svg\" "
+               "width=\"108px\" height=\"54\" viewBox=\"-8 -9 108 54\">\n  <path d=\"M10 0h72v36z\"/>\n</svg>");
+  // Read back: the canvas is 1.5 times as large and the shape keeps its size and sits in the middle.
+  const Scene s = read(out);
+  CHECK(s.width == doctest::Approx(108));
+  CHECK(s.height == doctest::Approx(54));
+  CHECK(s.paths[0].subpaths[0].points[0].x == doctest::Approx(18));
+  CHECK(s.paths[0].subpaths[0].points[0].y == doctest::Approx(9));
+}
+
+TEST_CASE("canvas room: a document without a viewBox gets one from its canvas; a percentage size is left alone") {
+  const std::string plain = R"(<svg xmlns="http://www.w3.org/2000/svg" width="40" height="20"><rect width="40" height="20"/></svg>)";
+  const std::string out = give_canvas_room(plain, "t.svg", read(plain), 0.1);
+  CHECK(out.find("width=\"48\" height=\"24\" viewBox=\"-4 -2 48 24\"") != std::string::npos);
+  const std::string pct = R"(<svg xmlns="http://www.w3.org/2000/svg" width="100%" viewBox="0 0 10 10"><rect width="10" height="10"/></svg>)";
+  CHECK(give_canvas_room(pct, "t.svg", read(pct), 0.5).find("width=\"100%\" viewBox=\"-5 -5 20 20\"") != std::string::npos);
+}
+
+TEST_CASE("canvas room: a bad share or an unreadable viewBox is one line naming the file") {
+  const std::string ok = R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10"/>)";
+  CHECK(error_of([&] { give_canvas_room(ok, "a.svg", read(ok), 0.6); }) == "a.svg: room must be a share in (0, 0.5]");
+  const std::string bad = R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 ten 10"/>)";
+  CHECK(error_of([&] { give_canvas_room(bad, "b.svg", Scene{}, 0.1); }) == "b.svg: viewBox \"0 0 ten 10\" is not four numbers");
+}
+
+}  // TEST_SUITE
