@@ -76,6 +76,21 @@ TEST_SUITE("motion") {
       if (L.kind == LimbKind::Leg) CHECK(L.tip_pos.y >= 135);
   }
 
+  TEST_CASE("a tail hanging down from the top of the body's back end is a tail, not a leg") {
+    // The quadruped's tail redrawn as a cow's: from the top of its back end (58, 55) down to
+    // (40, 110), off the ground the four legs stand on.
+    cv::Mat m = motion_masks::quadruped();
+    cv::line(m, {58, 65}, {25, 45}, 0, 7);  // rub out the sideways tail
+    cv::ellipse(m, {110, 70}, {55, 22}, 0, 0, 360, 255, cv::FILLED);
+    cv::line(m, {60, 56}, {40, 110}, 255, 5);
+    const Figure f = find_limbs(skeletonise(m));
+    CHECK(count(f, LimbKind::Leg) == 4);
+    const int tail = find(f, LimbKind::Tail, {40, 110});
+    REQUIRE(tail >= 0);
+    CHECK(distance(f.limbs[tail].tip_pos, {40, 110}) <= 4);
+    CHECK_FALSE(f.limbs[tail].grounded);
+  }
+
   TEST_CASE("a bent arm's elbow is where it bends") {
     cv::Mat m = motion_masks::stick_figure();
     cv::line(m, {80, 55}, {115, 60}, 255, 8);  // upper arm out to the right, forearm up

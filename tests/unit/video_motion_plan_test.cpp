@@ -1145,7 +1145,49 @@ TEST_CASE("arms drawn in one body outline: only the arm lobes bend, about their 
   const MotionPlan limbs = plan_from_prompt(parse_prompt("the ghost sways its limbs"), rig, 1);
   REQUIRE(limbs.actions.size() == 1);
   CHECK(limbs.actions[0].region == Region::Sides);
-  CHECK(limbs.actions[0].lobes.empty());
+  // Not the outline's one pair of arms (limbs reach out all round: petals, tentacles); the
+  // silhouette's limbs, if any.
+  CHECK((limbs.actions[0].lobes.empty() || limbs.actions[0].silhouette));
+}
+
+}  // TEST_SUITE
+
+TEST_SUITE("motion") {
+
+TEST_CASE("a tail not drawn as a part of its own: the tail of the figure's silhouette wags, fill and outline together; the head holds") {
+  // A dog facing left drawn as one filled body (a box on four legs, a head at the left, a tail
+  // rising from its back end at the right), and the tail's outline drawn again as a stroke in
+  // another group (the way emoji draw black outlines over fills).
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="240" height="200">
+           <g><path d="M 60 80 L 165 80 L 210 32 L 218 40 L 170 92 L 170 150 L 160 150 L 160 115 L 150 115 L 150 150 L 140 150 L 140 115
+                       L 90 115 L 90 150 L 80 150 L 80 115 L 70 115 L 70 150 L 60 150 Z
+                       M 20 50 L 60 50 L 60 95 L 20 95 Z" fill="#a60"/></g>
+           <g><path d="M 165 80 L 210 32 L 218 40 L 170 92" stroke="#000" stroke-width="2" fill="none"/></g></svg>)", "dog.svg");
+  const Rig rig = build_rig(s, {});
+  bool tail = false;
+  for (const ArmLobe& l : rig.limbs) tail = tail || (l.kind == LobeKind::Tail && l.tip.x > 195 && l.tip.y < 55);
+  REQUIRE(tail);
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the dog wags its tail"), rig, 3);
+  REQUIRE(plan.actions.size() == 1);
+  INFO(plan.actions[0].why);
+  CHECK(plan.actions[0].silhouette);
+  const int F = 37;  // not a multiple of the wag's half cycles: no frame lands on rest
+  const auto pts = animate_plan(s, rig, plan, F);
+  const size_t per = pts.size() / F;
+  // Points in order: the body's (head last: its subpath is the second), then the tail stroke's.
+  double head = 0, tail_tip = 0, legs = 0;
+  for (size_t i = 0; i < per; ++i)
+    for (int f = 1; f < F; ++f) {
+      const Vec2 r = pts[i], q = pts[f * per + i];
+      const double d = std::hypot(q.x - r.x, q.y - r.y);
+      if (r.x <= 60) head = std::max(head, d);
+      if (r.y >= 140) legs = std::max(legs, d);
+      if (std::hypot(r.x - 210, r.y - 32) < 1e-9) tail_tip = std::max(tail_tip, d);
+    }
+  CHECK(tail_tip > 8);
+  CHECK(head == 0);
+  CHECK(legs == 0);
 }
 
 }  // TEST_SUITE

@@ -161,13 +161,18 @@ bool point_core(const Figure& f) { return f.core_length < std::max(2.0, f.core_r
 
 // Where a limb's joint lies along the core axis: 0 at the top (upright) or left end, 1 at the
 // other; a point core places limbs by direction (down-pointing limbs in the lower half).
-double joint_t(const Skeleton& s, const Figure& f, const Limb& L) {
-  if (point_core(f)) return L.direction.y > 0.3 ? 1.0 : 0.0;
+// Where `p` lies along the core axis, 0 at the core's first end and 1 at its other (not clamped).
+double axis_t(const Skeleton& s, const Figure& f, Vec2 p) {
   double lo = 1e300, hi = -1e300;
   for (int e : f.core_edges)
-    for (const auto& p : s.edges[e].points) lo = std::min(lo, dot(p, f.core_axis)), hi = std::max(hi, dot(p, f.core_axis));
+    for (const auto& q : s.edges[e].points) lo = std::min(lo, dot(q, f.core_axis)), hi = std::max(hi, dot(q, f.core_axis));
   for (int n : f.core_nodes) lo = std::min(lo, dot(s.nodes[n].pos, f.core_axis)), hi = std::max(hi, dot(s.nodes[n].pos, f.core_axis));
-  return std::clamp((dot(s.nodes[L.joint].pos, f.core_axis) - lo) / std::max(1e-9, hi - lo), 0.0, 1.0);
+  return (dot(p, f.core_axis) - lo) / std::max(1e-9, hi - lo);
+}
+
+double joint_t(const Skeleton& s, const Figure& f, const Limb& L) {
+  if (point_core(f)) return L.direction.y > 0.3 ? 1.0 : 0.0;
+  return std::clamp(axis_t(s, f, s.nodes[L.joint].pos), 0.0, 1.0);
 }
 
 void label(const Skeleton& s, Figure& f) {
@@ -201,10 +206,20 @@ void label(const Skeleton& s, Figure& f) {
     return;
   }
   int end[2] = {-1, -1};  // the longest limb out of each end of the core: head or tail
+  const bool stands = std::any_of(f.limbs.begin(), f.limbs.end(), [](const Limb& L) { return L.grounded; });
   for (size_t i = 0; i < f.limbs.size(); ++i) {
     Limb& L = f.limbs[i];
     const double along = dot(L.direction, f.core_axis);
-    if (L.grounded || L.direction.y > 0.5) set(L, LimbKind::Leg, L.grounded ? "its tip is on the ground line" : "down from the body");
+    // A limb hanging down off the ground from an end of a body that stands on legs, from the
+    // body's upper half or out beyond its end, is a tail (a cow's, a tiger's), not a leg.
+    const double tip_t = axis_t(s, f, L.tip_pos), beyond = std::max(-tip_t, tip_t - 1) * f.core_length;
+    const bool hangs = stands && !L.grounded && (t[i] <= 0.25 || t[i] >= 0.75) &&
+                       (L.base.y < f.core_centre.y || beyond > f.core_radius);
+    if (hangs) {
+      set(L, LimbKind::Other, "hangs from the top of an end of the body, off the ground");
+      int& e = end[t[i] >= 0.5];
+      if (e < 0 || L.length > f.limbs[e].length) e = static_cast<int>(i);
+    } else if (L.grounded || L.direction.y > 0.5) set(L, LimbKind::Leg, L.grounded ? "its tip is on the ground line" : "down from the body");
     else if ((t[i] <= 0.25 && along < -0.3) || (t[i] >= 0.75 && along > 0.3)) {
       set(L, LimbKind::Other, "out of an end of the body");
       int& e = end[along > 0];

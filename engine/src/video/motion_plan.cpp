@@ -377,6 +377,18 @@ int reaching_out(const Rig& rig, const std::vector<int>& limbs) {
 // A compact figure (an octopus, a frog) does not swim by a wave along its body, which would heave
 // its head as much as its arms: its lower limbs paddle, alternating (Builder::add), and the
 // swim is then a verb of the limbs (plan_from_prompt).
+// Which limbs of a silhouette's skeleton a limb role bends.
+bool lobe_serves(LobeKind k, Target t) {
+  switch (t) {
+    case Target::Arms: return k == LobeKind::Arm;
+    case Target::Legs: return k == LobeKind::Leg;
+    case Target::Head: return k == LobeKind::Head;
+    case Target::Tail: return k == LobeKind::Tail;
+    case Target::Limbs: return k == LobeKind::Arm || k == LobeKind::Leg || k == LobeKind::Other;
+    default: return false;
+  }
+}
+
 bool paddles(const Verb& verb, const Rig& rig) {
   const RigBox& F = rig.figure;
   const double aspect = std::max(F.w(), F.h()) / std::max(std::min(F.w(), F.h()), 1e-9);
@@ -475,7 +487,9 @@ struct Builder {
                  : target == Target::Legs ? Region::Lower : target == Target::Head ? Region::Top : Region::End;
       a.alternating = base.pairing == Pairing::Alternating || (base.pairing == Pairing::OneAtATime && (mods.both || plural));
       if (a.region == Region::Sides) side_core(rig, a);
-      if ((base.pairing == Pairing::OneSide || base.pairing == Pairing::OneAtATime) && !mods.both && !plural) {
+      // (A head or a tail is one: no side to pick.)
+      if ((base.pairing == Pairing::OneSide || base.pairing == Pairing::OneAtATime) && !mods.both && !plural &&
+          target != Target::Head && target != Target::Tail) {
         // The figure's own side is drawn on the viewer's other side.
         a.region_side = mods.side != 0 ? -mods.side : ((rng() & 1) ? 1 : -1);
       }
@@ -488,11 +502,29 @@ struct Builder {
         auto on = [&](int side) { return std::any_of(lobes.begin(), lobes.end(), [&](const ArmLobe& l) { return l.side == side; }); };
         if (a.region_side != 0 ? on(a.region_side) : on(-1) && on(1)) a.lobes = lobes;
       }
+      // Otherwise the limbs of the part's silhouette (skeleton_lobes.h) of the role's kind: a
+      // cat's tail, not whichever end of its body the seed picked.
+      bool skeletal = false;
+      if (a.lobes.empty()) {
+        std::vector<ArmLobe> picked;
+        for (const ArmLobe& l : rig.limbs)
+          if (lobe_serves(l.kind, target)) picked.push_back(l);
+        // As for the outline's arms: one on the side that moves, or a pair when both do.
+        auto on = [&](int side) { return std::any_of(picked.begin(), picked.end(), [&](const ArmLobe& l) { return l.side == side; }); };
+        const bool sided = a.region_side != 0 ? on(a.region_side) : target != Target::Arms || (on(-1) && on(1));
+        if (!picked.empty() && sided) {
+          a.lobes = std::move(picked);
+          a.silhouette = skeletal = true;
+        }
+      }
       a.direction = a.region == Region::End ? ((rng() & 1) ? 1 : -1) : a.direction;
       note = std::string("no separate ") + target_name(target) + ": the " +
              (a.region == Region::Sides ? "sides" : a.region == Region::Lower ? "lower part" : a.region == Region::Top ? "top" : "far end") +
              " of " + rig.parts[a.parts[0]].name + " bend";
-      if (!a.lobes.empty())
+      if (skeletal)
+        note = std::string("no separate ") + target_name(target) + ": " + std::to_string(a.lobes.size()) + " " +
+               (a.lobes.size() > 1 ? "limbs" : "limb") + " of the figure's silhouette skeleton bend" + (a.lobes.size() > 1 ? "" : "s") + " about " + (a.lobes.size() > 1 ? "their bases" : "its base");
+      else if (!a.lobes.empty())
         note = std::string("no separate ") + target_name(target) + ": the " + std::to_string(a.lobes.size()) +
                " arm" + (a.lobes.size() > 1 ? "s" : "") + " drawn in the outline of " + rig.parts[a.parts[0]].name + " bend";
       a.sign = {1};
@@ -853,22 +885,23 @@ Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box
   const double W = std::max(box.w(), 1e-9), H = std::max(box.h(), 1e-9);
   const Vec2 c = box.centre();
   auto wave = [&](double phase) { return oscillation(a, a.cycles * t + phase); };
+  // Limbs drawn in the part's outline, or read from its silhouette's skeleton: each bends about
+  // the middle of its base, the turn growing from nothing at the base over half its width (the
+  // outline stays in one piece).
+  if (!a.lobes.empty()) {
+    for (const ArmLobe& l : a.lobes) {
+      if (a.region_side != 0 && l.side != a.region_side) continue;
+      const double depth = lobe_depth(l, q);
+      if (depth <= 0) continue;
+      const double base = std::hypot(l.base1.x - l.base0.x, l.base1.y - l.base0.y);
+      const double w = smoothstep(depth / std::max(kLobeRamp * base, 1e-9));
+      const double ang = amp * (l.side < 0 ? 1 : -1) * wave(a.alternating && l.side > 0 ? 0.5 : 0) * w;
+      return rotate_about(q, l.pivot, ang);
+    }
+    return q;
+  }
   switch (a.region) {
     case Region::Sides: {
-      // Arms drawn in the part's outline: each bends about the middle of its base, the turn
-      // growing from nothing at the base over half its width (the outline stays in one piece).
-      if (!a.lobes.empty()) {
-        for (const ArmLobe& l : a.lobes) {
-          if (a.region_side != 0 && l.side != a.region_side) continue;
-          const double depth = lobe_depth(l, q);
-          if (depth <= 0) continue;
-          const double base = std::hypot(l.base1.x - l.base0.x, l.base1.y - l.base0.y);
-          const double w = smoothstep(depth / std::max(kLobeRamp * base, 1e-9));
-          const double ang = amp * (l.side < 0 ? 1 : -1) * wave(a.alternating && l.side > 0 ? 0.5 : 0) * w;
-          return rotate_about(q, l.pivot, ang);
-        }
-        return q;
-      }
       const double dx = q.x - c.x;
       const int side = dx < 0 ? -1 : 1;  // as the viewer sees it
       const double core = a.core_left > 0 ? (side < 0 ? a.core_left : a.core_right) : kCore * W;
@@ -1158,7 +1191,11 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
                 if (g >= 0 && g != a.parts[0] && (spins[g] || loads.turns_with[g] >= 0)) continue;
                 const RigBox& hb = rig.parts[a.parts[0]].box;
                 const Vec2 gc = g >= 0 ? rig.parts[g].box.centre() : Vec2{};
-                if (g == a.parts[0] || (g >= 0 && under(g, a.parts[0]) && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y <= hb.y1))
+                // Limbs of the whole silhouette: whatever lies in them bends with them (the
+                // outline drawn over a tail's fill), whichever part it belongs to.
+                if (a.silhouette) {
+                  if (!background) q = bend_region(a, amp, t, hb, q);
+                } else if (g == a.parts[0] || (g >= 0 && under(g, a.parts[0]) && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y <= hb.y1))
                   q = bend_region(a, amp, t, hb, q);
                 else if (g >= 0 && under(g, a.parts[0]) && (gc.y <= hb.y1 || std::fabs(gc.x - hb.centre().x) > 0.25 * hb.w()))
                   q = carried_by_bend(a, amp, t, hb, rig.parts[g].pivot, q);

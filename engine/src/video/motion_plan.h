@@ -56,8 +56,10 @@ struct PlannedAction {
   bool alternating = false;     // Sides/Lower: the two sides half a cycle apart
   double core_left = 0, core_right = 0;  // Sides: the still core's half-widths left and right
                                          // of the box centre (0: kCore of the box width)
-  std::vector<ArmLobe> lobes;   // Sides: the arms drawn in the part's outline, when it has
-                                // some (part_rig.h): only they bend, each about its base
+  std::vector<ArmLobe> lobes;   // the limbs that bend, each about its base, when known: arms
+                                // drawn in the part's outline (part_rig.h), or limbs of the
+                                // figure's silhouette (Rig::limbs)
+  bool silhouette = false;      // lobes are Rig::limbs: the points of every part within them bend
   double scale = 1;             // this action's own amplitude factor (fit_plan), times plan.scale
   int one_sided = 0;            // Swing, Rock, Bend, Sway, region bends: 0 back and forth about
                                 // rest; +1 / -1 out to one side only and back (fit_plan: the

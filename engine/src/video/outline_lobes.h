@@ -19,12 +19,17 @@
 
 namespace svgm {
 
+// What a limb read from a silhouette skeleton is (skeleton_lobes.h; motion/limbs.h's kinds).
+enum class LobeKind { Arm, Leg, Head, Tail, Other };
+
 struct ArmLobe {
   int side = 0;               // as the viewer sees it: -1 left, +1 right
   Vec2 base0, base1;          // where the lobe leaves the body (its two concavities)
   Vec2 pivot;                 // the base's middle: the arm turns about it
   Vec2 tip;                   // the lobe's point farthest from its base
   std::vector<Vec2> outline;  // the lobe's stretch of the outline, base0 .. base1
+  LobeKind kind = LobeKind::Arm;  // a limb of the silhouette's skeleton (skeleton_lobes.h),
+                                  // whose outline is the contour of the silhouette it owns
 };
 
 // The arm lobes of `outline`'s first subpath (closed, at least a few cubics), left first.

@@ -16,6 +16,7 @@
 #include "svgmotion/svg_reader.h"
 #include "video/curve_samples.h"
 #include "video/hands_at_head.h"
+#include "video/skeleton_lobes.h"
 #include "video/stroke_rig.h"
 #include "video/wheel_riders.h"
 
@@ -738,6 +739,15 @@ Rig assemble(const Scene& scene, const SourceNames& names, const std::vector<std
       if (a > most) { most = a; largest = pi; }
     }
     if (largest >= 0) P.arm_lobes = arm_lobes(scene.paths[largest]);
+  }
+
+  // The limbs of the figure's silhouette.
+  {
+    std::vector<int> figure_paths;
+    for (int g = 0; g < G; ++g)
+      if (rig.parts[g].role != Role::Background) figure_paths.insert(figure_paths.end(), unit_paths[g].begin(), unit_paths[g].end());
+    std::sort(figure_paths.begin(), figure_paths.end());
+    rig.limbs = skeleton_lobes(scene, figure_paths);
   }
 
   // Round parts (wheels).

@@ -96,6 +96,9 @@ struct Rig {
   std::vector<std::vector<int>> repeated;
   std::string repeated_why;
   std::vector<int> part_of_path;  // path index -> part index (-1 for paths without a group)
+  // The limbs of the figure's silhouette (every part but the background: fills and outlines
+  // together, so a tail drawn as an outline over a body's fill is one limb), skeleton_lobes.h.
+  std::vector<ArmLobe> limbs;
 };
 
 // Names for the paths of a scene from its source document: path id -> the named elements from
