@@ -98,6 +98,10 @@ class ProgressView {
     note_.clear();
     start_ = last_ = std::chrono::steady_clock::now();
     log::info("run: %s ...", name.c_str());
+    if (!quiet_ && tty_) {  // the bar from the start: a stage's setup may take a while before it reports
+      note_ = "starting";
+      draw("");
+    }
   }
   void update(double f, const std::string& note) {
     if (quiet_ || !running_) return;

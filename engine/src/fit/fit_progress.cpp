@@ -29,10 +29,10 @@ void FitProgress::refine_step(int iteration) {
 
 double FitProgress::remaining() const {
   // Iterations of a stage still expected after its activations: the tail, or the whole budget
-  // without a plateau test; never fewer than a quarter tail while the stage runs (it has not
-  // said it ended).
+  // without a plateau test; never fewer than a tenth of the tail while the stage runs (it has
+  // not said it ended). A quarter kept the man's bar at 84 % with "ETA 10 s" over the last 4 s.
   const auto tail_left = [&](int since, int now, int budget_left) {
-    const int tail = tail_ > 0 ? std::max(tail_ / 4, since + tail_ - now) : budget_left;
+    const int tail = tail_ > 0 ? std::max(tail_ / 10, since + tail_ - now) : budget_left;
     return std::clamp(tail, 0, std::max(0, budget_left));
   };
   double left = 0;
