@@ -222,12 +222,14 @@ int cmd_run(const std::vector<std::string>& argv) {
   std::vector<std::string> overrides;
   for (const std::string& p : a.positional) {
     // Right after a positional SVG, a word that is not a setting or a file is its prompt.
-    const bool setting = p.find('=') != std::string::npos && looks_like_key(p.substr(0, p.find('=')));
+    const std::string lhs = p.substr(0, p.find('='));
+    const bool setting = p.find('=') != std::string::npos && !lhs.empty() &&
+                         std::all_of(lhs.begin(), lhs.end(), [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '.'; });
     std::error_code ec;
     if (svg && !prompt && !setting && !fs::exists(p, ec) && !p.ends_with(".yaml") && !p.ends_with(".yml") &&
         !builtin_config(p)) {
       prompt = p;
-    } else if (setting) {
+    } else if (p.find('=') != std::string::npos) {
       overrides.push_back(p);
     } else if (!svg && is_svg_argument(p)) {
       svg = p;
