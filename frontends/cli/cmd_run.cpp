@@ -116,7 +116,7 @@ class ProgressView {
     shown_ = f;
     note_ = note;
     const bool due = now - last_ >= (tty_ ? std::chrono::milliseconds(200) : std::chrono::milliseconds(5000));
-    if (!due && f < 1) return;
+    if (!due && (f < 1 || !tty_)) return;  // in a log, the stage's end says 100 % (finish)
     draw(eta(now));
     last_ = now;
   }
