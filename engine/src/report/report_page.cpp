@@ -482,7 +482,7 @@ table{border-collapse:collapse}td,th{border-bottom:1px solid #eee;padding:2px 6p
 .svgm-signals td{font-size:12px}pre.svgm-cmd{white-space:pre-wrap;word-break:break-all;background:#f3f3f3;padding:6px;font-size:12px}
 .svgm-status-ok{color:#2a7a2a}.svgm-status-rejected{color:#a33}
 .svgm-row{display:flex;flex-wrap:wrap;gap:12px;align-items:flex-start}.svgm-warn{color:#a33;font-weight:600}
-#svgm-lottie .svgm-lottie-box{border:1px solid #ccc;background:#fff;overflow:hidden}#svgm-lottie img{border:0;display:block;width:100%}
+#svgm-lottie .svgm-lottie-box{border:1px solid #ccc;background:#fff;overflow:hidden}#svgm-lottie img{border:0;display:block;width:100%}#svgm-lottie img[hidden]{display:none}
 .svgm-frames img{margin:0 2px 2px 0}details>summary{cursor:pointer;margin:4px 0}
 svg.svgm-motion-parts{border:1px solid #ccc;background:#fff;max-width:100%;height:auto}
 </style>)";

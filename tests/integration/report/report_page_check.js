@@ -17,8 +17,8 @@
 //                                          file there
 //   link PATH BYTES                        each of them, with the size of the file it names
 //   lottie frames=N shown=I want=J visible=V  the Lottie beside the SVG after seeking to T:
-//                                          its frames, the one shown, the one for T, and how
-//                                          many are visible (1); it is screenshot to
+//                                          its frames, the one drawn inside its box, the one
+//                                          for T, and how many are drawn (1); it is screenshot to
 //                                          OUT_PREFIXlottie.png
 //   user_colours N                         candidate frames drawn in the user's colours
 //   keyframes folded=F rows=R              the keyframe table inside a closed <details>
@@ -117,13 +117,19 @@ async function main() {
       const fig = document.getElementById('svgm-lottie');
       const imgs = fig ? [...fig.querySelectorAll('img')] : [];
       const dur = fig ? Number(fig.dataset.duration) : 0;
-      return { n: imgs.length, shown: imgs.findIndex((i) => !i.hidden), visible: imgs.filter((i) => !i.hidden).length,
+      // Drawn, not just unhidden: laid out with a size, inside the box that clips the frames.
+      const box = fig ? fig.querySelector('.svgm-lottie-box').getBoundingClientRect() : null;
+      const drawn = imgs.map((i) => {
+        const r = i.getBoundingClientRect();
+        return getComputedStyle(i).display !== 'none' && r.height > 0 && r.top >= box.top && r.bottom <= box.bottom + 1;
+      });
+      const shown = drawn.indexOf(true);
+      const r = shown >= 0 ? imgs[shown].getBoundingClientRect() : null;
+      return { n: imgs.length, shown, visible: drawn.filter((d) => d).length,
+               clip: r ? { x: r.left + window.scrollX, y: r.top + window.scrollY, width: r.width, height: r.height } : null,
                want: dur > 0 ? Math.min(imgs.length - 1, Math.floor((t % dur) / dur * imgs.length)) : -1 };
     }, t);
-    if (lottie.n > 0) {
-      const box = await page.$('#svgm-lottie img:not([hidden])');
-      await box.screenshot({ path: `${prefix}lottie.png` });
-    }
+    if (lottie.clip) await page.screenshot({ path: `${prefix}lottie.png`, clip: lottie.clip, captureBeyondViewport: true });
     console.log(`lottie frames=${lottie.n} shown=${lottie.shown} want=${lottie.want} visible=${lottie.visible}`);
     const play = await page.evaluate(async () => {
       const svg = document.querySelector('#svgm-stage > svg');
