@@ -7,10 +7,12 @@
 // is drawn as a bar on a terminal and as a line every few seconds otherwise; Ctrl-C asks the
 // running stage to stop (the fitter writes its state so far and resumes on the next run), then
 // one line says what the run directory holds.
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -19,10 +21,12 @@
 #include "cli/commands.h"
 #include "pipeline/config.h"
 #include "pipeline/config_check.h"
+#include "pipeline/config_keys.h"
 #include "pipeline/pipeline.h"
 #include "pipeline/plugin_host.h"
 #include "pipeline/run_directory.h"
 #include "report/rerun_command.h"
+#include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
 #include "svgmotion/log.h"
 #include "svgmotion/utf8_text.h"
@@ -49,6 +53,26 @@ const char* stopped_by(int sig) {
   return sig == SIGTERM ? "interrupted (SIGTERM)" : sig == SIGHUP ? "interrupted (SIGHUP)" : "interrupted";
 }
 
+// Whether a positional of `run` is the SVG to animate: by its extension, else (a file without
+// .yaml/.yml) by its content, whose first character past spaces and a BOM is '<'.
+bool is_svg_argument(const std::string& p) {
+  std::string ext = fs::path(p).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".svg") return true;
+  if (ext == ".yaml" || ext == ".yml") return false;
+  std::error_code ec;
+  if (!fs::is_regular_file(p, ec)) return false;
+  std::FILE* f = std::fopen(p.c_str(), "rb");
+  if (!f) return false;
+  char head[64] = {};
+  const size_t n = std::fread(head, 1, sizeof head, f);
+  std::fclose(f);
+  std::string_view h(head, n);
+  if (h.starts_with("\xEF\xBB\xBF")) h.remove_prefix(3);
+  while (!h.empty() && std::isspace(static_cast<unsigned char>(h.front()))) h.remove_prefix(1);
+  return !h.empty() && h.front() == '<';
+}
+
 bool looks_like_key(const std::string& s) {
   if (s.find('.') == std::string::npos || s.ends_with(".yaml") || s.ends_with(".yml")) return false;
   for (char c : s)
@@ -56,32 +80,57 @@ bool looks_like_key(const std::string& s) {
   return true;
 }
 
-// Progress of the running stage: a bar redrawn in place on a terminal, a line every 5 s in a log.
+// Progress of the running stage: a bar redrawn in place on a terminal, a line every 5 s in a
+// log. One bar per stage, which only moves forward (a plugin's fraction below one it reported
+// is held) and shows 100 % when the stage has ended; the ETA is the bar's own pace since it
+// started moving (a stage's setup, at 0 %, is not counted against the rest). On a terminal the
+// line is cut to its width (TIOCGWINSZ, else $COLUMNS, else 80): a line longer than the
+// terminal wraps, and "\r" then returns to the wrapped part, so each redraw scrolled a new line.
 class ProgressView {
  public:
   explicit ProgressView(bool quiet) : quiet_(quiet), tty_(::isatty(2) != 0) {}
   void stage(const std::string& name) {
-    end_line();
+    finish();
     stage_ = name;
-    last_ = std::chrono::steady_clock::now();
+    running_ = true;
+    shown_ = 0;
+    moving_ = false;
+    note_.clear();
+    start_ = last_ = std::chrono::steady_clock::now();
     log::info("run: %s ...", name.c_str());
+    if (!quiet_ && tty_) {  // the bar from the start: a stage's setup may take a while before it reports
+      note_ = "starting";
+      draw("");
+    }
   }
   void update(double f, const std::string& note) {
-    if (quiet_) return;
+    if (quiet_ || !running_) return;
     const auto now = std::chrono::steady_clock::now();
-    f = std::clamp(f, 0.0, 1.0);
-    if (tty_) {
-      if (now - last_ < std::chrono::milliseconds(200) && f < 1) return;
-      constexpr int kWidth = 24;
-      const int filled = static_cast<int>(f * kWidth + 0.5);
-      std::fprintf(stderr, "\r  [%.*s%*s] %3.0f%%  %-60.60s", filled, "########################",
-                   kWidth - filled, "", 100 * f, note.c_str());
-      drawn_ = true;
-    } else {
-      if (now - last_ < std::chrono::seconds(5)) return;
-      log::info("run: %s %3.0f%%  %s", stage_.c_str(), 100 * f, note.c_str());
+    f = std::clamp(std::isfinite(f) ? f : 0.0, 0.0, 1.0);
+    if (f < shown_) f = shown_;  // never back
+    if (!moving_ && f > 0) {
+      moving_ = true;
+      moved_at_ = now;
+      moved_from_ = f;
     }
+    shown_ = f;
+    note_ = note;
+    const bool due = now - last_ >= (tty_ ? std::chrono::milliseconds(200) : std::chrono::milliseconds(5000));
+    if (!due && (f < 1 || !tty_)) return;  // in a log, the stage's end says 100 % (finish)
+    draw(eta(now));
     last_ = now;
+  }
+  // The stage ended well: its bar at 100 % with the seconds it took.
+  void finish() {
+    if (!running_) return;
+    running_ = false;
+    if (!quiet_) {
+      shown_ = 1;
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+      note_ = "done in " + seconds_text(s);
+      draw("");
+    }
+    end_line();
   }
   // A stage's one-line report (what the procedural video moves): an info line.
   void info(const std::string& line) {
@@ -94,9 +143,60 @@ class ProgressView {
   }
 
  private:
-  bool quiet_, tty_, drawn_ = false;
-  std::string stage_;
-  std::chrono::steady_clock::time_point last_;
+  static std::string seconds_text(double s) {
+    char buf[32];
+    if (s < 90) std::snprintf(buf, sizeof buf, "%.0f s", s);
+    else if (s < 5400) std::snprintf(buf, sizeof buf, "%.0f min", s / 60);
+    else std::snprintf(buf, sizeof buf, "%.1f h", s / 3600);
+    return buf;
+  }
+  // "ETA 40 s" once the bar has moved for 2 s and by 1 %; "" before.
+  std::string eta(std::chrono::steady_clock::time_point now) const {
+    if (!moving_ || shown_ >= 1) return "";
+    const double t = std::chrono::duration<double>(now - moved_at_).count(), df = shown_ - moved_from_;
+    if (t < 2 || df < 0.01) return "";
+    return "ETA " + seconds_text(t / df * (1 - shown_));
+  }
+  static int columns() {
+    winsize ws{};
+    if (::ioctl(2, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0) return ws.ws_col;
+    if (const char* c = std::getenv("COLUMNS"); c && std::atoi(c) > 0) return std::atoi(c);
+    return 80;
+  }
+  void draw(const std::string& eta) {
+    constexpr int kWidth = 20;
+    const int filled = static_cast<int>(shown_ * kWidth);
+    const std::string pct = std::to_string(static_cast<int>(100 * shown_)) + "%";  // 99.7 % is not 100 %
+    if (!tty_) {
+      log::info("run: %s %s%s%s  %s", stage_.c_str(), pct.c_str(), eta.empty() ? "" : "  ", eta.c_str(), note_.c_str());
+      return;
+    }
+    std::string line = "  [" + std::string(static_cast<size_t>(filled), '#') + std::string(static_cast<size_t>(kWidth - filled), ' ') +
+                       "] " + std::string(4 - std::min<size_t>(4, pct.size()), ' ') + pct + "  " + (eta.empty() ? "" : eta + "  ") + note_;
+    // Cut to the terminal's width less one column (writing the last column wraps on some
+    // terminals), counting UTF-8 characters, never splitting one; control characters go.
+    const size_t max = static_cast<size_t>(std::max(10, columns() - 1));
+    std::string cut;
+    size_t chars = 0;
+    for (size_t i = 0; i < line.size(); ++i) {
+      const auto c = static_cast<unsigned char>(line[i]);
+      if ((c & 0xC0) == 0x80) {  // a continuation byte belongs to the character before
+        if (chars <= max) cut += line[i];
+        continue;
+      }
+      if (c < 0x20 || c == 0x7f) continue;
+      if (++chars > max) break;
+      cut += line[i];
+    }
+    std::fprintf(stderr, "\r%s\x1b[K", cut.c_str());  // ESC[K: clear what the longer line before left
+    std::fflush(stderr);
+    drawn_ = true;
+  }
+
+  bool quiet_, tty_, drawn_ = false, running_ = false, moving_ = false;
+  double shown_ = 0, moved_from_ = 0;
+  std::string stage_, note_;
+  std::chrono::steady_clock::time_point start_, last_, moved_at_;
 };
 
 // What the run directory holds now, for the line after a stop.
@@ -115,22 +215,35 @@ std::string outputs_in(const fs::path& dir) {
 int cmd_run(const std::vector<std::string>& argv) {
   const Args a = parse_args("run", argv, {"--input", "--prompt", "-o", "--output", "--from", "--device"},
                             {"--force"});
-  // Positionals: an optional CONFIG.yaml first, then key.path=value overrides.
+  // Positionals: an SVG and its prompt, a CONFIG.yaml (or a built-in config's name), and
+  // key.path=value overrides.
   std::optional<fs::path> file;
+  std::optional<std::string> svg, prompt;
   std::vector<std::string> overrides;
   for (const std::string& p : a.positional) {
-    if (p.find('=') != std::string::npos) {
+    // Right after a positional SVG, a word that is not a setting or a file is its prompt.
+    const std::string lhs = p.substr(0, p.find('='));
+    const bool setting = p.find('=') != std::string::npos && !lhs.empty() &&
+                         std::all_of(lhs.begin(), lhs.end(), [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '.'; });
+    std::error_code ec;
+    if (svg && !prompt && !setting && !fs::exists(p, ec) && !p.ends_with(".yaml") && !p.ends_with(".yml") &&
+        !builtin_config(p)) {
+      prompt = p;
+    } else if (p.find('=') != std::string::npos) {
       overrides.push_back(p);
+    } else if (!svg && is_svg_argument(p)) {
+      svg = p;
     } else if (!file) {
-      std::error_code ec;
-      if (!fs::exists(p, ec) && looks_like_key(p))
+      if (!fs::exists(p, ec) && looks_like_key(p) && !builtin_config(p))
         throw Error("run: '" + p + "' is not a config file; a setting needs a value: " + p + "=VALUE");
       if (fs::is_directory(p, ec)) throw Error(p + ": is a folder, not a config file");
       file = p;
     } else {
-      throw UsageError("run: unexpected argument '" + p + "' (one config file, then key.path=value)");
+      throw UsageError("run: unexpected argument '" + p + "' (X.svg \"PROMPT\", one config file, then key.path=value)");
     }
   }
+  if (svg && a.get("--input")) throw UsageError("run: the SVG is given twice (" + *svg + " and --input)");
+  if (prompt && a.get("--prompt")) throw UsageError("run: the prompt is given twice (\"" + *prompt + "\" and --prompt)");
   ConfigOrigins origins;
   nlohmann::json config = load_config(file, overrides, &origins);
   // The options win over the file and overrides; their values name themselves in any error.
@@ -139,8 +252,8 @@ int cmd_run(const std::vector<std::string>& argv) {
     config[key] = *v;
     origins.erase(key);
   };
-  option("input", a.get("--input"));
-  option("prompt", a.get("--prompt"));
+  option("input", svg ? svg : a.get("--input"));
+  option("prompt", prompt ? prompt : a.get("--prompt"));
   option("output", a.get("-o") ? a.get("-o") : a.get("--output"));
   option("device", a.get("--device"));
   if (const auto from = a.get("--from")) {
@@ -180,6 +293,11 @@ int cmd_run(const std::vector<std::string>& argv) {
   const RunLock lock(dir, a.has("--force"), run_output_names());
   // Every message of this run at debug level, appended to RUN_DIR/log.txt (svgmotion/log.h).
   log::open_file(dir / "log.txt");
+  // The config the stages run with, every key, as YAML `run` takes back (`svgmotion run
+  // RUN/resolved.yaml`); a setting that is not a default names its origin.
+  write_file_atomic(dir / "resolved.yaml",
+                    "# The merged config of this run (svgmotion " SVGM_VERSION "): defaults, config file, overrides, options.\n" +
+                        config_yaml(config, origins));
   g_interrupted = 0;
   catch_stop_signals(true);
   const auto t0 = std::chrono::steady_clock::now();
@@ -197,7 +315,7 @@ int cmd_run(const std::vector<std::string>& argv) {
   };
   try {
     reports = run_pipeline(config, host, a.get("--from"), [&](const std::string& stage) { view.stage(stage); });
-    view.end_line();
+    view.finish();
   } catch (const Rejected&) {
     view.end_line();
     catch_stop_signals(false);

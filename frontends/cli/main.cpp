@@ -12,6 +12,7 @@
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "pipeline/batch.h"
+#include "report/rerun_command.h"
 #include "svgmotion/error.h"
 #include "svgmotion/log.h"
 
@@ -20,7 +21,8 @@ namespace {
 constexpr const char* kUsage = R"(svgmotion )" SVGM_VERSION R"(: an editable animated SVG from a static SVG and a motion
 
 usage:
-  svgmotion run [CONFIG.yaml] [--input X.svg] [--prompt "..."] [-o RUN_DIR] [--from STAGE]
+  svgmotion run [X.svg ["PROMPT"]] [CONFIG.yaml|fast|paper] [--input X.svg] [--prompt "..."]
+                [-o RUN_DIR] [--from STAGE]
                 [--device D] [--quiet] [key.path=value ...]
   svgmotion fit IN.svg --target VIDEO|FRAMES_DIR -o OUT_DIR [options]
   svgmotion render IN.svg -o OUT.png [--size W] [--background white|transparent] [--time T]
@@ -29,6 +31,7 @@ usage:
   svgmotion batch MANIFEST -o OUT_DIR [CONFIG.yaml] [--shard I/N] [--device D] [--pin]
                   [key.path=value ...]
   svgmotion report RUN_DIR [--device D]
+  svgmotion config [--show CONFIG] [key.path=value ...]
   svgmotion plugins
   svgmotion devices
   svgmotion palette N
@@ -54,14 +57,18 @@ struct CommandHelp {
 };
 
 constexpr CommandHelp kHelp[] = {
-    {"run", R"(usage: svgmotion run [CONFIG.yaml] [options] [key.path=value ...]
+    {"run", R"(usage: svgmotion run [X.svg ["PROMPT"]] [CONFIG.yaml] [options] [key.path=value ...]
 
 The whole pipeline in a run directory: grouper, recolorer, video, ranker, layers, tracker,
-fitter, each a plugin named in the config (configs/default.yaml lists every key). Stages whose
+fitter, each a plugin named in the config (`svgmotion config` lists every key). Stages whose
 plugin, settings and inputs are unchanged are skipped. Every setting is checked before the
-first stage runs.
+first stage runs. The run directory keeps the merged config (resolved.yaml) and log.txt the
+command line, quoted for sh.
 
-  CONFIG.yaml        a config merged over the defaults (configs/default.yaml)
+  X.svg "PROMPT"     the SVG to animate and the motion in words (as --input, --prompt); a
+                     file is an SVG by its .svg extension or its content (it starts with '<')
+  CONFIG.yaml        a config merged over the defaults (configs/default.yaml); a built-in
+                     one by name from any folder: fast, paper (fast.yaml, paper.yaml)
   --input X.svg      the SVG to animate (config key: input)
   --prompt TEXT      the motion in words (prompt)
   -o, --output DIR   the run directory (output; default: run)
@@ -173,6 +180,13 @@ every item of the shard is done, 1 when some are not (see the summary), 2 for a 
 array variable, 130 interrupted.
 )"},
     {"report", "usage: svgmotion report RUN_DIR [--device D]\n\nWrites RUN_DIR/report.html: the run's self-contained preview page (the animation with play/pause\nand a scrubber, the input, every candidate video with the ranker's scores and the command that\nfits another one, the target beside the fit, the losses, the stage timings). `run` writes it\nat the end of every run.\n"},
+    {"config", R"(usage: svgmotion config [--show CONFIG] [key.path=value ...]
+
+Lists every config key with its default, its type and its meaning (from configs/default.yaml,
+built in). With --show, prints the config CONFIG (a file, or a built-in one by name: default,
+fast, paper) merged over the defaults with the overrides after it, as YAML that `run` takes;
+each setting that is not a default says where it came from.
+)"},
     {"plugins", "usage: svgmotion plugins\n\nLists the stage plugins found (stage, name, version, path) and every\nrefused module with its reason.\n"},
     {"devices", "usage: svgmotion devices\n\nLists the OpenCL devices; * marks the one --device auto picks.\n"},
     {"palette", "usage: svgmotion palette N\n\nPrints N maximally distinct colours (white reserved), one #rrggbb per line.\n"},
@@ -219,8 +233,9 @@ int main(int argc, char** argv) {
   // The global levels (svgmotion/log.h) before the command; after it, the command's own parser
   // takes them (cli_args.h), so that an option's value is never taken for one (`--prompt -q`).
   {
+    // Quoted for sh, so log.txt's command line can be pasted back as it was typed.
     std::string line = "svgmotion";
-    for (int i = 1; i < argc; ++i) line += std::string(" ") + argv[i];
+    for (int i = 1; i < argc; ++i) line += " " + svgm::shell_quote(argv[i]);
     svgm::log::set_command_line(line);
     int quiet = 0, verbose = 0;
     size_t lead = 0;
@@ -263,6 +278,7 @@ int main(int argc, char** argv) {
     if (cmd == "plugins") return svgm::cli::cmd_plugins(args);
     if (cmd == "batch") return svgm::cli::cmd_batch(args);
     if (cmd == "report") return svgm::cli::cmd_report(args);
+    if (cmd == "config") return svgm::cli::cmd_config(args);
     std::fprintf(stderr, "svgmotion: unknown command '%s' (try svgmotion help)\n", cmd.c_str());
     return 2;
   } catch (const svgm::Rejected& e) {

@@ -59,7 +59,7 @@ node "$here/report/report_page_check.js" "$node_modules" "$tmp/run/report.html" 
 rc=$?
 check "Chromium opens the page (exit $rc: $(head -c 200 "$tmp/facts_err"))" '[[ $rc -eq 0 ]]'
 sed 's/^/# /' "$tmp/facts"
-for id in svgm-player svgm-motion svgm-input svgm-candidates svgm-compare svgm-losses svgm-timings; do
+for id in svgm-downloads svgm-player svgm-motion svgm-input svgm-candidates svgm-compare svgm-losses svgm-timings; do
   line=$(grep "^section $id " "$tmp/facts")
   check "section $id is drawn with text and ink (${line#section $id })" \
     '[[ $line =~ \ ([0-9]+)x([0-9]+)\ text=([0-9]+)\ ink=([0-9.]+)$ ]] && (( BASH_REMATCH[1] > 100 && BASH_REMATCH[2] > 100 && BASH_REMATCH[3] > 20 )) && at_least "${BASH_REMATCH[4]}" 0.01'
@@ -75,6 +75,31 @@ at_t=$(psnr "$tmp/ours_t.png" "$tmp/p_seek.png") at_0=$(psnr "$tmp/ours_0.png" "
 echo "# the page after seeking to $t s against svgmotion render: --time $t $at_t dB, --time 0 $at_0 dB"
 check "the page shows the frame at $t s: render --time $t within $bar dB ($at_t)" 'at_least "$at_t" "$bar"'
 check "and not the frame at 0 ($at_0 dB < $bar)" '! at_least "$at_0" "$bar"'
+
+# Outputs people ship from (issue 37): every file with its size and a link that resolves to it in
+# the run directory, the Lottie beside the SVG, candidates in the user's colours, keyframes folded.
+n_files=$( (cd "$tmp/run" && find . -maxdepth 1 -type f ! -name '.*' ! -name report.html; ls candidates) | grep -c '')
+check "the outputs list every file of the run ($n_files) and nothing outside it or missing ($(grep "^links " "$tmp/facts"))" \
+  'grep -qx "links $n_files outside=0 missing=0" "$tmp/facts"'
+for f in animation.svg animation.json preview.mp4 fit.json resolved.yaml log.txt; do
+  check "a download link to $f, its size on the page" \
+    'size=$(stat -c %s "$tmp/run/$f") && grep -qx "link $f $size" "$tmp/facts" && grep -q "href=\"$f\" download>$f</a></td><td>" "$tmp/run/report.html"'
+done
+lottie=$(grep "^lottie " "$tmp/facts")
+check "the Lottie beside the SVG: its frames drawn by librlottie, the one for $t s shown alone ($lottie)" \
+  '[[ $lottie =~ ^lottie\ frames=([0-9]+)\ shown=([0-9]+)\ want=([0-9]+)\ visible=1$ ]] && (( BASH_REMATCH[1] >= 10 && BASH_REMATCH[2] == BASH_REMATCH[3] && BASH_REMATCH[2] > 0 ))'
+# The frame shown is what rlottie draws then: our render of the SVG at that frame's time, within
+# the bar the Lottie export is held to (export_test.sh), far from the frame at time 0.
+if [[ $lottie =~ frames=([0-9]+)\ shown=([0-9]+) ]]; then
+  dur=$("$py" -c 'import json,sys; j=json.load(open(sys.argv[1])); print((j["op"]-j["ip"])/j["fr"])' "$tmp/run/animation.json")
+  lt=$("$py" -c "print($dur * ${BASH_REMATCH[2]} / ${BASH_REMATCH[1]})")
+  "$bin" render "$tmp/run/animation.svg" -o "$tmp/ours_l.png" --time "$lt" --size 360 2>/dev/null
+  at_l=$(psnr "$tmp/ours_l.png" "$tmp/p_lottie.png") at_l0=$(psnr "$tmp/ours_0.png" "$tmp/p_lottie.png")
+  echo "# the Lottie frame shown against svgmotion render --time $lt: $at_l dB (--time 0: $at_l0 dB)"
+  check "the Lottie frame shown is the animation at its time ($at_l dB >= $bar)" 'at_least "$at_l" "$bar"'
+fi
+check "every candidate has 4 frames in the user's colours ($(grep "^user_colours " "$tmp/facts"))" 'grep -qx "user_colours 12" "$tmp/facts"'
+check "the keyframe rows are folded ($(grep "^keyframes " "$tmp/facts"))" 'grep -Eqx "keyframes folded=true rows=[4-7]" "$tmp/facts"'
 
 # A page that cannot be written (report.html is a folder) is one line, and no summary lists it.
 rm "$tmp/run/report.html" && mkdir "$tmp/run/report.html"

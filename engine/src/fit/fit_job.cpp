@@ -1,5 +1,6 @@
 // One fit from files to files (see fit_job.h).
 #include "fit/fit_job.h"
+#include "fit/fit_progress.h"
 #include "svgmotion/atomic_file.h"
 
 #include <unistd.h>
@@ -394,8 +395,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
       FitState st = load_checkpoint(ckpt, key);
       if (st.iteration < coarse_options.iterations) {
         fitter.resume(st);
-        if (job.progress) job.progress(work(st.iteration) / total_work,
-                                       "resuming at iteration " + std::to_string(st.iteration));
+        if (job.progress) job.progress(0, "resuming at iteration " + std::to_string(st.iteration));
         else if (!job.quiet) log::info("svgmotion: resuming at iteration %d", st.iteration);
       }
     } catch (const Error&) {
@@ -426,6 +426,9 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     int active;
   };
   std::vector<LossSample> history;
+  // The host's bar (job.progress): work done over work expected, never going back (fit_progress.h).
+  FitProgress bar(fitter.keyframes(), coarse_options.iterations - fitter.iteration(), refine_iters, fine_cost,
+                  coarse_options.plateau_window);
   // One stage of iterations on fitter `f` (the coarse fit, then the refinement), with the
   // divergence watch, progress over the whole budget and, for the coarse stage, checkpoints.
   auto run_stage = [&](Fitter& f, int done_before, bool checkpoints) {
@@ -466,11 +469,14 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
       const double elapsed = std::chrono::duration<double>(now - t0).count();
       const double eta = elapsed / std::max(1e-9, work(it) - work(resumed_from)) * (total_work - work(it));
       const bool due = now - last_print > std::chrono::milliseconds(job.progress ? 500 : 200) || f.done();
+      if (&f == &fitter) bar.coarse_step(f.iteration() - resumed_from, f.active_keyframes());
+      else bar.refine_step(f.iteration());
       if (job.progress && due) {
-        job.progress(work(it) / total_work,
-                     fmt("iteration %.0f/%.0f, loss %.5f, keyframes %.0f", it, total_iters, loss.total(),
-                         f.active_keyframes()) + "/" + std::to_string(f.keyframes()) +
-                         fmt(", ETA %.0f s", eta));
+        // No budget ("/2000") and no ETA here: the fit ends when its loss stops falling, and the
+        // host draws the ETA from the bar's pace.
+        job.progress(bar.fraction(), std::string(&f == &fitter ? "fit" : "refine") +
+                                         fmt(" iteration %.0f, loss %.5f, keyframes %.0f", it, loss.total(),
+                                             f.active_keyframes()) + "/" + std::to_string(f.keyframes()));
         last_print = now;
       } else if (tty && due) {
         std::fprintf(stderr, "\rfit: iteration %d/%d  loss %.5f  keyframes %d/%d  %.0fs, ETA %.0fs   ",
@@ -488,6 +494,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     }
   };
   run_stage(fitter, 0, true);
+  bar.coarse_done();
   save_checkpoint(ckpt, key, fitter.state());
   const bool coarse_converged = fitter.converged();
   if (coarse_converged) {

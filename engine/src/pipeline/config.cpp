@@ -16,6 +16,8 @@
 
 namespace svgm {
 
+namespace fs = std::filesystem;
+
 namespace {
 
 // kMaxConfigValues and kMaxYamlDepth (config.h) bound what one config may expand to.
@@ -200,6 +202,17 @@ void merge(const YAML::Node& user, nlohmann::json& into, const nlohmann::json& s
 
 }  // namespace
 
+std::optional<std::string_view> builtin_config(const std::string& name) {
+  if (name.find('/') != std::string::npos) return std::nullopt;
+  for (const auto& c : embedded_configs())
+    if (name == c.name || name + ".yaml" == c.name) return std::string_view(c.text);
+  return std::nullopt;
+}
+
+std::string builtin_config_label(const std::string& name) {
+  return (name.ends_with(".yaml") ? name : name + ".yaml") + " (built in)";
+}
+
 nlohmann::json default_config() {
   // Parsed once per process: the config fuzz target loads a config per input.
   static const nlohmann::json defaults = [] {
@@ -220,21 +233,27 @@ nlohmann::json load_config(const std::optional<std::filesystem::path>& file,
   ValueBudget budget;
   if (file) {
     YAML::Node root;
+    // A file of that name wins; else a built-in config by name, from any folder.
+    std::error_code ec;
+    const std::optional<std::string_view> builtin = fs::exists(*file, ec) ? std::nullopt : builtin_config(file->string());
+    const std::string label = builtin ? builtin_config_label(file->string()) : file->string();
     try {
-      root = YAML::LoadFile(file->string());
+      root = builtin ? YAML::Load(std::string(*builtin)) : YAML::LoadFile(file->string());
     } catch (const YAML::BadFile&) {
-      throw Error(file->string() + ": cannot open");
+      std::string names;
+      for (const auto& c : embedded_configs()) names += (names.empty() ? "" : ", ") + std::string(c.name);
+      throw Error(file->string() + ": cannot open (built-in configs: " + names + ")");
     } catch (const YAML::DeepRecursion& e) {
       // yaml-cpp reports its nesting limit with the message "bad file".
-      throw Error(file->string() + ":" + std::to_string(e.mark.line + 1) +
+      throw Error(label + ":" + std::to_string(e.mark.line + 1) +
                   ": nested too deeply (more than " + std::to_string(kMaxYamlDepth) + " levels)");
     } catch (const YAML::Exception& e) {
       // yaml-cpp quotes the offending character raw ("unknown escape character: " + '\n').
-      throw Error(file->string() + ":" + std::to_string(e.mark.line + 1) + ": " + shown(e.msg));
+      throw Error(label + ":" + std::to_string(e.mark.line + 1) + ": " + shown(e.msg));
     }
     if (!root.IsNull()) {
-      if (!root.IsMap()) throw Error(file->string() + ": a config is a YAML map of keys");
-      merge(root, cfg, schema, "", file->string(), budget, origins);
+      if (!root.IsMap()) throw Error(label + ": a config is a YAML map of keys");
+      merge(root, cfg, schema, "", label, budget, origins);
     }
   }
   for (const std::string& o : overrides) {

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace svgm {
@@ -38,6 +39,13 @@ nlohmann::json load_config(const std::optional<std::filesystem::path>& file,
 // the message names no setting the user gave. Values are checked after merging
 // (config_check.h), so this is how their errors point at the file and line.
 std::string origin_of_message(const ConfigOrigins& origins, const std::string& message);
+
+// A built-in config (configs/*.yaml, embedded at build time) by its name, with or without
+// ".yaml" ("fast", "fast.yaml"); nothing for a name with a folder in it. load_config takes one
+// when no file of that name exists, so `svgmotion run fast` works from any folder.
+std::optional<std::string_view> builtin_config(const std::string& name);
+// How errors name it: "fast.yaml (built in)".
+std::string builtin_config_label(const std::string& name);
 
 // The built-in defaults (configs/default.yaml).
 nlohmann::json default_config();

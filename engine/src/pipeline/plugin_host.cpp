@@ -55,6 +55,10 @@ std::vector<fs::path> plugin_search_path(const std::vector<fs::path>& extra) {
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (!ec) out.push_back(exe.parent_path() / "plugins");
+  // The installed layout, wherever it was installed to (PREFIX/bin/svgmotion and
+  // PREFIX/lib/svgmotion/plugins; `cmake --install --prefix` or DESTDIR need not be the prefix
+  // the build was configured for).
+  if (!ec) out.push_back(exe.parent_path().parent_path() / "lib" / "svgmotion" / "plugins");
   out.push_back(SVGM_INSTALL_PLUGIN_DIR);
   if (const char* env = std::getenv("SVGMOTION_PLUGIN_PATH"); env && *env) {
     std::string s = env;
@@ -72,9 +76,13 @@ std::vector<fs::path> plugin_search_path(const std::vector<fs::path>& extra) {
 }
 
 PluginHost::PluginHost(const std::vector<fs::path>& search_path) {
+  std::vector<fs::path> seen;  // one folder named twice (the installed layout is also the prefix's) loads once
   for (const fs::path& dir : search_path) {
     std::error_code ec;
     if (!fs::is_directory(dir, ec)) continue;
+    const fs::path canonical = fs::canonical(dir, ec);
+    if (std::find(seen.begin(), seen.end(), canonical) != seen.end()) continue;
+    seen.push_back(canonical);
     std::vector<fs::path> files;
     for (const auto& e : fs::directory_iterator(dir, ec)) {
       const std::string n = e.path().filename().string();

@@ -50,7 +50,7 @@ const std::vector<std::string>& fit_output_names() {
 
 const std::vector<std::string>& run_output_names() {
   static const std::vector<std::string> names = [] {
-    std::vector<std::string> n = {"input.svg", "log.txt", "report.html", "motion.json"};
+    std::vector<std::string> n = {"input.svg", "log.txt", "report.html", "motion.json", "resolved.yaml"};
     for (const StageFiles& sf : stage_files())
       for (const auto& [k, v] : sf.outputs.items()) n.push_back(v.get<std::string>());
     for (const std::string& f : fit_output_names())

@@ -18,6 +18,9 @@
 #include "raster/render_image.h"
 #include "report/html_text.h"
 #include "report/inline_svg.h"
+#include "report/lottie_frames.h"
+#include "report/report_downloads.h"
+#include "report/user_colours.h"
 #include "report/report_motion.h"
 #include "report/report_charts.h"
 #include "report/rerun_command.h"
@@ -122,6 +125,33 @@ std::string summary_section(const RunFiles& f) {
   return "<header id=\"svgm-summary\">" + s + "</header>\n";
 }
 
+// The Lottie file beside the SVG: its frames as librlottie draws them, shown in step with the
+// SVG's clock by the page's script (report/lottie_frames.h says why frames, not a player).
+std::string lottie_figure(const RunFiles& f, const ReportOptions& o, int height, std::vector<std::string>& notes) {
+  const fs::path json = f.animation.parent_path() / (f.animation.stem().string() + ".json");
+  std::error_code ec;
+  if (!fs::is_regular_file(json, ec))
+    return "<figure id=\"svgm-lottie\">" + missing("No " + json.filename().string() + " (Lottie) in the run directory.") +
+           "</figure>";
+  std::string why;
+  const auto frames = lottie_frames(json, o.player_width, o.max_lottie_frames, why);
+  if (!frames) {
+    notes.push_back("Lottie not drawn: " + why);
+    return "<figure id=\"svgm-lottie\">" + missing("The Lottie file is not drawn here: " + why + ".") + "</figure>";
+  }
+  std::string s = "<figure id=\"svgm-lottie\" style=\"width:" + std::to_string(o.player_width) + "px\" data-duration=\"" +
+                  html_number(frames->duration_s, 9) + "\"><div class=\"svgm-lottie-box\" style=\"width:" + std::to_string(o.player_width) + "px;height:" +
+                  std::to_string(height) + "px\">";
+  for (size_t i = 0; i < frames->frames.size(); ++i)
+    s += "<img src=\"" + png_uri(frames->frames[i]) + "\" alt=\"Lottie frame " + std::to_string(i) + "\"" +
+         (i ? " hidden" : "") + ">";
+  s += "</div><figcaption>" + html_escape(json.filename().string()) + " as " + html_escape(frames->player) +
+       " (a Lottie player) draws it: " + std::to_string(frames->frames.size()) +
+       " frames drawn when this page was written, shown in step with the SVG. The page runs no third-party "
+       "player itself.</figcaption></figure>";
+  return s;
+}
+
 std::string player_section(const RunFiles& f, const ReportOptions& o, std::vector<std::string>& notes) {
   if (f.animation.empty()) return section("svgm-player", "The animation", missing("No animation.svg in the run directory yet."));
   const std::string text = read_bytes(f.animation);
@@ -143,8 +173,10 @@ std::string player_section(const RunFiles& f, const ReportOptions& o, std::vecto
     s += "<p class=\"svgm-missing\" id=\"svgm-dropped\">Left out of the animation on this page, which keeps only what "
          "a drawing and its animation need (nothing that could run or load a file): " + html_escape(svg.dropped) + ".</p>";
   }
-  s += "<div id=\"svgm-stage\" style=\"width:" + std::to_string(o.player_width) + "px;height:" + std::to_string(height) +
-       "px\">" + svg.markup + "</div>";
+  s += "<div class=\"svgm-row\"><figure style=\"width:" + std::to_string(o.player_width) + "px\"><div id=\"svgm-stage\" style=\"width:" + std::to_string(o.player_width) +
+       "px;height:" + std::to_string(height) + "px\">" + svg.markup + "</div><figcaption>" +
+       html_escape(f.animation.filename().string()) + " in your browser (SMIL)</figcaption></figure>" +
+       lottie_figure(f, o, height, notes) + "</div>";
   s += "<div class=\"svgm-controls\"><button id=\"svgm-play\" type=\"button\">Pause</button> "
        "<input id=\"svgm-scrub\" type=\"range\" min=\"0\" max=\"" + html_number(duration, 9) +
        "\" step=\"any\" value=\"0\" aria-label=\"time\"> <span id=\"svgm-time\">0.00</span> / " +
@@ -221,6 +253,28 @@ std::string candidate_scores(const json& c, const json& judge, const std::string
   return s;
 }
 
+// Four frames of a candidate (first, a quarter, half, three quarters through) in the user's
+// colours (report/user_colours.h), or as made when there is no palette to map back.
+std::string candidate_frames(const fs::path& file, const ColourMap* colours, const ReportOptions& o) {
+  try {
+    const int n = video_frame_count(file);
+    std::vector<int> at;
+    for (int q = 0; q < 4; ++q) at.push_back(n * q / 4);
+    std::vector<RgbaImage> frames = video_frames(file, at, o.thumb_width / 2);
+    std::string s = "<div class=\"svgm-frames\">";
+    for (size_t i = 0; i < frames.size(); ++i) {
+      if (colours) to_user_colours(frames[i], *colours);
+      s += img_tag(frames[i], "frame " + std::to_string(at[i]) + (colours ? " in your colours" : ""), o.thumb_width / 2);
+    }
+    return s + "</div><p><small>Frames " + std::to_string(at[0]) + ", " + std::to_string(at[1]) + ", " +
+           std::to_string(at[2]) + ", " + std::to_string(at[3]) + " of " + std::to_string(n) +
+           (colours ? ", in your drawing's colours (each recoloured part mapped back to its own colour)" : "") +
+           ".</small></p>";
+  } catch (const Error& e) {
+    return missing(std::string("Frames not read: ") + e.what());
+  }
+}
+
 std::string candidates_section(const RunFiles& f, const ReportOptions& o, std::vector<std::string>& notes) {
   std::vector<std::string> names;
   for (const fs::path& p : list_candidates(f.run / "candidates")) names.push_back(p.filename().string());
@@ -241,6 +295,9 @@ std::string candidates_section(const RunFiles& f, const ReportOptions& o, std::v
   } else {
     s += missing("No ranking.json: the ranker has not run.");
   }
+  std::string no_colours;
+  const std::optional<ColourMap> colours = user_colour_map(f.run, no_colours);
+  if (!colours) notes.push_back("candidates shown as made: " + no_colours);
   s += "<div class=\"svgm-grid\">";
   size_t budget = o.max_video_bytes;
   for (const std::string& name : names) {
@@ -267,8 +324,11 @@ std::string candidates_section(const RunFiles& f, const ReportOptions& o, std::v
           poster = " poster=\"" + png_uri(video_frames(file, {0}, o.thumb_width).front()) + "\"";
         } catch (const Error&) {
         }
-        s += "<video controls loop muted playsinline preload=\"auto\" width=\"" + std::to_string(o.thumb_width) + "\"" +
-             poster + " src=\"data:video/" + ext.substr(1) + ";base64," + base64(read_bytes(file)) + "\"></video>";
+        s += candidate_frames(file, colours ? &*colours : nullptr, o);
+        s += std::string("<details") + (colours ? "" : " open") + "><summary>the video as made" +
+             (colours ? " (in the recoloured palette the video model was shown)" : "") +
+             "</summary><video controls loop muted playsinline preload=\"auto\" width=\"" + std::to_string(o.thumb_width) + "\"" +
+             poster + " src=\"data:video/" + ext.substr(1) + ";base64," + base64(read_bytes(file)) + "\"></video></details>";
       } else {
         notes.push_back("candidate " + name + " not embedded: the page's video budget (" +
                         std::to_string(o.max_video_bytes >> 20) + " MB) is spent");
@@ -330,8 +390,9 @@ std::string compare_section(const RunFiles& f, Renderer& r, const ReportOptions&
   const std::vector<double> loss = numbers(f.fit.value("keyframe_image_loss", json()));
   const std::vector<double> psnr = numbers(gate.is_object() ? gate.value("keyframe_psnr_db", json()) : json());
   const std::vector<double> iou = numbers(gate.is_object() ? gate.value("keyframe_iou", json()) : json());
-  s += "<p>Each keyframe: the target's frame (target.mp4) and the animation at the same time, drawn by svgmotion's "
-       "renderer in your colours.</p><table class=\"svgm-keys\"><tr><th>keyframe</th><th>target</th><th>fit</th>"
+  s += "<details id=\"svgm-keyframes\"><summary>Each keyframe (" + std::to_string(key_times.size()) +
+       "): the target's frame (target.mp4) and the animation at the same time, drawn by svgmotion's "
+       "renderer in your colours</summary><table class=\"svgm-keys\"><tr><th>keyframe</th><th>target</th><th>fit</th>"
        "<th>image loss</th><th>PSNR</th><th>IoU</th></tr>";
   for (size_t k = 0; k < key_times.size(); ++k) {
     const double t = key_times[k] * duration;
@@ -353,7 +414,7 @@ std::string compare_section(const RunFiles& f, Renderer& r, const ReportOptions&
     };
     s += "</td>" + cell(loss, k, 4) + cell(psnr, k, 3) + cell(iou, k, 3) + "</tr>";
   }
-  s += "</table>";
+  s += "</table></details>";
   return section("svgm-compare", "The target beside the fit", s);
 }
 
@@ -421,6 +482,8 @@ table{border-collapse:collapse}td,th{border-bottom:1px solid #eee;padding:2px 6p
 .svgm-signals td{font-size:12px}pre.svgm-cmd{white-space:pre-wrap;word-break:break-all;background:#f3f3f3;padding:6px;font-size:12px}
 .svgm-status-ok{color:#2a7a2a}.svgm-status-rejected{color:#a33}
 .svgm-row{display:flex;flex-wrap:wrap;gap:12px;align-items:flex-start}.svgm-warn{color:#a33;font-weight:600}
+#svgm-lottie .svgm-lottie-box{border:1px solid #ccc;background:#fff;overflow:hidden}#svgm-lottie img{border:0;display:block;width:100%}#svgm-lottie img[hidden]{display:none}
+.svgm-frames img{margin:0 2px 2px 0}details>summary{cursor:pointer;margin:4px 0}
 svg.svgm-motion-parts{border:1px solid #ccc;background:#fff;max-width:100%;height:auto}
 </style>)";
 
@@ -434,7 +497,17 @@ constexpr const char* kScript = R"(<script>
   var label = document.getElementById('svgm-time');
   if (svg && play && scrub) {
     var dur = Number(scrub.max) || 0;
-    var show = function (t) { label.textContent = t.toFixed(2); };
+    var lottie = document.getElementById('svgm-lottie');
+    var frames = lottie ? lottie.querySelectorAll('img') : [];
+    var ldur = lottie ? Number(lottie.dataset.duration) || 0 : 0;
+    var shown = 0;
+    var show = function (t) {
+      label.textContent = t.toFixed(2);
+      if (frames.length && ldur > 0) {
+        var i = Math.min(frames.length - 1, Math.floor((t % ldur) / ldur * frames.length));
+        if (i !== shown) { frames[shown].hidden = true; frames[i].hidden = false; shown = i; }
+      }
+    };
     var seek = function (t) {
       svg.pauseAnimations();
       svg.setCurrentTime(t);
@@ -509,6 +582,7 @@ ReportResult write_report(const fs::path& run_in, const ReportOptions& o) {
                      "<title>svgmotion: " +
                      html_escape(f.run.filename().string()) + "</title>" + kStyle + "</head><body>\n";
   page += summary_section(f);
+  page += downloads_section(f.run);
   page += player_section(f, o, result.notes);
   page += motion_section(f.motion, motion_drawing(f, renderer, o, result.notes));
   page += input_section(f, renderer, o, result.notes);

@@ -1,9 +1,11 @@
 // report.html: one self-contained page (inline CSS and script, images and videos as data:
 // URIs, no server, nothing fetched) showing what a run did, written into the run directory.
 //
-// Sections, each an element with a fixed id (tests and readers find them): the animation itself
-// with play/pause and a scrubber (svgm-player), the input drawing and its recoloured copy
-// (svgm-input), every candidate video with the ranker's scores and reasons, the fitted one
+// Sections, each an element with a fixed id (tests and readers find them): every file of the
+// run with its size and a relative link (svgm-downloads), the animation itself with play/pause
+// and a scrubber beside the Lottie file as librlottie draws it (svgm-player), the input drawing and its recoloured copy
+// (svgm-input), every candidate video (frames in the drawing's own colours, the video as made folded) with
+// the ranker's scores and reasons, the fitted one
 // marked and for the others the exact command that fits them instead (svgm-candidates), the
 // target's keyframes beside the fit at the same times (svgm-compare), the loss over
 // iterations and per keyframe (svgm-losses), and the seconds of every stage (svgm-timings).
@@ -29,6 +31,8 @@ struct ReportOptions {
   // Candidate videos are embedded until their bytes reach this; the rest are named, not
   // embedded (procedural candidates are 0.1-0.5 MB each; a hosted model's can be far larger).
   size_t max_video_bytes = 24u << 20;
+  // Frames of the Lottie file drawn beside the animation (about 10 KB each at 360 px).
+  int max_lottie_frames = 60;
 };
 
 struct ReportResult {

@@ -68,7 +68,8 @@ async function check(page, name, file) {
   });
   console.log(`overlay ${name} ${covered ? 'covered' : 'clear'}`);
   const html = fs.readFileSync(file, 'utf8');
-  const m = /<div id="svgm-stage"[^>]*>([\s\S]*?)<\/div><div class="svgm-controls">/.exec(html);
+  // The stage is followed by its caption (the Lottie beside it, then the controls).
+  const m = /<div id="svgm-stage"[^>]*>([\s\S]*?)<\/div><figcaption>/.exec(html);
   const tree = await page.evaluate((markup) => {
     const dump = (n) => {
       if (n.nodeType === Node.TEXT_NODE) return 'T' + JSON.stringify(n.data);

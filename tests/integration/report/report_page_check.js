@@ -12,12 +12,22 @@
 //                                          its pause state and the time shown; the animation
 //                                          is screenshot to OUT_PREFIXseek.png
 //   play paused=P advanced=A               after pressing Play: running, and its clock moves
+//   links N outside=O missing=M            the outputs' download links: how many, how many
+//                                          point outside the page's folder, how many name no
+//                                          file there
+//   link PATH BYTES                        each of them, with the size of the file it names
+//   lottie frames=N shown=I want=J visible=V  the Lottie beside the SVG after seeking to T:
+//                                          its frames, the one drawn inside its box, the one
+//                                          for T, and how many are drawn (1); it is screenshot to
+//                                          OUT_PREFIXlottie.png
+//   user_colours N                         candidate frames drawn in the user's colours
+//   keyframes folded=F rows=R              the keyframe table inside a closed <details>
 // Chromium is /usr/bin/chromium (Debian's), or $CHROMIUM. Exit 2 on any failure, with one line.
 'use strict';
 const fs = require('fs');
 const path = require('path');
 
-const kSections = ['svgm-player', 'svgm-motion', 'svgm-input', 'svgm-candidates', 'svgm-compare', 'svgm-losses', 'svgm-timings'];
+const kSections = ['svgm-downloads', 'svgm-player', 'svgm-motion', 'svgm-input', 'svgm-candidates', 'svgm-compare', 'svgm-losses', 'svgm-timings'];
 
 async function main() {
   const [modulesArg, report, prefix, tArg] = process.argv.slice(2);
@@ -103,6 +113,24 @@ async function main() {
     const svg = await page.$('#svgm-stage > svg');
     await svg.screenshot({ path: `${prefix}seek.png` });
     console.log(`seek ${t} time=${seek.time.toFixed(4)} paused=${seek.paused} label=${seek.label} size=${seek.w}x${seek.h}`);
+    const lottie = await page.evaluate((t) => {
+      const fig = document.getElementById('svgm-lottie');
+      const imgs = fig ? [...fig.querySelectorAll('img')] : [];
+      const dur = fig ? Number(fig.dataset.duration) : 0;
+      // Drawn, not just unhidden: laid out with a size, inside the box that clips the frames.
+      const box = fig ? fig.querySelector('.svgm-lottie-box').getBoundingClientRect() : null;
+      const drawn = imgs.map((i) => {
+        const r = i.getBoundingClientRect();
+        return getComputedStyle(i).display !== 'none' && r.height > 0 && r.top >= box.top && r.bottom <= box.bottom + 1;
+      });
+      const shown = drawn.indexOf(true);
+      const r = shown >= 0 ? imgs[shown].getBoundingClientRect() : null;
+      return { n: imgs.length, shown, visible: drawn.filter((d) => d).length,
+               clip: r ? { x: r.left + window.scrollX, y: r.top + window.scrollY, width: r.width, height: r.height } : null,
+               want: dur > 0 ? Math.min(imgs.length - 1, Math.floor((t % dur) / dur * imgs.length)) : -1 };
+    }, t);
+    if (lottie.clip) await page.screenshot({ path: `${prefix}lottie.png`, clip: lottie.clip, captureBeyondViewport: true });
+    console.log(`lottie frames=${lottie.n} shown=${lottie.shown} want=${lottie.want} visible=${lottie.visible}`);
     const play = await page.evaluate(async () => {
       const svg = document.querySelector('#svgm-stage > svg');
       const before = svg.getCurrentTime();
@@ -111,6 +139,24 @@ async function main() {
       return { paused: svg.animationsPaused(), advanced: svg.getCurrentTime() > before };
     });
     console.log(`play paused=${play.paused} advanced=${play.advanced}`);
+    // Download links resolve against the page's own address, as a click would.
+    const links = await page.$$eval('#svgm-downloads a[href]', (as) => as.map((a) => a.href));
+    const dir = path.dirname(path.resolve(report));
+    let outside = 0, missing = 0;
+    for (const href of links) {
+      const u = new URL(href);
+      const file = u.protocol === 'file:' ? decodeURIComponent(u.pathname) : '';
+      if (!file || !file.startsWith(dir + path.sep)) { ++outside; continue; }
+      if (!fs.existsSync(file) || !fs.statSync(file).isFile()) { ++missing; continue; }
+      console.log(`link ${path.relative(dir, file)} ${fs.statSync(file).size}`);
+    }
+    console.log(`links ${links.length} outside=${outside} missing=${missing}`);
+    console.log(`user_colours ${await page.$$eval('.svgm-frames img[alt$="in your colours"]', (i) => i.length)}`);
+    const keys = await page.evaluate(() => {
+      const d = document.getElementById('svgm-keyframes');
+      return { folded: !!d && !d.open, rows: d ? d.querySelectorAll('table.svgm-keys tr').length - 1 : 0 };
+    });
+    console.log(`keyframes folded=${keys.folded} rows=${keys.rows}`);
   } finally {
     await browser.close();
   }
