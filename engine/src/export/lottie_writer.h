@@ -36,6 +36,12 @@ struct LottieOptions {
   double fps = 30;                  // the timeline's frame rate (the target video's)
   int decimals = kDefaultDecimals;  // decimal places of coordinates and widths (canvas pixels)
   std::string name;                 // the animation's `nm` (the document's file name)
+  // The SMIL export of the same animation (animation.svg), when written: gradients are placed
+  // as it draws them at each keyframe, following their shapes (lottie_paint.h). Without it
+  // they stay where the document puts them.
+  std::filesystem::path exported_svg;
+  // When set, write_lottie also writes the .lottie archive here (dotlottie.h).
+  std::filesystem::path dotlottie;
 };
 
 struct LottieDocument {
