@@ -87,8 +87,11 @@ void write_stops(JsonText& j, const std::vector<GradientStop>& stops) {
 }
 
 // A multi-dimensional property, static or keyframed (linear in time, as the shapes).
+// A keyframe's value is always an array, a one-dimensional one too ("s":[v]): lottie-web reads
+// a bare number there as no value.
 template <typename Write>
-void write_property(JsonText& j, const std::vector<double>& frames, size_t n, Write&& value, bool animated) {
+void write_property(JsonText& j, const std::vector<double>& frames, size_t n, Write&& value, bool animated,
+                    bool scalar = false) {
   if (!animated) {
     j.raw("{\"a\":0,\"k\":");
     value(0);
@@ -98,8 +101,9 @@ void write_property(JsonText& j, const std::vector<double>& frames, size_t n, Wr
   j.raw("{\"a\":1,\"k\":[");
   for (size_t i = 0; i < n; ++i) {
     if (i) j.raw(",");
-    j.raw("{\"t\":").num(frames[i], kFrameScale).raw(",\"s\":");
+    j.raw("{\"t\":").num(frames[i], kFrameScale).raw(",\"s\":").raw(scalar ? "[" : "");
     value(i);
+    j.raw(scalar ? "]" : "");
     if (i + 1 < n) j.raw(",\"i\":{\"x\":1,\"y\":1},\"o\":{\"x\":0,\"y\":0}");
     j.raw("}");
   }
@@ -204,9 +208,9 @@ void write_gradient_body(JsonText& j, const Gradient& g, const GradientPlan& pla
   write_property(j, track.frames, n, [&](size_t i) { j.pair(plan.placements[i].e.x, plan.placements[i].e.y); }, moving);
   if (g.radial) {
     j.raw(",\"h\":");
-    write_property(j, track.frames, n, [&](size_t i) { j.num(plan.placements[i].highlight, kOpacityScale); }, moving);
+    write_property(j, track.frames, n, [&](size_t i) { j.num(plan.placements[i].highlight, kOpacityScale); }, moving, true);
     j.raw(",\"a\":");
-    write_property(j, track.frames, n, [&](size_t i) { j.num(plan.placements[i].angle, kOpacityScale); }, moving);
+    write_property(j, track.frames, n, [&](size_t i) { j.num(plan.placements[i].angle, kOpacityScale); }, moving, true);
   }
 }
 
@@ -249,7 +253,7 @@ void write_transform(JsonText& j, const std::vector<double>& frames, size_t n, b
     j.raw("[").num(100 * v.x, 1e6).raw(",").num(100 * v.y, 1e6).raw("]");
   }, animated);
   j.raw(",\"r\":");
-  write_property(j, frames, n, [&](size_t i) { j.num(rotation(i), 1e6); }, animated);
+  write_property(j, frames, n, [&](size_t i) { j.num(rotation(i), 1e6); }, animated, true);
   j.raw(",\"o\":{\"a\":0,\"k\":100},\"sk\":{\"a\":0,\"k\":0},\"sa\":{\"a\":0,\"k\":0}}");
 }
 

@@ -42,6 +42,7 @@ async function main() {
   const browser = await puppeteer.launch({
     executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
     headless: true,
+    protocolTimeout: 60000,
     args: ['--no-sandbox', '--disable-gpu', '--force-device-scale-factor=1', '--hide-scrollbars'],
   });
   try {
@@ -64,12 +65,11 @@ async function main() {
       });
     }, base, isJson);
     for (let i = 0; i < frames.length; ++i) {
+      // setFrame draws synchronously into the canvas when the frame changes (no 'render' event
+      // when it does not); two animation frames let the page composite it.
       await page.evaluate((f) => new Promise((resolve) => {
-        window.player.addEventListener('render', function done() {
-          window.player.removeEventListener('render', done);
-          resolve();
-        });
         window.player.setFrame(f);
+        requestAnimationFrame(() => requestAnimationFrame(resolve));
       }), Number(frames[i]));
       await page.screenshot({ path: `${prefix}${i}.png`, clip: { x: 0, y: 0, width, height } });
     }
