@@ -320,7 +320,6 @@ bool Reader::resolve_paint(const Paint& p, const Style& s, pugi::xml_node el, Rg
       if (it != ids_.end()) {
         const std::string_view tag = local_name(it->second.name());
         if (tag == "linearGradient" || tag == "radialGradient") {
-          warn(el, "gradient paint drawn with its mean stop colour in Lottie exports");
           if (const auto m = gradient_mean(it->second, 0)) {
             *out = *m;
             *gradient = it->second;
