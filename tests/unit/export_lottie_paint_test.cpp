@@ -104,13 +104,20 @@ TEST_CASE("lottie: a bounding-box linear gradient on a wide rect is a gf whose r
   REQUIRE(gf.is_object());
   CHECK(gf["t"] == 1);
   CHECK(gf["o"]["k"] == 80);
-  // Two colour stops, then opacity stops (the second stop is half transparent).
-  CHECK(gf["g"]["p"] == 2);
+  // Colour stops, then opacity stops (the second stop is half transparent): 4 more stops on
+  // the straight blend between them, so that a player blending premultiplied colours (rlottie)
+  // draws the same.
+  CHECK(gf["g"]["p"] == 6);
   const std::vector<double> stops = gf["g"]["k"]["k"].get<std::vector<double>>();
-  REQUIRE(stops.size() == 12);
-  CHECK(stops[1] == 1);
-  CHECK(stops[7] == 1);
-  CHECK(stops[11] == 0.5);
+  REQUIRE(stops.size() == 6 * 4 + 6 * 2);
+  CHECK(stops[1] == 1);               // red first
+  CHECK(stops[8] == doctest::Approx(0.4));  // third stop at 0.4: 60 % red, 40 % blue
+  CHECK(stops[9] == doctest::Approx(0.6));
+  CHECK(stops[11] == doctest::Approx(0.4));
+  CHECK(stops[23] == 1);              // blue last
+  CHECK(stops[24 + 4] == doctest::Approx(0.4));  // opacity stop 2 at 0.4: 1 - 0.4 * 0.5
+  CHECK(stops[24 + 5] == doctest::Approx(0.8));
+  CHECK(stops[35] == 0.5);
   const Vec2 a = point(gf["s"]), b = point(gf["e"]);
   CHECK(linear_t(a, b, {10, 5}) == doctest::Approx(0).epsilon(1e-3));
   CHECK(linear_t(a, b, {50, 15}) == doctest::Approx(1).epsilon(1e-3));
