@@ -48,8 +48,8 @@ if [[ $mode == example ]]; then
   echo "setup: the animated example is $(pwd)/build/example/animation.svg" \
        "(open it in a browser; preview.mp4 shows target | fit, report.html the whole run)"
 else
-  # lottie-web and puppeteer-core (pinned in tests/integration/lottie/package.json) go into
-  # build/npm, never into the repository.
+  # lottie-web, dotlottie-web, puppeteer-core, ajv and the lottie-spec schema (pinned in
+  # tests/integration/lottie/package.json) go into build/npm, never into the repository.
   mkdir -p build/npm
   cp tests/integration/lottie/package.json build/npm/package.json
   (cd build/npm && npm install --no-audit --no-fund --no-package-lock --loglevel=error >/dev/null)

@@ -208,6 +208,26 @@ TEST_CASE("lottie: clip-path, mask and group opacity become precompositions with
   CHECK(masked[1]["tt"] == 3);  // luminance
 }
 
+TEST_CASE("lottie: a dashed stroke keeps its dashes, caps and joins (an odd list repeated, in canvas units)") {
+  const Static s = export_static(R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="40" height="40" viewBox="0 0 20 20">
+    <path d="M2 2 L18 2 L18 18" fill="none" stroke="#000" stroke-dasharray="4, 2 1" stroke-dashoffset="1"
+          stroke-linecap="square" stroke-linejoin="round" stroke-miterlimit="7"/></svg>)svg");
+  CHECK(s.doc.warnings.empty());
+  const auto st = item(s.j["layers"][0], "st");
+  CHECK(st["lc"] == 3);
+  CHECK(st["lj"] == 2);
+  CHECK(st["ml"] == 7);
+  const auto& d = st["d"];
+  REQUIRE(d.size() == 7);
+  const double want[] = {8, 4, 2, 8, 4, 2};
+  for (size_t i = 0; i < 6; ++i) {
+    CHECK(d[i]["n"] == (i % 2 ? "g" : "d"));
+    CHECK(d[i]["v"]["k"] == want[i]);
+  }
+  CHECK(d[6]["n"] == "o");
+  CHECK(d[6]["v"]["k"] == 2);
+}
+
 TEST_CASE("lottie: what Lottie cannot draw is named in one warning") {
   const Static s = export_static(R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="40" height="40">
     <filter id="f"><feGaussianBlur stdDeviation="2"/></filter><pattern id="p" width="4" height="4"/>

@@ -239,12 +239,25 @@ void write_gradient_body(JsonText& j, const Gradient& g, const GradientPlan& pla
   }
 }
 
+// The stroke's dash pattern ("d": dash, gap, ..., offset), when it has one.
+void write_dashes(JsonText& j, const Stroke& s) {
+  if (s.dashes.empty()) return;
+  j.raw(",\"d\":[");
+  for (size_t i = 0; i < s.dashes.size(); ++i) {
+    j.raw(i ? "," : "").raw(i % 2 ? "{\"n\":\"g\",\"nm\":\"gap\",\"v\":" : "{\"n\":\"d\",\"nm\":\"dash\",\"v\":");
+    j.fixed(s.dashes[i], j.coord_scale()).raw("}");
+  }
+  j.raw(",{\"n\":\"o\",\"nm\":\"offset\",\"v\":").fixed(s.dash_offset, j.coord_scale()).raw("}]");
+}
+
 void write_flat_stroke(JsonText& j, const Stroke& s, const Rgba& colour) {
   j.raw("{\"ty\":\"st\",\"c\":");
   write_colour(j, colour);
   j.raw(",\"o\":").fixed(colour.a * 100.0, kOpacityScale).raw(",\"w\":").fixed(s.width, j.coord_scale());
   j.raw(",\"lc\":").num(lottie_cap(s.cap), 1).raw(",\"lj\":").num(lottie_join(s.join), 1);
-  j.raw(",\"ml\":").num(s.miter_limit, 1e4).raw(",\"bm\":0}");
+  j.raw(",\"ml\":").num(s.miter_limit, 1e4);
+  write_dashes(j, s);
+  j.raw(",\"bm\":0}");
 }
 
 void write_stroke(JsonText& j, const Path& path, const GradientTrack& track, const std::vector<const double*>& points,
@@ -261,7 +274,9 @@ void write_stroke(JsonText& j, const Path& path, const GradientTrack& track, con
   write_gradient_body(j, *track.values[0], plan, track);
   j.raw(",\"w\":").fixed(s.width, j.coord_scale());
   j.raw(",\"lc\":").num(lottie_cap(s.cap), 1).raw(",\"lj\":").num(lottie_join(s.join), 1);
-  j.raw(",\"ml\":").num(s.miter_limit, 1e4).raw(",\"bm\":0}");
+  j.raw(",\"ml\":").num(s.miter_limit, 1e4);
+  write_dashes(j, s);
+  j.raw(",\"bm\":0}");
 }
 
 // A group transform item: position, rotation, scale (and anchor), static or per value.

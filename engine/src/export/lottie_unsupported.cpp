@@ -19,7 +19,6 @@ constexpr Unsupported kReaderSkips[] = {
     {"text is not supported", "text"},
     {"images are not supported", "image"},
     {"foreignObject is not supported", "foreignObject"},
-    {"stroke-dasharray not supported", "stroke dashes"},
 };
 
 }  // namespace

@@ -589,6 +589,8 @@ void Reader::add_shape(pugi::xml_node n, std::vector<Subpath> subpaths, const St
     p.stroke.join = s.join;
     p.stroke.cap = s.cap;
     p.stroke.miter_limit = s.miter_limit;
+    for (const double d : s.dash_array) p.stroke.dashes.push_back(d * ctm.mean_scale());
+    p.stroke.dash_offset = s.dash_offset * ctm.mean_scale();
     if (s.dashed) warn(n, "stroke-dasharray not supported (drawn solid)");
   }
   if (!p.has_fill && !p.has_stroke) return;
