@@ -13,7 +13,7 @@ packages=(
   cmake ninja-build g++ pkg-config ccache
   ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd
   libeigen3-dev libpugixml-dev libopencv-dev libyaml-cpp-dev
-  libpng-dev doctest-dev nlohmann-json3-dev libcurl4-openssl-dev
+  libpng-dev zlib1g-dev doctest-dev nlohmann-json3-dev libcurl4-openssl-dev
   clang libclang-rt-dev
   wordnet-base
 )
@@ -48,8 +48,8 @@ if [[ $mode == example ]]; then
   echo "setup: the animated example is $(pwd)/build/example/animation.svg" \
        "(open it in a browser; preview.mp4 shows target | fit, report.html the whole run)"
 else
-  # lottie-web and puppeteer-core (pinned in tests/integration/lottie/package.json) go into
-  # build/npm, never into the repository.
+  # lottie-web, dotlottie-web, puppeteer-core, ajv and the lottie-spec schema (pinned in
+  # tests/integration/lottie/package.json) go into build/npm, never into the repository.
   mkdir -p build/npm
   cp tests/integration/lottie/package.json build/npm/package.json
   (cd build/npm && npm install --no-audit --no-fund --no-package-lock --loglevel=error >/dev/null)

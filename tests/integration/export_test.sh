@@ -4,8 +4,12 @@
 #           reads them, frames equal to `render --time`, the GIF's colours, bad requests refused
 #   lottie  fit writes animation.json beside animation.svg; lottie-web (headless Chromium) and
 #           librlottie draw it like `svgmotion render --time` at 5 times (PSNR bar below)
+#   lottie_paint  the same for gradients (tests/data/lottie/gradients.svg) and clip-path, mask
+#           and group opacity (man_clip_mask.svg), with animation.lottie drawn by dotlottie-web,
+#           both files valid against the lottie-spec schema (ajv), every player >= 40 dB
 # TOOLS_DIR holds png_psnr and rlottie_frames (tests/tools); NODE_MODULES holds lottie-web and
-# puppeteer-core (.ci/setup.sh installs them into build/npm). Debian's ffmpeg and chromium.
+# puppeteer-core, and for lottie_paint dotlottie-web, ajv and the lottie-spec schema
+# (.ci/setup.sh installs them into build/npm). Debian's ffmpeg and chromium.
 set -u
 group=$1 bin=$2 data=$3 tools=$4 node_modules=${5:-}
 here=$(cd "$(dirname "$0")" && pwd)
@@ -123,6 +127,59 @@ lottie)
   # The figure moved: frames 0 and 3 differ (the checks above are not of a still picture).
   p=$(psnr "$tmp/ours_0.png" "$tmp/ours_3.png")
   check "the fitted animation moves (frames 0 and 3 differ: $p dB < 30)" '! at_least "$p" 30'
+  ;;
+lottie_paint)
+  # The bar of issue 37: players draw paint servers and compositing as we do (anti-aliasing
+  # apart), as they draw flat art (46-61 dB).
+  paint_bar=40
+  missing=
+  command -v chromium >/dev/null || missing+=" chromium (Debian)"
+  command -v node >/dev/null || missing+=" node (Debian nodejs)"
+  for m in lottie-web puppeteer-core @lottiefiles/dotlottie-web ajv @lottie-animation-community/lottie-specs; do
+    [[ -n $node_modules && -d $node_modules/$m ]] || missing+=" $m (npm, in ${node_modules:-build/npm/node_modules})"
+  done
+  [[ -x $tools/rlottie_frames ]] || missing+=" rlottie_frames (build with Debian's librlottie-dev)"
+  if [[ -n $missing ]]; then
+    bad "the Lottie players are not installed:$missing; bash .ci/setup.sh test installs them"
+    finish
+  fi
+  # Each drawing: its figure (TRANSFORM) turned over 7 frames there and back, fitted with 4
+  # keyframes at 128 px (the players' agreement does not depend on the fit's quality).
+  for name in gradients man_clip_mask; do
+    svg=$data/lottie/$name.svg
+    mkdir -p "$tmp/$name/target"
+    shifts=(0 5 10 15 10 5 0)
+    for i in "${!shifts[@]}"; do
+      s=${shifts[$i]}
+      sed "s/TRANSFORM/translate($s $((s / 2))) rotate($((s / 2)) 128 96)/" "$svg" >"$tmp/$name/t$i.svg"
+      must "$bin" render "$tmp/$name/t$i.svg" -o "$tmp/$name/target/$i.png" --size 128 2>/dev/null
+    done
+    sed "s/TRANSFORM/translate(0 0)/" "$svg" >"$tmp/$name/in.svg"
+    out=$tmp/$name/out
+    must "$bin" fit "$tmp/$name/in.svg" --target "$tmp/$name/target" -o "$out" --iterations 40 --keyframes 4 --size 128 \
+      --no-gate --quiet 2>"$tmp/$name/fit_err"
+    check "$name: fit writes animation.json and animation.lottie beside animation.svg" '[[ -s $out/animation.json && -s $out/animation.lottie ]]'
+    check "$name: every paint and layer is expressed (no 'cannot express' warning)" '! grep -q "cannot express" "$tmp/$name/fit_err"'
+    node "$here/lottie/lottie_schema_check.js" "$node_modules" "$out/animation.json" "$out/animation.lottie" >"$tmp/$name/schema" 2>&1
+    check "$name: animation.json and the .lottie's animation are valid against the lottie-spec schema ($(tr '\n' ' ' <"$tmp/$name/schema" | head -c 300))" \
+      '[[ $(grep -c ": valid$" "$tmp/$name/schema") -eq 2 && $(grep -vc ": valid$" "$tmp/$name/schema") -eq 0 ]]'
+    read -r w h < <(sed -n 's/.*"w":\([0-9]*\),"h":\([0-9]*\),.*/\1 \2/p' "$out/animation.json" | head -1)
+    W=256 H=$((256 * h / w))
+    frames=(0 1 2 3 5)
+    must "$bin" render "$out/animation.svg" -o "$tmp/$name/ours_%d.png" --fps 24 --size $W 2>/dev/null
+    must node "$here/lottie/lottie_web_frames.js" "$node_modules" "$out/animation.json" $W $H "$tmp/$name/web_" svg "${frames[@]}"
+    must "$tools/rlottie_frames" "$out/animation.json" $W $H "$tmp/$name/rl_" "${frames[@]}"
+    must node "$here/lottie/dotlottie_web_frames.js" "$node_modules" "$out/animation.lottie" $W $H "$tmp/$name/dl_" "${frames[@]}"
+    for player in web rl dl; do
+      row=()
+      for i in "${!frames[@]}"; do row+=("$(psnr "$tmp/$name/ours_${frames[$i]}.png" "$tmp/$name/${player}_$i.png")"); done
+      echo "# $name: PSNR vs svgmotion render at frames ${frames[*]}: $player ${row[*]}"
+      all_above() { local v; for v in "$@"; do at_least "$v" "$paint_bar" || return 1; done; }
+      check "$name: $player draws it like our render at 5 times (>= $paint_bar dB: ${row[*]})" 'all_above "${row[@]}"'
+    done
+    p=$(psnr "$tmp/$name/ours_0.png" "$tmp/$name/ours_3.png")
+    check "$name: the fitted animation moves (frames 0 and 3 differ: $p dB < 35)" '! at_least "$p" 35'
+  done
   ;;
 *) echo "unknown group $group"; exit 2 ;;
 esac

@@ -67,16 +67,23 @@ TEST_CASE("lottie: layers in paint order, keyframes at the SVG's times with the 
   CHECK(j["fr"] == 24);
   CHECK(j["ip"] == 0);
   CHECK(j["op"] == 48);  // 2 s at 24 fps
-  // Top layer first: the ring (drawn last), then the rect, then the group's null layer.
-  REQUIRE(j["layers"].size() == 3);
-  CHECK(j["layers"][0]["nm"] == "ring");
+  // Top layer first: the half-opaque group (drawn last) as one precomposition faded once,
+  // then the rect. The ring and its group's null layer are inside the precomposition.
+  REQUIRE(j["layers"].size() == 2);
+  CHECK(j["layers"][0]["ty"] == 0);
+  CHECK(j["layers"][0]["ks"]["o"]["k"] == 50);  // the group's opacity, once
   CHECK(j["layers"][1]["nm"] == "back");
-  CHECK(j["layers"][2]["nm"] == "part");
-  CHECK(j["layers"][2]["ty"] == 3);
-  CHECK(j["layers"][0]["parent"] == j["layers"][2]["ind"]);
   CHECK(!j["layers"][1].contains("parent"));
-  CHECK(j["layers"][0]["ks"]["o"]["k"] == 50);  // the group's opacity
   CHECK(j["layers"][1]["ks"]["o"]["k"] == 100);
+  REQUIRE(j["assets"].size() == 1);
+  CHECK(j["assets"][0]["id"] == j["layers"][0]["refId"]);
+  const auto& inner = j["assets"][0]["layers"];
+  REQUIRE(inner.size() == 2);
+  CHECK(inner[0]["nm"] == "ring");
+  CHECK(inner[0]["ks"]["o"]["k"] == 100);  // not the group's opacity again
+  CHECK(inner[1]["nm"] == "part");
+  CHECK(inner[1]["ty"] == 3);
+  CHECK(inner[0]["parent"] == inner[1]["ind"]);
 
   // The rect: one closed subpath of four corners (the closing line folded into the first).
   const auto back = layer_named(j, "back");
@@ -111,7 +118,7 @@ TEST_CASE("lottie: layers in paint order, keyframes at the SVG's times with the 
   CHECK(!keys[2].contains("o"));
 
   // The ring: two subpaths, stroke listed before fill (drawn over it), even-odd.
-  const auto ring = layer_named(j, "ring");
+  const auto ring = inner[0];
   const auto& it = ring["shapes"][0]["it"];
   REQUIRE(it.size() == 5);  // sh, sh, st, fl, tr
   CHECK(it[2]["ty"] == "st");
@@ -175,21 +182,6 @@ TEST_CASE("lottie and SMIL: coordinates carry the decimals asked for") {
     CHECK(std::stod(first) == doctest::Approx(local).epsilon(1e-12));
     CHECK((decimals == 0 ? first.find('.') == std::string::npos : first.size() - first.find('.') - 1 <= static_cast<size_t>(decimals)));
   }
-}
-
-TEST_CASE("lottie: a gradient paint is written as its mean colour, with one warning") {
-  const Scene scene = read_svg_string(R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10">
-    <linearGradient id="g"><stop offset="0" stop-color="#000"/><stop offset="1" stop-color="#fff"/></linearGradient>
-    <rect width="5" height="5" fill="url(#g)"/><rect x="5" width="5" height="5" fill="url(#g)"/></svg>)svg", "grad.svg");
-  const RasterPlan plan = plan_raster(scene, Affine{}, 10, 10);
-  AnimationTiming timing;
-  timing.keyframes = 1;
-  const LottieDocument doc = lottie_animation(scene, plan, std::vector<double>(plan.rest_cp.begin(), plan.rest_cp.end()),
-                                              timing, LottieOptions{});
-  REQUIRE(doc.warnings.size() == 1);
-  CHECK(doc.warnings[0] == "paths painted with gradients are drawn in their mean stop colour");
-  const auto j = nlohmann::json::parse(doc.json);
-  CHECK(j["layers"][0]["shapes"][0]["it"][1]["c"]["k"][0].get<double>() == doctest::Approx(0.5).epsilon(0.01));
 }
 
 }  // TEST_SUITE

@@ -258,10 +258,9 @@ TEST_CASE("paint values: invalid paints are ignored, gradients give their mean c
   CHECK_FALSE(s.paths[5].has_fill);                // a gradient without stops: none
   CHECK(color(s.paths[6].fill, 0, 0, 1));          // pattern: the fallback
   CHECK(color(s.paths[7].fill, 0, 0, 0, 0));
-  REQUIRE(s.warnings.size() == 3);
-  CHECK(s.warnings[0] == "t.svg: <rect> and 2 more elements: gradient paint drawn with its mean stop colour in Lottie exports");
-  CHECK(s.warnings[1] == "t.svg: <rect> and 1 more element: paint url(#nothing) not found (fallback colour or none used)");
-  CHECK(s.warnings[2] == "t.svg: <rect>: pattern paint not supported (fallback colour or none used)");
+  REQUIRE(s.warnings.size() == 2);  // gradients are drawn (no warning)
+  CHECK(s.warnings[0] == "t.svg: <rect> and 1 more element: paint url(#nothing) not found (fallback colour or none used)");
+  CHECK(s.warnings[1] == "t.svg: <rect>: pattern paint not supported (fallback colour or none used)");
 }
 
 TEST_CASE("the cascade: presentation attributes, then <style> rules by specificity, then style=") {
@@ -277,10 +276,9 @@ TEST_CASE("the cascade: presentation attributes, then <style> rules by specifici
   CHECK(s.paths[3].stroke.width == doctest::Approx(2));
   CHECK(s.paths[3].stroke.miter_limit == 10);
   CHECK(color(s.paths[4].fill, 1, 0, 0));  // the sheet beats the fill attribute
-  REQUIRE(s.warnings.size() == 2);
+  REQUIRE(s.warnings.size() == 1);
   const std::string name = SVGM_TEST_DATA "/svg/style_sheet.svg";
   CHECK(s.warnings[0] == name + ": <style>: 2 CSS rules ignored (only tag, .class and #id selectors are supported)");
-  CHECK(s.warnings[1] == name + ": <path>: gradient paint drawn with its mean stop colour in Lottie exports");
 }
 
 TEST_CASE("a file with every shape: counts, groups, canvas mapping") {

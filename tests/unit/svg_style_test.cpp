@@ -139,11 +139,10 @@ TEST_CASE("unsupported content gives one warning per kind and is skipped") {
       "<rect width=\"5\" height=\"5\" fill=\"url(#g)\" clip-path=\"url(#c)\"/>");
   REQUIRE(s.paths.size() == 1);
   CHECK(rgba(s.paths[0].fill, 0.5f, 0.5f, 0.5f));
-  REQUIRE(s.warnings.size() == 4);
+  REQUIRE(s.warnings.size() == 3);
   CHECK(s.warnings[0] == "t.svg: 2 <text> elements skipped (text is not supported)");
   CHECK(s.warnings[1] == "t.svg: 1 <image> element skipped (images are not supported)");
-  CHECK(s.warnings[2] == "t.svg: <rect>: gradient paint drawn with its mean stop colour in Lottie exports");
-  CHECK(s.warnings[3] == "t.svg: <rect>: clip-path url(#c) is not a clipPath (drawn unclipped)");
+  CHECK(s.warnings[2] == "t.svg: <rect>: clip-path url(#c) is not a clipPath (drawn unclipped)");
 }
 
 TEST_CASE("malformed input is one error line naming the file") {

@@ -41,12 +41,16 @@ struct Stroke {
   LineJoin join = LineJoin::Miter;
   LineCap cap = LineCap::Butt;
   double miter_limit = 4;  // SVG default
+  // Dash and gap lengths (canvas units, even count; empty: solid) and the dash offset. The
+  // render draws a dashed stroke solid (with a warning); the Lottie export writes the dashes.
+  std::vector<double> dashes;
+  double dash_offset = 0;
 };
 
 // A gradient paint server, resolved for one element (href chains, units and transforms folded),
 // drawn by the forward render (raster/layer_compositor.h) and by the fitter's rasteriser as a
-// paint image fixed in canvas space (RasterPlan::paint). The Lottie export uses the path's flat
-// colour, which stays the gradient's mean stop colour.
+// paint image fixed in canvas space (RasterPlan::paint). The path's flat colour stays the
+// gradient's mean stop colour (for the fitter); the Lottie export writes the gradient itself.
 enum class Spread : uint8_t { Pad, Reflect, Repeat };
 
 struct GradientStop {

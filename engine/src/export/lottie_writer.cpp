@@ -5,123 +5,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <nlohmann/json.hpp>
 
-#include "svg/svg_number.h"
+#include "export/dotlottie.h"
+#include "export/lottie_compositing.h"
+#include "export/lottie_json.h"
+#include "export/lottie_paint.h"
+#include "export/lottie_unsupported.h"
 #include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
-#include "svgmotion/utf8_text.h"
 
 namespace svgm {
 
-namespace {
-
-// The reader's warning for a gradient drawn with its mean stop colour (svg_reader.cpp,
-// resolve_paint): the scene keeps only that colour, so the export says so once.
-constexpr std::string_view kGradientWarning = "gradient paint drawn with its mean stop colour in Lottie exports";
-// Colours are written to 1/10000 (far below one 8-bit level), opacities (0..100) to 1/100,
-// frame times to 1/1000 of a frame.
-constexpr double kColourScale = 1e4, kOpacityScale = 1e2, kFrameScale = 1e3;
-// Two on-curve points this close (canvas pixels) are the same point: a closed subpath that
-// returns exactly to its start is written without the zero-length closing segment.
-constexpr double kSamePoint = 1e-9;
-
-class JsonText {
- public:
-  explicit JsonText(int decimals) : coord_scale_(std::pow(10.0, decimals)) {}
-  JsonText& raw(std::string_view t) {
-    s_ += t;
-    return *this;
-  }
-  JsonText& num(double v, double scale) {
-    svg::append_rounded(s_, v, scale);
-    return *this;
-  }
-  JsonText& coord(double v) { return num(v, coord_scale_); }
-  JsonText& str(const std::string& t) { return raw(json_text(nlohmann::json(t))); }
-  // {"a":0,"k":v}
-  JsonText& fixed(double v, double scale) {
-    raw("{\"a\":0,\"k\":");
-    num(v, scale);
-    return raw("}");
-  }
-  std::string& text() { return s_; }
-
- private:
-  std::string s_;
-  double coord_scale_;
-};
-
-// The identity transform of a layer after its opacity (3D vectors, as bodymovin writes them),
-// and a group's.
-constexpr std::string_view kLayerTransformAfterOpacity =
-    "\"r\":{\"a\":0,\"k\":0},\"p\":{\"a\":0,\"k\":[0,0,0]},\"a\":{\"a\":0,\"k\":[0,0,0]},"
-    "\"s\":{\"a\":0,\"k\":[100,100,100]}}";
-constexpr std::string_view kGroupTransform =
-    "{\"ty\":\"tr\",\"p\":{\"a\":0,\"k\":[0,0]},\"a\":{\"a\":0,\"k\":[0,0]},"
-    "\"s\":{\"a\":0,\"k\":[100,100]},\"r\":{\"a\":0,\"k\":0},\"o\":{\"a\":0,\"k\":100},"
-    "\"sk\":{\"a\":0,\"k\":0},\"sa\":{\"a\":0,\"k\":0}}";
-
-// One subpath's control points {p0, c1, c2, p1, ...} as a Lottie bezier: vertices with in and
-// out tangents relative to them. A closed subpath ends on its start (the reader adds the
-// closing line); `merge_close` drops that last vertex, folding its in-tangent into the first.
-void write_bezier(JsonText& j, const double* p, size_t n_points, bool closed, bool merge_close) {
-  const size_t n = (n_points - 1) / 3;  // segments
-  const size_t nv = merge_close ? n : n + 1;
-  auto x = [&](size_t i) { return p[2 * i]; };
-  auto y = [&](size_t i) { return p[2 * i + 1]; };
-  auto pair = [&](double a, double b) {
-    j.raw("[").coord(a).raw(",").coord(b).raw("]");
-  };
-  j.raw("{\"i\":[");
-  for (size_t v = 0; v < nv; ++v) {
-    if (v) j.raw(",");
-    const size_t at = 3 * v;
-    if (v > 0) pair(x(at - 1) - x(at), y(at - 1) - y(at));
-    else if (merge_close) pair(x(3 * n - 1) - x(0), y(3 * n - 1) - y(0));
-    else pair(0, 0);
-  }
-  j.raw("],\"o\":[");
-  for (size_t v = 0; v < nv; ++v) {
-    if (v) j.raw(",");
-    const size_t at = 3 * v;
-    if (v < n) pair(x(at + 1) - x(at), y(at + 1) - y(at));
-    else pair(0, 0);
-  }
-  j.raw("],\"v\":[");
-  for (size_t v = 0; v < nv; ++v) {
-    if (v) j.raw(",");
-    pair(x(3 * v), y(3 * v));
-  }
-  j.raw("],\"c\":").raw(closed ? "true" : "false").raw("}");
-}
-
-void write_colour(JsonText& j, const Rgba& c) {
-  j.raw("{\"a\":0,\"k\":[").num(c.r, kColourScale).raw(",").num(c.g, kColourScale).raw(",");
-  j.num(c.b, kColourScale).raw(",1]}");
-}
-
-int lottie_cap(LineCap c) {
-  switch (c) {
-    case LineCap::Butt: return 1;
-    case LineCap::Round: return 2;
-    case LineCap::Square: return 3;
-  }
-  return 1;
-}
-
-// Lottie has miter (with a limit), round and bevel; SVG 2's miter-clip is written as miter.
-int lottie_join(LineJoin c) {
-  switch (c) {
-    case LineJoin::Miter:
-    case LineJoin::MiterClip: return 1;
-    case LineJoin::Round: return 2;
-    case LineJoin::Bevel: return 3;
-  }
-  return 1;
-}
-
-}  // namespace
+using namespace lottie;
 
 LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
                                 const std::vector<double>& points, const AnimationTiming& timing,
@@ -166,8 +61,21 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
         (timing.loop == LoopMode::Once ? " (play with the player's loop off)" : ""));
   j.raw("},\"layers\":[");
 
-  bool any_gradient = false;
-  for (const std::string& w : scene.warnings) any_gradient = any_gradient || w.find(kGradientWarning) != std::string::npos;
+  // Gradients as the exported SVG draws them at each keyframe (they follow their shapes there).
+  std::vector<int> sample_of_value;
+  std::vector<double> value_frames, sample_times(static_cast<size_t>(timing.keyframes), 0.0);
+  for (size_t i = 0; i < pass.seq.size(); ++i) {
+    sample_of_value.push_back(pass.seq[i]);
+    value_frames.push_back(pass.times[i] * frames);
+    if (i < static_cast<size_t>(timing.keyframes) && pass.seq[i] == static_cast<int>(i))
+      sample_times[i] = pass.times[i] * pass.duration_s;
+  }
+  const std::vector<Scene> samples = !scene.gradients.empty() && pass.seq.size() > 1
+                                         ? sample_exported_svg(options.exported_svg, scene, sample_times)
+                                         : std::vector<Scene>{};
+  std::vector<std::string> approximate;
+  const size_t layers_begin = j.text().size();
+  std::vector<std::pair<size_t, size_t>> layer_span(P), null_span(scene.groups.size());
   std::vector<double> rest;  // a static path's own points, in the layout of the fitted ones
   bool first_layer = true;
   for (auto it = order.rbegin(); it != order.rend(); ++it) {  // Lottie lists the top layer first
@@ -192,12 +100,15 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
 
     if (!first_layer) j.raw(",");
     first_layer = false;
+    layer_span[p].first = j.text().size();
     j.raw("{\"ddd\":0,\"ind\":").num(static_cast<double>(P - (it - order.rbegin())), 1);
     j.raw(",\"ty\":4,\"nm\":").str(path.id).raw(",\"sr\":1,");
     if (path.group >= 0 && static_cast<size_t>(path.group) < scene.groups.size() && group_ind[static_cast<size_t>(path.group)])
       j.raw("\"parent\":").num(group_ind[static_cast<size_t>(path.group)], 1).raw(",");
-    j.raw("\"ks\":{\"o\":").fixed(path.opacity * 100.0, kOpacityScale).raw(",").raw(kLayerTransformAfterOpacity);
+    // Inside a compositing layer the layer carries the group opacity (lottie_compositing.h).
+    j.raw("\"ks\":{\"o\":").fixed((path.layer >= 0 ? path.local_opacity : path.opacity) * 100.0, kOpacityScale).raw(",").raw(kLayerTransformAfterOpacity);
     j.raw(",\"ao\":0,\"shapes\":[{\"ty\":\"gr\",\"nm\":").str(path.id).raw(",\"it\":[");
+    const size_t shapes_begin = j.text().size();
     size_t cp = 0;  // index of the subpath's first point within the path
     bool first_item = true;
     for (const Subpath& sp : path.subpaths) {
@@ -234,36 +145,50 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
       }
       cp += n_points;
     }
-    // SVG paints the stroke over the fill; in Lottie an item listed earlier is drawn on top.
-    if (path.has_stroke) {
-      const Stroke& s = path.stroke;
-      j.raw(first_item ? "" : ",").raw("{\"ty\":\"st\",\"c\":");
-      write_colour(j, s.color);
-      j.raw(",\"o\":").fixed(s.color.a * 100.0, kOpacityScale).raw(",\"w\":").fixed(s.width, std::pow(10.0, options.decimals));
-      j.raw(",\"lc\":").num(lottie_cap(s.cap), 1).raw(",\"lj\":").num(lottie_join(s.join), 1);
-      j.raw(",\"ml\":").num(s.miter_limit, 1e4).raw(",\"bm\":0}");
-      first_item = false;
-    }
-    if (path.has_fill) {
-      j.raw(first_item ? "" : ",").raw("{\"ty\":\"fl\",\"c\":");
-      write_colour(j, path.fill);
-      j.raw(",\"o\":").fixed(path.fill.a * 100.0, kOpacityScale);
-      j.raw(",\"r\":").raw(path.fill_rule == FillRule::EvenOdd ? "2" : "1").raw(",\"bm\":0}");
-      first_item = false;
-    }
+    // Stroke and fill, their gradients following the shape (lottie_paint.h).
+    PaintInputs paint;
+    for (size_t i = 0; i < (animated ? pass.seq.size() : 1); ++i) paint.points.push_back(value_points(i));
+    const std::vector<Scene>& paint_samples = animated ? samples : std::vector<Scene>{};
+    paint.fill = gradient_track(scene, paint_samples, p, false, sample_of_value, value_frames);
+    paint.stroke = gradient_track(scene, paint_samples, p, true, sample_of_value, value_frames);
+    write_paint_items(j, shapes_begin, path, paint, approximate);
+    first_item = j.text().size() == shapes_begin;
     j.raw(first_item ? "" : ",").raw(kGroupTransform).raw("]}]");
     j.raw(",\"ip\":0,\"op\":").num(frames, kFrameScale).raw(",\"st\":0,\"bm\":0}");
+    layer_span[p].second = j.text().size();
   }
   for (size_t g = 0; g < scene.groups.size(); ++g) {
     if (!group_ind[g]) continue;
-    j.raw(first_layer ? "" : ",").raw("{\"ddd\":0,\"ind\":").num(group_ind[g], 1);
+    j.raw(first_layer ? "" : ",");
+    null_span[g].first = j.text().size();
+    j.raw("{\"ddd\":0,\"ind\":").num(group_ind[g], 1);
     j.raw(",\"ty\":3,\"nm\":").str(scene.groups[g].id).raw(",\"sr\":1,\"ks\":{\"o\":{\"a\":0,\"k\":100},").raw(kLayerTransformAfterOpacity);
     j.raw(",\"ao\":0,\"ip\":0,\"op\":").num(frames, kFrameScale).raw(",\"st\":0,\"bm\":0}");
+    null_span[g].second = j.text().size();
     first_layer = false;
   }
-  j.raw("]}\n");
+  // Group opacity, clip-paths and masks as precompositions and mattes (lottie_compositing.h).
+  CompositionInputs comp;
+  comp.scene = &scene;
+  comp.order = order;
+  for (size_t p = 0; p < P; ++p) {
+    comp.path_layers.push_back(j.text().substr(layer_span[p].first, layer_span[p].second - layer_span[p].first));
+    const int g = scene.paths[p].group;
+    comp.path_group.push_back(g >= 0 && static_cast<size_t>(g) < scene.groups.size() && group_ind[static_cast<size_t>(g)] ? g : -1);
+  }
+  for (size_t g = 0; g < scene.groups.size(); ++g)
+    comp.group_nulls.push_back(j.text().substr(null_span[g].first, null_span[g].second - null_span[g].first));
+  comp.next_ind = next_ind;
+  comp.frames = frames;
+  comp.decimals = options.decimals;
+  const CompositionText layers = compose_layers(comp, approximate);
+  j.text().resize(layers_begin);
+  j.raw(layers.layers).raw("]}\n");
+  std::string assets;
+  for (const std::string& a : layers.assets) assets += (assets.empty() ? "" : ",") + a;
   doc.json = std::move(j.text());
-  if (any_gradient) doc.warnings.push_back("paths painted with gradients are drawn in their mean stop colour");
+  doc.json.insert(doc.json.find("\"assets\":[]") + 10, assets);
+  if (const std::string w = cannot_express_line(scene, approximate); !w.empty()) doc.warnings.push_back(w);
   return doc;
 }
 
@@ -273,6 +198,7 @@ std::vector<std::string> write_lottie(const std::filesystem::path& out, const Sc
                                       const ExportMap* map) {
   LottieDocument doc = lottie_animation(scene, plan, points, timing, options, map);
   write_file_atomic(out, doc.json);
+  if (!options.dotlottie.empty()) write_dotlottie(options.dotlottie, doc.json, timing.loop != LoopMode::Once);
   for (std::string& w : doc.warnings) w = out.string() + ": " + w;
   return doc.warnings;
 }

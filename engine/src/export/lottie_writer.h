@@ -7,9 +7,11 @@
 //   - one shape layer per path (named by its id), in the document's paint order (Lottie lists
 //     the topmost layer first), holding one group with the path's subpaths (`sh`, keyframed
 //     when the path was fitted, static otherwise), then its stroke (`st`: colour, opacity,
-//     width, cap, join, miter limit), then its fill (`fl`: colour, opacity, rule 1 nonzero /
-//     2 evenodd): a stroke listed before the fill is drawn over it, as SVG paints it;
-//   - the element's opacity (times its ancestors') as the layer's opacity;
+//     width, cap, join, miter limit, dashes), then its fill (`fl`: colour, opacity, rule 1
+//     nonzero / 2 evenodd): a stroke listed before the fill is drawn over it, as SVG paints it;
+//     gradient paints as `gs`/`gf` following their shapes (lottie_paint.h);
+//   - the element's opacity as the layer's; group opacity, clip-paths and masks as
+//     precompositions and track mattes (lottie_compositing.h);
 //   - each of the document's top-level groups as a null layer with the identity transform,
 //     parent of its paths' layers: it changes nothing drawn (the motion is baked into the path
 //     keyframes, as a homography is no Lottie transform), and gives an editor one handle to move
@@ -18,8 +20,8 @@
 //     canvas; keyframes at frame time x fps, linear in between (SMIL's calcMode="linear"
 //     interpolates the same numbers), a mirror written forwards then backwards.
 // Lottie has no loop flag: players loop by default (lottie-web's `loop: true`); "once" is
-// noted in `meta.d` and must be asked of the player. A paint the scene holds only
-// approximately (a gradient: its mean stop colour) is written so, with one warning.
+// noted in `meta.d` and must be asked of the player. What Lottie cannot draw is named in one
+// warning (lottie_unsupported.h).
 #pragma once
 
 #include <filesystem>
@@ -36,6 +38,12 @@ struct LottieOptions {
   double fps = 30;                  // the timeline's frame rate (the target video's)
   int decimals = kDefaultDecimals;  // decimal places of coordinates and widths (canvas pixels)
   std::string name;                 // the animation's `nm` (the document's file name)
+  // The SMIL export of the same animation (animation.svg), when written: gradients are placed
+  // as it draws them at each keyframe, following their shapes (lottie_paint.h). Without it
+  // they stay where the document puts them.
+  std::filesystem::path exported_svg;
+  // When set, write_lottie also writes the .lottie archive here (dotlottie.h).
+  std::filesystem::path dotlottie;
 };
 
 struct LottieDocument {

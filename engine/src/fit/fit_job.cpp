@@ -246,7 +246,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   if (::access(out.c_str(), W_OK | X_OK) != 0)
     throw Error(out.string() + ": cannot write (" + (errno == EROFS ? "read-only file system" : "permission denied") + ")");
   for (const char* f : {"animation.svg", "animation.failed.svg", "animation.json", "animation.failed.json",
-                        "preview.mp4", "fit.json", "checkpoint.bin"})
+                        "animation.lottie", "animation.failed.lottie", "preview.mp4", "fit.json", "checkpoint.bin"})
     output_target(out / f);
   // Coarse-to-fine: which width the refinement after the coarse fit runs at, if any.
   int refine_w = job.refine_width;
@@ -576,6 +576,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   if (rejected && job.gate) fs::remove(out / "animation.svg", ec);  // never leave a stale success
   else fs::remove(out / "animation.failed.svg", ec);
   fs::remove(out / (rejected && job.gate ? "animation.json" : "animation.failed.json"), ec);
+  fs::remove(out / (rejected && job.gate ? "animation.lottie" : "animation.failed.lottie"), ec);
   // What is written: the keyframes (a closed loop's last one is its first) and smooth
   // in-betweens at the target's frames between them (inbetween.h).
   const size_t per_key = static_cast<size_t>(final_fit.raster_plan().n_cp) * 2;
@@ -603,7 +604,12 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     log::warning("%s", line.c_str());
   }
   // The same values as Lottie, beside it (animation.json, or animation.failed.json).
-  const LottieOptions lottie{final_target.fps, job.decimals, into.filename().string()};
+  LottieOptions lottie;
+  lottie.fps = final_target.fps;
+  lottie.decimals = job.decimals;
+  lottie.name = into.filename().string();
+  lottie.exported_svg = anim;  // gradients follow their shapes as animation.svg draws them
+  lottie.dotlottie = fs::path(anim).replace_extension(".lottie");
   for (const auto& w : write_lottie(fs::path(anim).replace_extension(".json"), export_scene ? *export_scene : scene,
                                     final_fit.raster_plan(), written.points, wt, lottie, export_scene ? &map : nullptr))
     log::warning("%s", w.c_str());

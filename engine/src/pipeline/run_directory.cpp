@@ -43,7 +43,8 @@ bool gone(long pid) { return pid == ::getpid() || (::kill(static_cast<pid_t>(pid
 
 const std::vector<std::string>& fit_output_names() {
   static const std::vector<std::string> names = {"animation.svg", "animation.failed.svg", "animation.json",
-                                                 "animation.failed.json", "preview.mp4", "fit.json",
+                                                 "animation.failed.json", "animation.lottie",
+                                                 "animation.failed.lottie", "preview.mp4", "fit.json",
                                                  "checkpoint.bin"};
   return names;
 }

@@ -320,7 +320,6 @@ bool Reader::resolve_paint(const Paint& p, const Style& s, pugi::xml_node el, Rg
       if (it != ids_.end()) {
         const std::string_view tag = local_name(it->second.name());
         if (tag == "linearGradient" || tag == "radialGradient") {
-          warn(el, "gradient paint drawn with its mean stop colour in Lottie exports");
           if (const auto m = gradient_mean(it->second, 0)) {
             *out = *m;
             *gradient = it->second;
@@ -590,6 +589,8 @@ void Reader::add_shape(pugi::xml_node n, std::vector<Subpath> subpaths, const St
     p.stroke.join = s.join;
     p.stroke.cap = s.cap;
     p.stroke.miter_limit = s.miter_limit;
+    for (const double d : s.dash_array) p.stroke.dashes.push_back(d * ctm.mean_scale());
+    p.stroke.dash_offset = s.dash_offset * ctm.mean_scale();
     if (s.dashed) warn(n, "stroke-dasharray not supported (drawn solid)");
   }
   if (!p.has_fill && !p.has_stroke) return;

@@ -169,6 +169,30 @@ bool apply_declaration(std::string_view name, std::string_view value, const Styl
     if (parse_plain_number(value, &m, &bad) && m >= 1) s.miter_limit = m;
   } else if (name == "stroke-dasharray") {
     s.dashed = value != "none" && !value.empty();
+    // Lengths separated by commas and/or spaces; an odd list is repeated (SVG 1.1, 11.4); a
+    // negative or unreadable length, or a zero sum, draws solid.
+    s.dash_array.clear();
+    double sum = 0;
+    if (s.dashed) {
+      std::string_view rest = trim(value);
+      while (!rest.empty()) {
+        const size_t cut = rest.find_first_of(", \t\n\r");
+        double d;
+        if (!parse_length_number(rest.substr(0, cut), &d, &bad) || d < 0) {
+          s.dash_array.clear();
+          break;
+        }
+        s.dash_array.push_back(d);
+        sum += d;
+        rest = cut == std::string_view::npos ? std::string_view{} : trim(rest.substr(cut + 1));
+        while (!rest.empty() && rest.front() == ',') rest = trim(rest.substr(1));
+      }
+    }
+    if (!(sum > 0)) s.dash_array.clear();
+    if (s.dash_array.size() % 2) s.dash_array.insert(s.dash_array.end(), s.dash_array.begin(), s.dash_array.end());
+  } else if (name == "stroke-dashoffset") {
+    double d;
+    if (parse_length_number(value, &d, &bad)) s.dash_offset = d;
   } else if (name == "visibility") {
     if (value == "hidden" || value == "collapse") s.visible = false;
     else if (value == "visible") s.visible = true;

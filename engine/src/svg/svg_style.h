@@ -4,6 +4,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "svgmotion/scene.h"
 
@@ -32,6 +33,10 @@ struct Style {
   Rgba color{0, 0, 0, 1};   // `color`, for currentColor
   bool visible = true;
   bool dashed = false;      // stroke-dasharray given (drawn solid, with a warning)
+  // The dash pattern (user units; even length, empty when solid or unreadable) and its offset:
+  // the render draws dashed strokes solid, the Lottie export writes them.
+  std::vector<double> dash_array;
+  double dash_offset = 0;
   FillRule clip_rule = FillRule::NonZero;  // for shapes inside a clipPath
 };
 

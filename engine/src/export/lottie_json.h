@@ -1,0 +1,75 @@
+// The pieces of Lottie JSON that every part of the Lottie export writes: a text buffer that
+// writes numbers with exactly the decimals asked for (the file's size is mostly these numbers),
+// a bezier shape, a static colour, and SVG's caps and joins as Lottie's codes. Shared by the
+// writer (lottie_writer.cpp), the paint servers (lottie_paint.h) and the compositing layers
+// (lottie_compositing.h).
+#pragma once
+
+#include <cmath>
+#include <string>
+#include <string_view>
+
+#include "svgmotion/scene.h"
+
+namespace svgm::lottie {
+
+// Colours are written to 1/10000 (far below one 8-bit level), opacities (0..100) to 1/100,
+// frame times to 1/1000 of a frame.
+inline constexpr double kColourScale = 1e4, kOpacityScale = 1e2, kFrameScale = 1e3;
+// Two on-curve points this close (canvas pixels) are the same point: a closed subpath that
+// returns exactly to its start is written without the zero-length closing segment.
+inline constexpr double kSamePoint = 1e-9;
+
+class JsonText {
+ public:
+  explicit JsonText(int decimals) : coord_scale_(std::pow(10.0, decimals)) {}
+  JsonText& raw(std::string_view t) {
+    s_ += t;
+    return *this;
+  }
+  JsonText& num(double v, double scale);
+  JsonText& coord(double v) { return num(v, coord_scale_); }
+  JsonText& str(const std::string& t);
+  // {"a":0,"k":v}
+  JsonText& fixed(double v, double scale) {
+    raw("{\"a\":0,\"k\":");
+    num(v, scale);
+    return raw("}");
+  }
+  // [x,y] in coordinates' precision
+  JsonText& pair(double x, double y) { return raw("[").coord(x).raw(",").coord(y).raw("]"); }
+  double coord_scale() const { return coord_scale_; }
+  std::string& text() { return s_; }
+
+ private:
+  std::string s_;
+  double coord_scale_;
+};
+
+// The identity transform of a layer after its opacity (3D vectors, as bodymovin writes them),
+// and a group's.
+inline constexpr std::string_view kLayerTransformAfterOpacity =
+    "\"r\":{\"a\":0,\"k\":0},\"p\":{\"a\":0,\"k\":[0,0,0]},\"a\":{\"a\":0,\"k\":[0,0,0]},"
+    "\"s\":{\"a\":0,\"k\":[100,100,100]}}";
+inline constexpr std::string_view kGroupTransform =
+    "{\"ty\":\"tr\",\"p\":{\"a\":0,\"k\":[0,0]},\"a\":{\"a\":0,\"k\":[0,0]},"
+    "\"s\":{\"a\":0,\"k\":[100,100]},\"r\":{\"a\":0,\"k\":0},\"o\":{\"a\":0,\"k\":100},"
+    "\"sk\":{\"a\":0,\"k\":0},\"sa\":{\"a\":0,\"k\":0}}";
+
+// One subpath's control points {p0, c1, c2, p1, ...} (x, y pairs) as a Lottie bezier: vertices
+// with in and out tangents relative to them. A closed subpath ends on its start (the reader
+// adds the closing line); `merge_close` drops that last vertex, folding its in-tangent into
+// the first.
+void write_bezier(JsonText& j, const double* p, size_t n_points, bool closed, bool merge_close);
+
+// Whether a closed subpath's last point is its first (write_bezier's merge_close).
+bool returns_to_start(const double* p, size_t n_points, bool closed);
+
+// {"a":0,"k":[r,g,b,1]}
+void write_colour(JsonText& j, const Rgba& c);
+
+int lottie_cap(LineCap c);
+// Lottie has miter (with a limit), round and bevel; SVG 2's miter-clip is written as miter.
+int lottie_join(LineJoin c);
+
+}  // namespace svgm::lottie
