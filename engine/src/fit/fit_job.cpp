@@ -582,6 +582,10 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
       for (size_t k = 0; k < from.size(); ++k)
         fresh[k] = !std::binary_search(target.source_index.begin(), target.source_index.end(), keyed_target->source_index[k]);
       keyed->adopt_keyframes(fitter, from, fresh);
+      // The first load's frames are not read again (the first fitter is only counted from
+      // here on): their memory goes.
+      for (auto* v : {&target.raw, &target.rgba, &target.sdf}) std::vector<float>().swap(*v);
+      std::vector<uint8_t>().swap(target.mask);
       key_report["started_from"] = from;
       if (!job.quiet) log::info("fit: %s", choice.reason.c_str());
       coarse_target = &*keyed_target;
