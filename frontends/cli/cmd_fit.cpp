@@ -47,7 +47,8 @@ int cmd_fit(const std::vector<std::string>& argv) {
   const Args a = parse_args("fit", argv,
                             {"--target", "-o", "--output", "--iterations", "--keyframes", "--size",
                              "--palette", "--device", "--mask-threshold", "--loop", "--deform", "--refine-size",
-                             "--precision", "--inbetweens", "--max-segment", "--chroma-weight", "--denoise"},
+                             "--precision", "--inbetweens", "--max-segment", "--chroma-weight", "--denoise",
+                             "--max-keyframes", "--start"},
                             {"--resume", "--no-track", "--no-gate", "--no-colour-correction", "--no-blur-matching", "--stabilise",
                              "--group-transforms", "--all-iterations", "--force"});
   if (a.positional.size() != 1)
@@ -64,6 +65,15 @@ int cmd_fit(const std::vector<std::string>& argv) {
   job.options.track = !a.has("--no-track");
   if (a.has("--all-iterations")) job.options.plateau_window = 0;
   job.keyframes = a.get_int("--keyframes", 15, 2, 1000);
+  // Keyframes added where the spline misses frames, up to this many (auto: fit_job.h).
+  if (const auto m = a.get("--max-keyframes"); m && *m != "auto")
+    job.max_keyframes = a.get_int("--max-keyframes", -1, 0, 10000);
+  // Keyframe 0: the rest pose, fitted freely, or decided from the first frame (rest_start.h).
+  if (const auto st = a.get("--start")) {
+    if (*st == "rest") job.start_at_rest = true;
+    else if (*st == "free") job.start_at_rest = false;
+    else if (*st != "auto") throw Error("fit: --start must be auto, rest or free, not '" + *st + "'");
+  }
   job.width = a.get_int("--size", 256, 32, 4096);
   if (const auto r = a.get("--refine-size"))
     job.refine_width = *r == "auto" ? -1 : a.get_int("--refine-size", 0, 0, 4096);

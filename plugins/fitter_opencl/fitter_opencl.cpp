@@ -50,6 +50,13 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   job.keyframes = svgm::plugin::fitter_keyframes(req, &more);
   if (!more.empty() && host && host->log) host->log(host, 1, ("fitter: " + more).c_str());
   job.width = c.value("size", 256);
+  // max_keyframes: auto (the default) or the most keyframes the fit may add up to (fit_job.h).
+  if (c.contains("max_keyframes") && c.at("max_keyframes").is_number_integer()) job.max_keyframes = c.at("max_keyframes").get<int>();
+  // start: auto (decided from the first frame), rest or free (keyframe 0; rest_start.h).
+  const std::string start = c.value("start", "auto");
+  if (start == "rest") job.start_at_rest = true;
+  else if (start == "free") job.start_at_rest = false;
+  else if (start != "auto") throw std::runtime_error("stages.fitter.start must be auto, rest or free, not '" + start + "'");
   job.mask_threshold = c.value("mask_threshold", 0.97);
   // refine_size: auto (the default), 0 (off) or a width in pixels.
   if (c.contains("refine_size")) job.refine_width = c.at("refine_size").is_number_integer() ? c.at("refine_size").get<int>() : -1;

@@ -19,6 +19,10 @@ struct TargetFrames;
 
 struct TargetOptions {
   int keyframes = 15;            // K: uniformly sampled frames, first and last included
+  // The source frames to sample instead (increasing, each in 0..N-1; `keyframes` is then their
+  // count): the keyframes chosen from the target (fit/keyframe_choice.h), or frames between
+  // them to judge the fit's in-betweens against.
+  std::vector<int> frames;
   // A pixel is foreground when a channel differs from the frame's background colour by more
   // than 1 - this; on white, when its darkest channel < this. In (0, 1]. The background is
   // white, or the light colour (channels >= 0.85) that 60% of the border agrees on. Close to white on purpose:

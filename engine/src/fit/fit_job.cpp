@@ -24,7 +24,9 @@
 #include "fit/document_order.h"
 #include "fit/group_transform.h"
 #include "fit/inbetween.h"
+#include "fit/keyframe_choice.h"
 #include "fit/motion_groups.h"
+#include "fit/rest_start.h"
 #include "fit/result_gate.h"
 #include "fit/palette.h"
 #include "fit/preview_video.h"
@@ -49,6 +51,9 @@ namespace {
 // fine score 0.98-1.17 times the coarse loss there (the coarse loss does not reward detail
 // finer than its pixels); a small shape the refinement lost scores 21-24 times (snail).
 constexpr float kRefineGuard = 1.5f;
+// The joint fit after keyframes were added from the target: at most this share of the
+// iteration budget (it usually ends earlier, at the plateau test).
+constexpr double kKeyedShare = 0.25;
 constexpr int kCheckpointEvery = 250;  // iterations between checkpoints
 // The loss is sampled for fit.json's loss_history every this many iterations: 200 samples for
 // the default 2000 iterations, a few kB of JSON, enough for the report's chart.
@@ -214,14 +219,27 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   }
   // A detached part as large as half the drawing's smallest is never taken for a speck
   // (TargetOptions::keep_part_share): the share is the same at every width the fit loads.
-  {
-    const RgbaImage rest = render_image(rt, fit_scene, size.width, false);
-    to.keep_part_share = 0.5 * smallest_part_share(rest.rgba, rest.width, rest.height, to.white_threshold);
-  }
+  RgbaImage rest_render = render_image(rt, fit_scene, size.width, false);
+  to.keep_part_share = 0.5 * smallest_part_share(rest_render.rgba, rest_render.width, rest_render.height, to.white_threshold);
   TargetFrames target = load_target(*target_path, size.width, size.height, to);
-  auto release_denoised = [&target] {
-    std::vector<float>().swap(target.denoised);
-    target.denoised_frame.clear();
+  // Keyframe 0 is the drawing at rest when the video starts there (rest_start.h), or when told.
+  const RestStart rest_start = judge_rest_start(rest_render, target, to.white_threshold, to.dilate_px);
+  rest_render = RgbaImage{};
+  const bool pin_rest = job.start_at_rest.value_or(rest_start.at_rest);
+  if (!job.quiet && !job.progress && !job.start_at_rest && !pin_rest)
+    log::info("fit: the video's first frame is not the drawing at rest (foreground IoU %.3f < %.2f): keyframe 0 is fitted "
+              "too, not pinned to the rest pose", rest_start.iou, kRestStartIou);
+  else
+    log::debug("fit: keyframe 0 %s (first frame against the rest pose: foreground IoU %.3f%s)",
+               pin_rest ? "is the rest pose" : "is fitted", rest_start.iou, job.start_at_rest ? ", as told" : "");
+  // The keyframes chosen from the target, when frames were added (keyframe_choice.h).
+  std::optional<TargetFrames> keyed_target;
+  auto release_denoised = [&target, &keyed_target] {
+    for (TargetFrames* t : {&target, keyed_target ? &*keyed_target : nullptr}) {
+      if (!t) continue;
+      std::vector<float>().swap(t->denoised);
+      t->denoised_frame.clear();
+    }
   };
   for (const std::string& w : target_warnings(target, *target_path, size))
     log::warning("%s", w.c_str());
@@ -258,6 +276,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   if (refine_iters == 0) refine_w = 0;
   if (refine_w == 0) release_denoised();
   FitOptions coarse_options = fo;
+  coarse_options.pin_rest_keyframe = pin_rest;
   coarse_options.held_groups = held_groups;
   coarse_options.known_body = known.body;
   coarse_options.known_maps = known.maps;
@@ -290,16 +309,20 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   std::optional<TargetFrames> fine_target;
   BlurMatch fine_blur;
   FitOptions fine_options;
+  // The coarse stage's target: the first load, or the keyframes chosen from the target.
+  const TargetFrames* coarse_target = &target;
   auto prepare_fine = [&] {
     if (fine_target) return;
     const RenderSize fine_size = render_size(scene, refine_w);
     TargetOptions fine_to = to;
-    if (to.stabilise) fine_to.shake_from = &target;  // the camera path of the first load
+    if (coarse_target != &target) fine_to.frames = coarse_target->source_index;
+    if (to.stabilise) fine_to.shake_from = coarse_target;  // the camera path of the first load
     fine_to.keep_denoised = false;
-    fine_to.denoised_from = &target;
+    fine_to.denoised_from = coarse_target;
     TargetFrames t = load_target(*target_path, fine_size.width, fine_size.height, fine_to);
     release_denoised();
     fine_options = fo.refined_at(static_cast<double>(fine_size.width) / size.width);
+    fine_options.pin_rest_keyframe = pin_rest;
     fine_options.held_groups = held_groups;
     fine_options.known_body = known.body;
     fine_options.known_maps = known.maps;
@@ -382,7 +405,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                           (job.palette ? stamp(*job.palette) : "-") + "|" + (job.tracks ? stamp(*job.tracks) : "-") +
                           "|refine " + std::to_string(refine_w) + "/" + std::to_string(refine_iters) +
                           "|split " + fmt("%.6g", job.max_segment) + "|denoise " + std::to_string(job.denoise_radius) +
-                          (job.stabilise ? "|stabilise" : "") + "|chroma " + fmt("%.6g", chroma_weight) + "|groups " +
+                          (job.stabilise ? "|stabilise" : "") + (pin_rest ? "" : "|free start") + "|chroma " + fmt("%.6g", chroma_weight) + "|groups " +
                           group_membership(fitter.fit_plan(), fitter.raster_plan());
   if (job.resume) {
     if (!fs::exists(ckpt)) throw Error(ckpt.string() + ": no checkpoint to resume from");
@@ -503,6 +526,98 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     total_iters = coarse_iters + refine_iters;
     total_work = work(total_iters);
   }
+  // Keyframes from the target (keyframe_choice.h): every frame between keyframes drawn at the
+  // spline's shape and judged by the loss; the frames it misses become keyframes, within the
+  // budget, and the fit goes on with them (not checkpointed: a resumed fit makes the same choice
+  // again from the coarse checkpoint above).
+  const int key_budget = job.max_keyframes < 0 ? default_keyframe_budget(keyframes, target.source_frames) : job.max_keyframes;
+  nlohmann::json key_report = {{"asked", target.keyframes}, {"budget", key_budget}};
+  std::unique_ptr<Fitter> keyed;
+  if (!stopped && key_budget > target.keyframes && target.source_frames > target.keyframes) {
+    const auto t_choice = std::chrono::steady_clock::now();
+    std::vector<int> between;
+    for (int i = 0; i < target.source_frames; ++i)
+      if (!std::binary_search(target.source_index.begin(), target.source_index.end(), i)) between.push_back(i);
+    const int N = std::max(2, target.source_frames);
+    std::vector<double> kt;
+    for (int k : target.source_index) kt.push_back(static_cast<double>(k) / (N - 1));
+    kt.front() = 0;
+    kt.back() = 1;
+    auto load_frames = [&](const std::vector<int>& frames) {
+      TargetOptions o = to;
+      o.frames = frames;
+      o.keep_denoised = false;
+      o.denoised_from = nullptr;
+      if (to.stabilise) o.shake_from = &target;
+      return load_target(*target_path, size.width, size.height, o);
+    };
+    SplineLoss sl;
+    sl.render_sigma = coarse_options.render_blur_sigma;
+    sl.chroma_sigma = coarse_options.chroma_blur_sigma;
+    sl.chroma_weight = chroma_weight;
+    sl.w_image = coarse_options.w_image;
+    const std::vector<double> frame_db =
+        measure_spline_frames(rt, fitter.raster_plan(), size, fitter.keyframe_points_canvas(), kt,
+                              job.loop == LoopMode::Loop && returns_to_start(target), target.source_frames, between,
+                              load_frames, sl);
+    const std::vector<float> kl = fitter.evaluate_keyframe_losses();
+    std::vector<double> key_db;
+    for (float l : kl) key_db.push_back(loss_db(l, target.keyframes, coarse_options.w_image));
+    const KeyframeChoice choice = choose_keyframes(target.source_index, key_db, between, frame_db, key_budget);
+    nlohmann::json fdb = nlohmann::json::object();
+    for (size_t j = 0; j < between.size(); ++j) fdb[std::to_string(between[j])] = std::round(frame_db[j] * 100) / 100;
+    key_report["keyframe_db"] = key_db;
+    key_report["spline_frame_db"] = std::move(fdb);
+    key_report["missed"] = choice.missed;
+    key_report["added"] = choice.added;
+    key_report["worst_frame"] = choice.worst_frame;
+    key_report["worst_db"] = choice.worst_db;
+    if (!choice.added.empty()) {
+      TargetOptions o = to;
+      o.frames = choice.frames;
+      o.keep_denoised = to.keep_denoised && refine_w > 0;
+      o.denoised_from = nullptr;
+      if (to.stabilise) o.shake_from = &target;
+      keyed_target = load_target(*target_path, size.width, size.height, o);
+      FitOptions ko = coarse_options;
+      // The new keyframes start close (warm-started from the most alike fitted keyframe) and
+      // every keyframe is refined jointly: a quarter of the budget, ended by the plateau test.
+      ko.iterations = std::max(1, static_cast<int>(std::lround(kKeyedShare * fo.iterations)));
+      keyed = std::make_unique<Fitter>(rt, fit_scene, *keyed_target, ko);
+      std::vector<int> from = closest_sources(target.source_index, target, keyed_target->source_index, *keyed_target);
+      std::vector<char> fresh(from.size(), 0);
+      for (size_t k = 0; k < from.size(); ++k)
+        fresh[k] = !std::binary_search(target.source_index.begin(), target.source_index.end(), keyed_target->source_index[k]);
+      keyed->adopt_keyframes(fitter, from, fresh);
+      // The first load's frames are not read again (the first fitter is only counted from
+      // here on): their memory goes.
+      for (auto* v : {&target.raw, &target.rgba, &target.sdf}) std::vector<float>().swap(*v);
+      std::vector<uint8_t>().swap(target.mask);
+      key_report["started_from"] = from;
+      if (!job.quiet) log::info("fit: %s", choice.reason.c_str());
+      coarse_target = &*keyed_target;
+      const int before = coarse_iters;
+      coarse_iters += ko.iterations;
+      total_iters = coarse_iters + refine_iters;
+      total_work = work(total_iters);
+      run_stage(*keyed, before, false);
+      coarse_iters = before + keyed->iteration();
+      total_iters = coarse_iters + refine_iters;
+      total_work = work(total_iters);
+      key_report["iterations"] = keyed->iteration();
+      key_report["reason"] = choice.reason;
+    } else {
+      char why[200];
+      std::snprintf(why, sizeof why, "keyframes %d kept: the spline through them predicts every frame between them (worst: frame %d, %.1f dB)",
+                    target.keyframes, choice.worst_frame, choice.worst_db);
+      key_report["reason"] = choice.missed.empty() ? std::string(why) : choice.reason;
+      log::debug("fit: %s", key_report["reason"].get<std::string>().c_str());
+    }
+    key_report["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_choice).count();
+  }
+  key_report["chosen"] = coarse_target->keyframes;
+  Fitter& cfit = keyed ? *keyed : fitter;
+  const TargetFrames& ctarget = *coarse_target;
   // The refinement: every keyframe at the finer width, from the coarse result (not
   // checkpointed: a resumed fit redoes it from the checkpoint above, which records that the
   // coarse stage had ended, so it is the same refinement).
@@ -511,33 +626,35 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   std::vector<float> refine_loss_ratio;  // per keyframe: refined / coarse loss at the coarse width
   if (refine_w > 0 && !stopped) {
     const RenderSize fine_size = render_size(scene, refine_w);
+    // Loaded before the keyframes were chosen (the chroma weight's calibration): again, at them.
+    if (fine_target && fine_target->keyframes != ctarget.keyframes) fine_target.reset();
     prepare_fine();
     fine_options.chroma_weight = chroma_weight;
     fine = std::make_unique<Fitter>(rt, fit_scene, *fine_target, fine_options);
     const double scale = static_cast<double>(fine_size.width) / size.width;
-    fine->adopt_coarse(fitter, scale);
+    fine->adopt_coarse(cfit, scale);
     log::debug("fit: refining every keyframe at %dx%d for %d iterations", fine_size.width, fine_size.height,
                refine_iters);
     // The guard's baseline: how well each coarse keyframe matches the video at the coarse width.
-    const std::vector<float> coarse_losses = fitter.evaluate_keyframe_losses();
+    const std::vector<float> coarse_losses = cfit.evaluate_keyframe_losses();
     run_stage(*fine, coarse_iters, false);
     if (!stopped) {
       // The refinement's guard. A keyframe the refinement made worse at the coarse width (the
       // snail's pupil, off by more than the fine loss's reach, shrank to a hairline at 512 px:
       // 47.4 -> 36.5 dB at 256 px in keyframes 2-4) keeps its coarse fit. Both are judged by
       // the coarse fitter against the coarse target: the refined fit is brought down to it.
-      const FitState coarse_state = fitter.state();
-      fitter.adopt_coarse(*fine, 1 / scale);
-      const std::vector<float> refined_losses = fitter.evaluate_keyframe_losses();
-      fitter.restore(coarse_state);
-      std::vector<char> worse(static_cast<size_t>(fitter.keyframes()), 0);
+      const FitState coarse_state = cfit.state();
+      cfit.adopt_coarse(*fine, 1 / scale);
+      const std::vector<float> refined_losses = cfit.evaluate_keyframe_losses();
+      cfit.restore(coarse_state);
+      std::vector<char> worse(static_cast<size_t>(cfit.keyframes()), 0);
       for (size_t k = 0; k < worse.size(); ++k) {
         refine_loss_ratio.push_back(coarse_losses[k] > 0 ? refined_losses[k] / coarse_losses[k] : 1.f);
         worse[k] = refined_losses[k] > kRefineGuard * coarse_losses[k];
         if (worse[k]) refine_kept_coarse.push_back(static_cast<int>(k));
       }
       if (!refine_kept_coarse.empty()) {
-        fine->take_keyframes(fitter, scale, worse);
+        fine->take_keyframes(cfit, scale, worse);
         std::string ks;
         for (int k : refine_kept_coarse) ks += (ks.empty() ? "" : ", ") + std::to_string(k);
         log::info("fit: the refinement matched keyframe%s %s worse at %d px; kept from the coarse fit",
@@ -545,8 +662,9 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
       }
     }
   }
-  Fitter& final_fit = fine ? *fine : fitter;
-  const TargetFrames& final_target = fine ? *fine_target : target;
+  Fitter& final_fit = fine ? *fine : cfit;
+  const int iterations_done = fitter.iteration() + (keyed ? keyed->iteration() : 0) + (fine ? fine->iteration() : 0);
+  const TargetFrames& final_target = fine ? *fine_target : ctarget;
   const RenderSize final_size = fine ? render_size(scene, refine_w) : size;
   if (tty) std::fputc('\n', stderr);
   // The fit's seconds include the chroma weight's calibration before it.
@@ -558,14 +676,14 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   const auto renders = final_fit.render_keyframes();
   AnimationTiming timing;
   timing.keyframes = final_fit.keyframes();
-  const int N = std::max(2, target.source_frames);
-  timing.duration_s = (N - 1) / std::max(1e-6, target.fps);
+  const int N = std::max(2, ctarget.source_frames);
+  timing.duration_s = (N - 1) / std::max(1e-6, ctarget.fps);
   for (int k = 0; k < timing.keyframes; ++k)
-    timing.key_times.push_back(static_cast<double>(target.source_index[static_cast<size_t>(k)]) / (N - 1));
+    timing.key_times.push_back(static_cast<double>(ctarget.source_index[static_cast<size_t>(k)]) / (N - 1));
   timing.key_times.front() = 0;
   timing.key_times.back() = 1;
   timing.loop = job.loop;
-  timing.close_loop = job.loop == LoopMode::Loop && returns_to_start(target);
+  timing.close_loop = job.loop == LoopMode::Loop && returns_to_start(ctarget);
 
   // The gate judges a finished fit; an interrupted one is written as it stands (resumable).
   const GateOptions gate_options;
@@ -626,7 +744,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                            {"svg", input.string()},
                            {"target", *target_path},
                            {"animation", anim.filename().string()},
-                           {"iterations", (fine ? coarse_iters : 0) + final_fit.iteration()},
+                           {"iterations", iterations_done},
                            {"converged_at", coarse_converged ? nlohmann::json(coarse_iters) : nlohmann::json()},
                            {"keyframes", final_fit.keyframes()},
                            {"key_times", timing.key_times},
@@ -639,16 +757,21 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                            {"loss", {{"total", loss.total()}, {"image", loss.image}, {"smoothness", loss.smooth},
                                      {"g1", loss.g1}, {"containment", loss.contain}}},
                            {"keyframe_image_loss", final_fit.keyframe_losses()},
-                           {"keyframe_frames", target.source_index},
+                           {"keyframe_frames", ctarget.source_index},
                            {"resumed_from", resumed_from},
                            {"rollbacks", rollback_notes},
                            {"gate", gate_json(verdict, gate_options)},
                            {"device", rt.info().name}};
   if (!map.order.empty()) report["paint_order_applied"] = true;
   // Warm starts of newly activated keyframes (a resumed fit counts only those after resuming).
-  report["warm_starts"] = {{"similarity_tried", fitter.warm_starts_tried}, {"similarity_kept", fitter.warm_starts_kept},
-                           {"field_tried", fitter.field_warm_starts_tried}, {"field_kept", fitter.field_warm_starts_kept},
-                           {"known_motion_tried", fitter.known_starts_tried}, {"known_motion_kept", fitter.known_starts_kept}};
+  // (The keyframes added from the target count with the first fit's.)
+  const auto ws = [&](int Fitter::*n) { return fitter.*n + (keyed ? (*keyed).*n : 0); };
+  report["warm_starts"] = {{"similarity_tried", ws(&Fitter::warm_starts_tried)}, {"similarity_kept", ws(&Fitter::warm_starts_kept)},
+                           {"field_tried", ws(&Fitter::field_warm_starts_tried)}, {"field_kept", ws(&Fitter::field_warm_starts_kept)},
+                           {"known_motion_tried", ws(&Fitter::known_starts_tried)}, {"known_motion_kept", ws(&Fitter::known_starts_kept)}};
+  report["keyframes_from_target"] = std::move(key_report);
+  report["start"] = {{"pinned_to_rest", pin_rest}, {"decided", job.start_at_rest ? "option" : "target"},
+                     {"first_frame_iou", rest_start.iou}, {"min_iou", kRestStartIou}};
   if (group_motion)
     report["group_transforms"] = {{"groups", final_fit.fit_plan().n_groups},
                                   {"as_transforms", group_motion->transform_groups},
@@ -665,7 +788,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     }
     report["loss_history"] = std::move(h);
   }
-  report["target_frames"] = {{"held", target.held_frames}, {"colour_corrected_keyframes", final_target.colour_corrected},
+  report["target_frames"] = {{"held", ctarget.held_frames}, {"colour_corrected_keyframes", final_target.colour_corrected},
                              {"gradient_share", gradient_share}};
   // The loss's render σ (1: the paper's; more: the video was softer and its blur was matched).
   report["target_frames"]["render_blur_sigma"] = coarse_blur.render_sigma;
@@ -677,12 +800,12 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   report["target_frames"]["kept_part_share"] = to.keep_part_share;
   // Codec noise: each keyframe averaged with this many flow-aligned neighbours either side.
   report["target_frames"]["denoise_radius"] = job.denoise_radius;
-  report["target_frames"]["denoise_seconds"] = target.denoise_seconds + (fine_target ? fine_target->denoise_seconds : 0.0);
+  report["target_frames"]["denoise_seconds"] = ctarget.denoise_seconds + (fine_target ? fine_target->denoise_seconds : 0.0);
   if (job.stabilise) {
-    report["target_frames"]["max_shake_removed_px"] = target.max_shake_px;
-    report["target_frames"]["shake_model"] = target.shake_model;
-    report["target_frames"]["still_share"] = target.still_share;
-    report["target_frames"]["shake_loop"] = target.shake_loop;
+    report["target_frames"]["max_shake_removed_px"] = ctarget.max_shake_px;
+    report["target_frames"]["shake_model"] = ctarget.shake_model;
+    report["target_frames"]["still_share"] = ctarget.still_share;
+    report["target_frames"]["shake_loop"] = ctarget.shake_loop;
   }
   // The chroma weight fitted with; with --chroma-weight auto, what chose it: each candidate's
   // drift from rest in the still fit of the first frame (mean squared RGB difference of the
@@ -715,7 +838,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   write_file_atomic(out / "fit.json", json_text(report, 2) + "\n");
   if (stopped) {
     log::error("interrupted at iteration %d; wrote %s (continue with --resume)",
-                 (fine ? coarse_iters : 0) + final_fit.iteration(), anim.c_str());
+                 iterations_done, anim.c_str());
     return 130;
   }
   // A part that vanishes (a shape folded edge-on) is not a broken fit, but the user should

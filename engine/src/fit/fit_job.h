@@ -72,6 +72,16 @@ struct FitJob {
   std::function<void(double fraction, const std::string& note)> progress;
   FitOptions options;
   int keyframes = 15;
+  // Keyframes from the target (keyframe_choice.h): after the fit at `keyframes`, the frames the
+  // spline between keyframes does not predict become keyframes too, up to this many in all.
+  // -1: automatic (default_keyframe_budget: every frame of a short clip, at most twice
+  // `keyframes`); `keyframes` or fewer: none are added. fit --max-keyframes,
+  // stages.fitter.max_keyframes.
+  int max_keyframes = -1;
+  // Keyframe 0 pinned to the drawing's rest pose (true), fitted like any other (false), or
+  // decided from the video's first frame against the rest pose (unset, the default;
+  // rest_start.h). fit --start rest|free|auto, stages.fitter.start.
+  std::optional<bool> start_at_rest;
   int width = 256;
   // Coarse-to-fine: after the whole coarse fit, `refine_share` x iterations more refine every
   // keyframe at this width, with the target read again at that size (the regularisers scaled

@@ -196,10 +196,12 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
              part_contain_, 0.f, contain_margin_, ncp, size_.width, size_.height);
     set_args(k_cohesion_, raster_->cp_buffer(), coh_first_, coh_nbr_, coh_len_,
              raster_->cp_gradient_buffer(), part_coh_, 0.f, ncp);
-    set_args(k_adam_p_, params_, grad_params_, m_params_, v_params_, bias_buf_, G_ * kMotionParams,
-             1, opt_.lr_homography, opt_.beta1, opt_.beta2, opt_.eps,
-             static_cast<int>(K * G_ * kMotionParams));
+    // A pinned rest keyframe keeps its homographies, offsets and field (keyframe 0 of a video
+    // that starts mid-motion is fitted like any other).
     const int first_free = opt_.pin_rest_keyframe ? 1 : 0;
+    set_args(k_adam_p_, params_, grad_params_, m_params_, v_params_, bias_buf_, G_ * kMotionParams,
+             first_free, opt_.lr_homography, opt_.beta1, opt_.beta2, opt_.eps,
+             static_cast<int>(K * G_ * kMotionParams));
     set_args(k_adam_o_, offsets_, grad_offsets_, m_offsets_, v_offsets_, bias_buf_, ncp * 2, first_free,
              opt_.lr_offsets, opt_.beta1, opt_.beta2, opt_.eps, static_cast<int>(K * n_cp * 2));
     set_args(k_adam_f_, field_, grad_field_, m_field_, v_field_, bias_buf_, std::max(nn * 2, 1), first_free,
@@ -220,7 +222,14 @@ void Fitter::scale_learning_rates(float s) {
 }
 
 void Fitter::adopt_coarse(Fitter& coarse, double scale) {
-  take_keyframes(coarse, scale, std::vector<char>(static_cast<size_t>(K_), 1));
+  if (coarse.K_ != K_) throw Error("internal: keyframes taken from a fit of another shape");
+  std::vector<int> from(static_cast<size_t>(K_));
+  for (int k = 0; k < K_; ++k) from[static_cast<size_t>(k)] = k;
+  adopt_coarse_from(coarse, scale, from);
+}
+
+void Fitter::adopt_coarse_from(Fitter& coarse, double scale, const std::vector<int>& from) {
+  copy_keyframes(coarse, scale, from);
   last_activation_ = 0;
   plateau_ref_.clear();
   newest_ref_ = -1;
@@ -293,7 +302,7 @@ void Fitter::activate_keyframe(int k) {
     q.enqueueFillBuffer(v_field_, 0.f, k * fb, fb);
   }
   steps_[k] = 0;
-  if (opt_.track) warm_start(k);
+  if (opt_.track) warm_start(k, k - 1);
 }
 
 void Fitter::enqueue_motion(int frames) {
@@ -324,23 +333,24 @@ float Fitter::frame_loss(int k) {
   return raster_->read_frame_losses()[k];
 }
 
-void Fitter::warm_start(int k) {
+void Fitter::warm_start(int k, int src) {
   auto& q = rt_.queue();
   const int W = size_.width, H = size_.height;
-  // The previous keyframe as fitted so far: its render and its control points.
-  enqueue_motion(k);
-  raster_->set_active_frames(k);
+  // The source keyframe as fitted so far (the previous one, or k itself as copied): its
+  // render and its control points.
+  enqueue_motion(src + 1);
+  raster_->set_active_frames(src + 1);
   raster_->forward(ClRaster::Output::Float, kWhite);
   const auto img = raster_->read_image();
   std::vector<float> cp(static_cast<size_t>(plan_.n_cp) * 2);
-  q.enqueueReadBuffer(raster_->cp_buffer(), CL_TRUE, static_cast<size_t>(k - 1) * plan_.n_cp * 2 * sizeof(float),
+  q.enqueueReadBuffer(raster_->cp_buffer(), CL_TRUE, static_cast<size_t>(src) * plan_.n_cp * 2 * sizeof(float),
                       cp.size() * sizeof(float), cp.data());
   std::vector<uint8_t> prev(static_cast<size_t>(W) * H), next(prev.size());
   auto grey = [](float r, float g, float b) {
     return static_cast<uint8_t>(std::clamp(255.f * (0.299f * r + 0.587f * g + 0.114f * b) + 0.5f, 0.f, 255.f));
   };
   for (size_t p = 0; p < prev.size(); ++p) {
-    const float* c = &img[((static_cast<size_t>(k - 1) * H * W) + p) * 4];
+    const float* c = &img[((static_cast<size_t>(src) * H * W) + p) * 4];
     prev[p] = grey(c[0] + 1 - c[3], c[1] + 1 - c[3], c[2] + 1 - c[3]);
     const float* t = &target_.rgba[((static_cast<size_t>(k) * H * W) + p) * 4];
     next[p] = grey(t[0], t[1], t[2]);
@@ -353,7 +363,7 @@ void Fitter::warm_start(int k) {
       index.push_back(i);
     }
   PointTracks tracks;
-  if (k < static_cast<int>(flows_.size()) && flows_[k].grid > 0) {
+  if (src == k - 1 && k < static_cast<int>(flows_.size()) && flows_[k].grid > 0) {
     // The tracker stage's flow between the target keyframes, at the fitted points.
     tracks.to = from;
     tracks.weight.assign(from.size(), 0.0);
@@ -558,6 +568,10 @@ LossTerms Fitter::step() {
     plateau_ref_.clear();
     newest_ref_ = -1;
   }
+  // Keyframe 0 fitted freely (a video that starts mid-motion): carried from the rest pose
+  // toward its frame before its first step, as every later keyframe is from the one before.
+  if (iteration_ == 0 && active_ == 1 && !opt_.pin_rest_keyframe && opt_.track && !started_) warm_start(0, 0);
+  started_ = true;
   const LossTerms t = fit_iteration();
   ++iteration_;
   check_plateau();
@@ -649,7 +663,7 @@ LossTerms Fitter::fit_iteration() {
     //    offsets' gradient itself).
     const size_t nn = fplan_.n_nodes;
     if (nn) q.enqueueNDRangeKernel(k_field_back_, cl::NullRange, cl::NDRange(round_up(nn, 64), Ka));
-    // 7. Adam on every active keyframe (keyframe 0's homography stays the identity; so do the
+    // 7. Adam on every active keyframe (a pinned rest keyframe stays the identity; so do the
     //    held groups' in every keyframe).
     zero_held_gradients();
     q.enqueueNDRangeKernel(k_adam_p_, cl::NullRange,
@@ -717,21 +731,44 @@ std::vector<float> Fitter::evaluate_keyframe_losses() {
 }
 
 void Fitter::take_keyframes(Fitter& other, double scale, const std::vector<char>& which) {
-  if (other.K_ != K_ || other.G_ != G_ || other.plan_.n_cp != plan_.n_cp || which.size() != static_cast<size_t>(K_))
+  if (other.K_ != K_ || which.size() != static_cast<size_t>(K_))
+    throw Error("internal: keyframes taken from a fit of another shape");
+  std::vector<int> from(static_cast<size_t>(K_), -1);
+  for (int k = 0; k < K_; ++k)
+    if (which[static_cast<size_t>(k)]) from[static_cast<size_t>(k)] = k;
+  copy_keyframes(other, scale, from);
+}
+
+void Fitter::adopt_keyframes(Fitter& other, const std::vector<int>& from, const std::vector<char>& fresh) {
+  if (from.size() != static_cast<size_t>(K_) || fresh.size() != from.size())
+    throw Error("internal: keyframes adopted from a fit of another shape");
+  // As the refinement adopts the coarse fit (every keyframe active, fresh Adam moments), at the
+  // same width; then each new keyframe is carried from its source's pose toward its own target.
+  adopt_coarse_from(other, 1, from);
+  if (!opt_.track) return;
+  for (int k = 0; k < K_; ++k)
+    if (fresh[static_cast<size_t>(k)]) warm_start(k, k);
+}
+
+void Fitter::copy_keyframes(Fitter& other, double scale, const std::vector<int>& from) {
+  if (other.G_ != G_ || other.plan_.n_cp != plan_.n_cp || from.size() != static_cast<size_t>(K_))
     throw Error("internal: keyframes taken from a fit of another shape");
   auto& oq = other.rt_.queue();
   const size_t pk = static_cast<size_t>(G_) * kMotionParams, ok = static_cast<size_t>(plan_.n_cp) * 2;
-  std::vector<float> oparams(K_ * pk), ooffsets(K_ * ok);
-  other.enqueue_motion(K_);  // its total offsets (free + field) of every keyframe
+  const size_t OK = static_cast<size_t>(other.K_);
+  std::vector<float> oparams(OK * pk), ooffsets(OK * ok);
+  other.enqueue_motion(other.K_);  // its total offsets (free + field) of every keyframe
   oq.enqueueReadBuffer(other.params_, CL_TRUE, 0, oparams.size() * sizeof(float), oparams.data());
   oq.enqueueReadBuffer(other.total_offsets_, CL_TRUE, 0, ooffsets.size() * sizeof(float), ooffsets.data());
   auto& q = rt_.queue();
   const size_t fk = static_cast<size_t>(fplan_.n_nodes) * 2;
   for (int k = 0; k < K_; ++k) {
-    if (!which[static_cast<size_t>(k)]) continue;
-    std::vector<float> off(ooffsets.begin() + k * ok, ooffsets.begin() + (k + 1) * ok);
+    const int j = from[static_cast<size_t>(k)];
+    if (j < 0) continue;
+    if (j >= other.K_) throw Error("internal: a keyframe taken from one the other fit does not have");
+    std::vector<float> off(ooffsets.begin() + j * ok, ooffsets.begin() + (j + 1) * ok);
     for (float& o : off) o = static_cast<float>(o * scale);
-    q.enqueueWriteBuffer(params_, CL_TRUE, k * pk * sizeof(float), pk * sizeof(float), oparams.data() + k * pk);
+    q.enqueueWriteBuffer(params_, CL_TRUE, k * pk * sizeof(float), pk * sizeof(float), oparams.data() + j * pk);
     q.enqueueWriteBuffer(offsets_, CL_TRUE, k * ok * sizeof(float), ok * sizeof(float), off.data());
     if (fk) q.enqueueFillBuffer(field_, 0.f, k * fk * sizeof(float), fk * sizeof(float));
   }

@@ -264,6 +264,13 @@ class Fitter {
   // field zero there); every other keyframe, the iteration count and Adam's state are kept.
   // The refinement's guard puts back the coarse fit of a keyframe the refinement made worse.
   void take_keyframes(Fitter& other, double scale, const std::vector<char>& which);
+  // Keyframes from the target (fit/keyframe_choice.h): this fit has more keyframes than
+  // `other` (same drawing and width). Keyframe k starts as other's keyframe from[k] (its
+  // homographies, its total offsets as fixed base offsets, this fitter's field zero); where
+  // fresh[k] is set (a keyframe other did not have), it is then warm-started from there toward
+  // its own frame (optical flow, as an activated keyframe is). Every keyframe becomes active
+  // with fresh Adam moments, at iteration 0.
+  void adopt_keyframes(Fitter& other, const std::vector<int>& from, const std::vector<char>& fresh);
 
   // Keyframe-to-keyframe flow from the tracker stage (flow_tracks.h): flows[k] moves keyframe
   // k-1's points to k for the warm start, instead of tracking the fit's own render.
@@ -272,8 +279,15 @@ class Fitter {
  private:
   LossTerms fit_iteration();
   void activate_keyframe(int k);
-  // Optical-flow warm start of keyframe k (warm_start.h); keeps it only if it fits better.
-  void warm_start(int k);
+  // Optical-flow warm start of keyframe k (warm_start.h) from keyframe src as it stands (the
+  // previous keyframe; k itself when its parameters were copied from elsewhere); keeps it
+  // only if it fits better.
+  void warm_start(int k, int src);
+  // adopt_coarse with keyframe k taken from coarse's keyframe from[k].
+  void adopt_coarse_from(Fitter& coarse, double scale, const std::vector<int>& from);
+  // Keyframe k becomes other's keyframe from[k] where from[k] >= 0 (take_keyframes).
+  void copy_keyframes(Fitter& other, double scale, const std::vector<int>& from);
+  bool started_ = false;  // the first step was taken (keyframe 0's warm start is done)
   // The field increment of keyframe k that carries its tracked points where the tracks went
   // beyond their group's homography (field_warm_start.h); kept only if it fits better than
   // `before`, keyframe k's image loss as it stands.

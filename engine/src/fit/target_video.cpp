@@ -448,7 +448,7 @@ void clean_keyframe(TargetFrames& t, int k, const TargetOptions& opt) {
 }
 
 void check_options(const fs::path& source, int width, int height, const TargetOptions& o) {
-  if (o.keyframes < 1)
+  if (o.keyframes < 1 && o.frames.empty())
     fail(source, "keyframes must be at least 1 (got " + std::to_string(o.keyframes) + ")");
   if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide)
     fail(source, "target size " + size_text(width, height) + " is out of range (each side 1.." +
@@ -509,7 +509,11 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   } else {
     info = probe_video(source);
   }
-  const int K = options.keyframes, N = info.frames;
+  const int K = options.frames.empty() ? options.keyframes : static_cast<int>(options.frames.size()), N = info.frames;
+  for (size_t j = 0; j < options.frames.size(); ++j)
+    if (options.frames[j] < 0 || options.frames[j] >= N || (j > 0 && options.frames[j] <= options.frames[j - 1]))
+      fail(source, "frame " + std::to_string(options.frames[j]) + " asked for is not in 0.." + std::to_string(N - 1) +
+                       " or not after the one before");
   if (N < K)
     fail(source, "has " + frames_text(N) + ", fewer than the " + std::to_string(K) +
                      " keyframes asked for");
@@ -525,7 +529,8 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   // round(k (N-1) / (K-1)) in integers (halves round up): no floating-point ties, and strictly
   // increasing because the step (N-1)/(K-1) is at least 1.
   t.source_index.resize(static_cast<size_t>(K));
-  for (int k = 0; k < K; ++k) {
+  for (int k = 0; k < K && !options.frames.empty(); ++k) t.source_index[static_cast<size_t>(k)] = options.frames[static_cast<size_t>(k)];
+  for (int k = 0; k < K && options.frames.empty(); ++k) {
     const int64_t num = 2 * int64_t{k} * (N - 1) + (K - 1);
     t.source_index[static_cast<size_t>(k)] =
         K == 1 ? 0 : static_cast<int>(num / (2 * int64_t{K - 1}));
@@ -581,6 +586,7 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   const TargetFrames* from = options.denoised_from;
   const bool reuse = denoise && from && !from->denoised.empty() && from->denoised_width == work.width &&
                      from->denoised_height == work.height && from->keyframes == K && from->source_frames == N &&
+                     (options.frames.empty() || options.frames == from->denoised_frame) &&
                      !measure_shake;
   if (denoise && options.keep_denoised) {
     t.denoised_width = work.width;

@@ -113,6 +113,10 @@ void check_config(const nlohmann::json& c, const PluginHost& host) {
   whole(c, "stages.fitter.iterations", 1, 1000000);
   whole(c, "stages.fitter.keyframes", 2, 1000);
   whole(c, "stages.fitter.size", 32, 4096);
+  if (const nlohmann::json& m = at(c, "stages.fitter.max_keyframes"); !m.is_null() && !(m.is_string() && m.get<std::string>() == "auto"))
+    if (!m.is_number_integer() || m.get<long long>() < 0 || m.get<long long>() > 10000)
+      throw Error("stages.fitter.max_keyframes: must be auto or a whole number from 0 to 10000, not " + shown(m));
+  one_of(c, "stages.fitter.start", {"auto", "rest", "free"});
   if (const nlohmann::json& r = at(c, "stages.fitter.refine_size"); !r.is_null() && !(r.is_string() && r.get<std::string>() == "auto"))
     if (!r.is_number_integer() || r.get<long long>() < 0 || r.get<long long>() > 4096)
       throw Error("stages.fitter.refine_size: must be auto or a whole number from 0 to 4096, not " + shown(r));
