@@ -299,8 +299,8 @@ void Fitter::activate_keyframe(int k) {
 void Fitter::enqueue_motion(int frames) {
   auto& q = rt_.queue();
   const cl::NDRange range(round_up(plan_.n_cp, 64), frames);
-  q.enqueueNDRangeKernel(k_field_, cl::NullRange, range);
-  q.enqueueNDRangeKernel(k_motion_, cl::NullRange, range);
+  enqueue_stable(q, k_field_, range);
+  enqueue_stable(q, k_motion_, range);
 }
 
 void Fitter::zero_held_gradients() {
@@ -638,35 +638,35 @@ LossTerms Fitter::fit_iteration() {
     // 2. Render, blurred MSE against the targets, exact gradient to the control points.
     raster_->enqueue_loss_and_gradient(opt_.w_image, kWhite);
     // 3. G1 continuity, containment and cohesion add to the control-point gradient.
-    if (nj) q.enqueueNDRangeKernel(k_g1_, cl::NullRange, cl::NDRange(round_up(nj, 64), Ka));
-    q.enqueueNDRangeKernel(k_contain_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
-    if (ncoh) q.enqueueNDRangeKernel(k_cohesion_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
+    if (nj) enqueue_stable(q, k_g1_, cl::NDRange(round_up(nj, 64), Ka));
+    enqueue_stable(q, k_contain_, cl::NDRange(round_up(n_cp, 64), Ka));
+    if (ncoh) enqueue_stable(q, k_cohesion_, cl::NDRange(round_up(n_cp, 64), Ka));
     // 4. Back through the motion model to homographies and offsets.
-    q.enqueueNDRangeKernel(k_motion_back_, cl::NullRange, cl::NDRange(round_up(G_, 8), Ka));
+    enqueue_stable(q, k_motion_back_, cl::NDRange(round_up(G_, 8), Ka));
     // 5. Smoothness adds to the offset gradient.
-    q.enqueueNDRangeKernel(k_smooth_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
+    enqueue_stable(q, k_smooth_, cl::NDRange(round_up(n_cp, 64), Ka));
     // 6. Back through the fields to their coefficients (the free offsets' gradient is the
     //    offsets' gradient itself).
     const size_t nn = fplan_.n_nodes;
-    if (nn) q.enqueueNDRangeKernel(k_field_back_, cl::NullRange, cl::NDRange(round_up(nn, 64), Ka));
+    if (nn) enqueue_stable(q, k_field_back_, cl::NDRange(round_up(nn, 64), Ka));
     // 7. Adam on every active keyframe (keyframe 0's homography stays the identity; so do the
     //    held groups' in every keyframe).
     zero_held_gradients();
-    q.enqueueNDRangeKernel(k_adam_p_, cl::NullRange,
+    enqueue_stable(q, k_adam_p_,
                            cl::NDRange(round_up(static_cast<size_t>(K_) * G_ * kMotionParams, 64)));
     if (opt_.lr_offsets != 0)
-      q.enqueueNDRangeKernel(k_adam_o_, cl::NullRange, cl::NDRange(round_up(K_ * n_cp * 2, 64)));
-    if (nn) q.enqueueNDRangeKernel(k_adam_f_, cl::NullRange, cl::NDRange(round_up(K_ * nn * 2, 64)));
+      enqueue_stable(q, k_adam_o_, cl::NDRange(round_up(K_ * n_cp * 2, 64)));
+    if (nn) enqueue_stable(q, k_adam_f_, cl::NDRange(round_up(K_ * nn * 2, 64)));
     // 8. The regularisers' values, summed in order.
     set_args(k_sum_, part_smooth_, terms_, 0, static_cast<int>(Ka * n_cp));
-    q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
+    enqueue_stable(q, k_sum_, cl::NDRange(1));
     set_args(k_sum_, part_contain_, terms_, 1, static_cast<int>(Ka * n_cp));
-    q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
+    enqueue_stable(q, k_sum_, cl::NDRange(1));
     set_args(k_sum_, part_g1_, terms_, 2, static_cast<int>(Ka * nj));
-    q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
+    enqueue_stable(q, k_sum_, cl::NDRange(1));
     if (ncoh) {
       set_args(k_sum_, part_coh_, terms_, 3, static_cast<int>(Ka * n_cp));
-      q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
+      enqueue_stable(q, k_sum_, cl::NDRange(1));
     }
     LossTerms t;
     float terms[4] = {0, 0, 0, 0};

@@ -198,7 +198,8 @@ void ClRaster::enqueue_geometry() {
 }
 
 void ClRaster::launch(const char* name, cl::Kernel& k, const cl::NDRange& global,
-                      const cl::NDRange& local) {
+                      const cl::NDRange& local_or_null) {
+  const cl::NDRange local = local_or_null.dimensions() ? local_or_null : stable_local_size(global);
   if (!rt_.profiling()) {
     rt_.queue().enqueueNDRangeKernel(k, cl::NullRange, global, local);
     return;
