@@ -30,7 +30,7 @@ usage:
                   [key.path=value ...]
   svgmotion report RUN_DIR [--device D]
   svgmotion plugins
-  svgmotion devices
+  svgmotion devices [--warm]
   svgmotion palette N
   svgmotion bench render|raster IN.svg [--frames K] [--size N] [--repeat R] [--json] [--profile]
                    [--device D]
@@ -174,7 +174,9 @@ array variable, 130 interrupted.
 )"},
     {"report", "usage: svgmotion report RUN_DIR [--device D]\n\nWrites RUN_DIR/report.html: the run's self-contained preview page (the animation with play/pause\nand a scrubber, the input, every candidate video with the ranker's scores and the command that\nfits another one, the target beside the fit, the losses, the stage timings). `run` writes it\nat the end of every run.\n"},
     {"plugins", "usage: svgmotion plugins\n\nLists the stage plugins found (stage, name, version, path) and every\nrefused module with its reason.\n"},
-    {"devices", "usage: svgmotion devices\n\nLists the OpenCL devices; * marks the one --device auto picks.\n"},
+    {"devices", "usage: svgmotion devices [--warm [--device D]]\n\nLists the OpenCL devices; * marks the one --device auto picks.\n"
+                "  --warm     compiles every kernel program a default run uses for the device and caches it\n"
+                "             (a first run otherwise spends most of a minute compiling)\n"},
     {"palette", "usage: svgmotion palette N\n\nPrints N maximally distinct colours (white reserved), one #rrggbb per line.\n"},
     {"bench", R"(usage: svgmotion bench render|raster IN.svg [options]
        svgmotion bench raster --scaling [--json]

@@ -8,7 +8,6 @@
 #include "fit/field_warm_start.h"
 #include "fit/warm_start.h"
 #include "video/rigid_bodies.h"
-#include "opencl/tuning.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -114,8 +113,7 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     return b;
   };
   try {
-    cl::Program& prog = rt_.program({"field.cl", "motion.cl", "regularise.cl", "adam.cl"},
-                                    kernel_build_options(raster_tuning(rt_.info(), size_.width)));
+    cl::Program& prog = rt_.program({"field.cl", "motion.cl", "regularise.cl", "adam.cl"}, kFitterProgramOptions);
     k_motion_ = cl::Kernel(prog, "motion_forward");
     k_motion_back_ = cl::Kernel(prog, "motion_backward");
     k_smooth_ = cl::Kernel(prog, "smoothness");
