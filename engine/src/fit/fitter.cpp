@@ -329,7 +329,7 @@ void Fitter::warm_start(int k) {
   enqueue_motion(k);
   raster_->set_active_frames(k);
   raster_->forward(ClRaster::Output::Float, kWhite);
-  const auto img = raster_->read_image();
+  const auto img = raster_->read_image_frame(k - 1);
   std::vector<float> cp(static_cast<size_t>(plan_.n_cp) * 2);
   q.enqueueReadBuffer(raster_->cp_buffer(), CL_TRUE, static_cast<size_t>(k - 1) * plan_.n_cp * 2 * sizeof(float),
                       cp.size() * sizeof(float), cp.data());
@@ -338,7 +338,7 @@ void Fitter::warm_start(int k) {
     return static_cast<uint8_t>(std::clamp(255.f * (0.299f * r + 0.587f * g + 0.114f * b) + 0.5f, 0.f, 255.f));
   };
   for (size_t p = 0; p < prev.size(); ++p) {
-    const float* c = &img[((static_cast<size_t>(k - 1) * H * W) + p) * 4];
+    const float* c = &img[p * 4];
     prev[p] = grey(c[0] + 1 - c[3], c[1] + 1 - c[3], c[2] + 1 - c[3]);
     const float* t = &target_.rgba[((static_cast<size_t>(k) * H * W) + p) * 4];
     next[p] = grey(t[0], t[1], t[2]);

@@ -235,4 +235,13 @@ std::vector<float> ClRaster::read_image() {
   return out;
 }
 
+std::vector<float> ClRaster::read_image_frame(int k) {
+  if (!image_()) throw Error("internal: read_image_frame before a Float forward pass");
+  if (k < 0 || k >= frames_) throw Error("internal: read_image_frame of frame " + std::to_string(k));
+  std::vector<float> out(static_cast<size_t>(plan_.height) * plan_.width * 4);
+  const size_t bytes = out.size() * sizeof(float);
+  rt_.queue().enqueueReadBuffer(image_, CL_TRUE, static_cast<size_t>(k) * bytes, bytes, out.data());
+  return out;
+}
+
 }  // namespace svgm
