@@ -1,5 +1,6 @@
 // `svgmotion bench render|raster`: speed of the OpenCL renderer and of one differentiable
-// iteration (forward + loss + backward), peak memory, device; `bench raster --scaling` sweeps
+// iteration (forward + loss + backward) against librsvg's render of the same frames, peak
+// memory, device; `bench raster --scaling` sweeps
 // paths, size and frames on procedural scenes to show how the cost grows. `bench fit` and
 // `bench target` (their own files) time a whole fit and the loading of a target.
 //
@@ -10,8 +11,11 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <optional>
+#include <string>
 
 #include "cli/bench_fit.h"
+#include "cli/bench_librsvg.h"
 #include "cli/bench_target.h"
 #include "cli/bench_util.h"
 #include "cli/cli_args.h"
@@ -163,12 +167,15 @@ int bench_raster(const std::vector<std::string>& argv) {
   if (a.positional.size() != 1) throw UsageError("bench raster: expected one input SVG (or --scaling)");
   const Scene scene = read_svg_file(a.positional[0]);
   const IterationTimes t = time_iteration(rt, scene, width, frames, repeat);
+  // The bar (issue 38): one iteration no longer than librsvg's plain render of the same frames.
+  const std::optional<double> rsvg = librsvg_ms_per_frame(a.positional[0], width, frames, 5);
   if (a.has("--json")) {
+    const std::string rsvg_ms = rsvg ? std::to_string(*rsvg * frames) : "null";
     std::printf("{\"svg\": \"%s\", \"frames\": %d, \"size\": %d, \"lines\": %d, "
                 "\"forward_ms\": %.4f, \"backward_ms\": %.4f, \"total_ms\": %.4f, "
-                "\"total_ms_per_frame\": %.4f, \"peak_rss_mb\": %.1f, \"device\": \"%s\"}\n",
+                "\"total_ms_per_frame\": %.4f, \"librsvg_ms\": %s, \"peak_rss_mb\": %.1f, \"device\": \"%s\"}\n",
                 a.positional[0].c_str(), frames, width, t.lines, t.forward_ms,
-                t.total_ms - t.forward_ms, t.total_ms, t.total_ms / frames, peak_rss_mb(),
+                t.total_ms - t.forward_ms, t.total_ms, t.total_ms / frames, rsvg_ms.c_str(), peak_rss_mb(),
                 rt.info().name.c_str());
   } else {
     std::printf("%s: %d frames at %d px, %d lines\n", a.positional[0].c_str(), frames, width, t.lines);
@@ -176,6 +183,11 @@ int bench_raster(const std::vector<std::string>& argv) {
                 t.forward_ms, t.total_ms - t.forward_ms, t.total_ms);
     std::printf("  per frame: forward %.3f ms, total %.3f ms; peak memory %.1f MB\n",
                 t.forward_ms / frames, t.total_ms / frames, peak_rss_mb());
+    if (rsvg)
+      std::printf("  librsvg renders the same %d frames in %.3f ms (%.3f ms per frame): iteration / librsvg %.2fx\n",
+                  frames, *rsvg * frames, *rsvg, t.total_ms / (*rsvg * frames));
+    else
+      std::printf("  librsvg: not available (librsvg2-2 and libcairo2 give the comparison)\n");
     std::printf("  device: %s\n", rt.info().name.c_str());
   }
   return 0;

@@ -33,7 +33,7 @@ usage:
   svgmotion report RUN_DIR [--device D]
   svgmotion config [--show CONFIG] [key.path=value ...]
   svgmotion plugins
-  svgmotion devices
+  svgmotion devices [--warm]
   svgmotion palette N
   svgmotion bench render|raster IN.svg [--frames K] [--size N] [--repeat R] [--json] [--profile]
                    [--device D]
@@ -188,7 +188,9 @@ fast, paper) merged over the defaults with the overrides after it, as YAML that 
 each setting that is not a default says where it came from.
 )"},
     {"plugins", "usage: svgmotion plugins\n\nLists the stage plugins found (stage, name, version, path) and every\nrefused module with its reason.\n"},
-    {"devices", "usage: svgmotion devices\n\nLists the OpenCL devices; * marks the one --device auto picks.\n"},
+    {"devices", "usage: svgmotion devices [--warm [--device D]]\n\nLists the OpenCL devices; * marks the one --device auto picks.\n"
+                "  --warm     compiles every kernel program a default run uses for the device and caches it\n"
+                "             (a first run otherwise spends most of a minute compiling)\n"},
     {"palette", "usage: svgmotion palette N\n\nPrints N maximally distinct colours (white reserved), one #rrggbb per line.\n"},
     {"bench", R"(usage: svgmotion bench render|raster IN.svg [options]
        svgmotion bench raster --scaling [--json]

@@ -59,7 +59,7 @@ TEST_CASE("compiled programs are cached on disk, reused, and rebuilt when the ca
   auto cache_files = [&] {
     std::vector<fs::path> files;
     for (const auto& e : fs::recursive_directory_iterator(dir))
-      if (e.is_regular_file()) files.push_back(e.path());
+      if (e.is_regular_file() && e.path().extension() == ".bin") files.push_back(e.path());
     return files;
   };
   auto stat_of = [](const fs::path& p) {

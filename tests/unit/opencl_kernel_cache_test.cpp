@@ -4,6 +4,7 @@
 // a damaged cache file rebuilds the program and repairs the entry.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,7 @@
 
 #include "opencl/kernel_cache.h"
 #include "opencl/runtime.h"
+#include "svgmotion/log.h"
 #include "temp_dir.h"
 
 using namespace svgm;
@@ -86,7 +88,7 @@ TEST_SUITE("opencl") {
     }
     fs::path entry;
     for (const auto& e : fs::recursive_directory_iterator(dir.path))
-      if (e.is_regular_file()) entry = e.path();
+      if (e.is_regular_file() && e.path().extension() == ".bin") entry = e.path();
     REQUIRE(!entry.empty());
     const std::string good = bytes_of(entry);
     std::ofstream(entry, std::ios::binary) << good.substr(0, good.size() / 2);  // a writer killed mid-file
@@ -96,6 +98,37 @@ TEST_SUITE("opencl") {
     }
     CHECK(read_cached_binary(entry).has_value());
     CHECK(bytes_of(entry).size() == good.size());
+    unsetenv("SVGMOTION_CACHE_DIR");
+  }
+
+  TEST_CASE("a build from source says 'compiling the OpenCL kernels' once; a cached program says nothing") {
+    test::TempDir dir("svgm_kcache");
+    setenv("SVGMOTION_CACHE_DIR", dir.path.c_str(), 1);
+    std::vector<std::string> said;
+    log::set_forward([&](log::Level, const std::string& m) { said.push_back(m); });
+    auto compiling = [&] {
+      return std::count_if(said.begin(), said.end(), [](const std::string& m) {
+        return m.find("compiling the OpenCL kernels (once, about ") != std::string::npos;
+      });
+    };
+    {
+      ClRuntime rt("auto");
+      rt.program({"adam.cl"}, "-DSVGM_COMPILE_NOTICE_TEST=1");
+      rt.program({"adam.cl"}, "-DSVGM_COMPILE_NOTICE_TEST=2");  // a second miss: no second line
+      CHECK(rt.programs_built_from_source() == 2);
+    }
+    CHECK(compiling() == 1);
+    // The measured time is kept for the next estimate.
+    CHECK(bytes_of(dir.path / "kernels" / "compile_seconds.txt").rfind("adam.cl ", 0) == 0);
+    said.clear();
+    {
+      ClRuntime rt("auto");
+      rt.program({"adam.cl"}, "-DSVGM_COMPILE_NOTICE_TEST=1");
+      CHECK(rt.programs_loaded_from_cache() == 1);
+      CHECK(rt.programs_built_from_source() == 0);
+    }
+    CHECK(compiling() == 0);
+    log::set_forward({});
     unsetenv("SVGMOTION_CACHE_DIR");
   }
 }

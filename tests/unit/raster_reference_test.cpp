@@ -69,4 +69,29 @@ TEST_CASE("two runs of the kernels give identical bits") {
   CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
 }
 
+TEST_CASE("read_image_frame reads one frame of read_image, and only one frame's bytes") {
+  // The fitter's warm start reads the previous keyframe alone: the whole clip was 88 MB of a
+  // 21-keyframe 512 px fit's peak memory.
+  const Scene s = random_scene(7, 40, 32);
+  const RasterPlan plan = plan_raster(s, Affine{}, 40, 32);
+  ClRaster r(runtime(), plan, 3);
+  std::vector<float> cp;
+  for (int k = 0; k < 3; ++k)  // three different frames: each moved k px to the right
+    for (size_t i = 0; i < plan.rest_cp.size(); i += 2) {
+      cp.push_back(plan.rest_cp[i] + static_cast<float>(k));
+      cp.push_back(plan.rest_cp[i + 1]);
+    }
+  r.set_control_points(cp);
+  r.forward();
+  const auto all = r.read_image();
+  const size_t frame = 40 * 32 * 4;
+  for (int k = 0; k < 3; ++k) {
+    const auto one = r.read_image_frame(k);
+    REQUIRE(one.size() == frame);
+    CHECK(std::memcmp(one.data(), all.data() + k * frame, frame * sizeof(float)) == 0);
+  }
+  CHECK(std::memcmp(all.data(), all.data() + frame, frame * sizeof(float)) != 0);  // the frames differ
+  CHECK_THROWS(r.read_image_frame(3));
+}
+
 }  // TEST_SUITE

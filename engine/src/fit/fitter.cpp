@@ -8,7 +8,6 @@
 #include "fit/field_warm_start.h"
 #include "fit/warm_start.h"
 #include "video/rigid_bodies.h"
-#include "opencl/tuning.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -114,8 +113,7 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     return b;
   };
   try {
-    cl::Program& prog = rt_.program({"field.cl", "motion.cl", "regularise.cl", "adam.cl"},
-                                    kernel_build_options(raster_tuning(rt_.info(), size_.width)));
+    cl::Program& prog = rt_.program({"field.cl", "motion.cl", "regularise.cl", "adam.cl"}, kFitterProgramOptions);
     k_motion_ = cl::Kernel(prog, "motion_forward");
     k_motion_back_ = cl::Kernel(prog, "motion_backward");
     k_smooth_ = cl::Kernel(prog, "smoothness");
@@ -308,8 +306,8 @@ void Fitter::activate_keyframe(int k) {
 void Fitter::enqueue_motion(int frames) {
   auto& q = rt_.queue();
   const cl::NDRange range(round_up(plan_.n_cp, 64), frames);
-  q.enqueueNDRangeKernel(k_field_, cl::NullRange, range);
-  q.enqueueNDRangeKernel(k_motion_, cl::NullRange, range);
+  enqueue_stable(q, k_field_, range);
+  enqueue_stable(q, k_motion_, range);
 }
 
 void Fitter::zero_held_gradients() {
@@ -341,7 +339,7 @@ void Fitter::warm_start(int k, int src) {
   enqueue_motion(src + 1);
   raster_->set_active_frames(src + 1);
   raster_->forward(ClRaster::Output::Float, kWhite);
-  const auto img = raster_->read_image();
+  const auto img = raster_->read_image_frame(src);
   std::vector<float> cp(static_cast<size_t>(plan_.n_cp) * 2);
   q.enqueueReadBuffer(raster_->cp_buffer(), CL_TRUE, static_cast<size_t>(src) * plan_.n_cp * 2 * sizeof(float),
                       cp.size() * sizeof(float), cp.data());
@@ -350,7 +348,7 @@ void Fitter::warm_start(int k, int src) {
     return static_cast<uint8_t>(std::clamp(255.f * (0.299f * r + 0.587f * g + 0.114f * b) + 0.5f, 0.f, 255.f));
   };
   for (size_t p = 0; p < prev.size(); ++p) {
-    const float* c = &img[((static_cast<size_t>(src) * H * W) + p) * 4];
+    const float* c = &img[p * 4];
     prev[p] = grey(c[0] + 1 - c[3], c[1] + 1 - c[3], c[2] + 1 - c[3]);
     const float* t = &target_.rgba[((static_cast<size_t>(k) * H * W) + p) * 4];
     next[p] = grey(t[0], t[1], t[2]);
@@ -652,35 +650,35 @@ LossTerms Fitter::fit_iteration() {
     // 2. Render, blurred MSE against the targets, exact gradient to the control points.
     raster_->enqueue_loss_and_gradient(opt_.w_image, kWhite);
     // 3. G1 continuity, containment and cohesion add to the control-point gradient.
-    if (nj) q.enqueueNDRangeKernel(k_g1_, cl::NullRange, cl::NDRange(round_up(nj, 64), Ka));
-    q.enqueueNDRangeKernel(k_contain_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
-    if (ncoh) q.enqueueNDRangeKernel(k_cohesion_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
+    if (nj) enqueue_stable(q, k_g1_, cl::NDRange(round_up(nj, 64), Ka));
+    enqueue_stable(q, k_contain_, cl::NDRange(round_up(n_cp, 64), Ka));
+    if (ncoh) enqueue_stable(q, k_cohesion_, cl::NDRange(round_up(n_cp, 64), Ka));
     // 4. Back through the motion model to homographies and offsets.
-    q.enqueueNDRangeKernel(k_motion_back_, cl::NullRange, cl::NDRange(round_up(G_, 8), Ka));
+    enqueue_stable(q, k_motion_back_, cl::NDRange(round_up(G_, 8), Ka));
     // 5. Smoothness adds to the offset gradient.
-    q.enqueueNDRangeKernel(k_smooth_, cl::NullRange, cl::NDRange(round_up(n_cp, 64), Ka));
+    enqueue_stable(q, k_smooth_, cl::NDRange(round_up(n_cp, 64), Ka));
     // 6. Back through the fields to their coefficients (the free offsets' gradient is the
     //    offsets' gradient itself).
     const size_t nn = fplan_.n_nodes;
-    if (nn) q.enqueueNDRangeKernel(k_field_back_, cl::NullRange, cl::NDRange(round_up(nn, 64), Ka));
+    if (nn) enqueue_stable(q, k_field_back_, cl::NDRange(round_up(nn, 64), Ka));
     // 7. Adam on every active keyframe (a pinned rest keyframe stays the identity; so do the
     //    held groups' in every keyframe).
     zero_held_gradients();
-    q.enqueueNDRangeKernel(k_adam_p_, cl::NullRange,
+    enqueue_stable(q, k_adam_p_,
                            cl::NDRange(round_up(static_cast<size_t>(K_) * G_ * kMotionParams, 64)));
     if (opt_.lr_offsets != 0)
-      q.enqueueNDRangeKernel(k_adam_o_, cl::NullRange, cl::NDRange(round_up(K_ * n_cp * 2, 64)));
-    if (nn) q.enqueueNDRangeKernel(k_adam_f_, cl::NullRange, cl::NDRange(round_up(K_ * nn * 2, 64)));
+      enqueue_stable(q, k_adam_o_, cl::NDRange(round_up(K_ * n_cp * 2, 64)));
+    if (nn) enqueue_stable(q, k_adam_f_, cl::NDRange(round_up(K_ * nn * 2, 64)));
     // 8. The regularisers' values, summed in order.
     set_args(k_sum_, part_smooth_, terms_, 0, static_cast<int>(Ka * n_cp));
-    q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
+    enqueue_stable(q, k_sum_, cl::NDRange(1));
     set_args(k_sum_, part_contain_, terms_, 1, static_cast<int>(Ka * n_cp));
-    q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
+    enqueue_stable(q, k_sum_, cl::NDRange(1));
     set_args(k_sum_, part_g1_, terms_, 2, static_cast<int>(Ka * nj));
-    q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
+    enqueue_stable(q, k_sum_, cl::NDRange(1));
     if (ncoh) {
       set_args(k_sum_, part_coh_, terms_, 3, static_cast<int>(Ka * n_cp));
-      q.enqueueNDRangeKernel(k_sum_, cl::NullRange, cl::NDRange(1));
+      enqueue_stable(q, k_sum_, cl::NDRange(1));
     }
     LossTerms t;
     float terms[4] = {0, 0, 0, 0};

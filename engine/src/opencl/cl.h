@@ -33,6 +33,25 @@ cl::Buffer input_buffer(const cl::Context& ctx, const void* host, size_t bytes,
 // n rounded up to a multiple of m: global sizes must be multiples of the work-group size.
 inline size_t round_up(size_t n, size_t m) { return (n + m - 1) / m * m; }
 
+// The work-group size of a launch that needs none of its own: the largest power of two up to 64
+// dividing the first global size, 1 in the others. Left to the driver, PoCL picks a size from
+// the whole range and compiles the kernel again for every size it picks: with the frames as the
+// second dimension, progressive keyframe activation compiled each kernel once per frame count
+// (319 kernel compiles, most of a first run's minute, in the bundled example's run).
+inline cl::NDRange stable_local_size(const cl::NDRange& global) {
+  if (global.dimensions() == 0) return cl::NullRange;
+  size_t l = 64;
+  while (l > 1 && global[0] % l != 0) l /= 2;
+  if (global.dimensions() == 1) return cl::NDRange(l);
+  if (global.dimensions() == 2) return cl::NDRange(l, 1);
+  return cl::NDRange(l, 1, 1);
+}
+
+// Enqueues `k` over `global` with stable_local_size(global).
+inline void enqueue_stable(cl::CommandQueue& q, cl::Kernel& k, const cl::NDRange& global) {
+  q.enqueueNDRangeKernel(k, cl::NullRange, global, stable_local_size(global));
+}
+
 // Sets a kernel's arguments 0, 1, 2, ... in order.
 template <class... A>
 void set_args(cl::Kernel& k, const A&... args) {

@@ -8,6 +8,7 @@
 
 #include "opencl/cl.h"
 #include "opencl/cpu_share.h"
+#include "opencl/kernel_cache.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -39,6 +40,12 @@ std::vector<DeviceInfo> list_devices() {
   // sharing a machine would pin to the same cores, so they are not pinned (cpu_share.h). Read by
   // PoCL when the platform loads; a user's own setting wins.
   apply_cpu_share();
+  // PoCL compiles each kernel again at its first launch (per work-group size) and keeps those
+  // in a cache of its own: beside ours, one directory holds everything a first run compiles,
+  // `devices --warm` fills both, and clearing ours clears both (a program found in our cache
+  // with PoCL's entries gone would recompile silently). A user's own POCL_CACHE_DIR wins.
+  if (const auto dir = kernel_cache_dir(); !dir.empty())
+    setenv("POCL_CACHE_DIR", (dir / "pocl").c_str(), 0);
   std::vector<cl::Platform> platforms;
   try {
     cl::Platform::get(&platforms);

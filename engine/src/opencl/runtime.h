@@ -18,6 +18,10 @@
 
 namespace svgm {
 
+// The fitter's program (field, motion, regularise, adam) uses none of the raster tunables: one
+// build serves every size (with the raster's band height it was built again per width).
+inline const char* const kFitterProgramOptions = "-cl-std=CL1.2";
+
 class ClRuntime {
  public:
   // Selects a device by spec (see select_device) and creates the context and queue.
@@ -31,7 +35,10 @@ class ClRuntime {
   const cl::Device& device() const { return device_; }
 
   // The program made of prelude.cl + `files` built with `options` (cached in memory and on
-  // disk). Throws svgm::Error with the build log on failure.
+  // disk). Throws svgm::Error with the build log on failure. The first build from source logs
+  // "compiling the OpenCL kernels (once, about N s)" (N: the last such build measured here).
+  // The raster program's options vary with its blur taps (loss_tap_options); the fitter's
+  // program takes kFitterProgramOptions.
   cl::Program& program(const std::vector<std::string>& files, const std::string& options);
 
   // Seconds spent compiling or loading programs so far (benchmarks report time without it).
@@ -51,6 +58,7 @@ class ClRuntime {
   std::map<std::string, cl::Program> programs_;
   double compile_seconds_ = 0;
   int built_from_source_ = 0, loaded_from_cache_ = 0;
+  bool said_compiling_ = false;  // "compiling the OpenCL kernels" was logged
   bool profiling_ = false;
 };
 

@@ -198,7 +198,8 @@ void ClRaster::enqueue_geometry() {
 }
 
 void ClRaster::launch(const char* name, cl::Kernel& k, const cl::NDRange& global,
-                      const cl::NDRange& local) {
+                      const cl::NDRange& local_or_null) {
+  const cl::NDRange local = local_or_null.dimensions() ? local_or_null : stable_local_size(global);
   if (!rt_.profiling()) {
     rt_.queue().enqueueNDRangeKernel(k, cl::NullRange, global, local);
     return;
@@ -231,6 +232,15 @@ std::vector<float> ClRaster::read_image() {
   if (!image_()) throw Error("internal: read_image before a Float forward pass");
   std::vector<float> out(static_cast<size_t>(frames_) * plan_.height * plan_.width * 4);
   rt_.queue().enqueueReadBuffer(image_, CL_TRUE, 0, out.size() * sizeof(float), out.data());
+  return out;
+}
+
+std::vector<float> ClRaster::read_image_frame(int k) {
+  if (!image_()) throw Error("internal: read_image_frame before a Float forward pass");
+  if (k < 0 || k >= frames_) throw Error("internal: read_image_frame of frame " + std::to_string(k));
+  std::vector<float> out(static_cast<size_t>(plan_.height) * plan_.width * 4);
+  const size_t bytes = out.size() * sizeof(float);
+  rt_.queue().enqueueReadBuffer(image_, CL_TRUE, static_cast<size_t>(k) * bytes, bytes, out.data());
   return out;
 }
 

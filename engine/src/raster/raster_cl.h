@@ -59,6 +59,8 @@ class ClRaster {
   std::vector<uint8_t> read_rgba8();
   // Reads the premultiplied float RGBA images: frames * height * width * 4 floats.
   std::vector<float> read_image();
+  // Frame k of them only: height * width * 4 floats (a 21-keyframe clip at 512 px is 88 MB).
+  std::vector<float> read_image_frame(int k);
 
   // With a profiling runtime: milliseconds each kernel of the last forward() took on the device.
   std::vector<std::pair<std::string, double>> kernel_times() const;

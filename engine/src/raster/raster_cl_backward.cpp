@@ -168,7 +168,10 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
   const std::vector<double> g_target = loss_stencil(kLossSigma);
   const std::vector<double> g1 = render_blur(std::vector<double>(px * 3, 1.0), W, H, render_sigma_, chroma_sigma_);
   std::vector<double> t(px * 3), q(px * 3);
-  std::vector<float> qf(px * K * 4), rf(px * K * 4), qsum(K);
+  // One frame's Q and R at a time: whole-clip host copies were 32 bytes per pixel and frame at
+  // the fit's peak (176 MB for 21 keyframes at 512 px).
+  std::vector<float> qf(px * 4), rf(px * 4), qsum(K);
+  auto& queue = rt_.queue();
   for (int k = 0; k < K; ++k) {
     for (size_t p = 0; p < px; ++p)
       for (int c = 0; c < 3; ++c) t[3 * p + c] = targets_[(k * px + p) * 4 + c];
@@ -183,13 +186,13 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
     qsum[k] = static_cast<float>(sum);
     for (size_t p = 0; p < px; ++p)
       for (int c = 0; c < 3; ++c) {
-        qf[(k * px + p) * 4 + c] = static_cast<float>(q[3 * p + c]);
-        rf[(k * px + p) * 4 + c] = static_cast<float>(r[3 * p + c]);
+        qf[p * 4 + c] = static_cast<float>(q[3 * p + c]);
+        rf[p * 4 + c] = static_cast<float>(r[3 * p + c]);
       }
+    const size_t bytes = qf.size() * sizeof(float), at = static_cast<size_t>(k) * bytes;
+    queue.enqueueWriteBuffer(q_, CL_TRUE, at, bytes, qf.data());
+    queue.enqueueWriteBuffer(r_, CL_TRUE, at, bytes, rf.data());
   }
-  auto& queue = rt_.queue();
-  queue.enqueueWriteBuffer(q_, CL_TRUE, 0, qf.size() * sizeof(float), qf.data());
-  queue.enqueueWriteBuffer(r_, CL_TRUE, 0, rf.size() * sizeof(float), rf.data());
   queue.enqueueWriteBuffer(qsum_, CL_TRUE, 0, qsum.size() * sizeof(float), qsum.data());
   q_background_ = bg;
 }
