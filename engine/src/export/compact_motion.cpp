@@ -67,33 +67,57 @@ PartMotion analyse_part_motion(const std::vector<double>& rest, const std::vecto
   return out;
 }
 
-std::vector<double> wrapper_trajectory(const std::vector<Affine>& affine, const Affine& parent_to_canvas) {
+Affine wrapper_map(const double* p, Vec2 c, WrapperForm form) {
+  const Affine linear = compose_affine({0, 0, p[2], form == WrapperForm::Smil ? p[3] : 0, p[4], p[5]});
+  if (form == WrapperForm::Lottie)
+    return Affine::translate(c.x + p[0], c.y + p[1]) * linear * Affine::translate(-c.x, -c.y);
+  const Affine rotate_about = Affine::translate(c.x, c.y) * Affine::rotate_deg(p[2]) * Affine::translate(-c.x, -c.y);
+  return Affine::translate(p[0], p[1]) * rotate_about * compose_affine({0, 0, 0, p[3], p[4], p[5]});
+}
+
+std::vector<double> wrapper_trajectory(const std::vector<Affine>& affine, const Affine& parent_to_canvas, Vec2 c,
+                                       WrapperForm form) {
   const Affine to_parent = parent_to_canvas.inverse();
   std::vector<double> out;
   TransformParts prev;
   for (size_t v = 0; v < affine.size(); ++v) {
-    TransformParts p = decompose_affine(to_parent * affine[v] * parent_to_canvas);
+    const Affine m = to_parent * affine[v] * parent_to_canvas;
+    TransformParts p = decompose_affine(m);
     if (v > 0) {
       p.rotate_deg = unwrap_degrees(p.rotate_deg, prev.rotate_deg);
       p.skew_x_deg = unwrap_degrees(p.skew_x_deg, prev.skew_x_deg);
     }
     prev = p;
-    out.insert(out.end(), {p.tx, p.ty, p.rotate_deg, p.skew_x_deg, p.sx, p.sy});
+    // The translation that, with the rotation about c, gives m: SMIL t = m(0) - c + R c
+    // (m's own translation is m(0)); Lottie t = m(c) - c.
+    Vec2 t;
+    if (form == WrapperForm::Lottie) {
+      t = m.apply(c) - c;
+    } else {
+      const Vec2 rc = Affine::rotate_deg(p.rotate_deg).apply(c);
+      t = Vec2{m.e, m.f} - c + rc;
+    }
+    out.insert(out.end(), {t.x, t.y, p.rotate_deg, p.skew_x_deg, p.sx, p.sy});
   }
   return out;
 }
 
-TransformParts parts_at(const std::vector<double>& t, size_t v) {
-  const double* p = &t[6 * v];
-  return {p[0], p[1], p[2], p[3], p[4], p[5]};
+Vec2 rest_centre(const std::vector<double>& rest, const Affine& parent_to_canvas) {
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (size_t k = 0; k + 1 < rest.size(); k += 2) {
+    x0 = std::min(x0, rest[k]), x1 = std::max(x1, rest[k]);
+    y0 = std::min(y0, rest[k + 1]), y1 = std::max(y1, rest[k + 1]);
+  }
+  if (rest.empty()) return {};
+  return parent_to_canvas.inverse().apply({0.5 * (x0 + x1), 0.5 * (y0 + y1)});
 }
 
 SampleError wrapper_error(const std::vector<double>& trajectory, const std::vector<double>& rest,
-                          const Affine& parent_to_canvas) {
+                          const Affine& parent_to_canvas, Vec2 c, WrapperForm form) {
   const Affine to_parent = parent_to_canvas.inverse();
-  return [&trajectory, &rest, parent_to_canvas, to_parent](size_t i, const double* approx) {
-    const Affine exact = parent_to_canvas * compose_affine(parts_at(trajectory, i)) * to_parent;
-    const Affine drawn = parent_to_canvas * compose_affine({approx[0], approx[1], approx[2], approx[3], approx[4], approx[5]}) * to_parent;
+  return [&trajectory, &rest, parent_to_canvas, to_parent, c, form](size_t i, const double* approx) {
+    const Affine exact = parent_to_canvas * wrapper_map(&trajectory[6 * i], c, form) * to_parent;
+    const Affine drawn = parent_to_canvas * wrapper_map(approx, c, form) * to_parent;
     double worst = 0;
     for (size_t k = 0; k + 1 < rest.size(); k += 2) {
       const Vec2 a = exact.apply({rest[k], rest[k + 1]}), b = drawn.apply({rest[k], rest[k + 1]});
@@ -118,6 +142,37 @@ int measured_decimals(const std::vector<double>& values, size_t dim, const std::
     if (worst <= budget) return d;
   }
   return max_decimals;
+}
+
+WrapperKeys wrapper_keys(const std::vector<Affine>& affine, const Affine& parent_to_canvas, const std::vector<double>& rest,
+                         const std::vector<double>& times, double tolerance, int decimals, Vec2 centre, WrapperForm form) {
+  WrapperKeys w;
+  w.trajectory = wrapper_trajectory(affine, parent_to_canvas, centre, form);
+  const std::vector<double> exact = w.trajectory;
+  const SampleError err = wrapper_error(exact, rest, parent_to_canvas, centre, form);
+  w.keys = reduce_keyframes(times, exact, 6, tolerance, err);
+  // Rounding is measured against the exact maps, with the tolerance of the finest use (a path
+  // without a residual keeps its motion within `tolerance`; the budgets are shares of it).
+  const int max_decimals = 8;
+  w.translate_decimals = decimals >= 0 ? decimals : measured_decimals(exact, 6, w.keys.keys, err, tolerance / 4, 0, 2, max_decimals);
+  w.rotate_decimals = measured_decimals(exact, 6, w.keys.keys, err, tolerance / 8, 2, 1, max_decimals);
+  w.skew_decimals = measured_decimals(exact, 6, w.keys.keys, err, tolerance / 8, 3, 1, max_decimals);
+  w.scale_decimals = measured_decimals(exact, 6, w.keys.keys, err, tolerance / 8, 4, 2, max_decimals);
+  const int places[6] = {w.translate_decimals, w.translate_decimals, w.rotate_decimals, w.skew_decimals, w.scale_decimals,
+                         w.scale_decimals};
+  for (size_t k : w.keys.keys)
+    for (size_t j = 0; j < 6; ++j) {
+      const double f = std::pow(10.0, places[j]);
+      double& x = w.trajectory[6 * k + j];
+      x = std::round(x * f) / f;
+      if (x == 0) x = 0;  // no "-0"
+    }
+  const Affine to_parent = parent_to_canvas.inverse();
+  for (size_t v = 0; v < affine.size(); ++v) {
+    const std::vector<double> p = keyed_value(w.keys, times, w.trajectory, 6, v);
+    w.drawn.push_back(parent_to_canvas * wrapper_map(p.data(), centre, form) * to_parent);
+  }
+  return w;
 }
 
 }  // namespace svgm

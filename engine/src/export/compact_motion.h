@@ -39,14 +39,39 @@ PartMotion analyse_part_motion(const std::vector<double>& rest, const std::vecto
                                double tolerance);
 
 // The wrapper group's transform per value (in its parent's user space: `parent_to_canvas` maps
-// it to the canvas), decomposed for animateTransform and unwrapped, as a reducible trajectory:
-// 6 numbers per value (tx, ty, rotate, skewX in degrees, sx, sy).
-std::vector<double> wrapper_trajectory(const std::vector<Affine>& affine, const Affine& parent_to_canvas);
-TransformParts parts_at(const std::vector<double>& trajectory, size_t value);
+// it to the canvas), as a reducible trajectory of 6 numbers per value (tx, ty, rotate and skewX
+// in degrees, sx, sy), unwrapped. The rotation is about the rest shape's centre c (parent
+// space), so that a turning part's keys interpolate along its arc, not along a chord swung
+// about the document's far origin:
+//   SMIL:   translate(tx ty) rotate(r cx cy) skewX(k) scale(sx sy)
+//   Lottie: position c + t, anchor c, rotation r, scale s (no skew): T(c + t) R S T(-c)
+enum class WrapperForm { Smil, Lottie };
+std::vector<double> wrapper_trajectory(const std::vector<Affine>& affine, const Affine& parent_to_canvas, Vec2 centre,
+                                       WrapperForm form);
+// The map (parent space) that 6 trajectory numbers draw.
+Affine wrapper_map(const double* p, Vec2 centre, WrapperForm form);
 // The error of an interpolated wrapper transform against value i's: the largest distance in
 // canvas pixels it puts any of the rest points (canvas).
 SampleError wrapper_error(const std::vector<double>& trajectory, const std::vector<double>& rest,
-                          const Affine& parent_to_canvas);
+                          const Affine& parent_to_canvas, Vec2 centre, WrapperForm form);
+
+// A wrapper transform's written keys: the trajectory reduced within `tolerance` (of the exact
+// maps, on the rest points), its kept keys rounded to decimals measured per component
+// (translation within a quarter of the tolerance, angles and scales an eighth; `decimals` >= 0
+// fixes the translation's), and the canvas map the player draws at each value's time from
+// those rounded keys, which a residual shape is computed against. The Lottie form leaves the
+// skew out.
+struct WrapperKeys {
+  std::vector<double> trajectory;  // 6 numbers per value; kept keys rounded
+  ReducedKeys keys;
+  int translate_decimals = 0, rotate_decimals = 0, skew_decimals = 0, scale_decimals = 0;
+  std::vector<Affine> drawn;  // per value, canvas space
+};
+// `centre`: the rest shape's centre in the parent's space.
+WrapperKeys wrapper_keys(const std::vector<Affine>& affine, const Affine& parent_to_canvas, const std::vector<double>& rest,
+                         const std::vector<double>& times, double tolerance, int decimals, Vec2 centre, WrapperForm form);
+// The centre of the rest points (canvas) in the parent's space.
+Vec2 rest_centre(const std::vector<double>& rest, const Affine& parent_to_canvas);
 
 // The fewest decimals (0..max) at which rounding every number of `keys` of `values` (dim per
 // value) moves no sample by more than `budget` pixels, per `error`; `first`/`count` select

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "export/compact_motion.h"
+#include "export/keyframe_reduce.h"
 #include "svg/svg_number.h"
 #include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
@@ -38,6 +40,7 @@ class JsonText {
     return *this;
   }
   JsonText& coord(double v) { return num(v, coord_scale_); }
+  void set_decimals(int decimals) { coord_scale_ = std::pow(10.0, decimals); }
   JsonText& str(const std::string& t) { return raw(json_text(nlohmann::json(t))); }
   // {"a":0,"k":v}
   JsonText& fixed(double v, double scale) {
@@ -121,6 +124,35 @@ int lottie_join(LineJoin c) {
   return 1;
 }
 
+// A keyframe's easing towards the next: linear as SMIL's calcMode="linear", else the reducer's
+// curve (keyframe_reduce.h): "o" is the first handle, "i" the second.
+void write_easing(JsonText& j, const Easing& e) {
+  if (e.is_linear()) {
+    j.raw(",\"i\":{\"x\":1,\"y\":1},\"o\":{\"x\":0,\"y\":0}");
+    return;
+  }
+  j.raw(",\"i\":{\"x\":0.6667,\"y\":").num(e.y2, 1e4).raw("},\"o\":{\"x\":0.3333,\"y\":").num(e.y1, 1e4).raw("}");
+}
+
+// An animated property {"a":1,"k":[...]} of `dim` numbers per key (scaled by `factor`, at
+// `scale` rounding), from trajectory numbers at `at` of each `stride`-wide value.
+void write_animated(JsonText& j, const std::vector<double>& trajectory, size_t stride, size_t at, size_t dim,
+                    double factor, double scale, const ReducedKeys& r, const std::vector<double>& times, double frames) {
+  j.raw("{\"a\":1,\"k\":[");
+  for (size_t i = 0; i < r.keys.size(); ++i) {
+    if (i) j.raw(",");
+    j.raw("{\"t\":").num(times[r.keys[i]] * frames, kFrameScale).raw(",\"s\":[");
+    for (size_t d = 0; d < dim; ++d) {
+      if (d) j.raw(",");
+      j.num(factor * trajectory[r.keys[i] * stride + at + d], scale);
+    }
+    j.raw("]");
+    if (i + 1 < r.keys.size()) write_easing(j, r.easing[i]);
+    j.raw("}");
+  }
+  j.raw("]}");
+}
+
 }  // namespace
 
 LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
@@ -168,6 +200,12 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
 
   bool any_gradient = false;
   for (const std::string& w : scene.warnings) any_gradient = any_gradient || w.find(kGradientWarning) != std::string::npos;
+  const double tol = options.tolerance_px > 0 ? options.tolerance_px : compact_tolerance(scene.width, scene.height);
+  // Measured decimals: a static coordinate rounded by at most a quarter of the tolerance.
+  const int static_decimals = options.measured_decimals
+                                  ? std::clamp(static_cast<int>(std::ceil(std::log10(2.0 / tol))), 0, kMaxDecimals)
+                                  : options.decimals;
+  j.set_decimals(static_decimals);
   std::vector<double> rest;  // a static path's own points, in the layout of the fitted ones
   bool first_layer = true;
   for (auto it = order.rbegin(); it != order.rend(); ++it) {  // Lottie lists the top layer first
@@ -185,9 +223,84 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
         rest.push_back(q.x);
         rest.push_back(q.y);
       }
+    // The shape's keys (indices into the pass's values) and their easing; a compact export may
+    // keep fewer, move the path by its group's transform and keyframe only the residual shape.
+    bool shape_animated = animated;
+    std::vector<size_t> keys;
+    std::vector<Easing> easing;
+    std::vector<double> shape_values;  // when not empty: value i's points at [i * 2 * count]
+    std::string group_transform(kGroupTransform);
+    const size_t count = f >= 0 ? static_cast<size_t>(plan.path_cp_count[static_cast<size_t>(f)]) : 0;
+    if (animated) {
+      for (size_t i = 0; i < pass.seq.size(); ++i) keys.push_back(i);
+      easing.assign(keys.size() - 1, Easing{});
+    }
+    if (animated && options.compact && rest.size() == 2 * count) {
+      std::vector<const double*> vals;
+      for (int k : pass.seq) vals.push_back(&points[(static_cast<size_t>(k) * plan.n_cp + first) * 2]);
+      const PartMotion m = analyse_part_motion(rest, vals, tol);
+      shape_animated = m.moves;
+      if (m.moves) {
+        // Lottie's skew is not SVG's skewX: a motion whose skew matters stays in the shape.
+        double skew_miss = 0;
+        for (size_t v = 0; v < vals.size(); ++v) {
+          TransformParts with = decompose_affine(m.affine[v]), without = with;
+          without.skew_x_deg = 0;
+          const Affine a = compose_affine(with), b = compose_affine(without);
+          for (size_t i = 0; i < count; ++i) {
+            const Vec2 p = a.apply({rest[2 * i], rest[2 * i + 1]}), q = b.apply({rest[2 * i], rest[2 * i + 1]});
+            skew_miss = std::max(skew_miss, std::hypot(p.x - q.x, p.y - q.y));
+          }
+        }
+        double px_per_unit = 1;
+        std::vector<Affine> drawn;
+        if (skew_miss <= tol / 2) {
+          const Vec2 c = rest_centre(rest, Affine{});
+          const WrapperKeys w = wrapper_keys(m.affine, Affine{}, rest, pass.times, tol,
+                                             options.measured_decimals ? -1 : options.decimals, c, WrapperForm::Lottie);
+          std::vector<double> traj = w.trajectory;  // position = centre + t
+          for (size_t v = 0; v < vals.size(); ++v) traj[6 * v] += c.x, traj[6 * v + 1] += c.y;
+          const int dt = w.translate_decimals;
+          JsonText t(dt);
+          t.raw("{\"ty\":\"tr\",\"p\":");
+          write_animated(t, traj, 6, 0, 2, 1, std::pow(10.0, dt), w.keys, pass.times, frames);
+          t.raw(",\"a\":{\"a\":0,\"k\":[").coord(c.x).raw(",").coord(c.y).raw("]},\"s\":");
+          write_animated(t, traj, 6, 4, 2, 100, std::pow(10.0, std::max(0, w.scale_decimals - 2)), w.keys, pass.times, frames);
+          t.raw(",\"r\":");
+          write_animated(t, traj, 6, 2, 1, 1, std::pow(10.0, w.rotate_decimals), w.keys, pass.times, frames);
+          t.raw(",\"o\":{\"a\":0,\"k\":100},\"sk\":{\"a\":0,\"k\":0},\"sa\":{\"a\":0,\"k\":0}}");
+          group_transform = std::move(t.text());
+          drawn = w.drawn;
+          shape_animated = m.residual;
+          if (m.residual)
+            for (size_t v = 0; v < vals.size(); ++v) {
+              const Affine a = drawn[v];
+              px_per_unit = std::max(px_per_unit, a.mean_scale());
+              const Affine back = a.inverse();
+              for (size_t i = 0; i < count; ++i) {
+                const Vec2 q = back.apply({vals[v][2 * i], vals[v][2 * i + 1]});
+                shape_values.insert(shape_values.end(), {q.x, q.y});
+              }
+            }
+        } else {
+          for (const double* v : vals) shape_values.insert(shape_values.end(), v, v + 2 * count);
+        }
+        if (shape_animated) {
+          const SampleError derr = point_error(shape_values, 2 * count, px_per_unit);
+          const ReducedKeys r = reduce_keyframes(pass.times, shape_values, 2 * count, tol, derr);
+          keys = r.keys;
+          easing = r.easing;
+          j.set_decimals(options.measured_decimals
+                             ? measured_decimals(shape_values, 2 * count, keys, derr, tol / 4, 0, 2 * count, kMaxDecimals)
+                             : options.decimals);
+        }
+      }
+    }
     // The points of value `i` of the pass for this path.
     auto value_points = [&](size_t i) {
-      return animated ? &points[(static_cast<size_t>(pass.seq[i]) * plan.n_cp + first) * 2] : rest.data();
+      return !shape_animated        ? rest.data()
+             : shape_values.empty() ? &points[(static_cast<size_t>(pass.seq[i]) * plan.n_cp + first) * 2]
+                                    : &shape_values[i * 2 * count];
     };
 
     if (!first_layer) j.raw(",");
@@ -208,26 +321,27 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
       }
       const size_t n = (n_points - 1) / 3;
       bool merge = sp.closed && n >= 2;
-      for (size_t i = 0; merge && i < (animated ? pass.seq.size() : 1); ++i) {
-        const double* q = value_points(i) + 2 * cp;
+      for (size_t i = 0; merge && i < (shape_animated ? keys.size() : 1); ++i) {
+        const double* q = value_points(shape_animated ? keys[i] : 0) + 2 * cp;
         merge = std::fabs(q[6 * n] - q[0]) <= kSamePoint && std::fabs(q[6 * n + 1] - q[1]) <= kSamePoint;
       }
       if (!first_item) j.raw(",");
       first_item = false;
       j.raw("{\"ty\":\"sh\",\"ks\":");
-      if (!animated) {
+      if (!shape_animated) {
         j.raw("{\"a\":0,\"k\":");
         write_bezier(j, value_points(0) + 2 * cp, n_points, sp.closed, merge);
         j.raw("}}");
       } else {
         j.raw("{\"a\":1,\"k\":[");
-        for (size_t i = 0; i < pass.seq.size(); ++i) {
+        for (size_t i = 0; i < keys.size(); ++i) {
           if (i) j.raw(",");
-          j.raw("{\"t\":").num(pass.times[i] * frames, kFrameScale).raw(",\"s\":[");
-          write_bezier(j, value_points(i) + 2 * cp, n_points, sp.closed, merge);
+          j.raw("{\"t\":").num(pass.times[keys[i]] * frames, kFrameScale).raw(",\"s\":[");
+          write_bezier(j, value_points(keys[i]) + 2 * cp, n_points, sp.closed, merge);
           j.raw("]");
-          // Linear in time (the easing curve from (0,0) to (1,1)), as SMIL's calcMode="linear".
-          if (i + 1 < pass.seq.size()) j.raw(",\"i\":{\"x\":1,\"y\":1},\"o\":{\"x\":0,\"y\":0}");
+          // Linear in time (the easing curve from (0,0) to (1,1)), as SMIL's calcMode="linear",
+          // unless the compact export fitted an easing.
+          if (i + 1 < keys.size()) write_easing(j, easing[i]);
           j.raw("}");
         }
         j.raw("]}}");
@@ -251,7 +365,8 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
       j.raw(",\"r\":").raw(path.fill_rule == FillRule::EvenOdd ? "2" : "1").raw(",\"bm\":0}");
       first_item = false;
     }
-    j.raw(first_item ? "" : ",").raw(kGroupTransform).raw("]}]");
+    j.raw(first_item ? "" : ",").raw(group_transform).raw("]}]");
+    j.set_decimals(static_decimals);
     j.raw(",\"ip\":0,\"op\":").num(frames, kFrameScale).raw(",\"st\":0,\"bm\":0}");
   }
   for (size_t g = 0; g < scene.groups.size(); ++g) {

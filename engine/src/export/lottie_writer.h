@@ -36,6 +36,13 @@ struct LottieOptions {
   double fps = 30;                  // the timeline's frame rate (the target video's)
   int decimals = kDefaultDecimals;  // decimal places of coordinates and widths (canvas pixels)
   std::string name;                 // the animation's `nm` (the document's file name)
+  // The compact export (export/compact_motion.h): a path that does not move is static; a
+  // moving one's affine motion is its group's transform (`tr`: position, rotation, scale; a
+  // motion with skew stays in the shape), its shape keyframed only for what remains; every
+  // property with the fewest keyframes within the tolerance and bezier easing.
+  bool compact = false;
+  bool measured_decimals = false;  // compact: each layer's coordinates at the fewest decimals that keep the tolerance
+  double tolerance_px = 0;         // canvas pixels; 0: compact_tolerance(the canvas)
 };
 
 struct LottieDocument {
