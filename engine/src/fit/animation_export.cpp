@@ -145,7 +145,7 @@ ExportOutcome write_animation_files(const FitResult& result, const ExportSetting
   return outcome;
 }
 
-ExportOutcome export_fit_directory(const fs::path& dir, const fs::path& out, const ExportSettings& settings) {
+ExportOutcome export_fit_directory(const fs::path& dir, const fs::path& out, const ExportSettings& settings, bool lock) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw Error(dir.string() + ": not a folder");
   if (!fs::is_directory(dir / ".svgmotion", ec)) throw Error(dir.string() + ": not a svgmotion run or fit directory");
@@ -165,7 +165,8 @@ ExportOutcome export_fit_directory(const fs::path& dir, const fs::path& out, con
   if (plan.n_cp != result.n_cp)
     throw Error(result.svg + ": changed since the fit (" + std::to_string(plan.n_cp) + " control points, the fit has " +
                 std::to_string(result.n_cp) + "); fit it again");
-  RunLock lock(out, false, fit_output_names());
+  std::optional<RunLock> held;
+  if (lock) held.emplace(out, false, fit_output_names());
   return write_animation_files(result, settings, doc, plan,
                                out / (result.rejected ? "animation.failed.svg" : "animation.svg"));
 }

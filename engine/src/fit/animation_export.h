@@ -82,7 +82,8 @@ ExportOutcome write_animation_files(const FitResult& result, const ExportSetting
 // one) and writes the animation files into `out` (default DIR) per `settings`, without fitting.
 // Throws svgm::Error "<path>: <problem>" for a folder that is not a fit or run directory, a
 // missing checkpoint or one without a finished fit.
+// `lock`: hold `out`'s run lock meanwhile (false: the caller, a run, holds it).
 ExportOutcome export_fit_directory(const std::filesystem::path& dir, const std::filesystem::path& out,
-                                   const ExportSettings& settings);
+                                   const ExportSettings& settings, bool lock = true);
 
 }  // namespace svgm
