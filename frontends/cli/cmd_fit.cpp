@@ -50,7 +50,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
                              "--precision", "--inbetweens", "--max-segment", "--chroma-weight", "--denoise",
                              "--max-keyframes", "--start"},
                             {"--resume", "--no-track", "--no-gate", "--no-colour-correction", "--no-blur-matching", "--stabilise",
-                             "--group-transforms", "--all-iterations", "--force"});
+                             "--group-transforms", "--all-iterations", "--force", "--full"});
   if (a.positional.size() != 1)
     throw UsageError("fit: expected one input SVG (svgmotion fit IN.svg --target VIDEO -o OUT_DIR)");
   FitJob job;
@@ -102,7 +102,8 @@ int cmd_fit(const std::vector<std::string>& argv) {
   }
   job.stabilise = a.has("--stabilise");
   job.denoise_radius = a.get_int("--denoise", job.denoise_radius, 0, kMaxDenoiseRadius);
-  job.decimals = a.get_int("--precision", kDefaultDecimals, 0, kMaxDecimals);
+  job.decimals = a.get_int("--precision", -1, 0, kMaxDecimals);  // -1: measured
+  job.compact = !a.has("--full");
   job.inbetweens = a.get_int("--inbetweens", job.inbetweens, 0, kMaxInbetweens);
   job.group_transforms = a.has("--group-transforms");
   job.max_segment = a.get_double("--max-segment", job.max_segment);

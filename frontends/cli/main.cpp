@@ -32,6 +32,8 @@ usage:
                   [key.path=value ...]
   svgmotion report RUN_DIR [--device D]
   svgmotion config [--show CONFIG] [key.path=value ...]
+  svgmotion export RUN_DIR|FIT_DIR [-o OUT_DIR] [--precision N] [--inbetweens N]
+                   [--format svg,lottie,gif,mp4,webm] [--full]
   svgmotion plugins
   svgmotion devices [--warm]
   svgmotion palette N
@@ -100,7 +102,11 @@ Fits the SVG's paths to a target video (mp4, webm, avi, mov, or a folder of numb
                          once, or mirror
   --deform D             field (default: a smooth displacement field per part, so thin parts
                          hold together at any size) or free (the paper's per-point offsets)
-  --precision P          decimal places of the exported coordinates (default 3; 0..6)
+  --precision P          decimal places of the exported coordinates (default: the fewest that
+                         keep the compact export's tolerance; 0..6)
+  --full                 write every value of every path (the per-frame export) instead of the
+                         compact one (only what moves, fewest keyframes, affine motion as a
+                         transform on a new <g> around the element)
   --inbetweens N         smooth in-between shapes per keyframe interval (default 3; 0..16;
                          0 leaves them to the player's straight lines: smallest files)
   --group-transforms     each part's motion, where affine, as <animateTransform> elements
@@ -186,6 +192,19 @@ Lists every config key with its default, its type and its meaning (from configs/
 built in). With --show, prints the config CONFIG (a file, or a built-in one by name: default,
 fast, paper) merged over the defaults with the overrides after it, as YAML that `run` takes;
 each setting that is not a default says where it came from.
+)"},
+    {"export", R"(usage: svgmotion export RUN_DIR|FIT_DIR [options]
+
+Writes a finished fit's animation again from DIR/checkpoint.bin, without fitting: change the
+precision, the in-betweens or compact/full, or make clips, in a second instead of a refit.
+
+  -o, --output DIR     where to write (default: DIR itself; another folder becomes a run directory)
+  --precision N        decimal places of the coordinates (default: the fewest that keep the
+                       compact tolerance, a quarter pixel at 1024 px; 0..6)
+  --inbetweens N       smooth in-between shapes per keyframe interval (default 3; 0..16)
+  --format LIST        comma-separated: svg, lottie (animation.json), gif, mp4, webm (clips are
+                       rendered from animation.svg, which is written with them); default svg,lottie
+  --full               every value of every path (the per-frame export)
 )"},
     {"plugins", "usage: svgmotion plugins\n\nLists the stage plugins found (stage, name, version, path) and every\nrefused module with its reason.\n"},
     {"devices", "usage: svgmotion devices [--warm [--device D]]\n\nLists the OpenCL devices; * marks the one --device auto picks.\n"
@@ -281,6 +300,7 @@ int main(int argc, char** argv) {
     if (cmd == "batch") return svgm::cli::cmd_batch(args);
     if (cmd == "report") return svgm::cli::cmd_report(args);
     if (cmd == "config") return svgm::cli::cmd_config(args);
+    if (cmd == "export") return svgm::cli::cmd_export(args);
     std::fprintf(stderr, "svgmotion: unknown command '%s' (try svgmotion help)\n", cmd.c_str());
     return 2;
   } catch (const svgm::Rejected& e) {

@@ -75,7 +75,9 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   if (cw.is_string() && cw.get<std::string>() != "auto")
     throw std::runtime_error("stages.fitter.chroma_weight must be auto or a number in (0, 1], not '" + cw.get<std::string>() + "'");
   if (cw.is_number()) job.chroma_weight = cw.get<double>();
-  job.decimals = c.value("precision", svgm::kDefaultDecimals);
+  // precision: auto (the fewest decimals that keep the compact export's tolerance) or 0..6.
+  if (c.contains("precision") && c.at("precision").is_number_integer()) job.decimals = c.at("precision").get<int>();
+  job.compact = c.value("compact", true);
   job.inbetweens = c.value("inbetweens", job.inbetweens);
   job.group_transforms = c.value("group_transforms", false);
   job.max_segment = c.value("max_segment", job.max_segment);

@@ -103,7 +103,7 @@ fit)
   mkdir -p "$tmp/frames"
   for i in 0 1 2 3; do must "$bin" render "$data/examples/man.svg" -o "$tmp/frames/$i.png" --size 64 2>/dev/null; done
   must "$bin" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out" --iterations 40 --keyframes 3 --size 64 2>"$tmp/err"
-  check "fit writes animation.svg with d keyframes" 'grep -q "<animate attributeName=\"d\"" "$tmp/out/animation.svg"'
+  check "fit writes animation.svg with keyframes (d, or a wrapper's transform)" 'grep -Eq "<animate(Transform)? attributeName=\"(d|transform)\"" "$tmp/out/animation.svg"'
   check "fit writes a preview and a report" '[[ -s $tmp/out/preview.mp4 && -s $tmp/out/fit.json && -s $tmp/out/checkpoint.bin ]]'
   check "the animation renders at a time" '"$bin" render "$tmp/out/animation.svg" -o "$tmp/t.png" --time 0.1 2>/dev/null && [[ -s $tmp/t.png ]]'
   must "$bin" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out" --iterations 60 --keyframes 3 --size 64 --resume 2>"$tmp/err"
@@ -118,7 +118,7 @@ fit)
     mkdir -p "$tmp/tf_$t"
     for i in 0 1; do "$bin" render "$tmp/$t.svg" -o "$tmp/tf_$t/$i.png" --size 32 2>"$tmp/tr_$t"; done
     "$bin" fit "$tmp/$t.svg" --target "$tmp/tf_$t" -o "$tmp/to_$t" --iterations 3 --keyframes 2 --size 32 --quiet 2>"$tmp/te_$t"
-    check "a tiny drawing ($t) renders and fits" '[[ $? -eq 0 && -s $tmp/tf_$t/1.png ]] && grep -q "<animate attributeName=\"d\"" "$tmp/to_$t/animation.svg" || { cat "$tmp/tr_$t" "$tmp/te_$t"; false; }'
+    check "a tiny drawing ($t) renders and fits" '[[ $? -eq 0 && -s $tmp/tf_$t/1.png ]] && grep -Eq "<animate(Transform)? attributeName=\"(d|transform)\"" "$tmp/to_$t/animation.svg" || { cat "$tmp/tr_$t" "$tmp/te_$t"; false; }'
   done
   check "--resume continues from the checkpoint" 'grep -q "resuming at iteration 40" "$tmp/err" && grep -q "\"iterations\": 60" "$tmp/out/fit.json"'
   # Levels (svgmotion/log.h): --quiet hides info lines, --verbose adds debug lines.
@@ -134,9 +134,9 @@ fit)
   mkdir -p "$tmp/tf_sq"
   must "$bin" render "$tmp/sq0.svg" -o "$tmp/tf_sq/0.png" --size 32 2>/dev/null
   must "$bin" render "$tmp/sq1.svg" -o "$tmp/tf_sq/1.png" --size 32 2>/dev/null
-  must "$bin" fit "$tmp/sq0.svg" --target "$tmp/tf_sq" -o "$tmp/sq_baked" --iterations 40 --keyframes 2 --size 32 --loop once --quiet 2>/dev/null
+  must "$bin" fit "$tmp/sq0.svg" --target "$tmp/tf_sq" -o "$tmp/sq_baked" --iterations 40 --keyframes 2 --size 32 --loop once --full --quiet 2>/dev/null
   cp -r "$tmp/sq_baked" "$tmp/sq_tf"
-  must "$bin" fit "$tmp/sq0.svg" --target "$tmp/tf_sq" -o "$tmp/sq_tf" --iterations 40 --keyframes 2 --size 32 --loop once --resume --group-transforms --quiet 2>/dev/null
+  must "$bin" fit "$tmp/sq0.svg" --target "$tmp/tf_sq" -o "$tmp/sq_tf" --iterations 40 --keyframes 2 --size 32 --loop once --resume --group-transforms --full --quiet 2>/dev/null
   check "--group-transforms writes the square's motion as animateTransform" 'grep -q "<animateTransform attributeName=\"transform\" type=\"translate\" additive=\"sum\"" "$tmp/sq_tf/animation.svg" && grep -q "\"as_transforms\": 1" "$tmp/sq_tf/fit.json" && ! grep -q animateTransform "$tmp/sq_baked/animation.svg"'
   for t in 0 100; do
     "$bin" render "$tmp/sq_baked/animation.svg" -o "$tmp/sq_b$t.png" --size 64 --time $t 2>/dev/null
@@ -175,7 +175,7 @@ pipeline)
   "${run[@]}" >"$tmp/out1" 2>"$tmp/err"
   check "run --quiet prints no info line" '! grep -q "^run: " "$tmp/err"'
   check "run writes log.txt: a header, the stage lines and debug lines" 'grep -q "===== svgmotion .*: svgmotion run --input" "$tmp/run/log.txt" && grep -q " info    run: fitter (opencl) ..." "$tmp/run/log.txt" && grep -q " debug   fitter: plugin opencl" "$tmp/run/log.txt" && grep -q " debug   fit: iteration 30/30" "$tmp/run/log.txt"'
-  check "run writes animation.svg and every intermediate" '[[ -s $tmp/run/animation.svg && -s $tmp/run/grouped.svg && -s $tmp/run/recolored.png && -s $tmp/run/palette.json && -s $tmp/run/target.mp4 && -s $tmp/run/ranking.json && -s $tmp/run/layers.json ]] && grep -q "<animate attributeName=\"d\"" "$tmp/run/animation.svg"'
+  check "run writes animation.svg and every intermediate" '[[ -s $tmp/run/animation.svg && -s $tmp/run/grouped.svg && -s $tmp/run/recolored.png && -s $tmp/run/palette.json && -s $tmp/run/target.mp4 && -s $tmp/run/ranking.json && -s $tmp/run/layers.json ]] && grep -Eq "<animate(Transform)? attributeName=\"(d|transform)\"" "$tmp/run/animation.svg"'
   check "run writes animation.json (Lottie) with the user's own ids and groups" '[[ -s $tmp/run/animation.json ]] && grep -q "\"ty\":4,\"nm\":\"thigh_left\"" "$tmp/run/animation.json" && grep -q "\"ty\":3,\"nm\":\"body\"" "$tmp/run/animation.json"'
   "${run[@]}" >"$tmp/out2" 2>&1
   check "a second run reports every stage up to date" 'grep -q "every stage is up to date" "$tmp/out2" && [[ $(grep -c "up to date" "$tmp/out2") -eq 8 ]]'
@@ -201,7 +201,7 @@ pipeline)
   must "$bin" run --input "$data/examples/man.svg" -o "$tmp/prompt" --quiet --prompt "the man waves his right arm" \
     stages.ranker.accept_flagged=true stages.video.candidates=2 stages.video.frames=9 stages.video.size=96 \
     stages.fitter.iterations=30 stages.fitter.keyframes=3 stages.fitter.size=64 >"$tmp/out6" 2>&1
-  check "a prompt alone runs the whole pipeline with the default plugins" '[[ -s $tmp/prompt/animation.svg && -s $tmp/prompt/candidates/00.mp4 && -s $tmp/prompt/candidates/01.mp4 ]] && grep -q "\"motion\"" "$tmp/prompt/ranking.json" && grep -q "<animate attributeName=\"d\"" "$tmp/prompt/animation.svg"'
+  check "a prompt alone runs the whole pipeline with the default plugins" '[[ -s $tmp/prompt/animation.svg && -s $tmp/prompt/candidates/00.mp4 && -s $tmp/prompt/candidates/01.mp4 ]] && grep -q "\"motion\"" "$tmp/prompt/ranking.json" && grep -Eq "<animate(Transform)? attributeName=\"(d|transform)\"" "$tmp/prompt/animation.svg"'
   check "the procedural video says what moves in motion.json (the arm named right)" 'grep -q "\"verb\": \"wave\"" "$tmp/prompt/motion.json" && grep -A3 "\"parts\": \[" "$tmp/prompt/motion.json" | grep -q "\"arm_right\""'
   expect_error "an explicit motion plan with an unknown verb is refused before any stage" "stages.video.options.motion: motion plan 'zoom:arm': unknown verb 'zoom'" "$tmp/none4" \
     run --input "$data/examples/man.svg" -o "$tmp/none4" --quiet "stages.video.options.motion=zoom:arm"

@@ -25,7 +25,8 @@ struct SvgReadLimits {
   // after the up to 16384x scale to the render size.
   double max_coordinate = 1e15;
   // When >= 0: paths with an <animate attributeName="d"> take their animated shape at this
-  // time in seconds (SMIL: values, keyTimes, dur, repeatCount, calcMode linear or discrete).
+  // time in seconds (SMIL: values, keyTimes, dur, repeatCount, calcMode linear, discrete or
+  // spline with keySplines).
   double animation_time = -1;
 };
 

@@ -17,7 +17,7 @@ SmilClock smil_clock(std::string_view text, std::string_view name) {
   const pugi::xml_parse_result parsed = doc.load_buffer(text.data(), text.size());
   if (!parsed) throw Error(std::string(name) + ": " + parsed.description());
   SmilClock clock;
-  for (const pugi::xpath_node& x : doc.select_nodes("//*[local-name()='animate']")) {
+  for (const pugi::xpath_node& x : doc.select_nodes("//*[local-name()='animate' or local-name()='animateTransform']")) {
     const pugi::xml_node a = x.node();
     const auto dur = svg::parse_clock_value(a.attribute("dur").value());
     if (!dur || !(*dur > 0)) continue;

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "export/lottie_writer.h"
+#include "fit/animation_export.h"
 #include "fit/blur_match.h"
 #include "fit/checkpoint.h"
 #include "fit/chroma_calibration.h"
@@ -695,42 +696,53 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   else fs::remove(out / "animation.failed.svg", ec);
   fs::remove(out / (rejected && job.gate ? "animation.json" : "animation.failed.json"), ec);
   fs::remove(out / (rejected && job.gate ? "animation.lottie" : "animation.failed.lottie"), ec);
-  // What is written: the keyframes (a closed loop's last one is its first) and smooth
-  // in-betweens at the target's frames between them (inbetween.h).
-  const size_t per_key = static_cast<size_t>(final_fit.raster_plan().n_cp) * 2;
-  std::vector<double> frame_times;
-  for (int i = 0; i < N; ++i) frame_times.push_back(static_cast<double>(i) / (N - 1));
-  const InBetween written = in_between(points, timing.key_times, per_key, frame_times,
-                                       job.inbetweens, timing.close_loop);
-  AnimationTiming wt = timing;
-  wt.keyframes = static_cast<int>(written.times.size());
-  wt.key_times = written.times;
-  wt.close_loop = false;  // in_between already wrote the first keyframe's shape last
+  // The fit's result, kept in checkpoint.bin for `svgmotion export`, and written out per the
+  // job's export settings (animation_export.h).
+  FitResult result;
+  // Paths inside the output folder are kept relative to it, so a moved run directory exports.
+  auto stored_path = [&](const fs::path& p) {
+    if (p.empty()) return std::string();
+    const fs::path abs = fs::absolute(p).lexically_normal(), dir = fs::absolute(out).lexically_normal();
+    const fs::path rel = abs.lexically_relative(dir);
+    return !rel.empty() && *rel.begin() != ".." ? rel.string() : abs.string();
+  };
+  result.svg = stored_path(input);
+  if (job.export_into) result.export_into = stored_path(*job.export_into);
+  result.export_name = job.export_name;
+  result.max_segment = job.max_segment;
+  result.rejected = rejected && job.gate;
+  result.timing = timing;
+  result.fps = final_target.fps;
+  result.source_frames = N;
+  result.n_cp = final_fit.raster_plan().n_cp;
+  result.points = points;
+  if (!stopped) save_checkpoint(ckpt, key, fitter.state(), &result);
+  ExportSettings es;
+  es.compact = job.compact;
+  es.decimals = job.decimals;
+  es.inbetweens = job.inbetweens;
+  ExportDocument edoc;
+  edoc.scene = export_scene ? *export_scene : scene;
+  if (export_scene) edoc.map = map;
+  edoc.into = into;
   std::optional<GroupMotionExport> group_motion;
-  if (job.group_transforms) {
-    group_motion = group_motion_export(final_fit.fit_plan(), final_fit.raster_plan(), final_fit.state().params,
-                                       timing.keyframes, final_size.view, final_size.width, final_size.height,
-                                       timing.key_times, frame_times, job.inbetweens, timing.close_loop, written.times);
-    for (const std::string& b : group_motion->baked) log::warning("group %s", b.c_str());
-  }
-  for (const auto& w : write_animation_svg(into, export_scene ? *export_scene : scene, final_fit.raster_plan(), written.points,
-                                           wt, anim, export_scene ? &map : nullptr, job.decimals,
-                                           group_motion ? &group_motion->paths : nullptr)) {
-    std::string line = w;
-    if (!job.export_name.empty() && line.rfind(into.string(), 0) == 0)
-      line = job.export_name + line.substr(into.string().size());
-    log::warning("%s", line.c_str());
-  }
-  // The same values as Lottie, beside it (animation.json, or animation.failed.json).
-  LottieOptions lottie;
-  lottie.fps = final_target.fps;
-  lottie.decimals = job.decimals;
-  lottie.name = into.filename().string();
-  lottie.exported_svg = anim;  // gradients follow their shapes as animation.svg draws them
-  lottie.dotlottie = fs::path(anim).replace_extension(".lottie");
-  for (const auto& w : write_lottie(fs::path(anim).replace_extension(".json"), export_scene ? *export_scene : scene,
-                                    final_fit.raster_plan(), written.points, wt, lottie, export_scene ? &map : nullptr))
-    log::warning("%s", w.c_str());
+  const ExportOutcome exported = write_animation_files(
+      result, es, edoc, final_fit.raster_plan(), anim,
+      [&](const std::vector<double>& written_times, const std::vector<double>& frame_times) -> std::optional<PathMotion> {
+        if (!job.group_transforms) return std::nullopt;
+        group_motion = group_motion_export(final_fit.fit_plan(), final_fit.raster_plan(), final_fit.state().params,
+                                           timing.keyframes, final_size.view, final_size.width, final_size.height,
+                                           timing.key_times, frame_times, job.inbetweens, timing.close_loop, written_times);
+        for (const std::string& b : group_motion->baked) log::warning("group %s", b.c_str());
+        return group_motion->paths;
+      });
+  for (const std::string& w : exported.warnings) log::warning("%s", w.c_str());
+  AnimationTiming wt = timing;
+  wt.keyframes = exported.values_written;
+  if (job.compact)
+    log::debug("fit: compact export: %d paths still, %d moved by a group transform (%d with a residual d); %zu keys of %zu values",
+               exported.stats.still, exported.stats.transformed, exported.stats.residual, exported.stats.keys,
+               exported.stats.values);
   const int active = final_fit.active_keyframes();
   const int W = final_size.width, H = final_size.height;
   write_preview_video(out / "preview.mp4", active, 2,

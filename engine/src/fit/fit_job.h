@@ -58,7 +58,12 @@ struct FitJob {
   int inbetweens = 3;  // fit --inbetweens, stages.fitter.inbetweens (0..kMaxInbetweens)
   // Decimal places of the exported coordinates (animation.svg in the element's units,
   // animation.json in canvas pixels).
-  int decimals = kDefaultDecimals;
+  // -1: measured, the fewest that keep the compact export's tolerance (kDefaultDecimals for
+  // the full export).
+  int decimals = -1;
+  // The compact export (smil_writer.h write_compact_animation_svg), the default; false: every
+  // written value of every path, as before (fit --full, stages.fitter.compact: false).
+  bool compact = true;
   // Each group's motion, where affine, as <animateTransform> elements on its paths, with the
   // paths' `d` values in the group's moving frame (group_transform.h); false: baked into `d`.
   bool group_transforms = false;  // fit --group-transforms, stages.fitter.group_transforms

@@ -88,6 +88,27 @@ std::vector<std::string> write_animation_svg(const std::filesystem::path& source
                                              int decimals = kDefaultDecimals,
                                              const PathMotion* motion = nullptr);
 
+// The compact export (export/compact_motion.h), the default: a path that does not move is left
+// as the document has it; a moving one is wrapped in a new <g> whose additive animateTransforms
+// (translate, rotate, skewX, scale) carry its affine motion, the element itself untouched (an
+// edit of its `d` or of the group's transform shows in playback), and gets an <animate
+// attributeName="d"> only for what the affine map misses beyond the tolerance. Each animation
+// keeps the fewest keyframes within the tolerance (keyframe_reduce.h), with keySplines easing,
+// and numbers at the fewest decimals that keep it (`decimals` >= 0: that many for coordinates).
+struct CompactExport {
+  double tolerance_px = 0;  // canvas pixels; 0: compact_tolerance(the canvas)
+  int decimals = -1;        // coordinates' decimal places; -1: measured
+};
+struct CompactStats {
+  int still = 0, transformed = 0, residual = 0;  // paths
+  size_t values = 0, keys = 0;                   // written values per animation, before and after
+};
+std::vector<std::string> write_compact_animation_svg(const std::filesystem::path& source, const Scene& scene,
+                                                     const RasterPlan& plan, const std::vector<double>& points,
+                                                     const AnimationTiming& timing, const std::filesystem::path& out,
+                                                     const ExportMap* map, const CompactExport& options,
+                                                     CompactStats* stats = nullptr);
+
 // The `d` of one path from its control points (canvas space), mapped into the element's
 // coordinates by `to_local`: "M x y C x y x y x y ... Z" per subpath, numbers rounded to
 // `decimals` places.

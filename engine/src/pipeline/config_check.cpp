@@ -125,7 +125,8 @@ void check_config(const nlohmann::json& c, const PluginHost& host) {
   one_of(c, "stages.fitter.colors", {"auto", "palette", "original"});
   one_of(c, "stages.fitter.loop", {"loop", "once", "mirror"});
   one_of(c, "stages.fitter.deform", {"field", "free"});
-  whole(c, "stages.fitter.precision", 0, 6);  // kMaxDecimals (smil_writer.h)
+  if (const nlohmann::json& p = at(c, "stages.fitter.precision"); !p.is_null() && !(p.is_string() && p.get<std::string>() == "auto"))
+    whole(c, "stages.fitter.precision", 0, 6);  // kMaxDecimals (smil_writer.h)
   whole(c, "stages.fitter.inbetweens", 0, 16);  // kMaxInbetweens (fit_job.h)
   real(c, "stages.fitter.max_segment", 0, 1, false);
   whole(c, "stages.fitter.denoise", 0, 4);  // kMaxDenoiseRadius (fit_job.h)

@@ -1,5 +1,6 @@
 // The pipeline runner (see pipeline.h).
 #include "pipeline/pipeline.h"
+#include "fit/animation_export.h"
 #include "pipeline/candidate_choice.h"
 #include "pipeline/canvas_room.h"
 #include "svgmotion/atomic_file.h"
@@ -179,6 +180,15 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
     // so choosing another one does not ask the ranker again.
     nlohmann::json hashed = section;
     if (sf.stage == "ranker" && hashed.is_object()) hashed.erase("choose");
+    // The fitter's export settings change how the fit is written, not the fit: a change is
+    // re-exported from its checkpoint (fit/animation_export.h) instead of refitting.
+    nlohmann::json export_keys = nlohmann::json::object();
+    if (sf.stage == "fitter" && hashed.is_object())
+      for (const char* k : {"precision", "inbetweens", "compact"})
+        if (hashed.contains(k)) {
+          export_keys[k] = hashed[k];
+          hashed.erase(k);
+        }
     h.add(json_text(hashed));
     h.add(config.value("prompt", ""));
     h.add(std::to_string(config.value("seed", 0)));
@@ -193,6 +203,26 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
       nlohmann::json mj = nlohmann::json::parse(m, nullptr, false);
       up_to_date = mj.is_object() && mj.value("hash", "") == h.hex();
       for (const auto& [k, v] : sf.outputs.items()) up_to_date = up_to_date && fs::exists(run / v.get<std::string>());
+    }
+    if (up_to_date && sf.stage == "fitter") {
+      std::ifstream m(manifest);
+      const nlohmann::json mj = nlohmann::json::parse(m, nullptr, false);
+      if (mj.is_object() && mj.value("export", nlohmann::json()) != export_keys) {
+        ExportSettings es;
+        es.compact = section.value("compact", true);
+        if (section.contains("precision") && section["precision"].is_number_integer()) es.decimals = section["precision"].get<int>();
+        es.inbetweens = section.value("inbetweens", es.inbetweens);
+        try {
+          export_fit_directory(run, run, es, /*lock=*/false);
+          nlohmann::json updated = mj;
+          updated["export"] = export_keys;
+          write_atomic(manifest, json_text(updated, 2) + "\n");
+          log::info("fitter: export settings changed; re-exported from checkpoint.bin without fitting");
+        } catch (const Error& e) {
+          log::debug("fitter: re-export failed (%s); fitting again", e.what());
+          up_to_date = false;
+        }
+      }
     }
     StageReport r{sf.stage, plugin, up_to_date, 0};
     log::debug("%s: plugin %s (%s), inputs %s, key %s: %s", sf.stage.c_str(), plugin.c_str(),
@@ -216,7 +246,7 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
       // A plugin answering "cache": false (say, a network fallback) is asked again next run.
       if (response.value("cache", true))
         write_atomic(manifest, json_text(nlohmann::json{{"stage", sf.stage}, {"plugin", plugin}, {"hash", h.hex()},
-                                                        {"seconds", r.seconds}}, 2) + "\n");
+                                                        {"seconds", r.seconds}, {"export", export_keys}}, 2) + "\n");
       else
         fs::remove(manifest, ec);
     }

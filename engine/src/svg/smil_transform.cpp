@@ -1,5 +1,6 @@
 // animateTransform at a time (see smil_transform.h).
 #include "svg/smil_transform.h"
+#include "svg/smil_spline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -98,7 +99,7 @@ Affine animated_transform(pugi::xml_node element, double seconds, const Affine& 
     if (i + 1 < values.size() && std::string_view(a.attribute("calcMode").value()) != "discrete") {
       const std::vector<double> w = numbers(values[i + 1]);
       const double span = times[i + 1] - times[i];
-      const double u = span > 0 ? std::clamp((*f - times[i]) / span, 0.0, 1.0) : 0.0;
+      const double u = spline_fraction(a, i, span > 0 ? std::clamp((*f - times[i]) / span, 0.0, 1.0) : 0.0);
       for (size_t j = 0; j < std::min(v.size(), w.size()); ++j) v[j] = (1 - u) * v[j] + u * w[j];
     }
     const Affine t = of_type(a.attribute("type").value(), v);

@@ -2,11 +2,11 @@
 // of exports written with group transforms (fit --group-transforms, fit/group_transform.h).
 //
 // Supported: `values` with optional `keyTimes` (uniform when absent), calcMode linear or
-// discrete, `dur`, repeatCount (a number or indefinite), fill="freeze", additive sum or
+// discrete or spline (keySplines), `dur`, repeatCount (a number or indefinite), fill="freeze", additive sum or
 // replace, types translate, scale, rotate (with an optional centre), skewX and skewY. Several
 // animations on one element apply in document order: a sum post-multiplies onto what came
 // before (the transform attribute first), a replace starts afresh (SVG 1.1, 19.2.14). `from`,
-// `to`, `by`, begin offsets and spline timing are not read (an element using them keeps the
+// `to`, `by` and begin offsets are not read (an element using them keeps the
 // value built so far).
 #pragma once
 

@@ -29,6 +29,7 @@
 #include "svg/path_data.h"
 #include "svg/svg_number.h"
 #include "svg/svg_style.h"
+#include "svg/smil_spline.h"
 #include "svg/smil_transform.h"
 #include "svg/transform_list.h"
 #include "svgmotion/error.h"
@@ -485,7 +486,8 @@ std::vector<Subpath> Reader::shape_geometry(pugi::xml_node n, std::string_view t
 }
 
 // The shape of a path with a SMIL <animate attributeName="d"> at `time` seconds: the active
-// keyframe interval by keyTimes (uniform when absent), numbers interpolated linearly (for our
+// keyframe interval by keyTimes (uniform when absent), numbers interpolated linearly (eased by
+// keySplines with calcMode="spline") (for our
 // own M/C/Z exports this is exactly SMIL's path interpolation), or the interval's first value
 // for calcMode="discrete" or shapes of different structure. Returns false when there is no
 // usable animation (the static d is used).
@@ -538,7 +540,7 @@ bool Reader::animated_path(pugi::xml_node n, double time, std::vector<Subpath>& 
   }
   svg::parse_path_data(values[i + 1], b);
   const double span = times[i + 1] - times[i];
-  const double u = span > 0 ? std::clamp((f - times[i]) / span, 0.0, 1.0) : 0.0;
+  const double u = svg::spline_fraction(anim, i, span > 0 ? std::clamp((f - times[i]) / span, 0.0, 1.0) : 0.0);
   bool same = a.size() == b.size();
   for (size_t s = 0; same && s < a.size(); ++s) same = a[s].points.size() == b[s].points.size();
   if (same)

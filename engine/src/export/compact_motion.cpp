@@ -1,0 +1,178 @@
+// Per-path motion analysis of the compact exports (see compact_motion.h).
+#include "export/compact_motion.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+
+namespace svgm {
+
+double compact_tolerance(double canvas_width, double canvas_height) {
+  return kCompactTolerance1024 * std::max(canvas_width, canvas_height) / 1024.0;
+}
+
+namespace {
+
+// The least-squares affine map from points `from` to `to` (n pairs each); a translation when
+// the points span no area (a line, a lone point), where an affine map is not determined.
+Affine fit_affine(const std::vector<double>& from, const double* to) {
+  const size_t n = from.size() / 2;
+  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d bx = Eigen::Vector3d::Zero(), by = Eigen::Vector3d::Zero();
+  double cx = 0, cy = 0, tx = 0, ty = 0;
+  for (size_t i = 0; i < n; ++i) {
+    cx += from[2 * i], cy += from[2 * i + 1], tx += to[2 * i], ty += to[2 * i + 1];
+  }
+  cx /= std::max<size_t>(n, 1), cy /= std::max<size_t>(n, 1), tx /= std::max<size_t>(n, 1), ty /= std::max<size_t>(n, 1);
+  // Centred coordinates keep the normal equations well conditioned far from the origin.
+  for (size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d r(from[2 * i] - cx, from[2 * i + 1] - cy, 1);
+    m += r * r.transpose();
+    bx += r * (to[2 * i] - tx);
+    by += r * (to[2 * i + 1] - ty);
+  }
+  Eigen::Matrix2d s = m.topLeftCorner<2, 2>();
+  if (n < 3 || s.determinant() < 1e-9 * std::max(1.0, s.trace() * s.trace()))
+    return Affine::translate(tx - cx, ty - cy);
+  const Eigen::Vector3d ax = m.ldlt().solve(bx), ay = m.ldlt().solve(by);
+  // x' = ax0 (x - cx) + ax1 (y - cy) + ax2 + tx
+  Affine a{ax(0), ay(0), ax(1), ay(1), 0, 0};
+  a.e = tx + ax(2) - ax(0) * cx - ax(1) * cy;
+  a.f = ty + ay(2) - ay(0) * cx - ay(1) * cy;
+  return a;
+}
+
+}  // namespace
+
+PartMotion analyse_part_motion(const std::vector<double>& rest, const std::vector<const double*>& values,
+                               double tolerance) {
+  PartMotion out;
+  const size_t n = rest.size() / 2;
+  double moved = 0;
+  for (const double* v : values)
+    for (size_t i = 0; i < n; ++i)
+      moved = std::max(moved, std::hypot(v[2 * i] - rest[2 * i], v[2 * i + 1] - rest[2 * i + 1]));
+  if (moved <= tolerance) return out;
+  out.moves = true;
+  for (const double* v : values) {
+    const Affine a = fit_affine(rest, v);
+    out.affine.push_back(a);
+    for (size_t i = 0; i < n; ++i) {
+      const Vec2 p = a.apply({rest[2 * i], rest[2 * i + 1]});
+      out.affine_miss_px = std::max(out.affine_miss_px, std::hypot(p.x - v[2 * i], p.y - v[2 * i + 1]));
+    }
+  }
+  out.residual = out.affine_miss_px > tolerance;
+  return out;
+}
+
+Affine wrapper_map(const double* p, Vec2 c, WrapperForm form) {
+  const Affine linear = compose_affine({0, 0, p[2], form == WrapperForm::Smil ? p[3] : 0, p[4], p[5]});
+  if (form == WrapperForm::Lottie)
+    return Affine::translate(c.x + p[0], c.y + p[1]) * linear * Affine::translate(-c.x, -c.y);
+  const Affine rotate_about = Affine::translate(c.x, c.y) * Affine::rotate_deg(p[2]) * Affine::translate(-c.x, -c.y);
+  return Affine::translate(p[0], p[1]) * rotate_about * compose_affine({0, 0, 0, p[3], p[4], p[5]});
+}
+
+std::vector<double> wrapper_trajectory(const std::vector<Affine>& affine, const Affine& parent_to_canvas, Vec2 c,
+                                       WrapperForm form) {
+  const Affine to_parent = parent_to_canvas.inverse();
+  std::vector<double> out;
+  TransformParts prev;
+  for (size_t v = 0; v < affine.size(); ++v) {
+    const Affine m = to_parent * affine[v] * parent_to_canvas;
+    TransformParts p = decompose_affine(m);
+    if (v > 0) {
+      p.rotate_deg = unwrap_degrees(p.rotate_deg, prev.rotate_deg);
+      p.skew_x_deg = unwrap_degrees(p.skew_x_deg, prev.skew_x_deg);
+    }
+    prev = p;
+    // The translation that, with the rotation about c, gives m: SMIL t = m(0) - c + R c
+    // (m's own translation is m(0)); Lottie t = m(c) - c.
+    Vec2 t;
+    if (form == WrapperForm::Lottie) {
+      t = m.apply(c) - c;
+    } else {
+      const Vec2 rc = Affine::rotate_deg(p.rotate_deg).apply(c);
+      t = Vec2{m.e, m.f} - c + rc;
+    }
+    out.insert(out.end(), {t.x, t.y, p.rotate_deg, p.skew_x_deg, p.sx, p.sy});
+  }
+  return out;
+}
+
+Vec2 rest_centre(const std::vector<double>& rest, const Affine& parent_to_canvas) {
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (size_t k = 0; k + 1 < rest.size(); k += 2) {
+    x0 = std::min(x0, rest[k]), x1 = std::max(x1, rest[k]);
+    y0 = std::min(y0, rest[k + 1]), y1 = std::max(y1, rest[k + 1]);
+  }
+  if (rest.empty()) return {};
+  return parent_to_canvas.inverse().apply({0.5 * (x0 + x1), 0.5 * (y0 + y1)});
+}
+
+SampleError wrapper_error(const std::vector<double>& trajectory, const std::vector<double>& rest,
+                          const Affine& parent_to_canvas, Vec2 c, WrapperForm form) {
+  const Affine to_parent = parent_to_canvas.inverse();
+  return [&trajectory, &rest, parent_to_canvas, to_parent, c, form](size_t i, const double* approx) {
+    const Affine exact = parent_to_canvas * wrapper_map(&trajectory[6 * i], c, form) * to_parent;
+    const Affine drawn = parent_to_canvas * wrapper_map(approx, c, form) * to_parent;
+    double worst = 0;
+    for (size_t k = 0; k + 1 < rest.size(); k += 2) {
+      const Vec2 a = exact.apply({rest[k], rest[k + 1]}), b = drawn.apply({rest[k], rest[k + 1]});
+      worst = std::max(worst, std::hypot(a.x - b.x, a.y - b.y));
+    }
+    return worst;
+  };
+}
+
+int measured_decimals(const std::vector<double>& values, size_t dim, const std::vector<size_t>& keys,
+                      const SampleError& error, double budget, size_t first, size_t count, int max_decimals) {
+  std::vector<double> rounded(dim);
+  for (int d = 0; d < max_decimals; ++d) {
+    const double f = std::pow(10.0, d);
+    double worst = 0;
+    for (size_t k : keys) {
+      std::copy(values.begin() + static_cast<std::ptrdiff_t>(k * dim),
+                values.begin() + static_cast<std::ptrdiff_t>((k + 1) * dim), rounded.begin());
+      for (size_t j = first; j < first + count; ++j) rounded[j] = std::round(rounded[j] * f) / f;
+      worst = std::max(worst, error(k, rounded.data()));
+    }
+    if (worst <= budget) return d;
+  }
+  return max_decimals;
+}
+
+WrapperKeys wrapper_keys(const std::vector<Affine>& affine, const Affine& parent_to_canvas, const std::vector<double>& rest,
+                         const std::vector<double>& times, double tolerance, int decimals, Vec2 centre, WrapperForm form) {
+  WrapperKeys w;
+  w.trajectory = wrapper_trajectory(affine, parent_to_canvas, centre, form);
+  const std::vector<double> exact = w.trajectory;
+  const SampleError err = wrapper_error(exact, rest, parent_to_canvas, centre, form);
+  w.keys = reduce_keyframes(times, exact, 6, tolerance, err);
+  // Rounding is measured against the exact maps, with the tolerance of the finest use (a path
+  // without a residual keeps its motion within `tolerance`; the budgets are shares of it).
+  const int max_decimals = 8;
+  w.translate_decimals = decimals >= 0 ? decimals : measured_decimals(exact, 6, w.keys.keys, err, tolerance / 4, 0, 2, max_decimals);
+  w.rotate_decimals = measured_decimals(exact, 6, w.keys.keys, err, tolerance / 8, 2, 1, max_decimals);
+  w.skew_decimals = measured_decimals(exact, 6, w.keys.keys, err, tolerance / 8, 3, 1, max_decimals);
+  w.scale_decimals = measured_decimals(exact, 6, w.keys.keys, err, tolerance / 8, 4, 2, max_decimals);
+  const int places[6] = {w.translate_decimals, w.translate_decimals, w.rotate_decimals, w.skew_decimals, w.scale_decimals,
+                         w.scale_decimals};
+  for (size_t k : w.keys.keys)
+    for (size_t j = 0; j < 6; ++j) {
+      const double f = std::pow(10.0, places[j]);
+      double& x = w.trajectory[6 * k + j];
+      x = std::round(x * f) / f;
+      if (x == 0) x = 0;  // no "-0"
+    }
+  const Affine to_parent = parent_to_canvas.inverse();
+  for (size_t v = 0; v < affine.size(); ++v) {
+    const std::vector<double> p = keyed_value(w.keys, times, w.trajectory, 6, v);
+    w.drawn.push_back(parent_to_canvas * wrapper_map(p.data(), centre, form) * to_parent);
+  }
+  return w;
+}
+
+}  // namespace svgm

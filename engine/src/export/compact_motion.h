@@ -1,0 +1,82 @@
+// What the compact exports (SMIL and Lottie) write of one path's motion: nothing when it does
+// not move, an affine map of its rest shape per written value (a transform on a wrapping
+// group, which an editor can change and whose playback still starts from the rest shape) and,
+// only when the shape itself changes beyond the tolerance, the residual shape in that moving
+// frame. Keyframes are then reduced in time (keyframe_reduce.h) and numbers rounded to the
+// fewest decimals that keep the tolerance.
+//
+// The tolerance is in canvas pixels (the SVG's size after its viewBox mapping, Lottie's
+// coordinates): a quarter of a pixel when the drawing is shown 1024 px across its larger side
+// (kCompactTolerance1024). Each stage keeps its own error within it (the affine map's miss
+// decides whether a residual is written; the reduction holds every written sample; rounding
+// moves a point by at most a quarter of it), so the compact file draws within about twice the
+// tolerance of the full per-frame export.
+#pragma once
+
+#include <vector>
+
+#include "export/keyframe_reduce.h"
+#include "fit/group_transform.h"
+#include "svgmotion/affine.h"
+
+namespace svgm {
+
+// Pixels at a 1024-px rendering of the drawing's larger side.
+constexpr double kCompactTolerance1024 = 0.25;
+double compact_tolerance(double canvas_width, double canvas_height);
+
+struct PartMotion {
+  bool moves = false;          // false: the document's shape, unanimated
+  std::vector<Affine> affine;  // per value: canvas-space map from the rest shape
+  bool residual = false;       // the shape changes beyond the affine map: animate `d` too
+  double affine_miss_px = 0;   // the affine maps' largest miss of a control point
+};
+
+// `rest` holds the document's control points (canvas, n (x, y) pairs); `values` the pass's
+// written shapes (values.size() pointers to n pairs each). The affine map is the least-squares
+// one (translation only when the points are collinear).
+PartMotion analyse_part_motion(const std::vector<double>& rest, const std::vector<const double*>& values,
+                               double tolerance);
+
+// The wrapper group's transform per value (in its parent's user space: `parent_to_canvas` maps
+// it to the canvas), as a reducible trajectory of 6 numbers per value (tx, ty, rotate and skewX
+// in degrees, sx, sy), unwrapped. The rotation is about the rest shape's centre c (parent
+// space), so that a turning part's keys interpolate along its arc, not along a chord swung
+// about the document's far origin:
+//   SMIL:   translate(tx ty) rotate(r cx cy) skewX(k) scale(sx sy)
+//   Lottie: position c + t, anchor c, rotation r, scale s (no skew): T(c + t) R S T(-c)
+enum class WrapperForm { Smil, Lottie };
+std::vector<double> wrapper_trajectory(const std::vector<Affine>& affine, const Affine& parent_to_canvas, Vec2 centre,
+                                       WrapperForm form);
+// The map (parent space) that 6 trajectory numbers draw.
+Affine wrapper_map(const double* p, Vec2 centre, WrapperForm form);
+// The error of an interpolated wrapper transform against value i's: the largest distance in
+// canvas pixels it puts any of the rest points (canvas).
+SampleError wrapper_error(const std::vector<double>& trajectory, const std::vector<double>& rest,
+                          const Affine& parent_to_canvas, Vec2 centre, WrapperForm form);
+
+// A wrapper transform's written keys: the trajectory reduced within `tolerance` (of the exact
+// maps, on the rest points), its kept keys rounded to decimals measured per component
+// (translation within a quarter of the tolerance, angles and scales an eighth; `decimals` >= 0
+// fixes the translation's), and the canvas map the player draws at each value's time from
+// those rounded keys, which a residual shape is computed against. The Lottie form leaves the
+// skew out.
+struct WrapperKeys {
+  std::vector<double> trajectory;  // 6 numbers per value; kept keys rounded
+  ReducedKeys keys;
+  int translate_decimals = 0, rotate_decimals = 0, skew_decimals = 0, scale_decimals = 0;
+  std::vector<Affine> drawn;  // per value, canvas space
+};
+// `centre`: the rest shape's centre in the parent's space.
+WrapperKeys wrapper_keys(const std::vector<Affine>& affine, const Affine& parent_to_canvas, const std::vector<double>& rest,
+                         const std::vector<double>& times, double tolerance, int decimals, Vec2 centre, WrapperForm form);
+// The centre of the rest points (canvas) in the parent's space.
+Vec2 rest_centre(const std::vector<double>& rest, const Affine& parent_to_canvas);
+
+// The fewest decimals (0..max) at which rounding every number of `keys` of `values` (dim per
+// value) moves no sample by more than `budget` pixels, per `error`; `first`/`count` select
+// which of the dim numbers are rounded (others are kept exact for the measure).
+int measured_decimals(const std::vector<double>& values, size_t dim, const std::vector<size_t>& keys,
+                      const SampleError& error, double budget, size_t first, size_t count, int max_decimals);
+
+}  // namespace svgm

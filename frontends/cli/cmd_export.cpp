@@ -1,0 +1,71 @@
+// `svgmotion export RUN_DIR|FIT_DIR`: writes a finished fit's animation again from its
+// checkpoint.bin (fit/animation_export.h) with other export settings, without fitting: the
+// compact or full SVG, the Lottie, and clips rendered from the SVG.
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <sstream>
+
+#include "cli/cli_args.h"
+#include "cli/commands.h"
+#include "fit/animation_export.h"
+#include "fit/fit_job.h"
+#include "svgmotion/error.h"
+#include "svgmotion/log.h"
+
+namespace svgm::cli {
+
+namespace fs = std::filesystem;
+
+int cmd_export(const std::vector<std::string>& argv) {
+  const Args a = parse_args("export", argv, {"-o", "--output", "--precision", "--format", "--inbetweens", "--tolerance"}, {"--full"});
+  if (a.positional.size() != 1)
+    throw UsageError("export: expected one run or fit directory (svgmotion export RUN_DIR|FIT_DIR [-o OUT_DIR])");
+  const fs::path dir = a.positional[0];
+  const auto o = a.get("-o") ? a.get("-o") : a.get("--output");
+  const fs::path out = o ? fs::path(*o) : dir;
+  ExportSettings settings;
+  settings.compact = !a.has("--full");
+  settings.decimals = a.get_int("--precision", -1, 0, kMaxDecimals);
+  settings.tolerance_1024 = a.get_double("--tolerance", settings.tolerance_1024);
+  if (!(settings.tolerance_1024 > 0 && settings.tolerance_1024 <= 64))
+    throw Error("export: --tolerance wants pixels at 1024 px, more than 0 and at most 64");
+  settings.inbetweens = a.get_int("--inbetweens", settings.inbetweens, 0, kMaxInbetweens);
+  // Formats: every one named is written; clips are rendered from animation.svg, so it is written
+  // with them.
+  std::vector<std::string> clips;
+  settings.svg = settings.lottie = false;
+  std::stringstream list(a.get("--format").value_or("svg,lottie"));
+  for (std::string f; std::getline(list, f, ',');) {
+    if (f == "svg") settings.svg = true;
+    else if (f == "lottie") settings.lottie = true;
+    else if (f == "gif" || f == "mp4" || f == "webm") clips.push_back(f), settings.svg = true;
+    else throw Error("export: unknown format '" + f + "' (svg, lottie, gif, mp4, webm)");
+  }
+  if (!settings.svg && !settings.lottie) throw Error("export: --format names no format (svg, lottie, gif, mp4, webm)");
+  const auto t0 = std::chrono::steady_clock::now();
+  const ExportOutcome r = export_fit_directory(dir, out, settings);
+  for (const std::string& w : r.warnings) log::warning("%s", w.c_str());
+  std::string wrote;
+  auto add = [&](const fs::path& p) {
+    std::error_code ec;
+    const auto size = fs::file_size(p, ec);
+    wrote += (wrote.empty() ? "" : ", ") + p.filename().string() + " (" + std::to_string(ec ? 0 : (size + 512) / 1024) + " kB)";
+  };
+  if (settings.svg) add(r.svg);
+  if (settings.lottie) add(fs::path(r.svg).replace_extension(".json"));
+  for (const std::string& c : clips) {
+    const fs::path clip = out / ("animation." + c);
+    char fps[32];
+    std::snprintf(fps, sizeof fps, "%g", r.fps);
+    if (const int rc = cmd_render({r.svg.string(), "-o", clip.string(), "--fps", fps, "--quiet"}); rc != 0) return rc;
+    add(clip);
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  log::info("svgmotion: exported from %s without fitting in %.2fs (%s, %d values per path%s): %s",
+            (dir / "checkpoint.bin").c_str(), seconds, settings.compact ? "compact" : "full", r.values_written,
+            settings.compact ? (", " + std::to_string(r.stats.keys) + " keys kept").c_str() : "", wrote.c_str());
+  return 0;
+}
+
+}  // namespace svgm::cli
