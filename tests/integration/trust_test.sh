@@ -134,10 +134,11 @@ check "render -o X.svg is refused (PNG images and clips only), nothing written" 
 check "render -o X.PNG writes a PNG" '[[ $? -eq 0 && $(head -c 4 "$tmp/OUT.PNG" | od -An -c | tr -d " ") == "211PNG" ]]'
 
 # 6. Ctrl-C in run: one line saying what the run directory holds, exit 130; the next run
-#    resumes the fit from its checkpoint instead of starting again.
+#    resumes the fit from its checkpoint instead of starting again (at a fixed number of
+#    keyframes: keyframes added from the target refit with iterations of their own).
 int=("$bin" run --input "$tmp/ball.svg" -o "$tmp/int" --quiet stages.video.plugin=file "stages.video.path=$tmp/leave"
      stages.ranker.plugin=first stages.fitter.iterations=3000 stages.fitter.keyframes=3 stages.fitter.size=64
-     stages.fitter.gate=false stages.fitter.stop_when_converged=false)
+     stages.fitter.gate=false stages.fitter.stop_when_converged=false stages.fitter.max_keyframes=3)
 "${int[@]}" >/dev/null 2>"$tmp/int.err" &
 pid=$!
 # Interrupted as soon as the first checkpoint (iteration 250 of 3000) is on disk, so the fit is

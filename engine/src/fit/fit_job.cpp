@@ -519,7 +519,10 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   };
   run_stage(fitter, 0, true);
   bar.coarse_done();
-  save_checkpoint(ckpt, key, fitter.state());
+  // The coarse fit's state is what a resume starts from, also once the outputs are written
+  // (below, with the result for `svgmotion export`): the refinement is not checkpointed.
+  const FitState coarse_state = fitter.state();
+  save_checkpoint(ckpt, key, coarse_state);
   const bool coarse_converged = fitter.converged();
   if (coarse_converged) {
     log::debug("fit: the loss stopped falling; the fit ends at iteration %d of %d", fitter.iteration(), fo.iterations);
@@ -716,7 +719,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   result.source_frames = N;
   result.n_cp = final_fit.raster_plan().n_cp;
   result.points = points;
-  if (!stopped) save_checkpoint(ckpt, key, fitter.state(), &result);
+  if (!stopped) save_checkpoint(ckpt, key, coarse_state, &result);
   ExportSettings es;
   es.compact = job.compact;
   es.decimals = job.decimals;
