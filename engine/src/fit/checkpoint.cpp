@@ -109,31 +109,14 @@ FitState load_checkpoint(const fs::path& file, const std::string& key) {
   if (!f) throw Error(file.string() + ": cannot open: " + std::strerror(errno));
   char magic[8];
   std::vector<char> k;
-  std::vector<int> head;
   FitState s;
   if (!f.read(magic, sizeof magic) ||
       (std::memcmp(magic, kMagic, sizeof magic) != 0 && std::memcmp(magic, kMagicWithoutSchedule, sizeof magic) != 0))
     throw Error(file.string() + ": not an svgmotion checkpoint");
-  if (!get(f, k) || !get(f, head) || head.size() != 2 || !get(f, s.steps))
-    throw Error(file.string() + ": truncated checkpoint");
+  if (!get(f, k)) throw Error(file.string() + ": truncated checkpoint");
   if (std::string(k.begin(), k.end()) != key)
     throw Error(file.string() + ": made for another SVG, target or settings; remove it or drop --resume");
-  for (auto* v : {&s.params, &s.m_params, &s.v_params, &s.offsets, &s.m_offsets, &s.v_offsets,
-                  &s.field, &s.m_field, &s.v_field})
-    if (!get(f, *v)) throw Error(file.string() + ": truncated checkpoint");
-  s.iteration = head[0];
-  s.active = head[1];
-  if (std::memcmp(magic, kMagic, sizeof magic) == 0) {
-    std::vector<int> ints;
-    std::vector<float> floats;
-    if (!get(f, ints) || ints.size() != 2 || !get(f, floats) || floats.size() != 2 || !get(f, s.plateau_ref))
-      throw Error(file.string() + ": truncated checkpoint");
-    s.schedule = true;
-    s.converged = ints[0] != 0;
-    s.last_activation = ints[1];
-    s.newest_ref = floats[0];
-    s.lr_scale = floats[1];
-  }
+  if (!read_state(f, std::memcmp(magic, kMagic, sizeof magic) == 0, s)) throw Error(file.string() + ": truncated checkpoint");
   return s;
 }
 

@@ -406,6 +406,21 @@ void check_animation_inputs(const Scene& scene, const RasterPlan& plan, const st
     throw Error("internal: export map does not match the document");
 }
 
+namespace {
+
+// The user's document again, as the writers add to it: its text (kept for what precedes the
+// root element) and the parsed tree; returns the root element's name offset in the text.
+ptrdiff_t reread_source(const fs::path& source, std::string& original, pugi::xml_document& doc) {
+  std::ifstream in(source, std::ios::binary);
+  original.assign((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in && !in.eof()) throw Error(source.string() + ": cannot re-read for export");
+  const pugi::xml_parse_result parsed = doc.load_buffer(original.data(), original.size(), kKeepDocumentParse);
+  if (!parsed) throw Error(source.string() + ": cannot re-read for export: " + parsed.description());
+  return doc.document_element().offset_debug();
+}
+
+}  // namespace
+
 std::vector<std::string> write_animation_svg(const fs::path& source, const Scene& scene,
                                              const RasterPlan& plan,
                                              const std::vector<double>& points,
@@ -414,13 +429,9 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
   check_animation_inputs(scene, plan, points, timing, map, decimals);
   if (motion && (motion->values != timing.keyframes || motion->as_transform.size() != plan.path_cp_first.size()))
     throw Error("internal: group motion does not match the animation");
-  std::ifstream in(source, std::ios::binary);
-  const std::string original((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in && !in.eof()) throw Error(source.string() + ": cannot re-read for export");
+  std::string original;
   pugi::xml_document doc;
-  const pugi::xml_parse_result parsed = doc.load_buffer(original.data(), original.size(), kKeepDocumentParse);
-  if (!parsed) throw Error(source.string() + ": cannot re-read for export: " + parsed.description());
-  const ptrdiff_t root_name_at = doc.document_element().offset_debug();
+  const ptrdiff_t root_name_at = reread_source(source, original, doc);
 
   const AnimationPass pass = animation_pass(timing);
   const std::vector<int>& seq = pass.seq;
@@ -621,13 +632,9 @@ std::vector<std::string> write_compact_animation_svg(const fs::path& source, con
                                                      const fs::path& out, const ExportMap* map,
                                                      const CompactExport& options, CompactStats* stats) {
   check_animation_inputs(scene, plan, points, timing, map, std::max(0, options.decimals));
-  std::ifstream in(source, std::ios::binary);
-  const std::string original((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in && !in.eof()) throw Error(source.string() + ": cannot re-read for export");
+  std::string original;
   pugi::xml_document doc;
-  const pugi::xml_parse_result parsed = doc.load_buffer(original.data(), original.size(), kKeepDocumentParse);
-  if (!parsed) throw Error(source.string() + ": cannot re-read for export: " + parsed.description());
-  const ptrdiff_t root_name_at = doc.document_element().offset_debug();
+  const ptrdiff_t root_name_at = reread_source(source, original, doc);
   const double tol = options.tolerance_px > 0 ? options.tolerance_px : compact_tolerance(scene.width, scene.height);
 
   const AnimationPass pass = animation_pass(timing);

@@ -118,11 +118,14 @@ std::string staged_input(const nlohmann::json& config, const std::string& input)
   const nlohmann::json room = video.value("room", nlohmann::json("auto"));
   double share = 0;
   char why[160] = "";
-  const Scene scene = read_svg_file(input);
+  // Parsed only when room may be given (the grouper parses it anyway).
+  const bool maybe = room.is_number() ? room.get<double>() > 0 : room == "auto" && video.value("plugin", "") == "procedural";
+  if (!maybe) return text;
+  const Scene scene = read_svg_string(text, shown_path(input));
   if (room.is_number()) {
     share = room.get<double>();
     std::snprintf(why, sizeof why, "stages.video.room is %g", share);
-  } else if (room == "auto" && video.value("plugin", "") == "procedural") {
+  } else {
     const FigureSpan span = figure_span(scene);
     if (!span.empty && std::max(span.x, span.y) >= kFillsCanvas) {
       share = kAutoRoom;

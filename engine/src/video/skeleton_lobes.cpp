@@ -30,6 +30,7 @@ LobeKind lobe_kind(motion::LimbKind k) {
 std::vector<ArmLobe> skeleton_lobes(const Scene& scene, const std::vector<int>& paths) {
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
   std::vector<std::vector<std::vector<Vec2>>> rings(paths.size());
+  std::vector<std::vector<char>> closed(paths.size());  // per ring: its subpath is closed
   for (size_t k = 0; k < paths.size(); ++k) {
     const Path& p = scene.paths[static_cast<size_t>(paths[k])];
     const bool fill = p.has_fill && p.fill.a > 0, stroke = p.has_stroke && p.stroke.color.a > 0 && p.stroke.width > 0;
@@ -38,7 +39,10 @@ std::vector<ArmLobe> skeleton_lobes(const Scene& scene, const std::vector<int>& 
       std::vector<Vec2> ring;
       append_curve_samples(sp, 8, true, ring);
       for (const Vec2& q : ring) x0 = std::min(x0, q.x), y0 = std::min(y0, q.y), x1 = std::max(x1, q.x), y1 = std::max(y1, q.y);
-      if (ring.size() >= 2) rings[k].push_back(std::move(ring));
+      if (ring.size() >= 2) {
+        rings[k].push_back(std::move(ring));
+        closed[k].push_back(sp.closed);
+      }
     }
   }
   if (!(x1 > x0 && y1 > y0)) return {};
@@ -62,7 +66,7 @@ std::vector<ArmLobe> skeleton_lobes(const Scene& scene, const std::vector<int>& 
     }
     if (p.has_stroke && p.stroke.color.a > 0 && p.stroke.width > 0)
       for (size_t r = 0; r < poly.size(); ++r)
-        cv::polylines(mask, std::vector<std::vector<cv::Point>>{poly[r]}, p.subpaths[std::min(r, p.subpaths.size() - 1)].closed,
+        cv::polylines(mask, std::vector<std::vector<cv::Point>>{poly[r]}, closed[k][r] != 0,
                       cv::Scalar(255), std::max(1, static_cast<int>(std::lround(p.stroke.width * s))));
   }
   const motion::Skeleton sk = motion::skeletonise(mask);
