@@ -117,13 +117,29 @@ std::vector<float> draw_lines(Kind kind, int k) {
   });
 }
 
-TargetFrames make_candidate(const Motion& m, Kind kind, bool lines = false) {
+// Two shapes meeting at a seam, red over the left of a green bar, the seam sliding right 0.3 px
+// a frame; and a small disc of olive, the middle of red and green, standing still. The seam's
+// pixels are mixtures of red and green: where the seam crosses a pixel near its middle they
+// are nearer olive than either (a palette of distinct colours has such a colour often).
+const std::vector<Rgba> kSeamPalette = {{0.84f, 0.16f, 0.16f, 1}, {0.16f, 0.64f, 0.16f, 1}, {0.50f, 0.40f, 0.16f, 1}};
+
+std::vector<float> draw_seam(int k) {
+  const double seam = 40.2 + 0.3 * k;
+  return supersampled([&](double u, double v, double* c) {
+    auto set = [&](const Rgba& q) { c[0] = q.r, c[1] = q.g, c[2] = q.b; };
+    if (u > 20 && u < 76 && v > 10 && v < 80) set(u < seam ? kSeamPalette[0] : kSeamPalette[1]);
+    if ((u - 86) * (u - 86) + (v - 86) * (v - 86) < 4.0 * 4.0) set(kSeamPalette[2]);
+  });
+}
+
+template <class Draw>
+TargetFrames candidate_of(Draw draw) {
   TargetFrames t;
   t.width = kW, t.height = kH, t.keyframes = kK, t.source_frames = kK, t.fps = 24;
   const size_t P = static_cast<size_t>(kW) * kH;
   for (int k = 0; k < kK; ++k) {
     t.source_index.push_back(k);
-    const std::vector<float> f = lines ? draw_lines(kind, k) : draw_frame(m, kind, kind == Kind::Frozen ? 0 : k);
+    const std::vector<float> f = draw(k);
     t.raw.insert(t.raw.end(), f.begin(), f.end());
     // mask: darkest channel < 0.97; sdf: city-block distance to the mask (two passes).
     std::vector<uint8_t> mask(P);
@@ -153,6 +169,10 @@ TargetFrames make_candidate(const Motion& m, Kind kind, bool lines = false) {
     t.sdf.insert(t.sdf.end(), sdf.begin(), sdf.end());
   }
   return t;
+}
+
+TargetFrames make_candidate(const Motion& m, Kind kind, bool lines = false) {
+  return candidate_of([&](int k) { return lines ? draw_lines(kind, k) : draw_frame(m, kind, kind == Kind::Frozen ? 0 : k); });
 }
 
 const char* const kNames[5] = {"clean", "drift", "blob", "vanish", "frozen"};
@@ -280,6 +300,26 @@ TEST_CASE("rank pixel: a clean line drawing keeps its colours; a drifting one is
   const CandidateScore drift = score_candidate(make_candidate(m, Kind::Drift, true), kPalette);
   INFO(drift.to_json().dump(2));
   CHECK(has(drift.defects, "colour drift"));
+}
+
+TEST_CASE("rank pixel: a seam of two colours is no area of the colour between them") {
+  // The olive disc keeps its 50 px; counted by nearest colour alone, olive gained the seam's
+  // 70 rows whenever the seam crossed a pixel near its middle (50 -> 120 px and back: a
+  // "continuity" defect on a steady slide).
+  const CandidateScore s = score_candidate(candidate_of(draw_seam), kSeamPalette);
+  INFO(s.to_json().dump(2));
+  CHECK(s.continuity.value < 0.5);
+  CHECK_FALSE(has(s.defects, "continuity"));
+  // The same disc growing to three times its area in one frame is still a jump.
+  const CandidateScore grown = score_candidate(candidate_of([](int k) {
+    return supersampled([&](double u, double v, double* c) {
+      const double r = k < kK / 2 ? 4.0 : 7.0;
+      if (u > 20 && u < 76 && v > 10 && v < 80) c[0] = kSeamPalette[0].r, c[1] = kSeamPalette[0].g, c[2] = kSeamPalette[0].b;
+      if ((u - 86) * (u - 86) + (v - 86) * (v - 86) < r * r) c[0] = kSeamPalette[2].r, c[1] = kSeamPalette[2].g, c[2] = kSeamPalette[2].b;
+    });
+  }), kSeamPalette);
+  INFO(grown.to_json().dump(2));
+  CHECK(has(grown.defects, "continuity"));
 }
 
 TEST_CASE("rank pixel: chaotic motion and bad input") {

@@ -40,15 +40,18 @@ double dist(const Rgb& a, const Rgb& b) {
   return std::sqrt(x * x + y * y + z * z);
 }
 
-// Distance from p to the segment c -> white (c blended with the white background).
-double dist_to_white_blend(const Rgb& p, const Rgb& c) {
-  const Rgb d{1 - c[0], 1 - c[1], 1 - c[2]};
+// Distance from p to the segment a -> b (a mixture of the two colours).
+double dist_to_mixture(const Rgb& p, const Rgb& a, const Rgb& b) {
+  const Rgb d{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
   const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-  if (dd < 1e-12) return dist(p, c);
+  if (dd < 1e-12) return dist(p, a);
   const double t =
-      std::clamp(((p[0] - c[0]) * d[0] + (p[1] - c[1]) * d[1] + (p[2] - c[2]) * d[2]) / dd, 0.0, 1.0);
-  return dist(p, {c[0] + t * d[0], c[1] + t * d[1], c[2] + t * d[2]});
+      std::clamp(((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1] + (p[2] - a[2]) * d[2]) / dd, 0.0, 1.0);
+  return dist(p, {a[0] + t * d[0], a[1] + t * d[1], a[2] + t * d[2]});
 }
+
+// Distance from p to the segment c -> white (c blended with the white background).
+double dist_to_white_blend(const Rgb& p, const Rgb& c) { return dist_to_mixture(p, c, {1, 1, 1}); }
 
 // Pixels of `m` (W*H, 0/1) whose 8 neighbours (inside the image) are all set.
 std::vector<uint8_t> core_of(const std::vector<uint8_t>& m, int W, int H) {
@@ -170,6 +173,7 @@ CandidateScore score_candidate(const TargetFrames& t, const std::vector<Rgba>& p
     const double bg_tolerance = 1 - o.white_threshold;
     std::vector<uint8_t> fg(P, 0), far(P, 0);
     std::vector<float> dnear(P, 0.f), dblend(P, 0.f);
+    std::vector<int32_t> label(P, -1);  // the palette colour a pixel is nearest to, -1 none near
     size_t nfg = 0;
     for (size_t i = 0; i < P; ++i) {
       const Rgb p{f[4 * i], f[4 * i + 1], f[4 * i + 2]};
@@ -186,9 +190,39 @@ CandidateScore score_candidate(const TargetFrames& t, const std::vector<Rgba>& p
       }
       dnear[i] = static_cast<float>(best);
       dblend[i] = static_cast<float>(expl);
-      if (best < o.far_distance) area[bi][k] += 1;
+      if (best < o.far_distance) label[i] = static_cast<int32_t>(bi);
       if (expl > o.far_distance) far[i] = 1;
     }
+    // Areas per colour, without the pixels that are a mixture of two of their neighbours'
+    // colours: where two shapes meet, anti-aliasing and the colour bleeding of 4:2:0 video
+    // leave a seam of in-between colours, and among twenty-odd maximally distinct palette
+    // colours one often lies near the middle of two others. A ladybird's spot (36 px at the
+    // analysis size) counted 36-42 px in some frames and 90-107 px in others as it crawled
+    // steadily up, the seams of its shell and head counting for it as they crossed pixel
+    // rows, and every procedural candidate was flagged "continuity". A shape of the colour
+    // itself, even one pixel wide, has neighbours of other colours on both sides but is no
+    // mixture of them.
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) {
+        const size_t i = static_cast<size_t>(y) * W + x;
+        const int32_t c = label[i];
+        if (c < 0) continue;
+        const Rgb p{f[4 * i], f[4 * i + 1], f[4 * i + 2]};
+        std::array<const Rgb*, 9> around{};
+        size_t n = 0;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int u = x + dx, v = y + dy;
+            if ((dx == 0 && dy == 0) || u < 0 || v < 0 || u >= W || v >= H) continue;
+            const size_t j = static_cast<size_t>(v) * W + u;
+            const Rgb* q = !fg[j] ? &bg : label[j] >= 0 && label[j] != c ? &pal[static_cast<size_t>(label[j])] : nullptr;
+            if (q && std::find(around.begin(), around.begin() + n, q) == around.begin() + n) around[n++] = q;
+          }
+        bool mixture = false;
+        for (size_t a = 0; a < n && !mixture; ++a)
+          for (size_t b = a + 1; b < n && !mixture; ++b) mixture = dist_to_mixture(p, *around[a], *around[b]) < dnear[i];
+        if (!mixture) area[static_cast<size_t>(c)][k] += 1;
+      }
     total[k] = static_cast<double>(nfg);
     has_fg[k] = nfg > 0;
     if (nfg > 0) {

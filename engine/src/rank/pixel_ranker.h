@@ -12,7 +12,10 @@
 //                     (anti-aliased edges), with at least one pixel whose 3x3 neighbourhood is
 //                     all far (so 1-2 px seams between shapes do not count), as a fraction f of
 //                     the foreground, max over frames: (f - 0.005) / 0.03
-//   continuity        per palette colour, its area per frame: a colour present in frame 0 that
+//   continuity        per palette colour, its area per frame (its pixels nearest to it within
+//                     far_distance, but for those nearer to a mixture of two of their 8
+//                     neighbours' colours (or the background) than to it: seams where two
+//                     other shapes meet): a colour present in frame 0 that
 //                     (almost) vanishes, one absent in frame 0 that appears, or a big relative
 //                     jump between consecutive frames: max of (0.3 - min/first) / 0.25,
 //                     (0.3 - first/max) / 0.25 and (jump - 0.35) / 0.4
