@@ -93,6 +93,24 @@ TEST_CASE("flapping: both wings swing, mirrored; the body only bobs; the loop cl
   CHECK(loop_gap(pts, F) < 1e-9);
 }
 
+TEST_CASE("a beat of the wings swings them, mirrored; a named heart's beat is a pulse") {
+  const Fixture fx("bird.svg");
+  const MotionPlan plan = fx.plan("the dove beats its wings");
+  REQUIRE(plan.actions.size() == 1);
+  const PlannedAction& a = plan.actions[0];
+  CHECK(a.verb == "pulse");
+  CHECK(a.primitive == Primitive::Swing);
+  CHECK(a.parts == std::vector<int>{1, 2});
+  CHECK(a.why.find("limbs beat back and forth: a swing") != std::string::npos);
+  const int F = 13;
+  const auto t = fx.travel(animate_plan(fx.scene, fx.rig, plan, F), F);
+  CHECK(t[0] == 0.0);  // the body
+  CHECK(t[1] > 10.0);
+  CHECK(t[2] == doctest::Approx(t[1]));
+  // Not a limb: the verb keeps its own primitive.
+  CHECK(fx.plan("the bird's body beats").actions[0].primitive == Primitive::Pulse);
+}
+
 TEST_CASE("a prompt naming the limbs leaves out its limb verbs' whole-figure accents; the body holds") {
   const Fixture fx("bird.svg");
   const MotionPlan plan = fx.plan("A bird hovers, flapping its wings");

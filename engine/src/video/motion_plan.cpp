@@ -430,6 +430,15 @@ struct Builder {
       }
       a.primitive = verb.on_part;
     }
+    // Limbs do not throb: a rhythmic verb of size aimed at them ("the dove beats its wings",
+    // "her heart beats" is a pulse of the named heart) beats them back and forth. The pulse of a
+    // dove's wings had found no wing and throbbed a detail.
+    std::string beat;
+    if (a.primitive == Primitive::Pulse && is_limb_target(target)) {
+      a.primitive = Primitive::Swing;
+      amp = kPartAmplitude[static_cast<size_t>(Primitive::Swing)];
+      beat = "limbs beat back and forth: a swing";
+    }
     std::uniform_real_distribution<double> U(0, 1);
     a.amp = amp * mods.size * (a.primitive == Primitive::Spin ? 1 : 0.85 + 0.3 * U(rng));
     a.cycles = std::max(1, static_cast<int>(std::lround(base.cycles * mods.speed)));
@@ -583,6 +592,7 @@ struct Builder {
              : std::string(target_name(target)) + " (" + join(names, ", ") + ")");
     if (!note.empty()) a.why += "; " + note;
     if (!paddle.empty()) a.why += "; " + paddle;
+    if (!beat.empty()) a.why += "; " + beat;
     if (!instead.empty()) a.why += "; " + instead;
     if (!spacing.empty()) a.why += "; " + spacing;
     if (a.anchored != 0) {
