@@ -243,12 +243,14 @@ std::string candidate_scores(const json& c, const json& judge, const std::string
     s += "</ul>";
   }
   if (c.contains("signals") && c["signals"].is_object()) {
-    s += "<table class=\"svgm-signals\"><tr><th>signal</th><th>value</th><th>reason</th></tr>";
+    // Folded: five rows of reasons made each card twice as tall as its frames.
+    s += "<details><summary>the ranker's signals (" + std::to_string(c["signals"].size()) +
+         ")</summary><table class=\"svgm-signals\"><tr><th>signal</th><th>value</th><th>reason</th></tr>";
     for (const auto& [k, v] : c["signals"].items())
       s += "<tr><td>" + html_escape(k) + "</td><td>" +
            (v.is_object() && v.contains("value") && v["value"].is_number() ? html_number(v["value"].get<double>(), 3) : "-") +
            "</td><td>" + html_escape(text_of(v, "reason")) + "</td></tr>";
-    s += "</table>";
+    s += "</table></details>";
   }
   if (judge.is_object() && judge.contains("scores") && judge["scores"].is_array())
     for (const json& j : judge["scores"])
@@ -484,7 +486,7 @@ img,video{border:1px solid #ccc;background:#fff;max-width:100%}
 #svgm-stage{border:1px solid #ccc;background:#fff;overflow:hidden;contain:paint}#svgm-stage>svg{display:block}
 .svgm-controls{margin:8px 0}#svgm-scrub{width:300px;vertical-align:middle}
 .svgm-grid{display:flex;flex-wrap:wrap;gap:12px}
-.svgm-candidate{border:1px solid #ddd;border-radius:6px;padding:8px;width:300px}
+.svgm-candidate{border:1px solid #ddd;border-radius:6px;padding:8px;width:270px}
 .svgm-chosen{border:2px solid #1f6fb4}.svgm-badge{background:#1f6fb4;color:#fff;border-radius:4px;padding:0 5px;font-size:12px}
 .svgm-defect,.svgm-defects{color:#a33}.svgm-missing{color:#777;font-style:italic}
 table{border-collapse:collapse}td,th{border-bottom:1px solid #eee;padding:2px 6px;text-align:left;vertical-align:top;font-size:13px}
