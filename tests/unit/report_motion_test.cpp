@@ -118,7 +118,8 @@ TEST_SUITE("report") {
                  "gently (a fallback, not what the prompt asked).") != std::string::npos);
     CHECK(s.find("Not understood: it, zorbles") != std::string::npos);
     CHECK(s.find("<tr class=\"svgm-action svgm-warn-row\" data-action=\"1\">") != std::string::npos);
-    CHECK(s.find("<td><b>fallback</b>: ") != std::string::npos);
+    CHECK(s.find("<td><b>fallback</b>: no motion word understood, so the whole figure sways gently</td>") != std::string::npos);
+    CHECK(s.find("svgm-motion-warnings") == std::string::npos);  // its warning is the paragraph above
     CHECK(s.find("class=\"svgm-outline\" data-action=\"1\" x=\"50\" y=\"10\" width=\"70\" height=\"70\"") != std::string::npos);
     const MotionCaveat c = motion_caveat(fallback_sway());
     CHECK(c.fallback);

@@ -235,12 +235,17 @@ std::string motion_section(const json& motion, const std::string& drawing_uri) {
          "</span></td><td>" + html_escape(str(a, "verb")) + (motion_kind.empty() ? "" : "<br><small>" + html_escape(motion_kind) + "</small>") +
          "</td><td>" + parts + "</td><td>" + amplitude_text(a) + "</td><td>" + html_escape(str(a, "direction")) + "</td><td>" +
          (a.contains("cycles") && a["cycles"].is_number() ? html_number(a["cycles"].get<double>(), 3) : "-") + "</td><td>" +
-         (fallback ? "<b>fallback</b>: " : "") + html_escape(str(a, "why")) + "</td></tr>";
+         (fallback ? "<b>fallback</b>: no motion word understood, so the whole figure sways gently" : html_escape(str(a, "why"))) +
+         "</td></tr>";
   }
   if (plan.empty()) s += "<tr><td colspan=\"7\">No action planned.</td></tr>";
   s += "</table></div>";
   if (!readings.empty()) s += "<p>Words read through the lexicon (WordNet):</p>" + list(readings, "svgm-readings");
-  if (!warnings.empty()) s += "<p class=\"svgm-warn\">Warnings:</p>" + list(warnings, "svgm-motion-warnings");
+  // The plan's warnings, less the two this section has said above (the fallback, the words).
+  std::vector<std::string> other;
+  for (const auto& w : warnings)
+    if (w.rfind("no motion understood in the prompt", 0) != 0 && w.rfind("words not understood: ", 0) != 0) other.push_back(w);
+  if (!other.empty()) s += "<p class=\"svgm-warn\">Warnings:</p>" + list(other, "svgm-motion-warnings");
   if (!notes.empty()) s += "<details><summary>Notes (" + std::to_string(notes.size()) + ")</summary>" + list(notes, "svgm-motion-notes") + "</details>";
   return s + "</section>\n";
 }
