@@ -112,6 +112,21 @@ TEST_SUITE("report") {
     CHECK(c.line == "a word of the prompt not understood: zorbles; the motion follows the rest");
   }
 
+  TEST_CASE("a region that bends is outlined dashed on its part; repeated elements have no box to outline") {
+    json m = waving_man();
+    m["plan"] = json::parse(R"j([
+      {"verb": "wave", "motion": "swing", "parts": ["body"], "region": "sides", "amplitude": 20, "unit": "degrees",
+       "direction": "back and forth, the two sides in turn", "why": "no separate arms: the sides of body bend"},
+      {"verb": "fall", "motion": "fall", "parts": "12 repeated elements", "amplitude": 1, "unit": "canvas heights",
+       "direction": "down, each element in its own phase", "why": "12 drops"}])j");
+    const std::string s = motion_section(m, "data:image/png;base64,AAAA");
+    CHECK(s.find("</td><td>the sides of body</td><td>20 \xC2\xB0</td><td>back and forth, the two sides in turn</td>") != std::string::npos);
+    CHECK(s.find("<rect class=\"svgm-outline\" data-action=\"1\" x=\"50\" y=\"20\" width=\"40\" height=\"60\" fill=\"none\" "
+                 "stroke=\"#d62728\" stroke-width=\"1.6\" stroke-dasharray=\"4.8\"/>") != std::string::npos);
+    CHECK(s.find("</td><td>12 repeated elements</td><td>100 % of the canvas height</td>") != std::string::npos);
+    CHECK(s.find("data-action=\"2\" x=") == std::string::npos);
+  }
+
   TEST_CASE("the fallback sway is said as a warning, its row marked; every word understood is no caveat") {
     const std::string s = motion_section(fallback_sway(), "data:image/png;base64,AAAA");
     CHECK(s.find("<p class=\"svgm-warn\" id=\"svgm-fallback\">No motion word in the prompt was understood: the figure only sways "
