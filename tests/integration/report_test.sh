@@ -40,8 +40,8 @@ if [[ -n $missing ]]; then
   finish
 fi
 
-# A prompt with markup in it: the page must show it as text.
-prompt='the man waves his right arm <b id="x">&amp;</b> "it'"'"'s"'
+# A prompt with markup in it: the page must show it as text. 'zorbles' is a word nothing knows.
+prompt='the man waves his right arm and zorbles <b id="x">&amp;</b> "it'"'"'s"'
 run=("$bin" run --input "$data/examples/man.svg" --prompt "$prompt" -o "$tmp/run" --quiet
      stages.video.frames=12 stages.video.size=128 stages.video.candidates=3
      stages.fitter.iterations=40 stages.fitter.keyframes=4 stages.fitter.size=96 stages.fitter.max_keyframes=4)
@@ -82,6 +82,17 @@ check "and not the frame at 0 ($at_0 dB < $bar)" '! at_least "$at_0" "$bar"'
 n_files=$( (cd "$tmp/run" && find . -maxdepth 1 -type f ! -name '.*' ! -name report.html; ls candidates) | grep -c '')
 check "the outputs list every file of the run ($n_files) and nothing outside it or missing ($(grep "^links " "$tmp/facts"))" \
   'grep -qx "links $n_files outside=0 missing=0" "$tmp/facts"'
+check "every href and src on the page is a data: URI or a file of the run ($(grep "^addresses " "$tmp/facts"))" \
+  'grep -Eqx "addresses [0-9]+ data=[0-9]+ files=$n_files unresolved=0" "$tmp/facts"'
+# The motion (issue 35): the plan's rows, each with its parts outlined on the drawing; the words
+# not understood as motion.json lists them (less those the lexicon read, "'man': biped"); the
+# fit's status not a plain "ok" when there are any.
+rows=$("$py" -c 'import json,sys; print(len(json.load(open(sys.argv[1]))["plan"]))' "$tmp/run/motion.json")
+check "the plan's $rows actions are rows, each outlined on the drawing, the wave among them ($(grep "^motion " "$tmp/facts"))" \
+  '(( rows > 0 )) && grep -Eqx "motion rows=$rows outlined=$rows verbs=(.*,)?wave(,.*)?" "$tmp/facts"'
+unknown=$("$py" -c 'import json,sys; m=json.load(open(sys.argv[1])); r=m["readings"]; print(", ".join(w for w in m["not_understood"] if not any(x.startswith(chr(39)+w+chr(39)+":") for x in r)))' "$tmp/run/motion.json")
+check "the words not understood are named ($unknown) and the status says so ($(grep "^status " "$tmp/facts"))" \
+  '[[ $unknown == *zorbles* ]] && grep -qxF "not_understood Not understood: $unknown " "$tmp/facts" && grep -qx "status ok, but words not understood" "$tmp/facts"'
 for f in animation.svg animation.json preview.mp4 fit.json resolved.yaml log.txt; do
   check "a download link to $f, its size on the page" \
     'size=$(stat -c %s "$tmp/run/$f") && grep -qx "link $f $size" "$tmp/facts" && grep -q "href=\"$f\" download>$f</a></td><td>" "$tmp/run/report.html"'

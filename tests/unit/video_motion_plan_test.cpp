@@ -361,6 +361,10 @@ TEST_CASE("a prompt with no motion word sways gently, naming the words it did no
   REQUIRE(plan.warnings.size() == 1);
   CHECK(plan.warnings[0] == "no motion understood in the prompt (not understood: nothing, happens, here); the figure sways gently");
   CHECK(plan.not_understood == std::vector<std::string>{"nothing", "happens", "here"});
+  // motion.json says the sway is the fallback (report.html warns with it) and which way it goes.
+  const auto j = motion_report(fx.scene, fx.rig, plan);
+  CHECK(j["plan"][0]["fallback"] == true);
+  CHECK(j["plan"][0]["direction"].get<std::string>().rfind("side to side, ", 0) == 0);
 }
 
 TEST_CASE("the report names the parts, the root and the plan with amplitudes and reasons") {
@@ -376,6 +380,9 @@ TEST_CASE("the report names the parts, the root and the plan with amplitudes and
   CHECK(j["plan"][0]["unit"] == "degrees");
   CHECK(j["plan"][0]["amplitude"].get<double>() <= 30 * 0.5 * 1.15 + 1e-9);
   CHECK(j["plan"][0]["why"].get<std::string>().find("gently") != std::string::npos);
+  CHECK(j["plan"][0]["fallback"] == false);
+  CHECK(j["plan"][0]["words"] == "a bird flapping its wings gently");
+  CHECK(j["plan"][0]["direction"] == "back and forth, mirrored (together, opposite turns)");
 }
 
 TEST_CASE("seeds vary the amplitude; the same seed gives the same frames") {

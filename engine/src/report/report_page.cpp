@@ -108,13 +108,22 @@ std::string summary_section(const RunFiles& f) {
   s += "Prompt: <q id=\"svgm-prompt\">" + html_escape(prompt) + "</q><br>";
   s += "Run directory: <code>" + html_escape(f.run.string()) + "</code><br>";
   const std::string status = text_of(f.fit, "status");
+  // A fit that followed its target well of a motion that is not what the prompt asked (words not
+  // understood, the fallback sway) is not plainly "ok": the status says so, and why.
+  const MotionCaveat why = motion_caveat(f.motion);
+  const std::string& caveat = why.line;
+  const std::string shown = status == "ok" && !caveat.empty()
+                                ? (why.fallback ? "ok, but the motion is a fallback" : "ok, but words not understood") : status;
   if (!f.fit.is_object()) s += "No fit yet (fit.json is missing): the run stopped before the fitter.";
   else
-    s += "Fit: <b class=\"svgm-status-" + html_escape(status) + "\">" + html_escape(status) + "</b>, " +
+    s += "Fit: <b class=\"svgm-status-" + html_escape(status == "ok" && !caveat.empty() ? "warn" : status) + "\">" +
+         html_escape(shown) + "</b>, " +
          html_escape(std::to_string(f.fit.value("keyframes", 0))) + " keyframes, " +
          html_escape(std::to_string(f.fit.value("iterations", 0))) + " iterations, " +
          html_number(f.fit.value("seconds", 0.0), 3) + " s on " + html_escape(text_of(f.fit, "device")) + ".";
   s += "</p>";
+  if (!caveat.empty())
+    s += "<p class=\"svgm-caveat\" id=\"svgm-caveat\">The motion: " + html_escape(caveat) + ".</p>";
   if (f.fit.is_object() && f.fit.contains("gate") && f.fit["gate"].is_object() && f.fit["gate"].contains("reasons") &&
       f.fit["gate"]["reasons"].is_array() && !f.fit["gate"]["reasons"].empty()) {
     s += "<p>The result gate's reasons:</p><ul>";
@@ -234,12 +243,14 @@ std::string candidate_scores(const json& c, const json& judge, const std::string
     s += "</ul>";
   }
   if (c.contains("signals") && c["signals"].is_object()) {
-    s += "<table class=\"svgm-signals\"><tr><th>signal</th><th>value</th><th>reason</th></tr>";
+    // Folded: five rows of reasons made each card twice as tall as its frames.
+    s += "<details><summary>the ranker's signals (" + std::to_string(c["signals"].size()) +
+         ")</summary><table class=\"svgm-signals\"><tr><th>signal</th><th>value</th><th>reason</th></tr>";
     for (const auto& [k, v] : c["signals"].items())
       s += "<tr><td>" + html_escape(k) + "</td><td>" +
            (v.is_object() && v.contains("value") && v["value"].is_number() ? html_number(v["value"].get<double>(), 3) : "-") +
            "</td><td>" + html_escape(text_of(v, "reason")) + "</td></tr>";
-    s += "</table>";
+    s += "</table></details>";
   }
   if (judge.is_object() && judge.contains("scores") && judge["scores"].is_array())
     for (const json& j : judge["scores"])
@@ -475,16 +486,19 @@ img,video{border:1px solid #ccc;background:#fff;max-width:100%}
 #svgm-stage{border:1px solid #ccc;background:#fff;overflow:hidden;contain:paint}#svgm-stage>svg{display:block}
 .svgm-controls{margin:8px 0}#svgm-scrub{width:300px;vertical-align:middle}
 .svgm-grid{display:flex;flex-wrap:wrap;gap:12px}
-.svgm-candidate{border:1px solid #ddd;border-radius:6px;padding:8px;width:300px}
+.svgm-candidate{border:1px solid #ddd;border-radius:6px;padding:8px;width:270px}
 .svgm-chosen{border:2px solid #1f6fb4}.svgm-badge{background:#1f6fb4;color:#fff;border-radius:4px;padding:0 5px;font-size:12px}
 .svgm-defect,.svgm-defects{color:#a33}.svgm-missing{color:#777;font-style:italic}
 table{border-collapse:collapse}td,th{border-bottom:1px solid #eee;padding:2px 6px;text-align:left;vertical-align:top;font-size:13px}
 .svgm-signals td{font-size:12px}pre.svgm-cmd{white-space:pre-wrap;word-break:break-all;background:#f3f3f3;padding:6px;font-size:12px}
-.svgm-status-ok{color:#2a7a2a}.svgm-status-rejected{color:#a33}
+.svgm-status-ok{color:#2a7a2a}.svgm-status-rejected{color:#a33}.svgm-status-warn{color:#8a5a00;background:#fff3d6;padding:0 4px}
+.svgm-caveat{background:#fff3d6;border-left:4px solid #e0a000;padding:4px 8px;color:#5a3d00}
+.svgm-swatch{display:inline-block;min-width:18px;color:#fff;text-align:center;border-radius:3px;font-weight:600}
+tr.svgm-warn-row td{background:#fff3d6}
 .svgm-row{display:flex;flex-wrap:wrap;gap:12px;align-items:flex-start}.svgm-warn{color:#a33;font-weight:600}
 #svgm-lottie .svgm-lottie-box{border:1px solid #ccc;background:#fff;overflow:hidden}#svgm-lottie img{border:0;display:block;width:100%}#svgm-lottie img[hidden]{display:none}
 .svgm-frames img{margin:0 2px 2px 0}details>summary{cursor:pointer;margin:4px 0}
-svg.svgm-motion-parts{border:1px solid #ccc;background:#fff;max-width:100%;height:auto}
+svg.svgm-motion-parts{border:1px solid #ccc;background:#fff;max-width:100%;height:auto;flex:none}table.svgm-plan{flex:1 1 520px}
 </style>)";
 
 // The player: play/pause and a scrubber over the inline SVG's SMIL clock. The scrubber follows
@@ -582,9 +596,9 @@ ReportResult write_report(const fs::path& run_in, const ReportOptions& o) {
                      "<title>svgmotion: " +
                      html_escape(f.run.filename().string()) + "</title>" + kStyle + "</head><body>\n";
   page += summary_section(f);
-  page += downloads_section(f.run);
-  page += player_section(f, o, result.notes);
   page += motion_section(f.motion, motion_drawing(f, renderer, o, result.notes));
+  page += player_section(f, o, result.notes);
+  page += downloads_section(f.run);
   page += input_section(f, renderer, o, result.notes);
   page += candidates_section(f, o, result.notes);
   page += compare_section(f, renderer, o, result.notes);

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "svgmotion/error.h"
+#include "video/motion_direction.h"
 #include "video/rigid_bodies.h"
 #include "video/wheel_riders.h"
 
@@ -1569,6 +1570,9 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
                        {"region", a.region == Region::None ? "" : a.region == Region::Sides ? "sides" : a.region == Region::Lower ? "lower part"
                                   : a.region == Region::Top ? "top" : "far end"},
                        {"one_sided", a.one_sided},
+                       {"direction", direction_words(a)},
+                       {"words", a.words},
+                       {"fallback", a.words == "(fallback)"},  // plan_from_prompt's sway: no motion word understood
                        {"why", a.why}});
   }
   std::string root = rig.root >= 0 ? rig.parts[rig.root].name : "";

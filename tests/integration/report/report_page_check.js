@@ -20,6 +20,12 @@
 //                                          its frames, the one drawn inside its box, the one
 //                                          for T, and how many are drawn (1); it is screenshot to
 //                                          OUT_PREFIXlottie.png
+//   addresses N data=D files=F unresolved=U  every href and src on the page: data: URIs, files
+//                                          of the page's folder, and any other (none expected)
+//   motion rows=N outlined=O verbs=V       the plan's rows, how many have their parts outlined
+//                                          on the drawing, and their verbs
+//   not_understood TEXT                    the words not understood, as the page names them
+//   status TEXT                            the fit's status in the summary
 //   user_colours N                         candidate frames drawn in the user's colours
 //   keyframes folded=F rows=R              the keyframe table inside a closed <details>
 // Chromium is /usr/bin/chromium (Debian's), or $CHROMIUM. Exit 2 on any failure, with one line.
@@ -151,6 +157,31 @@ async function main() {
       console.log(`link ${path.relative(dir, file)} ${fs.statSync(file).size}`);
     }
     console.log(`links ${links.length} outside=${outside} missing=${missing}`);
+    // Every address on the page, not only the outputs': each is a data: URI or a file there.
+    const every = await page.$$eval('[href],[src]', (es) => es.map((e) => e.getAttribute('href') ?? e.getAttribute('src')));
+    let data = 0, files = 0, bad = 0;
+    for (const a of every) {
+      if (a.startsWith('data:')) { ++data; continue; }
+      const file = decodeURIComponent(new URL(a, 'file://' + dir + '/').pathname);
+      if (file.startsWith(dir + path.sep) && fs.existsSync(file) && fs.statSync(file).isFile()) ++files;
+      else ++bad;
+    }
+    console.log(`addresses ${every.length} data=${data} files=${files} unresolved=${bad}`);
+    // The motion: the plan's rows, each action's parts outlined on the drawing (drawn with a
+    // size), the words not understood, and the fit's status as shown.
+    const motion = await page.evaluate(() => {
+      const rows = [...document.querySelectorAll('#svgm-motion tr.svgm-action')];
+      const outlines = [...document.querySelectorAll('#svgm-motion .svgm-outline')];
+      const drawn = outlines.filter((o) => { const r = o.getBoundingClientRect(); return r.width > 2 && r.height > 2; });
+      const actions = new Set(drawn.map((o) => o.dataset.action));
+      const nu = document.getElementById('svgm-not-understood');
+      return { rows: rows.length, outlined: rows.filter((r) => actions.has(r.dataset.action)).length,
+               verbs: rows.map((r) => r.cells[1].firstChild.textContent).join(','), unknown: nu ? nu.firstChild.textContent : '',
+               status: document.querySelector('#svgm-summary b').textContent };
+    });
+    console.log(`motion rows=${motion.rows} outlined=${motion.outlined} verbs=${motion.verbs}`);
+    console.log(`not_understood ${motion.unknown}`);
+    console.log(`status ${motion.status}`);
     console.log(`user_colours ${await page.$$eval('.svgm-frames img[alt$="in your colours"]', (i) => i.length)}`);
     const keys = await page.evaluate(() => {
       const d = document.getElementById('svgm-keyframes');

@@ -1,0 +1,61 @@
+// Which way a planned action moves, in words (see motion_direction.h).
+#include "video/motion_direction.h"
+
+#include <algorithm>
+
+namespace svgm {
+
+namespace {
+
+const char* turn(double sign) { return sign > 0 ? "clockwise" : "counter-clockwise"; }
+
+// How the parts of a turning action move together (pair_up: mirrored signs, alternating phases).
+std::string pairing(const PlannedAction& a) {
+  if (a.region != Region::None) {
+    if (a.region_side != 0) return std::string(", the viewer's ") + (a.region_side < 0 ? "left" : "right") + " side only";
+    return a.alternating ? ", the two sides in turn" : "";
+  }
+  if (a.parts.size() < 2 || a.sign.size() != a.parts.size() || a.phase.size() != a.parts.size()) return "";
+  const bool in_turn = std::any_of(a.phase.begin(), a.phase.end(), [&](double p) { return p != a.phase[0]; });
+  const bool mirrored = std::any_of(a.sign.begin(), a.sign.end(), [&](double s) { return s != a.sign[0]; });
+  return in_turn ? ", in turn" : mirrored ? ", mirrored (together, opposite turns)" : ", together the same way";
+}
+
+}  // namespace
+
+std::string direction_words(const PlannedAction& a) {
+  // animate_plan's oscillation: sin (rest, one way, the other way, rest) or, one-sided, out to
+  // one side and back; a single part turns by its sign.
+  const double sign = a.sign.size() == 1 ? a.sign[0] : 0;
+  switch (a.primitive) {
+    case Primitive::Spin: return std::string(turn(a.direction)) + ", whole turns";
+    case Primitive::Slide: return a.direction > 0 ? "right first, then left" : "left first, then right";
+    case Primitive::Hop: return "up in an arc and back down";
+    case Primitive::Bob: return a.vertical > 0 ? "up from rest and back" : a.vertical < 0 ? "down from rest and back" : "up and down";
+    case Primitive::Squash: return "down, squashed, and back up";
+    case Primitive::Fall: return "down, each element in its own phase";
+    case Primitive::Shake: return "a small jitter";
+    case Primitive::Pulse: return "larger and smaller about its centre";
+    case Primitive::Stretch: return "longer along its length and back";
+    case Primitive::Undulate: {
+      static const char* from[] = {"", " from the pole at its left", " from the pole at its right", " from the pole at its top",
+                                   " from the pole at its bottom"};
+      return std::string("a wave along its length") + (a.anchored >= 1 && a.anchored <= 4 ? from[a.anchored] : "");
+    }
+    case Primitive::Sway:
+      return a.one_sided != 0 ? std::string("leans ") + (a.one_sided * a.direction > 0 ? "right" : "left") + " only, and back"
+                              : std::string("side to side, ") + (a.direction > 0 ? "right" : "left") + " first";
+    case Primitive::Rock:
+      if (a.vertical == 2) return std::string("leans ") + turn(a.direction) + " and back";
+      [[fallthrough]];
+    case Primitive::Swing:
+    case Primitive::Bend: {
+      std::string s = a.one_sided != 0 ? "out to one side only and back" : "back and forth";
+      if (sign != 0 && a.region == Region::None) s += std::string(", ") + turn(a.one_sided != 0 ? a.one_sided * sign : sign) + " first";
+      return s + pairing(a);
+    }
+  }
+  return "";
+}
+
+}  // namespace svgm
