@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "export/gif_writer.h"
-#include "fit/preview_video.h"
+#include "export/video_encoder.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -87,7 +87,7 @@ std::string sequence_name(const std::string& pattern, int i) {
 }
 
 void write_clip(const std::string& out, ClipFormat format, int frames, double fps, bool loop,
-                const std::function<RgbaImage(int)>& frame) {
+                const std::function<RgbaImage(int)>& frame, const ClipOptions& options) {
   switch (format) {
     case ClipFormat::Still:
       write_png(out, frame(0));
@@ -104,10 +104,10 @@ void write_clip(const std::string& out, ClipFormat format, int frames, double fp
     }
     case ClipFormat::Mp4:
     case ClipFormat::Webm:
-      write_preview_video(out, frames, 1, [&](int k, int) { return frame(k); }, fps);
+      write_video(out, frames, fps, frame, {options.quality, options.transparent});
       return;
     case ClipFormat::Gif:
-      write_gif(out, frames, fps, frame, loop);
+      write_gif(out, frames, fps, frame, loop, options.transparent);
       return;
   }
 }
