@@ -75,12 +75,12 @@ clip)
   must "$bin" render "$tmp/once.svg" -o "$tmp/once/%02d.png" --fps 10 --size 60 2>/dev/null
   must "$bin" render "$tmp/once.svg" -o "$tmp/end.png" --time 1 --size 60 2>/dev/null
   check "a clip of a once-only animation has 11 frames, the last its final pose" '[[ $(ls "$tmp/once" | wc -l) -eq 11 ]] && cmp -s "$tmp/once/10.png" "$tmp/end.png"'
-  expect_error "an unknown clip format" "render writes .png images, .mp4, .webm or .gif clips" "$tmp/x.avi" render "$svg" -o "$tmp/x.avi"
+  expect_error "an unknown clip format" "render writes .png images, .mp4, .webm, .gif or .webp clips" "$tmp/x.avi" render "$svg" -o "$tmp/x.avi"
   expect_error "a static SVG has no clip" "no SMIL animation" "$tmp/static.gif" render "$data/examples/man.svg" -o "$tmp/static.gif"
   expect_error "--time with a clip" "--time is for a still image" "$tmp/t.mp4" render "$svg" -o "$tmp/t.mp4" --time 1
   expect_error "two frame-number fields" "one frame-number field" "$tmp/seq" render "$svg" -o "$tmp/seq/%d_%d.png"
   expect_error "a bad frame rate" "--fps wants a frame rate" "$tmp/r.gif" render "$svg" -o "$tmp/r.gif" --fps 0
-  expect_error "a transparent mp4" "--background transparent needs PNG, GIF or WebM output; mp4 (H.264) has no alpha" "$tmp/tr.mp4" render "$svg" -o "$tmp/tr.mp4" --background transparent
+  expect_error "a transparent mp4" "--background transparent needs PNG, GIF, WebM or WebP output; mp4 (H.264) has no alpha" "$tmp/tr.mp4" render "$svg" -o "$tmp/tr.mp4" --background transparent
   expect_error "a quality out of range" "--quality" "$tmp/q.mp4" render "$svg" -o "$tmp/q.mp4" --quality 52
   expect_error "a quality for a GIF" "--quality is for mp4 and webm clips" "$tmp/q.gif" render "$svg" -o "$tmp/q.gif" --quality 20
 
@@ -111,6 +111,23 @@ clip)
   must "$bin" render "$tmp/bare.svg" -o "$tmp/bare.webm" --fps 10 --size 60 --background transparent 2>/dev/null
   check "a transparent WebM decodes with alpha ($(alpha "$tmp/bare.webm" 1 1 -c:v libvpx-vp9), $(alpha "$tmp/bare.webm" 25 15 -c:v libvpx-vp9))" \
     '[[ $(alpha "$tmp/bare.webm" 1 1 -c:v libvpx-vp9) -le 2 && $(alpha "$tmp/bare.webm" 25 15 -c:v libvpx-vp9) -ge 253 ]]'
+
+  # An animated WebP, lossless and transparent: every frame is the render's, alpha included
+  # (FFmpeg 5.1 cannot decode animated WebP; Pillow's libwebp can: Debian's python3-pil).
+  must "$bin" render "$tmp/bare.svg" -o "$tmp/bare.webp" --fps 10 --size 60 --background transparent 2>/dev/null
+  must "$bin" render "$tmp/bare.svg" -o "$tmp/bare/%d.png" --fps 10 --size 60 --background transparent 2>/dev/null
+  webp=$(/usr/bin/python3 - "$tmp/bare.webp" "$tmp/bare" <<'PY' 2>&1
+import sys
+from PIL import Image, ImageSequence
+clip = Image.open(sys.argv[1])
+def pixels(image):  # RGBA with the colour of fully transparent pixels dropped (WebP drops it)
+    return [p if p[3] else (0, 0, 0, 0) for p in image.convert("RGBA").getdata()]
+frames = [pixels(f) for f in ImageSequence.Iterator(clip)]
+same = sum(f == pixels(Image.open(f"{sys.argv[2]}/{i}.png")) for i, f in enumerate(frames))
+print(f"{len(frames)} frames, {same} identical, loop {clip.info.get('loop')}")
+PY
+)
+  check "an animated WebP is lossless and transparent, frame for frame the render ($webp)" '[[ $webp == "10 frames, 10 identical, loop 0" ]]'
 
   # mp4: the index (moov) before the data (mdat), BT.709 tags, white decoded as white.
   sed 's/#fdf6e3/#ffffff/' "$svg" >"$tmp/white.svg"

@@ -10,11 +10,11 @@
 
 namespace svgm {
 
-enum class ClipFormat { Still, Sequence, Mp4, Webm, Gif };
+enum class ClipFormat { Still, Sequence, Mp4, Webm, Gif, Webp };
 
 // What an output name asks for, by its extension (any case): .png a still image, or a frame
 // sequence when the name holds one frame-number field (%d, %4d or %04d; %% is a literal %);
-// .mp4, .webm, .gif a clip. Throws svgm::Error naming `out` for anything else, or a pattern
+// .mp4, .webm, .gif, .webp (animated WebP) a clip. Throws svgm::Error naming `out` for anything else, or a pattern
 // with no, several or another kind of % field.
 ClipFormat clip_format(const std::string& out);
 
@@ -25,7 +25,7 @@ std::string sequence_name(const std::string& pattern, int i);
 // What a clip keeps beside its frames.
 struct ClipOptions {
   int quality = -1;          // a video's CRF (video_encoder.h); -1 the codec's default
-  bool transparent = false;  // the frames' alpha kept: PNG, GIF (binary alpha), WebM
+  bool transparent = false;  // the frames' alpha kept: PNG, GIF (binary alpha), WebM, WebP
 };
 
 // Writes `frames` frames at `fps`: frame(i) is called in order (a GIF calls it twice per frame,

@@ -71,13 +71,15 @@ void write_video(const fs::path& file, int frames, double fps, const std::functi
   };
   std::string ext = file.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const bool webp = ext == ".webp";  // animated WebP: lossless RGBA, as cheap as a GIF to play
   const bool webm = ext == ".webm";
   const int max_crf = webm ? kMaxVp9Crf : kMaxH264Crf;
   const int crf = options.quality < 0 ? (webm ? kDefaultVp9Crf : kDefaultH264Crf) : options.quality;
   if (crf > max_crf)
     fail("quality " + std::to_string(crf) + " is out of range (" + (webm ? "VP9" : "H.264") + " CRF 0.." +
          std::to_string(max_crf) + ", lower is better)");
-  if (options.transparent && !webm) fail("only a WebM clip keeps transparency (mp4's H.264 has no alpha)");
+  if (options.transparent && !webm && !webp) fail("only a WebM or WebP clip keeps transparency (mp4's H.264 has no alpha)");
+  if (webp && options.quality >= 0) fail("an animated WebP is lossless; quality is for mp4 and webm");
   if (frames < 1) fail("a video needs at least one frame");
   if (!(std::isfinite(fps) && fps > 0)) fail("frame rate must be positive");
   if (av_log_get_level() > AV_LOG_ERROR) av_log_set_level(AV_LOG_ERROR);  // x264 and libvpx chat on stderr
@@ -85,17 +87,17 @@ void write_video(const fs::path& file, int frames, double fps, const std::functi
   const fs::path target = output_target(file);  // refuse a device or folder before rendering
   const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   Encoder e;
-  e.tmp = temporary_path(dir / target.filename(), webm ? ".webm" : ".mp4");
+  e.tmp = temporary_path(dir / target.filename(), webp ? ".webp" : webm ? ".webm" : ".mp4");
 
   RgbaImage first = frame_at(0);
   const int w = first.width, h = first.height;
   if (w < 1 || h < 1 || first.rgba.size() != static_cast<size_t>(w) * h * 4) fail("the first frame is empty");
-  const int cw = w + w % 2, ch = h + h % 2;  // 4:2:0 wants even sides
+  const int cw = webp ? w : w + w % 2, ch = webp ? h : h + h % 2;  // 4:2:0 wants even sides
 
-  const char* codec_name = webm ? "libvpx-vp9" : "libx264";
+  const char* codec_name = webp ? "libwebp_anim" : webm ? "libvpx-vp9" : "libx264";
   const AVCodec* codec = avcodec_find_encoder_by_name(codec_name);
   if (!codec) fail(std::string("cannot write: FFmpeg has no ") + codec_name + " encoder");
-  if (const int r = avformat_alloc_output_context2(&e.format, nullptr, webm ? "webm" : "mp4", e.tmp.c_str()); r < 0)
+  if (const int r = avformat_alloc_output_context2(&e.format, nullptr, webp ? "webp" : webm ? "webm" : "mp4", e.tmp.c_str()); r < 0)
     fail("cannot write", r);
   AVStream* stream = avformat_new_stream(e.format, nullptr);
   e.codec = avcodec_alloc_context3(codec);
@@ -105,7 +107,7 @@ void write_video(const fs::path& file, int frames, double fps, const std::functi
   AVCodecContext* c = e.codec;
   c->width = cw;
   c->height = ch;
-  c->pix_fmt = options.transparent ? AV_PIX_FMT_YUVA420P : AV_PIX_FMT_YUV420P;
+  c->pix_fmt = webp ? AV_PIX_FMT_BGRA : options.transparent ? AV_PIX_FMT_YUVA420P : AV_PIX_FMT_YUV420P;
   c->time_base = av_inv_q(rate);
   c->framerate = rate;
   c->sample_aspect_ratio = {1, 1};
@@ -116,12 +118,15 @@ void write_video(const fs::path& file, int frames, double fps, const std::functi
   c->gop_size = std::max(1, static_cast<int>(std::lround(2 * fps)));  // a keyframe every 2 s: seeking stays quick
   if (e.format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
   AVDictionary* opts = nullptr;
-  av_dict_set_int(&opts, "crf", crf, 0);
-  if (webm) {
+  if (webp) {
+    av_dict_set(&opts, "lossless", "1", 0);  // flat vector art: exact colours, small frames
+  } else if (webm) {
+    av_dict_set_int(&opts, "crf", crf, 0);
     av_dict_set(&opts, "b", "0", 0);  // constant quality: no bitrate cap beside the CRF
     av_dict_set(&opts, "row-mt", "1", 0);
     av_dict_set(&opts, "cpu-used", "4", 0);  // libvpx's speed/quality step for a few-second clip on 2 cores
   } else {
+    av_dict_set_int(&opts, "crf", crf, 0);
     av_dict_set(&opts, "preset", "medium", 0);
   }
   const int opened = avcodec_open2(c, codec, &opts);
@@ -133,7 +138,8 @@ void write_video(const fs::path& file, int frames, double fps, const std::functi
 
   if (const int r = avio_open(&e.format->pb, e.tmp.c_str(), AVIO_FLAG_WRITE); r < 0) fail("cannot write", r);
   AVDictionary* mux = nullptr;
-  if (!webm) av_dict_set(&mux, "movflags", "+faststart", 0);  // the index before the data
+  if (!webm && !webp) av_dict_set(&mux, "movflags", "+faststart", 0);  // the index before the data
+  if (webp) av_dict_set(&mux, "loop", options.loop ? "0" : "1", 0);  // 0: forever
   const int header = avformat_write_header(e.format, &mux);
   av_dict_free(&mux);
   if (header < 0) fail("cannot write", header);
