@@ -13,16 +13,17 @@ packages=(
   cmake ninja-build g++ pkg-config ccache
   ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd
   libeigen3-dev libpugixml-dev libopencv-dev libyaml-cpp-dev
+  libavcodec-dev libavformat-dev libavfilter-dev libavutil-dev libswscale-dev
   libpng-dev zlib1g-dev doctest-dev nlohmann-json3-dev libcurl4-openssl-dev
   clang libclang-rt-dev
   wordnet-base
 )
-# Test-only: ffprobe for clip checks, the two Lottie players the export is checked in
+# Test-only: ffprobe for clip checks, Pillow to decode animated WebP (FFmpeg 5.1 cannot), the two Lottie players the export is checked in
 # (Chromium for lottie-web, librlottie), node and npm for lottie-web (tests/integration/export_test.sh),
 # and a one-node Slurm for the batch test (tests/integration/batch_test.sh slurm). Chromium
 # and puppeteer-core also open report.html (tests/integration/report_test.sh).
 if [[ $mode == test ]]; then
-  packages+=(ffmpeg chromium librlottie-dev munge slurmd slurmctld slurm-client)
+  packages+=(ffmpeg chromium librlottie-dev munge slurmd slurmctld slurm-client python3-pil)
   command -v node >/dev/null && command -v npm >/dev/null || packages+=(nodejs npm)
 fi
 missing=()

@@ -15,6 +15,7 @@
 #include "cli/commands.h"
 #include "export/clip_writer.h"
 #include "export/smil_clock.h"
+#include "export/video_encoder.h"
 #include "opencl/runtime.h"
 #include "raster/render_image.h"
 #include "svgmotion/error.h"
@@ -34,7 +35,7 @@ constexpr int kMaxClipFrames = 100000;  // about an hour at 30 fps: a mistake, n
 
 int cmd_render(const std::vector<std::string>& argv) {
   const Args a = parse_args("render", argv,
-                            {"-o", "--output", "--size", "--background", "--device", "--time", "--fps"},
+                            {"-o", "--output", "--size", "--background", "--device", "--time", "--fps", "--quality"},
                             {"--strict"});
   if (a.positional.size() != 1)
     throw UsageError("render: expected one input SVG (svgmotion render IN.svg -o OUT.png)");
@@ -53,11 +54,19 @@ int cmd_render(const std::vector<std::string>& argv) {
   const int width = a.get_int("--size", 0, 1, 16384);
   if (!still && a.has("--time"))
     throw Error("render: --time is for a still image; a clip (" + *out + ") shows the whole animation");
-  if (still && a.has("--fps")) throw Error("render: --fps is for clips (.mp4, .webm, .gif, frames/%04d.png)");
+  if (still && a.has("--fps")) throw Error("render: --fps is for clips (.mp4, .webm, .gif, .webp, frames/%04d.png)");
   const double fps = a.get_double("--fps", kDefaultFps);
   if (!(fps > 0 && fps <= kMaxFps)) throw Error("render: --fps wants a frame rate in (0, 240]");
-  if (transparent && !still && format != ClipFormat::Sequence)
-    throw Error("render: --background transparent needs PNG output; mp4, webm and gif clips are drawn over white");
+  if (transparent && format == ClipFormat::Mp4)
+    throw Error("render: --background transparent needs PNG, GIF, WebM or WebP output; mp4 (H.264) has no alpha");
+  ClipOptions clip_options;
+  clip_options.transparent = transparent;
+  if (a.has("--quality")) {
+    if (format != ClipFormat::Mp4 && format != ClipFormat::Webm)
+      throw Error("render: --quality is for mp4 and webm clips (a CRF, lower is better)");
+    const int max = format == ClipFormat::Mp4 ? kMaxH264Crf : kMaxVp9Crf;
+    clip_options.quality = a.get_int("--quality", -1, 0, max);
+  }
 
   SvgReadLimits read_options;
   read_options.animation_time = a.get_double("--time", -1);
@@ -95,7 +104,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     w = img.width;
     h = img.height;
     return img;
-  });
+  }, clip_options);
   log::info("svgmotion: wrote %s (%d frames at %g fps, %.3g s, %dx%d%s)", out->c_str(), frames, fps,
                frames / fps, w, h, clock.repeats ? ", loops" : "");
   return 0;

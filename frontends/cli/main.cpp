@@ -27,13 +27,15 @@ usage:
   svgmotion fit IN.svg --target VIDEO|FRAMES_DIR -o OUT_DIR [options]
   svgmotion render IN.svg -o OUT.png [--size W] [--background white|transparent] [--time T]
                    [--device D] [--strict]
-  svgmotion render ANIMATION.svg -o CLIP.mp4|.webm|.gif|DIR/%04d.png [--fps F] [--size W]
+  svgmotion render ANIMATION.svg -o CLIP.mp4|.webm|.gif|.webp|DIR/%04d.png [--fps F] [--size W]
+                   [--quality CRF] [--background white|transparent]
   svgmotion batch MANIFEST -o OUT_DIR [CONFIG.yaml] [--shard I/N] [--device D] [--pin]
                   [key.path=value ...]
   svgmotion report RUN_DIR [--device D]
   svgmotion config [--show CONFIG] [key.path=value ...]
   svgmotion export RUN_DIR|FIT_DIR [-o OUT_DIR] [--precision N] [--inbetweens N]
-                   [--format svg,lottie,gif,mp4,webm] [--full]
+                   [--format svg,lottie,gif,mp4,webm,webp] [--full]
+                   [--fps F] [--quality CRF] [--transparent]
   svgmotion plugins
   svgmotion devices [--warm]
   svgmotion palette N
@@ -145,16 +147,21 @@ Exit status 3 when the result gate rejects the fit (animation.failed.svg is writ
 animation.svg; fit.json has the reasons); 130 after Ctrl-C (the result so far is written).
 )"},
     {"render", R"(usage: svgmotion render IN.svg -o OUT.png [options]
-       svgmotion render ANIMATION.svg -o CLIP.mp4|.webm|.gif|DIR/%04d.png [options]
+       svgmotion render ANIMATION.svg -o CLIP.mp4|.webm|.gif|.webp|DIR/%04d.png [options]
 
 Renders the SVG (an animated one at --time T) to a PNG, or one pass of its SMIL animation to a
-clip: an mp4 (H.264), a WebM (VP9), a GIF, or numbered PNG frames (frame i at i/F seconds).
-The format follows OUT's extension, and OUT may not be the input.
+clip: an mp4 (H.264, BT.709-tagged, index first so it streams), a WebM (VP9, with alpha under
+--background transparent), a GIF (FFmpeg's palettegen/paletteuse colours, only the changed
+rectangle per frame; binary alpha under --background transparent), or numbered PNG frames
+(frame i at i/F seconds), or an animated WebP (lossless; transparent under --background
+transparent). The format follows OUT's extension, and OUT may not be the input.
 
   -o, --output OUT         the image or clip to write (required)
   --fps F                  clip frame rate (default 30)
   --size W                 width in pixels (default: the SVG's own; height by its aspect)
-  --background B           white (default) or transparent
+  --background B           white (default) or transparent (PNG, GIF, WebM, WebP; not mp4)
+  --quality CRF            mp4/webm constant quality, lower is better: H.264 0..51 (default 20),
+                           VP9 0..63 (default 31)
   --time T                 seconds into the SMIL animation
   --device D               OpenCL device
   --strict                 unsupported content is an error, not a warning
@@ -202,9 +209,12 @@ precision, the in-betweens or compact/full, or make clips, in a second instead o
   --precision N        decimal places of the coordinates (default: the fewest that keep the
                        compact tolerance, a quarter pixel at 1024 px; 0..6)
   --inbetweens N       smooth in-between shapes per keyframe interval (default 3; 0..16)
-  --format LIST        comma-separated: svg, lottie (animation.json), gif, mp4, webm (clips are
+  --format LIST        comma-separated: svg, lottie (animation.json), gif, mp4, webm, webp (clips are
                        rendered from animation.svg, which is written with them); default svg,lottie
   --full               every value of every path (the per-frame export)
+  --fps F              clip frame rate (default: the fit's, the target video's)
+  --quality CRF        mp4/webm quality, lower is better (render --help)
+  --transparent        gif, webm and webp clips without the white background (mp4 stays on white)
 )"},
     {"plugins", "usage: svgmotion plugins\n\nLists the stage plugins found (stage, name, version, path) and every\nrefused module with its reason.\n"},
     {"devices", "usage: svgmotion devices [--warm [--device D]]\n\nLists the OpenCL devices; * marks the one --device auto picks.\n"

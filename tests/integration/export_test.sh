@@ -75,12 +75,71 @@ clip)
   must "$bin" render "$tmp/once.svg" -o "$tmp/once/%02d.png" --fps 10 --size 60 2>/dev/null
   must "$bin" render "$tmp/once.svg" -o "$tmp/end.png" --time 1 --size 60 2>/dev/null
   check "a clip of a once-only animation has 11 frames, the last its final pose" '[[ $(ls "$tmp/once" | wc -l) -eq 11 ]] && cmp -s "$tmp/once/10.png" "$tmp/end.png"'
-  expect_error "an unknown clip format" "render writes .png images, .mp4, .webm or .gif clips" "$tmp/x.avi" render "$svg" -o "$tmp/x.avi"
+  expect_error "an unknown clip format" "render writes .png images, .mp4, .webm, .gif or .webp clips" "$tmp/x.avi" render "$svg" -o "$tmp/x.avi"
   expect_error "a static SVG has no clip" "no SMIL animation" "$tmp/static.gif" render "$data/examples/man.svg" -o "$tmp/static.gif"
   expect_error "--time with a clip" "--time is for a still image" "$tmp/t.mp4" render "$svg" -o "$tmp/t.mp4" --time 1
   expect_error "two frame-number fields" "one frame-number field" "$tmp/seq" render "$svg" -o "$tmp/seq/%d_%d.png"
   expect_error "a bad frame rate" "--fps wants a frame rate" "$tmp/r.gif" render "$svg" -o "$tmp/r.gif" --fps 0
-  expect_error "a transparent video" "--background transparent needs PNG output" "$tmp/tr.mp4" render "$svg" -o "$tmp/tr.mp4" --background transparent
+  expect_error "a transparent mp4" "--background transparent needs PNG, GIF, WebM or WebP output; mp4 (H.264) has no alpha" "$tmp/tr.mp4" render "$svg" -o "$tmp/tr.mp4" --background transparent
+  expect_error "a quality out of range" "--quality" "$tmp/q.mp4" render "$svg" -o "$tmp/q.mp4" --quality 52
+  expect_error "a quality for a GIF" "--quality is for mp4 and webm clips" "$tmp/q.gif" render "$svg" -o "$tmp/q.gif" --quality 20
+
+  # GIF against FFmpeg's palettegen/paletteuse GIF of the same frames: no larger, and as close
+  # to the frames (PSNR of every frame, summed).
+  ffmpeg -nostdin -v error -framerate 10 -i "$tmp/frames/%04d.png" -vf "split[a][b];[a]palettegen[p];[b][p]paletteuse" "$tmp/ff.gif"
+  ffmpeg -nostdin -v error -i "$tmp/ff.gif" -start_number 0 "$tmp/ff_%d.png"
+  ffmpeg -nostdin -v error -i "$tmp/clip.gif" -start_number 0 "$tmp/our_%d.png"
+  ours=0 theirs=0
+  for i in $(seq 0 9); do
+    ours=$(awk -v a="$ours" -v b="$(psnr "$tmp/frames/$(printf %04d "$i").png" "$tmp/our_$i.png")" 'BEGIN { print a + b }')
+    theirs=$(awk -v a="$theirs" -v b="$(psnr "$tmp/frames/$(printf %04d "$i").png" "$tmp/ff_$i.png")" 'BEGIN { print a + b }')
+  done
+  check "the GIF is no larger than FFmpeg's palette GIF ($(stat -c %s "$tmp/clip.gif") <= $(stat -c %s "$tmp/ff.gif") bytes)" \
+    '[[ $(stat -c %s "$tmp/clip.gif") -le $(stat -c %s "$tmp/ff.gif") ]]'
+  check "the GIF's frames are as close to the renders as FFmpeg's (PSNR summed over 10 frames: $ours >= $theirs)" 'at_least "$ours" "$theirs"'
+  # A transparent GIF: pixels outside the drawing decode with alpha 0, pixels of it with 255.
+  sed 's/<rect width="60" height="40" fill="#fdf6e3"\/>//' "$svg" >"$tmp/bare.svg"
+  must "$bin" render "$tmp/bare.svg" -o "$tmp/bare.gif" --fps 10 --size 60 --background transparent 2>/dev/null
+  alpha() {  # alpha() CLIP X Y [DECODER...]: the alpha at (X, Y) of the clip's frame 0 (60 px wide)
+    local clip=$1 x=$2 y=$3; shift 3
+    ffmpeg -nostdin -v error "$@" -i "$clip" -frames:v 1 -f rawvideo -pix_fmt rgba - |
+      od -An -v -tu1 -j $(((y * 60 + x) * 4 + 3)) -N1 | tr -d ' '
+  }
+  check "a transparent GIF is transparent outside the drawing and opaque on it ($(alpha "$tmp/bare.gif" 1 1), $(alpha "$tmp/bare.gif" 25 15))" \
+    '[[ $(alpha "$tmp/bare.gif" 1 1) == 0 && $(alpha "$tmp/bare.gif" 25 15) == 255 ]]'
+  # A transparent WebM (VP9 with alpha), decoded by libvpx as a browser would.
+  must "$bin" render "$tmp/bare.svg" -o "$tmp/bare.webm" --fps 10 --size 60 --background transparent 2>/dev/null
+  check "a transparent WebM decodes with alpha ($(alpha "$tmp/bare.webm" 1 1 -c:v libvpx-vp9), $(alpha "$tmp/bare.webm" 25 15 -c:v libvpx-vp9))" \
+    '[[ $(alpha "$tmp/bare.webm" 1 1 -c:v libvpx-vp9) -le 2 && $(alpha "$tmp/bare.webm" 25 15 -c:v libvpx-vp9) -ge 253 ]]'
+
+  # An animated WebP, lossless and transparent: every frame is the render's, alpha included
+  # (FFmpeg 5.1 cannot decode animated WebP; Pillow's libwebp can: Debian's python3-pil).
+  must "$bin" render "$tmp/bare.svg" -o "$tmp/bare.webp" --fps 10 --size 60 --background transparent 2>/dev/null
+  must "$bin" render "$tmp/bare.svg" -o "$tmp/bare/%d.png" --fps 10 --size 60 --background transparent 2>/dev/null
+  webp=$(/usr/bin/python3 - "$tmp/bare.webp" "$tmp/bare" <<'PY' 2>&1
+import sys
+from PIL import Image, ImageSequence
+clip = Image.open(sys.argv[1])
+def pixels(image):  # RGBA with the colour of fully transparent pixels dropped (WebP drops it)
+    return [p if p[3] else (0, 0, 0, 0) for p in image.convert("RGBA").getdata()]
+frames = [pixels(f) for f in ImageSequence.Iterator(clip)]
+same = sum(f == pixels(Image.open(f"{sys.argv[2]}/{i}.png")) for i, f in enumerate(frames))
+print(f"{len(frames)} frames, {same} identical, loop {clip.info.get('loop')}")
+PY
+)
+  check "an animated WebP is lossless and transparent, frame for frame the render ($webp)" '[[ $webp == "10 frames, 10 identical, loop 0" ]]'
+
+  # mp4: the index (moov) before the data (mdat), BT.709 tags, white decoded as white.
+  sed 's/#fdf6e3/#ffffff/' "$svg" >"$tmp/white.svg"
+  must "$bin" render "$tmp/white.svg" -o "$tmp/white.mp4" --fps 10 --size 60 --quality 18 2>/dev/null
+  atoms=$(grep -obUa -e moov -e mdat "$tmp/white.mp4" | head -2 | cut -d: -f2 | tr '\n' ' ')
+  check "the mp4 starts with its index (atoms: $atoms)" '[[ $atoms == "moov mdat " ]]'
+  tags=$(ffprobe -v error -select_streams v:0 -show_entries stream=color_primaries,color_transfer,color_space,color_range \
+    -of default=noprint_wrappers=1 "$tmp/white.mp4" | sort | tr '\n' ' ')
+  check "the mp4 is tagged BT.709, limited range ($tags)" \
+    '[[ $tags == "color_primaries=bt709 color_range=tv color_space=bt709 color_transfer=bt709 " ]]'
+  white=$(ffmpeg -nostdin -v error -i "$tmp/white.mp4" -frames:v 1 -f rawvideo -pix_fmt rgb24 - | od -An -v -tu1 -N3 | xargs)
+  check "white decodes as white (pixel 0,0: $white)" '[[ $white == "255 255 255" ]]'
   ;;
 lottie)
   # Dependencies of the check: installed by .ci/setup.sh.

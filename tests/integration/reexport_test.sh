@@ -60,6 +60,13 @@ sed 's/id="sq" x="6" y="6" width="10"/id="sq" x="6" y="6" width="14"/' "$tmp/fit
 check "the square moves in playback" '! cmp -s "$tmp/a0.png" "$tmp/a1.png"'
 check "an edit of the rest shape shows in playback at 0.5 s" '! cmp -s "$tmp/a.png" "$tmp/b.png"'
 
+# Clips at the fit's own frame rate (a folder of frames has 24 fps), or at --fps.
+rate() { ffprobe -v error -select_streams v:0 -show_entries stream=r_frame_rate -of default=nw=1:nk=1 "$1"; }
+"$bin" export "$tmp/fit" -o "$tmp/clip24" --format mp4 >/dev/null 2>&1
+"$bin" export "$tmp/fit" -o "$tmp/clip12" --format mp4 --fps 12 --quality 30 >/dev/null 2>&1
+check "an exported mp4 is at the fit's frame rate ($(rate "$tmp/clip24/animation.mp4")), or at --fps ($(rate "$tmp/clip12/animation.mp4"))" \
+  '[[ $(rate "$tmp/clip24/animation.mp4") == 24/1 && $(rate "$tmp/clip12/animation.mp4") == 12/1 ]]'
+
 # Bad input.
 one_error() {  # NAME EXIT LINE ARGS...
   local name=$1 want_rc=$2 line=$3; shift 3
@@ -72,7 +79,11 @@ one_error "export of a folder that is not a run or fit directory" 1 "svgmotion: 
 one_error "export of a file" 1 "svgmotion: $tmp/sq0.svg: not a folder" export "$tmp/sq0.svg"
 mkdir -p "$tmp/nockpt/.svgmotion"
 one_error "export without a checkpoint" 1 "svgmotion: $tmp/nockpt/checkpoint.bin: no checkpoint (no fit has run in $tmp/nockpt)" export "$tmp/nockpt"
-one_error "export of an unknown format" 1 "svgmotion: export: unknown format 'png' (svg, lottie, gif, mp4, webm)" export "$tmp/fit" -o "$tmp/never" --format svg,png
+one_error "export of an unknown format" 1 "svgmotion: export: unknown format 'png' (svg, lottie, gif, mp4, webm, webp)" export "$tmp/fit" -o "$tmp/never" --format svg,png
 check "... writes nothing" '[[ ! -e $tmp/never ]]'
+one_error "export of a transparent mp4" 1 "svgmotion: export: --transparent is for gif, webm and webp clips (mp4's H.264 has no alpha)" export "$tmp/fit" -o "$tmp/never" --format svg,mp4 --transparent
+one_error "export --quality for a GIF" 1 "svgmotion: export: --quality is for mp4 and webm clips (a CRF, lower is better)" export "$tmp/fit" -o "$tmp/never" --format gif --quality 20
+one_error "export --fps without a clip" 1 "svgmotion: export: --fps, --quality and --transparent are for clips (--format gif, mp4, webm or webp)" export "$tmp/fit" -o "$tmp/never" --fps 12
+check "... none of them writes anything" '[[ ! -e $tmp/never ]]'
 one_error "export without a directory is a usage error" 2 "svgmotion: export: expected one run or fit directory (svgmotion export RUN_DIR|FIT_DIR [-o OUT_DIR])" export
 finish

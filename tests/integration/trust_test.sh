@@ -129,7 +129,7 @@ before=$(cksum <"$tmp/in.svg")
 "$bin" render "$tmp/in.svg" -o "$tmp/in.svg" 2>"$tmp/re.err"
 check "render -o INPUT is refused and the input is unchanged" '[[ $? -eq 1 && $(cksum <"$tmp/in.svg") == "$before" ]] && grep -q "choose another output name" "$tmp/re.err"'
 "$bin" render "$tmp/in.svg" -o "$tmp/out.svg" 2>"$tmp/re.err"
-check "render -o X.svg is refused (PNG images and clips only), nothing written" '[[ $? -eq 1 && ! -e $tmp/out.svg ]] && grep -q "render writes .png images, .mp4, .webm or .gif clips" "$tmp/re.err"'
+check "render -o X.svg is refused (PNG images and clips only), nothing written" '[[ $? -eq 1 && ! -e $tmp/out.svg ]] && grep -q "render writes .png images, .mp4, .webm, .gif or .webp clips" "$tmp/re.err"'
 "$bin" render "$tmp/in.svg" -o "$tmp/OUT.PNG" 2>/dev/null
 check "render -o X.PNG writes a PNG" '[[ $? -eq 0 && $(head -c 4 "$tmp/OUT.PNG" | od -An -c | tr -d " ") == "211PNG" ]]'
 

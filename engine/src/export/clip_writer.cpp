@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "export/gif_writer.h"
-#include "fit/preview_video.h"
+#include "export/video_encoder.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -70,11 +70,11 @@ ClipFormat clip_format(const std::string& out) {
     throw Error(out + ": a frame sequence names one frame-number field (%d or %04d), " +
                 (n < 0 ? std::string("and % may only start %d, %0Nd or %%") : std::to_string(n) + " found"));
   }
-  if (ext == ".mp4" || ext == ".webm" || ext == ".gif") {
+  if (ext == ".mp4" || ext == ".webm" || ext == ".gif" || ext == ".webp") {
     if (n != 0) throw Error(out + ": a % field is for frame sequences (frames/%04d.png), not " + ext + " files");
-    return ext == ".mp4" ? ClipFormat::Mp4 : ext == ".webm" ? ClipFormat::Webm : ClipFormat::Gif;
+    return ext == ".mp4" ? ClipFormat::Mp4 : ext == ".webm" ? ClipFormat::Webm : ext == ".webp" ? ClipFormat::Webp : ClipFormat::Gif;
   }
-  throw Error(out + ": render writes .png images, .mp4, .webm or .gif clips, or frame sequences like frames/%04d.png" +
+  throw Error(out + ": render writes .png images, .mp4, .webm, .gif or .webp clips, or frame sequences like frames/%04d.png" +
               (ext.empty() ? std::string() : " (not " + ext + ")"));
 }
 
@@ -87,7 +87,7 @@ std::string sequence_name(const std::string& pattern, int i) {
 }
 
 void write_clip(const std::string& out, ClipFormat format, int frames, double fps, bool loop,
-                const std::function<RgbaImage(int)>& frame) {
+                const std::function<RgbaImage(int)>& frame, const ClipOptions& options) {
   switch (format) {
     case ClipFormat::Still:
       write_png(out, frame(0));
@@ -104,10 +104,11 @@ void write_clip(const std::string& out, ClipFormat format, int frames, double fp
     }
     case ClipFormat::Mp4:
     case ClipFormat::Webm:
-      write_preview_video(out, frames, 1, [&](int k, int) { return frame(k); }, fps);
+    case ClipFormat::Webp:
+      write_video(out, frames, fps, frame, {options.quality, options.transparent, loop});
       return;
     case ClipFormat::Gif:
-      write_gif(out, frames, fps, frame, loop);
+      write_gif(out, frames, fps, frame, loop, options.transparent);
       return;
   }
 }

@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
+#include "export/palette_quantiser.h"
 #include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
 
@@ -20,100 +22,8 @@ namespace {
 constexpr int kPaletteSize = 256;         // GIF's largest colour table (8 bits per index)
 constexpr int kMinCodeSize = 8;           // LZW root codes: one per palette index
 constexpr int kMaxCode = 4095;            // 12-bit codes, the format's limit
-constexpr size_t kHistogramPixels = 1 << 18;  // pixels sampled per frame for the palette
 constexpr int kMaxSide = 65535;           // GIF sizes are 16-bit
-
-// Straight RGBA over white, packed 0xRRGGBB.
-uint32_t over_white(const uint8_t* p) {
-  const int a = p[3];
-  uint32_t c = 0;
-  for (int k = 0; k < 3; ++k) c = c << 8 | static_cast<uint32_t>((p[k] * a + 255 * (255 - a) + 127) / 255);
-  return c;
-}
-
-int channel(uint32_t c, int k) { return static_cast<int>(c >> (16 - 8 * k) & 0xff); }
-
-struct Entry {
-  uint32_t colour;
-  uint64_t count;
-};
-
-// A palette for the histogram: its colours when they fit, else a weighted median cut.
-std::vector<uint32_t> make_palette(const std::unordered_map<uint32_t, uint64_t>& histogram) {
-  std::vector<Entry> e;
-  e.reserve(histogram.size());
-  for (const auto& [c, n] : histogram) e.push_back({c, n});
-  // Deterministic whatever the hash map's order.
-  std::sort(e.begin(), e.end(), [](const Entry& a, const Entry& b) { return a.colour < b.colour; });
-  std::vector<uint32_t> palette;
-  if (e.size() <= static_cast<size_t>(kPaletteSize)) {
-    for (const Entry& x : e) palette.push_back(x.colour);
-    return palette;
-  }
-  struct Box {
-    size_t begin, end;
-  };
-  auto widest = [&](const Box& b, int* axis) {
-    int best = -1;
-    for (int k = 0; k < 3; ++k) {
-      int lo = 255, hi = 0;
-      for (size_t i = b.begin; i < b.end; ++i) {
-        lo = std::min(lo, channel(e[i].colour, k));
-        hi = std::max(hi, channel(e[i].colour, k));
-      }
-      if (hi - lo > best) {
-        best = hi - lo;
-        *axis = k;
-      }
-    }
-    return best;
-  };
-  std::vector<Box> boxes{{0, e.size()}};
-  while (boxes.size() < static_cast<size_t>(kPaletteSize)) {
-    // Split the box with the most pixels among those holding more than one colour, along its
-    // widest channel, at the weighted median.
-    int pick = -1;
-    uint64_t most = 0;
-    for (size_t b = 0; b < boxes.size(); ++b) {
-      if (boxes[b].end - boxes[b].begin < 2) continue;
-      uint64_t w = 0;
-      for (size_t i = boxes[b].begin; i < boxes[b].end; ++i) w += e[i].count;
-      if (pick < 0 || w > most) {
-        pick = static_cast<int>(b);
-        most = w;
-      }
-    }
-    if (pick < 0) break;
-    Box box = boxes[static_cast<size_t>(pick)];
-    int axis = 0;
-    widest(box, &axis);
-    std::sort(e.begin() + static_cast<std::ptrdiff_t>(box.begin), e.begin() + static_cast<std::ptrdiff_t>(box.end),
-              [axis](const Entry& a, const Entry& b) {
-                return channel(a.colour, axis) != channel(b.colour, axis) ? channel(a.colour, axis) < channel(b.colour, axis)
-                                                                          : a.colour < b.colour;
-              });
-    uint64_t half = 0;
-    size_t cut = box.begin + 1;
-    for (size_t i = box.begin; i + 1 < box.end; ++i) {
-      half += e[i].count;
-      cut = i + 1;
-      if (2 * half >= most) break;
-    }
-    boxes[static_cast<size_t>(pick)] = {box.begin, cut};
-    boxes.push_back({cut, box.end});
-  }
-  for (const Box& b : boxes) {
-    double sum[3] = {0, 0, 0}, w = 0;
-    for (size_t i = b.begin; i < b.end; ++i) {
-      for (int k = 0; k < 3; ++k) sum[k] += static_cast<double>(channel(e[i].colour, k)) * e[i].count;
-      w += static_cast<double>(e[i].count);
-    }
-    uint32_t c = 0;
-    for (int k = 0; k < 3; ++k) c = c << 8 | static_cast<uint32_t>(std::lround(sum[k] / w));
-    palette.push_back(c);
-  }
-  return palette;
-}
+constexpr int kMaxDelay = 65535;          // hundredths of a second, 16-bit
 
 // Packs LZW codes least significant bit first into 255-byte sub-blocks.
 class CodeWriter {
@@ -194,16 +104,137 @@ void put16(std::string& s, int v) {
   s.push_back(static_cast<char>(v >> 8 & 0xff));
 }
 
+struct Rect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // [x0, x1) x [y0, y1); empty when x1 <= x0
+  bool empty() const { return x1 <= x0 || y1 <= y0; }
+  void add(int x, int y) {
+    if (empty()) *this = {x, y, x + 1, y + 1};
+    x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x + 1), y1 = std::max(y1, y + 1);
+  }
+  void add(const Rect& r) {
+    if (r.empty()) return;
+    add(r.x0, r.y0);
+    add(r.x1 - 1, r.y1 - 1);
+  }
+};
+
+// A frame decided but not yet written: its disposal depends on the frame after it.
+struct Pending {
+  std::vector<uint8_t> target;  // the whole canvas this frame shows
+  std::vector<uint8_t> before;  // the canvas before it is drawn
+  Rect rect;                    // what it draws
+  int delay = 0;                // hundredths of a second
+  bool clear = false;           // disposal 2: its rectangle returns to transparent afterwards
+};
+
+// Frame differencing in index space. A frame draws only the rectangle holding every pixel that
+// differs from the canvas it is drawn on, and inside it writes the transparent index for
+// pixels that already show the right colour (long runs of one code: LZW's best case). A pixel
+// that must turn transparent cannot be drawn (transparent means "leave as is"), so the frame
+// before it is given disposal 2 over a rectangle grown to cover those pixels: the decoder
+// clears it, and the new frame redraws whatever inside it stays opaque. A frame identical to
+// the canvas is not written; its time is added to the frame before.
+class GifFrames {
+ public:
+  GifFrames(std::string& gif, int width, int height, int transparent)
+      : gif_(gif), w_(width), h_(height), t_(static_cast<uint8_t>(transparent)),
+        canvas_(static_cast<size_t>(width) * height, t_) {}
+
+  void add(const std::vector<uint8_t>& target, int delay) {
+    if (pending_) {
+      // Pixels the pending frame leaves opaque that this one wants transparent.
+      Rect clear;
+      for (int y = 0; y < h_; ++y)
+        for (int x = 0; x < w_; ++x) {
+          const size_t p = static_cast<size_t>(y) * w_ + x;
+          if (target[p] == t_ && pending_->target[p] != t_) clear.add(x, y);
+        }
+      canvas_ = pending_->target;
+      if (!clear.empty()) {
+        pending_->rect.add(clear);
+        pending_->clear = true;
+        const Rect& r = pending_->rect;
+        for (int y = r.y0; y < r.y1; ++y) std::fill_n(canvas_.begin() + static_cast<ptrdiff_t>(y) * w_ + r.x0, r.x1 - r.x0, t_);
+      }
+    }
+    Rect changed;
+    for (int y = 0; y < h_; ++y)
+      for (int x = 0; x < w_; ++x)
+        if (target[static_cast<size_t>(y) * w_ + x] != canvas_[static_cast<size_t>(y) * w_ + x]) changed.add(x, y);
+    if (changed.empty() && pending_ && !pending_->clear) {
+      pending_->delay += delay;  // the same picture: shown longer
+      return;
+    }
+    if (changed.empty()) changed = {0, 0, 1, 1};  // a frame must draw something to hold its time
+    flush();
+    pending_ = Pending{target, canvas_, changed, delay, false};
+  }
+
+  void finish() { flush(); }
+
+ private:
+  void flush() {
+    if (!pending_) return;
+    const Pending& f = *pending_;
+    // Graphic control: disposal (1 keep, 2 clear), transparent index, delay.
+    gif_ += "\x21\xF9\x04";
+    gif_.push_back(static_cast<char>((f.clear ? 2 : 1) << 2 | 1));
+    put16(gif_, std::min(f.delay, kMaxDelay));
+    gif_.push_back(static_cast<char>(t_));
+    gif_.push_back('\0');
+    gif_.push_back('\x2C');  // image descriptor: the rectangle, the global table
+    const Rect& r = f.rect;
+    put16(gif_, r.x0);
+    put16(gif_, r.y0);
+    put16(gif_, r.x1 - r.x0);
+    put16(gif_, r.y1 - r.y0);
+    gif_.push_back('\0');
+    // Unchanged pixels as the transparent index usually make the longer runs, but a short run
+    // of them inside changed pixels breaks strings LZW has already seen: runs shorter than
+    // `min_run` are written as their colours. A few settings are coded and the shortest kept;
+    // either way every pixel shows what it should (a transparent canvas pixel is the transparent
+    // index in both spellings).
+    const int rw = r.x1 - r.x0;
+    std::string best;
+    for (const int min_run : {1, 3, 8, rw + 1}) {
+      std::vector<uint8_t> idx;
+      idx.reserve(static_cast<size_t>(rw) * (r.y1 - r.y0));
+      for (int y = r.y0; y < r.y1; ++y) {
+        const size_t row = static_cast<size_t>(y) * w_;
+        for (int x = r.x0; x < r.x1;) {
+          int run = 0;
+          while (x + run < r.x1 && f.target[row + x + run] == f.before[row + x + run]) ++run;
+          const bool mark = run >= min_run;
+          for (int k = 0; k < run; ++k) idx.push_back(mark ? t_ : f.target[row + x + k]);
+          x += run;
+          if (x < r.x1) idx.push_back(f.target[row + x++]);
+        }
+      }
+      std::string coded;
+      lzw(idx, coded);
+      if (best.empty() || coded.size() < best.size()) best.swap(coded);
+    }
+    gif_ += best;
+    pending_.reset();
+  }
+
+  std::string& gif_;
+  int w_, h_;
+  uint8_t t_;
+  std::vector<uint8_t> canvas_;  // what the decoder shows before the next frame is drawn
+  std::optional<Pending> pending_;
+};
+
 }  // namespace
 
 void write_gif(const std::filesystem::path& file, int frames, double fps,
-               const std::function<RgbaImage(int)>& frame, bool loop) {
+               const std::function<RgbaImage(int)>& frame, bool loop, bool transparent) {
   if (frames < 1) throw Error(file.string() + ": a GIF needs at least one frame");
   if (!(fps > 0 && std::isfinite(fps))) throw Error(file.string() + ": frame rate must be positive");
   output_target(file);  // refuse a device or folder before rendering anything
 
-  // Pass 1: the colours of every frame (sampled evenly in large frames).
-  std::unordered_map<uint32_t, uint64_t> histogram;
+  // Pass 1: the palette from every frame's colours.
+  std::unique_ptr<PaletteQuantiser> quantiser;
   int width = 0, height = 0;
   for (int i = 0; i < frames; ++i) {
     const RgbaImage img = frame(i);
@@ -213,74 +244,49 @@ void write_gif(const std::filesystem::path& file, int frames, double fps,
       if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide)
         throw Error(file.string() + ": a GIF is 1..65535 pixels on each side, not " + std::to_string(width) + "x" +
                     std::to_string(height));
+      quantiser = std::make_unique<PaletteQuantiser>(width, height, transparent, file.string());
     }
     if (img.width != width || img.height != height || img.rgba.size() != static_cast<size_t>(width) * height * 4)
       throw Error(file.string() + ": frame " + std::to_string(i) + " does not match the first frame's size");
-    const size_t n = static_cast<size_t>(width) * height;
-    const size_t step = std::max<size_t>(1, n / kHistogramPixels);
-    for (size_t p = 0; p < n; p += step) ++histogram[over_white(&img.rgba[4 * p])];
+    quantiser->gather(img);
   }
-  const std::vector<uint32_t> palette = make_palette(histogram);
+  const std::array<uint32_t, 256>& palette = quantiser->palette();
+  const int t = quantiser->transparent_index();
 
   std::string gif = "GIF89a";
   put16(gif, width);
   put16(gif, height);
   gif.push_back(static_cast<char>(0xF7));  // global table of 256 entries, 8-bit colour resolution
-  gif.push_back('\0');                     // background index
+  gif.push_back(static_cast<char>(t));     // background: transparent, what disposal 2 restores
   gif.push_back('\0');                     // square pixels
-  for (int i = 0; i < kPaletteSize; ++i) {
-    const uint32_t c = i < static_cast<int>(palette.size()) ? palette[static_cast<size_t>(i)] : 0;
-    for (int k = 0; k < 3; ++k) gif.push_back(static_cast<char>(channel(c, k)));
-  }
+  for (int i = 0; i < kPaletteSize; ++i)
+    for (int k = 0; k < 3; ++k) gif.push_back(static_cast<char>(palette[static_cast<size_t>(i)] >> (16 - 8 * k) & 0xff));
   if (loop) {
     gif += "\x21\xFF\x0B" "NETSCAPE2.0" "\x03\x01";
     put16(gif, 0);  // repeat forever
     gif.push_back('\0');
   }
 
-  // Pass 2: each frame as indices into the palette (nearest colour, remembered per colour).
-  std::unordered_map<uint32_t, uint8_t> nearest;
-  std::vector<uint8_t> idx(static_cast<size_t>(width) * height);
+  // Pass 2: each frame's indices, differenced against the canvas. Frame i is shown from
+  // round(100 i / fps) to round(100 (i+1) / fps) hundredths.
+  GifFrames out(gif, width, height, t);
+  int mapped = 0;
+  auto take = [&](const std::vector<uint8_t>& idx) {
+    const int delay = static_cast<int>(std::lround(100.0 * (mapped + 1) / fps) - std::lround(100.0 * mapped / fps));
+    ++mapped;
+    out.add(idx, delay);
+  };
   for (int i = 0; i < frames; ++i) {
     const RgbaImage img = frame(i);
-    if (img.width != width || img.height != height || img.rgba.size() != idx.size() * 4)
+    if (img.width != width || img.height != height || img.rgba.size() != static_cast<size_t>(width) * height * 4)
       throw Error(file.string() + ": frame " + std::to_string(i) + " does not match the first frame's size");
-    for (size_t p = 0; p < idx.size(); ++p) {
-      const uint32_t c = over_white(&img.rgba[4 * p]);
-      auto it = nearest.find(c);
-      if (it == nearest.end()) {
-        int best = 0;
-        long best_d = -1;
-        for (size_t q = 0; q < palette.size(); ++q) {
-          long d = 0;
-          for (int k = 0; k < 3; ++k) {
-            const long dk = channel(c, k) - channel(palette[q], k);
-            d += dk * dk;
-          }
-          if (best_d < 0 || d < best_d) {
-            best_d = d;
-            best = static_cast<int>(q);
-          }
-        }
-        it = nearest.emplace(c, static_cast<uint8_t>(best)).first;
-      }
-      idx[p] = it->second;
-    }
-    // Graphic control: keep the frame (disposal 1), its delay in hundredths of a second.
-    const int delay = static_cast<int>(std::lround(100.0 * (i + 1) / fps) - std::lround(100.0 * i / fps));
-    gif += "\x21\xF9\x04";
-    gif.push_back('\x04');
-    put16(gif, std::min(delay, 65535));
-    gif.push_back('\0');
-    gif.push_back('\0');
-    gif.push_back('\x2C');  // image descriptor: the whole canvas, the global table
-    put16(gif, 0);
-    put16(gif, 0);
-    put16(gif, width);
-    put16(gif, height);
-    gif.push_back('\0');
-    lzw(idx, gif);
+    quantiser->map(img, take);
   }
+  quantiser->finish(take);
+  if (mapped != frames)
+    throw Error(file.string() + ": cannot quantise colours: paletteuse returned " + std::to_string(mapped) + " of " +
+                std::to_string(frames) + " frames");
+  out.finish();
   gif.push_back('\x3B');
   write_file_atomic(file, gif);
 }
