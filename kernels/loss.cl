@@ -118,48 +118,45 @@ __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* e
   __global const float4* f = Xb + (size_t)k * width * height;
   __global float4* e = E + ((size_t)k * height + y) * width;
   __global const float4* q = Q + ((size_t)k * height + y) * width;
-  /* In a scene with a background every row's extent is the whole row: then no tap needs its
-   * test (the same sum in the same order, without five branches per pixel). */
-  int inside = y >= LOSS_R && y + LOSS_R < height;
-  for (int j = -LOSS_R; j <= LOSS_R && inside; ++j) inside = ex[y + j].x <= lo && ex[y + j].y >= hi;
-  if (inside) {
-    __global const float4* r = f + (y - LOSS_R) * width;
-    for (int x = lo; x <= hi; ++x) {
-      float4 v = (float4)(0.0f);
-#if defined(CHROMA_R)
-      for (int j = 0; j <= 2 * LOSS_R; ++j) v += gv_tap(j - LOSS_R) * r[j * width + x];
-#elif LOSS_R == 2
-      v += G2 * r[x];
-      v += G1 * r[width + x];
-      v += G0 * r[2 * width + x];
-      v += G1 * r[3 * width + x];
-      v += G2 * r[4 * width + x];
-#else
-      for (int j = 0; j <= 2 * LOSS_R; ++j) v += g_tap(j - LOSS_R) * r[j * width + x];
-#endif
-#if defined(CHROMA_R)
-      s += chroma_residual(q[x].xyz, v.xyz, e + x);
-#elif defined(CHROMA_W)
-      const float3 m = loss_metric(v.xyz);
-      e[x] = (float4)(m, 0.0f);
-      s += dot(2.0f * q[x].xyz + v.xyz, m);
-#else
-      e[x] = v;
-      s += dot(2.0f * q[x].xyz + v.xyz, v.xyz);
-#endif
-    }
-    row_sums[(size_t)k * height + y] = s;
-    return;
+  /* Each tap's row contributes on its extent only (zero padding outside the frame and the
+   * drawing). Those ranges are taken once per row: [fa, fb] is where every tap is inside (a
+   * background makes it the whole row), and there no tap needs its test. Rows of a drawing that
+   * is not a rectangle have extents that differ, and testing every tap of every pixel against
+   * them was most of this kernel's time. Either way the same taps are added in the same order
+   * (tap rows top to bottom), so the same bits. */
+  int ta[2 * LOSS_R + 1], tb[2 * LOSS_R + 1];
+  int fa = lo, fb = hi;
+  for (int j = 0; j <= 2 * LOSS_R; ++j) {
+    const int yy = y + j - LOSS_R;
+    const int ok = yy >= 0 && yy < height;
+    ta[j] = ok ? ex[yy].x : width;
+    tb[j] = ok ? ex[yy].y : -1;
+    fa = max(fa, ta[j]);
+    fb = min(fb, tb[j]);
   }
+  const int r = (y - LOSS_R) * width; /* tap row j starts at f + r + j * width */
   for (int x = lo; x <= hi; ++x) {
     float4 v = (float4)(0.0f);
-    for (int j = -LOSS_R; j <= LOSS_R; ++j) {
-      const int yy = y + j;
-#ifdef CHROMA_R
-      if (yy >= 0 && yy < height && x >= ex[yy].x && x <= ex[yy].y) v += gv_tap(j) * f[yy * width + x];
+    if (x >= fa && x <= fb) {
+#if defined(CHROMA_R)
+      for (int j = 0; j <= 2 * LOSS_R; ++j) v += gv_tap(j - LOSS_R) * f[r + j * width + x];
+#elif LOSS_R == 2
+      v += G2 * f[r + x];
+      v += G1 * f[r + width + x];
+      v += G0 * f[r + 2 * width + x];
+      v += G1 * f[r + 3 * width + x];
+      v += G2 * f[r + 4 * width + x];
 #else
-      if (yy >= 0 && yy < height && x >= ex[yy].x && x <= ex[yy].y) v += g_tap(j) * f[yy * width + x];
+      for (int j = 0; j <= 2 * LOSS_R; ++j) v += g_tap(j - LOSS_R) * f[r + j * width + x];
 #endif
+    } else {
+      for (int j = 0; j <= 2 * LOSS_R; ++j) {
+#ifdef CHROMA_R
+        if (x >= ta[j] && x <= tb[j]) v += gv_tap(j - LOSS_R) * f[r + j * width + x];
+#else
+        if (x >= ta[j] && x <= tb[j]) v += g_tap(j - LOSS_R) * f[r + j * width + x];
+#endif
+      }
     }
 #if defined(CHROMA_R)
     s += chroma_residual(q[x].xyz, v.xyz, e + x);

@@ -283,15 +283,26 @@ inline void write_band(__local float4* band_rgba, __local const int* hull, __glo
 #endif
       const int lo2 = max(lo - LOSS_R, 0), hi2 = min(hi + LOSS_R, width - 1);
       __global float4* o = image + base + (size_t)r * width;
+      /* Taps outside the hull are zero and skipped; in [lo + LOSS_R, hi − LOSS_R] none is, and
+       * the taps go without their tests (the same sum in the same order: the same bits). */
       for (int x = lo2; x <= hi2; ++x) {
         float4 v = (float4)(0.0f);
-        for (int j = -LOSS_R; j <= LOSS_R; ++j) {
-          const int xx = x + j;
+        if (x >= lo + LOSS_R && x <= hi - LOSS_R) {
+          for (int j = -LOSS_R; j <= LOSS_R; ++j)
 #ifdef CHROMA_R
-          if (xx >= lo && xx <= hi) v += gv_tap(j) * f[xx];
+            v += gv_tap(j) * f[x + j];
 #else
-          if (xx >= lo && xx <= hi) v += g_tap(j) * f[xx];
+            v += g_tap(j) * f[x + j];
 #endif
+        } else {
+          for (int j = -LOSS_R; j <= LOSS_R; ++j) {
+            const int xx = x + j;
+#ifdef CHROMA_R
+            if (xx >= lo && xx <= hi) v += gv_tap(j) * f[xx];
+#else
+            if (xx >= lo && xx <= hi) v += g_tap(j) * f[xx];
+#endif
+          }
         }
         o[x] = v;
       }

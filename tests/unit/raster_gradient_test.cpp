@@ -141,6 +141,34 @@ TEST_CASE("loss: the kernels' blurred MSE equals the reference's") {
   CHECK(lc == doctest::Approx(lr).epsilon(1e-4));
 }
 
+// The loss's blurs (raster.cl's residual output along x, loss.cl's blur_y_loss_rows along y) add
+// each tap only inside the drawing's row extents, and skip the per-tap tests where every tap is
+// inside. A disc reaching past the frame's top and bottom, a thin sliver and a lone dot give rows
+// whose extents differ from their neighbours' (taps partly outside on one side or both, rows
+// within the radius of the frame's edges, a row of one pixel): the kernels' loss equals the
+// reference's for the plain, a wider and a per-group chroma blur.
+TEST_CASE("loss: rows whose blur taps fall partly outside the drawing's extents") {
+  const Case c = make_case(scene_of(72, 48, {filled(circle({36, 24}, 30), {0.9f, 0.2f, 0.1f, 1}),
+                                             filled(polygon({{2, 10}, {70, 12}, {2, 13}}), {0.1f, 0.3f, 0.8f, 0.6f}),
+                                             filled(polygon({{66, 3}, {67.5f, 3}, {67.5f, 4}}), {0.1f, 0.7f, 0.2f, 1})}),
+                           19, 2);
+  const RasterPlan plan = plan_raster(c.scene, Affine{}, 72, 48);
+  const std::array<double, 4> bg{1, 1, 1, 1};
+  for (const auto& [sl, sc] : {std::pair{1.0, 0.0}, std::pair{1.4, 0.0}, std::pair{1.0, 1.6}}) {
+    CAPTURE(sl);
+    CAPTURE(sc);
+    ClRaster r(runtime(), plan, c.K, sl, sc);
+    r.set_control_points(std::vector<float>(c.cp.begin(), c.cp.end()));
+    r.set_targets(c.targets);
+    const float lc = r.loss_and_gradient(kWeight, {1, 1, 1, 1});
+    const double lr = ref_loss(plan, c.cp, c.targets, c.K, bg, sl, sc);
+    CHECK(lr > 0);
+    // The float sums over this larger drawing are 2.5e-5 off the double reference, before and
+    // after the tests were taken out of the taps (the same bits).
+    CHECK(lc == doctest::Approx(lr).epsilon(1e-4));
+  }
+}
+
 TEST_CASE("gradient of overlapping opaque and translucent fills matches finite differences") {
   const Case c = make_case(scene_of(40, 32, {filled(circle({20, 16}, 9), {0.9f, 0.2f, 0.1f, 1}),
                                              filled(polygon({{3, 4}, {30, 6}, {14, 28}}), {0.1f, 0.3f, 0.8f, 0.6f})}),
