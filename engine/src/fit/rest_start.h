@@ -11,7 +11,8 @@
 // thin figure's first frame at rest, blurred σ 1.5 px at 512, scored IoU 0.88 at 256 (spider)
 // and lost its pin. The render is first blurred as much as the video is softer than it (blur
 // matching's render σ, fit/blur_match.h: the video is G_e ∗ render with σ_e² = σ_r² − 1), so
-// both foregrounds see the same spread.
+// both foregrounds see the same spread. Pinned again, that spider's blurred fit costs 2.81 dB
+// at 1024 px against its clean fit instead of 4.00 (2.01 instead of 1.61 at 256).
 #pragma once
 
 #include "svgmotion/png_io.h"
