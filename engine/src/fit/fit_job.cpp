@@ -223,8 +223,12 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   RgbaImage rest_render = render_image(rt, fit_scene, size.width, false);
   to.keep_part_share = 0.5 * smallest_part_share(rest_render.rgba, rest_render.width, rest_render.height, to.white_threshold);
   TargetFrames target = load_target(*target_path, size.width, size.height, to);
+  // Blur matching at the fitting width first (see match_blur below): the rest pose is judged as
+  // soft as the video shows it (rest_start.h).
+  const BlurMatch first_blur = job.blur_matching ? match_render_blur(rest_render, target.rgba) : BlurMatch{};
   // Keyframe 0 is the drawing at rest when the video starts there (rest_start.h), or when told.
-  const RestStart rest_start = judge_rest_start(rest_render, target, to.white_threshold, to.dilate_px);
+  const RestStart rest_start =
+      judge_rest_start(rest_render, target, to.white_threshold, to.dilate_px, kRestStartIou, first_blur.render_sigma);
   rest_render = RgbaImage{};
   const bool pin_rest = job.start_at_rest.value_or(rest_start.at_rest);
   if (!job.quiet && !job.progress && !job.start_at_rest && !pin_rest)
@@ -292,9 +296,9 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   double total_work = work(total_iters);
   // Blur matching at each width the fit runs at: the render σ of the loss that makes our
   // rest pose look like the video's first frame (fit/blur_match.h).
-  auto match_blur = [&](const TargetFrames& t, const RenderSize& at) {
+  auto match_blur = [&](const TargetFrames& t, const RenderSize& at, const BlurMatch* done = nullptr) {
     if (!job.blur_matching) return BlurMatch{};
-    const BlurMatch m = match_render_blur(render_image(rt, fit_scene, at.width, false), t.rgba);
+    const BlurMatch m = done ? *done : match_render_blur(render_image(rt, fit_scene, at.width, false), t.rgba);
     log::debug("fit: blur matching at %dx%d: best render sigma %.2f (residual x%.3f, rest pose %.1f dB)%s; "
                "best chroma sigma %.2f with luma %.2f (residual x%.3f)%s; render sigma %.2f, chroma %.2f", at.width,
                at.height, m.best_sigma, m.residual_ratio, m.rest_psnr_db, m.best_sigma == m.render_sigma ? ", adopted" : "",
@@ -302,7 +306,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                m.chroma_sigma != m.render_sigma ? ", adopted" : ", not adopted", m.render_sigma, m.chroma_sigma);
     return m;
   };
-  const BlurMatch coarse_blur = match_blur(target, size);
+  const BlurMatch coarse_blur = match_blur(target, size, &first_blur);
   coarse_options.render_blur_sigma = coarse_blur.render_sigma;
   coarse_options.chroma_blur_sigma = coarse_blur.chroma_sigma;
   // The refinement's target and options (its chroma weight is set below), made on first use:
