@@ -9,6 +9,7 @@
 #include "export/dotlottie.h"
 #include "export/lottie_compositing.h"
 #include "export/lottie_json.h"
+#include "export/lottie_motion.h"
 #include "export/lottie_paint.h"
 #include "export/lottie_unsupported.h"
 #include "svgmotion/atomic_file.h"
@@ -21,7 +22,7 @@ using namespace lottie;
 LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
                                 const std::vector<double>& points, const AnimationTiming& timing,
                                 const LottieOptions& options, const ExportMap* map) {
-  check_animation_inputs(scene, plan, points, timing, map, options.decimals);
+  check_animation_inputs(scene, plan, points, timing, map, std::max(0, options.decimals));
   if (!(options.fps > 0 && std::isfinite(options.fps))) throw Error("internal: Lottie frame rate must be positive");
 
   const AnimationPass pass = animation_pass(timing);
@@ -52,7 +53,11 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
     if (!group.paths.empty() && !lone_path) group_ind[g] = next_ind++;
   }
 
-  JsonText j(options.decimals);
+  // Compact: a static coordinate rounded by at most a quarter of the tolerance when measured.
+  const double tol = options.tolerance_px > 0 ? options.tolerance_px : compact_tolerance(scene.width, scene.height);
+  const int static_decimals = options.decimals >= 0 ? options.decimals
+                                                    : std::clamp(static_cast<int>(std::ceil(std::log10(2.9 / tol))), 0, kMaxDecimals);
+  JsonText j(static_decimals);
   j.raw("{\"v\":\"5.7.0\",\"fr\":").num(options.fps, 1e6).raw(",\"ip\":0,\"op\":").num(frames, kFrameScale);
   j.raw(",\"w\":").num(std::max(1.0, std::round(scene.width)), 1).raw(",\"h\":");
   j.num(std::max(1.0, std::round(scene.height)), 1).raw(",\"nm\":").str(options.name);
@@ -93,9 +98,26 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
         rest.push_back(q.x);
         rest.push_back(q.y);
       }
-    // The points of value `i` of the pass for this path.
+    // Compact: the group's transform carries the path's affine motion, the shape keyframed only
+    // for its residual, at the kept keys (lottie_motion.h).
+    const size_t count = f >= 0 ? static_cast<size_t>(plan.path_cp_count[static_cast<size_t>(f)]) : 0;
+    const bool compact = options.compact && animated && rest.size() == 2 * count;
+    CompactPathMotion motion;
+    if (compact) {
+      std::vector<const double*> values;
+      for (int k : pass.seq) values.push_back(&points[(static_cast<size_t>(k) * plan.n_cp + first) * 2]);
+      motion = compact_path_motion(rest, values, pass.times, frames, tol, options.decimals);
+      if (motion.residual) j.set_decimals(motion.shape_decimals);
+    }
+    const bool shape_animated = compact ? motion.residual : animated;
+    std::vector<size_t> shape_keys;
+    if (shape_animated && compact) shape_keys = motion.shape_keys.keys;
+    else if (shape_animated)
+      for (size_t i = 0; i < pass.seq.size(); ++i) shape_keys.push_back(i);
+    // The points of value `i` of the pass for this path (in the moving group's frame).
     auto value_points = [&](size_t i) {
-      return animated ? &points[(static_cast<size_t>(pass.seq[i]) * plan.n_cp + first) * 2] : rest.data();
+      if (!shape_animated) return static_cast<const double*>(rest.data());
+      return compact ? &motion.local[i * 2 * count] : &points[(static_cast<size_t>(pass.seq[i]) * plan.n_cp + first) * 2];
     };
 
     if (!first_layer) j.raw(",");
@@ -119,26 +141,27 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
       }
       const size_t n = (n_points - 1) / 3;
       bool merge = sp.closed && n >= 2;
-      for (size_t i = 0; merge && i < (animated ? pass.seq.size() : 1); ++i) {
+      for (size_t i = 0; merge && i < (shape_animated ? pass.seq.size() : 1); ++i) {
         const double* q = value_points(i) + 2 * cp;
         merge = std::fabs(q[6 * n] - q[0]) <= kSamePoint && std::fabs(q[6 * n + 1] - q[1]) <= kSamePoint;
       }
       if (!first_item) j.raw(",");
       first_item = false;
       j.raw("{\"ty\":\"sh\",\"ks\":");
-      if (!animated) {
+      if (!shape_animated) {
         j.raw("{\"a\":0,\"k\":");
         write_bezier(j, value_points(0) + 2 * cp, n_points, sp.closed, merge);
         j.raw("}}");
       } else {
         j.raw("{\"a\":1,\"k\":[");
-        for (size_t i = 0; i < pass.seq.size(); ++i) {
-          if (i) j.raw(",");
+        for (size_t k = 0; k < shape_keys.size(); ++k) {
+          const size_t i = shape_keys[k];
+          if (k) j.raw(",");
           j.raw("{\"t\":").num(pass.times[i] * frames, kFrameScale).raw(",\"s\":[");
           write_bezier(j, value_points(i) + 2 * cp, n_points, sp.closed, merge);
           j.raw("]");
-          // Linear in time (the easing curve from (0,0) to (1,1)), as SMIL's calcMode="linear".
-          if (i + 1 < pass.seq.size()) j.raw(",\"i\":{\"x\":1,\"y\":1},\"o\":{\"x\":0,\"y\":0}");
+          // Linear in time as SMIL's calcMode="linear", or the compact export's easing.
+          if (k + 1 < shape_keys.size()) write_easing(j, compact ? motion.shape_keys.easing[k] : Easing{});
           j.raw("}");
         }
         j.raw("]}}");
@@ -151,9 +174,25 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
     const std::vector<Scene>& paint_samples = animated ? samples : std::vector<Scene>{};
     paint.fill = gradient_track(scene, paint_samples, p, false, sample_of_value, value_frames);
     paint.stroke = gradient_track(scene, paint_samples, p, true, sample_of_value, value_frames);
+    // Compact: gradients in the moving group's frame, at their fewest keys.
+    std::vector<Gradient> local_gradients;
+    if (compact) {
+      local_gradients.reserve(paint.fill.values.size() + paint.stroke.values.size());
+      for (GradientTrack* track : {&paint.fill, &paint.stroke}) {
+        track->tolerance_px = tol;
+        track->px_per_unit = motion.moves ? motion.px_per_unit : 1.0;
+        if (!motion.moves || track->values.size() != motion.drawn.size()) continue;
+        for (size_t i = 0; i < track->values.size(); ++i) {
+          local_gradients.push_back(*track->values[i]);
+          local_gradients.back().to_canvas = motion.drawn[i].inverse() * local_gradients.back().to_canvas;
+          track->values[i] = &local_gradients.back();
+        }
+      }
+    }
+    j.set_decimals(static_decimals);  // widths, dashes and gradients at the static decimals
     write_paint_items(j, shapes_begin, path, paint, approximate);
     first_item = j.text().size() == shapes_begin;
-    j.raw(first_item ? "" : ",").raw(kGroupTransform).raw("]}]");
+    j.raw(first_item ? "" : ",").raw(motion.moves ? std::string_view(motion.transform) : kGroupTransform).raw("]}]");
     j.raw(",\"ip\":0,\"op\":").num(frames, kFrameScale).raw(",\"st\":0,\"bm\":0}");
     layer_span[p].second = j.text().size();
   }
@@ -180,7 +219,7 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
     comp.group_nulls.push_back(j.text().substr(null_span[g].first, null_span[g].second - null_span[g].first));
   comp.next_ind = next_ind;
   comp.frames = frames;
-  comp.decimals = options.decimals;
+  comp.decimals = static_decimals;
   const CompositionText layers = compose_layers(comp, approximate);
   j.text().resize(layers_begin);
   j.raw(layers.layers).raw("]}\n");
