@@ -103,10 +103,14 @@ TEST_CASE("compact lottie: still paths static, a turning part keyed on its group
   CHECK(item(disc, "tr")["p"]["a"] == 0);
   CHECK(item(disc, "tr")["r"]["a"] == 0);
 
-  // The arm: its shape static, its group turning about the shoulder with fewer keys than values.
+  // The arm: its shape static in a group of its own turning about the shoulder with fewer keys
+  // than values; its fill after that group, in the layer's.
   const auto arm = group_of(j, "arm");
-  CHECK(item(arm, "sh")["ks"]["a"] == 0);
-  const auto tr = item(arm, "tr");
+  CHECK(item(arm, "fl") != nullptr);
+  CHECK(item(arm, "tr")["r"]["a"] == 0);
+  const auto moving = item(arm, "gr")["it"];
+  CHECK(item(moving, "sh")["ks"]["a"] == 0);
+  const auto tr = item(moving, "tr");
   REQUIRE(tr["r"]["a"] == 1);
   CHECK(tr["r"]["k"].size() < kValues / 2);
   CHECK(tr["p"]["a"] == 0);  // about the joint nothing but the angle moves
@@ -129,7 +133,7 @@ TEST_CASE("compact lottie: still paths static, a turning part keyed on its group
   CHECK(worst <= 2 * tol);
 
   // The flag deforms: its shape keyed, at fewer keys than values, with easing somewhere.
-  const auto flag = item(group_of(j, "flag"), "sh")["ks"];
+  const auto flag = item(item(group_of(j, "flag"), "gr")["it"], "sh")["ks"];
   REQUIRE(flag["a"] == 1);
   CHECK(flag["k"].size() >= 3);
   CHECK(flag["k"].size() < kValues);

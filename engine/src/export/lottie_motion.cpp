@@ -81,9 +81,9 @@ CompactPathMotion compact_path_motion(const std::vector<double>& rest, const std
   const SampleError error = point_error(out.local, 2 * count, out.px_per_unit);
   out.shape_keys = reduce_keyframes(times, out.local, 2 * count, tolerance, error);
   // Lottie writes tangents relative to their vertex, each rounded: a control point moves by up to
-  // twice a rounding, so the budget is half the SVG's.
+  // twice the measured rounding, half the tolerance at most (as the static shapes' decimals).
   out.shape_decimals = decimals >= 0 ? decimals
-                                     : measured_decimals(out.local, 2 * count, out.shape_keys.keys, error, tolerance / 8, 0,
+                                     : measured_decimals(out.local, 2 * count, out.shape_keys.keys, error, tolerance / 4, 0,
                                                          2 * count, kMaxDecimals);
   return out;
 }

@@ -5,9 +5,9 @@
 // when it changes beyond the tolerance in that moving frame (the residual), at the fewest keys.
 //
 // Lottie's transform has no skew that every player reads alike, so a motion whose skew moves a
-// point by more than the tolerance keeps the skew in the residual shape. The shape group holds
-// the path's paints too, so its gradients are written in the group's moving frame
-// (`drawn`), where a gradient that follows its shape stands still.
+// point by more than the tolerance keeps the skew in the residual shape. The transform is on a
+// group holding only the shapes; the paints after it apply in the canvas' frame, so gradients
+// keep the placement animation.svg draws and strokes their width, as in the full export.
 #pragma once
 
 #include <string>
@@ -21,7 +21,7 @@ namespace svgm::lottie {
 struct CompactPathMotion {
   bool moves = false;     // false: the rest shape, static, identity transform
   bool residual = false;  // the shape is keyframed (its values in `local`, keys in `shape_keys`)
-  std::string transform;  // the shape group's `tr` item (moving)
+  std::string transform;  // the shapes' group's `tr` item (moving)
   std::vector<Affine> drawn;  // moving: per value, the group's map as players draw it (canvas)
   std::vector<double> local;  // residual: per value, the shape's 2 * count numbers in the group's frame
   ReducedKeys shape_keys;     // residual: the kept values and their easing

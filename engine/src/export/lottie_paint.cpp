@@ -156,13 +156,12 @@ std::array<Vec2, 3> placed_points(const double* v, bool elliptical, const Gradie
 void reduce_gradient(GradientPlan& plan, const GradientTrack& track) {
   const std::vector<double> numbers = placement_numbers(plan);
   const Gradient& g = *track.values[0];
-  const double px = track.px_per_unit;
   const SampleError error = [&](size_t i, const double* approx) {
     const std::array<Vec2, 3> a = placed_points(&numbers[6 * i], plan.elliptical, g);
     const std::array<Vec2, 3> b = placed_points(approx, plan.elliptical, g);
     double worst = 0;
     for (size_t k = 0; k < a.size(); ++k) worst = std::max(worst, std::hypot(a[k].x - b[k].x, a[k].y - b[k].y));
-    return worst * px;
+    return worst;
   };
   double moved = 0;
   for (size_t i = 1; i < plan.placements.size(); ++i) moved = std::max(moved, error(i, numbers.data()));
@@ -328,17 +327,23 @@ void write_stroke(JsonText& j, const Path& path, const GradientTrack& track, con
 void write_transform(JsonText& j, const std::vector<double>& frames, size_t n, bool animated, const ReducedKeys* keys,
                      const std::function<Vec2(size_t)>& position, const std::function<double(size_t)>& rotation,
                      const std::function<Vec2(size_t)>& scale, const std::function<Vec2(size_t)>& anchor) {
+  // A property that is the same at every value is written static.
+  auto varies = [&](const auto& f) {
+    for (size_t i = 1; animated && i < n; ++i)
+      if (f(i) != f(0)) return true;
+    return false;
+  };
   j.raw("{\"ty\":\"tr\",\"p\":");
-  write_property(j, frames, n, [&](size_t i) { const Vec2 v = position(i); j.pair(v.x, v.y); }, animated, false, keys);
+  write_property(j, frames, n, [&](size_t i) { const Vec2 v = position(i); j.pair(v.x, v.y); }, varies(position), false, keys);
   j.raw(",\"a\":");
-  write_property(j, frames, n, [&](size_t i) { const Vec2 v = anchor(i); j.pair(v.x, v.y); }, animated, false, keys);
+  write_property(j, frames, n, [&](size_t i) { const Vec2 v = anchor(i); j.pair(v.x, v.y); }, varies(anchor), false, keys);
   j.raw(",\"s\":");
   write_property(j, frames, n, [&](size_t i) {
     const Vec2 v = scale(i);
     j.raw("[").num(100 * v.x, 1e6).raw(",").num(100 * v.y, 1e6).raw("]");
-  }, animated, false, keys);
+  }, varies(scale), false, keys);
   j.raw(",\"r\":");
-  write_property(j, frames, n, [&](size_t i) { j.num(rotation(i), 1e6); }, animated, true, keys);
+  write_property(j, frames, n, [&](size_t i) { j.num(rotation(i), 1e6); }, varies(rotation), true, keys);
   j.raw(",\"o\":{\"a\":0,\"k\":100},\"sk\":{\"a\":0,\"k\":0},\"sa\":{\"a\":0,\"k\":0}}");
 }
 

@@ -35,9 +35,8 @@ struct GradientTrack {
   std::vector<double> frames;
   // The compact export (compact_motion.h): only the fewest keys (eased) that place the
   // gradient within `tolerance_px` canvas pixels at every value are written, none when it stays
-  // within that of its first value; 0: every value, linear. The gradient's coordinates are
-  // `px_per_unit` canvas pixels each (the group transform of a moving shape may scale them).
-  double tolerance_px = 0, px_per_unit = 1;
+  // within that of its first value; 0: every value, linear.
+  double tolerance_px = 0;
 };
 
 // The document as the exported SVG (animation.svg) draws it at each of `times` (seconds): the

@@ -83,7 +83,8 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
   std::vector<std::pair<size_t, size_t>> layer_span(P), null_span(scene.groups.size());
   std::vector<double> rest;  // a static path's own points, in the layout of the fitted ones
   bool first_layer = true;
-  for (auto it = order.rbegin(); it != order.rend(); ++it) {  // Lottie lists the top layer first
+  // One path's shape layer, compact when asked and possible; returns whether it was compact.
+  auto write_layer = [&](std::vector<int>::const_reverse_iterator it, bool try_compact) {
     const size_t p = static_cast<size_t>(*it);
     const Path& path = scene.paths[p];
     const int f = map ? map->fitted_of[p] : static_cast<int>(p);
@@ -101,7 +102,7 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
     // Compact: the group's transform carries the path's affine motion, the shape keyframed only
     // for its residual, at the kept keys (lottie_motion.h).
     const size_t count = f >= 0 ? static_cast<size_t>(plan.path_cp_count[static_cast<size_t>(f)]) : 0;
-    const bool compact = options.compact && animated && rest.size() == 2 * count;
+    const bool compact = try_compact && animated && rest.size() == 2 * count;
     CompactPathMotion motion;
     if (compact) {
       std::vector<const double*> values;
@@ -131,6 +132,10 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
     j.raw("\"ks\":{\"o\":").fixed((path.layer >= 0 ? path.local_opacity : path.opacity) * 100.0, kOpacityScale).raw(",").raw(kLayerTransformAfterOpacity);
     j.raw(",\"ao\":0,\"shapes\":[{\"ty\":\"gr\",\"nm\":").str(path.id).raw(",\"it\":[");
     const size_t shapes_begin = j.text().size();
+    // Compact, moving: the shapes in a group of their own carrying the motion; the paints after
+    // it apply to them in the canvas' frame (gradients where animation.svg draws them, stroke
+    // widths unscaled, as the full export).
+    if (motion.moves) j.raw("{\"ty\":\"gr\",\"nm\":\"motion\",\"it\":[");
     size_t cp = 0;  // index of the subpath's first point within the path
     bool first_item = true;
     for (const Subpath& sp : path.subpaths) {
@@ -168,33 +173,40 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
       }
       cp += n_points;
     }
+    if (motion.moves) j.raw(first_item ? "" : ",").raw(motion.transform).raw("]}");
     // Stroke and fill, their gradients following the shape (lottie_paint.h).
     PaintInputs paint;
-    for (size_t i = 0; i < (animated ? pass.seq.size() : 1); ++i) paint.points.push_back(value_points(i));
+    for (size_t i = 0; i < (animated ? pass.seq.size() : 1); ++i)
+      paint.points.push_back(motion.moves ? &points[(static_cast<size_t>(pass.seq[i]) * plan.n_cp + first) * 2] : value_points(i));
     const std::vector<Scene>& paint_samples = animated ? samples : std::vector<Scene>{};
     paint.fill = gradient_track(scene, paint_samples, p, false, sample_of_value, value_frames);
     paint.stroke = gradient_track(scene, paint_samples, p, true, sample_of_value, value_frames);
-    // Compact: gradients in the moving group's frame, at their fewest keys.
-    std::vector<Gradient> local_gradients;
-    if (compact) {
-      local_gradients.reserve(paint.fill.values.size() + paint.stroke.values.size());
-      for (GradientTrack* track : {&paint.fill, &paint.stroke}) {
-        track->tolerance_px = tol;
-        track->px_per_unit = motion.moves ? motion.px_per_unit : 1.0;
-        if (!motion.moves || track->values.size() != motion.drawn.size()) continue;
-        for (size_t i = 0; i < track->values.size(); ++i) {
-          local_gradients.push_back(*track->values[i]);
-          local_gradients.back().to_canvas = motion.drawn[i].inverse() * local_gradients.back().to_canvas;
-          track->values[i] = &local_gradients.back();
-        }
-      }
-    }
+    // Compact: gradients at their fewest keys.
+    if (compact) paint.fill.tolerance_px = paint.stroke.tolerance_px = tol;
     j.set_decimals(static_decimals);  // widths, dashes and gradients at the static decimals
     write_paint_items(j, shapes_begin, path, paint, approximate);
     first_item = j.text().size() == shapes_begin;
-    j.raw(first_item ? "" : ",").raw(motion.moves ? std::string_view(motion.transform) : kGroupTransform).raw("]}]");
+    j.raw(first_item ? "" : ",").raw(kGroupTransform).raw("]}]");
     j.raw(",\"ip\":0,\"op\":").num(frames, kFrameScale).raw(",\"st\":0,\"bm\":0}");
     layer_span[p].second = j.text().size();
+    return compact;
+  };
+  for (auto it = order.crbegin(); it != order.crend(); ++it) {  // Lottie lists the top layer first
+    const size_t at = j.text().size(), approximate_at = approximate.size();
+    const bool was_first = first_layer;
+    if (!write_layer(it, options.compact)) continue;
+    // A path the fit deforms beyond the tolerance at nearly every value (its jitter above it) is
+    // written per value when that is shorter than its compact form.
+    const std::string compact_text = j.text().substr(at);
+    const auto compact_span = layer_span[static_cast<size_t>(*it)];
+    j.text().resize(at);
+    approximate.resize(approximate_at);
+    first_layer = was_first;
+    write_layer(it, false);
+    if (j.text().size() - at <= compact_text.size()) continue;
+    j.text().resize(at);
+    j.text() += compact_text;
+    layer_span[static_cast<size_t>(*it)] = compact_span;
   }
   for (size_t g = 0; g < scene.groups.size(); ++g) {
     if (!group_ind[g]) continue;
