@@ -6,7 +6,8 @@
 #     numbers; `export --full` is byte for byte the fit's own --full export
 #   - compact: the still disc is the user's element unchanged; the moving square is wrapped in a
 #     new <g> whose animateTransform moves it, so an edit of the square's rest geometry shows in
-#     playback (render --time)
+#     playback (render --time, and Chromium's own SMIL playback when it is installed), as does an
+#     edit of the wrapper group's transform
 #   - bad input: one line naming the path, exit 1 (usage: 2), nothing written
 set -u
 bin=$1
@@ -59,6 +60,26 @@ sed 's/id="sq" x="6" y="6" width="10"/id="sq" x="6" y="6" width="14"/' "$tmp/fit
 "$bin" render "$tmp/fit/animation.svg" -o "$tmp/a1.png" --size 32 --time 0.9 2>/dev/null
 check "the square moves in playback" '! cmp -s "$tmp/a0.png" "$tmp/a1.png"'
 check "an edit of the rest shape shows in playback at 0.5 s" '! cmp -s "$tmp/a.png" "$tmp/b.png"'
+# The same in a browser's own SMIL playback: Chromium paused at 0.5 s (skipped without it).
+if command -v chromium >/dev/null; then
+  shot() {  # SVG PNG: the SVG inlined in a page, 64 px, its animations paused at 0.5 s
+    local d=$tmp/shot_$RANDOM
+    mkdir -p "$d"
+    { echo '<!doctype html><html><body style="margin:0;background:#fff">'; sed '1{/^<?xml/d}' "$1"
+      echo "<script>const s=document.querySelector('svg');s.setAttribute('width','64');s.setAttribute('height','64');s.pauseAnimations();s.setCurrentTime(0.5);</script></body></html>"; } >"$d/page.html"
+    chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run --disable-background-networking \
+      --disable-component-update --disable-sync --user-data-dir="$d/profile" --hide-scrollbars --window-size=64,64 \
+      --virtual-time-budget=2000 --screenshot="$2" "file://$d/page.html" >/dev/null 2>&1
+  }
+  sed 's/<g><rect id="sq"/<g transform="translate(6 0)"><rect id="sq"/' "$tmp/fit/animation.svg" >"$tmp/moved.svg"
+  shot "$tmp/fit/animation.svg" "$tmp/c_a.png"
+  shot "$tmp/fit/animation.svg" "$tmp/c_a2.png"
+  shot "$tmp/edited.svg" "$tmp/c_b.png"
+  shot "$tmp/moved.svg" "$tmp/c_c.png"
+  check "Chromium: two screenshots of the same file at 0.5 s are the same" '[[ -s $tmp/c_a.png ]] && cmp -s "$tmp/c_a.png" "$tmp/c_a2.png"'
+  check "Chromium plays an edit of the rest shape (at 0.5 s)" '[[ -s $tmp/c_b.png ]] && ! cmp -s "$tmp/c_a.png" "$tmp/c_b.png"'
+  check "Chromium plays an edit of the wrapper group's transform (at 0.5 s)" '[[ -s $tmp/c_c.png ]] && ! cmp -s "$tmp/c_a.png" "$tmp/c_c.png"'
+fi
 
 # Clips at the fit's own frame rate (a folder of frames has 24 fps), or at --fps.
 rate() { ffprobe -v error -select_streams v:0 -show_entries stream=r_frame_rate -of default=nw=1:nk=1 "$1"; }

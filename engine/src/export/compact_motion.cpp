@@ -112,6 +112,34 @@ Vec2 rest_centre(const std::vector<double>& rest, const Affine& parent_to_canvas
   return parent_to_canvas.inverse().apply({0.5 * (x0 + x1), 0.5 * (y0 + y1)});
 }
 
+Vec2 motion_pivot(const std::vector<Affine>& affine, const std::vector<double>& rest, const Affine& parent_to_canvas) {
+  if (rest.empty()) return {};
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (size_t k = 0; k + 1 < rest.size(); k += 2) {
+    x0 = std::min(x0, rest[k]), x1 = std::max(x1, rest[k]);
+    y0 = std::min(y0, rest[k + 1]), y1 = std::max(y1, rest[k + 1]);
+  }
+  const Eigen::Vector2d c0(0.5 * (x0 + x1), 0.5 * (y0 + y1));
+  // m(P) - P = (L - I) P + b: minimise the sum of its squares plus lambda |P - c0|^2.
+  Eigen::Matrix2d n = Eigen::Matrix2d::Zero();
+  Eigen::Vector2d r = Eigen::Vector2d::Zero();
+  for (const Affine& m : affine) {
+    Eigen::Matrix2d a;
+    a << m.a - 1, m.c, m.b, m.d - 1;
+    const Eigen::Vector2d b(m.e, m.f);
+    n += a.transpose() * a;
+    r -= a.transpose() * b;
+  }
+  const double lambda = 1e-4 * n.trace() / 2 + 1e-12;
+  n += lambda * Eigen::Matrix2d::Identity();
+  r += lambda * c0;
+  Eigen::Vector2d p = n.ldlt().solve(r);
+  const double reach = 4 * std::max(1.0, std::hypot(x1 - x0, y1 - y0));
+  if (!p.allFinite()) p = c0;
+  if ((p - c0).norm() > reach) p = c0 + reach * (p - c0).normalized();
+  return parent_to_canvas.inverse().apply({p.x(), p.y()});
+}
+
 SampleError wrapper_error(const std::vector<double>& trajectory, const std::vector<double>& rest,
                           const Affine& parent_to_canvas, Vec2 c, WrapperForm form) {
   const Affine to_parent = parent_to_canvas.inverse();

@@ -72,6 +72,13 @@ WrapperKeys wrapper_keys(const std::vector<Affine>& affine, const Affine& parent
                          const std::vector<double>& times, double tolerance, int decimals, Vec2 centre, WrapperForm form);
 // The centre of the rest points (canvas) in the parent's space.
 Vec2 rest_centre(const std::vector<double>& rest, const Affine& parent_to_canvas);
+// The point (parent space) the part turns about: the one its affine maps (canvas) move least
+// over the values (least squares), pulled towards the rest centre where the motion leaves it
+// open (a translation) and kept within a few of the rest shape's sizes of it. A part swinging
+// about a joint (a forearm about the elbow) then has a still position and only its angle keyed,
+// which eases with few keys, where about its own centre its position sweeps an arc (x and y out
+// of phase: no one easing fits both).
+Vec2 motion_pivot(const std::vector<Affine>& affine, const std::vector<double>& rest, const Affine& parent_to_canvas);
 
 // The fewest decimals (0..max) at which rounding every number of `keys` of `values` (dim per
 // value) moves no sample by more than `budget` pixels, per `error`; `first`/`count` select

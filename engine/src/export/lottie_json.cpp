@@ -48,6 +48,14 @@ bool returns_to_start(const double* p, size_t n_points, bool closed) {
   return closed && n >= 2 && std::fabs(p[6 * n] - p[0]) <= kSamePoint && std::fabs(p[6 * n + 1] - p[1]) <= kSamePoint;
 }
 
+void write_easing(JsonText& j, const Easing& e) {
+  if (e.is_linear()) {
+    j.raw(",\"i\":{\"x\":1,\"y\":1},\"o\":{\"x\":0,\"y\":0}");
+    return;
+  }
+  j.raw(",\"i\":{\"x\":0.6667,\"y\":").num(e.y2, 1e4).raw("},\"o\":{\"x\":0.3333,\"y\":").num(e.y1, 1e4).raw("}");
+}
+
 void write_colour(JsonText& j, const Rgba& c) {
   j.raw("{\"a\":0,\"k\":[").num(c.r, kColourScale).raw(",").num(c.g, kColourScale).raw(",");
   j.num(c.b, kColourScale).raw(",1]}");

@@ -8,7 +8,9 @@
 #include <cmath>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "export/keyframe_reduce.h"
 #include "svgmotion/scene.h"
 
 namespace svgm::lottie {
@@ -39,6 +41,8 @@ class JsonText {
   // [x,y] in coordinates' precision
   JsonText& pair(double x, double y) { return raw("[").coord(x).raw(",").coord(y).raw("]"); }
   double coord_scale() const { return coord_scale_; }
+  // The compact export measures each layer's decimals (compact_motion.h).
+  void set_decimals(int decimals) { coord_scale_ = std::pow(10.0, decimals); }
   std::string& text() { return s_; }
 
  private:
@@ -64,6 +68,37 @@ void write_bezier(JsonText& j, const double* p, size_t n_points, bool closed, bo
 
 // Whether a closed subpath's last point is its first (write_bezier's merge_close).
 bool returns_to_start(const double* p, size_t n_points, bool closed);
+
+// A keyframe's easing towards the next (keyframe_reduce.h): "o" is the curve's first handle,
+// "i" its second; linear as (0,0) and (1,1), as SMIL's calcMode="linear".
+void write_easing(JsonText& j, const Easing& e);
+
+// A property over the written values, static ({"a":0,"k":value(0)}) or keyframed at `frames`
+// (one per value): every value, linear in time, when `keys` is null, else only the kept ones
+// with their easing. `value(i)` writes value i; a one-dimensional keyframe value is written as
+// an array ("s":[v]) when `scalar`: lottie-web reads a bare number there as no value.
+template <typename Write>
+void write_property(JsonText& j, const std::vector<double>& frames, size_t n, Write&& value, bool animated,
+                    bool scalar = false, const ReducedKeys* keys = nullptr) {
+  if (!animated) {
+    j.raw("{\"a\":0,\"k\":");
+    value(0);
+    j.raw("}");
+    return;
+  }
+  const size_t count = keys ? keys->keys.size() : n;
+  j.raw("{\"a\":1,\"k\":[");
+  for (size_t k = 0; k < count; ++k) {
+    const size_t i = keys ? keys->keys[k] : k;
+    if (k) j.raw(",");
+    j.raw("{\"t\":").num(frames[i], kFrameScale).raw(",\"s\":").raw(scalar ? "[" : "");
+    value(i);
+    j.raw(scalar ? "]" : "");
+    if (k + 1 < count) write_easing(j, keys ? keys->easing[k] : Easing{});
+    j.raw("}");
+  }
+  j.raw("]}");
+}
 
 // {"a":0,"k":[r,g,b,1]}
 void write_colour(JsonText& j, const Rgba& c);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <array>
 #include <functional>
 #include <optional>
 
@@ -111,36 +112,65 @@ void write_stops(JsonText& j, const std::vector<GradientStop>& stops) {
   j.raw("]}}");
 }
 
-// A multi-dimensional property, static or keyframed (linear in time, as the shapes).
-// A keyframe's value is always an array, a one-dimensional one too ("s":[v]): lottie-web reads
-// a bare number there as no value.
-template <typename Write>
-void write_property(JsonText& j, const std::vector<double>& frames, size_t n, Write&& value, bool animated,
-                    bool scalar = false) {
-  if (!animated) {
-    j.raw("{\"a\":0,\"k\":");
-    value(0);
-    j.raw("}");
-    return;
-  }
-  j.raw("{\"a\":1,\"k\":[");
-  for (size_t i = 0; i < n; ++i) {
-    if (i) j.raw(",");
-    j.raw("{\"t\":").num(frames[i], kFrameScale).raw(",\"s\":").raw(scalar ? "[" : "");
-    value(i);
-    j.raw(scalar ? "]" : "");
-    if (i + 1 < n) j.raw(",\"i\":{\"x\":1,\"y\":1},\"o\":{\"x\":0,\"y\":0}");
-    j.raw("}");
-  }
-  j.raw("]}");
-}
-
 struct GradientPlan {
   std::vector<Placement> placements;  // per value
+  std::vector<RotateScaleRotate> parts;  // elliptical: the map's split per value, unwrapped
   std::vector<GradientStop> stops;
   bool elliptical = false;
   bool animated = false;
+  std::optional<ReducedKeys> keys;  // compact: the values written (GradientTrack::tolerance_px)
 };
+
+// The numbers a player interpolates for one value: [s.x, s.y, e.x, e.y, highlight, angle], an
+// elliptical gradient's [origin.x, origin.y, rotate1, sx, sy, rotate2] (its groups' transforms).
+std::vector<double> placement_numbers(const GradientPlan& plan) {
+  std::vector<double> out;
+  for (size_t i = 0; i < plan.placements.size(); ++i) {
+    const Placement& p = plan.placements[i];
+    if (plan.elliptical) {
+      const RotateScaleRotate& r = plan.parts[i];
+      out.insert(out.end(), {p.ellipse.e, p.ellipse.f, r.rotate1, r.sx, r.sy, r.rotate2});
+    } else {
+      out.insert(out.end(), {p.s.x, p.s.y, p.e.x, p.e.y, p.highlight, p.angle});
+    }
+  }
+  return out;
+}
+
+// Where 6 such numbers put the gradient: its start, end and focal point (elliptical: its
+// centre and the ends of two radii), in the gradient's coordinates.
+std::array<Vec2, 3> placed_points(const double* v, bool elliptical, const Gradient& g) {
+  if (elliptical) {
+    const Affine m =
+        Affine::translate(v[0], v[1]) * Affine::rotate_deg(v[2]) * Affine::scale(v[3], v[4]) * Affine::rotate_deg(v[5]);
+    return {m.apply(g.center), m.apply(g.center + Vec2{g.r, 0}), m.apply(g.center + Vec2{0, g.r})};
+  }
+  const Vec2 s{v[0], v[1]}, e{v[2], v[3]};
+  const double h = v[4] / 100.0 * std::hypot(e.x - s.x, e.y - s.y);
+  const double dir = std::atan2(e.y - s.y, e.x - s.x) + v[5] / kDegrees;
+  return {s, e, s + Vec2{h * std::cos(dir), h * std::sin(dir)}};
+}
+
+// The compact export's keys of a moving gradient (GradientTrack::tolerance_px): none (static,
+// its first value) when every value places it within the tolerance of the first.
+void reduce_gradient(GradientPlan& plan, const GradientTrack& track) {
+  const std::vector<double> numbers = placement_numbers(plan);
+  const Gradient& g = *track.values[0];
+  const SampleError error = [&](size_t i, const double* approx) {
+    const std::array<Vec2, 3> a = placed_points(&numbers[6 * i], plan.elliptical, g);
+    const std::array<Vec2, 3> b = placed_points(approx, plan.elliptical, g);
+    double worst = 0;
+    for (size_t k = 0; k < a.size(); ++k) worst = std::max(worst, std::hypot(a[k].x - b[k].x, a[k].y - b[k].y));
+    return worst;
+  };
+  double moved = 0;
+  for (size_t i = 1; i < plan.placements.size(); ++i) moved = std::max(moved, error(i, numbers.data()));
+  if (moved <= track.tolerance_px) {
+    plan.animated = false;
+    return;
+  }
+  plan.keys = reduce_keyframes(track.frames, numbers, 6, track.tolerance_px, error);
+}
 
 GradientPlan plan_gradient(const Path& path, const GradientTrack& track, const std::vector<const double*>& points,
                            bool stroke, std::vector<std::string>& approximate) {
@@ -216,6 +246,15 @@ GradientPlan plan_gradient(const Path& path, const GradientTrack& track, const s
     plan.animated = plan.animated || p.s != q.s || p.e != q.e || p.highlight != q.highlight ||
                     p.angle != q.angle || !(p.ellipse == q.ellipse);
   }
+  if (plan.elliptical) {
+    for (const Placement& p : plan.placements) plan.parts.push_back(split_affine(p.ellipse));
+    for (size_t i = 1; i < plan.parts.size(); ++i) {  // no turn through +-180 between values
+      auto unwrap = [](double a, double prev) { return a + 360.0 * std::round((prev - a) / 360.0); };
+      plan.parts[i].rotate1 = unwrap(plan.parts[i].rotate1, plan.parts[i - 1].rotate1);
+      plan.parts[i].rotate2 = unwrap(plan.parts[i].rotate2, plan.parts[i - 1].rotate2);
+    }
+  }
+  if (plan.animated && track.tolerance_px > 0) reduce_gradient(plan, track);
   return plan;
 }
 
@@ -228,14 +267,19 @@ void write_gradient_body(JsonText& j, const Gradient& g, const GradientPlan& pla
   j.raw(",\"t\":").raw(g.radial ? "2" : "1").raw(",\"s\":");
   // An elliptical gradient's geometry is fixed in gradient space; its motion is the groups'.
   const bool moving = plan.animated && !plan.elliptical;
-  write_property(j, track.frames, n, [&](size_t i) { j.pair(plan.placements[i].s.x, plan.placements[i].s.y); }, moving);
+  const ReducedKeys* keys = plan.keys ? &*plan.keys : nullptr;
+  write_property(j, track.frames, n, [&](size_t i) { j.pair(plan.placements[i].s.x, plan.placements[i].s.y); }, moving,
+                 false, keys);
   j.raw(",\"e\":");
-  write_property(j, track.frames, n, [&](size_t i) { j.pair(plan.placements[i].e.x, plan.placements[i].e.y); }, moving);
+  write_property(j, track.frames, n, [&](size_t i) { j.pair(plan.placements[i].e.x, plan.placements[i].e.y); }, moving,
+                 false, keys);
   if (g.radial) {
     j.raw(",\"h\":");
-    write_property(j, track.frames, n, [&](size_t i) { j.num(plan.placements[i].highlight, kOpacityScale); }, moving, true);
+    write_property(j, track.frames, n, [&](size_t i) { j.num(plan.placements[i].highlight, kOpacityScale); }, moving, true,
+                   keys);
     j.raw(",\"a\":");
-    write_property(j, track.frames, n, [&](size_t i) { j.num(plan.placements[i].angle, kOpacityScale); }, moving, true);
+    write_property(j, track.frames, n, [&](size_t i) { j.num(plan.placements[i].angle, kOpacityScale); }, moving, true,
+                   keys);
   }
 }
 
@@ -280,20 +324,26 @@ void write_stroke(JsonText& j, const Path& path, const GradientTrack& track, con
 }
 
 // A group transform item: position, rotation, scale (and anchor), static or per value.
-void write_transform(JsonText& j, const std::vector<double>& frames, size_t n, bool animated,
+void write_transform(JsonText& j, const std::vector<double>& frames, size_t n, bool animated, const ReducedKeys* keys,
                      const std::function<Vec2(size_t)>& position, const std::function<double(size_t)>& rotation,
                      const std::function<Vec2(size_t)>& scale, const std::function<Vec2(size_t)>& anchor) {
+  // A property that is the same at every value is written static.
+  auto varies = [&](const auto& f) {
+    for (size_t i = 1; animated && i < n; ++i)
+      if (f(i) != f(0)) return true;
+    return false;
+  };
   j.raw("{\"ty\":\"tr\",\"p\":");
-  write_property(j, frames, n, [&](size_t i) { const Vec2 v = position(i); j.pair(v.x, v.y); }, animated);
+  write_property(j, frames, n, [&](size_t i) { const Vec2 v = position(i); j.pair(v.x, v.y); }, varies(position), false, keys);
   j.raw(",\"a\":");
-  write_property(j, frames, n, [&](size_t i) { const Vec2 v = anchor(i); j.pair(v.x, v.y); }, animated);
+  write_property(j, frames, n, [&](size_t i) { const Vec2 v = anchor(i); j.pair(v.x, v.y); }, varies(anchor), false, keys);
   j.raw(",\"s\":");
   write_property(j, frames, n, [&](size_t i) {
     const Vec2 v = scale(i);
     j.raw("[").num(100 * v.x, 1e6).raw(",").num(100 * v.y, 1e6).raw("]");
-  }, animated);
+  }, varies(scale), false, keys);
   j.raw(",\"r\":");
-  write_property(j, frames, n, [&](size_t i) { j.num(rotation(i), 1e6); }, animated, true);
+  write_property(j, frames, n, [&](size_t i) { j.num(rotation(i), 1e6); }, varies(rotation), true, keys);
   j.raw(",\"o\":{\"a\":0,\"k\":100},\"sk\":{\"a\":0,\"k\":0},\"sa\":{\"a\":0,\"k\":0}}");
 }
 
@@ -385,14 +435,9 @@ void write_paint_items(JsonText& j, size_t shapes_begin, const Path& path, const
   const std::string shapes = j.text().substr(shapes_begin);
   j.text().resize(shapes_begin);
   const size_t n = fill_plan->placements.size();
-  std::vector<RotateScaleRotate> parts;
-  for (const Placement& p : fill_plan->placements) parts.push_back(split_affine(p.ellipse));
-  for (size_t i = 1; i < n; ++i) {  // no turn through +-180 between values
-    auto unwrap = [](double a, double prev) { return a + 360.0 * std::round((prev - a) / 360.0); };
-    parts[i].rotate1 = unwrap(parts[i].rotate1, parts[i - 1].rotate1);
-    parts[i].rotate2 = unwrap(parts[i].rotate2, parts[i - 1].rotate2);
-  }
+  const std::vector<RotateScaleRotate>& parts = fill_plan->parts;
   const bool animated = fill_plan->animated;
+  const ReducedKeys* keys = fill_plan->keys ? &*fill_plan->keys : nullptr;
   const auto& frames = in.fill.frames;
   auto origin = [&](size_t i) { const Affine& m = fill_plan->placements[i].ellipse; return Vec2{m.e, m.f}; };
   auto zero = [](size_t) { return Vec2{}; };
@@ -403,16 +448,16 @@ void write_paint_items(JsonText& j, size_t shapes_begin, const Path& path, const
     j.raw(",").raw(kGroupTransform).raw("]},");
   }
   j.raw("{\"ty\":\"gr\",\"it\":[{\"ty\":\"gr\",\"it\":[{\"ty\":\"gr\",\"it\":[{\"ty\":\"gr\",\"it\":[").raw(shapes).raw(",");
-  write_transform(j, frames, n, animated, zero, [&](size_t i) { return -parts[i].rotate1; }, unit, origin);  // Y
+  write_transform(j, frames, n, animated, keys, zero, [&](size_t i) { return -parts[i].rotate1; }, unit, origin);  // Y
   j.raw("]},");
-  write_transform(j, frames, n, animated, zero, [&](size_t i) { return -parts[i].rotate2; },
+  write_transform(j, frames, n, animated, keys, zero, [&](size_t i) { return -parts[i].rotate2; },
                   [&](size_t i) { return Vec2{1 / parts[i].sx, 1 / parts[i].sy}; }, zero);  // X
   j.raw("]},{\"ty\":\"gf\"");
   write_gradient_body(j, *in.fill.values[0], *fill_plan, in.fill);
   j.raw(",\"r\":").raw(path.fill_rule == FillRule::EvenOdd ? "2" : "1").raw(",\"bm\":0},");
-  write_transform(j, frames, n, animated, zero, [&](size_t i) { return parts[i].rotate2; }, unit, zero);  // A2
+  write_transform(j, frames, n, animated, keys, zero, [&](size_t i) { return parts[i].rotate2; }, unit, zero);  // A2
   j.raw("]},");
-  write_transform(j, frames, n, animated, origin, [&](size_t i) { return parts[i].rotate1; },
+  write_transform(j, frames, n, animated, keys, origin, [&](size_t i) { return parts[i].rotate1; },
                   [&](size_t i) { return Vec2{parts[i].sx, parts[i].sy}; }, zero);  // A
   j.raw("]}");
 }

@@ -33,6 +33,10 @@ namespace svgm::lottie {
 struct GradientTrack {
   std::vector<const Gradient*> values;
   std::vector<double> frames;
+  // The compact export (compact_motion.h): only the fewest keys (eased) that place the
+  // gradient within `tolerance_px` canvas pixels at every value are written, none when it stays
+  // within that of its first value; 0: every value, linear.
+  double tolerance_px = 0;
 };
 
 // The document as the exported SVG (animation.svg) draws it at each of `times` (seconds): the

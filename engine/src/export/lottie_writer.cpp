@@ -9,6 +9,7 @@
 #include "export/dotlottie.h"
 #include "export/lottie_compositing.h"
 #include "export/lottie_json.h"
+#include "export/lottie_motion.h"
 #include "export/lottie_paint.h"
 #include "export/lottie_unsupported.h"
 #include "svgmotion/atomic_file.h"
@@ -21,7 +22,7 @@ using namespace lottie;
 LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
                                 const std::vector<double>& points, const AnimationTiming& timing,
                                 const LottieOptions& options, const ExportMap* map) {
-  check_animation_inputs(scene, plan, points, timing, map, options.decimals);
+  check_animation_inputs(scene, plan, points, timing, map, std::max(0, options.decimals));
   if (!(options.fps > 0 && std::isfinite(options.fps))) throw Error("internal: Lottie frame rate must be positive");
 
   const AnimationPass pass = animation_pass(timing);
@@ -52,7 +53,11 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
     if (!group.paths.empty() && !lone_path) group_ind[g] = next_ind++;
   }
 
-  JsonText j(options.decimals);
+  // Compact: a static coordinate rounded by at most a quarter of the tolerance when measured.
+  const double tol = options.tolerance_px > 0 ? options.tolerance_px : compact_tolerance(scene.width, scene.height);
+  const int static_decimals = options.decimals >= 0 ? options.decimals
+                                                    : std::clamp(static_cast<int>(std::ceil(std::log10(2.9 / tol))), 0, kMaxDecimals);
+  JsonText j(static_decimals);
   j.raw("{\"v\":\"5.7.0\",\"fr\":").num(options.fps, 1e6).raw(",\"ip\":0,\"op\":").num(frames, kFrameScale);
   j.raw(",\"w\":").num(std::max(1.0, std::round(scene.width)), 1).raw(",\"h\":");
   j.num(std::max(1.0, std::round(scene.height)), 1).raw(",\"nm\":").str(options.name);
@@ -78,7 +83,8 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
   std::vector<std::pair<size_t, size_t>> layer_span(P), null_span(scene.groups.size());
   std::vector<double> rest;  // a static path's own points, in the layout of the fitted ones
   bool first_layer = true;
-  for (auto it = order.rbegin(); it != order.rend(); ++it) {  // Lottie lists the top layer first
+  // One path's shape layer, compact when asked and possible; returns whether it was compact.
+  auto write_layer = [&](std::vector<int>::const_reverse_iterator it, bool try_compact) {
     const size_t p = static_cast<size_t>(*it);
     const Path& path = scene.paths[p];
     const int f = map ? map->fitted_of[p] : static_cast<int>(p);
@@ -93,9 +99,26 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
         rest.push_back(q.x);
         rest.push_back(q.y);
       }
-    // The points of value `i` of the pass for this path.
+    // Compact: the group's transform carries the path's affine motion, the shape keyframed only
+    // for its residual, at the kept keys (lottie_motion.h).
+    const size_t count = f >= 0 ? static_cast<size_t>(plan.path_cp_count[static_cast<size_t>(f)]) : 0;
+    const bool compact = try_compact && animated && rest.size() == 2 * count;
+    CompactPathMotion motion;
+    if (compact) {
+      std::vector<const double*> values;
+      for (int k : pass.seq) values.push_back(&points[(static_cast<size_t>(k) * plan.n_cp + first) * 2]);
+      motion = compact_path_motion(rest, values, pass.times, frames, tol, options.decimals);
+      if (motion.residual) j.set_decimals(motion.shape_decimals);
+    }
+    const bool shape_animated = compact ? motion.residual : animated;
+    std::vector<size_t> shape_keys;
+    if (shape_animated && compact) shape_keys = motion.shape_keys.keys;
+    else if (shape_animated)
+      for (size_t i = 0; i < pass.seq.size(); ++i) shape_keys.push_back(i);
+    // The points of value `i` of the pass for this path (in the moving group's frame).
     auto value_points = [&](size_t i) {
-      return animated ? &points[(static_cast<size_t>(pass.seq[i]) * plan.n_cp + first) * 2] : rest.data();
+      if (!shape_animated) return static_cast<const double*>(rest.data());
+      return compact ? &motion.local[i * 2 * count] : &points[(static_cast<size_t>(pass.seq[i]) * plan.n_cp + first) * 2];
     };
 
     if (!first_layer) j.raw(",");
@@ -109,6 +132,10 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
     j.raw("\"ks\":{\"o\":").fixed((path.layer >= 0 ? path.local_opacity : path.opacity) * 100.0, kOpacityScale).raw(",").raw(kLayerTransformAfterOpacity);
     j.raw(",\"ao\":0,\"shapes\":[{\"ty\":\"gr\",\"nm\":").str(path.id).raw(",\"it\":[");
     const size_t shapes_begin = j.text().size();
+    // Compact, moving: the shapes in a group of their own carrying the motion; the paints after
+    // it apply to them in the canvas' frame (gradients where animation.svg draws them, stroke
+    // widths unscaled, as the full export).
+    if (motion.moves) j.raw("{\"ty\":\"gr\",\"nm\":\"motion\",\"it\":[");
     size_t cp = 0;  // index of the subpath's first point within the path
     bool first_item = true;
     for (const Subpath& sp : path.subpaths) {
@@ -119,43 +146,67 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
       }
       const size_t n = (n_points - 1) / 3;
       bool merge = sp.closed && n >= 2;
-      for (size_t i = 0; merge && i < (animated ? pass.seq.size() : 1); ++i) {
+      for (size_t i = 0; merge && i < (shape_animated ? pass.seq.size() : 1); ++i) {
         const double* q = value_points(i) + 2 * cp;
         merge = std::fabs(q[6 * n] - q[0]) <= kSamePoint && std::fabs(q[6 * n + 1] - q[1]) <= kSamePoint;
       }
       if (!first_item) j.raw(",");
       first_item = false;
       j.raw("{\"ty\":\"sh\",\"ks\":");
-      if (!animated) {
+      if (!shape_animated) {
         j.raw("{\"a\":0,\"k\":");
         write_bezier(j, value_points(0) + 2 * cp, n_points, sp.closed, merge);
         j.raw("}}");
       } else {
         j.raw("{\"a\":1,\"k\":[");
-        for (size_t i = 0; i < pass.seq.size(); ++i) {
-          if (i) j.raw(",");
+        for (size_t k = 0; k < shape_keys.size(); ++k) {
+          const size_t i = shape_keys[k];
+          if (k) j.raw(",");
           j.raw("{\"t\":").num(pass.times[i] * frames, kFrameScale).raw(",\"s\":[");
           write_bezier(j, value_points(i) + 2 * cp, n_points, sp.closed, merge);
           j.raw("]");
-          // Linear in time (the easing curve from (0,0) to (1,1)), as SMIL's calcMode="linear".
-          if (i + 1 < pass.seq.size()) j.raw(",\"i\":{\"x\":1,\"y\":1},\"o\":{\"x\":0,\"y\":0}");
+          // Linear in time as SMIL's calcMode="linear", or the compact export's easing.
+          if (k + 1 < shape_keys.size()) write_easing(j, compact ? motion.shape_keys.easing[k] : Easing{});
           j.raw("}");
         }
         j.raw("]}}");
       }
       cp += n_points;
     }
+    if (motion.moves) j.raw(first_item ? "" : ",").raw(motion.transform).raw("]}");
     // Stroke and fill, their gradients following the shape (lottie_paint.h).
     PaintInputs paint;
-    for (size_t i = 0; i < (animated ? pass.seq.size() : 1); ++i) paint.points.push_back(value_points(i));
+    for (size_t i = 0; i < (animated ? pass.seq.size() : 1); ++i)
+      paint.points.push_back(motion.moves ? &points[(static_cast<size_t>(pass.seq[i]) * plan.n_cp + first) * 2] : value_points(i));
     const std::vector<Scene>& paint_samples = animated ? samples : std::vector<Scene>{};
     paint.fill = gradient_track(scene, paint_samples, p, false, sample_of_value, value_frames);
     paint.stroke = gradient_track(scene, paint_samples, p, true, sample_of_value, value_frames);
+    // Compact: gradients at their fewest keys.
+    if (compact) paint.fill.tolerance_px = paint.stroke.tolerance_px = tol;
+    j.set_decimals(static_decimals);  // widths, dashes and gradients at the static decimals
     write_paint_items(j, shapes_begin, path, paint, approximate);
     first_item = j.text().size() == shapes_begin;
     j.raw(first_item ? "" : ",").raw(kGroupTransform).raw("]}]");
     j.raw(",\"ip\":0,\"op\":").num(frames, kFrameScale).raw(",\"st\":0,\"bm\":0}");
     layer_span[p].second = j.text().size();
+    return compact;
+  };
+  for (auto it = order.crbegin(); it != order.crend(); ++it) {  // Lottie lists the top layer first
+    const size_t at = j.text().size(), approximate_at = approximate.size();
+    const bool was_first = first_layer;
+    if (!write_layer(it, options.compact)) continue;
+    // A path the fit deforms beyond the tolerance at nearly every value (its jitter above it) is
+    // written per value when that is shorter than its compact form.
+    const std::string compact_text = j.text().substr(at);
+    const auto compact_span = layer_span[static_cast<size_t>(*it)];
+    j.text().resize(at);
+    approximate.resize(approximate_at);
+    first_layer = was_first;
+    write_layer(it, false);
+    if (j.text().size() - at <= compact_text.size()) continue;
+    j.text().resize(at);
+    j.text() += compact_text;
+    layer_span[static_cast<size_t>(*it)] = compact_span;
   }
   for (size_t g = 0; g < scene.groups.size(); ++g) {
     if (!group_ind[g]) continue;
@@ -180,7 +231,7 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
     comp.group_nulls.push_back(j.text().substr(null_span[g].first, null_span[g].second - null_span[g].first));
   comp.next_ind = next_ind;
   comp.frames = frames;
-  comp.decimals = options.decimals;
+  comp.decimals = static_decimals;
   const CompositionText layers = compose_layers(comp, approximate);
   j.text().resize(layers_begin);
   j.raw(layers.layers).raw("]}\n");

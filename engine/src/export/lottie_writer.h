@@ -18,7 +18,10 @@
 //     or retime a part;
 //   - coordinates in canvas pixels (the SVG's size after its viewBox mapping), `w` x `h` the
 //     canvas; keyframes at frame time x fps, linear in between (SMIL's calcMode="linear"
-//     interpolates the same numbers), a mirror written forwards then backwards.
+//     interpolates the same numbers), a mirror written forwards then backwards;
+//   - compact (LottieOptions::compact, the default of fit and export): still paths static, a
+//     moving one's affine motion on its shape group's transform, the residual shape and every
+//     property at the fewest eased keys (lottie_motion.h).
 // Lottie has no loop flag: players loop by default (lottie-web's `loop: true`); "once" is
 // noted in `meta.d` and must be asked of the player. What Lottie cannot draw is named in one
 // warning (lottie_unsupported.h).
@@ -36,7 +39,7 @@ namespace svgm {
 
 struct LottieOptions {
   double fps = 30;                  // the timeline's frame rate (the target video's)
-  int decimals = kDefaultDecimals;  // decimal places of coordinates and widths (canvas pixels)
+  int decimals = kDefaultDecimals;  // decimal places of coordinates and widths (canvas pixels); compact: -1 measured
   std::string name;                 // the animation's `nm` (the document's file name)
   // The SMIL export of the same animation (animation.svg), when written: gradients are placed
   // as it draws them at each keyframe, following their shapes (lottie_paint.h). Without it
@@ -44,6 +47,12 @@ struct LottieOptions {
   std::filesystem::path exported_svg;
   // When set, write_lottie also writes the .lottie archive here (dotlottie.h).
   std::filesystem::path dotlottie;
+  // The compact export (lottie_motion.h, compact_motion.h): a path that does not move is
+  // static; a moving one's affine motion is its shape group's transform (`tr`), its shape
+  // keyframed only for what remains, gradients in that moving frame; every property at the
+  // fewest keys within the tolerance, with bezier easing. `decimals` < 0: measured.
+  bool compact = false;
+  double tolerance_px = 0;  // canvas pixels; 0: compact_tolerance(the canvas)
 };
 
 struct LottieDocument {

@@ -135,7 +135,9 @@ ExportOutcome write_animation_files(const FitResult& result, const ExportSetting
   if (settings.lottie) {
     LottieOptions lottie;
     lottie.fps = result.fps;
-    lottie.decimals = settings.decimals >= 0 ? settings.decimals : kDefaultDecimals;
+    lottie.decimals = settings.decimals >= 0 || settings.compact ? settings.decimals : kDefaultDecimals;
+    lottie.compact = settings.compact;
+    lottie.tolerance_px = tolerance_px;
     lottie.name = doc.into.filename().string();
     std::error_code ec;
     if (fs::exists(anim, ec)) lottie.exported_svg = anim;  // gradients follow their shapes as animation.svg draws them

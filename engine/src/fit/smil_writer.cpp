@@ -625,6 +625,53 @@ void append_key_timing(pugi::xml_node anim, const std::vector<double>& times, co
   anim.append_attribute("keySplines") = splines.c_str();
 }
 
+// The additive animateTransforms (translate, rotate about `centre`, skewX, scale) of reduced
+// wrapper keys on `node`'s `attribute`; a component identity at every key is left out. With
+// `replace_first` the first one written replaces the attribute's own value (a gradient's
+// gradientTransform, which the keys include) and the others add to it.
+void append_keyed_transform(pugi::xml_node node, const std::string& prefix, const WrapperKeys& w, Vec2 centre,
+                            const std::vector<double>& times, const std::function<void(pugi::xml_node)>& repeat_attrs,
+                            const char* attribute, bool replace_first) {
+  const std::vector<double>& trajectory = w.trajectory;
+  const ReducedKeys& tk = w.keys;
+  struct Component {
+    const char* type;
+    size_t at, n;
+    int decimals;
+    double identity;
+  };
+  bool first = true;
+  for (const Component& c : {Component{"translate", 0, 2, w.translate_decimals, 0}, Component{"rotate", 2, 1, w.rotate_decimals, 0},
+                             Component{"skewX", 3, 1, w.skew_decimals, 0}, Component{"scale", 4, 2, w.scale_decimals, 1}}) {
+    std::string text;
+    bool identity = true;
+    for (size_t i = 0; i < tk.keys.size(); ++i) {
+      if (i) text += ';';
+      for (size_t j = 0; j < c.n; ++j) {
+        const double v = trajectory[6 * tk.keys[i] + c.at + j];
+        identity = identity && v == c.identity;
+        if (j) text += ' ';
+        append_number(text, v, c.decimals);
+      }
+      if (c.at == 2) {  // rotate about the rest shape's centre
+        text += ' ';
+        append_number(text, centre.x, w.translate_decimals);
+        text += ' ';
+        append_number(text, centre.y, w.translate_decimals);
+      }
+    }
+    if (identity) continue;
+    pugi::xml_node anim = node.append_child((prefix + "animateTransform").c_str());
+    anim.append_attribute("attributeName") = attribute;
+    anim.append_attribute("type") = c.type;
+    if (!(first && replace_first)) anim.append_attribute("additive") = "sum";
+    first = false;
+    repeat_attrs(anim);
+    append_key_timing(anim, times, tk);
+    anim.append_attribute("values") = text.c_str();
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> write_compact_animation_svg(const fs::path& source, const Scene& scene, const RasterPlan& plan,
@@ -651,7 +698,9 @@ std::vector<std::string> write_compact_animation_svg(const fs::path& source, con
   };
   std::vector<std::string> warnings;
   CompactStats st;
-  int skipped_use = 0;
+  int skipped_use = 0, shared_gradients = 0;
+  std::set<std::string> animated_gradients;     // each gradient element is considered once
+  std::optional<GradientIndex> gradient_index;  // read on the first user-space gradient
   std::vector<pugi::xml_node> elements;
   for (const Path& path : scene.paths) {
     elements.push_back(find_locator(doc, path.locator));
@@ -714,42 +763,62 @@ std::vector<std::string> write_compact_animation_svg(const fs::path& source, con
     const Vec2 centre = rest_centre(rest, parent_to_canvas);
     const WrapperKeys w =
         wrapper_keys(motion.affine, parent_to_canvas, rest, pass.times, tol, options.decimals, centre, WrapperForm::Smil);
-    const std::vector<double>& trajectory = w.trajectory;
-    const ReducedKeys& tk = w.keys;
-    st.keys += tk.keys.size();
-    struct Component {
-      const char* type;
-      size_t at, n;
-      int decimals;
-      double identity;
-    };
-    for (const Component& c : {Component{"translate", 0, 2, w.translate_decimals, 0}, Component{"rotate", 2, 1, w.rotate_decimals, 0},
-                               Component{"skewX", 3, 1, w.skew_decimals, 0}, Component{"scale", 4, 2, w.scale_decimals, 1}}) {
-      std::string text;
-      bool identity = true;
-      for (size_t i = 0; i < tk.keys.size(); ++i) {
-        if (i) text += ';';
-        for (size_t j = 0; j < c.n; ++j) {
-          const double v = trajectory[6 * tk.keys[i] + c.at + j];
-          identity = identity && v == c.identity;
-          if (j) text += ' ';
-          append_number(text, v, c.decimals);
-        }
-        if (c.at == 2) {  // rotate about the rest shape's centre
-          text += ' ';
-          append_number(text, centre.x, w.translate_decimals);
-          text += ' ';
-          append_number(text, centre.y, w.translate_decimals);
-        }
+    st.keys += w.keys.keys.size();
+    append_keyed_transform(g, prefix, w, centre, pass.times, repeat_attrs, "transform", false);
+    // A user-space gradient lies in the element's user space, which the wrapper now moves; the
+    // full export moves it by the colour-weighted similarity (gradient_motion) or not at all.
+    // Its gradientTransform is animated to undo the wrapper's map and apply that motion, so the
+    // part is coloured as the full export colours it (moved by the wrapper's least-squares
+    // affine map, a sun ray that thickens turned its far radial centre into a colour shift).
+    for (const int gi : {path.fill_gradient, path.stroke_gradient}) {
+      if (gi < 0) continue;
+      const Gradient& gr = scene.gradients[static_cast<size_t>(gi)];
+      if (!gr.user_space || gr.id.empty()) continue;
+      if (!gradient_index) gradient_index = index_gradients(doc);
+      const auto found = gradient_index->gradients.find(gr.id);
+      if (found == gradient_index->gradients.end() || !animated_gradients.insert(gr.id).second) continue;
+      pugi::xml_node gn = found->second;
+      const pugi::xml_attribute own_attr = gn.attribute("gradientTransform");
+      const auto refs = gradient_index->references.find(gr.id);
+      if (refs == gradient_index->references.end() || refs->second != 1 || (own_attr.empty() && !href_of(gn).empty())) {
+        ++shared_gradients;
+        continue;
       }
-      if (identity) continue;
-      pugi::xml_node anim = g.append_child((prefix + "animateTransform").c_str());
-      anim.append_attribute("attributeName") = "transform";
-      anim.append_attribute("type") = c.type;
-      anim.append_attribute("additive") = "sum";
-      repeat_attrs(anim);
-      append_key_timing(anim, pass.times, tk);
-      anim.append_attribute("values") = text.c_str();
+      Affine own;
+      if (!own_attr.empty()) {
+        const std::optional<Affine> t = svg::parse_transform(own_attr.value());
+        if (!t) continue;
+        own = *t;
+      }
+      const auto gparts =
+          gradient_motion(path, gr, {scene.width, scene.height}, plan, f, points, timing.keyframes, own, kMaxDecimals);
+      // Per value, in the canvas: P X P^-1 for the gradientTransform X = P^-1 D^-1 P S own (P the
+      // element's user space, D the wrapper as drawn, S own the full export's gradientTransform).
+      const Affine P = path.to_canvas, Pinv = P.inverse();
+      std::vector<Affine> maps;
+      for (size_t v = 0; v < values.size(); ++v) {
+        const Affine full = gparts ? compose_affine((*gparts)[static_cast<size_t>(pass.seq[v])]) : own;
+        maps.push_back(w.drawn[v].inverse() * P * full * Pinv);
+      }
+      // Measured where the gradient paints the part: its rest points carried back by the first map.
+      std::vector<double> probe;
+      const Affine back = maps[0].inverse();
+      for (size_t k = 0; k + 1 < rest.size(); k += 2) {
+        const Vec2 q = back.apply({rest[k], rest[k + 1]});
+        probe.insert(probe.end(), {q.x, q.y});
+      }
+      const Vec2 gc = rest_centre(probe, P);
+      const WrapperKeys gw = wrapper_keys(maps, P, probe, pass.times, tol, options.decimals, gc, WrapperForm::Smil);
+      for (pugi::xml_node a = gn.first_child(); a;) {
+        pugi::xml_node next = a.next_sibling();
+        if (local_name(a.name()) == "animateTransform" &&
+            std::string_view(a.attribute("attributeName").value()) == "gradientTransform")
+          gn.remove_child(a);
+        a = next;
+      }
+      const std::string gprefix(gn.name(), gn.name() + (std::strlen(gn.name()) - local_name(gn.name()).size()));
+      append_keyed_transform(gn, gprefix, gw, gc, pass.times, repeat_attrs, "gradientTransform", true);
+      st.keys += gw.keys.keys.size();
     }
     if (!motion.residual) continue;
     // The residual: each value's shape in the element's coordinates inside the moving wrapper.
@@ -772,7 +841,7 @@ std::vector<std::string> write_compact_animation_svg(const fs::path& source, con
     const int dd = options.decimals >= 0 ? options.decimals
                                          : measured_decimals(local, 2 * count, dk_keys.keys, derr, tol / 4, 0, 2 * count, kMaxDecimals);
     log::debug("compact export: %s: %zu control points, affine miss %.3f px, transform %zu keys, d %zu keys at %d decimals",
-               path.id.c_str(), count, motion.affine_miss_px, tk.keys.size(), dk_keys.keys.size(), dd);
+               path.id.c_str(), count, motion.affine_miss_px, w.keys.keys.size(), dk_keys.keys.size(), dd);
     std::string text;
     for (size_t i = 0; i < dk_keys.keys.size(); ++i) {
       if (i) text += ';';
@@ -790,6 +859,9 @@ std::vector<std::string> write_compact_animation_svg(const fs::path& source, con
     append_key_timing(anim, pass.times, dk_keys);
     anim.append_attribute("values") = text.c_str();
   }
+  if (shared_gradients)
+    warnings.push_back(source.string() + ": " + std::to_string(shared_gradients) +
+                       " gradients shared by several shapes move with their shapes' groups");
   if (skipped_use)
     warnings.push_back(source.string() + ": " + std::to_string(skipped_use) +
                        " shapes drawn through <use> left static (shared definitions)");
