@@ -37,7 +37,8 @@ void warm(const std::string& device) {
     r.set_rest_pose();
     r.forward(ClRaster::Output::Rgba8, white);
     r.forward(ClRaster::Output::Float, white);
-    r.set_targets(r.read_image());
+    const std::vector<float> target = r.read_image();  // set_targets keeps no copy
+    r.set_targets(target);
     r.loss_and_gradient(1000.0f, white);
   }
   rt.program({"field.cl", "motion.cl", "regularise.cl", "adam.cl"}, kFitterProgramOptions);

@@ -88,6 +88,9 @@ bench)
   must "$bin" bench fit "$data/examples/man.svg" --target "$tmp/bf" --iterations 12 --keyframes 3 --size 64 --json >"$tmp/f.json" 2>"$tmp/err"
   check "bench fit --json runs the asked iterations and reports CPU time per iteration" \
     '[[ $(grep -c "" "$tmp/f.json") -eq 1 ]] && grep -q "\"iterations\": 12," "$tmp/f.json" && grep -q "\"keyframes\": 3," "$tmp/f.json" && grep -Eq "\"cpu_ms_per_iteration\": [0-9.]+" "$tmp/f.json" && grep -Eq "\"peak_rss_mb\": [0-9.]+" "$tmp/f.json"'
+  # The peak once the target is loaded and the fitter built: a high-water mark, never above the end's.
+  check "bench fit --json reports the setup's peak memory, at most the whole run's" \
+    'python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(not 0 < j[\"setup_peak_rss_mb\"] <= j[\"peak_rss_mb\"])" "$tmp/f.json"'
   expect_error "bench fit without a target names the option" "bench fit: --target VIDEO is required" "$tmp/none" \
     bench fit "$data/examples/man.svg"
   # bench target: loading those three identical frames with the stabiliser on finds a figure

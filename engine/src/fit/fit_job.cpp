@@ -601,6 +601,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
       // here on): their memory goes.
       for (auto* v : {&target.raw, &target.rgba, &target.sdf}) std::vector<float>().swap(*v);
       std::vector<uint8_t>().swap(target.mask);
+      fitter.release_loss_memory();
       key_report["started_from"] = from;
       if (!job.quiet) log::info("fit: %s", choice.reason.c_str());
       coarse_target = &*keyed_target;
@@ -645,7 +646,10 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
                refine_iters);
     // The guard's baseline: how well each coarse keyframe matches the video at the coarse width.
     const std::vector<float> coarse_losses = cfit.evaluate_keyframe_losses();
+    // One fitter's loss memory at a time: the coarse one's waits (made again for the guard).
+    cfit.release_loss_memory();
     run_stage(*fine, coarse_iters, false);
+    fine->release_loss_memory();
     if (!stopped) {
       // The refinement's guard. A keyframe the refinement made worse at the coarse width (the
       // snail's pupil, off by more than the fine loss's reach, shrank to a hairline at 512 px:
@@ -681,6 +685,9 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
 
   // Outputs: the animation in the original colours, the preview, a small report.
   const auto points = final_fit.keyframe_points_canvas();
+  // Only renders from here on (the last pass's losses stay readable for the report).
+  cfit.release_loss_memory();
+  final_fit.release_loss_memory();
   const auto renders = final_fit.render_keyframes();
   AnimationTiming timing;
   timing.keyframes = final_fit.keyframes();

@@ -721,6 +721,8 @@ std::vector<float> Fitter::render_keyframes() {
 
 std::vector<float> Fitter::keyframe_losses() { return raster_->read_frame_losses(); }
 
+void Fitter::release_loss_memory() { raster_->release_loss_buffers(); }
+
 std::vector<float> Fitter::evaluate_keyframe_losses() {
   enqueue_motion(K_);
   raster_->set_active_frames(K_);

@@ -238,6 +238,9 @@ class Fitter {
   // Per-keyframe image losses of the current parameters, every keyframe evaluated (active or
   // not); the next iteration recomputes what it needs.
   std::vector<float> evaluate_keyframe_losses();
+  // Frees the loss's pixel-sized device memory (ClRaster::release_loss_buffers) while this
+  // fitter only renders or waits for another; the next iteration or evaluation makes it again.
+  void release_loss_memory();
 
   const RasterPlan& raster_plan() const { return plan_; }
   const FitPlan& fit_plan() const { return fplan_; }

@@ -66,8 +66,18 @@ class ClRaster {
   std::vector<std::pair<std::string, double>> kernel_times() const;
 
   // ---- Gradients (raster_cl_backward.cpp) ----
-  // Uploads the K target frames: frames * height * width RGBA floats (straight RGB, A unused).
+  // Takes the K target frames: frames * height * width RGBA floats (straight RGB, A unused).
+  // No copy is kept (16 bytes per pixel and frame: 88 MB for 21 keyframes at 512 px): `rgba`
+  // must stay alive and unchanged while losses are computed against it (the loss's constants
+  // are made from it on the next loss pass, and again after release_loss_buffers).
   void set_targets(const std::vector<float>& rgba);
+  void set_targets(std::vector<float>&&) = delete;  // a temporary would be gone by the loss
+  // Frees the loss's pixel-sized device buffers (Q, R, the residual, the tape pool and the
+  // bands' partial gradients: 52 bytes and more per pixel and frame, held in host memory by
+  // PoCL) until the next loss pass makes them again, from the targets. For a fitter that only
+  // renders from here on, or waits while another one fits. The last pass's losses stay readable.
+  void release_loss_buffers();
+  bool holds_loss_buffers() const { return q_(); }
   // Forward pass, blurred-MSE loss against the targets (kernels/loss.cl) and the backward pass
   // down to the control points, all on the device; returns the loss (reading one scalar).
   // `weight` multiplies the mean of the squared blurred residual; the frames are composited
@@ -100,6 +110,8 @@ class ClRaster {
   void launch(const char* name, cl::Kernel& k, const cl::NDRange& global,
               const cl::NDRange& local = cl::NullRange);
   void init_backward();
+  // The buffers release_loss_buffers frees, made and bound to the kernels' arguments.
+  void make_loss_buffers();
   // flatten, stroke, gather_lines and chunk_bounds for the active frames.
   void enqueue_geometry();
   // The fit's forward pass (kernels/raster_backward.cl, raster_taped): the residual output and
@@ -135,7 +147,7 @@ class ClRaster {
       k_gather_points_, k_stroke_back_, k_flatten_back_;
   // The loss's constant parts (kernels/loss.cl): Q = bg·(G∗1) − G∗T, R = G∗Q, Σ Q² per frame,
   // for the background they were made for; and the row extents of X' and E'.
-  std::vector<float> targets_;
+  const std::vector<float>* targets_ = nullptr;  // the caller's (set_targets)
   std::array<float, 4> q_background_{-1, -1, -1, -1};
   void prepare_loss_constants(const std::array<float, 4>& background);
   cl::Buffer q_, r_, qsum_, ext_x_, ext_e_;

@@ -34,15 +34,12 @@ void ClRaster::init_backward() {
     k_flatten_back_ = cl::Kernel(prog, "flatten_backward");
 
     if (!image_()) image_ = make(pixels * 4 * sizeof(float));
-    q_ = make(pixels * 4 * sizeof(float));
-    r_ = make(pixels * 4 * sizeof(float));
+    make_loss_buffers();
     qsum_ = make(K * sizeof(float));
     ext_x_ = make(K * p.height * 2 * sizeof(int));
     ext_e_ = make(K * p.height * 2 * sizeof(int));
-    resid_ = make(pixels * 4 * sizeof(float));
     row_sums_ = make(K * p.height * sizeof(float));
     loss_ = make((K + 1) * sizeof(float));
-    partial_ = make(K * p.n_lines * static_cast<size_t>(bands_) * 4 * sizeof(float));
     overflow_ = make(sizeof(int));
     line_grad_ = make(K * p.n_lines * 4 * sizeof(float));
     grad_pts_ = make(K * p.n_pts * 2 * sizeof(float));
@@ -108,6 +105,36 @@ void ClRaster::init_backward() {
   backward_ready_ = true;
 }
 
+void ClRaster::make_loss_buffers() {
+  const size_t K = static_cast<size_t>(frames_);
+  const size_t pixels = K * plan_.height * static_cast<size_t>(plan_.width);
+  q_ = make(pixels * 4 * sizeof(float));
+  r_ = make(pixels * 4 * sizeof(float));
+  resid_ = make(pixels * 4 * sizeof(float));
+  partial_ = make(K * plan_.n_lines * static_cast<size_t>(bands_) * 4 * sizeof(float));
+  if (!backward_ready_) return;  // init_backward binds them with the rest
+  // Made again after release_loss_buffers: bound where init_backward bound them, and the pool
+  // at the capacity it had grown to (what the bands asked for stays what they ask for).
+  set_args_at(k_blur_y_loss_, 2, q_, resid_);
+  set_args_at(k_backward_, 6, resid_);
+  set_args_at(k_backward_, 8, r_);
+  set_args_at(k_backward_, 21, partial_);
+  set_args_at(k_gather_lines_, 3, partial_);
+  resize_pool(pool_cap_);
+}
+
+void ClRaster::release_loss_buffers() {
+  if (!q_()) return;
+  finish_pool_read();
+  rt_.queue().finish();  // nothing enqueued still uses them
+  for (cl::Buffer* b : {&q_, &r_, &resid_, &partial_, &pool_}) {
+    if (!(*b)()) continue;
+    device_bytes_ -= b->getInfo<CL_MEM_SIZE>();
+    *b = cl::Buffer();
+  }
+  q_background_ = {-1, -1, -1, -1};  // Q and R are made again on the next loss pass
+}
+
 void ClRaster::resize_pool(int entries) {
   if (pool_()) device_bytes_ -= static_cast<size_t>(std::max(pool_cap_, 1)) * 4 * sizeof(float);
   pool_cap_ = std::max(entries, 0);
@@ -154,7 +181,7 @@ void ClRaster::set_targets(const std::vector<float>& rgba) {
     throw Error("internal: target upload of " + std::to_string(rgba.size()) + " floats, expected " +
                 std::to_string(want));
   init_backward();
-  targets_ = rgba;
+  targets_ = &rgba;
   q_background_ = {-1, -1, -1, -1};  // recompute the loss constants on next use
 }
 
@@ -162,6 +189,9 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
   if (bg == q_background_) return;
   const int W = plan_.width, H = plan_.height, K = frames_;
   const size_t px = static_cast<size_t>(W) * H;
+  if (!targets_ || targets_->size() != static_cast<size_t>(K) * px * 4)
+    throw Error("internal: the loss's targets are gone or resized (set_targets keeps no copy)");
+  const std::vector<float>& targets = *targets_;
   // The render's blur B (loss.cl's taps; per channel group with a chroma σ of its own,
   // raster/loss_taps.h render_blur) and the target's, in double: Q = bg·(B 1) − G_t ∗ T,
   // R = Bᵀ Q.
@@ -174,7 +204,7 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
   auto& queue = rt_.queue();
   for (int k = 0; k < K; ++k) {
     for (size_t p = 0; p < px; ++p)
-      for (int c = 0; c < 3; ++c) t[3 * p + c] = targets_[(k * px + p) * 4 + c];
+      for (int c = 0; c < 3; ++c) t[3 * p + c] = targets[(k * px + p) * 4 + c];
     const std::vector<double> gt = blur_rgb(t, W, H, g_target);
     double sum = 0;
     for (size_t i = 0; i < q.size(); ++i) q[i] = bg[i % 3] * g1[i] - gt[i];
@@ -210,7 +240,8 @@ float ClRaster::read_loss() {
 
 void ClRaster::enqueue_loss_and_gradient(float weight, const std::array<float, 4>& background) {
   init_backward();
-  if (targets_.empty()) throw Error("internal: loss without targets (set_targets)");
+  if (!targets_) throw Error("internal: loss without targets (set_targets)");
+  if (!q_()) make_loss_buffers();
   prepare_loss_constants(background);
   const auto& p = plan_;
   const size_t K = static_cast<size_t>(active_);

@@ -1,0 +1,128 @@
+// The loss's memory (ClRaster::set_targets, release_loss_buffers): the raster keeps no copy of
+// the targets and frees its pixel-sized loss buffers on request, and neither changes a bit of
+// the loss or the gradient.
+#include <doctest/doctest.h>
+
+#include <cstring>
+#include <string>
+
+#include "raster_test_support.h"
+#include "scene_builders.h"
+#include "svgmotion/error.h"
+
+using namespace svgm;
+using namespace svgm::test;
+
+namespace {
+
+constexpr int kW = 40, kH = 32, kK = 3;
+constexpr float kWeight = 1000.0f;  // the paper's image-loss weight
+const std::array<float, 4> kWhite{1, 1, 1, 1};
+
+Scene two_shapes() {
+  return scene_of(kW, kH, {filled(circle({20, 16}, 9), {0.9f, 0.2f, 0.1f, 1}),
+                           filled(polygon({{3, 4}, {30, 6}, {14, 28}}), {0.1f, 0.3f, 0.8f, 0.6f})});
+}
+
+// The rest pose shifted by (dx, dy) in every frame, for control points and targets alike.
+std::vector<float> shifted(const RasterPlan& plan, float dx, float dy) {
+  std::vector<float> cp;
+  for (int k = 0; k < kK; ++k)
+    for (size_t i = 0; i < plan.rest_cp.size(); i += 2) {
+      cp.push_back(static_cast<float>(plan.rest_cp[i]) + dx * (k + 1));
+      cp.push_back(static_cast<float>(plan.rest_cp[i + 1]) + dy);
+    }
+  return cp;
+}
+
+// Targets: the scene rendered at another shift, composited on white (straight RGB, A = 1).
+std::vector<float> targets_at(const RasterPlan& plan, float dx, float dy) {
+  ClRaster r(runtime(), plan, kK);
+  r.set_control_points(shifted(plan, dx, dy));
+  r.set_active_frames(kK);
+  r.forward();
+  std::vector<float> img = r.read_image();
+  for (size_t p = 0; p < img.size(); p += 4) {
+    for (int c = 0; c < 3; ++c) img[p + c] += 1 - img[p + 3];
+    img[p + 3] = 1;
+  }
+  return img;
+}
+
+// The loss then the gradient, as one vector of bits to compare.
+std::vector<float> pass(ClRaster& r) {
+  const float loss = r.loss_and_gradient(kWeight, kWhite);
+  std::vector<float> out = r.read_cp_gradient();
+  out.push_back(loss);
+  return out;
+}
+
+bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+}  // namespace
+
+TEST_SUITE("raster") {
+
+TEST_CASE("released loss buffers: device bytes fall by their size, and the next pass makes them again with identical bits") {
+  const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
+  const std::vector<float> targets = targets_at(plan, 2.5f, -1.25f);
+  ClRaster r(runtime(), plan, kK);
+  r.set_control_points(shifted(plan, 0.5f, 0.75f));
+  r.set_active_frames(kK);
+  r.set_targets(targets);
+  const std::vector<float> first = pass(r);
+  const std::vector<float> losses = r.read_frame_losses();
+  const size_t held = r.device_bytes();
+  REQUIRE(r.holds_loss_buffers());
+
+  r.release_loss_buffers();
+  CHECK_FALSE(r.holds_loss_buffers());
+  // Q, R and the residual are 16 bytes per pixel and frame each; the pool and the partial
+  // gradients come on top.
+  const size_t pixel_bytes = size_t{3} * kK * kW * kH * 16;
+  CHECK(held - r.device_bytes() > pixel_bytes);
+  // The last pass's losses are still readable (the report reads them after the release).
+  CHECK(same_bits(r.read_frame_losses(), losses));
+  r.release_loss_buffers();  // a second release is a no-op
+  CHECK_FALSE(r.holds_loss_buffers());
+
+  const std::vector<float> again = pass(r);
+  CHECK(r.holds_loss_buffers());
+  CHECK(r.device_bytes() == held);
+  CHECK(same_bits(first, again));
+  double norm = 0;
+  for (size_t i = 0; i + 1 < first.size(); ++i) norm += first[i] * first[i];
+  CHECK(norm > 0);
+}
+
+TEST_CASE("set_targets keeps no copy: the loss's constants are made from the caller's frames on the next pass") {
+  const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
+  std::vector<float> targets = targets_at(plan, 2.5f, -1.25f);
+  const std::vector<float> other = targets_at(plan, -3.0f, 2.0f);
+  const std::vector<float> cp = shifted(plan, 0.5f, 0.75f);
+  ClRaster r(runtime(), plan, kK);
+  r.set_control_points(cp);
+  r.set_active_frames(kK);
+  r.set_targets(targets);
+  const std::vector<float> before = pass(r);
+  // The caller's frames change; the next pass after a release sees the new ones, exactly as a
+  // raster given them from the start does.
+  targets = other;
+  r.release_loss_buffers();
+  const std::vector<float> after = pass(r);
+  ClRaster fresh(runtime(), plan, kK);
+  fresh.set_control_points(cp);
+  fresh.set_active_frames(kK);
+  fresh.set_targets(other);
+  CHECK(same_bits(after, pass(fresh)));
+  CHECK_FALSE(same_bits(before, after));
+  // Frames gone from under it: an internal error naming the cause, not a read past the end.
+  targets.clear();
+  r.release_loss_buffers();
+  CHECK_THROWS_WITH_AS(r.loss_and_gradient(kWeight, kWhite),
+                       "internal: the loss's targets are gone or resized (set_targets keeps no copy)", Error);
+}
+
+}  // TEST_SUITE
