@@ -374,7 +374,11 @@ TEST_CASE("gradient through strokes with every join and cap matches finite diffe
     a.stroke.miter_limit = t == 3 ? 1.3 : 4;
     Path b = filled(circle({20.4, 15.3}, 6.2), {0.2f, 0.6f, 0.2f, 0.8f});
     b.has_stroke = true;
-    b.stroke = {{0.1f, 0.1f, 0.7f, 0.9f}, 1.7, joins[(t + 1) % 4], LineCap::Butt, 4};
+    b.stroke.color = {0.1f, 0.1f, 0.7f, 0.9f};
+    b.stroke.width = 1.7;
+    b.stroke.join = joins[(t + 1) % 4];
+    b.stroke.cap = LineCap::Butt;
+    b.stroke.miter_limit = 4;
     Path c = stroked(polygon({{6.2, 25.1}, {14.3, 22.4}, {9.9, 27.7}, {30.3, 26.2}}, false), 1.1,
                      joins[(t + 2) % 4], caps[(t + 1) % 4], {0.3f, 0.3f, 0.3f, 1});
     const Case cs = make_case(scene_of(36, 30, {b, a, c}), 300 + t, 2);
