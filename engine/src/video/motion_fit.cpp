@@ -1,0 +1,321 @@
+// Fitting a motion plan to its canvas and its keyframes (fit_plan, motion_plan.h): amplitudes
+// scaled down only to stay inside the frame and within the fitter's steps between keyframes, up
+// to a visible travel, and parts at the canvas's edge held when nothing else lets the figure
+// move.
+#include "video/motion_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "video/motion_plan_internal.h"
+
+namespace svgm {
+
+using namespace motion_plan_internal;
+
+namespace {
+
+// Why `pts` (frames of animate_plan) moves a point that is not `exempt` farther than kMaxStep
+// between two of K keyframes, or "".
+std::string limit_broken_steps(const Scene& scene, const std::vector<Vec2>& pts, const std::vector<char>& exempt, int frames, int K) {
+  const double max_step = kMaxStep * std::hypot(scene.width, scene.height);
+  const size_t per = pts.size() / frames;
+  for (int k = 1; k < K; ++k) {
+    const int fa = static_cast<int>(std::lround((k - 1) * (frames - 1.0) / (K - 1)));
+    const int fb = static_cast<int>(std::lround(k * (frames - 1.0) / (K - 1)));
+    for (size_t i = 0; i < per; ++i) {
+      if (exempt[i]) continue;
+      const Vec2 d = pts[fb * per + i] - pts[fa * per + i];
+      if (std::hypot(d.x, d.y) > max_step) return "would move too far between keyframes for the fitter to follow";
+    }
+  }
+  return "";
+}
+
+// Why `pts` (frames of animate_plan) breaks a limit of fit_plan, or "" when it does not.
+std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const std::vector<char>& exempt,
+                         const std::vector<char>& by_curve, int frames, int K) {
+  const double m = kFrameMargin * std::min(scene.width, scene.height);
+  const double x0 = m, y0 = m, x1 = scene.width - m, y1 = scene.height - m;
+  auto outside = [&](Vec2 q) { return std::max({0.0, x0 - q.x, q.x - x1, y0 - q.y, q.y - y1}); };
+  const size_t per = pts.size() / frames;
+  // A control point inside the canvas at rest stays inside (a point inside the margin band at
+  // rest, a drawing touching the edge, may use the band). One already outside the canvas (a
+  // line drawing's handle: one 0.7 px out froze a galloping horse) may move: its curve is
+  // held instead, each cubic at t = 0, 1/4, 1/2, 3/4, a point of it already outside at rest
+  // going at most 0.9 of the margin farther out. The points of a spinning part are held by their
+  // curves too: a turning circle stays where it is while its handles (0.55 of the radius off
+  // the circle) sweep out beyond it, past the edge of a canvas the wheel fills; held by
+  // the handles, no turn of a ferris wheel could stay in.
+  auto allowed_for = [&](double rest) { return rest > m ? rest + kMarginUse * m : rest > 0 ? std::max(rest, kMarginUse * m) : 0.0; };
+  auto at = [&](int f, size_t i, double t) {
+    const Vec2* c = &pts[f * per + i];
+    const double u = 1 - t;
+    return u * u * u * c[0] + 3 * u * u * t * c[1] + 3 * u * t * t * c[2] + t * t * t * c[3];
+  };
+  size_t i = 0;
+  for (const Path& p : scene.paths)
+    for (const auto& sp : p.subpaths) {
+      const size_t n = sp.points.size();
+      for (size_t k = 0; k < n; ++k) {
+        const double rest = outside(pts[i + k]);
+        if (rest > m || by_curve[i + k]) {
+          // The segments this point shapes: the one it starts or ends, or whose handle it is.
+          const size_t s0 = k / 3 * 3, first = (k % 3 == 0 && k >= 3) ? s0 - 3 : s0;
+          for (size_t s = first; s <= s0 && s + 3 < n; s += 3)
+            for (double t : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+              const double allowed = allowed_for(outside(at(0, i + s, t)));
+              for (int f = 1; f < frames; ++f)
+                if (outside(at(f, i + s, t)) > allowed + 1e-6) return "would leave the canvas";
+            }
+          continue;
+        }
+        const double allowed = allowed_for(rest);
+        for (int f = 1; f < frames; ++f)
+          if (outside(pts[f * per + i + k]) > allowed + 1e-6) return "would leave the canvas";
+      }
+      i += n;
+    }
+  return limit_broken_steps(scene, pts, exempt, frames, K);
+}
+
+// Why a swing of `plan` breaks the turn limit (kMaxTurn between two of the K keyframes spread
+// over `frames`), or "" when none does. The angle of a swing is amplitude * sin(2 pi (cycles t +
+// phase)) (rigid), so its turn between keyframes is known without the frames. Only parts: a
+// part of its own turning far slides behind or out from its neighbours (its visible area jumps),
+// a region of one shape bending (bend_region) keeps its outline whole; capped, a dancer's
+// sleeves bent 18 degrees instead of 29 and his squat outweighed them (fitted share 0.70 -> 0.66).
+std::string turn_broken(const MotionPlan& plan, int frames, int K) {
+  for (const auto& a : plan.actions) {
+    if (a.primitive != Primitive::Swing || a.region != Region::None) continue;
+    const double amp = plan.amplitude(a);
+    for (double phase : a.phase)
+      for (int k = 1; k < K; ++k) {
+        const double ta = std::lround((k - 1) * (frames - 1.0) / (K - 1)) / std::max(frames - 1.0, 1.0);
+        const double tb = std::lround(k * (frames - 1.0) / (K - 1)) / std::max(frames - 1.0, 1.0);
+        const double turn = amp * std::fabs(oscillation(a, a.cycles * tb + phase) - oscillation(a, a.cycles * ta + phase));
+        if (turn > kMaxTurn + 1e-9) return "would turn a part too far between keyframes for the tracker to follow";
+      }
+  }
+  return "";
+}
+
+// A verb's whole-figure accents (a gallop's rock and bob) keep their size next to its limbs'
+// swing: when the turn or step limit scaled the limbs' swing down, its accents of the same
+// words scale down with it. At full size beside legs cut to half, a galloping horse rocked and
+// bobbed more than its legs moved (share of the motion on the legs 0.35).
+void accents_follow_limbs(MotionPlan& plan) {
+  for (auto& a : plan.actions) {
+    if (a.target != Target::Whole || a.primitive == Primitive::Spin) continue;
+    double limbs = 1;
+    for (const auto& b : plan.actions)
+      if (&b != &a && b.verb == a.verb && b.words == a.words && is_limb_target(b.target) && b.primitive == Primitive::Swing)
+        limbs = std::min(limbs, b.scale);
+    if (limbs >= a.scale) continue;
+    a.scale = limbs;
+    char line[240];
+    std::snprintf(line, sizeof line, "%s (%s) of the whole figure scaled to %.0f %% with its limbs' swing", a.verb.c_str(),
+                  primitive_name(a.primitive), limbs * 100);
+    plan.notes.push_back(line);
+  }
+}
+
+// The largest distance a point that is not `exempt` travels from rest over the frames `pts`.
+double largest_travel(const std::vector<Vec2>& pts, const std::vector<char>& exempt, int frames) {
+  const size_t per = pts.size() / frames;
+  double largest = 0;
+  for (int f = 1; f < frames; ++f)
+    for (size_t i = 0; i < per; ++i)
+      if (!exempt[i]) largest = std::max(largest, std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
+  return largest;
+}
+
+bool oscillates(const PlannedAction& a) {
+  return a.primitive == Primitive::Swing || a.primitive == Primitive::Rock || a.primitive == Primitive::Bend ||
+         a.primitive == Primitive::Sway || a.region != Region::None;
+}
+
+// The fewest keyframes, from `K` up to `K_hi`, between which `one`'s frames break neither the
+// step nor the turn limit; 0 when even `K_hi` do not.
+int keyframes_to_follow(const Scene& scene, const std::vector<Vec2>& pts, const MotionPlan& one, const std::vector<char>& exempt,
+                        int frames, int K, int K_hi) {
+  auto follows = [&](int k) {
+    return limit_broken_steps(scene, pts, exempt, frames, k).empty() && turn_broken(one, frames, k).empty();
+  };
+  if (!follows(K_hi)) return 0;
+  for (int k = K; k < K_hi; ++k)  // searched from below: more keyframes are not always closer
+    if (follows(k)) return k;       // (rounding moves them), the fewest that follow win
+  return K_hi;
+}
+
+// fit_plan's scaling of `plan` (see motion_plan.h). True when a motion of the whole figure
+// would break a limit even at its smallest scale (a warning says so).
+bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
+  bool whole_failed = false;
+  // Points exempt from the step limit: falling elements (they jump back while invisible) and
+  // spinning parts (whole turns cannot be scaled; rotation is what flow tracking follows best).
+  std::vector<char> exempt, by_curve;
+  {
+    std::set<int> spinning;
+    for (const auto& a : plan.actions)
+      if (a.primitive == Primitive::Spin)
+        for (int p : a.parts) spinning.insert(p);
+    bool falls = false;
+    for (const auto& a : plan.actions) falls = falls || a.primitive == Primitive::Fall;
+    std::set<int> falling;
+    if (falls)
+      for (const auto& el : rig.repeated) falling.insert(el.begin(), el.end());
+    for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
+      bool spin = false;
+      for (int g = rig.part_of_path[pi], guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
+        spin = spin || spinning.count(g) > 0;
+      const bool ex = spin || falling.count(static_cast<int>(pi)) > 0;
+      for (const auto& sp : scene.paths[pi].subpaths) {
+        exempt.insert(exempt.end(), sp.points.size(), ex);
+        by_curve.insert(by_curve.end(), sp.points.size(), spin);
+      }
+    }
+  }
+  const int K = std::clamp(keyframes, 2, frames);
+  // The fitter may take up to twice as many keyframes as it was given (the fitter plugin reads
+  // motion.json's "keyframes"): a motion too fast for K keyframes gets more of them before its
+  // amplitude is cut. Cut to follow 15 keyframes, a butterfly's wings, a snake and a skier moved
+  // 11-64 % of what their verbs ask, too little to see.
+  const int K_hi = std::min(frames, 2 * (K - 1) + 1);
+  auto alone = [&](const std::vector<size_t>& keep) {
+    MotionPlan one = plan;
+    for (size_t j = 0; j < one.actions.size(); ++j)
+      if (std::find(keep.begin(), keep.end(), j) == keep.end()) one.actions[j].amp = 0;
+    return one;
+  };
+  // Too small to see: the moving parts travel at least kVisibleTravel of the figure's size. Each
+  // clause's actions (one verb's words: a walk's legs, arms and bob) grow together, by at most
+  // kMaxBoost; the canvas then scales them back where they would not fit.
+  {
+    const double floor = kVisibleTravel * std::hypot(rig.figure.w(), rig.figure.h());
+    std::vector<char> done(plan.actions.size(), 0);
+    for (size_t i = 0; i < plan.actions.size(); ++i) {
+      if (done[i]) continue;
+      std::vector<size_t> clause;
+      for (size_t j = i; j < plan.actions.size(); ++j)
+        if (plan.actions[j].verb == plan.actions[i].verb && plan.actions[j].words == plan.actions[i].words) {
+          clause.push_back(j);
+          done[j] = 1;
+        }
+      bool measurable = true;
+      for (size_t j : clause)
+        measurable = measurable && plan.actions[j].primitive != Primitive::Spin && plan.actions[j].primitive != Primitive::Fall;
+      if (!measurable) continue;
+      const double travel = largest_travel(animate_plan(scene, rig, alone(clause), frames), exempt, frames);
+      if (travel <= 0 || travel >= floor) continue;
+      const double boost = std::min(kMaxBoost, floor / travel);
+      for (size_t j : clause) plan.actions[j].scale *= boost;
+      char line[240];
+      std::snprintf(line, sizeof line, "%s raised to %.0f %%: it moved %.1f %% of the figure's size, too little to see",
+                    plan.actions[i].verb.c_str(), boost * 100, 100 * travel / std::hypot(rig.figure.w(), rig.figure.h()));
+      plan.notes.push_back(line);
+    }
+  }
+  // Why `one` at its scales breaks a limit ("" when none): the canvas, then the steps and turns
+  // between K_hi keyframes.
+  auto broken = [&](const MotionPlan& one) {
+    const std::vector<Vec2> pts = animate_plan(scene, rig, one, frames);
+    std::string why = limit_broken(scene, pts, exempt, by_curve, frames, K_hi);
+    if (why.empty()) why = turn_broken(one, frames, K_hi);
+    return why;
+  };
+  // Each action alone first, then all together.
+  for (size_t i = 0; i <= plan.actions.size(); ++i) {
+    const bool all = i == plan.actions.size();
+    if (all) accents_follow_limbs(plan);
+    if (!all && plan.actions[i].primitive == Primitive::Spin) continue;
+    const std::string what = all ? "the motion" : plan.actions[i].verb + " (" + primitive_name(plan.actions[i].primitive) + ")";
+    // The largest scale (from the current one down by 0.8) at which `one` keeps the limits, and
+    // why the first scale tried did not; -1 when none of kScaleAttempts does.
+    auto search = [&](MotionPlan one, double start, std::string* first_why) {
+      double scale = start;
+      for (int attempt = 0; attempt <= kScaleAttempts; ++attempt, scale *= 0.8) {
+        if (!all) one.actions[i].scale = scale;
+        else one.scale = scale;
+        const std::string why = broken(one);
+        if (why.empty()) return scale;
+        if (first_why->empty()) *first_why = why;
+      }
+      return -1.0;
+    };
+    MotionPlan one = all ? plan : alone({i});
+    double& scale = all ? plan.scale : plan.actions[i].scale;
+    std::string first_why;
+    double best = search(one, scale, &first_why);
+    // A back-and-forth action the canvas stops on one side (a raised hand at the top edge of an
+    // emoji swinging out past it) swings to the other side only, at full size, rather than
+    // shrinking both ways to nothing.
+    if (!all && best < scale && oscillates(plan.actions[i]) && first_why == "would leave the canvas")
+      for (int side : {1, -1}) {
+        MotionPlan sided = one;
+        sided.actions[i].one_sided = side;
+        std::string why;
+        const double s = search(sided, scale, &why);
+        if (s > best * 1.05) {
+          best = s;
+          plan.actions[i].one_sided = side;
+        }
+      }
+    if (best < 0) {
+      scale *= std::pow(0.8, kScaleAttempts);
+      plan.warnings.push_back(what + " " + first_why + " even at " + std::to_string(static_cast<int>(scale * 100)) + " % of its size");
+      whole_failed = whole_failed || (!all && plan.actions[i].target == Target::Whole);
+      continue;
+    }
+    if (!all && plan.actions[i].one_sided != 0)
+      plan.notes.push_back(what + " swings to one side only: the other " + first_why);
+    if (best < scale) {
+      char line[240];
+      std::snprintf(line, sizeof line, "%s scaled to %.0f %%: at full size %s %s", all ? "all amplitudes" : ("the amplitude of " + what).c_str(),
+                    best * 100, all ? "the motion" : "it", first_why.c_str());
+      plan.notes.push_back(line);
+    }
+    scale = best;
+  }
+  // The keyframes the fitter needs for the motion as scaled.
+  const int need = keyframes_to_follow(scene, animate_plan(scene, rig, plan, frames), plan, exempt, frames, K, K_hi);
+  plan.keyframes = need > 0 ? need : K_hi;
+  if (plan.keyframes > K)
+    plan.notes.push_back("the fitter takes " + std::to_string(plan.keyframes) + " keyframes instead of " + std::to_string(K) +
+                         ": between " + std::to_string(K) + " the motion moves too far to follow");
+  return whole_failed;
+}
+
+}  // namespace
+
+void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
+  const MotionPlan asked = plan;
+  if (!fit_scales(scene, rig, plan, frames, keyframes)) return;
+  // The whole figure cannot move in the canvas at all: small parts of it at the canvas's edge
+  // (a splash running off the picture beside a surfer who fills it) hold it there. Those parts
+  // hold, as the background does, and the rest moves; kept when it then fits.
+  const double m = kFrameMargin * std::min(scene.width, scene.height);
+  std::vector<int> edge;
+  for (size_t i = 0; i < rig.parts.size(); ++i) {
+    const RigPart& P = rig.parts[i];
+    if (static_cast<int>(i) == rig.root || P.role == Role::Background || P.box.empty()) continue;
+    if (P.box.x0 <= m || P.box.y0 <= m || P.box.x1 >= scene.width - m || P.box.y1 >= scene.height - m) edge.push_back(static_cast<int>(i));
+  }
+  edge = topmost(rig, edge);
+  std::vector<int> held;
+  for (int e : edge)
+    if (chain_box(rig, e).area() <= kHeldMaxShare * rig.figure.area()) held.push_back(e);
+  if (held.empty()) return;
+  MotionPlan retry = asked;
+  retry.held = held;
+  if (fit_scales(scene, rig, retry, frames, keyframes)) return;
+  std::vector<std::string> names;
+  for (int h : held) names.push_back(rig.parts[h].name);
+  retry.notes.push_back("the whole figure could not move inside the canvas: " + join(names, ", ") + " at its edge hold" +
+                        (held.size() > 1 ? "" : "s") + " still");
+  plan = retry;
+}
+
+
+}  // namespace svgm

@@ -1,0 +1,462 @@
+// The frames of a motion plan (animate_plan, motion_plan.h): each action's rigid motion or
+// deformation of its parts at every frame, the bends of regions and of the silhouette's limbs,
+// and what rides on spinning wheels.
+#include "video/motion_plan.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "video/motion_plan_internal.h"
+#include "video/rigid_bodies.h"
+#include "video/wheel_riders.h"
+
+namespace svgm {
+
+namespace motion_plan_internal {
+
+// The oscillation of a back-and-forth action at phase u (in cycles): about rest on both sides
+// (sin), or, one-sided, out to one side and back (0 at rest, +-1 at the far end of the swing).
+double oscillation(const PlannedAction& a, double u) {
+  return a.one_sided == 0 ? std::sin(kTau * u) : a.one_sided * (0.5 - 0.5 * std::cos(kTau * u));
+}
+
+}  // namespace motion_plan_internal
+
+using namespace motion_plan_internal;
+
+namespace {
+
+// The rigid motion of one action at time t on a part (or the figure) with box `box` and
+// attachment `pivot`; `H`, `W` the figure's size (units of the translations).
+Affine rigid(const PlannedAction& a, double amp, double sign, double phase, double t, const RigBox& box, Vec2 pivot,
+             double W, double H, const Affine& plane = {}) {
+  const double u = a.cycles * t + phase;
+  const double s = oscillation(a, u), k = 0.5 - 0.5 * std::cos(kTau * u);
+  const Vec2 base{box.centre().x, box.y1}, centre = box.centre();
+  auto about = [](Vec2 c, const Affine& m) { return Affine::translate(c.x, c.y) * m * Affine::translate(-c.x, -c.y); };
+  switch (a.primitive) {
+    case Primitive::Swing: return about(pivot, Affine::rotate_deg(sign * amp * s));
+    case Primitive::Spin: return about(centre, plane * Affine::rotate_deg(360.0 * amp * a.direction * t) * plane.inverse());
+    case Primitive::Rock:
+      return about(a.parts.empty() ? base : pivot, Affine::rotate_deg(a.vertical == 2 ? a.direction * amp * k : sign * amp * s));
+    case Primitive::Bob: {
+      const double ty = a.vertical == 1 ? -amp * H * k : a.vertical == -1 ? amp * H * k : -amp * H * s;
+      return Affine::translate(0, ty);
+    }
+    case Primitive::Slide: return Affine::translate(a.direction * amp * W * s, 0);
+    case Primitive::Shake:
+      return Affine::translate(amp * H * s, 0.6 * amp * H * std::sin(kTau * (std::max(1, a.cycles - 1) * t + phase)));
+    case Primitive::Pulse: {
+      const double f = 1 + amp * k;
+      return about(centre, Affine::scale(f, f));
+    }
+    case Primitive::Squash: {
+      const double sy = 1 - 1.2 * amp * k;
+      return about(base, Affine::scale(1 + 0.5 * amp * k, sy));
+    }
+    case Primitive::Stretch: {
+      const double f = 1 + amp * k;
+      if (box.w() >= box.h()) return about({box.x0, centre.y}, Affine::scale(f, 1 / std::sqrt(f)));
+      return about(base, Affine::scale(1 / std::sqrt(f), f));
+    }
+    case Primitive::Hop: {
+      // Per cycle: a fifth on the ground squashing, then the flight (stretched rising,
+      // squashed a little falling), landing where it started.
+      const double c = u - std::floor(u);
+      double ty = 0, sy = 1;
+      if (c < 0.2) sy = 1 - 0.6 * amp * std::sin(M_PI * c / 0.2);
+      else {
+        const double v = (c - 0.2) / 0.8;
+        ty = -amp * H * std::sin(M_PI * v);
+        sy = 1 + 0.4 * amp * std::sin(kTau * v);
+      }
+      return Affine::translate(0, ty) * about(base, Affine::scale(1 / std::sqrt(sy), sy));
+    }
+    default: return {};
+  }
+}
+
+// Deformations of the shape: a wave along the long axis (Undulate) or a bend (Bend).
+Vec2 deform(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
+  const bool horizontal = box.w() >= box.h();
+  const double L = std::max(horizontal ? box.w() : box.h(), 1e-9);
+  const double u = horizontal ? (q.x - box.x0) / L : (q.y - box.y0) / L;
+  double d = 0;
+  if (a.primitive == Primitive::Undulate && a.anchored != 0) {
+    // Held at one side (a flag at its pole): the wave runs away from there, growing to the far
+    // side, across the pole whatever the figure's long axis.
+    const bool across_x = a.anchored <= 2;
+    const double len = std::max(across_x ? box.w() : box.h(), 1e-9);
+    const double f = across_x ? (q.x - box.x0) / len : (q.y - box.y0) / len;
+    const double v = a.anchored % 2 == 1 ? f : 1 - f;
+    const double e = amp * len * v * (std::sin(kTau * (a.cycles * t - v)) - std::sin(kTau * (-v)));
+    return across_x ? Vec2{q.x, q.y + e} : Vec2{q.x + e, q.y};
+  } else if (a.primitive == Primitive::Undulate) {
+    const double w = 0.4 + 0.6 * std::fabs(2 * u - 1);  // the ends move most
+    d = amp * L * w * (std::sin(kTau * (a.cycles * t - u)) - std::sin(kTau * (-u)));
+  } else if (a.primitive == Primitive::Bend) {
+    d = std::tan(amp * M_PI / 180) * L * 2 * (u - 0.5) * (u - 0.5) * oscillation(a, a.cycles * t) * a.direction;
+  }
+  return horizontal ? Vec2{q.x, q.y + d} : Vec2{q.x + d, q.y};
+}
+
+bool is_deformation(const PlannedAction& a) {
+  return a.primitive == Primitive::Undulate || a.primitive == Primitive::Bend || a.primitive == Primitive::Sway ||
+         a.region != Region::None;
+}
+
+double smoothstep(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3 - 2 * x);
+}
+
+Vec2 rotate_about(Vec2 q, Vec2 c, double deg) {
+  const double r = deg * M_PI / 180, cs = std::cos(r), sn = std::sin(r);
+  const Vec2 d = q - c;
+  return c + Vec2{cs * d.x - sn * d.y, sn * d.x + cs * d.y};
+}
+
+// Region bends (virtual limbs); the fractions of the part's box are where a figure drawn as
+// one shape usually has its joints: the core of a body is the middle quarter of its width
+// (kCore each side), hips at 60 % of its height, a neck at 30 %, a tail the last 30 %.
+constexpr double kCore = 0.12, kHip = 0.6, kNeck = 0.3, kTailStart = 0.3, kRamp = 0.25;
+// An arm lobe's turn grows over this share of its base's width beyond the base.
+constexpr double kLobeRamp = 0.5;
+
+Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
+  const double W = std::max(box.w(), 1e-9), H = std::max(box.h(), 1e-9);
+  const Vec2 c = box.centre();
+  auto wave = [&](double phase) { return oscillation(a, a.cycles * t + phase); };
+  // Limbs drawn in the part's outline, or read from its silhouette's skeleton: each bends about
+  // the middle of its base, the turn growing from nothing at the base over half its width (the
+  // outline stays in one piece).
+  if (!a.lobes.empty()) {
+    for (const ArmLobe& l : a.lobes) {
+      if (a.region_side != 0 && l.side != a.region_side) continue;
+      const double depth = lobe_depth(l, q);
+      if (depth <= 0) continue;
+      const double base = std::hypot(l.base1.x - l.base0.x, l.base1.y - l.base0.y);
+      const double w = smoothstep(depth / std::max(kLobeRamp * base, 1e-9));
+      const double ang = amp * (l.side < 0 ? 1 : -1) * wave(a.alternating && l.side > 0 ? 0.5 : 0) * w;
+      return rotate_about(q, l.pivot, ang);
+    }
+    return q;
+  }
+  switch (a.region) {
+    case Region::Sides: {
+      const double dx = q.x - c.x;
+      const int side = dx < 0 ? -1 : 1;  // as the viewer sees it
+      const double core = a.core_left > 0 ? (side < 0 ? a.core_left : a.core_right) : kCore * W;
+      if (std::fabs(dx) <= core) return q;
+      if (a.region_side != 0 && side != a.region_side) return q;
+      const double w = smoothstep((std::fabs(dx) - core) / (kRamp * W));
+      // Mirrored: both sides rise together; alternating: half a cycle apart.
+      const double ang = amp * (side < 0 ? 1 : -1) * wave(a.alternating && side > 0 ? 0.5 : 0) * w;
+      return rotate_about(q, {c.x + side * core, c.y}, ang);
+    }
+    case Region::Lower: {
+      const double hip = box.y0 + kHip * H;
+      if (q.y <= hip) return q;
+      const int side = q.x < c.x ? -1 : 1;
+      if (a.region_side != 0 && side != a.region_side) return q;
+      const double w = smoothstep((q.y - hip) / (kRamp * H));
+      const double ang = amp * wave(a.alternating && side > 0 ? 0.5 : 0) * w * (a.alternating ? 1 : (side < 0 ? 1 : -1));
+      return rotate_about(q, {c.x + side * kCore * W, hip}, ang);
+    }
+    case Region::Top: {
+      const double neck = box.y0 + kNeck * H;
+      if (q.y >= neck) return q;
+      return rotate_about(q, {c.x, neck}, amp * wave(0) * smoothstep((neck - q.y) / (kRamp * H)));
+    }
+    case Region::End: {
+      const double start = a.direction > 0 ? box.x1 - kTailStart * W : box.x0 + kTailStart * W;
+      const double beyond = a.direction * (q.x - start);
+      if (beyond <= 0) return q;
+      return rotate_about(q, {start, c.y}, amp * wave(0) * smoothstep(beyond / (kRamp * W)));
+    }
+    case Region::None: break;
+  }
+  return q;
+}
+
+// A part hanging beside a bending shape, outside its box (not under its middle half, where legs
+// hang from a torso and keep to the rig): moved whole as the bend
+// moves the point where it attaches, turned as the bend turns there. Bent point by point it
+// would not move at all (outside the region's box nothing bends): woman_wave's lowered hand,
+// drawn as its own shapes beyond the sweater's box, stayed where it was while the sleeve above
+// it swung out, 10-15 px off the cuff in the target and so in the fit.
+Vec2 carried_by_bend(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 pivot, Vec2 q) {
+  const double eps = 1e-3 * std::max(box.w(), 1e-9);
+  const Vec2 p = bend_region(a, amp, t, box, pivot), e = bend_region(a, amp, t, box, pivot + Vec2{eps, 0});
+  const double ang = std::atan2(e.y - p.y, e.x - p.x);
+  const double cs = std::cos(ang), sn = std::sin(ang), dx = q.x - pivot.x, dy = q.y - pivot.y;
+  return p + Vec2{cs * dx - sn * dy, sn * dx + cs * dy};
+}
+
+// A Sway of the figure with box `box`: above the hinge the points lean about the hinge's middle,
+// the lean growing smoothly over kRamp of the height (the shape stays in one piece); below it
+// they hold.
+Vec2 sway_lean(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
+  const double H = std::max(box.h(), 1e-9), hinge = box.y0 + kSwayHinge * H;
+  if (q.y >= hinge) return q;
+  const double w = smoothstep((hinge - q.y) / (kRamp * H));
+  return rotate_about(q, {box.centre().x, hinge}, a.direction * amp * oscillation(a, a.cycles * t) * w);
+}
+
+// The share of box a inside box b.
+double overlap_share(const RigBox& a, const RigBox& b) {
+  const double ox = std::min(a.x1, b.x1) - std::max(a.x0, b.x0), oy = std::min(a.y1, b.y1) - std::max(a.y0, b.y0);
+  return ox > 0 && oy > 0 ? ox * oy / std::max(a.area(), 1e-12) : 0;
+}
+
+// What each spinning part moves (wheel_riders.h): per part, the spinning part it turns with (in
+// its own frame: itself, or an ancestor holding at least kSpinInsideShare of its box, its spokes
+// and hub, not its stand), or the one it rides round upright (a small part on its rim, a ferris
+// wheel's cabin, whatever the rig hangs it from; a small part stacked under a rider rides with
+// it), where each rider hangs from and the box of its stack. A stack hangs from the middle of
+// the top of its piece whose top lies nearest the rim (a cabin's roof; its body below rides
+// with it, a bracket reaching in towards the hub does not lift it), which goes round the
+// wheel's centre. Turned with the wheel, or carried round by its middle, a cabin hanging below
+// the rim at the bottom came to stand out above it at the top, and left the canvas; its roof
+// and body hanging each from its own top parted as they went round.
+struct WheelLoads {
+  std::vector<int> turns_with, rides;
+  std::vector<Vec2> hang;
+  std::vector<RigBox> stack;
+};
+
+WheelLoads wheel_loads(const Rig& rig, const std::vector<char>& spins) {
+  const int G = static_cast<int>(rig.parts.size());
+  WheelLoads L{std::vector<int>(G, -1), std::vector<int>(G, -1), std::vector<Vec2>(G), std::vector<RigBox>(G)};
+  auto free_part = [&](int g) { return g != rig.root && rig.parts[g].role != Role::Background; };
+  for (int g = 0; g < G; ++g) {
+    const RigBox& gb = rig.parts[g].box;
+    for (int a = g, guard = 0; a >= 0 && guard < 64; a = rig.parts[a].parent, ++guard)
+      if (spins[a] && (a == g || (rig.parts[g].carried && a == rig.parts[g].parent) || overlap_share(gb, rig.parts[a].box) >= kSpinInsideShare)) {
+        (a != g && !rig.parts[g].carried && rides_wheel(gb, rig.parts[a].box) ? L.rides : L.turns_with)[g] = a;
+        break;
+      }
+    for (int a = 0; a < G && L.turns_with[g] < 0 && L.rides[g] < 0 && free_part(g) && !rig.parts[g].carried; ++a)
+      if (spins[a] && a != g && rides_wheel(gb, rig.parts[a].box)) L.rides[g] = a;
+  }
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (int g = 0; g < G; ++g) {
+      if (L.turns_with[g] >= 0 || L.rides[g] >= 0 || !free_part(g)) continue;
+      for (int h = 0; h < G && L.rides[g] < 0; ++h)
+        if (L.rides[h] >= 0 && rig.parts[g].box.area() <= kRideMaxArea * rig.parts[L.rides[h]].box.area() &&
+            riders_stack(rig.parts[g].box, rig.parts[h].box)) {
+          L.rides[g] = L.rides[h];
+          grew = true;
+        }
+    }
+  }
+  for (int a = 0; a < G; ++a) {
+    if (!spins[a]) continue;
+    std::vector<int> riders;
+    std::vector<RigBox> boxes;
+    for (int g = 0; g < G; ++g)
+      if (L.rides[g] == a) {
+        riders.push_back(g);
+        boxes.push_back(rig.parts[g].box);
+      }
+    // Only riders in sets ride (in_rider_sets); a piece drawn once stays where the rig has it.
+    const std::vector<char> in_set = in_rider_sets(boxes);
+    for (size_t i = riders.size(); i-- > 0;)
+      if (!in_set[i]) {
+        L.rides[riders[i]] = -1;
+        riders.erase(riders.begin() + static_cast<long>(i));
+        boxes.erase(boxes.begin() + static_cast<long>(i));
+      }
+    const std::vector<RigBox> stacks = rider_stacks(boxes);
+    const Vec2 c = rig.parts[a].box.centre();
+    const double R = 0.5 * rig.parts[a].box.w();
+    for (size_t i = 0; i < riders.size(); ++i) {
+      L.stack[riders[i]] = stacks[i];
+      double best = 1e300;
+      for (size_t j = 0; j < riders.size(); ++j) {
+        if (!(stacks[j].x0 == stacks[i].x0 && stacks[j].y0 == stacks[i].y0 && stacks[j].x1 == stacks[i].x1 && stacks[j].y1 == stacks[i].y1))
+          continue;
+        const Vec2 top{boxes[j].centre().x, boxes[j].y0};
+        const double off = std::fabs(std::hypot(top.x - c.x, top.y - c.y) - R);
+        if (off < best) { best = off; L.hang[riders[i]] = top; }
+      }
+    }
+  }
+  return L;
+}
+
+}  // namespace
+
+// The riders evenly spaced round the spinning `parts` (rider_symmetry), the most of any.
+int motion_plan_internal::spin_symmetry(const Rig& rig, const std::vector<int>& parts) {
+  std::vector<char> spins(rig.parts.size(), 0);
+  for (int p : parts) spins[p] = 1;
+  const WheelLoads L = wheel_loads(rig, spins);
+  int n = 0;
+  for (int p : parts) {
+    std::vector<RigBox> stacks;
+    for (size_t g = 0; g < rig.parts.size(); ++g)
+      if (L.rides[g] == p) stacks.push_back(L.stack[g]);
+    n = std::max(n, rider_symmetry(stacks, rig.parts[p].box));
+  }
+  return n;
+}
+
+std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames) {
+  const int G = static_cast<int>(rig.parts.size());
+  const double W = std::max(rig.figure.w(), 1e-9), H = std::max(rig.figure.h(), 1e-9);
+  const double CH = scene.height;
+  auto under = [&](int p, int a) { return part_under(rig, p, a); };
+  // Repeated elements: which element each path belongs to; and whether they fly free.
+  std::vector<int> element_of(scene.paths.size(), -1);
+  std::vector<RigBox> element_box(rig.repeated.size());
+  for (size_t e = 0; e < rig.repeated.size(); ++e)
+    for (int pi : rig.repeated[e]) {
+      element_of[pi] = static_cast<int>(e);
+      for (const auto& sp : scene.paths[pi].subpaths)
+        for (const Vec2& q : sp.points) element_box[e].add(q);
+    }
+  bool particles = false;
+  for (const auto& a : plan.actions) particles = particles || (a.target == Target::Repeated && a.primitive == Primitive::Fall);
+  // Each part's box including what hangs from it (the extent a deformation spans).
+  std::vector<RigBox> reach(G);
+  for (int g = 0; g < G; ++g) reach[g] = chain_box(rig, g);
+  // Parts the whole figure's motions leave where they are (fit_plan).
+  std::vector<char> held(G, 0);
+  for (int g = 0; g < G; ++g)
+    for (int h : plan.held) held[g] = held[g] || under(g, h);
+  // The pole a wave runs from holds still (the wave's weight is small but not nothing across
+  // its width: a flag's pole moved 0.8 px and the fitted one drifted out of the canvas).
+  for (const auto& a : plan.actions)
+    if (a.primitive == Primitive::Undulate && a.anchored != 0)
+      for (int p : pole_parts(rig, a.anchored)) held[p] = 1;
+  // Chains hanging from the root that reach the lowest kPlanted of the figure stand on the
+  // ground (legs, feet): the root's own swing does not carry them.
+  std::vector<char> planted(G, 0);
+  for (int g = 0; g < G; ++g)
+    planted[g] = rig.parts[g].parent == rig.root && rig.root >= 0 && !reach[g].empty() &&
+                 reach[g].y1 >= rig.figure.y1 - kPlanted * rig.figure.h();
+
+  std::vector<char> spinning(G, 0);
+  for (const auto& a : plan.actions)
+    if (a.primitive == Primitive::Spin)
+      for (int p : a.parts) spinning[p] = 1;
+  const WheelLoads loads = wheel_loads(rig, spinning);
+
+  std::vector<Vec2> out;
+  out.reserve(static_cast<size_t>(frames) * (scene.segment_count() * 3 + scene.paths.size() * 2));
+  for (int f = 0; f < frames; ++f) {
+    const double t = frames > 1 ? static_cast<double>(f) / (frames - 1) : 0;
+    std::vector<Affine> local(G), world(G), spin(G);
+    std::vector<char> spins(G, 0);
+    Affine whole, root_turn;
+    for (const auto& a : plan.actions) {
+      const double amp = plan.amplitude(a);
+      if (is_deformation(a) || a.target == Target::Repeated) continue;
+      if (a.parts.empty()) whole = rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
+      for (size_t i = 0; i < a.parts.size(); ++i) {
+        const RigPart& P = rig.parts[a.parts[i]];
+        Affine& into = a.primitive == Primitive::Spin ? spin[a.parts[i]]
+                       : a.parts[i] == rig.root && a.primitive == Primitive::Swing ? root_turn : local[a.parts[i]];
+        into = rigid(a, amp, a.sign[i], a.phase[i], t, P.box, P.pivot, W, H, P.wheel_plane) * into;
+        if (a.primitive == Primitive::Spin) spins[a.parts[i]] = 1;
+      }
+    }
+    // World transforms down the rig: parents before children (parents are larger, or the root).
+    std::vector<int> order(G);
+    for (int g = 0; g < G; ++g) order[g] = g;
+    auto depth = [&](int g) { int d = 0; for (int p = rig.parts[g].parent; p >= 0 && d < 64; p = rig.parts[p].parent) ++d; return d; };
+    std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return depth(x) < depth(y); });
+    // The root's own turn (the upper body swaying about the hips) leaves what stands on the
+    // ground where it is: the chains hanging from the root that reach down to the figure's feet.
+    // The head rides on the turning body upright (the eyes stay level, on the opponent a boxer
+    // turns into): it goes where its neck goes without the turn. Turned with the body, a boxer's
+    // densely drawn head swung 19 px at its top for a 4-degree turn and outweighed the punch.
+    for (int g : order) {
+      const int p = rig.parts[g].parent;
+      if (g == rig.root) world[g] = local[g] * root_turn;
+      else if (p == rig.root && planted[g]) world[g] = local[p] * local[g];
+      else if (p == rig.root && rig.parts[g].role == Role::Head) {
+        const Vec2 h = rig.parts[g].pivot, to = root_turn.apply(h);
+        world[g] = local[p] * Affine::translate(to.x - h.x, to.y - h.y) * local[g];
+      }
+      else world[g] = p >= 0 ? world[p] * local[g] : local[g];
+    }
+    // A spinning part turns in its own frame and carries what turns with it; its riders go
+    // round upright (wheel_loads).
+    for (int g = 0; g < G; ++g) {
+      if (loads.turns_with[g] >= 0) world[g] = world[g] * spin[loads.turns_with[g]];
+      if (loads.rides[g] < 0) continue;
+      const Vec2 hang = loads.hang[g], to = spin[loads.rides[g]].apply(hang);
+      world[g] = Affine::translate(to.x - hang.x, to.y - hang.y) * world[g];
+    }
+
+    for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
+      const int g = rig.part_of_path[pi];
+      const int e = element_of[pi];
+      const bool background = g >= 0 && (rig.parts[g].role == Role::Background || held[g]);
+      const bool free_particle = particles && e >= 0;
+      // The element's own motion (falls, twinkles), one phase per element.
+      Affine elem;
+      if (e >= 0)
+        for (const auto& a : plan.actions) {
+          if (a.target != Target::Repeated) continue;
+          const double phase = std::fmod(e * kPhaseSpacing + a.direction * 0.137, 1.0) + 1.0;
+          const RigBox& eb = element_box[e];
+          if (a.primitive == Primitive::Fall) {
+            const double u = std::fmod(a.cycles * t + phase, 1.0);
+            const double room = std::max(0.0, scene.height * (1 - kFrameMargin) - eb.y1);
+            const double dist = std::min(plan.amplitude(a) * CH, room);
+            const double s = std::min(1.0, 3 * std::sin(M_PI * u));
+            const Vec2 c{eb.centre().x, eb.centre().y + dist * u};
+            elem = Affine::translate(c.x, c.y) * Affine::scale(s, s) * Affine::translate(-eb.centre().x, -eb.centre().y) * elem;
+          } else {
+            PlannedAction one = a;
+            one.parts = {};
+            elem = rigid(one, plan.amplitude(a), 1, phase, t, eb, {eb.centre().x, eb.y1}, W, H) * elem;
+          }
+        }
+      for (const auto& sp : scene.paths[pi].subpaths)
+        for (Vec2 q : sp.points) {
+          q = elem.apply(q);
+          if (!free_particle) {
+            for (const auto& a : plan.actions) {
+              if (!is_deformation(a)) continue;
+              const double amp = plan.amplitude(a);
+              if (a.region != Region::None) {
+                // The part's own outlines and what hangs from it within its width and not
+                // below it (a hand at the end of a sleeve, also one raised above the sleeve's
+                // box); what hangs below (legs under a waving torso) keeps its shape and
+                // follows the rig. A wheel (and what turns with it) keeps to its own frame: a
+                // pedalling leg's bend bent a sketched bicycle's wheels with it.
+                if (g >= 0 && g != a.parts[0] && (spins[g] || loads.turns_with[g] >= 0)) continue;
+                const RigBox& hb = rig.parts[a.parts[0]].box;
+                const Vec2 gc = g >= 0 ? rig.parts[g].box.centre() : Vec2{};
+                // Limbs of the whole silhouette: whatever lies in them bends with them (the
+                // outline drawn over a tail's fill), whichever part it belongs to.
+                if (a.silhouette) {
+                  if (!background) q = bend_region(a, amp, t, hb, q);
+                } else if (g == a.parts[0] || (g >= 0 && under(g, a.parts[0]) && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y <= hb.y1))
+                  q = bend_region(a, amp, t, hb, q);
+                else if (g >= 0 && under(g, a.parts[0]) && (gc.y <= hb.y1 || std::fabs(gc.x - hb.centre().x) > 0.25 * hb.w()))
+                  q = carried_by_bend(a, amp, t, hb, rig.parts[g].pivot, q);
+              } else if (a.parts.empty()) {
+                if (!background) q = a.primitive == Primitive::Sway ? sway_lean(a, amp, t, rig.figure, q) : deform(a, amp, t, rig.figure, q);
+              } else {
+                for (int p : a.parts)
+                  if (g >= 0 && under(g, p)) q = deform(a, amp, t, reach[p], q);
+              }
+            }
+            if (g >= 0) q = world[g].apply(q);
+            if (!background) q = whole.apply(q);
+          }
+          out.push_back(q);
+        }
+    }
+  }
+  return out;
+}
+
+
+}  // namespace svgm

@@ -1,0 +1,99 @@
+// What the files of the motion plan share (motion_plan.cpp plans, motion_frames.cpp draws the
+// frames, motion_fit.cpp keeps them inside the canvas and visible, motion_report.cpp writes
+// motion.json): the plan's constants and the helpers more than one of them calls. Not part of
+// the engine's interface: include it only from those files.
+#pragma once
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "video/motion_plan.h"
+
+namespace svgm::motion_plan_internal {
+
+inline constexpr double kTau = 2 * M_PI;
+// Golden-ratio spacing of the phases of repeated elements: no two drops fall in step.
+inline constexpr double kPhaseSpacing = 0.6180339887498949;
+// A prompt with no motion word: the figure's top leans this many degrees (a Sway), once.
+inline constexpr double kFallbackSwayDeg = 6;
+// fit_plan: a point in the canvas margin at rest may come this close to the edge (share of the
+// margin); and it gives up after this many steps of 0.8 (7 % of the size).
+inline constexpr double kMarginUse = 0.9;
+inline constexpr int kScaleAttempts = 12;
+// fit_plan: a clause whose largest motion is under this share of the figure's diagonal is
+// raised to it (a viewer must see the motion the prompt asked for; the pixel ranker calls a video
+// where under 0.5 % of the foreground changes 'no motion'), by at most this factor.
+inline constexpr double kVisibleTravel = 0.08;  // of the figure's diagonal (the floor)
+inline constexpr double kMaxBoost = 4;
+// region_host: a part carries the arms when its middle is above this share of the figure's
+// height, it is at least this share of the figure tall, and this much wider than the root.
+inline constexpr double kArmHostTop = 0.6;
+inline constexpr double kArmHostMinHeight = 0.2;
+inline constexpr double kArmHostWider = 1.15;
+// Wheels: round parts at least this share of the widest one's width; and parts whose centre is
+// within this share of a wheel's width from its centre turn with it.
+inline constexpr double kWheelShare = 0.5;
+inline constexpr double kConcentric = 0.1;
+// A part hanging from a spinning part turns with it when this share of its box is inside (a
+// stand reaching into the wheel's box is not carried).
+inline constexpr double kSpinInsideShare = 0.9;
+// A Sides bend's still core, each side, in shares of the bending part's width (side_core): at
+// least the middle quarter of it (kCore below), at most 70 % of it (the outer 15 % each side
+// still bends: a ghost's stubby arms).
+inline constexpr double kCoreMin = 0.12, kCoreMax = 0.35;
+
+// The usual amplitude of each primitive on one part, in its unit (motion_verbs.h), in the order
+// of Primitive: for a whole-figure verb a prompt aims at a part ("his legs squatting").
+inline constexpr double kPartAmplitude[] = {20, 1, 0.07, 0.04, 0.04, 6, 0.05, 15, 0.01, 0.08, 0.08, 0.08, 0.12, 6};
+static_assert(sizeof kPartAmplitude / sizeof kPartAmplitude[0] == static_cast<size_t>(Primitive::Sway) + 1);
+// A Sway's hinge, in shares of the figure's height from its top: the lower 45 % stays planted
+// (a wine glass's stem and foot, a saxophonist's legs); above it the lean grows over kRamp of
+// the height (bend_region's ramp) to the full angle.
+inline constexpr double kSwayHinge = 0.55;
+// A whole-figure wave is anchored at a side of the figure where thin parts (at most kPoleWidth
+// of the figure's extent across that side) lying within kPoleEnd of it together span kPoleSpan
+// of the figure along it: a flag's pole. The wave then runs away from that side.
+inline constexpr double kPoleWidth = 0.05, kPoleEnd = 0.1, kPoleSpan = 0.7;
+// A figure whose longer side is less than this many times its shorter one is compact: it swims
+// with its lower limbs, not by a wave along its body (Builder::add).
+inline constexpr double kElongated = 1.6;
+// A chain hanging from the root that reaches the lowest this share of the figure stands on the
+// ground (animate_plan): a saxophonist's legs stay while his upper body sways about the hips.
+inline constexpr double kPlanted = 0.15;
+
+
+// Arms: an upper limb whose box is less than this share of the largest one's is left out.
+inline constexpr double kArmMinShare = 0.2;
+
+// A one-sided verb with no side named moves the limb reaching this many times farther from the
+// body than the others (reaching_out): a boxer's extended arm reaches 1.4 times as far as the
+// arm he keeps in guard.
+inline constexpr double kReachLead = 1.2;
+
+// fit_plan: a part at the canvas's edge holds still when the whole figure cannot move otherwise,
+// if it and what hangs from it cover at most this share of the figure's box (a splash, not the
+// body).
+inline constexpr double kHeldMaxShare = 0.1;
+
+// A rock aimed at a part turns it by at most this many times the rock's angle (Builder::add).
+inline constexpr double kRockToPartMax = 4;
+
+// The unit of a primitive's amplitude (motion_verbs.h), as motion.json names it.
+const char* unit_of(Primitive p);
+std::string join(const std::vector<std::string>& v, const char* sep);
+bool is_limb_target(Target t);
+// Keeps only the parts whose ancestors are not also in the set (a limb's segments follow it).
+std::vector<int> topmost(const Rig& rig, std::vector<int> parts);
+// Whether part p is at or under part a (a descendant through the parents).
+bool part_under(const Rig& rig, int p, int a);
+// The box of part a with everything that hangs from it.
+RigBox chain_box(const Rig& rig, int a);
+// The pole's parts at `side` of the figure (1 left, 2 right, 3 top, 4 bottom).
+std::vector<int> pole_parts(const Rig& rig, int side);
+// The riders evenly spaced round the spinning `parts` (motion_frames.cpp, with the wheel loads).
+int spin_symmetry(const Rig& rig, const std::vector<int>& parts);
+// The oscillation of a back-and-forth action at phase u (in cycles) (motion_frames.cpp).
+double oscillation(const PlannedAction& a, double u);
+
+}  // namespace svgm::motion_plan_internal
