@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "export/gif_writer.h"
-#include "fit/preview_video.h"
+#include "media/preview_video.h"
 #include "svgmotion/error.h"
 
 namespace svgm {

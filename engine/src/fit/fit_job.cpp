@@ -17,23 +17,23 @@
 #include <nlohmann/json.hpp>
 
 #include "export/lottie_writer.h"
-#include "fit/animation_export.h"
-#include "fit/blur_match.h"
-#include "fit/checkpoint.h"
-#include "fit/chroma_calibration.h"
-#include "fit/correction_palette.h"
-#include "fit/document_order.h"
-#include "fit/group_transform.h"
-#include "fit/inbetween.h"
-#include "fit/keyframe_choice.h"
-#include "fit/motion_groups.h"
-#include "fit/rest_start.h"
-#include "fit/result_gate.h"
-#include "fit/palette.h"
-#include "fit/preview_video.h"
-#include "fit/segment_split.h"
-#include "fit/smil_writer.h"
-#include "pipeline/run_directory.h"
+#include "fit/output/animation_export.h"
+#include "fit/target/blur_match.h"
+#include "fit/output/checkpoint.h"
+#include "fit/target/chroma_calibration.h"
+#include "fit/target/correction_palette.h"
+#include "svg/document_order.h"
+#include "export/group_transform.h"
+#include "fit/optimise/inbetween.h"
+#include "fit/optimise/keyframe_choice.h"
+#include "fit/plan/motion_groups.h"
+#include "fit/target/rest_start.h"
+#include "fit/output/result_gate.h"
+#include "color/palette_json.h"
+#include "media/preview_video.h"
+#include "fit/plan/segment_split.h"
+#include "export/smil_writer.h"
+#include "run/run_directory.h"
 #include "raster/render_image.h"
 #include "svgmotion/error.h"
 #include "svgmotion/log.h"
@@ -188,7 +188,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   to.keep_denoised = job.denoise_radius > 0 && job.refine_width != 0;
   ClRuntime rt(job.device);
   // The colours the target should show: the fitted scene's opaque flat fills and strokes; none
-  // (no correction) when gradients cover much of the drawing (fit/correction_palette.h).
+  // (no correction) when gradients cover much of the drawing (fit/target/correction_palette.h).
   double gradient_share = 0;
   if (job.colour_correction) {
     CorrectionPalette cp = correction_palette(rt, fit_scene, size.width);
@@ -245,7 +245,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   for (const std::string& w : target_warnings(target, *target_path, size))
     log::warning("%s", w.c_str());
   // Which prior told the shake from the motion matters to the user: a figure with nothing
-  // still keeps the part of the shake inside its motion's band, about 0.45 of 1.6 px rms (fit/stabilise.h).
+  // still keeps the part of the shake inside its motion's band, about 0.45 of 1.6 px rms (fit/target/stabilise.h).
   if (job.stabilise && !job.quiet && !job.progress) {
     if (target.shake_model == "smooth")
       log::info("fit: camera shake of up to %.2f px (fitting width) removed (nothing in the figure holds still: told from the motion by its "
@@ -291,7 +291,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   auto work = [&](int it) { return std::min(it, coarse_iters) + std::max(0, it - coarse_iters) * fine_cost; };
   double total_work = work(total_iters);
   // Blur matching at each width the fit runs at: the render σ of the loss that makes our
-  // rest pose look like the video's first frame (fit/blur_match.h).
+  // rest pose look like the video's first frame (fit/target/blur_match.h).
   auto match_blur = [&](const TargetFrames& t, const RenderSize& at) {
     if (!job.blur_matching) return BlurMatch{};
     const BlurMatch m = match_render_blur(render_image(rt, fit_scene, at.width, false), t.rgba);
@@ -334,7 +334,7 @@ int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
     fine_target = std::move(t);
   };
   // The chroma weight: the job's, or the one under which a still fit of the first frame
-  // drifts least from rest (fit/chroma_calibration.h), when blur matching has seen the
+  // drifts least from rest (fit/target/chroma_calibration.h), when blur matching has seen the
   // video's chroma damaged (chroma_calibration_gate; 1 otherwise, without the calibration's
   // seconds).
   double chroma_weight = job.chroma_weight;

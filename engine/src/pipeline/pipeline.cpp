@@ -1,6 +1,6 @@
 // The pipeline runner (see pipeline.h).
 #include "pipeline/pipeline.h"
-#include "fit/animation_export.h"
+#include "fit/output/animation_export.h"
 #include "pipeline/candidate_choice.h"
 #include "pipeline/canvas_room.h"
 #include "svgmotion/atomic_file.h"
@@ -184,7 +184,7 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
     nlohmann::json hashed = section;
     if (sf.stage == "ranker" && hashed.is_object()) hashed.erase("choose");
     // The fitter's export settings change how the fit is written, not the fit: a change is
-    // re-exported from its checkpoint (fit/animation_export.h) instead of refitting.
+    // re-exported from its checkpoint (fit/output/animation_export.h) instead of refitting.
     nlohmann::json export_keys = nlohmann::json::object();
     if (sf.stage == "fitter" && hashed.is_object())
       for (const char* k : {"precision", "inbetweens", "compact"})

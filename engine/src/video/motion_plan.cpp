@@ -8,7 +8,7 @@
 #include <set>
 
 #include "svgmotion/error.h"
-#include "video/rigid_bodies.h"
+#include "geometry/rigid_bodies.h"
 #include "video/wheel_riders.h"
 
 namespace svgm {
