@@ -11,7 +11,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "pipeline/pipeline.h"
+#include "run/stage_files.h"
 #include "svgmotion/atomic_file.h"
 #include "svgmotion/temporary_name.h"
 #include "svgmotion/error.h"
