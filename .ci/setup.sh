@@ -14,7 +14,7 @@ packages=(
   ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers pocl-opencl-icd
   libeigen3-dev libpugixml-dev libopencv-dev libyaml-cpp-dev
   libavcodec-dev libavformat-dev libavfilter-dev libavutil-dev libswscale-dev
-  libpng-dev zlib1g-dev doctest-dev nlohmann-json3-dev libcurl4-openssl-dev
+  libpng-dev zlib1g-dev doctest-dev nlohmann-json3-dev libcurl4-openssl-dev libspdlog-dev
   clang libclang-rt-dev
   wordnet-base
 )

@@ -8,7 +8,7 @@
  *     Δ_ik = δ_ik + Σ_b w_ib c_bk
  *
  * with c_bk the coefficients (pixels) of the nodes b of a uniform quadratic B-spline over the
- * rest bounding box of i's group (knot spacing h, engine/src/fit/fit_plan.cpp), w_ib the
+ * rest bounding box of i's group (knot spacing h, engine/src/fit/plan/fit_plan.cpp), w_ib the
  * tensor-product weights of i's rest position (3 x 3 nodes, they sum to 1), and δ_ik the free
  * per-point residual. Points closer than h see nearly the same coefficients, so the two sides
  * of a thin ribbon, a small dot or a finger move as one smooth (C1) deformation, while the

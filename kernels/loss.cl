@@ -68,7 +68,7 @@ __kernel void blur_pass(__global const float4* src, __global float4* dst, float 
 }
 
 #ifdef CHROMA_W
-/* The chroma weight w (CHROMA_W, fit/blur_match.h): the squared residual is measured as
+/* The chroma weight w (CHROMA_W, fit/target/blur_match.h): the squared residual is measured as
  * Eᵀ M E with M = w·I + (1 − w)·y yᵀ/|y|², y = (.299, .587, .114) the luma row of A. A residual
  * of luma alone (along y) counts fully; one of chroma alone (yᵀE = 0: a codec's chroma error,
  * A⁻¹ (0, Cb, Cr)) counts w times. M is symmetric and constant, so it commutes with the blur:

@@ -3,7 +3,7 @@
  *   smoothness   Σ_pairs w_ij ‖Δ_i − Δ_j‖²,  w_ij = exp(−‖r_i − r_j‖ / σ), pairs = consecutive
  *                control points of a subpath (r at rest, σ = 1% of the canvas width): nearby
  *                offsets should agree, distant ones are free. Its weight is below the
- *                paper's (engine/src/fit/fitter.h: the displacement field is smooth already).
+ *                paper's (engine/src/fit/optimise/fitter.h: the displacement field is smooth already).
  *   G1           Σ_joints (1 − cos θ), θ the angle between the incoming and outgoing tangents
  *                (anchor − in-handle, out-handle − anchor) at joints that were smooth at rest.
  *   containment  Σ_points max(0, sdf_k(x̂) − m_i)², sdf_k the distance to keyframe k's

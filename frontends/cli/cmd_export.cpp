@@ -1,5 +1,5 @@
 // `svgmotion export RUN_DIR|FIT_DIR`: writes a finished fit's animation again from its
-// checkpoint.bin (fit/animation_export.h) with other export settings, without fitting: the
+// checkpoint.bin (fit/output/animation_export.h) with other export settings, without fitting: the
 // compact or full SVG, the Lottie, and clips rendered from the SVG.
 #include <algorithm>
 #include <chrono>
@@ -9,7 +9,7 @@
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "export/video_encoder.h"
-#include "fit/animation_export.h"
+#include "fit/output/animation_export.h"
 #include "fit/fit_job.h"
 #include "svgmotion/error.h"
 #include "svgmotion/log.h"

@@ -84,7 +84,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
   job.gate = !a.has("--no-gate");
   job.colour_correction = !a.has("--no-colour-correction");
   job.blur_matching = !a.has("--no-blur-matching");
-  // The chroma weight: auto (fit/chroma_calibration.h) unless a number is given.
+  // The chroma weight: auto (fit/target/chroma_calibration.h) unless a number is given.
   job.chroma_weight_auto = true;
   if (const auto w = a.get("--chroma-weight")) {
     job.chroma_weight_auto = *w == "auto";
@@ -111,7 +111,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
   job.mask_threshold = a.get_double("--mask-threshold", job.mask_threshold);
   job.resume = a.has("--resume");
   // The output folder becomes a run directory of its own (a user's folder is not taken over),
-  // and a `run` working in it is not overwritten (pipeline/run_directory.h).
+  // and a `run` working in it is not overwritten (run/run_directory.h).
   job.claim_out = true;
   job.force = a.has("--force");
   job.quiet = log::quiet();

@@ -24,7 +24,7 @@
 #include "pipeline/config_keys.h"
 #include "pipeline/pipeline.h"
 #include "pipeline/plugin_host.h"
-#include "pipeline/run_directory.h"
+#include "run/run_directory.h"
 #include "report/rerun_command.h"
 #include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"

@@ -13,7 +13,7 @@
 
 #include "common/plugin_glue.h"
 #include "svgmotion/error.h"
-#include "video/generator_hooks.h"
+#include "generators/generator_hooks.h"
 
 namespace svgm::plugin {
 

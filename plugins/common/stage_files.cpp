@@ -17,10 +17,10 @@
 #include "svgmotion/png_io.h"
 #include "svgmotion/render_size.h"
 #include "svgmotion/target_video.h"
-#include "fit/palette.h"
-#include "fit/preview_video.h"
+#include "color/palette_json.h"
+#include "media/preview_video.h"
 #include "svgmotion/svg_reader.h"
-#include "video/candidates.h"
+#include "generators/candidates.h"
 #include "svgmotion/utf8_text.h"
 
 namespace svgm::plugin {

@@ -6,10 +6,10 @@
 
 #include "common/plugin_glue.h"
 #include "common/stage_files.h"
-#include "fit/preview_video.h"
+#include "media/preview_video.h"
 #include "svgmotion/error.h"
 #include "svgmotion/target_video.h"
-#include "video/candidates.h"
+#include "generators/candidates.h"
 
 namespace {
 

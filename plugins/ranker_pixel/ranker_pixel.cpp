@@ -12,8 +12,8 @@
 
 #include "common/plugin_glue.h"
 #include "common/stage_files.h"
-#include "fit/palette.h"
-#include "pipeline/plugin_options.h"
+#include "color/palette_json.h"
+#include "plugin/plugin_options.h"
 #include "rank/pixel_ranker.h"
 #include "svgmotion/error.h"
 

@@ -1,10 +1,10 @@
 // tracker `flow` (default): dense optical flow (OpenCV Farnebäck) between consecutive target
 // keyframes, with forward-backward consistency as the certainty, sampled on a grid and written
-// to tracks.json (engine/src/fit/flow_tracks.h). The fitter warm-starts each newly activated
+// to tracks.json (engine/src/fit/optimise/flow_tracks.h). The fitter warm-starts each newly activated
 // keyframe by moving the previous keyframe's fitted points along it.
 #include "common/plugin_glue.h"
 #include "common/stage_files.h"
-#include "fit/flow_tracks.h"
+#include "fit/optimise/flow_tracks.h"
 #include "svgmotion/render_size.h"
 #include "svgmotion/svg_reader.h"
 #include "svgmotion/target_video.h"

@@ -2,7 +2,7 @@
 // recolored.png, queue a workflow template (options.workflow, API format, with "{image}",
 // "{prompt}", "{seed}", "{frames}" placeholders), poll its history, download the video to
 // candidates/NN.<ext>. Options: url, workflow, candidates, frames, timeout_s, retries, poll_s,
-// prompt_template; see README.md here and engine/src/video/comfyui_client.h.
+// prompt_template; see README.md here and engine/src/generators/comfyui_client.h.
 #include <filesystem>
 #include <string>
 
@@ -10,7 +10,7 @@
 #include "common/generator_request.h"
 #include "common/plugin_glue.h"
 #include "svgmotion/error.h"
-#include "video/comfyui_client.h"
+#include "generators/comfyui_client.h"
 
 namespace {
 

@@ -1,14 +1,14 @@
 // video `command`: any external image-to-video generator, run once per candidate from an argv
 // template (never through a shell), each run writing candidates/NN.mp4. Settings come from
 // stages.video.options (argv, candidates, frames, timeout_s, fps, prompt_template); see
-// README.md here and engine/src/video/command_video.h.
+// README.md here and engine/src/generators/command_video.h.
 #include <filesystem>
 #include <string>
 
 #include "common/generator_request.h"
 #include "common/plugin_glue.h"
 #include "svgmotion/error.h"
-#include "video/command_video.h"
+#include "generators/command_video.h"
 
 namespace {
 

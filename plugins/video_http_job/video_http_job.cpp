@@ -3,14 +3,14 @@
 // hosts need a YAML file, not code (examples/video_models/*_job.yaml). The API key comes only
 // from the environment variable options.api_key_env, goes only into options.headers
 // ("{api_key}") and only to the submit URL's origin, and is scrubbed from every message.
-// Options: see README.md here and engine/src/video/http_job_client.h.
+// Options: see README.md here and engine/src/generators/http_job_client.h.
 #include <string>
 
 #include "common/curl_http.h"
 #include "common/generator_request.h"
 #include "common/plugin_glue.h"
 #include "svgmotion/error.h"
-#include "video/http_job_client.h"
+#include "generators/http_job_client.h"
 
 namespace {
 

@@ -11,7 +11,7 @@
 
 #include "common/plugin_glue.h"
 #include "common/stage_files.h"
-#include "pipeline/plugin_options.h"
+#include "plugin/plugin_options.h"
 #include "rank/pixel_ranker.h"
 #include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"

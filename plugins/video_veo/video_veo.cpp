@@ -2,14 +2,14 @@
 // operation polling, download), several candidates at once. The API key comes only from the
 // environment variable options.api_key_env (default GEMINI_API_KEY): it is sent as the
 // x-goog-api-key header to the API's own origin and nowhere else, and never written to a log,
-// a manifest or a message. Options: see README.md here and engine/src/video/veo_client.h.
+// a manifest or a message. Options: see README.md here and engine/src/generators/veo_client.h.
 #include <string>
 
 #include "common/curl_http.h"
 #include "common/generator_request.h"
 #include "common/plugin_glue.h"
 #include "svgmotion/error.h"
-#include "video/veo_client.h"
+#include "generators/veo_client.h"
 
 namespace {
 

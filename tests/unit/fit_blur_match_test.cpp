@@ -1,4 +1,4 @@
-// Blur matching (fit/blur_match.h): the render σ of the loss found from the rest pose. A first
+// Blur matching (fit/target/blur_match.h): the render σ of the loss found from the rest pose. A first
 // frame that is the render itself keeps the paper's σ; one blurred by a Gaussian of σ_b is
 // matched near sqrt(1 + σ_b²) (the two blurs compose); one shifted by two pixels (not the rest
 // pose) is not matched by blurring. A frame whose chroma alone was blurred (colours of equal
@@ -10,7 +10,7 @@
 #include <cmath>
 #include <vector>
 
-#include "fit/blur_match.h"
+#include "fit/target/blur_match.h"
 #include "raster/loss_taps.h"
 
 using namespace svgm;

@@ -1,4 +1,4 @@
-// The chroma weight read off the first frame (fit/chroma_calibration.h), on targets where the
+// The chroma weight read off the first frame (fit/target/chroma_calibration.h), on targets where the
 // answer is known. Two overlapping discs of different hue, drawn by the independent rasteriser
 // of supersampled_fill.h: once clean, and once with the damage a codec does to colour alone
 // (chroma at a quarter of the resolution, each low-resolution sample off by noise; luma
@@ -14,8 +14,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "fit/blur_match.h"
-#include "fit/chroma_calibration.h"
+#include "fit/target/blur_match.h"
+#include "fit/target/chroma_calibration.h"
 #include "raster/render_image.h"
 #include "raster_test_support.h"
 #include "scene_builders.h"
@@ -208,7 +208,7 @@ TEST_CASE("chroma calibration gate: the fixture's clean target skips, its chroma
 
 TEST_CASE("chroma calibration gate: the measured videos' sigmas") {
   // (luma σ, chroma σ) of blur matching on the bench's non-rigid targets (a 512 px video),
-  // at the refinement's 512 px and at the fitting width of 256 px (fit/chroma_calibration.h).
+  // at the refinement's 512 px and at the fitting width of 256 px (fit/target/chroma_calibration.h).
   struct Measured {
     const char* name;
     double luma, chroma;

@@ -1,4 +1,4 @@
-// Paths with one outline fitted as one (fit/coincident_paths.h): a top-level overlay drawn with
+// Paths with one outline fitted as one (fit/plan/coincident_paths.h): a top-level overlay drawn with
 // the outline of the shape under it (offset by a tenth of a unit, as Illustrator's exports do)
 // has that shape as its host and shares its fit group; an outline that differs by more than the
 // tolerance, a different shape, and a path among others in a group stay where they are.
@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "fit/coincident_paths.h"
-#include "fit/fit_plan.h"
+#include "fit/plan/coincident_paths.h"
+#include "fit/plan/fit_plan.h"
 #include "raster/raster_plan.h"
 #include "svgmotion/svg_reader.h"
 

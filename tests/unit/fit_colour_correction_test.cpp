@@ -1,4 +1,4 @@
-// Per-frame colour correction (fit/colour_correction.h) and the held-frame timing of
+// Per-frame colour correction (fit/target/colour_correction.h) and the held-frame timing of
 // load_target: a tinted, off-white, shaded frame comes back in the drawing's exact colours; a
 // clean frame is left alone; colours the drawing does not have are not invented; a clip at a
 // third of its container's frame rate has its keyframes timed at the first frame of each run.
@@ -8,8 +8,8 @@
 #include <cmath>
 #include <vector>
 
-#include "fit/colour_correction.h"
-#include "fit/preview_video.h"
+#include "fit/target/colour_correction.h"
+#include "media/preview_video.h"
 #include "svgmotion/target_video.h"
 
 #include "temp_dir.h"

@@ -1,11 +1,11 @@
-// The colour correction's palette (fit/correction_palette.h): gradient-painted paths give no
+// The colour correction's palette (fit/target/correction_palette.h): gradient-painted paths give no
 // colour, and the share of the canvas gradients show at rest, counted by hand on pixel-aligned
 // rectangles, decides whether a drawing is corrected at all.
 #include <doctest/doctest.h>
 
 #include <string>
 
-#include "fit/correction_palette.h"
+#include "fit/target/correction_palette.h"
 #include "svgmotion/svg_reader.h"
 
 #include "raster_test_support.h"

@@ -1,5 +1,5 @@
-// The user's own document as the fit's output (fit/document_order.h, smil_writer.h timing) and
-// the result gate (fit/result_gate.h): paths matched by id, paint orders applied by moving the
+// The user's own document as the fit's output (svg/document_order.h, smil_writer.h timing) and
+// the result gate (fit/output/result_gate.h): paths matched by id, paint orders applied by moving the
 // fewest elements and only within their parents, keyTimes and loop modes, and the gate's
 // verdict on a good fit, a fit that leaves the canvas and a fit that does not cover the figure.
 #include <doctest/doctest.h>
@@ -11,11 +11,11 @@
 #include <filesystem>
 #include <fstream>
 
-#include "fit/document_order.h"
-#include "fit/inbetween.h"
-#include "fit/result_gate.h"
+#include "svg/document_order.h"
+#include "fit/optimise/inbetween.h"
+#include "fit/output/result_gate.h"
 #include "raster/raster_ref.h"
-#include "fit/smil_writer.h"
+#include "export/smil_writer.h"
 #include "raster/raster_plan.h"
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"

@@ -11,7 +11,7 @@
 
 #include <unistd.h>
 
-#include "fit/smil_writer.h"
+#include "export/smil_writer.h"
 #include "raster/gradient_paint.h"
 #include "raster/raster_plan.h"
 #include "svgmotion/svg_reader.h"

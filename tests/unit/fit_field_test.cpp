@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-#include "fit/fit_plan.h"
+#include "fit/plan/fit_plan.h"
 #include "opencl/runtime.h"
 #include "raster_test_support.h"
 #include "scene_builders.h"

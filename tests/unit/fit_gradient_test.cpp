@@ -3,7 +3,7 @@
 // learned centre, field coefficients, free offsets; kernels/field.cl, motion.cl), each
 // regulariser's value and gradient (kernels/regularise.cl), and one Adam step (adam.cl).
 //
-// The oracle is a double-precision host evaluation of the same maths (fit/motion_model.h's
+// The oracle is a double-precision host evaluation of the same maths (fit/optimise/motion_model.h's
 // apply_motion for the motion, the essays' formulas for the regularisers) differentiated by
 // central differences. Tolerances: the kernels are float32 (ε = 6e-8); each gradient term is
 // a chain of a few dozen flops and the sums run over at most a few hundred terms, so their
@@ -20,8 +20,8 @@
 #include <random>
 #include <string>
 
-#include "fit/fit_plan.h"
-#include "fit/motion_model.h"
+#include "fit/plan/fit_plan.h"
+#include "fit/optimise/motion_model.h"
 #include "opencl/tuning.h"
 #include "raster_test_support.h"
 #include "scene_builders.h"
@@ -61,7 +61,7 @@ struct Setup {
     o.field_spacing_px = 12;
     o.cohesion_radius_px = 6;
     plan = plan_fit(s, raster, o);
-    // The fitter's program and options (engine/src/fit/fitter.cpp).
+    // The fitter's program and options (engine/src/fit/optimise/fitter.cpp).
     prog = &rt.program({"field.cl", "motion.cl", "regularise.cl", "adam.cl"},
                        kernel_build_options(raster_tuning(rt.info(), kW)));
   }

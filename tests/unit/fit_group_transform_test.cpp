@@ -1,4 +1,4 @@
-// Group motion as animateTransform (fit/group_transform.h): the decomposition of known affine
+// Group motion as animateTransform (export/group_transform.h): the decomposition of known affine
 // maps into translate rotate skewX scale, the homography's affine part and its projective
 // distance, and the export of a known motion whose written transforms are checked against
 // hand-computed values and whose shapes read back (render --time) as the baked export's.
@@ -10,10 +10,10 @@
 
 #include <unistd.h>
 
-#include "fit/fit_plan.h"
-#include "fit/group_transform.h"
-#include "fit/motion_model.h"
-#include "fit/smil_writer.h"
+#include "fit/plan/fit_plan.h"
+#include "export/group_transform.h"
+#include "fit/optimise/motion_model.h"
+#include "export/smil_writer.h"
 #include "raster/raster_plan.h"
 #include "svgmotion/svg_reader.h"
 

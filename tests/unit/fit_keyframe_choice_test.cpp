@@ -1,5 +1,5 @@
-// Keyframes from the target (fit/keyframe_choice.h) and a video that does not start at rest
-// (fit/rest_start.h): the rule that adds keyframes, its budget, fit.json's reason, and a
+// Keyframes from the target (fit/optimise/keyframe_choice.h) and a video that does not start at rest
+// (fit/target/rest_start.h): the rule that adds keyframes, its budget, fit.json's reason, and a
 // known motion whose clip starts mid-way, fitted with keyframe 0 free. Targets are drawn by the
 // independent rasteriser of supersampled_fill.h (known_motion.h), on a 64-px canvas so each
 // fit takes a second or two.
@@ -15,9 +15,9 @@
 #include <nlohmann/json.hpp>
 
 #include "fit/fit_job.h"
-#include "fit/fitter.h"
-#include "fit/keyframe_choice.h"
-#include "fit/rest_start.h"
+#include "fit/optimise/fitter.h"
+#include "fit/optimise/keyframe_choice.h"
+#include "fit/target/rest_start.h"
 #include "known_motion.h"
 #include "raster/render_image.h"
 #include "raster_test_support.h"

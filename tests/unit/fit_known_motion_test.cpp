@@ -9,7 +9,7 @@
 
 #include <unistd.h>
 
-#include "fit/fitter.h"
+#include "fit/optimise/fitter.h"
 #include "known_motion.h"
 #include "raster_test_support.h"
 #include "scene_builders.h"

@@ -1,10 +1,10 @@
-// Fit groups along a procedural motion (fit/motion_groups.h): a group whose paths the motion
+// Fit groups along a procedural motion (fit/plan/motion_groups.h): a group whose paths the motion
 // report partly holds still and partly moves is split, still paths keeping the group and the
 // moving ones grouped by rig part; so is one whose moving paths belong to several parts; other
 // groups and unknown reports leave the scene as it is.
 #include <doctest/doctest.h>
 
-#include "fit/motion_groups.h"
+#include "fit/plan/motion_groups.h"
 #include "svgmotion/svg_reader.h"
 
 using namespace svgm;

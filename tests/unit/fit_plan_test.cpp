@@ -3,7 +3,7 @@
 // and a path in a real (multi-path) group keep their own.
 #include <doctest/doctest.h>
 
-#include "fit/fit_plan.h"
+#include "fit/plan/fit_plan.h"
 #include "scene_builders.h"
 
 using namespace svgm;

@@ -13,8 +13,8 @@
 
 #include <unistd.h>
 
-#include "fit/blur_match.h"
-#include "fit/rest_start.h"
+#include "fit/target/blur_match.h"
+#include "fit/target/rest_start.h"
 #include "raster/loss_taps.h"
 #include "raster/render_image.h"
 #include "raster_test_support.h"

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "fit/segment_split.h"
+#include "fit/plan/segment_split.h"
 #include "svgmotion/error.h"
 
 using namespace svgm;

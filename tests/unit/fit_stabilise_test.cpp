@@ -1,4 +1,4 @@
-// Camera-shake removal (fit/stabilise.h): frames of an analytic figure (a disc and a bar with
+// Camera-shake removal (fit/target/stabilise.h): frames of an analytic figure (a disc and a bar with
 // one-pixel soft edges, translated exactly by sub-pixel amounts) with a known jitter. The shake
 // reported is the jitter minus its own low-pass, to a tenth of a pixel; a slow deliberate drift
 // is kept; shifting by minus the shake brings a jittered frame back onto the clean one; and
@@ -14,8 +14,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "fit/stabilise.h"
-#include "fit/tile_steps.h"
+#include "fit/target/stabilise.h"
+#include "fit/target/tile_steps.h"
 #include "svgmotion/target_video.h"
 
 #include "temp_dir.h"

@@ -16,7 +16,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "fit/preview_video.h"
+#include "media/preview_video.h"
 #include "svgmotion/error.h"
 #include "svgmotion/png_io.h"
 #include "svgmotion/target_video.h"

@@ -1,4 +1,4 @@
-// Temporal denoising of the sampled frames (fit/temporal_denoise.h), on an analytic figure (a
+// Temporal denoising of the sampled frames (fit/target/temporal_denoise.h), on an analytic figure (a
 // disc with a one-pixel soft edge) moving a known sub-pixel distance per frame, with independent
 // noise in every frame: the average of five aligned frames has about a fifth of one frame's noise
 // variance, the disc stays where the keyframe shows it (no smear from the motion), a neighbour
@@ -15,7 +15,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "fit/temporal_denoise.h"
+#include "fit/target/temporal_denoise.h"
 #include "svgmotion/target_video.h"
 
 #include "temp_dir.h"

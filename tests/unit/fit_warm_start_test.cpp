@@ -11,11 +11,11 @@
 
 #include <unistd.h>
 
-#include "fit/field_warm_start.h"
-#include "fit/fit_plan.h"
-#include "fit/fitter.h"
-#include "fit/motion_model.h"
-#include "fit/warm_start.h"
+#include "fit/optimise/field_warm_start.h"
+#include "fit/plan/fit_plan.h"
+#include "fit/optimise/fitter.h"
+#include "fit/optimise/motion_model.h"
+#include "fit/optimise/warm_start.h"
 #include "known_motion.h"
 #include "raster_test_support.h"
 #include "scene_builders.h"

@@ -14,8 +14,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "fit/fit_plan.h"
-#include "fit/motion_model.h"
+#include "fit/plan/fit_plan.h"
+#include "fit/optimise/motion_model.h"
 #include "raster/raster_plan.h"
 #include "supersampled_fill.h"
 #include "svgmotion/png_io.h"

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <string>
 
-#include "pipeline/run_directory.h"
+#include "run/run_directory.h"
 #include "svgmotion/error.h"
 #include "svgmotion/temporary_name.h"
 #include "svgmotion/utf8_text.h"

@@ -17,7 +17,7 @@
 
 #include <unistd.h>
 
-#include "fit/preview_video.h"
+#include "media/preview_video.h"
 #include "rank/pixel_ranker.h"
 #include "svgmotion/png_io.h"
 

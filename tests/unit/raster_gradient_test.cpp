@@ -9,8 +9,8 @@
 #include <string>
 #include <tuple>
 
-#include "fit/fit_plan.h"
-#include "fit/fitter.h"
+#include "fit/plan/fit_plan.h"
+#include "fit/optimise/fitter.h"
 #include "opencl/tuning.h"
 #include "raster/layer_compositor.h"
 #include "raster/loss_ref.h"

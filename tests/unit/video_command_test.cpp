@@ -18,12 +18,12 @@
 #include <thread>
 #include <vector>
 
-#include "fit/preview_video.h"
+#include "media/preview_video.h"
 #include "svgmotion/error.h"
 #include "svgmotion/png_io.h"
 #include "svgmotion/target_video.h"
-#include "video/command_runner.h"
-#include "video/command_video.h"
+#include "generators/command_runner.h"
+#include "generators/command_video.h"
 
 #include "error_of.h"
 #include "temp_dir.h"

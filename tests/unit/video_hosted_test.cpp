@@ -17,13 +17,13 @@
 #include <string>
 #include <vector>
 
-#include "fit/preview_video.h"
+#include "media/preview_video.h"
 #include "net/base64.h"
 #include "svgmotion/error.h"
 #include "svgmotion/png_io.h"
-#include "video/hosted_session.h"
-#include "video/http_job_client.h"
-#include "video/veo_client.h"
+#include "generators/hosted_session.h"
+#include "generators/http_job_client.h"
+#include "generators/veo_client.h"
 
 #include "error_of.h"
 #include "temp_dir.h"

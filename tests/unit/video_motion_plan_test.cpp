@@ -11,7 +11,7 @@
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
 #include "video/motion_plan.h"
-#include "video/rigid_bodies.h"
+#include "geometry/rigid_bodies.h"
 
 using namespace svgm;
 

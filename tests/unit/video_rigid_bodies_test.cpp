@@ -1,13 +1,13 @@
-// Rigid bodies of a procedural motion (video/rigid_bodies.h) and what the fitter makes of them
-// (fit/motion_groups.h: groups one body carries merge; the bodies' maps become the known motion),
+// Rigid bodies of a procedural motion (geometry/rigid_bodies.h) and what the fitter makes of them
+// (fit/plan/motion_groups.h: groups one body carries merge; the bodies' maps become the known motion),
 // and the shape overlap the rig hangs parts by (video/shape_overlap.h), on hand-made frames.
 #include <doctest/doctest.h>
 
 #include <cmath>
 
-#include "fit/motion_groups.h"
+#include "fit/plan/motion_groups.h"
 #include "svgmotion/svg_reader.h"
-#include "video/rigid_bodies.h"
+#include "geometry/rigid_bodies.h"
 #include "video/shape_overlap.h"
 
 #include "scene_builders.h"

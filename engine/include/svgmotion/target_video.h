@@ -20,7 +20,7 @@ struct TargetFrames;
 struct TargetOptions {
   int keyframes = 15;            // K: uniformly sampled frames, first and last included
   // The source frames to sample instead (increasing, each in 0..N-1; `keyframes` is then their
-  // count): the keyframes chosen from the target (fit/keyframe_choice.h), or frames between
+  // count): the keyframes chosen from the target (fit/optimise/keyframe_choice.h), or frames between
   // them to judge the fit's in-betweens against.
   std::vector<int> frames;
   // A pixel is foreground when a channel differs from the frame's background colour by more
@@ -43,14 +43,14 @@ struct TargetOptions {
   // The drawing's colours (straight RGB in [0, 1]; white is implied). When given, every
   // keyframe is colour-corrected against them before the mask is found (an affine colour map
   // fitted to the frame's flat regions, then flat pixels snapped to their colour;
-  // fit/colour_correction.h): off-white backgrounds, tints, shading and codec noise.
+  // fit/target/colour_correction.h): off-white backgrounds, tints, shading and codec noise.
   std::vector<std::array<float, 3>> palette;
   // Held frames (a clip at a lower frame rate than its container repeats each frame): a keyframe
   // that falls on a repeat is timed at the first frame of its run, where that pose was made.
   bool retime_held_frames = true;
   // Camera shake (the whole frame jittering a pixel or two) removed before sampling: read off
   // the part of the figure that holds still where there is one, else the path of
-  // frame-to-frame translations minus its low-pass over time (fit/stabilise.h). Off by
+  // frame-to-frame translations minus its low-pass over time (fit/target/stabilise.h). Off by
   // default: a figure moving in genuine sharp jerks would be smoothed a little.
   bool stabilise = false;
   // The low-pass's standard deviation. Shake is independent from frame to frame, so what the
@@ -64,7 +64,7 @@ struct TargetOptions {
   double stabilise_sigma_s = 0.2;
   // Codec noise (blocking, ringing, smeared colour) averaged away: each sampled frame becomes
   // the average of itself and its `denoise_radius` neighbours on either side, warped onto it by
-  // optical flow, each pixel of a neighbour weighted by how well it agrees (fit/temporal_denoise.h).
+  // optical flow, each pixel of a neighbour weighted by how well it agrees (fit/target/temporal_denoise.h).
   // Done at the frames' size, at most twice the target width. 0: the frames as decoded.
   int denoise_radius = 0;
   // Keep the denoised keyframes at the working size in TargetFrames::denoised, for a second

@@ -2,7 +2,7 @@
 // (svgmotion/atomic_file.h, preview videos, copied candidates), and only a kill leaves one.
 //
 // ".NAME.svgm-tmp-PID": hidden, and of a form no user's file has, so that cleaning up what a
-// killed run left (pipeline/run_directory.h) can never take a user's file (the old
+// killed run left (run/run_directory.h) can never take a user's file (the old
 // "NAME.part<pid>" pattern once took "thesis.part1.pdf").
 #pragma once
 

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "export/keyframe_reduce.h"
-#include "fit/group_transform.h"
+#include "export/group_transform.h"
 #include "svgmotion/affine.h"
 
 namespace svgm {

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "export/lottie_json.h"
-#include "fit/smil_writer.h"
+#include "export/smil_writer.h"
 
 namespace svgm::lottie {
 

@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-#include "fit/smil_writer.h"
+#include "export/smil_writer.h"
 #include "raster/raster_plan.h"
 #include "svgmotion/scene.h"
 

@@ -25,15 +25,15 @@
 #include <optional>
 #include <string>
 
-#include "fit/fitter.h"
-#include "fit/smil_writer.h"
+#include "fit/optimise/fitter.h"
+#include "export/smil_writer.h"
 
 namespace svgm {
 
 // More in-betweens than this add nothing a viewer sees (targets have a few frames per keyframe).
 constexpr int kMaxInbetweens = 16;
 // Codec noise: each keyframe averaged with this many flow-aligned neighbours on either side
-// (fit/temporal_denoise.h), and the most `fit --denoise` / stages.fitter.denoise accept.
+// (fit/target/temporal_denoise.h), and the most `fit --denoise` / stages.fitter.denoise accept.
 constexpr int kDefaultDenoiseRadius = 2;
 constexpr int kMaxDenoiseRadius = 4;
 
@@ -101,12 +101,12 @@ struct FitJob {
   double refine_share = 0.125;
   // Colour-correct every keyframe against the drawing's colours (target_video.h).
   bool colour_correction = true;
-  // Match the video's blur, measured on the rest pose, in the loss (fit/blur_match.h).
+  // Match the video's blur, measured on the rest pose, in the loss (fit/target/blur_match.h).
   bool blur_matching = true;
   // How much a residual of chroma alone counts in the loss against one of luma (kernels/
   // loss.cl's loss_metric), in (0, 1]; 1: the plain squared error.
   double chroma_weight = 1;
-  // Choose chroma_weight from the video's first frame instead (fit/chroma_calibration.h):
+  // Choose chroma_weight from the video's first frame instead (fit/target/chroma_calibration.h):
   // `svgmotion fit`'s default; the pipeline's fitter keeps 1.
   bool chroma_weight_auto = false;
   // Remove camera shake from the video before sampling it (target_video.h).
@@ -116,7 +116,7 @@ struct FitJob {
   int denoise_radius = kDefaultDenoiseRadius;
   double mask_threshold = 0.97;
   bool resume = false;
-  // `svgmotion fit`: claim `out` as a run directory and hold its lock (pipeline/run_directory.h)
+  // `svgmotion fit`: claim `out` as a run directory and hold its lock (run/run_directory.h)
   // before writing there; `force` takes a non-empty folder that is not one. The pipeline's
   // fitter leaves this off: its run holds the lock.
   bool claim_out = false;

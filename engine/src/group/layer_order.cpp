@@ -16,8 +16,8 @@
 #include <sstream>
 #include <string_view>
 
-#include "fit/palette.h"
-#include "fit/document_order.h"
+#include "color/palette_json.h"
+#include "svg/document_order.h"
 #include "svgmotion/error.h"
 #include "svgmotion/render_size.h"
 #include "svgmotion/svg_reader.h"

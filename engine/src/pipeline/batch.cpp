@@ -24,7 +24,7 @@
 
 #include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
-#include "video/command_runner.h"
+#include "generators/command_runner.h"
 
 namespace svgm {
 

@@ -2,7 +2,7 @@
 // array.
 //
 // Each item of the shard runs as its own `svgmotion run` process (started with posix_spawn, no
-// shell: video/command_runner.h) in OUT/<id>/, its output in OUT/<id>/batch.log. A process per
+// shell: generators/command_runner.h) in OUT/<id>/, its output in OUT/<id>/batch.log. A process per
 // item isolates items: a crash, an OpenCL driver fault or a leak in one drawing ends that
 // item only, and the item's peak memory is the process's own (wait4). The run's stage
 // manifests make a batch idempotent: a finished item is up to date and costs a few seconds, a

@@ -5,7 +5,7 @@
 
 #include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
-#include "video/candidates.h"
+#include "generators/candidates.h"
 #include "svgmotion/utf8_text.h"
 
 namespace svgm {

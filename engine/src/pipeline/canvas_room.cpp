@@ -8,7 +8,7 @@
 #include <pugixml.hpp>
 #include <sstream>
 
-#include "fit/document_order.h"
+#include "svg/document_order.h"
 #include "svg/svg_number.h"
 #include "svgmotion/error.h"
 

@@ -1,6 +1,6 @@
 // The pipeline runner (see pipeline.h).
 #include "pipeline/pipeline.h"
-#include "fit/animation_export.h"
+#include "fit/output/animation_export.h"
 #include "pipeline/candidate_choice.h"
 #include "pipeline/canvas_room.h"
 #include "svgmotion/atomic_file.h"
@@ -20,26 +20,6 @@
 namespace svgm {
 
 namespace fs = std::filesystem;
-
-const std::vector<StageFiles>& stage_files() {
-  static const std::vector<StageFiles> s = {
-      {"grouper", {{"svg", "input.svg"}}, {{"svg", "grouped.svg"}}},
-      {"recolorer", {{"svg", "grouped.svg"}},
-       {{"svg", "recolored.svg"}, {"png", "recolored.png"}, {"palette", "palette.json"}}},
-      {"video", {{"image", "recolored.png"}, {"svg", "recolored.svg"}, {"original", "input.svg"}}, {{"candidates", "candidates"}}},
-      {"ranker", {{"candidates", "candidates"}, {"palette", "palette.json"}, {"svg", "grouped.svg"}},
-       {{"ranking", "ranking.json"}, {"target", "target.mp4"}}},
-      {"layers",
-       {{"svg", "grouped.svg"}, {"target", "target.mp4"}, {"palette", "palette.json"}, {"original", "input.svg"}},
-       {{"svg", "layered.svg"}, {"layers", "layers.json"}}},
-      {"tracker", {{"svg", "layered.svg"}, {"target", "target.mp4"}}, {{"tracks", "tracks.json"}}},
-      {"fitter",
-       {{"svg", "layered.svg"}, {"target", "target.mp4"}, {"palette", "palette.json"}, {"tracks", "tracks.json"},
-        {"original", "input.svg"}},
-       {{"animation", "animation.svg"}, {"lottie", "animation.json"}, {"preview", "preview.mp4"}, {"report", "fit.json"}}},
-  };
-  return s;
-}
 
 namespace {
 
@@ -184,7 +164,7 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
     nlohmann::json hashed = section;
     if (sf.stage == "ranker" && hashed.is_object()) hashed.erase("choose");
     // The fitter's export settings change how the fit is written, not the fit: a change is
-    // re-exported from its checkpoint (fit/animation_export.h) instead of refitting.
+    // re-exported from its checkpoint (fit/output/animation_export.h) instead of refitting.
     nlohmann::json export_keys = nlohmann::json::object();
     if (sf.stage == "fitter" && hashed.is_object())
       for (const char* k : {"precision", "inbetweens", "compact"})

@@ -16,16 +16,9 @@
 #include <vector>
 
 #include "pipeline/plugin_host.h"
+#include "run/stage_files.h"
 
 namespace svgm {
-
-struct StageFiles {
-  std::string stage;
-  nlohmann::json inputs, outputs;  // name -> path relative to the run directory
-};
-
-// The files each stage reads and writes, in pipeline order.
-const std::vector<StageFiles>& stage_files();
 
 struct StageReport {
   std::string stage, plugin;

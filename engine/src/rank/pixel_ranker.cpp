@@ -1,7 +1,7 @@
 // The pixel ranker (see pixel_ranker.h for the signals, their thresholds and the score).
 #include "rank/pixel_ranker.h"
 
-#include "video/candidates.h"
+#include "generators/candidates.h"
 
 #include <algorithm>
 #include <array>

@@ -3,7 +3,7 @@
 //
 // The loss compares G_r ∗ C with G_t ∗ T (kernels/loss.cl): the render blurred by G_r, the
 // target by G_t, Gaussians truncated at a radius and normalised over their taps. The paper's
-// loss is G_r = G_t with σ = 1 and radius 2 (5 taps). Blur matching (fit/blur_match.h) widens G_r alone when the video is
+// loss is G_r = G_t with σ = 1 and radius 2 (5 taps). Blur matching (fit/target/blur_match.h) widens G_r alone when the video is
 // softer than the render, so that a blurred video is matched by blurring the drawing rather
 // than by shrinking its thin parts and rounding its corners.
 #pragma once
@@ -34,7 +34,7 @@ inline std::vector<double> loss_taps(double sigma) {
 
 // The loss's blur on the host, in double: `stencil` (g_{-R}..g_R) applied separably, with
 // zero padding, to W x H pixels of 3 interleaved channels. Shared by the loss's constants
-// (raster_cl_backward.cpp) and blur matching (fit/blur_match.cpp).
+// (raster_cl_backward.cpp) and blur matching (fit/target/blur_match.cpp).
 std::vector<double> blur_rgb(const std::vector<double>& in, int W, int H, const std::vector<double>& stencil);
 
 // The taps as a full stencil, g_{-R}..g_R.

@@ -22,7 +22,7 @@ namespace svgm {
 class ClRaster {
  public:
   // `render_sigma`: the σ of the Gaussian the loss blurs the render with (kernels/loss.cl; the
-  // target's is always kLossSigma). Above it, blur matching (fit/blur_match.h).
+  // target's is always kLossSigma). Above it, blur matching (fit/target/blur_match.h).
   // `chroma_sigma`: the σ of the render's chroma blur in YCbCr (raster/loss_taps.h,
   // render_blur); 0 means render_sigma, the plain blur of every channel alike.
   // `chroma_weight` (0, 1]: how much a residual of chroma alone counts against one of luma

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "report/html_text.h"
-#include "video/candidates.h"
+#include "generators/candidates.h"
 
 namespace svgm {
 

@@ -32,7 +32,7 @@
 #include "svgmotion/png_io.h"
 #include "svgmotion/render_size.h"
 #include "svgmotion/svg_reader.h"
-#include "video/candidates.h"
+#include "generators/candidates.h"
 #include "svgmotion/utf8_text.h"
 
 namespace svgm {

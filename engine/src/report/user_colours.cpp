@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "fit/palette.h"
+#include "color/palette_json.h"
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
 

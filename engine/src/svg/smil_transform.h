@@ -1,5 +1,5 @@
 // A SMIL <animateTransform attributeName="transform"> at a given time, for `render --time T`
-// of exports written with group transforms (fit --group-transforms, fit/group_transform.h).
+// of exports written with group transforms (fit --group-transforms, export/group_transform.h).
 //
 // Supported: `values` with optional `keyTimes` (uniform when absent), calcMode linear or
 // discrete or spline (keySplines), `dur`, repeatCount (a number or indefinite), fill="freeze", additive sum or
@@ -19,7 +19,7 @@ namespace svgm::svg {
 
 // The element's transform at `seconds`: `base` (its transform attribute) with its
 // animateTransform children applied. `attribute`: the animated attribute (a gradient's is
-// gradientTransform; the SMIL export moves gradients with their paths, fit/smil_writer.h).
+// gradientTransform; the SMIL export moves gradients with their paths, export/smil_writer.h).
 Affine animated_transform(pugi::xml_node element, double seconds, const Affine& base,
                           std::string_view attribute = "transform");
 

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "video/motion_plan_internal.h"
-#include "video/rigid_bodies.h"
+#include "geometry/rigid_bodies.h"
 #include "video/wheel_riders.h"
 
 namespace svgm {

@@ -121,13 +121,13 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
 // travel ("point_travel": [x, y, travel, ...] rounded to 0.1), so a reader can check what moved
 // where (tests/bench/motion_score.py). The swept box is that of the path's curves (each cubic
 // at quarters), not of its handles. "body" numbers the rigid bodies: paths one affine map moves
-// in every frame (video/rigid_bodies.h; -1: a path no single map moves).
+// in every frame (geometry/rigid_bodies.h; -1: a path no single map moves).
 struct PathMotion {
   double max_travel = 0, mean_travel = 0;
   int points = 0;
   RigBox rest, swept;
   std::vector<float> travel;  // each control point's largest distance from rest, in order
-  int body = -1;  // its rigid body (video/rigid_bodies.h: the paths one affine map moves), -1: none
+  int body = -1;  // its rigid body (geometry/rigid_bodies.h: the paths one affine map moves), -1: none
 };
 // `body_maps` (may be null): each rigid body's map from rest in every frame.
 std::vector<PathMotion> path_motion(const Scene& scene, const std::vector<Vec2>& points, int frames,

@@ -8,7 +8,7 @@
 
 #include "video/motion_direction.h"
 #include "video/motion_plan_internal.h"
-#include "video/rigid_bodies.h"
+#include "geometry/rigid_bodies.h"
 
 namespace svgm {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "video/curve_samples.h"
+#include "geometry/curve_samples.h"
 
 namespace svgm {
 

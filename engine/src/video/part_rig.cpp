@@ -10,11 +10,11 @@
 #include <optional>
 #include <set>
 
-#include "fit/document_order.h"
+#include "svg/document_order.h"
 #include "scene/backdrop.h"
 #include "video/shape_overlap.h"
 #include "svgmotion/svg_reader.h"
-#include "video/curve_samples.h"
+#include "geometry/curve_samples.h"
 #include "video/hands_at_head.h"
 #include "video/skeleton_lobes.h"
 #include "video/stroke_rig.h"

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <random>
 
-#include "fit/preview_video.h"
+#include "media/preview_video.h"
 #include "opencl/runtime.h"
 #include "raster/raster_cl.h"
 #include "raster/raster_plan.h"

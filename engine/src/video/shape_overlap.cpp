@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "video/curve_samples.h"
+#include "geometry/curve_samples.h"
 
 namespace svgm {
 

@@ -8,7 +8,7 @@
 
 #include "motion/limbs.h"
 #include "motion/skeleton.h"
-#include "video/curve_samples.h"
+#include "geometry/curve_samples.h"
 
 namespace svgm {
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "video/curve_samples.h"
+#include "geometry/curve_samples.h"
 
 namespace svgm {
 

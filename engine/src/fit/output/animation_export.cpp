@@ -1,0 +1,178 @@
+// Writing a fit's animation files, at the end of a fit or again from its checkpoint (see
+// animation_export.h).
+#include "fit/output/animation_export.h"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+#include "export/lottie_writer.h"
+#include "fit/output/checkpoint.h"
+#include "svg/document_order.h"
+#include "fit/optimise/inbetween.h"
+#include "fit/plan/segment_split.h"
+#include "run/run_directory.h"
+#include "raster/raster_plan.h"
+#include "svgmotion/error.h"
+#include "svgmotion/svg_reader.h"
+#include "svgmotion/utf8_text.h"
+
+namespace svgm {
+
+namespace fs = std::filesystem;
+
+std::string fit_result_json(const FitResult& r) {
+  const nlohmann::json j = {{"svg", r.svg},
+                            {"export_into", r.export_into},
+                            {"export_name", r.export_name},
+                            {"max_segment", r.max_segment},
+                            {"rejected", r.rejected},
+                            {"keyframes", r.timing.keyframes},
+                            {"key_times", r.timing.key_times},
+                            {"duration_s", r.timing.duration_s},
+                            {"loop", loop_mode_name(r.timing.loop)},
+                            {"close_loop", r.timing.close_loop},
+                            {"fps", r.fps},
+                            {"source_frames", r.source_frames},
+                            {"n_cp", r.n_cp}};
+  return json_text(j);
+}
+
+FitResult fit_result_from_json(const std::string& text, const std::string& what) {
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  FitResult r;
+  try {
+    if (!j.is_object()) throw Error("");
+    r.svg = j.at("svg").get<std::string>();
+    r.export_into = j.at("export_into").get<std::string>();
+    r.export_name = j.at("export_name").get<std::string>();
+    r.max_segment = j.at("max_segment").get<double>();
+    r.rejected = j.at("rejected").get<bool>();
+    r.timing.keyframes = j.at("keyframes").get<int>();
+    r.timing.key_times = j.at("key_times").get<std::vector<double>>();
+    r.timing.duration_s = j.at("duration_s").get<double>();
+    r.timing.loop = parse_loop_mode(j.at("loop").get<std::string>(), "loop");
+    r.timing.close_loop = j.at("close_loop").get<bool>();
+    r.fps = j.at("fps").get<double>();
+    r.source_frames = j.at("source_frames").get<int>();
+    r.n_cp = j.at("n_cp").get<int>();
+  } catch (const std::exception&) {
+    throw Error(what + ": the fit's result does not read (damaged checkpoint)");
+  }
+  if (r.timing.keyframes < 1 || r.source_frames < 2 || r.n_cp < 0 ||
+      r.timing.key_times.size() != static_cast<size_t>(r.timing.keyframes))
+    throw Error(what + ": the fit's result does not read (damaged checkpoint)");
+  return r;
+}
+
+ExportDocument export_document(const Scene& as_read, const SplitPlan& split, const std::string& fitted_name,
+                               const std::string& export_into) {
+  ExportDocument d;
+  if (export_into.empty()) {
+    d.scene = split_scene(as_read, split);
+    d.into = fitted_name;
+    return d;
+  }
+  d.into = export_into;
+  d.scene = read_svg_file(d.into);
+  const std::vector<int> match = match_paths(as_read, d.scene, fitted_name);
+  ExportMap map;
+  map.fitted_of.assign(d.scene.paths.size(), -1);
+  bool reordered = false;
+  for (size_t j = 0; j < match.size(); ++j) {
+    map.fitted_of[static_cast<size_t>(match[j])] = static_cast<int>(j);
+    reordered = reordered || match[j] != static_cast<int>(j);
+  }
+  if (reordered) map.order = match;
+  for (size_t i = 0; i < d.scene.paths.size(); ++i)
+    if (map.fitted_of[i] >= 0) d.scene.paths[i] = split_path(d.scene.paths[i], split[static_cast<size_t>(map.fitted_of[i])]);
+  d.map = std::move(map);
+  return d;
+}
+
+ExportOutcome write_animation_files(const FitResult& result, const ExportSettings& settings, const ExportDocument& doc,
+                                    const RasterPlan& plan, const fs::path& anim,
+                                    const std::function<std::optional<PathMotion>(const std::vector<double>&,
+                                                                                  const std::vector<double>&)>& group_motion) {
+  ExportOutcome outcome;
+  if (plan.n_cp != result.n_cp) throw Error("internal: the fit's control points do not match the plan");
+  // What is written: the keyframes (a closed loop's last one is its first) and smooth
+  // in-betweens at the target's frames between them (inbetween.h).
+  const int N = std::max(2, result.source_frames);
+  const size_t per_key = static_cast<size_t>(plan.n_cp) * 2;
+  std::vector<double> frame_times;
+  for (int i = 0; i < N; ++i) frame_times.push_back(static_cast<double>(i) / (N - 1));
+  const InBetween written = in_between(result.points, result.timing.key_times, per_key, frame_times,
+                                       settings.inbetweens, result.timing.close_loop);
+  AnimationTiming wt = result.timing;
+  wt.keyframes = static_cast<int>(written.times.size());
+  wt.key_times = written.times;
+  wt.close_loop = false;  // in_between already wrote the first keyframe's shape last
+  outcome.values_written = wt.keyframes;
+  outcome.fps = result.fps;
+  outcome.svg = anim;
+  const ExportMap* map = doc.map ? &*doc.map : nullptr;
+  const double tolerance_px = settings.tolerance_1024 * std::max(doc.scene.width, doc.scene.height) / 1024.0;
+  auto name_line = [&](std::string line) {
+    if (!result.export_name.empty() && line.rfind(doc.into.string(), 0) == 0)
+      line = result.export_name + line.substr(doc.into.string().size());
+    return line;
+  };
+  if (settings.svg) {
+    std::vector<std::string> w;
+    if (settings.compact) {
+      CompactExport ce;
+      ce.decimals = settings.decimals;
+      ce.tolerance_px = tolerance_px;
+      w = write_compact_animation_svg(doc.into, doc.scene, plan, written.points, wt, anim, map, ce, &outcome.stats);
+    } else {
+      std::optional<PathMotion> motion;
+      if (group_motion) motion = group_motion(written.times, frame_times);
+      w = write_animation_svg(doc.into, doc.scene, plan, written.points, wt, anim, map,
+                              settings.decimals >= 0 ? settings.decimals : kDefaultDecimals, motion ? &*motion : nullptr);
+    }
+    for (const std::string& line : w) outcome.warnings.push_back(name_line(line));
+  }
+  if (settings.lottie) {
+    LottieOptions lottie;
+    lottie.fps = result.fps;
+    lottie.decimals = settings.decimals >= 0 || settings.compact ? settings.decimals : kDefaultDecimals;
+    lottie.compact = settings.compact;
+    lottie.tolerance_px = tolerance_px;
+    lottie.name = doc.into.filename().string();
+    std::error_code ec;
+    if (fs::exists(anim, ec)) lottie.exported_svg = anim;  // gradients follow their shapes as animation.svg draws them
+    lottie.dotlottie = fs::path(anim).replace_extension(".lottie");
+    for (const std::string& w : write_lottie(fs::path(anim).replace_extension(".json"), doc.scene, plan, written.points, wt,
+                                             lottie, map))
+      outcome.warnings.push_back(w);
+  }
+  return outcome;
+}
+
+ExportOutcome export_fit_directory(const fs::path& dir, const fs::path& out, const ExportSettings& settings, bool lock) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw Error(dir.string() + ": not a folder");
+  if (!fs::is_directory(dir / ".svgmotion", ec)) throw Error(dir.string() + ": not a svgmotion run or fit directory");
+  const fs::path ckpt = dir / "checkpoint.bin";
+  if (!fs::exists(ckpt, ec)) throw Error(ckpt.string() + ": no checkpoint (no fit has run in " + dir.string() + ")");
+  FitResult result = load_fit_result(ckpt);
+  // Paths the fit kept relative to its folder (its own copies in a run directory).
+  for (std::string* p : {&result.svg, &result.export_into})
+    if (!p->empty() && fs::path(*p).is_relative()) *p = (dir / *p).string();
+  if (!fs::exists(result.svg, ec)) throw Error(result.svg + ": the fitted SVG is gone (" + ckpt.string() + " needs it)");
+  const Scene as_read = read_svg_file(result.svg);
+  const SplitPlan split = plan_segment_split(as_read, result.max_segment * std::max(as_read.width, as_read.height));
+  const Scene fitted = split_scene(as_read, split);
+  const ExportDocument doc = export_document(as_read, split, result.svg, result.export_into);
+  // The control-point layout only: a tiny plan.
+  const RasterPlan plan = plan_raster(fitted, Affine{}, 8, 8);
+  if (plan.n_cp != result.n_cp)
+    throw Error(result.svg + ": changed since the fit (" + std::to_string(plan.n_cp) + " control points, the fit has " +
+                std::to_string(result.n_cp) + "); fit it again");
+  std::optional<RunLock> held;
+  if (lock) held.emplace(out, false, fit_output_names());
+  return write_animation_files(result, settings, doc, plan,
+                               out / (result.rejected ? "animation.failed.svg" : "animation.svg"));
+}
+
+}  // namespace svgm
