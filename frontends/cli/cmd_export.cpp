@@ -8,7 +8,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/commands.h"
-#include "export/video_encoder.h"
+#include "media/video_encoder.h"
 #include "fit/output/animation_export.h"
 #include "fit/fit_job.h"
 #include "svgmotion/error.h"

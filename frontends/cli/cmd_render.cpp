@@ -15,7 +15,7 @@
 #include "cli/commands.h"
 #include "export/clip_writer.h"
 #include "export/smil_clock.h"
-#include "export/video_encoder.h"
+#include "media/video_encoder.h"
 #include "opencl/runtime.h"
 #include "raster/render_image.h"
 #include "svgmotion/error.h"

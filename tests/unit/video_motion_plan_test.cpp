@@ -1215,4 +1215,44 @@ TEST_CASE("a tail not drawn as a part of its own: the tail of the figure's silho
   CHECK(legs == 0);
 }
 
+TEST_CASE("a bird seen from the side: its near wing and the far one rising behind it beat together; the body holds") {
+  // An upright body drawn as one path with two wings up from it (the way emoji draw a dove):
+  // the near one out to the right, the far one straight up from the shoulders (the skeleton's
+  // labels see an upright body's head there).
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <path d="M 70 130 C 70 100 84 80 100 80 C 116 80 130 100 130 130 C 130 160 116 180 100 180 C 84 180 70 160 70 130 Z
+                    M 94 90 L 96 15 L 104 15 L 106 90 Z M 108 100 L 168 22 L 176 30 L 124 108 Z" fill="#ccc"/></svg>)", "bird_side.svg");
+  const Rig rig = build_rig(s, {});
+  int arms = 0, up = 0;
+  for (const ArmLobe& l : rig.limbs) arms += l.kind == LobeKind::Arm, up += l.kind == LobeKind::Head;
+  REQUIRE(arms == 1);
+  REQUIRE(up == 1);
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the bird flaps its wings"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);  // the wings named: flapping's bob is left out
+  const PlannedAction& a = plan.actions[0];
+  INFO(a.why);
+  CHECK(a.silhouette);
+  CHECK(a.lobes.size() == 2);
+  // Not a bird: a figure with one arm raised and a head keeps its head (no pair: the sides bend).
+  const MotionPlan man = plan_from_prompt(parse_prompt("the man waves both arms"), rig, 1);
+  REQUIRE(!man.actions.empty());
+  CHECK(man.actions[0].lobes.size() != 2);
+  const int F = 13;
+  const auto pts = animate_plan(s, rig, plan, F);
+  const size_t per = pts.size() / F;
+  double far_tip = 0, near_tip = 0, bottom = 0;
+  for (size_t i = 0; i < per; ++i)
+    for (int f = 1; f < F; ++f) {
+      const Vec2 r = pts[i], q = pts[f * per + i];
+      const double d = std::hypot(q.x - r.x, q.y - r.y);
+      if (r.y <= 15.5 && r.x < 110) far_tip = std::max(far_tip, d);
+      if (r.x >= 168) near_tip = std::max(near_tip, d);
+      if (r.y >= 150) bottom = std::max(bottom, d);
+    }
+  CHECK(far_tip > 8);
+  CHECK(near_tip > 8);
+  CHECK(bottom == 0);
+}
+
 }  // TEST_SUITE

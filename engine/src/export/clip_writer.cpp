@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "export/gif_writer.h"
-#include "export/video_encoder.h"
+#include "media/video_encoder.h"
 #include "svgmotion/error.h"
 
 namespace svgm {

@@ -1,4 +1,4 @@
-// The motion lexicon: reads words the hand-written vocabulary (video/motion_verbs.h) does not
+// The motion lexicon: reads words the hand-written vocabulary (motion/motion_verbs.h) does not
 // list, through WordNet (wordnet.h), as the nearest meaning the vocabulary has.
 //
 //  - A verb becomes the nearest vocabulary verb: its senses' hypernym chains (with verb groups and
@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "motion/wordnet.h"
-#include "video/motion_verbs.h"
+#include "motion/motion_verbs.h"
 
 namespace svgm {
 

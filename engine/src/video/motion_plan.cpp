@@ -332,6 +332,7 @@ struct Builder {
   const Rig& rig;
   std::mt19937 rng;
   MotionPlan plan;
+  FigureClass figure = FigureClass::None;  // what the prompt says the figure is (its first clause's)
 
   void add(const Verb& verb, const Action& base_in, Target target, const std::vector<int>& named_parts,
            const std::string& target_word, const Modifiers& mods, bool plural, const std::string& words,
@@ -450,9 +451,18 @@ struct Builder {
         std::vector<ArmLobe> picked;
         for (const ArmLobe& l : rig.limbs)
           if (lobe_serves(l.kind, target)) picked.push_back(l);
+        // A winged figure seen from the side (the prompt's bird or insect) shows its far wing
+        // rising behind the near one, where the skeleton's labels see an upright body's head:
+        // with one arm found, the limbs pointing up are its wings, and they beat together. A
+        // dove's near wing bent alone had been no pair, and its whole body's sides swung.
+        const bool winged = target == Target::Arms && (figure == FigureClass::Bird || figure == FigureClass::Insect);
+        if (winged && picked.size() == 1)
+          for (const ArmLobe& l : rig.limbs)
+            if (l.kind == LobeKind::Head && l.pivot.y - l.tip.y > std::fabs(l.tip.x - l.pivot.x)) picked.push_back(l);
         // As for the outline's arms: one on the side that moves, or a pair when both do.
         auto on = [&](int side) { return std::any_of(picked.begin(), picked.end(), [&](const ArmLobe& l) { return l.side == side; }); };
-        const bool sided = a.region_side != 0 ? on(a.region_side) : target != Target::Arms || (on(-1) && on(1));
+        const bool sided = a.region_side != 0 ? on(a.region_side)
+                                              : target != Target::Arms || (on(-1) && on(1)) || (winged && picked.size() >= 2);
         if (!picked.empty() && sided) {
           a.lobes = std::move(picked);
           a.silhouette = skeletal = true;
@@ -558,6 +568,8 @@ std::string MotionPlan::summary() const {
 
 MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t seed) {
   Builder b{rig, std::mt19937(seed), {}};
+  for (const Clause& c : prompt.clauses)
+    if (b.figure == FigureClass::None) b.figure = c.figure;
   b.plan.source = "prompt";
   std::vector<std::string> unknown;
   // Does the prompt say which limbs move ("waving its arms", "sways its tentacles")? Then the

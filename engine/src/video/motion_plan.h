@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "video/motion_verbs.h"
+#include "motion/motion_verbs.h"
 #include "video/part_rig.h"
 #include "video/prompt_parse.h"
 

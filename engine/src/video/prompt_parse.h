@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "motion/lexicon.h"
-#include "video/motion_verbs.h"
+#include "motion/motion_verbs.h"
 
 namespace svgm {
 

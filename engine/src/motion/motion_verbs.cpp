@@ -1,7 +1,7 @@
 // The motion vocabulary (see motion_verbs.h). Amplitudes are for a "normal" clause; the
 // modifiers scale them and the plan (motion_plan.h) scales them down further when a part would
 // leave the canvas or move too far between keyframes for the fitter to follow.
-#include "video/motion_verbs.h"
+#include "motion/motion_verbs.h"
 
 #include <algorithm>
 #include <array>

@@ -3,7 +3,7 @@
 // its colour tags and quality, then per frame composite/pad into RGBA, convert with swscale's
 // BT.709 coefficients, encode and interleave; flush, write the trailer (the mp4 muxer moves its
 // index to the front here, "faststart"), rename.
-#include "export/video_encoder.h"
+#include "media/video_encoder.h"
 
 extern "C" {
 #include <libavcodec/avcodec.h>
