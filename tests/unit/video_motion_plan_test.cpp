@@ -924,6 +924,18 @@ TEST_CASE("a bird flaps its raised wing, not its small beak beside the body") {
   CHECK(wing > 10.0);
 }
 
+TEST_CASE("a head bobs by turning on its neck: the whole-figure bob aimed at a part swings it") {
+  const Fixture fx("stick_figure.svg");
+  const MotionPlan plan = fx.plan("he bobs his head");
+  REQUIRE(plan.actions.size() == 1);
+  const PlannedAction& a = plan.actions[0];
+  INFO(a.why);
+  CHECK(a.verb == "bob");
+  CHECK(a.primitive == Primitive::Swing);
+  REQUIRE(a.parts.size() == 1);
+  CHECK(fx.rig.parts[a.parts[0]].role == Role::Head);
+}
+
 TEST_CASE("a motion too small to see is raised to 8 % of the figure's diagonal, at most four times") {
   const Fixture fx("stick_figure.svg");
   // A slight nod: the head turns by about 6 degrees about its neck, its top moving about 4
@@ -1222,7 +1234,7 @@ TEST_CASE("a bird seen from the side: its near wing and the far one rising behin
   const Scene s = read_svg_string(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
            <path d="M 70 130 C 70 100 84 80 100 80 C 116 80 130 100 130 130 C 130 160 116 180 100 180 C 84 180 70 160 70 130 Z
-                    M 94 90 L 96 15 L 104 15 L 106 90 Z M 108 100 L 168 22 L 176 30 L 124 108 Z" fill="#ccc"/></svg>)", "bird_side.svg");
+                    M 94 90 L 96 15 L 104 15 L 106 90 Z M 108 100 L 168 22 L 176 30 L 124 108 Z" fill="#ccc"/></svg>)", "dove_profile.svg");
   const Rig rig = build_rig(s, {});
   int arms = 0, up = 0;
   for (const ArmLobe& l : rig.limbs) arms += l.kind == LobeKind::Arm, up += l.kind == LobeKind::Head;

@@ -44,7 +44,7 @@ const std::vector<Verb> kVerbs = {
   {"leap",    {"leap", "lept", "pounc"},        {{P::Hop, T::Whole, 0.16, 1}, {P::Rock, T::Whole, 8, 1}}, P::Hop},
   {"hop",     {"hop"},                          {{P::Hop, T::Whole, 0.07, 2}}, P::Hop},
   {"bounce",  {"bounc", "boing"},               {{P::Hop, T::Whole, 0.08, 2}}, P::Hop},
-  {"bob",     {"bob"},                          {{P::Bob, T::Whole, 0.04, 2}}, P::Bob},
+  {"bob",     {"bob"},                          {{P::Bob, T::Whole, 0.04, 2}}, P::Swing},  // a bobbing head nods on its neck: moved up and down whole it came off the neck, and a head drawn in the body's shape had no part to move
   {"float",   {"float", "drift", "levitat"},    {{P::Bob, T::Whole, 0.05, 1}, {P::Rock, T::Whole, 3, 1}}, P::Bob},
   {"rise",    {"ris", "rose", "ascend"},        {{P::Bob, T::Whole, 0.06, 1}}, P::Bob},
   {"sink",    {"sink", "sank", "div", "descend"}, {{P::Bob, T::Whole, 0.06, 1}, {P::Rock, T::Whole, 4, 1}}, P::Bob},
