@@ -183,6 +183,41 @@ std::string_view href_of(pugi::xml_node n) {
   return {};
 }
 
+// The user-space gradients a writer moves with their shapes, each element once: a gradient
+// this shape alone paints with (named once, not inheriting through its href without a
+// transform of its own), with its own gradientTransform. Shared ones are counted for the
+// writer's one warning (moving them for this shape would move them wrongly elsewhere).
+struct UserGradients {
+  const pugi::xml_document& doc;
+  std::optional<GradientIndex> index;  // read on the first user-space gradient
+  std::set<std::string> seen;
+  int shared = 0;
+  struct Own {
+    pugi::xml_node node;
+    Affine transform;  // its gradientTransform (identity when none)
+  };
+  std::optional<Own> claim(const Gradient& g) {
+    if (!g.user_space || g.id.empty()) return std::nullopt;
+    if (!index) index = index_gradients(doc);
+    const auto found = index->gradients.find(g.id);
+    if (found == index->gradients.end() || !seen.insert(g.id).second) return std::nullopt;
+    const pugi::xml_node gn = found->second;
+    const pugi::xml_attribute own_attr = gn.attribute("gradientTransform");
+    const auto refs = index->references.find(g.id);
+    if (refs == index->references.end() || refs->second != 1 || (own_attr.empty() && !href_of(gn).empty())) {
+      ++shared;
+      return std::nullopt;
+    }
+    Own own{gn, {}};
+    if (!own_attr.empty()) {
+      const std::optional<Affine> t = svg::parse_transform(own_attr.value());
+      if (!t) return std::nullopt;
+      own.transform = *t;
+    }
+    return own;
+  }
+};
+
 // Which way a gradient's colour changes at point x: the unit gradient of its parameter (a
 // linear gradient's vector; a radial one's direction from its centre, focal point aside), zero
 // where it has none. `to_gradient` maps x's space to gradient space.
@@ -450,9 +485,8 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
   std::snprintf(dur, sizeof dur, "%.4gs", duration);
 
   std::vector<std::string> warnings;
-  int skipped_use = 0, shared_gradients = 0;
-  std::set<std::string> animated_gradients;  // each gradient element is considered once
-  std::optional<GradientIndex> gradient_index;  // read on the first user-space gradient
+  int skipped_use = 0;
+  UserGradients user_gradients{doc, {}, {}, 0};
   // Find every element before changing any: turning a <rect> into a <path> renumbers the
   // locators of the paths after it.
   std::vector<pugi::xml_node> elements;
@@ -544,25 +578,10 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
     for (const int gi : {path.fill_gradient, path.stroke_gradient}) {
       if (gi < 0) continue;
       const Gradient& g = scene.gradients[static_cast<size_t>(gi)];
-      if (!g.user_space || g.id.empty()) continue;
-      if (!gradient_index) gradient_index = index_gradients(doc);
-      const auto found = gradient_index->gradients.find(g.id);
-      if (found == gradient_index->gradients.end() || !animated_gradients.insert(g.id).second) continue;
-      pugi::xml_node gn = found->second;
-      // Shared with another shape, inherited by another gradient, or transformed through its
-      // href: moving it for this path would move it wrongly elsewhere.
-      const pugi::xml_attribute own_attr = gn.attribute("gradientTransform");
-      const auto refs = gradient_index->references.find(g.id);
-      if (refs == gradient_index->references.end() || refs->second != 1 || (own_attr.empty() && !href_of(gn).empty())) {
-        ++shared_gradients;
-        continue;
-      }
-      Affine own;
-      if (!own_attr.empty()) {
-        const std::optional<Affine> t = svg::parse_transform(own_attr.value());
-        if (!t) continue;
-        own = *t;
-      }
+      const auto claimed = user_gradients.claim(g);
+      if (!claimed) continue;
+      pugi::xml_node gn = claimed->node;
+      const Affine& own = claimed->transform;
       const auto gparts = gradient_motion(path, g, {scene.width, scene.height}, plan, f, points, timing.keyframes, own, decimals);
       if (!gparts) continue;
       for (pugi::xml_node a = gn.first_child(); a;) {
@@ -575,8 +594,8 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
       append_transform_animations(gn, *gparts, seq, timing_attrs, decimals, "gradientTransform", true);
     }
   }
-  if (shared_gradients)
-    warnings.push_back(source.string() + ": " + std::to_string(shared_gradients) +
+  if (user_gradients.shared)
+    warnings.push_back(source.string() + ": " + std::to_string(user_gradients.shared) +
                        " gradients shared by several shapes stay where the document puts them");
   if (map && !map->order.empty()) {
     const ReorderResult r = reorder_elements(elements, scene, map->order);
@@ -698,9 +717,8 @@ std::vector<std::string> write_compact_animation_svg(const fs::path& source, con
   };
   std::vector<std::string> warnings;
   CompactStats st;
-  int skipped_use = 0, shared_gradients = 0;
-  std::set<std::string> animated_gradients;     // each gradient element is considered once
-  std::optional<GradientIndex> gradient_index;  // read on the first user-space gradient
+  int skipped_use = 0;
+  UserGradients user_gradients{doc, {}, {}, 0};
   std::vector<pugi::xml_node> elements;
   for (const Path& path : scene.paths) {
     elements.push_back(find_locator(doc, path.locator));
@@ -773,23 +791,10 @@ std::vector<std::string> write_compact_animation_svg(const fs::path& source, con
     for (const int gi : {path.fill_gradient, path.stroke_gradient}) {
       if (gi < 0) continue;
       const Gradient& gr = scene.gradients[static_cast<size_t>(gi)];
-      if (!gr.user_space || gr.id.empty()) continue;
-      if (!gradient_index) gradient_index = index_gradients(doc);
-      const auto found = gradient_index->gradients.find(gr.id);
-      if (found == gradient_index->gradients.end() || !animated_gradients.insert(gr.id).second) continue;
-      pugi::xml_node gn = found->second;
-      const pugi::xml_attribute own_attr = gn.attribute("gradientTransform");
-      const auto refs = gradient_index->references.find(gr.id);
-      if (refs == gradient_index->references.end() || refs->second != 1 || (own_attr.empty() && !href_of(gn).empty())) {
-        ++shared_gradients;
-        continue;
-      }
-      Affine own;
-      if (!own_attr.empty()) {
-        const std::optional<Affine> t = svg::parse_transform(own_attr.value());
-        if (!t) continue;
-        own = *t;
-      }
+      const auto claimed = user_gradients.claim(gr);
+      if (!claimed) continue;
+      pugi::xml_node gn = claimed->node;
+      const Affine& own = claimed->transform;
       const auto gparts =
           gradient_motion(path, gr, {scene.width, scene.height}, plan, f, points, timing.keyframes, own, kMaxDecimals);
       // Per value, in the canvas: P X P^-1 for the gradientTransform X = P^-1 D^-1 P S own (P the
@@ -859,8 +864,8 @@ std::vector<std::string> write_compact_animation_svg(const fs::path& source, con
     append_key_timing(anim, pass.times, dk_keys);
     anim.append_attribute("values") = text.c_str();
   }
-  if (shared_gradients)
-    warnings.push_back(source.string() + ": " + std::to_string(shared_gradients) +
+  if (user_gradients.shared)
+    warnings.push_back(source.string() + ": " + std::to_string(user_gradients.shared) +
                        " gradients shared by several shapes move with their shapes' groups");
   if (skipped_use)
     warnings.push_back(source.string() + ": " + std::to_string(skipped_use) +
