@@ -467,6 +467,258 @@ struct Candidate {
   }
 };
 
+
+// Pairwise relations, only between paths whose boxes are within the far distance: every
+// other pair scores -box_gap / diag (far apart), computed when needed (step 3).
+struct Link {
+  int i, j;
+  double gap, score;
+  bool strong;
+};
+
+// Backdrops: a path covering much of the canvas, at two of its edges, painted early (a hill,
+// a sky, a wave under a surfer) contains or overlaps the whole figure, and merged by those
+// links it would make the figure's limbs one part with it: its links score below every pair
+// of far-apart paths, so it joins a group last, only when there are too many.
+std::vector<char> find_backdrops(const Scene& scene, const std::vector<Box>& boxes) {
+  const size_t n = scene.paths.size();
+  std::vector<char> backdrop(n, 0);
+  for (size_t i = 0; i < n; ++i)
+    backdrop[i] = is_backdrop(boxes[i].x0, boxes[i].y0, boxes[i].x1, boxes[i].y1,
+                              static_cast<double>(i) / static_cast<double>(n), scene.width, scene.height);
+  return backdrop;
+}
+
+// The scored links of the pairs within the far distance: containment above overlap above a
+// gap, nearer first, colour as a tie-breaker.
+std::vector<Link> score_links(const std::vector<Geom>& geoms, const std::vector<Box>& boxes,
+                              const std::vector<char>& backdrop, double far, double diag,
+                              const GroupingOptions& opt) {
+  std::vector<Link> links;
+  for (const auto& [i, j] : near_box_pairs(boxes, far)) {
+    if (backdrop[static_cast<size_t>(i)] || backdrop[static_cast<size_t>(j)]) {
+      links.push_back({i, j, 0, -far / diag - 1, false});
+      continue;
+    }
+    const Geom &a = geoms[static_cast<size_t>(i)], &b = geoms[static_cast<size_t>(j)];
+    const Relation r = relate(a, b, far, false);
+    const bool contain = (r.in_ab >= opt.containment_fraction && a.area <= b.area) ||
+                         (r.in_ba >= opt.containment_fraction && b.area <= a.area);
+    const double smaller_in = a.area <= b.area ? r.in_ab : r.in_ba;
+    const double overlap = std::max(r.in_ab, r.in_ba);
+    double s;
+    if (contain) s = 4 + smaller_in;
+    else if (r.gap <= 0) s = 2 + overlap;
+    else if (r.gap <= far) s = 1 - r.gap / far;
+    else s = -r.gap / diag;  // far apart: nearest first, and only when needed
+    if (r.gap <= far) s += 0.2 * colour_similarity(a.colour, b.colour);
+    links.push_back({i, j, r.gap, s, contain || (r.gap <= 0 && overlap >= opt.strong_overlap)});
+  }
+  return links;
+}
+
+// 1. The document's own top-level groups. A group mixes far-apart parts (check_group's
+// far_mix) when its links no longer than the far distance leave it in several pieces.
+// True when they are kept as they are (`seeds` holds them); else `seeds` holds the good ones
+// and the paths of the others one by one (or nothing, then every path is a seed).
+bool seeds_from_document(const Scene& scene, const std::vector<Link>& links, double far,
+                         int min_groups, int max_groups, const GroupingOptions& opt,
+                         std::vector<std::vector<int>>& seeds) {
+  const size_t n = scene.paths.size();
+  bool multi = false;
+  const int count0 = static_cast<int>(scene.groups.size());
+  if (opt.keep_existing_groups && groups_cover(scene, multi) && multi && count0 >= min_groups) {
+    std::vector<size_t> owner(n);
+    for (size_t k = 0; k < scene.groups.size(); ++k)
+      for (int i : scene.groups[k].paths) owner[static_cast<size_t>(i)] = k;
+    UnionFind pieces(n);
+    for (const Link& l : links)
+      if (owner[static_cast<size_t>(l.i)] == owner[static_cast<size_t>(l.j)] && l.gap <= far)
+        pieces.unite(static_cast<size_t>(l.i), static_cast<size_t>(l.j));
+    std::vector<char> ok(scene.groups.size(), 1);
+    bool all_ok = true;
+    for (size_t k = 0; k < scene.groups.size(); ++k) {
+      const auto& g = scene.groups[k].paths;
+      for (int i : g)
+        if (pieces.find(static_cast<size_t>(i)) != pieces.find(static_cast<size_t>(g[0])))
+          ok[k] = 0;
+      all_ok = all_ok && ok[k];
+    }
+    if (all_ok && count0 <= max_groups) {
+      for (const Group& g : scene.groups) seeds.push_back(g.paths);
+      return true;
+    }
+    // Too many groups, or some mix far-apart parts: keep the good ones as seeds.
+    for (size_t k = 0; k < scene.groups.size(); ++k) {
+      if (ok[k]) seeds.push_back(scene.groups[k].paths);
+      else
+        for (int i : scene.groups[k].paths) seeds.push_back({i});
+    }
+    if (static_cast<int>(seeds.size()) < min_groups) seeds.clear();
+  }
+  return false;
+}
+
+// 2. Single-linkage agglomeration over the seeds (slots in seed order; a merge keeps the
+// lower slot). Cluster ties are sparse: only clusters with linked paths have one.
+struct Agglomeration {
+  std::vector<std::vector<int>> seeds;  // per slot, the paths of its cluster (empty: merged)
+  std::vector<int> slot_of;             // per path
+  std::vector<std::unordered_map<int, Tie>> ties;
+  std::vector<char> alive;
+  int count = 0;
+  std::priority_queue<Candidate> queue;
+  bool strong_only = true;
+
+  Agglomeration(std::vector<std::vector<int>> seeds_in, const std::vector<Link>& links, size_t n)
+      : seeds(std::move(seeds_in)), slot_of(n) {
+    const size_t k0 = seeds.size();
+    for (size_t k = 0; k < k0; ++k)
+      for (int i : seeds[k]) slot_of[static_cast<size_t>(i)] = static_cast<int>(k);
+    ties.resize(k0);
+    for (const Link& l : links) {
+      const int a = slot_of[static_cast<size_t>(l.i)], b = slot_of[static_cast<size_t>(l.j)];
+      if (a == b) continue;
+      for (Tie* t : {&ties[static_cast<size_t>(a)][b], &ties[static_cast<size_t>(b)][a]})
+        t->score = std::max(t->score, l.score), t->strong = t->strong || l.strong;
+    }
+    alive.assign(k0, 1);
+    count = static_cast<int>(k0);
+  }
+
+  void offer(int a, int b, const Tie& t) {
+    if (!strong_only || t.strong) queue.push({t.score, std::min(a, b), std::max(a, b)});
+  }
+  // Every tie of the live clusters, each pair once.
+  void offer_all() {
+    for (size_t a = 0; a < seeds.size(); ++a)
+      if (alive[a])
+        for (const auto& [b, t] : ties[a])
+          if (static_cast<int>(a) < b) offer(static_cast<int>(a), b, t);
+  }
+  void merge(int a, int b) {  // b into a (a < b)
+    auto &sa = seeds[static_cast<size_t>(a)], &sb = seeds[static_cast<size_t>(b)];
+    sa.insert(sa.end(), sb.begin(), sb.end());
+    sb = {};
+    alive[static_cast<size_t>(b)] = 0;
+    --count;
+    auto& ta = ties[static_cast<size_t>(a)];
+    ta.erase(b);
+    for (const auto& [c, t] : ties[static_cast<size_t>(b)]) {
+      if (c == a) continue;
+      auto& tc = ties[static_cast<size_t>(c)];
+      tc.erase(b);
+      Tie& x = ta[c];
+      x.score = std::max(x.score, t.score), x.strong = x.strong || t.strong;
+      tc[a] = x;
+      offer(a, c, x);
+    }
+    ties[static_cast<size_t>(b)] = {};
+  }
+  // The queue's best candidate that is still current, or nullptr.
+  const Candidate* best() {
+    while (!queue.empty()) {
+      const Candidate& q = queue.top();
+      if (alive[static_cast<size_t>(q.a)] && alive[static_cast<size_t>(q.b)]) {
+        const auto& ta = ties[static_cast<size_t>(q.a)];
+        const auto it = ta.find(q.b);
+        if (it != ta.end() && it->second.score == q.score && (!strong_only || it->second.strong))
+          return &q;
+      }
+      queue.pop();
+    }
+    return nullptr;
+  }
+  // Strong links first, while more than min_groups clusters remain.
+  void merge_strong(int min_groups) {
+    offer_all();
+    while (count > min_groups) {
+      const Candidate* q = best();
+      if (!q) break;
+      const Candidate c = *q;
+      queue.pop();
+      merge(c.a, c.b);
+    }
+  }
+  // Then any link, while more than max_groups remain, as long as a linked pair scores above
+  // every pair of far-apart paths (-box_gap / diag < -far / diag = far_score).
+  void merge_linked(int max_groups, double far_score) {
+    queue = {};
+    strong_only = false;
+    offer_all();
+    while (count > max_groups) {
+      const Candidate* q = best();
+      if (!q || !(q->score > far_score)) break;
+      const Candidate c = *q;
+      queue.pop();
+      merge(c.a, c.b);
+    }
+  }
+};
+
+// 3. Only far-apart clusters (or links scoring as low) are left: compare them densely, with
+// the far pairs' scores from their boxes, as many as kDenseClusters.
+std::vector<std::vector<int>> merge_far_apart(Agglomeration& ag, const std::vector<Box>& boxes,
+                                              double far, double diag, int min_groups,
+                                              int max_groups, std::string* note) {
+  const size_t n = boxes.size(), k0 = ag.seeds.size();
+  std::vector<int> live;
+  for (size_t a = 0; a < k0; ++a)
+    if (ag.alive[a]) live.push_back(static_cast<int>(a));
+  const size_t m = live.size();
+  std::vector<int> index_of(k0, -1);
+  for (size_t p = 0; p < m; ++p) index_of[static_cast<size_t>(live[p])] = static_cast<int>(p);
+  std::vector<std::vector<int>> clusters;
+  for (int a : live) clusters.push_back(std::move(ag.seeds[static_cast<size_t>(a)]));
+  if (m > kDenseClusters) {
+    int cols = 1, rows = 1;
+    auto out = grid_groups(clusters, boxes, min_groups, max_groups, cols, rows);
+    if (note)
+      *note = std::to_string(m) + " far-apart clusters (above " + std::to_string(kDenseClusters) +
+              ") grouped by a " + std::to_string(cols) + "x" + std::to_string(rows) +
+              " grid of their box centres";
+    return out;
+  }
+  std::vector<int>& slot_of = ag.slot_of;
+  for (size_t p = 0; p < m; ++p)
+    for (int i : clusters[p]) slot_of[static_cast<size_t>(i)] = static_cast<int>(p);
+  std::vector<double> cs(m * m, -std::numeric_limits<double>::infinity());
+  for (size_t p = 0; p < m; ++p)
+    for (const auto& [b, t] : ag.ties[static_cast<size_t>(live[p])])
+      cs[p * m + static_cast<size_t>(index_of[static_cast<size_t>(b)])] = t.score;
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 1; j < n; ++j) {
+      const auto p = static_cast<size_t>(slot_of[i]), q = static_cast<size_t>(slot_of[j]);
+      if (p == q) continue;
+      const double bg = box_gap(boxes[i], boxes[j]);
+      if (!(bg > far)) continue;  // a linked pair, already in cs
+      const double s = -bg / diag;
+      cs[p * m + q] = cs[q * m + p] = std::max(cs[p * m + q], s);
+    }
+  std::vector<char> on(m, 1);
+  int& count = ag.count;
+  while (count > max_groups) {
+    bool found = false;
+    double top = 0;
+    size_t ba = 0, bb = 0;
+    for (size_t a = 0; a < m; ++a) {
+      if (!on[a]) continue;
+      for (size_t b = a + 1; b < m; ++b)
+        if (on[b] && (!found || cs[a * m + b] > top))
+          found = true, top = cs[a * m + b], ba = a, bb = b;
+    }
+    if (!found) break;
+    clusters[ba].insert(clusters[ba].end(), clusters[bb].begin(), clusters[bb].end());
+    clusters[bb].clear();
+    on[bb] = 0;
+    --count;
+    for (size_t c = 0; c < m; ++c)
+      if (on[c] && c != ba)
+        cs[ba * m + c] = cs[c * m + ba] = std::max(cs[ba * m + c], cs[bb * m + c]);
+  }
+  return normalised(std::move(clusters));
+}
+
 }  // namespace
 
 GroupCheck check_group(const Scene& scene, const std::vector<int>& group,
@@ -502,220 +754,21 @@ std::vector<std::vector<int>> group_paths(const Scene& scene, const GroupingOpti
   for (const Geom& g : geoms) boxes.push_back(g.box);
   const double diag = canvas_diagonal(scene, boxes);
   const double far = opt.far_fraction * diag;
+  std::vector<Link> links = score_links(geoms, boxes, find_backdrops(scene, boxes), far, diag, opt);
 
-  // Pairwise relations, only between paths whose boxes are within the far distance: every
-  // other pair scores -box_gap / diag (far apart), computed when needed (step 3).
-  struct Link {
-    int i, j;
-    double gap, score;
-    bool strong;
-  };
-  // Backdrops: a path covering much of the canvas, at two of its edges, painted early (a hill,
-  // a sky, a wave under a surfer) contains or overlaps the whole figure, and merged by those
-  // links it would make the figure's limbs one part with it: its links score below every pair
-  // of far-apart paths, so it joins a group last, only when there are too many.
-  std::vector<char> backdrop(n, 0);
-  for (size_t i = 0; i < n; ++i)
-    backdrop[i] = is_backdrop(boxes[i].x0, boxes[i].y0, boxes[i].x1, boxes[i].y1,
-                              static_cast<double>(i) / static_cast<double>(n), scene.width, scene.height);
-  std::vector<Link> links;
-  for (const auto& [i, j] : near_box_pairs(boxes, far)) {
-    if (backdrop[static_cast<size_t>(i)] || backdrop[static_cast<size_t>(j)]) {
-      links.push_back({i, j, 0, -far / diag - 1, false});
-      continue;
-    }
-    const Geom &a = geoms[static_cast<size_t>(i)], &b = geoms[static_cast<size_t>(j)];
-    const Relation r = relate(a, b, far, false);
-    const bool contain = (r.in_ab >= opt.containment_fraction && a.area <= b.area) ||
-                         (r.in_ba >= opt.containment_fraction && b.area <= a.area);
-    const double smaller_in = a.area <= b.area ? r.in_ab : r.in_ba;
-    const double overlap = std::max(r.in_ab, r.in_ba);
-    double s;
-    if (contain) s = 4 + smaller_in;
-    else if (r.gap <= 0) s = 2 + overlap;
-    else if (r.gap <= far) s = 1 - r.gap / far;
-    else s = -r.gap / diag;  // far apart: nearest first, and only when needed
-    if (r.gap <= far) s += 0.2 * colour_similarity(a.colour, b.colour);
-    links.push_back({i, j, r.gap, s, contain || (r.gap <= 0 && overlap >= opt.strong_overlap)});
-  }
-
-  // 1. The document's own top-level groups. A group mixes far-apart parts (check_group's
-  // far_mix) when its links no longer than the far distance leave it in several pieces.
   std::vector<std::vector<int>> seeds;
-  bool multi = false;
-  const int count0 = static_cast<int>(scene.groups.size());
-  if (opt.keep_existing_groups && groups_cover(scene, multi) && multi && count0 >= min_groups) {
-    std::vector<size_t> owner(n);
-    for (size_t k = 0; k < scene.groups.size(); ++k)
-      for (int i : scene.groups[k].paths) owner[static_cast<size_t>(i)] = k;
-    UnionFind pieces(n);
-    for (const Link& l : links)
-      if (owner[static_cast<size_t>(l.i)] == owner[static_cast<size_t>(l.j)] && l.gap <= far)
-        pieces.unite(static_cast<size_t>(l.i), static_cast<size_t>(l.j));
-    std::vector<char> ok(scene.groups.size(), 1);
-    bool all_ok = true;
-    for (size_t k = 0; k < scene.groups.size(); ++k) {
-      const auto& g = scene.groups[k].paths;
-      for (int i : g)
-        if (pieces.find(static_cast<size_t>(i)) != pieces.find(static_cast<size_t>(g[0])))
-          ok[k] = 0;
-      all_ok = all_ok && ok[k];
-    }
-    if (all_ok && count0 <= max_groups) {
-      std::vector<std::vector<int>> out;
-      for (const Group& g : scene.groups) out.push_back(g.paths);
-      return normalised(std::move(out));
-    }
-    // Too many groups, or some mix far-apart parts: keep the good ones as seeds.
-    for (size_t k = 0; k < scene.groups.size(); ++k) {
-      if (ok[k]) seeds.push_back(scene.groups[k].paths);
-      else
-        for (int i : scene.groups[k].paths) seeds.push_back({i});
-    }
-    if (static_cast<int>(seeds.size()) < min_groups) seeds.clear();
-  }
+  if (seeds_from_document(scene, links, far, min_groups, max_groups, opt, seeds))
+    return normalised(std::move(seeds));
   if (seeds.empty())
     for (size_t i = 0; i < n; ++i) seeds.push_back({static_cast<int>(i)});
   seeds = normalised(std::move(seeds));
 
-  // 2. Single-linkage agglomeration over the seeds (slots in seed order; a merge keeps the
-  // lower slot). Cluster ties are sparse: only clusters with linked paths have one.
-  const size_t k0 = seeds.size();
-  std::vector<int> slot_of(n);
-  for (size_t k = 0; k < k0; ++k)
-    for (int i : seeds[k]) slot_of[static_cast<size_t>(i)] = static_cast<int>(k);
-  std::vector<std::unordered_map<int, Tie>> ties(k0);
-  for (const Link& l : links) {
-    const int a = slot_of[static_cast<size_t>(l.i)], b = slot_of[static_cast<size_t>(l.j)];
-    if (a == b) continue;
-    for (Tie* t : {&ties[static_cast<size_t>(a)][b], &ties[static_cast<size_t>(b)][a]})
-      t->score = std::max(t->score, l.score), t->strong = t->strong || l.strong;
-  }
+  Agglomeration ag(std::move(seeds), links, n);
   links = {};
-  std::vector<char> alive(k0, 1);
-  int count = static_cast<int>(k0);
-  std::priority_queue<Candidate> queue;
-  bool strong_only = true;
-  auto offer = [&](int a, int b, const Tie& t) {
-    if (!strong_only || t.strong) queue.push({t.score, std::min(a, b), std::max(a, b)});
-  };
-  auto merge = [&](int a, int b) {  // b into a (a < b)
-    auto &sa = seeds[static_cast<size_t>(a)], &sb = seeds[static_cast<size_t>(b)];
-    sa.insert(sa.end(), sb.begin(), sb.end());
-    sb = {};
-    alive[static_cast<size_t>(b)] = 0;
-    --count;
-    auto& ta = ties[static_cast<size_t>(a)];
-    ta.erase(b);
-    for (const auto& [c, t] : ties[static_cast<size_t>(b)]) {
-      if (c == a) continue;
-      auto& tc = ties[static_cast<size_t>(c)];
-      tc.erase(b);
-      Tie& x = ta[c];
-      x.score = std::max(x.score, t.score), x.strong = x.strong || t.strong;
-      tc[a] = x;
-      offer(a, c, x);
-    }
-    ties[static_cast<size_t>(b)] = {};
-  };
-  // The queue's best candidate that is still current, or nullptr.
-  auto best = [&]() -> const Candidate* {
-    while (!queue.empty()) {
-      const Candidate& q = queue.top();
-      if (alive[static_cast<size_t>(q.a)] && alive[static_cast<size_t>(q.b)]) {
-        const auto& ta = ties[static_cast<size_t>(q.a)];
-        const auto it = ta.find(q.b);
-        if (it != ta.end() && it->second.score == q.score && (!strong_only || it->second.strong))
-          return &q;
-      }
-      queue.pop();
-    }
-    return nullptr;
-  };
-  // Strong links first, while more than min_groups clusters remain.
-  for (size_t a = 0; a < k0; ++a)
-    for (const auto& [b, t] : ties[a])
-      if (static_cast<int>(a) < b) offer(static_cast<int>(a), b, t);
-  while (count > min_groups) {
-    const Candidate* q = best();
-    if (!q) break;
-    const Candidate c = *q;
-    queue.pop();
-    merge(c.a, c.b);
-  }
-  // Then any link, while more than max_groups remain, as long as a linked pair scores above
-  // every pair of far-apart paths (-box_gap / diag < -far / diag).
-  queue = {};
-  strong_only = false;
-  for (size_t a = 0; a < k0; ++a)
-    if (alive[a])
-      for (const auto& [b, t] : ties[a])
-        if (static_cast<int>(a) < b) offer(static_cast<int>(a), b, t);
-  const double far_score = -far / diag;
-  while (count > max_groups) {
-    const Candidate* q = best();
-    if (!q || !(q->score > far_score)) break;
-    const Candidate c = *q;
-    queue.pop();
-    merge(c.a, c.b);
-  }
-  if (count <= max_groups) return normalised(std::move(seeds));
-
-  // 3. Only far-apart clusters (or links scoring as low) are left: compare them densely, with
-  // the far pairs' scores from their boxes, as many as kDenseClusters.
-  std::vector<int> live;
-  for (size_t a = 0; a < k0; ++a)
-    if (alive[a]) live.push_back(static_cast<int>(a));
-  const size_t m = live.size();
-  std::vector<int> index_of(k0, -1);
-  for (size_t p = 0; p < m; ++p) index_of[static_cast<size_t>(live[p])] = static_cast<int>(p);
-  std::vector<std::vector<int>> clusters;
-  for (int a : live) clusters.push_back(std::move(seeds[static_cast<size_t>(a)]));
-  if (m > kDenseClusters) {
-    int cols = 1, rows = 1;
-    auto out = grid_groups(clusters, boxes, min_groups, max_groups, cols, rows);
-    if (note)
-      *note = std::to_string(m) + " far-apart clusters (above " + std::to_string(kDenseClusters) +
-              ") grouped by a " + std::to_string(cols) + "x" + std::to_string(rows) +
-              " grid of their box centres";
-    return out;
-  }
-  for (size_t p = 0; p < m; ++p)
-    for (int i : clusters[p]) slot_of[static_cast<size_t>(i)] = static_cast<int>(p);
-  std::vector<double> cs(m * m, -std::numeric_limits<double>::infinity());
-  for (size_t p = 0; p < m; ++p)
-    for (const auto& [b, t] : ties[static_cast<size_t>(live[p])])
-      cs[p * m + static_cast<size_t>(index_of[static_cast<size_t>(b)])] = t.score;
-  for (size_t i = 0; i < n; ++i)
-    for (size_t j = i + 1; j < n; ++j) {
-      const auto p = static_cast<size_t>(slot_of[i]), q = static_cast<size_t>(slot_of[j]);
-      if (p == q) continue;
-      const double bg = box_gap(boxes[i], boxes[j]);
-      if (!(bg > far)) continue;  // a linked pair, already in cs
-      const double s = -bg / diag;
-      cs[p * m + q] = cs[q * m + p] = std::max(cs[p * m + q], s);
-    }
-  std::vector<char> on(m, 1);
-  while (count > max_groups) {
-    bool found = false;
-    double top = 0;
-    size_t ba = 0, bb = 0;
-    for (size_t a = 0; a < m; ++a) {
-      if (!on[a]) continue;
-      for (size_t b = a + 1; b < m; ++b)
-        if (on[b] && (!found || cs[a * m + b] > top))
-          found = true, top = cs[a * m + b], ba = a, bb = b;
-    }
-    if (!found) break;
-    clusters[ba].insert(clusters[ba].end(), clusters[bb].begin(), clusters[bb].end());
-    clusters[bb].clear();
-    on[bb] = 0;
-    --count;
-    for (size_t c = 0; c < m; ++c)
-      if (on[c] && c != ba)
-        cs[ba * m + c] = cs[c * m + ba] = std::max(cs[ba * m + c], cs[bb * m + c]);
-  }
-  return normalised(std::move(clusters));
+  ag.merge_strong(min_groups);
+  ag.merge_linked(max_groups, -far / diag);
+  if (ag.count <= max_groups) return normalised(std::move(ag.seeds));
+  return merge_far_apart(ag, boxes, far, diag, min_groups, max_groups, note);
 }
 
 }  // namespace svgm
