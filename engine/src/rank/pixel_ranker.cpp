@@ -126,6 +126,304 @@ nlohmann::json Ranking::to_json() const {
   return {{"chosen", chosen}, {"reason", reason}, {"candidates", c}};
 }
 
+namespace {
+
+// Distinct palette colours (8-bit equality).
+std::vector<Rgb> distinct_palette(const std::vector<Rgba>& palette_in) {
+  std::vector<Rgb> pal;
+  std::set<std::array<long, 3>> seen;
+  for (const Rgba& c : palette_in) {
+    const std::array<long, 3> key{std::lround(c.r * 255), std::lround(c.g * 255), std::lround(c.b * 255)};
+    if (seen.insert(key).second) pal.push_back({c.r, c.g, c.b});
+  }
+  return pal;
+}
+
+// What the signals need of every frame.
+struct FrameStats {
+  std::vector<double> drift, invented, total;  // per frame
+  std::vector<bool> has_fg;
+  std::vector<std::vector<double>> area;       // per palette colour, per frame
+  std::vector<std::vector<uint8_t>> fgs;       // per frame, the foreground mask
+  FrameStats(size_t C, int K)
+      : drift(K, 0.0), invented(K, 0.0), total(K, 0.0), has_fg(K, false),
+        area(C, std::vector<double>(K, 0.0)), fgs(K) {}
+};
+
+// The frame's own background: generated videos let the white page drift to an off-white
+// tint, which is not foreground. The median of the border pixels, when it is near white.
+Rgb frame_background(const float* f, int W, int H) {
+  Rgb bg{1, 1, 1};
+  std::array<std::vector<float>, 3> border;
+  auto add = [&](int x, int y) {
+    for (int ch = 0; ch < 3; ++ch) border[ch].push_back(f[4 * (static_cast<size_t>(y) * W + x) + ch]);
+  };
+  for (int x = 0; x < W; ++x) add(x, 0), add(x, H - 1);
+  for (int y = 1; y + 1 < H; ++y) add(0, y), add(W - 1, y);
+  Rgb med;
+  for (int ch = 0; ch < 3; ++ch) {
+    auto& v = border[ch];
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    med[ch] = v[v.size() / 2];
+  }
+  if (std::min({med[0], med[1], med[2]}) >= 0.85) bg = med;
+  return bg;
+}
+
+// One frame's pixels against the palette.
+struct FramePixels {
+  std::vector<uint8_t> fg, far;     // foreground; no palette colour (nor its blend) near
+  std::vector<float> dnear, dblend;  // distance to the nearest colour, and to its white blends
+  std::vector<int32_t> label;       // the palette colour a pixel is nearest to, -1 none near
+  size_t nfg = 0;
+  explicit FramePixels(size_t P) : fg(P, 0), far(P, 0), dnear(P, 0.f), dblend(P, 0.f), label(P, -1) {}
+};
+
+FramePixels classify_pixels(const float* f, size_t P, const Rgb& bg, const std::vector<Rgb>& pal,
+                            const PixelRankOptions& o) {
+  const size_t C = pal.size();
+  const double bg_tolerance = 1 - o.white_threshold;
+  FramePixels px(P);
+  for (size_t i = 0; i < P; ++i) {
+    const Rgb p{f[4 * i], f[4 * i + 1], f[4 * i + 2]};
+    if (std::min({p[0], p[1], p[2]}) >= o.white_threshold) continue;
+    if (std::max({std::abs(p[0] - bg[0]), std::abs(p[1] - bg[1]), std::abs(p[2] - bg[2])}) < bg_tolerance) continue;
+    px.fg[i] = 1;
+    ++px.nfg;
+    double best = std::numeric_limits<double>::max(), expl = best;
+    size_t bi = 0;
+    for (size_t c = 0; c < C; ++c) {
+      const double d = dist(p, pal[c]);
+      if (d < best) best = d, bi = c;
+      expl = std::min(expl, dist_to_white_blend(p, pal[c]));
+    }
+    px.dnear[i] = static_cast<float>(best);
+    px.dblend[i] = static_cast<float>(expl);
+    if (best < o.far_distance) px.label[i] = static_cast<int32_t>(bi);
+    if (expl > o.far_distance) px.far[i] = 1;
+  }
+  return px;
+}
+
+// Areas per colour, without the pixels that are a mixture of two of their neighbours'
+// colours: where two shapes meet, anti-aliasing and the colour bleeding of 4:2:0 video
+// leave a seam of in-between colours, and among twenty-odd maximally distinct palette
+// colours one often lies near the middle of two others. A ladybird's spot (36 px at the
+// analysis size) counted 36-42 px in some frames and 90-107 px in others as it crawled
+// steadily up, the seams of its shell and head counting for it as they crossed pixel
+// rows, and every procedural candidate was flagged "continuity". A shape of the colour
+// itself, even one pixel wide, has neighbours of other colours on both sides but is no
+// mixture of them.
+void count_colour_areas(const float* f, int k, int W, int H, const Rgb& bg, const FramePixels& px,
+                        const std::vector<Rgb>& pal, FrameStats& st) {
+  const std::vector<uint8_t>& fg = px.fg;
+  const std::vector<int32_t>& label = px.label;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const size_t i = static_cast<size_t>(y) * W + x;
+      const int32_t c = label[i];
+      if (c < 0) continue;
+      const Rgb p{f[4 * i], f[4 * i + 1], f[4 * i + 2]};
+      std::array<const Rgb*, 9> around{};
+      size_t n = 0;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int u = x + dx, v = y + dy;
+          if ((dx == 0 && dy == 0) || u < 0 || v < 0 || u >= W || v >= H) continue;
+          const size_t j = static_cast<size_t>(v) * W + u;
+          const Rgb* q = !fg[j] ? &bg : label[j] >= 0 && label[j] != c ? &pal[static_cast<size_t>(label[j])] : nullptr;
+          if (q && std::find(around.begin(), around.begin() + n, q) == around.begin() + n) around[n++] = q;
+        }
+      bool mixture = false;
+      for (size_t a = 0; a < n && !mixture; ++a)
+        for (size_t b = a + 1; b < n && !mixture; ++b) mixture = dist_to_mixture(p, *around[a], *around[b]) < px.dnear[i];
+      if (!mixture) st.area[static_cast<size_t>(c)][k] += 1;
+    }
+}
+
+// Frame k's foreground, colour areas, drift and invented content, into `st`.
+void measure_frame(const TargetFrames& t, int k, size_t P, const std::vector<Rgb>& pal,
+                   const PixelRankOptions& o, FrameStats& st) {
+  const int W = t.width, H = t.height;
+  const float* f = &t.raw[P * 4 * k];
+  const Rgb bg = frame_background(f, W, H);
+  FramePixels px = classify_pixels(f, P, bg, pal, o);
+  count_colour_areas(f, k, W, H, bg, px, pal, st);
+  const size_t nfg = px.nfg;
+  st.total[k] = static_cast<double>(nfg);
+  st.has_fg[k] = nfg > 0;
+  if (nfg > 0) {
+    // Drift: the median over the foreground of each pixel's distance to the palette; a pixel
+    // on an edge (not interior) may also be a palette colour's blend with white (anti-
+    // aliasing, and the colour bleeding of 4:2:0 video). Not the interior alone: a line
+    // drawing's strokes are one or two pixels wide at the analysis size, so its few interior
+    // pixels are where strokes cross (mixtures of two colours), and a clean render of it
+    // measured 0.16 from its palette.
+    const std::vector<uint8_t> interior = core_of(px.fg, W, H);
+    std::vector<float> d;
+    for (size_t i = 0; i < P; ++i)
+      if (px.fg[i]) d.push_back(std::min(interior[i] ? px.dnear[i] : std::min(px.dnear[i], px.dblend[i]), static_cast<float>(o.far_distance)));
+    std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
+    st.drift[k] = d[d.size() / 2];
+    st.invented[k] = static_cast<double>(blob_area(px.far, core_of(px.far, W, H), W, H, 4)) / nfg;
+  }
+  st.fgs[k] = std::move(px.fg);
+}
+
+// Colour drift.
+RankSignal colour_drift_signal(const FrameStats& st, int K) {
+  RankSignal r;
+  std::vector<int> ks;
+  for (int k = 0; k < K; ++k)
+    if (st.has_fg[k]) ks.push_back(k);
+  if (ks.empty()) {
+    r = {0, "no foreground"};
+  } else {
+    const std::vector<double>& drift = st.drift;
+    double mean = 0;
+    for (int k : ks) mean += drift[k];
+    mean /= static_cast<double>(ks.size());
+    const double growth = drift[ks.back()] - drift[ks.front()];
+    r.value = clamp01(std::max((mean - 0.02) / 0.1, growth / 0.08));
+    r.reason = fmt("foreground is %.3f from the palette (median, mean over frames), %.3f "
+                   "in the first frame and %.3f in the last", mean, drift[ks.front()], drift[ks.back()]);
+  }
+  return r;
+}
+
+// Invented content.
+RankSignal invented_content_signal(const FrameStats& st) {
+  RankSignal r;
+  const auto it = std::max_element(st.invented.begin(), st.invented.end());
+  const double f = *it;
+  r.value = clamp01((f - 0.005) / 0.03);
+  r.reason =
+      f > 0 ? fmt("off-palette blobs cover up to %.1f%% of the foreground (frame %.0f)", 100 * f,
+                  static_cast<double>(it - st.invented.begin()))
+            : "no off-palette blobs";
+  return r;
+}
+
+// Continuity per palette colour; `appear_vanish` receives the larger of its appearing and
+// vanishing parts (which explain out-of-plane area changes).
+RankSignal continuity_signal(const FrameStats& st, const std::vector<Rgb>& pal, double mean_fg,
+                             int K, double& appear_vanish) {
+  RankSignal r;
+  const size_t C = pal.size();
+  const double significant = std::max(8.0, 0.02 * mean_fg);
+  double vanish = 0, appear = 0, jump = 0;
+  std::string vr, ar, jr;
+  for (size_t c = 0; c < C; ++c) {
+    const auto& a = st.area[c];
+    const double a0 = a[0], amin = *std::min_element(a.begin(), a.end()),
+                 amax = *std::max_element(a.begin(), a.end());
+    if (a0 >= significant) {
+      const double v = clamp01((0.3 - amin / a0) / 0.25);
+      if (vr.empty() || v > vanish) {
+        vanish = std::max(vanish, v);
+        const int kmin = static_cast<int>(std::min_element(a.begin(), a.end()) - a.begin());
+        vr = hex(pal[c]) + fmt(" falls from %.0f px to %.0f px (frame %.0f)", a0, amin, kmin);
+      }
+    }
+    if (amax >= significant) {
+      const double v = clamp01((0.3 - a0 / amax) / 0.25);
+      if (v > appear) {
+        appear = v;
+        ar = hex(pal[c]) + fmt(" appears: %.0f px in frame 0, up to %.0f px later", a0, amax);
+      }
+    }
+    for (int k = 0; k + 1 < K; ++k) {
+      const double hi = std::max(a[k], a[k + 1]);
+      if (hi < significant) continue;
+      const double j = std::abs(a[k + 1] - a[k]) / hi;
+      if (j > jump) {
+        jump = j;
+        jr = hex(pal[c]) + fmt(" jumps from %.0f px to %.0f px (frame %.0f)", a[k], a[k + 1], k + 1);
+      }
+    }
+  }
+  const double jv = clamp01((jump - 0.35) / 0.4);
+  appear_vanish = std::max(vanish, appear);
+  r.value = std::max(appear_vanish, jv);
+  if (r.value <= 0)
+    r.reason = fmt("palette colours keep their areas (largest frame-to-frame change %.0f%%)", 100 * jump);
+  else if (vanish >= appear && vanish >= jv)
+    r.reason = "a colour vanishes: " + vr;
+  else if (appear >= jv)
+    r.reason = "a colour appears suddenly: " + ar;
+  else
+    r.reason = "a colour's area changes suddenly: " + jr;
+  return r;
+}
+
+// Out-of-plane motion: total foreground area changes that no appearing/vanishing explains.
+RankSignal out_of_plane_signal(const FrameStats& st, double mean_fg, int K, double appear_vanish) {
+  RankSignal r;
+  double var = 0;
+  for (double a : st.total) var += (a - mean_fg) * (a - mean_fg);
+  const double rel = mean_fg > 0 ? std::sqrt(var / K) / mean_fg : 0.0;
+  r.value = clamp01((rel - 0.08) / 0.22) * (1 - appear_vanish);
+  r.reason = fmt("foreground area varies by %.1f%% (relative std)", 100 * rel) +
+             (appear_vanish > 0 && rel > 0.08 ? ", explained by colours appearing/vanishing"
+                                              : "");
+  return r;
+}
+
+// Motion amount; `motion_defect` receives the defect's name when there is one.
+RankSignal motion_signal(const TargetFrames& t, const FrameStats& st, size_t P, int K,
+                         std::string& motion_defect) {
+  RankSignal r;
+  const std::vector<std::vector<uint8_t>>& fgs = st.fgs;
+  // Over the pixels foreground in frame ka or kb: the mean absolute colour difference, and the
+  // fraction of them whose colour changed by more than 0.15 (moved, not codec noise).
+  auto frame_diff = [&](int ka, int kb, double* moved) -> double {
+    const float* a = &t.raw[P * 4 * ka];
+    const float* b = &t.raw[P * 4 * kb];
+    double d = 0;
+    size_t n = 0, changed = 0;
+    for (size_t i = 0; i < P; ++i) {
+      if (!fgs[ka][i] && !fgs[kb][i]) continue;
+      ++n;
+      const double di = (std::abs(a[4 * i] - b[4 * i]) + std::abs(a[4 * i + 1] - b[4 * i + 1]) +
+                         std::abs(a[4 * i + 2] - b[4 * i + 2])) / 3.0;
+      d += di;
+      changed += di > 0.15;
+    }
+    if (moved) *moved = n > 0 ? static_cast<double>(changed) / static_cast<double>(n) : 0.0;
+    return n > 0 ? d / static_cast<double>(n) : 0.0;
+  };
+  double sum = 0;
+  int pairs = 0;
+  for (int k = 0; k + 1 < K; ++k) sum += frame_diff(k, k + 1, nullptr), ++pairs;
+  // Range of motion: the largest share of the foreground that has moved away from the first
+  // frame. Consecutive frames of a smooth 24 fps wave differ by a few thousandths and a waving
+  // hand is a few percent of a figure, so neither a consecutive nor a whole-figure mean tells
+  // a small real motion from a still clip; the share of pixels that really changed does.
+  double range = 0;
+  for (int k = 1; k < K; ++k) {
+    double moved = 0;
+    frame_diff(0, k, &moved);
+    range = std::max(range, moved);
+  }
+  const double m = pairs > 0 ? sum / pairs : 0.0;
+  if (K < 2) {
+    r = {1, "a single frame"};
+    motion_defect = "no motion";
+  } else if (range < 0.005) {
+    r = {clamp01((0.005 - range) / 0.004),
+         fmt("nearly static: at most %.2f%% of the foreground moves away from the first frame", 100 * range)};
+    motion_defect = "no motion";
+  } else if (m > 0.25) {
+    r = {clamp01((m - 0.25) / 0.3), fmt("large, chaotic motion: mean frame difference %.3f on the foreground", m)};
+    motion_defect = "chaotic motion";
+  } else {
+    r = {0, fmt("calm motion: mean frame difference %.4f, up to %.1f%% of the foreground moved", m, 100 * range)};
+  }
+  return r;
+}
+
+}  // namespace
+
 CandidateScore score_candidate(const TargetFrames& t, const std::vector<Rgba>& palette_in,
                                const PixelRankOptions& o) {
   const int W = t.width, H = t.height, K = t.keyframes;
@@ -134,251 +432,21 @@ CandidateScore score_candidate(const TargetFrames& t, const std::vector<Rgba>& p
   if (t.raw.size() != P * K * 4)
     throw Error("pixel ranker: frames hold " + std::to_string(t.raw.size()) + " floats, not " +
                 std::to_string(P * K * 4));
-  // Distinct palette colours (8-bit equality).
-  std::vector<Rgb> pal;
-  {
-    std::set<std::array<long, 3>> seen;
-    for (const Rgba& c : palette_in) {
-      const std::array<long, 3> key{std::lround(c.r * 255), std::lround(c.g * 255), std::lround(c.b * 255)};
-      if (seen.insert(key).second) pal.push_back({c.r, c.g, c.b});
-    }
-  }
+  const std::vector<Rgb> pal = distinct_palette(palette_in);
   if (pal.empty()) throw Error("pixel ranker: the palette has no colours");
-  const size_t C = pal.size();
 
-  std::vector<double> drift(K, 0.0), invented(K, 0.0), total(K, 0.0);
-  std::vector<bool> has_fg(K, false);
-  std::vector<std::vector<double>> area(C, std::vector<double>(K, 0.0));
-  std::vector<std::vector<uint8_t>> fgs(K);
-  for (int k = 0; k < K; ++k) {
-    const float* f = &t.raw[P * 4 * k];
-    // The frame's own background: generated videos let the white page drift to an off-white
-    // tint, which is not foreground. The median of the border pixels, when it is near white.
-    Rgb bg{1, 1, 1};
-    {
-      std::array<std::vector<float>, 3> border;
-      auto add = [&](int x, int y) {
-        for (int ch = 0; ch < 3; ++ch) border[ch].push_back(f[4 * (static_cast<size_t>(y) * W + x) + ch]);
-      };
-      for (int x = 0; x < W; ++x) add(x, 0), add(x, H - 1);
-      for (int y = 1; y + 1 < H; ++y) add(0, y), add(W - 1, y);
-      Rgb med;
-      for (int ch = 0; ch < 3; ++ch) {
-        auto& v = border[ch];
-        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-        med[ch] = v[v.size() / 2];
-      }
-      if (std::min({med[0], med[1], med[2]}) >= 0.85) bg = med;
-    }
-    const double bg_tolerance = 1 - o.white_threshold;
-    std::vector<uint8_t> fg(P, 0), far(P, 0);
-    std::vector<float> dnear(P, 0.f), dblend(P, 0.f);
-    std::vector<int32_t> label(P, -1);  // the palette colour a pixel is nearest to, -1 none near
-    size_t nfg = 0;
-    for (size_t i = 0; i < P; ++i) {
-      const Rgb p{f[4 * i], f[4 * i + 1], f[4 * i + 2]};
-      if (std::min({p[0], p[1], p[2]}) >= o.white_threshold) continue;
-      if (std::max({std::abs(p[0] - bg[0]), std::abs(p[1] - bg[1]), std::abs(p[2] - bg[2])}) < bg_tolerance) continue;
-      fg[i] = 1;
-      ++nfg;
-      double best = std::numeric_limits<double>::max(), expl = best;
-      size_t bi = 0;
-      for (size_t c = 0; c < C; ++c) {
-        const double d = dist(p, pal[c]);
-        if (d < best) best = d, bi = c;
-        expl = std::min(expl, dist_to_white_blend(p, pal[c]));
-      }
-      dnear[i] = static_cast<float>(best);
-      dblend[i] = static_cast<float>(expl);
-      if (best < o.far_distance) label[i] = static_cast<int32_t>(bi);
-      if (expl > o.far_distance) far[i] = 1;
-    }
-    // Areas per colour, without the pixels that are a mixture of two of their neighbours'
-    // colours: where two shapes meet, anti-aliasing and the colour bleeding of 4:2:0 video
-    // leave a seam of in-between colours, and among twenty-odd maximally distinct palette
-    // colours one often lies near the middle of two others. A ladybird's spot (36 px at the
-    // analysis size) counted 36-42 px in some frames and 90-107 px in others as it crawled
-    // steadily up, the seams of its shell and head counting for it as they crossed pixel
-    // rows, and every procedural candidate was flagged "continuity". A shape of the colour
-    // itself, even one pixel wide, has neighbours of other colours on both sides but is no
-    // mixture of them.
-    for (int y = 0; y < H; ++y)
-      for (int x = 0; x < W; ++x) {
-        const size_t i = static_cast<size_t>(y) * W + x;
-        const int32_t c = label[i];
-        if (c < 0) continue;
-        const Rgb p{f[4 * i], f[4 * i + 1], f[4 * i + 2]};
-        std::array<const Rgb*, 9> around{};
-        size_t n = 0;
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx) {
-            const int u = x + dx, v = y + dy;
-            if ((dx == 0 && dy == 0) || u < 0 || v < 0 || u >= W || v >= H) continue;
-            const size_t j = static_cast<size_t>(v) * W + u;
-            const Rgb* q = !fg[j] ? &bg : label[j] >= 0 && label[j] != c ? &pal[static_cast<size_t>(label[j])] : nullptr;
-            if (q && std::find(around.begin(), around.begin() + n, q) == around.begin() + n) around[n++] = q;
-          }
-        bool mixture = false;
-        for (size_t a = 0; a < n && !mixture; ++a)
-          for (size_t b = a + 1; b < n && !mixture; ++b) mixture = dist_to_mixture(p, *around[a], *around[b]) < dnear[i];
-        if (!mixture) area[static_cast<size_t>(c)][k] += 1;
-      }
-    total[k] = static_cast<double>(nfg);
-    has_fg[k] = nfg > 0;
-    if (nfg > 0) {
-      // Drift: the median over the foreground of each pixel's distance to the palette; a pixel
-      // on an edge (not interior) may also be a palette colour's blend with white (anti-
-      // aliasing, and the colour bleeding of 4:2:0 video). Not the interior alone: a line
-      // drawing's strokes are one or two pixels wide at the analysis size, so its few interior
-      // pixels are where strokes cross (mixtures of two colours), and a clean render of it
-      // measured 0.16 from its palette.
-      const std::vector<uint8_t> interior = core_of(fg, W, H);
-      std::vector<float> d;
-      for (size_t i = 0; i < P; ++i)
-        if (fg[i]) d.push_back(std::min(interior[i] ? dnear[i] : std::min(dnear[i], dblend[i]), static_cast<float>(o.far_distance)));
-      std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
-      drift[k] = d[d.size() / 2];
-      invented[k] = static_cast<double>(blob_area(far, core_of(far, W, H), W, H, 4)) / nfg;
-    }
-    fgs[k] = std::move(fg);
-  }
+  FrameStats st(pal.size(), K);
+  for (int k = 0; k < K; ++k) measure_frame(t, k, P, pal, o, st);
 
   CandidateScore s;
-  const double mean_fg = std::accumulate(total.begin(), total.end(), 0.0) / K;
-
-  // Colour drift.
-  {
-    std::vector<int> ks;
-    for (int k = 0; k < K; ++k)
-      if (has_fg[k]) ks.push_back(k);
-    if (ks.empty()) {
-      s.colour_drift = {0, "no foreground"};
-    } else {
-      double mean = 0;
-      for (int k : ks) mean += drift[k];
-      mean /= static_cast<double>(ks.size());
-      const double growth = drift[ks.back()] - drift[ks.front()];
-      s.colour_drift.value = clamp01(std::max((mean - 0.02) / 0.1, growth / 0.08));
-      s.colour_drift.reason = fmt("foreground is %.3f from the palette (median, mean over frames), %.3f "
-                                  "in the first frame and %.3f in the last", mean, drift[ks.front()], drift[ks.back()]);
-    }
-  }
-  // Invented content.
-  {
-    const auto it = std::max_element(invented.begin(), invented.end());
-    const double f = *it;
-    s.invented_content.value = clamp01((f - 0.005) / 0.03);
-    s.invented_content.reason =
-        f > 0 ? fmt("off-palette blobs cover up to %.1f%% of the foreground (frame %.0f)", 100 * f,
-                    static_cast<double>(it - invented.begin()))
-              : "no off-palette blobs";
-  }
-  // Continuity per palette colour.
+  const double mean_fg = std::accumulate(st.total.begin(), st.total.end(), 0.0) / K;
+  s.colour_drift = colour_drift_signal(st, K);
+  s.invented_content = invented_content_signal(st);
   double appear_vanish = 0;
-  {
-    const double significant = std::max(8.0, 0.02 * mean_fg);
-    double vanish = 0, appear = 0, jump = 0;
-    std::string vr, ar, jr;
-    for (size_t c = 0; c < C; ++c) {
-      const auto& a = area[c];
-      const double a0 = a[0], amin = *std::min_element(a.begin(), a.end()),
-                   amax = *std::max_element(a.begin(), a.end());
-      if (a0 >= significant) {
-        const double v = clamp01((0.3 - amin / a0) / 0.25);
-        if (vr.empty() || v > vanish) {
-          vanish = std::max(vanish, v);
-          const int kmin = static_cast<int>(std::min_element(a.begin(), a.end()) - a.begin());
-          vr = hex(pal[c]) + fmt(" falls from %.0f px to %.0f px (frame %.0f)", a0, amin, kmin);
-        }
-      }
-      if (amax >= significant) {
-        const double v = clamp01((0.3 - a0 / amax) / 0.25);
-        if (v > appear) {
-          appear = v;
-          ar = hex(pal[c]) + fmt(" appears: %.0f px in frame 0, up to %.0f px later", a0, amax);
-        }
-      }
-      for (int k = 0; k + 1 < K; ++k) {
-        const double hi = std::max(a[k], a[k + 1]);
-        if (hi < significant) continue;
-        const double j = std::abs(a[k + 1] - a[k]) / hi;
-        if (j > jump) {
-          jump = j;
-          jr = hex(pal[c]) + fmt(" jumps from %.0f px to %.0f px (frame %.0f)", a[k], a[k + 1], k + 1);
-        }
-      }
-    }
-    const double jv = clamp01((jump - 0.35) / 0.4);
-    appear_vanish = std::max(vanish, appear);
-    s.continuity.value = std::max(appear_vanish, jv);
-    if (s.continuity.value <= 0)
-      s.continuity.reason = fmt("palette colours keep their areas (largest frame-to-frame change %.0f%%)", 100 * jump);
-    else if (vanish >= appear && vanish >= jv)
-      s.continuity.reason = "a colour vanishes: " + vr;
-    else if (appear >= jv)
-      s.continuity.reason = "a colour appears suddenly: " + ar;
-    else
-      s.continuity.reason = "a colour's area changes suddenly: " + jr;
-  }
-  // Out-of-plane motion: total foreground area changes that no appearing/vanishing explains.
-  {
-    double var = 0;
-    for (double a : total) var += (a - mean_fg) * (a - mean_fg);
-    const double rel = mean_fg > 0 ? std::sqrt(var / K) / mean_fg : 0.0;
-    s.out_of_plane.value = clamp01((rel - 0.08) / 0.22) * (1 - appear_vanish);
-    s.out_of_plane.reason = fmt("foreground area varies by %.1f%% (relative std)", 100 * rel) +
-                            (appear_vanish > 0 && rel > 0.08 ? ", explained by colours appearing/vanishing"
-                                                             : "");
-  }
-  // Motion amount.
+  s.continuity = continuity_signal(st, pal, mean_fg, K, appear_vanish);
+  s.out_of_plane = out_of_plane_signal(st, mean_fg, K, appear_vanish);
   std::string motion_defect;
-  {
-    // Over the pixels foreground in frame ka or kb: the mean absolute colour difference, and the
-    // fraction of them whose colour changed by more than 0.15 (moved, not codec noise).
-    auto frame_diff = [&](int ka, int kb, double* moved) -> double {
-      const float* a = &t.raw[P * 4 * ka];
-      const float* b = &t.raw[P * 4 * kb];
-      double d = 0;
-      size_t n = 0, changed = 0;
-      for (size_t i = 0; i < P; ++i) {
-        if (!fgs[ka][i] && !fgs[kb][i]) continue;
-        ++n;
-        const double di = (std::abs(a[4 * i] - b[4 * i]) + std::abs(a[4 * i + 1] - b[4 * i + 1]) +
-                           std::abs(a[4 * i + 2] - b[4 * i + 2])) / 3.0;
-        d += di;
-        changed += di > 0.15;
-      }
-      if (moved) *moved = n > 0 ? static_cast<double>(changed) / static_cast<double>(n) : 0.0;
-      return n > 0 ? d / static_cast<double>(n) : 0.0;
-    };
-    double sum = 0;
-    int pairs = 0;
-    for (int k = 0; k + 1 < K; ++k) sum += frame_diff(k, k + 1, nullptr), ++pairs;
-    // Range of motion: the largest share of the foreground that has moved away from the first
-    // frame. Consecutive frames of a smooth 24 fps wave differ by a few thousandths and a waving
-    // hand is a few percent of a figure, so neither a consecutive nor a whole-figure mean tells
-    // a small real motion from a still clip; the share of pixels that really changed does.
-    double range = 0;
-    for (int k = 1; k < K; ++k) {
-      double moved = 0;
-      frame_diff(0, k, &moved);
-      range = std::max(range, moved);
-    }
-    const double m = pairs > 0 ? sum / pairs : 0.0;
-    if (K < 2) {
-      s.motion = {1, "a single frame"};
-      motion_defect = "no motion";
-    } else if (range < 0.005) {
-      s.motion = {clamp01((0.005 - range) / 0.004),
-                  fmt("nearly static: at most %.2f%% of the foreground moves away from the first frame", 100 * range)};
-      motion_defect = "no motion";
-    } else if (m > 0.25) {
-      s.motion = {clamp01((m - 0.25) / 0.3), fmt("large, chaotic motion: mean frame difference %.3f on the foreground", m)};
-      motion_defect = "chaotic motion";
-    } else {
-      s.motion = {0, fmt("calm motion: mean frame difference %.4f, up to %.1f%% of the foreground moved", m, 100 * range)};
-    }
-  }
+  s.motion = motion_signal(t, st, P, K, motion_defect);
 
   const RankSignal* sig[5] = {&s.colour_drift, &s.invented_content, &s.continuity, &s.out_of_plane, &s.motion};
   const char* names[5] = {"colour drift", "invented content", "continuity", "out-of-plane motion", nullptr};
