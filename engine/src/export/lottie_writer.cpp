@@ -19,6 +19,37 @@ namespace svgm {
 
 using namespace lottie;
 
+namespace {
+
+// The shape layers of lottie_animation, one path at a time, and what they share (named as
+// lottie_animation names them).
+struct ShapeLayers {
+  const Scene& scene;
+  const RasterPlan& plan;
+  const std::vector<double>& points;
+  const LottieOptions& options;
+  const ExportMap* map;
+  const AnimationPass& pass;
+  const double frames, tol;
+  const int static_decimals;
+  const size_t P;
+  const std::vector<int>& order;
+  const std::vector<int>& group_ind;
+  const std::vector<Scene>& samples;
+  const std::vector<int>& sample_of_value;
+  const std::vector<double>& value_frames;
+  JsonText& j;
+  std::vector<std::string>& approximate;
+  std::vector<std::pair<size_t, size_t>>& layer_span;
+  std::vector<double>& rest;
+  bool& first_layer;
+
+  // One path's shape layer, compact when asked and possible; returns whether it was compact.
+  bool write_layer(std::vector<int>::const_reverse_iterator it, bool try_compact);
+};
+
+}  // namespace
+
 LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
                                 const std::vector<double>& points, const AnimationTiming& timing,
                                 const LottieOptions& options, const ExportMap* map) {
@@ -83,118 +114,12 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
   std::vector<std::pair<size_t, size_t>> layer_span(P), null_span(scene.groups.size());
   std::vector<double> rest;  // a static path's own points, in the layout of the fitted ones
   bool first_layer = true;
-  // One path's shape layer, compact when asked and possible; returns whether it was compact.
-  auto write_layer = [&](std::vector<int>::const_reverse_iterator it, bool try_compact) {
-    const size_t p = static_cast<size_t>(*it);
-    const Path& path = scene.paths[p];
-    const int f = map ? map->fitted_of[p] : static_cast<int>(p);
-    // Shapes drawn through <use> stay static, as in animation.svg (shared definitions).
-    const bool through_use = path.locator.rfind("/use[") != std::string::npos &&
-                             path.locator.find('/', path.locator.rfind("/use[") + 1) == std::string::npos;
-    const bool animated = f >= 0 && !through_use && plan.path_cp_count[static_cast<size_t>(f)] > 0 && pass.seq.size() > 1;
-    const size_t first = f >= 0 ? plan.path_cp_first[static_cast<size_t>(f)] : 0;
-    rest.clear();
-    for (const Subpath& sp : path.subpaths)
-      for (const Vec2& q : sp.points) {
-        rest.push_back(q.x);
-        rest.push_back(q.y);
-      }
-    // Compact: the group's transform carries the path's affine motion, the shape keyframed only
-    // for its residual, at the kept keys (lottie_motion.h).
-    const size_t count = f >= 0 ? static_cast<size_t>(plan.path_cp_count[static_cast<size_t>(f)]) : 0;
-    const bool compact = try_compact && animated && rest.size() == 2 * count;
-    CompactPathMotion motion;
-    if (compact) {
-      std::vector<const double*> values;
-      for (int k : pass.seq) values.push_back(&points[(static_cast<size_t>(k) * plan.n_cp + first) * 2]);
-      motion = compact_path_motion(rest, values, pass.times, frames, tol, options.decimals);
-      if (motion.residual) j.set_decimals(motion.shape_decimals);
-    }
-    const bool shape_animated = compact ? motion.residual : animated;
-    std::vector<size_t> shape_keys;
-    if (shape_animated && compact) shape_keys = motion.shape_keys.keys;
-    else if (shape_animated)
-      for (size_t i = 0; i < pass.seq.size(); ++i) shape_keys.push_back(i);
-    // The points of value `i` of the pass for this path (in the moving group's frame).
-    auto value_points = [&](size_t i) {
-      if (!shape_animated) return static_cast<const double*>(rest.data());
-      return compact ? &motion.local[i * 2 * count] : &points[(static_cast<size_t>(pass.seq[i]) * plan.n_cp + first) * 2];
-    };
-
-    if (!first_layer) j.raw(",");
-    first_layer = false;
-    layer_span[p].first = j.text().size();
-    j.raw("{\"ddd\":0,\"ind\":").num(static_cast<double>(P - (it - order.rbegin())), 1);
-    j.raw(",\"ty\":4,\"nm\":").str(path.id).raw(",\"sr\":1,");
-    if (path.group >= 0 && static_cast<size_t>(path.group) < scene.groups.size() && group_ind[static_cast<size_t>(path.group)])
-      j.raw("\"parent\":").num(group_ind[static_cast<size_t>(path.group)], 1).raw(",");
-    // Inside a compositing layer the layer carries the group opacity (lottie_compositing.h).
-    j.raw("\"ks\":{\"o\":").fixed((path.layer >= 0 ? path.local_opacity : path.opacity) * 100.0, kOpacityScale).raw(",").raw(kLayerTransformAfterOpacity);
-    j.raw(",\"ao\":0,\"shapes\":[{\"ty\":\"gr\",\"nm\":").str(path.id).raw(",\"it\":[");
-    const size_t shapes_begin = j.text().size();
-    // Compact, moving: the shapes in a group of their own carrying the motion; the paints after
-    // it apply to them in the canvas' frame (gradients where animation.svg draws them, stroke
-    // widths unscaled, as the full export).
-    if (motion.moves) j.raw("{\"ty\":\"gr\",\"nm\":\"motion\",\"it\":[");
-    size_t cp = 0;  // index of the subpath's first point within the path
-    bool first_item = true;
-    for (const Subpath& sp : path.subpaths) {
-      const size_t n_points = sp.points.size();
-      if (n_points < 4) {  // a lone point has no outline (only caps, which Lottie has not)
-        cp += n_points;
-        continue;
-      }
-      const size_t n = (n_points - 1) / 3;
-      bool merge = sp.closed && n >= 2;
-      for (size_t i = 0; merge && i < (shape_animated ? pass.seq.size() : 1); ++i) {
-        const double* q = value_points(i) + 2 * cp;
-        merge = std::fabs(q[6 * n] - q[0]) <= kSamePoint && std::fabs(q[6 * n + 1] - q[1]) <= kSamePoint;
-      }
-      if (!first_item) j.raw(",");
-      first_item = false;
-      j.raw("{\"ty\":\"sh\",\"ks\":");
-      if (!shape_animated) {
-        j.raw("{\"a\":0,\"k\":");
-        write_bezier(j, value_points(0) + 2 * cp, n_points, sp.closed, merge);
-        j.raw("}}");
-      } else {
-        j.raw("{\"a\":1,\"k\":[");
-        for (size_t k = 0; k < shape_keys.size(); ++k) {
-          const size_t i = shape_keys[k];
-          if (k) j.raw(",");
-          j.raw("{\"t\":").num(pass.times[i] * frames, kFrameScale).raw(",\"s\":[");
-          write_bezier(j, value_points(i) + 2 * cp, n_points, sp.closed, merge);
-          j.raw("]");
-          // Linear in time as SMIL's calcMode="linear", or the compact export's easing.
-          if (k + 1 < shape_keys.size()) write_easing(j, compact ? motion.shape_keys.easing[k] : Easing{});
-          j.raw("}");
-        }
-        j.raw("]}}");
-      }
-      cp += n_points;
-    }
-    if (motion.moves) j.raw(first_item ? "" : ",").raw(motion.transform).raw("]}");
-    // Stroke and fill, their gradients following the shape (lottie_paint.h).
-    PaintInputs paint;
-    for (size_t i = 0; i < (animated ? pass.seq.size() : 1); ++i)
-      paint.points.push_back(motion.moves ? &points[(static_cast<size_t>(pass.seq[i]) * plan.n_cp + first) * 2] : value_points(i));
-    const std::vector<Scene>& paint_samples = animated ? samples : std::vector<Scene>{};
-    paint.fill = gradient_track(scene, paint_samples, p, false, sample_of_value, value_frames);
-    paint.stroke = gradient_track(scene, paint_samples, p, true, sample_of_value, value_frames);
-    // Compact: gradients at their fewest keys.
-    if (compact) paint.fill.tolerance_px = paint.stroke.tolerance_px = tol;
-    j.set_decimals(static_decimals);  // widths, dashes and gradients at the static decimals
-    write_paint_items(j, shapes_begin, path, paint, approximate);
-    first_item = j.text().size() == shapes_begin;
-    j.raw(first_item ? "" : ",").raw(kGroupTransform).raw("]}]");
-    j.raw(",\"ip\":0,\"op\":").num(frames, kFrameScale).raw(",\"st\":0,\"bm\":0}");
-    layer_span[p].second = j.text().size();
-    return compact;
-  };
+  ShapeLayers shape_layers{scene, plan, points, options, map, pass, frames, tol, static_decimals, P, order, group_ind,
+                           samples, sample_of_value, value_frames, j, approximate, layer_span, rest, first_layer};
   for (auto it = order.crbegin(); it != order.crend(); ++it) {  // Lottie lists the top layer first
     const size_t at = j.text().size(), approximate_at = approximate.size();
     const bool was_first = first_layer;
-    if (!write_layer(it, options.compact)) continue;
+    if (!shape_layers.write_layer(it, options.compact)) continue;
     // A path the fit deforms beyond the tolerance at nearly every value (its jitter above it) is
     // written per value when that is shorter than its compact form.
     const std::string compact_text = j.text().substr(at);
@@ -202,7 +127,7 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
     j.text().resize(at);
     approximate.resize(approximate_at);
     first_layer = was_first;
-    write_layer(it, false);
+    shape_layers.write_layer(it, false);
     if (j.text().size() - at <= compact_text.size()) continue;
     j.text().resize(at);
     j.text() += compact_text;
@@ -242,6 +167,118 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
   if (const std::string w = cannot_express_line(scene, approximate); !w.empty()) doc.warnings.push_back(w);
   return doc;
 }
+
+namespace {
+
+bool ShapeLayers::write_layer(std::vector<int>::const_reverse_iterator it, bool try_compact) {
+  const size_t p = static_cast<size_t>(*it);
+  const Path& path = scene.paths[p];
+  const int f = map ? map->fitted_of[p] : static_cast<int>(p);
+  // Shapes drawn through <use> stay static, as in animation.svg (shared definitions).
+  const bool through_use = path.locator.rfind("/use[") != std::string::npos &&
+                           path.locator.find('/', path.locator.rfind("/use[") + 1) == std::string::npos;
+  const bool animated = f >= 0 && !through_use && plan.path_cp_count[static_cast<size_t>(f)] > 0 && pass.seq.size() > 1;
+  const size_t first = f >= 0 ? plan.path_cp_first[static_cast<size_t>(f)] : 0;
+  rest.clear();
+  for (const Subpath& sp : path.subpaths)
+    for (const Vec2& q : sp.points) {
+      rest.push_back(q.x);
+      rest.push_back(q.y);
+    }
+  // Compact: the group's transform carries the path's affine motion, the shape keyframed only
+  // for its residual, at the kept keys (lottie_motion.h).
+  const size_t count = f >= 0 ? static_cast<size_t>(plan.path_cp_count[static_cast<size_t>(f)]) : 0;
+  const bool compact = try_compact && animated && rest.size() == 2 * count;
+  CompactPathMotion motion;
+  if (compact) {
+    std::vector<const double*> values;
+    for (int k : pass.seq) values.push_back(&points[(static_cast<size_t>(k) * plan.n_cp + first) * 2]);
+    motion = compact_path_motion(rest, values, pass.times, frames, tol, options.decimals);
+    if (motion.residual) j.set_decimals(motion.shape_decimals);
+  }
+  const bool shape_animated = compact ? motion.residual : animated;
+  std::vector<size_t> shape_keys;
+  if (shape_animated && compact) shape_keys = motion.shape_keys.keys;
+  else if (shape_animated)
+    for (size_t i = 0; i < pass.seq.size(); ++i) shape_keys.push_back(i);
+  // The points of value `i` of the pass for this path (in the moving group's frame).
+  auto value_points = [&](size_t i) {
+    if (!shape_animated) return static_cast<const double*>(rest.data());
+    return compact ? &motion.local[i * 2 * count] : &points[(static_cast<size_t>(pass.seq[i]) * plan.n_cp + first) * 2];
+  };
+
+  if (!first_layer) j.raw(",");
+  first_layer = false;
+  layer_span[p].first = j.text().size();
+  j.raw("{\"ddd\":0,\"ind\":").num(static_cast<double>(P - (it - order.rbegin())), 1);
+  j.raw(",\"ty\":4,\"nm\":").str(path.id).raw(",\"sr\":1,");
+  if (path.group >= 0 && static_cast<size_t>(path.group) < scene.groups.size() && group_ind[static_cast<size_t>(path.group)])
+    j.raw("\"parent\":").num(group_ind[static_cast<size_t>(path.group)], 1).raw(",");
+  // Inside a compositing layer the layer carries the group opacity (lottie_compositing.h).
+  j.raw("\"ks\":{\"o\":").fixed((path.layer >= 0 ? path.local_opacity : path.opacity) * 100.0, kOpacityScale).raw(",").raw(kLayerTransformAfterOpacity);
+  j.raw(",\"ao\":0,\"shapes\":[{\"ty\":\"gr\",\"nm\":").str(path.id).raw(",\"it\":[");
+  const size_t shapes_begin = j.text().size();
+  // Compact, moving: the shapes in a group of their own carrying the motion; the paints after
+  // it apply to them in the canvas' frame (gradients where animation.svg draws them, stroke
+  // widths unscaled, as the full export).
+  if (motion.moves) j.raw("{\"ty\":\"gr\",\"nm\":\"motion\",\"it\":[");
+  size_t cp = 0;  // index of the subpath's first point within the path
+  bool first_item = true;
+  for (const Subpath& sp : path.subpaths) {
+    const size_t n_points = sp.points.size();
+    if (n_points < 4) {  // a lone point has no outline (only caps, which Lottie has not)
+      cp += n_points;
+      continue;
+    }
+    const size_t n = (n_points - 1) / 3;
+    bool merge = sp.closed && n >= 2;
+    for (size_t i = 0; merge && i < (shape_animated ? pass.seq.size() : 1); ++i) {
+      const double* q = value_points(i) + 2 * cp;
+      merge = std::fabs(q[6 * n] - q[0]) <= kSamePoint && std::fabs(q[6 * n + 1] - q[1]) <= kSamePoint;
+    }
+    if (!first_item) j.raw(",");
+    first_item = false;
+    j.raw("{\"ty\":\"sh\",\"ks\":");
+    if (!shape_animated) {
+      j.raw("{\"a\":0,\"k\":");
+      write_bezier(j, value_points(0) + 2 * cp, n_points, sp.closed, merge);
+      j.raw("}}");
+    } else {
+      j.raw("{\"a\":1,\"k\":[");
+      for (size_t k = 0; k < shape_keys.size(); ++k) {
+        const size_t i = shape_keys[k];
+        if (k) j.raw(",");
+        j.raw("{\"t\":").num(pass.times[i] * frames, kFrameScale).raw(",\"s\":[");
+        write_bezier(j, value_points(i) + 2 * cp, n_points, sp.closed, merge);
+        j.raw("]");
+        // Linear in time as SMIL's calcMode="linear", or the compact export's easing.
+        if (k + 1 < shape_keys.size()) write_easing(j, compact ? motion.shape_keys.easing[k] : Easing{});
+        j.raw("}");
+      }
+      j.raw("]}}");
+    }
+    cp += n_points;
+  }
+  if (motion.moves) j.raw(first_item ? "" : ",").raw(motion.transform).raw("]}");
+  // Stroke and fill, their gradients following the shape (lottie_paint.h).
+  PaintInputs paint;
+  for (size_t i = 0; i < (animated ? pass.seq.size() : 1); ++i)
+    paint.points.push_back(motion.moves ? &points[(static_cast<size_t>(pass.seq[i]) * plan.n_cp + first) * 2] : value_points(i));
+  const std::vector<Scene>& paint_samples = animated ? samples : std::vector<Scene>{};
+  paint.fill = gradient_track(scene, paint_samples, p, false, sample_of_value, value_frames);
+  paint.stroke = gradient_track(scene, paint_samples, p, true, sample_of_value, value_frames);
+  // Compact: gradients at their fewest keys.
+  if (compact) paint.fill.tolerance_px = paint.stroke.tolerance_px = tol;
+  j.set_decimals(static_decimals);  // widths, dashes and gradients at the static decimals
+  write_paint_items(j, shapes_begin, path, paint, approximate);
+  first_item = j.text().size() == shapes_begin;
+  j.raw(first_item ? "" : ",").raw(kGroupTransform).raw("]}]");
+  j.raw(",\"ip\":0,\"op\":").num(frames, kFrameScale).raw(",\"st\":0,\"bm\":0}");
+  layer_span[p].second = j.text().size();
+  return compact;
+}
+
+}  // namespace
 
 std::vector<std::string> write_lottie(const std::filesystem::path& out, const Scene& scene,
                                       const RasterPlan& plan, const std::vector<double>& points,

@@ -49,28 +49,14 @@ int cap_kind(LineCap c) {
   return kCapButt;
 }
 
-}  // namespace
+// A subpath's flattened vertices: plan_raster's pass 1 makes them, pass 2 draws them.
+struct SubRange { int first_vertex, vertex_count; bool closed; };
 
-int stroke_point_count(const StrokeSubpath& s) {
-  const int N = s.vertex_count, J = s.join_points, C = s.cap_points;
-  if (s.closed) return 2 * N * (2 + J);
-  const int S = std::max(N - 1, 1);
-  return 2 * (2 * S + J * (S - 1)) + 2 * C;
-}
-
-RasterPlan plan_raster(const Scene& scene, const Affine& view, int width, int height,
-                       const RasterPlanOptions& opt) {
-  if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
-    throw Error("render size " + std::to_string(width) + "x" + std::to_string(height) +
-                " is outside 1..16384");
-  RasterPlan plan;
-  plan.width = width;
-  plan.height = height;
+// Pass 1 of plan_raster: every subpath's control points (in pixels) and its flattened vertices
+// as weights of them, per path the vertex range of each of its subpaths.
+std::vector<std::vector<SubRange>> flatten_paths(const Scene& scene, const Affine& view, const RasterPlanOptions& opt,
+                                                 RasterPlan& plan) {
   const double tol = opt.flatten_tolerance_px;
-  const double view_scale = view.mean_scale();
-
-  // Pass 1: control points and flattened vertices of every subpath.
-  struct SubRange { int first_vertex, vertex_count; bool closed; };
   std::vector<std::vector<SubRange>> subs(scene.paths.size());
   for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
     const Path& path = scene.paths[pi];
@@ -122,6 +108,72 @@ RasterPlan plan_raster(const Scene& scene, const Affine& view, int width, int he
   plan.rest_cp.insert(plan.rest_cp.end(), 6, 0.f);
   plan.n_cp += 3;
   plan.n_pts = plan.n_flat;
+  return subs;
+}
+
+// Chunks: consecutive lines of one draw, kChunkLines at most.
+void lay_out_chunks(RasterPlan& plan) {
+  for (Draw& d : plan.draws) {
+    d.first_chunk = static_cast<int>(plan.chunk_lines.size() / 2);
+    for (int j = d.first_line; j < d.first_line + d.line_count; j += kChunkLines)
+      plan.chunk_lines.insert(plan.chunk_lines.end(),
+                              {j, std::min(kChunkLines, d.first_line + d.line_count - j)});
+    d.chunk_count = static_cast<int>(plan.chunk_lines.size() / 2) - d.first_chunk;
+  }
+  plan.line_chunk.resize(plan.n_lines);
+  for (size_t c = 0; c < plan.chunk_lines.size() / 2; ++c)
+    for (int j = 0; j < plan.chunk_lines[2 * c + 1]; ++j)
+      plan.line_chunk[plan.chunk_lines[2 * c] + j] = static_cast<int>(c);
+}
+
+// The backward pass's transposed tables (RasterPlan::pt_first, cp_first): each point's lines,
+// each control point's flattened vertices.
+void transpose_weights(RasterPlan& plan) {
+  // Transposes, in increasing entry order so that sums are taken in a fixed order.
+  auto csr = [](int n, const std::vector<std::pair<int, int>>& pairs, std::vector<int>& first,
+                std::vector<int>& entries) {
+    first.assign(n + 1, 0);
+    for (const auto& [row, e] : pairs) ++first[row + 1];
+    for (int i = 0; i < n; ++i) first[i + 1] += first[i];
+    entries.assign(pairs.size(), 0);
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for (const auto& [row, e] : pairs) entries[fill[row]++] = e;
+  };
+  std::vector<std::pair<int, int>> pairs;
+  for (int j = 0; j < plan.n_lines; ++j) {
+    pairs.emplace_back(plan.line_ab[2 * j], 2 * j);
+    pairs.emplace_back(plan.line_ab[2 * j + 1], 2 * j + 1);
+  }
+  csr(plan.n_pts, pairs, plan.pt_first, plan.pt_entries);
+  pairs.clear();
+  for (int v = 0; v < plan.n_flat; ++v)
+    for (int j = 0; j < 4; ++j)
+      if (plan.vert_w[4 * v + j] != 0.f) pairs.emplace_back(plan.vert_cp[v] + j, 4 * v + j);
+  csr(plan.n_cp, pairs, plan.cp_first, plan.cp_entries);
+}
+
+}  // namespace
+
+int stroke_point_count(const StrokeSubpath& s) {
+  const int N = s.vertex_count, J = s.join_points, C = s.cap_points;
+  if (s.closed) return 2 * N * (2 + J);
+  const int S = std::max(N - 1, 1);
+  return 2 * (2 * S + J * (S - 1)) + 2 * C;
+}
+
+RasterPlan plan_raster(const Scene& scene, const Affine& view, int width, int height,
+                       const RasterPlanOptions& opt) {
+  if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
+    throw Error("render size " + std::to_string(width) + "x" + std::to_string(height) +
+                " is outside 1..16384");
+  RasterPlan plan;
+  plan.width = width;
+  plan.height = height;
+  const double tol = opt.flatten_tolerance_px;
+  const double view_scale = view.mean_scale();
+
+  // Pass 1: control points and flattened vertices of every subpath.
+  const std::vector<std::vector<SubRange>> subs = flatten_paths(scene, view, opt, plan);
 
   // Pass 2: draws in paint order, their lines, and stroke outline layouts.
   auto add_line = [&](int a, int b) {
@@ -211,40 +263,8 @@ RasterPlan plan_raster(const Scene& scene, const Affine& view, int width, int he
       else if (path.stroke_gradient >= 0) paint_draw(path, path.stroke_gradient);
     }
   }
-  // Chunks: consecutive lines of one draw, kChunkLines at most.
-  for (Draw& d : plan.draws) {
-    d.first_chunk = static_cast<int>(plan.chunk_lines.size() / 2);
-    for (int j = d.first_line; j < d.first_line + d.line_count; j += kChunkLines)
-      plan.chunk_lines.insert(plan.chunk_lines.end(),
-                              {j, std::min(kChunkLines, d.first_line + d.line_count - j)});
-    d.chunk_count = static_cast<int>(plan.chunk_lines.size() / 2) - d.first_chunk;
-  }
-  plan.line_chunk.resize(plan.n_lines);
-  for (size_t c = 0; c < plan.chunk_lines.size() / 2; ++c)
-    for (int j = 0; j < plan.chunk_lines[2 * c + 1]; ++j)
-      plan.line_chunk[plan.chunk_lines[2 * c] + j] = static_cast<int>(c);
-
-  // Transposes, in increasing entry order so that sums are taken in a fixed order.
-  auto csr = [](int n, const std::vector<std::pair<int, int>>& pairs, std::vector<int>& first,
-                std::vector<int>& entries) {
-    first.assign(n + 1, 0);
-    for (const auto& [row, e] : pairs) ++first[row + 1];
-    for (int i = 0; i < n; ++i) first[i + 1] += first[i];
-    entries.assign(pairs.size(), 0);
-    std::vector<int> fill(first.begin(), first.end() - 1);
-    for (const auto& [row, e] : pairs) entries[fill[row]++] = e;
-  };
-  std::vector<std::pair<int, int>> pairs;
-  for (int j = 0; j < plan.n_lines; ++j) {
-    pairs.emplace_back(plan.line_ab[2 * j], 2 * j);
-    pairs.emplace_back(plan.line_ab[2 * j + 1], 2 * j + 1);
-  }
-  csr(plan.n_pts, pairs, plan.pt_first, plan.pt_entries);
-  pairs.clear();
-  for (int v = 0; v < plan.n_flat; ++v)
-    for (int j = 0; j < 4; ++j)
-      if (plan.vert_w[4 * v + j] != 0.f) pairs.emplace_back(plan.vert_cp[v] + j, 4 * v + j);
-  csr(plan.n_cp, pairs, plan.cp_first, plan.cp_entries);
+  lay_out_chunks(plan);
+  transpose_weights(plan);
   return plan;
 }
 

@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <system_error>
 
@@ -468,6 +469,162 @@ void check_options(const fs::path& source, int width, int height, const TargetOp
 
 }  // namespace
 
+// ---- load_target's steps, in the order it takes them.
+
+namespace {
+
+// The source's frame count and size (and a video's frame rate); a folder's frames are listed
+// into `folder`.
+TargetInfo source_info(const fs::path& source, bool is_folder, FolderSource& folder) {
+  TargetInfo info;
+  if (is_folder) {
+    folder = scan_folder(source);
+    info.frames = static_cast<int>(folder.frames.size());
+    info.width = folder.width;
+    info.height = folder.height;
+  } else {
+    info = probe_video(source);
+  }
+  return info;
+}
+
+// The frames asked for exist, in increasing order, and there are enough for K keyframes.
+void check_frame_choice(const fs::path& source, const TargetOptions& options, int K, int N) {
+  for (size_t j = 0; j < options.frames.size(); ++j)
+    if (options.frames[j] < 0 || options.frames[j] >= N || (j > 0 && options.frames[j] <= options.frames[j - 1]))
+      fail(source, "frame " + std::to_string(options.frames[j]) + " asked for is not in 0.." + std::to_string(N - 1) +
+                       " or not after the one before");
+  if (N < K)
+    fail(source, "has " + frames_text(N) + ", fewer than the " + std::to_string(K) +
+                     " keyframes asked for");
+}
+
+// The keyframes' sizes, their source frames and their (white, empty) images, before decoding.
+TargetFrames empty_target(int width, int height, int K, const TargetInfo& info, const TargetOptions& options) {
+  const int N = info.frames;
+  TargetFrames t;
+  t.width = width;
+  t.height = height;
+  t.keyframes = K;
+  t.source_frames = N;
+  t.fps = info.fps;
+  t.source_width = info.width;
+  t.source_height = info.height;
+  // round(k (N-1) / (K-1)) in integers (halves round up): no floating-point ties, and strictly
+  // increasing because the step (N-1)/(K-1) is at least 1.
+  t.source_index.resize(static_cast<size_t>(K));
+  for (int k = 0; k < K && !options.frames.empty(); ++k) t.source_index[static_cast<size_t>(k)] = options.frames[static_cast<size_t>(k)];
+  for (int k = 0; k < K && options.frames.empty(); ++k) {
+    const int64_t num = 2 * int64_t{k} * (N - 1) + (K - 1);
+    t.source_index[static_cast<size_t>(k)] =
+        K == 1 ? 0 : static_cast<int>(num / (2 * int64_t{K - 1}));
+  }
+  const size_t px = static_cast<size_t>(width) * height;
+  t.raw.assign(K * px * 4, 1.0f);
+  t.rgba.assign(K * px * 4, 1.0f);
+  t.mask.assign(K * px, 0);
+  t.sdf.assign(K * px, 0.0f);
+  return t;
+}
+
+// load_target's hand-off of one decoded frame (k: the next keyframe, i: the frame's index).
+using DeliverFrame = std::function<void(int k, int i, bool sampled, const cv::Mat& frame)>;
+
+// A folder's frames, read in order and handed to `deliver`.
+void decode_folder(const FolderSource& folder, int N, int K, const std::vector<int>& source_index, bool measure_shake,
+                   const std::function<bool(int)>& near_sample, ShakeEstimator& shake, const DeliverFrame& deliver) {
+  // The sampled frames; every frame once when stabilising (each shows the camera's path).
+  for (int i = 0, k = 0; i < N && (k < K || near_sample(i)); ++i) {
+    const bool sampled = k < K && i == source_index[static_cast<size_t>(k)];
+    if (!sampled && !measure_shake && !near_sample(i)) continue;  // not read
+    const fs::path& file = folder.frames[static_cast<size_t>(i)].path;
+    cv::Mat img;
+    try {
+      img = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
+    } catch (const cv::Exception&) {
+      img.release();
+    }
+    if (img.empty()) fail(file, "not a readable PNG");
+    if (img.cols != folder.width || img.rows != folder.height)
+      fail(file, "decodes to " + size_text(img.cols, img.rows) + ", but its header says " +
+                     size_text(folder.width, folder.height));
+    if (measure_shake) shake.add(img);
+    deliver(k, i, sampled, img);
+    if (sampled) ++k;
+  }
+}
+
+// A video's frames, decoded in order and handed to `deliver`; held frames counted and the
+// keyframes retimed to the first frame of their run when asked.
+void decode_video(const fs::path& source, const TargetOptions& options, int N, int K, TargetFrames& t,
+                  bool measure_shake, const std::function<bool(int)>& near_sample, ShakeEstimator& shake,
+                  const DeliverFrame& deliver) {
+  // Second pass: sequential reads (seeking is unreliable across codecs). Every frame is
+  // decoded (a thumbnail of each finds held frames); only the sampled ones are kept at the
+  // target size, and, when denoising, their neighbours go to the denoiser.
+  cv::VideoCapture cap = open_video_capture(source);
+  int k = 0, run_start = 0;
+  cv::Mat prev_thumb;
+  try {
+    for (int i = 0; i < N && (k < K || near_sample(i)); ++i) {
+      if (!cap.grab()) fail(source, "frame " + std::to_string(i) + " cannot be read");
+      const bool sampled = k < K && i == t.source_index[static_cast<size_t>(k)];
+      if (!sampled && !options.retime_held_frames && !measure_shake && !near_sample(i)) continue;
+      cv::Mat frame;
+      if (!cap.retrieve(frame) || frame.empty())
+        fail(source, "frame " + std::to_string(i) + " cannot be decoded");
+      if (measure_shake) shake.add(frame);
+      if (options.retime_held_frames) {
+        cv::Mat thumb = held_frame_thumbnail(frame);
+        if (!prev_thumb.empty() && same_frame(thumb, prev_thumb)) ++t.held_frames;
+        else run_start = i;
+        prev_thumb = thumb;
+      }
+      deliver(k, i, sampled, frame);
+      if (!sampled) continue;
+      // A repeat shows the pose of the run's first frame: time the keyframe there (never at
+      // or before the previous keyframe, so times stay increasing).
+      if (k > 0 && run_start > t.source_index[static_cast<size_t>(k - 1)]) t.source_index[static_cast<size_t>(k)] = run_start;
+      ++k;
+    }
+  } catch (const cv::Exception&) {
+    fail(source, "not a readable video");
+  }
+}
+
+// Stabilising: the camera's path (measured on every frame, or the first load's), taken out of
+// the kept keyframes as they go to `raw`.
+void remove_camera_shake(TargetFrames& t, const TargetOptions& options, const ShakeEstimator& shake,
+                         std::vector<cv::Mat>& kept, const std::vector<int>& kept_index, bool denoise, cv::Size work,
+                         int width, int height) {
+  const int K = t.keyframes;
+  if (options.shake_from) {
+    t.frame_shake = options.shake_from->frame_shake;
+    t.shake_model = options.shake_from->shake_model;
+    t.still_share = options.shake_from->still_share;
+    t.shake_loop = options.shake_from->shake_loop;
+  } else {
+    ShakeEstimate est = shake.estimate(options.stabilise_sigma_s * t.fps);
+    t.frame_shake = std::move(est.shake);
+    t.shake_model = est.model;
+    t.still_share = est.still_share;
+    t.shake_loop = est.loop;
+  }
+  for (int k = 0; k < K; ++k) {
+    const auto& d = t.frame_shake.at(static_cast<size_t>(kept_index[static_cast<size_t>(k)]));
+    const double fit_px = std::hypot(d[0], d[1]) * width / std::max(1, t.source_width);
+    t.max_shake_px = std::max(t.max_shake_px, fit_px);
+    if (!denoise) {
+      store_raw(remove_shake(kept[static_cast<size_t>(k)], d), k, width, height, t.raw);
+      continue;
+    }
+    const double s = double(work.width) / t.source_width;  // denoised frames: working size
+    store_rgb(remove_shake(kept[static_cast<size_t>(k)], {d[0] * s, d[1] * s}), k, width, height, t.raw);
+  }
+}
+
+}  // namespace
+
 double smallest_part_share(const std::vector<uint8_t>& rgba8, int width, int height, double white_threshold) {
   const size_t px = static_cast<size_t>(std::max(width, 0)) * std::max(height, 0);
   if (px == 0 || rgba8.size() < px * 4) return 0;
@@ -500,46 +657,11 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   check_options(source, width, height, options);
   const bool is_folder = classify_source(source);
   FolderSource folder;
-  TargetInfo info;
-  if (is_folder) {
-    folder = scan_folder(source);
-    info.frames = static_cast<int>(folder.frames.size());
-    info.width = folder.width;
-    info.height = folder.height;
-  } else {
-    info = probe_video(source);
-  }
+  const TargetInfo info = source_info(source, is_folder, folder);
   const int K = options.frames.empty() ? options.keyframes : static_cast<int>(options.frames.size()), N = info.frames;
-  for (size_t j = 0; j < options.frames.size(); ++j)
-    if (options.frames[j] < 0 || options.frames[j] >= N || (j > 0 && options.frames[j] <= options.frames[j - 1]))
-      fail(source, "frame " + std::to_string(options.frames[j]) + " asked for is not in 0.." + std::to_string(N - 1) +
-                       " or not after the one before");
-  if (N < K)
-    fail(source, "has " + frames_text(N) + ", fewer than the " + std::to_string(K) +
-                     " keyframes asked for");
-
-  TargetFrames t;
-  t.width = width;
-  t.height = height;
-  t.keyframes = K;
-  t.source_frames = N;
-  t.fps = info.fps;
-  t.source_width = info.width;
-  t.source_height = info.height;
-  // round(k (N-1) / (K-1)) in integers (halves round up): no floating-point ties, and strictly
-  // increasing because the step (N-1)/(K-1) is at least 1.
-  t.source_index.resize(static_cast<size_t>(K));
-  for (int k = 0; k < K && !options.frames.empty(); ++k) t.source_index[static_cast<size_t>(k)] = options.frames[static_cast<size_t>(k)];
-  for (int k = 0; k < K && options.frames.empty(); ++k) {
-    const int64_t num = 2 * int64_t{k} * (N - 1) + (K - 1);
-    t.source_index[static_cast<size_t>(k)] =
-        K == 1 ? 0 : static_cast<int>(num / (2 * int64_t{K - 1}));
-  }
+  check_frame_choice(source, options, K, N);
+  TargetFrames t = empty_target(width, height, K, info, options);
   const size_t px = static_cast<size_t>(width) * height;
-  t.raw.assign(K * px * 4, 1.0f);
-  t.rgba.assign(K * px * 4, 1.0f);
-  t.mask.assign(K * px, 0);
-  t.sdf.assign(K * px, 0.0f);
 
   // Sampled frames go straight to `raw`, or, when stabilising, wait for the whole clip's
   // camera path (kept at their own size, K frames at most).
@@ -601,88 +723,16 @@ TargetFrames load_target(const fs::path& source, int width, int height,
       keep(denoised_k++, from->denoised_frame[static_cast<size_t>(k)], f.clone());
     }
   } else if (is_folder) {
-    // The sampled frames; every frame once when stabilising (each shows the camera's path).
-    for (int i = 0, k = 0; i < N && (k < K || near_sample(i)); ++i) {
-      const bool sampled = k < K && i == t.source_index[static_cast<size_t>(k)];
-      if (!sampled && !measure_shake && !near_sample(i)) continue;  // not read
-      const fs::path& file = folder.frames[static_cast<size_t>(i)].path;
-      cv::Mat img;
-      try {
-        img = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
-      } catch (const cv::Exception&) {
-        img.release();
-      }
-      if (img.empty()) fail(file, "not a readable PNG");
-      if (img.cols != folder.width || img.rows != folder.height)
-        fail(file, "decodes to " + size_text(img.cols, img.rows) + ", but its header says " +
-                       size_text(folder.width, folder.height));
-      if (measure_shake) shake.add(img);
-      deliver(k, i, sampled, img);
-      if (sampled) ++k;
-    }
+    decode_folder(folder, N, K, t.source_index, measure_shake, near_sample, shake, deliver);
   } else {
-    // Second pass: sequential reads (seeking is unreliable across codecs). Every frame is
-    // decoded (a thumbnail of each finds held frames); only the sampled ones are kept at the
-    // target size, and, when denoising, their neighbours go to the denoiser.
-    cv::VideoCapture cap = open_video_capture(source);
-    int k = 0, run_start = 0;
-    cv::Mat prev_thumb;
-    try {
-      for (int i = 0; i < N && (k < K || near_sample(i)); ++i) {
-        if (!cap.grab()) fail(source, "frame " + std::to_string(i) + " cannot be read");
-        const bool sampled = k < K && i == t.source_index[static_cast<size_t>(k)];
-        if (!sampled && !options.retime_held_frames && !measure_shake && !near_sample(i)) continue;
-        cv::Mat frame;
-        if (!cap.retrieve(frame) || frame.empty())
-          fail(source, "frame " + std::to_string(i) + " cannot be decoded");
-        if (measure_shake) shake.add(frame);
-        if (options.retime_held_frames) {
-          cv::Mat thumb = held_frame_thumbnail(frame);
-          if (!prev_thumb.empty() && same_frame(thumb, prev_thumb)) ++t.held_frames;
-          else run_start = i;
-          prev_thumb = thumb;
-        }
-        deliver(k, i, sampled, frame);
-        if (!sampled) continue;
-        // A repeat shows the pose of the run's first frame: time the keyframe there (never at
-        // or before the previous keyframe, so times stay increasing).
-        if (k > 0 && run_start > t.source_index[static_cast<size_t>(k - 1)]) t.source_index[static_cast<size_t>(k)] = run_start;
-        ++k;
-      }
-    } catch (const cv::Exception&) {
-      fail(source, "not a readable video");
-    }
+    decode_video(source, options, N, K, t, measure_shake, near_sample, shake, deliver);
   }
   if (denoise && !reuse) {
     for (auto& [index, avg] : denoiser.finish()) keep(denoised_k++, index, std::move(avg));
     t.denoise_seconds = denoiser.seconds();
     if (denoised_k != K) throw Error("internal: " + std::to_string(denoised_k) + " of " + std::to_string(K) + " keyframes denoised");
   }
-  if (options.stabilise) {
-    if (options.shake_from) {
-      t.frame_shake = options.shake_from->frame_shake;
-      t.shake_model = options.shake_from->shake_model;
-      t.still_share = options.shake_from->still_share;
-      t.shake_loop = options.shake_from->shake_loop;
-    } else {
-      ShakeEstimate est = shake.estimate(options.stabilise_sigma_s * t.fps);
-      t.frame_shake = std::move(est.shake);
-      t.shake_model = est.model;
-      t.still_share = est.still_share;
-      t.shake_loop = est.loop;
-    }
-    for (int k = 0; k < K; ++k) {
-      const auto& d = t.frame_shake.at(static_cast<size_t>(kept_index[static_cast<size_t>(k)]));
-      const double fit_px = std::hypot(d[0], d[1]) * width / std::max(1, t.source_width);
-      t.max_shake_px = std::max(t.max_shake_px, fit_px);
-      if (!denoise) {
-        store_raw(remove_shake(kept[static_cast<size_t>(k)], d), k, width, height, t.raw);
-        continue;
-      }
-      const double s = double(work.width) / t.source_width;  // denoised frames: working size
-      store_rgb(remove_shake(kept[static_cast<size_t>(k)], {d[0] * s, d[1] * s}), k, width, height, t.raw);
-    }
-  }
+  if (options.stabilise) remove_camera_shake(t, options, shake, kept, kept_index, denoise, work, width, height);
   for (int k = 0; k < K; ++k) {
     if (!options.palette.empty())
       t.colour_corrected += correct_colours(t.raw.data() + static_cast<size_t>(k) * px * 4, width, height,
