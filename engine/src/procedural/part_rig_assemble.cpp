@@ -8,10 +8,10 @@
 #include <set>
 
 #include "scene/backdrop.h"
-#include "video/part_rig_internal.h"
-#include "video/shape_overlap.h"
-#include "video/skeleton_lobes.h"
-#include "video/stroke_rig.h"
+#include "procedural/part_rig_internal.h"
+#include "procedural/shape_overlap.h"
+#include "procedural/skeleton_lobes.h"
+#include "procedural/stroke_rig.h"
 
 namespace svgm::part_rig_internal {
 
@@ -246,7 +246,7 @@ void Assembly::choose_root() {
 void Assembly::hang_parts() {
   const RigPart& R = rig.parts[rig.root];
   // Parents and pivots. A part hangs from the larger part whose shape it overlaps most
-  // (video/shape_overlap.h: boxes let a trident across the head take the horn from the hood).
+  // (procedural/shape_overlap.h: boxes let a trident across the head take the horn from the hood).
   std::vector<PartShape> shape(static_cast<size_t>(G));
   for (int g = 0; g < G; ++g) shape[static_cast<size_t>(g)] = part_shape(scene, unit_paths[g]);
   for (int g = 0; g < G; ++g) {

@@ -7,10 +7,10 @@
 #include <map>
 #include <set>
 
-#include "video/hands_at_head.h"
-#include "video/part_rig_internal.h"
-#include "video/stroke_rig.h"
-#include "video/wheel_riders.h"
+#include "procedural/hands_at_head.h"
+#include "procedural/part_rig_internal.h"
+#include "procedural/stroke_rig.h"
+#include "procedural/wheel_riders.h"
 
 namespace svgm::part_rig_internal {
 

@@ -1,7 +1,7 @@
 // The part rig (see part_rig.h): the rig's boxes, roles and name words, the document's names
 // (read_source_names), a stroke limb's pivot, and build_rig, which chooses the parts
 // (part_rig_units.cpp) and assembles them (part_rig_assemble.cpp).
-#include "video/part_rig.h"
+#include "procedural/part_rig.h"
 
 #include <pugixml.hpp>
 
@@ -13,7 +13,7 @@
 
 #include "svg/document_order.h"
 #include "svgmotion/svg_reader.h"
-#include "video/part_rig_internal.h"
+#include "procedural/part_rig_internal.h"
 
 namespace svgm {
 

@@ -1,14 +1,14 @@
 // The frames of a motion plan (animate_plan, motion_plan.h): each action's rigid motion or
 // deformation of its parts at every frame, the bends of regions and of the silhouette's limbs,
 // and what rides on spinning wheels.
-#include "video/motion_plan.h"
+#include "procedural/motion_plan.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "video/motion_plan_internal.h"
+#include "procedural/motion_plan_internal.h"
 #include "geometry/rigid_bodies.h"
-#include "video/wheel_riders.h"
+#include "procedural/wheel_riders.h"
 
 namespace svgm {
 

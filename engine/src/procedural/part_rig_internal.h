@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "geometry/curve_samples.h"
-#include "video/part_rig.h"
+#include "procedural/part_rig.h"
 
 namespace svgm::part_rig_internal {
 

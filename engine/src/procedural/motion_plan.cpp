@@ -1,7 +1,7 @@
 // The motion plan (see motion_plan.h): which parts each verb of the prompt moves and how. Its
 // frames are drawn by motion_frames.cpp, kept inside the canvas by motion_fit.cpp and written
 // to motion.json by motion_report.cpp.
-#include "video/motion_plan.h"
+#include "procedural/motion_plan.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <set>
 
 #include "svgmotion/error.h"
-#include "video/motion_plan_internal.h"
+#include "procedural/motion_plan_internal.h"
 
 namespace svgm {
 
