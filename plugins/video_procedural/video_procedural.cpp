@@ -1,5 +1,5 @@
 // video `procedural`: offline candidate videos of the recoloured SVG moving as the prompt says
-// (engine/src/video): the parts get names and a rig (part_rig.h), the prompt's verbs, part
+// (engine/src/procedural): the parts get names and a rig (part_rig.h), the prompt's verbs, part
 // nouns and modifiers become a motion plan (prompt_parse.h, motion_plan.h), or
 // stages.video.options.motion gives the plan outright ("flap:wing*, bob:root"). Each candidate
 // is rendered as raster frames with a colour drift, blur and H.264 compression; candidate i uses
@@ -16,8 +16,8 @@
 #include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
-#include "video/motion_plan.h"
-#include "video/procedural_video.h"
+#include "procedural/motion_plan.h"
+#include "procedural/procedural_video.h"
 #include "svgmotion/utf8_text.h"
 
 namespace {

@@ -9,8 +9,8 @@
 
 #include "motion/lexicon.h"
 #include "svgmotion/svg_reader.h"
-#include "video/motion_plan.h"
-#include "video/prompt_parse.h"
+#include "procedural/motion_plan.h"
+#include "procedural/prompt_parse.h"
 
 using namespace svgm;
 

@@ -1,8 +1,8 @@
-// Hands drawn at the face (video/hands_at_head.h) on boxes made for these tests: which of a
+// Hands drawn at the face (procedural/hands_at_head.h) on boxes made for these tests: which of a
 // head part's paths an arm holds.
 #include <doctest/doctest.h>
 
-#include "video/hands_at_head.h"
+#include "procedural/hands_at_head.h"
 
 using namespace svgm;
 

@@ -10,7 +10,7 @@
 
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
-#include "video/motion_plan.h"
+#include "procedural/motion_plan.h"
 #include "geometry/rigid_bodies.h"
 
 using namespace svgm;

@@ -9,8 +9,8 @@
 #include <set>
 
 #include "svgmotion/svg_reader.h"
-#include "video/part_rig.h"
-#include "video/stroke_rig.h"
+#include "procedural/part_rig.h"
+#include "procedural/stroke_rig.h"
 
 using namespace svgm;
 

@@ -6,7 +6,7 @@
 #include <set>
 
 #include "svgmotion/error.h"
-#include "video/prompt_parse.h"
+#include "procedural/prompt_parse.h"
 
 using namespace svgm;
 

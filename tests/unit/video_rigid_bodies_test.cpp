@@ -1,6 +1,6 @@
 // Rigid bodies of a procedural motion (geometry/rigid_bodies.h) and what the fitter makes of them
 // (fit/plan/motion_groups.h: groups one body carries merge; the bodies' maps become the known motion),
-// and the shape overlap the rig hangs parts by (video/shape_overlap.h), on hand-made frames.
+// and the shape overlap the rig hangs parts by (procedural/shape_overlap.h), on hand-made frames.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "fit/plan/motion_groups.h"
 #include "svgmotion/svg_reader.h"
 #include "geometry/rigid_bodies.h"
-#include "video/shape_overlap.h"
+#include "procedural/shape_overlap.h"
 
 #include "scene_builders.h"
 

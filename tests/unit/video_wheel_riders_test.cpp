@@ -1,9 +1,9 @@
-// What a turning wheel carries (video/wheel_riders.h): what turns with it, what rides its rim,
+// What a turning wheel carries (procedural/wheel_riders.h): what turns with it, what rides its rim,
 // riders stacked into one, and the symmetry of riders evenly round it, on boxes and points
 // made for these tests.
 #include <doctest/doctest.h>
 
-#include "video/wheel_riders.h"
+#include "procedural/wheel_riders.h"
 
 using namespace svgm;
 

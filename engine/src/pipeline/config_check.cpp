@@ -16,7 +16,7 @@
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
 #include "svgmotion/target_video.h"
-#include "video/prompt_parse.h"
+#include "procedural/prompt_parse.h"
 #include "svgmotion/utf8_text.h"
 
 namespace svgm {

@@ -1,5 +1,5 @@
 // report.html's "The motion" section: what the procedural video made of the prompt, from the
-// run's motion.json (video/motion_plan.h motion_report): the prompt, each planned action as a
+// run's motion.json (procedural/motion_plan.h motion_report): the prompt, each planned action as a
 // numbered row in its own colour (verb, the parts it moves, amplitude in degrees or in % of the
 // figure, direction, cycles, why those parts), the drawing in its own colours with each action's
 // parts outlined in that colour and number, the words not understood, a warning when the motion

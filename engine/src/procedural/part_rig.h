@@ -46,7 +46,7 @@
 
 #include "svgmotion/affine.h"
 #include "svgmotion/scene.h"
-#include "video/outline_lobes.h"
+#include "procedural/outline_lobes.h"
 
 namespace svgm {
 

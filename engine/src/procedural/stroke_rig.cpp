@@ -1,5 +1,5 @@
 // Line drawings' geometry for the part rig (see stroke_rig.h).
-#include "video/stroke_rig.h"
+#include "procedural/stroke_rig.h"
 
 #include <algorithm>
 #include <cmath>

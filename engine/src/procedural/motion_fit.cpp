@@ -2,13 +2,13 @@
 // scaled down only to stay inside the frame and within the fitter's steps between keyframes, up
 // to a visible travel, and parts at the canvas's edge held when nothing else lets the figure
 // move.
-#include "video/motion_plan.h"
+#include "procedural/motion_plan.h"
 
 #include <algorithm>
 #include <cmath>
 #include <set>
 
-#include "video/motion_plan_internal.h"
+#include "procedural/motion_plan_internal.h"
 
 namespace svgm {
 

@@ -1,5 +1,5 @@
 // Limbs from the silhouette's skeleton (see skeleton_lobes.h).
-#include "video/skeleton_lobes.h"
+#include "procedural/skeleton_lobes.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Which way a planned action moves, in words (see motion_direction.h).
-#include "video/motion_direction.h"
+#include "procedural/motion_direction.h"
 
 #include <algorithm>
 

@@ -1,5 +1,5 @@
 // Overlap of two parts' shapes (see shape_overlap.h).
-#include "video/shape_overlap.h"
+#include "procedural/shape_overlap.h"
 
 #include <algorithm>
 

@@ -1,14 +1,14 @@
 // The frames of a motion plan (animate_plan, motion_plan.h): each action's rigid motion or
 // deformation of its parts at every frame, the bends of regions and of the silhouette's limbs,
 // and what rides on spinning wheels.
-#include "video/motion_plan.h"
+#include "procedural/motion_plan.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "video/motion_plan_internal.h"
+#include "procedural/motion_plan_internal.h"
 #include "geometry/rigid_bodies.h"
-#include "video/wheel_riders.h"
+#include "procedural/wheel_riders.h"
 
 namespace svgm {
 
@@ -303,10 +303,37 @@ int motion_plan_internal::spin_symmetry(const Rig& rig, const std::vector<int>& 
   return n;
 }
 
+namespace {
+
+// The motion of repeated element `e` (box `eb`) at time t: its falls and twinkles, one phase
+// per element, so no two drops fall in step.
+Affine element_motion(const Scene& scene, const MotionPlan& plan, int e, const RigBox& eb, double t, double W, double H) {
+  const double CH = scene.height;
+  Affine elem;
+  for (const auto& a : plan.actions) {
+    if (a.target != Target::Repeated) continue;
+    const double phase = std::fmod(e * kPhaseSpacing + a.direction * 0.137, 1.0) + 1.0;
+    if (a.primitive == Primitive::Fall) {
+      const double u = std::fmod(a.cycles * t + phase, 1.0);
+      const double room = std::max(0.0, scene.height * (1 - kFrameMargin) - eb.y1);
+      const double dist = std::min(plan.amplitude(a) * CH, room);
+      const double s = std::min(1.0, 3 * std::sin(M_PI * u));
+      const Vec2 c{eb.centre().x, eb.centre().y + dist * u};
+      elem = Affine::translate(c.x, c.y) * Affine::scale(s, s) * Affine::translate(-eb.centre().x, -eb.centre().y) * elem;
+    } else {
+      PlannedAction one = a;
+      one.parts = {};
+      elem = rigid(one, plan.amplitude(a), 1, phase, t, eb, {eb.centre().x, eb.y1}, W, H) * elem;
+    }
+  }
+  return elem;
+}
+
+}  // namespace
+
 std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames) {
   const int G = static_cast<int>(rig.parts.size());
   const double W = std::max(rig.figure.w(), 1e-9), H = std::max(rig.figure.h(), 1e-9);
-  const double CH = scene.height;
   auto under = [&](int p, int a) { return part_under(rig, p, a); };
   // Repeated elements: which element each path belongs to; and whether they fly free.
   std::vector<int> element_of(scene.paths.size(), -1);
@@ -398,25 +425,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
       const bool background = g >= 0 && (rig.parts[g].role == Role::Background || held[g]);
       const bool free_particle = particles && e >= 0;
       // The element's own motion (falls, twinkles), one phase per element.
-      Affine elem;
-      if (e >= 0)
-        for (const auto& a : plan.actions) {
-          if (a.target != Target::Repeated) continue;
-          const double phase = std::fmod(e * kPhaseSpacing + a.direction * 0.137, 1.0) + 1.0;
-          const RigBox& eb = element_box[e];
-          if (a.primitive == Primitive::Fall) {
-            const double u = std::fmod(a.cycles * t + phase, 1.0);
-            const double room = std::max(0.0, scene.height * (1 - kFrameMargin) - eb.y1);
-            const double dist = std::min(plan.amplitude(a) * CH, room);
-            const double s = std::min(1.0, 3 * std::sin(M_PI * u));
-            const Vec2 c{eb.centre().x, eb.centre().y + dist * u};
-            elem = Affine::translate(c.x, c.y) * Affine::scale(s, s) * Affine::translate(-eb.centre().x, -eb.centre().y) * elem;
-          } else {
-            PlannedAction one = a;
-            one.parts = {};
-            elem = rigid(one, plan.amplitude(a), 1, phase, t, eb, {eb.centre().x, eb.y1}, W, H) * elem;
-          }
-        }
+      const Affine elem = e >= 0 ? element_motion(scene, plan, e, element_box[e], t, W, H) : Affine();
       for (const auto& sp : scene.paths[pi].subpaths)
         for (Vec2 q : sp.points) {
           q = elem.apply(q);

@@ -10,7 +10,7 @@
 
 #include <vector>
 
-#include "video/part_rig.h"
+#include "procedural/part_rig.h"
 
 namespace svgm {
 

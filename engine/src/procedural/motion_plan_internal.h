@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "video/motion_plan.h"
+#include "procedural/motion_plan.h"
 
 namespace svgm::motion_plan_internal {
 

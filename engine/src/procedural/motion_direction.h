@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "video/motion_plan.h"
+#include "procedural/motion_plan.h"
 
 namespace svgm {
 

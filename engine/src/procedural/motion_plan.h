@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "motion/motion_verbs.h"
-#include "video/part_rig.h"
-#include "video/prompt_parse.h"
+#include "procedural/part_rig.h"
+#include "procedural/prompt_parse.h"
 
 namespace svgm {
 

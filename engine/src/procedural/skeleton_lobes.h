@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "svgmotion/scene.h"
-#include "video/outline_lobes.h"
+#include "procedural/outline_lobes.h"
 
 namespace svgm {
 

@@ -1,7 +1,7 @@
 // The motion plan (see motion_plan.h): which parts each verb of the prompt moves and how. Its
 // frames are drawn by motion_frames.cpp, kept inside the canvas by motion_fit.cpp and written
 // to motion.json by motion_report.cpp.
-#include "video/motion_plan.h"
+#include "procedural/motion_plan.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <set>
 
 #include "svgmotion/error.h"
-#include "video/motion_plan_internal.h"
+#include "procedural/motion_plan_internal.h"
 
 namespace svgm {
 
@@ -423,64 +423,8 @@ struct Builder {
             verb.name + " has no " + target_name(target) + " on a figure held by a pole: it ripples");
         return;
       }
-    if (limb_role && !note.empty() && rig.root >= 0 && a.primitive == Primitive::Swing) {
-      a.parts = {region_host(rig, target)};
-      a.region = target == Target::Arms || target == Target::Limbs ? Region::Sides
-                 : target == Target::Legs ? Region::Lower : target == Target::Head ? Region::Top : Region::End;
-      a.alternating = base.pairing == Pairing::Alternating || (base.pairing == Pairing::OneAtATime && (mods.both || plural));
-      if (a.region == Region::Sides) side_core(rig, a);
-      // (A head or a tail is one: no side to pick.)
-      if ((base.pairing == Pairing::OneSide || base.pairing == Pairing::OneAtATime) && !mods.both && !plural &&
-          target != Target::Head && target != Target::Tail) {
-        // The figure's own side is drawn on the viewer's other side.
-        a.region_side = mods.side != 0 ? -mods.side : ((rng() & 1) ? 1 : -1);
-      }
-      // Arms drawn in the outline (part_rig.h) bend instead of the sides, when there is one on
-      // every side that moves: a girl waving both arms has one lobe, her raised sleeve, and the
-      // sides' bend also swings the arm hanging along her body. Only for arms: a flower's petals
-      // and an octopus's tentacles (limbs) reach out all round, and one lobe of them is no pair.
-      if (a.region == Region::Sides && target == Target::Arms) {
-        const auto& lobes = rig.parts[a.parts[0]].arm_lobes;
-        auto on = [&](int side) { return std::any_of(lobes.begin(), lobes.end(), [&](const ArmLobe& l) { return l.side == side; }); };
-        if (a.region_side != 0 ? on(a.region_side) : on(-1) && on(1)) a.lobes = lobes;
-      }
-      // Otherwise the limbs of the part's silhouette (skeleton_lobes.h) of the role's kind: a
-      // cat's tail, not whichever end of its body the seed picked.
-      bool skeletal = false;
-      if (a.lobes.empty()) {
-        std::vector<ArmLobe> picked;
-        for (const ArmLobe& l : rig.limbs)
-          if (lobe_serves(l.kind, target)) picked.push_back(l);
-        // A winged figure seen from the side (the prompt's bird or insect) shows its far wing
-        // rising behind the near one, where the skeleton's labels see an upright body's head:
-        // with one arm found, the limbs pointing up are its wings, and they beat together. A
-        // dove's near wing bent alone had been no pair, and its whole body's sides swung.
-        const bool winged = target == Target::Arms && (figure == FigureClass::Bird || figure == FigureClass::Insect);
-        if (winged && picked.size() == 1)
-          for (const ArmLobe& l : rig.limbs)
-            if (l.kind == LobeKind::Head && l.pivot.y - l.tip.y > std::fabs(l.tip.x - l.pivot.x)) picked.push_back(l);
-        // As for the outline's arms: one on the side that moves, or a pair when both do.
-        auto on = [&](int side) { return std::any_of(picked.begin(), picked.end(), [&](const ArmLobe& l) { return l.side == side; }); };
-        const bool sided = a.region_side != 0 ? on(a.region_side)
-                                              : target != Target::Arms || (on(-1) && on(1)) || (winged && picked.size() >= 2);
-        if (!picked.empty() && sided) {
-          a.lobes = std::move(picked);
-          a.silhouette = skeletal = true;
-        }
-      }
-      a.direction = a.region == Region::End ? ((rng() & 1) ? 1 : -1) : a.direction;
-      note = std::string("no separate ") + target_name(target) + ": the " +
-             (a.region == Region::Sides ? "sides" : a.region == Region::Lower ? "lower part" : a.region == Region::Top ? "top" : "far end") +
-             " of " + rig.parts[a.parts[0]].name + " bend";
-      if (skeletal)
-        note = std::string("no separate ") + target_name(target) + ": " + std::to_string(a.lobes.size()) + " " +
-               (a.lobes.size() > 1 ? "limbs" : "limb") + " of the figure's silhouette skeleton bend" + (a.lobes.size() > 1 ? "" : "s") + " about " + (a.lobes.size() > 1 ? "their bases" : "its base");
-      else if (!a.lobes.empty())
-        note = std::string("no separate ") + target_name(target) + ": the " + std::to_string(a.lobes.size()) +
-               " arm" + (a.lobes.size() > 1 ? "s" : "") + " drawn in the outline of " + rig.parts[a.parts[0]].name + " bend";
-      a.sign = {1};
-      a.phase = {0};
-    }
+    if (limb_role && !note.empty() && rig.root >= 0 && a.primitive == Primitive::Swing)
+      bend_region(a, target, base, mods, plural, note);
     if (target == Target::Repeated && rig.repeated.empty()) {
       plan.warnings.push_back("'" + words + "': no repeated elements (drops, stars) found; " + verb.name + " is left out");
       return;
@@ -499,6 +443,79 @@ struct Builder {
         a.amp = (mods.speed > 1 ? 2.0 : 1.0) / n;
         spacing = std::to_string(n) + " riders evenly round it: " + (mods.speed > 1 ? "two spacings" : "one spacing") + " of a turn a loop";
       }
+    pick_sides(a, base, mods, plural, note);
+    // One-sided whole-figure motions (lean, bow) go one way and back.
+    if (a.primitive == Primitive::Rock && base.pairing == Pairing::OneSide) a.vertical = 2;
+    // Skip a repeat: the same primitive on the same parts.
+    for (const auto& b : plan.actions)
+      if (b.primitive == a.primitive && b.target == a.target && b.parts == a.parts && b.region == a.region) return;
+    explain(a, verb, target, words, mods, {note, paddle, beat, instead, spacing});
+    plan.actions.push_back(std::move(a));
+  }
+
+  // No separate part for a limb role: a region of a part bends instead (the outline's arms, the
+  // silhouette's limbs, or the region of the part that stands in for them), and `note` says so.
+  void bend_region(PlannedAction& a, Target target, const Action& base, const Modifiers& mods, bool plural, std::string& note) {
+    a.parts = {region_host(rig, target)};
+    a.region = target == Target::Arms || target == Target::Limbs ? Region::Sides
+               : target == Target::Legs ? Region::Lower : target == Target::Head ? Region::Top : Region::End;
+    a.alternating = base.pairing == Pairing::Alternating || (base.pairing == Pairing::OneAtATime && (mods.both || plural));
+    if (a.region == Region::Sides) side_core(rig, a);
+    // (A head or a tail is one: no side to pick.)
+    if ((base.pairing == Pairing::OneSide || base.pairing == Pairing::OneAtATime) && !mods.both && !plural &&
+        target != Target::Head && target != Target::Tail) {
+      // The figure's own side is drawn on the viewer's other side.
+      a.region_side = mods.side != 0 ? -mods.side : ((rng() & 1) ? 1 : -1);
+    }
+    // Arms drawn in the outline (part_rig.h) bend instead of the sides, when there is one on
+    // every side that moves: a girl waving both arms has one lobe, her raised sleeve, and the
+    // sides' bend also swings the arm hanging along her body. Only for arms: a flower's petals
+    // and an octopus's tentacles (limbs) reach out all round, and one lobe of them is no pair.
+    if (a.region == Region::Sides && target == Target::Arms) {
+      const auto& lobes = rig.parts[a.parts[0]].arm_lobes;
+      auto on = [&](int side) { return std::any_of(lobes.begin(), lobes.end(), [&](const ArmLobe& l) { return l.side == side; }); };
+      if (a.region_side != 0 ? on(a.region_side) : on(-1) && on(1)) a.lobes = lobes;
+    }
+    // Otherwise the limbs of the part's silhouette (skeleton_lobes.h) of the role's kind: a
+    // cat's tail, not whichever end of its body the seed picked.
+    bool skeletal = false;
+    if (a.lobes.empty()) {
+      std::vector<ArmLobe> picked;
+      for (const ArmLobe& l : rig.limbs)
+        if (lobe_serves(l.kind, target)) picked.push_back(l);
+      // A winged figure seen from the side (the prompt's bird or insect) shows its far wing
+      // rising behind the near one, where the skeleton's labels see an upright body's head:
+      // with one arm found, the limbs pointing up are its wings, and they beat together. A
+      // dove's near wing bent alone had been no pair, and its whole body's sides swung.
+      const bool winged = target == Target::Arms && (figure == FigureClass::Bird || figure == FigureClass::Insect);
+      if (winged && picked.size() == 1)
+        for (const ArmLobe& l : rig.limbs)
+          if (l.kind == LobeKind::Head && l.pivot.y - l.tip.y > std::fabs(l.tip.x - l.pivot.x)) picked.push_back(l);
+      // As for the outline's arms: one on the side that moves, or a pair when both do.
+      auto on = [&](int side) { return std::any_of(picked.begin(), picked.end(), [&](const ArmLobe& l) { return l.side == side; }); };
+      const bool sided = a.region_side != 0 ? on(a.region_side)
+                                            : target != Target::Arms || (on(-1) && on(1)) || (winged && picked.size() >= 2);
+      if (!picked.empty() && sided) {
+        a.lobes = std::move(picked);
+        a.silhouette = skeletal = true;
+      }
+    }
+    a.direction = a.region == Region::End ? ((rng() & 1) ? 1 : -1) : a.direction;
+    note = std::string("no separate ") + target_name(target) + ": the " +
+           (a.region == Region::Sides ? "sides" : a.region == Region::Lower ? "lower part" : a.region == Region::Top ? "top" : "far end") +
+           " of " + rig.parts[a.parts[0]].name + " bend";
+    if (skeletal)
+      note = std::string("no separate ") + target_name(target) + ": " + std::to_string(a.lobes.size()) + " " +
+             (a.lobes.size() > 1 ? "limbs" : "limb") + " of the figure's silhouette skeleton bend" + (a.lobes.size() > 1 ? "" : "s") + " about " + (a.lobes.size() > 1 ? "their bases" : "its base");
+    else if (!a.lobes.empty())
+      note = std::string("no separate ") + target_name(target) + ": the " + std::to_string(a.lobes.size()) +
+             " arm" + (a.lobes.size() > 1 ? "s" : "") + " drawn in the outline of " + rig.parts[a.parts[0]].name + " bend";
+    a.sign = {1};
+    a.phase = {0};
+  }
+
+  // Which of the action's parts move, and how the pair of them moves (`note` says why a side).
+  void pick_sides(PlannedAction& a, const Action& base, const Modifiers& mods, bool plural, std::string& note) {
     Pairing pairing = base.pairing;
     if (pairing == Pairing::OneSide && (mods.both || plural)) pairing = Pairing::Mirrored;
     if (pairing == Pairing::OneAtATime) pairing = mods.both || plural ? Pairing::Alternating : Pairing::OneSide;
@@ -521,28 +538,24 @@ struct Builder {
     // a fist swings the same way on either side); a one-sided verb's by the seed.
     if (a.region == Region::None)
       pair_up(rig, a, pairing != Pairing::OneSide ? pairing : base.pairing == Pairing::OneAtATime ? Pairing::Mirrored : Pairing::Same, rng);
-    // One-sided whole-figure motions (lean, bow) go one way and back.
-    if (a.primitive == Primitive::Rock && base.pairing == Pairing::OneSide) a.vertical = 2;
-    // Skip a repeat: the same primitive on the same parts.
-    for (const auto& b : plan.actions)
-      if (b.primitive == a.primitive && b.target == a.target && b.parts == a.parts && b.region == a.region) return;
+  }
+
+  // The action's one line for the report: what moves and why, then each non-empty note in order.
+  void explain(PlannedAction& a, const Verb& verb, Target target, const std::string& words, const Modifiers& mods,
+               const std::vector<std::string>& notes) {
     std::vector<std::string> names;
     for (int p : a.parts) names.push_back(rig.parts[p].name);
     a.why = "'" + words + "': " + verb.name + " moves the " +
             (target == Target::Whole ? std::string("whole figure")
              : target == Target::Repeated ? rig.repeated_why
              : std::string(target_name(target)) + " (" + join(names, ", ") + ")");
-    if (!note.empty()) a.why += "; " + note;
-    if (!paddle.empty()) a.why += "; " + paddle;
-    if (!beat.empty()) a.why += "; " + beat;
-    if (!instead.empty()) a.why += "; " + instead;
-    if (!spacing.empty()) a.why += "; " + spacing;
+    for (const std::string& n : notes)
+      if (!n.empty()) a.why += "; " + n;
     if (a.anchored != 0) {
       static const char* sides[] = {"", "left", "right", "top", "bottom"};
       a.why += std::string("; held by a pole at its ") + sides[a.anchored] + ": the wave runs from there";
     }
     if (!mods.words.empty()) a.why += "; " + join(mods.words, ", ");
-    plan.actions.push_back(std::move(a));
   }
 };
 

@@ -1,5 +1,5 @@
 // Arm lobes of one outline (see outline_lobes.h).
-#include "video/outline_lobes.h"
+#include "procedural/outline_lobes.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Procedural candidate videos (see procedural_video.h).
-#include "video/procedural_video.h"
+#include "procedural/procedural_video.h"
 
 #include <opencv2/imgproc.hpp>
 

@@ -1,5 +1,5 @@
 // Hands drawn at the face (see hands_at_head.h).
-#include "video/hands_at_head.h"
+#include "procedural/hands_at_head.h"
 
 #include <algorithm>
 

@@ -1,5 +1,5 @@
 // What a turning wheel carries (see wheel_riders.h).
-#include "video/wheel_riders.h"
+#include "procedural/wheel_riders.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Prompt clauses and explicit plans (see prompt_parse.h).
-#include "video/prompt_parse.h"
+#include "procedural/prompt_parse.h"
 
 #include <algorithm>
 #include <cctype>

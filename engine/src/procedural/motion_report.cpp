@@ -1,13 +1,13 @@
 // motion.json (motion_report, body_maps_json, path_motion_json; motion_plan.h): the rig's
 // parts, the plan's actions with their amplitudes, directions and reasons, and what each path's
 // points do in the target video.
-#include "video/motion_plan.h"
+#include "procedural/motion_plan.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "video/motion_direction.h"
-#include "video/motion_plan_internal.h"
+#include "procedural/motion_direction.h"
+#include "procedural/motion_plan_internal.h"
 #include "geometry/rigid_bodies.h"
 
 namespace svgm {
