@@ -162,4 +162,21 @@ LlmPlan ask_llm_planner(const json& options, const Scene& scene, const Rig& rig,
   return out;
 }
 
+PlannerOutcome run_llm_planner(const json& options, const Scene& scene, const Rig& rig, const std::string& prompt, uint32_t seed,
+                               const std::string& device, const svgm_host* host) {
+  PlannerOutcome out;
+  try {
+    LlmPlan asked = ask_llm_planner(options, scene, rig, prompt, seed, device, host);
+    out.from_llm = true;
+    out.steps = std::move(asked.steps);
+    out.record = {{"planner", "llm"}, {"source", "llm"}, {"model", asked.model}, {"plan", asked.plan}, {"answer", asked.answer}};
+    if (host && host->log) host->log(host, 1, ("video procedural: the llm planner's plan: " + asked.plan).c_str());
+  } catch (const Failure& f) {
+    const std::string why = one_line(f.what());
+    out.record = {{"planner", "llm"}, {"source", "offline"}, {"fallback", why}};
+    if (host && host->log) host->log(host, 2, ("video procedural: planner llm: " + why + "; using the offline planner").c_str());
+  }
+  return out;
+}
+
 }  // namespace svgm::plugin

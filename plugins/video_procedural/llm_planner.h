@@ -40,6 +40,17 @@ struct LlmPlan {
 LlmPlan ask_llm_planner(const nlohmann::json& options, const Scene& scene, const Rig& rig, const std::string& prompt,
                         uint32_t seed, const std::string& device, const svgm_host* host);
 
+// ask_llm_planner with its failure reported: on the terminal (one warning: the reason, then
+// "using the offline planner") and in `record` (motion.json's "planner": source llm with the
+// model, plan and answer, or source offline with the fallback reason).
+struct PlannerOutcome {
+  bool from_llm = false;
+  std::vector<ExplicitStep> steps;  // the model's plan (from_llm), else none
+  nlohmann::json record;
+};
+PlannerOutcome run_llm_planner(const nlohmann::json& options, const Scene& scene, const Rig& rig, const std::string& prompt,
+                               uint32_t seed, const std::string& device, const svgm_host* host);
+
 // The model's answer as a plan line, checked against the rig; chat::Failure naming what is wrong.
 std::vector<ExplicitStep> check_llm_plan(const std::string& answer, const Rig& rig, std::string& plan_line);
 

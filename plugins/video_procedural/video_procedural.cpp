@@ -11,7 +11,6 @@
 // one it would flag for continuity or chaotic motion is made again with smaller amplitudes.
 #include <filesystem>
 
-#include "common/chat_client.h"
 #include "common/plugin_glue.h"
 #include "common/stage_files.h"
 #include "plugin/plugin_options.h"
@@ -58,24 +57,12 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   auto steps = explicit_plan.empty() ? std::vector<svgm::ExplicitStep>{} : svgm::parse_explicit_plan(explicit_plan);
   const svgm::ParsedPrompt parsed = svgm::parse_prompt(prompt);
   // The llm planner's plan stands in for an explicit one; its failure leaves the prompt's.
-  nlohmann::json planner_record;
-  bool llm_plan = false, llm_fallback = false;
+  svgm::plugin::PlannerOutcome asked;
   if (planner == "llm") {
     if (host && host->progress) host->progress(host, 0, "asking the planner model");
-    try {
-      const svgm::plugin::LlmPlan asked =
-          svgm::plugin::ask_llm_planner(options, scene, rig, prompt, static_cast<uint32_t>(req.value("seed", 0)),
-                                        req.value("device", "auto"), host);
-      steps = asked.steps;
-      llm_plan = true;
-      planner_record = {{"planner", "llm"}, {"source", "llm"}, {"model", asked.model}, {"plan", asked.plan}, {"answer", asked.answer}};
-      if (host && host->log) host->log(host, 1, ("video procedural: the llm planner's plan: " + asked.plan).c_str());
-    } catch (const svgm::plugin::chat::Failure& f) {
-      const std::string why = svgm::plugin::chat::one_line(f.what());
-      planner_record = {{"planner", "llm"}, {"source", "offline"}, {"fallback", why}};
-      llm_fallback = true;
-      if (host && host->log) host->log(host, 2, ("video procedural: planner llm: " + why + "; using the offline planner").c_str());
-    }
+    asked = svgm::plugin::run_llm_planner(options, scene, rig, prompt, static_cast<uint32_t>(req.value("seed", 0)),
+                                          req.value("device", "auto"), host);
+    if (asked.from_llm) steps = asked.steps;
   }
   int keyframes = kDefaultKeyframes;
   if (req.contains("stages") && req.at("stages").contains("fitter") && req.at("stages").at("fitter").contains("keyframes") &&
@@ -116,7 +103,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
     std::snprintf(name, sizeof name, "%02d", i);
     const uint32_t seed = static_cast<uint32_t>(req.value("seed", 0) + i);
     svgm::MotionPlan plan = steps.empty() ? svgm::plan_from_prompt(parsed, rig, seed) : svgm::plan_from_steps(steps, rig, seed);
-    if (llm_plan) plan.source = "llm";
+    if (asked.from_llm) plan.source = "llm";
     svgm::fit_plan(scene, rig, plan, o.frames, keyframes);
     std::vector<svgm::Vec2> pts;
     for (int attempt = 0;; ++attempt) {
@@ -149,7 +136,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
       report = svgm::motion_report(scene, rig, plan);
       report["prompt"] = prompt;
       if (!explicit_plan.empty()) report["explicit_plan"] = explicit_plan;
-      if (!planner_record.is_null()) report["planner"] = planner_record;
+      if (!asked.record.is_null()) report["planner"] = asked.record;
       summary = plan.summary();
       if (host && host->log) {
         for (const auto& w : plan.warnings) host->log(host, 2, ("video procedural: " + w).c_str());
@@ -185,7 +172,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   svgm::write_file_atomic(fs::path(req.at("run_dir").get<std::string>()) / "motion.json", svgm::json_text(report, 2) + "\n");
   nlohmann::json r = {{"message", std::to_string(n) + " candidates (" + summary + ")"}, {"candidates", made}};
   // A fallback depends on the network: let the next run ask the model again.
-  if (llm_fallback) r["cache"] = false;
+  if (planner == "llm" && !asked.from_llm) r["cache"] = false;
   return r;
 }
 

@@ -109,6 +109,9 @@ for c in nourl refused hang http500 garbage unknown_part unknown_verb empty two_
      motion $c "j[\"source\"] == \"prompt\" and j[\"planner\"][\"source\"] == \"offline\" and sys.argv[2] in j[\"planner\"][\"fallback\"]" "${why[$c]}" ||
      { head -c 600 "$tmp/$c.err"; false; }'
 done
+check "report.html shows the model's plan, and the planner's fallback as a warning" \
+  'grep -qF "<code class=\"svgm-llm-plan\">wave:arm_left slow, kick:leg_right</code>" "$tmp/valid/report.html" &&
+   grep -q "id=\"svgm-planner-fallback\">The llm planner gave no plan (HTTP 500 from" "$tmp/http500/report.html"'
 check "the API key is in no log.txt, motion.json or terminal output" \
   '! grep -rlF "$key" "$tmp"/valid "$tmp"/echo_key "$tmp"/*.err "$tmp"/*.out'
 check "a fallback is not cached: the next run asks the model again" \
