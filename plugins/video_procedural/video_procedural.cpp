@@ -1,7 +1,9 @@
 // video `procedural`: offline candidate videos of the recoloured SVG moving as the prompt says
 // (engine/src/procedural): the parts get names and a rig (part_rig.h), the prompt's verbs, part
 // nouns and modifiers become a motion plan (prompt_parse.h, motion_plan.h), or
-// stages.video.options.motion gives the plan outright ("flap:wing*, bob:root"). Each candidate
+// stages.video.options.motion gives the plan outright ("flap:wing*, bob:root"), or
+// stages.video.options.planner: llm asks a vision chat model for one in that syntax
+// (llm_planner.h; on any failure the offline planner, and one warning saying why). Each candidate
 // is rendered as raster frames with a colour drift, blur and H.264 compression; candidate i uses
 // seed + i, which varies the amplitudes and, where the prompt leaves a choice, the side.
 // motion.json in the run directory reports the parts and the plan; one line says it on the
@@ -19,6 +21,7 @@
 #include "procedural/motion_plan.h"
 #include "procedural/procedural_video.h"
 #include "svgmotion/utf8_text.h"
+#include "llm_planner.h"
 
 namespace {
 
@@ -35,8 +38,13 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   if (!c.value("path", std::string()).empty())
     throw svgm::Error("stages.video.path is set but the video plugin is 'procedural'; add "
                       "stages.video.plugin=file to fit your own video");
-  const svgm::PluginOptions opt(c.contains("options") ? c.at("options") : nlohmann::json(), "video procedural", {"motion"});
+  const nlohmann::json options = c.contains("options") ? c.at("options") : nlohmann::json();
+  const svgm::PluginOptions opt(options, "video procedural", {"motion", "planner", "url", "model", "api_key_env", "timeout_s"});
   const std::string explicit_plan = opt.string("motion", "");
+  const std::string planner = opt.string("planner", "offline");
+  if (planner != "offline" && planner != "llm") opt.fail("options.planner must be offline or llm, not '" + planner + "'");
+  if (planner == "llm" && !explicit_plan.empty())
+    opt.fail("options.motion gives the plan and options.planner: llm would ask a model for one; set only one");
   const svgm::Scene scene = svgm::read_svg_file(P::file(req, "inputs", "svg"));
   const nlohmann::json& inputs = req.at("inputs");
   const svgm::SourceNames names =
@@ -46,8 +54,16 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   for (const auto& g : scene.groups) group_names.push_back(g.name);
   const svgm::Rig rig = svgm::build_rig(scene, names, group_names);
   const std::string prompt = req.value("prompt", "");
-  const auto steps = explicit_plan.empty() ? std::vector<svgm::ExplicitStep>{} : svgm::parse_explicit_plan(explicit_plan);
+  auto steps = explicit_plan.empty() ? std::vector<svgm::ExplicitStep>{} : svgm::parse_explicit_plan(explicit_plan);
   const svgm::ParsedPrompt parsed = svgm::parse_prompt(prompt);
+  // The llm planner's plan stands in for an explicit one; its failure leaves the prompt's.
+  svgm::plugin::PlannerOutcome asked;
+  if (planner == "llm") {
+    if (host && host->progress) host->progress(host, 0, "asking the planner model");
+    asked = svgm::plugin::run_llm_planner(options, scene, rig, prompt, static_cast<uint32_t>(req.value("seed", 0)),
+                                          req.value("device", "auto"), host);
+    if (asked.from_llm) steps = asked.steps;
+  }
   int keyframes = kDefaultKeyframes;
   if (req.contains("stages") && req.at("stages").contains("fitter") && req.at("stages").at("fitter").contains("keyframes") &&
       req.at("stages").at("fitter").at("keyframes").is_number_integer())
@@ -87,6 +103,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
     std::snprintf(name, sizeof name, "%02d", i);
     const uint32_t seed = static_cast<uint32_t>(req.value("seed", 0) + i);
     svgm::MotionPlan plan = steps.empty() ? svgm::plan_from_prompt(parsed, rig, seed) : svgm::plan_from_steps(steps, rig, seed);
+    if (asked.from_llm) plan.source = "llm";
     svgm::fit_plan(scene, rig, plan, o.frames, keyframes);
     std::vector<svgm::Vec2> pts;
     for (int attempt = 0;; ++attempt) {
@@ -119,6 +136,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
       report = svgm::motion_report(scene, rig, plan);
       report["prompt"] = prompt;
       if (!explicit_plan.empty()) report["explicit_plan"] = explicit_plan;
+      if (!asked.record.is_null()) report["planner"] = asked.record;
       summary = plan.summary();
       if (host && host->log) {
         for (const auto& w : plan.warnings) host->log(host, 2, ("video procedural: " + w).c_str());
@@ -152,7 +170,10 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   }
   report["candidates"] = made;
   svgm::write_file_atomic(fs::path(req.at("run_dir").get<std::string>()) / "motion.json", svgm::json_text(report, 2) + "\n");
-  return {{"message", std::to_string(n) + " candidates (" + summary + ")"}, {"candidates", made}};
+  nlohmann::json r = {{"message", std::to_string(n) + " candidates (" + summary + ")"}, {"candidates", made}};
+  // A fallback depends on the network: let the next run ask the model again.
+  if (planner == "llm" && !asked.from_llm) r["cache"] = false;
+  return r;
 }
 
 }  // namespace

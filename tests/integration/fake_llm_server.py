@@ -42,6 +42,21 @@ text part, a "Candidate NAME:" part and PNG frames of that one candidate. Its re
     none_viable        every constraint "No", not viable
     malformed, hang, http500   as for the grouper
 
+A request whose instructions give the plan syntax ("verb:part") is the procedural video's `llm`
+planner: a text part listing the parts ("1. NAME (...") and the motion asked for, then the
+drawing as a PNG image_url; temperature 0 and an integer seed. Its replies, by model name:
+
+    plan_valid         wave:arm_left slow, kick:leg_right  (tests/data/examples/man.svg's part names)
+    plan_fenced        the same inside ``` fences, in backticks
+    plan_garbage       a sentence, not a plan
+    plan_unknown_part  wave:tentacle_left
+    plan_unknown_verb  teleport:head
+    plan_empty         an empty answer
+    plan_two_lines     two plan items on two lines
+    plan_auth          the valid plan if "Authorization: Bearer test-secret" is sent, else 401
+    plan_echo_key      HTTP 401 echoing the bearer token sent (as echo_key)
+    hang, http500      as for the grouper
+
 With --log, every request body is appended to FILE as one JSON line.
 """
 import argparse
@@ -187,6 +202,38 @@ def check_score_request(body):
     return None, label["text"][len("Candidate "):-1]
 
 
+PLAN = "wave:arm_left slow, kick:leg_right"
+PLAN_ANSWERS = {
+    "plan_valid": PLAN,
+    "plan_fenced": "```\n`" + PLAN + "`\n```",
+    "plan_garbage": "Sure! The man should wave his left arm slowly.",
+    "plan_unknown_part": "wave:tentacle_left",
+    "plan_unknown_verb": "teleport:head",
+    "plan_empty": "",
+    "plan_two_lines": "wave:arm_left\nkick:leg_right",
+}
+
+
+def is_plan_request(body):
+    return instructions_mention(body, "verb:part")
+
+
+def check_plan_request(body):
+    """The planner's request shape (and a seed); None or a one-line complaint."""
+    if chat_problem(body):
+        return chat_problem(body)
+    if not isinstance(body.get("seed"), int):
+        return "no integer seed"
+    parts = body["messages"][1].get("content")
+    if not isinstance(parts, list) or len(parts) != 2 or parts[0].get("type") != "text":
+        return "the user message is not [text, image]"
+    text = parts[0]["text"]
+    if "Motion asked for:" not in text or "1. " not in text:
+        return "the text does not list the parts and the motion"
+    problem = check_png_url(parts[1])
+    return "the image: " + problem if problem else None
+
+
 def verdicts(yes):
     v = "Yes" if yes else "No"
     return {"no_3d_rotation": v, "no_new_elements": v, "flat_colours": v, "continuity": v,
@@ -233,6 +280,8 @@ class Handler(BaseHTTPRequestHandler):
             with self.server.lock, open(self.server.log_file, "a") as f:
                 f.write(json.dumps({"headers": dict(self.headers), "body": body}) + "\n")
         model = body.get("model")
+        if is_plan_request(body):
+            return self.plan_reply(body, model)
         if is_score_request(body) and model not in ("malformed", "hang", "http500"):
             problem, name = check_score_request(body)
             if problem:
@@ -289,6 +338,27 @@ class Handler(BaseHTTPRequestHandler):
                 return self.reply(401, {"error": {"message": "missing or wrong API key"}})
             return self.reply(200, completion(json.dumps(GROUPS)))
         return self.reply(404, {"error": {"message": "unknown model " + model}})
+
+
+    def plan_reply(self, body, model):
+        problem = check_plan_request(body)
+        if problem:
+            return self.reply(400, {"error": {"message": problem}})
+        if model in PLAN_ANSWERS:
+            return self.reply(200, completion(PLAN_ANSWERS[model]))
+        if model == "plan_auth":
+            if self.headers.get("Authorization") != "Bearer test-secret":
+                return self.reply(401, {"error": {"message": "missing or wrong API key"}})
+            return self.reply(200, completion(PLAN))
+        if model == "plan_echo_key":
+            sent = (self.headers.get("Authorization") or "")[len("Bearer "):]
+            return self.reply(401, "x" * 190 + sent + " is not a key we know")
+        if model == "hang":
+            time.sleep(self.server.hang)
+            return self.reply(200, completion(PLAN))
+        if model == "http500":
+            return self.reply(500, {"error": {"message": "the fake model fell over"}})
+        return self.reply(404, {"error": {"message": "unknown model " + str(model)}})
 
 
 def main():

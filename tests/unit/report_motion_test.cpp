@@ -127,6 +127,24 @@ TEST_SUITE("report") {
     CHECK(s.find("data-action=\"2\" x=") == std::string::npos);
   }
 
+  TEST_CASE("a plan from the llm planner names the model and shows its plan; the planner's fallback is a warning") {
+    json m = waving_man();
+    m["source"] = "llm";
+    m["planner"] = {{"planner", "llm"}, {"source", "llm"}, {"model", "qwen<vl>"}, {"plan", "wave:arm<r>, hop:whole"}, {"answer", "x"}};
+    const std::string s = motion_section(m, "");
+    CHECK(s.find("<p>Planned from a vision model&#39;s plan (planner llm, qwen&lt;vl&gt;) for <q class=\"svgm-motion-prompt\">") !=
+          std::string::npos);
+    CHECK(s.find("<p>Its plan: <code class=\"svgm-llm-plan\">wave:arm&lt;r&gt;, hop:whole</code></p>") != std::string::npos);
+    CHECK(s.find("svgm-planner-fallback") == std::string::npos);
+    json off = waving_man();
+    off["planner"] = {{"planner", "llm"}, {"source", "offline"}, {"fallback", "HTTP 500 from <url>"}};
+    const std::string f = motion_section(off, "");
+    CHECK(f.find("<p>Planned from the prompt <q") != std::string::npos);
+    CHECK(f.find("<p class=\"svgm-warn\" id=\"svgm-planner-fallback\">The llm planner gave no plan (HTTP 500 from &lt;url&gt;): "
+                 "planned offline from the prompt's words.</p>") != std::string::npos);
+    CHECK(f.find("svgm-llm-plan") == std::string::npos);
+  }
+
   TEST_CASE("the fallback sway is said as a warning, its row marked; every word understood is no caveat") {
     const std::string s = motion_section(fallback_sway(), "data:image/png;base64,AAAA");
     CHECK(s.find("<p class=\"svgm-warn\" id=\"svgm-fallback\">No motion word in the prompt was understood: the figure only sways "

@@ -206,11 +206,20 @@ std::string motion_section(const json& motion, const std::string& drawing_uri) {
   std::string s = "<section id=\"svgm-motion\"><h2>The motion</h2>";
   if (!motion.is_object()) return s + "<p>No motion.json: the target video did not come from the prompt's words.</p></section>\n";
   const std::string source = str(motion, "source"), prompt = str(motion, "prompt");
-  s += "<p>Planned from " + html_escape(source == "prompt" ? "the prompt" : source.empty() ? "?" : source);
+  // The procedural video's llm planner (motion.json "planner"): whose plan it is, or why not.
+  const json planner = motion.contains("planner") && motion["planner"].is_object() ? motion["planner"] : json::object();
+  s += "<p>Planned from " + html_escape(source == "prompt" ? "the prompt" : source == "llm" ? "a vision model's plan (planner llm"
+                                        + (str(planner, "model").empty() ? "" : ", " + str(planner, "model")) + ") for"
+                                        : source.empty() ? "?" : source);
   if (!prompt.empty()) s += " <q class=\"svgm-motion-prompt\">" + html_escape(prompt) + "</q>";
   if (motion.contains("keyframes") && motion["keyframes"].is_number_integer() && motion["keyframes"].get<int>() > 0)
     s += "; the fitter follows it with " + html_escape(std::to_string(motion["keyframes"].get<int>())) + " keyframes";
   s += ".</p>";
+  if (source == "llm" && !str(planner, "plan").empty())
+    s += "<p>Its plan: <code class=\"svgm-llm-plan\">" + html_escape(str(planner, "plan")) + "</code></p>";
+  if (!str(planner, "fallback").empty())
+    s += "<p class=\"svgm-warn\" id=\"svgm-planner-fallback\">The llm planner gave no plan (" + html_escape(str(planner, "fallback")) +
+         "): planned offline from the prompt's words.</p>";
   if (is_fallback(motion))
     s += "<p class=\"svgm-warn\" id=\"svgm-fallback\">No motion word in the prompt was understood: the figure only sways "
          "gently (a fallback, not what the prompt asked). Say the motion with a verb such as wave, walk, hop, spin or flap.</p>";
