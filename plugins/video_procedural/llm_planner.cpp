@@ -13,7 +13,7 @@
 #include "svgmotion/png_io.h"
 #include "svgmotion/render_size.h"
 #include "svgmotion/utf8_text.h"
-#include "video/motion_plan.h"
+#include "procedural/motion_plan.h"
 
 namespace svgm::plugin {
 

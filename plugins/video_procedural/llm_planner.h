@@ -23,8 +23,8 @@
 
 #include "svgmotion/plugin.h"
 #include "svgmotion/scene.h"
-#include "video/part_rig.h"
-#include "video/prompt_parse.h"
+#include "procedural/part_rig.h"
+#include "procedural/prompt_parse.h"
 
 namespace svgm::plugin {
 
