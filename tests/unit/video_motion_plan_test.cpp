@@ -1268,3 +1268,47 @@ TEST_CASE("a bird seen from the side: its near wing and the far one rising behin
 }
 
 }  // TEST_SUITE
+
+TEST_CASE("a tail with no limb of its own bends at the end away from the head, whatever the seed") {
+  // A lying body drawn as one bar (its skeleton has no limbs) and a head above its left half:
+  // the far-end bend of the tail is the right end for every seed (by the seed's coin it was
+  // the head's end of half the mermaids).
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="240" height="200">
+           <g><path d="M 20 100 L 220 100 L 220 140 L 20 140 Z" fill="#a60"/></g>
+           <g><path d="M 50 60 L 90 55 L 95 95 L 55 100 Z" fill="#fc9"/></g></svg>)", "lying.svg");
+  const Rig rig = build_rig(s, {});
+  int head = -1;
+  for (size_t i = 0; i < rig.parts.size(); ++i)
+    if (rig.parts[i].role == Role::Head) head = static_cast<int>(i);
+  REQUIRE(head >= 0);
+  for (uint32_t seed = 0; seed < 6; ++seed) {
+    const MotionPlan plan = plan_from_prompt(parse_prompt("the mermaid flicks her tail"), rig, seed);
+    REQUIRE(plan.actions.size() == 1);
+    const PlannedAction& a = plan.actions[0];
+    INFO(a.why);
+    REQUIRE(a.region == Region::End);
+    CHECK(a.direction == 1);
+    const int F = 13;
+    const auto pts = animate_plan(s, rig, plan, F);
+    double left = 0, right = 0;
+    each_move(pts, F, [&](Vec2 rest, Vec2 m) {
+      double& end = rest.x < 120 ? left : right;
+      end = std::max(end, std::hypot(m.x, m.y));
+    });
+    CHECK(left == 0.0);
+    CHECK(right > 8.0);
+  }
+}
+
+TEST_CASE("a head swivels by turning on its neck and back, not round") {
+  const Fixture fx("stick_figure.svg");
+  const MotionPlan plan = fx.plan("the owl swivels its head");
+  REQUIRE(plan.actions.size() == 1);
+  const PlannedAction& a = plan.actions[0];
+  INFO(a.why);
+  CHECK(a.primitive == Primitive::Swing);
+  REQUIRE(a.parts.size() == 1);
+  CHECK(fx.rig.parts[a.parts[0]].role == Role::Head);
+  // A wheel named by the prompt still spins round.
+}

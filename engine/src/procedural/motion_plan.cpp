@@ -227,6 +227,27 @@ int region_host(const Rig& rig, Target t) {
   return best;
 }
 
+// Which side of part `host` its head is on, as the viewer sees it (-1 left, 1 right; 0 when
+// nothing shows it or it is over the middle): the middle of the parts whose role is the head,
+// by area, else the tips of the silhouette's head limbs. A tail bends at the other end: by the
+// seed's coin it was the head of half the mermaids and tigers that flicked it.
+int head_side(const Rig& rig, int host) {
+  const RigBox& B = rig.parts[host].box;
+  double sum = 0, weight = 0;
+  for (size_t i = 0; i < rig.parts.size(); ++i)
+    if (rig.parts[i].role == Role::Head && static_cast<int>(i) != host && !rig.parts[i].box.empty()) {
+      const double w = std::max(rig.parts[i].box.area(), 1e-12);
+      sum += w * rig.parts[i].box.centre().x;
+      weight += w;
+    }
+  if (weight == 0)
+    for (const ArmLobe& l : rig.limbs)
+      if (l.kind == LobeKind::Head) sum += l.tip.x, weight += 1;
+  if (weight == 0) return 0;
+  const double dx = sum / weight - B.centre().x;
+  return std::fabs(dx) < kHeadOffCentre * B.w() ? 0 : dx < 0 ? -1 : 1;
+}
+
 // The still core of a Sides bend: the arms are what reaches out beyond the body below them.
 // When the bending part sits on the root (a shirt with its sleeves above the trousers), the
 // root's width; when it is the root (a ghost, a bat), the width of its lowest quarter (the
@@ -372,6 +393,14 @@ struct Builder {
       amp = kPartAmplitude[static_cast<size_t>(Primitive::Swing)];
       beat = "limbs beat back and forth: a swing";
     }
+    // Nor do they turn full circle: a spin aimed at a head, a tail or a limb ("the owl swivels
+    // its head") turns it on its joint and back. Spun round, the owl's head had no part to turn
+    // and the plan dropped it for the owl's own flap. Wheels, rotors and named parts still spin.
+    if (a.primitive == Primitive::Spin && (is_limb_target(target) || target == Target::Head)) {
+      a.primitive = Primitive::Swing;
+      amp = kPartAmplitude[static_cast<size_t>(Primitive::Swing)];
+      beat = "heads, tails and limbs turn on their joints, not round: a swing";
+    }
     std::uniform_real_distribution<double> U(0, 1);
     a.amp = amp * mods.size * (a.primitive == Primitive::Spin ? 1 : 0.85 + 0.3 * U(rng));
     a.cycles = std::max(1, static_cast<int>(std::lround(base.cycles * mods.speed)));
@@ -500,7 +529,12 @@ struct Builder {
         a.silhouette = skeletal = true;
       }
     }
-    a.direction = a.region == Region::End ? ((rng() & 1) ? 1 : -1) : a.direction;
+    // A tail leaves the end away from the head; the seed's coin only when no head shows which.
+    const int coin = (rng() & 1) ? 1 : -1;
+    if (a.region == Region::End) {
+      const int head = head_side(rig, a.parts[0]);
+      a.direction = head != 0 ? -head : coin;
+    }
     note = std::string("no separate ") + target_name(target) + ": the " +
            (a.region == Region::Sides ? "sides" : a.region == Region::Lower ? "lower part" : a.region == Region::Top ? "top" : "far end") +
            " of " + rig.parts[a.parts[0]].name + " bend";

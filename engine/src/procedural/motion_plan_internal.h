@@ -78,6 +78,9 @@ inline constexpr double kHeldMaxShare = 0.1;
 
 // A rock aimed at a part turns it by at most this many times the rock's angle (Builder::add).
 inline constexpr double kRockToPartMax = 4;
+// head_side: the head shows a tail's end when its middle is this share of the body's width off
+// the body's middle.
+inline constexpr double kHeadOffCentre = 0.1;
 
 // The unit of a primitive's amplitude (motion_verbs.h), as motion.json names it.
 const char* unit_of(Primitive p);
