@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The source tree's shape (docs/layout.md): no engine folder includes one that depends on it,
-# the include-graph script finds a cycle when there is one, and every relative link of the
-# README and docs/ resolves.
+# the include-graph script finds a cycle when there is one, no file is over 800 lines nor a
+# function over 150 unless tests/tools/code_sizes.allow keeps it (and says why), and every
+# relative link of the README and docs/ resolves.
 # Usage: tree_test.sh SOURCE_DIR
 set -u
 src=$1
@@ -35,6 +36,14 @@ for md in "$src/README.md" "$src"/docs/*.md; do
   done < <(grep -oE '\]\([^)]+\)' "$md" | sed -E 's/^\]\(//; s/\)$//')
 done
 check "every relative link of the README and docs/ resolves ${missing:+($missing)}" '[[ -z $missing ]]'
+python3 "$src/tests/tools/code_sizes.py" "$src" >"$tmp/sizes" 2>&1
+rc=$?
+check "no file over 800 lines nor function over 150 that code_sizes.allow does not keep ($(tail -1 "$tmp/sizes"))" '[[ $rc -eq 0 ]]'
+mkdir -p "$tmp/sized/engine/src"
+{ echo 'int long_one() {'; for i in $(seq 1 160); do echo "  int v$i = $i;"; done; echo '  return 0;'; echo '}'; } >"$tmp/sized/engine/src/long.cpp"
+python3 "$src/tests/tools/code_sizes.py" "$tmp/sized" --allow /dev/null >"$tmp/sized.out" 2>&1
+rc=$?
+check "a made-up function of 163 lines is found, and only it" '[[ $rc -eq 1 ]] && grep -q "^engine/src/long.cpp:1: long_one: 163 lines$" "$tmp/sized.out" && [[ $(grep -c "lines$" "$tmp/sized.out") -eq 1 ]]'
 check "the README is a five-minute read (at most 150 lines)" '[[ $(wc -l <"$src/README.md") -le 150 ]]'
 
 echo "$fails failed"
