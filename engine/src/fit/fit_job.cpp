@@ -163,8 +163,9 @@ void FitRun::prepare_target() {
   scan = scan_frames(*target_path, size.width);
   to.stabilise = job.stabilise.value_or(scan.shaking);
   if (scan.collapse()) to.frames = spread_over_poses(scan.poses, keyframes);
-  log::debug("fit: frame scan: %d frames, %zu distinct, cadence %d; whole-frame jitter %.3f px, step %.3f px (fitting width)%s",
-             scan.frames, scan.distinct.size(), scan.cadence, scan.jitter_fit_px, scan.step_fit_px, scan.shaking ? ": shaking" : "");
+  log::debug("fit: frame scan: %d frames, %zu distinct, cadence %d; whole-frame jitter %.3f px, step %.3f px (fitting width), "
+             "rigid residual %.2f%s", scan.frames, scan.distinct.size(), scan.cadence, scan.jitter_fit_px, scan.step_fit_px,
+             scan.rigid_residual, scan.shaking ? ": shaking" : "");
   to.denoise_radius = job.denoise_radius;
   // The refinement's load reuses these keyframes when it works at the same size (a 512-px video
   // fitted at 256 and refined at 512 denoises at 512 both times); released once it has.

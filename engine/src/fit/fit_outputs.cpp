@@ -195,6 +195,7 @@ void FitRun::write_report() {
   report["target_frames"]["cadence"] = scan.cadence;
   report["target_frames"]["poses"] = scan.poses.size();
   report["target_frames"]["frame_jitter_px"] = scan.jitter_fit_px;
+  report["target_frames"]["frame_rigid_residual"] = scan.rigid_residual;
   report["target_frames"]["stabilise"] = {{"on", to.stabilise}, {"decided", job.stabilise ? "option" : "target"},
                                           {"shaking", scan.shaking}};
   if (to.stabilise) {

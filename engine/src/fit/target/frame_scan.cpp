@@ -70,7 +70,7 @@ void find_cadence(const std::vector<int>& run_start, FrameScan& scan) {
   if (N > 0 && scan.poses.back() != N - 1) scan.poses.push_back(N - 1);
 }
 
-std::vector<std::array<double, 2>> frame_path(const std::vector<cv::Mat>& frames) {
+std::vector<std::array<double, 2>> frame_path(const std::vector<cv::Mat>& frames, std::vector<double>* rigid_residual) {
   std::vector<std::array<double, 2>> path;
   if (frames.empty()) return path;
   path.push_back({0, 0});
@@ -81,12 +81,19 @@ std::vector<std::array<double, 2>> frame_path(const std::vector<cv::Mat>& frames
     cv::Mat cur = 255 - frames[i];
     const cv::Point2d d = cv::phaseCorrelate(prev, cur, window);
     path.push_back({path.back()[0] + d.x, path.back()[1] + d.y});
+    if (rigid_residual) {
+      cv::Mat moved;
+      const cv::Matx23d m(1, 0, d.x, 0, 1, d.y);
+      cv::warpAffine(prev, moved, m, prev.size(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, 0);
+      const double before = cv::norm(cur, prev, cv::NORM_L1), after = cv::norm(cur, moved, cv::NORM_L1);
+      rigid_residual->push_back(before > 0 ? after / before : 1);
+    }
     prev = cur;
   }
   return path;
 }
 
-void judge_shake(const std::vector<std::array<double, 2>>& path, FrameScan& scan) {
+void judge_shake(const std::vector<std::array<double, 2>>& path, const std::vector<double>& rigid_residual, FrameScan& scan) {
   std::vector<double> off, step;
   for (size_t i = 1; i + 1 < path.size(); ++i)
     off.push_back(std::hypot(path[i][0] - 0.5 * (path[i - 1][0] + path[i + 1][0]),
@@ -94,9 +101,10 @@ void judge_shake(const std::vector<std::array<double, 2>>& path, FrameScan& scan
   for (size_t i = 1; i < path.size(); ++i) step.push_back(std::hypot(path[i][0] - path[i - 1][0], path[i][1] - path[i - 1][1]));
   scan.jitter_fit_px = median(off);
   scan.step_fit_px = median(step);
+  scan.rigid_residual = rigid_residual.empty() ? 1 : median(rigid_residual);
   // Medians: a hop or a sudden turn moves one or two points of the path, shake all of them.
   scan.shaking = off.size() >= 3 && scan.jitter_fit_px >= kShakeMinFitPx &&
-                 scan.jitter_fit_px >= kShakeMinStepShare * scan.step_fit_px;
+                 scan.jitter_fit_px >= kShakeMinStepShare * scan.step_fit_px && scan.rigid_residual <= kShakeMaxRigidResidual;
 }
 
 FrameScan scan_frames(const std::filesystem::path& source, int fit_width) {
@@ -130,10 +138,11 @@ FrameScan scan_frames(const std::filesystem::path& source, int fit_width) {
   // jumps, which is not shake.
   std::vector<cv::Mat> poses;
   for (int i : scan.distinct) poses.push_back(grey[static_cast<size_t>(i)]);
-  std::vector<std::array<double, 2>> path = frame_path(poses);
+  std::vector<double> rigid;
+  std::vector<std::array<double, 2>> path = frame_path(poses, &rigid);
   for (auto& p : path)
     for (double& v : p) v *= double(fit_width) / w;
-  judge_shake(path, scan);
+  judge_shake(path, rigid, scan);
   return scan;
 }
 

@@ -36,8 +36,17 @@ constexpr double kHeldMaxDiff = 10;
 // which the clip shakes...
 constexpr double kShakeMinFitPx = 0.35;
 // ...when it is also this large a share of the median step: a fast non-rigid motion wobbles a
-// whole-frame registration in proportion to its steps.
+// whole-frame registration in proportion to its steps...
 constexpr double kShakeMinStepShare = 0.35;
+// ...and when the step's translation explains the frame's change: the frame moved by it differs
+// from the next by at most this share of what the two frames differ by (median over steps).
+// Shake moves the whole frame (1-2 px jitter on the non-rigid bench clips: octopus 0.83 at a
+// 256-px video, parrot 0.90 at 512); a figure's own motion bends it (the same clips without
+// jitter 1.00-1.01; 6 poses played back and forth 0.99, a loop at 8 fps in one second 0.96),
+// and a path sampled that coarsely meets the two bounds above as shake does. The margin is
+// thin: a figure that moves rigidly and abruptly (a hop sampled at a few frames) can pass for
+// shake, and --no-stabilise is then the user's.
+constexpr double kShakeMaxRigidResidual = 0.93;
 
 // A clip at a lower frame rate shows its poses in runs of one length, its cadence (3 at 8 fps
 // in 24). Runs of many lengths are a figure that stops now and then: every frame is its own.
@@ -51,6 +60,7 @@ struct FrameScan {
   std::vector<int> distinct;   // the frames that start a run (each a pose of its own), increasing
   double jitter_fit_px = 0;    // the path's median distance from its neighbours' mean, fitting px
   double step_fit_px = 0;      // the path's median step between distinct frames, fitting px
+  double rigid_residual = 1;   // median over steps: change left once the step's shift is undone
   bool shaking = false;        // jitter_fit_px and its share of the step are both over the bounds
   // The cadence (1: none), and the frames that show a pose of their own: every frame without a
   // cadence; with one, each run's first frame and every cadence-th frame after it in a longer
@@ -70,11 +80,13 @@ void find_cadence(const std::vector<int>& run_start, FrameScan& scan);
 std::vector<int> held_runs(const std::vector<cv::Mat>& thumbs, double max_diff = kHeldMaxDiff);
 
 // The whole frame's path over `frames` (grey CV_32F thumbnails, one size, ink dark), in
-// thumbnail pixels: (0, 0) at the first, then the sum of the phase-correlation steps.
-std::vector<std::array<double, 2>> frame_path(const std::vector<cv::Mat>& frames);
+// thumbnail pixels: (0, 0) at the first, then the sum of the phase-correlation steps; and, when
+// asked, each step's rigid residual (the mean difference left once the step's shift is undone,
+// over the mean difference).
+std::vector<std::array<double, 2>> frame_path(const std::vector<cv::Mat>& frames, std::vector<double>* rigid_residual = nullptr);
 
-// The scan's shake figures from a path in fitting pixels (jitter_fit_px, step_fit_px, shaking).
-void judge_shake(const std::vector<std::array<double, 2>>& path, FrameScan& scan);
+// The scan's shake figures from a path in fitting pixels and its steps' rigid residuals.
+void judge_shake(const std::vector<std::array<double, 2>>& path, const std::vector<double>& rigid_residual, FrameScan& scan);
 
 // Reads every frame of `source` (a video or a PNG folder, as load_target does) at a small size,
 // a few dozen at a time, and scans it; `fit_width` is the width the fit works at.
