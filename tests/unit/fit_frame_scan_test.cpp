@@ -115,6 +115,16 @@ TEST_CASE("frame scan: runs of one length are a cadence, a figure that stops now
   find_cadence(runs, s);
   CHECK(s.cadence == 1);
   CHECK(s.poses.size() == 13);
+  // A path that zigzags a pixel every step is shake when each step's shift explains the frame's
+  // change, and a figure's own abrupt motion (6 poses played back and forth) when it does not.
+  std::vector<std::array<double, 2>> zigzag;
+  for (int i = 0; i < 12; ++i) zigzag.push_back({i % 2 ? 1.0 : -1.0, 0});
+  FrameScan z;
+  judge_shake(zigzag, std::vector<double>(11, 0.6), z);
+  CHECK(z.shaking);
+  judge_shake(zigzag, std::vector<double>(11, 1.0), z);
+  CHECK_FALSE(z.shaking);
+  CHECK(z.jitter_fit_px == doctest::Approx(2.0));
   // Spread over the poses: all of them when there are fewer than asked for.
   CHECK(spread_over_poses({0, 3, 6, 9, 12, 14}, 15) == std::vector<int>{0, 3, 6, 9, 12, 14});
   CHECK(spread_over_poses({0, 3, 6, 9, 12, 15, 18, 21, 24}, 5) == std::vector<int>{0, 6, 12, 18, 24});
