@@ -50,6 +50,7 @@ int cmd_fit(const std::vector<std::string>& argv) {
                              "--precision", "--inbetweens", "--max-segment", "--chroma-weight", "--denoise",
                              "--max-keyframes", "--start"},
                             {"--resume", "--no-track", "--no-gate", "--no-colour-correction", "--no-blur-matching", "--stabilise",
+                             "--no-stabilise",
                              "--group-transforms", "--all-iterations", "--force", "--full"});
   if (a.positional.size() != 1)
     throw UsageError("fit: expected one input SVG (svgmotion fit IN.svg --target VIDEO -o OUT_DIR)");
@@ -100,7 +101,9 @@ int cmd_fit(const std::vector<std::string>& argv) {
       job.chroma_weight = v;
     }
   }
-  job.stabilise = a.has("--stabilise");
+  if (a.has("--stabilise") && a.has("--no-stabilise")) throw UsageError("fit: --stabilise and --no-stabilise contradict each other");
+  if (a.has("--stabilise")) job.stabilise = true;
+  if (a.has("--no-stabilise")) job.stabilise = false;
   job.denoise_radius = a.get_int("--denoise", job.denoise_radius, 0, kMaxDenoiseRadius);
   job.decimals = a.get_int("--precision", -1, 0, kMaxDecimals);  // -1: measured
   job.compact = !a.has("--full");

@@ -120,6 +120,7 @@ Fits the SVG's paths to a target video (mp4, webm, avi, mov, or a folder of numb
                          iterations (default auto: twice the fitting width when the video
                          has at least 1.5x it; 0: off)
   --stabilise            remove camera shake (the whole frame jittering) from the video first
+                         (default: when the video is measured to shake; --no-stabilise: never)
   --denoise R            average each sampled frame with its R neighbours on either side, moved
                          onto it by optical flow, against codec noise (default 2; 0..4; 0: off)
   --no-colour-correction compare with the video's colours as they are (default: each frame's

@@ -66,7 +66,11 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   else if (deform != "field") throw std::runtime_error("stages.fitter.deform must be field or free, not '" + deform + "'");
   job.loop = svgm::parse_loop_mode(c.value("loop", "loop"), "stages.fitter.loop");
   job.gate = c.value("gate", true);
-  job.stabilise = c.value("stabilise", false);
+  // stabilise: auto (the default: when the video shakes, fit/target/frame_scan.h), true or false.
+  const nlohmann::json st = c.value("stabilise", nlohmann::json("auto"));
+  if (st.is_boolean()) job.stabilise = st.get<bool>();
+  else if (!st.is_string() || st.get<std::string>() != "auto")
+    throw std::runtime_error("stages.fitter.stabilise must be auto, true or false, not '" + st.dump() + "'");
   job.denoise_radius = c.value("denoise", job.denoise_radius);
   // chroma_weight: auto (the default: calibrated only when the video's chroma is softer than
   // its luma, a codec's damage; a clean render keeps 1) or a number in (0, 1].

@@ -2,7 +2,7 @@
 """Non-rigid known-motion targets for judging fits at display size (needs librsvg through gi).
 
   nonrigid_target.py X.svg OUTDIR [--frames 49] [--size 256] [--hires 1024] [--seed 0]
-                     [--degrade NAME] [--hold K]
+                     [--degrade NAME] [--hold K] [--pingpong P]
 
 Renders X.svg with librsvg (not our renderer) at twice the hires width, deforms it with a
 moving-least-squares *rigid* warp (Schaefer, McPhail and Warren, "Image deformation using
@@ -24,6 +24,11 @@ stay clean, so the fit is judged against what should have been generated):
             when everything the figure's motion (one swing per handle) does not also have is
             taken out. With --hold 1 no stabiliser can leave less; fitting this video is their
             bound (the clean fit is the bound when a part holds still)
+
+--pingpong P samples the motion at P poses (from rest to the middle of the loop, its far
+extreme) and plays them back and forth, one pose a frame (0, 1, .., P-1, .., 1, 0, 1, ..): an
+abrupt target whose every frame differs a lot from the next (issue 38's acceptance: 6 poses over
+24 frames). The clean frames are those poses too.
 
 --hold K keeps the anchor and the K - 1 handles nearest it still (default 1: the anchor alone):
 a body that holds while its limbs move, the usual shape of a character animation ("the man
@@ -204,6 +209,7 @@ def main(argv):
     frames, size = int(opts.get("--frames", 49)), int(opts.get("--size", 256))
     hires, seed = int(opts.get("--hires", 1024)), int(opts.get("--seed", 0))
     defect, hold = opts.get("--degrade", ""), int(opts.get("--hold", 1))
+    pingpong = int(opts.get("--pingpong", 0))
     big = render(svg, 2 * hires)
     h, w = big.shape[:2]
     centres, anchor = handles(cv2.resize(big, (w // 8, h // 8), interpolation=cv2.INTER_AREA), 7, seed)
@@ -216,6 +222,9 @@ def main(argv):
         state["inband"] = inband_shake(np.random.default_rng(seed + 7), frames)
     for i in range(frames):
         t = i / (frames - 1)
+        if pingpong > 1:  # pose j of P, back and forth
+            m = i % (2 * (pingpong - 1))
+            t = 0.5 * (m if m < pingpong else 2 * (pingpong - 1) - m) / (pingpong - 1)
         q = motion(centres, anchor, t, seed, hold)
         f = warp(big, centres, q, held=held_handles(centres, anchor, hold) if hold > 1 else ())
         hi = cv2.resize(f, (hires, round(hires * h / w)), interpolation=cv2.INTER_AREA)

@@ -158,7 +158,14 @@ void FitRun::prepare_target() {
   size = render_size(scene, job.width);
   to.keyframes = keyframes;
   to.white_threshold = job.mask_threshold;
-  to.stabilise = job.stabilise;
+  // The clip at a glance (frame_scan.h): a lower frame rate's repeats are collapsed to the
+  // poses they hold, and a shaking clip is stabilised unless told otherwise.
+  scan = scan_frames(*target_path, size.width);
+  to.stabilise = job.stabilise.value_or(scan.shaking);
+  if (scan.collapse()) to.frames = spread_over_poses(scan.poses, keyframes);
+  log::debug("fit: frame scan: %d frames, %zu distinct, cadence %d; whole-frame jitter %.3f px, step %.3f px (fitting width), "
+             "rigid residual %.2f%s", scan.frames, scan.distinct.size(), scan.cadence, scan.jitter_fit_px, scan.step_fit_px,
+             scan.rigid_residual, scan.shaking ? ": shaking" : "");
   to.denoise_radius = job.denoise_radius;
   // The refinement's load reuses these keyframes when it works at the same size (a 512-px video
   // fitted at 256 and refined at 512 denoises at 512 both times); released once it has.
@@ -214,7 +221,13 @@ void FitRun::prepare_target() {
     log::warning("%s", w.c_str());
   // Which prior told the shake from the motion matters to the user: a figure with nothing
   // still keeps the part of the shake inside its motion's band, about 0.45 of 1.6 px rms (fit/target/stabilise.h).
-  if (job.stabilise && !job.quiet && !job.progress) {
+  if (scan.collapse() && !job.quiet && !job.progress)
+    log::info("fit: the video shows each pose %d times (a lower frame rate): fitted at the %zu poses it shows, each at the "
+              "frame it was first shown", scan.cadence, scan.poses.size());
+  if (to.stabilise && !job.stabilise && !job.quiet && !job.progress)
+    log::info("fit: the whole frame shakes (%.2f px from frame to frame at the fitting width): stabilised (--no-stabilise "
+              "keeps it)", scan.jitter_fit_px);
+  if (to.stabilise && !job.quiet && !job.progress) {
     if (target.shake_model == "smooth")
       log::info("fit: camera shake of up to %.2f px (fitting width) removed (nothing in the figure holds still: told from the motion by its "
                 "smoothness alone, some of it stays)", target.max_shake_px);
@@ -384,7 +397,7 @@ void FitRun::start_fitter() {
         (job.palette ? stamp(*job.palette) : "-") + "|" + (job.tracks ? stamp(*job.tracks) : "-") +
         "|refine " + std::to_string(refine_w) + "/" + std::to_string(refine_iters) +
         "|split " + fit_fmt("%.6g", job.max_segment) + "|denoise " + std::to_string(job.denoise_radius) +
-        (job.stabilise ? "|stabilise" : "") + (pin_rest ? "" : "|free start") + "|chroma " + fit_fmt("%.6g", chroma_weight) + "|groups " +
+        (to.stabilise ? "|stabilise" : "") + (pin_rest ? "" : "|free start") + "|chroma " + fit_fmt("%.6g", chroma_weight) + "|groups " +
         group_membership(fitter->fit_plan(), fitter->raster_plan());
   if (job.resume) {
     if (!fs::exists(ckpt)) throw Error(ckpt.string() + ": no checkpoint to resume from");

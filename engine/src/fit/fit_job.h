@@ -109,8 +109,10 @@ struct FitJob {
   // Choose chroma_weight from the video's first frame instead (fit/target/chroma_calibration.h):
   // `svgmotion fit`'s default; the pipeline's fitter keeps 1.
   bool chroma_weight_auto = false;
-  // Remove camera shake from the video before sampling it (target_video.h).
-  bool stabilise = false;
+  // Remove camera shake from the video before sampling it (target_video.h): always (true),
+  // never (false), or when the target shakes (unset, the default: fit/target/frame_scan.h).
+  // fit --stabilise / --no-stabilise, stages.fitter.stabilise.
+  std::optional<bool> stabilise;
   // Average each sampled frame with this many flow-aligned neighbours on either side
   // (TargetOptions::denoise_radius; 0: off).
   int denoise_radius = kDefaultDenoiseRadius;

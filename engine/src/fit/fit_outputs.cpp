@@ -190,7 +190,15 @@ void FitRun::write_report() {
   // Codec noise: each keyframe averaged with this many flow-aligned neighbours either side.
   report["target_frames"]["denoise_radius"] = job.denoise_radius;
   report["target_frames"]["denoise_seconds"] = ctarget.denoise_seconds + (fine_target ? fine_target->denoise_seconds : 0.0);
-  if (job.stabilise) {
+  // The clip at a glance (frame_scan.h): its repeats, and the shake that decides stabilising.
+  report["target_frames"]["distinct"] = scan.distinct.size();
+  report["target_frames"]["cadence"] = scan.cadence;
+  report["target_frames"]["poses"] = scan.poses.size();
+  report["target_frames"]["frame_jitter_px"] = scan.jitter_fit_px;
+  report["target_frames"]["frame_rigid_residual"] = scan.rigid_residual;
+  report["target_frames"]["stabilise"] = {{"on", to.stabilise}, {"decided", job.stabilise ? "option" : "target"},
+                                          {"shaking", scan.shaking}};
+  if (to.stabilise) {
     report["target_frames"]["max_shake_removed_px"] = ctarget.max_shake_px;
     report["target_frames"]["shake_model"] = ctarget.shake_model;
     report["target_frames"]["still_share"] = ctarget.still_share;

@@ -26,6 +26,7 @@
 #include "fit/plan/segment_split.h"
 #include "fit/target/blur_match.h"
 #include "fit/target/chroma_calibration.h"
+#include "fit/target/frame_scan.h"
 #include "fit/target/rest_start.h"
 #include "opencl/runtime.h"
 #include "run/run_directory.h"
@@ -103,6 +104,7 @@ struct FitRun {
   std::optional<Scene> export_scene;
   ExportMap map;
   TargetFrames target;
+  FrameScan scan;  // the target's held frames and shake, read before sampling (frame_scan.h)
   BlurMatch first_blur;  // blur matching at the fitting width, before the rest start is judged
   RestStart rest_start;
   bool pin_rest = false;

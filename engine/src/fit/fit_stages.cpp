@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numeric>
 
 #include "fit/optimise/keyframe_choice.h"
 #include "fit/output/checkpoint.h"
@@ -113,12 +114,21 @@ void FitRun::fit_coarse() {
 // budget, and the fit goes on with them (not checkpointed: a resumed fit makes the same choice
 // again from the coarse checkpoint above).
 void FitRun::add_keyframes_from_target() {
-  const int key_budget = job.max_keyframes < 0 ? default_keyframe_budget(keyframes, target.source_frames) : job.max_keyframes;
+  // Only frames that show a pose of their own are judged: a repeat of a lower frame rate's
+  // held frame is its run's pose, which the spline should pass through, not stop at
+  // (frame_scan.h). Without a cadence, every frame.
+  std::vector<int> poses = scan.poses;
+  if (!scan.collapse() || poses.empty() || poses.back() >= target.source_frames) {
+    poses.resize(static_cast<size_t>(target.source_frames));
+    std::iota(poses.begin(), poses.end(), 0);
+  }
+  const int n_poses = static_cast<int>(poses.size());
+  const int key_budget = job.max_keyframes < 0 ? default_keyframe_budget(keyframes, n_poses) : job.max_keyframes;
   key_report = {{"asked", target.keyframes}, {"budget", key_budget}};
-  if (!stopped && key_budget > target.keyframes && target.source_frames > target.keyframes) {
+  if (!stopped && key_budget > target.keyframes && n_poses > target.keyframes) {
     const auto t_choice = std::chrono::steady_clock::now();
     std::vector<int> between;
-    for (int i = 0; i < target.source_frames; ++i)
+    for (int i : poses)
       if (!std::binary_search(target.source_index.begin(), target.source_index.end(), i)) between.push_back(i);
     const int N = std::max(2, target.source_frames);
     std::vector<double> kt;
