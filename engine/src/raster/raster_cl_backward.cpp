@@ -115,6 +115,11 @@ void ClRaster::make_loss_buffers() {
   resid_ = make(pixels * 4 * sizeof(float));
   partial_ = make(K * plan_.n_lines * static_cast<size_t>(bands_) * 4 * sizeof(float));
   if (!backward_ready_) return;  // init_backward binds them with the rest
+  // The residual forward pass's X' (image_) goes with them; a Float render made it again
+  // meanwhile, perhaps: bound afresh either way.
+  if (!image_()) image_ = make(pixels * 4 * sizeof(float));
+  set_args_at(k_blur_y_loss_, 0, image_);
+  set_args_at(k_taped_, 11, image_);
   // Made again after release_loss_buffers: bound where init_backward bound them, and the pool
   // at the capacity it had grown to (what the bands asked for stays what they ask for).
   set_args_at(k_blur_y_loss_, 2, q_, resid_);
@@ -129,7 +134,7 @@ void ClRaster::release_loss_buffers() {
   if (!q_()) return;
   finish_pool_read();
   rt_.queue().finish();  // nothing enqueued still uses them
-  for (cl::Buffer* b : {&q_, &r_, &resid_, &partial_, &pool_}) {
+  for (cl::Buffer* b : {&q_, &r_, &resid_, &partial_, &pool_, &image_}) {
     if (!(*b)()) continue;
     device_bytes_ -= b->getInfo<CL_MEM_SIZE>();
     *b = cl::Buffer();
