@@ -75,8 +75,8 @@ class ClRaster {
   // Frees the loss's pixel-sized device buffers (Q and R in half precision, the residuals X'
   // and E', the tape pool and the bands' partial gradients: 48 bytes and more per pixel and
   // frame, held in host memory by PoCL) until the next loss pass makes them again, from the
-  // targets. For a fitter that only
-  // renders from here on, or waits while another one fits. The last pass's losses stay readable.
+  // targets. For a fitter that only renders from here on, or waits while another one fits. The
+  // last pass's losses stay readable.
   void release_loss_buffers();
   bool holds_loss_buffers() const { return q_(); }
   // Forward pass, blurred-MSE loss against the targets (kernels/loss.cl) and the backward pass
