@@ -36,6 +36,12 @@
  * row's extent; blur_y_loss_rows makes E' and the rows' Σ (2 Q·E' + E'·E'); loss_total adds
  * Σ Q²; the backward raster pass evaluates ∂L/∂C at the pixels edges cross
  * (blurred_gradient). Sums run in a fixed order: the loss is bit-reproducible.
+ *
+ * Q and R are stored as halves (read with vload_half4, core OpenCL without cl_khr_fp16): they
+ * are only read, and a half is within 2^-11 of them, a twentieth of an 8-bit level, while it
+ * halves the two largest buffers of the fit. The host computes Σ Q² and R from the rounded Q,
+ * so the loss is exactly that of a target whose Q is the stored one; everything the kernels
+ * add up stays in float.
  */
 
 /* G0..G4, LOSS_R, g_tap: the render's 1-D Gaussian taps, defined in prelude.cl. */
@@ -100,7 +106,7 @@ inline float chroma_residual(float3 q, float3 v, __global float4* e) {
 /* Per (row, frame): E' = the y-blur of X' over the rows' extents, kept (with its extent) for
  * the backward pass, and the row's Σ (2 Q·E' + E'·E') over pixels and channels, in x order. */
 __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* ext_x,
-                               __global const float4* Q, __global float4* E,
+                               __global const half* Q, __global float4* E,
                                __global int2* ext_e, __global float* row_sums, int width,
                                int height, int frames) {
   const int y = get_global_id(0), k = get_global_id(1);
@@ -117,7 +123,7 @@ __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* e
   float s = 0.0f;
   __global const float4* f = Xb + (size_t)k * width * height;
   __global float4* e = E + ((size_t)k * height + y) * width;
-  __global const float4* q = Q + ((size_t)k * height + y) * width;
+  __global const half* q = Q + ((size_t)k * height + y) * width * 4;
   /* Each tap's row contributes on its extent only (zero padding outside the frame and the
    * drawing). Those ranges are taken once per row: [fa, fb] is where every tap is inside (a
    * background makes it the whole row), and there no tap needs its test. Rows of a drawing that
@@ -159,14 +165,14 @@ __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* e
       }
     }
 #if defined(CHROMA_R)
-    s += chroma_residual(q[x].xyz, v.xyz, e + x);
+    s += chroma_residual(vload_half4(x, q).xyz, v.xyz, e + x);
 #elif defined(CHROMA_W)
     const float3 m = loss_metric(v.xyz);
     e[x] = (float4)(m, 0.0f);
-    s += dot(2.0f * q[x].xyz + v.xyz, m);
+    s += dot(2.0f * vload_half4(x, q).xyz + v.xyz, m);
 #else
     e[x] = v;
-    s += dot(2.0f * q[x].xyz + v.xyz, v.xyz);
+    s += dot(2.0f * vload_half4(x, q).xyz + v.xyz, v.xyz);
 #endif
   }
   row_sums[(size_t)k * height + y] = s;
@@ -174,9 +180,9 @@ __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* e
 
 /* ∂L/∂C at pixel (x, y) of a frame: 2w/N · (R + G ∗ E'), E' read within its row extents. */
 inline float3 blurred_gradient(__global const float4* E, __global const int2* ext_e,
-                               __global const float4* R, int x, int y, int width, int height,
+                               __global const half* R, int x, int y, int width, int height,
                                float scale) {
-  float3 s = R[y * width + x].xyz;
+  float3 s = vload_half4(y * width + x, R).xyz;
 #ifdef CHROMA_R
   /* The per-group blur's adjoint: blur the stored A⁻ᵀ E' per channel group, then Aᵀ (loss.cl's
    * chroma_residual). The same taps and order whether or not the extents need tests. */

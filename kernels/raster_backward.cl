@@ -235,7 +235,7 @@ inline void replay_span(__local float* acc, __local uchar* mark, __local float4*
 inline void backward_span(__local float* acc, __local uchar* mark, __local float* T, int* tlo,
                           int* thi, __local float2* gcell, int* glo, int* ghi,
                           __global const float4* E,
-                          __global const int2* ext_e, __global const float4* R,
+                          __global const int2* ext_e, __global const half* R,
                           int row, int height, float scale, int xlo, int xhi, int width,
                           float4 color, __global const float4* prow, int painted, int rule,
                           __local const float4* tape, int* tp, int cap) {
@@ -459,7 +459,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               __global const float4* bounds,      /* [K][n_chunks] */
                               __global const float4* E,           /* [K][H][W] E' (loss.cl) */
                               __global const int2* ext_e,         /* [K][H] its row extents */
-                              __global const float4* R,           /* [K][H][W] G ∗ Q (loss.cl) */
+                              __global const half* R,             /* [K][H][W][4] G ∗ Q, half (loss.cl) */
                               float grad_scale,                   /* 2w/N */
                               float4 background,
                               __local float* acc,                 /* [BAND_H][W + 2] */
@@ -488,7 +488,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
     __global const float4* B = bounds + (size_t)k * n_chunks;
     __global const float4* Ek = E + (size_t)k * height * width;
     __global const int2* Xk = ext_e + (size_t)k * height;
-    __global const float4* Rk = R + (size_t)k * height * width;
+    __global const half* Rk = R + (size_t)k * height * width * 4;
     /* Per row: the draw's span, and the valid hulls of the lazily cleared row buffers
      * (accumulation, colour, transmittance, ∂L/∂a; see grow_hull in raster.cl). */
     int xlo[BAND_H], xhi[BAND_H], alo[BAND_H], ahi[BAND_H], hlo[BAND_H], hhi[BAND_H];

@@ -273,7 +273,9 @@ TEST_CASE("chroma blur matching: a softer chroma blur keeps the loss and gradien
     const auto [an, fd] = gradients(c, &lc, &lr, nullptr, sl, sc);
     gradients(c, nullptr, &lr_plain, nullptr, sl);
     CHECK(lr > 0);
-    CHECK(lc == doctest::Approx(lr).epsilon(1e-5));
+    // The kernels read Q = bg·(B 1) − G_t ∗ T stored as halves (kernels/loss.cl), within 2^-11
+    // of the reference's: the loss agrees to 1e-4 (2e-5 measured), not to float rounding.
+    CHECK(lc == doctest::Approx(lr).epsilon(1e-4));
     CHECK(std::abs(lr - lr_plain) > 1e-3 * lr_plain);  // the chroma blur is in effect
     const Agreement a = compare(an, fd);
     MESSAGE("luma sigma " << sl << ", chroma sigma " << sc << ": cosine " << a.cosine << ", relative error " << a.rel_error);

@@ -79,9 +79,9 @@ TEST_CASE("released loss buffers: device bytes fall by their size, and the next 
 
   r.release_loss_buffers();
   CHECK_FALSE(r.holds_loss_buffers());
-  // Q, R and the residual are 16 bytes per pixel and frame each; the pool and the partial
-  // gradients come on top.
-  const size_t pixel_bytes = size_t{3} * kK * kW * kH * 16;
+  // Q and R are 8 bytes per pixel and frame each (four halves), the residual 16; the pool and
+  // the partial gradients come on top.
+  const size_t pixel_bytes = size_t{kK} * kW * kH * (8 + 8 + 16);
   CHECK(held - r.device_bytes() > pixel_bytes);
   // The last pass's losses are still readable (the report reads them after the release).
   CHECK(same_bits(r.read_frame_losses(), losses));

@@ -167,7 +167,10 @@ void ClRaster::forward(Output output, const std::array<float, 4>& background) {
   events_.clear();
   try {
     // Arguments 8..12: where the band results go (an unused output gets any valid buffer).
-    if (output != Output::Rgba8 && !image_()) image_ = make(pixels * 4 * sizeof(float));
+    // Every frame's, not the active ones': the loss passes bind it (make_loss_buffers) and may
+    // activate more frames later.
+    if (output != Output::Rgba8 && !image_())
+      image_ = make(static_cast<size_t>(frames_) * p.height * p.width * 4 * sizeof(float));
     if (output == Output::Rgba8 && !rgba_()) rgba_ = make(pixels * 4);
     if (output == Output::Residual && !ext_x_())
       throw Error("internal: a residual forward pass needs targets (set_targets)");

@@ -72,10 +72,11 @@ class ClRaster {
   // are made from it on the next loss pass, and again after release_loss_buffers).
   void set_targets(const std::vector<float>& rgba);
   void set_targets(std::vector<float>&&) = delete;  // a temporary would be gone by the loss
-  // Frees the loss's pixel-sized device buffers (Q, R, the residual, the tape pool and the
-  // bands' partial gradients: 52 bytes and more per pixel and frame, held in host memory by
-  // PoCL) until the next loss pass makes them again, from the targets. For a fitter that only
-  // renders from here on, or waits while another one fits. The last pass's losses stay readable.
+  // Frees the loss's pixel-sized device buffers (Q and R in half precision, the residuals X'
+  // and E', the tape pool and the bands' partial gradients: 48 bytes and more per pixel and
+  // frame, held in host memory by PoCL) until the next loss pass makes them again, from the
+  // targets. For a fitter that only renders from here on, or waits while another one fits. The
+  // last pass's losses stay readable.
   void release_loss_buffers();
   bool holds_loss_buffers() const { return q_(); }
   // Forward pass, blurred-MSE loss against the targets (kernels/loss.cl) and the backward pass

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/half_float.h"
 #include "raster/raster_cl.h"
 #include "svgmotion/error.h"
 
@@ -108,11 +109,17 @@ void ClRaster::init_backward() {
 void ClRaster::make_loss_buffers() {
   const size_t K = static_cast<size_t>(frames_);
   const size_t pixels = K * plan_.height * static_cast<size_t>(plan_.width);
-  q_ = make(pixels * 4 * sizeof(float));
-  r_ = make(pixels * 4 * sizeof(float));
+  // Q and R are only read: halves (prepare_loss_constants).
+  q_ = make(pixels * 4 * sizeof(uint16_t));
+  r_ = make(pixels * 4 * sizeof(uint16_t));
   resid_ = make(pixels * 4 * sizeof(float));
   partial_ = make(K * plan_.n_lines * static_cast<size_t>(bands_) * 4 * sizeof(float));
   if (!backward_ready_) return;  // init_backward binds them with the rest
+  // The residual forward pass's X' (image_) goes with them; a Float render made it again
+  // meanwhile, perhaps: bound afresh either way.
+  if (!image_()) image_ = make(pixels * 4 * sizeof(float));
+  set_args_at(k_blur_y_loss_, 0, image_);
+  set_args_at(k_taped_, 11, image_);
   // Made again after release_loss_buffers: bound where init_backward bound them, and the pool
   // at the capacity it had grown to (what the bands asked for stays what they ask for).
   set_args_at(k_blur_y_loss_, 2, q_, resid_);
@@ -127,7 +134,7 @@ void ClRaster::release_loss_buffers() {
   if (!q_()) return;
   finish_pool_read();
   rt_.queue().finish();  // nothing enqueued still uses them
-  for (cl::Buffer* b : {&q_, &r_, &resid_, &partial_, &pool_}) {
+  for (cl::Buffer* b : {&q_, &r_, &resid_, &partial_, &pool_, &image_}) {
     if (!(*b)()) continue;
     device_bytes_ -= b->getInfo<CL_MEM_SIZE>();
     *b = cl::Buffer();
@@ -200,28 +207,31 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
   std::vector<double> t(px * 3), q(px * 3);
   // One frame's Q and R at a time: whole-clip host copies were 32 bytes per pixel and frame at
   // the fit's peak (176 MB for 21 keyframes at 512 px).
-  std::vector<float> qf(px * 4), rf(px * 4), qsum(K);
+  std::vector<uint16_t> qh(px * 4, 0), rh(px * 4, 0);
+  std::vector<float> qsum(K);
   auto& queue = rt_.queue();
   for (int k = 0; k < K; ++k) {
     for (size_t p = 0; p < px; ++p)
       for (int c = 0; c < 3; ++c) t[3 * p + c] = targets[(k * px + p) * 4 + c];
     const std::vector<double> gt = blur_rgb(t, W, H, g_target);
-    double sum = 0;
-    for (size_t i = 0; i < q.size(); ++i) q[i] = bg[i % 3] * g1[i] - gt[i];
+    // Q as the device stores it (a half, within 2^-11 of it: a twentieth of an 8-bit level),
+    // so that Σ Q² and R are those of the Q the loss reads and Σ E² stays a sum of squares.
+    for (size_t i = 0; i < q.size(); ++i) {
+      const uint16_t h = float_to_half(static_cast<float>(bg[i % 3] * g1[i] - gt[i]));
+      qh[i / 3 * 4 + i % 3] = h;
+      q[i] = half_to_float(h);
+    }
     // With a chroma weight the metric M (loss.cl's loss_metric): Σ Qᵀ M Q and R = Bᵀ M Q.
     std::vector<double> mq = q;
     if (chroma_weight_ != 1) mq = chroma_metric(q, chroma_weight_);
+    double sum = 0;
     for (size_t i = 0; i < q.size(); ++i) sum += q[i] * mq[i];
     const std::vector<double> r = render_blur(mq, W, H, render_sigma_, chroma_sigma_, true);
     qsum[k] = static_cast<float>(sum);
-    for (size_t p = 0; p < px; ++p)
-      for (int c = 0; c < 3; ++c) {
-        qf[p * 4 + c] = static_cast<float>(q[3 * p + c]);
-        rf[p * 4 + c] = static_cast<float>(r[3 * p + c]);
-      }
-    const size_t bytes = qf.size() * sizeof(float), at = static_cast<size_t>(k) * bytes;
-    queue.enqueueWriteBuffer(q_, CL_TRUE, at, bytes, qf.data());
-    queue.enqueueWriteBuffer(r_, CL_TRUE, at, bytes, rf.data());
+    for (size_t i = 0; i < r.size(); ++i) rh[i / 3 * 4 + i % 3] = float_to_half(static_cast<float>(r[i]));
+    const size_t bytes = qh.size() * sizeof(uint16_t), at = static_cast<size_t>(k) * bytes;
+    queue.enqueueWriteBuffer(q_, CL_TRUE, at, bytes, qh.data());
+    queue.enqueueWriteBuffer(r_, CL_TRUE, at, bytes, rh.data());
   }
   queue.enqueueWriteBuffer(qsum_, CL_TRUE, 0, qsum.size() * sizeof(float), qsum.data());
   q_background_ = bg;
