@@ -10,7 +10,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -637,24 +636,6 @@ TEST_CASE("preview video: a FIFO at the path is refused, a symlink is written th
   size_t n = 0;
   for ([[maybe_unused]] const auto& e : fs::recursive_directory_iterator(dir.path)) ++n;
   CHECK(n == 4);
-}
-
-TEST_CASE("preview video: faststart (moov before mdat) and BT.709-tagged, as export's clips") {
-  // preview.mp4 and target.mp4 were written by OpenCV's VideoWriter: the index last (a browser
-  // waits for the whole file) and untagged colour (white decoded as 251,253,250).
-  TempDir dir;
-  const fs::path out = dir.path / "preview.mp4";
-  write_preview_video(out, {{solid(9, 8), solid(9, 8)}, {solid(8, 8, {0, 0, 0}), solid(8, 8, {0, 0, 0})}}, 24);
-  std::ifstream in(out, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const size_t moov = bytes.find("moov"), mdat = bytes.find("mdat");
-  REQUIRE(moov != std::string::npos);
-  REQUIRE(mdat != std::string::npos);
-  CHECK(moov < mdat);
-  // The colour atom: nclx with primaries, transfer and matrix 1 (BT.709).
-  CHECK(bytes.find(std::string("colrnclx\0\1\0\1\0\1", 14)) != std::string::npos);
-  CHECK(probe_target(out).frames == 2);
-  CHECK(probe_target(out).width == 18);  // 17 padded to even
 }
 
 }  // TEST_SUITE

@@ -1,6 +1,5 @@
 // Preview videos of a fit: each video frame is a row of panels (say, target | render |
-// overlay) side by side, written as an H.264 mp4 that any browser or player shows, encoded as
-// export's clips are.
+// overlay) side by side, written as an H.264 mp4 that any browser or player shows.
 //
 // Panels are 8-bit straight RGBA (svgm::RgbaImage, the renderer's and PNG writer's format);
 // alpha is composited over white, since previews are about ink on paper. Float images (such as
@@ -21,12 +20,13 @@ namespace svgm {
 // than one frame in memory.
 using PreviewPanelFn = std::function<RgbaImage(int frame, int panel)>;
 
-// Writes `frames` frames at `fps` to `file` through media/video_encoder.h: H.264 in an mp4 with
-// its index first (faststart), BT.709-tagged so that white decodes as white; a file named .webm
-// gets VP9 in WebM. Odd frame sizes are padded with white on the right/bottom (4:2:0 chroma
-// needs even sides). Written to a hidden temporary name in the same folder and renamed when
-// complete, so a failure never leaves a partial file. Throws svgm::Error "<file>: <problem>"; a
-// write the disk refuses is named as such ("<file>: cannot write: No space left on device").
+// Writes `frames` frames at `fps` to `file` as an mp4: H.264 (fourcc avc1), or MPEG-4 Part 2
+// (mp4v) when no H.264 encoder can be opened; a file named .webm gets VP9 (else VP8) in WebM. Odd frame sizes are padded with white on the
+// right/bottom to even ones (4:2:0 chroma needs them; encoders would crop instead). Written to
+// a hidden temporary name in the same folder and renamed once it reads back as a video, so a
+// failure never leaves a partial file. Throws svgm::Error "<file>: <problem>"; a write the disk
+// refuses is named as such ("<file>: cannot write: No space left on device"), not as a missing
+// encoder.
 void write_preview_video(const std::filesystem::path& file, int frames, int panels,
                          const PreviewPanelFn& panel_image, double fps);
 
