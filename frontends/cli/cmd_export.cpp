@@ -30,7 +30,7 @@ int cmd_export(const std::vector<std::string>& argv) {
   settings.compact = !a.has("--full");
   settings.decimals = a.get_int("--precision", -1, 0, kMaxDecimals);
   settings.tolerance_1024 = a.get_double("--tolerance", settings.tolerance_1024);
-  if (!(settings.tolerance_1024 > 0 && settings.tolerance_1024 <= 64))
+  if (a.has("--tolerance") && !(settings.tolerance_1024 > 0 && settings.tolerance_1024 <= 64))
     throw Error("export: --tolerance wants pixels at 1024 px, more than 0 and at most 64");
   settings.inbetweens = a.get_int("--inbetweens", settings.inbetweens, 0, kMaxInbetweens);
   // Formats: every one named is written; clips are rendered from animation.svg, so it is written
@@ -84,8 +84,10 @@ int cmd_export(const std::vector<std::string>& argv) {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   log::info("svgmotion: exported from %s without fitting in %.2fs (%s, %d values per path%s): %s",
-            (dir / "checkpoint.bin").c_str(), seconds, settings.compact ? "compact" : "full", r.values_written,
-            settings.compact ? (", " + std::to_string(r.stats.keys) + " keys kept").c_str() : "", wrote.c_str());
+            (dir / "checkpoint.bin").c_str(), seconds, settings.compact && !r.full_fallback ? "compact" : "full", r.values_written,
+            r.full_fallback ? (", " + tolerance_text(r)).c_str()
+            : settings.compact ? (", " + std::to_string(r.stats.keys) + " keys kept, " + tolerance_text(r)).c_str() : "",
+            wrote.c_str());
   return 0;
 }
 

@@ -27,7 +27,9 @@ namespace svgm::cli {
 
 namespace {
 
-constexpr double kDefaultFps = 30;    // a common video rate; the fitter's targets are 24-30
+// A common video rate, for an animation that does not state its own (data-svgmotion-fps, which
+// svgmotion's writer adds: a fitted animation's clip is at the fit's rate).
+constexpr double kDefaultFps = 30;
 constexpr double kMaxFps = 240;       // beyond any display
 constexpr int kMaxClipFrames = 100000;  // about an hour at 30 fps: a mistake, not a clip
 
@@ -55,7 +57,7 @@ int cmd_render(const std::vector<std::string>& argv) {
   if (!still && a.has("--time"))
     throw Error("render: --time is for a still image; a clip (" + *out + ") shows the whole animation");
   if (still && a.has("--fps")) throw Error("render: --fps is for clips (.mp4, .webm, .gif, .webp, frames/%04d.png)");
-  const double fps = a.get_double("--fps", kDefaultFps);
+  double fps = a.get_double("--fps", kDefaultFps);
   if (!(fps > 0 && fps <= kMaxFps)) throw Error("render: --fps wants a frame rate in (0, 240]");
   if (transparent && format == ClipFormat::Mp4)
     throw Error("render: --background transparent needs PNG, GIF, WebM or WebP output; mp4 (H.264) has no alpha");
@@ -92,6 +94,8 @@ int cmd_render(const std::vector<std::string>& argv) {
   const SmilClock clock = smil_clock(text, input);
   if (clock.animations == 0)
     throw Error(input + ": no SMIL animation (<animate> with a dur) to make a clip of; render a still with -o OUT.png");
+  // A clip is at the animation's own frame rate (the fit's, stated by our writer) unless asked.
+  if (!a.has("--fps") && clock.fps > 0) fps = clock.fps;
   ClRuntime rt(a.get("--device").value_or("auto"));
   const double exact = clock.duration_s * fps;
   if (!(exact < kMaxClipFrames)) throw Error(input + ": the animation is too long for a clip at this frame rate");

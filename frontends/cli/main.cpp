@@ -158,7 +158,8 @@ rectangle per frame; binary alpha under --background transparent), or numbered P
 transparent). The format follows OUT's extension, and OUT may not be the input.
 
   -o, --output OUT         the image or clip to write (required)
-  --fps F                  clip frame rate (default 30)
+  --fps F                  clip frame rate (default: the animation's own, data-svgmotion-fps
+                           on its root as svgmotion writes it; else 30)
   --size W                 width in pixels (default: the SVG's own; height by its aspect)
   --background B           white (default) or transparent (PNG, GIF, WebM, WebP; not mp4)
   --quality CRF            mp4/webm constant quality, lower is better: H.264 0..51 (default 20),
@@ -208,11 +209,13 @@ precision, the in-betweens or compact/full, or make clips, in a second instead o
 
   -o, --output DIR     where to write (default: DIR itself; another folder becomes a run directory)
   --precision N        decimal places of the coordinates (default: the fewest that keep the
-                       compact tolerance, a quarter pixel at 1024 px; 0..6)
+                       compact tolerance; 0..6)
   --inbetweens N       smooth in-between shapes per keyframe interval (default 3; 0..16)
   --format LIST        comma-separated: svg, lottie (animation.json), gif, mp4, webm, webp (clips are
                        rendered from animation.svg, which is written with them); default svg,lottie
   --full               every value of every path (the per-frame export)
+  --tolerance P        the compact export's tolerance in pixels at 1024 px (default: measured,
+                       the largest of 0.25..3 whose render keeps 46 dB of the full export)
   --fps F              clip frame rate (default: the fit's, the target video's)
   --quality CRF        mp4/webm quality, lower is better (render --help)
   --transparent        gif, webm and webp clips without the white background (mp4 stays on white)

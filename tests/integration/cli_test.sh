@@ -109,6 +109,18 @@ fit)
   check "fit writes animation.svg with keyframes (d, or a wrapper's transform)" 'grep -Eq "<animate(Transform)? attributeName=\"(d|transform)\"" "$tmp/out/animation.svg"'
   check "fit writes a preview and a report" '[[ -s $tmp/out/preview.mp4 && -s $tmp/out/fit.json && -s $tmp/out/checkpoint.bin ]]'
   check "the animation renders at a time" '"$bin" render "$tmp/out/animation.svg" -o "$tmp/t.png" --time 0.1 2>/dev/null && [[ -s $tmp/t.png ]]'
+  # preview.mp4 through the clips' encoder (was OpenCV's VideoWriter: mdat first, untagged).
+  atoms=$(grep -obUa -e moov -e mdat "$tmp/out/preview.mp4" | head -2 | cut -d: -f2 | tr '\n' ' ')
+  check "the fit's preview.mp4 starts with its index (atoms: $atoms)" '[[ $atoms == "moov mdat " ]]'
+  # A clip of the animation is at the fit's frame rate, stated on its root (was 30 fps always).
+  fps=$(grep -o 'data-svgmotion-fps="[0-9.]*"' "$tmp/out/animation.svg" | head -1 | tr -dc '0-9.')
+  dur=$(grep -o ' dur="[0-9.]*s"' "$tmp/out/animation.svg" | head -1 | tr -dc '0-9.')
+  mkdir -p "$tmp/clip"
+  must "$bin" render "$tmp/out/animation.svg" -o "$tmp/clip/%d.png" --size 16 2>"$tmp/clip.err"
+  frames=$(ls "$tmp/clip" | grep -c png)
+  want=$(awk -v d="$dur" -v f="$fps" 'BEGIN { printf "%d", d * f + 0.5 }')
+  check "a clip of the animation is at its own frame rate ($fps fps x $dur s: $frames frames, want $want)" \
+    '[[ -n $fps && $frames -eq $want ]] && grep -q "at $fps fps" "$tmp/clip.err"'
   must "$bin" fit "$data/examples/man.svg" --target "$tmp/frames" -o "$tmp/out" --iterations 60 --keyframes 3 --size 64 --resume 2>"$tmp/err"
   # Tiny drawings (no strokes, or one stroke, a handful of control points) once failed with
   # CL_INVALID_HOST_PTR: their empty or short plan arrays went to clCreateBuffer as they were.

@@ -88,6 +88,15 @@ rate() { ffprobe -v error -select_streams v:0 -show_entries stream=r_frame_rate 
 check "an exported mp4 is at the fit's frame rate ($(rate "$tmp/clip24/animation.mp4")), or at --fps ($(rate "$tmp/clip12/animation.mp4"))" \
   '[[ $(rate "$tmp/clip24/animation.mp4") == 24/1 && $(rate "$tmp/clip12/animation.mp4") == 12/1 ]]'
 
+# The default tolerance is measured (fit/output/tolerance_choice.h). This fit has two values:
+# the full export blends them along chords, the compact one turns the square along its arc, 43 dB
+# apart at a quarter pixel, so no tolerance holds 46 dB and the full export (1.2 kB, smaller than
+# the compact 2.6 kB) is written, byte for byte `export --full`, and export says so.
+"$bin" export "$tmp/fit" -o "$tmp/auto" 2>"$tmp/auto.err"
+line=$(grep "without fitting" "$tmp/auto.err")
+check "export measures its tolerance and, none holding 46 dB, writes the full export ($line)" \
+  '[[ $line == *"no tolerance keeps 46 dB of the full export (worst "*" dB at 0.25 px at 1024): wrote it in full"* ]] && cmp -s "$tmp/auto/animation.svg" "$tmp/refull/animation.svg"'
+
 # Bad input.
 one_error() {  # NAME EXIT LINE ARGS...
   local name=$1 want_rc=$2 line=$3; shift 3

@@ -8,6 +8,7 @@
 
 #include "fit/output/checkpoint.h"
 #include "media/preview_video.h"
+#include "media/video_encoder.h"
 #include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
 #include "svgmotion/log.h"
@@ -115,12 +116,24 @@ void FitRun::write_animation() {
                exported.stats.values);
   const int active = final_fit.active_keyframes();
   const int W = final_size.width, H = final_size.height;
-  write_preview_video(out / "preview.mp4", active, 2,
-                      [&](int k, int panel) {
-                        return panel == 0 ? rgba8_image(&final_target.raw[static_cast<size_t>(k) * W * H * 4], W, H)
-                                          : render_panel(renders, k, W, H);
-                      },
-                      std::max(1.0, (timing.keyframes - 1) / timing.duration_s));
+  // Target | fit side by side, over white, through the clips' encoder (faststart, BT.709-tagged:
+  // it is for people, never read back; targets stay on write_preview_video, whose colours the
+  // target reader decodes as it encodes them).
+  write_video(out / "preview.mp4", active, std::max(1.0, (timing.keyframes - 1) / timing.duration_s),
+              [&](int k) {
+                const RgbaImage panels[2] = {rgba8_image(&final_target.raw[static_cast<size_t>(k) * W * H * 4], W, H),
+                                             render_panel(renders, k, W, H)};
+                RgbaImage frame{2 * W, H, std::vector<uint8_t>(static_cast<size_t>(2 * W) * H * 4, 255)};
+                for (int p = 0; p < 2; ++p)
+                  for (int y = 0; y < H; ++y)
+                    for (int x = 0; x < W; ++x) {
+                      const uint8_t* s = &panels[p].rgba[(static_cast<size_t>(y) * W + x) * 4];
+                      uint8_t* d = &frame.rgba[(static_cast<size_t>(y) * 2 * W + p * W + x) * 4];
+                      for (int c = 0; c < 3; ++c) d[c] = static_cast<uint8_t>((s[c] * s[3] + 255 * (255 - s[3]) + 127) / 255);
+                    }
+                return frame;
+              },
+              VideoOptions{});
 }
 
 void FitRun::write_report() {

@@ -3,16 +3,24 @@
 #include "fit/output/animation_export.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "export/lottie_writer.h"
+#include "export/smil_clock.h"
 #include "fit/output/checkpoint.h"
+#include "fit/output/tolerance_choice.h"
 #include "svg/document_order.h"
 #include "fit/optimise/inbetween.h"
 #include "fit/plan/segment_split.h"
 #include "run/run_directory.h"
 #include "raster/raster_plan.h"
+#include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
+#include "svgmotion/log.h"
 #include "svgmotion/svg_reader.h"
 #include "svgmotion/utf8_text.h"
 
@@ -89,6 +97,18 @@ ExportDocument export_document(const Scene& as_read, const SplitPlan& split, con
   return d;
 }
 
+std::string tolerance_text(const ExportOutcome& o) {
+  char text[128];
+  if (o.full_fallback)
+    std::snprintf(text, sizeof text, "no tolerance keeps %g dB of the full export (worst %.1f dB at %g px at 1024): wrote it in full",
+                  kCompactTargetDb + kCompactMarginDb, o.tolerance_db, o.tolerance_1024);
+  else if (o.tolerance_db == 0) std::snprintf(text, sizeof text, "tolerance %g px at 1024 (given)", o.tolerance_1024);
+  else if (std::isinf(o.tolerance_db)) std::snprintf(text, sizeof text, "tolerance %g px at 1024 (renders as the full export)", o.tolerance_1024);
+  else std::snprintf(text, sizeof text, "tolerance %g px at 1024 (worst %.1f dB of the full export; animation.json at %g)",
+                     o.tolerance_1024, o.tolerance_db, lottie_tolerance(o.tolerance_1024));
+  return text;
+}
+
 ExportOutcome write_animation_files(const FitResult& result, const ExportSettings& settings, const ExportDocument& doc,
                                     const RasterPlan& plan, const fs::path& anim,
                                     const std::function<std::optional<PathMotion>(const std::vector<double>&,
@@ -111,7 +131,36 @@ ExportOutcome write_animation_files(const FitResult& result, const ExportSetting
   outcome.fps = result.fps;
   outcome.svg = anim;
   const ExportMap* map = doc.map ? &*doc.map : nullptr;
-  const double tolerance_px = settings.tolerance_1024 * std::max(doc.scene.width, doc.scene.height) / 1024.0;
+  const double px_per_1024 = std::max(doc.scene.width, doc.scene.height) / 1024.0;
+  auto write_compact_svg = [&](const fs::path& file, double tolerance_1024, CompactStats* stats) {
+    CompactExport ce;
+    ce.decimals = settings.decimals;
+    ce.tolerance_px = tolerance_1024 * px_per_1024;
+    return write_compact_animation_svg(doc.into, doc.scene, plan, written.points, wt, file, map, ce, stats);
+  };
+  // The tolerance measured per drawing (tolerance_choice.h) unless one is given.
+  outcome.tolerance_1024 = settings.tolerance_1024;
+  bool compact = settings.compact;
+  if (settings.compact && !(settings.tolerance_1024 > 0)) {
+    const ToleranceChoice choice = choose_compact_tolerance(
+        anim,
+        [&](const fs::path& file) {
+          write_animation_svg(doc.into, doc.scene, plan, written.points, wt, file, map, kDefaultDecimals, nullptr);
+        },
+        [&](const fs::path& file, double tolerance_1024) { write_compact_svg(file, tolerance_1024, nullptr); });
+    outcome.tolerance_1024 = choice.tolerance_1024;
+    outcome.tolerance_db = choice.worst_db;
+    // No compact file holds the target (a fit of two values, whose full export blends the
+    // points along chords where the compact one turns along arcs): the full export is the
+    // cheapest that does.
+    if (choice.worst_db < kCompactTargetDb + kCompactMarginDb) {
+      compact = false;
+      outcome.full_fallback = true;
+    }
+    for (const ToleranceTrial& t : choice.trials)
+      log::debug("export: compact tolerance %g px at 1024: worst %.2f dB of the full export", t.tolerance_1024, t.worst_db);
+  }
+  const double tolerance_px = outcome.tolerance_1024 * px_per_1024;
   auto name_line = [&](std::string line) {
     if (!result.export_name.empty() && line.rfind(doc.into.string(), 0) == 0)
       line = result.export_name + line.substr(doc.into.string().size());
@@ -119,11 +168,8 @@ ExportOutcome write_animation_files(const FitResult& result, const ExportSetting
   };
   if (settings.svg) {
     std::vector<std::string> w;
-    if (settings.compact) {
-      CompactExport ce;
-      ce.decimals = settings.decimals;
-      ce.tolerance_px = tolerance_px;
-      w = write_compact_animation_svg(doc.into, doc.scene, plan, written.points, wt, anim, map, ce, &outcome.stats);
+    if (compact) {
+      w = write_compact_svg(anim, outcome.tolerance_1024, &outcome.stats);
     } else {
       std::optional<PathMotion> motion;
       if (group_motion) motion = group_motion(written.times, frame_times);
@@ -131,13 +177,18 @@ ExportOutcome write_animation_files(const FitResult& result, const ExportSetting
                               settings.decimals >= 0 ? settings.decimals : kDefaultDecimals, motion ? &*motion : nullptr);
     }
     for (const std::string& line : w) outcome.warnings.push_back(name_line(line));
+    // The fit's frame rate on the root, so that `render` makes a clip of it at that rate.
+    std::ifstream in(anim, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    write_file_atomic(anim, with_frame_rate(text, anim.string(), result.fps));
   }
   if (settings.lottie) {
     LottieOptions lottie;
     lottie.fps = result.fps;
-    lottie.decimals = settings.decimals >= 0 || settings.compact ? settings.decimals : kDefaultDecimals;
-    lottie.compact = settings.compact;
-    lottie.tolerance_px = tolerance_px;
+    lottie.decimals = settings.decimals >= 0 || compact ? settings.decimals : kDefaultDecimals;
+    lottie.compact = compact;
+    // Measured: a step tighter than animation.svg's (tolerance_choice.h); given: as given.
+    lottie.tolerance_px = outcome.tolerance_db != 0 ? lottie_tolerance(outcome.tolerance_1024) * px_per_1024 : tolerance_px;
     lottie.name = doc.into.filename().string();
     std::error_code ec;
     if (fs::exists(anim, ec)) lottie.exported_svg = anim;  // gradients follow their shapes as animation.svg draws them

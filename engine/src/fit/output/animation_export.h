@@ -27,8 +27,9 @@ struct ExportSettings {
   bool compact = true;  // compact (smil_writer.h write_compact_animation_svg) or per-frame full
   int decimals = -1;    // coordinates' decimal places; -1: measured (compact) or kDefaultDecimals (full)
   int inbetweens = 3;   // smooth in-betweens per keyframe interval (inbetween.h)
-  // The compact export's tolerance in pixels of a 1024-px rendering (compact_motion.h).
-  double tolerance_1024 = kCompactTolerance1024;
+  // The compact export's tolerance in pixels of a 1024-px rendering (compact_motion.h); 0: the
+  // largest that keeps the render within 45 dB of the full export, measured (tolerance_choice.h).
+  double tolerance_1024 = 0;
   bool svg = true, lottie = true;
 };
 
@@ -70,8 +71,13 @@ struct ExportOutcome {
   CompactStats stats;
   int values_written = 0;
   double fps = 30;            // the target's frame rate (a clip's default)
+  double tolerance_1024 = 0;  // compact: the tolerance written with (given or measured)
+  double tolerance_db = 0;    // measured: the worst PSNR of the compact SVG against the full one
+  bool full_fallback = false; // measured, and no tolerance held the target: written in full
   std::filesystem::path svg;  // the animation written (animation.svg or animation.failed.svg)
 };
+// "tolerance 1.5 px at 1024 (worst 46.2 dB of the full export)", or "(given)" when it was.
+std::string tolerance_text(const ExportOutcome& outcome);
 ExportOutcome write_animation_files(const FitResult& result, const ExportSettings& settings, const ExportDocument& doc,
                                     const RasterPlan& plan, const std::filesystem::path& anim,
                                     const std::function<std::optional<PathMotion>(const std::vector<double>& written_times,

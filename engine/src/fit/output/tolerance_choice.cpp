@@ -1,0 +1,128 @@
+// Choosing the compact export's tolerance by rendering it against the full export (see
+// tolerance_choice.h).
+#include "fit/output/tolerance_choice.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <string>
+
+#include "export/smil_clock.h"
+#include "opencl/runtime.h"
+#include "raster/render_image.h"
+#include "svgmotion/error.h"
+#include "svgmotion/svg_reader.h"
+#include "svgmotion/temporary_name.h"
+
+namespace svgm {
+
+namespace fs = std::filesystem;
+
+double render_psnr(const RgbaImage& a, const RgbaImage& b) {
+  if (a.width != b.width || a.height != b.height || a.rgba.size() != b.rgba.size())
+    throw Error("internal: renders of different sizes compared");
+  double sum = 0;
+  size_t n = 0;
+  for (size_t i = 0; i < a.rgba.size(); i += 4)
+    for (size_t c = 0; c < 3; ++c, ++n) {
+      const double d = static_cast<double>(a.rgba[i + c]) - b.rgba[i + c];
+      sum += d * d;
+    }
+  if (sum == 0 || n == 0) return std::numeric_limits<double>::infinity();
+  return 10 * std::log10(255.0 * 255.0 * static_cast<double>(n) / sum);
+}
+
+double lottie_tolerance(double svg_tolerance_1024) {
+  double below = kToleranceLadder.front();
+  for (double step : kToleranceLadder)
+    if (step < svg_tolerance_1024) below = step;
+  return below;
+}
+
+namespace {
+
+// Removes a candidate file however the search ends.
+struct Candidate {
+  fs::path path;
+  ~Candidate() {
+    std::error_code ec;
+    fs::remove(path, ec);
+  }
+};
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw Error(file.string() + ": cannot read back the export being measured");
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Renders an animated SVG at the sampled times (opaque, over white).
+class Sampler {
+ public:
+  Sampler(ClRuntime& rt, const std::string& text, const std::string& name) : rt_(rt) {
+    const SmilClock clock = smil_clock(text, name);
+    const double pass = clock.duration_s > 0 ? clock.duration_s : 1;
+    for (int k = 0; k < kToleranceTimes; ++k) times_.push_back((k + 0.5) * pass / kToleranceTimes);
+    const Scene first = read_svg_string(text, name);
+    const double larger = std::max(first.width, first.height);
+    width_ = std::max(1, static_cast<int>(std::lround(kToleranceRenderPx * (larger > 0 ? first.width / larger : 1))));
+  }
+  size_t count() const { return times_.size(); }
+  RgbaImage render(const std::string& text, const std::string& name, size_t k) {
+    SvgReadLimits at;
+    at.animation_time = times_[k];
+    return render_image(rt_, read_svg_string(text, name, at), width_, false);
+  }
+
+ private:
+  ClRuntime& rt_;
+  std::vector<double> times_;
+  int width_ = 1;
+};
+
+}  // namespace
+
+ToleranceChoice choose_compact_tolerance(const fs::path& beside, const std::function<void(const fs::path&)>& write_full,
+                                         const std::function<void(const fs::path&, double)>& write_compact) {
+  const fs::path dir = beside.parent_path().empty() ? fs::path(".") : beside.parent_path();
+  Candidate full{temporary_path(dir / "animation.full.svg")};
+  write_full(full.path);
+  const std::string full_text = read_text(full.path);
+  ClRuntime rt("auto");
+  Sampler sampler(rt, full_text, full.path.string());
+  std::vector<RgbaImage> reference;
+  for (size_t k = 0; k < sampler.count(); ++k) reference.push_back(sampler.render(full_text, full.path.string(), k));
+
+  ToleranceChoice choice;
+  const double floor_db = kCompactTargetDb + kCompactMarginDb;
+  // The worst PSNR of the compact export at ladder step i, stopped at the first time below floor.
+  auto trial = [&](size_t i) {
+    Candidate c{temporary_path(dir / "animation.compact.svg")};
+    write_compact(c.path, kToleranceLadder[i]);
+    const std::string text = read_text(c.path);
+    ToleranceTrial t{kToleranceLadder[i], std::numeric_limits<double>::infinity()};
+    for (size_t k = 0; k < sampler.count() && t.worst_db >= floor_db; ++k)
+      t.worst_db = std::min(t.worst_db, render_psnr(reference[k], sampler.render(text, c.path.string(), k)));
+    choice.trials.push_back(t);
+    return t.worst_db;
+  };
+  // Binary search for the last step that holds the floor: `good` holds it (-1: none tried
+  // yet does), `bad` does not (size: past the ladder). Step 0 is taken when none holds.
+  std::ptrdiff_t good = -1, bad = static_cast<std::ptrdiff_t>(kToleranceLadder.size());
+  double good_db = 0, first_db = 0;
+  while (bad - good > 1) {
+    const std::ptrdiff_t mid = (good + bad) / 2;
+    const double db = trial(static_cast<size_t>(mid));
+    if (mid == 0) first_db = db;
+    if (db >= floor_db) good = mid, good_db = db;
+    else bad = mid;
+  }
+  choice.tolerance_1024 = kToleranceLadder[static_cast<size_t>(std::max<std::ptrdiff_t>(good, 0))];
+  choice.worst_db = good >= 0 ? good_db : first_db;
+  return choice;
+}
+
+}  // namespace svgm

@@ -1,0 +1,62 @@
+// The compact export's tolerance chosen by measurement, per drawing: the largest tolerance on a
+// short ladder whose compact animation.svg, rendered at 1024 px (the drawing's larger side) at
+// ten times of one pass, stays within kCompactTargetDb of the full per-frame export of the same
+// fit at every one of them. A fixed tolerance is either too tight for a jittery fit on a small
+// canvas (the bundled man: 88 kB of Lottie at a quarter pixel, 57 dB, where 1.25 pixels keep
+// 34 kB above the target; at 1.5 it falls to 44.8 dB) or too loose for a drawing with thin, fast parts (the bench
+// kite and bug drop to 40-42 dB at one pixel).
+//
+// The search renders with the engine's own renderer (raster/render_image.h); candidates are
+// written to temporary files beside the animation and removed. The engine draws no Lottie, so
+// animation.json is written one ladder step tighter than the tolerance found (lottie_tolerance):
+// at the same tolerance it keeps the skew in its residual shapes and rounds in canvas pixels,
+// and librlottie drew the man's 3-5 dB below animation.svg (43.0 dB at 1.25 px against the full
+// JSON, 47.8 dB at 1.1 px; docs/commands.md).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <vector>
+
+#include "svgmotion/png_io.h"
+
+namespace svgm {
+
+// PSNR (RGB over white, dB) every sampled time of the compact export keeps against the full one.
+constexpr double kCompactTargetDb = 45;
+// The measured floor asked of our render: players draw a little differently from it (librlottie
+// and the SMIL render of the same compact file differ by up to about 0.5 dB on the man).
+constexpr double kCompactMarginDb = 1;
+// Tolerances tried, pixels at 1024 px, increasing; the first is taken when none holds the target.
+inline const std::vector<double> kToleranceLadder = {0.25, 0.5, 0.75, 1, 1.1, 1.25, 1.5, 2, 3};
+// Times sampled over one pass, and the size they are rendered at (the larger side).
+constexpr int kToleranceTimes = 10;
+constexpr int kToleranceRenderPx = 1024;
+
+struct ToleranceTrial {
+  double tolerance_1024 = 0;
+  double worst_db = 0;  // the lowest PSNR over the sampled times (stops at the first below target)
+};
+struct ToleranceChoice {
+  double tolerance_1024 = 0;
+  double worst_db = 0;  // of the chosen tolerance (infinity: identical renders)
+  std::vector<ToleranceTrial> trials;  // in the order tried
+};
+
+// `write_full(path)` writes the full export, `write_compact(path, tolerance_1024)` a compact one,
+// both as animation.svg would be written; `beside` names the animation (the temporary files go
+// next to it). Binary search over kToleranceLadder (the error grows with the tolerance): three
+// or four compact candidates, each stopped at its first time below target. Throws svgm::Error
+// when a candidate cannot be written or read back.
+ToleranceChoice choose_compact_tolerance(const std::filesystem::path& beside,
+                                         const std::function<void(const std::filesystem::path&)>& write_full,
+                                         const std::function<void(const std::filesystem::path&, double)>& write_compact);
+
+// The tolerance animation.json is written at for animation.svg's `svg_tolerance_1024`: the
+// ladder step below it (the first step itself; a tolerance off the ladder: the largest step below).
+double lottie_tolerance(double svg_tolerance_1024);
+
+// PSNR of two renders of the same size (RGB, 8-bit, dB; infinity when identical).
+double render_psnr(const RgbaImage& a, const RgbaImage& b);
+
+}  // namespace svgm
