@@ -34,8 +34,9 @@ struct Planned {
 
 class Compositor {
  public:
-  Compositor(const Scene& scene, const RenderSize& size)
-      : scene_(scene), view_(size.view), w_(size.width), h_(size.height) {}
+  Compositor(const Scene& scene, const RenderSize& size, bool browser_edges)
+      : scene_(scene), view_(size.view), w_(size.width), h_(size.height),
+        browser_edges_(browser_edges) {}
 
   Image paths_image(const std::vector<Path>& paths, int depth) {
     Image root(pixels() * 4, 0.0f);
@@ -88,6 +89,8 @@ class Compositor {
     const std::vector<double> cp(p.plan.rest_cp.begin(), p.plan.rest_cp.end());
     p.pts = ref::flatten(p.plan, cp);
     ref::stroke(p.plan, p.pts);
+    if (browser_edges_)  // every line's end points are points of pts: snapping them snaps edges
+      for (size_t i = 1; i < p.pts.size(); i += 2) p.pts[i] = browser_edge_y(p.pts[i]);
     return p;
   }
 
@@ -182,16 +185,18 @@ class Compositor {
   const Scene& scene_;
   Affine view_;
   int w_, h_;
+  bool browser_edges_;  // RasterPlan::browser_edges for every plan it makes
 };
 
 }  // namespace
 
-std::vector<float> composite_layers(const Scene& scene, const RenderSize& size) {
-  return Compositor(scene, size).paths_image(scene.paths, 0);
+std::vector<float> composite_layers(const Scene& scene, const RenderSize& size, bool browser_edges) {
+  return Compositor(scene, size, browser_edges).paths_image(scene.paths, 0);
 }
 
-RgbaImage render_layers(const Scene& scene, const RenderSize& size, bool transparent) {
-  const std::vector<float> img = composite_layers(scene, size);
+RgbaImage render_layers(const Scene& scene, const RenderSize& size, bool transparent,
+                        bool browser_edges) {
+  const std::vector<float> img = composite_layers(scene, size, browser_edges);
   RgbaImage out{size.width, size.height, std::vector<uint8_t>(img.size())};
   const float bg = transparent ? 0.0f : 1.0f;
   auto byte = [](float v) { return static_cast<uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); };

@@ -19,11 +19,14 @@
 
 namespace svgm {
 
-// Premultiplied RGBA floats (height * width * 4) of the scene over transparent.
-std::vector<float> composite_layers(const Scene& scene, const RenderSize& size);
+// Premultiplied RGBA floats (height * width * 4) of the scene over transparent; edges as a
+// browser rasterises them under `browser_edges` (RasterPlan::browser_edges).
+std::vector<float> composite_layers(const Scene& scene, const RenderSize& size,
+                                    bool browser_edges = false);
 
 // The same as 8-bit straight RGBA over white, or over nothing when `transparent` (rounded as
 // kernels/raster.cl's to_rgba8_pixel rounds).
-RgbaImage render_layers(const Scene& scene, const RenderSize& size, bool transparent);
+RgbaImage render_layers(const Scene& scene, const RenderSize& size, bool transparent,
+                        bool browser_edges = false);
 
 }  // namespace svgm

@@ -117,7 +117,7 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double ren
     const int n_strokes = static_cast<int>(p.strokes.size());
     set_args(k_flatten_, cp_, vert_cp_, vert_w_, pts_, p.n_cp, p.n_flat, p.n_pts);
     set_args(k_stroke_, pts_, sp_a_, sp_b_, sp_f_, vert_join_, n_strokes, p.n_pts);
-    set_args(k_lines_, pts_, line_ab_, lines_, p.n_pts, p.n_lines);
+    set_args(k_lines_, pts_, line_ab_, lines_, p.n_pts, p.n_lines, p.browser_edges ? 1 : 0);
     const int n_draws = static_cast<int>(p.draws.size());
     const int n_chunks = static_cast<int>(p.chunk_lines.size() / 2);
     set_args(k_bounds_, lines_, chunk_lines_, bounds_, p.n_lines, n_chunks);

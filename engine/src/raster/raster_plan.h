@@ -9,6 +9,7 @@
 // execute a plan, so they agree by construction on topology and are compared on numbers.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -94,6 +95,10 @@ struct RasterPlan {
   // it; its own motion has no gradient (only the boundary's).
   std::vector<float> paint;
   std::vector<int> chunk_lines;  // (first line, count) pairs
+  // Edges as a browser rasterises them: every line's end points rounded to a quarter pixel in y
+  // (kernels/lines.cl says why). For renders people watch; plan_raster leaves it off, and the
+  // fitter, which differentiates coverage, needs it off.
+  bool browser_edges = false;
   std::vector<int> line_chunk;   // chunk index of every line
 
   // Transposed tables for the backward pass (CSR: entries of item i are [first[i], first[i+1])).
@@ -107,6 +112,9 @@ struct RasterPlan {
 // pixel space.
 RasterPlan plan_raster(const Scene& scene, const Affine& view, int width, int height,
                        const RasterPlanOptions& options = {});
+
+// A y coordinate where browser_edges puts it: the nearest quarter pixel (kernels/lines.cl).
+inline double browser_edge_y(double y) { return std::floor(4.0 * y + 0.5) * 0.25; }
 
 // Number of outline points a stroke subpath writes (the formula stroke.cl follows).
 int stroke_point_count(const StrokeSubpath& s);

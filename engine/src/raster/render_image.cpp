@@ -11,12 +11,14 @@
 
 namespace svgm {
 
-RgbaImage render_image(ClRuntime& rt, const Scene& scene, int width, bool transparent) {
+RgbaImage render_image(ClRuntime& rt, const Scene& scene, int width, bool transparent,
+                       bool browser_edges) {
   const RenderSize size = render_size(scene, width);
   // Gradients and layers (group opacity, clips, masks) are drawn by the CPU compositor; the
   // GPU rasteriser composites flat paths one by one (and stays the fitter's forward pass).
-  if (scene.needs_layers()) return render_layers(scene, size, transparent);
-  const RasterPlan plan = plan_raster(scene, size.view, size.width, size.height);
+  if (scene.needs_layers()) return render_layers(scene, size, transparent, browser_edges);
+  RasterPlan plan = plan_raster(scene, size.view, size.width, size.height);
+  plan.browser_edges = browser_edges;
   ClRaster raster(rt, plan, 1);
   raster.set_rest_pose();
   const std::array<float, 4> white{1, 1, 1, 1}, clear{0, 0, 0, 0};

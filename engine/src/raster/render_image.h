@@ -10,7 +10,10 @@
 namespace svgm {
 
 // The scene rasterised `width` pixels wide (0: its own width; height by its aspect, see
-// render_size.h), 8-bit straight RGBA over white, or over nothing when `transparent`.
-RgbaImage render_image(ClRuntime& rt, const Scene& scene, int width, bool transparent);
+// render_size.h), 8-bit straight RGBA over white, or over nothing when `transparent`. With
+// `browser_edges` its edges are rasterised as a browser does (RasterPlan::browser_edges): what
+// people are shown; without, the exact coverage the fitter differentiates.
+RgbaImage render_image(ClRuntime& rt, const Scene& scene, int width, bool transparent,
+                       bool browser_edges = false);
 
 }  // namespace svgm
