@@ -1267,8 +1267,6 @@ TEST_CASE("a bird seen from the side: its near wing and the far one rising behin
   CHECK(bottom == 0);
 }
 
-}  // TEST_SUITE
-
 TEST_CASE("a tail with no limb of its own bends at the end away from the head, whatever the seed") {
   // A lying body drawn as one bar (its skeleton has no limbs) and a head above its left half:
   // the far-end bend of the tail is the right end for every seed (by the seed's coin it was
@@ -1310,5 +1308,6 @@ TEST_CASE("a head swivels by turning on its neck and back, not round") {
   CHECK(a.primitive == Primitive::Swing);
   REQUIRE(a.parts.size() == 1);
   CHECK(fx.rig.parts[a.parts[0]].role == Role::Head);
-  // A wheel named by the prompt still spins round.
 }
+
+}  // TEST_SUITE
