@@ -49,7 +49,7 @@ int cmd_export(const std::vector<std::string>& argv) {
   // (the target video's), so a 24 fps animation is not resampled to 30.
   const bool has_fps = a.has("--fps");
   const double clip_fps = a.get_double("--fps", 0);
-  if (has_fps && !(clip_fps > 0 && clip_fps <= 240)) throw Error("export: --fps wants a frame rate in (0, 240]");
+  if (has_fps && !(clip_fps >= 1 && clip_fps <= 240)) throw Error("export: --fps wants a frame rate in [1, 240]");
   const int quality = a.get_int("--quality", -1, 0, kMaxVp9Crf);
   const bool transparent = a.has("--transparent");
   auto has_clip = [&](const char* f) { return std::find(clips.begin(), clips.end(), f) != clips.end(); };

@@ -68,7 +68,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     throw Error("render: --time is for a still image; a clip (" + *out + ") shows the whole animation");
   if (still && a.has("--fps")) throw Error("render: --fps is for clips (.mp4, .webm, .gif, .webp, frames/%04d.png)");
   double fps = a.get_double("--fps", kDefaultFps);
-  if (!(fps > 0 && fps <= kMaxFps)) throw Error("render: --fps wants a frame rate in (0, 240]");
+  if (!(fps >= 1 && fps <= kMaxFps)) throw Error("render: --fps wants a frame rate in [1, 240]");
   if (transparent && format == ClipFormat::Mp4)
     throw Error("render: --background transparent needs PNG, GIF, WebM or WebP output; mp4 (H.264) has no alpha");
   ClipOptions clip_options;

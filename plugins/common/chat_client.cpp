@@ -85,7 +85,10 @@ std::string answer_text(const std::string& reply) {
   if (content.is_array()) {
     std::string s;
     for (const auto& part : content)
-      if (part.is_object() && part.value("type", "") == "text" && part.contains("text") && part["text"].is_string())
+      // (value("type", "") throws on a type that is not a string: a malformed reply must be a
+      // Failure the callers fall back on, not an exception that ends the stage.)
+      if (part.is_object() && part.contains("type") && part["type"].is_string() && part["type"].get<std::string>() == "text" &&
+          part.contains("text") && part["text"].is_string())
         s += part["text"].get<std::string>();
     return s;
   }

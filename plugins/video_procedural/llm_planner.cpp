@@ -9,6 +9,7 @@
 #include "common/stage_files.h"
 #include "image/numbered_parts.h"
 #include "motion/motion_verbs.h"
+#include "net/secret_scrub.h"
 #include "svgmotion/error.h"
 #include "svgmotion/png_io.h"
 #include "svgmotion/render_size.h"
@@ -157,7 +158,9 @@ LlmPlan ask_llm_planner(const json& options, const Scene& scene, const Rig& rig,
       {"seed", seed}};
   LlmPlan out;
   out.model = s.model;
-  out.answer = chat::answer_text(chat::post(s, json_text(body), host, "video procedural"));
+  // The reply's body is scrubbed of the key, but its text parts are joined and unescaped after:
+  // scrubbed again, so a key the server splits or escapes reaches no log, motion.json or report.
+  out.answer = scrub_secret(chat::answer_text(chat::post(s, json_text(body), host, "video procedural")), s.api_key);
   out.steps = check_llm_plan(out.answer, rig, out.plan);
   return out;
 }

@@ -55,6 +55,8 @@ drawing as a PNG image_url; temperature 0 and an integer seed. Its replies, by m
     plan_two_lines     two plan items on two lines
     plan_auth          the valid plan if "Authorization: Bearer test-secret" is sent, else 401
     plan_echo_key      HTTP 401 echoing the bearer token sent (as echo_key)
+    plan_bad_type      content [{"type": 1, ...}]: no text part
+    plan_split_key     the key test-secret split over two text parts of the answer
     hang, http500      as for the grouper
 
 With --log, every request body is appended to FILE as one JSON line.
@@ -211,6 +213,10 @@ PLAN_ANSWERS = {
     "plan_unknown_verb": "teleport:head",
     "plan_empty": "",
     "plan_two_lines": "wave:arm_left\nkick:leg_right",
+    # Content as parts: one whose type is not a string (no text in it), and the key split over
+    # two text parts (scrubbed from the raw body, whole again once the parts are joined).
+    "plan_bad_type": [{"type": 1, "text": "wave:arm_left"}],
+    "plan_split_key": [{"type": "text", "text": "wave:arm_left test-"}, {"type": "text", "text": "secret"}],
 }
 
 

@@ -7,7 +7,7 @@
 # holds the plan, the candidates move what it names. The request holds the drawing as a PNG
 # data URL, the part names, the prompt, temperature 0 and a seed. Every failure (no url,
 # refused, timeout, HTTP 500, a sentence, an unknown part or verb, an empty or two-line answer,
-# a 401 echoing the key) plans offline with exit status 0, one warning line naming the reason,
+# a 401 echoing the key, a content part whose type is no string, the key split over two parts) plans offline with exit status 0, one warning line naming the reason,
 # and the reason in motion.json. The API key is in no log.txt, motion.json or terminal output.
 # Prints "ok - ..."/"not ok - ...", then "N passed, M failed"; exits non-zero on any failure.
 # KEEP=1 keeps the scratch folder.
@@ -55,6 +55,8 @@ run_case unknown_verb "$(opts plan_unknown_verb)" & cases+=($!)
 run_case empty "$(opts plan_empty)" & cases+=($!)
 run_case two_lines "$(opts plan_two_lines)" & cases+=($!)
 run_case echo_key "$(opts plan_echo_key), api_key_env: PLANNER_KEY" & cases+=($!)
+run_case bad_type "$(opts plan_bad_type)" & cases+=($!)
+run_case split_key "$(opts plan_split_key), api_key_env: PLANNER_KEY" & cases+=($!)
 wait "${cases[@]}"
 
 # motion NAME EXPR: a Python expression over motion.json (j) is true.
@@ -101,8 +103,9 @@ declare -A why=([nourl]="no url configured (stages.video.options.url)" [refused]
   [hang]="timeout: no answer from" [http500]="HTTP 500 from" [garbage]="unknown verb 'sure!'"
   [unknown_part]="'tentacle_left' matches no part (parts: leg_left, leg_right, body, arm_left"
   [unknown_verb]="unknown verb 'teleport'" [empty]="the model's plan is empty"
-  [two_lines]="malformed plan: more than one line" [echo_key]="HTTP 401 from")
-for c in nourl refused hang http500 garbage unknown_part unknown_verb empty two_lines echo_key; do
+  [two_lines]="malformed plan: more than one line" [echo_key]="HTTP 401 from" [bad_type]="the model's plan is empty"
+  [split_key]="wave:arm_left")
+for c in nourl refused hang http500 garbage unknown_part unknown_verb empty two_lines echo_key bad_type split_key; do
   check "$c: plans offline, exit 0, one warning line naming the reason, the reason in motion.json" \
     '[[ $(cat "$tmp/$c.rc") -eq 0 && $(plan_of $c) == "$offline" ]] && [[ $(grep -c "planner llm" "$tmp/$c.err") -eq 1 ]] &&
      grep "video procedural: planner llm: " "$tmp/$c.err" | grep -F "${why[$c]}" | grep -q "; using the offline planner$" &&
@@ -113,7 +116,7 @@ check "report.html shows the model's plan, and the planner's fallback as a warni
   'grep -qF "<code class=\"svgm-llm-plan\">wave:arm_left slow, kick:leg_right</code>" "$tmp/valid/report.html" &&
    grep -q "id=\"svgm-planner-fallback\">The llm planner gave no plan (HTTP 500 from" "$tmp/http500/report.html"'
 check "the API key is in no log.txt, motion.json or terminal output" \
-  '! grep -rlF "$key" "$tmp"/valid "$tmp"/echo_key "$tmp"/*.err "$tmp"/*.out'
+  '! grep -rlF "$key" "$tmp"/valid "$tmp"/echo_key "$tmp"/split_key "$tmp"/*.err "$tmp"/*.out'
 check "a fallback is not cached: the next run asks the model again" \
   '"$bin" run --input "$svg" -o "$tmp/http500" --quiet --prompt "$prompt" "stages.video.options={planner: llm, $(opts http500)}" "${small[@]}" \
      >/dev/null 2>"$tmp/again.err" && grep -q "planner llm: HTTP 500" "$tmp/again.err"'

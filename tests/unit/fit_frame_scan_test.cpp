@@ -110,6 +110,12 @@ TEST_CASE("frame scan: runs of one length are a cadence, a figure that stops now
   find_cadence(runs, s);
   CHECK(s.cadence == 3);
   CHECK(s.poses == std::vector<int>{0, 3, 6, 9, 12, 14});
+  // 3:2 pulldown (12 fps in 30: runs of 3 and 2, tied, the shorter the cadence): a run of 3 is
+  // one pose, its third frame a repeat, not a pose shown late.
+  runs = {0, 0, 0, 3, 3, 5, 5, 5, 8, 8, 10, 10};
+  find_cadence(runs, s);
+  CHECK(s.cadence == 2);
+  CHECK(s.poses == std::vector<int>{0, 3, 5, 8, 10, 11});
   // A 24-fps clip whose figure stops twice: every frame is its own.
   runs = {0, 1, 2, 2, 2, 2, 6, 7, 8, 8, 8, 11, 12};
   find_cadence(runs, s);

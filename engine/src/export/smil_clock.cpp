@@ -30,7 +30,7 @@ SmilClock smil_clock(std::string_view text, std::string_view name) {
     clock.duration_s = std::max(clock.duration_s, pass);
   }
   const auto fps = svg::parse_number(doc.document_element().attribute(kFrameRateAttribute).value());
-  if (fps && *fps > 0 && *fps <= 240) clock.fps = *fps;
+  if (fps && *fps >= 1 && *fps <= 240) clock.fps = *fps;  // below 1 fps a GIF's delays overflow
   return clock;
 }
 

@@ -530,8 +530,9 @@ struct Builder {
       }
     }
     // A tail leaves the end away from the head; the seed's coin only when no head shows which.
-    const int coin = (rng() & 1) ? 1 : -1;
+    // (The coin is drawn for a far end only, as before: the other bends' draws stay the seed's.)
     if (a.region == Region::End) {
+      const int coin = (rng() & 1) ? 1 : -1;
       const int head = head_side(rig, a.parts[0]);
       a.direction = head != 0 ? -head : coin;
     }

@@ -65,8 +65,11 @@ void find_cadence(const std::vector<int>& run_start, FrameScan& scan) {
   const int before_last = static_cast<int>(runs.size()) - 1;
   scan.cadence = mode >= 2 && before_last >= 3 && n >= kCadenceMinShare * before_last ? mode : 1;
   scan.poses.clear();
+  // A run of k whole cadences is k poses that look alike (a pose held twice as long); a run
+  // between whole cadences (3:2 pulldown's runs of 3 at a cadence of 2) is one pose, its extra
+  // frames repeats: a pose at first + 2 would be a repeat shown late.
   for (const auto& [first, len] : runs)
-    for (int j = 0; j < len; j += scan.cadence) scan.poses.push_back(first + j);
+    for (int j = 0; j < std::max(1, len / scan.cadence); ++j) scan.poses.push_back(first + j * scan.cadence);
   if (N > 0 && scan.poses.back() != N - 1) scan.poses.push_back(N - 1);
 }
 
