@@ -42,6 +42,15 @@ std::string one_line(std::string s, size_t max_chars) {
   return s;
 }
 
+namespace {
+// The endpoint as messages show it: without its query and fragment, where some services take
+// their key (`?key=...`); messages reach log.txt, motion.json and report.html.
+std::string shown_url(const std::string& url) {
+  const size_t cut = url.find_first_of("?#");
+  return cut == std::string::npos ? url : url.substr(0, cut) + "?...";
+}
+}  // namespace
+
 std::string post(const Settings& s, const std::string& body, const svgm_host* host,
                  const std::string& who) {
   auto cancelled = [host] { return host && host->cancelled && host->cancelled(host) != 0; };
@@ -56,17 +65,20 @@ std::string post(const Settings& s, const std::string& body, const svgm_host* ho
   if (r.refused) throw Failure(r.error);
   if (r.timed_out) {
     std::ostringstream m;
-    m << "timeout: no answer from " << s.url << " within " << s.timeout_s << " s";
+    m << "timeout: no answer from " << shown_url(s.url) << " within " << s.timeout_s << " s";
     throw Failure(m.str());
   }
-  if (!r.connected) throw Failure("request to " + s.url + " failed: " + one_line(r.error));
+  if (!r.connected) throw Failure("request to " + shown_url(s.url) + " failed: " + one_line(r.error));
   // The key is scrubbed from the whole body before any of it is cut or shown, and the reply
   // handed on is scrubbed too: an answer parsed, quoted in a fallback reason or logged by the
   // plugins cannot show it.
+  // A server echoing the request (its path, its query) shows no key either.
+  const size_t query = s.url.find('?');
+  const std::string body_shown = query == std::string::npos ? r.body : scrub_secret(r.body, s.url.substr(query + 1));
   if (r.status < 200 || r.status > 299)
-    throw Failure("HTTP " + std::to_string(r.status) + " from " + s.url +
-                  (r.body.empty() ? "" : ": " + safe_excerpt(r.body, s.api_key, 200)));
-  return scrub_secret(r.body, s.api_key);
+    throw Failure("HTTP " + std::to_string(r.status) + " from " + shown_url(s.url) +
+                  (body_shown.empty() ? "" : ": " + safe_excerpt(body_shown, s.api_key, 200)));
+  return scrub_secret(body_shown, s.api_key);
 }
 
 // The text of choices[0].message.content (a string, or a list of text parts).

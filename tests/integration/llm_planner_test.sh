@@ -7,7 +7,8 @@
 # holds the plan, the candidates move what it names. The request holds the drawing as a PNG
 # data URL, the part names, the prompt, temperature 0 and a seed. Every failure (no url,
 # refused, timeout, HTTP 500, a sentence, an unknown part or verb, an empty or two-line answer,
-# a 401 echoing the key, a content part whose type is no string, the key split over two parts) plans offline with exit status 0, one warning line naming the reason,
+# a 401 echoing the key, a content part whose type is no string, the key split over two parts,
+# a key in the endpoint's query, which no message shows) plans offline with exit status 0, one warning line naming the reason,
 # and the reason in motion.json. The API key is in no log.txt, motion.json or terminal output.
 # Prints "ok - ..."/"not ok - ...", then "N passed, M failed"; exits non-zero on any failure.
 # KEEP=1 keeps the scratch folder.
@@ -57,6 +58,7 @@ run_case two_lines "$(opts plan_two_lines)" & cases+=($!)
 run_case echo_key "$(opts plan_echo_key), api_key_env: PLANNER_KEY" & cases+=($!)
 run_case bad_type "$(opts plan_bad_type)" & cases+=($!)
 run_case split_key "$(opts plan_split_key), api_key_env: PLANNER_KEY" & cases+=($!)
+run_case url_key "$(opts plan_valid "$url?key=query-secret")" & cases+=($!)
 wait "${cases[@]}"
 
 # motion NAME EXPR: a Python expression over motion.json (j) is true.
@@ -104,14 +106,19 @@ declare -A why=([nourl]="no url configured (stages.video.options.url)" [refused]
   [unknown_part]="'tentacle_left' matches no part (parts: leg_left, leg_right, body, arm_left"
   [unknown_verb]="unknown verb 'teleport'" [empty]="the model's plan is empty"
   [two_lines]="malformed plan: more than one line" [echo_key]="HTTP 401 from" [bad_type]="the model's plan is empty"
-  [split_key]="wave:arm_left")
-for c in nourl refused hang http500 garbage unknown_part unknown_verb empty two_lines echo_key bad_type split_key; do
+  [split_key]="wave:arm_left" [url_key]="HTTP 404 from http://127.0.0.1:$port/v1/chat/completions?...")
+for c in nourl refused hang http500 garbage unknown_part unknown_verb empty two_lines echo_key bad_type split_key url_key; do
   check "$c: plans offline, exit 0, one warning line naming the reason, the reason in motion.json" \
     '[[ $(cat "$tmp/$c.rc") -eq 0 && $(plan_of $c) == "$offline" ]] && [[ $(grep -c "planner llm" "$tmp/$c.err") -eq 1 ]] &&
      grep "video procedural: planner llm: " "$tmp/$c.err" | grep -F "${why[$c]}" | grep -q "; using the offline planner$" &&
      motion $c "j[\"source\"] == \"prompt\" and j[\"planner\"][\"source\"] == \"offline\" and sys.argv[2] in j[\"planner\"][\"fallback\"]" "${why[$c]}" ||
      { head -c 600 "$tmp/$c.err"; false; }'
 done
+# (The run's records of the command typed, log.txt's command line and resolved.yaml, keep the
+# url as given: the key belongs in api_key_env.)
+check "a key in the endpoint's query is in no message, motion.json or report.html, though the server echoes it" \
+  '! grep -lF "query-secret" "$tmp"/url_key/motion.json "$tmp"/url_key/report.html "$tmp"/url_key.err "$tmp"/url_key.out &&
+   grep -q "completions?<key>" "$tmp"/url_key/motion.json'
 check "report.html shows the model's plan, and the planner's fallback as a warning" \
   'grep -qF "<code class=\"svgm-llm-plan\">wave:arm_left slow, kick:leg_right</code>" "$tmp/valid/report.html" &&
    grep -q "id=\"svgm-planner-fallback\">The llm planner gave no plan (HTTP 500 from" "$tmp/http500/report.html"'

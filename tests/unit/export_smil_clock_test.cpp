@@ -39,7 +39,21 @@ TEST_CASE("smil clock: the writer's frame rate on the root is read back; none re
   CHECK(again.find("data-svgmotion-fps=\"24\"") == std::string::npos);
   CHECK(smil_clock(again, "a.svg").fps == 12.5);
   CHECK(again.size() == stamped.size() + 2);
-  // A rate no clip could have is ignored.
+  // Written by hand (single quotes, a new line before it, spaces round '='), or only inside
+  // another attribute's value: replaced in place, or added once; the result parses.
+  const std::string hand = "<svg xmlns=\"http://www.w3.org/2000/svg\" data-note=\" data-svgmotion-fps='3'\"\n"
+                           "  data-svgmotion-fps = '30'><rect width=\"4\" height=\"4\"/></svg>";
+  const std::string restamped = with_frame_rate(hand, "h.svg", 24);
+  CHECK(restamped == "<svg xmlns=\"http://www.w3.org/2000/svg\" data-note=\" data-svgmotion-fps='3'\"\n"
+                     "  data-svgmotion-fps = '24'><rect width=\"4\" height=\"4\"/></svg>");
+  CHECK(smil_clock(restamped, "h.svg").fps == 24);
+  const std::string quoted_only = "<svg xmlns=\"http://www.w3.org/2000/svg\" data-note=\" data-svgmotion-fps='3'\"/>";
+  CHECK(with_frame_rate(quoted_only, "q.svg", 24) ==
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" data-note=\" data-svgmotion-fps='3'\" data-svgmotion-fps=\"24\"/>");
+  // A rate no clip could have is ignored (below 1 fps a GIF's delays overflow).
+  std::string slow = stamped;
+  slow.replace(slow.find("\"24\""), 4, "\"0.5\"");
+  CHECK(smil_clock(slow, "a.svg").fps == 0);
   std::string absurd = stamped;
   absurd.replace(absurd.find("\"24\""), 4, "\"1e9\"");
   CHECK(smil_clock(absurd, "a.svg").fps == 0);

@@ -47,14 +47,29 @@ std::string with_frame_rate(std::string_view text, std::string_view name, double
   char value[64];
   std::snprintf(value, sizeof value, "%.9g", fps);
   std::string out(text);
-  const std::string key = std::string(" ") + kFrameRateAttribute + "=\"";
-  const size_t at = std::string_view(text.data() + begin, end - begin).find(key);
-  if (at != std::string_view::npos) {
-    const size_t v = begin + at + key.size(), close = out.find('"', v);
-    out.replace(v, close - v, value);
-  } else {
-    out.insert(end, key + value + "\"");
+  // An attribute already there (a re-export of an exported file, a hand edit: either quote,
+  // any space round its '=') gets the new value; a second one would make the file unreadable.
+  const std::string_view attr = kFrameRateAttribute;
+  auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+  for (size_t p = begin; p < end; ++p) {
+    if (text[p] == '"' || text[p] == '\'') {  // skip a quoted value whole
+      const size_t close = text.find(text[p], p + 1);
+      if (close == std::string_view::npos || close >= end) break;
+      p = close;
+      continue;
+    }
+    if (!space(text[p]) || text.substr(p + 1, attr.size()) != attr) continue;
+    size_t q = p + 1 + attr.size();
+    while (q < end && space(text[q])) ++q;
+    if (q >= end || text[q] != '=') continue;
+    for (++q; q < end && space(text[q]);) ++q;
+    if (q >= end || (text[q] != '"' && text[q] != '\'')) continue;
+    const size_t close = text.find(text[q], q + 1);
+    if (close == std::string_view::npos || close >= end) break;
+    out.replace(q + 1, close - q - 1, value);
+    return out;
   }
+  out.insert(end, std::string(" ") + std::string(attr) + "=\"" + value + "\"");
   return out;
 }
 
