@@ -24,6 +24,7 @@
 
 #include "fit/fit_job.h"
 #include "fit/target/frame_scan.h"
+#include "small_fit.h"
 
 using namespace svgm;
 namespace fs = std::filesystem;
@@ -77,20 +78,7 @@ std::array<double, 2> shake(int i, double a) {
 }
 
 nlohmann::json fit_clip(const fs::path& dir, const fs::path& svg, int keyframes, int iterations) {
-  FitJob job;
-  job.svg = svg;
-  job.target = dir / "frames";
-  job.out = dir / "out";
-  job.keyframes = keyframes;
-  job.width = 64;
-  job.refine_width = 0;
-  job.denoise_radius = 0;
-  job.options.iterations = iterations;
-  job.gate = false;
-  job.quiet = true;
-  REQUIRE(run_fit_job(job, [] { return false; }) == 0);
-  std::ifstream in(dir / "out" / "fit.json");
-  return nlohmann::json::parse(in);
+  return svgm::test::fit_frames(dir, svg, keyframes, iterations);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fit/fit_job.h"
+#include "small_fit.h"
 #include "fit/optimise/fitter.h"
 #include "fit/optimise/keyframe_choice.h"
 #include "fit/target/rest_start.h"
@@ -60,21 +61,7 @@ fs::path square_clip(const fs::path& dir, int frames, const std::function<double
 }
 
 nlohmann::json fit_clip(const fs::path& dir, const fs::path& svg, int max_keyframes) {
-  FitJob job;
-  job.svg = svg;
-  job.target = dir / "frames";
-  job.out = dir / "out";
-  job.keyframes = 4;
-  job.max_keyframes = max_keyframes;
-  job.width = 64;
-  job.refine_width = 0;
-  job.denoise_radius = 0;
-  job.options.iterations = 200;
-  job.gate = false;
-  job.quiet = true;
-  REQUIRE(run_fit_job(job, [] { return false; }) == 0);
-  std::ifstream in(dir / "out" / "fit.json");
-  return nlohmann::json::parse(in);
+  return svgm::test::fit_frames(dir, svg, 4, 200, max_keyframes);
 }
 
 }  // namespace

@@ -207,13 +207,7 @@ std::vector<std::string> write_compact_animation_svg(const fs::path& source, con
   char dur[32];
   std::snprintf(dur, sizeof dur, "%.4gs", pass.duration_s);
   auto repeat_attrs = [&](pugi::xml_node anim) {
-    anim.append_attribute("dur") = dur;
-    if (timing.loop == LoopMode::Once) {
-      anim.append_attribute("repeatCount") = "1";
-      anim.append_attribute("fill") = "freeze";
-    } else {
-      anim.append_attribute("repeatCount") = "indefinite";
-    }
+    append_repeat(anim, dur, timing.loop);
   };
   std::vector<std::string> warnings;
   CompactStats st;

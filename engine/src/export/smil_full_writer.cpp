@@ -190,13 +190,7 @@ std::vector<std::string> write_animation_svg(const fs::path& source, const Scene
       a = next;
     }
     auto timing_attrs = [&](pugi::xml_node anim) {
-      anim.append_attribute("dur") = dur;
-      if (timing.loop == LoopMode::Once) {
-        anim.append_attribute("repeatCount") = "1";
-        anim.append_attribute("fill") = "freeze";
-      } else {
-        anim.append_attribute("repeatCount") = "indefinite";
-      }
+      append_repeat(anim, dur, timing.loop);
       anim.append_attribute("calcMode") = "linear";
       anim.append_attribute("keyTimes") = key_times.c_str();
     };

@@ -74,6 +74,16 @@ void remove_gradient_animations(pugi::xml_node gn) {
   }
 }
 
+void append_repeat(pugi::xml_node anim, const char* dur, LoopMode loop) {
+  anim.append_attribute("dur") = dur;
+  if (loop == LoopMode::Once) {
+    anim.append_attribute("repeatCount") = "1";
+    anim.append_attribute("fill") = "freeze";
+  } else {
+    anim.append_attribute("repeatCount") = "indefinite";
+  }
+}
+
 }  // namespace smil_internal
 
 using namespace smil_internal;

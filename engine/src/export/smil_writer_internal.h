@@ -85,4 +85,8 @@ std::vector<pugi::xml_node> find_elements(pugi::xml_document& doc, const Scene& 
 // Removes an earlier fit's gradientTransform animation from gradient element `gn`.
 void remove_gradient_animations(pugi::xml_node gn);
 
+// An animation's clock: its duration `dur` ("2s"), then played once and held (fill freeze) or
+// repeated forever, as `loop` says (a mirrored loop's values already go there and back).
+void append_repeat(pugi::xml_node anim, const char* dur, LoopMode loop);
+
 }  // namespace svgm::smil_internal
