@@ -228,9 +228,10 @@ int region_host(const Rig& rig, Target t) {
 }
 
 // Which side of part `host` its head is on, as the viewer sees it (-1 left, 1 right; 0 when
-// nothing shows it or it is over the middle): the middle of the parts whose role is the head,
-// by area, else the tips of the silhouette's head limbs. A tail bends at the other end: by the
-// seed's coin it was the head of half the mermaids and tigers that flicked it.
+// no head part shows it or it is over the middle): the middle of the parts whose role is the
+// head, by area. A tail bends at the other end: by the seed's coin it was the head of half the
+// mermaids that flicked it. Not the silhouette's head limbs: a cat's tail raised in a curl is
+// labelled a head there, and its head end bent instead.
 int head_side(const Rig& rig, int host) {
   const RigBox& B = rig.parts[host].box;
   double sum = 0, weight = 0;
@@ -240,9 +241,6 @@ int head_side(const Rig& rig, int host) {
       sum += w * rig.parts[i].box.centre().x;
       weight += w;
     }
-  if (weight == 0)
-    for (const ArmLobe& l : rig.limbs)
-      if (l.kind == LobeKind::Head) sum += l.tip.x, weight += 1;
   if (weight == 0) return 0;
   const double dx = sum / weight - B.centre().x;
   return std::fabs(dx) < kHeadOffCentre * B.w() ? 0 : dx < 0 ? -1 : 1;
