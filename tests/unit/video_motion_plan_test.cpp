@@ -11,6 +11,7 @@
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
 #include "procedural/motion_plan.h"
+#include "procedural/support_band.h"
 #include "geometry/rigid_bodies.h"
 
 using namespace svgm;
@@ -800,6 +801,112 @@ TEST_CASE("a flag ripples from its pole: the pole holds, the free end moves most
   REQUIRE(!swim.actions.empty());
   CHECK(swim.actions[0].primitive == Primitive::Undulate);
   CHECK(swim.actions[0].anchored == 0);
+}
+
+TEST_CASE("a flagpole drawn as a thick bar still holds the flag; a tall thin bar inside the figure is no pole") {
+  // The pole is 4 wide against a figure 24 wide (a sixth: past kPoleWidth's 5 %), 36 tall, at
+  // the left: thin for its length, so the flag ripples from it and it holds still.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="48" height="48">
+           <g><rect x="10" y="2" width="4" height="36" fill="#666"/></g>
+           <g><path d="M 12 4 L 34 12 L 12 20 Z" fill="#d24"/></g></svg>)", "thick_pole.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("the flag ripples in the wind"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].anchored == 1);
+  const int F = 13;
+  fit_plan(s, rig, plan, F, 9);
+  const auto pts = animate_plan(s, rig, plan, F);
+  const size_t per = pts.size() / F;
+  double pole = 0;
+  for (int f = 0; f < F; ++f)
+    for (size_t i = 0; i < s.paths[0].subpaths[0].points.size(); ++i) pole = std::max(pole, std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
+  CHECK(pole == 0.0);
+  // A bar in the middle of the figure (not starting at a side) is no pole.
+  const Scene mid = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="48" height="48">
+           <g><rect x="20" y="2" width="4" height="36" fill="#666"/></g>
+           <g><path d="M 4 4 L 44 12 L 4 20 Z" fill="#d24"/></g></svg>)", "mid_bar.svg");
+  const MotionPlan free = plan_from_prompt(parse_prompt("the flag ripples in the wind"), build_rig(mid, {}), 1);
+  REQUIRE(free.actions.size() == 1);
+  CHECK(free.actions[0].anchored == 0);
+}
+
+TEST_CASE("a bend of an upright figure holds its base and bends most at its top; a fish bends about its middle") {
+  // Three stalks 10 wide and 80 tall standing on y = 90: the figure is upright.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
+           <path d="M 20 90 L 30 90 L 30 10 L 20 10 Z" fill="#3a3"/>
+           <path d="M 45 90 L 55 90 L 55 10 L 45 10 Z" fill="#3a3"/>
+           <path d="M 70 90 L 80 90 L 80 10 L 70 10 Z" fill="#3a3"/></svg>)", "stalks.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("the stalks bend in the wind"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  REQUIRE(plan.actions[0].primitive == Primitive::Bend);
+  CHECK(plan.actions[0].anchored == 4);
+  CHECK(plan.actions[0].why.find("held at its bottom: it bends from there") != std::string::npos);
+  const int F = 13;
+  fit_plan(s, rig, plan, F, 9);
+  const auto pts = animate_plan(s, rig, plan, F);
+  double base = 0, top = 0;
+  each_move(pts, F, [&](Vec2 rest, Vec2 d) {
+    CHECK(d.y == 0.0);  // across the figure's height: sideways
+    if (rest.y == 90) base = std::max(base, std::fabs(d.x));
+    if (rest.y == 10) top = std::max(top, std::fabs(d.x));
+  });
+  CHECK(base == 0.0);
+  CHECK(top > 8.0);  // the issue's floor: 8 % of the figure's diagonal (about 87)
+  CHECK(loop_gap(pts, F) < 1e-9);
+  // A fish bends free: named a fish, its ends both move.
+  const MotionPlan fish = plan_from_prompt(parse_prompt("the fish bends"), rig, 1);
+  REQUIRE(fish.actions.size() == 1);
+  CHECK(fish.actions[0].anchored == 0);
+}
+
+TEST_CASE("a figure moving on a ground the prompt names leaves the band drawn there still") {
+  // A hull and a sail (10-90 x 10-66) on a sea band 0-100 x 70-95 with a crest line along
+  // its top (68-72).
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
+           <path d="M 0 70 L 100 70 L 100 95 L 0 95 Z" fill="#8cf"/>
+           <path d="M 0 70 Q 25 66 50 70 Q 75 74 100 70" fill="none" stroke="#000"/>
+           <path d="M 20 55 L 80 55 L 70 66 L 30 66 Z" fill="#a63"/>
+           <path d="M 50 10 L 50 52 L 20 52 Z" fill="#ddd"/></svg>)", "boat.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("the sailboat bobs on the waves"), rig, 1);
+  CHECK(plan.ground == "on the waves");
+  CHECK(std::find(plan.not_understood.begin(), plan.not_understood.end(), "waves") == plan.not_understood.end());
+  const std::vector<char> band = support_paths(s, rig);
+  REQUIRE(band.size() == 4);
+  CHECK(band == std::vector<char>{1, 1, 0, 0});
+  const int F = 13;
+  fit_plan(s, rig, plan, F, 9);
+  const auto pts = animate_plan(s, rig, plan, F);
+  const size_t per = pts.size() / F;
+  auto travel = [&](int path) {
+    size_t first = 0;
+    for (int p = 0; p < path; ++p)
+      for (const auto& sp : s.paths[p].subpaths) first += sp.points.size();
+    size_t n = 0;
+    for (const auto& sp : s.paths[path].subpaths) n += sp.points.size();
+    double m = 0;
+    for (int f = 0; f < F; ++f)
+      for (size_t i = first; i < first + n; ++i) m = std::max(m, std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
+    return m;
+  };
+  CHECK(travel(0) == 0.0);
+  CHECK(travel(1) == 0.0);
+  CHECK(travel(2) > 1.0);
+  CHECK(travel(3) > 1.0);
+  // Said without a ground, the sea bobs with the boat (it is part of the figure).
+  MotionPlan bare = plan_from_prompt(parse_prompt("the sailboat bobs"), rig, 1);
+  CHECK(bare.ground.empty());
+  fit_plan(s, rig, bare, F, 9);
+  const auto moved = animate_plan(s, rig, bare, F);
+  double sea = 0;
+  for (int f = 0; f < F; ++f)
+    for (size_t i = 0; i < s.paths[0].subpaths[0].points.size(); ++i) sea = std::max(sea, std::hypot(moved[f * per + i].x - moved[i].x, moved[f * per + i].y - moved[i].y));
+  CHECK(sea > 1.0);
 }
 
 TEST_CASE("a compact figure swims with its lower limbs; its head holds; named tentacles drop the swim's slide") {

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "procedural/motion_plan_internal.h"
+#include "procedural/support_band.h"
 #include "geometry/rigid_bodies.h"
 #include "procedural/wheel_riders.h"
 
@@ -94,6 +95,16 @@ Vec2 deform(const PlannedAction& a, double amp, double t, const RigBox& box, Vec
   } else if (a.primitive == Primitive::Undulate) {
     const double w = 0.4 + 0.6 * std::fabs(2 * u - 1);  // the ends move most
     d = amp * L * w * (std::sin(kTau * (a.cycles * t - u)) - std::sin(kTau * (-u)));
+  } else if (a.primitive == Primitive::Bend && a.anchored != 0) {
+    // Held at one side (a stalk at its root, a banner at its pole): it bends from there, each
+    // point displaced across the figure by the square of its distance from the held side (a
+    // cantilever's curve), the far side as far as tan(angle) of the figure's length.
+    const bool across_x = a.anchored <= 2;
+    const double len = std::max(across_x ? box.w() : box.h(), 1e-9);
+    const double f = across_x ? (q.x - box.x0) / len : (q.y - box.y0) / len;
+    const double v = a.anchored % 2 == 1 ? f : 1 - f;
+    const double e = std::tan(amp * M_PI / 180) * len * v * v * oscillation(a, a.cycles * t) * a.direction;
+    return across_x ? Vec2{q.x, q.y + e} : Vec2{q.x + e, q.y};
   } else if (a.primitive == Primitive::Bend) {
     d = std::tan(amp * M_PI / 180) * L * 2 * (u - 0.5) * (u - 0.5) * oscillation(a, a.cycles * t) * a.direction;
   }
@@ -356,8 +367,10 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   // The pole a wave runs from holds still (the wave's weight is small but not nothing across
   // its width: a flag's pole moved 0.8 px and the fitted one drifted out of the canvas).
   for (const auto& a : plan.actions)
-    if (a.primitive == Primitive::Undulate && a.anchored != 0)
+    if ((a.primitive == Primitive::Undulate || a.primitive == Primitive::Bend) && a.anchored != 0)
       for (int p : pole_parts(rig, a.anchored)) held[p] = 1;
+  // The ground the prompt says the figure moves on stays (support_band.h).
+  const std::vector<char> ground = plan.ground.empty() ? std::vector<char>() : support_paths(scene, rig);
   // Chains hanging from the root that reach the lowest kPlanted of the figure stand on the
   // ground (legs, feet): the root's own swing does not carry them.
   std::vector<char> planted(G, 0);
@@ -422,7 +435,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
       const int g = rig.part_of_path[pi];
       const int e = element_of[pi];
-      const bool background = g >= 0 && (rig.parts[g].role == Role::Background || held[g]);
+      const bool background = (g >= 0 && (rig.parts[g].role == Role::Background || held[g])) || (pi < ground.size() && ground[pi]);
       const bool free_particle = particles && e >= 0;
       // The element's own motion (falls, twinkles), one phase per element.
       const Affine elem = e >= 0 ? element_motion(scene, plan, e, element_box[e], t, W, H) : Affine();

@@ -11,6 +11,7 @@
 
 #include "svgmotion/error.h"
 #include "procedural/motion_plan_internal.h"
+#include "procedural/support_band.h"
 
 namespace svgm {
 
@@ -164,11 +165,17 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
 }
 
 // The pole's parts at `side` of the figure (1 left, 2 right, 3 top, 4 bottom): the thin parts
-// (at most kPoleWidth of the figure's extent across that side) lying within kPoleEnd of it.
+// (at most kPoleWidth of the figure's extent across that side) lying within kPoleEnd of it, or
+// upright bars drawn thick (kPoleWidthMax, kPoleAspect) starting there.
 std::vector<int> pole_parts(const Rig& rig, int side) {
   const RigBox& F = rig.figure;
   const bool across_x = side <= 2;  // a left or right pole: thin in x, spanning y
   const double L = std::max(across_x ? F.w() : F.h(), 1e-9);
+  // Upright bars of the figure: a thick one is its pole only when it is the only one (of three
+  // stalks, the leftmost is no pole).
+  auto upright_bar = [&](const RigBox& b) { return b.h() >= kPoleAspect * b.w() && b.h() >= 0.5 * F.h() && b.w() <= kPoleWidthMax * F.w(); };
+  int bars = 0;
+  for (const RigPart& P : rig.parts) bars += P.role != Role::Background && !P.box.empty() && upright_bar(P.box);
   std::vector<int> out;
   for (size_t i = 0; i < rig.parts.size(); ++i) {
     const RigPart& P = rig.parts[i];
@@ -176,7 +183,13 @@ std::vector<int> pole_parts(const Rig& rig, int side) {
     const double a0 = across_x ? P.box.x0 : P.box.y0, a1 = across_x ? P.box.x1 : P.box.y1;
     const double s0 = across_x ? F.x0 : F.y0, s1 = across_x ? F.x1 : F.y1;
     const bool near = side % 2 == 1 ? a1 <= s0 + kPoleEnd * L : a0 >= s1 - kPoleEnd * L;
-    if (near && a1 - a0 <= kPoleWidth * L) out.push_back(static_cast<int>(i));
+    // A pole drawn thick (an emoji's flagpole is a sixth of the flag's width) is still a pole
+    // when it stands upright, thin for its own length, from the left or right side. Not along
+    // the top or bottom: a thin bar lying there is a ski, a board or the ground.
+    const double length = across_x ? P.box.h() : P.box.w();
+    const bool starts = side % 2 == 1 ? a0 <= s0 + kPoleEnd * L : a1 >= s1 - kPoleEnd * L;
+    const bool thick_pole = across_x && bars == 1 && starts && a1 - a0 <= kPoleWidthMax * L && length >= kPoleAspect * (a1 - a0);
+    if ((near && a1 - a0 <= kPoleWidth * L) || thick_pole) out.push_back(static_cast<int>(i));
   }
   return out;
 }
@@ -208,6 +221,16 @@ int anchored_side(const Rig& rig) {
     if (covered >= kPoleSpan * span) return side;
   }
   return 0;
+}
+
+// Where a bend of the whole figure is held: at a pole (a banner), else at the figure's base
+// when it stands (a plant, a standing figure: upright, or named a plant), 0 when it is free
+// (a fish, a bird, a snake, a figure lying along its length bends about its middle). Bent
+// about its middle, rice stalks swung their roots five times as far as their ears.
+int bend_anchor(const Rig& rig, FigureClass figure) {
+  if (const int side = anchored_side(rig)) return side;
+  if (figure == FigureClass::FishOrSnake || figure == FigureClass::Bird || figure == FigureClass::Insect) return 0;
+  return figure == FigureClass::Plant || rig.figure.h() >= kUpright * rig.figure.w() ? 4 : 0;
 }
 
 // The part whose region bends for a limb role that has no part of its own. Arms: the widest
@@ -410,6 +433,7 @@ struct Builder {
     }
     a.vertical = mods.vertical;
     if (a.primitive == Primitive::Undulate && target == Target::Whole) a.anchored = anchored_side(rig);
+    if (a.primitive == Primitive::Bend && target == Target::Whole) a.anchored = bend_anchor(rig, figure);
     a.direction = mods.side != 0 ? mods.side : ((rng() & 1) ? 1 : -1);
     // Where the prompt sends the figure ("drifts to the right"): a slide of the whole figure
     // goes that way first, in the viewer's frame.
@@ -586,7 +610,11 @@ struct Builder {
       if (!n.empty()) a.why += "; " + n;
     if (a.anchored != 0) {
       static const char* sides[] = {"", "left", "right", "top", "bottom"};
-      a.why += std::string("; held by a pole at its ") + sides[a.anchored] + ": the wave runs from there";
+      if (a.primitive == Primitive::Bend)
+        a.why += std::string("; held at its ") + sides[a.anchored] + (pole_parts(rig, a.anchored).empty() ? "" : " by a pole") +
+                 ": it bends from there";
+      else
+        a.why += std::string("; held by a pole at its ") + sides[a.anchored] + ": the wave runs from there";
     }
     if (!mods.words.empty()) a.why += "; " + join(mods.words, ", ");
   }
@@ -618,6 +646,14 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
     if (b.figure == FigureClass::None) b.figure = c.figure;
   b.plan.source = "prompt";
   std::vector<std::string> unknown;
+  // Where the figure moves ("bobs on the waves"): a noun after a preposition of place that
+  // names no part of the figure (nor only its backdrop, which stays anyway).
+  for (const Clause& c : prompt.clauses)
+    for (const auto& n : c.nouns) {
+      if (!b.plan.ground.empty() || !n.object_of_preposition || n.target != Target::Named || !names_ground(n.preposition)) continue;
+      std::string ignore;
+      if (parts_for(rig, Target::Named, n.word, &ignore).empty()) b.plan.ground = n.preposition + " the " + n.word;
+    }
   // Does the prompt say which limbs move ("waving its arms", "sways its tentacles")? Then the
   // whole-figure accents of its limb verbs (cheering's hop, flapping's bob, dancing's rock) are
   // left out: they move every part, the ones the prompt keeps still too, and outweigh the
@@ -713,6 +749,9 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
       break;
     }
   b.plan.readings = prompt.readings;
+  // The ground's noun was understood: it is where the figure moves.
+  if (!b.plan.ground.empty())
+    unknown.erase(std::remove(unknown.begin(), unknown.end(), b.plan.ground.substr(b.plan.ground.rfind(' ') + 1)), unknown.end());
   b.plan.not_understood = unknown;
   for (const auto& w : prompt.unplaced)
     if (std::find(unknown.begin(), unknown.end(), w) == unknown.end()) b.plan.not_understood.push_back(w);

@@ -49,8 +49,9 @@ struct PlannedAction {
   int cycles = 1;
   int vertical = 0;             // Bob: +1 only up, -1 only down
   int direction = 1;            // Spin, Slide, Rock one-sided: which way first
-  int anchored = 0;             // Undulate of the whole figure: the side a pole holds it at (a
-                                // flag): 1 left, 2 right, 3 top, 4 bottom; 0 free (a fish)
+  int anchored = 0;             // Undulate or Bend of the whole figure: the side a pole holds it
+                                // at (a flag), or a Bend's base (a stalk): 1 left, 2 right, 3 top,
+                                // 4 bottom; 0 free (a fish)
   Region region = Region::None; // a Swing of a region of parts[0] instead of whole parts
   int region_side = 0;          // Sides/Lower: -1 only the viewer's left, +1 only the right
   bool alternating = false;     // Sides/Lower: the two sides half a cycle apart
@@ -80,6 +81,8 @@ struct MotionPlan {
   std::vector<int> held;        // parts (with what hangs from them) the whole figure's motions
                                 // leave where they are, as the background (fit_plan: small parts
                                 // at the canvas's edge when the figure could not move otherwise)
+  std::string ground;           // the prompt's words naming a ground the figure moves on ("on
+                                // the waves"): the band drawn there stays (support_band.h)
   // The amplitude `a` moves with: its own, times its scale and the plan's (a spin's whole turns
   // are never scaled).
   double amplitude(const PlannedAction& a) const { return a.primitive == Primitive::Spin ? a.amp : a.amp * a.scale * scale; }

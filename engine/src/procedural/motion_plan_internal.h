@@ -55,6 +55,12 @@ inline constexpr double kSwayHinge = 0.55;
 // of the figure's extent across that side) lying within kPoleEnd of it together span kPoleSpan
 // of the figure along it: a flag's pole. The wave then runs away from that side.
 inline constexpr double kPoleWidth = 0.05, kPoleEnd = 0.1, kPoleSpan = 0.7;
+// ... or a part starting at that side at most kPoleWidthMax of the extent thick and at least
+// kPoleAspect times as long as it is thick (a flagpole drawn as a bar).
+inline constexpr double kPoleWidthMax = 0.2, kPoleAspect = 4;
+// A figure at least this many times as tall as it is wide stands upright: bent as a whole, its
+// base holds (bend_anchor).
+inline constexpr double kUpright = 0.8;
 // A figure whose longer side is less than this many times its shorter one is compact: it swims
 // with its lower limbs, not by a wave along its body (Builder::add).
 inline constexpr double kElongated = 1.6;

@@ -8,6 +8,7 @@
 
 #include "procedural/motion_direction.h"
 #include "procedural/motion_plan_internal.h"
+#include "procedural/support_band.h"
 #include "geometry/rigid_bodies.h"
 
 namespace svgm {
@@ -62,8 +63,20 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
   std::string root = rig.root >= 0 ? rig.parts[rig.root].name : "";
   json held = json::array();
   for (int h : plan.held) held.push_back(rig.parts[h].name);
+  // The ground the prompt names and the paths drawn as it (they stay).
+  json ground = nullptr;
+  if (!plan.ground.empty()) {
+    json ids = json::array();
+    const std::vector<char> band = support_paths(scene, rig);
+    for (size_t pi = 0; pi < band.size(); ++pi)
+      if (band[pi]) ids.push_back(scene.paths[pi].id);
+    ground = {{"words", plan.ground}, {"paths", ids},
+              {"why", ids.empty() ? "no band drawn across the figure's bottom: nothing is held"
+                                  : "the band drawn across the figure's bottom stays while the figure moves"}};
+  }
   return {{"source", plan.source},
           {"held", held},
+          {"ground", ground},
           {"root", root},
           {"parts", parts},
           {"repeated_elements", rig.repeated.size()},

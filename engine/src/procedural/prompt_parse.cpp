@@ -105,6 +105,7 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
   std::string prev, prev2;
   bool prev_was_verb = false, prev_was_noun = false;
   std::vector<bool> modifier_noun;  // per noun: followed by another noun ("candle" in "candle flame")
+  std::string preposition;          // the last preposition of the clause
   for (size_t wi = 0; wi < words.size(); ++wi) {
     const std::string& w = words[wi];
     const bool prev_was_start = c.text.empty();
@@ -131,6 +132,7 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
     if (const PartNoun* n = noun_for_word(w)) {
       const bool plural = (w.size() > n->stem.size() && w.back() == 's') || w == "feet" || w == "leaves";
       c.nouns.push_back({w, n->target, plural, after_prep, !c.verbs.empty()});
+      if (after_prep) c.nouns.back().preposition = preposition;
       if (after_noun_word && !modifier_noun.empty()) modifier_noun.back() = true;
       modifier_noun.push_back(false);
       prev_was_noun = true;
@@ -168,7 +170,11 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
       prev_was_verb = true;
       continue;
     }
-    if (is_preposition(w)) { after_prep = true; continue; }
+    if (is_preposition(w)) {
+      after_prep = true;
+      preposition = w;
+      continue;
+    }
     if (is_filler_word(w)) continue;
     // Not in the vocabulary: the lexicon, as a verb in a verb's place. Not in a noun's: inside
     // a prepositional phrase ("with black dots"), or as the subject of a verb after it ("horses
@@ -201,6 +207,7 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
       }
     }
     PromptNoun n{w, Target::Named, w.size() > 3 && w.back() == 's', after_prep, !c.verbs.empty()};
+    if (after_prep) n.preposition = preposition;
     // In a verb's place, a verb WordNet knows and the lexicon could not place ("the cat
     // yawns"): kept as a noun as before (a part may be named so), but it names no figure.
     if (lexicon.has_wordnet() && verb_form && !noun_place && !after_prep && !before_verb && lexicon.knows_verb(w)) {

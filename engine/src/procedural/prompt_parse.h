@@ -37,6 +37,8 @@ struct PromptNoun {
                                        // vocabulary does not know, so not another verb's target
   FigureClass figure = FigureClass::None;  // the lexicon's class of the thing it names
   const Verb* motion = nullptr;            // the motion such a thing makes by itself (lexicon)
+  std::string preposition = {};            // the one its phrase opened with ("on" in "bobs on the
+                                           // waves"); empty when not after one, or not known
 };
 
 struct Clause {

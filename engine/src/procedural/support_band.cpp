@@ -1,0 +1,61 @@
+// The ground band a figure moves on (support_band.h).
+#include "procedural/support_band.h"
+
+#include <algorithm>
+
+#include "procedural/part_rig_internal.h"
+
+namespace svgm {
+
+namespace {
+
+// The band spans at least this share of the figure's width, reaches within kBottom of the
+// figure's height from its bottom, starts below kTop of it from its top, and is at most kThick
+// of it tall (a sea, a road, a lawn; not the boat's hull above the water, nor the body).
+constexpr double kWide = 0.6, kBottom = 0.05, kTop = 0.4, kThick = 0.4;
+// Paths within the band, or reaching at most this share of the figure's height above it (the
+// crest line of its waves), belong to it.
+constexpr double kCrest = 0.05;
+
+}  // namespace
+
+bool names_ground(const std::string& p) {
+  return p == "on" || p == "onto" || p == "along" || p == "across" || p == "over" || p == "through" || p == "off";
+}
+
+std::vector<char> support_paths(const Scene& scene, const Rig& rig) {
+  using namespace part_rig_internal;
+  const size_t n = scene.paths.size();
+  std::vector<char> out(n, 0);
+  const RigBox& F = rig.figure;
+  if (F.empty()) return out;
+  const double W = F.w(), H = F.h();
+  std::vector<RigBox> box(n);
+  for (size_t i = 0; i < n; ++i) box[i] = path_box(scene.paths[i]);
+  auto figure_path = [&](size_t i) {
+    const int g = i < rig.part_of_path.size() ? rig.part_of_path[i] : -1;
+    return g < 0 || rig.parts[g].role != Role::Background;
+  };
+  int band = -1;
+  for (size_t i = 0; i < n; ++i) {
+    const RigBox& b = box[i];
+    if (!figure_path(i) || b.empty()) continue;
+    if (b.w() < kWide * W || b.y1 < F.y1 - kBottom * H || b.y0 < F.y0 + kTop * H || b.h() > kThick * H) continue;
+    if (band < 0 || b.w() > box[band].w()) band = static_cast<int>(i);
+  }
+  if (band < 0) return out;
+  const RigBox& B = box[band];
+  const double eps = kCrest * H;
+  bool above = false;  // something of the figure stands above the band
+  for (size_t i = 0; i < n; ++i) {
+    const RigBox& b = box[i];
+    if (!figure_path(i) || b.empty()) continue;
+    const bool within = b.y0 >= B.y0 - eps && b.x0 >= B.x0 - eps && b.x1 <= B.x1 + eps;
+    out[i] = within;
+    above = above || (!within && b.y1 <= B.y1);
+  }
+  if (!above) std::fill(out.begin(), out.end(), 0);
+  return out;
+}
+
+}  // namespace svgm

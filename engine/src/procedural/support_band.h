@@ -1,0 +1,27 @@
+// The ground a figure moves on, when the prompt names one ("the sailboat bobs on the waves",
+// "rides along the road", "pulls the oar through the water"): a band drawn across the bottom
+// of the figure that the figure's own motions leave where it is. Without it the sea bobbed
+// with the boat and the water a rower pulls through rowed with him.
+//
+// Found from the drawing, not from the word: the prompt only says that there is a ground (a
+// noun after on, onto, along, across, over, through or off that names no part of the figure);
+// the band is the widest path at the figure's bottom that spans most of its width and lies in
+// its lower part, with every path drawn within it (the crest line of the waves). No such band,
+// no support: "the rose droops on its stem" holds nothing.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "procedural/part_rig.h"
+#include "svgmotion/scene.h"
+
+namespace svgm {
+
+// Whether the preposition opens a phrase that names where the figure moves (a ground).
+bool names_ground(const std::string& preposition);
+
+// Per path of the scene: 1 when it belongs to the band the figure moves on (see above).
+std::vector<char> support_paths(const Scene& scene, const Rig& rig);
+
+}  // namespace svgm
