@@ -25,7 +25,8 @@ const std::vector<Verb> kVerbs = {
   {"wave",    {"wav", "greet", "goodby"},       {{P::Swing, T::Arms, 35, 2, Pr::OneSide}}, P::Swing},
   {"clap",    {"clap"},                         {{P::Swing, T::Arms, 22, 4, Pr::Mirrored}}, P::Swing},
   {"cheer",   {"cheer", "celebrat", "rejoic"},  {{P::Swing, T::Arms, 32, 3, Pr::Mirrored}, {P::Hop, T::Whole, 0.03, 3}}, P::Swing},
-  {"punch",   {"punch", "box", "jab", "fight", "fenc"}, {{P::Swing, T::Arms, 26, 3, Pr::OneAtATime}, {P::Swing, T::Root, 1.5, 3}}, P::Swing},  // the body turns into each punch about the hips, the legs planted (motion_plan.h), a little: at 4 degrees a boxer's body and head outweighed his fist; one fist, the other keeps guard
+  {"punch",   {"punch", "box", "jab", "fight", "fenc", "thrust", "stab", "pok"}, {{P::Swing, T::Arms, 26, 3, Pr::OneAtATime}, {P::Swing, T::Root, 1.5, 3}}, P::Swing},  // the body turns into each punch about the hips, the legs planted (motion_plan.h), a little: at 4 degrees a boxer's body and head outweighed his fist; one fist, the other keeps guard
+  {"throw",   {"throw", "threw", "toss", "hurl", "fling", "flung", "pitch"}, {{P::Swing, T::Arms, 40, 1, Pr::OneSide}}, P::Swing},  // one arm swings over and back
   {"lift",    {"lift", "rais", "hold"},         {{P::Swing, T::Arms, 24, 2, Pr::Mirrored}}, P::Swing},
   {"reach",   {"reach", "spread"},              {{P::Swing, T::Arms, 20, 1, Pr::Mirrored}}, P::Swing},
   {"pump",    {"pump"},                         {{P::Swing, T::Arms, 20, 2, Pr::Alternating}}, P::Swing},
@@ -65,7 +66,7 @@ const std::vector<Verb> kVerbs = {
   {"swim",    {"swim", "swam", "paddl"},        {{P::Undulate, T::Whole, 0.05, 1}, {P::Slide, T::Whole, 0.02, 1}}, P::Undulate},
   {"slither", {"slither", "undulat", "wriggl", "squirm", "sinuous", "snak", "weav"}, {{P::Undulate, T::Whole, 0.06, 1}}, P::Undulate},
   {"ripple",  {"rippl", "billow", "flow"},      {{P::Undulate, T::Whole, 0.04, 2}}, P::Undulate},
-  {"bend",    {"bend", "bent", "arch", "curl", "flex", "curv", "contract"}, {{P::Bend, T::Whole, 14, 1}}, P::Bend},
+  {"bend",    {"bend", "bent", "arch", "curl", "flex", "curv", "contract", "droop", "wilt", "sag"}, {{P::Bend, T::Whole, 14, 1}}, P::Bend},
   {"twist",   {"twist", "wiggl"},               {{P::Swing, T::Root, 10, 2}}, P::Swing},
   {"wobble",  {"wobbl", "jiggl", "jell", "squish"}, {{P::Bend, T::Whole, 7, 3}}, P::Bend},
   // Heads and tails.
@@ -79,7 +80,7 @@ const std::vector<Verb> kVerbs = {
   {"spin",    {"spin", "spun", "turn", "rotat", "twirl", "whirl", "revolv", "pirouett"}, {{P::Spin, T::Root, 1, 1}}, P::Spin},
   // Size.
   {"pulse",   {"puls", "breath", "beat", "throb", "heav"}, {{P::Pulse, T::Whole, 0.05, 2}}, P::Pulse},
-  {"grow",    {"grow", "grew", "inflat", "swell", "expand", "shrink", "shrank", "deflat"}, {{P::Pulse, T::Whole, 0.1, 1}}, P::Pulse},
+  {"grow",    {"grow", "grew", "inflat", "swell", "expand", "shrink", "shrank", "deflat", "open", "bloom", "unfold", "unfurl"}, {{P::Pulse, T::Whole, 0.1, 1}}, P::Pulse},
   {"twinkle", {"twinkl", "sparkl", "glow", "shin", "flicker", "blink", "glitter", "shimmer"}, {{P::Pulse, T::Repeated, 0.2, 2}}, P::Pulse},
   // Repeated elements.
   {"fall",    {"fall", "fell", "rain", "pour", "drip", "snow", "tumbl", "descend", "shower"}, {{P::Fall, T::Repeated, 0.12, 1}}, P::Fall},

@@ -10,9 +10,10 @@ namespace svgm {
 namespace {
 
 // The band spans at least this share of the figure's width, reaches within kBottom of the
-// figure's height from its bottom, starts below kTop of it from its top, and is at most kThick
-// of it tall (a sea, a road, a lawn; not the boat's hull above the water, nor the body).
-constexpr double kWide = 0.6, kBottom = 0.05, kTop = 0.4, kThick = 0.4;
+// figure's height from its bottom and starts below kTop of it from its top (a sea, a road, a
+// lawn; not the boat's hull above the water, nor the body). A rowing boat's sea is nearly half
+// the drawing's height.
+constexpr double kWide = 0.6, kBottom = 0.05, kTop = 0.4;
 // Paths within the band, or reaching at most this share of the figure's height above it (the
 // crest line of its waves), belong to it.
 constexpr double kCrest = 0.05;
@@ -40,7 +41,7 @@ std::vector<char> support_paths(const Scene& scene, const Rig& rig) {
   for (size_t i = 0; i < n; ++i) {
     const RigBox& b = box[i];
     if (!figure_path(i) || b.empty()) continue;
-    if (b.w() < kWide * W || b.y1 < F.y1 - kBottom * H || b.y0 < F.y0 + kTop * H || b.h() > kThick * H) continue;
+    if (b.w() < kWide * W || b.y1 < F.y1 - kBottom * H || b.y0 < F.y0 + kTop * H) continue;
     if (band < 0 || b.w() > box[band].w()) band = static_cast<int>(i);
   }
   if (band < 0) return out;
