@@ -59,8 +59,10 @@
  * the symmetric one.
  *
  * Output. A line may cross several bands; each band writes its partial gradient of the line
- * into its own slot, partial[k][line][band], and gather_line_grads sums the slots of the bands
- * the line crosses in band order. Deterministic, no atomics.
+ * into its own slot, partial[k][band][line], and gather_line_grads sums the slots of the bands
+ * the line crosses in band order. Deterministic, no atomics. (Slots grouped by band: a band
+ * writes its chunks' lines side by side; grouped by line, every write was a cache line of its
+ * own, n_bands · 16 bytes apart.)
  */
 
 #define FRACTION_EPS 1e-6f /* |a| this close to an integer is treated as interior or exterior */
@@ -471,7 +473,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               __global const float4* pool,        /* raster_taped's tapes */
                               __global int* pool_draw,            /* [K][n_bands][n_draws] */
                               __global const int2* pool_at,       /* [K][n_bands] */
-                              __global float4* partial,           /* [K][n_lines][n_bands] */
+                              __global float4* partial,           /* [K][n_bands][n_lines] */
                               __global int* overflow,             /* [1]: tape overflows */
                               int n_lines, int n_chunks, int n_draws, int n_bands, int width,
                               int height,
@@ -489,6 +491,17 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
     __global const float4* Ek = E + (size_t)k * height * width;
     __global const int2* Xk = ext_e + (size_t)k * height;
     __global const half* Rk = R + (size_t)k * height * width * 4;
+#if defined(PREFETCH_LOSS) && defined(__clang__)
+    /* The rows of E' and R this band's edge pixels read (blurred_gradient), within their
+     * drawing extents, one prefetch per 64-byte line: the reads come scattered over the draws'
+     * edges, and as demand misses each waited for memory. Changes no value. */
+    for (int y = max(y0 - LOSS_R, 0); y < min(y0 + rows + LOSS_R, height); ++y) {
+      const int2 ex = Xk[y];
+      for (int x = ex.x; x <= ex.y; x += 4) __builtin_prefetch(Ek + (size_t)y * width + x);
+      if (y >= y0 && y < y0 + rows)
+        for (int x = ex.x; x <= ex.y; x += 8) __builtin_prefetch(Rk + ((size_t)y * width + x) * 4);
+    }
+#endif
     /* Per row: the draw's span, and the valid hulls of the lazily cleared row buffers
      * (accumulation, colour, transmittance, ∂L/∂a; see grow_hull in raster.cl). */
     int xlo[BAND_H], xhi[BAND_H], alo[BAND_H], ahi[BAND_H], hlo[BAND_H], hhi[BAND_H];
@@ -562,7 +575,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
             grow_hull2(gcell + r * width, &glo[r], &ghi[r], ca, cb);
             g += walk_line_grad(l, on, at, y0 + r, width, gcell + r * width);
           }
-          partial[((size_t)k * n_lines + j) * n_bands + band] = g;
+          partial[((size_t)k * n_bands + band) * n_lines + j] = g;
         }
       }
       for (int r = 0; r < rows; ++r)
@@ -588,7 +601,7 @@ __kernel void gather_line_grads(__global const float4* lines, __global const int
     const int y0 = band * BAND_H, rows = min(BAND_H, height - y0);
     const float fy0 = (float)y0, fy1 = (float)(y0 + rows);
     if (!band_reaches(b, fy0, fy1, (float)width)) continue; /* the band skipped it */
-    g += partial[((size_t)k * n_lines + j) * n_bands + band];
+    g += partial[((size_t)k * n_bands + band) * n_lines + j];
   }
   line_grad[(size_t)k * n_lines + j] = g;
 }
