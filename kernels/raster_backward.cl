@@ -381,6 +381,7 @@ inline int replay_band(__global const float4* L, __global const float4* B,
     const int rule = draw_rule[d];
     const int painted = draw_paint[d] >= 0;
     __global const float4* pimg = paint_image(paint, draw_paint[d], width, height);
+    prefetch_paint(pimg, painted, y0, rows, xlo, xhi, width);
     for (int r = 0; r < rows; ++r) {
       if (xhi[r] >= xlo[r])
         replay_span(acc + r * stride, mark + r * width, band_rgba + r * width, &hlo[r], &hhi[r],
@@ -491,15 +492,15 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
     __global const float4* Ek = E + (size_t)k * height * width;
     __global const int2* Xk = ext_e + (size_t)k * height;
     __global const half* Rk = R + (size_t)k * height * width * 4;
-#if defined(PREFETCH_LOSS) && defined(__clang__)
+#ifdef PREFETCH_ROWS
     /* The rows of E' and R this band's edge pixels read (blurred_gradient), within their
      * drawing extents, one prefetch per 64-byte line: the reads come scattered over the draws'
      * edges, and as demand misses each waited for memory. Changes no value. */
     for (int y = max(y0 - LOSS_R, 0); y < min(y0 + rows + LOSS_R, height); ++y) {
       const int2 ex = Xk[y];
-      for (int x = ex.x; x <= ex.y; x += 4) __builtin_prefetch(Ek + (size_t)y * width + x);
+      for (int x = ex.x; x <= ex.y; x += 4) PREFETCH(Ek + (size_t)y * width + x);
       if (y >= y0 && y < y0 + rows)
-        for (int x = ex.x; x <= ex.y; x += 8) __builtin_prefetch(Rk + ((size_t)y * width + x) * 4);
+        for (int x = ex.x; x <= ex.y; x += 8) PREFETCH(Rk + ((size_t)y * width + x) * 4);
     }
 #endif
     /* Per row: the draw's span, and the valid hulls of the lazily cleared row buffers
@@ -541,6 +542,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
       const int rule = draw_rule[d];
       const int painted = draw_paint[d] >= 0;
       __global const float4* pimg = paint_image(paint, draw_paint[d], width, height);
+      prefetch_paint(pimg, painted, y0, rows, xlo, xhi, width);
       int tq = draw_tape[d];
       int slo[BAND_H], shi[BAND_H]; /* the spans written into gcell, cleared after the walk */
       for (int r = 0; r < rows; ++r) {
