@@ -96,6 +96,16 @@ inline float3 rgb_adjoint_from_ycc(float3 v) {
 }
 #endif
 
+/* A hint that the line holding *p will be read soon (PREFETCH_ROWS, set by the host for CPU
+ * devices, engine/src/opencl/tuning.cpp): clang's builtin, which PoCL lowers to the CPU's
+ * prefetch instruction. Nothing elsewhere, and it never changes a value. */
+#if defined(PREFETCH_ROWS) && defined(__clang__)
+#define PREFETCH(p) __builtin_prefetch(p)
+#else
+#undef PREFETCH_ROWS
+#define PREFETCH(p) ((void)0)
+#endif
+
 inline float cross2(float2 a, float2 b) { return a.x * b.y - a.y * b.x; }
 
 /* Coverage from the winding integral a of one pixel (the box-filtered winding number). */

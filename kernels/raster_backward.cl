@@ -59,8 +59,10 @@
  * the symmetric one.
  *
  * Output. A line may cross several bands; each band writes its partial gradient of the line
- * into its own slot, partial[k][line][band], and gather_line_grads sums the slots of the bands
- * the line crosses in band order. Deterministic, no atomics.
+ * into its own slot, partial[k][band][line], and gather_line_grads sums the slots of the bands
+ * the line crosses in band order. Deterministic, no atomics. (Slots grouped by band: a band
+ * writes its chunks' lines side by side; grouped by line, every write was a cache line of its
+ * own, n_bands · 16 bytes apart.)
  */
 
 #define FRACTION_EPS 1e-6f /* |a| this close to an integer is treated as interior or exterior */
@@ -379,6 +381,7 @@ inline int replay_band(__global const float4* L, __global const float4* B,
     const int rule = draw_rule[d];
     const int painted = draw_paint[d] >= 0;
     __global const float4* pimg = paint_image(paint, draw_paint[d], width, height);
+    prefetch_paint(pimg, painted, y0, rows, xlo, xhi, width);
     for (int r = 0; r < rows; ++r) {
       if (xhi[r] >= xlo[r])
         replay_span(acc + r * stride, mark + r * width, band_rgba + r * width, &hlo[r], &hhi[r],
@@ -471,7 +474,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               __global const float4* pool,        /* raster_taped's tapes */
                               __global int* pool_draw,            /* [K][n_bands][n_draws] */
                               __global const int2* pool_at,       /* [K][n_bands] */
-                              __global float4* partial,           /* [K][n_lines][n_bands] */
+                              __global float4* partial,           /* [K][n_bands][n_lines] */
                               __global int* overflow,             /* [1]: tape overflows */
                               int n_lines, int n_chunks, int n_draws, int n_bands, int width,
                               int height,
@@ -489,6 +492,17 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
     __global const float4* Ek = E + (size_t)k * height * width;
     __global const int2* Xk = ext_e + (size_t)k * height;
     __global const half* Rk = R + (size_t)k * height * width * 4;
+#ifdef PREFETCH_ROWS
+    /* The rows of E' and R this band's edge pixels read (blurred_gradient), within their
+     * drawing extents, one prefetch per 64-byte line: the reads come scattered over the draws'
+     * edges, and as demand misses each waited for memory. Changes no value. */
+    for (int y = max(y0 - LOSS_R, 0); y < min(y0 + rows + LOSS_R, height); ++y) {
+      const int2 ex = Xk[y];
+      for (int x = ex.x; x <= ex.y; x += 4) PREFETCH(Ek + (size_t)y * width + x);
+      if (y >= y0 && y < y0 + rows)
+        for (int x = ex.x; x <= ex.y; x += 8) PREFETCH(Rk + ((size_t)y * width + x) * 4);
+    }
+#endif
     /* Per row: the draw's span, and the valid hulls of the lazily cleared row buffers
      * (accumulation, colour, transmittance, ∂L/∂a; see grow_hull in raster.cl). */
     int xlo[BAND_H], xhi[BAND_H], alo[BAND_H], ahi[BAND_H], hlo[BAND_H], hhi[BAND_H];
@@ -528,6 +542,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
       const int rule = draw_rule[d];
       const int painted = draw_paint[d] >= 0;
       __global const float4* pimg = paint_image(paint, draw_paint[d], width, height);
+      prefetch_paint(pimg, painted, y0, rows, xlo, xhi, width);
       int tq = draw_tape[d];
       int slo[BAND_H], shi[BAND_H]; /* the spans written into gcell, cleared after the walk */
       for (int r = 0; r < rows; ++r) {
@@ -562,7 +577,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
             grow_hull2(gcell + r * width, &glo[r], &ghi[r], ca, cb);
             g += walk_line_grad(l, on, at, y0 + r, width, gcell + r * width);
           }
-          partial[((size_t)k * n_lines + j) * n_bands + band] = g;
+          partial[((size_t)k * n_bands + band) * n_lines + j] = g;
         }
       }
       for (int r = 0; r < rows; ++r)
@@ -588,7 +603,7 @@ __kernel void gather_line_grads(__global const float4* lines, __global const int
     const int y0 = band * BAND_H, rows = min(BAND_H, height - y0);
     const float fy0 = (float)y0, fy1 = (float)(y0 + rows);
     if (!band_reaches(b, fy0, fy1, (float)width)) continue; /* the band skipped it */
-    g += partial[((size_t)k * n_lines + j) * n_bands + band];
+    g += partial[((size_t)k * n_bands + band) * n_lines + j];
   }
   line_grad[(size_t)k * n_lines + j] = g;
 }

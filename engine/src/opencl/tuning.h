@@ -15,6 +15,7 @@ struct RasterTuning {
   int band_height = 16;  // rows per raster work-group (BAND_H)
   int group_size = 1;    // work-items per raster work-group (they share clearing and output)
   size_t local_budget = 32768;  // bytes of local memory a raster work-group may use
+  bool prefetch_rows = false;   // bands prefetch the rows they will read scattered (PREFETCH_ROWS)
 };
 
 // The tuning for rendering `width`-pixel rows on `device`.
