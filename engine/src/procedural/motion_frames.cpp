@@ -368,7 +368,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   // its width: a flag's pole moved 0.8 px and the fitted one drifted out of the canvas).
   for (const auto& a : plan.actions)
     if ((a.primitive == Primitive::Undulate || a.primitive == Primitive::Bend) && a.anchored != 0)
-      for (int p : pole_parts(rig, a.anchored)) held[p] = 1;
+      for (int p : pole_parts(rig, a.anchored, true)) held[p] = 1;
   // The ground the prompt says the figure moves on stays (support_band.h).
   const std::vector<char> ground = plan.ground.empty() ? std::vector<char>() : support_paths(scene, rig);
   // Chains hanging from the root that reach the lowest kPlanted of the figure stand on the

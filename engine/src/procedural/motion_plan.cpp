@@ -167,7 +167,7 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
 // The pole's parts at `side` of the figure (1 left, 2 right, 3 top, 4 bottom): the thin parts
 // (at most kPoleWidth of the figure's extent across that side) lying within kPoleEnd of it, or
 // upright bars drawn thick (kPoleWidthMax, kPoleAspect) starting there.
-std::vector<int> pole_parts(const Rig& rig, int side) {
+std::vector<int> pole_parts(const Rig& rig, int side, bool thick) {
   const RigBox& F = rig.figure;
   const bool across_x = side <= 2;  // a left or right pole: thin in x, spanning y
   const double L = std::max(across_x ? F.w() : F.h(), 1e-9);
@@ -188,21 +188,24 @@ std::vector<int> pole_parts(const Rig& rig, int side) {
     // the top or bottom: a thin bar lying there is a ski, a board or the ground.
     const double length = across_x ? P.box.h() : P.box.w();
     const bool starts = side % 2 == 1 ? a0 <= s0 + kPoleEnd * L : a1 >= s1 - kPoleEnd * L;
-    const bool thick_pole = across_x && bars == 1 && starts && a1 - a0 <= kPoleWidthMax * L && length >= kPoleAspect * (a1 - a0);
+    const bool thick_pole = thick && across_x && bars == 1 && starts && a1 - a0 <= kPoleWidthMax * L && length >= kPoleAspect * (a1 - a0);
     if ((near && a1 - a0 <= kPoleWidth * L) || thick_pole) out.push_back(static_cast<int>(i));
   }
   return out;
 }
 
 // The side of the figure a pole holds (PlannedAction::anchored: 1 left, 2 right, 3 top, 4
-// bottom), 0 for none: where the pole's parts together span kPoleSpan of the figure.
-int anchored_side(const Rig& rig) {
+// bottom), 0 for none: where the pole's parts together span kPoleSpan of the figure. `thick`
+// counts the bars drawn thick (pole_parts) too: for the wave or the bend of the whole figure,
+// never to turn a limb's verb into a ripple (an arm raised high is such a bar: "he raises his
+// hand and waves it" rippled the whole man).
+int anchored_side(const Rig& rig, bool thick) {
   const RigBox& F = rig.figure;
   for (int side = 1; side <= 4; ++side) {
     const bool across_x = side <= 2;
     const double span = std::max(across_x ? F.h() : F.w(), 1e-9);
     std::vector<std::pair<double, double>> spans;
-    for (int p : pole_parts(rig, side)) {
+    for (int p : pole_parts(rig, side, thick)) {
       const RigBox& b = rig.parts[p].box;
       spans.push_back(across_x ? std::make_pair(b.y0, b.y1) : std::make_pair(b.x0, b.x1));
     }
@@ -228,7 +231,7 @@ int anchored_side(const Rig& rig) {
 // (a fish, a bird, a snake, a figure lying along its length bends about its middle). Bent
 // about its middle, rice stalks swung their roots five times as far as their ears.
 int bend_anchor(const Rig& rig, FigureClass figure) {
-  if (const int side = anchored_side(rig)) return side;
+  if (const int side = anchored_side(rig, true)) return side;
   if (figure == FigureClass::FishOrSnake || figure == FigureClass::Bird || figure == FigureClass::Insect) return 0;
   return figure == FigureClass::Plant || rig.figure.h() >= kUpright * rig.figure.w() ? 4 : 0;
 }
@@ -367,7 +370,7 @@ bool paddles(const Verb& verb, const Rig& rig) {
   const RigBox& F = rig.figure;
   const double aspect = std::max(F.w(), F.h()) / std::max(std::min(F.w(), F.h()), 1e-9);
   return verb.name == "swim" && !verb.actions.empty() && verb.actions[0].primitive == Primitive::Undulate &&
-         aspect < kElongated && anchored_side(rig) == 0;
+         aspect < kElongated && anchored_side(rig, false) == 0;
 }
 
 struct Builder {
@@ -432,7 +435,7 @@ struct Builder {
       a.cycles = 1;
     }
     a.vertical = mods.vertical;
-    if (a.primitive == Primitive::Undulate && target == Target::Whole) a.anchored = anchored_side(rig);
+    if (a.primitive == Primitive::Undulate && target == Target::Whole) a.anchored = anchored_side(rig, true);
     if (a.primitive == Primitive::Bend && target == Target::Whole) a.anchored = bend_anchor(rig, figure);
     a.direction = mods.side != 0 ? mods.side : ((rng() & 1) ? 1 : -1);
     // Where the prompt sends the figure ("drifts to the right"): a slide of the whole figure
@@ -468,7 +471,7 @@ struct Builder {
     // 36 degrees across it and the fit dragged the pole's strokes along), nor a swing of the
     // strokes that a line drawing's rig takes for limbs (a flag's folds swung as arms about
     // their ends).
-    if (limb_role && rig.root >= 0 && a.primitive == Primitive::Swing && anchored_side(rig) != 0)
+    if (limb_role && rig.root >= 0 && a.primitive == Primitive::Swing && anchored_side(rig, false) != 0)
       if (const Verb* ripple = find_verb_by_name("ripple")) {
         add(*ripple, ripple->actions[0], Target::Whole, {}, "", mods, plural, words, false,
             verb.name + " has no " + target_name(target) + " on a figure held by a pole: it ripples");
@@ -611,7 +614,7 @@ struct Builder {
     if (a.anchored != 0) {
       static const char* sides[] = {"", "left", "right", "top", "bottom"};
       if (a.primitive == Primitive::Bend)
-        a.why += std::string("; held at its ") + sides[a.anchored] + (pole_parts(rig, a.anchored).empty() ? "" : " by a pole") +
+        a.why += std::string("; held at its ") + sides[a.anchored] + (pole_parts(rig, a.anchored, true).empty() ? "" : " by a pole") +
                  ": it bends from there";
       else
         a.why += std::string("; held by a pole at its ") + sides[a.anchored] + ": the wave runs from there";

@@ -98,8 +98,9 @@ std::vector<int> topmost(const Rig& rig, std::vector<int> parts);
 bool part_under(const Rig& rig, int p, int a);
 // The box of part a with everything that hangs from it.
 RigBox chain_box(const Rig& rig, int a);
-// The pole's parts at `side` of the figure (1 left, 2 right, 3 top, 4 bottom).
-std::vector<int> pole_parts(const Rig& rig, int side);
+// The pole's parts at `side` of the figure (1 left, 2 right, 3 top, 4 bottom); `thick`: also
+// upright bars drawn thick.
+std::vector<int> pole_parts(const Rig& rig, int side, bool thick);
 // The riders evenly spaced round the spinning `parts` (motion_frames.cpp, with the wheel loads).
 int spin_symmetry(const Rig& rig, const std::vector<int>& parts);
 // The oscillation of a back-and-forth action at phase u (in cycles) (motion_frames.cpp).
