@@ -112,6 +112,19 @@ TEST_CASE("snowflakes of three crossing lines are one element each; a fill and i
   }
 }
 
+TEST_CASE("snowflakes drift: every motion of the verb is the elements', the cloud holds") {
+  const Scene s = read_svg_string(kRain, "rain.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("snowflakes drift down from the cloud"), rig, 1);
+  REQUIRE(plan.actions.size() == 2);  // float: a bob and a rock
+  for (const auto& a : plan.actions) CHECK(a.target == Target::Repeated);
+  const int F = 25;
+  fit_plan(s, rig, plan, F, 9);
+  const auto t = subpath_travel(s, animate_plan(s, rig, plan, F), F);
+  CHECK(t[0][0] == 0.0);  // the cloud (it rocked with the whole figure)
+  for (double d : t[1]) CHECK(d > 0.5);
+}
+
 TEST_CASE("a path's pieces: a contour inside another's box belongs to it (a ring's hole, a highlight)") {
   const Scene s = read_svg_string(R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
     <path d="M 10 10 L 30 10 L 30 30 L 10 30 Z M 15 15 L 15 25 L 25 25 L 25 15 Z M 60 10 L 80 10 L 80 30 L 60 30 Z"/>
