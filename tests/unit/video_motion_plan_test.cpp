@@ -198,7 +198,7 @@ TEST_CASE("rain falls and the umbrella sways: drops fall in their own phases, th
   // drops are not in the same phase.
   std::vector<std::vector<double>> dy(fx.rig.repeated.size());
   for (size_t e = 0; e < fx.rig.repeated.size(); ++e) {
-    const size_t apex = fx.first_point(fx.rig.repeated[e][0]);
+    const size_t apex = fx.first_point(fx.rig.repeated[e][0].path);
     for (int f = 0; f < F; ++f) dy[e].push_back(pts[f * per + apex].y);
     CHECK(*std::max_element(dy[e].begin(), dy[e].end()) - *std::min_element(dy[e].begin(), dy[e].end()) > 5.0);
   }

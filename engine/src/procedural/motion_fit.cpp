@@ -163,15 +163,18 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
         for (int p : a.parts) spinning.insert(p);
     bool falls = false;
     for (const auto& a : plan.actions) falls = falls || a.primitive == Primitive::Fall;
-    std::set<int> falling;
+    std::set<std::pair<int, int>> falling;  // (path, subpath); subpath -1: every subpath
     if (falls)
-      for (const auto& el : rig.repeated) falling.insert(el.begin(), el.end());
+      for (const auto& el : rig.repeated)
+        for (const ElementPiece& piece : el) falling.insert({piece.path, piece.subpath});
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
       bool spin = false;
       for (int g = rig.part_of_path[pi], guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
         spin = spin || spinning.count(g) > 0;
-      const bool ex = spin || falling.count(static_cast<int>(pi)) > 0;
-      for (const auto& sp : scene.paths[pi].subpaths) {
+      const bool whole_falls = falling.count({static_cast<int>(pi), -1}) > 0;
+      for (size_t si = 0; si < scene.paths[pi].subpaths.size(); ++si) {
+        const auto& sp = scene.paths[pi].subpaths[si];
+        const bool ex = spin || whole_falls || falling.count({static_cast<int>(pi), static_cast<int>(si)}) > 0;
         exempt.insert(exempt.end(), sp.points.size(), ex);
         by_curve.insert(by_curve.end(), sp.points.size(), spin);
       }

@@ -346,14 +346,19 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   const int G = static_cast<int>(rig.parts.size());
   const double W = std::max(rig.figure.w(), 1e-9), H = std::max(rig.figure.h(), 1e-9);
   auto under = [&](int p, int a) { return part_under(rig, p, a); };
-  // Repeated elements: which element each path belongs to; and whether they fly free.
-  std::vector<int> element_of(scene.paths.size(), -1);
+  // Repeated elements: which element each subpath belongs to (an element may be some of the
+  // subpaths of one path); and whether they fly free.
+  std::vector<std::vector<int>> element_of(scene.paths.size());
+  for (size_t pi = 0; pi < scene.paths.size(); ++pi) element_of[pi].assign(scene.paths[pi].subpaths.size(), -1);
   std::vector<RigBox> element_box(rig.repeated.size());
   for (size_t e = 0; e < rig.repeated.size(); ++e)
-    for (int pi : rig.repeated[e]) {
-      element_of[pi] = static_cast<int>(e);
-      for (const auto& sp : scene.paths[pi].subpaths)
-        for (const Vec2& q : sp.points) element_box[e].add(q);
+    for (const ElementPiece& piece : rig.repeated[e]) {
+      const auto& subs = scene.paths[piece.path].subpaths;
+      for (size_t si = 0; si < subs.size(); ++si) {
+        if (piece.subpath >= 0 && static_cast<int>(si) != piece.subpath) continue;
+        element_of[piece.path][si] = static_cast<int>(e);
+        for (const Vec2& q : subs[si].points) element_box[e].add(q);
+      }
     }
   bool particles = false;
   for (const auto& a : plan.actions) particles = particles || (a.target == Target::Repeated && a.primitive == Primitive::Fall);
@@ -434,13 +439,13 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
 
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
       const int g = rig.part_of_path[pi];
-      const int e = element_of[pi];
       const bool background = (g >= 0 && (rig.parts[g].role == Role::Background || held[g])) || (pi < ground.size() && ground[pi]);
-      const bool free_particle = particles && e >= 0;
-      // The element's own motion (falls, twinkles), one phase per element.
-      const Affine elem = e >= 0 ? element_motion(scene, plan, e, element_box[e], t, W, H) : Affine();
-      for (const auto& sp : scene.paths[pi].subpaths)
-        for (Vec2 q : sp.points) {
+      for (size_t si = 0; si < scene.paths[pi].subpaths.size(); ++si) {
+        const int e = element_of[pi][si];
+        const bool free_particle = particles && e >= 0;
+        // The element's own motion (falls, twinkles), one phase per element.
+        const Affine elem = e >= 0 ? element_motion(scene, plan, e, element_box[e], t, W, H) : Affine();
+        for (Vec2 q : scene.paths[pi].subpaths[si].points) {
           q = elem.apply(q);
           if (!free_particle) {
             for (const auto& a : plan.actions) {
@@ -475,6 +480,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
           }
           out.push_back(q);
         }
+      }
     }
   }
   return out;

@@ -725,7 +725,11 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
           accents_left_out.push_back(v->name + "'s " + primitive_name(act.primitive));
           continue;
         }
-        b.add(*v, act, retarget ? target : act.target, retarget ? named : std::vector<int>{}, target_word, c.mods,
+        // Repeated elements named as what moves ("snowflakes drift") take all of a whole-figure
+        // verb's motion: the float's rock is theirs too (it rocked the cloud they fall from).
+        const bool elements_too = i > 0 && have && target == Target::Repeated && act.target == Target::Whole &&
+                                  v->actions[0].target == Target::Whole;
+        b.add(*v, act, retarget || elements_too ? target : act.target, retarget ? named : std::vector<int>{}, target_word, c.mods,
               retarget && plural, c.text, retarget);
       }
   }

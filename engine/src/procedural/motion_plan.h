@@ -121,7 +121,8 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
 // How far each path's control points travel from their rest positions over the frames
 // (animate_plan's points): the largest and the mean (over points) of each point's largest
 // distance, and the box the path sweeps; in the JSON also each control point's rest position and
-// travel ("point_travel": [x, y, travel, ...] rounded to 0.1), so a reader can check what moved
+// travel ("point_travel": [x, y, travel, ...], the rest position rounded to 0.01 as the boxes
+// are, the travel to 0.1), so a reader can check what moved
 // where (tests/bench/motion_score.py). The swept box is that of the path's curves (each cubic
 // at quarters), not of its handles. "body" numbers the rigid bodies: paths one affine map moves
 // in every frame (geometry/rigid_bodies.h; -1: a path no single map moves).

@@ -157,10 +157,13 @@ nlohmann::json path_motion_json(const Scene& scene, const std::vector<PathMotion
     nlohmann::json pt = nlohmann::json::array();
     size_t k = 0;
     auto r1 = [](double v) { return std::round(v * 10) / 10; };
+    // Rest positions rounded as the rest box is: rounded to 0.1, a point on the box's edge fell
+    // outside it (9.9 left of a box from 9.92) and a reader's region ending at the drawing's edge
+    // left out the wheels' outermost points (om_cyclist_pedal).
     for (const auto& sp : scene.paths[p].subpaths)
       for (const Vec2& q : sp.points) {
-        pt.push_back(r1(q.x));
-        pt.push_back(r1(q.y));
+        pt.push_back(r(q.x));
+        pt.push_back(r(q.y));
         pt.push_back(r1(k < m.travel.size() ? m.travel[k] : 0));
         ++k;
       }

@@ -27,8 +27,9 @@
 //  - round parts (a near-square box whose outline fills about pi/4 of it) are wheels.
 //  - hands drawn at the face (a boxer's gloves in guard) that a grouper put with the head hang
 //    from the arm they lie on (hands_at_head.h).
-//  - repeated elements: at least three small paths of similar size (drops, stars, leaves),
-//    each with any smaller paths drawn inside its box (a highlight), moved one by one.
+//  - repeated elements: at least three small paths or subpath pieces of similar size (drops,
+//    stars, leaves), each with any smaller ones drawn inside its box (a highlight), moved one by
+//    one (repeated_elements.h).
 //  - arms drawn in a part's largest filled outline (a ghost's body path going out round each
 //    arm and back): its arm lobes (outline_lobes.h), which a prompt's arms bend when the part
 //    is the region that stands in for arms.
@@ -87,13 +88,20 @@ struct RigPart {
   std::string why;            // one phrase: how its role was found
 };
 
+// One piece of a repeated element: a whole path (subpath -1), or one subpath of a path that
+// draws several elements (rain drops as the closed contours of one path; repeated_elements.h).
+struct ElementPiece {
+  int path = -1;
+  int subpath = -1;
+};
+
 struct Rig {
   std::vector<RigPart> parts;  // one per scene group, same order
   int root = -1;
   RigBox canvas;               // 0,0 .. width,height
   RigBox figure;               // every non-background part
-  // Repeated small elements: each element is a list of path indices.
-  std::vector<std::vector<int>> repeated;
+  // Repeated small elements (repeated_elements.h): each element is a list of paths or subpaths.
+  std::vector<std::vector<ElementPiece>> repeated;
   std::string repeated_why;
   std::vector<int> part_of_path;  // path index -> part index (-1 for paths without a group)
   // The limbs of the figure's silhouette (every part but the background: fills and outlines

@@ -9,6 +9,7 @@
 
 #include "scene/backdrop.h"
 #include "procedural/part_rig_internal.h"
+#include "procedural/repeated_elements.h"
 #include "procedural/shape_overlap.h"
 #include "procedural/skeleton_lobes.h"
 #include "procedural/stroke_rig.h"
@@ -17,11 +18,6 @@ namespace svgm::part_rig_internal {
 
 namespace {
 
-// Repeated elements: paths whose box is at most this share of the canvas area, similar when
-// their widths and heights agree within this factor, at least kRepeatedMin of them.
-constexpr double kRepeatedArea = 0.02;
-constexpr double kRepeatedSimilar = 1.6;
-constexpr size_t kRepeatedMin = 3;
 // A part above the root more than this many times as tall as wide is a raised limb, not the
 // head (a bird's wing raised above its back; heads in the bench drawings are 0.6-1.5).
 constexpr double kHeadMaxAspect = 2.0;
@@ -526,62 +522,16 @@ void Assembly::default_names() {
     if (count[P.name] > 1 && P.named) P.name += "_" + std::to_string(++seen[P.name]);
 }
 
-// Repeated elements: small paths of similar size (with the smaller paths inside each).
+// Repeated elements (repeated_elements.h), not in the background.
 void Assembly::find_repeated() {
-  struct Elem { RigBox box; std::vector<int> paths; };
-  std::vector<int> small;
+  std::vector<char> skip(n_paths, 0);
   for (size_t i = 0; i < n_paths; ++i) {
     const int g = rig.part_of_path[i];
-    if (g >= 0 && rig.parts[g].role == Role::Background) continue;
-    const RigBox b = path_box(scene.paths[i]);
-    if (!b.empty() && b.area() > 0 && b.area() <= kRepeatedArea * CW * CH) small.push_back(static_cast<int>(i));
+    skip[i] = g >= 0 && rig.parts[g].role == Role::Background;
   }
-  std::vector<RigBox> boxes(n_paths);
-  for (int i : small) boxes[i] = path_box(scene.paths[i]);
-  std::sort(small.begin(), small.end(), [&](int a, int b) { return boxes[a].area() > boxes[b].area(); });
-  std::vector<Elem> elems;
-  for (int i : small) {
-    const Vec2 c = boxes[i].centre();
-    bool attached = false;
-    for (auto& e : elems)
-      if (c.x >= e.box.x0 && c.x <= e.box.x1 && c.y >= e.box.y0 && c.y <= e.box.y1 && boxes[i].area() < 0.5 * e.box.area()) {
-        e.paths.push_back(i);
-        attached = true;
-        break;
-      }
-    if (!attached) elems.push_back({boxes[i], {i}});
-  }
-  std::vector<std::vector<int>> clusters;  // indices into elems
-  auto similar = [](const RigBox& a, const RigBox& b) {
-    const double rw = std::max(a.w(), b.w()) / std::max(std::min(a.w(), b.w()), 1e-9);
-    const double rh = std::max(a.h(), b.h()) / std::max(std::min(a.h(), b.h()), 1e-9);
-    return rw <= kRepeatedSimilar && rh <= kRepeatedSimilar;
-  };
-  for (size_t e = 0; e < elems.size(); ++e) {
-    bool placed = false;
-    for (auto& c : clusters) {
-      if (!similar(elems[c.front()].box, elems[e].box)) continue;
-      bool clash = false;  // members of a set do not overlap each other much
-      for (int o : c) clash = clash || overlap(elems[o].box, elems[e].box) > 0.3 * std::min(elems[o].box.area(), elems[e].box.area());
-      if (clash) continue;
-      c.push_back(static_cast<int>(e));
-      placed = true;
-      break;
-    }
-    if (!placed) clusters.push_back({static_cast<int>(e)});
-  }
-  size_t best_cluster = clusters.size();
-  for (size_t c = 0; c < clusters.size(); ++c)
-    if (clusters[c].size() >= kRepeatedMin && (best_cluster == clusters.size() || clusters[c].size() > clusters[best_cluster].size()))
-      best_cluster = c;
-  if (best_cluster < clusters.size()) {
-    for (int e : clusters[best_cluster]) {
-      std::vector<int> ps = elems[e].paths;
-      std::sort(ps.begin(), ps.end());
-      rig.repeated.push_back(ps);
-    }
-    rig.repeated_why = std::to_string(rig.repeated.size()) + " small paths of similar size";
-  }
+  RepeatedElements r = find_repeated_elements(scene, skip);
+  rig.repeated = std::move(r.elements);
+  rig.repeated_why = std::move(r.why);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "procedural/part_rig_internal.h"
 #include "procedural/stroke_rig.h"
 #include "procedural/wheel_riders.h"
+#include "procedural/wheel_sets.h"
 
 namespace svgm::part_rig_internal {
 
@@ -137,6 +138,7 @@ Units units_of(const Scene& scene, const SourceNames& names) {
       }
     return U;
   }
+  const std::set<int> set_wheels = wheel_set_paths(scene);
   for (size_t g = 0; g < scene.groups.size(); ++g) {
     std::map<std::string, std::vector<int>> by_name;  // innermost named element -> paths
     for (int pi : scene.groups[g].paths) {
@@ -156,10 +158,11 @@ Units units_of(const Scene& scene, const SourceNames& names) {
     std::vector<std::vector<int>> units;
     for (auto& [loc, ps] : by_name) {
       // A large round path among others (a wheel in a bicycle, a ferris wheel's rim) is a part
-      // of its own, so that it can turn while the frame holds.
+      // of its own, so that it can turn while the frame holds; so is a small one of a set of
+      // wheels low in a wide drawing (a car's, a tram's: wheel_sets.h).
       std::vector<int> rest;
       for (int pi : ps) {
-        if (ps.size() > 1 && round_path(scene.paths[pi], kWheelPathArea * scene.width * scene.height)) {
+        if (ps.size() > 1 && (round_path(scene.paths[pi], kWheelPathArea * scene.width * scene.height) || set_wheels.count(pi))) {
           units.push_back({pi});
           wheel_paths.insert(pi);
         }
