@@ -37,6 +37,9 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
   switch (a.primitive) {
     case Primitive::Swing: return about(pivot, Affine::rotate_deg(sign * amp * s));
     case Primitive::Spin: return about(centre, plane * Affine::rotate_deg(360.0 * amp * a.direction * t) * plane.inverse());
+    // About the vertical axis through the middle: never wider than at rest, so it stays where
+    // the figure stands in the canvas.
+    case Primitive::Turn: return about(centre, Affine::scale(turn_width(amp * t), 1));
     case Primitive::Rock:
       return about(a.parts.empty() ? base : pivot, Affine::rotate_deg(a.vertical == 2 ? a.direction * amp * k : sign * amp * s));
     case Primitive::Bob: {

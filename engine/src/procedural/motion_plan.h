@@ -80,9 +80,11 @@ struct MotionPlan {
   std::vector<int> held;        // parts (with what hangs from them) the whole figure's motions
                                 // leave where they are, as the background (fit_plan: small parts
                                 // at the canvas's edge when the figure could not move otherwise)
-  // The amplitude `a` moves with: its own, times its scale and the plan's (a spin's whole turns
-  // are never scaled).
-  double amplitude(const PlannedAction& a) const { return a.primitive == Primitive::Spin ? a.amp : a.amp * a.scale * scale; }
+  // The amplitude `a` moves with: its own, times its scale and the plan's (the whole turns of a
+  // spin or a turn are never scaled).
+  double amplitude(const PlannedAction& a) const {
+    return a.primitive == Primitive::Spin || a.primitive == Primitive::Turn ? a.amp : a.amp * a.scale * scale;
+  }
   std::string summary() const;  // one line: "flap wing_left+wing_right 30 deg x3; bob whole"
 };
 
