@@ -271,6 +271,29 @@ TEST_CASE("a standing figure's pirouette turns it about its vertical axis, insid
   CHECK(wheel.plan("the wheel turns slowly").actions[0].primitive == Primitive::Spin);
 }
 
+TEST_CASE("a limb part too small to move visibly is not swung: the region of the body bends instead") {
+  // A cactus drawn as one shape, its arms in its outline, with a 2 px spot beside its top that
+  // the rig is made to take for an upper limb (a twemoji cactus's was): swung, the spot moved
+  // 0.6 % of the figure at four times its swing, and the pixel ranker called it 'no motion'.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><path d="M 90 20 L 110 20 L 110 100 L 150 100 L 150 60 L 165 60 L 165 115 L 110 115 L 110 185 L 90 185 L 90 125 L 35 125 L 35 70 L 50 70 L 50 110 L 90 110 Z" fill="#3a3"/></g>
+           <g><rect x="120" y="40" width="2" height="2" fill="#fff"/></g></svg>)", "cactus.svg");
+  Rig rig = build_rig(s, {});
+  const int spot = rig.part_of_path[1];
+  REQUIRE(spot >= 0);
+  REQUIRE(spot != rig.root);
+  rig.parts[spot].role = Role::UpperLimb;
+  rig.parts[spot].parent = rig.root;
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the cactus wiggles its arms"), rig, 1);
+  REQUIRE(!plan.actions.empty());
+  for (const auto& a : plan.actions) {
+    INFO(a.why);
+    CHECK(std::find(a.parts.begin(), a.parts.end(), spot) == a.parts.end());
+  }
+  CHECK(plan.actions[0].region == Region::Sides);
+}
+
 TEST_CASE("wheels a verb implies are never the root: pedalling does not spin the whole drawing") {
   const Fixture fx("wheel.svg");  // the round part is the root here
   const MotionPlan plan = fx.plan("pedalling");
