@@ -127,6 +127,16 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
         plan.warnings.push_back(line);
         break;
       }
+      // Whole turns are never scaled: when smaller amplitudes move nothing differently, the
+      // candidate made again would be the same one (a spinning dancer was made five times).
+      svgm::MotionPlan smaller = plan;
+      smaller.scale *= 0.8;
+      if (svgm::animate_plan(scene, rig, smaller, o.frames) == pts) {
+        std::snprintf(line, sizeof line, "candidate %s: the pixel ranker flags it and smaller amplitudes would not change it (%s)", name,
+                      why.c_str());
+        plan.warnings.push_back(line);
+        break;
+      }
       plan.scale *= 0.8;
       std::snprintf(line, sizeof line, "candidate %s: amplitudes scaled to %.0f %%: the pixel ranker saw %s", name, plan.scale * 100,
                     why.c_str());

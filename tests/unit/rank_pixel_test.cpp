@@ -322,6 +322,46 @@ TEST_CASE("rank pixel: a seam of two colours is no area of the colour between th
   CHECK(has(grown.defects, "continuity"));
 }
 
+TEST_CASE("rank pixel: a flat figure turning about its vertical axis is no out-of-plane motion") {
+  // The three shapes at rest, turned one whole turn about the vertical line x = 48 as the
+  // procedural video turns a standing figure (its width from 1 down to kRankVanishRatio of it as
+  // the squared cosine, mirrored past edge on). Its foreground area varies by about 38 % (relative
+  // std: 0.7 * 0.354 / 0.65), twice what alone was an "out-of-plane motion" defect.
+  const Motion still{};
+  auto turned = [&](int k) {
+    const double c = std::cos(6.283185307179586 * k / (kK - 1));
+    const double w = (c < 0 ? -1 : 1) * (kRankVanishRatio + (1 - kRankVanishRatio) * c * c);
+    const std::vector<float> rest = draw_frame(still, Kind::Clean, 0);
+    return supersampled([&](double u, double v, double* c3) {
+      const double x = 48 + (u - 48) / w;  // where the point of the drawing at rest came from
+      const int xi = static_cast<int>(std::floor(x)), yi = static_cast<int>(std::floor(v));
+      if (xi < 0 || xi >= kW || yi < 0 || yi >= kH) return;
+      for (int i = 0; i < 3; ++i) c3[i] = rest[(static_cast<size_t>(yi) * kW + xi) * 4 + i];
+    });
+  };
+  const CandidateScore s = score_candidate(candidate_of(turned), kPalette);
+  INFO(s.to_json().dump(2));
+  CHECK(s.defects.empty());
+  CHECK(s.out_of_plane.value < 0.5);
+  // Shapes growing each on its own inside a box that does not change (four dots at its
+  // corners): what a 3D turn does to the parts of a figure. Still out of plane.
+  const CandidateScore swelling = score_candidate(candidate_of([](int k) {
+    const double g = 1 + 0.8 * (0.5 - 0.5 * std::cos(6.283185307179586 * k / (kK - 1)));
+    return supersampled([&](double u, double v, double* c) {
+      auto set = [&](const Rgba& q) { c[0] = q.r, c[1] = q.g, c[2] = q.b; };
+      if ((u - 27) * (u - 27) + (v - 28) * (v - 28) < 13 * g * 13 * g) set(kPalette[0]);
+      if (std::abs(u - 69) < 13 && std::abs(v - 28) < 9) set(kPalette[1]);
+      const double eu = (u - 48) / (16 * g), ev = (v - 69) / (10 * g);
+      if (eu * eu + ev * ev < 1) set(kPalette[2]);
+      for (double d : {5.0, 90.0})
+        for (double e : {5.0, 90.0})
+          if ((u - d) * (u - d) + (v - e) * (v - e) < 4) set(kPalette[1]);
+    });
+  }), kPalette);
+  INFO(swelling.to_json().dump(2));
+  CHECK(has(swelling.defects, "out-of-plane motion"));
+}
+
 TEST_CASE("rank pixel: chaotic motion and bad input") {
   const Motion m = random_motion(11);
   TargetFrames t = make_candidate(m, Kind::Clean);

@@ -13,6 +13,7 @@
 #include "procedural/motion_plan.h"
 #include "procedural/support_band.h"
 #include "geometry/rigid_bodies.h"
+#include "rank/pixel_ranker.h"
 
 using namespace svgm;
 
@@ -232,6 +233,66 @@ TEST_CASE("a wheel turns about its own centre; the stand holds still; one turn c
       CHECK(std::hypot(pts[f * per + i].x - 100, pts[f * per + i].y - 100) ==
             doctest::Approx(std::hypot(pts[i].x - 100, pts[i].y - 100)).epsilon(1e-9));
   CHECK(loop_gap(pts, F) < 1e-9);
+}
+
+TEST_CASE("a standing figure's pirouette turns it about its vertical axis, inside the canvas, mirrored at half turn") {
+  const Fixture fx("stick_figure.svg");  // the figure spans x 45-155 (middle 100), 146 px tall
+  for (const char* prompt : {"the dancer pirouettes on one toe", "he turns around", "she twirls"}) {
+    INFO(prompt);
+    MotionPlan plan = fx.plan(prompt);
+    REQUIRE(plan.actions.size() == 1);
+    CHECK(plan.actions[0].primitive == Primitive::Turn);
+    CHECK(plan.actions[0].target == Target::Whole);
+    const int F = 49;
+    fit_plan(fx.scene, fx.rig, plan, F, 15);
+    CHECK(plan.warnings.empty());
+    const auto pts = animate_plan(fx.scene, fx.rig, plan, F);
+    const size_t per = pts.size() / F;
+    // Inside the canvas and the figure's own columns; heights kept; the width never below
+    // kTurnEdgeWidth of it (what the pixel ranker calls a colour vanishing).
+    for (int f = 0; f < F; ++f) {
+      RigBox b;
+      for (size_t i = 0; i < per; ++i) {
+        const Vec2 q = pts[f * per + i], r = pts[i];
+        CHECK(q.y == doctest::Approx(r.y));
+        CHECK(q.x >= 45 - 1e-9);
+        CHECK(q.x <= 155 + 1e-9);
+        b.add(q);
+      }
+      CHECK(b.w() >= kRankVanishRatio * 110 - 1e-6);
+    }
+    // Half a turn: the back shown as the front mirrored about the middle (the right arm, drawn
+    // at x 45-85, is at 115-155).
+    const size_t arm = fx.first_point(2);
+    CHECK(pts[24 * per + arm].x == doctest::Approx(200 - pts[arm].x));
+    CHECK(loop_gap(pts, F) < 1e-9);
+  }
+  // A round figure still spins in the image's plane.
+  const Fixture wheel("wheel.svg");
+  CHECK(wheel.plan("the wheel turns slowly").actions[0].primitive == Primitive::Spin);
+}
+
+TEST_CASE("a limb part too small to move visibly is not swung: the region of the body bends instead") {
+  // A cactus drawn as one shape, its arms in its outline, with a 2 px spot beside its top that
+  // the rig is made to take for an upper limb (a twemoji cactus's was): swung, the spot moved
+  // 0.6 % of the figure at four times its swing, and the pixel ranker called it 'no motion'.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+           <g><path d="M 90 20 L 110 20 L 110 100 L 150 100 L 150 60 L 165 60 L 165 115 L 110 115 L 110 185 L 90 185 L 90 125 L 35 125 L 35 70 L 50 70 L 50 110 L 90 110 Z" fill="#3a3"/></g>
+           <g><rect x="120" y="40" width="2" height="2" fill="#fff"/></g></svg>)", "cactus.svg");
+  Rig rig = build_rig(s, {});
+  const int spot = rig.part_of_path[1];
+  REQUIRE(spot >= 0);
+  REQUIRE(spot != rig.root);
+  rig.parts[spot].role = Role::UpperLimb;
+  rig.parts[spot].parent = rig.root;
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the cactus wiggles its arms"), rig, 1);
+  REQUIRE(!plan.actions.empty());
+  for (const auto& a : plan.actions) {
+    INFO(a.why);
+    CHECK(std::find(a.parts.begin(), a.parts.end(), spot) == a.parts.end());
+  }
+  CHECK(plan.actions[0].region == Region::Sides);
 }
 
 TEST_CASE("wheels a verb implies are never the root: pedalling does not spin the whole drawing") {

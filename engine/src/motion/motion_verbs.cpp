@@ -168,8 +168,8 @@ bool is_filler_word(std::string_view w) {
 }
 
 const char* primitive_name(Primitive p) {
-  static constexpr std::array<const char*, 14> names = {"swing", "spin", "hop", "bob", "slide", "rock", "undulate",
-                                                        "bend", "shake", "pulse", "squash", "stretch", "fall", "sway"};
+  static constexpr std::array<const char*, 15> names = {"swing", "spin", "hop", "bob", "slide", "rock", "undulate",
+                                                        "bend", "shake", "pulse", "squash", "stretch", "fall", "sway", "turn"};
   return names[static_cast<size_t>(p)];
 }
 

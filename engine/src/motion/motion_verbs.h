@@ -33,6 +33,8 @@ enum class Primitive {
   Fall,      // each element falls and is replaced from above, its own phase [canvas heights]
   Sway,      // the figure's upper part leans side to side about a hinge at its middle, the
              // lower part planted (a glass on its foot, a tree on its roots) [degrees of lean]
+  Turn,      // whole turns about the figure's vertical axis (a pirouette): its width scaled by
+             // the turn's cosine about its middle, mirrored past a quarter turn [turns per loop]
 };
 
 // Which parts an action moves, by role in the rig (part_rig.h).

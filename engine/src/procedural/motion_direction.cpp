@@ -29,6 +29,7 @@ std::string direction_words(const PlannedAction& a) {
   const double sign = a.sign.size() == 1 ? a.sign[0] : 0;
   switch (a.primitive) {
     case Primitive::Spin: return std::string(turn(a.direction)) + ", whole turns";
+    case Primitive::Turn: return "about its vertical axis, whole turns (mirrored while its back is shown)";
     case Primitive::Slide: return a.direction > 0 ? "right first, then left" : "left first, then right";
     case Primitive::Hop: return "up in an arc and back down";
     case Primitive::Bob: return a.vertical > 0 ? "up from rest and back" : a.vertical < 0 ? "down from rest and back" : "up and down";

@@ -88,6 +88,13 @@ std::string limit_broken(const Scene& scene, const std::vector<Vec2>& pts, const
 // sleeves bent 18 degrees instead of 29 and his squat outweighed them (fitted share 0.70 -> 0.66).
 std::string turn_broken(const MotionPlan& plan, int frames, int K) {
   for (const auto& a : plan.actions) {
+    // A figure turning about its vertical axis turns 360 * amp degrees a loop, evenly: with too
+    // few keyframes most of its pixels change between two of them, which the pixel ranker calls
+    // chaotic motion (a pirouette at 15 keyframes: 24 degrees, a mean frame difference of 0.45).
+    if (a.primitive == Primitive::Turn) {
+      if (360 * plan.amplitude(a) / std::max(K - 1, 1) > kMaxTurn + 1e-9) return "would turn the figure too far between keyframes";
+      continue;
+    }
     if (a.primitive != Primitive::Swing || a.region != Region::None) continue;
     const double amp = plan.amplitude(a);
     for (double phase : a.phase)
@@ -107,7 +114,7 @@ std::string turn_broken(const MotionPlan& plan, int frames, int K) {
 // bobbed more than its legs moved (share of the motion on the legs 0.35).
 void accents_follow_limbs(MotionPlan& plan) {
   for (auto& a : plan.actions) {
-    if (a.target != Target::Whole || a.primitive == Primitive::Spin) continue;
+    if (a.target != Target::Whole || a.primitive == Primitive::Spin || a.primitive == Primitive::Turn) continue;
     double limbs = 1;
     for (const auto& b : plan.actions)
       if (&b != &a && b.verb == a.verb && b.words == a.words && is_limb_target(b.target) && b.primitive == Primitive::Swing)
@@ -153,10 +160,14 @@ int keyframes_to_follow(const Scene& scene, const std::vector<Vec2>& pts, const 
 // would break a limit even at its smallest scale (a warning says so).
 bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
   bool whole_failed = false;
-  // Points exempt from the step limit: falling elements (they jump back while invisible) and
-  // spinning parts (whole turns cannot be scaled; rotation is what flow tracking follows best).
+  // Points exempt from the step limit: falling elements (they jump back while invisible),
+  // spinning parts (whole turns cannot be scaled; rotation is what flow tracking follows best)
+  // and a figure turning about its vertical axis (whole turns; it is mirrored at the edge-on
+  // moment, where the fitter starts from the known map).
   std::vector<char> exempt, by_curve;
   {
+    bool turns = false;
+    for (const auto& a : plan.actions) turns = turns || a.primitive == Primitive::Turn;
     std::set<int> spinning;
     for (const auto& a : plan.actions)
       if (a.primitive == Primitive::Spin)
@@ -174,7 +185,7 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
       const bool whole_falls = falling.count({static_cast<int>(pi), -1}) > 0;
       for (size_t si = 0; si < scene.paths[pi].subpaths.size(); ++si) {
         const auto& sp = scene.paths[pi].subpaths[si];
-        const bool ex = spin || whole_falls || falling.count({static_cast<int>(pi), static_cast<int>(si)}) > 0;
+        const bool ex = spin || turns || whole_falls || falling.count({static_cast<int>(pi), static_cast<int>(si)}) > 0;
         exempt.insert(exempt.end(), sp.points.size(), ex);
         by_curve.insert(by_curve.end(), sp.points.size(), spin);
       }
@@ -208,7 +219,8 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
         }
       bool measurable = true;
       for (size_t j : clause)
-        measurable = measurable && plan.actions[j].primitive != Primitive::Spin && plan.actions[j].primitive != Primitive::Fall;
+        measurable = measurable && plan.actions[j].primitive != Primitive::Spin && plan.actions[j].primitive != Primitive::Turn &&
+                     plan.actions[j].primitive != Primitive::Fall;
       if (!measurable) continue;
       const double travel = largest_travel(animate_plan(scene, rig, alone(clause), frames), exempt, frames);
       if (travel <= 0 || travel >= floor) continue;
@@ -232,7 +244,7 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
   for (size_t i = 0; i <= plan.actions.size(); ++i) {
     const bool all = i == plan.actions.size();
     if (all) accents_follow_limbs(plan);
-    if (!all && plan.actions[i].primitive == Primitive::Spin) continue;
+    if (!all && (plan.actions[i].primitive == Primitive::Spin || plan.actions[i].primitive == Primitive::Turn)) continue;
     const std::string what = all ? "the motion" : plan.actions[i].verb + " (" + primitive_name(plan.actions[i].primitive) + ")";
     // The largest scale (from the current one down by 0.8) at which `one` keeps the limits, and
     // why the first scale tried did not; -1 when none of kScaleAttempts does.

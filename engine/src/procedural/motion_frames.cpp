@@ -38,6 +38,9 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
   switch (a.primitive) {
     case Primitive::Swing: return about(pivot, Affine::rotate_deg(sign * amp * s));
     case Primitive::Spin: return about(centre, plane * Affine::rotate_deg(360.0 * amp * a.direction * t) * plane.inverse());
+    // About the vertical axis through the middle: never wider than at rest, so it stays where
+    // the figure stands in the canvas.
+    case Primitive::Turn: return about(centre, Affine::scale(turn_width(amp * t, a.scale), 1));
     case Primitive::Rock:
       return about(a.parts.empty() ? base : pivot, Affine::rotate_deg(a.vertical == 2 ? a.direction * amp * k : sign * amp * s));
     case Primitive::Bob: {
@@ -399,7 +402,12 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     for (const auto& a : plan.actions) {
       const double amp = plan.amplitude(a);
       if (is_deformation(a) || a.target == Target::Repeated) continue;
-      if (a.parts.empty()) whole = rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
+      if (a.parts.empty() && a.primitive == Primitive::Turn) {
+        // Whole turns, never fewer; the plan's scale makes the turn shallower (turn_width).
+        PlannedAction shallower = a;
+        shallower.scale = a.scale * plan.scale;
+        whole = rigid(shallower, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
+      } else if (a.parts.empty()) whole = rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
       for (size_t i = 0; i < a.parts.size(); ++i) {
         const RigPart& P = rig.parts[a.parts[i]];
         Affine& into = a.primitive == Primitive::Spin ? spin[a.parts[i]]

@@ -21,7 +21,7 @@ namespace motion_plan_internal {
 const char* unit_of(Primitive p) {
   switch (p) {
     case Primitive::Swing: case Primitive::Rock: case Primitive::Bend: case Primitive::Sway: return "degrees";
-    case Primitive::Spin: return "turns";
+    case Primitive::Spin: case Primitive::Turn: return "turns";
     case Primitive::Pulse: case Primitive::Stretch: return "fraction of size";
     case Primitive::Fall: return "canvas heights";
     case Primitive::Undulate: return "figure lengths";
@@ -73,6 +73,15 @@ std::vector<int> with_role(const Rig& rig, std::initializer_list<Role> roles) {
 }
 
 // The parts a target means, with a note when a fallback had to stand in.
+// Whether part p, with what hangs from it, is too small to move visibly when swung: its box's
+// diagonal is under kVisibleTravel of the figure's, so even at 60 degrees its end moves less
+// than fit_plan's visible floor. A cactus's 2 px spot taken for its arm moved 0.6 % of the
+// figure at four times its swing, and the pixel ranker called every candidate 'no motion'.
+bool too_small_to_swing(const Rig& rig, int p) {
+  const RigBox b = chain_box(rig, p);
+  return std::hypot(b.w(), b.h()) < kVisibleTravel * std::hypot(rig.figure.w(), rig.figure.h());
+}
+
 std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, std::string* note) {
   auto attached = [&] {
     std::vector<int> v;
@@ -133,10 +142,13 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
         if (part_has_word(rig.parts[i], noun)) v.push_back(static_cast<int>(i));
       return topmost(rig, v);
   }
+  // A limb too small to move visibly is a detail, not a limb to swing (nor a stand-in for one).
+  if (is_limb_target(t)) v.erase(std::remove_if(v.begin(), v.end(), [&](int p) { return too_small_to_swing(rig, p); }), v.end());
   if (!v.empty() || rig.root < 0) return v;
   // Stand-ins: the parts hanging from the root that are not details, else the highest part
   // other than the root (a head for a nod, a single limb for a wave).
   std::vector<int> any = attached();
+  if (is_limb_target(t)) any.erase(std::remove_if(any.begin(), any.end(), [&](int p) { return too_small_to_swing(rig, p); }), any.end());
   if (t == Target::Head || t == Target::Tail || any.empty()) {
     int best = -1;
     for (int i : any.empty() ? std::vector<int>{} : any) {
@@ -379,6 +391,15 @@ struct Builder {
   MotionPlan plan;
   FigureClass figure = FigureClass::None;  // what the prompt says the figure is (its first clause's)
 
+  // Whether the whole figure, spun, turns about its vertical axis: it is not round (a wheel, a
+  // clock face, a wheeled figure: those spin in the image's plane, their shape the same at every
+  // angle). Anything else spun in the plane stands on its head half the loop and sweeps the
+  // circle round its box.
+  bool stands() const {
+    if (figure == FigureClass::Biped) return true;
+    return figure != FigureClass::Wheeled && !(rig.root >= 0 && rig.parts[rig.root].round);
+  }
+
   void add(const Verb& verb, const Action& base_in, Target target, const std::vector<int>& named_parts,
            const std::string& target_word, const Modifiers& mods, bool plural, const std::string& words,
            bool primary_retargeted, const std::string& instead = "") {
@@ -425,12 +446,22 @@ struct Builder {
       amp = kPartAmplitude[static_cast<size_t>(Primitive::Swing)];
       beat = "heads, tails and limbs turn on their joints, not round: a swing";
     }
+    // A figure spun whole ("she pirouettes", "he turns around", "the tornado whirls") turns
+    // about its vertical axis unless it is round. Spun in the image's plane, a dancer stood on
+    // her head half the loop, left the canvas at any size and every candidate was 'chaotic
+    // motion'.
+    if (a.primitive == Primitive::Spin && (target == Target::Root || target == Target::Whole) && stands()) {
+      a.primitive = Primitive::Turn;
+      target = a.target = Target::Whole;
+      beat = "a figure that is not round turns about its vertical axis";
+    }
+    const bool whole_turns = a.primitive == Primitive::Spin || a.primitive == Primitive::Turn;
     std::uniform_real_distribution<double> U(0, 1);
-    a.amp = amp * mods.size * (a.primitive == Primitive::Spin ? 1 : 0.85 + 0.3 * U(rng));
+    a.amp = amp * mods.size * (whole_turns ? 1 : 0.85 + 0.3 * U(rng));
     a.cycles = std::max(1, static_cast<int>(std::lround(base.cycles * mods.speed)));
     if (mods.once > 0) a.cycles = 1;
     if (mods.once < 0) a.cycles = std::max(2, a.cycles);
-    if (a.primitive == Primitive::Spin) {
+    if (whole_turns) {
       a.amp = std::max(1.0, std::round(base.amp * (mods.speed > 1 ? 2 : 1)));  // whole turns
       a.cycles = 1;
     }
@@ -632,7 +663,7 @@ std::string MotionPlan::summary() const {
   for (const auto& a : actions) {
     char amp[64];
     const char* unit = a.primitive == Primitive::Swing || a.primitive == Primitive::Rock || a.primitive == Primitive::Bend || a.primitive == Primitive::Sway ? " deg"
-                       : a.primitive == Primitive::Spin ? " turn" : "";
+                       : a.primitive == Primitive::Spin || a.primitive == Primitive::Turn ? " turn" : "";
     std::snprintf(amp, sizeof amp, " %.3g%s x%d", amplitude(a), unit, a.cycles);
     std::string who = a.target == Target::Whole ? "whole" : a.target == Target::Repeated ? "repeated" : "";
     if (who.empty()) {

@@ -83,9 +83,11 @@ struct MotionPlan {
                                 // at the canvas's edge when the figure could not move otherwise)
   std::string ground;           // the prompt's words naming a ground the figure moves on ("on
                                 // the waves"): the band drawn there stays (support_band.h)
-  // The amplitude `a` moves with: its own, times its scale and the plan's (a spin's whole turns
-  // are never scaled).
-  double amplitude(const PlannedAction& a) const { return a.primitive == Primitive::Spin ? a.amp : a.amp * a.scale * scale; }
+  // The amplitude `a` moves with: its own, times its scale and the plan's (the whole turns of a
+  // spin or a turn are never scaled).
+  double amplitude(const PlannedAction& a) const {
+    return a.primitive == Primitive::Spin || a.primitive == Primitive::Turn ? a.amp : a.amp * a.scale * scale;
+  }
   std::string summary() const;  // one line: "flap wing_left+wing_right 30 deg x3; bob whole"
 };
 

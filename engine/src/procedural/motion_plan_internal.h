@@ -4,11 +4,13 @@
 // the engine's interface: include it only from those files.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "procedural/motion_plan.h"
+#include "rank/pixel_ranker.h"
 
 namespace svgm::motion_plan_internal {
 
@@ -45,8 +47,8 @@ inline constexpr double kCoreMin = 0.12, kCoreMax = 0.35;
 
 // The usual amplitude of each primitive on one part, in its unit (motion_verbs.h), in the order
 // of Primitive: for a whole-figure verb a prompt aims at a part ("his legs squatting").
-inline constexpr double kPartAmplitude[] = {20, 1, 0.07, 0.04, 0.04, 6, 0.05, 15, 0.01, 0.08, 0.08, 0.08, 0.12, 6};
-static_assert(sizeof kPartAmplitude / sizeof kPartAmplitude[0] == static_cast<size_t>(Primitive::Sway) + 1);
+inline constexpr double kPartAmplitude[] = {20, 1, 0.07, 0.04, 0.04, 6, 0.05, 15, 0.01, 0.08, 0.08, 0.08, 0.12, 6, 1};
+static_assert(sizeof kPartAmplitude / sizeof kPartAmplitude[0] == static_cast<size_t>(Primitive::Turn) + 1);
 // A Sway's hinge, in shares of the figure's height from its top: the lower 45 % stays planted
 // (a wine glass's stem and foot, a saxophonist's legs); above it the lean grows over kRamp of
 // the height (bend_region's ramp) to the full angle.
@@ -64,6 +66,23 @@ inline constexpr double kUpright = 0.8;
 // A figure whose longer side is less than this many times its shorter one is compact: it swims
 // with its lower limbs, not by a wave along its body (Builder::add).
 inline constexpr double kElongated = 1.6;
+// A Turn (a pirouette) narrows the figure from its width facing the viewer to this share of it
+// edge on, never less: a flat drawing seen edge on has no width, and a part of it narrower than
+// a pixel is a colour vanishing from the video, which the pixel ranker calls a continuity break
+// (kRankVanishRatio). Past the edge-on moment the figure is mirrored (its back).
+inline constexpr double kTurnEdgeWidth = kRankVanishRatio;
+// The width factor of a Turn at `turns` whole turns: signed (negative: mirrored), its size
+// from 1 (facing) down to kTurnEdgeWidth (edge on) as the squared cosine, which eases into the
+// edge-on moment. As the cosine itself the width fell fastest there, where the outlines crowd
+// together: a dancer's black outline fell from 360 px to 147 px between two of the ranker's
+// frames (a 'continuity' defect). `depth` (the action's scale, at most 1) makes the turn
+// shallower: edge on, the width is 1 - depth * (1 - kTurnEdgeWidth). Outlines keep their width
+// as the figure narrows: a dancer's thick outlines covered her black dress edge on (914 px
+// down to 84 px), and the procedural video's self-check asks for a shallower turn.
+inline double turn_width(double turns, double depth = 1) {
+  const double c = std::cos(kTau * turns);
+  return (c < 0 ? -1 : 1) * (1 - std::clamp(depth, 0.0, 1.0) * (1 - kTurnEdgeWidth) * (1 - c * c));
+}
 // A chain hanging from the root that reaches the lowest this share of the figure stands on the
 // ground (animate_plan): a saxophonist's legs stay while his upper body sways about the hips.
 inline constexpr double kPlanted = 0.15;

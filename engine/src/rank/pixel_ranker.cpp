@@ -145,9 +145,10 @@ struct FrameStats {
   std::vector<bool> has_fg;
   std::vector<std::vector<double>> area;       // per palette colour, per frame
   std::vector<std::vector<uint8_t>> fgs;       // per frame, the foreground mask
+  std::vector<std::vector<int32_t>> labels;    // per frame, each pixel's palette colour (-1 none)
   FrameStats(size_t C, int K)
       : drift(K, 0.0), invented(K, 0.0), total(K, 0.0), has_fg(K, false),
-        area(C, std::vector<double>(K, 0.0)), fgs(K) {}
+        area(C, std::vector<double>(K, 0.0)), fgs(K), labels(K) {}
 };
 
 // The frame's own background: generated videos let the white page drift to an off-white
@@ -268,6 +269,7 @@ void measure_frame(const TargetFrames& t, int k, size_t P, const std::vector<Rgb
     st.invented[k] = static_cast<double>(blob_area(px.far, core_of(px.far, W, H), W, H, 4)) / nfg;
   }
   st.fgs[k] = std::move(px.fg);
+  st.labels[k] = std::move(px.label);
 }
 
 // Colour drift.
@@ -318,7 +320,7 @@ RankSignal continuity_signal(const FrameStats& st, const std::vector<Rgb>& pal, 
     const double a0 = a[0], amin = *std::min_element(a.begin(), a.end()),
                  amax = *std::max_element(a.begin(), a.end());
     if (a0 >= significant) {
-      const double v = clamp01((0.3 - amin / a0) / 0.25);
+      const double v = clamp01((kRankVanishRatio - amin / a0) / 0.25);
       if (vr.empty() || v > vanish) {
         vanish = std::max(vanish, v);
         const int kmin = static_cast<int>(std::min_element(a.begin(), a.end()) - a.begin());
@@ -326,7 +328,7 @@ RankSignal continuity_signal(const FrameStats& st, const std::vector<Rgb>& pal, 
       }
     }
     if (amax >= significant) {
-      const double v = clamp01((0.3 - a0 / amax) / 0.25);
+      const double v = clamp01((kRankVanishRatio - a0 / amax) / 0.25);
       if (v > appear) {
         appear = v;
         ar = hex(pal[c]) + fmt(" appears: %.0f px in frame 0, up to %.0f px later", a0, amax);
@@ -356,16 +358,71 @@ RankSignal continuity_signal(const FrameStats& st, const std::vector<Rgb>& pal, 
   return r;
 }
 
-// Out-of-plane motion: total foreground area changes that no appearing/vanishing explains.
-RankSignal out_of_plane_signal(const FrameStats& st, double mean_fg, int K, double appear_vanish) {
+// The foreground's box in frame k: x0, y0, x1, y1 (exclusive); x1 == 0 when there is none.
+std::array<int, 4> foreground_box(const FrameStats& st, int k, int W, int H) {
+  std::array<int, 4> b{W, H, 0, 0};
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      if (st.fgs[k][static_cast<size_t>(y) * W + x]) b = {std::min(b[0], x), std::min(b[1], y), std::max(b[2], x + 1), std::max(b[3], y + 1)};
+  return b;
+}
+
+// How much of frame k is frame 0 stretched into frame k's foreground box (each axis scaled, the
+// horizontal one mirrored when `mirror`): of the pixels foreground in either, the share whose
+// palette colour is the same in both.
+double stretch_agreement(const FrameStats& st, int k, int W, const std::array<int, 4>& b0,
+                         const std::array<int, 4>& bk, bool mirror) {
+  const double sx = static_cast<double>(b0[2] - b0[0]) / (bk[2] - bk[0]), sy = static_cast<double>(b0[3] - b0[1]) / (bk[3] - bk[1]);
+  size_t either = 0, same = 0;
+  for (int y = bk[1]; y < bk[3]; ++y)
+    for (int x = bk[0]; x < bk[2]; ++x) {
+      const double u = mirror ? bk[2] - (x + 0.5) : x + 0.5 - bk[0];
+      const int x0 = std::clamp(b0[0] + static_cast<int>(u * sx), b0[0], b0[2] - 1);
+      const int y0 = std::clamp(b0[1] + static_cast<int>((y + 0.5 - bk[1]) * sy), b0[1], b0[3] - 1);
+      const size_t i = static_cast<size_t>(y) * W + x, j = static_cast<size_t>(y0) * W + x0;
+      const bool a = st.fgs[k][i] != 0, c = st.fgs[0][j] != 0;
+      if (!a && !c) continue;
+      ++either;
+      same += a && c && st.labels[k][i] == st.labels[0][j];
+    }
+  return either > 0 ? static_cast<double>(same) / static_cast<double>(either) : 0.0;
+}
+
+// The share of frames 1..K-1 that are frame 0 stretched (a hop's squash) or turned about its
+// vertical axis (its width scaled, mirrored past edge on: a flat figure's pirouette): their
+// foreground area is frame 0's times the stretch of its box (within kFlatArea) and their colours
+// agree with frame 0's stretched into their box (kFlatAgreement). Such changes of area are the
+// figure's own, in the plane: the fitter follows them with its control points. Parts that grow
+// or shrink inside a box that does not (a 3D turn showing other sides) change the area alone.
+double flat_stretch_share(const FrameStats& st, int K, int W, int H) {
+  constexpr double kFlatAgreement = 0.75, kFlatArea = 0.15;
+  const std::array<int, 4> b0 = foreground_box(st, 0, W, H);
+  if (K < 2 || b0[2] <= b0[0] || st.total[0] <= 0) return 0;
+  const double box0 = static_cast<double>(b0[2] - b0[0]) * (b0[3] - b0[1]);
+  int flat = 0;
+  for (int k = 1; k < K; ++k) {
+    const std::array<int, 4> bk = foreground_box(st, k, W, H);
+    if (bk[2] <= bk[0]) continue;
+    const double expected = st.total[0] * (bk[2] - bk[0]) * (bk[3] - bk[1]) / box0;
+    if (std::abs(st.total[k] / expected - 1) > kFlatArea) continue;
+    const double agree = std::max(stretch_agreement(st, k, W, b0, bk, false), stretch_agreement(st, k, W, b0, bk, true));
+    flat += agree >= kFlatAgreement;
+  }
+  return static_cast<double>(flat) / (K - 1);
+}
+
+// Out-of-plane motion: total foreground area changes that no appearing/vanishing explains, nor
+// a flat stretch or turn of the figure (flat_stretch_share).
+RankSignal out_of_plane_signal(const FrameStats& st, double mean_fg, int K, int W, int H, double appear_vanish) {
   RankSignal r;
   double var = 0;
   for (double a : st.total) var += (a - mean_fg) * (a - mean_fg);
   const double rel = mean_fg > 0 ? std::sqrt(var / K) / mean_fg : 0.0;
-  r.value = clamp01((rel - 0.08) / 0.22) * (1 - appear_vanish);
+  const double flat = rel > 0.08 ? flat_stretch_share(st, K, W, H) : 0.0;
+  r.value = clamp01((rel - 0.08) / 0.22) * (1 - appear_vanish) * (1 - flat);
   r.reason = fmt("foreground area varies by %.1f%% (relative std)", 100 * rel) +
-             (appear_vanish > 0 && rel > 0.08 ? ", explained by colours appearing/vanishing"
-                                              : "");
+             (appear_vanish > 0 && rel > 0.08 ? ", explained by colours appearing/vanishing" : "") +
+             (flat > 0 ? fmt(", %.0f%% of the frames a flat stretch or turn of the first", 100 * flat) : "");
   return r;
 }
 
@@ -444,7 +501,7 @@ CandidateScore score_candidate(const TargetFrames& t, const std::vector<Rgba>& p
   s.invented_content = invented_content_signal(st);
   double appear_vanish = 0;
   s.continuity = continuity_signal(st, pal, mean_fg, K, appear_vanish);
-  s.out_of_plane = out_of_plane_signal(st, mean_fg, K, appear_vanish);
+  s.out_of_plane = out_of_plane_signal(st, mean_fg, K, W, H, appear_vanish);
   std::string motion_defect;
   s.motion = motion_signal(t, st, P, K, motion_defect);
 

@@ -43,6 +43,12 @@
 
 namespace svgm {
 
+// The continuity signal's floor: a palette colour whose area falls below this share of its
+// first frame's (or whose first frame's is below this share of its largest) starts to count as
+// vanishing (appearing). The procedural video keeps a turning figure at least this wide
+// (motion_plan_internal.h, kTurnEdgeWidth).
+inline constexpr double kRankVanishRatio = 0.3;
+
 struct PixelRankOptions {
   double white_threshold = 0.97;  // foreground: darkest channel < this, and farther than
                                   // 1 - this (any channel) from the frame's border median when
