@@ -82,8 +82,10 @@ bool looks_like_key(const std::string& s) {
 
 // Progress of the running stage: a bar redrawn in place on a terminal, a line every 5 s in a
 // log. One bar per stage, which only moves forward (a plugin's fraction below one it reported
-// is held) and shows 100 % when the stage has ended; the ETA is the bar's own pace since it
-// started moving (a stage's setup, at 0 %, is not counted against the rest). On a terminal the
+// is held) and shows 100 % when the stage has ended; the ETA is the bar's own pace since the
+// stage started: a plugin's fraction is a share of the stage's time, its setup included (the
+// fitter's is, fit_progress.h; a pace counted from the bar's first move read the fitter's 30 s
+// of setup as progress it never made, issue 37). On a terminal the
 // line is cut to its width (TIOCGWINSZ, else $COLUMNS, else 80): a line longer than the
 // terminal wraps, and "\r" then returns to the wrapped part, so each redraw scrolled a new line.
 class ProgressView {
@@ -94,8 +96,8 @@ class ProgressView {
     stage_ = name;
     running_ = true;
     shown_ = 0;
-    moving_ = false;
     note_.clear();
+    drawn_note_.clear();
     start_ = last_ = std::chrono::steady_clock::now();
     log::info("run: %s ...", name.c_str());
     if (!quiet_ && tty_) {  // the bar from the start: a stage's setup may take a while before it reports
@@ -108,16 +110,15 @@ class ProgressView {
     const auto now = std::chrono::steady_clock::now();
     f = std::clamp(std::isfinite(f) ? f : 0.0, 0.0, 1.0);
     if (f < shown_) f = shown_;  // never back
-    if (!moving_ && f > 0) {
-      moving_ = true;
-      moved_at_ = now;
-      moved_from_ = f;
-    }
     shown_ = f;
     note_ = note;
     const bool due = now - last_ >= (tty_ ? std::chrono::milliseconds(200) : std::chrono::milliseconds(5000));
-    if (!due && (f < 1 || !tty_)) return;  // in a log, the stage's end says 100 % (finish)
+    // On a terminal a new activity ("judging the frames between keyframes" after "fit iteration
+    // ...") is drawn at once: it may be the last word for tens of seconds.
+    const bool new_activity = tty_ && activity(note) != activity(drawn_note_);
+    if (!due && !new_activity && (f < 1 || !tty_)) return;  // in a log, the stage's end says 100 % (finish)
     draw(eta(now));
+    drawn_note_ = note;
     last_ = now;
   }
   // The stage ended well: its bar at 100 % with the seconds it took.
@@ -150,12 +151,17 @@ class ProgressView {
     else std::snprintf(buf, sizeof buf, "%.1f h", s / 3600);
     return buf;
   }
-  // "ETA 40 s" once the bar has moved for 2 s and by 1 %; "" before.
+  // "ETA 40 s" once the stage has run for 2 s and its bar has moved by 1 %; "" before.
   std::string eta(std::chrono::steady_clock::time_point now) const {
-    if (!moving_ || shown_ >= 1) return "";
-    const double t = std::chrono::duration<double>(now - moved_at_).count(), df = shown_ - moved_from_;
-    if (t < 2 || df < 0.01) return "";
-    return "ETA " + seconds_text(t / df * (1 - shown_));
+    if (shown_ >= 1) return "";
+    const double t = std::chrono::duration<double>(now - start_).count();
+    if (t < 2 || shown_ < 0.01) return "";
+    return "ETA " + seconds_text(t / shown_ * (1 - shown_));
+  }
+  // What a note says the stage is doing: its words before the first number ("fit iteration").
+  static std::string activity(const std::string& note) {
+    const size_t n = note.find_first_of("0123456789");
+    return note.substr(0, n == std::string::npos ? note.size() : n);
   }
   static int columns() {
     winsize ws{};
@@ -193,10 +199,10 @@ class ProgressView {
     drawn_ = true;
   }
 
-  bool quiet_, tty_, drawn_ = false, running_ = false, moving_ = false;
-  double shown_ = 0, moved_from_ = 0;
-  std::string stage_, note_;
-  std::chrono::steady_clock::time_point start_, last_, moved_at_;
+  bool quiet_, tty_, drawn_ = false, running_ = false;
+  double shown_ = 0;
+  std::string stage_, note_, drawn_note_;
+  std::chrono::steady_clock::time_point start_, last_;
 };
 
 // What the run directory holds now, for the line after a stop.

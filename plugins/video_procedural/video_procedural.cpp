@@ -105,6 +105,10 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
     svgm::MotionPlan plan = steps.empty() ? svgm::plan_from_prompt(parsed, rig, seed) : svgm::plan_from_steps(steps, rig, seed);
     if (asked.from_llm) plan.source = "llm";
     svgm::fit_plan(scene, rig, plan, o.frames, keyframes);
+    // Named before it is made: a candidate takes seconds (the first one, 11 s on a loaded
+    // machine, was "starting" on the bar until then).
+    if (host && host->progress)
+      host->progress(host, static_cast<double>(i) / n, ("making candidate " + std::string(name)).c_str());
     std::vector<svgm::Vec2> pts;
     for (int attempt = 0;; ++attempt) {
       pts = svgm::animate_plan(scene, rig, plan, o.frames);

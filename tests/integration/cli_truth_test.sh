@@ -2,8 +2,9 @@
 # The CLI tells the truth (issue 37): cli_truth_test.sh GROUP SVGMOTION_BINARY TEST_DATA_DIR BUILD_DIR
 #   progress  a cheap `run` in a pseudo-terminal 80 columns wide (script(1), stty cols 80): each
 #             stage's bar only moves forward and ends at 100 %, and no redraw is wider than 79
-#             columns (a wider one wraps, and "\r" then scrolls a new line per redraw). No
-#             timing is asserted (the ETA's honesty is measured by hand, see the commit).
+#             columns (a wider one wraps, and "\r" then scrolls a new line per redraw); long
+#             steps without iterations are named on the bar. No timing is asserted (the ETA's
+#             honesty: tests/bench/progress_eta.sh, and fit_progress_test.cpp on a given clock).
 #   config    `svgmotion config` lists every key of default.yaml with default, type and meaning;
 #             --show merges a config (a built-in one by name, from a folder without configs/)
 #             and overrides, naming each setting's origin; bad names are one line.
@@ -54,6 +55,11 @@ PY
   check "every bar ends at 100 %" '[[ $(grep -c " last=100 " "$tmp/bars") -eq 7 ]]'
   check "the fitter's bar was redrawn on its way" '[[ $(sed -n "s/^fitter redraws=\([0-9]*\).*/\1/p" "$tmp/bars") -ge 3 ]]'
   check "no redraw is wider than 79 columns" '! grep -Eq "widest=([89][0-9]|[1-9][0-9]{2,})" "$tmp/bars"'
+  # Long steps without iterations are named on the bar, not left at "starting" (issue 37: the
+  # fitter's bar stood still for 30 s before its first iteration and between its stages).
+  check "the fitter names its setup on the bar" 'grep -q "%  reading the video.s keyframes at 96 px" "$tmp/typescript"'
+  check "the fitter names the keyframe choice on the bar" 'grep -Eq "%  judging the [0-9]+ frames between keyframes" "$tmp/typescript"'
+  check "the video stage names the candidate it makes" 'grep -q "%  making candidate 00" "$tmp/typescript"'
   ;;
 config)
   "$bin" config >"$tmp/keys" 2>"$tmp/err"

@@ -53,7 +53,9 @@ struct svgm_host {
   void* context; /* the host's; do not touch */
   /* level: 0 debug, 1 info, 2 warning, 3 error; message is one line. */
   void (*log)(const svgm_host* host, int level, const char* message);
-  /* fraction in [0, 1] of this stage, with a short note (may be NULL). */
+  /* fraction in [0, 1] of this stage, with a short note (may be NULL). The host draws its ETA
+     as if the fraction were the share of the stage's time done so far (setup included); a note
+     whose words change ("reading ...", then "judging ...") is shown at once. */
   void (*progress)(const svgm_host* host, double fraction, const char* note);
   /* non-zero once the user asked to stop. */
   int (*cancelled)(const svgm_host* host);

@@ -160,6 +160,7 @@ void FitRun::prepare_target() {
   to.white_threshold = job.mask_threshold;
   // The clip at a glance (frame_scan.h): a lower frame rate's repeats are collapsed to the
   // poses they hold, and a shaking clip is stabilised unless told otherwise.
+  activity("scanning the video's frames");
   scan = scan_frames(*target_path, size.width);
   to.stabilise = job.stabilise.value_or(scan.shaking);
   if (scan.collapse()) to.frames = spread_over_poses(scan.poses, keyframes);
@@ -170,6 +171,7 @@ void FitRun::prepare_target() {
   // The refinement's load reuses these keyframes when it works at the same size (a 512-px video
   // fitted at 256 and refined at 512 denoises at 512 both times); released once it has.
   to.keep_denoised = job.denoise_radius > 0 && job.refine_width != 0;
+  activity("starting OpenCL");
   rt.emplace(job.device);
   // The colours the target should show: the fitted scene's opaque flat fills and strokes; none
   // (no correction) when gradients cover much of the drawing (fit/target/correction_palette.h).
@@ -203,6 +205,7 @@ void FitRun::prepare_target() {
   // (TargetOptions::keep_part_share): the share is the same at every width the fit loads.
   RgbaImage rest_render = render_image(*rt, fit_scene, size.width, false);
   to.keep_part_share = 0.5 * smallest_part_share(rest_render.rgba, rest_render.width, rest_render.height, to.white_threshold);
+  activity("reading the video's keyframes at " + std::to_string(size.width) + " px");
   target = load_target(*target_path, size.width, size.height, to);
   // Blur matching at the fitting width first (see match_blur): the rest pose is judged as
   // soft as the video shows it (rest_start.h).
@@ -263,6 +266,14 @@ void FitRun::claim_output() {
 // coarse ones as it has times the pixels.
 double FitRun::work(int it) const { return std::min(it, coarse_iters) + std::max(0, it - coarse_iters) * fine_cost; }
 
+double FitRun::seconds_in() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
+}
+
+void FitRun::activity(const std::string& note) {
+  if (job.progress) job.progress(bar ? bar->fraction(seconds_in()) : 0, note);
+}
+
 // Blur matching at each width the fit runs at: the render σ of the loss that makes our
 // rest pose look like the video's first frame (fit/target/blur_match.h).
 BlurMatch FitRun::match_blur(const TargetFrames& t, const RenderSize& at, const BlurMatch* done) {
@@ -308,6 +319,7 @@ void FitRun::prepare_fine() {
   if (to.stabilise) fine_to.shake_from = coarse_target;  // the camera path of the first load
   fine_to.keep_denoised = false;
   fine_to.denoised_from = coarse_target;
+  activity("reading the video's keyframes at " + std::to_string(fine_size.width) + " px for the refinement");
   TargetFrames t = load_target(*target_path, fine_size.width, fine_size.height, fine_to);
   release_denoised();
   fine_options = fo.refined_at(static_cast<double>(fine_size.width) / size.width);
@@ -368,6 +380,7 @@ void FitRun::choose_chroma_weight() {
 }
 
 void FitRun::start_fitter() {
+  activity("preparing the fitter");
   fitter.emplace(*rt, fit_scene, target, coarse_options);
   log::debug("fit: %s: %d keyframes of %d frames (%.3g fps) at %dx%d; %d paths in %d groups, %d control points; "
              "%d iterations on %s",

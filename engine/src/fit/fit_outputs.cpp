@@ -34,6 +34,7 @@ RgbaImage render_panel(const std::vector<float>& renders, int k, int w, int h) {
 }  // namespace
 
 void FitRun::write_animation() {
+  activity("writing the animation");
   Fitter& final_fit = this->final_fit();
   const TargetFrames& ctarget = *coarse_target;
   const TargetFrames& final_target = this->final_target();

@@ -78,6 +78,14 @@ struct FitRun {
   BlurMatch match_blur(const TargetFrames& t, const RenderSize& at, const BlurMatch* done = nullptr);
   void prepare_fine();
   void run_stage(Fitter& f, int done_before, bool checkpoints);
+  // Seconds since the job began (the progress estimate's clock).
+  double seconds_in() const;
+  // Tells the host's bar what the fit is doing now (a step with no iterations of its own: the
+  // bar would otherwise stand still for tens of seconds without a word; issue 37).
+  void activity(const std::string& note);
+  // The frames the keyframe choice will judge from `poses` (every frame of the target, or the
+  // poses a lower frame rate shows) and its keyframe budget; `poses` empty when it will not run.
+  void choice_plan(std::vector<int>& poses, int& budget) const;
 
   const FitJob& job;
   const std::function<bool()>& interrupted;
@@ -87,6 +95,7 @@ struct FitRun {
   const int keyframes;
   const std::string target_str;
   const std::string* target_path;
+  const std::chrono::steady_clock::time_point begun = std::chrono::steady_clock::now();
 
   // read_drawing
   Scene as_read;

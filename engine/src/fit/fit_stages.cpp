@@ -58,14 +58,18 @@ void FitRun::run_stage(Fitter& f, int done_before, bool checkpoints) {
     if (it % kSnapshotEvery == 0 && std::isfinite(per) && per <= 2 * best) good = f.state();
     const auto now = std::chrono::steady_clock::now();
     const double elapsed = std::chrono::duration<double>(now - t0).count();
-    const double eta = elapsed / std::max(1e-9, work(it) - work(resumed_from)) * (total_work - work(it));
+    const double in = seconds_in();
+    if (&f == &*fitter) bar->coarse_step(f.iteration() - resumed_from, f.active_keyframes(), in);
+    else if (&f == keyed.get()) bar->keyed_step(f.iteration(), in);
+    else bar->refine_step(f.iteration(), in);
+    // The bar's estimate of the time left once it knows the pace, else the iterations' share.
+    const double eta = bar->fraction(in) > 0 ? bar->seconds_left()
+                                             : elapsed / std::max(1e-9, work(it) - work(resumed_from)) * (total_work - work(it));
     const bool due = now - last_print > std::chrono::milliseconds(job.progress ? 500 : 200) || f.done();
-    if (&f == &*fitter) bar->coarse_step(f.iteration() - resumed_from, f.active_keyframes());
-    else bar->refine_step(f.iteration());
     if (job.progress && due) {
       // No budget ("/2000") and no ETA here: the fit ends when its loss stops falling, and the
       // host draws the ETA from the bar's pace.
-      job.progress(bar->fraction(), std::string(&f == &*fitter ? "fit" : "refine") +
+      job.progress(bar->fraction(in), std::string(&f == fine.get() ? "refine" : "fit") +
                                         fit_fmt(" iteration %.0f, loss %.5f, keyframes %.0f", it, loss.total(),
                                                 f.active_keyframes()) + "/" + std::to_string(f.keyframes()));
       last_print = now;
@@ -91,11 +95,23 @@ void FitRun::fit_coarse() {
   t0 = std::chrono::steady_clock::now();
   last_print = t0;
   best = std::numeric_limits<float>::infinity();
-  // The host's bar (job.progress): work done over work expected, never going back (fit_progress.h).
-  bar.emplace(fitter->keyframes(), coarse_options.iterations - fitter->iteration(), refine_iters, fine_cost,
-              coarse_options.plateau_window);
+  // The host's bar (job.progress): time spent over time expected, never going back (fit_progress.h).
+  std::vector<int> poses;
+  int key_budget = 0;
+  choice_plan(poses, key_budget);
+  FitProgress::Plan plan;
+  plan.keyframes = fitter->keyframes();
+  plan.coarse_budget = coarse_options.iterations - fitter->iteration();
+  plan.refine_budget = refine_iters;
+  plan.fine_pixels = fine_cost;
+  plan.plateau_window = coarse_options.plateau_window;
+  plan.choice_frames = static_cast<int>(std::count_if(poses.begin(), poses.end(), [&](int i) {
+    return !std::binary_search(target.source_index.begin(), target.source_index.end(), i);
+  }));
+  bar.emplace(plan);
+  activity("starting the fit");
   run_stage(*fitter, 0, true);
-  bar->coarse_done();
+  bar->coarse_done(seconds_in());
   // The coarse fit's state is what a resume starts from, also once the outputs are written
   // (below, with the result for `svgmotion export`): the refinement is not checkpointed.
   coarse_state = fitter->state();
@@ -109,28 +125,36 @@ void FitRun::fit_coarse() {
   }
 }
 
-// Keyframes from the target (keyframe_choice.h): every frame between keyframes drawn at the
-// spline's shape and judged by the loss; the frames it misses become keyframes, within the
-// budget, and the fit goes on with them (not checkpointed: a resumed fit makes the same choice
-// again from the coarse checkpoint above).
-void FitRun::add_keyframes_from_target() {
+void FitRun::choice_plan(std::vector<int>& poses, int& budget) const {
   // Only frames that show a pose of their own are judged: a repeat of a lower frame rate's
   // held frame is its run's pose, which the spline should pass through, not stop at
   // (frame_scan.h). Without a cadence, every frame.
-  std::vector<int> poses = scan.poses;
+  poses = scan.poses;
   if (!scan.collapse() || poses.empty() || poses.back() >= target.source_frames) {
     poses.resize(static_cast<size_t>(target.source_frames));
     std::iota(poses.begin(), poses.end(), 0);
   }
   const int n_poses = static_cast<int>(poses.size());
-  const int key_budget = job.max_keyframes < 0 ? default_keyframe_budget(keyframes, n_poses) : job.max_keyframes;
+  budget = job.max_keyframes < 0 ? default_keyframe_budget(keyframes, n_poses) : job.max_keyframes;
+  if (!(budget > target.keyframes && n_poses > target.keyframes)) poses.clear();
+}
+
+// Keyframes from the target (keyframe_choice.h): every frame between keyframes drawn at the
+// spline's shape and judged by the loss; the frames it misses become keyframes, within the
+// budget, and the fit goes on with them (not checkpointed: a resumed fit makes the same choice
+// again from the coarse checkpoint above).
+void FitRun::add_keyframes_from_target() {
+  std::vector<int> poses;
+  int key_budget = 0;
+  choice_plan(poses, key_budget);
   key_report = {{"asked", target.keyframes}, {"budget", key_budget}};
-  if (!stopped && key_budget > target.keyframes && n_poses > target.keyframes) {
+  if (!stopped && !poses.empty()) {
     const auto t_choice = std::chrono::steady_clock::now();
     std::vector<int> between;
     for (int i : poses)
       if (!std::binary_search(target.source_index.begin(), target.source_index.end(), i)) between.push_back(i);
     const int N = std::max(2, target.source_frames);
+    activity("judging the " + std::to_string(between.size()) + " frames between keyframes");
     std::vector<double> kt;
     for (int k : target.source_index) kt.push_back(static_cast<double>(k) / (N - 1));
     kt.front() = 0;
@@ -165,6 +189,7 @@ void FitRun::add_keyframes_from_target() {
     key_report["worst_frame"] = choice.worst_frame;
     key_report["worst_db"] = choice.worst_db;
     if (!choice.added.empty()) {
+      activity("reading the " + std::to_string(choice.frames.size()) + " keyframes chosen");
       TargetOptions o = to;
       o.frames = choice.frames;
       o.keep_denoised = to.keep_denoised && refine_w > 0;
@@ -193,6 +218,7 @@ void FitRun::add_keyframes_from_target() {
       coarse_iters += ko.iterations;
       total_iters = coarse_iters + refine_iters;
       total_work = work(total_iters);
+      bar->keyed_start(keyed->keyframes(), ko.iterations, seconds_in());
       run_stage(*keyed, before, false);
       coarse_iters = before + keyed->iteration();
       total_iters = coarse_iters + refine_iters;
@@ -209,6 +235,7 @@ void FitRun::add_keyframes_from_target() {
     key_report["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_choice).count();
   }
   key_report["chosen"] = coarse_target->keyframes;
+  if (bar) bar->choice_done(seconds_in());
 }
 
 // The refinement: every keyframe at the finer width, from the coarse result (not
@@ -221,6 +248,7 @@ void FitRun::refine() {
     const RenderSize fine_size = render_size(scene, refine_w);
     // Loaded before the keyframes were chosen (the chroma weight's calibration): again, at them.
     if (fine_target && fine_target->keyframes != ctarget.keyframes) fine_target.reset();
+    activity("starting the refinement at " + std::to_string(refine_w) + " px");
     prepare_fine();
     fine_options.chroma_weight = chroma_weight;
     fine = std::make_unique<Fitter>(*rt, fit_scene, *fine_target, fine_options);
@@ -233,6 +261,7 @@ void FitRun::refine() {
     // One fitter's loss memory at a time: the coarse one's waits (made again for the guard).
     cfit.release_loss_memory();
     run_stage(*fine, coarse_iters, false);
+    bar->refine_done(seconds_in());
     fine->release_loss_memory();
     if (!stopped) {
       // The refinement's guard. A keyframe the refinement made worse at the coarse width (the
