@@ -168,6 +168,23 @@ TEST_CASE("loss chunks: one, two or every frame at a time give the same bits, an
   }
 }
 
+TEST_CASE("release_image: the Float renders' buffer goes once read, and the next render makes it again with the same bits") {
+  const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
+  ClRaster r(runtime(), plan, kK);
+  r.set_control_points(shifted(plan, 0.5f, 0.75f));
+  r.set_active_frames(kK);
+  const size_t before = r.device_bytes();
+  r.forward();
+  const std::vector<float> first = r.read_image();
+  CHECK(r.device_bytes() - before == size_t{kK} * kW * kH * 16);
+  r.release_image();
+  CHECK(r.device_bytes() == before);
+  CHECK_THROWS_WITH_AS(r.read_image(), "internal: read_image before a Float forward pass", Error);
+  r.release_image();  // a second release is a no-op
+  r.forward();
+  CHECK(same_bits(r.read_image(), first));
+}
+
 TEST_CASE("loss chunks: a chunk of no frames is refused") {
   const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
   ClRaster r(runtime(), plan, kK);
