@@ -104,7 +104,10 @@ inline float chroma_residual(float3 q, float3 v, __global float4* e) {
 #endif
 
 /* Per (row, frame): E' = the y-blur of X' over the rows' extents, kept (with its extent) for
- * the backward pass, and the row's Σ (2 Q·E' + E'·E') over pixels and channels, in x order. */
+ * the backward pass, and the row's Σ (2 Q·E' + E'·E') over pixels and channels, in x order.
+ * The host may launch a few frames at a time (ClRaster's loss chunks, to keep X' and E' to a
+ * few frames' memory): the launch's global offset is the first frame, and X' and E' hold the
+ * launched frames only, indexed from it; everything else is indexed by the frame itself. */
 __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* ext_x,
                                __global const half* Q, __global float4* E,
                                __global int2* ext_e, __global float* row_sums, int width,
@@ -121,8 +124,9 @@ __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* e
   }
   ext_e[(size_t)k * height + y] = (int2)(lo, hi);
   float s = 0.0f;
-  __global const float4* f = Xb + (size_t)k * width * height;
-  __global float4* e = E + ((size_t)k * height + y) * width;
+  const size_t kc = (size_t)k - get_global_offset(1); /* the frame within the chunk */
+  __global const float4* f = Xb + kc * width * height;
+  __global float4* e = E + (kc * height + y) * width;
   __global const half* q = Q + ((size_t)k * height + y) * width * 4;
   /* Each tap's row contributes on its extent only (zero padding outside the frame and the
    * drawing). Those ranges are taken once per row: [fa, fb] is where every tap is inside (a

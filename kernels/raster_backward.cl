@@ -411,7 +411,7 @@ __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
                            __local float4* band_rgba,          /* [BAND_H][W] */
                            __local uchar* mark,                /* [BAND_H][W] */
                            __local float4* tape, int tape_cap,
-                           __global float4* image,             /* [K][H][W] X' (loss.cl) */
+                           __global float4* image,             /* [chunk][H][W] X' (loss.cl) */
                            __global int2* extents,             /* [K][H] its row extents */
                            float4 background,
                            __global float4* pool, int pool_cap,
@@ -422,7 +422,9 @@ __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
                            int height,
                            __global const int* draw_paint,     /* [n_draws] */
                            __global const float4* paint) {     /* [n_images][H][W] */
-  const int band = get_group_id(0), k = get_group_id(1);
+  /* The frame: the launch's global offset is the first of its chunk (one work-item deep in
+   * that dimension, so the global id is the frame); X' holds the chunk's frames only. */
+  const int band = get_group_id(0), k = get_global_id(1), k0 = get_global_offset(1);
   const int lid = get_local_id(0), lsize = get_local_size(0);
   const int y0 = band * BAND_H, rows = min(BAND_H, height - y0);
   __local int hull[4 * MAX_BAND_H];
@@ -450,8 +452,8 @@ __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
     }
   }
   barrier(CLK_LOCAL_MEM_FENCE);
-  write_band(band_rgba, hull, image, (__global uchar4*)image, extents, background, OUT_RESIDUAL,
-             k, y0, rows, width, height, lid, lsize);
+  write_band(band_rgba, hull, image, (__global uchar4*)image, extents + (size_t)k0 * height, background,
+             OUT_RESIDUAL, k - k0, y0, rows, width, height, lid, lsize);
 }
 
 __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines] */
@@ -460,7 +462,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               __global const float4* draw_color,  /* [n_draws] */
                               __global const int* draw_rule,      /* [n_draws] */
                               __global const float4* bounds,      /* [K][n_chunks] */
-                              __global const float4* E,           /* [K][H][W] E' (loss.cl) */
+                              __global const float4* E,           /* [chunk][H][W] E' (loss.cl) */
                               __global const int2* ext_e,         /* [K][H] its row extents */
                               __global const half* R,             /* [K][H][W][4] G ∗ Q, half (loss.cl) */
                               float grad_scale,                   /* 2w/N */
@@ -480,7 +482,8 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               int height,
                               __global const int* draw_paint,     /* [n_draws] */
                               __global const float4* paint) {     /* [n_images][H][W] */
-  const int band = get_group_id(0), k = get_group_id(1);
+  /* The frame, and E' of the chunk's frames only, as in raster_taped. */
+  const int band = get_group_id(0), k = get_global_id(1), k0 = get_global_offset(1);
   const int lid = get_local_id(0), lsize = get_local_size(0);
   const int y0 = band * BAND_H, rows = min(BAND_H, height - y0);
   const float fy0 = (float)y0, fy1 = (float)(y0 + rows), fw = (float)width;
@@ -489,7 +492,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
   if (lid == 0) {
     __global const float4* L = lines + (size_t)k * n_lines;
     __global const float4* B = bounds + (size_t)k * n_chunks;
-    __global const float4* Ek = E + (size_t)k * height * width;
+    __global const float4* Ek = E + (size_t)(k - k0) * height * width;
     __global const int2* Xk = ext_e + (size_t)k * height;
     __global const half* Rk = R + (size_t)k * height * width * 4;
 #ifdef PREFETCH_ROWS

@@ -1,6 +1,7 @@
-// The loss's memory (ClRaster::set_targets, release_loss_buffers): the raster keeps no copy of
-// the targets and frees its pixel-sized loss buffers on request, and neither changes a bit of
-// the loss or the gradient.
+// The loss's memory (ClRaster::set_targets, release_loss_buffers, set_loss_chunk_frames): the
+// raster keeps no copy of the targets, frees its pixel-sized loss buffers on request and holds
+// the residuals of a few frames at a time, and none of it changes a bit of the loss or the
+// gradient.
 #include <doctest/doctest.h>
 
 #include <cstring>
@@ -123,6 +124,71 @@ TEST_CASE("set_targets keeps no copy: the loss's constants are made from the cal
   r.release_loss_buffers();
   CHECK_THROWS_WITH_AS(r.loss_and_gradient(kWeight, kWhite),
                        "internal: the loss's targets are gone or resized (set_targets keeps no copy)", Error);
+}
+
+TEST_CASE("loss chunks: one, two or every frame at a time give the same bits, and X' and E' are held for a chunk only") {
+  const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
+  const std::vector<float> targets = targets_at(plan, 2.5f, -1.25f);
+  const std::vector<float> cp = shifted(plan, 0.5f, 0.75f);
+  // The plain loss, and the chroma-weighted one with a chroma blur of its own (loss.cl's
+  // CHROMA_R kernels index X' and E' on their own lines).
+  for (const auto& [chroma_sigma, chroma_weight] : {std::pair{0.0, 1.0}, std::pair{1.6, 0.25}}) {
+    CAPTURE(chroma_weight);
+    std::vector<float> bits[3], losses[3];
+    size_t bytes[3] = {};
+    for (int chunk = 1; chunk <= kK; ++chunk) {
+      ClRaster r(runtime(), plan, kK, kLossSigma, chroma_sigma, chroma_weight);
+      r.set_control_points(cp);
+      r.set_active_frames(kK);
+      r.set_targets(targets);
+      r.set_loss_chunk_frames(chunk);
+      CHECK(r.loss_chunk_frames() == chunk);
+      bits[chunk - 1] = pass(r);
+      losses[chunk - 1] = r.read_frame_losses();
+      bytes[chunk - 1] = r.device_bytes();
+      // Fewer active frames than a chunk holds (2 of them in chunks of 3, or a chunk of 2 then
+      // one of 1 cut to 2): each frame's loss is the one it has among all three.
+      r.set_active_frames(2);
+      (void)r.loss_and_gradient(kWeight, kWhite);
+      const std::vector<float> two = r.read_frame_losses();
+      REQUIRE(two.size() == 2);
+      CHECK(two[0] * 2 == doctest::Approx(losses[chunk - 1][0] * 3));
+      CHECK(two[1] * 2 == doctest::Approx(losses[chunk - 1][1] * 3));
+    }
+    CHECK(same_bits(bits[0], bits[1]));
+    CHECK(same_bits(bits[0], bits[2]));
+    CHECK(same_bits(losses[0], losses[1]));
+    CHECK(same_bits(losses[0], losses[2]));
+    CHECK(losses[0][0] > 0);
+    CHECK(losses[0][2] > losses[0][0]);  // the frames differ (the shift grows with the frame)
+    // Each frame more in a chunk is one more frame of X' and E': 2 x 16 bytes per pixel.
+    const size_t frame = size_t{kW} * kH * 32;
+    CHECK(bytes[1] - bytes[0] == frame);
+    CHECK(bytes[2] - bytes[0] == 2 * frame);
+  }
+}
+
+TEST_CASE("release_image: the Float renders' buffer goes once read, and the next render makes it again with the same bits") {
+  const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
+  ClRaster r(runtime(), plan, kK);
+  r.set_control_points(shifted(plan, 0.5f, 0.75f));
+  r.set_active_frames(kK);
+  const size_t before = r.device_bytes();
+  r.forward();
+  const std::vector<float> first = r.read_image();
+  CHECK(r.device_bytes() - before == size_t{kK} * kW * kH * 16);
+  r.release_image();
+  CHECK(r.device_bytes() == before);
+  CHECK_THROWS_WITH_AS(r.read_image(), "internal: read_image before a Float forward pass", Error);
+  r.release_image();  // a second release is a no-op
+  r.forward();
+  CHECK(same_bits(r.read_image(), first));
+}
+
+TEST_CASE("loss chunks: a chunk of no frames is refused") {
+  const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
+  ClRaster r(runtime(), plan, kK);
+  CHECK_THROWS_WITH_AS(r.set_loss_chunk_frames(0), "internal: loss chunk of 0 frames", Error);
 }
 
 }  // TEST_SUITE

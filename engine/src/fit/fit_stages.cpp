@@ -252,6 +252,10 @@ void FitRun::refine() {
     prepare_fine();
     fine_options.chroma_weight = chroma_weight;
     fine = std::make_unique<Fitter>(*rt, fit_scene, *fine_target, fine_options);
+    // The fitter has its distance field on the device and nothing reads the target's mask
+    // after the load's checks: 5 bytes per pixel and keyframe (21 MB for 16 keyframes at 512 px).
+    std::vector<float>().swap(fine_target->sdf);
+    std::vector<uint8_t>().swap(fine_target->mask);
     const double scale = static_cast<double>(fine_size.width) / size.width;
     fine->adopt_coarse(cfit, scale);
     log::debug("fit: refining every keyframe at %dx%d for %d iterations", fine_size.width, fine_size.height,

@@ -201,14 +201,14 @@ void ClRaster::enqueue_geometry() {
 }
 
 void ClRaster::launch(const char* name, cl::Kernel& k, const cl::NDRange& global,
-                      const cl::NDRange& local_or_null) {
+                      const cl::NDRange& local_or_null, const cl::NDRange& offset) {
   const cl::NDRange local = local_or_null.dimensions() ? local_or_null : stable_local_size(global);
   if (!rt_.profiling()) {
-    rt_.queue().enqueueNDRangeKernel(k, cl::NullRange, global, local);
+    rt_.queue().enqueueNDRangeKernel(k, offset, global, local);
     return;
   }
   cl::Event e;
-  rt_.queue().enqueueNDRangeKernel(k, cl::NullRange, global, local, nullptr, &e);
+  rt_.queue().enqueueNDRangeKernel(k, offset, global, local, nullptr, &e);
   events_.emplace_back(name, e);
 }
 
@@ -236,6 +236,13 @@ std::vector<float> ClRaster::read_image() {
   std::vector<float> out(static_cast<size_t>(frames_) * plan_.height * plan_.width * 4);
   rt_.queue().enqueueReadBuffer(image_, CL_TRUE, 0, out.size() * sizeof(float), out.data());
   return out;
+}
+
+void ClRaster::release_image() {
+  if (!image_()) return;
+  rt_.queue().finish();  // nothing enqueued still writes it
+  device_bytes_ -= image_.getInfo<CL_MEM_SIZE>();
+  image_ = cl::Buffer();
 }
 
 std::vector<float> ClRaster::read_image_frame(int k) {

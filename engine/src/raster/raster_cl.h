@@ -61,6 +61,9 @@ class ClRaster {
   std::vector<float> read_image();
   // Frame k of them only: height * width * 4 floats (a 21-keyframe clip at 512 px is 88 MB).
   std::vector<float> read_image_frame(int k);
+  // Frees the Float images (16 bytes per pixel and frame, in host memory under PoCL) once they
+  // are read; the next Float forward makes them again.
+  void release_image();
 
   // With a profiling runtime: milliseconds each kernel of the last forward() took on the device.
   std::vector<std::pair<std::string, double>> kernel_times() const;
@@ -102,6 +105,13 @@ class ClRaster {
   void set_tape_pool_capacity(int entries);
   // Bands of the last pass whose tape was not in the pool (raster_backward replayed them).
   int tape_pool_misses();
+  // The loss pass runs raster_taped, the y-blur and raster_backward over this many frames at a
+  // time, so the residuals X' and E' (32 bytes per pixel) exist for those frames only: at most
+  // kLossChunkBytes of them, whatever the clip's length (the same bits for any count: each
+  // frame's sums and gradients are its own, added in frame order after). For tests: set it
+  // (n >= 1); the buffers are made again at that size on the next loss pass.
+  void set_loss_chunk_frames(int n);
+  int loss_chunk_frames() const { return chunk_; }
 
   // Bytes of device memory this routine allocated.
   size_t device_bytes() const { return device_bytes_; }
@@ -109,7 +119,7 @@ class ClRaster {
  private:
   cl::Buffer make(size_t bytes, const void* host = nullptr);
   void launch(const char* name, cl::Kernel& k, const cl::NDRange& global,
-              const cl::NDRange& local = cl::NullRange);
+              const cl::NDRange& local = cl::NullRange, const cl::NDRange& offset = cl::NullRange);
   void init_backward();
   // The buffers release_loss_buffers frees, made and bound to the kernels' arguments.
   void make_loss_buffers();
@@ -152,6 +162,10 @@ class ClRaster {
   std::array<float, 4> q_background_{-1, -1, -1, -1};
   void prepare_loss_constants(const std::array<float, 4>& background);
   cl::Buffer q_, r_, qsum_, ext_x_, ext_e_;
+  // The loss chunk's residuals (set_loss_chunk_frames): X' (the x-blurred render, written by
+  // raster_taped) and E' (resid_, its y-blur), chunk_ frames each.
+  int chunk_ = 0;  // 0: chosen by init_backward
+  cl::Buffer xres_;
   cl::Buffer resid_, row_sums_, loss_, partial_, overflow_,
       line_grad_, grad_pts_, grad_cp_, line_chunk_, pt_first_, pt_entries_, cp_first_,
       cp_entries_;

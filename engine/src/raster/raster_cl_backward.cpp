@@ -14,6 +14,11 @@ namespace {
 // The tape pool's largest size in entries (float4): 2^27, 2 GiB, far above any drawing's need
 // (a 1024 px frame with an edge on every pixel of every draw of a 100-draw scene is 10^8).
 constexpr size_t kMaxPoolEntries = size_t{1} << 27;
+// The loss chunk's residuals X' and E' (float4 each, 32 bytes per pixel) take at most this
+// many bytes: 4 frames at 512 px, 16 at 256 (a coarse fit of 15 keyframes is one chunk, as
+// before the chunks). At 512 px, 21 keyframes held 176 MB of them; 32 MB is a few percent of
+// a pass's time in launches more (ClRaster::set_loss_chunk_frames).
+constexpr size_t kLossChunkBytes = size_t{32} << 20;
 }  // namespace
 
 void ClRaster::init_backward() {
@@ -34,7 +39,8 @@ void ClRaster::init_backward() {
     k_stroke_back_ = cl::Kernel(prog, "stroke_backward");
     k_flatten_back_ = cl::Kernel(prog, "flatten_backward");
 
-    if (!image_()) image_ = make(pixels * 4 * sizeof(float));
+    if (chunk_ == 0)
+      chunk_ = static_cast<int>(std::clamp<size_t>(kLossChunkBytes / (static_cast<size_t>(p.height) * p.width * 32), 1, K));
     make_loss_buffers();
     qsum_ = make(K * sizeof(float));
     ext_x_ = make(K * p.height * 2 * sizeof(int));
@@ -66,7 +72,7 @@ void ClRaster::init_backward() {
     const int W = p.width, H = p.height, F = frames_;
     // The residual forward pass writes the x-blurred residual into image_; blur it along y
     // with the row sums of E² (kernels/loss.cl).
-    set_args(k_blur_y_loss_, image_, ext_x_, q_, resid_, ext_e_, row_sums_, W, H, F);
+    set_args(k_blur_y_loss_, xres_, ext_x_, q_, resid_, ext_e_, row_sums_, W, H, F);
     set_args(k_loss_total_, row_sums_, qsum_, loss_, 1.0f, H, F);
     set_args(k_backward_, lines_, draw_chunks_, chunk_lines_, draw_color_, draw_rule_, bounds_,
              resid_, ext_e_, r_, 1.0f, cl_float4{{0, 0, 0, 0}},
@@ -86,7 +92,7 @@ void ClRaster::init_backward() {
              cl::Local(static_cast<size_t>(band_h_) * (p.width + 2) * sizeof(float)),
              cl::Local(static_cast<size_t>(band_h_) * p.width * 4 * sizeof(float)),
              cl::Local(static_cast<size_t>(band_h_) * p.width),
-             cl::Local(static_cast<size_t>(tape_cap_) * 4 * sizeof(float)), tape_cap_, image_, ext_x_);
+             cl::Local(static_cast<size_t>(tape_cap_) * 4 * sizeof(float)), tape_cap_, xres_, ext_x_);
     // Argument 13 (background) is set per pass, 14..15 (the pool) by resize_pool.
     set_args_at(k_taped_, 16, pool_draw_, pool_at_, pool_used_, p.n_lines, n_chunks, n_draws, bands_, W, H,
                 draw_paint_, paint_);
@@ -112,14 +118,14 @@ void ClRaster::make_loss_buffers() {
   // Q and R are only read: halves (prepare_loss_constants).
   q_ = make(pixels * 4 * sizeof(uint16_t));
   r_ = make(pixels * 4 * sizeof(uint16_t));
-  resid_ = make(pixels * 4 * sizeof(float));
+  // X' and E' for one chunk of frames (set_loss_chunk_frames).
+  const size_t chunk_pixels = static_cast<size_t>(chunk_) * plan_.height * plan_.width;
+  xres_ = make(chunk_pixels * 4 * sizeof(float));
+  resid_ = make(chunk_pixels * 4 * sizeof(float));
   partial_ = make(K * plan_.n_lines * static_cast<size_t>(bands_) * 4 * sizeof(float));
   if (!backward_ready_) return;  // init_backward binds them with the rest
-  // The residual forward pass's X' (image_) goes with them; a Float render made it again
-  // meanwhile, perhaps: bound afresh either way.
-  if (!image_()) image_ = make(pixels * 4 * sizeof(float));
-  set_args_at(k_blur_y_loss_, 0, image_);
-  set_args_at(k_taped_, 11, image_);
+  set_args_at(k_blur_y_loss_, 0, xres_);
+  set_args_at(k_taped_, 11, xres_);
   // Made again after release_loss_buffers: bound where init_backward bound them, and the pool
   // at the capacity it had grown to (what the bands asked for stays what they ask for).
   set_args_at(k_blur_y_loss_, 2, q_, resid_);
@@ -134,7 +140,8 @@ void ClRaster::release_loss_buffers() {
   if (!q_()) return;
   finish_pool_read();
   rt_.queue().finish();  // nothing enqueued still uses them
-  for (cl::Buffer* b : {&q_, &r_, &resid_, &partial_, &pool_, &image_}) {
+  // The Float renders' image_ too: a fitter that waits or only renders makes it again.
+  for (cl::Buffer* b : {&q_, &r_, &xres_, &resid_, &partial_, &pool_, &image_}) {
     if (!(*b)()) continue;
     device_bytes_ -= b->getInfo<CL_MEM_SIZE>();
     *b = cl::Buffer();
@@ -169,6 +176,12 @@ int ClRaster::tape_pool_misses() {
   return static_cast<int>(std::count_if(at.begin(), at.end(), [](const cl_int2& a) { return a.s[0] < 0; }));
 }
 
+void ClRaster::set_loss_chunk_frames(int n) {
+  if (n < 1) throw Error("internal: loss chunk of " + std::to_string(n) + " frames");
+  release_loss_buffers();
+  chunk_ = std::min(n, frames_);
+}
+
 void ClRaster::forward_taped(const std::array<float, 4>& background) {
   // The bands' request of the previous pass (read without blocking; done by now): grow the
   // pool by a quarter beyond it, so a fit whose drawing moves does not regrow every pass.
@@ -179,7 +192,6 @@ void ClRaster::forward_taped(const std::array<float, 4>& background) {
   k_taped_.setArg(13, cl_float4{{background[0], background[1], background[2], background[3]}});
   q.enqueueFillBuffer(pool_used_, 0, 0, sizeof(int));
   enqueue_geometry();
-  launch("raster_taped", k_taped_, cl::NDRange(bands_ * group_, active_), cl::NDRange(group_, 1));
 }
 
 void ClRaster::set_targets(const std::vector<float>& rgba) {
@@ -268,10 +280,17 @@ void ClRaster::enqueue_loss_and_gradient(float weight, const std::array<float, 4
     k_loss_total_.setArg(5, active_);
     k_blur_y_loss_.setArg(8, active_);
     q.enqueueFillBuffer(overflow_, 0, 0, sizeof(int));
-    launch("blur_y_loss_rows", k_blur_y_loss_, cl::NDRange(round_up(p.height, 16), K));
+    // A chunk of frames at a time (the launch's offset is its first frame): X' and E' are the
+    // chunk's; the tapes, row sums and partial gradients are every frame's.
+    for (int k0 = 0; k0 < active_; k0 += chunk_) {
+      const int n = std::min(chunk_, active_ - k0);
+      launch("raster_taped", k_taped_, cl::NDRange(bands_ * group_, n), cl::NDRange(group_, 1), cl::NDRange(0, k0));
+      launch("blur_y_loss_rows", k_blur_y_loss_, cl::NDRange(round_up(p.height, 16), n), cl::NullRange,
+             cl::NDRange(0, k0));
+      launch("raster_backward", k_backward_, cl::NDRange(bands_ * group_, n), cl::NDRange(group_, 1),
+             cl::NDRange(0, k0));
+    }
     launch("loss_total", k_loss_total_, cl::NDRange(1));
-    launch("raster_backward", k_backward_, cl::NDRange(bands_ * group_, K),
-           cl::NDRange(group_, 1));
     launch("gather_line_grads", k_gather_lines_, cl::NDRange(round_up(p.n_lines, 64), K));
     launch("gather_point_grads", k_gather_points_, cl::NDRange(round_up(p.n_pts, 64), K));
     if (!p.strokes.empty())

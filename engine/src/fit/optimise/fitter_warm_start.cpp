@@ -59,6 +59,9 @@ void Fitter::warm_start(int k, int src) {
   raster_->set_active_frames(src + 1);
   raster_->forward(ClRaster::Output::Float, kWhite);
   const auto img = raster_->read_image_frame(src);
+  // The loss passes have buffers of their own: the renders' (16 bytes per pixel and keyframe)
+  // would otherwise stay beside them for the rest of the fit.
+  raster_->release_image();
   std::vector<float> cp(static_cast<size_t>(plan_.n_cp) * 2);
   q.enqueueReadBuffer(raster_->cp_buffer(), CL_TRUE, static_cast<size_t>(src) * plan_.n_cp * 2 * sizeof(float),
                       cp.size() * sizeof(float), cp.data());
