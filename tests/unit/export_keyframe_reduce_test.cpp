@@ -89,37 +89,6 @@ TEST_SUITE("export") {
     CHECK(r.max_error <= 0.5);
   }
 
-  TEST_CASE("a wrapper turning far between two values is keyed between them, on the full export's chord") {
-    // A 20 px square about (0, 0) turned 90 degrees from one value to the next. Interpolating
-    // the angle between the two values alone turns its corners along the arc, 4.1 px off the
-    // full export's chord halfway (10 sqrt 2 (1 - cos 45)); the keys between them hold 0.5 px.
-    const std::vector<double> rest{-10, -10, 10, -10, 10, 10, -10, 10};
-    const std::vector<Affine> maps{Affine{}, Affine::rotate_deg(90)};
-    const WrapperKeys w = wrapper_keys(maps, Affine{}, rest, {0, 1}, 0.5, -1, Vec2{0, 0}, WrapperForm::Smil);
-    REQUIRE(w.times.size() == static_cast<size_t>(kWrapperSteps) + 1);
-    CHECK(w.keys.keys.size() > 2);
-    for (int j = 0; j <= 40; ++j) {
-      const double u = j / 40.0;
-      // What the keys draw at u: the player's interpolation of the (rounded) kept keys.
-      size_t k = 0;
-      while (k + 2 < w.keys.keys.size() && w.times[w.keys.keys[k + 1]] <= u) ++k;
-      const size_t a = w.keys.keys[k], b = w.keys.keys[k + 1];
-      const double s = ease(w.keys.easing[k], (u - w.times[a]) / (w.times[b] - w.times[a]));
-      double p[6];
-      for (size_t q = 0; q < 6; ++q) p[q] = w.trajectory[6 * a + q] + s * (w.trajectory[6 * b + q] - w.trajectory[6 * a + q]);
-      const Affine drawn = wrapper_map(p, Vec2{0, 0}, WrapperForm::Smil);
-      double worst = 0;
-      for (size_t c = 0; c < rest.size(); c += 2) {
-        const Vec2 r{rest[c], rest[c + 1]}, e = maps[1].apply(r), d = drawn.apply(r);
-        const Vec2 chord{r.x + u * (e.x - r.x), r.y + u * (e.y - r.y)};
-        worst = std::max(worst, std::hypot(d.x - chord.x, d.y - chord.y));
-      }
-      // Within the tolerance plus what the quarter steps' own arcs leave (10 sqrt 2 (1 - cos
-      // 11.25) shrunk to the blend's radius: under 0.3 px) and the rounding.
-      CHECK(worst <= 0.5 + 0.3);
-    }
-  }
-
   TEST_CASE("a linear motion reduces to its two ends, linear") {
     const auto times = uniform_times(49);
     std::vector<double> values;  // two points moving at constant speed
