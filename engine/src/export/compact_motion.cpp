@@ -180,26 +180,10 @@ int measured_decimals(const std::vector<double>& values, size_t dim, const std::
 WrapperKeys wrapper_keys(const std::vector<Affine>& affine, const Affine& parent_to_canvas, const std::vector<double>& rest,
                          const std::vector<double>& times, double tolerance, int decimals, Vec2 centre, WrapperForm form) {
   WrapperKeys w;
-  // The values and kWrapperSteps - 1 blends between every two (their maps blended entry by
-  // entry: the full export's blend of the points), so that a key can go where a turn's arc
-  // leaves the full export's chord between two values.
-  std::vector<Affine> dense;
-  for (size_t v = 0; v < affine.size(); ++v) {
-    dense.push_back(affine[v]);
-    w.times.push_back(times[v]);
-    if (v + 1 == affine.size()) break;
-    const Affine &a = affine[v], &b = affine[v + 1];
-    for (int j = 1; j < kWrapperSteps; ++j) {
-      const double u = static_cast<double>(j) / kWrapperSteps;
-      dense.push_back(Affine{a.a + u * (b.a - a.a), a.b + u * (b.b - a.b), a.c + u * (b.c - a.c), a.d + u * (b.d - a.d),
-                             a.e + u * (b.e - a.e), a.f + u * (b.f - a.f)});
-      w.times.push_back(times[v] + u * (times[v + 1] - times[v]));
-    }
-  }
-  w.trajectory = wrapper_trajectory(dense, parent_to_canvas, centre, form);
+  w.trajectory = wrapper_trajectory(affine, parent_to_canvas, centre, form);
   const std::vector<double> exact = w.trajectory;
   const SampleError err = wrapper_error(exact, rest, parent_to_canvas, centre, form);
-  w.keys = reduce_keyframes(w.times, exact, 6, tolerance, err);
+  w.keys = reduce_keyframes(times, exact, 6, tolerance, err);
   // Rounding is measured against the exact maps, with the tolerance of the finest use (a path
   // without a residual keeps its motion within `tolerance`; the budgets are shares of it).
   const int max_decimals = 8;
@@ -218,7 +202,7 @@ WrapperKeys wrapper_keys(const std::vector<Affine>& affine, const Affine& parent
     }
   const Affine to_parent = parent_to_canvas.inverse();
   for (size_t v = 0; v < affine.size(); ++v) {
-    const std::vector<double> p = keyed_value(w.keys, w.times, w.trajectory, 6, v * kWrapperSteps);
+    const std::vector<double> p = keyed_value(w.keys, times, w.trajectory, 6, v);
     w.drawn.push_back(parent_to_canvas * wrapper_map(p.data(), centre, form) * to_parent);
   }
   return w;

@@ -56,20 +56,13 @@ SampleError wrapper_error(const std::vector<double>& trajectory, const std::vect
                           const Affine& parent_to_canvas, Vec2 centre, WrapperForm form);
 
 // A wrapper transform's written keys: the trajectory reduced within `tolerance` (of the exact
-// maps and of their blends between values, on the rest points; its keys may fall between
-// values, at `times`), its kept keys rounded to decimals measured per component
+// maps, on the rest points), its kept keys rounded to decimals measured per component
 // (translation within a quarter of the tolerance, angles and scales an eighth; `decimals` >= 0
 // fixes the translation's), and the canvas map the player draws at each value's time from
 // those rounded keys, which a residual shape is computed against. The Lottie form leaves the
 // skew out.
-// Steps a wrapper's trajectory takes between two values (wrapper_keys): the values and the
-// full export's blends a quarter, half and three quarters of the way. A part that turns 30
-// degrees between two values at 100 px from its centre leaves the chord by 3.4 px halfway
-// along the arc, and by 0.2 px with keys a quarter of the way apart (it goes with the square).
-constexpr int kWrapperSteps = 4;
 struct WrapperKeys {
-  std::vector<double> times;       // the trajectory's times: the values' and kWrapperSteps - 1 between every two
-  std::vector<double> trajectory;  // 6 numbers per time (value v at v * kWrapperSteps); kept keys rounded
+  std::vector<double> trajectory;  // 6 numbers per value; kept keys rounded
   ReducedKeys keys;
   int translate_decimals = 0, rotate_decimals = 0, skew_decimals = 0, scale_decimals = 0;
   std::vector<Affine> drawn;  // per value, canvas space

@@ -40,7 +40,7 @@ CompactPathMotion compact_path_motion(const std::vector<double>& rest, const std
   // The group's transform: T(centre + t) R(r) S(s) T(-centre), each property static when its
   // kept keys agree.
   std::vector<double> key_frames;
-  for (const double t : w.times) key_frames.push_back(t * frames);  // the wrapper's keys may fall between values
+  for (const double t : times) key_frames.push_back(t * frames);
   const std::vector<double>& tr = w.trajectory;
   auto varies = [&](size_t at, size_t n) {
     for (size_t k : w.keys.keys)
@@ -54,16 +54,16 @@ CompactPathMotion compact_path_motion(const std::vector<double>& rest, const std
   const double rotate_places = std::pow(10.0, w.rotate_decimals);
   j.raw("{\"ty\":\"tr\",\"p\":");
   const bool moves_p = varies(0, 2), moves_r = varies(2, 1), moves_s = varies(4, 2);
-  write_property(j, key_frames, w.times.size(), [&](size_t i) {
+  write_property(j, key_frames, times.size(), [&](size_t i) {
     j.pair(centre.x + tr[6 * (moves_p ? i : first)], centre.y + tr[6 * (moves_p ? i : first) + 1]);
   }, moves_p, false, &w.keys);
   j.raw(",\"a\":{\"a\":0,\"k\":").pair(centre.x, centre.y).raw("},\"s\":");
-  write_property(j, key_frames, w.times.size(), [&](size_t i) {
+  write_property(j, key_frames, times.size(), [&](size_t i) {
     const size_t k = moves_s ? i : first;
     j.raw("[").num(100 * tr[6 * k + 4], scale_places).raw(",").num(100 * tr[6 * k + 5], scale_places).raw("]");
   }, moves_s, false, &w.keys);
   j.raw(",\"r\":");
-  write_property(j, key_frames, w.times.size(), [&](size_t i) { j.num(tr[6 * (moves_r ? i : first) + 2], rotate_places); },
+  write_property(j, key_frames, times.size(), [&](size_t i) { j.num(tr[6 * (moves_r ? i : first) + 2], rotate_places); },
                  moves_r, true, &w.keys);
   j.raw(",\"o\":{\"a\":0,\"k\":100},\"sk\":{\"a\":0,\"k\":0},\"sa\":{\"a\":0,\"k\":0}}");
   out.transform = std::move(j.text());

@@ -142,7 +142,7 @@ struct CompactWriter {
     const WrapperKeys gw = wrapper_keys(maps, P, probe, pass.times, tol, options.decimals, gc, WrapperForm::Smil);
     remove_gradient_animations(gn);
     const std::string gprefix(gn.name(), gn.name() + (std::strlen(gn.name()) - local_name(gn.name()).size()));
-    append_keyed_transform(gn, gprefix, gw, gc, gw.times, repeat_attrs, "gradientTransform", true);
+    append_keyed_transform(gn, gprefix, gw, gc, pass.times, repeat_attrs, "gradientTransform", true);
     st.keys += gw.keys.keys.size();
   }
 
@@ -273,7 +273,7 @@ std::vector<std::string> write_compact_animation_svg(const fs::path& source, con
     const WrapperKeys w =
         wrapper_keys(motion.affine, parent_to_canvas, rest, pass.times, tol, options.decimals, centre, WrapperForm::Smil);
     st.keys += w.keys.keys.size();
-    append_keyed_transform(g, prefix, w, centre, w.times, repeat_attrs, "transform", false);
+    append_keyed_transform(g, prefix, w, centre, pass.times, repeat_attrs, "transform", false);
     // A user-space gradient lies in the element's user space, which the wrapper now moves; the
     // full export moves it by the colour-weighted similarity (gradient_motion) or not at all.
     // Its gradientTransform is animated to undo the wrapper's map and apply that motion, so the
