@@ -143,8 +143,13 @@ Vec2 motion_pivot(const std::vector<Affine>& affine, const std::vector<double>& 
 SampleError wrapper_error(const std::vector<double>& trajectory, const std::vector<double>& rest,
                           const Affine& parent_to_canvas, Vec2 c, WrapperForm form) {
   const Affine to_parent = parent_to_canvas.inverse();
-  return [&trajectory, &rest, parent_to_canvas, to_parent, c, form](size_t i, const double* approx) {
-    const Affine exact = parent_to_canvas * wrapper_map(&trajectory[6 * i], c, form) * to_parent;
+  return [&trajectory, &rest, parent_to_canvas, to_parent, c, form](size_t i, double u, const double* approx) {
+    // Between values: the two values' numbers blended, what keeping both as keys draws (the
+    // full export's blend of the points cuts a turn's chord there; keyframe_reduce.h).
+    double blend[6];
+    for (size_t k = 0; k < 6; ++k)
+      blend[k] = trajectory[6 * i + k] + (u > 0 ? u * (trajectory[6 * (i + 1) + k] - trajectory[6 * i + k]) : 0);
+    const Affine exact = parent_to_canvas * wrapper_map(blend, c, form) * to_parent;
     const Affine drawn = parent_to_canvas * wrapper_map(approx, c, form) * to_parent;
     double worst = 0;
     for (size_t k = 0; k + 1 < rest.size(); k += 2) {
@@ -165,7 +170,7 @@ int measured_decimals(const std::vector<double>& values, size_t dim, const std::
       std::copy(values.begin() + static_cast<std::ptrdiff_t>(k * dim),
                 values.begin() + static_cast<std::ptrdiff_t>((k + 1) * dim), rounded.begin());
       for (size_t j = first; j < first + count; ++j) rounded[j] = std::round(rounded[j] * f) / f;
-      worst = std::max(worst, error(k, rounded.data()));
+      worst = std::max(worst, error(k, 0, rounded.data()));
     }
     if (worst <= budget) return d;
   }

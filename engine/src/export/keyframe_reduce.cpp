@@ -39,46 +39,56 @@ Easing fit_easing(const std::vector<double>& xs, const std::vector<double>& ss) 
 struct Segment {
   Easing easing;
   double max_error = 0;
-  size_t worst = 0;  // the sample it misses most
+  size_t worst = 0;  // the sample nearest the time it misses most
 };
 
-// Segment [a, b]: the eased interpolation's fit and its largest error over the samples inside.
+// Segment [a, b]: the eased interpolation's fit and its largest error over the samples inside
+// and the times checked between every two samples from a to b.
 Segment fit_segment(const std::vector<double>& times, const std::vector<double>& values, size_t dim, size_t a,
                     size_t b, const SampleError& error) {
   Segment seg;
-  if (b <= a + 1) return seg;
+  if (b <= a) return seg;
   const double* va = &values[a * dim];
   const double* vb = &values[b * dim];
-  double span = 0;
-  for (size_t k = 0; k < dim; ++k) span += (vb[k] - va[k]) * (vb[k] - va[k]);
-  std::vector<double> xs, ss;
-  for (size_t i = a + 1; i < b; ++i) {
-    // The interpolation parameter that brings the line a-b closest to sample i.
-    double dot = 0;
-    const double* vi = &values[i * dim];
-    for (size_t k = 0; k < dim; ++k) dot += (vi[k] - va[k]) * (vb[k] - va[k]);
-    xs.push_back((times[i] - times[a]) / (times[b] - times[a]));
-    ss.push_back(span > 0 ? dot / span : xs.back());
+  const double duration = times[b] - times[a];
+  if (b > a + 1) {
+    double span = 0;
+    for (size_t k = 0; k < dim; ++k) span += (vb[k] - va[k]) * (vb[k] - va[k]);
+    std::vector<double> xs, ss;
+    for (size_t i = a + 1; i < b; ++i) {
+      // The interpolation parameter that brings the line a-b closest to sample i.
+      double dot = 0;
+      const double* vi = &values[i * dim];
+      for (size_t k = 0; k < dim; ++k) dot += (vi[k] - va[k]) * (vb[k] - va[k]);
+      xs.push_back((times[i] - times[a]) / duration);
+      ss.push_back(span > 0 ? dot / span : xs.back());
+    }
+    seg.easing = fit_easing(xs, ss);
   }
-  seg.easing = fit_easing(xs, ss);
-  // Linear unless the easing is measurably better: plain keyTimes are the simplest file.
+  // Every sample inside and every checked time between samples (sample i and u of the way to
+  // i + 1), as the eased keys a and b draw it.
   std::vector<double> approx(dim);
   auto worst_of = [&](const Easing& e, size_t* at) {
-    double worst = 0;
-    for (size_t i = a + 1; i < b; ++i) {
-      const double s = ease(e, xs[i - a - 1]);
-      for (size_t k = 0; k < dim; ++k) approx[k] = va[k] + s * (vb[k] - va[k]);
-      const double err = error(i, approx.data());
-      if (err > worst || (at && *at == 0)) {
-        worst = std::max(worst, err);
-        if (at) *at = i;
+    double worst = -1;
+    for (size_t i = a; i < b; ++i)
+      for (int j = i == a ? 1 : 0; j < kBetweenChecks; ++j) {
+        const double u = static_cast<double>(j) / kBetweenChecks;
+        const double t = times[i] + u * (times[i + 1] - times[i]);
+        const double s = ease(e, duration > 0 ? (t - times[a]) / duration : 0);
+        for (size_t k = 0; k < dim; ++k) approx[k] = va[k] + s * (vb[k] - va[k]);
+        const double err = error(i, u, approx.data());
+        if (err > worst) {
+          worst = err;
+          // Split at the sample nearest that time, one inside the segment.
+          *at = std::clamp(u <= 0.5 ? i : i + 1, a + 1, b > a + 1 ? b - 1 : a + 1);
+        }
       }
-    }
-    return worst;
+    return std::max(worst, 0.0);
   };
-  size_t at_eased = 0, at_linear = 0;
-  const double eased = worst_of(seg.easing, &at_eased);
+  // Linear unless the easing is measurably better: plain keyTimes are the simplest file.
+  size_t at_eased = a, at_linear = a;
   const double linear = worst_of(Easing{}, &at_linear);
+  const double eased = seg.easing.is_linear() ? linear : worst_of(seg.easing, &at_eased);
   if (linear <= eased) {
     seg.easing = Easing{};
     seg.max_error = linear;
@@ -97,11 +107,13 @@ bool Easing::is_linear() const { return std::fabs(y1 - 1.0 / 3) < 1e-9 && std::f
 double ease(const Easing& e, double x) { return b1(x) * e.y1 + b2(x) * e.y2 + x * x * x; }
 
 SampleError point_error(const std::vector<double>& values, size_t dim, double px_per_unit) {
-  return [&values, dim, px_per_unit](size_t i, const double* approx) {
+  return [&values, dim, px_per_unit](size_t i, double u, const double* approx) {
     const double* v = &values[i * dim];
+    const double* w = u > 0 ? v + dim : v;
     double worst = 0;
     for (size_t k = 0; k + 1 < dim; k += 2)
-      worst = std::max(worst, std::hypot(approx[k] - v[k], approx[k + 1] - v[k + 1]));
+      worst = std::max(worst, std::hypot(approx[k] - (v[k] + u * (w[k] - v[k])),
+                                         approx[k + 1] - (v[k + 1] + u * (w[k + 1] - v[k + 1]))));
     return worst * px_per_unit;
   };
 }

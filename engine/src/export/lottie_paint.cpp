@@ -156,15 +156,18 @@ std::array<Vec2, 3> placed_points(const double* v, bool elliptical, const Gradie
 void reduce_gradient(GradientPlan& plan, const GradientTrack& track) {
   const std::vector<double> numbers = placement_numbers(plan);
   const Gradient& g = *track.values[0];
-  const SampleError error = [&](size_t i, const double* approx) {
-    const std::array<Vec2, 3> a = placed_points(&numbers[6 * i], plan.elliptical, g);
+  const SampleError error = [&](size_t i, double u, const double* approx) {
+    // Between values the full export's player interpolates these numbers linearly.
+    double blend[6];
+    for (size_t k = 0; k < 6; ++k) blend[k] = numbers[6 * i + k] + (u > 0 ? u * (numbers[6 * (i + 1) + k] - numbers[6 * i + k]) : 0);
+    const std::array<Vec2, 3> a = placed_points(blend, plan.elliptical, g);
     const std::array<Vec2, 3> b = placed_points(approx, plan.elliptical, g);
     double worst = 0;
     for (size_t k = 0; k < a.size(); ++k) worst = std::max(worst, std::hypot(a[k].x - b[k].x, a[k].y - b[k].y));
     return worst;
   };
   double moved = 0;
-  for (size_t i = 1; i < plan.placements.size(); ++i) moved = std::max(moved, error(i, numbers.data()));
+  for (size_t i = 1; i < plan.placements.size(); ++i) moved = std::max(moved, error(i, 0, numbers.data()));
   if (moved <= track.tolerance_px) {
     plan.animated = false;
     return;
