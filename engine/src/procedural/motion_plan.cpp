@@ -11,6 +11,7 @@
 
 #include "svgmotion/error.h"
 #include "procedural/motion_plan_internal.h"
+#include "procedural/part_locator.h"
 
 namespace svgm {
 
@@ -355,7 +356,7 @@ struct Builder {
 
   void add(const Verb& verb, const Action& base_in, Target target, const std::vector<int>& named_parts,
            const std::string& target_word, const Modifiers& mods, bool plural, const std::string& words,
-           bool primary_retargeted, const std::string& instead = "") {
+           bool primary_retargeted, const std::string& instead = "", const LocatedPart* located = nullptr) {
     Action base = base_in;
     std::string paddle;
     if (&base_in == &verb.actions[0] && target == Target::Whole && paddles(verb, rig)) {
@@ -399,6 +400,16 @@ struct Builder {
       amp = kPartAmplitude[static_cast<size_t>(Primitive::Swing)];
       beat = "heads, tails and limbs turn on their joints, not round: a swing";
     }
+    // A located part (part_locator.h) turns on its joint, at least by a part's usual angle: a
+    // verb of the whole figure aimed at it ("the elephant swings its trunk": a rock of 7 degrees
+    // about the figure's base), of size, or of a head's small nods ("spouts" read as eat, 6
+    // degrees) would barely move it.
+    if (located) {
+      if (a.primitive != Primitive::Swing || base.primitive != Primitive::Swing) amp = 0;
+      a.primitive = Primitive::Swing;
+      amp = std::max(amp, kPartAmplitude[static_cast<size_t>(Primitive::Swing)]);
+      rock_on_part = false;
+    }
     std::uniform_real_distribution<double> U(0, 1);
     a.amp = amp * mods.size * (a.primitive == Primitive::Spin ? 1 : 0.85 + 0.3 * U(rng));
     a.cycles = std::max(1, static_cast<int>(std::lround(base.cycles * mods.speed)));
@@ -415,7 +426,17 @@ struct Builder {
     // goes that way first, in the viewer's frame.
     if (mods.travel != 0 && a.primitive == Primitive::Slide && target == Target::Whole) a.direction = mods.travel;
     std::string note;
-    if (target == Target::Named) a.parts = named_parts;
+    if (located) {
+      // Its lobes turn, on the root's box for the frames (bend_region); only its paths move.
+      a.parts = {rig.root};
+      a.region = Region::Located;
+      a.lobes = located->lobes;
+      a.silhouette = true;
+      a.lobe_paths = located->paths;
+      a.sign = {1};
+      a.phase = {0};
+      note = "the " + target_word + " found as " + part_shape_name(located->shape) + ": " + located->why;
+    } else if (target == Target::Named) a.parts = named_parts;
     else if (target != Target::Whole && target != Target::Repeated) a.parts = parts_for(rig, target, target_word, &note);
     if (rock_on_part && !a.parts.empty()) {
       // The same degrees about a part's pivot move its tips as far as the part is long, not
@@ -622,10 +643,14 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
   // whole-figure accents of its limb verbs (cheering's hop, flapping's bob, dancing's rock) are
   // left out: they move every part, the ones the prompt keeps still too, and outweigh the
   // limbs it names.
+  // A creature's trunk is a branch, a clock's hands are no arms (part_locator.h).
+  const bool animal = b.figure == FigureClass::Biped || b.figure == FigureClass::Quadruped || b.figure == FigureClass::Bird ||
+                      b.figure == FigureClass::FishOrSnake || b.figure == FigureClass::Insect;
   bool names_limbs = false;
   for (const Clause& c : prompt.clauses)
     for (const auto& n : c.nouns)
-      names_limbs = names_limbs || (!n.object_of_preposition && !n.own_predicate && is_limb_target(n.target));
+      names_limbs = names_limbs || (!n.object_of_preposition && !n.own_predicate &&
+                                    (is_limb_target(n.target) || part_shape_of(n.word, animal) != PartShape::None));
   std::vector<std::string> accents_left_out;
   // The clause's targets: known part nouns, and other words that name a part of the drawing.
   struct ClauseTarget {
@@ -633,11 +658,27 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
     std::vector<int> named;
     std::string word;
     bool plural = false, have = false;
+    LocatedPart located;  // a part the rig has none for, found on the figure (lobes empty: none)
   };
   auto target_of = [&](const Clause& c, std::vector<std::string>* unknown_words) {
     ClauseTarget ct;
     for (const auto& n : c.nouns) {
       std::vector<int> hits;
+      // A part of a kind the locator knows, unless the document names a part so: found on the
+      // figure by its kind's prior (part_locator.h).
+      const PartShape shape = part_shape_of(n.word, animal);
+      if (shape != PartShape::None && rig.root >= 0 && !ct.have && !n.object_of_preposition && !n.own_predicate) {
+        std::string ignore;
+        if (parts_for(rig, Target::Named, n.word, &ignore).empty())
+          if (LocatedPart found = locate_part(rig, shape); !found.lobes.empty()) {
+            ct.have = true;
+            ct.target = Target::Named;
+            ct.word = n.word;
+            ct.plural = n.plural;
+            ct.located = std::move(found);
+            continue;
+          }
+      }
       if (n.target == Target::Named) {
         std::string ignore;
         hits = parts_for(rig, Target::Named, n.word, &ignore);
@@ -674,6 +715,13 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
     const std::vector<int>& named = ct.named;
     const std::string& target_word = ct.word;
     const bool plural = ct.plural, have = ct.have;
+    const LocatedPart* located = ct.located.lobes.empty() ? nullptr : &ct.located;
+    // A located part with no motion word for it ("the rabbit twitches its ears", "the whale
+    // spouts a jet"): it swings as a tail wags, the clause's words say how no better.
+    if (located && c.verbs.empty())
+      if (const Verb* wag = find_verb_by_name("wag"))
+        b.add(*wag, wag->actions[0], Target::Named, {}, target_word, c.mods, plural, c.text, true,
+              "no motion word for the " + target_word + ": it swings", located);
     for (const Verb* v : c.verbs)
       for (size_t i = 0; i < v->actions.size(); ++i) {
         const Action& act = v->actions[i];
@@ -682,12 +730,12 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
           restated.push_back("'" + c.text + "'");
           break;
         }
-        if (i > 0 && act.target == Target::Whole && names_limbs && (is_limb_target(v->actions[0].target) || paddles(*v, rig))) {
+        if (i > 0 && act.target == Target::Whole && names_limbs && (is_limb_target(v->actions[0].target) || paddles(*v, rig) || located)) {
           accents_left_out.push_back(v->name + "'s " + primitive_name(act.primitive));
           continue;
         }
         b.add(*v, act, retarget ? target : act.target, retarget ? named : std::vector<int>{}, target_word, c.mods,
-              retarget && plural, c.text, retarget);
+              retarget && plural, c.text, retarget, "", retarget ? located : nullptr);
       }
   }
   if (!accents_left_out.empty())
