@@ -602,6 +602,7 @@ struct Builder {
     a.why = "'" + words + "': " + verb.name + " moves the " +
             (target == Target::Whole ? std::string("whole figure")
              : target == Target::Repeated ? rig.repeated_why
+             : a.region == Region::Located ? std::string("part the prompt names")
              : std::string(target_name(target)) + " (" + join(names, ", ") + ")");
     for (const std::string& n : notes)
       if (!n.empty()) a.why += "; " + n;
@@ -646,11 +647,17 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
   // A creature's trunk is a branch, a clock's hands are no arms (part_locator.h).
   const bool animal = b.figure == FigureClass::Biped || b.figure == FigureClass::Quadruped || b.figure == FigureClass::Bird ||
                       b.figure == FigureClass::FishOrSnake || b.figure == FigureClass::Insect;
+  // A noun the locator finds on the figure, unless the document names a part so.
+  auto locatable = [&](const PromptNoun& n) {
+    const PartShape shape = part_shape_of(n.word, animal);
+    std::string ignore;
+    return shape != PartShape::None && rig.root >= 0 && parts_for(rig, Target::Named, n.word, &ignore).empty() &&
+           !locate_part(rig, shape).lobes.empty();
+  };
   bool names_limbs = false;
   for (const Clause& c : prompt.clauses)
     for (const auto& n : c.nouns)
-      names_limbs = names_limbs || (!n.object_of_preposition && !n.own_predicate &&
-                                    (is_limb_target(n.target) || part_shape_of(n.word, animal) != PartShape::None));
+      names_limbs = names_limbs || (!n.object_of_preposition && !n.own_predicate && (is_limb_target(n.target) || locatable(n)));
   std::vector<std::string> accents_left_out;
   // The clause's targets: known part nouns, and other words that name a part of the drawing.
   struct ClauseTarget {
@@ -666,18 +673,13 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
       std::vector<int> hits;
       // A part of a kind the locator knows, unless the document names a part so: found on the
       // figure by its kind's prior (part_locator.h).
-      const PartShape shape = part_shape_of(n.word, animal);
-      if (shape != PartShape::None && rig.root >= 0 && !ct.have && !n.object_of_preposition && !n.own_predicate) {
-        std::string ignore;
-        if (parts_for(rig, Target::Named, n.word, &ignore).empty())
-          if (LocatedPart found = locate_part(rig, shape); !found.lobes.empty()) {
-            ct.have = true;
-            ct.target = Target::Named;
-            ct.word = n.word;
-            ct.plural = n.plural;
-            ct.located = std::move(found);
-            continue;
-          }
+      if (!ct.have && !n.object_of_preposition && !n.own_predicate && locatable(n)) {
+        ct.have = true;
+        ct.target = Target::Named;
+        ct.word = n.word;
+        ct.plural = n.plural;
+        ct.located = locate_part(rig, part_shape_of(n.word, animal));
+        continue;
       }
       if (n.target == Target::Named) {
         std::string ignore;

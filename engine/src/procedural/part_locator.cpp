@@ -67,13 +67,18 @@ int body_of(const Rig& rig) {
   return best;
 }
 
-// The elements drawn inside element e's box (its details: an ear's inner colour), e included.
+// The elements drawn inside element e's box (its details: an ear's inner colour), and those
+// drawn over the same place (a colour fill under its outline stroke: each box covers at least
+// half of the other), e included.
 std::vector<int> with_details(const Rig& rig, int e, int body) {
   std::vector<int> out = {e};
-  for (size_t i = 0; i < rig.elements.size(); ++i)
-    if (static_cast<int>(i) != e && static_cast<int>(i) != body && rig.elements[i].box.area() < rig.elements[e].box.area() &&
-        inside(rig.elements[i].box, rig.elements[e].box))
-      out.push_back(static_cast<int>(i));
+  const RigBox& E = rig.elements[e].box;
+  for (size_t i = 0; i < rig.elements.size(); ++i) {
+    const RigBox& b = rig.elements[i].box;
+    if (static_cast<int>(i) == e || static_cast<int>(i) == body) continue;
+    const double o = overlap_area(b, E);
+    if ((b.area() < E.area() && inside(b, E)) || (o >= 0.5 * b.area() && o >= 0.5 * E.area() && o > 0)) out.push_back(static_cast<int>(i));
+  }
   return out;
 }
 
