@@ -40,16 +40,19 @@ struct Drawing {
 
 TEST_SUITE("video") {
 
-TEST_CASE("part locator: nouns name kinds of part; a trunk is a branch only on a creature, hands a dial's only on none") {
-  CHECK(part_shape_of("ears", true) == PartShape::Ears);
-  CHECK(part_shape_of("clapper", false) == PartShape::Clapper);
-  CHECK(part_shape_of("spouts", true) == PartShape::Jet);
-  CHECK(part_shape_of("claws", true) == PartShape::SidePair);
-  CHECK(part_shape_of("trunk", true) == PartShape::Branch);
-  CHECK(part_shape_of("trunk", false) == PartShape::None);
-  CHECK(part_shape_of("hands", false) == PartShape::Hands);
-  CHECK(part_shape_of("hands", true) == PartShape::None);
-  CHECK(part_shape_of("wings", true) == PartShape::None);
+TEST_CASE("part locator: nouns name kinds of part; a trunk is a branch only on a creature, hands a dial's only on an object") {
+  using C = FigureClass;
+  CHECK(part_shape_of("ears", C::Quadruped) == PartShape::Ears);
+  CHECK(part_shape_of("clapper", C::Object) == PartShape::Clapper);
+  CHECK(part_shape_of("spouts", C::FishOrSnake) == PartShape::Jet);
+  CHECK(part_shape_of("claws", C::None) == PartShape::SidePair);
+  CHECK(part_shape_of("trunk", C::Quadruped) == PartShape::Branch);
+  CHECK(part_shape_of("trunk", C::Plant) == PartShape::None);
+  CHECK(part_shape_of("hands", C::Object) == PartShape::Hands);
+  CHECK(part_shape_of("hands", C::Biped) == PartShape::None);
+  CHECK(part_shape_of("hands", C::None) == PartShape::None);  // "he raises his hand"
+  CHECK(part_shape_of("wings", C::Bird) == PartShape::None);
+  CHECK(parse_prompt("the clock's hands go round").clauses[0].figure == C::Object);
 }
 
 TEST_CASE("part locator: a hare's ears drawn in its body's group twitch; the body and the eye hold") {

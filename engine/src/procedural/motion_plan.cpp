@@ -644,12 +644,9 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
   // whole-figure accents of its limb verbs (cheering's hop, flapping's bob, dancing's rock) are
   // left out: they move every part, the ones the prompt keeps still too, and outweigh the
   // limbs it names.
-  // A creature's trunk is a branch, a clock's hands are no arms (part_locator.h).
-  const bool animal = b.figure == FigureClass::Biped || b.figure == FigureClass::Quadruped || b.figure == FigureClass::Bird ||
-                      b.figure == FigureClass::FishOrSnake || b.figure == FigureClass::Insect;
   // A noun the locator finds on the figure, unless the document names a part so.
   auto locatable = [&](const PromptNoun& n) {
-    const PartShape shape = part_shape_of(n.word, animal);
+    const PartShape shape = part_shape_of(n.word, b.figure);
     std::string ignore;
     return shape != PartShape::None && rig.root >= 0 && parts_for(rig, Target::Named, n.word, &ignore).empty() &&
            !locate_part(rig, shape).lobes.empty();
@@ -678,7 +675,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
         ct.target = Target::Named;
         ct.word = n.word;
         ct.plural = n.plural;
-        ct.located = locate_part(rig, part_shape_of(n.word, animal));
+        ct.located = locate_part(rig, part_shape_of(n.word, b.figure));
         continue;
       }
       if (n.target == Target::Named) {

@@ -408,11 +408,13 @@ bool any_stem(std::string_view w, std::initializer_list<std::string_view> stems)
 
 }  // namespace
 
-PartShape part_shape_of(std::string_view w, bool animal) {
+PartShape part_shape_of(std::string_view w, FigureClass figure) {
+  const bool animal = figure == FigureClass::Biped || figure == FigureClass::Quadruped || figure == FigureClass::Bird ||
+                      figure == FigureClass::FishOrSnake || figure == FigureClass::Insect;
   if (any_stem(w, {"ear", "antenna", "antennae"})) return PartShape::Ears;
   if (any_stem(w, {"spout", "plume", "jet", "spray", "steam", "smok", "fountain", "geyser"})) return PartShape::Jet;
   if (any_stem(w, {"clapper", "pendulum"})) return PartShape::Clapper;
-  if (!animal && any_stem(w, {"hand", "needl", "pointer"})) return PartShape::Hands;
+  if (figure == FigureClass::Object && any_stem(w, {"hand", "needl", "pointer"})) return PartShape::Hands;
   if (any_stem(w, {"claw", "pincer", "nipper", "mandibl", "chela"})) return PartShape::SidePair;
   if (animal && any_stem(w, {"trunk", "proboscis", "snout"})) return PartShape::Branch;
   return PartShape::None;

@@ -31,6 +31,7 @@
 #include <string_view>
 #include <vector>
 
+#include "motion/lexicon.h"
 #include "procedural/part_rig.h"
 
 namespace svgm {
@@ -38,9 +39,10 @@ namespace svgm {
 enum class PartShape { None, Ears, Jet, Clapper, Hands, SidePair, Branch };
 
 // The kind of part a noun names ("ears" -> Ears, "clapper" -> Clapper), None for nouns the
-// locator does not place. `animal`: the prompt's figure is a creature (a trunk is then a
-// branch, not a tree's body; a hand is a creature's, not a clock's).
-PartShape part_shape_of(std::string_view noun, bool animal);
+// locator does not place. `figure`: the prompt's figure class (lexicon.h): a trunk is a branch
+// only on a creature (not a tree's body), hands are a dial's only on an object (a person with
+// no figure word, "he raises his hand", keeps the rig's arms).
+PartShape part_shape_of(std::string_view noun, FigureClass figure);
 const char* part_shape_name(PartShape s);
 
 struct LocatedPart {
