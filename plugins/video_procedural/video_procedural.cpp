@@ -160,6 +160,8 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
           std::string who = a.target == svgm::Target::Whole ? "whole figure" : a.target == svgm::Target::Repeated
                                 ? std::to_string(rig.repeated.size()) + " repeated elements" : "";
           if (a.region != svgm::Region::None) who = "a region of ";
+          // A part the rig had none for: where it was found, and why there (part_locator.h).
+          if (a.region == svgm::Region::Located) host->log(host, 1, ("video procedural: " + a.why).c_str());
           for (int p : a.parts) who += (who.empty() || a.region != svgm::Region::None ? "" : "+") + rig.parts[p].name;
           line += (line.empty() ? "" : "; ") + a.verb + " " + who;
         }

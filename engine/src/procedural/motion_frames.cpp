@@ -188,7 +188,7 @@ Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box
       if (beyond <= 0) return q;
       return rotate_about(q, {start, c.y}, amp * wave(0) * smoothstep(beyond / (kRamp * W)));
     }
-    case Region::None: break;
+    case Region::None: case Region::Located: break;
   }
   return q;
 }
@@ -471,7 +471,8 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
                 // Limbs of the whole silhouette: whatever lies in them bends with them (the
                 // outline drawn over a tail's fill), whichever part it belongs to.
                 if (a.silhouette) {
-                  if (!background) q = bend_region(a, amp, t, hb, q);
+                  if (!background && (a.lobe_paths.empty() || std::binary_search(a.lobe_paths.begin(), a.lobe_paths.end(), static_cast<int>(pi))))
+                    q = bend_region(a, amp, t, hb, q);
                 } else if (g == a.parts[0] || (g >= 0 && under(g, a.parts[0]) && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y <= hb.y1))
                   q = bend_region(a, amp, t, hb, q);
                 else if (g >= 0 && under(g, a.parts[0]) && (gc.y <= hb.y1 || std::fabs(gc.x - hb.centre().x) > 0.25 * hb.w()))

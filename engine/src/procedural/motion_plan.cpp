@@ -12,6 +12,7 @@
 #include "svgmotion/error.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/support_band.h"
+#include "procedural/part_locator.h"
 
 namespace svgm {
 
@@ -402,7 +403,7 @@ struct Builder {
 
   void add(const Verb& verb, const Action& base_in, Target target, const std::vector<int>& named_parts,
            const std::string& target_word, const Modifiers& mods, bool plural, const std::string& words,
-           bool primary_retargeted, const std::string& instead = "") {
+           bool primary_retargeted, const std::string& instead = "", const LocatedPart* located = nullptr) {
     Action base = base_in;
     std::string paddle;
     if (&base_in == &verb.actions[0] && target == Target::Whole && paddles(verb, rig)) {
@@ -446,6 +447,16 @@ struct Builder {
       amp = kPartAmplitude[static_cast<size_t>(Primitive::Swing)];
       beat = "heads, tails and limbs turn on their joints, not round: a swing";
     }
+    // A located part (part_locator.h) turns on its joint, at least by a part's usual angle: a
+    // verb of the whole figure aimed at it ("the elephant swings its trunk": a rock of 7 degrees
+    // about the figure's base), of size, or of a head's small nods ("spouts" read as eat, 6
+    // degrees) would barely move it.
+    if (located) {
+      if (a.primitive != Primitive::Swing || base.primitive != Primitive::Swing) amp = 0;
+      a.primitive = Primitive::Swing;
+      amp = std::max(amp, kPartAmplitude[static_cast<size_t>(Primitive::Swing)]);
+      rock_on_part = false;
+    }
     // A figure spun whole ("she pirouettes", "he turns around", "the tornado whirls") turns
     // about its vertical axis unless it is round. Spun in the image's plane, a dancer stood on
     // her head half the loop, left the canvas at any size and every candidate was 'chaotic
@@ -473,7 +484,17 @@ struct Builder {
     // goes that way first, in the viewer's frame.
     if (mods.travel != 0 && a.primitive == Primitive::Slide && target == Target::Whole) a.direction = mods.travel;
     std::string note;
-    if (target == Target::Named) a.parts = named_parts;
+    if (located) {
+      // Its lobes turn, on the root's box for the frames (bend_region); only its paths move.
+      a.parts = {rig.root};
+      a.region = Region::Located;
+      a.lobes = located->lobes;
+      a.silhouette = true;
+      a.lobe_paths = located->paths;
+      a.sign = {1};
+      a.phase = {0};
+      note = "the " + target_word + " found as " + part_shape_name(located->shape) + ": " + located->why;
+    } else if (target == Target::Named) a.parts = named_parts;
     else if (target != Target::Whole && target != Target::Repeated) a.parts = parts_for(rig, target, target_word, &note);
     if (rock_on_part && !a.parts.empty()) {
       // The same degrees about a part's pivot move its tips as far as the part is long, not
@@ -639,6 +660,7 @@ struct Builder {
     a.why = "'" + words + "': " + verb.name + " moves the " +
             (target == Target::Whole ? std::string("whole figure")
              : target == Target::Repeated ? rig.repeated_why
+             : a.region == Region::Located ? std::string("part the prompt names")
              : std::string(target_name(target)) + " (" + join(names, ", ") + ")");
     for (const std::string& n : notes)
       if (!n.empty()) a.why += "; " + n;
@@ -692,10 +714,17 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
   // whole-figure accents of its limb verbs (cheering's hop, flapping's bob, dancing's rock) are
   // left out: they move every part, the ones the prompt keeps still too, and outweigh the
   // limbs it names.
+  // A noun the locator finds on the figure, unless the document names a part so.
+  auto locatable = [&](const PromptNoun& n) {
+    const PartShape shape = part_shape_of(n.word, b.figure);
+    std::string ignore;
+    return shape != PartShape::None && rig.root >= 0 && parts_for(rig, Target::Named, n.word, &ignore).empty() &&
+           !locate_part(rig, shape).lobes.empty();
+  };
   bool names_limbs = false;
   for (const Clause& c : prompt.clauses)
     for (const auto& n : c.nouns)
-      names_limbs = names_limbs || (!n.object_of_preposition && !n.own_predicate && is_limb_target(n.target));
+      names_limbs = names_limbs || (!n.object_of_preposition && !n.own_predicate && (is_limb_target(n.target) || locatable(n)));
   std::vector<std::string> accents_left_out;
   // The clause's targets: known part nouns, and other words that name a part of the drawing.
   struct ClauseTarget {
@@ -703,11 +732,22 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
     std::vector<int> named;
     std::string word;
     bool plural = false, have = false;
+    LocatedPart located;  // a part the rig has none for, found on the figure (lobes empty: none)
   };
   auto target_of = [&](const Clause& c, std::vector<std::string>* unknown_words) {
     ClauseTarget ct;
     for (const auto& n : c.nouns) {
       std::vector<int> hits;
+      // A part of a kind the locator knows, unless the document names a part so: found on the
+      // figure by its kind's prior (part_locator.h).
+      if (!ct.have && !n.object_of_preposition && !n.own_predicate && locatable(n)) {
+        ct.have = true;
+        ct.target = Target::Named;
+        ct.word = n.word;
+        ct.plural = n.plural;
+        ct.located = locate_part(rig, part_shape_of(n.word, b.figure));
+        continue;
+      }
       if (n.target == Target::Named) {
         std::string ignore;
         hits = parts_for(rig, Target::Named, n.word, &ignore);
@@ -744,6 +784,13 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
     const std::vector<int>& named = ct.named;
     const std::string& target_word = ct.word;
     const bool plural = ct.plural, have = ct.have;
+    const LocatedPart* located = ct.located.lobes.empty() ? nullptr : &ct.located;
+    // A located part with no motion word for it ("the rabbit twitches its ears", "the whale
+    // spouts a jet"): it swings as a tail wags, the clause's words say how no better.
+    if (located && c.verbs.empty())
+      if (const Verb* wag = find_verb_by_name("wag"))
+        b.add(*wag, wag->actions[0], Target::Named, {}, target_word, c.mods, plural, c.text, true,
+              "no motion word for the " + target_word + ": it swings", located);
     for (const Verb* v : c.verbs)
       for (size_t i = 0; i < v->actions.size(); ++i) {
         const Action& act = v->actions[i];
@@ -752,7 +799,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
           restated.push_back("'" + c.text + "'");
           break;
         }
-        if (i > 0 && act.target == Target::Whole && names_limbs && (is_limb_target(v->actions[0].target) || paddles(*v, rig))) {
+        if (i > 0 && act.target == Target::Whole && names_limbs && (is_limb_target(v->actions[0].target) || paddles(*v, rig) || located)) {
           accents_left_out.push_back(v->name + "'s " + primitive_name(act.primitive));
           continue;
         }
@@ -761,7 +808,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
         const bool elements_too = i > 0 && have && target == Target::Repeated && act.target == Target::Whole &&
                                   v->actions[0].target == Target::Whole;
         b.add(*v, act, retarget || elements_too ? target : act.target, retarget ? named : std::vector<int>{}, target_word, c.mods,
-              retarget && plural, c.text, retarget);
+              retarget && plural, c.text, retarget, "", retarget ? located : nullptr);
       }
   }
   if (!accents_left_out.empty())

@@ -35,7 +35,9 @@ namespace svgm {
 // A limb that is not a part of its own (a bat drawn as one silhouette): a region of the part's
 // own outlines (not what hangs from it) bends about a pivot line, each point turning by the action's angle times a weight that
 // grows smoothly from 0 at the pivot line (so the shape stays in one piece).
-enum class Region { None, Sides, Lower, Top, End };
+// Located: a part the prompt names that the rig has no part for, found by part_locator.h; its
+// lobes turn and only the paths it found move.
+enum class Region { None, Sides, Lower, Top, End, Located };
 
 struct PlannedAction {
   std::string verb;
@@ -61,6 +63,7 @@ struct PlannedAction {
                                 // drawn in the part's outline (part_rig.h), or limbs of the
                                 // figure's silhouette (Rig::limbs)
   bool silhouette = false;      // lobes are Rig::limbs: the points of every part within them bend
+  std::vector<int> lobe_paths;  // when not empty, only these scene paths' points bend (sorted)
   double scale = 1;             // this action's own amplitude factor (fit_plan), times plan.scale
   int one_sided = 0;            // Swing, Rock, Bend, Sway, region bends: 0 back and forth about
                                 // rest; +1 / -1 out to one side only and back (fit_plan: the

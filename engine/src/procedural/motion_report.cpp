@@ -53,12 +53,18 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
                        {"unit", unit},
                        {"cycles", a.cycles},
                        {"region", a.region == Region::None ? "" : a.region == Region::Sides ? "sides" : a.region == Region::Lower ? "lower part"
-                                  : a.region == Region::Top ? "top" : "far end"},
+                                  : a.region == Region::Top ? "top" : a.region == Region::Located ? "located part" : "far end"},
                        {"one_sided", a.one_sided},
                        {"direction", direction_words(a)},
                        {"words", a.words},
                        {"fallback", a.words == "(fallback)"},  // plan_from_prompt's sway: no motion word understood
                        {"why", a.why}});
+    // A located part (part_locator.h): the paths it found, by id.
+    if (a.region == Region::Located) {
+      json ids = json::array();
+      for (int p : a.lobe_paths) ids.push_back(scene.paths[p].id);
+      actions.back()["located_paths"] = ids;
+    }
   }
   std::string root = rig.root >= 0 ? rig.parts[rig.root].name : "";
   json held = json::array();

@@ -13,6 +13,7 @@
 
 #include "svg/document_order.h"
 #include "svgmotion/svg_reader.h"
+#include "procedural/part_locator.h"
 #include "procedural/part_rig_internal.h"
 
 namespace svgm {
@@ -156,6 +157,7 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
   Rig rig = assemble(scene, names, group_names, U);
   if (split_root_limbs(scene, rig, U)) rig = assemble(scene, names, group_names, U);
   if (split_head_holds(scene, rig, U)) rig = assemble(scene, names, group_names, U);
+  rig.elements = figure_elements(scene, rig);
   return rig;
 }
 

@@ -95,6 +95,17 @@ struct ElementPiece {
   int subpath = -1;
 };
 
+// A drawn element of the figure (part_locator.h finds parts the prompt names among them): a
+// path, or one of its subpaths when they lie apart (a crab's claws drawn in its body's path).
+struct RigElement {
+  int path = -1;
+  int subpath = -1;            // -1: every subpath of the path
+  RigBox box;
+  std::vector<Vec2> points;    // its control points
+  double area = 0;             // its outlines' fill area (an open stroke's: length times width)
+  bool thin = false;           // an open stroke drawn without fill
+};
+
 struct Rig {
   std::vector<RigPart> parts;  // one per scene group, same order
   int root = -1;
@@ -107,6 +118,7 @@ struct Rig {
   // The limbs of the figure's silhouette (every part but the background: fills and outlines
   // together, so a tail drawn as an outline over a body's fill is one limb), skeleton_lobes.h.
   std::vector<ArmLobe> limbs;
+  std::vector<RigElement> elements;  // the figure's drawn elements (part_locator.h)
 };
 
 // Names for the paths of a scene from its source document: path id -> the named elements from

@@ -1,0 +1,507 @@
+// The part locator (see part_locator.h): a part the prompt names, found on the figure's drawn
+// elements by a spatial and shape prior of its kind, as lobes the motion turns.
+#include "procedural/part_locator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "motion/motion_verbs.h"
+
+namespace svgm {
+
+namespace {
+
+// Priors, in shares of the figure's box (F) or of the body element's box (B).
+constexpr double kEarTop = 0.2;        // an ear's top within this share of F's height from F's top
+constexpr double kEarMiddle = 0.45;    // its middle above this share of F's height
+constexpr double kPartMinSize = 0.1;   // a part's longer side at least this share of F's longer side
+constexpr double kPartMaxShare = 0.35; // a part's box at most this share of F's box
+constexpr double kPairShare = 0.3;     // the second of a pair at least this share of the first's score
+constexpr double kClapperOffCentre = 0.15;  // a clapper's middle within this share of B's width of B's middle
+constexpr double kClapperLow = 0.7;    // its middle below this share of B's height
+constexpr double kClapperMaxShare = 0.15;   // its box at most this share of B's box
+constexpr double kThin = 3;            // a hand is at least this many times longer than wide
+constexpr double kHandsMeet = 0.12;    // hands' inner ends within this share of their dial's size
+constexpr double kSideOffCentre = 0.2; // a side protrusion's middle this share of F's width off F's middle
+constexpr double kInside = 0.8;        // an element inside another: this share of its box within
+constexpr double kHullGrow = 0.06;     // a lobe's outline is its hull grown by this share about its middle
+
+double overlap_area(const RigBox& a, const RigBox& b) {
+  const double ox = std::min(a.x1, b.x1) - std::max(a.x0, b.x0), oy = std::min(a.y1, b.y1) - std::max(a.y0, b.y0);
+  return ox > 0 && oy > 0 ? ox * oy : 0;
+}
+
+bool inside(const RigBox& inner, const RigBox& outer) {
+  // A box without area (a straight stroke's) is inside when it lies within.
+  if (inner.area() <= 0)
+    return !inner.empty() && inner.x0 >= outer.x0 && inner.x1 <= outer.x1 && inner.y0 >= outer.y0 && inner.y1 <= outer.y1;
+  return overlap_area(inner, outer) >= kInside * inner.area();
+}
+
+double dist(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
+double cross(Vec2 o, Vec2 a, Vec2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+
+std::vector<Vec2> convex_hull(std::vector<Vec2> p) {
+  std::sort(p.begin(), p.end(), [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  if (p.size() < 3) return p;
+  std::vector<Vec2> h(2 * p.size());
+  size_t k = 0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  for (size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && cross(h[k - 2], h[k - 1], p[i - 1]) <= 0) --k;
+    h[k++] = p[i - 1];
+  }
+  h.resize(k - 1);
+  return h;
+}
+
+// The index of the body: the element with the largest box.
+int body_of(const Rig& rig) {
+  int best = -1;
+  for (size_t i = 0; i < rig.elements.size(); ++i)
+    if (best < 0 || rig.elements[i].box.area() > rig.elements[best].box.area()) best = static_cast<int>(i);
+  return best;
+}
+
+// The elements drawn inside element e's box (its details: an ear's inner colour), and those
+// drawn over the same place (a colour fill under its outline stroke: each box covers at least
+// half of the other), e included.
+std::vector<int> with_details(const Rig& rig, int e, int body) {
+  std::vector<int> out = {e};
+  const RigBox& E = rig.elements[e].box;
+  for (size_t i = 0; i < rig.elements.size(); ++i) {
+    const RigBox& b = rig.elements[i].box;
+    if (static_cast<int>(i) == e || static_cast<int>(i) == body) continue;
+    const double o = overlap_area(b, E);
+    if ((b.area() < E.area() && inside(b, E)) || (o >= 0.5 * b.area() && o >= 0.5 * E.area() && o > 0)) out.push_back(static_cast<int>(i));
+  }
+  return out;
+}
+
+// One lobe over elements `els` turning about `pivot`: its tip is their point farthest from the
+// pivot, its base the line across the axis through the pivot, moved back behind every point.
+ArmLobe lobe_over(const Rig& rig, const std::vector<int>& els, Vec2 pivot) {
+  std::vector<Vec2> pts;
+  for (int e : els) pts.insert(pts.end(), rig.elements[e].points.begin(), rig.elements[e].points.end());
+  ArmLobe l;
+  l.pivot = pivot;
+  l.tip = pivot;
+  for (Vec2 q : pts)
+    if (dist(q, pivot) > dist(l.tip, pivot)) l.tip = q;
+  const double len = std::max(dist(l.tip, pivot), 1e-9);
+  const Vec2 u = (1 / len) * (l.tip - pivot), n = {-u.y, u.x};
+  double back = 0, half = 0;
+  for (Vec2 q : pts) {
+    back = std::min(back, (q.x - pivot.x) * u.x + (q.y - pivot.y) * u.y);
+    half = std::max(half, std::fabs((q.x - pivot.x) * n.x + (q.y - pivot.y) * n.y));
+  }
+  // Just behind the hindmost point, so every point of the part is beyond it.
+  const Vec2 b = pivot + (back - 0.02 * len) * u;
+  half = std::max(half * 1.1, 0.05 * len);
+  l.base0 = b - half * n;
+  l.base1 = b + half * n;
+  std::vector<Vec2> hull = convex_hull(pts);
+  Vec2 c;
+  for (Vec2 q : hull) c = c + (1.0 / hull.size()) * q;
+  for (Vec2& q : hull) q = c + (1 + kHullGrow) * (q - c);
+  l.outline = hull;
+  l.side = l.tip.x < rig.figure.centre().x ? -1 : 1;
+  return l;
+}
+
+// The point of elements `els` nearest `to`.
+Vec2 nearest_point(const Rig& rig, const std::vector<int>& els, Vec2 to) {
+  Vec2 best = to;
+  double d = 1e300;
+  for (int e : els)
+    for (Vec2 q : rig.elements[e].points)
+      if (dist(q, to) < d) d = dist(q, to), best = q;
+  return best;
+}
+
+void add_paths(const Rig& rig, const std::vector<int>& els, std::set<int>& paths) {
+  for (int e : els) paths.insert(rig.elements[e].path);
+}
+
+// The elements a part may be: not the body, no larger than kPartMaxShare of the figure's box,
+// not too small, and not inside another such element (they come with it as its details).
+std::vector<int> part_candidates(const Rig& rig, int body) {
+  const RigBox& F = rig.figure;
+  const double D = std::max(F.w(), F.h());
+  std::vector<int> c;
+  for (size_t i = 0; i < rig.elements.size(); ++i) {
+    const RigBox& b = rig.elements[i].box;
+    if (static_cast<int>(i) == body || b.area() > kPartMaxShare * F.area() || std::max(b.w(), b.h()) < kPartMinSize * D) continue;
+    c.push_back(static_cast<int>(i));
+  }
+  std::vector<int> out;
+  for (int i : c) {
+    bool within = false;
+    for (int j : c)
+      within = within || (j != i && rig.elements[j].box.area() > rig.elements[i].box.area() && inside(rig.elements[i].box, rig.elements[j].box));
+    if (!within) out.push_back(i);
+  }
+  return out;
+}
+
+std::string fmt_box(const Rig& rig, const RigBox& b) {
+  const RigBox& F = rig.figure;
+  char s[96];
+  std::snprintf(s, sizeof s, "%.2f,%.2f-%.2f,%.2f", (b.x0 - F.x0) / std::max(F.w(), 1e-9), (b.y0 - F.y0) / std::max(F.h(), 1e-9),
+                (b.x1 - F.x0) / std::max(F.w(), 1e-9), (b.y1 - F.y0) / std::max(F.h(), 1e-9));
+  return s;
+}
+
+std::string path_ids(const std::vector<int>& els, const Rig& rig) {
+  std::string s;
+  for (int e : els) s += (s.empty() ? "" : "+") + std::to_string(rig.elements[e].path + 1);
+  return "path " + s;
+}
+
+LocatedPart ears(const Rig& rig, int body) {
+  LocatedPart out;
+  const RigBox& F = rig.figure;
+  const RigBox& B = rig.elements[body].box;
+  // Sticking out: the share of its box above the body's top counts most.
+  std::vector<std::pair<double, int>> scored;
+  for (int i : part_candidates(rig, body)) {
+    const RigBox& b = rig.elements[i].box;
+    if (b.y0 > F.y0 + kEarTop * F.h() || b.centre().y > F.y0 + kEarMiddle * F.h()) continue;
+    const double above = std::clamp((B.y0 - b.y0) / std::max(b.h(), 1e-9), 0.0, 1.0);
+    scored.push_back({rig.elements[i].area * (0.25 + above), i});
+  }
+  std::sort(scored.rbegin(), scored.rend());
+  if (scored.empty()) return out;
+  std::vector<int> picked = {scored[0].second};
+  if (scored.size() > 1 && scored[1].first >= kPairShare * scored[0].first) picked.push_back(scored[1].second);
+  std::set<int> paths;
+  std::string where;
+  for (int e : picked) {
+    const auto els = with_details(rig, e, body);
+    out.lobes.push_back(lobe_over(rig, els, nearest_point(rig, {e}, B.centre())));
+    add_paths(rig, els, paths);
+    where += (where.empty() ? "" : " and ") + path_ids(els, rig) + " at " + fmt_box(rig, rig.elements[e].box);
+  }
+  out.paths.assign(paths.begin(), paths.end());
+  out.why = std::to_string(picked.size()) + (picked.size() > 1 ? " elements stick" : " element sticks") +
+            " out at the figure's top (" + where + "), each turning about its end nearest the body";
+  return out;
+}
+
+LocatedPart jet(const Rig& rig, int body) {
+  LocatedPart out;
+  const RigBox& B = rig.elements[body].box;
+  // Everything drawn above the body's top (a spout's drops together).
+  std::vector<int> els;
+  RigBox box;
+  for (size_t i = 0; i < rig.elements.size(); ++i)
+    if (static_cast<int>(i) != body && rig.elements[i].box.centre().y < B.y0 && rig.elements[i].box.area() < B.area()) {
+      els.push_back(static_cast<int>(i));
+      box.add(rig.elements[i].box);
+    }
+  if (els.empty()) return out;
+  out.lobes.push_back(lobe_over(rig, els, {box.centre().x, box.y1}));
+  std::set<int> paths;
+  add_paths(rig, els, paths);
+  out.paths.assign(paths.begin(), paths.end());
+  out.why = std::to_string(els.size()) + " element" + (els.size() > 1 ? "s" : "") + " drawn above the body's top (" +
+            path_ids(els, rig) + " at " + fmt_box(rig, box) + "), turning about their lowest middle";
+  return out;
+}
+
+LocatedPart clapper(const Rig& rig, int body) {
+  LocatedPart out;
+  const RigBox& B = rig.elements[body].box;
+  int best = -1;
+  for (size_t i = 0; i < rig.elements.size(); ++i) {
+    const RigBox& b = rig.elements[i].box;
+    if (static_cast<int>(i) == body || b.area() > kClapperMaxShare * B.area()) continue;
+    if (std::fabs(b.centre().x - B.centre().x) > kClapperOffCentre * B.w() || b.centre().y < B.y0 + kClapperLow * B.h()) continue;
+    if (best < 0 || b.centre().y > rig.elements[best].box.centre().y) best = static_cast<int>(i);
+  }
+  if (best < 0) return out;
+  const RigBox& b = rig.elements[best].box;
+  const auto els = with_details(rig, best, body);
+  out.lobes.push_back(lobe_over(rig, els, {b.centre().x, b.y0}));
+  std::set<int> paths;
+  add_paths(rig, els, paths);
+  out.paths.assign(paths.begin(), paths.end());
+  out.why = "the lowest small element centred under the body (" + path_ids(els, rig) + " at " + fmt_box(rig, b) +
+            "), turning about its top";
+  return out;
+}
+
+// An element's long axis: its two ends (the extreme points along its principal direction) and
+// its length over its width.
+struct Axis {
+  Vec2 a, b;
+  double elongation = 0;
+};
+Axis axis_of(const RigElement& e) {
+  Axis ax;
+  if (e.points.size() < 2) return ax;
+  Vec2 c;
+  for (Vec2 q : e.points) c = c + (1.0 / e.points.size()) * q;
+  double sxx = 0, syy = 0, sxy = 0;
+  for (Vec2 q : e.points) sxx += (q.x - c.x) * (q.x - c.x), syy += (q.y - c.y) * (q.y - c.y), sxy += (q.x - c.x) * (q.y - c.y);
+  const double ang = 0.5 * std::atan2(2 * sxy, sxx - syy);
+  const Vec2 u = {std::cos(ang), std::sin(ang)}, n = {-u.y, u.x};
+  double lo = 1e300, hi = -1e300, w0 = 1e300, w1 = -1e300;
+  for (Vec2 q : e.points) {
+    const double s = (q.x - c.x) * u.x + (q.y - c.y) * u.y, t = (q.x - c.x) * n.x + (q.y - c.y) * n.y;
+    if (s < lo) lo = s, ax.a = q;
+    if (s > hi) hi = s, ax.b = q;
+    w0 = std::min(w0, t);
+    w1 = std::max(w1, t);
+  }
+  ax.elongation = (hi - lo) / std::max(w1 - w0, 1e-9);
+  return ax;
+}
+
+LocatedPart hands(const Rig& rig, int body) {
+  LocatedPart out;
+  // Thin elements inside a larger one (the dial).
+  struct Hand { int e; Axis ax; int dial; };
+  std::vector<Hand> thin;
+  for (size_t i = 0; i < rig.elements.size(); ++i) {
+    if (static_cast<int>(i) == body) continue;
+    const Axis ax = axis_of(rig.elements[i]);
+    if (ax.elongation < kThin && !rig.elements[i].thin) continue;
+    int dial = -1;
+    for (size_t j = 0; j < rig.elements.size(); ++j)
+      if (j != i && rig.elements[j].box.area() >= 4 * rig.elements[i].box.area() && inside(rig.elements[i].box, rig.elements[j].box) &&
+          (dial < 0 || rig.elements[j].box.area() < rig.elements[dial].box.area()))
+        dial = static_cast<int>(j);
+    if (dial >= 0) thin.push_back({static_cast<int>(i), ax, dial});
+  }
+  // The centre most of them meet at with one end, in their dial.
+  int best_n = 0;
+  Vec2 centre;
+  int dial = -1;
+  for (const Hand& h : thin)
+    for (Vec2 end : {h.ax.a, h.ax.b}) {
+      const RigBox& d = rig.elements[h.dial].box;
+      const double tol = kHandsMeet * std::max(d.w(), d.h());
+      int n = 0;
+      Vec2 sum;
+      for (const Hand& k : thin) {
+        if (k.dial != h.dial) continue;
+        const Vec2 near = dist(k.ax.a, end) < dist(k.ax.b, end) ? k.ax.a : k.ax.b;
+        if (dist(near, end) <= tol) ++n, sum = sum + near;
+      }
+      // Nearer the dial's middle wins a tie (hands turn about it, a tick mark does not).
+      const Vec2 c = (1.0 / std::max(n, 1)) * sum;
+      if (n > best_n || (n == best_n && n > 0 && dist(c, d.centre()) < dist(centre, rig.elements[dial].box.centre())))
+        best_n = n, centre = c, dial = h.dial;
+    }
+  if (best_n < 1 || dial < 0) return out;
+  const RigBox& d = rig.elements[dial].box;
+  const double tol = kHandsMeet * std::max(d.w(), d.h());
+  // A single thin element counts only when its end is at the dial's middle.
+  if (best_n == 1 && dist(centre, d.centre()) > 2 * tol) return out;
+  std::set<int> paths;
+  std::string which;
+  for (const Hand& k : thin) {
+    if (k.dial != dial) continue;
+    const Vec2 near = dist(k.ax.a, centre) < dist(k.ax.b, centre) ? k.ax.a : k.ax.b;
+    if (dist(near, centre) > tol) continue;
+    ArmLobe l = lobe_over(rig, {k.e}, centre);
+    l.side = -1;  // every hand turns the same way
+    out.lobes.push_back(l);
+    add_paths(rig, {k.e}, paths);
+    which += (which.empty() ? "" : "+") + std::to_string(rig.elements[k.e].path + 1);
+  }
+  out.paths.assign(paths.begin(), paths.end());
+  out.why = std::to_string(out.lobes.size()) + " thin element" + (out.lobes.size() > 1 ? "s" : "") + " (path " + which +
+            ") inside path " + std::to_string(rig.elements[dial].path + 1) + " meet at one end, the centre they turn about";
+  return out;
+}
+
+LocatedPart side_pair(const Rig& rig, int body) {
+  LocatedPart out;
+  const RigBox& F = rig.figure;
+  const RigBox& B = rig.elements[body].box;
+  const double cx = F.centre().x;
+  // Protrusions: elements off the middle, each with the elements overlapping it on its side
+  // (an arm and the pincer drawn at its end).
+  std::vector<int> cand = part_candidates(rig, body);
+  auto cluster = [&](int e) {
+    std::vector<int> c = {e};
+    const int side = rig.elements[e].box.centre().x < cx ? -1 : 1;
+    for (size_t i = 0; i < rig.elements.size(); ++i) {
+      const RigBox& b = rig.elements[i].box;
+      if (static_cast<int>(i) == e || static_cast<int>(i) == body || (b.centre().x < cx ? -1 : 1) != side) continue;
+      if (overlap_area(b, rig.elements[e].box) > 0 && b.centre().y < B.centre().y) c.push_back(static_cast<int>(i));
+    }
+    return c;
+  };
+  double best = 0;
+  int bl = -1, br = -1;
+  for (int l : cand)
+    for (int r : cand) {
+      const RigBox &a = rig.elements[l].box, &b = rig.elements[r].box;
+      if (a.centre().x >= cx - kSideOffCentre * F.w() || b.centre().x <= cx + kSideOffCentre * F.w()) continue;
+      // Mirrored: as far out, at the same height, of like size.
+      const double mirror = std::fabs((cx - a.centre().x) - (b.centre().x - cx)) / F.w() + std::fabs(a.centre().y - b.centre().y) / F.h();
+      const double size = std::min(a.area(), b.area()) / std::max(std::max(a.area(), b.area()), 1e-12);
+      if (mirror > 0.25 || size < 0.4) continue;
+      // Forward (up) and large.
+      const double up = 1 - ((a.centre().y + b.centre().y) / 2 - F.y0) / std::max(F.h(), 1e-9);
+      const double score = (a.area() + b.area()) / F.area() * (0.5 + up) * (1 - mirror);
+      if (score > best) best = score, bl = l, br = r;
+    }
+  if (bl < 0) return out;
+  std::set<int> paths;
+  std::string where;
+  for (int e : {bl, br}) {
+    std::vector<int> els;
+    for (int c : cluster(e))
+      for (int d : with_details(rig, c, body))
+        if (std::find(els.begin(), els.end(), d) == els.end()) els.push_back(d);
+    out.lobes.push_back(lobe_over(rig, els, nearest_point(rig, els, B.centre())));
+    add_paths(rig, els, paths);
+    where += (where.empty() ? "" : " and ") + path_ids(els, rig);
+  }
+  out.paths.assign(paths.begin(), paths.end());
+  out.why = "the largest mirrored pair of protrusions at the figure's sides, farthest forward (" + where +
+            "), each turning about its point nearest the body";
+  return out;
+}
+
+LocatedPart branch(const Rig& rig) {
+  LocatedPart out;
+  // The longest limb of the silhouette that is no leg (legs stand on the ground).
+  int best = -1;
+  double longest = 0;
+  for (size_t i = 0; i < rig.limbs.size(); ++i) {
+    const ArmLobe& l = rig.limbs[i];
+    if (l.kind == LobeKind::Leg) continue;
+    const double len = dist(l.pivot, l.tip);
+    if (len > longest) longest = len, best = static_cast<int>(i);
+  }
+  if (best < 0) return out;
+  out.lobes.push_back(rig.limbs[best]);
+  // Every figure path within the limb moves (the outline drawn over its fill).
+  std::set<int> paths;
+  for (const RigElement& e : rig.elements)
+    for (Vec2 q : e.points)
+      if (lobe_depth(rig.limbs[best], q) > 0) {
+        paths.insert(e.path);
+        break;
+      }
+  out.paths.assign(paths.begin(), paths.end());
+  RigBox b;
+  for (Vec2 q : rig.limbs[best].outline) b.add(q);
+  out.why = "the longest limb of the silhouette's skeleton that is not a leg (at " + fmt_box(rig, b) + "), bending about its base";
+  return out;
+}
+
+bool any_stem(std::string_view w, std::initializer_list<std::string_view> stems) {
+  for (auto s : stems)
+    if (word_matches(w, s)) return true;
+  return false;
+}
+
+}  // namespace
+
+PartShape part_shape_of(std::string_view w, FigureClass figure) {
+  const bool animal = figure == FigureClass::Biped || figure == FigureClass::Quadruped || figure == FigureClass::Bird ||
+                      figure == FigureClass::FishOrSnake || figure == FigureClass::Insect;
+  if (any_stem(w, {"ear", "antenna", "antennae"})) return PartShape::Ears;
+  if (any_stem(w, {"spout", "plume", "jet", "spray", "steam", "smok", "fountain", "geyser"})) return PartShape::Jet;
+  if (any_stem(w, {"clapper", "pendulum"})) return PartShape::Clapper;
+  if (figure == FigureClass::Object && any_stem(w, {"hand", "needl", "pointer"})) return PartShape::Hands;
+  if (any_stem(w, {"claw", "pincer", "nipper", "mandibl", "chela"})) return PartShape::SidePair;
+  if (animal && any_stem(w, {"trunk", "proboscis", "snout"})) return PartShape::Branch;
+  return PartShape::None;
+}
+
+const char* part_shape_name(PartShape s) {
+  switch (s) {
+    case PartShape::Ears: return "ears";
+    case PartShape::Jet: return "jet";
+    case PartShape::Clapper: return "clapper";
+    case PartShape::Hands: return "hands";
+    case PartShape::SidePair: return "side pair";
+    case PartShape::Branch: return "branch";
+    case PartShape::None: break;
+  }
+  return "none";
+}
+
+std::vector<RigElement> figure_elements(const Scene& scene, const Rig& rig) {
+  std::vector<RigElement> out;
+  for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
+    const Path& p = scene.paths[pi];
+    const int g = pi < rig.part_of_path.size() ? rig.part_of_path[pi] : -1;
+    if (g >= 0 && rig.parts[g].role == Role::Background) continue;
+    const bool filled = p.has_fill && p.fill.a > 0;
+    // Subpaths apart (no one's box inside another's) are elements of their own; one inside
+    // another (a hole, a detail) goes with it.
+    std::vector<RigBox> boxes;
+    for (const auto& sp : p.subpaths) {
+      RigBox b;
+      for (Vec2 q : sp.points) b.add(q);
+      boxes.push_back(b);
+    }
+    std::vector<int> owner(p.subpaths.size(), -1);
+    for (size_t i = 0; i < p.subpaths.size(); ++i)
+      for (size_t j = 0; j < p.subpaths.size(); ++j)
+        if (i != j && !boxes[i].empty() && boxes[j].area() > boxes[i].area() && inside(boxes[i], boxes[j]) &&
+            (owner[i] < 0 || boxes[j].area() < boxes[owner[i]].area()))
+          owner[i] = static_cast<int>(j);
+    std::vector<RigElement> mine;
+    std::vector<int> index(p.subpaths.size(), -1);
+    for (size_t i = 0; i < p.subpaths.size(); ++i) {
+      if (owner[i] >= 0 || boxes[i].empty()) continue;
+      RigElement e;
+      e.path = static_cast<int>(pi);
+      e.subpath = static_cast<int>(i);
+      index[i] = static_cast<int>(mine.size());
+      mine.push_back(e);
+    }
+    for (size_t i = 0; i < p.subpaths.size(); ++i) {
+      int top = static_cast<int>(i);
+      for (int guard = 0; owner[top] >= 0 && guard < 64; ++guard) top = owner[top];
+      if (index[top] < 0) continue;
+      RigElement& e = mine[index[top]];
+      const auto& pts = p.subpaths[i].points;
+      for (Vec2 q : pts) e.box.add(q), e.points.push_back(q);
+      double s = 0, len = 0;
+      for (size_t k = 0; k + 1 < pts.size(); ++k) {
+        s += pts[k].x * pts[k + 1].y - pts[k + 1].x * pts[k].y;
+        len += dist(pts[k], pts[k + 1]);
+      }
+      if (filled) e.area += (static_cast<int>(i) == top ? 1 : -1) * 0.5 * std::fabs(s);
+      else e.area += len * (p.has_stroke ? p.stroke.width : 1);
+      e.thin = !filled && p.has_stroke && !p.subpaths[i].closed;
+    }
+    if (mine.size() == 1) mine[0].subpath = -1;
+    for (auto& e : mine) e.area = std::max(e.area, 0.0);
+    out.insert(out.end(), mine.begin(), mine.end());
+  }
+  return out;
+}
+
+LocatedPart locate_part(const Rig& rig, PartShape shape) {
+  LocatedPart out;
+  const int body = body_of(rig);
+  if (body < 0 || rig.figure.empty()) return out;
+  switch (shape) {
+    case PartShape::Ears: out = ears(rig, body); break;
+    case PartShape::Jet: out = jet(rig, body); break;
+    case PartShape::Clapper: out = clapper(rig, body); break;
+    case PartShape::Hands: out = hands(rig, body); break;
+    case PartShape::SidePair: out = side_pair(rig, body); break;
+    case PartShape::Branch: out = branch(rig); break;
+    case PartShape::None: break;
+  }
+  out.shape = shape;
+  return out;
+}
+
+}  // namespace svgm

@@ -1,0 +1,61 @@
+// Finding a part the prompt names that the rig has no part for: "the rabbit twitches its ears"
+// on a rabbit whose ears are two paths the grouper put with its body, "the bell's clapper
+// swings", "the clock's hands go round". The rig's roles (part_rig.h) know heads, limbs, tails
+// and wheels; a noun of another kind used to find nothing (the figure swayed as a whole) or a
+// role's stand-in (a clock's hands read as the arms of its body's sides).
+//
+// Each noun the locator knows names a kind of part with a spatial and shape prior, and the part
+// is looked for among the figure's drawn elements (Rig::elements: its paths, or the subpaths of
+// a path drawn apart, as a crab's claws in its body's path), the largest of which is the body:
+//  - ears (ear, antenna): the elements sticking out above the body at the figure's top, at most
+//    two (a pair seen from the side lies on one side), each turning about its end nearest the
+//    body;
+//  - a jet (spout, plume, jet, spray, steam, smoke, fountain): what is drawn above the body's
+//    top, turning about its lowest middle;
+//  - a clapper (clapper, pendulum, tongue of a bell): a small element below the body's middle
+//    and centred under it, turning about its top;
+//  - hands (of a clock or a dial: hand, needle, pointer): thin elements inside a larger one,
+//    one end of each at a common centre they turn about;
+//  - a side pair (claw, pincer, nipper, mandible): the mirrored pair of side protrusions (each
+//    with the elements overlapping it) farthest forward (up) and largest, each turning about
+//    its point nearest the body;
+//  - a branch (trunk, proboscis, snout): the longest limb of the silhouette's skeleton
+//    (Rig::limbs) that does not stand on the ground (legs do), about its base.
+// A part found becomes lobes (outline_lobes.h): the hull of its elements' points beyond a base
+// line across the joint, so its points (and the details drawn on it) turn, growing from nothing
+// at the base, and the body holds. Only the elements' own paths (and those drawn inside them)
+// move. `why` says what was found where, for motion.json and the terminal.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "motion/lexicon.h"
+#include "procedural/part_rig.h"
+
+namespace svgm {
+
+enum class PartShape { None, Ears, Jet, Clapper, Hands, SidePair, Branch };
+
+// The kind of part a noun names ("ears" -> Ears, "clapper" -> Clapper), None for nouns the
+// locator does not place. `figure`: the prompt's figure class (lexicon.h): a trunk is a branch
+// only on a creature (not a tree's body), hands are a dial's only on an object (a person with
+// no figure word, "he raises his hand", keeps the rig's arms).
+PartShape part_shape_of(std::string_view noun, FigureClass figure);
+const char* part_shape_name(PartShape s);
+
+struct LocatedPart {
+  PartShape shape = PartShape::None;
+  std::vector<ArmLobe> lobes;  // each turns about its pivot; empty: not found
+  std::vector<int> paths;      // scene paths whose points may move (sorted)
+  std::string why;             // what was chosen and why, one phrase
+};
+
+// The elements of the figure (every part but the background), for Rig::elements.
+std::vector<RigElement> figure_elements(const Scene& scene, const Rig& rig);
+
+// The part of kind `shape` on the rig's figure; lobes empty when none fits the prior.
+LocatedPart locate_part(const Rig& rig, PartShape shape);
+
+}  // namespace svgm

@@ -1,0 +1,126 @@
+// The part locator (procedural/part_locator.h) on drawings made for these tests, each drawn in
+// one group so the rig has no part for what the prompt names: a hare's ears, a bell's clapper,
+// a clock's hands. The plan moves what was found (and the details drawn on it), the rest of the
+// figure holds still, and the action says why those paths were chosen.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "svgmotion/svg_reader.h"
+#include "procedural/motion_plan.h"
+#include "procedural/part_locator.h"
+
+using namespace svgm;
+
+namespace {
+
+std::string data(const char* name) { return std::string(SVGM_TEST_DATA) + "/motion/" + name; }
+
+struct Drawing {
+  Scene scene;
+  Rig rig;
+  explicit Drawing(const char* name) : scene(read_svg_file(data(name))), rig(build_rig(scene, read_source_names(data(name)))) {}
+  // Largest displacement from frame 0 of the points of each scene path over `plan`'s frames.
+  std::vector<double> travel(const MotionPlan& plan, int F = 13) const {
+    const auto pts = animate_plan(scene, rig, plan, F);
+    const size_t per = pts.size() / F;
+    std::vector<double> out(scene.paths.size(), 0);
+    size_t i = 0;
+    for (size_t p = 0; p < scene.paths.size(); ++p)
+      for (const auto& sp : scene.paths[p].subpaths)
+        for (size_t q = 0; q < sp.points.size(); ++q, ++i)
+          for (int f = 1; f < F; ++f)
+            out[p] = std::max(out[p], std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
+    return out;
+  }
+};
+
+}  // namespace
+
+TEST_SUITE("video") {
+
+TEST_CASE("part locator: nouns name kinds of part; a trunk is a branch only on a creature, hands a dial's only on an object") {
+  using C = FigureClass;
+  CHECK(part_shape_of("ears", C::Quadruped) == PartShape::Ears);
+  CHECK(part_shape_of("clapper", C::Object) == PartShape::Clapper);
+  CHECK(part_shape_of("spouts", C::FishOrSnake) == PartShape::Jet);
+  CHECK(part_shape_of("claws", C::None) == PartShape::SidePair);
+  CHECK(part_shape_of("trunk", C::Quadruped) == PartShape::Branch);
+  CHECK(part_shape_of("trunk", C::Plant) == PartShape::None);
+  CHECK(part_shape_of("hands", C::Object) == PartShape::Hands);
+  CHECK(part_shape_of("hands", C::Biped) == PartShape::None);
+  CHECK(part_shape_of("hands", C::None) == PartShape::None);  // "he raises his hand"
+  CHECK(part_shape_of("wings", C::Bird) == PartShape::None);
+  CHECK(parse_prompt("the clock's hands go round").clauses[0].figure == C::Object);
+}
+
+TEST_CASE("part locator: a hare's ears drawn in its body's group twitch; the body and the eye hold") {
+  const Drawing d("ears_one_group.svg");
+  REQUIRE(d.rig.parts.size() == 1);  // one group: no ear part in the rig
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the hare twitches its ears"), d.rig, 1);
+  REQUIRE(plan.actions.size() >= 1);
+  const PlannedAction& a = plan.actions[0];
+  CHECK(a.region == Region::Located);
+  CHECK(a.primitive == Primitive::Swing);
+  CHECK(a.lobes.size() == 2);
+  CHECK(a.lobe_paths == std::vector<int>{1, 2, 3});  // both ears and the inner colour of one
+  CHECK(a.why.rfind("'the hare twitches its ears': ", 0) == 0);
+  CHECK(a.why.find("moves the part the prompt names; the ears found as ears: 2 elements stick out at the figure's top") != std::string::npos);
+  const auto t = d.travel(plan);
+  CHECK(t[0] == 0.0);  // the body
+  CHECK(t[4] == 0.0);  // the eye
+  CHECK(t[1] > 10.0);
+  CHECK(t[2] > 5.0);   // the inner colour goes with its ear
+  CHECK(t[3] > 10.0);
+  // The report names the paths found.
+  const auto j = motion_report(d.scene, d.rig, plan);
+  CHECK(j["plan"][0]["region"] == "located part");
+  CHECK(j["plan"][0]["located_paths"].size() == 3);
+}
+
+TEST_CASE("part locator: a bell's clapper swings about its top under the rim, its fill with its outline; the bell holds") {
+  const Drawing d("bell_clapper.svg");
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the bell's clapper swings"), d.rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  const PlannedAction& a = plan.actions[0];
+  CHECK(a.region == Region::Located);
+  REQUIRE(a.lobes.size() == 1);
+  CHECK(a.lobes[0].pivot.x == doctest::Approx(100));
+  CHECK(a.lobes[0].pivot.y == doctest::Approx(160));
+  // The outline's arc is lowest; the fill it is drawn over goes with it.
+  CHECK(a.why.find("the lowest small element centred under the body (path 4+3") != std::string::npos);
+  const auto t = d.travel(plan);
+  CHECK(t[0] == 0.0);
+  CHECK(t[1] == 0.0);
+  CHECK(t[2] > 3.0);
+  CHECK(t[3] > 3.0);
+}
+
+TEST_CASE("part locator: a clock's hands turn about the face's middle, not as arms of its case; the tick mark holds") {
+  const Drawing d("clock_hands.svg");
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the clock's hands go round"), d.rig, 1);
+  REQUIRE(!plan.actions.empty());
+  const PlannedAction& a = plan.actions[0];
+  CHECK(a.region == Region::Located);
+  REQUIRE(a.lobes.size() == 2);
+  for (const ArmLobe& l : a.lobes) {
+    CHECK(l.pivot.x == doctest::Approx(100));
+    CHECK(l.pivot.y == doctest::Approx(105));
+  }
+  CHECK(a.why.find("2 thin elements (path 3+4) inside path 2 meet at one end") != std::string::npos);
+  const auto t = d.travel(plan);
+  CHECK(t[0] == 0.0);  // the case
+  CHECK(t[1] == 0.0);  // the face
+  CHECK(t[2] > 5.0);
+  CHECK(t[3] > 5.0);
+  CHECK(t[4] == 0.0);  // the tick mark
+}
+
+TEST_CASE("part locator: a part the figure does not show is not invented") {
+  const Drawing d("bell_clapper.svg");
+  CHECK(locate_part(d.rig, PartShape::Hands).lobes.empty());
+  CHECK(locate_part(d.rig, PartShape::SidePair).lobes.empty());
+}
+
+}  // TEST_SUITE
