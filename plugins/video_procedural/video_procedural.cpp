@@ -31,6 +31,25 @@ constexpr int kDefaultKeyframes = 15;
 // many times (0.8^4: 41 %).
 constexpr int kSelfCheckAttempts = 4;
 
+// The plan on the terminal: its warnings and notes, each part a located part was found at and
+// why, and one line of what moves.
+void log_plan(const svgm_host* host, const svgm::MotionPlan& plan, const svgm::Rig& rig) {
+  if (!host || !host->log) return;
+  for (const auto& w : plan.warnings) host->log(host, 2, ("video procedural: " + w).c_str());
+  for (const auto& w : plan.notes) host->log(host, 1, ("video procedural: " + w).c_str());
+  std::string line;
+  for (const auto& a : plan.actions) {
+    std::string who = a.target == svgm::Target::Whole ? "whole figure" : a.target == svgm::Target::Repeated
+                          ? std::to_string(rig.repeated.size()) + " repeated elements" : "";
+    if (a.region != svgm::Region::None) who = "a region of ";
+    // A part the rig had none for: where it was found, and why there (part_locator.h).
+    if (a.region == svgm::Region::Located) host->log(host, 1, ("video procedural: " + a.why).c_str());
+    for (int p : a.parts) who += (who.empty() || a.region != svgm::Region::None ? "" : "+") + rig.parts[p].name;
+    line += (line.empty() ? "" : "; ") + a.verb + " " + who;
+  }
+  host->log(host, 1, ("video procedural: " + line + " (motion.json)").c_str());
+}
+
 nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   namespace fs = std::filesystem;
   namespace P = svgm::plugin;
@@ -152,21 +171,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
       if (!explicit_plan.empty()) report["explicit_plan"] = explicit_plan;
       if (!asked.record.is_null()) report["planner"] = asked.record;
       summary = plan.summary();
-      if (host && host->log) {
-        for (const auto& w : plan.warnings) host->log(host, 2, ("video procedural: " + w).c_str());
-        for (const auto& w : plan.notes) host->log(host, 1, ("video procedural: " + w).c_str());
-        std::string line;
-        for (const auto& a : plan.actions) {
-          std::string who = a.target == svgm::Target::Whole ? "whole figure" : a.target == svgm::Target::Repeated
-                                ? std::to_string(rig.repeated.size()) + " repeated elements" : "";
-          if (a.region != svgm::Region::None) who = "a region of ";
-          // A part the rig had none for: where it was found, and why there (part_locator.h).
-          if (a.region == svgm::Region::Located) host->log(host, 1, ("video procedural: " + a.why).c_str());
-          for (int p : a.parts) who += (who.empty() || a.region != svgm::Region::None ? "" : "+") + rig.parts[p].name;
-          line += (line.empty() ? "" : "; ") + a.verb + " " + who;
-        }
-        host->log(host, 1, ("video procedural: " + line + " (motion.json)").c_str());
-      }
+      log_plan(host, plan, rig);
     }
     // Each candidate's rigid bodies and their maps (the fitter warm-starts from the chosen
     // one's: the candidates differ in amplitudes and directions); the paths' travels are the

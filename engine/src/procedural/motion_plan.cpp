@@ -52,19 +52,6 @@ bool part_has_word(const RigPart& P, const std::string& noun) {
   return false;
 }
 
-// Keeps only the parts whose ancestors are not also in the set (a limb's segments follow it).
-std::vector<int> topmost(const Rig& rig, std::vector<int> parts) {
-  std::set<int> in(parts.begin(), parts.end());
-  std::vector<int> out;
-  for (int p : parts) {
-    bool covered = false;
-    for (int a = rig.parts[p].parent, guard = 0; a >= 0 && guard < 64; a = rig.parts[a].parent, ++guard)
-      covered = covered || in.count(a) > 0;
-    if (!covered) out.push_back(p);
-  }
-  return out;
-}
-
 std::vector<int> with_role(const Rig& rig, std::initializer_list<Role> roles) {
   std::vector<int> v;
   for (size_t i = 0; i < rig.parts.size(); ++i)
@@ -177,78 +164,6 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
   return v;
 }
 
-// The pole's parts at `side` of the figure (1 left, 2 right, 3 top, 4 bottom): the thin parts
-// (at most kPoleWidth of the figure's extent across that side) lying within kPoleEnd of it, or
-// upright bars drawn thick (kPoleWidthMax, kPoleAspect) starting there.
-std::vector<int> pole_parts(const Rig& rig, int side, bool thick) {
-  const RigBox& F = rig.figure;
-  const bool across_x = side <= 2;  // a left or right pole: thin in x, spanning y
-  const double L = std::max(across_x ? F.w() : F.h(), 1e-9);
-  // Upright bars of the figure: a thick one is its pole only when it is the only one (of three
-  // stalks, the leftmost is no pole).
-  auto upright_bar = [&](const RigBox& b) { return b.h() >= kPoleAspect * b.w() && b.h() >= 0.5 * F.h() && b.w() <= kPoleWidthMax * F.w(); };
-  int bars = 0;
-  for (const RigPart& P : rig.parts) bars += P.role != Role::Background && !P.box.empty() && upright_bar(P.box);
-  std::vector<int> out;
-  for (size_t i = 0; i < rig.parts.size(); ++i) {
-    const RigPart& P = rig.parts[i];
-    if (P.role == Role::Background || P.box.empty()) continue;
-    const double a0 = across_x ? P.box.x0 : P.box.y0, a1 = across_x ? P.box.x1 : P.box.y1;
-    const double s0 = across_x ? F.x0 : F.y0, s1 = across_x ? F.x1 : F.y1;
-    const bool near = side % 2 == 1 ? a1 <= s0 + kPoleEnd * L : a0 >= s1 - kPoleEnd * L;
-    // A pole drawn thick (an emoji's flagpole is a sixth of the flag's width) is still a pole
-    // when it stands upright, thin for its own length, from the left or right side. Not along
-    // the top or bottom: a thin bar lying there is a ski, a board or the ground.
-    const double length = across_x ? P.box.h() : P.box.w();
-    const bool starts = side % 2 == 1 ? a0 <= s0 + kPoleEnd * L : a1 >= s1 - kPoleEnd * L;
-    const bool thick_pole = thick && across_x && bars == 1 && starts && a1 - a0 <= kPoleWidthMax * L && length >= kPoleAspect * (a1 - a0);
-    if ((near && a1 - a0 <= kPoleWidth * L) || thick_pole) out.push_back(static_cast<int>(i));
-  }
-  return out;
-}
-
-// The side of the figure a pole holds (PlannedAction::anchored: 1 left, 2 right, 3 top, 4
-// bottom), 0 for none: where the pole's parts together span kPoleSpan of the figure. `thick`
-// counts the bars drawn thick (pole_parts) too: for the wave or the bend of the whole figure,
-// never to turn a limb's verb into a ripple (an arm raised high is such a bar: "he raises his
-// hand and waves it" rippled the whole man).
-int anchored_side(const Rig& rig, bool thick) {
-  const RigBox& F = rig.figure;
-  for (int side = 1; side <= 4; ++side) {
-    const bool across_x = side <= 2;
-    const double span = std::max(across_x ? F.h() : F.w(), 1e-9);
-    std::vector<std::pair<double, double>> spans;
-    for (int p : pole_parts(rig, side, thick)) {
-      const RigBox& b = rig.parts[p].box;
-      spans.push_back(across_x ? std::make_pair(b.y0, b.y1) : std::make_pair(b.x0, b.x1));
-    }
-    std::sort(spans.begin(), spans.end());
-    double covered = 0, lo = 0, hi = -1e300;
-    for (const auto& [b0, b1] : spans) {
-      if (b0 > hi) {
-        covered += std::max(0.0, hi - lo);
-        lo = b0;
-        hi = b1;
-      } else {
-        hi = std::max(hi, b1);
-      }
-    }
-    covered += std::max(0.0, hi - lo);
-    if (covered >= kPoleSpan * span) return side;
-  }
-  return 0;
-}
-
-// Where a bend of the whole figure is held: at a pole (a banner), else at the figure's base
-// when it stands (a plant, a standing figure: upright, or named a plant), 0 when it is free
-// (a fish, a bird, a snake, a figure lying along its length bends about its middle). Bent
-// about its middle, rice stalks swung their roots five times as far as their ears.
-int bend_anchor(const Rig& rig, FigureClass figure) {
-  if (const int side = anchored_side(rig, true)) return side;
-  if (figure == FigureClass::FishOrSnake || figure == FigureClass::Bird || figure == FigureClass::Insect) return 0;
-  return figure == FigureClass::Plant || rig.figure.h() >= kUpright * rig.figure.w() ? 4 : 0;
-}
-
 // The part whose region bends for a limb role that has no part of its own. Arms: the widest
 // of the root and the parts hanging from it whose middle is in the figure's upper part (a
 // sweater drawn with both sleeves is wider than the trousers that are the largest part); the
@@ -329,56 +244,9 @@ void pair_up(const Rig& rig, PlannedAction& a, Pairing pairing, std::mt19937& rn
   }
 }
 
-// Whether part p is at or under part a (a descendant through the parents).
-bool part_under(const Rig& rig, int p, int a) {
-  for (int g = p, guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
-    if (g == a) return true;
-  return false;
-}
-
-// The box of part a with everything that hangs from it.
-RigBox chain_box(const Rig& rig, int a) {
-  RigBox b;
-  for (size_t h = 0; h < rig.parts.size(); ++h)
-    if (part_under(rig, static_cast<int>(h), a)) b.add(rig.parts[h].box);
-  return b;
-}
-
-// Of several limbs, the one whose chain (the limb and what hangs from it) reaches clearly
-// farthest from the root's middle: the drawing shows it in action (a punch thrown, an arm
-// raised to wave, a leg out in a kick). -1 when none reaches kReachLead farther than every other
-// (the seed picks). A chain's reach is the farthest corner of its box.
-int reaching_out(const Rig& rig, const std::vector<int>& limbs) {
-  if (rig.root < 0 || limbs.size() < 2) return -1;
-  const Vec2 c = rig.parts[rig.root].box.centre();
-  std::vector<double> reach;
-  for (int l : limbs) {
-    const RigBox b = chain_box(rig, l);
-    double far = 0;
-    for (Vec2 q : {Vec2{b.x0, b.y0}, Vec2{b.x1, b.y0}, Vec2{b.x0, b.y1}, Vec2{b.x1, b.y1}}) far = std::max(far, std::hypot(q.x - c.x, q.y - c.y));
-    reach.push_back(far);
-  }
-  const size_t best = std::max_element(reach.begin(), reach.end()) - reach.begin();
-  for (size_t i = 0; i < reach.size(); ++i)
-    if (i != best && reach[best] < kReachLead * reach[i]) return -1;
-  return limbs[best];
-}
-
 // A compact figure (an octopus, a frog) does not swim by a wave along its body, which would heave
 // its head as much as its arms: its lower limbs paddle, alternating (Builder::add), and the
 // swim is then a verb of the limbs (plan_from_prompt).
-// Which limbs of a silhouette's skeleton a limb role bends.
-bool lobe_serves(LobeKind k, Target t) {
-  switch (t) {
-    case Target::Arms: return k == LobeKind::Arm;
-    case Target::Legs: return k == LobeKind::Leg;
-    case Target::Head: return k == LobeKind::Head;
-    case Target::Tail: return k == LobeKind::Tail;
-    case Target::Limbs: return k == LobeKind::Arm || k == LobeKind::Leg || k == LobeKind::Other;
-    default: return false;
-  }
-}
-
 bool paddles(const Verb& verb, const Rig& rig) {
   const RigBox& F = rig.figure;
   const double aspect = std::max(F.w(), F.h()) / std::max(std::min(F.w(), F.h()), 1e-9);
@@ -401,39 +269,15 @@ struct Builder {
     return figure != FigureClass::Wheeled && !(rig.root >= 0 && rig.parts[rig.root].round);
   }
 
-  void add(const Verb& verb, const Action& base_in, Target target, const std::vector<int>& named_parts,
-           const std::string& target_word, const Modifiers& mods, bool plural, const std::string& words,
-           bool primary_retargeted, const std::string& instead = "", const LocatedPart* located = nullptr) {
-    Action base = base_in;
-    std::string paddle;
-    if (&base_in == &verb.actions[0] && target == Target::Whole && paddles(verb, rig)) {
-      base = {Primitive::Swing, Target::Legs, kPartAmplitude[static_cast<size_t>(Primitive::Swing)], 2 * base.cycles, Pairing::Alternating};
-      target = Target::Legs;
-      paddle = "a compact figure: its lower limbs paddle";
-    }
-    PlannedAction a;
-    a.verb = verb.name;
-    a.words = words;
-    a.primitive = base.primitive;
-    a.target = target;
-    double amp = base.amp;
-    bool rock_on_part = false;  // a rock's degrees, about the figure's base, now on a part
-    if (primary_retargeted && whole_only(a.primitive) && target != Target::Whole) {
-      // When the verb's amplitude is in another unit than the part's primitive (a squat's
-      // figure heights, a swing's degrees), the part's primitive gets its usual size.
-      if (unit_of(verb.on_part) != unit_of(a.primitive)) amp = kPartAmplitude[static_cast<size_t>(verb.on_part)];
-      else {
-        rock_on_part = a.primitive == Primitive::Rock || a.primitive == Primitive::Sway;
-        // A sway leans the figure's top about its middle: about the base, the top moves as far
-        // at this share of the angle.
-        if (a.primitive == Primitive::Sway) amp *= kSwayHinge;
-      }
-      a.primitive = verb.on_part;
-    }
+  // What a verb's action becomes on what it is aimed at: limbs beat instead of throbbing and
+  // swing instead of spinning, a located part swings on its joint, a figure spun whole turns
+  // about its vertical axis. Changes the primitive, its amplitude and target; returns why.
+  std::string recast(PlannedAction& a, Target& target, double& amp, bool& rock_on_part, const Action& base,
+                     const LocatedPart* located) const {
+    std::string beat;
     // Limbs do not throb: a rhythmic verb of size aimed at them ("the dove beats its wings",
     // "her heart beats" is a pulse of the named heart) beats them back and forth. The pulse of a
     // dove's wings had found no wing and throbbed a detail.
-    std::string beat;
     if (a.primitive == Primitive::Pulse && is_limb_target(target)) {
       a.primitive = Primitive::Swing;
       amp = kPartAmplitude[static_cast<size_t>(Primitive::Swing)];
@@ -466,6 +310,39 @@ struct Builder {
       target = a.target = Target::Whole;
       beat = "a figure that is not round turns about its vertical axis";
     }
+    return beat;
+  }
+
+  void add(const Verb& verb, const Action& base_in, Target target, const std::vector<int>& named_parts,
+           const std::string& target_word, const Modifiers& mods, bool plural, const std::string& words,
+           bool primary_retargeted, const std::string& instead = "", const LocatedPart* located = nullptr) {
+    Action base = base_in;
+    std::string paddle;
+    if (&base_in == &verb.actions[0] && target == Target::Whole && paddles(verb, rig)) {
+      base = {Primitive::Swing, Target::Legs, kPartAmplitude[static_cast<size_t>(Primitive::Swing)], 2 * base.cycles, Pairing::Alternating};
+      target = Target::Legs;
+      paddle = "a compact figure: its lower limbs paddle";
+    }
+    PlannedAction a;
+    a.verb = verb.name;
+    a.words = words;
+    a.primitive = base.primitive;
+    a.target = target;
+    double amp = base.amp;
+    bool rock_on_part = false;  // a rock's degrees, about the figure's base, now on a part
+    if (primary_retargeted && whole_only(a.primitive) && target != Target::Whole) {
+      // When the verb's amplitude is in another unit than the part's primitive (a squat's
+      // figure heights, a swing's degrees), the part's primitive gets its usual size.
+      if (unit_of(verb.on_part) != unit_of(a.primitive)) amp = kPartAmplitude[static_cast<size_t>(verb.on_part)];
+      else {
+        rock_on_part = a.primitive == Primitive::Rock || a.primitive == Primitive::Sway;
+        // A sway leans the figure's top about its middle: about the base, the top moves as far
+        // at this share of the angle.
+        if (a.primitive == Primitive::Sway) amp *= kSwayHinge;
+      }
+      a.primitive = verb.on_part;
+    }
+    const std::string beat = recast(a, target, amp, rock_on_part, base, located);
     const bool whole_turns = a.primitive == Primitive::Spin || a.primitive == Primitive::Turn;
     std::uniform_real_distribution<double> U(0, 1);
     a.amp = amp * mods.size * (whole_turns ? 1 : 0.85 + 0.3 * U(rng));
@@ -696,31 +573,39 @@ std::string MotionPlan::summary() const {
   return s;
 }
 
+// Whether the noun names a part the locator finds on the figure (part_locator.h), unless the
+// document names a part so.
+bool locatable_noun(const PromptNoun& n, const Rig& rig, FigureClass figure) {
+  const PartShape shape = part_shape_of(n.word, figure);
+  std::string ignore;
+  return shape != PartShape::None && rig.root >= 0 && parts_for(rig, Target::Named, n.word, &ignore).empty() &&
+         !locate_part(rig, shape).lobes.empty();
+}
+
+// Where the figure moves ("bobs on the waves"; support_band.h): "on the waves" for the first
+// noun after a preposition of place that names no part of the figure; empty when none does.
+std::string ground_words(const ParsedPrompt& prompt, const Rig& rig) {
+  for (const Clause& c : prompt.clauses)
+    for (const auto& n : c.nouns) {
+      if (!n.object_of_preposition || n.target != Target::Named || !names_ground(n.preposition)) continue;
+      std::string ignore;
+      if (parts_for(rig, Target::Named, n.word, &ignore).empty()) return n.preposition + " the " + n.word;
+    }
+  return "";
+}
+
 MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t seed) {
   Builder b{rig, std::mt19937(seed), {}};
   for (const Clause& c : prompt.clauses)
     if (b.figure == FigureClass::None) b.figure = c.figure;
   b.plan.source = "prompt";
   std::vector<std::string> unknown;
-  // Where the figure moves ("bobs on the waves"): a noun after a preposition of place that
-  // names no part of the figure (nor only its backdrop, which stays anyway).
-  for (const Clause& c : prompt.clauses)
-    for (const auto& n : c.nouns) {
-      if (!b.plan.ground.empty() || !n.object_of_preposition || n.target != Target::Named || !names_ground(n.preposition)) continue;
-      std::string ignore;
-      if (parts_for(rig, Target::Named, n.word, &ignore).empty()) b.plan.ground = n.preposition + " the " + n.word;
-    }
+  b.plan.ground = ground_words(prompt, rig);
+  auto locatable = [&](const PromptNoun& n) { return locatable_noun(n, rig, b.figure); };
   // Does the prompt say which limbs move ("waving its arms", "sways its tentacles")? Then the
   // whole-figure accents of its limb verbs (cheering's hop, flapping's bob, dancing's rock) are
   // left out: they move every part, the ones the prompt keeps still too, and outweigh the
   // limbs it names.
-  // A noun the locator finds on the figure, unless the document names a part so.
-  auto locatable = [&](const PromptNoun& n) {
-    const PartShape shape = part_shape_of(n.word, b.figure);
-    std::string ignore;
-    return shape != PartShape::None && rig.root >= 0 && parts_for(rig, Target::Named, n.word, &ignore).empty() &&
-           !locate_part(rig, shape).lobes.empty();
-  };
   bool names_limbs = false;
   for (const Clause& c : prompt.clauses)
     for (const auto& n : c.nouns)
@@ -752,7 +637,8 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
         std::string ignore;
         hits = parts_for(rig, Target::Named, n.word, &ignore);
         if (hits.empty()) {
-          if (unknown_words) unknown_words->push_back(n.word);
+          // The ground's noun was understood: it is where the figure moves.
+          if (unknown_words && b.plan.ground.substr(b.plan.ground.rfind(' ') + 1) != n.word) unknown_words->push_back(n.word);
           continue;
         }
         // The verb's object naming only the backdrop ("rides the waves") is where the figure
@@ -834,9 +720,6 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
       break;
     }
   b.plan.readings = prompt.readings;
-  // The ground's noun was understood: it is where the figure moves.
-  if (!b.plan.ground.empty())
-    unknown.erase(std::remove(unknown.begin(), unknown.end(), b.plan.ground.substr(b.plan.ground.rfind(' ') + 1)), unknown.end());
   b.plan.not_understood = unknown;
   for (const auto& w : prompt.unplaced)
     if (std::find(unknown.begin(), unknown.end(), w) == unknown.end()) b.plan.not_understood.push_back(w);

@@ -120,6 +120,17 @@ RigBox chain_box(const Rig& rig, int a);
 // The pole's parts at `side` of the figure (1 left, 2 right, 3 top, 4 bottom); `thick`: also
 // upright bars drawn thick.
 std::vector<int> pole_parts(const Rig& rig, int side, bool thick);
+// The side a pole holds the figure at (1 left, 2 right, 3 top, 4 bottom), 0 for none
+// (motion_anchors.cpp); `thick` as for pole_parts.
+int anchored_side(const Rig& rig, bool thick);
+// Where a bend of the whole figure is held: a pole's side, the base (4) of an upright figure or a
+// plant, 0 when it bends free (a fish, a bird, an insect).
+int bend_anchor(const Rig& rig, FigureClass figure);
+// Of several limbs, the one whose chain reaches kReachLead farther from the root's middle than
+// every other; -1 when none does (rig_queries.cpp).
+int reaching_out(const Rig& rig, const std::vector<int>& limbs);
+// Which limbs of a silhouette's skeleton a limb role bends (rig_queries.cpp).
+bool lobe_serves(LobeKind k, Target t);
 // The riders evenly spaced round the spinning `parts` (motion_frames.cpp, with the wheel loads).
 int spin_symmetry(const Rig& rig, const std::vector<int>& parts);
 // The oscillation of a back-and-forth action at phase u (in cycles) (motion_frames.cpp).

@@ -170,11 +170,7 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
       prev_was_verb = true;
       continue;
     }
-    if (is_preposition(w)) {
-      after_prep = true;
-      preposition = w;
-      continue;
-    }
+    if (is_preposition(w)) { after_prep = true, preposition = w; continue; }
     if (is_filler_word(w)) continue;
     // Not in the vocabulary: the lexicon, as a verb in a verb's place. Not in a noun's: inside
     // a prepositional phrase ("with black dots"), or as the subject of a verb after it ("horses
