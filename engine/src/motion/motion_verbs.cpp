@@ -26,7 +26,7 @@ const std::vector<Verb> kVerbs = {
   {"clap",    {"clap"},                         {{P::Swing, T::Arms, 22, 4, Pr::Mirrored}}, P::Swing},
   {"cheer",   {"cheer", "celebrat", "rejoic"},  {{P::Swing, T::Arms, 32, 3, Pr::Mirrored}, {P::Hop, T::Whole, 0.03, 3}}, P::Swing},
   {"punch",   {"punch", "box", "jab", "fight", "fenc", "thrust", "stab", "pok"}, {{P::Swing, T::Arms, 26, 3, Pr::OneAtATime}, {P::Swing, T::Root, 1.5, 3}}, P::Swing},  // the body turns into each punch about the hips, the legs planted (motion_plan.h), a little: at 4 degrees a boxer's body and head outweighed his fist; one fist, the other keeps guard
-  {"throw",   {"throw", "threw", "toss", "hurl", "fling", "flung", "pitch"}, {{P::Swing, T::Arms, 40, 1, Pr::OneSide}}, P::Swing},  // one arm swings over and back
+  {"throw",   {"throw", "threw", "hurl", "fling", "flung"}, {{P::Swing, T::Arms, 40, 1, Pr::OneSide}}, P::Swing},  // one arm swings over and back; not "toss" nor "pitch": fronds toss in the wind, boats pitch
   {"lift",    {"lift", "rais", "hold"},         {{P::Swing, T::Arms, 24, 2, Pr::Mirrored}}, P::Swing},
   {"reach",   {"reach", "spread"},              {{P::Swing, T::Arms, 20, 1, Pr::Mirrored}}, P::Swing},
   {"pump",    {"pump"},                         {{P::Swing, T::Arms, 20, 2, Pr::Alternating}}, P::Swing},
