@@ -21,6 +21,19 @@ namespace {
 
 std::string data(const char* name) { return std::string(SVGM_TEST_DATA) + "/motion/" + name; }
 
+// Largest displacement from frame 0 of the points of each path of `scene`, over F frames.
+std::vector<double> path_travel(const Scene& scene, const std::vector<Vec2>& pts, int F) {
+  const size_t per = pts.size() / F;
+  std::vector<double> out(scene.paths.size(), 0);
+  size_t i = 0;
+  for (size_t p = 0; p < scene.paths.size(); ++p)
+    for (const auto& sp : scene.paths[p].subpaths)
+      for (size_t q = 0; q < sp.points.size(); ++q, ++i)
+        for (int f = 1; f < F; ++f)
+          out[p] = std::max(out[p], std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
+  return out;
+}
+
 struct Fixture {
   Scene scene;
   Rig rig;
@@ -29,17 +42,7 @@ struct Fixture {
     return plan_from_prompt(parse_prompt(prompt), rig, seed);
   }
   // Largest displacement from frame 0 of the points of each scene path.
-  std::vector<double> travel(const std::vector<Vec2>& pts, int F) const {
-    const size_t per = pts.size() / F;
-    std::vector<double> out(scene.paths.size(), 0);
-    size_t i = 0;
-    for (size_t p = 0; p < scene.paths.size(); ++p)
-      for (const auto& sp : scene.paths[p].subpaths)
-        for (size_t q = 0; q < sp.points.size(); ++q, ++i)
-          for (int f = 1; f < F; ++f)
-            out[p] = std::max(out[p], std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
-    return out;
-  }
+  std::vector<double> travel(const std::vector<Vec2>& pts, int F) const { return path_travel(scene, pts, F); }
   size_t first_point(int path) const {
     size_t i = 0;
     for (int p = 0; p < path; ++p)
@@ -877,12 +880,7 @@ TEST_CASE("a flagpole drawn as a thick bar still holds the flag; a tall thin bar
   CHECK(plan.actions[0].anchored == 1);
   const int F = 13;
   fit_plan(s, rig, plan, F, 9);
-  const auto pts = animate_plan(s, rig, plan, F);
-  const size_t per = pts.size() / F;
-  double pole = 0;
-  for (int f = 0; f < F; ++f)
-    for (size_t i = 0; i < s.paths[0].subpaths[0].points.size(); ++i) pole = std::max(pole, std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
-  CHECK(pole == 0.0);
+  CHECK(path_travel(s, animate_plan(s, rig, plan, F), F)[0] == 0.0);  // the pole
   // A bar in the middle of the figure (not starting at a side) is no pole.
   const Scene mid = read_svg_string(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="48" height="48">
@@ -942,32 +940,16 @@ TEST_CASE("a figure moving on a ground the prompt names leaves the band drawn th
   CHECK(band == std::vector<char>{1, 1, 0, 0});
   const int F = 13;
   fit_plan(s, rig, plan, F, 9);
-  const auto pts = animate_plan(s, rig, plan, F);
-  const size_t per = pts.size() / F;
-  auto travel = [&](int path) {
-    size_t first = 0;
-    for (int p = 0; p < path; ++p)
-      for (const auto& sp : s.paths[p].subpaths) first += sp.points.size();
-    size_t n = 0;
-    for (const auto& sp : s.paths[path].subpaths) n += sp.points.size();
-    double m = 0;
-    for (int f = 0; f < F; ++f)
-      for (size_t i = first; i < first + n; ++i) m = std::max(m, std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
-    return m;
-  };
-  CHECK(travel(0) == 0.0);
-  CHECK(travel(1) == 0.0);
-  CHECK(travel(2) > 1.0);
-  CHECK(travel(3) > 1.0);
+  const std::vector<double> travel = path_travel(s, animate_plan(s, rig, plan, F), F);
+  CHECK(travel[0] == 0.0);
+  CHECK(travel[1] == 0.0);
+  CHECK(travel[2] > 1.0);
+  CHECK(travel[3] > 1.0);
   // Said without a ground, the sea bobs with the boat (it is part of the figure).
   MotionPlan bare = plan_from_prompt(parse_prompt("the sailboat bobs"), rig, 1);
   CHECK(bare.ground.empty());
   fit_plan(s, rig, bare, F, 9);
-  const auto moved = animate_plan(s, rig, bare, F);
-  double sea = 0;
-  for (int f = 0; f < F; ++f)
-    for (size_t i = 0; i < s.paths[0].subpaths[0].points.size(); ++i) sea = std::max(sea, std::hypot(moved[f * per + i].x - moved[i].x, moved[f * per + i].y - moved[i].y));
-  CHECK(sea > 1.0);
+  CHECK(path_travel(s, animate_plan(s, rig, bare, F), F)[0] > 1.0);  // the sea
 }
 
 TEST_CASE("a compact figure swims with its lower limbs; its head holds; named tentacles drop the swim's slide") {
