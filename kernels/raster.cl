@@ -353,7 +353,10 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
   /* One work-group per (band, frame). Clearing and the final write are spread over the group's
    * work-items (PoCL vectorises such loops across work-items); the draw loop, which must run
    * in paint order, is done by work-item 0. */
-  const int band = get_group_id(0), k = get_group_id(1);
+  /* k: the frame whose geometry is drawn; slot: where its image goes. A launch offset to a
+   * chunk of frames (ClRaster::render_frames) writes them at slots 0.., so the output holds that
+   * chunk alone; without an offset the two are the same. */
+  const int band = get_group_id(0), k = get_global_id(1), slot = get_group_id(1);
   const int lid = get_local_id(0), lsize = get_local_size(0);
   const int y0 = band * BAND_H, rows = min(BAND_H, height - y0);
   const float fy0 = (float)y0, fy1 = (float)(y0 + rows), fw = (float)width;
@@ -394,7 +397,7 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
   }
   }
   barrier(CLK_LOCAL_MEM_FENCE);
-  write_band(band_rgba, hull, image, rgba8, extents, background, out_mode, k, y0, rows, width,
+  write_band(band_rgba, hull, image, rgba8, extents, background, out_mode, slot, y0, rows, width,
              height, lid, lsize);
 }
 

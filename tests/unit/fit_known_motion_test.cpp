@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 
 #include <unistd.h>
@@ -135,6 +136,12 @@ TEST_CASE("known motion: rotation, scale, projective warp and bend are recovered
 
   const auto renders = fitter.render_keyframes();
   const size_t px = 96 * 96;
+  // The final renders one keyframe at a time (fit_outputs.cpp) have every render's bits.
+  for (int k = 0; k < K; ++k) {
+    const std::vector<float> one = fitter.render_keyframe(k);
+    REQUIRE(one.size() == px * 4);
+    CHECK(std::memcmp(one.data(), &renders[k * px * 4], px * 4 * sizeof(float)) == 0);
+  }
   for (int k = 0; k < K; ++k) {
     std::vector<float> fit(px * 4);
     for (size_t p = 0; p < px; ++p) {  // composite the premultiplied render on white

@@ -1,7 +1,7 @@
 // The loss's memory (ClRaster::set_targets, release_loss_buffers, set_loss_chunk_frames): the
 // raster keeps no copy of the targets, frees its pixel-sized loss buffers on request and holds
 // the residuals of a few frames at a time, and none of it changes a bit of the loss or the
-// gradient.
+// gradient; renders of a few frames (render_frames) hold only those frames, with their bits.
 #include <doctest/doctest.h>
 
 #include <cstring>
@@ -183,6 +183,35 @@ TEST_CASE("release_image: the Float renders' buffer goes once read, and the next
   r.release_image();  // a second release is a no-op
   r.forward();
   CHECK(same_bits(r.read_image(), first));
+}
+
+TEST_CASE("render_frames: a chunk of frames alone has the bits a Float forward of every frame gives them, and holds nothing after") {
+  const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
+  ClRaster r(runtime(), plan, kK);
+  r.set_control_points(shifted(plan, 0.5f, 0.75f));
+  r.set_active_frames(kK);
+  r.forward();
+  const std::vector<float> all = r.read_image();
+  r.release_image();
+  const size_t before = r.device_bytes();
+  const size_t frame = size_t{kW} * kH * 4;
+  for (int first = 0; first < kK; ++first)
+    for (int count = 1; first + count <= kK; ++count) {
+      CAPTURE(first);
+      CAPTURE(count);
+      const std::vector<float> part = r.render_frames(first, count, {0, 0, 0, 0});
+      const std::vector<float> want(all.begin() + static_cast<std::ptrdiff_t>(first * frame),
+                                    all.begin() + static_cast<std::ptrdiff_t>((first + count) * frame));
+      CHECK(same_bits(part, want));
+      CHECK(r.device_bytes() == before);  // its output is gone once read
+    }
+  // Frames are drawn whatever the active count (the fitter's final renders of any keyframe).
+  r.set_active_frames(1);
+  CHECK(same_bits(r.render_frames(2, 1, {0, 0, 0, 0}),
+                  std::vector<float>(all.begin() + static_cast<std::ptrdiff_t>(2 * frame), all.end())));
+  CHECK_THROWS_WITH_AS(r.render_frames(2, 2, {0, 0, 0, 0}), "internal: render_frames of frames 2..3 outside 0..2", Error);
+  // And they differ from frame to frame (the test would pass on one frame drawn three times otherwise).
+  CHECK_FALSE(same_bits(r.render_frames(0, 1, {0, 0, 0, 0}), r.render_frames(1, 1, {0, 0, 0, 0})));
 }
 
 TEST_CASE("loss chunks: a chunk of no frames is refused") {

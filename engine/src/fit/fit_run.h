@@ -182,7 +182,6 @@ struct FitRun {
   int iterations_done = 0;
   RenderSize final_size;
   double seconds = 0;
-  std::vector<float> renders;
   AnimationTiming timing;
   GateOptions gate_options;
   GateVerdict verdict;

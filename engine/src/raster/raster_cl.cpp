@@ -189,15 +189,48 @@ void ClRaster::forward(Output output, const std::array<float, 4>& background) {
   }
 }
 
-void ClRaster::enqueue_geometry() {
+void ClRaster::enqueue_geometry() { enqueue_geometry(0, active_); }
+
+void ClRaster::enqueue_geometry(int first, int count) {
   const auto& p = plan_;
-  const size_t K = static_cast<size_t>(active_);
+  const size_t K = static_cast<size_t>(count);
   const size_t wg = 64;  // a multiple of every device's preferred work-group granularity
-  if (p.n_flat > 0) launch("flatten", k_flatten_, cl::NDRange(round_up(p.n_flat, wg), K));
-  if (!p.strokes.empty()) launch("stroke", k_stroke_, cl::NDRange(round_up(p.strokes.size(), 8), K));
-  if (p.n_lines > 0) launch("gather_lines", k_lines_, cl::NDRange(round_up(p.n_lines, wg), K));
+  // Each kernel reads its frame from get_global_id(1): the offset picks the frames.
+  const cl::NDRange at = first ? cl::NDRange(0, first) : cl::NullRange;
+  if (p.n_flat > 0) launch("flatten", k_flatten_, cl::NDRange(round_up(p.n_flat, wg), K), cl::NullRange, at);
+  if (!p.strokes.empty())
+    launch("stroke", k_stroke_, cl::NDRange(round_up(p.strokes.size(), 8), K), cl::NullRange, at);
+  if (p.n_lines > 0) launch("gather_lines", k_lines_, cl::NDRange(round_up(p.n_lines, wg), K), cl::NullRange, at);
   if (!p.chunk_lines.empty())
-    launch("chunk_bounds", k_bounds_, cl::NDRange(round_up(p.chunk_lines.size() / 2, wg), K));
+    launch("chunk_bounds", k_bounds_, cl::NDRange(round_up(p.chunk_lines.size() / 2, wg), K), cl::NullRange, at);
+}
+
+std::vector<float> ClRaster::render_frames(int first, int count, const std::array<float, 4>& background) {
+  if (first < 0 || count < 1 || first + count > frames_)
+    throw Error("internal: render_frames of frames " + std::to_string(first) + ".." +
+                std::to_string(first + count - 1) + " outside 0.." + std::to_string(frames_ - 1));
+  const auto& p = plan_;
+  const size_t pixels = static_cast<size_t>(count) * p.height * p.width;
+  std::vector<float> out(pixels * 4);
+  events_.clear();
+  try {
+    // The chunk's own output, gone when this returns: image_ (every frame's) is not made.
+    cl::Buffer img(rt_.context(), CL_MEM_READ_WRITE, out.size() * sizeof(float));
+    k_raster_.setArg(8, img);
+    k_raster_.setArg(9, img);
+    k_raster_.setArg(10, img);
+    k_raster_.setArg(11, cl_float4{{background[0], background[1], background[2], background[3]}});
+    k_raster_.setArg(12, static_cast<int>(Output::Float));
+    enqueue_geometry(first, count);
+    // The raster kernel writes frame first + j at slot j (its work-group's index).
+    launch("raster", k_raster_, cl::NDRange(bands_ * group_, count), cl::NDRange(group_, 1),
+           first ? cl::NDRange(0, first) : cl::NullRange);
+    rt_.queue().enqueueReadBuffer(img, CL_TRUE, 0, out.size() * sizeof(float), out.data());
+  } catch (const cl::Error& e) {
+    throw Error(std::string("OpenCL rasteriser launch failed on ") + rt_.info().name + ": " +
+                e.what() + " " + cl_status_name(e.err()));
+  }
+  return out;
 }
 
 void ClRaster::launch(const char* name, cl::Kernel& k, const cl::NDRange& global,

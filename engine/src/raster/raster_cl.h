@@ -64,6 +64,12 @@ class ClRaster {
   // Frees the Float images (16 bytes per pixel and frame, in host memory under PoCL) once they
   // are read; the next Float forward makes them again.
   void release_image();
+  // Premultiplied float RGBA renders of frames first .. first + count − 1 alone, over
+  // `background` (count * height * width * 4 floats, the bits a Float forward gives those
+  // frames): the launches are offset to them and the device holds only their images, freed
+  // before this returns. Frames at or past active_frames() are drawn too (their control points
+  // as they stand).
+  std::vector<float> render_frames(int first, int count, const std::array<float, 4>& background);
 
   // With a profiling runtime: milliseconds each kernel of the last forward() took on the device.
   std::vector<std::pair<std::string, double>> kernel_times() const;
@@ -125,6 +131,8 @@ class ClRaster {
   void make_loss_buffers();
   // flatten, stroke, gather_lines and chunk_bounds for the active frames.
   void enqueue_geometry();
+  // The same for frames first .. first + count − 1.
+  void enqueue_geometry(int first, int count);
   // The fit's forward pass (kernels/raster_backward.cl, raster_taped): the residual output and
   // each band's tape, kept in the tape pool for raster_backward.
   void forward_taped(const std::array<float, 4>& background);

@@ -376,13 +376,13 @@ std::vector<double> Fitter::keyframe_points_canvas() {
 std::vector<float> Fitter::render_keyframes() {
   enqueue_motion(active_);
   raster_->set_active_frames(active_);
-  raster_->forward(ClRaster::Output::Float, kWhite);
-  auto img = raster_->read_image();
-  // The caller holds the renders now: the device's copy goes (the final renders of a
-  // 16-keyframe fit at 512 px are 67 MB each side).
-  raster_->release_image();
-  img.resize(static_cast<size_t>(active_) * size_.width * size_.height * 4);
-  return img;
+  return raster_->render_frames(0, active_, kWhite);
+}
+
+std::vector<float> Fitter::render_keyframe(int k) {
+  if (k < 0 || k >= K_) throw Error("internal: render_keyframe " + std::to_string(k) + " of " + std::to_string(K_));
+  enqueue_motion(k + 1);
+  return raster_->render_frames(k, 1, kWhite);
 }
 
 std::vector<float> Fitter::keyframe_losses() { return raster_->read_frame_losses(); }

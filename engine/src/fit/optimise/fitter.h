@@ -233,6 +233,10 @@ class Fitter {
   std::vector<double> keyframe_points_canvas();
   // Premultiplied float renders of every active keyframe (for previews), K * H * W * 4.
   std::vector<float> render_keyframes();
+  // Keyframe k's alone, H * W * 4 (the same bits as its part of render_keyframes; one not yet
+  // active is drawn as its parameters stand): the final renders one at a time, 16 bytes per
+  // pixel instead of per pixel and keyframe.
+  std::vector<float> render_keyframe(int k);
   // Per-keyframe image losses of the last iteration.
   std::vector<float> keyframe_losses();
   // Per-keyframe image losses of the current parameters, every keyframe evaluated (active or

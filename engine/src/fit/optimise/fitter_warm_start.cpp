@@ -56,12 +56,8 @@ void Fitter::warm_start(int k, int src) {
   // The source keyframe as fitted so far (the previous one, or k itself as copied): its
   // render and its control points.
   enqueue_motion(src + 1);
-  raster_->set_active_frames(src + 1);
-  raster_->forward(ClRaster::Output::Float, kWhite);
-  const auto img = raster_->read_image_frame(src);
-  // The loss passes have buffers of their own: the renders' (16 bytes per pixel and keyframe)
-  // would otherwise stay beside them for the rest of the fit.
-  raster_->release_image();
+  // That keyframe alone (16 bytes per pixel, not per pixel and keyframe up to src).
+  const auto img = raster_->render_frames(src, 1, kWhite);
   std::vector<float> cp(static_cast<size_t>(plan_.n_cp) * 2);
   q.enqueueReadBuffer(raster_->cp_buffer(), CL_TRUE, static_cast<size_t>(src) * plan_.n_cp * 2 * sizeof(float),
                       cp.size() * sizeof(float), cp.data());

@@ -128,6 +128,16 @@ std::string ranges(const std::vector<int>& ks) {
 GateVerdict judge_fit(const TargetFrames& target, const std::vector<float>& renders,
                       const std::vector<double>& points, const RasterPlan& plan, const Scene& scene,
                       const Affine& view, const GateOptions& o) {
+  const size_t frame = static_cast<size_t>(target.width) * target.height * 4;
+  return judge_fit(target, [&](int k) {
+    const auto at = renders.begin() + static_cast<std::ptrdiff_t>(static_cast<size_t>(k) * frame);
+    return std::vector<float>(at, at + static_cast<std::ptrdiff_t>(frame));
+  }, points, plan, scene, view, o);
+}
+
+GateVerdict judge_fit(const TargetFrames& target, const std::function<std::vector<float>(int)>& render,
+                      const std::vector<double>& points, const RasterPlan& plan, const Scene& scene,
+                      const Affine& view, const GateOptions& o) {
   GateVerdict v;
   const int K = target.keyframes, W = target.width, H = target.height;
   const size_t px = static_cast<size_t>(W) * H;
@@ -163,7 +173,8 @@ GateVerdict judge_fit(const TargetFrames& target, const std::vector<float>& rend
     // Fidelity. The figure is what differs from the frame's background (the median of its
     // border pixels), in the target and in the fit alike, so an off-white or drifting
     // background and white parts of the drawing count the same on both sides.
-    const float* r = &renders[static_cast<size_t>(k) * px * 4];
+    const std::vector<float> rendered = render(k);
+    const float* r = rendered.data();
     const float* t = &target.rgba[static_cast<size_t>(k) * px * 4];
     const float* raw = &target.raw[static_cast<size_t>(k) * px * 4];
     const std::array<float, 3> bg = border_median_rgb(raw, W, H);

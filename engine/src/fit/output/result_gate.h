@@ -19,9 +19,11 @@
 // moving target about 20 dB), so the gate never vetoes a fit a user would keep.
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include <functional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "raster/raster_plan.h"
 #include "svgmotion/scene.h"
@@ -57,6 +59,11 @@ struct GateVerdict {
 // `points`: K * plan.n_cp canvas-space (x, y) pairs (Fitter::keyframe_points_canvas);
 // `scene`: the fitted scene (rest pose, canvas space); `view`: canvas -> target pixels.
 GateVerdict judge_fit(const TargetFrames& target, const std::vector<float>& renders,
+                      const std::vector<double>& points, const RasterPlan& plan, const Scene& scene,
+                      const Affine& view, const GateOptions& options = {});
+// The same with keyframe k's render made when it is judged (`render(k)`: H * W * 4 floats, as
+// Fitter::render_keyframe), so one keyframe's render exists at a time.
+GateVerdict judge_fit(const TargetFrames& target, const std::function<std::vector<float>(int)>& render,
                       const std::vector<double>& points, const RasterPlan& plan, const Scene& scene,
                       const Affine& view, const GateOptions& options = {});
 
