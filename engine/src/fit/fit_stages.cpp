@@ -189,6 +189,11 @@ void FitRun::add_keyframes_from_target() {
     key_report["worst_frame"] = choice.worst_frame;
     key_report["worst_db"] = choice.worst_db;
     if (!choice.added.empty()) {
+      // The refinement's target, read at the first keyframes for the chroma weight's
+      // calibration, is read again at these (prepare_fine): it goes now rather than after the
+      // stage below (37 bytes per pixel and first keyframe at the finer width: 145 MB for 15
+      // at 512 px, held beside this stage's own target and the denoised frames it keeps).
+      fine_target.reset();
       activity("reading the " + std::to_string(choice.frames.size()) + " keyframes chosen");
       TargetOptions o = to;
       o.frames = choice.frames;
@@ -256,6 +261,13 @@ void FitRun::refine() {
     // after the load's checks: 5 bytes per pixel and keyframe (21 MB for 16 keyframes at 512 px).
     std::vector<float>().swap(fine_target->sdf);
     std::vector<uint8_t>().swap(fine_target->mask);
+    // The coarse target from here on is the guard's loss (its rgba) and the clip's timing: the
+    // gate and the preview judge the refined fit against the finer target. Its frames before
+    // cleanup, distance field and mask go (21 bytes per pixel and keyframe at the coarse width).
+    TargetFrames& coarse_frames = coarse_target == &target ? target : *keyed_target;
+    std::vector<float>().swap(coarse_frames.raw);
+    std::vector<float>().swap(coarse_frames.sdf);
+    std::vector<uint8_t>().swap(coarse_frames.mask);
     const double scale = static_cast<double>(fine_size.width) / size.width;
     fine->adopt_coarse(cfit, scale);
     log::debug("fit: refining every keyframe at %dx%d for %d iterations", fine_size.width, fine_size.height,
