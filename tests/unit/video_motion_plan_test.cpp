@@ -1460,4 +1460,26 @@ TEST_CASE("a head swivels by turning on its neck and back, not round") {
   CHECK(fx.rig.parts[a.parts[0]].role == Role::Head);
 }
 
+TEST_CASE("'dribbles the ball, bouncing it': the ball, the widest round part, bounces; the player and his round knee hold") {
+  const Fixture fx("dribble.svg");
+  std::vector<int> round;
+  for (size_t i = 0; i < fx.rig.parts.size(); ++i)
+    if (fx.rig.parts[i].round) round.push_back(static_cast<int>(i));
+  REQUIRE(round.size() == 2);
+  const MotionPlan plan = fx.plan("he dribbles the ball, bouncing it off the floor");
+  REQUIRE(!plan.actions.empty());  // the two clauses' bounce is one (the same on the same part)
+  for (const auto& a : plan.actions) {
+    CHECK(a.verb == "bounce");
+    CHECK(a.primitive == Primitive::Hop);
+    REQUIRE(a.parts.size() == 1);
+    CHECK(fx.rig.parts[a.parts[0]].box.w() > 45);  // the ball (50 wide), not the knee (36)
+  }
+  const auto t = fx.travel(animate_plan(fx.scene, fx.rig, plan, 13), 13);
+  CHECK(t[1] > 5);
+  CHECK(t[0] == doctest::Approx(0).epsilon(0.001));
+  CHECK(t[2] == doctest::Approx(0).epsilon(0.001));
+  // Balls, plural: every large round part.
+  CHECK(fx.plan("he bounces the balls").actions.at(0).parts.size() == 2);
+}
+
 }  // TEST_SUITE
