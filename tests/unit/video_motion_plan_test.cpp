@@ -1482,4 +1482,18 @@ TEST_CASE("'dribbles the ball, bouncing it': the ball, the widest round part, bo
   CHECK(fx.plan("he bounces the balls").actions.at(0).parts.size() == 2);
 }
 
+TEST_CASE("'thrusts his foil forward': forward is the side the arm reaches out to; without the word the seed picks") {
+  const Fixture fx("fencer_outline.svg");
+  std::set<int> sides, forward;
+  for (uint32_t seed = 0; seed < 8; ++seed) {
+    const MotionPlan f = fx.plan("the fencer thrusts his foil forward", seed);
+    REQUIRE(!f.actions.empty());
+    forward.insert(f.actions[0].region_side);
+    CHECK(!f.actions[0].lobes.empty());
+    sides.insert(fx.plan("the fencer thrusts his foil", seed).actions.at(0).region_side);
+  }
+  CHECK(forward == std::set<int>{-1});  // the sword arm, at the viewer's left
+  CHECK(sides == std::set<int>{-1, 1});
+}
+
 }  // TEST_SUITE
