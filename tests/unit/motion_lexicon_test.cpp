@@ -287,4 +287,19 @@ TEST_CASE("parse: 'forward' is a direction, not a noun (a basketball forward is 
   CHECK(noun_named(c, "foil")->after_verb);
 }
 
+TEST_CASE("parse: what hangs from something sways under it ('the sloth hangs from the branch'), it does not sink") {
+  if (!wordnet_or_skip()) return;
+  const ParsedPrompt p = parse_prompt("the sloth hangs from the branch and sways slowly");
+  REQUIRE(p.clauses.size() == 2);
+  const Clause& c = p.clauses[0];
+  CHECK(verb_names(c) == std::vector<std::string>{"sway"});
+  CHECK(c.figure == FigureClass::Quadruped);
+  const PromptNoun* branch = noun_named(c, "branch");
+  REQUIRE(branch);
+  CHECK(branch->object_of_preposition);
+  CHECK(branch->preposition == "from");
+  CHECK(verb_names(p.clauses[1]) == std::vector<std::string>{"sway"});
+  CHECK(p.clauses[1].mods.speed == 0.5);
+}
+
 }  // TEST_SUITE

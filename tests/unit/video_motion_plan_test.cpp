@@ -1480,6 +1480,11 @@ TEST_CASE("'dribbles the ball, bouncing it': the ball, the widest round part, bo
   CHECK(t[2] == doctest::Approx(0).epsilon(0.001));
   // Balls, plural: every large round part.
   CHECK(fx.plan("he bounces the balls").actions.at(0).parts.size() == 2);
+  // A ball a limb's verb acts on goes with the limb: the arm throws, the ball does not swing alone.
+  const MotionPlan thrown = fx.plan("the player throws the ball");
+  REQUIRE(!thrown.actions.empty());
+  CHECK(thrown.actions[0].verb == "throw");
+  CHECK(thrown.actions[0].target == Target::Arms);
 }
 
 TEST_CASE("'thrusts his foil forward': forward is the side the arm reaches out to; without the word the seed picks") {

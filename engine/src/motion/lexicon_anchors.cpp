@@ -22,6 +22,9 @@ const std::vector<VerbAnchor> kVerbAnchors = {
   // "dribble" is first a liquid's drip in WordNet (read as pour, a fall); dribbling a ball, its
   // third sense, is what a drawing of it shows: the ball bouncing.
   {"dribble", "bounce"},
+  // "hang" is first to be suspended (a state), read up WordNet's graph as sink; what hangs from
+  // something, drawn, swings to and fro under it ("the sloth hangs from the branch").
+  {"hang", "sway"},
 };
 
 const std::vector<NounAnchor> kNounAnchors = {

@@ -707,7 +707,11 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
     for (const Verb* v : c.verbs)
       for (size_t i = 0; i < v->actions.size(); ++i) {
         const Action& act = v->actions[i];
-        const bool retarget = i == 0 && have;
+        // A ball a limb's verb acts on ("throws the ball", "kicks the ball") goes with the limb:
+        // the arm or the leg moves, not the ball in its place. A whole-figure verb's ball is what
+        // moves ("bounces the ball").
+        const bool handled = target == Target::Wheels && word_matches(target_word, "ball") && is_limb_target(act.target);
+        const bool retarget = i == 0 && have && !handled;
         if (i == 0 && !have && act.target == Target::Whole && aimed.count(v->name)) {
           restated.push_back("'" + c.text + "'");
           break;
