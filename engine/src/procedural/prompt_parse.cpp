@@ -231,9 +231,9 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
     if (lexicon.has_wordnet() && verb_form && !noun_place && !after_prep && !before_verb) {
       VerbReading r = is_particle(next) ? lexicon.phrasal_verb(w, next) : VerbReading{};
       const std::string said = r.verb ? w + " " + next : w;
-      // Said of a thing that moves by itself (rain, fire, lightning; no creature, no vessel:
-      // the same kinds as a verb made from a noun, lexicon.cpp), a verb the vocabulary does not
-      // list is how that thing moves: "rain lashes down" falls, "lightning strikes" flickers.
+      // Said of fire or water, which move by themselves (rain, flames, lightning; not a creature
+      // or a vessel, which do many things), a verb the vocabulary does not list is how that
+      // thing moves: "rain lashes down" falls, "lightning strikes" flickers.
       const PromptNoun* subj = after_noun_word && !c.nouns.empty() ? &c.nouns.back() : nullptr;
       if (!r.verb && subj && subj->motion && !subj->object_of_preposition &&
           (subj->figure == FigureClass::Flame || subj->figure == FigureClass::Liquid))
