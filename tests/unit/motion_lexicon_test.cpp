@@ -196,4 +196,110 @@ TEST_CASE("lexicon: a word right before a part noun modifies it and is no part o
   CHECK(body);
 }
 
+// The subject, the verb, the direction and what the verb acts on, in prompts whose words the
+// planner misread (issue 35's suite: tw_storm, tw_climber, tw_dribble, om_fencer_thrust).
+namespace {
+const PromptNoun* noun_named(const Clause& c, const std::string& word) {
+  for (const auto& n : c.nouns)
+    if (n.word == word) return &n;
+  return nullptr;
+}
+}  // namespace
+
+TEST_CASE("parse: a vocabulary verb's word before a verb WordNet uses as one is the subject ('rain lashes down')") {
+  if (!wordnet_or_skip()) return;
+  const ParsedPrompt p = parse_prompt("lightning strikes and rain lashes down");
+  REQUIRE(p.clauses.size() == 2);
+  // "rain" is who lashes, not the verb fall; "lashes" is how the rain moves, not eyelashes (a face).
+  const Clause& rain = p.clauses[1];
+  CHECK(verb_names(rain) == std::vector<std::string>{"fall"});
+  CHECK(rain.verb_words == std::vector<std::string>{"lashes->fall"});
+  CHECK(rain.figure == FigureClass::Liquid);
+  REQUIRE(noun_named(rain, "rain"));
+  CHECK_FALSE(noun_named(rain, "lashes"));
+  CHECK(rain.mods.vertical == -1);
+  // Lightning is a flash: it strikes as it moves by itself, not as "move" (WordNet's strike).
+  CHECK(verb_names(p.clauses[0]) == std::vector<std::string>{"twinkle"});
+  CHECK(p.clauses[0].figure == FigureClass::Flame);
+  CHECK(std::count(p.readings.begin(), p.readings.end(), "'lashes' read as fall (what rain does)") == 1);
+  // Two words of one verb still say it once; a creature's verb stays its own ("the sloth hangs").
+  CHECK(verb_names(parse_prompt("rain falls").clauses.at(0)) == std::vector<std::string>{"fall"});
+  CHECK(verb_names(parse_prompt("the old man shuffles").clauses.at(0)) == std::vector<std::string>{"walk"});
+}
+
+TEST_CASE("parse: 'up the rock face' is the way up a thing, not the figure's face") {
+  if (!wordnet_or_skip()) return;
+  const ParsedPrompt p = parse_prompt("she climbs up the rock face");
+  REQUIRE(p.clauses.size() == 1);
+  const Clause& c = p.clauses[0];
+  CHECK(verb_names(c) == std::vector<std::string>{"climb"});
+  CHECK(c.mods.vertical == 1);
+  for (const auto& n : c.nouns) {
+    CHECK(n.target != Target::Head);
+    CHECK(n.object_of_preposition);
+    CHECK(n.preposition == "up");
+  }
+  REQUIRE(noun_named(c, "rock"));
+  // Without "up": the compound is still the rock, the verb's object, not a part of the figure.
+  const ParsedPrompt pd = parse_prompt("she climbs the rock face");
+  const Clause& d = pd.clauses.at(0);
+  REQUIRE(noun_named(d, "face"));
+  CHECK(noun_named(d, "face")->target == Target::Named);
+  // A possessive makes it the figure's own: "his robot arm" is an arm.
+  const ParsedPrompt pr = parse_prompt("he waves his robot arm");
+  const Clause& r = pr.clauses.at(0);
+  REQUIRE(noun_named(r, "arm"));
+  CHECK(noun_named(r, "arm")->target == Target::Arms);
+}
+
+TEST_CASE("parse: a pronoun after a verb is the last object ('dribbles the ball, bouncing it')") {
+  if (!wordnet_or_skip()) return;
+  const ParsedPrompt p = parse_prompt("he dribbles the ball, bouncing it off the floor");
+  REQUIRE(p.clauses.size() == 2);
+  const Clause& c = p.clauses[1];
+  CHECK(verb_names(c) == std::vector<std::string>{"bounce"});
+  const PromptNoun* ball = noun_named(c, "ball");
+  REQUIRE(ball);
+  CHECK(ball->after_verb);
+  CHECK_FALSE(ball->object_of_preposition);
+  // A ball is no arm: WordNet's {weapon, arm} is not the limb (a musket ball is a weapon).
+  CHECK(noun_named(p.clauses[0], "ball")->target == Target::Wheels);
+  REQUIRE(noun_named(c, "floor"));
+  CHECK(noun_named(c, "floor")->object_of_preposition);
+  CHECK(std::count(p.readings.begin(), p.readings.end(), "'it' read as the ball") == 1);
+  CHECK(Lexicon::shared().noun("arms").part->target == Target::Arms);
+  CHECK(Lexicon::shared().noun("sword").part == nullptr);
+  CHECK(Lexicon::shared().noun("bullet").part == nullptr);
+  // A ball is a round thing of the figure, as a wheel is; and what a dribbled ball does is bounce.
+  CHECK(ball->target == Target::Wheels);
+  CHECK(verb_names(p.clauses[0]) == std::vector<std::string>{"bounce"});
+}
+
+TEST_CASE("parse: 'forward' is a direction, not a noun (a basketball forward is a person)") {
+  if (!wordnet_or_skip()) return;
+  const ParsedPrompt p = parse_prompt("the fencer thrusts his foil forward");
+  const Clause& c = p.clauses.at(0);
+  CHECK(verb_names(c) == std::vector<std::string>{"punch"});
+  CHECK(c.figure == FigureClass::Biped);
+  CHECK_FALSE(noun_named(c, "forward"));
+  CHECK(std::count(c.mods.words.begin(), c.mods.words.end(), "forward") == 1);
+  REQUIRE(noun_named(c, "foil"));
+  CHECK(noun_named(c, "foil")->after_verb);
+}
+
+TEST_CASE("parse: what hangs from something sways under it ('the sloth hangs from the branch'), it does not sink") {
+  if (!wordnet_or_skip()) return;
+  const ParsedPrompt p = parse_prompt("the sloth hangs from the branch and sways slowly");
+  REQUIRE(p.clauses.size() == 2);
+  const Clause& c = p.clauses[0];
+  CHECK(verb_names(c) == std::vector<std::string>{"sway"});
+  CHECK(c.figure == FigureClass::Quadruped);
+  const PromptNoun* branch = noun_named(c, "branch");
+  REQUIRE(branch);
+  CHECK(branch->object_of_preposition);
+  CHECK(branch->preposition == "from");
+  CHECK(verb_names(p.clauses[1]) == std::vector<std::string>{"sway"});
+  CHECK(p.clauses[1].mods.speed == 0.5);
+}
+
 }  // TEST_SUITE

@@ -1460,4 +1460,45 @@ TEST_CASE("a head swivels by turning on its neck and back, not round") {
   CHECK(fx.rig.parts[a.parts[0]].role == Role::Head);
 }
 
+TEST_CASE("'dribbles the ball, bouncing it': the ball, the widest round part, bounces; the player and his round knee hold") {
+  const Fixture fx("dribble.svg");
+  std::vector<int> round;
+  for (size_t i = 0; i < fx.rig.parts.size(); ++i)
+    if (fx.rig.parts[i].round) round.push_back(static_cast<int>(i));
+  REQUIRE(round.size() == 2);
+  const MotionPlan plan = fx.plan("he dribbles the ball, bouncing it off the floor");
+  REQUIRE(!plan.actions.empty());  // the two clauses' bounce is one (the same on the same part)
+  for (const auto& a : plan.actions) {
+    CHECK(a.verb == "bounce");
+    CHECK(a.primitive == Primitive::Hop);
+    REQUIRE(a.parts.size() == 1);
+    CHECK(fx.rig.parts[a.parts[0]].box.w() > 45);  // the ball (50 wide), not the knee (36)
+  }
+  const auto t = fx.travel(animate_plan(fx.scene, fx.rig, plan, 13), 13);
+  CHECK(t[1] > 5);
+  CHECK(t[0] == doctest::Approx(0).epsilon(0.001));
+  CHECK(t[2] == doctest::Approx(0).epsilon(0.001));
+  // Balls, plural: every large round part.
+  CHECK(fx.plan("he bounces the balls").actions.at(0).parts.size() == 2);
+  // A ball a limb's verb acts on goes with the limb: the arm throws, the ball does not swing alone.
+  const MotionPlan thrown = fx.plan("the player throws the ball");
+  REQUIRE(!thrown.actions.empty());
+  CHECK(thrown.actions[0].verb == "throw");
+  CHECK(thrown.actions[0].target == Target::Arms);
+}
+
+TEST_CASE("'thrusts his foil forward': forward is the side the arm reaches out to; without the word the seed picks") {
+  const Fixture fx("fencer_outline.svg");
+  std::set<int> sides, forward;
+  for (uint32_t seed = 0; seed < 8; ++seed) {
+    const MotionPlan f = fx.plan("the fencer thrusts his foil forward", seed);
+    REQUIRE(!f.actions.empty());
+    forward.insert(f.actions[0].region_side);
+    CHECK(!f.actions[0].lobes.empty());
+    sides.insert(fx.plan("the fencer thrusts his foil", seed).actions.at(0).region_side);
+  }
+  CHECK(forward == std::set<int>{-1});  // the sword arm, at the viewer's left
+  CHECK(sides == std::set<int>{-1, 1});
+}
+
 }  // TEST_SUITE

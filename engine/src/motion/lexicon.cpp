@@ -57,6 +57,14 @@ std::vector<std::string> stem_lemmas(const std::string& stem) {
   return out;
 }
 
+// Whether a sense of a part noun's lemma means that part: the synset is named by the lemma
+// first, or lies in the lexicographer file of the lemma's first sense. "arm" 2 is the synset
+// {weapon, arm, weapon_system}: a weapon (a musket ball, a sword) is no arm ("dribbles the
+// ball" swung the player's arm); an airplane's {wing} stays a wing.
+bool names_it(const Synset& s, const std::string& lemma, int first_file) {
+  return (!s.words.empty() && s.words.front() == lemma) || s.lex_file == first_file;
+}
+
 }  // namespace
 
 const char* figure_class_name(FigureClass c) {
@@ -122,8 +130,11 @@ void Lexicon::claim_parts() {
   for (const PartNoun& p : part_nouns())
     for (const std::string& lemma : {p.stem, p.stem + "e", p.stem + "es"}) {
       const std::vector<uint32_t> senses = db_->senses(lemma, Pos::Noun);
+      const std::optional<Synset> first = senses.empty() ? std::nullopt : db_->synset(Pos::Noun, senses.front());
+      const int first_file = first ? first->lex_file : -1;
       for (size_t r = 0; r < std::min<size_t>(senses.size(), kPartSenses); ++r)
-        if (const auto s = db_->synset(Pos::Noun, senses[r]); s && in(kPartFiles, s->lex_file)) part_claims_.emplace(s->offset, &p);
+        if (const auto s = db_->synset(Pos::Noun, senses[r]); s && in(kPartFiles, s->lex_file) && names_it(*s, lemma, first_file))
+          part_claims_.emplace(s->offset, &p);
     }
 }
 

@@ -19,6 +19,12 @@ const std::vector<VerbAnchor> kVerbAnchors = {
   // "unfurl", "unfold": changes of shape; drawn, the thing lengthens.
   {"unfurl", "stretch"},
   {"unfold", "stretch"},
+  // "dribble" is first a liquid's drip in WordNet (read as pour, a fall); dribbling a ball, its
+  // third sense, is what a drawing of it shows: the ball bouncing.
+  {"dribble", "bounce"},
+  // "hang" is first to be suspended (a state), read up WordNet's graph as sink; what hangs from
+  // something, drawn, swings to and fro under it ("the sloth hangs from the branch").
+  {"hang", "sway"},
 };
 
 const std::vector<NounAnchor> kNounAnchors = {
@@ -50,6 +56,9 @@ const std::vector<NounAnchor> kNounAnchors = {
   {"fire", 1, F::Flame, "flicker"},
   {"fire", 3, F::Flame, "flicker"},
   {"source_of_illumination", 1, F::None, "flicker"},  // candle, lamp, lantern, torch
+  // WordNet's first lightning is the discharge (an electrical phenomenon), its second the flash;
+  // drawn, a bolt that flashes as a flame flickers.
+  {"lightning", 1, F::Flame, "flicker"},
   {"celestial_body", 1, F::Object, "twinkle"},        // sun, star, moon
   // Water and weather. A wave of the sea is a "movement" (an event) in WordNet.
   {"precipitation", 3, F::Liquid, "fall"},

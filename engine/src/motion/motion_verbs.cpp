@@ -96,6 +96,7 @@ const std::vector<PartNoun> kNouns = {
   {"tail", T::Tail},
   {"body", T::Root}, {"torso", T::Root}, {"trunk", T::Root}, {"hip", T::Root}, {"waist", T::Root},
   {"wheel", T::Wheels}, {"tire", T::Wheels}, {"tyre", T::Wheels},
+  {"ball", T::Wheels},  // a round thing of the figure, as a wheel is: it bounces, rolls, spins
   {"drop", T::Repeated}, {"raindrop", T::Repeated}, {"droplet", T::Repeated}, {"star", T::Repeated},
   {"snowflak", T::Repeated}, {"flak", T::Repeated}, {"bubbl", T::Repeated}, {"confetti", T::Repeated},
   {"background", T::Background},
@@ -152,6 +153,9 @@ bool apply_modifier(std::string_view w, Modifiers& m) {
   else if (in(w, {"rightward", "rightwards"})) m.travel = m.travel == -1 ? 0 : 1;
   else if (in(w, {"leftward", "leftwards"})) m.travel = m.travel == 1 ? 0 : -1;
   else if (in(w, {"away", "receding"})) m.depth = -1;
+  // The way the figure faces: the limb a thrust or a punch moves is the one the drawing shows
+  // reaching out (motion_plan.h), its forward side; the word says no more than that.
+  else if (in(w, {"forward", "forwards", "ahead", "onward", "onwards"})) {}
   else if (in(w, {"approaching", "closer", "nearer"})) m.depth = 1;
   else hit = false;
   if (hit) m.words.emplace_back(w);

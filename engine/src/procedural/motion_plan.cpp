@@ -70,6 +70,14 @@ bool too_small_to_swing(const Rig& rig, int p) {
   return std::hypot(b.w(), b.h()) < kVisibleTravel * std::hypot(rig.figure.w(), rig.figure.h());
 }
 
+// Whether the clause says the figure acts forward ("thrusts his foil forward"; apply_modifier
+// keeps the word and sets nothing: which side is forward is the drawing's).
+bool says_forward(const Modifiers& m) {
+  for (const auto& w : m.words)
+    if (w == "forward" || w == "forwards" || w == "ahead" || w == "onward" || w == "onwards") return true;
+  return false;
+}
+
 std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, std::string* note) {
   auto attached = [&] {
     std::vector<int> v;
@@ -107,10 +115,14 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
       double widest = 0;
       for (const auto& P : rig.parts)
         if (P.round && P.role != Role::Background) widest = std::max(widest, P.box.w());
+      // One ball ("dribbles the ball") is one round thing: the widest (a player's round knee
+      // beside it is no ball).
+      const bool one = word_matches(noun, "ball") && noun.back() != 's';
       std::vector<int> big;
       for (size_t i = 0; i < rig.parts.size(); ++i)
-        if (rig.parts[i].round && rig.parts[i].role != Role::Background && rig.parts[i].box.w() >= kWheelShare * widest)
+        if (rig.parts[i].round && rig.parts[i].role != Role::Background && rig.parts[i].box.w() >= (one ? 1.0 : kWheelShare) * widest)
           big.push_back(static_cast<int>(i));
+      if (one && big.size() > 1) big.resize(1);
       for (size_t i = 0; i < rig.parts.size(); ++i) {
         const RigPart& P = rig.parts[i];
         bool keep = std::find(big.begin(), big.end(), static_cast<int>(i)) != big.end();
@@ -449,6 +461,21 @@ struct Builder {
         target != Target::Head && target != Target::Tail) {
       // The figure's own side is drawn on the viewer's other side.
       a.region_side = mods.side != 0 ? -mods.side : ((rng() & 1) ? 1 : -1);
+      // "thrusts his foil forward": forward is the way the figure faces, the side to which a limb
+      // of this kind reaches out farthest across (the fencer's sword arm, not the hand he holds
+      // up behind him); the seed's coin stays drawn so the other draws do not change.
+      if (mods.side == 0 && says_forward(mods)) {
+        const ArmLobe* far = nullptr;
+        double best = 0;
+        auto consider = [&](const ArmLobe& l) {
+          if (const double across = std::fabs(l.tip.x - l.pivot.x); across > best) best = across, far = &l;
+        };
+        if (target == Target::Arms)
+          for (const ArmLobe& l : rig.parts[a.parts[0]].arm_lobes) consider(l);
+        for (const ArmLobe& l : rig.limbs)
+          if (lobe_serves(l.kind, target)) consider(l);
+        if (far) a.region_side = far->side;
+      }
     }
     // Arms drawn in the outline (part_rig.h) bend instead of the sides, when there is one on
     // every side that moves: a girl waving both arms has one lobe, her raised sleeve, and the
@@ -680,7 +707,11 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
     for (const Verb* v : c.verbs)
       for (size_t i = 0; i < v->actions.size(); ++i) {
         const Action& act = v->actions[i];
-        const bool retarget = i == 0 && have;
+        // A ball a limb's verb acts on ("throws the ball", "kicks the ball") goes with the limb:
+        // the arm or the leg moves, not the ball in its place. A whole-figure verb's ball is what
+        // moves ("bounces the ball").
+        const bool handled = target == Target::Wheels && word_matches(target_word, "ball") && is_limb_target(act.target);
+        const bool retarget = i == 0 && have && !handled;
         if (i == 0 && !have && act.target == Target::Whole && aimed.count(v->name)) {
           restated.push_back("'" + c.text + "'");
           break;

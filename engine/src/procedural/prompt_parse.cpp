@@ -97,8 +97,10 @@ bool ends_with(const std::string& w, const char* suffix) {
 // Words of one clause (lower case, letters only). `after_prep` says the clause continues a
 // prepositional phrase ("with black dots and black boots": "and" split it, and "boots" is
 // still what she is dressed with); on return, whether the clause ends inside one. Words the
-// lexicon could not place and what it read go to `out`.
-Clause read_clause(const std::vector<std::string>& words, bool& after_prep, ParsedPrompt& out) {
+// lexicon could not place and what it read go to `out`. `antecedent`: the last verb's object of
+// the clauses before, for a pronoun ("dribbles the ball, bouncing it"); null when none.
+Clause read_clause(const std::vector<std::string>& words, bool& after_prep, ParsedPrompt& out,
+                   const PromptNoun* antecedent) {
   const Lexicon& lexicon = Lexicon::shared();
   Clause c;
   FigureClass agent_figure = FigureClass::None;
@@ -126,11 +128,45 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
     }
     if (Modifiers probe = c.mods; apply_modifier(w, probe)) {
       c.mods = probe;
+      // "climbs up the rock face", "runs down the hill": the direction, and a phrase naming
+      // where the figure moves along (not what moves).
+      if ((w == "up" || w == "down") && is_determiner(next)) after_prep = true, preposition = w;
       continue;
+    }
+    // A pronoun after a verb is its object said again: "bouncing it" bounces the ball of
+    // "dribbles the ball" (the last object before it).
+    if ((w == "it" || w == "them") && after_verb) {
+      const PromptNoun* said = antecedent;
+      for (const PromptNoun& n : c.nouns)
+        if (n.after_verb && !n.object_of_preposition && !n.own_predicate) said = &n;
+      if (said) {
+        PromptNoun n = *said;
+        n.after_verb = true;
+        c.nouns.push_back(n);
+        modifier_noun.push_back(false);
+        out.readings.push_back("'" + w + "' read as the " + n.word);
+        continue;
+      }
     }
     // A known part noun is a noun even where its word could be a verb ("drops", "hands").
     if (const PartNoun* n = noun_for_word(w)) {
       const bool plural = (w.size() > n->stem.size() && w.back() == 's') || w == "feet" || w == "leaves";
+      // After a noun naming a thing, not a creature, that the verb acts on ("climbs the rock
+      // face", "reads the clock face"), a part noun ends a compound naming that thing: it is not
+      // the figure's part. Not after a possessive ("his robot arm": the figure's own).
+      const PromptNoun* thing = after_noun_word && !c.nouns.empty() ? &c.nouns.back() : nullptr;
+      if (thing && thing->target == Target::Named && thing->after_verb && !is_possessive(before2) &&
+          (thing->figure == FigureClass::Object || thing->figure == FigureClass::Scene)) {
+        PromptNoun head = *thing;
+        head.word = w;
+        head.plural = plural;
+        out.readings.push_back("'" + thing->word + " " + w + "' read as a " + thing->word + ", not the figure's " + w);
+        c.nouns.push_back(head);
+        modifier_noun.back() = true;
+        modifier_noun.push_back(false);
+        prev_was_noun = true;
+        continue;
+      }
       c.nouns.push_back({w, n->target, plural, after_prep, !c.verbs.empty()});
       if (after_prep) c.nouns.back().preposition = preposition;
       if (after_noun_word && !modifier_noun.empty()) modifier_noun.back() = true;
@@ -158,7 +194,12 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
     const bool bare = w.back() != 's' && !participle && !(w.size() > 3 && w.compare(w.size() - 2, 2, "ed") == 0);
     const bool next_third = next.size() > 3 && next.back() == 's' && next[next.size() - 2] != 's';
     const Verb* next_verb = next_third ? verb_for_word(next) : nullptr;
-    const bool subject = bare && next_verb && next_verb != verb_for_word(w);
+    // So is a vocabulary verb's word opening the clause or after an article when the next word
+    // is a verb the vocabulary does not list but WordNet uses mostly as one ("rain lashes down":
+    // the rain, lashing; not "rain" falling on eyelashes).
+    const bool next_verb_only = next_third && !next_verb && lexicon.has_wordnet() && lexicon.knows_verb(next) &&
+                                lexicon.tagged_senses(next, wordnet::Pos::Verb) > lexicon.tagged_senses(next, wordnet::Pos::Noun);
+    const bool subject = bare && ((next_verb && next_verb != verb_for_word(w)) || ((prev_was_start || after_determiner) && next_verb_only));
     const bool noun_place = ((after_determiner || after_preposition) && !participle) || object;
     const Verb* v = noun_place || subject ? nullptr : verb_for_word(w);
     if (v) {
@@ -190,13 +231,20 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
     if (lexicon.has_wordnet() && verb_form && !noun_place && !after_prep && !before_verb) {
       VerbReading r = is_particle(next) ? lexicon.phrasal_verb(w, next) : VerbReading{};
       const std::string said = r.verb ? w + " " + next : w;
+      // Said of fire or water, which move by themselves (rain, flames, lightning; not a creature
+      // or a vessel, which do many things), a verb the vocabulary does not list is how that
+      // thing moves: "rain lashes down" falls, "lightning strikes" flickers.
+      const PromptNoun* subj = after_noun_word && !c.nouns.empty() ? &c.nouns.back() : nullptr;
+      if (!r.verb && subj && subj->motion && !subj->object_of_preposition &&
+          (subj->figure == FigureClass::Flame || subj->figure == FigureClass::Liquid))
+        r = {subj->motion, "what " + subj->word + " does", 0};
       if (!r.verb) r = lexicon.verb(w);
       if (r.verb) {
         if (std::find(c.verbs.begin(), c.verbs.end(), r.verb) == c.verbs.end()) {
           c.verbs.push_back(r.verb);
           c.verb_words.push_back(said + "->" + r.verb->name);
         }
-        out.readings.push_back("'" + said + "' read as " + r.verb->name + (r.via == "anchor" ? "" : " (WordNet: " + r.via + ")"));
+        out.readings.push_back("'" + said + "' read as " + r.verb->name + (r.via == "anchor" ? "" : r.via.rfind("what ", 0) == 0 ? " (" + r.via + ")" : " (WordNet: " + r.via + ")"));
         after_prep = false;
         prev_was_verb = true;
         continue;
@@ -314,7 +362,11 @@ ParsedPrompt parse_prompt(const std::string& prompt) {
   for (size_t i = 0; i < raw.size(); ++i) {
     if (raw[i].empty()) continue;
     bool after_prep = prep_open && after_and[i];
-    clauses.push_back(read_clause(raw[i], after_prep, out));
+    const PromptNoun* antecedent = nullptr;
+    for (const Clause& c : clauses)
+      for (const PromptNoun& n : c.nouns)
+        if (n.after_verb && !n.object_of_preposition && !n.own_predicate) antecedent = &n;
+    clauses.push_back(read_clause(raw[i], after_prep, out, antecedent));
     prep_open = after_prep && clauses.back().verbs.empty();
   }
   // A clause without a verb joins the one before it (or, first in the prompt, the one after).
