@@ -105,13 +105,13 @@ TEST_CASE("compact lottie: still paths static, a turning part keyed on its group
 
   const auto disc = group_of(j, "disc");
   CHECK(item(disc, "sh")["ks"]["a"] == 0);
-  CHECK(item(disc, "tr") == nlohmann::json{{"ty", "tr"}});  // identity: the players' defaults
+  CHECK(item(disc, "tr") == nlohmann::json::parse(R"({"ty":"tr","o":{"a":0,"k":100}})"));  // identity: defaults
 
   // The arm: its shape static in a group of its own turning about the shoulder with fewer keys
   // than values; its fill after that group, in the layer's.
   const auto arm = group_of(j, "arm");
   CHECK(item(arm, "fl") != nullptr);
-  CHECK(item(arm, "tr") == nlohmann::json{{"ty", "tr"}});
+  CHECK(item(arm, "tr") == item(disc, "tr"));
   const auto moving = item(arm, "gr")["it"];
   CHECK(item(moving, "sh")["ks"]["a"] == 0);
   const auto tr = item(moving, "tr");

@@ -60,7 +60,7 @@ CompactPathMotion compact_path_motion(const std::vector<double>& rest, const std
     j.pair(centre.x + tr[6 * (moves_p ? i : first_p)], centre.y + tr[6 * (moves_p ? i : first_p) + 1]);
   }, moves_p, false, &w.channel[kTranslate]);
   j.raw(",\"a\":{\"a\":0,\"k\":").pair(centre.x, centre.y).raw("}");
-  // Opacity, skew and a scale of 100 % are the players' defaults (lottie_json.h): not written.
+  // Skew and a scale of 100 % are the players' defaults (lottie_json.h): not written.
   const bool unit_scale = !moves_s && std::round(100 * tr[6 * first_s + 4] * scale_places) == 100 * scale_places &&
                           std::round(100 * tr[6 * first_s + 5] * scale_places) == 100 * scale_places;
   if (!unit_scale) {
@@ -73,7 +73,7 @@ CompactPathMotion compact_path_motion(const std::vector<double>& rest, const std
   j.raw(",\"r\":");
   write_property(j, key_frames, times.size(), [&](size_t i) { j.num(tr[6 * (moves_r ? i : first_r) + 2], rotate_places); },
                  moves_r, true, &w.channel[kRotate]);
-  j.raw("}");
+  j.raw(",\"o\":{\"a\":0,\"k\":100}}");  // lottie-web draws no group without its opacity
   out.transform = std::move(j.text());
   if (!out.residual) return out;
 
