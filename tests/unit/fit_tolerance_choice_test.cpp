@@ -57,10 +57,12 @@ TEST_CASE("compact tolerance: the largest ladder step that keeps the floor again
       anim, [](const fs::path& f) { write_square(f, 0); }, [](const fs::path& f, double) { write_square(f, 4); });
   CHECK(far.tolerance_1024 == kToleranceLadder.front());
   CHECK(far.worst_db < kCompactTargetDb);
-  // animation.json, which the engine cannot draw, goes a step tighter.
-  CHECK(lottie_tolerance(1.25) == 1.1);
+  // animation.json, which the engine cannot draw, goes two steps tighter (the first at the least).
+  CHECK(lottie_tolerance(1.5) == 1.1);
+  CHECK(lottie_tolerance(1.25) == 1);
+  CHECK(lottie_tolerance(0.5) == 0.25);
   CHECK(lottie_tolerance(0.25) == 0.25);
-  CHECK(lottie_tolerance(1.3) == 1.25);
+  CHECK(lottie_tolerance(1.3) == 1.1);
   // The candidates were temporary files beside the animation, all removed.
   CHECK(fs::is_empty(dir.path));
 }

@@ -177,32 +177,151 @@ int measured_decimals(const std::vector<double>& values, size_t dim, const std::
   return max_decimals;
 }
 
+size_t WrapperKeys::key_count() const {
+  size_t n = 0;
+  for (const ReducedKeys& c : channel) n += c.keys.size();
+  return n;
+}
+
+std::vector<double> wrapper_keyed_at(const WrapperKeys& w, const std::vector<double>& times, double t) {
+  std::vector<double> out(6, 0.0);
+  for (size_t c = 0; c < kWrapperChannels; ++c) {
+    const std::vector<double> v = keyed_at(w.channel[c], times, w.trajectory, 6, t);
+    for (size_t j = 0; j < kChannelSize[c]; ++j) out[kChannelAt[c] + j] = v[kChannelAt[c] + j];
+  }
+  return out;
+}
+
+namespace {
+
+// Channel c's numbers of a trajectory of 6 per value.
+std::vector<double> channel_numbers(const std::vector<double>& trajectory, size_t c) {
+  std::vector<double> out;
+  for (size_t v = 0; v + 5 < trajectory.size(); v += 6)
+    out.insert(out.end(), trajectory.begin() + static_cast<std::ptrdiff_t>(v + kChannelAt[c]),
+               trajectory.begin() + static_cast<std::ptrdiff_t>(v + kChannelAt[c] + kChannelSize[c]));
+  return out;
+}
+
+// Channel c's error: its numbers `approx` with the other channels at the exact blend, so each
+// channel is measured by what it alone moves the rest points.
+SampleError channel_error(const std::vector<double>& exact, const SampleError& error, size_t c) {
+  return [&exact, &error, c](size_t i, double u, const double* approx) {
+    double full[6];
+    for (size_t k = 0; k < 6; ++k)
+      full[k] = exact[6 * i + k] + (u > 0 ? u * (exact[6 * (i + 1) + k] - exact[6 * i + k]) : 0);
+    for (size_t j = 0; j < kChannelSize[c]; ++j) full[kChannelAt[c] + j] = approx[j];
+    return error(i, u, full);
+  };
+}
+
+// Calls f(i, u, t) at every value and at the kBetweenChecks - 1 times checked between two.
+template <typename F>
+void for_checked_times(const std::vector<double>& times, F&& f) {
+  for (size_t i = 0; i < times.size(); ++i)
+    for (int j = 0; j < (i + 1 < times.size() ? kBetweenChecks : 1); ++j) {
+      const double u = static_cast<double>(j) / kBetweenChecks;
+      f(i, u, u > 0 ? times[i] + u * (times[i + 1] - times[i]) : times[i]);
+    }
+}
+
+// Channel c's keys within `budget`: one constant (each number's midrange) when that holds,
+// else the reduction's. The constant is written into row 0 of `trajectory`.
+ReducedKeys channel_keys(std::vector<double>& trajectory, const std::vector<double>& exact, const SampleError& error,
+                         const std::vector<double>& times, size_t c, double budget) {
+  const size_t n = kChannelSize[c], at = kChannelAt[c];
+  const std::vector<double> numbers = channel_numbers(exact, c);
+  const SampleError err = channel_error(exact, error, c);
+  double constant[2];
+  for (size_t j = 0; j < n; ++j) {
+    double lo = 1e300, hi = -1e300;
+    for (size_t v = j; v < numbers.size(); v += n) lo = std::min(lo, numbers[v]), hi = std::max(hi, numbers[v]);
+    constant[j] = 0.5 * (lo + hi);
+  }
+  double worst = 0;
+  for_checked_times(times, [&](size_t i, double u, double) { worst = std::max(worst, err(i, u, constant)); });
+  if (worst <= budget) {
+    for (size_t j = 0; j < n; ++j) trajectory[at + j] = constant[j];
+    ReducedKeys one;
+    one.keys = {0};
+    one.max_error = worst;
+    return one;
+  }
+  ReducedKeys r = reduce_keyframes(times, numbers, n, budget, err);
+  for (size_t j = 0; j < n; ++j) trajectory[at + j] = exact[at + j];
+  return r;
+}
+
+}  // namespace
+
 WrapperKeys wrapper_keys(const std::vector<Affine>& affine, const Affine& parent_to_canvas, const std::vector<double>& rest,
                          const std::vector<double>& times, double tolerance, int decimals, Vec2 centre, WrapperForm form) {
   WrapperKeys w;
   w.trajectory = wrapper_trajectory(affine, parent_to_canvas, centre, form);
   const std::vector<double> exact = w.trajectory;
   const SampleError err = wrapper_error(exact, rest, parent_to_canvas, centre, form);
-  w.keys = reduce_keyframes(times, exact, 6, tolerance, err);
-  // Rounding is measured against the exact maps, with the tolerance of the finest use (a path
-  // without a residual keeps its motion within `tolerance`; the budgets are shares of it).
+  // The composed transform's largest miss, every channel as its keys draw it.
+  auto composed_error = [&] {
+    double worst = 0;
+    for_checked_times(times, [&](size_t i, double u, double t) {
+      worst = std::max(worst, err(i, u, wrapper_keyed_at(w, times, t).data()));
+    });
+    return worst;
+  };
+  // Each channel's own error adds to the others' in the composed transform; the budgets start at
+  // the whole tolerance (one channel moving: the others are exact) and shrink until the sum holds.
+  // Rounds: 0.8 of the tolerance over the miss each, at least halving the budgets within six.
+  double budget = tolerance;
+  bool held = false;
+  for (int round = 0; round < 6 && !held; ++round) {
+    for (size_t c = 0; c < kWrapperChannels; ++c) w.channel[c] = channel_keys(w.trajectory, exact, err, times, c, budget);
+    const double miss = composed_error();
+    held = miss <= tolerance;
+    budget *= std::clamp(0.8 * tolerance / std::max(miss, 1e-300), 0.25, 0.9);
+  }
+  // Shared keys: the whole transform reduced at once, within the tolerance by construction. Kept
+  // when they write fewer numbers (a time and the channel's numbers per key, a channel that never
+  // changes at the shared keys written once), e.g. when the channels all turn at the same times.
+  const ReducedKeys shared = reduce_keyframes(times, exact, 6, tolerance, err);
+  size_t own_numbers = 0, shared_numbers = 0;
+  for (size_t c = 0; c < kWrapperChannels; ++c) {
+    own_numbers += w.channel[c].keys.size() * (kChannelSize[c] + 1);
+    bool changes = false;
+    for (size_t k : shared.keys)
+      for (size_t j = 0; j < kChannelSize[c]; ++j)
+        changes = changes || exact[6 * k + kChannelAt[c] + j] != exact[6 * shared.keys[0] + kChannelAt[c] + j];
+    shared_numbers += (changes ? shared.keys.size() : 1) * (kChannelSize[c] + 1);
+  }
+  if (!held || shared_numbers <= own_numbers) {
+    w.trajectory = exact;
+    for (ReducedKeys& c : w.channel) c = shared;
+  }
+  // Rounding is measured against the written numbers (exact at every kept key, a constant's
+  // midrange), with the tolerance of the finest use (a path without a residual keeps its motion
+  // within `tolerance`; the budgets are shares of it).
+  const std::vector<double> written = w.trajectory;
+  const SampleError round_err = wrapper_error(written, rest, parent_to_canvas, centre, form);
   const int max_decimals = 8;
-  w.translate_decimals = decimals >= 0 ? decimals : measured_decimals(exact, 6, w.keys.keys, err, tolerance / 4, 0, 2, max_decimals);
-  w.rotate_decimals = measured_decimals(exact, 6, w.keys.keys, err, tolerance / 8, 2, 1, max_decimals);
-  w.skew_decimals = measured_decimals(exact, 6, w.keys.keys, err, tolerance / 8, 3, 1, max_decimals);
-  w.scale_decimals = measured_decimals(exact, 6, w.keys.keys, err, tolerance / 8, 4, 2, max_decimals);
-  const int places[6] = {w.translate_decimals, w.translate_decimals, w.rotate_decimals, w.skew_decimals, w.scale_decimals,
-                         w.scale_decimals};
-  for (size_t k : w.keys.keys)
-    for (size_t j = 0; j < 6; ++j) {
-      const double f = std::pow(10.0, places[j]);
-      double& x = w.trajectory[6 * k + j];
-      x = std::round(x * f) / f;
-      if (x == 0) x = 0;  // no "-0"
-    }
+  auto places = [&](size_t c, double share) {
+    return measured_decimals(written, 6, w.channel[c].keys, round_err, share, kChannelAt[c], kChannelSize[c], max_decimals);
+  };
+  w.translate_decimals = decimals >= 0 ? decimals : places(kTranslate, tolerance / 4);
+  w.rotate_decimals = places(kRotate, tolerance / 8);
+  w.skew_decimals = places(kSkew, tolerance / 8);
+  w.scale_decimals = places(kScale, tolerance / 8);
+  const int channel_places[kWrapperChannels] = {w.translate_decimals, w.rotate_decimals, w.skew_decimals, w.scale_decimals};
+  for (size_t c = 0; c < kWrapperChannels; ++c) {
+    const double f = std::pow(10.0, channel_places[c]);
+    for (size_t k : w.channel[c].keys)
+      for (size_t j = 0; j < kChannelSize[c]; ++j) {
+        double& x = w.trajectory[6 * k + kChannelAt[c] + j];
+        x = std::round(x * f) / f;
+        if (x == 0) x = 0;  // no "-0"
+      }
+  }
   const Affine to_parent = parent_to_canvas.inverse();
   for (size_t v = 0; v < affine.size(); ++v) {
-    const std::vector<double> p = keyed_value(w.keys, times, w.trajectory, 6, v);
+    const std::vector<double> p = wrapper_keyed_at(w, times, times[v]);
     w.drawn.push_back(parent_to_canvas * wrapper_map(p.data(), centre, form) * to_parent);
   }
   return w;

@@ -55,21 +55,33 @@ Affine wrapper_map(const double* p, Vec2 centre, WrapperForm form);
 SampleError wrapper_error(const std::vector<double>& trajectory, const std::vector<double>& rest,
                           const Affine& parent_to_canvas, Vec2 centre, WrapperForm form);
 
-// A wrapper transform's written keys: the trajectory reduced within `tolerance` (of the exact
-// maps, on the rest points), its kept keys rounded to decimals measured per component
-// (translation within a quarter of the tolerance, angles and scales an eighth; `decimals` >= 0
-// fixes the translation's), and the canvas map the player draws at each value's time from
-// those rounded keys, which a residual shape is computed against. The Lottie form leaves the
-// skew out.
+// A wrapper transform's written keys. Each channel (translation, rotation, skewX, scale) has
+// keys of its own, as SMIL's separate animateTransforms and Lottie's p, r and s are keyed
+// separately: a position that barely moves is not written at every key the rotation needs.
+// Each channel is reduced within a budget of its own error (the other channels exact), and the
+// budgets are tightened until the composed transform, every channel as its keys draw it, is
+// within `tolerance` of the exact maps on the rest points at every value and checked time
+// between (keyframe_reduce.h); a channel a constant holds within its budget keeps one key.
+// The kept keys are rounded to decimals measured per channel (translation within a quarter of
+// the tolerance, angles and scales an eighth; `decimals` >= 0 fixes the translation's), and
+// `drawn` is the canvas map the player draws at each value's time from those rounded keys,
+// which a residual shape is computed against. The Lottie form leaves the skew out.
+enum WrapperChannel : size_t { kTranslate = 0, kRotate = 1, kSkew = 2, kScale = 3 };
+inline constexpr size_t kWrapperChannels = 4;
+// The channel's first number in a trajectory's 6 and how many it has.
+inline constexpr size_t kChannelAt[kWrapperChannels] = {0, 2, 3, 4}, kChannelSize[kWrapperChannels] = {2, 1, 1, 2};
 struct WrapperKeys {
-  std::vector<double> trajectory;  // 6 numbers per value; kept keys rounded
-  ReducedKeys keys;
+  std::vector<double> trajectory;  // 6 numbers per value; each channel's kept keys rounded
+  ReducedKeys channel[kWrapperChannels];  // per channel: its kept values (one: a constant) and easing
   int translate_decimals = 0, rotate_decimals = 0, skew_decimals = 0, scale_decimals = 0;
   std::vector<Affine> drawn;  // per value, canvas space
+  size_t key_count() const;   // keys of all channels
 };
 // `centre`: the rest shape's centre in the parent's space.
 WrapperKeys wrapper_keys(const std::vector<Affine>& affine, const Affine& parent_to_canvas, const std::vector<double>& rest,
                          const std::vector<double>& times, double tolerance, int decimals, Vec2 centre, WrapperForm form);
+// The 6 numbers the channels' keys draw at time t (a player's interpolation of each channel).
+std::vector<double> wrapper_keyed_at(const WrapperKeys& w, const std::vector<double>& times, double t);
 // The centre of the rest points (canvas) in the parent's space.
 Vec2 rest_centre(const std::vector<double>& rest, const Affine& parent_to_canvas);
 // The point (parent space) the part turns about: the one its affine maps (canvas) move least

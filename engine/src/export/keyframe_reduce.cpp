@@ -159,13 +159,18 @@ ReducedKeys reduce_keyframes(const std::vector<double>& times, const std::vector
 
 std::vector<double> keyed_value(const ReducedKeys& r, const std::vector<double>& times,
                                 const std::vector<double>& values, size_t dim, size_t i) {
+  return keyed_at(r, times, values, dim, times[i]);
+}
+
+std::vector<double> keyed_at(const ReducedKeys& r, const std::vector<double>& times, const std::vector<double>& values,
+                             size_t dim, double t) {
   size_t k = 0;
-  while (k + 2 < r.keys.size() && r.keys[k + 1] <= i) ++k;
+  while (k + 2 < r.keys.size() && times[r.keys[k + 1]] <= t) ++k;
   std::vector<double> out(values.begin() + static_cast<std::ptrdiff_t>(r.keys[k] * dim),
                           values.begin() + static_cast<std::ptrdiff_t>((r.keys[k] + 1) * dim));
   if (r.keys.size() < 2) return out;
   const size_t a = r.keys[k], b = r.keys[k + 1];
-  const double s = ease(r.easing[k], std::clamp((times[i] - times[a]) / (times[b] - times[a]), 0.0, 1.0));
+  const double s = ease(r.easing[k], std::clamp((t - times[a]) / (times[b] - times[a]), 0.0, 1.0));
   for (size_t j = 0; j < dim; ++j) out[j] += s * (values[b * dim + j] - values[a * dim + j]);
   return out;
 }

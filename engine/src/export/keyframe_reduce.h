@@ -70,5 +70,8 @@ ReducedKeys reduce_keyframes(const std::vector<double>& times, const std::vector
 // The numbers the reduced keys draw at sample time times[i] (dim of them), as a player does.
 std::vector<double> keyed_value(const ReducedKeys& r, const std::vector<double>& times,
                                 const std::vector<double>& values, size_t dim, size_t i);
+// The same at any time t (held at the first and last keys outside them).
+std::vector<double> keyed_at(const ReducedKeys& r, const std::vector<double>& times, const std::vector<double>& values,
+                             size_t dim, double t);
 
 }  // namespace svgm

@@ -192,9 +192,8 @@ class Composer {
   }
 
   void begin_layer(JsonText& j, int ind, const std::string& name, int type, float opacity, int tt, bool td) {
-    j.raw("{\"ddd\":0,\"ind\":").num(ind, 1).raw(",\"ty\":").num(type, 1).raw(",\"nm\":").str(name);
-    j.raw(",\"sr\":1,\"ks\":{\"o\":").fixed(opacity * 100.0, kOpacityScale).raw(",").raw(kLayerTransformAfterOpacity);
-    j.raw(",\"ao\":0");
+    j.raw("{\"ind\":").num(ind, 1).raw(",\"ty\":").num(type, 1).raw(",\"nm\":").str(name);
+    j.raw(",\"ks\":{\"o\":").fixed(opacity * 100.0, kOpacityScale).raw(kLayerTransformAfterOpacity);
     if (tt) j.raw(",\"tt\":").num(tt, 1);
     if (td) j.raw(",\"td\":1");
   }

@@ -50,15 +50,13 @@ class JsonText {
   double coord_scale_;
 };
 
-// The identity transform of a layer after its opacity (3D vectors, as bodymovin writes them),
-// and a group's.
-inline constexpr std::string_view kLayerTransformAfterOpacity =
-    "\"r\":{\"a\":0,\"k\":0},\"p\":{\"a\":0,\"k\":[0,0,0]},\"a\":{\"a\":0,\"k\":[0,0,0]},"
-    "\"s\":{\"a\":0,\"k\":[100,100,100]}}";
-inline constexpr std::string_view kGroupTransform =
-    "{\"ty\":\"tr\",\"p\":{\"a\":0,\"k\":[0,0]},\"a\":{\"a\":0,\"k\":[0,0]},"
-    "\"s\":{\"a\":0,\"k\":[100,100]},\"r\":{\"a\":0,\"k\":0},\"o\":{\"a\":0,\"k\":100},"
-    "\"sk\":{\"a\":0,\"k\":0},\"sa\":{\"a\":0,\"k\":0}}";
+// The identity transform of a layer after its opacity, and a group's: the players' and the
+// lottie-spec's defaults (rotation 0, position and anchor 0, scale 100 %, no skew) are not
+// written, which lottie-web, librlottie and ThorVG read alike; the man's 22 layers wrote 5 kB
+// of identities (with ddd, sr and ao at their defaults). A group's opacity stays: lottie-web
+// draws nothing of a shape group whose `tr` has no `o`.
+inline constexpr std::string_view kLayerTransformAfterOpacity = "}";
+inline constexpr std::string_view kGroupTransform = "{\"ty\":\"tr\",\"o\":{\"a\":0,\"k\":100}}";
 
 // One subpath's control points {p0, c1, c2, p1, ...} (x, y pairs) as a Lottie bezier: vertices
 // with in and out tangents relative to them. A closed subpath ends on its start (the reader

@@ -24,7 +24,7 @@ CompactPathMotion compact_path_motion(const std::vector<double>& rest, const std
   const WrapperKeys w =
       wrapper_keys(motion.affine, Affine{}, rest, times, tolerance, decimals, centre, WrapperForm::Lottie);
   out.drawn = w.drawn;
-  out.transform_keys = w.keys.keys.size();
+  out.transform_keys = w.key_count();
   // The skew Lottie's transform leaves out: how far it would move a point.
   const std::vector<double> exact = wrapper_trajectory(motion.affine, Affine{}, centre, WrapperForm::Lottie);
   double skew_miss = 0;
@@ -37,35 +37,43 @@ CompactPathMotion compact_path_motion(const std::vector<double>& rest, const std
   }
   out.residual = motion.residual || skew_miss > tolerance;
 
-  // The group's transform: T(centre + t) R(r) S(s) T(-centre), each property static when its
-  // kept keys agree.
+  // The group's transform: T(centre + t) R(r) S(s) T(-centre), each property keyed at its own
+  // channel's keys, static when they agree.
   std::vector<double> key_frames;
   for (const double t : times) key_frames.push_back(t * frames);
   const std::vector<double>& tr = w.trajectory;
-  auto varies = [&](size_t at, size_t n) {
-    for (size_t k : w.keys.keys)
-      for (size_t j = 0; j < n; ++j)
-        if (tr[6 * k + at + j] != tr[6 * w.keys.keys[0] + at + j]) return true;
+  auto varies = [&](size_t c) {
+    const ReducedKeys& r = w.channel[c];
+    for (size_t k : r.keys)
+      for (size_t j = 0; j < kChannelSize[c]; ++j)
+        if (tr[6 * k + kChannelAt[c] + j] != tr[6 * r.keys[0] + kChannelAt[c] + j]) return true;
     return false;
   };
-  const size_t first = w.keys.keys[0];
   JsonText j(std::max(1, w.translate_decimals));
   const double scale_places = std::pow(10.0, std::max(0, w.scale_decimals - 2));
   const double rotate_places = std::pow(10.0, w.rotate_decimals);
+  const bool moves_p = varies(kTranslate), moves_r = varies(kRotate), moves_s = varies(kScale);
+  const size_t first_p = w.channel[kTranslate].keys[0], first_r = w.channel[kRotate].keys[0],
+               first_s = w.channel[kScale].keys[0];
   j.raw("{\"ty\":\"tr\",\"p\":");
-  const bool moves_p = varies(0, 2), moves_r = varies(2, 1), moves_s = varies(4, 2);
   write_property(j, key_frames, times.size(), [&](size_t i) {
-    j.pair(centre.x + tr[6 * (moves_p ? i : first)], centre.y + tr[6 * (moves_p ? i : first) + 1]);
-  }, moves_p, false, &w.keys);
-  j.raw(",\"a\":{\"a\":0,\"k\":").pair(centre.x, centre.y).raw("},\"s\":");
-  write_property(j, key_frames, times.size(), [&](size_t i) {
-    const size_t k = moves_s ? i : first;
-    j.raw("[").num(100 * tr[6 * k + 4], scale_places).raw(",").num(100 * tr[6 * k + 5], scale_places).raw("]");
-  }, moves_s, false, &w.keys);
+    j.pair(centre.x + tr[6 * (moves_p ? i : first_p)], centre.y + tr[6 * (moves_p ? i : first_p) + 1]);
+  }, moves_p, false, &w.channel[kTranslate]);
+  j.raw(",\"a\":{\"a\":0,\"k\":").pair(centre.x, centre.y).raw("}");
+  // Skew and a scale of 100 % are the players' defaults (lottie_json.h): not written.
+  const bool unit_scale = !moves_s && std::round(100 * tr[6 * first_s + 4] * scale_places) == 100 * scale_places &&
+                          std::round(100 * tr[6 * first_s + 5] * scale_places) == 100 * scale_places;
+  if (!unit_scale) {
+    j.raw(",\"s\":");
+    write_property(j, key_frames, times.size(), [&](size_t i) {
+      const size_t k = moves_s ? i : first_s;
+      j.raw("[").num(100 * tr[6 * k + 4], scale_places).raw(",").num(100 * tr[6 * k + 5], scale_places).raw("]");
+    }, moves_s, false, &w.channel[kScale]);
+  }
   j.raw(",\"r\":");
-  write_property(j, key_frames, times.size(), [&](size_t i) { j.num(tr[6 * (moves_r ? i : first) + 2], rotate_places); },
-                 moves_r, true, &w.keys);
-  j.raw(",\"o\":{\"a\":0,\"k\":100},\"sk\":{\"a\":0,\"k\":0},\"sa\":{\"a\":0,\"k\":0}}");
+  write_property(j, key_frames, times.size(), [&](size_t i) { j.num(tr[6 * (moves_r ? i : first_r) + 2], rotate_places); },
+                 moves_r, true, &w.channel[kRotate]);
+  j.raw(",\"o\":{\"a\":0,\"k\":100}}");  // lottie-web draws no group without its opacity
   out.transform = std::move(j.text());
   if (!out.residual) return out;
 

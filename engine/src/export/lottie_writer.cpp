@@ -137,9 +137,9 @@ LottieDocument lottie_animation(const Scene& scene, const RasterPlan& plan,
     if (!group_ind[g]) continue;
     j.raw(first_layer ? "" : ",");
     null_span[g].first = j.text().size();
-    j.raw("{\"ddd\":0,\"ind\":").num(group_ind[g], 1);
-    j.raw(",\"ty\":3,\"nm\":").str(scene.groups[g].id).raw(",\"sr\":1,\"ks\":{\"o\":{\"a\":0,\"k\":100},").raw(kLayerTransformAfterOpacity);
-    j.raw(",\"ao\":0,\"ip\":0,\"op\":").num(frames, kFrameScale).raw(",\"st\":0,\"bm\":0}");
+    j.raw("{\"ind\":").num(group_ind[g], 1);
+    j.raw(",\"ty\":3,\"nm\":").str(scene.groups[g].id).raw(",\"ks\":{").raw(kLayerTransformAfterOpacity);
+    j.raw(",\"ip\":0,\"op\":").num(frames, kFrameScale).raw(",\"st\":0,\"bm\":0}");
     null_span[g].second = j.text().size();
     first_layer = false;
   }
@@ -210,13 +210,13 @@ bool ShapeLayers::write_layer(std::vector<int>::const_reverse_iterator it, bool 
   if (!first_layer) j.raw(",");
   first_layer = false;
   layer_span[p].first = j.text().size();
-  j.raw("{\"ddd\":0,\"ind\":").num(static_cast<double>(P - (it - order.rbegin())), 1);
-  j.raw(",\"ty\":4,\"nm\":").str(path.id).raw(",\"sr\":1,");
+  j.raw("{\"ind\":").num(static_cast<double>(P - (it - order.rbegin())), 1);
+  j.raw(",\"ty\":4,\"nm\":").str(path.id).raw(",");
   if (path.group >= 0 && static_cast<size_t>(path.group) < scene.groups.size() && group_ind[static_cast<size_t>(path.group)])
     j.raw("\"parent\":").num(group_ind[static_cast<size_t>(path.group)], 1).raw(",");
   // Inside a compositing layer the layer carries the group opacity (lottie_compositing.h).
-  j.raw("\"ks\":{\"o\":").fixed((path.layer >= 0 ? path.local_opacity : path.opacity) * 100.0, kOpacityScale).raw(",").raw(kLayerTransformAfterOpacity);
-  j.raw(",\"ao\":0,\"shapes\":[{\"ty\":\"gr\",\"nm\":").str(path.id).raw(",\"it\":[");
+  j.raw("\"ks\":{\"o\":").fixed((path.layer >= 0 ? path.local_opacity : path.opacity) * 100.0, kOpacityScale).raw(kLayerTransformAfterOpacity);
+  j.raw(",\"shapes\":[{\"ty\":\"gr\",\"nm\":").str(path.id).raw(",\"it\":[");
   const size_t shapes_begin = j.text().size();
   // Compact, moving: the shapes in a group of their own carrying the motion; the paints after
   // it apply to them in the canvas' frame (gradients where animation.svg draws them, stroke

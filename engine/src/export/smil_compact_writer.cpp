@@ -64,27 +64,33 @@ void append_keyed_transform(pugi::xml_node node, const std::string& prefix, cons
                             const std::vector<double>& times, const std::function<void(pugi::xml_node)>& repeat_attrs,
                             const char* attribute, bool replace_first) {
   const std::vector<double>& trajectory = w.trajectory;
-  const ReducedKeys& tk = w.keys;
   struct Component {
     const char* type;
-    size_t at, n;
+    WrapperChannel channel;
     int decimals;
     double identity;
   };
   bool first = true;
-  for (const Component& c : {Component{"translate", 0, 2, w.translate_decimals, 0}, Component{"rotate", 2, 1, w.rotate_decimals, 0},
-                             Component{"skewX", 3, 1, w.skew_decimals, 0}, Component{"scale", 4, 2, w.scale_decimals, 1}}) {
+  for (const Component& c : {Component{"translate", kTranslate, w.translate_decimals, 0}, Component{"rotate", kRotate, w.rotate_decimals, 0},
+                             Component{"skewX", kSkew, w.skew_decimals, 0}, Component{"scale", kScale, w.scale_decimals, 1}}) {
+    // The channel's own keys; a constant (one key) is written as two equal ones over the pass.
+    ReducedKeys tk = w.channel[c.channel];
+    if (tk.keys.size() == 1 && times.size() > 1) {
+      tk.keys = {tk.keys[0], tk.keys[0]};
+      tk.easing = {Easing{}};
+    }
+    const size_t at = kChannelAt[c.channel], n = kChannelSize[c.channel];
     std::string text;
     bool identity = true;
     for (size_t i = 0; i < tk.keys.size(); ++i) {
       if (i) text += ';';
-      for (size_t j = 0; j < c.n; ++j) {
-        const double v = trajectory[6 * tk.keys[i] + c.at + j];
+      for (size_t j = 0; j < n; ++j) {
+        const double v = trajectory[6 * tk.keys[i] + at + j];
         identity = identity && v == c.identity;
         if (j) text += ' ';
         append_number(text, v, c.decimals);
       }
-      if (c.at == 2) {  // rotate about the rest shape's centre
+      if (c.channel == kRotate) {  // rotate about the rest shape's centre
         text += ' ';
         append_number(text, centre.x, w.translate_decimals);
         text += ' ';
@@ -143,7 +149,7 @@ struct CompactWriter {
     remove_gradient_animations(gn);
     const std::string gprefix(gn.name(), gn.name() + (std::strlen(gn.name()) - local_name(gn.name()).size()));
     append_keyed_transform(gn, gprefix, gw, gc, pass.times, repeat_attrs, "gradientTransform", true);
-    st.keys += gw.keys.keys.size();
+    st.keys += gw.key_count();
   }
 
   // The part's `d` animation of what its wrapper `w` leaves (element `el`, of local name `tag`
@@ -171,7 +177,7 @@ struct CompactWriter {
     const int dd = options.decimals >= 0 ? options.decimals
                                          : measured_decimals(local, 2 * count, dk_keys.keys, derr, tol / 4, 0, 2 * count, kMaxDecimals);
     log::debug("compact export: %s: %zu control points, affine miss %.3f px, transform %zu keys, d %zu keys at %d decimals",
-               path.id.c_str(), count, motion.affine_miss_px, w.keys.keys.size(), dk_keys.keys.size(), dd);
+               path.id.c_str(), count, motion.affine_miss_px, w.key_count(), dk_keys.keys.size(), dd);
     std::string text;
     for (size_t i = 0; i < dk_keys.keys.size(); ++i) {
       if (i) text += ';';
@@ -272,7 +278,7 @@ std::vector<std::string> write_compact_animation_svg(const fs::path& source, con
     const Vec2 centre = rest_centre(rest, parent_to_canvas);
     const WrapperKeys w =
         wrapper_keys(motion.affine, parent_to_canvas, rest, pass.times, tol, options.decimals, centre, WrapperForm::Smil);
-    st.keys += w.keys.keys.size();
+    st.keys += w.key_count();
     append_keyed_transform(g, prefix, w, centre, pass.times, repeat_attrs, "transform", false);
     // A user-space gradient lies in the element's user space, which the wrapper now moves; the
     // full export moves it by the colour-weighted similarity (gradient_motion) or not at all.

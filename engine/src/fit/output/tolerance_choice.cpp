@@ -36,10 +36,12 @@ double render_psnr(const RgbaImage& a, const RgbaImage& b) {
 }
 
 double lottie_tolerance(double svg_tolerance_1024) {
-  double below = kToleranceLadder.front();
+  // The steps below animation.svg's, tightest first; kLottieStepsBelow of them down.
+  std::vector<double> below;
   for (double step : kToleranceLadder)
-    if (step < svg_tolerance_1024) below = step;
-  return below;
+    if (step < svg_tolerance_1024) below.push_back(step);
+  if (below.empty()) return kToleranceLadder.front();
+  return below[below.size() - std::min(below.size(), kLottieStepsBelow)];
 }
 
 namespace {
