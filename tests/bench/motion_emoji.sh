@@ -5,7 +5,8 @@
 # candidates; the fitter at one iteration) up to the target video, then scores candidate 00's
 # motion from motion.json (motion_score.py --verdict) and reads the ranker's verdict on every
 # candidate from ranking.json. One row per case: share of the motion on the parts named, still
-# ratio, paths out of the canvas, flagged candidates (k/N and the first reason), the plan, the
+# ratio, paths out of the canvas, the farthest travel of a point that must move (% of the figure's
+# diagonal; the issue's floor is 8, shown not scored), flagged candidates (k/N and the first reason), the plan, the
 # prompt's words not understood ("(fallback sway)": none was a motion word), pass or FAIL(the bars
 # missed); then the totals, with the passes that only the fallback sway earned. The issue's bar:
 # share >= 0.7 in at least 90 % of the cases, still parts still, nothing out of the frame, no
@@ -56,7 +57,7 @@ run_case() {
   wait "$pid"
 }
 
-printf 'case\tshare\tstill_ratio\tout_of_canvas\tflagged\tplan\tnot_understood\tresult\n'
+printf 'case\tshare\tstill_ratio\tout_of_canvas\ttravel%%\tflagged\tplan\tnot_understood\tresult\n'
 total=0 pass=0 bars=0 unflagged=0 fallback=0 seconds=$SECONDS
 while IFS=$'\t' read -r name set file prompt move still backdrop; do
   [ -z "$name" ] || [ "${name:0:1}" = "#" ] && continue

@@ -30,9 +30,13 @@ Prints one tab-separated line: share of the motion (summed travel) on the expect
 ratio of the mean travel of the still points to that of the expected points, the largest travel
 of a still point (in % of the canvas diagonal), how many paths left the canvas, and pass/FAIL.
 Pass: share >= 0.7, still ratio <= 0.25, nothing out of the canvas.
+The travel column (with --verdict) is the issue's floor for motion a viewer can see: the largest
+travel of a point that must move, in % of the drawing's box diagonal (the figure's size); the
+engine raises a clause's motion to 8 % of it (motion_plan_internal.h, kVisibleTravel). It is
+measured and shown, not one of the bars: "<8" follows it when it is below the floor.
 With --verdict (tests/bench/motion_emoji.sh), the line also says what the ranker thought of the
 candidates and what the prompt's parser did not understand: share, still ratio, paths out of
-the canvas, flagged candidates (ranking.json: those with defects or an error, "k/N" and the
+the canvas, travel (below), flagged candidates (ranking.json: those with defects or an error, "k/N" and the
 first reason), the plan, motion.json's not_understood words ("(fallback sway)" when none of the
 prompt's words was a motion the engine knows), then pass, or FAIL naming the bars
 missed (share, still, out, flagged: every candidate must pass the ranker).
@@ -45,6 +49,7 @@ SHARE_MIN = 0.7     # the issue's bar
 STILL_RATIO_MAX = 0.25  # still paths move at most a quarter as much as the expected ones
 LARGE = 0.45        # share of the canvas: a background (as a reader of the drawing would say)
 EDGE = 0.04         # share of the canvas size: a box this close to an edge touches it
+TRAVEL_MIN = 8      # % of the figure's diagonal: motion a viewer can see (the issue's item 4)
 EARLY = 0.35        # share of the paths: a background is painted among the first ones
 
 
@@ -194,6 +199,9 @@ def main():
         return sum(pts[i][2] for i in ids) / len(ids) if ids else 0.0
 
     ratio = mean(still) / mean(move) if still and mean(move) > 0 else 0.0
+    # The issue's visible-motion floor: the farthest a point that must move goes, against the
+    # figure's size (the drawing's box, as the labels' fractions).
+    travel = max((pts[i][2] for i in move), default=0.0) / max(math.hypot(dx1 - dx0, dy1 - dy0), 1e-9) * 100
     diag = math.hypot(cw, ch)
     still_max = max((pts[i][2] for i in still), default=0.0) / diag * 100
     # Out of the canvas: a swept box beyond the canvas where the rest box was inside it.
@@ -216,7 +224,8 @@ def main():
             words += " (fallback sway)"
         why = [w for w, bad in (("share", share < SHARE_MIN), ("still", ratio > STILL_RATIO_MAX), ("out", out > 0),
                                 ("flagged", v is None or v[0] > 0)) if bad]
-        print(f"{share:.2f}\t{ratio:.2f}\t{out}\t{flags}\t{plan}\t{words}\t{'FAIL(' + ','.join(why) + ')' if why else 'pass'}")
+        seen = f"{travel:.1f}" + ("<8" if travel < TRAVEL_MIN else "")
+        print(f"{share:.2f}\t{ratio:.2f}\t{out}\t{seen}\t{flags}\t{plan}\t{words}\t{'FAIL(' + ','.join(why) + ')' if why else 'pass'}")
         return
     print(f"{share:.2f}\t{ratio:.2f}\t{still_max:.2f}\t{out}\t{'pass' if ok else 'FAIL'}\t{len(move)}/{len(still)}/{len(pts)}\t{plan}")
 

@@ -388,25 +388,67 @@ double stretch_agreement(const FrameStats& st, int k, int W, const std::array<in
   return either > 0 ? static_cast<double>(same) / static_cast<double>(either) : 0.0;
 }
 
-// The share of frames 1..K-1 that are frame 0 stretched (a hop's squash) or turned about its
-// vertical axis (its width scaled, mirrored past edge on: a flat figure's pirouette): their
-// foreground area is frame 0's times the stretch of its box (within kFlatArea) and their colours
-// agree with frame 0's stretched into their box (kFlatAgreement). Such changes of area are the
-// figure's own, in the plane: the fitter follows them with its control points. Parts that grow
-// or shrink inside a box that does not (a 3D turn showing other sides) change the area alone.
+// The spread of frame k's foreground: the square root of the determinant of its pixels'
+// covariance (pixels squared). A flat map of the frame by a linear part A multiplies it by
+// |det A|, whatever A's rotation or shear: the area a flat figure's changes by.
+double foreground_spread(const FrameStats& st, int k, int W, int H) {
+  double n = 0, sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      if (st.fgs[k][static_cast<size_t>(y) * W + x]) n += 1, sx += x, sy += y, sxx += 1.0 * x * x, syy += 1.0 * y * y, sxy += 1.0 * x * y;
+  if (n < 2) return 0;
+  const double mx = sx / n, my = sy / n;
+  const double cxx = sxx / n - mx * mx, cyy = syy / n - my * my, cxy = sxy / n - mx * my;
+  return std::sqrt(std::max(0.0, cxx * cyy - cxy * cxy));
+}
+
+// How far frame k's mix of palette colours is from frame 0's: half the sum over colours of the
+// difference of their shares of the counted colour area (0: the same mix, 1: no colour shared).
+double colour_mix_distance(const FrameStats& st, int k) {
+  double t0 = 0, tk = 0;
+  for (const auto& a : st.area) t0 += a[0], tk += a[k];
+  if (t0 <= 0 || tk <= 0) return 1;
+  double d = 0;
+  for (const auto& a : st.area) d += std::abs(a[k] / tk - a[0] / t0);
+  return 0.5 * d;
+}
+
+// The share of frames 1..K-1 that are a flat change of frame 0, in one of two ways:
+//  - frame 0 stretched (a hop's squash) or turned about its vertical axis (its width scaled,
+//    mirrored past edge on: a flat figure's pirouette): their foreground area is frame 0's times
+//    the stretch of its box (within kFlatArea) and their colours agree with frame 0's stretched
+//    into their box (kFlatAgreement);
+//  - frame 0 mapped in the plane any other way as well (turned about its vertical axis while it
+//    also twists, bends or rocks: a tornado that "twists and whirls", its top swung 10 degrees
+//    against its base as it turns): their foreground area is frame 0's times the change of its
+//    spread (foreground_spread, within kFlatArea) and every colour keeps its share of the
+//    colours' area (colour_mix_distance at most kFlatMix). Pixel by pixel the first test cannot
+//    see it: no stretch of the first frame's box lays a bent figure on itself, and a line
+//    drawing's bands, an outline a pixel or two wide over its colour's stroke, agreed at 0.83
+//    on a frame that was the first one again.
+// Such changes of area are the figure's own, in the plane: the fitter follows them with its
+// control points. Parts that grow or shrink inside a box that does not (a 3D turn showing other
+// sides) change the area alone, and the mix of colours with it.
 double flat_stretch_share(const FrameStats& st, int K, int W, int H) {
-  constexpr double kFlatAgreement = 0.75, kFlatArea = 0.15;
+  constexpr double kFlatAgreement = 0.75, kFlatArea = 0.15, kFlatMix = 0.15;
   const std::array<int, 4> b0 = foreground_box(st, 0, W, H);
   if (K < 2 || b0[2] <= b0[0] || st.total[0] <= 0) return 0;
   const double box0 = static_cast<double>(b0[2] - b0[0]) * (b0[3] - b0[1]);
+  const double spread0 = foreground_spread(st, 0, W, H);
   int flat = 0;
   for (int k = 1; k < K; ++k) {
     const std::array<int, 4> bk = foreground_box(st, k, W, H);
     if (bk[2] <= bk[0]) continue;
     const double expected = st.total[0] * (bk[2] - bk[0]) * (bk[3] - bk[1]) / box0;
-    if (std::abs(st.total[k] / expected - 1) > kFlatArea) continue;
-    const double agree = std::max(stretch_agreement(st, k, W, b0, bk, false), stretch_agreement(st, k, W, b0, bk, true));
-    flat += agree >= kFlatAgreement;
+    if (std::abs(st.total[k] / expected - 1) <= kFlatArea &&
+        std::max(stretch_agreement(st, k, W, b0, bk, false), stretch_agreement(st, k, W, b0, bk, true)) >= kFlatAgreement) {
+      ++flat;
+      continue;
+    }
+    const double spread_k = foreground_spread(st, k, W, H);
+    if (spread0 <= 0 || spread_k <= 0) continue;
+    const double mapped = st.total[0] * spread_k / spread0;
+    flat += std::abs(st.total[k] / mapped - 1) <= kFlatArea && colour_mix_distance(st, k) <= kFlatMix;
   }
   return static_cast<double>(flat) / (K - 1);
 }

@@ -20,7 +20,10 @@
 //                     jump between consecutive frames: max of (0.3 - min/first) / 0.25,
 //                     (0.3 - first/max) / 0.25 and (jump - 0.35) / 0.4
 //   out_of_plane      relative std s of the total foreground area, counted only when no colour
-//                     appears or vanishes: (s - 0.08) / 0.22 * (1 - appear/vanish value)
+//                     appears or vanishes: (s - 0.08) / 0.22 * (1 - appear/vanish value), and
+//                     only for the frames that are no flat change of the first (its box
+//                     stretched, or its foreground's spread changed with every colour keeping
+//                     its share: a turn while it twists in the plane)
 //   motion            over the pixels that are foreground in either frame: r = largest share of
 //                     them whose colour differs from the first frame's by more than 0.15, m =
 //                     mean absolute difference of consecutive frames. (0.005 - r) / 0.004 below
