@@ -17,6 +17,8 @@ constexpr double kEarTop = 0.2;        // an ear's top within this share of F's 
 constexpr double kEarMiddle = 0.45;    // its middle above this share of F's height
 constexpr double kPartMinSize = 0.1;   // a part's longer side at least this share of F's longer side
 constexpr double kPartMaxShare = 0.35; // a part's box at most this share of F's box
+constexpr double kEarMaxShare = 0.55;  // an ear's, when none of the usual size sticks out: an
+                                       // elephant's ear spans most of its head (openmoji's: 0.45)
 constexpr double kPairShare = 0.3;     // the second of a pair at least this share of the first's score
 constexpr double kClapperOffCentre = 0.15;  // a clapper's middle within this share of B's width of B's middle
 constexpr double kClapperLow = 0.7;    // its middle below this share of B's height
@@ -129,13 +131,13 @@ void add_paths(const Rig& rig, const std::vector<int>& els, std::set<int>& paths
 
 // The elements a part may be: not the body, no larger than kPartMaxShare of the figure's box,
 // not too small, and not inside another such element (they come with it as its details).
-std::vector<int> part_candidates(const Rig& rig, int body) {
+std::vector<int> part_candidates(const Rig& rig, int body, double max_share = kPartMaxShare) {
   const RigBox& F = rig.figure;
   const double D = std::max(F.w(), F.h());
   std::vector<int> c;
   for (size_t i = 0; i < rig.elements.size(); ++i) {
     const RigBox& b = rig.elements[i].box;
-    if (static_cast<int>(i) == body || b.area() > kPartMaxShare * F.area() || std::max(b.w(), b.h()) < kPartMinSize * D) continue;
+    if (static_cast<int>(i) == body || b.area() > max_share * F.area() || std::max(b.w(), b.h()) < kPartMinSize * D) continue;
     c.push_back(static_cast<int>(i));
   }
   std::vector<int> out;
@@ -166,13 +168,17 @@ LocatedPart ears(const Rig& rig, int body) {
   LocatedPart out;
   const RigBox& F = rig.figure;
   const RigBox& B = rig.elements[body].box;
-  // Sticking out: the share of its box above the body's top counts most.
+  // Sticking out: the share of its box above the body's top counts most. Ears of a part's
+  // usual size first (a hare's, whose head is no ear); a large one only when none is found.
   std::vector<std::pair<double, int>> scored;
-  for (int i : part_candidates(rig, body)) {
-    const RigBox& b = rig.elements[i].box;
-    if (b.y0 > F.y0 + kEarTop * F.h() || b.centre().y > F.y0 + kEarMiddle * F.h()) continue;
-    const double above = std::clamp((B.y0 - b.y0) / std::max(b.h(), 1e-9), 0.0, 1.0);
-    scored.push_back({rig.elements[i].area * (0.25 + above), i});
+  for (double max_share : {kPartMaxShare, kEarMaxShare}) {
+    for (int i : part_candidates(rig, body, max_share)) {
+      const RigBox& b = rig.elements[i].box;
+      if (b.y0 > F.y0 + kEarTop * F.h() || b.centre().y > F.y0 + kEarMiddle * F.h()) continue;
+      const double above = std::clamp((B.y0 - b.y0) / std::max(b.h(), 1e-9), 0.0, 1.0);
+      scored.push_back({rig.elements[i].area * (0.25 + above), i});
+    }
+    if (!scored.empty()) break;
   }
   std::sort(scored.rbegin(), scored.rend());
   if (scored.empty()) return out;
