@@ -7,6 +7,7 @@
 #include <set>
 
 #include "motion/motion_verbs.h"
+#include "procedural/petal_rosette.h"
 
 namespace svgm {
 
@@ -423,6 +424,7 @@ PartShape part_shape_of(std::string_view w, FigureClass figure) {
   if (figure == FigureClass::Object && any_stem(w, {"hand", "needl", "pointer"})) return PartShape::Hands;
   if (any_stem(w, {"claw", "pincer", "nipper", "mandibl", "chela"})) return PartShape::SidePair;
   if (animal && any_stem(w, {"trunk", "proboscis", "snout"})) return PartShape::Branch;
+  if (any_stem(w, {"petal"})) return PartShape::Petals;
   return PartShape::None;
 }
 
@@ -434,6 +436,7 @@ const char* part_shape_name(PartShape s) {
     case PartShape::Hands: return "hands";
     case PartShape::SidePair: return "side pair";
     case PartShape::Branch: return "branch";
+    case PartShape::Petals: return "petals";
     case PartShape::None: break;
   }
   return "none";
@@ -504,6 +507,7 @@ LocatedPart locate_part(const Rig& rig, PartShape shape) {
     case PartShape::Hands: out = hands(rig, body); break;
     case PartShape::SidePair: out = side_pair(rig, body); break;
     case PartShape::Branch: out = branch(rig); break;
+    case PartShape::Petals: out = find_petals(rig); break;
     case PartShape::None: break;
   }
   out.shape = shape;
