@@ -79,6 +79,22 @@ TEST_CASE("part locator: a hare's ears drawn in its body's group twitch; the bod
   CHECK(j["plan"][0]["located_paths"].size() == 3);
 }
 
+TEST_CASE("part locator: an elephant's ear, larger than a usual part (38 % of the figure's box), flaps; the body and the eye hold") {
+  const Drawing d("elephant_ear.svg");
+  REQUIRE(d.rig.parts.size() == 1);
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the elephant flaps its ears"), d.rig, 1);
+  REQUIRE(plan.actions.size() >= 1);
+  const PlannedAction& a = plan.actions[0];
+  CHECK(a.region == Region::Located);
+  CHECK(a.lobes.size() == 1);
+  CHECK(a.lobe_paths == std::vector<int>{1});
+  CHECK(a.why.find("the ears found as ears: 1 element sticks out at the figure's top (path 2 at") != std::string::npos);
+  const auto t = d.travel(plan);
+  CHECK(t[0] == 0.0);
+  CHECK(t[1] > 10.0);
+  CHECK(t[2] == 0.0);
+}
+
 TEST_CASE("part locator: a bell's clapper swings about its top under the rim, its fill with its outline; the bell holds") {
   const Drawing d("bell_clapper.svg");
   const MotionPlan plan = plan_from_prompt(parse_prompt("the bell's clapper swings"), d.rig, 1);

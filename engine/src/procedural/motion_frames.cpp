@@ -149,6 +149,9 @@ Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box
       if (a.region_side != 0 && l.side != a.region_side) continue;
       const double depth = lobe_depth(l, q);
       if (depth <= 0) continue;
+      // A located part that grows (petals opening, petal_rosette.h): its points spread from the
+      // lobe's centre, as a pulse scales a part about its middle.
+      if (a.primitive == Primitive::Pulse) return l.pivot + (1 + amp * (0.5 - 0.5 * std::cos(kTau * a.cycles * t))) * (q - l.pivot);
       const double base = std::hypot(l.base1.x - l.base0.x, l.base1.y - l.base0.y);
       const double w = smoothstep(depth / std::max(kLobeRamp * base, 1e-9));
       const double ang = amp * (l.side < 0 ? 1 : -1) * wave(a.alternating && l.side > 0 ? 0.5 : 0) * w;

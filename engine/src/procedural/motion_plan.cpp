@@ -307,6 +307,12 @@ struct Builder {
     // verb of the whole figure aimed at it ("the elephant swings its trunk": a rock of 7 degrees
     // about the figure's base), of size, or of a head's small nods ("spouts" read as eat, 6
     // degrees) would barely move it.
+    // Petals that open ("the petals open", "bloom") keep the verb's growth: they spread from the
+    // flower's centre (petal_rosette.h); turned on a joint, a flower head only twisted.
+    if (located && located->shape == PartShape::Petals && a.primitive == Primitive::Pulse) {
+      rock_on_part = false;
+      return "petals open: they spread from the flower's centre";
+    }
     if (located) {
       if (a.primitive != Primitive::Swing || base.primitive != Primitive::Swing) amp = 0;
       a.primitive = Primitive::Swing;

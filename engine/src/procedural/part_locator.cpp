@@ -7,6 +7,7 @@
 #include <set>
 
 #include "motion/motion_verbs.h"
+#include "procedural/petal_rosette.h"
 
 namespace svgm {
 
@@ -17,6 +18,8 @@ constexpr double kEarTop = 0.2;        // an ear's top within this share of F's 
 constexpr double kEarMiddle = 0.45;    // its middle above this share of F's height
 constexpr double kPartMinSize = 0.1;   // a part's longer side at least this share of F's longer side
 constexpr double kPartMaxShare = 0.35; // a part's box at most this share of F's box
+constexpr double kEarMaxShare = 0.55;  // an ear's, when none of the usual size sticks out: an
+                                       // elephant's ear spans most of its head (openmoji's: 0.45)
 constexpr double kPairShare = 0.3;     // the second of a pair at least this share of the first's score
 constexpr double kClapperOffCentre = 0.15;  // a clapper's middle within this share of B's width of B's middle
 constexpr double kClapperLow = 0.7;    // its middle below this share of B's height
@@ -129,13 +132,13 @@ void add_paths(const Rig& rig, const std::vector<int>& els, std::set<int>& paths
 
 // The elements a part may be: not the body, no larger than kPartMaxShare of the figure's box,
 // not too small, and not inside another such element (they come with it as its details).
-std::vector<int> part_candidates(const Rig& rig, int body) {
+std::vector<int> part_candidates(const Rig& rig, int body, double max_share = kPartMaxShare) {
   const RigBox& F = rig.figure;
   const double D = std::max(F.w(), F.h());
   std::vector<int> c;
   for (size_t i = 0; i < rig.elements.size(); ++i) {
     const RigBox& b = rig.elements[i].box;
-    if (static_cast<int>(i) == body || b.area() > kPartMaxShare * F.area() || std::max(b.w(), b.h()) < kPartMinSize * D) continue;
+    if (static_cast<int>(i) == body || b.area() > max_share * F.area() || std::max(b.w(), b.h()) < kPartMinSize * D) continue;
     c.push_back(static_cast<int>(i));
   }
   std::vector<int> out;
@@ -166,13 +169,17 @@ LocatedPart ears(const Rig& rig, int body) {
   LocatedPart out;
   const RigBox& F = rig.figure;
   const RigBox& B = rig.elements[body].box;
-  // Sticking out: the share of its box above the body's top counts most.
+  // Sticking out: the share of its box above the body's top counts most. Ears of a part's
+  // usual size first (a hare's, whose head is no ear); a large one only when none is found.
   std::vector<std::pair<double, int>> scored;
-  for (int i : part_candidates(rig, body)) {
-    const RigBox& b = rig.elements[i].box;
-    if (b.y0 > F.y0 + kEarTop * F.h() || b.centre().y > F.y0 + kEarMiddle * F.h()) continue;
-    const double above = std::clamp((B.y0 - b.y0) / std::max(b.h(), 1e-9), 0.0, 1.0);
-    scored.push_back({rig.elements[i].area * (0.25 + above), i});
+  for (double max_share : {kPartMaxShare, kEarMaxShare}) {
+    for (int i : part_candidates(rig, body, max_share)) {
+      const RigBox& b = rig.elements[i].box;
+      if (b.y0 > F.y0 + kEarTop * F.h() || b.centre().y > F.y0 + kEarMiddle * F.h()) continue;
+      const double above = std::clamp((B.y0 - b.y0) / std::max(b.h(), 1e-9), 0.0, 1.0);
+      scored.push_back({rig.elements[i].area * (0.25 + above), i});
+    }
+    if (!scored.empty()) break;
   }
   std::sort(scored.rbegin(), scored.rend());
   if (scored.empty()) return out;
@@ -417,6 +424,7 @@ PartShape part_shape_of(std::string_view w, FigureClass figure) {
   if (figure == FigureClass::Object && any_stem(w, {"hand", "needl", "pointer"})) return PartShape::Hands;
   if (any_stem(w, {"claw", "pincer", "nipper", "mandibl", "chela"})) return PartShape::SidePair;
   if (animal && any_stem(w, {"trunk", "proboscis", "snout"})) return PartShape::Branch;
+  if (any_stem(w, {"petal"})) return PartShape::Petals;
   return PartShape::None;
 }
 
@@ -428,6 +436,7 @@ const char* part_shape_name(PartShape s) {
     case PartShape::Hands: return "hands";
     case PartShape::SidePair: return "side pair";
     case PartShape::Branch: return "branch";
+    case PartShape::Petals: return "petals";
     case PartShape::None: break;
   }
   return "none";
@@ -498,6 +507,7 @@ LocatedPart locate_part(const Rig& rig, PartShape shape) {
     case PartShape::Hands: out = hands(rig, body); break;
     case PartShape::SidePair: out = side_pair(rig, body); break;
     case PartShape::Branch: out = branch(rig); break;
+    case PartShape::Petals: out = find_petals(rig); break;
     case PartShape::None: break;
   }
   out.shape = shape;

@@ -20,7 +20,9 @@
 //    with the elements overlapping it) farthest forward (up) and largest, each turning about
 //    its point nearest the body;
 //  - a branch (trunk, proboscis, snout): the longest limb of the silhouette's skeleton
-//    (Rig::limbs) that does not stand on the ground (legs do), about its base.
+//    (Rig::limbs) that does not stand on the ground (legs do), about its base;
+//  - petals: a rosette outline or a ring of repeated elements round a centre, with what is
+//    drawn inside it, spreading from the centre (petal_rosette.h).
 // A part found becomes lobes (outline_lobes.h): the hull of its elements' points beyond a base
 // line across the joint, so its points (and the details drawn on it) turn, growing from nothing
 // at the base, and the body holds. Only the elements' own paths (and those drawn inside them)
@@ -36,7 +38,7 @@
 
 namespace svgm {
 
-enum class PartShape { None, Ears, Jet, Clapper, Hands, SidePair, Branch };
+enum class PartShape { None, Ears, Jet, Clapper, Hands, SidePair, Branch, Petals };
 
 // The kind of part a noun names ("ears" -> Ears, "clapper" -> Clapper), None for nouns the
 // locator does not place. `figure`: the prompt's figure class (lexicon.h): a trunk is a branch
