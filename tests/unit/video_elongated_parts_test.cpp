@@ -114,6 +114,22 @@ TEST_CASE("elongated parts: a rose droops at its neck, the top of its one stem; 
   CHECK(t[3] > 5.0);   // the petal drawn on it
 }
 
+TEST_CASE("elongated parts: a sheaf of two stems has no one bloom: it bends from its base as before") {
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200"><g>
+           <path d="M 80 190 C 82 160 78 130 80 95" fill="none" stroke="#262" stroke-width="5"/>
+           <path d="M 120 190 C 122 160 118 130 120 95" fill="none" stroke="#262" stroke-width="5"/>
+           <path d="M 100 95 C 50 95 50 25 100 25 C 150 25 150 95 100 95 Z" fill="#dc4"/></g></svg>)", "sheaf.svg");
+  const Rig rig = build_rig(s, {});
+  CHECK(locate_part(rig, PartShape::Bloom).lobes.empty());
+  const ParsedPrompt prompt = parse_prompt("the wheat droops");
+  REQUIRE(prompt.clauses[0].figure == FigureClass::Plant);
+  const MotionPlan plan = plan_from_prompt(prompt, rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].region == Region::None);
+  CHECK(plan.actions[0].anchored == 4);  // held at its bottom
+}
+
 TEST_CASE("elongated parts: a tail the skeleton labelled arms is the limbs opposite the head, not the far end of the box") {
   // An upright figure (a mermaid): the head up left, an arm raised to the right near it, and
   // the tail's fin low on the right, two lobes leaving the body side by side.
