@@ -84,7 +84,10 @@ TEST_CASE("elongated parts: a jellyfish's tentacles wave about their ends under 
   CHECK(a.lobes.size() == 3);  // each colour stroke with the outline drawn along it
   CHECK(a.lobe_paths == std::vector<int>{2, 3, 4, 5, 6, 7});
   CHECK(a.why.find("the tentacles found as strands: 3 elongated elements hang below the body") != std::string::npos);
-  for (const ArmLobe& l : a.lobes) CHECK(l.pivot.y < 95);  // each turns about its top, at the bell
+  for (const ArmLobe& l : a.lobes) {
+    CHECK(l.pivot.y < 95);         // each turns about its top, at the bell
+    CHECK(l.side == a.lobes[0].side);  // all the same way: mirrored, neighbours crossed
+  }
   const auto t = d.travel(plan);
   CHECK(t[0] == 0.0);  // the bell
   CHECK(t[1] == 0.0);  // the highlight on it

@@ -467,7 +467,9 @@ LocatedPart strands(const Rig& rig, int body) {
   if (groups.size() < 2) return out;
   std::set<int> paths;
   for (size_t g = 0; g < groups.size(); ++g) {
-    out.lobes.push_back(lobe_over(rig, groups[g], ends[g]));
+    ArmLobe l = lobe_over(rig, groups[g], ends[g]);
+    l.side = -1;  // every strand turns the same way: mirrored, the two middle ones crossed
+    out.lobes.push_back(l);
     add_paths(rig, groups[g], paths);
   }
   out.paths.assign(paths.begin(), paths.end());

@@ -22,8 +22,9 @@
 //  - a branch (trunk, proboscis, snout): the longest limb of the silhouette's skeleton
 //    (Rig::limbs) that does not stand on the ground (legs do), about its base.
 //  - strands (tentacle, tendril, strand): the elongated elements hanging below the body (their
-//    middles below its bottom) with one end at the body (a jellyfish's tentacles under its bell), at least two,
-//    each with the strokes drawn along it (a colour under its outline), turning about that end.
+//    middles below its bottom) with one end at the body (a jellyfish's tentacles under its
+//    bell), at least two, each with the strokes drawn along it (a colour under its outline),
+//    turning about that end, all the same way (mirrored, neighbours crossed).
 //  - a bloom (no noun: a whole plant's bend, motion_plan.cpp): a flower's head on one stem,
 //    the largest element above the stem's top end and at it with those above the end that
 //    overlap it in turn, turning about that end (its neck); the stem and the leaves along it
