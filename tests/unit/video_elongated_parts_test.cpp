@@ -109,6 +109,7 @@ TEST_CASE("elongated parts: a rose droops at its neck, the top of its one stem; 
   CHECK(a.lobes[0].pivot.x == doctest::Approx(100));
   CHECK(a.lobes[0].pivot.y == doctest::Approx(95));
   CHECK(a.lobe_paths == std::vector<int>{2, 3});
+  CHECK(a.one_sided != 0);  // down and back, not up past the stem as well
   CHECK(a.why.find("found as bloom: 2 elements drawn above the top of the one stem (path 1)") != std::string::npos);
   const auto t = d.travel(plan);
   CHECK(t[0] == 0.0);  // the stem

@@ -338,6 +338,9 @@ struct Builder {
         !(bloom = locate_part(rig, PartShape::Bloom)).lobes.empty()) {
       located = &bloom;
       target = a.target = Target::Named;
+      // It droops to the side the head leans and back, not up past the stem as well.
+      const ArmLobe& l = bloom.lobes[0];
+      a.one_sided = (l.tip.x >= l.pivot.x ? 1 : -1) * (l.side < 0 ? 1 : -1);
     }
     if (primary_retargeted && whole_only(a.primitive) && target != Target::Whole) {
       // When the verb's amplitude is in another unit than the part's primitive (a squat's
