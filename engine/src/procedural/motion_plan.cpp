@@ -348,6 +348,18 @@ struct Builder {
     a.target = target;
     double amp = base.amp;
     bool rock_on_part = false;  // a rock's degrees, about the figure's base, now on a part
+    // A plant bent whole with a bloom on one stem (part_locator.h) bends at its neck: the head
+    // turns there, the stem and its leaves hold. Bent from the stem's base, a rose's leaf at
+    // mid-height swung as far as its head.
+    LocatedPart bloom;
+    if (!located && a.primitive == Primitive::Bend && target == Target::Whole && figure == FigureClass::Plant &&
+        !(bloom = locate_part(rig, PartShape::Bloom)).lobes.empty()) {
+      located = &bloom;
+      target = a.target = Target::Named;
+      // It droops to the side the head leans and back, not up past the stem as well.
+      const ArmLobe& l = bloom.lobes[0];
+      a.one_sided = (l.tip.x >= l.pivot.x ? 1 : -1) * (l.side < 0 ? 1 : -1);
+    }
     if (primary_retargeted && whole_only(a.primitive) && target != Target::Whole) {
       // When the verb's amplitude is in another unit than the part's primitive (a squat's
       // figure heights, a swing's degrees), the part's primitive gets its usual size.
@@ -388,7 +400,7 @@ struct Builder {
       a.lobe_paths = located->paths;
       a.sign = {1};
       a.phase = {0};
-      note = "the " + target_word + " found as " + part_shape_name(located->shape) + ": " + located->why;
+      note = "the " + (target_word.empty() ? std::string("head") : target_word) + " found as " + part_shape_name(located->shape) + ": " + located->why;
     } else if (target == Target::Named) a.parts = named_parts;
     else if (target != Target::Whole && target != Target::Repeated) a.parts = parts_for(rig, target, target_word, &note);
     if (rock_on_part && !a.parts.empty()) {
@@ -499,6 +511,9 @@ struct Builder {
       std::vector<ArmLobe> picked;
       for (const ArmLobe& l : rig.limbs)
         if (lobe_serves(l.kind, target)) picked.push_back(l);
+      // No limb labelled a tail: the limbs opposite the head (part_locator.h), not the far end
+      // of the box, which reached a mermaid's raised hand.
+      if (picked.empty() && target == Target::Tail) picked = tail_limbs(rig);
       // A winged figure seen from the side (the prompt's bird or insect) shows its far wing
       // rising behind the near one, where the skeleton's labels see an upright body's head:
       // with one arm found, the limbs pointing up are its wings, and they beat together. A

@@ -29,6 +29,12 @@ constexpr double kHandsMeet = 0.12;    // hands' inner ends within this share of
 constexpr double kSideOffCentre = 0.2; // a side protrusion's middle this share of F's width off F's middle
 constexpr double kInside = 0.8;        // an element inside another: this share of its box within
 constexpr double kHullGrow = 0.06;     // a lobe's outline is its hull grown by this share about its middle
+constexpr double kGround = 0.03;       // a limb whose outline comes this share of F's height to F's bottom stands
+constexpr double kStemMin = 0.3;       // a stem at least this share of F's height
+constexpr double kBloomMin = 0.08;     // a bloom's box at least this share of F's box
+constexpr double kTailMaxLength = 0.5; // a tail no longer than this share of F's longer side
+constexpr double kStrandReach = 0.1;   // a strand's end within this share of F's longer side of the body's box
+constexpr double kStrandAlong = 0.5;   // strokes drawn along one strand: boxes overlapping this share of the smaller
 
 double overlap_area(const RigBox& a, const RigBox& b) {
   const double ox = std::min(a.x1, b.x1) - std::max(a.x0, b.x0), oy = std::min(a.y1, b.y1) - std::max(a.y0, b.y0);
@@ -379,14 +385,23 @@ LocatedPart side_pair(const Rig& rig, int body) {
   return out;
 }
 
+// Whether a limb stands on the ground: its outline reaches the figure's bottom. A limb the
+// skeleton labelled a leg because it points down (an elephant's trunk hanging beside legs too
+// stout to be limbs) does not.
+bool stands(const Rig& rig, const ArmLobe& l) {
+  double low = -1e300;
+  for (Vec2 q : l.outline) low = std::max(low, q.y);
+  return low >= rig.figure.y1 - kGround * rig.figure.h();
+}
+
 LocatedPart branch(const Rig& rig) {
   LocatedPart out;
-  // The longest limb of the silhouette that is no leg (legs stand on the ground).
+  // The longest limb of the silhouette that does not stand on the ground (legs do).
   int best = -1;
   double longest = 0;
   for (size_t i = 0; i < rig.limbs.size(); ++i) {
     const ArmLobe& l = rig.limbs[i];
-    if (l.kind == LobeKind::Leg) continue;
+    if (l.kind == LobeKind::Leg && stands(rig, l)) continue;
     const double len = dist(l.pivot, l.tip);
     if (len > longest) longest = len, best = static_cast<int>(i);
   }
@@ -403,7 +418,127 @@ LocatedPart branch(const Rig& rig) {
   out.paths.assign(paths.begin(), paths.end());
   RigBox b;
   for (Vec2 q : rig.limbs[best].outline) b.add(q);
-  out.why = "the longest limb of the silhouette's skeleton that is not a leg (at " + fmt_box(rig, b) + "), bending about its base";
+  out.why = "the longest limb of the silhouette's skeleton that does not stand on the ground (at " + fmt_box(rig, b) + "), bending about its base";
+  return out;
+}
+
+// How far q lies outside box b (0 inside).
+double box_distance(const RigBox& b, Vec2 q) {
+  return std::hypot(std::max({b.x0 - q.x, 0.0, q.x - b.x1}), std::max({b.y0 - q.y, 0.0, q.y - b.y1}));
+}
+
+// Puts element e with the strand in `groups` it is drawn along (its box and the strand's
+// first one's overlap by kStrandAlong of the smaller), else in a strand of its own; true then.
+bool join_along(const Rig& rig, std::vector<std::vector<int>>& groups, int e) {
+  const RigBox& b = rig.elements[e].box;
+  for (auto& g : groups) {
+    const RigBox& lead = rig.elements[g[0]].box;
+    const double smaller = std::max(std::min(b.area(), lead.area()), 1e-12);
+    if (overlap_area(b, lead) >= kStrandAlong * smaller) {
+      g.push_back(e);
+      return false;
+    }
+  }
+  groups.push_back({e});
+  return true;
+}
+
+LocatedPart strands(const Rig& rig, int body) {
+  LocatedPart out;
+  const RigBox& F = rig.figure;
+  const RigBox& B = rig.elements[body].box;
+  const double D = std::max(F.w(), F.h());
+  // Elongated elements hanging below the body (their middles below its bottom: a highlight
+  // drawn on the bell is no tentacle), one end at the body: each with its end there.
+  std::vector<std::pair<int, Vec2>> hanging;
+  for (size_t i = 0; i < rig.elements.size(); ++i) {
+    const RigElement& e = rig.elements[i];
+    if (static_cast<int>(i) == body || e.box.centre().y <= B.y1 || e.box.area() > kPartMaxShare * F.area() ||
+        std::max(e.box.w(), e.box.h()) < kPartMinSize * D)
+      continue;
+    const Axis ax = axis_of(e);
+    if (ax.elongation < kThin && !e.thin) continue;
+    const Vec2 end = box_distance(B, ax.a) < box_distance(B, ax.b) ? ax.a : ax.b;
+    if (box_distance(B, end) <= kStrandReach * D) hanging.push_back({static_cast<int>(i), end});
+  }
+  // Strokes drawn along one strand (a colour under its outline) are one strand: the longest
+  // leads, its end the pivot.
+  std::sort(hanging.begin(), hanging.end(), [&](const auto& x, const auto& y) {
+    const RigBox &a = rig.elements[x.first].box, &b = rig.elements[y.first].box;
+    return std::hypot(a.w(), a.h()) > std::hypot(b.w(), b.h());
+  });
+  std::vector<std::vector<int>> groups;
+  std::vector<Vec2> ends;
+  for (const auto& [e, end] : hanging)
+    if (join_along(rig, groups, e)) ends.push_back(end);
+  if (groups.size() < 2) return out;
+  std::set<int> paths;
+  for (size_t g = 0; g < groups.size(); ++g) {
+    ArmLobe l = lobe_over(rig, groups[g], ends[g]);
+    l.side = -1;  // every strand turns the same way: mirrored, the two middle ones crossed
+    out.lobes.push_back(l);
+    add_paths(rig, groups[g], paths);
+  }
+  out.paths.assign(paths.begin(), paths.end());
+  RigBox all;
+  for (const auto& g : groups)
+    for (int e : g) all.add(rig.elements[e].box);
+  out.why = std::to_string(groups.size()) + " elongated elements hang below the body (" + std::to_string(hanging.size()) +
+            " strokes at " + fmt_box(rig, all) + "), each turning about its end at the body";
+  return out;
+}
+
+LocatedPart bloom(const Rig& rig) {
+  LocatedPart out;
+  const RigBox& F = rig.figure;
+  // Stems: long upright elongated elements, the strokes drawn along one stem together.
+  std::vector<std::pair<double, int>> upright;
+  for (size_t i = 0; i < rig.elements.size(); ++i) {
+    const RigElement& e = rig.elements[i];
+    const Axis ax = axis_of(e);
+    if ((ax.elongation < kThin && !e.thin) || e.box.h() < kStemMin * F.h() || e.box.h() < e.box.w()) continue;
+    upright.push_back({e.box.h(), static_cast<int>(i)});
+  }
+  std::sort(upright.rbegin(), upright.rend());
+  std::vector<std::vector<int>> stems;
+  for (const auto& u : upright) join_along(rig, stems, u.second);
+  if (stems.size() != 1) return out;
+  const std::vector<int>& stem = stems[0];
+  const Axis ax = axis_of(rig.elements[stem[0]]);
+  const Vec2 neck = ax.a.y < ax.b.y ? ax.a : ax.b;
+  // The head: the largest element drawn above the neck (its box's middle) and at it, with the
+  // elements above the neck that overlap it, or one of them, in turn (its petals). A leaf
+  // reaching up beside the head from lower on the stem is not among them.
+  std::vector<int> above;
+  for (size_t i = 0; i < rig.elements.size(); ++i)
+    if (std::find(stem.begin(), stem.end(), static_cast<int>(i)) == stem.end() && rig.elements[i].box.centre().y < neck.y)
+      above.push_back(static_cast<int>(i));
+  int seed = -1;
+  for (int i : above)
+    if (box_distance(rig.elements[i].box, neck) <= kStrandReach * std::max(F.w(), F.h()) &&
+        (seed < 0 || rig.elements[i].box.area() > rig.elements[seed].box.area()))
+      seed = i;
+  if (seed < 0) return out;
+  std::vector<int> head = {seed};
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (int i : above)
+      if (std::find(head.begin(), head.end(), i) == head.end() &&
+          std::any_of(head.begin(), head.end(), [&](int h) { return overlap_area(rig.elements[i].box, rig.elements[h].box) > 0; })) {
+        head.push_back(i);
+        grew = true;
+      }
+  }
+  RigBox box;
+  for (int h : head) box.add(rig.elements[h].box);
+  // A head is a good share of the plant.
+  if (box.area() < kBloomMin * F.area()) return out;
+  out.lobes.push_back(lobe_over(rig, head, neck));
+  std::set<int> paths;
+  add_paths(rig, head, paths);
+  out.paths.assign(paths.begin(), paths.end());
+  out.why = std::to_string(head.size()) + " element" + (head.size() > 1 ? "s" : "") + " drawn above the top of the one stem (" +
+            path_ids(stem, rig) + ") at " + fmt_box(rig, box) + ", turning about the stem's top";
   return out;
 }
 
@@ -425,6 +560,7 @@ PartShape part_shape_of(std::string_view w, FigureClass figure) {
   if (any_stem(w, {"claw", "pincer", "nipper", "mandibl", "chela"})) return PartShape::SidePair;
   if (animal && any_stem(w, {"trunk", "proboscis", "snout"})) return PartShape::Branch;
   if (any_stem(w, {"petal"})) return PartShape::Petals;
+  if (any_stem(w, {"tentacl", "tendril", "strand"})) return PartShape::Strands;
   return PartShape::None;
 }
 
@@ -437,6 +573,8 @@ const char* part_shape_name(PartShape s) {
     case PartShape::SidePair: return "side pair";
     case PartShape::Branch: return "branch";
     case PartShape::Petals: return "petals";
+    case PartShape::Strands: return "strands";
+    case PartShape::Bloom: return "bloom";
     case PartShape::None: break;
   }
   return "none";
@@ -508,9 +646,49 @@ LocatedPart locate_part(const Rig& rig, PartShape shape) {
     case PartShape::SidePair: out = side_pair(rig, body); break;
     case PartShape::Branch: out = branch(rig); break;
     case PartShape::Petals: out = find_petals(rig); break;
+    case PartShape::Strands: out = strands(rig, body); break;
+    case PartShape::Bloom: out = bloom(rig); break;
     case PartShape::None: break;
   }
   out.shape = shape;
+  return out;
+}
+
+std::vector<ArmLobe> tail_limbs(const Rig& rig) {
+  // Where the head is: the rig's head parts, else the tips of the skeleton's head limbs.
+  Vec2 head;
+  double weight = 0;
+  for (const RigPart& P : rig.parts)
+    if (P.role == Role::Head && !P.box.empty()) {
+      const double w = std::max(P.box.area(), 1e-12);
+      head = head + w * P.box.centre();
+      weight += w;
+    }
+  if (weight == 0)
+    for (const ArmLobe& l : rig.limbs)
+      if (l.kind == LobeKind::Head) head = head + l.tip, weight += 1;
+  if (weight == 0 || rig.figure.empty()) return {};
+  head = (1 / weight) * head;
+  const Vec2 c = rig.figure.centre(), front = head - c;
+  int best = -1;
+  for (size_t i = 0; i < rig.limbs.size(); ++i) {
+    const ArmLobe& l = rig.limbs[i];
+    if (l.kind == LobeKind::Head || l.kind == LobeKind::Leg) continue;
+    // As long as half the figure: the body itself (a lying bar with a head on it), no tail.
+    if (dist(l.pivot, l.tip) > kTailMaxLength * std::max(rig.figure.w(), rig.figure.h())) continue;
+    const Vec2 to = l.tip - c;
+    if (to.x * front.x + to.y * front.y >= 0) continue;  // on the head's side of the middle
+    if (best < 0 || dist(l.tip, head) > dist(rig.limbs[best].tip, head)) best = static_cast<int>(i);
+  }
+  if (best < 0) return {};
+  const ArmLobe& tail = rig.limbs[best];
+  const double base = dist(tail.base0, tail.base1);
+  std::vector<ArmLobe> out = {tail};
+  for (size_t i = 0; i < rig.limbs.size(); ++i) {
+    const ArmLobe& l = rig.limbs[i];
+    if (static_cast<int>(i) != best && l.kind != LobeKind::Head && l.kind != LobeKind::Leg && dist(l.pivot, tail.pivot) <= base)
+      out.push_back(l);
+  }
   return out;
 }
 

@@ -22,7 +22,15 @@
 //  - a branch (trunk, proboscis, snout): the longest limb of the silhouette's skeleton
 //    (Rig::limbs) that does not stand on the ground (legs do), about its base;
 //  - petals: a rosette outline or a ring of repeated elements round a centre, with what is
-//    drawn inside it, spreading from the centre (petal_rosette.h).
+//    drawn inside it, spreading from the centre (petal_rosette.h);
+//  - strands (tentacle, tendril, strand): the elongated elements hanging below the body (their
+//    middles below its bottom) with one end at the body (a jellyfish's tentacles under its
+//    bell), at least two, each with the strokes drawn along it (a colour under its outline),
+//    turning about that end, all the same way (mirrored, neighbours crossed).
+//  - a bloom (no noun: a whole plant's bend, motion_plan.cpp): a flower's head on one stem,
+//    the largest element above the stem's top end and at it with those above the end that
+//    overlap it in turn, turning about that end (its neck); the stem and the leaves along it
+//    hold. A plant of several stems (a sheaf) has no one bloom.
 // A part found becomes lobes (outline_lobes.h): the hull of its elements' points beyond a base
 // line across the joint, so its points (and the details drawn on it) turn, growing from nothing
 // at the base, and the body holds. Only the elements' own paths (and those drawn inside them)
@@ -38,7 +46,7 @@
 
 namespace svgm {
 
-enum class PartShape { None, Ears, Jet, Clapper, Hands, SidePair, Branch, Petals };
+enum class PartShape { None, Ears, Jet, Clapper, Hands, SidePair, Branch, Petals, Strands, Bloom };
 
 // The kind of part a noun names ("ears" -> Ears, "clapper" -> Clapper), None for nouns the
 // locator does not place. `figure`: the prompt's figure class (lexicon.h): a trunk is a branch
@@ -59,5 +67,14 @@ std::vector<RigElement> figure_elements(const Scene& scene, const Rig& rig);
 
 // The part of kind `shape` on the rig's figure; lobes empty when none fits the prior.
 LocatedPart locate_part(const Rig& rig, PartShape shape);
+
+// A tail the skeleton's labels missed: the limbs of the silhouette (Rig::limbs) opposite the
+// head (the rig's head parts, else the skeleton's head limb). Its tip is the farthest from the
+// head of the limbs that are neither the head nor legs nor as long as half the figure (the body
+// itself, a lying bar's end under its head), on the far side of the figure's middle;
+// other such limbs leaving the body beside its base (the two lobes of a fish's fin) go with it.
+// Empty when no head shows where the front is. A mermaid's fin was labelled arms (her body
+// stands upright), and the far end of her box bent her raised hand with it.
+std::vector<ArmLobe> tail_limbs(const Rig& rig);
 
 }  // namespace svgm
