@@ -24,6 +24,8 @@
 
 #include "fit/fit_job.h"
 #include "fit/target/frame_scan.h"
+#include "svgmotion/error.h"
+#include "svgmotion/target_video.h"
 #include "small_fit.h"
 
 using namespace svgm;
@@ -169,3 +171,28 @@ TEST_CASE("frame scan: a clip whose whole frame jitters is stabilised by default
 }
 
 }  // TEST_SUITE
+
+TEST_CASE("frame scan: every frame is visited once, in order, with the pixels load_target keeps for it") {
+  const fs::path dir = scratch("visit");
+  // 40 frames: more than one of the 32-frame batches the scan used to load, each from the start.
+  write_clip(dir, 40, [](int i) { return std::array<double, 2>{0.5 * i, 0.25 * i}; });
+  std::vector<int> seen;
+  std::vector<std::vector<float>> pixels;
+  for_each_target_frame(dir / "frames", 32, 32, [&](int i, const float* rgba) {
+    seen.push_back(i);
+    pixels.emplace_back(rgba, rgba + 32 * 32 * 4);
+  });
+  std::vector<int> all(40);
+  for (int i = 0; i < 40; ++i) all[static_cast<size_t>(i)] = i;
+  CHECK(seen == all);
+  for (int i : {0, 17, 31, 32, 39}) {
+    TargetOptions o;
+    o.denoise_radius = 0;
+    o.retime_held_frames = false;
+    o.frames = {i};
+    CHECK(load_target(dir / "frames", 32, 32, o).raw == pixels[static_cast<size_t>(i)]);
+  }
+  // A bad source is named as load_target names it.
+  CHECK_THROWS_WITH_AS(for_each_target_frame(dir / "missing", 32, 32, [](int, const float*) {}),
+                       doctest::Contains("missing"), svgm::Error);
+}

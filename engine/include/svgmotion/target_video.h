@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -145,5 +146,13 @@ std::array<float, 3> border_median_rgb(const float* rgba, int width, int height)
 
 TargetFrames load_target(const std::filesystem::path& source, int width, int height,
                          const TargetOptions& options = {});
+
+// Every frame of `source` (as above), decoded once in order and handed to `visit` with its index
+// and its pixels resized to width x height as straight RGBA floats: what load_target keeps as
+// `raw` for a sampled frame without denoising or stabilising. One frame is held at a time, so a
+// scan of a long clip costs one decode of it and one frame of memory (load_target, asked for
+// batches of frames, decodes the clip from its start for each batch).
+void for_each_target_frame(const std::filesystem::path& source, int width, int height,
+                           const std::function<void(int index, const float* rgba)>& visit);
 
 }  // namespace svgm

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "procedural/detail_binding.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/support_band.h"
 #include "geometry/rigid_bodies.h"
@@ -346,6 +347,43 @@ Affine element_motion(const Scene& scene, const MotionPlan& plan, int e, const R
   return elem;
 }
 
+// Each part's transform at one frame: its parents' carried down the rig, the root's own turn
+// kept off what stands on the ground, the head upright, and what rides on spinning wheels.
+std::vector<Affine> world_transforms(const Rig& rig, const std::vector<Affine>& local, const Affine& root_turn,
+                                     const std::vector<Affine>& spin, const std::vector<char>& planted, const WheelLoads& loads) {
+  const int G = static_cast<int>(rig.parts.size());
+  std::vector<Affine> world(G);
+  // World transforms down the rig: parents before children (parents are larger, or the root).
+  std::vector<int> order(G);
+  for (int g = 0; g < G; ++g) order[g] = g;
+  auto depth = [&](int g) { int d = 0; for (int p = rig.parts[g].parent; p >= 0 && d < 64; p = rig.parts[p].parent) ++d; return d; };
+  std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return depth(x) < depth(y); });
+  // The root's own turn (the upper body swaying about the hips) leaves what stands on the
+  // ground where it is: the chains hanging from the root that reach down to the figure's feet.
+  // The head rides on the turning body upright (the eyes stay level, on the opponent a boxer
+  // turns into): it goes where its neck goes without the turn. Turned with the body, a boxer's
+  // densely drawn head swung 19 px at its top for a 4-degree turn and outweighed the punch.
+  for (int g : order) {
+    const int p = rig.parts[g].parent;
+    if (g == rig.root) world[g] = local[g] * root_turn;
+    else if (p == rig.root && planted[g]) world[g] = local[p] * local[g];
+    else if (p == rig.root && rig.parts[g].role == Role::Head) {
+      const Vec2 h = rig.parts[g].pivot, to = root_turn.apply(h);
+      world[g] = local[p] * Affine::translate(to.x - h.x, to.y - h.y) * local[g];
+    }
+    else world[g] = p >= 0 ? world[p] * local[g] : local[g];
+  }
+  // A spinning part turns in its own frame and carries what turns with it; its riders go
+  // round upright (wheel_loads).
+  for (int g = 0; g < G; ++g) {
+    if (loads.turns_with[g] >= 0) world[g] = world[g] * spin[loads.turns_with[g]];
+    if (loads.rides[g] < 0) continue;
+    const Vec2 hang = loads.hang[g], to = spin[loads.rides[g]].apply(hang);
+    world[g] = Affine::translate(to.x - hang.x, to.y - hang.y) * world[g];
+  }
+  return world;
+}
+
 }  // namespace
 
 std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames) {
@@ -394,12 +432,22 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     if (a.primitive == Primitive::Spin)
       for (int p : a.parts) spinning[p] = 1;
   const WheelLoads loads = wheel_loads(rig, spinning);
+  // Outlines and shading ride on the fill they are drawn on (detail_binding.h), unless their
+  // own part moves its own way: a spoke turns with its wheel, not with the cabin at its end.
+  std::vector<std::vector<int>> rides_on = bind_detail_points(scene, rig);
+  std::vector<char> own_motion(G, 0);
+  for (const auto& a : plan.actions)
+    for (int p : a.parts) own_motion[p] = 1;
+  for (size_t pi = 0; pi < rides_on.size(); ++pi) {
+    const int g = rig.part_of_path[pi];
+    if (g >= 0 && (own_motion[g] || loads.turns_with[g] >= 0 || loads.rides[g] >= 0)) rides_on[pi].clear();
+  }
 
   std::vector<Vec2> out;
   out.reserve(static_cast<size_t>(frames) * (scene.segment_count() * 3 + scene.paths.size() * 2));
   for (int f = 0; f < frames; ++f) {
     const double t = frames > 1 ? static_cast<double>(f) / (frames - 1) : 0;
-    std::vector<Affine> local(G), world(G), spin(G);
+    std::vector<Affine> local(G), spin(G);
     std::vector<char> spins(G, 0);
     Affine whole, root_turn;
     for (const auto& a : plan.actions) {
@@ -419,44 +467,20 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         if (a.primitive == Primitive::Spin) spins[a.parts[i]] = 1;
       }
     }
-    // World transforms down the rig: parents before children (parents are larger, or the root).
-    std::vector<int> order(G);
-    for (int g = 0; g < G; ++g) order[g] = g;
-    auto depth = [&](int g) { int d = 0; for (int p = rig.parts[g].parent; p >= 0 && d < 64; p = rig.parts[p].parent) ++d; return d; };
-    std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return depth(x) < depth(y); });
-    // The root's own turn (the upper body swaying about the hips) leaves what stands on the
-    // ground where it is: the chains hanging from the root that reach down to the figure's feet.
-    // The head rides on the turning body upright (the eyes stay level, on the opponent a boxer
-    // turns into): it goes where its neck goes without the turn. Turned with the body, a boxer's
-    // densely drawn head swung 19 px at its top for a 4-degree turn and outweighed the punch.
-    for (int g : order) {
-      const int p = rig.parts[g].parent;
-      if (g == rig.root) world[g] = local[g] * root_turn;
-      else if (p == rig.root && planted[g]) world[g] = local[p] * local[g];
-      else if (p == rig.root && rig.parts[g].role == Role::Head) {
-        const Vec2 h = rig.parts[g].pivot, to = root_turn.apply(h);
-        world[g] = local[p] * Affine::translate(to.x - h.x, to.y - h.y) * local[g];
-      }
-      else world[g] = p >= 0 ? world[p] * local[g] : local[g];
-    }
-    // A spinning part turns in its own frame and carries what turns with it; its riders go
-    // round upright (wheel_loads).
-    for (int g = 0; g < G; ++g) {
-      if (loads.turns_with[g] >= 0) world[g] = world[g] * spin[loads.turns_with[g]];
-      if (loads.rides[g] < 0) continue;
-      const Vec2 hang = loads.hang[g], to = spin[loads.rides[g]].apply(hang);
-      world[g] = Affine::translate(to.x - hang.x, to.y - hang.y) * world[g];
-    }
-
+    const std::vector<Affine> world = world_transforms(rig, local, root_turn, spin, planted, loads);
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
       const int g = rig.part_of_path[pi];
       const bool background = (g >= 0 && (rig.parts[g].role == Role::Background || held[g])) || (pi < ground.size() && ground[pi]);
+      size_t point = 0;  // the path's control point, counted over its subpaths (rides_on)
       for (size_t si = 0; si < scene.paths[pi].subpaths.size(); ++si) {
         const int e = element_of[pi][si];
         const bool free_particle = particles && e >= 0;
         // The element's own motion (falls, twinkles), one phase per element.
         const Affine elem = e >= 0 ? element_motion(scene, plan, e, element_box[e], t, W, H) : Affine();
         for (Vec2 q : scene.paths[pi].subpaths[si].points) {
+          // The part whose motion the point takes: its path's, or the one it is drawn on.
+          const int rides = rides_on[pi].empty() ? -1 : rides_on[pi][point];
+          const int by = rides >= 0 ? rides : g;
           q = elem.apply(q);
           if (!free_particle) {
             for (const auto& a : plan.actions) {
@@ -484,12 +508,16 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
                 if (!background) q = a.primitive == Primitive::Sway ? sway_lean(a, amp, t, rig.figure, q) : deform(a, amp, t, rig.figure, q);
               } else {
                 for (int p : a.parts)
-                  if (g >= 0 && under(g, p)) q = deform(a, amp, t, reach[p], q);
+                  if (by >= 0 && under(by, p)) q = deform(a, amp, t, reach[p], q);
               }
             }
-            if (g >= 0) q = world[g].apply(q);
-            if (!background) q = whole.apply(q);
+            // A point on a fill that holds still (a pole, the ground) holds still with it.
+            if (!(rides >= 0 && held[rides])) {
+              if (by >= 0) q = world[by].apply(q);
+              if (!background) q = whole.apply(q);
+            }
           }
+          ++point;
           out.push_back(q);
         }
       }

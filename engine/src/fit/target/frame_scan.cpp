@@ -20,8 +20,6 @@ namespace {
 constexpr int kScanWidth = 128;
 // Held frames are compared at this width, as the target's own retiming compares them.
 constexpr int kHeldWidth = 64;
-// Frames decoded per load: 32 frames at 128 px hold 4 MB of floats, whatever the clip's length.
-constexpr int kScanBatch = 32;
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0;
@@ -116,23 +114,17 @@ FrameScan scan_frames(const std::filesystem::path& source, int fit_width) {
   scan.frames = info.frames;
   const int w = std::max(1, std::min(kScanWidth, info.width));
   const int h = std::max(1, static_cast<int>(std::lround(double(info.height) * w / std::max(1, info.width))));
+  // One pass over the clip, a grey thumbnail per frame (the thumbnails are what stays: 64 KB a
+  // frame at 128 px).
   std::vector<cv::Mat> grey;
   grey.reserve(static_cast<size_t>(info.frames));
-  for (int first = 0; first < info.frames; first += kScanBatch) {
-    TargetOptions o;
-    o.denoise_radius = 0;
-    o.retime_held_frames = false;  // every frame at its own index
-    for (int i = first; i < std::min(info.frames, first + kScanBatch); ++i) o.frames.push_back(i);
-    const TargetFrames t = load_target(source, w, h, o);
-    const size_t px = static_cast<size_t>(w) * h;
-    for (size_t k = 0; k < o.frames.size(); ++k) {
-      cv::Mat g(h, w, CV_32F);
-      const float* f = t.raw.data() + k * px * 4;
-      for (size_t p = 0; p < px; ++p)
-        g.at<float>(static_cast<int>(p)) = 255.0f * (0.299f * f[4 * p] + 0.587f * f[4 * p + 1] + 0.114f * f[4 * p + 2]);
-      grey.push_back(std::move(g));
-    }
-  }
+  const size_t px = static_cast<size_t>(w) * h;
+  for_each_target_frame(source, w, h, [&](int, const float* f) {
+    cv::Mat g(h, w, CV_32F);
+    for (size_t p = 0; p < px; ++p)
+      g.at<float>(static_cast<int>(p)) = 255.0f * (0.299f * f[4 * p] + 0.587f * f[4 * p + 1] + 0.114f * f[4 * p + 2]);
+    grey.push_back(std::move(g));
+  });
   scan.run_start = held_runs(grey);
   for (int i = 0; i < scan.frames; ++i)
     if (scan.run_start[static_cast<size_t>(i)] == i) scan.distinct.push_back(i);

@@ -742,4 +742,30 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   return t;
 }
 
+void for_each_target_frame(const fs::path& source, int width, int height,
+                           const std::function<void(int index, const float* rgba)>& visit) {
+  TargetOptions options;
+  options.denoise_radius = 0;
+  options.retime_held_frames = false;  // every frame at its own index
+  check_options(source, width, height, options);
+  const bool is_folder = classify_source(source);
+  FolderSource folder;
+  const TargetInfo info = source_info(source, is_folder, folder);
+  const int N = info.frames;
+  // Every frame is "sampled": decode_* hand each one over in order, and `raw` holds one frame.
+  TargetFrames t;
+  t.source_index.resize(static_cast<size_t>(N));
+  for (int i = 0; i < N; ++i) t.source_index[static_cast<size_t>(i)] = i;
+  std::vector<float> raw(static_cast<size_t>(width) * height * 4);
+  auto deliver = [&](int, int i, bool sampled, const cv::Mat& frame) {
+    if (!sampled) return;
+    store_raw(frame, 0, width, height, raw);
+    visit(i, raw.data());
+  };
+  ShakeEstimator shake(kShakeMeasureWidth);  // not fed: nothing is stabilised
+  auto near_sample = [](int) { return false; };
+  if (is_folder) decode_folder(folder, N, N, t.source_index, false, near_sample, shake, deliver);
+  else decode_video(source, options, N, N, t, false, near_sample, shake, deliver);
+}
+
 }  // namespace svgm
