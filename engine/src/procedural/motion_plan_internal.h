@@ -133,6 +133,9 @@ int reaching_out(const Rig& rig, const std::vector<int>& limbs);
 bool lobe_serves(LobeKind k, Target t);
 // The riders evenly spaced round the spinning `parts` (motion_frames.cpp, with the wheel loads).
 int spin_symmetry(const Rig& rig, const std::vector<int>& parts);
+// The parts target `t` (or, for Target::Named, `noun`) means, with a note when a fallback had
+// to stand in (plan_targets.cpp).
+std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, std::string* note);
 // The oscillation of a back-and-forth action at phase u (in cycles) (motion_frames.cpp).
 double oscillation(const PlannedAction& a, double u);
 

@@ -94,6 +94,64 @@ bool ends_with(const std::string& w, const char* suffix) {
   return w.size() > n && w.compare(w.size() - n, n, suffix) == 0;
 }
 
+// A noun outside the vocabulary, as WordNet reads it: its figure class, the motion such a thing
+// makes by itself, and the body part it is a kind or a part of.
+void read_lexicon_noun(const Lexicon& lexicon, const std::string& w, const std::string& next, PromptNoun& n, ParsedPrompt& out) {
+  const NounReading r = lexicon.noun(w);
+  n.figure = r.figure;
+  n.motion = r.motion;
+  // A kind or a part of a body part the vocabulary knows ("talons": claws, "fingers": hands).
+  // Not the body itself ("figure" is a synonym of body in WordNet, and a prompt's "figure"
+  // is the whole), nor repeated elements or the background (a "sun" is not stars).
+  // Nor a word right before a part noun the vocabulary knows: it is that noun's modifier
+  // ("his upper body": WordNet's noun "upper" is part of a shoe, read as a boot, and the
+  // saxophonist's legs swayed instead of his body).
+  bool modifies_part = false;
+  for (const PartNoun& pn : part_nouns()) modifies_part = modifies_part || word_matches(next, pn.stem);
+  if (r.part && !modifies_part && r.part->target != Target::Root && r.part->target != Target::Repeated &&
+      r.part->target != Target::Background) {
+    n.target = r.part->target;
+    out.readings.push_back("'" + w + "' read as " + r.part->stem);
+  }
+  if (r.figure != FigureClass::None)
+    out.readings.push_back("'" + w + "': " + figure_class_name(r.figure) + (r.motion ? ", moves by itself as " + r.motion->name : ""));
+}
+
+// A pronoun after a verb is its object said again: "bouncing it" bounces the ball of
+// "dribbles the ball" (the last object before it, in this clause or, `antecedent`, before).
+bool read_pronoun(const std::string& w, const PromptNoun* antecedent, Clause& c, std::vector<bool>& modifier_noun,
+                  ParsedPrompt& out) {
+  if (w != "it" && w != "them") return false;
+  const PromptNoun* said = antecedent;
+  for (const PromptNoun& n : c.nouns)
+    if (n.after_verb && !n.object_of_preposition && !n.own_predicate) said = &n;
+  if (!said) return false;
+  PromptNoun n = *said;
+  n.after_verb = true;
+  c.nouns.push_back(n);
+  modifier_noun.push_back(false);
+  out.readings.push_back("'" + w + "' read as the " + n.word);
+  return true;
+}
+
+// After a noun naming a thing, not a creature, that the verb acts on ("climbs the rock face",
+// "reads the clock face"), a part noun ends a compound naming that thing: it is not the figure's
+// part. The caller checks that no possessive comes before ("his robot arm": the figure's own).
+bool read_thing_compound(const std::string& w, bool plural, Clause& c, std::vector<bool>& modifier_noun, ParsedPrompt& out) {
+  const PromptNoun* thing = c.nouns.empty() ? nullptr : &c.nouns.back();
+  if (!thing || thing->target != Target::Named || !thing->after_verb ||
+      (thing->figure != FigureClass::Object && thing->figure != FigureClass::Scene))
+    return false;
+  PromptNoun head = *thing;
+  head.word = w;
+  head.plural = plural;
+  out.readings.push_back("'" + thing->word + " " + w + "' read as a " + thing->word + ", not the figure's " + w);
+  c.nouns.push_back(head);
+  modifier_noun.back() = true;
+  modifier_noun.push_back(false);
+  return true;
+}
+
 // Words of one clause (lower case, letters only). `after_prep` says the clause continues a
 // prepositional phrase ("with black dots and black boots": "and" split it, and "boots" is
 // still what she is dressed with); on return, whether the clause ends inside one. Words the
@@ -133,37 +191,11 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
       if ((w == "up" || w == "down") && is_determiner(next)) after_prep = true, preposition = w;
       continue;
     }
-    // A pronoun after a verb is its object said again: "bouncing it" bounces the ball of
-    // "dribbles the ball" (the last object before it).
-    if ((w == "it" || w == "them") && after_verb) {
-      const PromptNoun* said = antecedent;
-      for (const PromptNoun& n : c.nouns)
-        if (n.after_verb && !n.object_of_preposition && !n.own_predicate) said = &n;
-      if (said) {
-        PromptNoun n = *said;
-        n.after_verb = true;
-        c.nouns.push_back(n);
-        modifier_noun.push_back(false);
-        out.readings.push_back("'" + w + "' read as the " + n.word);
-        continue;
-      }
-    }
+    if (after_verb && read_pronoun(w, antecedent, c, modifier_noun, out)) continue;
     // A known part noun is a noun even where its word could be a verb ("drops", "hands").
     if (const PartNoun* n = noun_for_word(w)) {
       const bool plural = (w.size() > n->stem.size() && w.back() == 's') || w == "feet" || w == "leaves";
-      // After a noun naming a thing, not a creature, that the verb acts on ("climbs the rock
-      // face", "reads the clock face"), a part noun ends a compound naming that thing: it is not
-      // the figure's part. Not after a possessive ("his robot arm": the figure's own).
-      const PromptNoun* thing = after_noun_word && !c.nouns.empty() ? &c.nouns.back() : nullptr;
-      if (thing && thing->target == Target::Named && thing->after_verb && !is_possessive(before2) &&
-          (thing->figure == FigureClass::Object || thing->figure == FigureClass::Scene)) {
-        PromptNoun head = *thing;
-        head.word = w;
-        head.plural = plural;
-        out.readings.push_back("'" + thing->word + " " + w + "' read as a " + thing->word + ", not the figure's " + w);
-        c.nouns.push_back(head);
-        modifier_noun.back() = true;
-        modifier_noun.push_back(false);
+      if (after_noun_word && !is_possessive(before2) && read_thing_compound(w, plural, c, modifier_noun, out)) {
         prev_was_noun = true;
         continue;
       }
@@ -260,26 +292,7 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
       modifier_noun.push_back(false);
       continue;
     }
-    if (lexicon.has_wordnet()) {
-      const NounReading r = lexicon.noun(w);
-      n.figure = r.figure;
-      n.motion = r.motion;
-      // A kind or a part of a body part the vocabulary knows ("talons": claws, "fingers": hands).
-      // Not the body itself ("figure" is a synonym of body in WordNet, and a prompt's "figure"
-      // is the whole), nor repeated elements or the background (a "sun" is not stars).
-      // Nor a word right before a part noun the vocabulary knows: it is that noun's modifier
-      // ("his upper body": WordNet's noun "upper" is part of a shoe, read as a boot, and the
-      // saxophonist's legs swayed instead of his body).
-      bool modifies_part = false;
-      for (const PartNoun& pn : part_nouns()) modifies_part = modifies_part || word_matches(next, pn.stem);
-      if (r.part && !modifies_part && r.part->target != Target::Root && r.part->target != Target::Repeated &&
-          r.part->target != Target::Background) {
-        n.target = r.part->target;
-        out.readings.push_back("'" + w + "' read as " + r.part->stem);
-      }
-      if (r.figure != FigureClass::None)
-        out.readings.push_back("'" + w + "': " + figure_class_name(r.figure) + (r.motion ? ", moves by itself as " + r.motion->name : ""));
-    }
+    if (lexicon.has_wordnet()) read_lexicon_noun(lexicon, w, next, n, out);
     if (after_noun_word && !modifier_noun.empty()) modifier_noun.back() = true;
     c.nouns.push_back(n);
     modifier_noun.push_back(false);
