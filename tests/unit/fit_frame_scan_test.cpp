@@ -170,8 +170,6 @@ TEST_CASE("frame scan: a clip whose whole frame jitters is stabilised by default
   fs::remove_all(calm);
 }
 
-}  // TEST_SUITE
-
 TEST_CASE("frame scan: every frame is visited once, in order, with the pixels load_target keeps for it") {
   const fs::path dir = scratch("visit");
   // 40 frames: more than one of the 32-frame batches the scan used to load, each from the start.
@@ -196,3 +194,5 @@ TEST_CASE("frame scan: every frame is visited once, in order, with the pixels lo
   CHECK_THROWS_WITH_AS(for_each_target_frame(dir / "missing", 32, 32, [](int, const float*) {}),
                        doctest::Contains("missing"), svgm::Error);
 }
+
+}  // TEST_SUITE
