@@ -15,24 +15,14 @@
 #include "geometry/rigid_bodies.h"
 #include "rank/pixel_ranker.h"
 
+#include "motion_drawing.h"
 using namespace svgm;
+using svgm::test::Drawing;
+using svgm::test::path_travel;
 
 namespace {
 
-std::string data(const char* name) { return std::string(SVGM_TEST_DATA) + "/motion/" + name; }
-
-// Largest displacement from frame 0 of the points of each path of `scene`, over F frames.
-std::vector<double> path_travel(const Scene& scene, const std::vector<Vec2>& pts, int F) {
-  const size_t per = pts.size() / F;
-  std::vector<double> out(scene.paths.size(), 0);
-  size_t i = 0;
-  for (size_t p = 0; p < scene.paths.size(); ++p)
-    for (const auto& sp : scene.paths[p].subpaths)
-      for (size_t q = 0; q < sp.points.size(); ++q, ++i)
-        for (int f = 1; f < F; ++f)
-          out[p] = std::max(out[p], std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
-  return out;
-}
+std::string data(const char* name) { return test::motion_data(name); }
 
 struct Fixture {
   Scene scene;

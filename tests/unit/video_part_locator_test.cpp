@@ -11,30 +11,15 @@
 #include "procedural/motion_plan.h"
 #include "procedural/part_locator.h"
 
+#include "motion_drawing.h"
 using namespace svgm;
+using svgm::test::Drawing;
+using svgm::test::path_travel;
 
 namespace {
 
-std::string data(const char* name) { return std::string(SVGM_TEST_DATA) + "/motion/" + name; }
+std::string data(const char* name) { return test::motion_data(name); }
 
-struct Drawing {
-  Scene scene;
-  Rig rig;
-  explicit Drawing(const char* name) : scene(read_svg_file(data(name))), rig(build_rig(scene, read_source_names(data(name)))) {}
-  // Largest displacement from frame 0 of the points of each scene path over `plan`'s frames.
-  std::vector<double> travel(const MotionPlan& plan, int F = 13) const {
-    const auto pts = animate_plan(scene, rig, plan, F);
-    const size_t per = pts.size() / F;
-    std::vector<double> out(scene.paths.size(), 0);
-    size_t i = 0;
-    for (size_t p = 0; p < scene.paths.size(); ++p)
-      for (const auto& sp : scene.paths[p].subpaths)
-        for (size_t q = 0; q < sp.points.size(); ++q, ++i)
-          for (int f = 1; f < F; ++f)
-            out[p] = std::max(out[p], std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
-    return out;
-  }
-};
 
 }  // namespace
 

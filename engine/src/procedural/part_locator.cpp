@@ -157,14 +157,6 @@ std::vector<int> part_candidates(const Rig& rig, int body, double max_share = kP
   return out;
 }
 
-std::string fmt_box(const Rig& rig, const RigBox& b) {
-  const RigBox& F = rig.figure;
-  char s[96];
-  std::snprintf(s, sizeof s, "%.2f,%.2f-%.2f,%.2f", (b.x0 - F.x0) / std::max(F.w(), 1e-9), (b.y0 - F.y0) / std::max(F.h(), 1e-9),
-                (b.x1 - F.x0) / std::max(F.w(), 1e-9), (b.y1 - F.y0) / std::max(F.h(), 1e-9));
-  return s;
-}
-
 std::string path_ids(const std::vector<int>& els, const Rig& rig) {
   std::string s;
   for (int e : els) s += (s.empty() ? "" : "+") + std::to_string(rig.elements[e].path + 1);
@@ -549,6 +541,15 @@ bool any_stem(std::string_view w, std::initializer_list<std::string_view> stems)
 }
 
 }  // namespace
+
+// A box in shares of the figure's box, for the notes: "0.10,0.20-0.40,0.55".
+std::string fmt_box(const Rig& rig, const RigBox& b) {
+  const RigBox& F = rig.figure;
+  char s[96];
+  std::snprintf(s, sizeof s, "%.2f,%.2f-%.2f,%.2f", (b.x0 - F.x0) / std::max(F.w(), 1e-9), (b.y0 - F.y0) / std::max(F.h(), 1e-9),
+                (b.x1 - F.x0) / std::max(F.w(), 1e-9), (b.y1 - F.y0) / std::max(F.h(), 1e-9));
+  return s;
+}
 
 PartShape part_shape_of(std::string_view w, FigureClass figure) {
   const bool animal = figure == FigureClass::Biped || figure == FigureClass::Quadruped || figure == FigureClass::Bird ||

@@ -77,4 +77,7 @@ LocatedPart locate_part(const Rig& rig, PartShape shape);
 // stands upright), and the far end of her box bent her raised hand with it.
 std::vector<ArmLobe> tail_limbs(const Rig& rig);
 
+// A box in shares of the figure's box, as the notes name it: "0.10,0.20-0.40,0.55".
+std::string fmt_box(const Rig& rig, const RigBox& b);
+
 }  // namespace svgm

@@ -66,14 +66,6 @@ int rosette_lobes(const std::vector<Vec2>& pts, Vec2 c) {
   return n;
 }
 
-std::string fmt_box(const Rig& rig, const RigBox& b) {
-  const RigBox& F = rig.figure;
-  char s[96];
-  std::snprintf(s, sizeof s, "%.2f,%.2f-%.2f,%.2f", (b.x0 - F.x0) / std::max(F.w(), 1e-9), (b.y0 - F.y0) / std::max(F.h(), 1e-9),
-                (b.x1 - F.x0) / std::max(F.w(), 1e-9), (b.y1 - F.y0) / std::max(F.h(), 1e-9));
-  return s;
-}
-
 // The lobe over every point of elements `els`: a disc about `c` past their farthest point, its
 // base behind all of them, so every point of the flower is in it.
 ArmLobe disc_lobe(const Rig& rig, const std::vector<int>& els, Vec2 c) {

@@ -1,0 +1,41 @@
+// Test drawings of the motion planner (tests/data/motion) and how far a plan moves their paths:
+// one copy for the plan, locator, petal and elongated-part tests.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "svgmotion/svg_reader.h"
+#include "procedural/motion_plan.h"
+
+namespace svgm::test {
+
+inline std::string motion_data(const char* name) { return std::string(SVGM_TEST_DATA) + "/motion/" + name; }
+
+// Largest displacement from frame 0 of the points of each path of `scene`, over F frames of
+// animate_plan's output `pts`.
+inline std::vector<double> path_travel(const Scene& scene, const std::vector<Vec2>& pts, int F) {
+  const size_t per = pts.size() / F;
+  std::vector<double> out(scene.paths.size(), 0);
+  size_t i = 0;
+  for (size_t p = 0; p < scene.paths.size(); ++p)
+    for (const auto& sp : scene.paths[p].subpaths)
+      for (size_t q = 0; q < sp.points.size(); ++q, ++i)
+        for (int f = 1; f < F; ++f)
+          out[p] = std::max(out[p], std::hypot(pts[f * per + i].x - pts[i].x, pts[f * per + i].y - pts[i].y));
+  return out;
+}
+
+// A drawing of tests/data/motion with its rig.
+struct Drawing {
+  Scene scene;
+  Rig rig;
+  explicit Drawing(const char* name)
+      : scene(read_svg_file(motion_data(name))), rig(build_rig(scene, read_source_names(motion_data(name)))) {}
+  // Largest displacement from frame 0 of the points of each scene path over `plan`'s frames.
+  std::vector<double> travel(const MotionPlan& plan, int F = 13) const { return path_travel(scene, animate_plan(scene, rig, plan, F), F); }
+};
+
+}  // namespace svgm::test
