@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <set>
 
 #include "procedural/motion_plan_internal.h"
@@ -115,7 +116,9 @@ std::string turn_broken(const MotionPlan& plan, int frames, int K) {
 void accents_follow_limbs(MotionPlan& plan) {
   for (auto& a : plan.actions) {
     if (a.target != Target::Whole || a.primitive == Primitive::Spin || a.primitive == Primitive::Turn) continue;
-    double limbs = 1;
+    // No limbs of the same words: nothing to follow. With a default of 1 every whole-figure
+    // motion raised to the visible floor (a duck's bob at 305 %) was set back to 100 %.
+    double limbs = HUGE_VAL;
     for (const auto& b : plan.actions)
       if (&b != &a && b.verb == a.verb && b.words == a.words && is_limb_target(b.target) && b.primitive == Primitive::Swing)
         limbs = std::min(limbs, b.scale);
@@ -154,6 +157,148 @@ int keyframes_to_follow(const Scene& scene, const std::vector<Vec2>& pts, const 
   for (int k = K; k < K_hi; ++k)  // searched from below: more keyframes are not always closer
     if (follows(k)) return k;       // (rounding moves them), the fewest that follow win
   return K_hi;
+}
+
+// `plan` with only the actions `keep` moving (the others at amplitude 0).
+MotionPlan only(const MotionPlan& plan, const std::vector<size_t>& keep) {
+  MotionPlan one = plan;
+  for (size_t j = 0; j < one.actions.size(); ++j)
+    if (std::find(keep.begin(), keep.end(), j) == keep.end()) one.actions[j].amp = 0;
+  return one;
+}
+
+// The clauses of `plan` the visible floor measures: its actions grouped by verb and words (a
+// walk's legs, arms and bob grow together), but none with a spin, a turn or a fall (whole turns
+// are never scaled; falling elements leave the picture whatever their size).
+std::vector<std::vector<size_t>> measured_clauses(const MotionPlan& plan) {
+  std::vector<std::vector<size_t>> out;
+  std::vector<char> done(plan.actions.size(), 0);
+  for (size_t i = 0; i < plan.actions.size(); ++i) {
+    if (done[i]) continue;
+    std::vector<size_t> clause;
+    bool measurable = true;
+    for (size_t j = i; j < plan.actions.size(); ++j)
+      if (plan.actions[j].verb == plan.actions[i].verb && plan.actions[j].words == plan.actions[i].words) {
+        clause.push_back(j);
+        done[j] = 1;
+        const Primitive p = plan.actions[j].primitive;
+        measurable = measurable && p != Primitive::Spin && p != Primitive::Turn && p != Primitive::Fall;
+      }
+    if (measurable) out.push_back(clause);
+  }
+  return out;
+}
+
+// How the visible floor is measured and what the fitter can follow: the points the floor and
+// the step limit leave out (falling, spinning, turning), the frames, the most keyframes the
+// fitter may take.
+struct TravelCheck {
+  const Scene& scene;
+  const Rig& rig;
+  const std::vector<char>& exempt;
+  int frames, K_hi;
+  double floor() const { return kVisibleTravel * std::hypot(rig.figure.w(), rig.figure.h()); }
+  double percent(double travel) const { return 100 * travel / std::max(std::hypot(rig.figure.w(), rig.figure.h()), 1e-9); }
+  // The largest travel of a point that `clause` of `plan` moves, alone.
+  double travel(const MotionPlan& plan, const std::vector<size_t>& clause) const {
+    return largest_travel(animate_plan(scene, rig, only(plan, clause), frames), exempt, frames);
+  }
+  // Whether the fitter follows `one` between K_hi keyframes (steps and turns; not the canvas).
+  bool follows(const MotionPlan& one) const {
+    return limit_broken_steps(scene, animate_plan(scene, rig, one, frames), exempt, frames, K_hi).empty() && turn_broken(one, frames, K_hi).empty();
+  }
+  // The travel `clause` (alone in `one`) keeps once cut by 0.8 at a time until the fitter
+  // follows it, as fit_scales would cut it; 0 when kScaleAttempts cuts do not do.
+  double travel_followed(MotionPlan one, const std::vector<size_t>& clause) const {
+    for (int attempt = 0; attempt <= kScaleAttempts; ++attempt) {
+      if (follows(one)) return travel(one, clause);
+      for (size_t j : clause) one.actions[j].scale *= 0.8;
+    }
+    return 0;
+  }
+};
+
+// A clause the fitter's steps between keyframes would cut below the floor (a snake's tongue
+// flicking four times a loop: cut to 64 %, 6.1 % of its size) is slowed instead: fewer cycles a
+// loop, every action of the clause by the same factor (a walk's bob keeps two beats a stride),
+// the fastest tempo that keeps the floor, else the one that keeps the most travel. The
+// amplitude is what the words ask for; the tempo only how often.
+void slow_to_follow(const TravelCheck& c, MotionPlan& plan, const std::vector<size_t>& clause) {
+  const MotionPlan one = only(plan, clause);
+  if (c.follows(one)) return;
+  const double kept = c.travel_followed(one, clause);
+  if (kept >= c.floor()) return;
+  int g = 0;
+  for (size_t j : clause) g = std::gcd(g, std::max(plan.actions[j].cycles, 1));
+  int best_g = g;
+  double best = kept;
+  for (int h = g - 1; h >= 1; --h) {
+    MotionPlan slower = one;
+    for (size_t j : clause) slower.actions[j].cycles = plan.actions[j].cycles / g * h;
+    const double t = c.travel_followed(slower, clause);
+    if (t > best * 1.05) {
+      best = t;
+      best_g = h;
+    }
+    if (t >= c.floor()) break;
+  }
+  if (best_g == g) return;
+  const size_t first = clause.front();
+  char line[300];
+  std::snprintf(line, sizeof line,
+                "%s slowed to %d cycles a loop instead of %d: at %d the fitter could not follow it between keyframes unless cut to "
+                "%.1f %% of the figure's size",
+                plan.actions[first].verb.c_str(), plan.actions[first].cycles / g * best_g, plan.actions[first].cycles,
+                plan.actions[first].cycles, c.percent(kept));
+  for (size_t j : clause) plan.actions[j].cycles = plan.actions[j].cycles / g * best_g;
+  plan.notes.push_back(line);
+}
+
+// Too small to see: the moving parts travel at least kVisibleTravel of the figure's size. Each
+// clause grows as a whole, by at most kMaxBoost, measured again after each raise: a swing's
+// chord (2 r sin(a / 2)) and a bend's reach grow slower than their angle, and one raise by
+// floor / travel left a whale's spout at 7.5 % and a bell's clapper at 7.6 %. A clause the
+// fitter could not follow at its raised size is slowed (slow_to_follow); the canvas then scales
+// clauses back where they would not fit (fit_scales), and warn_under_floor says so.
+void raise_to_visible(const TravelCheck& c, MotionPlan& plan) {
+  const double floor = c.floor();
+  for (const auto& clause : measured_clauses(plan)) {
+    double travel = c.travel(plan, clause), boost = 1;
+    const double first = travel;
+    for (int round = 0; round < kRaiseRounds && travel > 0 && travel < floor && boost < kMaxBoost - 1e-9; ++round) {
+      const double step = std::min(kMaxBoost / boost, kRaiseAim * floor / travel);
+      for (size_t j : clause) plan.actions[j].scale *= step;
+      boost *= step;
+      travel = c.travel(plan, clause);
+    }
+    if (boost > 1) {
+      char line[240];
+      std::snprintf(line, sizeof line, "%s raised to %.0f %%: it moved %.1f %% of the figure's size, too little to see",
+                    plan.actions[clause.front()].verb.c_str(), boost * 100, c.percent(first));
+      plan.notes.push_back(line);
+    }
+    slow_to_follow(c, plan, clause);
+  }
+}
+
+// A warning for each clause that ends under the visible floor, naming what held it there (`cut`:
+// why fit_scales scaled each action down): the canvas (a legitimate limit: a figure filling its
+// picture), the fitter's steps, or kMaxBoost. report.html lists motion.json's warnings.
+void warn_under_floor(const TravelCheck& c, MotionPlan& plan, const std::vector<std::string>& cut) {
+  for (const auto& clause : measured_clauses(plan)) {
+    const double travel = c.travel(plan, clause);
+    if (travel <= 0 || travel >= c.floor() * (1 - 1e-3)) continue;
+    std::string by;
+    for (size_t j : clause)
+      if (by.empty() && cut[j] == "would leave the canvas") by = "by the canvas";
+    for (size_t j : clause)
+      if (by.empty() && !cut[j].empty()) by = "by the fitter's steps between keyframes";
+    if (by.empty()) by = "by the largest raise (" + std::to_string(static_cast<int>(kMaxBoost)) + " times)";
+    char line[300];
+    std::snprintf(line, sizeof line, "%s held to %.1f %% of the figure's size %s, under the %.0f %% a viewer can see",
+                  plan.actions[clause.front()].verb.c_str(), c.percent(travel), by.c_str(), 100 * kVisibleTravel);
+    plan.warnings.push_back(line);
+  }
 }
 
 // fit_plan's scaling of `plan` (see motion_plan.h). True when a motion of the whole figure
@@ -197,41 +342,9 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
   // amplitude is cut. Cut to follow 15 keyframes, a butterfly's wings, a snake and a skier moved
   // 11-64 % of what their verbs ask, too little to see.
   const int K_hi = std::min(frames, 2 * (K - 1) + 1);
-  auto alone = [&](const std::vector<size_t>& keep) {
-    MotionPlan one = plan;
-    for (size_t j = 0; j < one.actions.size(); ++j)
-      if (std::find(keep.begin(), keep.end(), j) == keep.end()) one.actions[j].amp = 0;
-    return one;
-  };
-  // Too small to see: the moving parts travel at least kVisibleTravel of the figure's size. Each
-  // clause's actions (one verb's words: a walk's legs, arms and bob) grow together, by at most
-  // kMaxBoost; the canvas then scales them back where they would not fit.
-  {
-    const double floor = kVisibleTravel * std::hypot(rig.figure.w(), rig.figure.h());
-    std::vector<char> done(plan.actions.size(), 0);
-    for (size_t i = 0; i < plan.actions.size(); ++i) {
-      if (done[i]) continue;
-      std::vector<size_t> clause;
-      for (size_t j = i; j < plan.actions.size(); ++j)
-        if (plan.actions[j].verb == plan.actions[i].verb && plan.actions[j].words == plan.actions[i].words) {
-          clause.push_back(j);
-          done[j] = 1;
-        }
-      bool measurable = true;
-      for (size_t j : clause)
-        measurable = measurable && plan.actions[j].primitive != Primitive::Spin && plan.actions[j].primitive != Primitive::Turn &&
-                     plan.actions[j].primitive != Primitive::Fall;
-      if (!measurable) continue;
-      const double travel = largest_travel(animate_plan(scene, rig, alone(clause), frames), exempt, frames);
-      if (travel <= 0 || travel >= floor) continue;
-      const double boost = std::min(kMaxBoost, floor / travel);
-      for (size_t j : clause) plan.actions[j].scale *= boost;
-      char line[240];
-      std::snprintf(line, sizeof line, "%s raised to %.0f %%: it moved %.1f %% of the figure's size, too little to see",
-                    plan.actions[i].verb.c_str(), boost * 100, 100 * travel / std::hypot(rig.figure.w(), rig.figure.h()));
-      plan.notes.push_back(line);
-    }
-  }
+  const TravelCheck check{scene, rig, exempt, frames, K_hi};
+  raise_to_visible(check, plan);
+  std::vector<std::string> cut(plan.actions.size());  // why each action was scaled down ("": it was not)
   // Why `one` at its scales breaks a limit ("" when none): the canvas, then the steps and turns
   // between K_hi keyframes.
   auto broken = [&](const MotionPlan& one) {
@@ -259,7 +372,7 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
       }
       return -1.0;
     };
-    MotionPlan one = all ? plan : alone({i});
+    MotionPlan one = all ? plan : only(plan, {i});
     double& scale = all ? plan.scale : plan.actions[i].scale;
     std::string first_why;
     double best = search(one, scale, &first_why);
@@ -278,6 +391,8 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
         }
       }
     if (best < 0) {
+      for (size_t j = 0; j < plan.actions.size(); ++j)
+        if ((all || j == i) && cut[j].empty()) cut[j] = first_why;
       scale *= std::pow(0.8, kScaleAttempts);
       plan.warnings.push_back(what + " " + first_why + " even at " + std::to_string(static_cast<int>(scale * 100)) + " % of its size");
       whole_failed = whole_failed || (!all && plan.actions[i].target == Target::Whole);
@@ -286,6 +401,8 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
     if (!all && plan.actions[i].one_sided != 0)
       plan.notes.push_back(what + " swings to one side only: the other " + first_why);
     if (best < scale) {
+      for (size_t j = 0; j < plan.actions.size(); ++j)
+        if ((all || j == i) && cut[j].empty()) cut[j] = first_why;
       char line[240];
       std::snprintf(line, sizeof line, "%s scaled to %.0f %%: at full size %s %s", all ? "all amplitudes" : ("the amplitude of " + what).c_str(),
                     best * 100, all ? "the motion" : "it", first_why.c_str());
@@ -299,6 +416,7 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
   if (plan.keyframes > K)
     plan.notes.push_back("the fitter takes " + std::to_string(plan.keyframes) + " keyframes instead of " + std::to_string(K) +
                          ": between " + std::to_string(K) + " the motion moves too far to follow");
+  warn_under_floor(check, plan, cut);
   return whole_failed;
 }
 

@@ -28,6 +28,11 @@ inline constexpr int kScaleAttempts = 12;
 // where under 0.5 % of the foreground changes 'no motion'), by at most this factor.
 inline constexpr double kVisibleTravel = 0.08;  // of the figure's diagonal (the floor)
 inline constexpr double kMaxBoost = 4;
+// The raise is measured again up to this many times (a swing's chord grows slower than its
+// angle), aiming this share over the floor: motion.json rounds travels to 0.1 px, 0.9 % of the
+// floor on a 72 px emoji, and a clause raised to exactly 8 % read as 7.9 there.
+inline constexpr int kRaiseRounds = 4;
+inline constexpr double kRaiseAim = 1.01;
 // region_host: a part carries the arms when its middle is above this share of the figure's
 // height, it is at least this share of the figure tall, and this much wider than the root.
 inline constexpr double kArmHostTop = 0.6;

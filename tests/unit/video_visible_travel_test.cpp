@@ -1,0 +1,111 @@
+// The visible-travel floor of fit_plan (issue 35, item 4): a motion too small to see is raised
+// to 8 % of the figure's diagonal when the canvas allows, whatever its primitive (a whole
+// figure's bob, a part's swing whose chord grows slower than its angle), a clause the fitter's
+// steps would cut below the floor is slowed instead, and a figure filling its canvas ends under
+// the floor with a warning that names the canvas.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "svgmotion/svg_reader.h"
+#include "procedural/motion_plan.h"
+
+#include "motion_drawing.h"
+using namespace svgm;
+
+namespace {
+
+constexpr int kFrames = 49;  // the default clip
+constexpr int kKeyframes = 15;
+
+double largest(const Scene& s, const Rig& rig, const MotionPlan& plan) {
+  double m = 0;
+  for (double v : test::path_travel(s, animate_plan(s, rig, plan, kFrames), kFrames)) m = std::max(m, v);
+  return m;
+}
+
+double diagonal(const Rig& rig) { return std::hypot(rig.figure.w(), rig.figure.h()); }
+
+bool has_line(const std::vector<std::string>& lines, const std::string& part) {
+  return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(part) != std::string::npos; });
+}
+
+// A round float (a ball) `h` units tall in the middle of a 200 x 200 canvas.
+Scene ball(double h) {
+  const double r = h / 2, top = 100 - r, bottom = 100 + r;
+  char svg[400];
+  std::snprintf(svg, sizeof svg,
+                "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='200'>"
+                "<path fill='#d33' d='M100 %g A%g %g 0 1 1 100 %g A%g %g 0 1 1 100 %g Z'/></svg>",
+                top, r, r, bottom, r, r, top);
+  return read_svg_string(svg, "ball.svg");
+}
+
+}  // namespace
+
+TEST_SUITE("video") {
+
+TEST_CASE("a whole figure's bob of 3 % of its size is raised to at least 8 % when the canvas allows") {
+  // A ball a third of its canvas: bobbing 0.04 of its height moves it 2.8 % of its diagonal.
+  const Scene s = ball(60);
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("it bobs on the water"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  REQUIRE(plan.actions[0].primitive == Primitive::Bob);
+  const double before = largest(s, rig, plan);
+  REQUIRE(before < 0.04 * diagonal(rig));  // the drawing makes the test mean something
+  fit_plan(s, rig, plan, kFrames, kKeyframes);
+  // Raised, and kept raised: a whole-figure motion with no limbs beside it is no limb's accent
+  // (set back to 100 % before, 2.8 % of the ball's size).
+  CHECK(largest(s, rig, plan) >= 0.08 * diagonal(rig));
+  CHECK(plan.actions[0].scale > 2);
+  CHECK(plan.warnings.empty());
+  CHECK(has_line(plan.notes, "bob raised to"));
+}
+
+TEST_CASE("a part's swing is raised to the floor, not short of it: its chord grows slower than its angle") {
+  const test::Drawing d("stick_figure.svg");
+  // A slight nod: the head turns by about 6 degrees about its neck; raised once by floor /
+  // travel it reached about 99 % of the floor.
+  MotionPlan plan = plan_from_prompt(parse_prompt("he nods his head slightly"), d.rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  REQUIRE(largest(d.scene, d.rig, plan) < 0.08 * diagonal(d.rig));
+  fit_plan(d.scene, d.rig, plan, kFrames, kKeyframes);
+  CHECK(largest(d.scene, d.rig, plan) >= 0.08 * diagonal(d.rig));
+  CHECK(plan.actions[0].scale <= 4.0);
+}
+
+TEST_CASE("a figure filling its canvas stays under the floor, and a warning names the canvas") {
+  // The ball is 180 of the canvas's 200 units tall: a bob of 8 % of its size would take it out
+  // of the picture.
+  const Scene s = ball(180);
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("it bobs on the water"), rig, 1);
+  fit_plan(s, rig, plan, kFrames, kKeyframes);
+  const double travel = largest(s, rig, plan);
+  REQUIRE(travel < 0.08 * diagonal(rig));
+  REQUIRE(travel > 0);
+  char expected[120];
+  std::snprintf(expected, sizeof expected, "bob held to %.1f %% of the figure's size by the canvas", 100 * travel / diagonal(rig));
+  CHECK(has_line(plan.warnings, expected));
+}
+
+TEST_CASE("a clause the fitter's steps would cut under the floor is slowed, not cut") {
+  const test::Drawing d("stick_figure.svg");
+  // A nod, twice a loop, raised to the floor: between the 9 keyframes a short fit may take (5
+  // given) the head turns too far to follow; cut to follow, it moved 6.4 % of the figure's size.
+  // Once a loop, it keeps the floor.
+  MotionPlan plan = plan_from_prompt(parse_prompt("he nods his head"), d.rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  const int cycles = plan.actions[0].cycles;
+  REQUIRE(cycles == 2);
+  fit_plan(d.scene, d.rig, plan, kFrames, 5);
+  CHECK(plan.actions[0].cycles == 1);
+  CHECK(has_line(plan.notes, "nod slowed to 1 cycles a loop instead of 2"));
+  CHECK(largest(d.scene, d.rig, plan) >= 0.08 * diagonal(d.rig));
+  CHECK(plan.warnings.empty());
+}
+
+}  // TEST_SUITE
