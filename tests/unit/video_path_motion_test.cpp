@@ -32,7 +32,23 @@ TEST_CASE("motion.json: the rest positions of a path's points lie in its rest bo
     CHECK(pt[k + 1].get<double>() <= rest[3].get<double>());
   }
   CHECK(pt[0].get<double>() == rest[0].get<double>());
-  CHECK(pt[2].get<double>() == 2.0);  // travel still to 0.1
+  CHECK(pt[2].get<double>() == 2.0);
+}
+
+TEST_CASE("motion.json: a point's travel is written to 0.01, not 0.1") {
+  // A square moving 4.06 units down over 3 frames on a 47-unit canvas (a twemoji's size): 8 % of
+  // a figure there is about 4 units, and to 0.1 its travel read 4.1 (1 % over), a travel of 4.04
+  // 4.0 (1 % under the floor it was raised to).
+  const Scene s = read_svg_string(R"(<svg xmlns="http://www.w3.org/2000/svg" width="47" height="47">
+    <path d="M 10 10 L 30 10 L 30 30 L 10 30 Z"/></svg>)", "move.svg");
+  const int F = 3;
+  std::vector<Vec2> pts;
+  for (int f = 0; f < F; ++f)
+    for (const auto& sp : s.paths[0].subpaths)
+      for (const Vec2& q : sp.points) pts.push_back(q + Vec2{0, 2.02 * f});
+  const auto j = path_motion_json(s, path_motion(s, pts, F));
+  REQUIRE(j.size() == 1);
+  CHECK(j[0]["point_travel"][2].get<double>() == doctest::Approx(4.04).epsilon(1e-9));
 }
 
 }  // TEST_SUITE
