@@ -108,4 +108,30 @@ TEST_CASE("a clause the fitter's steps would cut under the floor is slowed, not 
   CHECK(plan.warnings.empty());
 }
 
+TEST_CASE("a figure bobbing on a ground the prompt names rises from it, to the floor, and never sinks into it") {
+  // A hull (30-70 x 55-66) whose bottom lies behind a sea band drawn after it (0-100 x 62-95),
+  // and a sail: bobbing down by 8 % of the boat, its 7 units above the water went under.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
+           <path d="M 20 55 L 80 55 L 70 66 L 30 66 Z" fill="#a63"/>
+           <path d="M 50 10 L 50 52 L 20 52 Z" fill="#ddd"/>
+           <path d="M 0 62 L 100 62 L 100 95 L 0 95 Z" fill="#8cf"/></svg>)", "boat.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("the sailboat bobs on the waves"), rig, 1);
+  REQUIRE(plan.ground == "on the waves");
+  fit_plan(s, rig, plan, kFrames, kKeyframes);
+  const std::vector<Vec2> pts = animate_plan(s, rig, plan, kFrames);
+  const size_t per = pts.size() / kFrames;
+  double lowest = 0, rise = 0;  // the hull's (path 0) largest move down and up from rest
+  for (int f = 0; f < kFrames; ++f)
+    for (size_t i = 0; i < s.paths[0].subpaths[0].points.size(); ++i) {
+      lowest = std::max(lowest, pts[f * per + i].y - pts[i].y);
+      rise = std::max(rise, pts[i].y - pts[f * per + i].y);
+    }
+  CHECK(lowest < 1e-9);
+  const double boat = std::hypot(60.0, 56.0);  // the hull and sail: 20-80 x 10-66
+  CHECK(rise >= 0.08 * boat);
+  CHECK(has_line(plan.notes, "rises from the waves"));
+}
+
 }  // TEST_SUITE
