@@ -10,6 +10,7 @@
 #include <set>
 
 #include "procedural/motion_plan_internal.h"
+#include "procedural/support_band.h"
 
 namespace svgm {
 
@@ -420,9 +421,26 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
   return whole_failed;
 }
 
+// A figure bobbing on a ground band the prompt names ("bobs on the waves"; support_band.h)
+// rises from it and settles back, unless the words say down: bobbing down it sank into the
+// band, and raised to a visible size (8 % of a sailboat) its hull, 4.5 px above waves drawn in
+// front of it, vanished behind them (the pixel ranker's continuity flag on every candidate).
+// No band found, nothing to sink into: "on the breeze" bobs both ways.
+void rise_from_ground(const Scene& scene, const Rig& rig, MotionPlan& plan) {
+  if (plan.ground.empty()) return;
+  const std::vector<char> band = support_paths(scene, rig);
+  if (std::find(band.begin(), band.end(), 1) == band.end()) return;
+  for (auto& a : plan.actions)
+    if (a.primitive == Primitive::Bob && a.target == Target::Whole && a.vertical == 0 && a.amp > 0) {
+      a.vertical = 1;
+      plan.notes.push_back(a.verb + " rises from " + plan.ground.substr(plan.ground.find(' ') + 1) + " and settles back: down, it would sink into it");
+    }
+}
+
 }  // namespace
 
 void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
+  rise_from_ground(scene, rig, plan);
   const MotionPlan asked = plan;
   if (!fit_scales(scene, rig, plan, frames, keyframes)) return;
   // The whole figure cannot move in the canvas at all: small parts of it at the canvas's edge

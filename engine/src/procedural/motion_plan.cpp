@@ -649,17 +649,6 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
       b.plan.notes.push_back(what + " moves by itself: " + v->name + " (no verb in '" + c.text + "')");
       break;
     }
-  // A figure bobbing on a ground the prompt names ("bobs on the waves"; support_band.h) rises
-  // from it and settles back, unless the words say down: bobbing down it sank into the band,
-  // and raised to a visible size (8 % of a sailboat) its hull, 4.5 px above waves drawn in
-  // front of it, vanished behind them (the pixel ranker's continuity flag on every candidate).
-  if (!b.plan.ground.empty())
-    for (auto& a : b.plan.actions)
-      if (a.primitive == Primitive::Bob && a.target == Target::Whole && a.vertical == 0) {
-        a.vertical = 1;
-        b.plan.notes.push_back(a.verb + " rises from " + b.plan.ground.substr(b.plan.ground.find(' ') + 1) +
-                               " and settles back: down, it would sink into it");
-      }
   b.plan.readings = prompt.readings;
   b.plan.not_understood = unknown;
   for (const auto& w : prompt.unplaced)
