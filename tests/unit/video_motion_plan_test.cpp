@@ -1492,3 +1492,57 @@ TEST_CASE("'thrusts his foil forward': forward is the side the arm reaches out t
 }
 
 }  // TEST_SUITE
+
+TEST_SUITE("motion") {
+
+TEST_CASE("a car drives: its body slides a visible distance inside the canvas and its wheels roll with it") {
+  // tests/data/motion/car.svg: a body 120 wide, wheels of radius 15 centred at (70,90) and
+  // (130,90), 40 of canvas either side. The drive's shake and whole-turn spin alone left the
+  // body where it was (0.6 % of its size); the wheels now turn by the distance over their radius.
+  const Fixture fx("car.svg");
+  MotionPlan plan = fx.plan("the car drives to the right");
+  const int F = 49;
+  fit_plan(fx.scene, fx.rig, plan, F, 15);
+  const PlannedAction* spin = nullptr;
+  const PlannedAction* slide = nullptr;
+  for (const auto& a : plan.actions) {
+    if (a.primitive == Primitive::Spin) spin = &a;
+    if (a.primitive == Primitive::Slide) slide = &a;
+  }
+  REQUIRE(spin);
+  REQUIRE(slide);
+  CHECK(spin->rolls);
+  CHECK(spin->parts.size() == 2);
+  CHECK(slide->direction == 1);  // "to the right"
+  // The engine's tremor (a shake of 0.6 % of the height) moves the body but does not roll the
+  // wheels: without it, every shift of the body is the slide's.
+  for (auto& a : plan.actions)
+    if (a.primitive == Primitive::Shake) a.amp = 0;
+  const auto pts = animate_plan(fx.scene, fx.rig, plan, F);
+  const size_t per = pts.size() / F;
+  const double diagonal = std::hypot(120.0, 65.0);  // the figure: x 40-160, y 40-105
+  double farthest = 0;
+  for (int f = 0; f < F; ++f) {
+    const size_t body = fx.first_point(0), wheel = fx.first_point(1);
+    const Vec2 shift = pts[f * per + body] - pts[body];
+    farthest = std::max(farthest, std::fabs(shift.x));
+    for (size_t i = 0; i < per; ++i) {  // nothing leaves the canvas
+      CHECK(pts[f * per + i].x >= 0);
+      CHECK(pts[f * per + i].x <= 200);
+    }
+    // The back wheel's centre goes with the body (up to the shake); its spoke's tip (70,77) turns
+    // about it by the distance the body went over the radius: clockwise going right.
+    const double theta = shift.x / 15;
+    const Vec2 centre{70 + shift.x, 90 + shift.y};
+    const size_t tip = wheel + fx.scene.paths[1].subpaths[0].points.size();  // the spoke: M 69 77
+    const Vec2 spoke_rest = pts[tip] - Vec2{70, 90};
+    const Vec2 expect{centre.x + std::cos(theta) * spoke_rest.x - std::sin(theta) * spoke_rest.y,
+                      centre.y + std::sin(theta) * spoke_rest.x + std::cos(theta) * spoke_rest.y};
+    CHECK(pts[f * per + tip].x == doctest::Approx(expect.x).epsilon(1e-6));
+    CHECK(pts[f * per + tip].y == doctest::Approx(expect.y).epsilon(1e-6));
+  }
+  CHECK(farthest >= 0.08 * diagonal);  // the visible-travel floor (motion_plan_internal.h)
+  CHECK(loop_gap(pts, F) < 1e-6);
+}
+
+}  // TEST_SUITE

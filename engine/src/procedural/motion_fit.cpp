@@ -217,10 +217,12 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
           clause.push_back(j);
           done[j] = 1;
         }
-      bool measurable = true;
+      // Whole turns and falls are not scaled; the clause's other actions are (a car's drive:
+      // its slide, not its wheels' spin, whose points are exempt).
+      bool measurable = false;
       for (size_t j : clause)
-        measurable = measurable && plan.actions[j].primitive != Primitive::Spin && plan.actions[j].primitive != Primitive::Turn &&
-                     plan.actions[j].primitive != Primitive::Fall;
+        measurable = measurable || (plan.actions[j].primitive != Primitive::Spin && plan.actions[j].primitive != Primitive::Turn &&
+                                    plan.actions[j].primitive != Primitive::Fall);
       if (!measurable) continue;
       const double travel = largest_travel(animate_plan(scene, rig, alone(clause), frames), exempt, frames);
       if (travel <= 0 || travel >= floor) continue;

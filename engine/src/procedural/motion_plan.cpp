@@ -649,6 +649,12 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
       b.plan.notes.push_back(what + " moves by itself: " + v->name + " (no verb in '" + c.text + "')");
       break;
     }
+  // Wheels roll with the figure's slide of the same words (a car driving): their turn follows
+  // the distance it goes, not a steady rate.
+  for (PlannedAction& a : b.plan.actions)
+    if (a.primitive == Primitive::Spin && a.target == Target::Wheels)
+      for (const PlannedAction& s : b.plan.actions)
+        if (s.primitive == Primitive::Slide && s.parts.empty() && s.verb == a.verb && s.words == a.words) a.rolls = true;
   b.plan.readings = prompt.readings;
   b.plan.not_understood = unknown;
   for (const auto& w : prompt.unplaced)
