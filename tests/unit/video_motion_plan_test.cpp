@@ -10,6 +10,7 @@
 
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
+#include "procedural/invisible_spin.h"
 #include "procedural/motion_plan.h"
 #include "procedural/support_band.h"
 #include "geometry/rigid_bodies.h"
@@ -1543,6 +1544,44 @@ TEST_CASE("a car drives: its body slides a visible distance inside the canvas an
   }
   CHECK(farthest >= 0.08 * diagonal);  // the visible-travel floor (motion_plan_internal.h)
   CHECK(loop_gap(pts, F) < 1e-6);
+}
+
+}  // TEST_SUITE
+
+TEST_SUITE("motion") {
+
+TEST_CASE("wheels that look the same at every angle roll with the figure; wheels with a spoke spin in place") {
+  // car.svg's wheels each have a spoke: their spin shows, nothing else moves. Without the spokes
+  // they are plain discs (a circle as four cubics keeps its radius within 0.03 %): spun in place
+  // no pixel would change (the ranker's 'no motion' for every candidate), so the car rolls.
+  auto plan_for = [](const Scene& scene) {
+    const Rig rig = build_rig(scene, {});
+    MotionPlan plan = plan_from_prompt(parse_prompt("the car's wheels spin"), rig, 1);
+    fit_plan(scene, rig, plan, 25, 9);
+    return std::make_pair(rig, plan);
+  };
+  const Fixture spoked("car.svg");
+  {
+    const auto [rig, plan] = plan_for(spoked.scene);
+    REQUIRE(plan.actions.size() == 1);
+    CHECK(plan.actions[0].primitive == Primitive::Spin);
+    CHECK(!plan.actions[0].rolls);
+    CHECK(!looks_same_turned(spoked.scene, rig, plan.actions[0].parts));
+  }
+  Scene plain = spoked.scene;
+  for (int w : {1, 2}) plain.paths[w].subpaths.resize(1);  // the spokes taken out
+  const auto [rig, plan] = plan_for(plain);
+  REQUIRE(plan.actions.size() == 2);
+  CHECK(plan.actions[0].primitive == Primitive::Spin);
+  CHECK(plan.actions[0].parts.size() == 2);
+  CHECK(looks_same_turned(plain, rig, plan.actions[0].parts));
+  CHECK(plan.actions[0].rolls);
+  CHECK(plan.actions[1].primitive == Primitive::Slide);
+  CHECK(plan.actions[1].parts.empty());
+  REQUIRE(!plan.warnings.empty());
+  CHECK(plan.warnings[0].find("look the same at every angle") != std::string::npos);
+  const auto t = path_travel(plain, animate_plan(plain, rig, plan, 25), 25);
+  CHECK(t[0] >= 0.08 * std::hypot(120.0, 65.0));  // the body goes a visible distance
 }
 
 }  // TEST_SUITE

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <set>
 
+#include "procedural/invisible_spin.h"
 #include "procedural/motion_plan_internal.h"
 
 namespace svgm {
@@ -307,6 +308,7 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
 }  // namespace
 
 void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
+  roll_invisible_spins(scene, rig, plan);
   const MotionPlan asked = plan;
   if (!fit_scales(scene, rig, plan, frames, keyframes)) return;
   // The whole figure cannot move in the canvas at all: small parts of it at the canvas's edge
