@@ -1585,3 +1585,19 @@ TEST_CASE("wheels that look the same at every angle roll with the figure; wheels
 }
 
 }  // TEST_SUITE
+
+TEST_SUITE("motion") {
+
+TEST_CASE("the figure's own noun is understood: it names who moves; a word the lexicon does not know is listed") {
+  const Fixture fx("stick_figure.svg");
+  auto listed = [&](const std::string& prompt, const std::string& word) {
+    const auto nu = fx.plan(prompt).not_understood;
+    return std::find(nu.begin(), nu.end(), word) != nu.end();
+  };
+  CHECK(!listed("the tiger lashes its tail", "tiger"));
+  CHECK(!listed("the dancer waves her arms", "dancer"));
+  CHECK(listed("the zorblax waves its arms", "zorblax"));
+  CHECK(listed("he waves at the tiger", "tiger"));  // after a preposition: not who moves, no part
+}
+
+}  // TEST_SUITE

@@ -563,8 +563,12 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
         std::string ignore;
         hits = parts_for(rig, Target::Named, n.word, &ignore);
         if (hits.empty()) {
-          // The ground's noun was understood: it is where the figure moves.
-          if (unknown_words && b.plan.ground.substr(b.plan.ground.rfind(' ') + 1) != n.word) unknown_words->push_back(n.word);
+          // The ground's noun was understood: it is where the figure moves. So was the figure's
+          // own noun, the subject the lexicon knows a kind of ("the tiger": a quadruped): it
+          // names who moves, not a part (the report listed "tiger" as not understood).
+          const bool figure = n.figure == c.figure && n.figure != FigureClass::None && n.figure != FigureClass::Scene &&
+                              !n.after_verb && !n.object_of_preposition;
+          if (unknown_words && !figure && b.plan.ground.substr(b.plan.ground.rfind(' ') + 1) != n.word) unknown_words->push_back(n.word);
           continue;
         }
         // The verb's object naming only the backdrop ("rides the waves") is where the figure
