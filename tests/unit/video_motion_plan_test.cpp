@@ -10,6 +10,7 @@
 
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
+#include "procedural/invisible_spin.h"
 #include "procedural/motion_plan.h"
 #include "procedural/support_band.h"
 #include "geometry/rigid_bodies.h"
@@ -1489,6 +1490,114 @@ TEST_CASE("'thrusts his foil forward': forward is the side the arm reaches out t
   }
   CHECK(forward == std::set<int>{-1});  // the sword arm, at the viewer's left
   CHECK(sides == std::set<int>{-1, 1});
+}
+
+}  // TEST_SUITE
+
+TEST_SUITE("motion") {
+
+TEST_CASE("a car drives: its body slides a visible distance inside the canvas and its wheels roll with it") {
+  // tests/data/motion/car.svg: a body 120 wide, wheels of radius 15 centred at (70,90) and
+  // (130,90), 40 of canvas either side. The drive's shake and whole-turn spin alone left the
+  // body where it was (0.6 % of its size); the wheels now turn by the distance over their radius.
+  const Fixture fx("car.svg");
+  MotionPlan plan = fx.plan("the car drives to the right");
+  const int F = 49;
+  fit_plan(fx.scene, fx.rig, plan, F, 15);
+  const PlannedAction* spin = nullptr;
+  const PlannedAction* slide = nullptr;
+  for (const auto& a : plan.actions) {
+    if (a.primitive == Primitive::Spin) spin = &a;
+    if (a.primitive == Primitive::Slide) slide = &a;
+  }
+  REQUIRE(spin);
+  REQUIRE(slide);
+  CHECK(spin->rolls);
+  CHECK(spin->parts.size() == 2);
+  CHECK(slide->direction == 1);  // "to the right"
+  // The engine's tremor (a shake of 0.6 % of the height) moves the body but does not roll the
+  // wheels: without it, every shift of the body is the slide's.
+  for (auto& a : plan.actions)
+    if (a.primitive == Primitive::Shake) a.amp = 0;
+  const auto pts = animate_plan(fx.scene, fx.rig, plan, F);
+  const size_t per = pts.size() / F;
+  const double diagonal = std::hypot(120.0, 65.0);  // the figure: x 40-160, y 40-105
+  double farthest = 0;
+  for (int f = 0; f < F; ++f) {
+    const size_t body = fx.first_point(0), wheel = fx.first_point(1);
+    const Vec2 shift = pts[f * per + body] - pts[body];
+    farthest = std::max(farthest, std::fabs(shift.x));
+    for (size_t i = 0; i < per; ++i) {  // nothing leaves the canvas
+      CHECK(pts[f * per + i].x >= 0);
+      CHECK(pts[f * per + i].x <= 200);
+    }
+    // The back wheel's centre goes with the body (up to the shake); its spoke's tip (70,77) turns
+    // about it by the distance the body went over the radius: clockwise going right.
+    const double theta = shift.x / 15;
+    const Vec2 centre{70 + shift.x, 90 + shift.y};
+    const size_t tip = wheel + fx.scene.paths[1].subpaths[0].points.size();  // the spoke: M 69 77
+    const Vec2 spoke_rest = pts[tip] - Vec2{70, 90};
+    const Vec2 expect{centre.x + std::cos(theta) * spoke_rest.x - std::sin(theta) * spoke_rest.y,
+                      centre.y + std::sin(theta) * spoke_rest.x + std::cos(theta) * spoke_rest.y};
+    CHECK(pts[f * per + tip].x == doctest::Approx(expect.x).epsilon(1e-6));
+    CHECK(pts[f * per + tip].y == doctest::Approx(expect.y).epsilon(1e-6));
+  }
+  CHECK(farthest >= 0.08 * diagonal);  // the visible-travel floor (motion_plan_internal.h)
+  CHECK(loop_gap(pts, F) < 1e-6);
+}
+
+}  // TEST_SUITE
+
+TEST_SUITE("motion") {
+
+TEST_CASE("wheels that look the same at every angle roll with the figure; wheels with a spoke spin in place") {
+  // car.svg's wheels each have a spoke: their spin shows, nothing else moves. Without the spokes
+  // they are plain discs (a circle as four cubics keeps its radius within 0.03 %): spun in place
+  // no pixel would change (the ranker's 'no motion' for every candidate), so the car rolls.
+  auto plan_for = [](const Scene& scene) {
+    const Rig rig = build_rig(scene, {});
+    MotionPlan plan = plan_from_prompt(parse_prompt("the car's wheels spin"), rig, 1);
+    fit_plan(scene, rig, plan, 25, 9);
+    return std::make_pair(rig, plan);
+  };
+  const Fixture spoked("car.svg");
+  {
+    const auto [rig, plan] = plan_for(spoked.scene);
+    REQUIRE(plan.actions.size() == 1);
+    CHECK(plan.actions[0].primitive == Primitive::Spin);
+    CHECK(!plan.actions[0].rolls);
+    CHECK(!looks_same_turned(spoked.scene, rig, plan.actions[0].parts));
+  }
+  Scene plain = spoked.scene;
+  for (int w : {1, 2}) plain.paths[w].subpaths.resize(1);  // the spokes taken out
+  const auto [rig, plan] = plan_for(plain);
+  REQUIRE(plan.actions.size() == 2);
+  CHECK(plan.actions[0].primitive == Primitive::Spin);
+  CHECK(plan.actions[0].parts.size() == 2);
+  CHECK(looks_same_turned(plain, rig, plan.actions[0].parts));
+  CHECK(plan.actions[0].rolls);
+  CHECK(plan.actions[1].primitive == Primitive::Slide);
+  CHECK(plan.actions[1].parts.empty());
+  REQUIRE(!plan.warnings.empty());
+  CHECK(plan.warnings[0].find("look the same at every angle") != std::string::npos);
+  const auto t = path_travel(plain, animate_plan(plain, rig, plan, 25), 25);
+  CHECK(t[0] >= 0.08 * std::hypot(120.0, 65.0));  // the body goes a visible distance
+}
+
+}  // TEST_SUITE
+
+TEST_SUITE("motion") {
+
+TEST_CASE("the figure's own noun is understood: it names who moves; a word the lexicon does not know is listed") {
+  const Fixture fx("stick_figure.svg");
+  auto listed = [&](const std::string& prompt, const std::string& word) {
+    const auto nu = fx.plan(prompt).not_understood;
+    return std::find(nu.begin(), nu.end(), word) != nu.end();
+  };
+  CHECK(!listed("the tiger lashes its tail", "tiger"));
+  CHECK(!listed("the dancer waves her arms", "dancer"));
+  CHECK(listed("the zorblax waves its arms", "zorblax"));
+  CHECK(listed("he waves at the tiger", "tiger"));  // after a preposition: not who moves, no part
 }
 
 }  // TEST_SUITE

@@ -60,7 +60,10 @@ const std::vector<Verb> kVerbs = {
   {"stretch", {"stretch", "extend", "elongat", "lengthen"}, {{P::Stretch, T::Whole, 0.08, 1}}, P::Swing},
   {"move",    {"mov", "go", "went", "advanc", "crawl", "creep", "inch", "proceed", "travel"}, {{P::Slide, T::Whole, 0.04, 1}, {P::Stretch, T::Whole, 0.04, 2}}, P::Swing},
   {"glide",   {"ski", "skat", "surf", "slid", "sled", "ride", "riding", "rode", "ridden", "maneuver", "manoeuvr", "sail", "row"}, {{P::Slide, T::Whole, 0.04, 1}, {P::Rock, T::Whole, 5, 1}}, P::Swing},
-  {"drive",   {"driv", "drove", "roll", "accelerat", "launch", "speed"}, {{P::Shake, T::Whole, 0.006, 6}, {P::Spin, T::Wheels, 1, 1}}, P::Spin},
+  // A vehicle drives: it travels (a slide, out and back within the canvas) with its engine's
+  // tremor, its wheels rolling with it. With the shake and spin alone a car whose wheels are
+  // plain discs did not move at all, and "drives off to the right" stood still.
+  {"drive",   {"driv", "drove", "roll", "accelerat", "launch", "speed"}, {{P::Shake, T::Whole, 0.006, 6}, {P::Spin, T::Wheels, 1, 1}, {P::Slide, T::Whole, 0.1, 1}}, P::Spin},
   {"dodge",   {"dodg", "evad"},                 {{P::Swing, T::Root, 8, 2}}, P::Swing},  // a lean of the body about the hips, the legs planted
   // Bodies that bend.
   {"swim",    {"swim", "swam", "paddl"},        {{P::Undulate, T::Whole, 0.05, 1}, {P::Slide, T::Whole, 0.02, 1}}, P::Undulate},

@@ -28,7 +28,7 @@ std::string direction_words(const PlannedAction& a) {
   // one side and back; a single part turns by its sign.
   const double sign = a.sign.size() == 1 ? a.sign[0] : 0;
   switch (a.primitive) {
-    case Primitive::Spin: return std::string(turn(a.direction)) + ", whole turns";
+    case Primitive::Spin: return a.rolls ? "rolling with the figure's slide" : std::string(turn(a.direction)) + ", whole turns";
     case Primitive::Turn: return "about its vertical axis, whole turns (mirrored while its back is shown)";
     case Primitive::Slide: return a.direction > 0 ? "right first, then left" : "left first, then right";
     case Primitive::Hop: return "up in an arc and back down";

@@ -9,6 +9,7 @@
 #include <numeric>
 #include <set>
 
+#include "procedural/invisible_spin.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/support_band.h"
 
@@ -169,23 +170,26 @@ MotionPlan only(const MotionPlan& plan, const std::vector<size_t>& keep) {
 }
 
 // The clauses of `plan` the visible floor measures: its actions grouped by verb and words (a
-// walk's legs, arms and bob grow together), but none with a spin, a turn or a fall (whole turns
-// are never scaled; falling elements leave the picture whatever their size).
+// walk's legs, arms and bob grow together), but none with a turn or a fall (whole turns are
+// never scaled; falling elements leave the picture whatever their size) and none that only
+// spins. A spin beside other actions (a car's drive: its slide and its wheels) is measured by
+// those: the spinning points are exempt, and a spin's whole turns ignore the scale.
 std::vector<std::vector<size_t>> measured_clauses(const MotionPlan& plan) {
   std::vector<std::vector<size_t>> out;
   std::vector<char> done(plan.actions.size(), 0);
   for (size_t i = 0; i < plan.actions.size(); ++i) {
     if (done[i]) continue;
     std::vector<size_t> clause;
-    bool measurable = true;
+    bool measurable = true, scalable = false;
     for (size_t j = i; j < plan.actions.size(); ++j)
       if (plan.actions[j].verb == plan.actions[i].verb && plan.actions[j].words == plan.actions[i].words) {
         clause.push_back(j);
         done[j] = 1;
         const Primitive p = plan.actions[j].primitive;
-        measurable = measurable && p != Primitive::Spin && p != Primitive::Turn && p != Primitive::Fall;
+        measurable = measurable && p != Primitive::Turn && p != Primitive::Fall;
+        scalable = scalable || p != Primitive::Spin;
       }
-    if (measurable) out.push_back(clause);
+    if (measurable && scalable) out.push_back(clause);
   }
   return out;
 }
@@ -441,6 +445,7 @@ void rise_from_ground(const Scene& scene, const Rig& rig, MotionPlan& plan) {
 
 void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
   rise_from_ground(scene, rig, plan);
+  roll_invisible_spins(scene, rig, plan);
   const MotionPlan asked = plan;
   if (!fit_scales(scene, rig, plan, frames, keyframes)) return;
   // The whole figure cannot move in the canvas at all: small parts of it at the canvas's edge

@@ -81,6 +81,20 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
   }
 }
 
+// A rolling wheel's turn at t (PlannedAction::rolls), in degrees: the distance the figure's
+// slide of the same words has gone, over the wheel's radius (rolling without slipping; going
+// right turns it clockwise on the screen, and back again on the way back). Whole turns at a
+// steady rate kept turning forwards while the car slid back.
+double rolled_deg(const MotionPlan& plan, const PlannedAction& spin, double t, const RigBox& wheel, const RigBox& figure, double W,
+                  double H) {
+  for (const PlannedAction& b : plan.actions)
+    if (b.primitive == Primitive::Slide && b.parts.empty() && b.verb == spin.verb && b.words == spin.words) {
+      const double x = rigid(b, plan.amplitude(b), 1, 0, t, figure, figure.centre(), W, H).e;
+      return x / std::max(0.5 * std::max(wheel.w(), wheel.h()), 1e-9) * (180 / M_PI);
+    }
+  return 0;
+}
+
 // Deformations of the shape: a wave along the long axis (Undulate) or a bend (Bend).
 Vec2 deform(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
   const bool horizontal = box.w() >= box.h();
@@ -463,7 +477,12 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         const RigPart& P = rig.parts[a.parts[i]];
         Affine& into = a.primitive == Primitive::Spin ? spin[a.parts[i]]
                        : a.parts[i] == rig.root && a.primitive == Primitive::Swing ? root_turn : local[a.parts[i]];
-        into = rigid(a, amp, a.sign[i], a.phase[i], t, P.box, P.pivot, W, H, P.wheel_plane) * into;
+        if (a.rolls) {
+          const Vec2 c = P.box.centre();
+          into = Affine::translate(c.x, c.y) * P.wheel_plane * Affine::rotate_deg(rolled_deg(plan, a, t, P.box, rig.figure, W, H)) *
+                 P.wheel_plane.inverse() * Affine::translate(-c.x, -c.y) * into;
+        } else
+          into = rigid(a, amp, a.sign[i], a.phase[i], t, P.box, P.pivot, W, H, P.wheel_plane) * into;
         if (a.primitive == Primitive::Spin) spins[a.parts[i]] = 1;
       }
     }

@@ -563,8 +563,12 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
         std::string ignore;
         hits = parts_for(rig, Target::Named, n.word, &ignore);
         if (hits.empty()) {
-          // The ground's noun was understood: it is where the figure moves.
-          if (unknown_words && b.plan.ground.substr(b.plan.ground.rfind(' ') + 1) != n.word) unknown_words->push_back(n.word);
+          // The ground's noun was understood: it is where the figure moves. So was the figure's
+          // own noun, the subject the lexicon knows a kind of ("the tiger": a quadruped): it
+          // names who moves, not a part (the report listed "tiger" as not understood).
+          const bool figure = n.figure == c.figure && n.figure != FigureClass::None && n.figure != FigureClass::Scene &&
+                              !n.after_verb && !n.object_of_preposition;
+          if (unknown_words && !figure && b.plan.ground.substr(b.plan.ground.rfind(' ') + 1) != n.word) unknown_words->push_back(n.word);
           continue;
         }
         // The verb's object naming only the backdrop ("rides the waves") is where the figure
@@ -649,6 +653,12 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
       b.plan.notes.push_back(what + " moves by itself: " + v->name + " (no verb in '" + c.text + "')");
       break;
     }
+  // Wheels roll with the figure's slide of the same words (a car driving): their turn follows
+  // the distance it goes, not a steady rate.
+  for (PlannedAction& a : b.plan.actions)
+    if (a.primitive == Primitive::Spin && a.target == Target::Wheels)
+      for (const PlannedAction& s : b.plan.actions)
+        if (s.primitive == Primitive::Slide && s.parts.empty() && s.verb == a.verb && s.words == a.words) a.rolls = true;
   b.plan.readings = prompt.readings;
   b.plan.not_understood = unknown;
   for (const auto& w : prompt.unplaced)

@@ -1,0 +1,97 @@
+// Wheels whose spin cannot be seen roll instead (invisible_spin.h).
+#include "procedural/invisible_spin.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "motion/motion_verbs.h"
+
+namespace svgm {
+
+namespace {
+
+Vec2 cubic_at(const Vec2* p, double t) {
+  const double u = 1 - t;
+  return (u * u * u) * p[0] + (3 * u * u * t) * p[1] + (3 * u * t * t) * p[2] + (t * t * t) * p[3];
+}
+
+// `g` is `p` or hangs from it.
+bool under(const Rig& rig, int g, int p) {
+  for (int guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
+    if (g == p) return true;
+  return false;
+}
+
+}  // namespace
+
+bool looks_same_turned(const Scene& scene, const Rig& rig, const std::vector<int>& parts) {
+  if (parts.empty()) return false;
+  for (int p : parts) {
+    const RigPart& P = rig.parts[p];
+    const Vec2 c = P.box.centre();
+    const double R = 0.5 * std::max(P.box.w(), P.box.h());
+    if (R <= 0) return false;
+    const Affine to_plane = P.wheel_plane.inverse();
+    bool any = false;
+    for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
+      if (!under(rig, rig.part_of_path[pi], p)) continue;
+      const Path& path = scene.paths[pi];
+      if (path.fill_gradient >= 0 || path.stroke_gradient >= 0 || (path.has_stroke && !path.stroke.dashes.empty())) return false;
+      for (const Subpath& sp : path.subpaths) {
+        if (sp.points.empty()) continue;
+        // An arc that does not close (a sketched wheel's stroke winding most of the way round)
+        // shows its gap turning.
+        if (!sp.closed && std::hypot(sp.points.back().x - sp.points[0].x, sp.points.back().y - sp.points[0].y) > kRoundTolerance * R)
+          return false;
+        double lo = 1e300, hi = 0;
+        auto seen = [&](Vec2 q) {
+          const Vec2 v = to_plane.apply(q - c);
+          const double r = std::hypot(v.x, v.y);
+          lo = std::min(lo, r);
+          hi = std::max(hi, r);
+        };
+        seen(sp.points[0]);
+        for (size_t s = 0; s + 3 < sp.points.size(); s += 3)
+          for (double t : {0.25, 0.5, 0.75, 1.0}) seen(cubic_at(&sp.points[s], t));
+        if (hi - lo > kRoundTolerance * R) return false;
+        any = true;
+      }
+    }
+    if (!any) return false;
+  }
+  return true;
+}
+
+void roll_invisible_spins(const Scene& scene, const Rig& rig, MotionPlan& plan) {
+  const Verb* drive = find_verb_by_name("drive");
+  if (!drive) return;
+  const Action* slide = nullptr;
+  for (const Action& act : drive->actions)
+    if (act.primitive == Primitive::Slide && act.target == Target::Whole) slide = &act;
+  if (!slide) return;
+  const size_t n = plan.actions.size();
+  for (size_t i = 0; i < n; ++i) {
+    PlannedAction& a = plan.actions[i];
+    if (a.primitive != Primitive::Spin || a.target != Target::Wheels || a.rolls) continue;
+    // Only when the spin is all its words show (a pedalling leg shows the motion by itself).
+    bool alone = true;
+    for (const PlannedAction& s : plan.actions) alone = alone && (&s == &a || s.words != a.words);
+    if (!alone || !looks_same_turned(scene, rig, a.parts)) continue;
+    PlannedAction roll;
+    roll.verb = a.verb;
+    roll.words = a.words;
+    roll.primitive = Primitive::Slide;
+    roll.target = Target::Whole;
+    roll.amp = slide->amp;
+    roll.cycles = slide->cycles;
+    roll.direction = a.direction;
+    roll.why = "'" + a.words + "': the wheels look the same turned, so the figure rolls with them";
+    a.rolls = true;
+    std::string names;
+    for (int p : a.parts) names += (names.empty() ? "" : ", ") + rig.parts[p].name;
+    plan.warnings.push_back("the wheels (" + names + ") look the same at every angle: spun in place they would not show, so the figure rolls with them");
+    plan.actions.push_back(std::move(roll));
+  }
+}
+
+}  // namespace svgm
