@@ -46,6 +46,23 @@ constexpr int kAnimalFile = 5, kFoodFile = 13, kPersonFile = 18;
 template <size_t N>
 bool in(const std::array<int, N>& a, int v) { return std::find(a.begin(), a.end(), v) != a.end(); }
 
+// WordNet's sentence frames with no object (man 5 wndb): "Something ----s", "Somebody ----s",
+// "It is ----ing", "Something is ----ing PP", "... Adjective", "----s to somebody", "----s on
+// something", "Somebody ----s PP", "Somebody's (body part) ----s". A synset with frames and none
+// of these only says what its subject does to something else ("move, displace": cause to move;
+// "put", "carry", "push" are kinds of it): the one doing it need not move at all.
+constexpr std::array<int, 11> kNoObjectFrames = {1, 2, 3, 4, 6, 7, 12, 13, 22, 23, 27};
+
+bool moves_something_else(const Synset& s) {
+  return !s.frames.empty() && std::none_of(s.frames.begin(), s.frames.end(), [](int f) { return in(kNoObjectFrames, f); });
+}
+
+// A verb whose first action moves the whole figure (a slide, a sway, a spin of its body) says
+// how the figure itself moves: it claims no sense that moves something else.
+bool moves_whole_figure(const Verb& v) {
+  return !v.actions.empty() && (v.actions[0].target == Target::Whole || v.actions[0].target == Target::Root);
+}
+
 bool has_pointer(const Synset& s, const char* symbol) {
   return std::any_of(s.pointers.begin(), s.pointers.end(), [&](const wordnet::Pointer& p) { return p.symbol == symbol; });
 }
@@ -117,6 +134,7 @@ void Lexicon::claim_verbs() {
           // A root outside verb.motion ("act, move": perform an action) is above every kind of doing.
           if (s->lex_file != kMotionFile && !has_pointer(*s, "@")) continue;
           if (s->lex_file == kChangeFile && !is_drawn_change(s->offset)) continue;
+          if (moves_whole_figure(v) && moves_something_else(*s)) continue;
           auto& claims = verb_claims_[s->offset];
           if (std::none_of(claims.begin(), claims.end(), [&](const VerbClaim& c) { return c.verb == &v; }))
             claims.push_back({&v, lemma});
@@ -144,6 +162,14 @@ void Lexicon::place_anchors() {
     if (a.sense >= 1 && static_cast<size_t>(a.sense) <= senses.size())
       noun_anchors_.emplace(senses[a.sense - 1], NounPlace{a.figure, a.motion});
   }
+}
+
+bool Lexicon::noun_is_animal_word(std::string_view word) const {
+  if (!db_) return false;
+  for (const std::string& lemma : db_->base_forms(word, Pos::Noun))
+    for (uint32_t sense : db_->senses(lemma, Pos::Noun))
+      if (const auto s = db_->synset(Pos::Noun, sense); s && s->lex_file == kAnimalFile) return true;
+  return false;
 }
 
 bool Lexicon::knows_verb(std::string_view word) const { return db_ && !db_->base_forms(word, Pos::Verb).empty(); }
