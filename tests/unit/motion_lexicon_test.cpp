@@ -320,6 +320,9 @@ TEST_CASE("lexicon: a whole-figure motion claims no sense that only moves someth
   CHECK(verb_of("approach") == "move");
   // A limb's verb keeps its objects: throwing moves the arm.
   CHECK(verb_of("toss") == "throw");
+  // Senses passed over so do not count among a verb's first: "exercise" claims its fourth, to
+  // work out (a root of verb.body its own name names first).
+  CHECK(verb_names(parse_prompt("the man works out").clauses.at(0)) == std::vector<std::string>{"exercise"});
 }
 
 TEST_CASE("lexicon: kinds of rubbing read as rub; a verb WordNet joins to the next word with no motion is not that verb") {

@@ -24,7 +24,7 @@ using wordnet::Synset;
 constexpr int kNameSenses = 3;
 constexpr int kStemSenses = 1;
 constexpr std::array<int, 8> kVerbFiles = {29, 30, 32, 34, 35, 38, 39, 43};
-constexpr int kMotionFile = 38;
+constexpr int kMotionFile = 38, kBodyFile = 29;
 // In verb.change only changes of size and shape are motions the vocabulary draws (grow, bend,
 // stretch); the rest are becomings ("grow" 1 is "pass into a condition": "he grew angry").
 constexpr int kChangeFile = 30;
@@ -127,14 +127,23 @@ void Lexicon::claim_verbs() {
       if (const auto bases = db_->base_forms(stem, Pos::Verb); !bases.empty() && bases.front() != stem) continue;
       for (const std::string& lemma : stem_lemmas(stem)) {
         const std::vector<uint32_t> senses = db_->senses(lemma, Pos::Verb);
-        const size_t n = std::min<size_t>(senses.size(), lemma == v.name ? kNameSenses : kStemSenses);
+        // The first senses said of the figure itself: a sense that only moves something else
+        // is passed over without counting ("exercise" is first to exert, to practise, to give a
+        // workout to someone; its fourth sense, to work out, is the figure's own).
+        size_t n = std::min<size_t>(senses.size(), lemma == v.name ? kNameSenses : kStemSenses);
         for (size_t r = 0; r < n; ++r) {
           const std::optional<Synset> s = db_->synset(Pos::Verb, senses[r]);
+          if (s && moves_whole_figure(v) && moves_something_else(*s)) {
+            n = std::min(n + 1, senses.size());
+            continue;
+          }
           if (!s || !in(kVerbFiles, s->lex_file)) continue;
-          // A root outside verb.motion ("act, move": perform an action) is above every kind of doing.
-          if (s->lex_file != kMotionFile && !has_pointer(*s, "@")) continue;
+          // A root outside verb.motion ("act, move": perform an action) is above every kind of
+          // doing; one of verb.body that the verb's own name names first is that motion of the
+          // body ("exercise, work out").
+          const bool own_body_root = s->lex_file == kBodyFile && !s->words.empty() && s->words.front() == v.name;
+          if (s->lex_file != kMotionFile && !own_body_root && !has_pointer(*s, "@")) continue;
           if (s->lex_file == kChangeFile && !is_drawn_change(s->offset)) continue;
-          if (moves_whole_figure(v) && moves_something_else(*s)) continue;
           auto& claims = verb_claims_[s->offset];
           if (std::none_of(claims.begin(), claims.end(), [&](const VerbClaim& c) { return c.verb == &v; }))
             claims.push_back({&v, lemma});
