@@ -67,9 +67,14 @@ bool has_pointer(const Synset& s, const char* symbol) {
   return std::any_of(s.pointers.begin(), s.pointers.end(), [&](const wordnet::Pointer& p) { return p.symbol == symbol; });
 }
 
-// Lemmas a stem of the table stands for: "wav" -> wave, "flie" -> fly, "run" -> run.
-std::vector<std::string> stem_lemmas(const std::string& stem) {
+// Lemmas a stem of the table stands for: "wav" -> wave, "flie" -> fly, "run" -> run. When the
+// stem and the stem with an "e" are both verbs, the one used more often in WordNet's tagged
+// texts, the stem itself on a tie: twinkle's "shin" is shine (to shin up a pole is to climb),
+// eat's "sing" is sing (not singe).
+std::vector<std::string> stem_lemmas(const wordnet::Database& db, const std::string& stem) {
   std::vector<std::string> out = {stem, stem + "e"};
+  if (!db.senses(stem, Pos::Verb).empty() && !db.senses(stem + "e", Pos::Verb).empty())
+    out = {db.tagged_senses(stem + "e", Pos::Verb) > db.tagged_senses(stem, Pos::Verb) ? stem + "e" : stem};
   if (stem.size() > 2 && stem.compare(stem.size() - 2, 2, "ie") == 0) out.push_back(stem.substr(0, stem.size() - 2) + "y");
   return out;
 }
@@ -125,7 +130,7 @@ void Lexicon::claim_verbs() {
     for (const std::string& stem : stems) {
       // An irregular form ("fell", "sat", "rose") is another verb's inflection, not a lemma.
       if (const auto bases = db_->base_forms(stem, Pos::Verb); !bases.empty() && bases.front() != stem) continue;
-      for (const std::string& lemma : stem_lemmas(stem)) {
+      for (const std::string& lemma : stem_lemmas(*db_, stem)) {
         const std::vector<uint32_t> senses = db_->senses(lemma, Pos::Verb);
         // The first senses said of the figure itself: a sense that only moves something else
         // is passed over without counting ("exercise" is first to exert, to practise, to give a
