@@ -302,4 +302,45 @@ TEST_CASE("parse: what hangs from something sways under it ('the sloth hangs fro
   CHECK(p.clauses[1].mods.speed == 0.5);
 }
 
+TEST_CASE("lexicon: a whole-figure motion claims no sense that only moves something else") {
+  if (!wordnet_or_skip()) return;
+  // WordNet's sentence frames: "travel, go, move" is said of its subject alone; "move, displace"
+  // (cause to move) only with an object.
+  const wordnet::Database* db = wordnet::Database::shared();
+  const auto travel = db->synset(wordnet::Pos::Verb, 1835514), displace = db->synset(wordnet::Pos::Verb, 1850333);
+  REQUIRE(travel);
+  REQUIRE(displace);
+  CHECK(travel->frames == std::vector<int>{1, 2, 4, 22});
+  CHECK(displace->frames == std::vector<int>{8, 10, 11});
+  // Kinds of "move, displace" (grabbing, combining, meeting someone) no longer slide the whole
+  // figure; kinds of travelling still do.
+  CHECK(verb_of("grab") == "-");
+  CHECK(verb_of("combine") == "-");
+  CHECK(verb_of("encounter") == "-");
+  CHECK(verb_of("approach") == "move");
+  // A limb's verb keeps its objects: throwing moves the arm.
+  CHECK(verb_of("toss") == "throw");
+  // Senses passed over so do not count among a verb's first: "exercise" claims its fourth, to
+  // work out (a root of verb.body its own name names first).
+  CHECK(verb_names(parse_prompt("the man works out").clauses.at(0)) == std::vector<std::string>{"exercise"});
+}
+
+TEST_CASE("lexicon: kinds of rubbing read as rub; a verb WordNet joins to the next word with no motion is not that verb") {
+  if (!wordnet_or_skip()) return;
+  // A stem that is a verb with and without an "e" stands for the one used more: twinkle's "shin"
+  // is shine, and to clamber (a kind of shinning up) is to climb, not to twinkle.
+  CHECK(verb_of("clamber") == "climb");
+  CHECK(verb_of("wipe") == "rub");
+  CHECK(verb_of("massages") == "rub");
+  CHECK(verb_of("scour") == "rub");
+  const ParsedPrompt asleep = parse_prompt("the man falls asleep");
+  REQUIRE(asleep.clauses.size() == 1);
+  CHECK(asleep.clauses[0].verbs.empty());
+  CHECK(asleep.unplaced == std::vector<std::string>{"falls asleep"});
+  // A direction or a preposition after the verb is where it goes, not one verb with it.
+  CHECK(verb_names(parse_prompt("the boat bobs up and down").clauses.at(0)) == std::vector<std::string>{"bob"});
+  CHECK(verb_names(parse_prompt("the man leans against the wall").clauses.at(0)) == std::vector<std::string>{"lean"});
+  CHECK(verb_names(parse_prompt("the man sits down").clauses.at(0)) == std::vector<std::string>{"sit"});
+}
+
 }  // TEST_SUITE

@@ -179,7 +179,7 @@ TEST_CASE("explicit plans: verbs, patterns, modifiers; exact errors") {
   }
   CHECK_THROWS_WITH_AS(parse_explicit_plan("flap:wing quickly-ish"),
                        "motion plan 'flap:wing quickly-ish': unknown modifier 'quickly-ish' (modifiers: slow, fast, "
-                       "gently, wildly, once, repeatedly, left, right, up, down, both)",
+                       "gently, wildly, once, repeatedly, left, right, up, down, both, together)",
                        Error);
   CHECK_THROWS_WITH_AS(parse_explicit_plan("flap, ,bob"), "motion plan 'flap, ,bob': an empty item", Error);
   CHECK_THROWS_WITH_AS(parse_explicit_plan("flap:"), "motion plan 'flap:': an empty part pattern", Error);

@@ -24,7 +24,7 @@ using wordnet::Synset;
 constexpr int kNameSenses = 3;
 constexpr int kStemSenses = 1;
 constexpr std::array<int, 8> kVerbFiles = {29, 30, 32, 34, 35, 38, 39, 43};
-constexpr int kMotionFile = 38;
+constexpr int kMotionFile = 38, kBodyFile = 29;
 // In verb.change only changes of size and shape are motions the vocabulary draws (grow, bend,
 // stretch); the rest are becomings ("grow" 1 is "pass into a condition": "he grew angry").
 constexpr int kChangeFile = 30;
@@ -46,13 +46,35 @@ constexpr int kAnimalFile = 5, kFoodFile = 13, kPersonFile = 18;
 template <size_t N>
 bool in(const std::array<int, N>& a, int v) { return std::find(a.begin(), a.end(), v) != a.end(); }
 
+// WordNet's sentence frames with no object (man 5 wndb): "Something ----s", "Somebody ----s",
+// "It is ----ing", "Something is ----ing PP", "... Adjective", "----s to somebody", "----s on
+// something", "Somebody ----s PP", "Somebody's (body part) ----s". A synset with frames and none
+// of these only says what its subject does to something else ("move, displace": cause to move;
+// "put", "carry", "push" are kinds of it): the one doing it need not move at all.
+constexpr std::array<int, 11> kNoObjectFrames = {1, 2, 3, 4, 6, 7, 12, 13, 22, 23, 27};
+
+bool moves_something_else(const Synset& s) {
+  return !s.frames.empty() && std::none_of(s.frames.begin(), s.frames.end(), [](int f) { return in(kNoObjectFrames, f); });
+}
+
+// A verb whose first action moves the whole figure (a slide, a sway, a spin of its body) says
+// how the figure itself moves: it claims no sense that moves something else.
+bool moves_whole_figure(const Verb& v) {
+  return !v.actions.empty() && (v.actions[0].target == Target::Whole || v.actions[0].target == Target::Root);
+}
+
 bool has_pointer(const Synset& s, const char* symbol) {
   return std::any_of(s.pointers.begin(), s.pointers.end(), [&](const wordnet::Pointer& p) { return p.symbol == symbol; });
 }
 
-// Lemmas a stem of the table stands for: "wav" -> wave, "flie" -> fly, "run" -> run.
-std::vector<std::string> stem_lemmas(const std::string& stem) {
+// Lemmas a stem of the table stands for: "wav" -> wave, "flie" -> fly, "run" -> run. When the
+// stem and the stem with an "e" are both verbs, the one used more often in WordNet's tagged
+// texts, the stem itself on a tie: twinkle's "shin" is shine (to shin up a pole is to climb),
+// eat's "sing" is sing (not singe).
+std::vector<std::string> stem_lemmas(const wordnet::Database& db, const std::string& stem) {
   std::vector<std::string> out = {stem, stem + "e"};
+  if (!db.senses(stem, Pos::Verb).empty() && !db.senses(stem + "e", Pos::Verb).empty())
+    out = {db.tagged_senses(stem + "e", Pos::Verb) > db.tagged_senses(stem, Pos::Verb) ? stem + "e" : stem};
   if (stem.size() > 2 && stem.compare(stem.size() - 2, 2, "ie") == 0) out.push_back(stem.substr(0, stem.size() - 2) + "y");
   return out;
 }
@@ -108,14 +130,24 @@ void Lexicon::claim_verbs() {
     for (const std::string& stem : stems) {
       // An irregular form ("fell", "sat", "rose") is another verb's inflection, not a lemma.
       if (const auto bases = db_->base_forms(stem, Pos::Verb); !bases.empty() && bases.front() != stem) continue;
-      for (const std::string& lemma : stem_lemmas(stem)) {
+      for (const std::string& lemma : stem_lemmas(*db_, stem)) {
         const std::vector<uint32_t> senses = db_->senses(lemma, Pos::Verb);
-        const size_t n = std::min<size_t>(senses.size(), lemma == v.name ? kNameSenses : kStemSenses);
+        // The first senses said of the figure itself: a sense that only moves something else
+        // is passed over without counting ("exercise" is first to exert, to practise, to give a
+        // workout to someone; its fourth sense, to work out, is the figure's own).
+        size_t n = std::min<size_t>(senses.size(), lemma == v.name ? kNameSenses : kStemSenses);
         for (size_t r = 0; r < n; ++r) {
           const std::optional<Synset> s = db_->synset(Pos::Verb, senses[r]);
+          if (s && moves_whole_figure(v) && moves_something_else(*s)) {
+            n = std::min(n + 1, senses.size());
+            continue;
+          }
           if (!s || !in(kVerbFiles, s->lex_file)) continue;
-          // A root outside verb.motion ("act, move": perform an action) is above every kind of doing.
-          if (s->lex_file != kMotionFile && !has_pointer(*s, "@")) continue;
+          // A root outside verb.motion ("act, move": perform an action) is above every kind of
+          // doing; one of verb.body that the verb's own name names first is that motion of the
+          // body ("exercise, work out").
+          const bool own_body_root = s->lex_file == kBodyFile && !s->words.empty() && s->words.front() == v.name;
+          if (s->lex_file != kMotionFile && !own_body_root && !has_pointer(*s, "@")) continue;
           if (s->lex_file == kChangeFile && !is_drawn_change(s->offset)) continue;
           auto& claims = verb_claims_[s->offset];
           if (std::none_of(claims.begin(), claims.end(), [&](const VerbClaim& c) { return c.verb == &v; }))
@@ -144,6 +176,14 @@ void Lexicon::place_anchors() {
     if (a.sense >= 1 && static_cast<size_t>(a.sense) <= senses.size())
       noun_anchors_.emplace(senses[a.sense - 1], NounPlace{a.figure, a.motion});
   }
+}
+
+bool Lexicon::noun_is_animal_word(std::string_view word) const {
+  if (!db_) return false;
+  for (const std::string& lemma : db_->base_forms(word, Pos::Noun))
+    for (uint32_t sense : db_->senses(lemma, Pos::Noun))
+      if (const auto s = db_->synset(Pos::Noun, sense); s && s->lex_file == kAnimalFile) return true;
+  return false;
 }
 
 bool Lexicon::knows_verb(std::string_view word) const { return db_ && !db_->base_forms(word, Pos::Verb).empty(); }

@@ -52,6 +52,9 @@ class Lexicon {
   // A phrasal verb ("takes" "off", "fans" "out") when WordNet lists it; else not placed.
   VerbReading phrasal_verb(std::string_view word, std::string_view particle) const;
   NounReading noun(std::string_view word) const;
+  // Whether WordNet files a sense of the noun `word` with the animals (noun.animal holds their
+  // body parts: "foreleg", "forepaw", "forewing"; "forearm" and "forehead" are noun.body).
+  bool noun_is_animal_word(std::string_view word) const;
   bool knows_verb(std::string_view word) const;
   bool knows_noun(std::string_view word) const;
   // How many of the word's senses as `pos` are ranked by tagged frequency (its first base form):

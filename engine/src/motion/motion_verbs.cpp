@@ -30,6 +30,10 @@ const std::vector<Verb> kVerbs = {
   {"lift",    {"lift", "rais", "hold"},         {{P::Swing, T::Arms, 24, 2, Pr::Mirrored}}, P::Swing},
   {"reach",   {"reach", "spread"},              {{P::Swing, T::Arms, 20, 1, Pr::Mirrored}}, P::Swing},
   {"pump",    {"pump"},                         {{P::Swing, T::Arms, 20, 2, Pr::Alternating}}, P::Swing},
+  // Rubbing is a part going back and forth against something (its pair, the body, a surface):
+  // quick small swings of the part the prompt names, the hands when it names none. WordNet
+  // places its kinds here (scour, massage, chafe, scratch).
+  {"rub",     {"rub", "scrub"},                 {{P::Swing, T::Arms, 16, 4, Pr::Mirrored}}, P::Swing},
   // Legs and gaits.
   {"walk",    {"walk", "march", "stroll", "step", "strid"}, {{P::Swing, T::Legs, 18, 2, Pr::Alternating}, {P::Swing, T::Arms, 12, 2, Pr::Alternating}, {P::Bob, T::Whole, 0.015, 4}}, P::Swing},
   {"run",     {"run", "ran", "sprint", "jog", "rush", "dash"}, {{P::Swing, T::Legs, 28, 3, Pr::Alternating}, {P::Swing, T::Arms, 20, 3, Pr::Alternating}, {P::Bob, T::Whole, 0.025, 6}}, P::Swing},
@@ -151,6 +155,9 @@ bool apply_modifier(std::string_view w, Modifiers& m) {
   else if (w == "right") m.side = m.side == -1 || m.both ? 0 : 1;
   else if (w == "left") m.side = m.side == 1 || m.both ? 0 : -1;
   else if (in(w, {"both", "two", "all"})) { m.both = true; m.side = 0; }
+  // A pair that meets ("rubs its legs together", "claps its hands together") moves as mirror
+  // images, towards each other and back, never in turns.
+  else if (w == "together") { m.together = m.both = true; m.side = 0; }
   else if (in(w, {"up", "upward", "upwards"})) m.vertical = m.vertical == -1 ? 0 : (m.vertical == 2 ? 0 : 1);
   else if (in(w, {"down", "downward", "downwards"})) m.vertical = m.vertical == 1 ? 0 : -1;
   else if (in(w, {"rightward", "rightwards"})) m.travel = m.travel == -1 ? 0 : 1;

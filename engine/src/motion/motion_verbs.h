@@ -85,6 +85,12 @@ struct Modifiers {
   // a "left" or "right" is), "rightwards".
   int travel = 0;    // +1 to the viewer's right, -1 to the left, 0 neither or both
   int depth = 0;     // +1 towards the viewer ("towards the camera"), -1 away ("into the distance")
+  // Which of the named limbs, by where they are on the figure (prompt_parse reads these words
+  // only right before a part noun: "its hind legs", "the front paws", "his lower arm"):
+  int end = 0;       // +1 the front ones on the figure's facing axis ("front", "fore"), -1 the
+                     // rear ones ("hind", "rear", "back"), 0 either
+  int level = 0;     // +1 the upper ones, -1 the lower ones, 0 either
+  bool together = false;  // a pair moves towards each other and back ("rubs its legs together")
   std::vector<std::string> words;  // the modifier words seen, for the report
 };
 

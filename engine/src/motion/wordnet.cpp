@@ -187,6 +187,14 @@ std::optional<Synset> Database::synset(Pos pos, uint32_t offset) const {
   for (size_t k = 0; k < p_cnt && i + 3 < f.size(); ++k, i += 4)
     s.pointers.push_back({std::string(f[i]), pos_of_char(f[i + 2].empty() ? 'n' : f[i + 2][0]),
                           static_cast<uint32_t>(number(f[i + 1], 10))});
+  // A verb's frames: f_cnt [+ f_num w_num]...
+  if (pos == Pos::Verb && i < f.size()) {
+    const size_t f_cnt = number(f[i], 10);
+    ++i;
+    for (size_t k = 0; k < f_cnt && i + 2 < f.size() && f[i] == "+"; ++k, i += 3)
+      if (const int frame = static_cast<int>(number(f[i + 1], 10)); std::find(s.frames.begin(), s.frames.end(), frame) == s.frames.end())
+        s.frames.push_back(frame);
+  }
   if (const size_t bar = line.find('|'); bar != std::string_view::npos) {
     std::string_view g = line.substr(bar + 1);
     while (!g.empty() && g.front() == ' ') g.remove_prefix(1);

@@ -38,6 +38,9 @@ struct Synset {
   int lex_file = 0;                 // lexicographer file: 5 noun.animal, 38 verb.motion ... (man 5 lexnames)
   std::vector<std::string> words;   // lower case, '_' between the words of a collocation
   std::vector<Pointer> pointers;
+  // A verb's sentence frames (man 5 wndb; 1 "Something ----s", 2 "Somebody ----s", 8
+  // "Somebody ----s something" ...), each once; empty for other parts of speech.
+  std::vector<int> frames;
   std::string gloss;
 };
 

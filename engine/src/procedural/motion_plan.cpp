@@ -10,6 +10,7 @@
 #include <set>
 
 #include "svgmotion/error.h"
+#include "procedural/limb_qualifiers.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/support_band.h"
 #include "procedural/part_locator.h"
@@ -281,6 +282,8 @@ struct Builder {
       note = "the " + (target_word.empty() ? std::string("head") : target_word) + " found as " + part_shape_name(located->shape) + ": " + located->why;
     } else if (target == Target::Named) a.parts = named_parts;
     else if (target != Target::Whole && target != Target::Repeated) a.parts = parts_for(rig, target, target_word, &note);
+    // "its hind legs": which of them, by where they are on the figure.
+    std::string which = is_limb_target(target) && note.empty() ? keep_qualified(rig, mods, a.parts) : "";
     if (rock_on_part && !a.parts.empty()) {
       // The same degrees about a part's pivot move its tips as far as the part is long, not
       // as the figure is tall: a sway of the leaves turns them by as much more as the figure is
@@ -315,7 +318,7 @@ struct Builder {
         return;
       }
     if (limb_role && !note.empty() && rig.root >= 0 && a.primitive == Primitive::Swing)
-      bend_region(a, target, base, mods, plural, note);
+      bend_region(a, target, base, mods, plural, note, which);
     if (target == Target::Repeated && rig.repeated.empty()) {
       plan.warnings.push_back("'" + words + "': no repeated elements (drops, stars) found; " + verb.name + " is left out");
       return;
@@ -340,17 +343,18 @@ struct Builder {
     // Skip a repeat: the same primitive on the same parts.
     for (const auto& b : plan.actions)
       if (b.primitive == a.primitive && b.target == a.target && b.parts == a.parts && b.region == a.region) return;
-    explain(a, verb, target, words, mods, {note, paddle, beat, instead, spacing});
+    explain(a, verb, target, words, mods, {note, which, paddle, beat, instead, spacing});
     plan.actions.push_back(std::move(a));
   }
 
   // No separate part for a limb role: a region of a part bends instead (the outline's arms, the
   // silhouette's limbs, or the region of the part that stands in for them), and `note` says so.
-  void bend_region(PlannedAction& a, Target target, const Action& base, const Modifiers& mods, bool plural, std::string& note) {
+  void bend_region(PlannedAction& a, Target target, const Action& base, const Modifiers& mods, bool plural, std::string& note,
+                   std::string& which) {
     a.parts = {region_host(rig, target)};
     a.region = target == Target::Arms || target == Target::Limbs ? Region::Sides
                : target == Target::Legs ? Region::Lower : target == Target::Head ? Region::Top : Region::End;
-    a.alternating = base.pairing == Pairing::Alternating || (base.pairing == Pairing::OneAtATime && (mods.both || plural));
+    a.alternating = !mods.together && (base.pairing == Pairing::Alternating || (base.pairing == Pairing::OneAtATime && (mods.both || plural)));
     if (a.region == Region::Sides) side_core(rig, a);
     // (A head or a tail is one: no side to pick.)
     if ((base.pairing == Pairing::OneSide || base.pairing == Pairing::OneAtATime) && !mods.both && !plural &&
@@ -392,6 +396,7 @@ struct Builder {
       // No limb labelled a tail: the limbs opposite the head (part_locator.h), not the far end
       // of the box, which reached a mermaid's raised hand.
       if (picked.empty() && target == Target::Tail) picked = tail_limbs(rig);
+      which = keep_qualified(rig, mods, picked);
       // A winged figure seen from the side (the prompt's bird or insect) shows its far wing
       // rising behind the near one, where the skeleton's labels see an upright body's head:
       // with one arm found, the limbs pointing up are its wings, and they beat together. A
@@ -431,7 +436,7 @@ struct Builder {
 
   // Which of the action's parts move, and how the pair of them moves (`note` says why a side).
   void pick_sides(PlannedAction& a, const Action& base, const Modifiers& mods, bool plural, std::string& note) {
-    Pairing pairing = base.pairing;
+    Pairing pairing = mods.together ? Pairing::Mirrored : base.pairing;
     if (pairing == Pairing::OneSide && (mods.both || plural)) pairing = Pairing::Mirrored;
     if (pairing == Pairing::OneAtATime) pairing = mods.both || plural ? Pairing::Alternating : Pairing::OneSide;
     if (pairing == Pairing::OneSide && a.parts.size() > 1 && a.region == Region::None) {
@@ -520,6 +525,12 @@ std::string ground_words(const ParsedPrompt& prompt, const Rig& rig) {
   return "";
 }
 
+// A noun naming a kind of figure ("the grasshopper": an insect) was understood: it chose the
+// figure's class, though no part is named so.
+bool names_figure_kind(const PromptNoun& n) {
+  return n.figure != FigureClass::None && n.figure != FigureClass::Object && n.figure != FigureClass::Scene;
+}
+
 MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t seed) {
   Builder b{rig, std::mt19937(seed), {}};
   for (const Clause& c : prompt.clauses)
@@ -564,10 +575,9 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
         hits = parts_for(rig, Target::Named, n.word, &ignore);
         if (hits.empty()) {
           // The ground's noun was understood: it is where the figure moves. So was the figure's
-          // own noun, the subject the lexicon knows a kind of ("the tiger": a quadruped): it
-          // names who moves, not a part (the report listed "tiger" as not understood).
-          const bool figure = n.figure == c.figure && n.figure != FigureClass::None && n.figure != FigureClass::Scene &&
-                              !n.after_verb && !n.object_of_preposition;
+          // own noun, the subject naming a kind of figure ("the tiger": a quadruped): it names
+          // who moves, not a part (the report listed "tiger" as not understood).
+          const bool figure = names_figure_kind(n) && n.figure == c.figure && !n.after_verb && !n.object_of_preposition;
           if (unknown_words && !figure && b.plan.ground.substr(b.plan.ground.rfind(' ') + 1) != n.word) unknown_words->push_back(n.word);
           continue;
         }

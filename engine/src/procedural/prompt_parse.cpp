@@ -76,6 +76,67 @@ bool read_travel(const std::string& w, const std::string& prev, const std::strin
   return true;
 }
 
+// A word right before a part noun that says WHICH of the figure's limbs of that kind move: by
+// where they are along its facing ("its hind legs", "the front paws", "the back legs") or up
+// and down ("his lower arm"). Not a noun of its own: WordNet's "hind" is a deer and a fish, its
+// "back" the body's. "left" and "right" before a part are the figure's side (apply_modifier).
+bool read_qualifier(const std::string& w, Modifiers& m) {
+  int end = 0, level = 0;
+  if (w == "front" || w == "fore" || w == "forward") end = 1;
+  else if (w == "hind" || w == "rear" || w == "back" || w == "hinder") end = -1;
+  else if (w == "upper" || w == "top") level = 1;
+  else if (w == "lower" || w == "bottom") level = -1;
+  else return false;
+  if (end) m.end = m.end == -end ? 0 : end;
+  if (level) m.level = m.level == -level ? 0 : level;
+  m.words.push_back(w);
+  return true;
+}
+
+// A part noun written with its qualifier as one word ("forelegs", "hindwings", "forepaws"):
+// the part noun after "fore" or "hind" when WordNet does not know the word or files it with the
+// animals, whose limbs come in front and hind pairs. A forearm (part of a person's arm) and a
+// forehead are noun.body words: they stay words of their own.
+const PartNoun* noun_for_word(const std::string& w);
+bool split_qualified_part(const Lexicon& lexicon, const std::string& w, std::string& qualifier, std::string& part) {
+  for (const char* q : {"fore", "hind"}) {
+    const size_t n = std::char_traits<char>::length(q);
+    if (w.size() <= n + 2 || w.compare(0, n, q) != 0) continue;
+    const std::string rest = w.substr(n);
+    const PartNoun* p = noun_for_word(rest);
+    if (!p || (lexicon.knows_noun(w) && !lexicon.noun_is_animal_word(w))) continue;
+    qualifier = q;
+    part = rest;
+    return true;
+  }
+  return false;
+}
+
+// The part noun of `w` when it is written with its qualifier ("forelegs": "legs", the qualifier
+// read into `m`); else `w` itself.
+std::string read_qualified_part(const Lexicon& lexicon, const std::string& w, Modifiers& m, ParsedPrompt& out) {
+  std::string qualifier, part_word = w;
+  if (lexicon.has_wordnet() && !noun_for_word(w) && split_qualified_part(lexicon, w, qualifier, part_word)) {
+    read_qualifier(qualifier, m);
+    out.readings.push_back("'" + w + "' read as " + qualifier + " " + part_word);
+  }
+  return part_word;
+}
+
+// A verb and the word after it that WordNet lists as one verb with no motion above it is not
+// the verb's motion: "falls asleep" is no fall (the pair is named as not understood). Not before
+// a direction ("bobs up and down") or a preposition ("leans against the wall"), which say where
+// the verb's motion goes.
+bool joined_without_motion(const Lexicon& lexicon, const std::string& w, const std::string& next, ParsedPrompt& out) {
+  Modifiers direction;
+  if (!lexicon.has_wordnet() || next.empty() || apply_modifier(next, direction) || is_filler_word(next) || is_preposition(next) ||
+      !lexicon.knows_verb(w + "_" + next) || lexicon.phrasal_verb(w, next).verb)
+    return false;
+  out.readings.push_back("'" + w + " " + next + "' read as one verb, no motion");
+  out.unplaced.push_back(w + " " + next);
+  return true;
+}
+
 // "towards the viewer", "into the distance": the figure comes nearer or goes away.
 int depth_of(const std::vector<std::string>& words, size_t at) {
   const std::string& w = words[at];
@@ -152,6 +213,20 @@ bool read_thing_compound(const std::string& w, bool plural, Clause& c, std::vect
   return true;
 }
 
+// A part noun the vocabulary knows, `w` as written: a noun of the clause, or the head of a
+// compound naming a thing the verb acts on ("the rock face"; not after a possessive: "his robot
+// arm"). Closes a prepositional phrase it ends.
+void read_part_noun(const std::string& w, const PartNoun& n, bool after_noun_word, bool after_possessive, bool& after_prep,
+                    const std::string& preposition, Clause& c, std::vector<bool>& modifier_noun, ParsedPrompt& out) {
+  const bool plural = (w.size() > n.stem.size() && w.back() == 's') || w == "feet" || w == "leaves";
+  if (after_noun_word && !after_possessive && read_thing_compound(w, plural, c, modifier_noun, out)) return;
+  c.nouns.push_back({w, n.target, plural, after_prep, !c.verbs.empty()});
+  if (after_prep) c.nouns.back().preposition = preposition;
+  if (after_noun_word && !modifier_noun.empty()) modifier_noun.back() = true;
+  modifier_noun.push_back(false);
+  after_prep = false;
+}
+
 // Words of one clause (lower case, letters only). `after_prep` says the clause continues a
 // prepositional phrase ("with black dots and black boots": "and" split it, and "boots" is
 // still what she is dressed with); on return, whether the clause ends inside one. Words the
@@ -192,19 +267,12 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
       continue;
     }
     if (after_verb && read_pronoun(w, antecedent, c, modifier_noun, out)) continue;
+    if (noun_for_word(next) && read_qualifier(w, c.mods)) continue;
+    const std::string part_word = read_qualified_part(lexicon, w, c.mods, out);
     // A known part noun is a noun even where its word could be a verb ("drops", "hands").
-    if (const PartNoun* n = noun_for_word(w)) {
-      const bool plural = (w.size() > n->stem.size() && w.back() == 's') || w == "feet" || w == "leaves";
-      if (after_noun_word && !is_possessive(before2) && read_thing_compound(w, plural, c, modifier_noun, out)) {
-        prev_was_noun = true;
-        continue;
-      }
-      c.nouns.push_back({w, n->target, plural, after_prep, !c.verbs.empty()});
-      if (after_prep) c.nouns.back().preposition = preposition;
-      if (after_noun_word && !modifier_noun.empty()) modifier_noun.back() = true;
-      modifier_noun.push_back(false);
+    if (const PartNoun* n = noun_for_word(part_word)) {
+      read_part_noun(part_word, *n, after_noun_word, is_possessive(before2), after_prep, preposition, c, modifier_noun, out);
       prev_was_noun = true;
-      after_prep = false;
       continue;
     }
     // A verb's agent noun opening the clause or after an article ("a surfer rides", "the
@@ -234,6 +302,7 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
     const bool subject = bare && ((next_verb && next_verb != verb_for_word(w)) || ((prev_was_start || after_determiner) && next_verb_only));
     const bool noun_place = ((after_determiner || after_preposition) && !participle) || object;
     const Verb* v = noun_place || subject ? nullptr : verb_for_word(w);
+    if (v && joined_without_motion(lexicon, w, next, out)) continue;
     if (v) {
       if (std::find(c.verbs.begin(), c.verbs.end(), v) == c.verbs.end()) {
         c.verbs.push_back(v);
@@ -335,6 +404,8 @@ void merge_into(Clause& into, Clause from) {
     if (!apply_modifier(w, into.mods)) into.mods.words.push_back(w);
   if (from.mods.travel) into.mods.travel = into.mods.travel == -from.mods.travel ? 0 : from.mods.travel;
   if (from.mods.depth) into.mods.depth = from.mods.depth;
+  if (from.mods.end) into.mods.end = from.mods.end;
+  if (from.mods.level) into.mods.level = from.mods.level;
 }
 
 }  // namespace
@@ -448,7 +519,7 @@ std::vector<ExplicitStep> parse_explicit_plan(const std::string& text) {
     for (size_t i = 1; i < tokens.size(); ++i)
       if (!apply_modifier(lower(tokens[i]), step.mods))
         throw Error("motion plan '" + s + "': unknown modifier '" + tokens[i] +
-                    "' (modifiers: slow, fast, gently, wildly, once, repeatedly, left, right, up, down, both)");
+                    "' (modifiers: slow, fast, gently, wildly, once, repeatedly, left, right, up, down, both, together)");
     steps.push_back(std::move(step));
   };
   for (char ch : text) {

@@ -1,0 +1,100 @@
+// The limbs a prompt's qualifier picks (see limb_qualifiers.h).
+#include "procedural/limb_qualifiers.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace svgm {
+
+namespace {
+
+// A head part off the figure's middle by less than this share of its width shows no facing.
+constexpr double kHeadOffCentre = 0.1;
+
+// The viewer's side of the figure's middle `x` is on: -1, +1, or 0 on the middle itself.
+int side_of(const Rig& rig, double x) {
+  const double dx = x - rig.figure.centre().x;
+  return dx < 0 ? -1 : dx > 0 ? 1 : 0;
+}
+
+template <class Keep>
+std::string keep_if(const Rig& rig, const Modifiers& mods, size_t n, Keep&& keep) {
+  if ((mods.end == 0 && mods.level == 0) || n == 0) return "";
+  std::string said = mods.end > 0 ? "front" : mods.end < 0 ? "rear" : "";
+  if (mods.level) said += std::string(said.empty() ? "" : ", ") + (mods.level > 0 ? "upper" : "lower");
+  std::string why;
+  const int facing = mods.end != 0 ? facing_side(rig, &why) : 0;
+  if (mods.end != 0 && facing == 0) return "'" + said + "': the figure's facing is not known; every one of them moves";
+  // Along the facing axis: positive ahead of the figure's middle.
+  auto picked = [&](Vec2 at) {
+    if (mods.end != 0 && side_of(rig, at.x) * facing != mods.end) return false;
+    if (mods.level != 0 && (at.y < rig.figure.centre().y ? 1 : -1) != mods.level) return false;
+    return true;
+  };
+  const size_t kept = keep(picked);
+  if (kept == 0) return "'" + said + "': none of them there; every one of them moves";
+  return "'" + said + "': " + std::to_string(kept) + " of " + std::to_string(n) + (mods.end != 0 ? ", the figure faces " + std::string(facing < 0 ? "left" : "right") + " (" + why + ")" : "");
+}
+
+}  // namespace
+
+int facing_side(const Rig& rig, std::string* why) {
+  if (rig.figure.empty()) return 0;
+  // The rig's head parts, by area.
+  double sum = 0, weight = 0;
+  for (const RigPart& P : rig.parts)
+    if (P.role == Role::Head && !P.box.empty()) {
+      const double w = std::max(P.box.area(), 1e-12);
+      sum += w * P.box.centre().x;
+      weight += w;
+    }
+  if (weight > 0 && std::fabs(sum / weight - rig.figure.centre().x) >= kHeadOffCentre * rig.figure.w()) {
+    if (why) *why = "its head";
+    return side_of(rig, sum / weight);
+  }
+  // The skeleton's head limbs that lead the legs: based beyond every leg's base.
+  double lo = 1e300, hi = -1e300;
+  int left = 0, right = 0;
+  for (const ArmLobe& l : rig.limbs)
+    if (l.kind == LobeKind::Leg) {
+      lo = std::min(lo, l.pivot.x), hi = std::max(hi, l.pivot.x);
+      (side_of(rig, l.pivot.x) < 0 ? left : right) += 1;
+    }
+  for (const RigPart& P : rig.parts)
+    if (P.role == Role::LowerLimb && !P.box.empty()) (side_of(rig, P.box.centre().x) < 0 ? left : right) += 1;
+  int ahead = 0;
+  for (const ArmLobe& l : rig.limbs)
+    if (l.kind == LobeKind::Head && lo <= hi && (l.pivot.x < lo || l.pivot.x > hi)) ahead += side_of(rig, l.tip.x);
+  if (ahead != 0) {
+    if (why) *why = "its head ahead of the legs";
+    return ahead < 0 ? -1 : 1;
+  }
+  // Legs gather under the front of a body.
+  if (left != right && left + right >= 3) {
+    if (why) *why = "its legs gather at that end";
+    return left > right ? -1 : 1;
+  }
+  return 0;
+}
+
+std::string keep_qualified(const Rig& rig, const Modifiers& mods, std::vector<int>& parts) {
+  return keep_if(rig, mods, parts.size(), [&](auto picked) {
+    std::vector<int> out;
+    for (int p : parts)
+      if (picked(rig.parts[p].box.centre())) out.push_back(p);
+    if (!out.empty()) parts = out;
+    return out.size();
+  });
+}
+
+std::string keep_qualified(const Rig& rig, const Modifiers& mods, std::vector<ArmLobe>& limbs) {
+  return keep_if(rig, mods, limbs.size(), [&](auto picked) {
+    std::vector<ArmLobe> out;
+    for (const ArmLobe& l : limbs)
+      if (picked(l.pivot)) out.push_back(l);
+    if (!out.empty()) limbs = out;
+    return out.size();
+  });
+}
+
+}  // namespace svgm

@@ -1,0 +1,30 @@
+// Which of the figure's limbs a qualifier of the prompt picks (prompt_parse.h reads them right
+// before a part noun): "its hind legs" are the legs at the end of the figure's facing axis away
+// from its head, "the front paws" those at the head's end, "his upper arm" the higher of a pair.
+// The facing comes from the figure, not from the words: the rig's head parts, else the
+// silhouette skeleton's head limbs ahead of every leg (a head leads the legs; a lobe among them
+// is a raised limb or a knee), else where the legs gather (legs hang under the front of a body,
+// its chest or thorax: with no head to show which end leads, the end with fewer legs is the
+// rear). A qualifier that picks nothing on the drawing is ignored, with a note saying so.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "motion/motion_verbs.h"
+#include "procedural/outline_lobes.h"
+#include "procedural/part_rig.h"
+
+namespace svgm {
+
+// The viewer's side the figure faces: -1 left, +1 right, 0 unknown; `why` says how it was found.
+int facing_side(const Rig& rig, std::string* why);
+
+// Keeps the parts (the rig's, by index) or the limbs of the silhouette that `mods.end` and
+// `mods.level` pick; unchanged when neither is set or when none would be left. Returns a note for
+// the plan's report ("hind: the rear limbs, the figure faces left (its head)"), empty when
+// nothing was asked.
+std::string keep_qualified(const Rig& rig, const Modifiers& mods, std::vector<int>& parts);
+std::string keep_qualified(const Rig& rig, const Modifiers& mods, std::vector<ArmLobe>& limbs);
+
+}  // namespace svgm
