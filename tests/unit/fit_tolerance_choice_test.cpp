@@ -66,4 +66,30 @@ TEST_CASE("compact tolerance: the largest ladder step that keeps the floor again
   // The candidates were temporary files beside the animation, all removed.
   CHECK(fs::is_empty(dir.path));
 }
+
+TEST_CASE("compact tolerance: the residual shapes' tolerance loosened at the chosen one while the floor holds") {
+  TempDir dir;
+  const fs::path anim = dir.path / "animation.svg";
+  // As above, 2 is chosen; a residual scale s misses by 2 s px at 1024 there (s tolerance / 8
+  // units): 2 holds (8 px, 46.6 dB), 3 does not (12 px, 44.8 dB).
+  const ToleranceChoice c = choose_compact_tolerance(
+      anim, [](const fs::path& f) { write_square(f, 0); },
+      [](const fs::path& f, double tolerance_1024) { write_square(f, tolerance_1024 / 4); },
+      [](const fs::path& f, double tolerance_1024, double scale) { write_square(f, scale * tolerance_1024 / 8); });
+  CHECK(c.tolerance_1024 == 2);
+  CHECK(c.residual_scale == 2);
+  CHECK(c.worst_db >= kCompactTargetDb + kCompactMarginDb);
+  // Four for the tolerance, then scales 2 (held) and 3 (below the floor, the last tried).
+  REQUIRE(c.trials.size() == 6);
+  CHECK(c.trials[4].residual_scale == 2);
+  CHECK(c.trials[5].residual_scale == 3);
+  CHECK(c.trials[5].worst_db < kCompactTargetDb + kCompactMarginDb);
+  // Without the residual writer only the tolerance is searched.
+  const ToleranceChoice plain = choose_compact_tolerance(
+      anim, [](const fs::path& f) { write_square(f, 0); },
+      [](const fs::path& f, double tolerance_1024) { write_square(f, tolerance_1024 / 4); });
+  CHECK(plain.residual_scale == 1);
+  CHECK(plain.trials.size() == 4);
+  CHECK(fs::is_empty(dir.path));
+}
 }  // TEST_SUITE

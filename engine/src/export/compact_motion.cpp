@@ -46,7 +46,7 @@ Affine fit_affine(const std::vector<double>& from, const double* to) {
 }  // namespace
 
 PartMotion analyse_part_motion(const std::vector<double>& rest, const std::vector<const double*>& values,
-                               double tolerance) {
+                               double tolerance, double residual_tolerance) {
   PartMotion out;
   const size_t n = rest.size() / 2;
   double moved = 0;
@@ -63,7 +63,7 @@ PartMotion analyse_part_motion(const std::vector<double>& rest, const std::vecto
       out.affine_miss_px = std::max(out.affine_miss_px, std::hypot(p.x - v[2 * i], p.y - v[2 * i + 1]));
     }
   }
-  out.residual = out.affine_miss_px > tolerance;
+  out.residual = out.affine_miss_px > (residual_tolerance > 0 ? residual_tolerance : tolerance);
   return out;
 }
 

@@ -34,9 +34,20 @@ struct PartMotion {
 
 // `rest` holds the document's control points (canvas, n (x, y) pairs); `values` the pass's
 // written shapes (values.size() pointers to n pairs each). The affine map is the least-squares
-// one (translation only when the points are collinear).
+// one (translation only when the points are collinear). `residual_tolerance` (<= 0: `tolerance`)
+// is the miss of the affine maps below which no residual shape is written (the residual's own
+// tolerance, kResidualScales).
 PartMotion analyse_part_motion(const std::vector<double>& rest, const std::vector<const double*>& values,
-                               double tolerance);
+                               double tolerance, double residual_tolerance = 0);
+
+// How much looser than the transform's the residual shapes' tolerance may be (a multiple of
+// the tolerance; the first is the tolerance itself), tried in order by the measured choice
+// (tolerance_choice.h). The residual (what a part's shape does beyond its affine motion) is the
+// fit's frame-to-frame jitter of a few control points, a fraction of a pixel that moves little
+// of the picture, where the transform moves the whole part: on the bench parrot (0.25 canvas
+// px) its `d` keys halve at twice the tolerance (156 -> 79 over 12 paths) and fall to a third
+// at three times.
+inline const std::vector<double> kResidualScales = {1, 2, 3, 4, 6};
 
 // The wrapper group's transform per value (in its parent's user space: `parent_to_canvas` maps
 // it to the canvas), as a reducible trajectory of 6 numbers per value (tx, ty, rotate and skewX

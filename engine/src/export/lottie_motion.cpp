@@ -10,10 +10,12 @@
 namespace svgm::lottie {
 
 CompactPathMotion compact_path_motion(const std::vector<double>& rest, const std::vector<const double*>& values,
-                                      const std::vector<double>& times, double frames, double tolerance, int decimals) {
+                                      const std::vector<double>& times, double frames, double tolerance, int decimals,
+                                      double residual_scale) {
   CompactPathMotion out;
   const size_t count = rest.size() / 2;
-  PartMotion motion = analyse_part_motion(rest, values, tolerance);
+  const double rtol = tolerance * residual_scale;
+  PartMotion motion = analyse_part_motion(rest, values, tolerance, rtol);
   if (!motion.moves) return out;
   out.moves = true;
   // The pivot (the anchor) rounded within a quarter of the tolerance: any point serves exactly
@@ -35,7 +37,7 @@ CompactPathMotion compact_path_motion(const std::vector<double>& rest, const std
       skew_miss = std::max(skew_miss, std::hypot(a.x - b.x, a.y - b.y));
     }
   }
-  out.residual = motion.residual || skew_miss > tolerance;
+  out.residual = motion.residual || skew_miss > rtol;
 
   // The group's transform: T(centre + t) R(r) S(s) T(-centre), each property keyed at its own
   // channel's keys, static when they agree.
@@ -87,11 +89,11 @@ CompactPathMotion compact_path_motion(const std::vector<double>& rest, const std
     }
   }
   const SampleError error = point_error(out.local, 2 * count, out.px_per_unit);
-  out.shape_keys = reduce_keyframes(times, out.local, 2 * count, tolerance, error);
+  out.shape_keys = reduce_keyframes(times, out.local, 2 * count, rtol, error);
   // Lottie writes tangents relative to their vertex, each rounded: a control point moves by up to
   // twice the measured rounding, half the tolerance at most (as the static shapes' decimals).
   out.shape_decimals = decimals >= 0 ? decimals
-                                     : measured_decimals(out.local, 2 * count, out.shape_keys.keys, error, tolerance / 4, 0,
+                                     : measured_decimals(out.local, 2 * count, out.shape_keys.keys, error, rtol / 4, 0,
                                                          2 * count, kMaxDecimals);
   return out;
 }

@@ -33,7 +33,9 @@ struct CompactPathMotion {
 // `rest`: the document's control points (canvas, n pairs); `values`: the written values' (n
 // pairs each) at pass times `times`, frame `times[i] * frames` on the timeline. `decimals` >= 0
 // fixes the decimals of coordinates, -1 measures them (a quarter of the tolerance, as the SVG's).
+// The residual shape is written and reduced within `tolerance * residual_scale` (kResidualScales).
 CompactPathMotion compact_path_motion(const std::vector<double>& rest, const std::vector<const double*>& values,
-                                      const std::vector<double>& times, double frames, double tolerance, int decimals);
+                                      const std::vector<double>& times, double frames, double tolerance, int decimals,
+                                      double residual_scale = 1);
 
 }  // namespace svgm::lottie

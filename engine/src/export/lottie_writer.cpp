@@ -193,7 +193,7 @@ bool ShapeLayers::write_layer(std::vector<int>::const_reverse_iterator it, bool 
   if (compact) {
     std::vector<const double*> values;
     for (int k : pass.seq) values.push_back(&points[(static_cast<size_t>(k) * plan.n_cp + first) * 2]);
-    motion = compact_path_motion(rest, values, pass.times, frames, tol, options.decimals);
+    motion = compact_path_motion(rest, values, pass.times, frames, tol, options.decimals, options.residual_scale);
     if (motion.residual) j.set_decimals(motion.shape_decimals);
   }
   const bool shape_animated = compact ? motion.residual : animated;

@@ -53,6 +53,7 @@ struct LottieOptions {
   // fewest keys within the tolerance, with bezier easing. `decimals` < 0: measured.
   bool compact = false;
   double tolerance_px = 0;  // canvas pixels; 0: compact_tolerance(the canvas)
+  double residual_scale = 1;  // the residual shapes' tolerance: tolerance_px times this (kResidualScales)
 };
 
 struct LottieDocument {

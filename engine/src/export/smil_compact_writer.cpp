@@ -13,6 +13,7 @@
 
 #include "export/compact_motion.h"
 #include "export/keyframe_reduce.h"
+#include "export/relative_path_data.h"
 #include "export/smil_writer_internal.h"
 #include "svg/document_order.h"
 #include "svg/transform_list.h"
@@ -59,10 +60,12 @@ void append_key_timing(pugi::xml_node anim, const std::vector<double>& times, co
 // The additive animateTransforms (translate, rotate about `centre`, skewX, scale) of reduced
 // wrapper keys on `node`'s `attribute`; a component identity at every key is left out. With
 // `replace_first` the first one written replaces the attribute's own value (a gradient's
-// gradientTransform, which the keys include) and the others add to it.
+// gradientTransform, which the keys include) and the others add to it. The centre is written
+// at `centre_decimals` (< 0: the translation's).
 void append_keyed_transform(pugi::xml_node node, const std::string& prefix, const WrapperKeys& w, Vec2 centre,
                             const std::vector<double>& times, const std::function<void(pugi::xml_node)>& repeat_attrs,
-                            const char* attribute, bool replace_first) {
+                            const char* attribute, bool replace_first, int centre_decimals = -1) {
+  const int cd = std::max(centre_decimals, w.translate_decimals);
   const std::vector<double>& trajectory = w.trajectory;
   struct Component {
     const char* type;
@@ -90,11 +93,11 @@ void append_keyed_transform(pugi::xml_node node, const std::string& prefix, cons
         if (j) text += ' ';
         append_number(text, v, c.decimals);
       }
-      if (c.channel == kRotate) {  // rotate about the rest shape's centre
+      if (c.channel == kRotate) {  // rotate about the part's pivot
         text += ' ';
-        append_number(text, centre.x, w.translate_decimals);
+        append_number(text, centre.x, cd);
         text += ' ';
-        append_number(text, centre.y, w.translate_decimals);
+        append_number(text, centre.y, cd);
       }
     }
     if (identity) continue;
@@ -107,6 +110,15 @@ void append_keyed_transform(pugi::xml_node node, const std::string& prefix, cons
     append_key_timing(anim, times, tk);
     anim.append_attribute("values") = text.c_str();
   }
+}
+
+// The numbers a wrapper's animateTransforms write: per key its time and values (a rotation's
+// with its centre); a channel with one key is written once or not at all.
+size_t written_numbers(const WrapperKeys& w) {
+  size_t n = 0;
+  for (size_t c = 0; c < kWrapperChannels; ++c)
+    if (w.channel[c].keys.size() > 1) n += w.channel[c].keys.size() * (1 + kChannelSize[c] + (c == kRotate ? 2 : 0));
+  return n;
 }
 
 // One compact export's inputs and running counts, shared by the steps that write a moving part
@@ -171,17 +183,18 @@ struct CompactWriter {
       }
     }
     const SampleError derr = point_error(local, 2 * count, px_per_unit);
-    const ReducedKeys dk_keys = reduce_keyframes(pass.times, local, 2 * count, tol, derr);
+    const double rtol = tol * options.residual_scale;  // the residual's own tolerance (kResidualScales)
+    const ReducedKeys dk_keys = reduce_keyframes(pass.times, local, 2 * count, rtol, derr);
     st.keys += dk_keys.keys.size();
     st.values += values.size();
     const int dd = options.decimals >= 0 ? options.decimals
-                                         : measured_decimals(local, 2 * count, dk_keys.keys, derr, tol / 4, 0, 2 * count, kMaxDecimals);
+                                         : measured_decimals(local, 2 * count, dk_keys.keys, derr, rtol / 4, 0, 2 * count, kMaxDecimals);
     log::debug("compact export: %s: %zu control points, affine miss %.3f px, transform %zu keys, d %zu keys at %d decimals",
                path.id.c_str(), count, motion.affine_miss_px, w.key_count(), dk_keys.keys.size(), dd);
     std::string text;
     for (size_t i = 0; i < dk_keys.keys.size(); ++i) {
       if (i) text += ';';
-      text += path_data(path, &local[dk_keys.keys[i] * 2 * count], Affine{}, dd);
+      text += relative_path_data(path, &local[dk_keys.keys[i] * 2 * count], Affine{}, dd);
     }
     if (tag != "path") {
       // Only <path> has a `d`: the shape becomes one, keeping id, paint and transform.
@@ -254,7 +267,7 @@ std::vector<std::string> write_compact_animation_svg(const fs::path& source, con
     // motion is then all residual, from the first value.
     const bool matches = rest.size() == 2 * count;
     if (!matches) rest.assign(values[0], values[0] + 2 * count);
-    PartMotion motion = analyse_part_motion(rest, values, tol);
+    PartMotion motion = analyse_part_motion(rest, values, tol, tol * options.residual_scale);
     if (!matches) motion.residual = motion.moves = true;
     st.values += values.size();
     if (!motion.moves) {
@@ -275,11 +288,32 @@ std::vector<std::string> write_compact_animation_svg(const fs::path& source, con
     // The residual is computed against what the written (reduced, rounded) transform draws.
     // (Loosening the transform's tolerance when a residual follows moved the fit's jitter into
     // the `d` values: on the man fitted to a bent target, 217 kB -> 286 kB at 2x looser.)
-    const Vec2 centre = rest_centre(rest, parent_to_canvas);
-    const WrapperKeys w =
+    // The rotation is about the part's pivot (its joint: the point its motion moves least) when
+    // that writes fewer numbers than about its rest centre: a swinging part's translate then
+    // stays still where about its own centre it traces an arc (the bench parrot's wing tips: 47
+    // translate keys); a part that drifts and wobbles (the bench kite) turns about its centre,
+    // as a far pivot swings its wobble into large moves. The pivot is rounded to a quarter of
+    // the tolerance (parent units), as it is written in every rotate key.
+    const int centre_decimals =
+        std::clamp(static_cast<int>(std::ceil(std::log10(4 * parent_to_canvas.mean_scale() / tol))), 0, kMaxDecimals);
+    const double grid = std::pow(10.0, centre_decimals);
+    Vec2 centre = rest_centre(rest, parent_to_canvas);
+    WrapperKeys w =
         wrapper_keys(motion.affine, parent_to_canvas, rest, pass.times, tol, options.decimals, centre, WrapperForm::Smil);
+    Vec2 pivot = motion_pivot(motion.affine, rest, parent_to_canvas);
+    pivot = {std::round(pivot.x * grid) / grid, std::round(pivot.y * grid) / grid};
+    WrapperKeys about_pivot =
+        wrapper_keys(motion.affine, parent_to_canvas, rest, pass.times, tol, options.decimals, pivot, WrapperForm::Smil);
+    if (written_numbers(about_pivot) < written_numbers(w)) {
+      w = std::move(about_pivot);
+      centre = pivot;
+    } else {
+      centre = {std::round(centre.x * grid) / grid, std::round(centre.y * grid) / grid};
+      w = wrapper_keys(motion.affine, parent_to_canvas, rest, pass.times, tol, options.decimals, centre, WrapperForm::Smil);
+    }
+    ++(centre.x == pivot.x && centre.y == pivot.y ? st.pivoted : st.centred);
     st.keys += w.key_count();
-    append_keyed_transform(g, prefix, w, centre, pass.times, repeat_attrs, "transform", false);
+    append_keyed_transform(g, prefix, w, centre, pass.times, repeat_attrs, "transform", false, centre_decimals);
     // A user-space gradient lies in the element's user space, which the wrapper now moves; the
     // full export moves it by the colour-weighted similarity (gradient_motion) or not at all.
     // Its gradientTransform is animated to undo the wrapper's map and apply that motion, so the

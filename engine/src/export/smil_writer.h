@@ -98,9 +98,11 @@ std::vector<std::string> write_animation_svg(const std::filesystem::path& source
 struct CompactExport {
   double tolerance_px = 0;  // canvas pixels; 0: compact_tolerance(the canvas)
   int decimals = -1;        // coordinates' decimal places; -1: measured
+  double residual_scale = 1;  // the residual `d`'s tolerance: tolerance_px times this (kResidualScales)
 };
 struct CompactStats {
   int still = 0, transformed = 0, residual = 0;  // paths
+  int pivoted = 0, centred = 0;  // transformed paths turned about their motion's pivot or rest centre
   size_t values = 0, keys = 0;                   // written values per animation, before and after
 };
 std::vector<std::string> write_compact_animation_svg(const std::filesystem::path& source, const Scene& scene,

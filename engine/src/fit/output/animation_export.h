@@ -73,6 +73,7 @@ struct ExportOutcome {
   double fps = 30;            // the target's frame rate (a clip's default)
   double tolerance_1024 = 0;  // compact: the tolerance written with (given or measured)
   double tolerance_db = 0;    // measured: the worst PSNR of the compact SVG against the full one
+  double residual_scale = 1;  // measured: the residual shapes' tolerance, a multiple of it (kResidualScales)
   bool full_fallback = false; // measured, and no tolerance held the target: written in full
   std::filesystem::path svg;  // the animation written (animation.svg or animation.failed.svg)
 };

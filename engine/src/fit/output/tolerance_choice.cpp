@@ -10,6 +10,7 @@
 #include <limits>
 #include <string>
 
+#include "export/compact_motion.h"
 #include "export/smil_clock.h"
 #include "opencl/runtime.h"
 #include "raster/render_image.h"
@@ -88,7 +89,8 @@ class Sampler {
 }  // namespace
 
 ToleranceChoice choose_compact_tolerance(const fs::path& beside, const std::function<void(const fs::path&)>& write_full,
-                                         const std::function<void(const fs::path&, double)>& write_compact) {
+                                         const std::function<void(const fs::path&, double)>& write_compact,
+                                         const std::function<void(const fs::path&, double, double)>& write_residual) {
   const fs::path dir = beside.parent_path().empty() ? fs::path(".") : beside.parent_path();
   Candidate full{temporary_path(dir / "animation.full.svg")};
   write_full(full.path);
@@ -101,11 +103,12 @@ ToleranceChoice choose_compact_tolerance(const fs::path& beside, const std::func
   ToleranceChoice choice;
   const double floor_db = kCompactTargetDb + kCompactMarginDb;
   // The worst PSNR of the compact export at ladder step i, stopped at the first time below floor.
-  auto trial = [&](size_t i) {
+  auto trial = [&](size_t i, double scale = 1) {
     Candidate c{temporary_path(dir / "animation.compact.svg")};
-    write_compact(c.path, kToleranceLadder[i]);
+    if (scale == 1) write_compact(c.path, kToleranceLadder[i]);
+    else write_residual(c.path, kToleranceLadder[i], scale);
     const std::string text = read_text(c.path);
-    ToleranceTrial t{kToleranceLadder[i], std::numeric_limits<double>::infinity()};
+    ToleranceTrial t{kToleranceLadder[i], std::numeric_limits<double>::infinity(), scale};
     for (size_t k = 0; k < sampler.count() && t.worst_db >= floor_db; ++k)
       t.worst_db = std::min(t.worst_db, render_psnr(reference[k], sampler.render(text, c.path.string(), k)));
     choice.trials.push_back(t);
@@ -124,6 +127,14 @@ ToleranceChoice choose_compact_tolerance(const fs::path& beside, const std::func
   }
   choice.tolerance_1024 = kToleranceLadder[static_cast<size_t>(std::max<std::ptrdiff_t>(good, 0))];
   choice.worst_db = good >= 0 ? good_db : first_db;
+  // The residual's tolerance, loosened while the floor holds (the error grows with it too).
+  if (good >= 0 && write_residual)
+    for (size_t s = 1; s < kResidualScales.size(); ++s) {
+      const double db = trial(static_cast<size_t>(good), kResidualScales[s]);
+      if (db < floor_db) break;
+      choice.residual_scale = kResidualScales[s];
+      choice.worst_db = db;
+    }
   return choice;
 }
 

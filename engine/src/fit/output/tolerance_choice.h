@@ -36,21 +36,27 @@ constexpr int kToleranceRenderPx = 1024;
 struct ToleranceTrial {
   double tolerance_1024 = 0;
   double worst_db = 0;  // the lowest PSNR over the sampled times (stops at the first below target)
+  double residual_scale = 1;  // the residual shapes' tolerance, a multiple of tolerance_1024
 };
 struct ToleranceChoice {
   double tolerance_1024 = 0;
-  double worst_db = 0;  // of the chosen tolerance (infinity: identical renders)
+  double worst_db = 0;  // of the chosen tolerance and residual scale (infinity: identical renders)
+  double residual_scale = 1;  // kResidualScales (compact_motion.h); 1 when not searched
   std::vector<ToleranceTrial> trials;  // in the order tried
 };
 
 // `write_full(path)` writes the full export, `write_compact(path, tolerance_1024)` a compact one,
 // both as animation.svg would be written; `beside` names the animation (the temporary files go
 // next to it). Binary search over kToleranceLadder (the error grows with the tolerance): three
-// or four compact candidates, each stopped at its first time below target. Throws svgm::Error
-// when a candidate cannot be written or read back.
-ToleranceChoice choose_compact_tolerance(const std::filesystem::path& beside,
-                                         const std::function<void(const std::filesystem::path&)>& write_full,
-                                         const std::function<void(const std::filesystem::path&, double)>& write_compact);
+// or four compact candidates, each stopped at its first time below target. Then, when
+// `write_residual(path, tolerance_1024, scale)` is given and a tolerance held, the residual
+// shapes' tolerance is loosened at the chosen one along kResidualScales while the floor holds
+// (one or two more candidates: the residual moves few pixels, the transform the whole part).
+// Throws svgm::Error when a candidate cannot be written or read back.
+ToleranceChoice choose_compact_tolerance(
+    const std::filesystem::path& beside, const std::function<void(const std::filesystem::path&)>& write_full,
+    const std::function<void(const std::filesystem::path&, double)>& write_compact,
+    const std::function<void(const std::filesystem::path&, double, double)>& write_residual = nullptr);
 
 // The tolerance animation.json is written at for animation.svg's `svg_tolerance_1024`: the
 // ladder step kLottieStepsBelow below it (the first step at the least; a tolerance off the
