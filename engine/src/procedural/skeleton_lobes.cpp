@@ -25,6 +25,42 @@ LobeKind lobe_kind(motion::LimbKind k) {
   return LobeKind::Other;
 }
 
+// A piece drawn apart from the silhouette (a mask component other than the one the skeleton
+// reads) held at a limb's far half: the pixel pair, piece and figure, nearest each other.
+struct Hold {
+  int component = -1, limb = -1;
+  cv::Point piece, figure;
+};
+
+// The pieces held by the limbs: each component other than the figure's whose nearest figure
+// pixel, at most `gap` px away, belongs to a limb and lies beyond the middle of its base-tip
+// chord (a hand, a paw: not the shoulder, where a separate head or collar sits).
+std::vector<Hold> held_pieces(const motion::Skeleton& sk, const motion::Figure& fig, const cv::Mat& regions, int gap) {
+  std::vector<Hold> best(sk.component_area.size());
+  std::vector<int> best_d2(sk.component_area.size(), gap * gap + 1);
+  for (int y = 0; y < sk.height; ++y)
+    for (int x = 0; x < sk.width; ++x) {
+      const int c = sk.labels.at<int>(y, x);
+      if (c < 0 || c == fig.component) continue;
+      for (int v = std::max(0, y - gap); v <= std::min(sk.height - 1, y + gap); ++v)
+        for (int u = std::max(0, x - gap); u <= std::min(sk.width - 1, x + gap); ++u) {
+          const int d2 = (u - x) * (u - x) + (v - y) * (v - y);
+          if (d2 >= best_d2[c] || sk.labels.at<int>(v, u) != fig.component) continue;
+          best_d2[c] = d2;
+          best[c] = {c, regions.at<int>(v, u), {x, y}, {u, v}};
+        }
+    }
+  std::vector<Hold> out;
+  for (const Hold& h : best) {
+    if (h.component < 0 || h.limb < 0 || h.limb >= static_cast<int>(fig.limbs.size())) continue;
+    const motion::Limb& l = fig.limbs[h.limb];
+    const Vec2 f{static_cast<double>(h.figure.x), static_cast<double>(h.figure.y)};
+    if (std::hypot(f.x - l.base.x, f.y - l.base.y) >= 0.5 * std::hypot(l.tip_pos.x - l.base.x, l.tip_pos.y - l.base.y))
+      out.push_back(h);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<ArmLobe> skeleton_lobes(const Scene& scene, const std::vector<int>& paths) {
@@ -72,6 +108,7 @@ std::vector<ArmLobe> skeleton_lobes(const Scene& scene, const std::vector<int>& 
   const motion::Skeleton sk = motion::skeletonise(mask);
   const motion::Figure fig = motion::find_limbs(sk);
   const cv::Mat regions = motion::limb_regions(sk, fig);
+  const std::vector<Hold> holds = held_pieces(sk, fig, regions, std::max(1, static_cast<int>(std::lround(kHeldGap * kSkeletonSize))));
   std::vector<ArmLobe> out;
   for (size_t li = 0; li < fig.limbs.size(); ++li) {
     const motion::Limb& l = fig.limbs[li];
@@ -79,6 +116,12 @@ std::vector<ArmLobe> skeleton_lobes(const Scene& scene, const std::vector<int>& 
     // The silhouette the limb owns (its tip included, which the thinning leaves short of the
     // outline), grown by a pixel so its own outline's curves lie inside, as its outline.
     cv::Mat own = regions == static_cast<int>(li);
+    // What the limb holds moves with it, joined to it across the gap so the lobe is one outline.
+    for (const Hold& h : holds)
+      if (h.limb == static_cast<int>(li)) {
+        own |= sk.labels == h.component;
+        cv::line(own, h.piece, h.figure, cv::Scalar(255), 3);
+      }
     cv::dilate(own, own, cv::Mat(), cv::Point(-1, -1), 1);
     std::vector<std::vector<cv::Point>> contours;
     cv::findContours(own, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);

@@ -10,6 +10,11 @@
 // discs along its axis (lobe_depth), so a shape lying across the joint bends with the limb
 // rather than being cut at a line.
 //
+// A piece drawn apart from the silhouette but within kHeldGap of a limb's far half (a fencer's
+// foil beside his glove, a racket, a balloon's string) is what the limb holds: it joins that
+// limb's lobe and moves with it (the thinning reads the largest piece only, so it stayed put
+// while the arm thrust).
+//
 // The mask: every filled path of the part drawn as polygons (its cubics sampled), every stroked
 // one as polylines of its width, at kSkeletonSize pixels on the box's long side; the same paths
 // give the same lobes (OpenCV's fills and the thinning are deterministic).
@@ -24,6 +29,8 @@ namespace svgm {
 
 constexpr int kSkeletonSize = 160;       // px on the long side of the part's box
 constexpr double kLimbMinLength = 0.12;  // of the figure's larger side: shorter branches are nubs
+constexpr double kHeldGap = 0.03;        // of the mask's long side: a hand and what it holds are
+                                         // drawn this close (an openmoji glove and foil: 0.02)
 
 // The limbs of the shape `paths` draw (canvas space), in find_limbs' order; empty when the
 // shape has no core with limbs (a disc, a bar, nothing drawn).
