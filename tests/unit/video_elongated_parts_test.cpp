@@ -19,9 +19,6 @@ using svgm::test::path_travel;
 
 namespace {
 
-std::string data(const char* name) { return test::motion_data(name); }
-
-
 // A skeleton limb from `pivot` to `tip`, its outline a band `half` wide either side of it.
 ArmLobe limb(LobeKind kind, Vec2 pivot, Vec2 tip, double half) {
   ArmLobe l;

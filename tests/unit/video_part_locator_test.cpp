@@ -16,13 +16,6 @@ using namespace svgm;
 using svgm::test::Drawing;
 using svgm::test::path_travel;
 
-namespace {
-
-std::string data(const char* name) { return test::motion_data(name); }
-
-
-}  // namespace
-
 TEST_SUITE("video") {
 
 TEST_CASE("part locator: nouns name kinds of part; a trunk is a branch only on a creature, hands a dial's only on an object") {
