@@ -62,6 +62,13 @@ bool looks_same_turned(const Scene& scene, const Rig& rig, const std::vector<int
   return true;
 }
 
+void roll_wheels_with_slides(MotionPlan& plan) {
+  for (PlannedAction& a : plan.actions)
+    if (a.primitive == Primitive::Spin && a.target == Target::Wheels)
+      for (const PlannedAction& s : plan.actions)
+        if (s.primitive == Primitive::Slide && s.parts.empty() && s.verb == a.verb && s.words == a.words) a.rolls = true;
+}
+
 void roll_invisible_spins(const Scene& scene, const Rig& rig, MotionPlan& plan) {
   const Verb* drive = find_verb_by_name("drive");
   if (!drive) return;

@@ -18,6 +18,11 @@ namespace svgm {
 // empty.
 bool looks_same_turned(const Scene& scene, const Rig& rig, const std::vector<int>& parts);
 
+// Wheels roll with the figure's slide of the same words (a car driving: the drive's slide and
+// its wheels' spin): their turn follows the distance it goes, not a steady rate. Sets
+// PlannedAction::rolls (plan_from_prompt).
+void roll_wheels_with_slides(MotionPlan& plan);
+
 // For every Spin of wheels that neither rolls nor shows (looks_same_turned) and is all its words
 // move (no other action of the same words): adds the drive's slide of the whole figure with the spin's words,
 // makes the spin roll with it, and says so in a warning.

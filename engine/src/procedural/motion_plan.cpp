@@ -10,6 +10,7 @@
 #include <set>
 
 #include "svgmotion/error.h"
+#include "procedural/invisible_spin.h"
 #include "procedural/limb_qualifiers.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/support_band.h"
@@ -531,6 +532,30 @@ bool names_figure_kind(const PromptNoun& n) {
   return n.figure != FigureClass::None && n.figure != FigureClass::Object && n.figure != FigureClass::Scene;
 }
 
+namespace {
+
+// The end of plan_from_prompt: with no action, the fallback sway and a warning naming the words
+// not understood; else a warning naming the verbs the lexicon could not place.
+void sway_or_name_missed(Builder& b, const ParsedPrompt& prompt, const std::vector<std::string>& unknown) {
+  if (b.plan.actions.empty()) {
+    const std::string words = unknown.empty() ? "no words" : join(unknown, ", ");
+    b.plan.warnings.push_back("no motion understood in the prompt (not understood: " + words + "); the figure sways gently");
+    const Verb* sway = find_verb_by_name("sway");
+    Action gentle = sway->actions[0];
+    gentle.amp = kFallbackSwayDeg;
+    b.add(*sway, gentle, Target::Whole, {}, "", Modifiers{}, false, "(fallback)", false);
+  } else {
+    // Verbs the lexicon could not place, and words in -ing (a participle no table knows).
+    std::vector<std::string> verbs_missed = prompt.unplaced;
+    for (const auto& w : unknown)
+      if (w.size() > 4 && w.compare(w.size() - 3, 3, "ing") == 0 && std::find(verbs_missed.begin(), verbs_missed.end(), w) == verbs_missed.end())
+        verbs_missed.push_back(w);
+    if (!verbs_missed.empty()) b.plan.warnings.push_back("words not understood: " + join(verbs_missed, ", "));
+  }
+}
+
+}  // namespace
+
 MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t seed) {
   Builder b{rig, std::mt19937(seed), {}};
   for (const Clause& c : prompt.clauses)
@@ -663,31 +688,12 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
       b.plan.notes.push_back(what + " moves by itself: " + v->name + " (no verb in '" + c.text + "')");
       break;
     }
-  // Wheels roll with the figure's slide of the same words (a car driving): their turn follows
-  // the distance it goes, not a steady rate.
-  for (PlannedAction& a : b.plan.actions)
-    if (a.primitive == Primitive::Spin && a.target == Target::Wheels)
-      for (const PlannedAction& s : b.plan.actions)
-        if (s.primitive == Primitive::Slide && s.parts.empty() && s.verb == a.verb && s.words == a.words) a.rolls = true;
+  roll_wheels_with_slides(b.plan);
   b.plan.readings = prompt.readings;
   b.plan.not_understood = unknown;
   for (const auto& w : prompt.unplaced)
     if (std::find(unknown.begin(), unknown.end(), w) == unknown.end()) b.plan.not_understood.push_back(w);
-  if (b.plan.actions.empty()) {
-    const std::string words = unknown.empty() ? "no words" : join(unknown, ", ");
-    b.plan.warnings.push_back("no motion understood in the prompt (not understood: " + words + "); the figure sways gently");
-    const Verb* sway = find_verb_by_name("sway");
-    Action gentle = sway->actions[0];
-    gentle.amp = kFallbackSwayDeg;
-    b.add(*sway, gentle, Target::Whole, {}, "", Modifiers{}, false, "(fallback)", false);
-  } else {
-    // Verbs the lexicon could not place, and words in -ing (a participle no table knows).
-    std::vector<std::string> verbs_missed = prompt.unplaced;
-    for (const auto& w : unknown)
-      if (w.size() > 4 && w.compare(w.size() - 3, 3, "ing") == 0 && std::find(verbs_missed.begin(), verbs_missed.end(), w) == verbs_missed.end())
-        verbs_missed.push_back(w);
-    if (!verbs_missed.empty()) b.plan.warnings.push_back("words not understood: " + join(verbs_missed, ", "));
-  }
+  sway_or_name_missed(b, prompt, unknown);
   return b.plan;
 }
 
