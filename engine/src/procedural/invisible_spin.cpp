@@ -4,25 +4,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/curve_samples.h"
 #include "motion/motion_verbs.h"
+#include "procedural/motion_plan_internal.h"
 
 namespace svgm {
-
-namespace {
-
-Vec2 cubic_at(const Vec2* p, double t) {
-  const double u = 1 - t;
-  return (u * u * u) * p[0] + (3 * u * u * t) * p[1] + (3 * u * t * t) * p[2] + (t * t * t) * p[3];
-}
-
-// `g` is `p` or hangs from it.
-bool under(const Rig& rig, int g, int p) {
-  for (int guard = 0; g >= 0 && guard < 64; g = rig.parts[g].parent, ++guard)
-    if (g == p) return true;
-  return false;
-}
-
-}  // namespace
 
 bool looks_same_turned(const Scene& scene, const Rig& rig, const std::vector<int>& parts) {
   if (parts.empty()) return false;
@@ -34,7 +20,7 @@ bool looks_same_turned(const Scene& scene, const Rig& rig, const std::vector<int
     const Affine to_plane = P.wheel_plane.inverse();
     bool any = false;
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
-      if (!under(rig, rig.part_of_path[pi], p)) continue;
+      if (!motion_plan_internal::part_under(rig, rig.part_of_path[pi], p)) continue;
       const Path& path = scene.paths[pi];
       if (path.fill_gradient >= 0 || path.stroke_gradient >= 0 || (path.has_stroke && !path.stroke.dashes.empty())) return false;
       for (const Subpath& sp : path.subpaths) {
@@ -44,15 +30,13 @@ bool looks_same_turned(const Scene& scene, const Rig& rig, const std::vector<int
         if (!sp.closed && std::hypot(sp.points.back().x - sp.points[0].x, sp.points.back().y - sp.points[0].y) > kRoundTolerance * R)
           return false;
         double lo = 1e300, hi = 0;
-        auto seen = [&](Vec2 q) {
+        std::vector<Vec2> samples;
+        append_curve_samples(sp, 4, true, samples);
+        for (const Vec2& q : samples) {
           const Vec2 v = to_plane.apply(q - c);
-          const double r = std::hypot(v.x, v.y);
-          lo = std::min(lo, r);
-          hi = std::max(hi, r);
-        };
-        seen(sp.points[0]);
-        for (size_t s = 0; s + 3 < sp.points.size(); s += 3)
-          for (double t : {0.25, 0.5, 0.75, 1.0}) seen(cubic_at(&sp.points[s], t));
+          lo = std::min(lo, std::hypot(v.x, v.y));
+          hi = std::max(hi, std::hypot(v.x, v.y));
+        }
         if (hi - lo > kRoundTolerance * R) return false;
         any = true;
       }
