@@ -528,6 +528,32 @@ std::string ground_words(const ParsedPrompt& prompt, const Rig& rig) {
 
 // A noun naming a kind of figure ("the grasshopper": an insect) was understood: it chose the
 // figure's class, though no part is named so.
+// A verb by which a figure gets somewhere: a gait (legs in turn), hops, a swimming or crawling
+// body's wave, wings in flight.
+bool locomotes(const Verb& v) {
+  for (const Action& a : v.actions)
+    if ((a.target == Target::Legs && a.pairing == Pairing::Alternating) || a.primitive == Primitive::Hop ||
+        a.primitive == Primitive::Undulate)
+      return true;
+  return v.name == "fly" || v.name == "soar" || v.name == "float";
+}
+
+// Where the prompt sends a figure that gets somewhere by itself ("the dog runs to the right", "the
+// bird flies left") and its verb has no travel of its own: the whole figure slides that way and
+// back, as a vehicle drives (kTravelSlide), the gait going on as it goes. Without it the direction
+// was read and then ignored: the dog ran on the spot. `from`: the clause's first action.
+void travel_where_told(Builder& b, const Clause& c, size_t from) {
+  if (c.mods.travel == 0) return;
+  const Verb* mover = nullptr;
+  for (const Verb* v : c.verbs)
+    if (!mover && locomotes(*v)) mover = v;
+  if (!mover) return;
+  for (size_t i = from; i < b.plan.actions.size(); ++i)
+    if (b.plan.actions[i].primitive == Primitive::Slide && b.plan.actions[i].parts.empty()) return;
+  static const Action kTravelSlide{Primitive::Slide, Target::Whole, 0.08, 1};
+  b.add(*mover, kTravelSlide, Target::Whole, {}, "", c.mods, false, c.text, false, "told where it goes: the figure travels there and back");
+}
+
 bool names_figure_kind(const PromptNoun& n) {
   return n.figure != FigureClass::None && n.figure != FigureClass::Object && n.figure != FigureClass::Scene;
 }
@@ -630,6 +656,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
       for (const Verb* v : c.verbs) aimed.insert(v->name);
   std::vector<std::string> restated;
   for (const Clause& c : prompt.clauses) {
+    const size_t first_action = b.plan.actions.size();
     const ClauseTarget ct = target_of(c, &unknown);
     const Target target = ct.target;
     const std::vector<int>& named = ct.named;
@@ -654,6 +681,13 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
           restated.push_back("'" + c.text + "'");
           break;
         }
+        // A gait's arm swing is a person's: on a four-legged animal, a bird or a fish it found no
+        // arms and bent the sides of the body (a running dog's head and tail swung as arms).
+        if (i > 0 && act.target == Target::Arms && v->actions[0].target == Target::Legs && b.figure != FigureClass::None &&
+            b.figure != FigureClass::Biped) {
+          b.plan.notes.push_back(std::string("a ") + figure_class_name(b.figure) + " has no arms: " + v->name + "'s arm swing left out");
+          continue;
+        }
         if (i > 0 && act.target == Target::Whole && names_limbs && (is_limb_target(v->actions[0].target) || paddles(*v, rig) || located)) {
           accents_left_out.push_back(v->name + "'s " + primitive_name(act.primitive));
           continue;
@@ -665,6 +699,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
         b.add(*v, act, retarget || elements_too ? target : act.target, retarget ? named : std::vector<int>{}, target_word, c.mods,
               retarget && plural, c.text, retarget, "", retarget ? located : nullptr);
       }
+    travel_where_told(b, c, first_action);
   }
   if (!accents_left_out.empty())
     b.plan.notes.push_back("the prompt names the limbs that move: the whole-figure " + join(accents_left_out, ", ") + " left out");
