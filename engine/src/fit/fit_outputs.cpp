@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "fit/output/checkpoint.h"
+#include "fit/target/compact_raw.h"
 #include "media/preview_video.h"
 #include "media/video_encoder.h"
 #include "svgmotion/atomic_file.h"
@@ -125,7 +126,7 @@ void FitRun::write_animation() {
   // target reader decodes as it encodes them).
   write_video(out / "preview.mp4", active, std::max(1.0, (timing.keyframes - 1) / timing.duration_s),
               [&](int k) {
-                const RgbaImage panels[2] = {rgba8_image(&final_target.raw[static_cast<size_t>(k) * W * H * 4], W, H),
+                const RgbaImage panels[2] = {raw_image(final_target, k),
                                              render_panel(final_fit.render_keyframe(k), W, H)};
                 RgbaImage frame{2 * W, H, std::vector<uint8_t>(static_cast<size_t>(2 * W) * H * 4, 255)};
                 for (int p = 0; p < 2; ++p)
