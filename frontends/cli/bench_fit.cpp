@@ -49,7 +49,7 @@ int bench_fit(const std::vector<std::string>& argv) {
   TargetOptions to;
   to.keyframes = keyframes;
   TargetFrames target = load_target(*target_path, size.width, size.height, to);
-  compact_raw(target);  // as `fit` keeps it (fit/target/compact_raw.h)
+  const CompactRaw raw = compact_raw(target);  // as `fit` keeps it (fit/target/compact_raw.h)
   ClRuntime rt(a.get("--device").value_or("auto"));
   Fitter fitter(rt, scene, target, fo);
   const auto t1 = std::chrono::steady_clock::now();

@@ -48,17 +48,18 @@ TEST_SUITE("fit") {
 TEST_CASE("compact_raw: the preview's bytes and the gate's figure as from the float frames, in a quarter of the memory") {
   TargetFrames t = frames();
   const TargetFrames before = t;
-  compact_raw(t);
+  const CompactRaw c = compact_raw(t);
   CHECK(t.raw.empty());
   const size_t px = static_cast<size_t>(kW) * kH;
-  CHECK(t.raw_compact.rgb8.size() == kK * px * 3);
-  CHECK(t.raw_compact.figure.size() == kK * px);
+  CHECK(c.rgb8.size() == kK * px * 3);
+  CHECK(c.figure.size() == kK * px);
+  CHECK(c.border.size() == static_cast<size_t>(kK));
   for (int k = 0; k < kK; ++k) {
-    const RgbaImage a = rgba8_image(&before.raw[k * px * 4], kW, kH), b = raw_image(t, k);
+    const RgbaImage a = rgba8_image(&before.raw[k * px * 4], kW, kH), b = raw_image(t, &c, k);
     CHECK(b.width == kW);
     CHECK(b.height == kH);
     CHECK(a.rgba == b.rgba);
-    const RawFigure fa = raw_figure(before, k), fb = raw_figure(t, k);
+    const RawFigure fa = raw_figure(before, nullptr, k), fb = raw_figure(t, &c, k);
     CHECK(fa.background == fb.background);
     CHECK(fa.figure == fb.figure);
     // The square and the pixel 0.11 off the background; not the one 0.09 off.
@@ -68,9 +69,8 @@ TEST_CASE("compact_raw: the preview's bytes and the gate's figure as from the fl
     CHECK(fb.figure[14 * kW + 1] == 1);
     CHECK(fb.figure[1 * kW + 14] == 0);
   }
-  // Again: nothing left to compact, the compact form stays.
-  compact_raw(t);
-  CHECK(t.raw_compact.figure.size() == kK * px);
+  // Again: nothing left to compact.
+  CHECK(compact_raw(t).figure.empty());
 }
 
 TEST_CASE("compact_raw: the result gate's verdict is the same bits from the compact form") {
@@ -88,8 +88,12 @@ TEST_CASE("compact_raw: the result gate's verdict is the same bits from the comp
     for (int i = 0; i < plan.n_cp; ++i) pts.push_back(plan.rest_cp[2 * i]), pts.push_back(plan.rest_cp[2 * i + 1]);
   TargetFrames t = frames();
   const GateVerdict a = judge_fit(t, renders, pts, plan, scene, Affine{});
-  compact_raw(t);
-  const GateVerdict b = judge_fit(t, renders, pts, plan, scene, Affine{});
+  const CompactRaw c = compact_raw(t);
+  const size_t frame = px * 4;
+  const GateVerdict b = judge_fit(t, &c, [&](int k) {
+    return std::vector<float>(renders.begin() + static_cast<std::ptrdiff_t>(k * frame),
+                              renders.begin() + static_cast<std::ptrdiff_t>((k + 1) * frame));
+  }, pts, plan, scene, Affine{});
   CHECK(a.psnr_db == b.psnr_db);
   CHECK(a.iou == b.iou);
   CHECK(a.reasons == b.reasons);
@@ -103,8 +107,9 @@ TEST_CASE("compact_raw: the result gate's verdict is the same bits from the comp
 TEST_CASE("compact_raw: a target without frames before cleanup is an internal error, not a read past the end") {
   TargetFrames t;
   t.width = kW, t.height = kH, t.keyframes = 1;
-  CHECK_THROWS_WITH_AS(raw_image(t, 0), "internal: the target holds no frames before cleanup", Error);
-  CHECK_THROWS_WITH_AS(raw_figure(t, 0), "internal: the target holds no frames before cleanup", Error);
+  CHECK_THROWS_WITH_AS(raw_image(t, nullptr, 0), "internal: the target holds no frames before cleanup", Error);
+  const CompactRaw none;
+  CHECK_THROWS_WITH_AS(raw_figure(t, &none, 0), "internal: the target holds no frames before cleanup", Error);
 }
 
 }  // TEST_SUITE

@@ -104,15 +104,6 @@ struct TargetFrames {
   // outside the dilated mask are exactly white (1, 1, 1).
   std::vector<float> rgba;
   std::vector<float> raw;     // K*H*W*4: the resized frames before cleanup (A = 1)
-  // `raw` once a fit has compacted it (compact_raw, fit/target/compact_raw.h; `raw` is then
-  // empty): after the load only the preview shows those frames and the result gate reads the
-  // figure in them, so each pixel keeps its 8-bit RGB (rgba8_image's rounding, A = 255) and
-  // the gate's figure bit, 4 bytes instead of 16; each keyframe its border median.
-  struct CompactRaw {
-    std::vector<uint8_t> rgb8;                   // K*H*W*3
-    std::vector<uint8_t> figure;                 // K*H*W: 1 = differs from the border median
-    std::vector<std::array<float, 3>> border;    // K: border_median_rgb of each keyframe
-  } raw_compact;
   std::vector<uint8_t> mask;  // K*H*W: 1 = foreground (after the component filter + dilation)
   // K*H*W: Euclidean distance in pixels from the pixel centre to the nearest foreground pixel
   // centre (0 inside the mask). A keyframe without foreground holds width + height everywhere.

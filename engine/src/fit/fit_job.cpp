@@ -15,7 +15,6 @@
 #include <fstream>
 
 #include "fit/output/checkpoint.h"
-#include "fit/target/compact_raw.h"
 #include "fit/target/correction_palette.h"
 #include "raster/render_image.h"
 #include "svg/document_order.h"
@@ -224,7 +223,7 @@ void FitRun::prepare_target() {
   for (const std::string& w : target_warnings(target, *target_path, size))
     log::warning("%s", w.c_str());
   // From here on the preview and the gate alone read the frames before cleanup (compact_raw.h).
-  compact_raw(target);
+  target_raw = compact_raw(target);
   // Which prior told the shake from the motion matters to the user: a figure with nothing
   // still keeps the part of the shake inside its motion's band, about 0.45 of 1.6 px rms (fit/target/stabilise.h).
   if (scan.collapse() && !job.quiet && !job.progress)
@@ -324,7 +323,7 @@ void FitRun::prepare_fine() {
   fine_to.denoised_from = coarse_target;
   activity("reading the video's keyframes at " + std::to_string(fine_size.width) + " px for the refinement");
   TargetFrames t = load_target(*target_path, fine_size.width, fine_size.height, fine_to);
-  compact_raw(t);
+  fine_raw = compact_raw(t);
   release_denoised();
   fine_options = fo.refined_at(static_cast<double>(fine_size.width) / size.width);
   fine_options.pin_rest_keyframe = pin_rest;

@@ -13,7 +13,6 @@
 
 #include "fit/optimise/keyframe_choice.h"
 #include "fit/output/checkpoint.h"
-#include "fit/target/compact_raw.h"
 #include "svgmotion/log.h"
 
 namespace svgm {
@@ -195,6 +194,7 @@ void FitRun::add_keyframes_from_target() {
       // stage below (37 bytes per pixel and first keyframe at the finer width: 145 MB for 15
       // at 512 px, held beside this stage's own target and the denoised frames it keeps).
       fine_target.reset();
+      fine_raw = {};
       activity("reading the " + std::to_string(choice.frames.size()) + " keyframes chosen");
       TargetOptions o = to;
       o.frames = choice.frames;
@@ -202,7 +202,7 @@ void FitRun::add_keyframes_from_target() {
       o.denoised_from = nullptr;
       if (to.stabilise) o.shake_from = &target;
       keyed_target = load_target(*target_path, size.width, size.height, o);
-      compact_raw(*keyed_target);
+      keyed_raw = compact_raw(*keyed_target);
       FitOptions ko = coarse_options;
       // The new keyframes start close (warm-started from the most alike fitted keyframe) and
       // every keyframe is refined jointly: a quarter of the budget, ended by the plateau test.
@@ -217,7 +217,7 @@ void FitRun::add_keyframes_from_target() {
       // here on): their memory goes.
       for (auto* v : {&target.raw, &target.rgba, &target.sdf}) std::vector<float>().swap(*v);
       std::vector<uint8_t>().swap(target.mask);
-      target.raw_compact = {};
+      target_raw = {};
       fitter->release_loss_memory();
       key_report["started_from"] = from;
       if (!job.quiet) log::info("fit: %s", choice.reason.c_str());
@@ -255,7 +255,10 @@ void FitRun::refine() {
   if (refine_w > 0 && !stopped) {
     const RenderSize fine_size = render_size(scene, refine_w);
     // Loaded before the keyframes were chosen (the chroma weight's calibration): again, at them.
-    if (fine_target && fine_target->keyframes != ctarget.keyframes) fine_target.reset();
+    if (fine_target && fine_target->keyframes != ctarget.keyframes) {
+      fine_target.reset();
+      fine_raw = {};
+    }
     activity("starting the refinement at " + std::to_string(refine_w) + " px");
     // The guard's baseline: how well each coarse keyframe matches the video at the coarse width.
     const std::vector<float> coarse_losses = cfit.evaluate_keyframe_losses();
@@ -269,7 +272,7 @@ void FitRun::refine() {
     // cleanup, distance field and mask go (9 bytes per pixel and keyframe at the coarse width).
     TargetFrames& coarse_frames = coarse_target == &target ? target : *keyed_target;
     std::vector<float>().swap(coarse_frames.raw);
-    coarse_frames.raw_compact = {};
+    (coarse_target == &target ? target_raw : keyed_raw) = {};
     std::vector<float>().swap(coarse_frames.sdf);
     std::vector<uint8_t>().swap(coarse_frames.mask);
     prepare_fine();

@@ -139,6 +139,12 @@ GateVerdict judge_fit(const TargetFrames& target, const std::vector<float>& rend
 GateVerdict judge_fit(const TargetFrames& target, const std::function<std::vector<float>(int)>& render,
                       const std::vector<double>& points, const RasterPlan& plan, const Scene& scene,
                       const Affine& view, const GateOptions& o) {
+  return judge_fit(target, nullptr, render, points, plan, scene, view, o);
+}
+
+GateVerdict judge_fit(const TargetFrames& target, const CompactRaw* compact,
+                      const std::function<std::vector<float>(int)>& render, const std::vector<double>& points,
+                      const RasterPlan& plan, const Scene& scene, const Affine& view, const GateOptions& o) {
   GateVerdict v;
   const int K = target.keyframes, W = target.width, H = target.height;
   const size_t px = static_cast<size_t>(W) * H;
@@ -148,7 +154,7 @@ GateVerdict judge_fit(const TargetFrames& target, const std::function<std::vecto
   std::vector<double> fg_diag(static_cast<size_t>(K), 0);
   for (int k = 0; k < K; ++k) {
     Box b;
-    const RawFigure f = raw_figure(target, k);
+    const RawFigure f = raw_figure(target, compact, k);
     for (int y = 0; y < H; ++y)
       for (int x = 0; x < W; ++x)
         if (f.figure[static_cast<size_t>(y) * W + x]) b.add(x, y);
@@ -174,7 +180,7 @@ GateVerdict judge_fit(const TargetFrames& target, const std::function<std::vecto
     const std::vector<float> rendered = render(k);
     const float* r = rendered.data();
     const float* t = &target.rgba[static_cast<size_t>(k) * px * 4];
-    const RawFigure f = raw_figure(target, k);  // the target's figure and background
+    const RawFigure f = raw_figure(target, compact, k);  // the target's figure and background
     double se = 0;
     size_t inter = 0, uni = 0;
     for (size_t i = 0; i < px; ++i) {

@@ -25,18 +25,26 @@ inline bool differs_from(float r, float g, float b, const std::array<float, 3>& 
          kFigureContrast;
 }
 
-// Keyframe k's figure as the gate sees it, from `raw` or from its compact form.
+// A target's `raw` once compacted (compact_raw), for its K keyframes of H x W pixels.
+struct CompactRaw {
+  std::vector<uint8_t> rgb8;                 // K*H*W*3: rgba8_image's rounding (its A is 255: raw's is 1)
+  std::vector<uint8_t> figure;               // K*H*W: 1 = differs_from the keyframe's border median
+  std::vector<std::array<float, 3>> border;  // K: border_median_rgb of each keyframe
+};
+
+// Keyframe k's figure as the gate sees it, from t.raw, or from `c` when t.raw is empty.
 struct RawFigure {
   std::array<float, 3> background{1, 1, 1};  // border_median_rgb of the frame
   std::vector<uint8_t> figure;               // H*W, 1 = differs_from(background)
 };
-RawFigure raw_figure(const TargetFrames& t, int k);
+RawFigure raw_figure(const TargetFrames& t, const CompactRaw* c, int k);
 
-// Keyframe k before cleanup as 8-bit RGBA (rgba8_image of `raw`'s frame, or its compact form).
-RgbaImage raw_image(const TargetFrames& t, int k);
+// Keyframe k before cleanup as 8-bit RGBA: rgba8_image of t.raw's frame, or from `c`.
+RgbaImage raw_image(const TargetFrames& t, const CompactRaw* c, int k);
 
-// Replaces t.raw by t.raw_compact (nothing when raw is already empty). Nothing that reads
-// `raw` itself may run on `t` after this (the ranker plugins do, on their own loads).
-void compact_raw(TargetFrames& t);
+// Moves t.raw into its compact form (t.raw is empty afterwards; an empty form when it already
+// was). Nothing that reads `raw` itself may run on `t` after this (the ranker plugins do, on
+// their own loads).
+CompactRaw compact_raw(TargetFrames& t);
 
 }  // namespace svgm
