@@ -20,6 +20,7 @@
 #include "fit/fit_job.h"
 #include "fit/optimise/fitter.h"
 #include "fit/plan/segment_split.h"
+#include "fit/target/compact_raw.h"
 #include "opencl/runtime.h"
 #include "svgmotion/error.h"
 #include "svgmotion/render_size.h"
@@ -47,7 +48,8 @@ int bench_fit(const std::vector<std::string>& argv) {
   const RenderSize size = render_size(scene, width);
   TargetOptions to;
   to.keyframes = keyframes;
-  const TargetFrames target = load_target(*target_path, size.width, size.height, to);
+  TargetFrames target = load_target(*target_path, size.width, size.height, to);
+  const CompactRaw raw = compact_raw(target);  // as `fit` keeps it (fit/target/compact_raw.h)
   ClRuntime rt(a.get("--device").value_or("auto"));
   Fitter fitter(rt, scene, target, fo);
   const auto t1 = std::chrono::steady_clock::now();

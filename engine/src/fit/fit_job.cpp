@@ -222,6 +222,8 @@ void FitRun::prepare_target() {
                pin_rest ? "is the rest pose" : "is fitted", rest_start.iou, job.start_at_rest ? ", as told" : "");
   for (const std::string& w : target_warnings(target, *target_path, size))
     log::warning("%s", w.c_str());
+  // From here on the preview and the gate alone read the frames before cleanup (compact_raw.h).
+  target_raw = compact_raw(target);
   // Which prior told the shake from the motion matters to the user: a figure with nothing
   // still keeps the part of the shake inside its motion's band, about 0.45 of 1.6 px rms (fit/target/stabilise.h).
   if (scan.collapse() && !job.quiet && !job.progress)
@@ -321,6 +323,7 @@ void FitRun::prepare_fine() {
   fine_to.denoised_from = coarse_target;
   activity("reading the video's keyframes at " + std::to_string(fine_size.width) + " px for the refinement");
   TargetFrames t = load_target(*target_path, fine_size.width, fine_size.height, fine_to);
+  fine_raw = compact_raw(t);
   release_denoised();
   fine_options = fo.refined_at(static_cast<double>(fine_size.width) / size.width);
   fine_options.pin_rest_keyframe = pin_rest;

@@ -64,7 +64,7 @@ void FitRun::write_animation() {
   // Each keyframe rendered as it is judged (and again for the preview below): the renders of
   // every keyframe at once were 16 bytes per pixel and keyframe, on the device and the host,
   // the fit's peak (126 MB for 30 keyframes at 512 px).
-  verdict = judge_fit(final_target, [&](int k) { return final_fit.render_keyframe(k); }, points,
+  verdict = judge_fit(final_target, &final_raw(), [&](int k) { return final_fit.render_keyframe(k); }, points,
                       final_fit.raster_plan(), fit_scene, final_size.view, gate_options);
   rejected = !stopped && !verdict.passed;
   std::error_code ec;
@@ -125,7 +125,7 @@ void FitRun::write_animation() {
   // target reader decodes as it encodes them).
   write_video(out / "preview.mp4", active, std::max(1.0, (timing.keyframes - 1) / timing.duration_s),
               [&](int k) {
-                const RgbaImage panels[2] = {rgba8_image(&final_target.raw[static_cast<size_t>(k) * W * H * 4], W, H),
+                const RgbaImage panels[2] = {raw_image(final_target, &final_raw(), k),
                                              render_panel(final_fit.render_keyframe(k), W, H)};
                 RgbaImage frame{2 * W, H, std::vector<uint8_t>(static_cast<size_t>(2 * W) * H * 4, 255)};
                 for (int p = 0; p < 2; ++p)

@@ -26,6 +26,7 @@
 #include "fit/plan/segment_split.h"
 #include "fit/target/blur_match.h"
 #include "fit/target/chroma_calibration.h"
+#include "fit/target/compact_raw.h"
 #include "fit/target/frame_scan.h"
 #include "fit/target/rest_start.h"
 #include "opencl/runtime.h"
@@ -190,9 +191,15 @@ struct FitRun {
   std::optional<GroupMotionExport> group_motion;
   int values_written = 0;
 
+  // The targets' frames before cleanup, compacted once each is loaded (fit/target/compact_raw.h:
+  // only the preview and the gate read them after the load): `target`'s, `keyed_target`'s and
+  // `fine_target`'s.
+  CompactRaw target_raw, keyed_raw, fine_raw;
+
   Fitter& coarse_fit() { return keyed ? *keyed : *fitter; }
   Fitter& final_fit() { return fine ? *fine : coarse_fit(); }
   const TargetFrames& final_target() const { return fine ? *fine_target : *coarse_target; }
+  const CompactRaw& final_raw() const { return fine ? fine_raw : coarse_target == &target ? target_raw : keyed_raw; }
 };
 
 }  // namespace svgm

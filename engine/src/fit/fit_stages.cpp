@@ -194,6 +194,7 @@ void FitRun::add_keyframes_from_target() {
       // stage below (37 bytes per pixel and first keyframe at the finer width: 145 MB for 15
       // at 512 px, held beside this stage's own target and the denoised frames it keeps).
       fine_target.reset();
+      fine_raw = {};
       activity("reading the " + std::to_string(choice.frames.size()) + " keyframes chosen");
       TargetOptions o = to;
       o.frames = choice.frames;
@@ -201,6 +202,7 @@ void FitRun::add_keyframes_from_target() {
       o.denoised_from = nullptr;
       if (to.stabilise) o.shake_from = &target;
       keyed_target = load_target(*target_path, size.width, size.height, o);
+      keyed_raw = compact_raw(*keyed_target);
       FitOptions ko = coarse_options;
       // The new keyframes start close (warm-started from the most alike fitted keyframe) and
       // every keyframe is refined jointly: a quarter of the budget, ended by the plateau test.
@@ -215,6 +217,7 @@ void FitRun::add_keyframes_from_target() {
       // here on): their memory goes.
       for (auto* v : {&target.raw, &target.rgba, &target.sdf}) std::vector<float>().swap(*v);
       std::vector<uint8_t>().swap(target.mask);
+      target_raw = {};
       fitter->release_loss_memory();
       key_report["started_from"] = from;
       if (!job.quiet) log::info("fit: %s", choice.reason.c_str());
@@ -252,8 +255,26 @@ void FitRun::refine() {
   if (refine_w > 0 && !stopped) {
     const RenderSize fine_size = render_size(scene, refine_w);
     // Loaded before the keyframes were chosen (the chroma weight's calibration): again, at them.
-    if (fine_target && fine_target->keyframes != ctarget.keyframes) fine_target.reset();
+    if (fine_target && fine_target->keyframes != ctarget.keyframes) {
+      fine_target.reset();
+      fine_raw = {};
+    }
     activity("starting the refinement at " + std::to_string(refine_w) + " px");
+    // The guard's baseline: how well each coarse keyframe matches the video at the coarse width.
+    const std::vector<float> coarse_losses = cfit.evaluate_keyframe_losses();
+    // One fitter's loss memory at a time: the coarse one's waits (made again for the guard),
+    // freed before the finer target is read (30 keyframes at 256 px: Q and R 31 MB, the
+    // residual chunk 32 MB and the tape pool; the same losses: evaluating reads the parameters
+    // only, and the finer fitter's start below reads the coarse one's as they stand).
+    cfit.release_loss_memory();
+    // The coarse target from here on is the guard's loss (its rgba) and the clip's timing: the
+    // gate and the preview judge the refined fit against the finer target. Its frames before
+    // cleanup, distance field and mask go (9 bytes per pixel and keyframe at the coarse width).
+    TargetFrames& coarse_frames = coarse_target == &target ? target : *keyed_target;
+    std::vector<float>().swap(coarse_frames.raw);
+    (coarse_target == &target ? target_raw : keyed_raw) = {};
+    std::vector<float>().swap(coarse_frames.sdf);
+    std::vector<uint8_t>().swap(coarse_frames.mask);
     prepare_fine();
     fine_options.chroma_weight = chroma_weight;
     fine = std::make_unique<Fitter>(*rt, fit_scene, *fine_target, fine_options);
@@ -261,21 +282,10 @@ void FitRun::refine() {
     // after the load's checks: 5 bytes per pixel and keyframe (21 MB for 16 keyframes at 512 px).
     std::vector<float>().swap(fine_target->sdf);
     std::vector<uint8_t>().swap(fine_target->mask);
-    // The coarse target from here on is the guard's loss (its rgba) and the clip's timing: the
-    // gate and the preview judge the refined fit against the finer target. Its frames before
-    // cleanup, distance field and mask go (21 bytes per pixel and keyframe at the coarse width).
-    TargetFrames& coarse_frames = coarse_target == &target ? target : *keyed_target;
-    std::vector<float>().swap(coarse_frames.raw);
-    std::vector<float>().swap(coarse_frames.sdf);
-    std::vector<uint8_t>().swap(coarse_frames.mask);
     const double scale = static_cast<double>(fine_size.width) / size.width;
     fine->adopt_coarse(cfit, scale);
     log::debug("fit: refining every keyframe at %dx%d for %d iterations", fine_size.width, fine_size.height,
                refine_iters);
-    // The guard's baseline: how well each coarse keyframe matches the video at the coarse width.
-    const std::vector<float> coarse_losses = cfit.evaluate_keyframe_losses();
-    // One fitter's loss memory at a time: the coarse one's waits (made again for the guard).
-    cfit.release_loss_memory();
     run_stage(*fine, coarse_iters, false);
     bar->refine_done(seconds_in());
     fine->release_loss_memory();

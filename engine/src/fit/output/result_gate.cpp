@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "fit/target/compact_raw.h"
 #include "raster/area_coverage.h"
 #include "raster/raster_ref.h"
 
@@ -138,6 +139,12 @@ GateVerdict judge_fit(const TargetFrames& target, const std::vector<float>& rend
 GateVerdict judge_fit(const TargetFrames& target, const std::function<std::vector<float>(int)>& render,
                       const std::vector<double>& points, const RasterPlan& plan, const Scene& scene,
                       const Affine& view, const GateOptions& o) {
+  return judge_fit(target, nullptr, render, points, plan, scene, view, o);
+}
+
+GateVerdict judge_fit(const TargetFrames& target, const CompactRaw* compact,
+                      const std::function<std::vector<float>(int)>& render, const std::vector<double>& points,
+                      const RasterPlan& plan, const Scene& scene, const Affine& view, const GateOptions& o) {
   GateVerdict v;
   const int K = target.keyframes, W = target.width, H = target.height;
   const size_t px = static_cast<size_t>(W) * H;
@@ -147,13 +154,10 @@ GateVerdict judge_fit(const TargetFrames& target, const std::function<std::vecto
   std::vector<double> fg_diag(static_cast<size_t>(K), 0);
   for (int k = 0; k < K; ++k) {
     Box b;
-    const float* raw = &target.raw[static_cast<size_t>(k) * px * 4];
-    const std::array<float, 3> bg = border_median_rgb(raw, W, H);
+    const RawFigure f = raw_figure(target, compact, k);
     for (int y = 0; y < H; ++y)
-      for (int x = 0; x < W; ++x) {
-        const float* q = &raw[(static_cast<size_t>(y) * W + x) * 4];
-        if (std::max({std::fabs(q[0] - bg[0]), std::fabs(q[1] - bg[1]), std::fabs(q[2] - bg[2])}) > 0.1f) b.add(x, y);
-      }
+      for (int x = 0; x < W; ++x)
+        if (f.figure[static_cast<size_t>(y) * W + x]) b.add(x, y);
     if (!b.empty()) {
       const Vec2 a = to_canvas.apply({b.x0, b.y0}), c = to_canvas.apply({b.x1 + 1, b.y1 + 1});
       fg_diag[static_cast<size_t>(k)] = std::hypot(c.x - a.x, c.y - a.y);
@@ -176,11 +180,7 @@ GateVerdict judge_fit(const TargetFrames& target, const std::function<std::vecto
     const std::vector<float> rendered = render(k);
     const float* r = rendered.data();
     const float* t = &target.rgba[static_cast<size_t>(k) * px * 4];
-    const float* raw = &target.raw[static_cast<size_t>(k) * px * 4];
-    const std::array<float, 3> bg = border_median_rgb(raw, W, H);
-    auto differs = [&](float r0, float g0, float b0) {
-      return std::max({std::fabs(r0 - bg[0]), std::fabs(g0 - bg[1]), std::fabs(b0 - bg[2])}) > 0.1f;
-    };
+    const RawFigure f = raw_figure(target, compact, k);  // the target's figure and background
     double se = 0;
     size_t inter = 0, uni = 0;
     for (size_t i = 0; i < px; ++i) {
@@ -191,8 +191,8 @@ GateVerdict judge_fit(const TargetFrames& target, const std::function<std::vecto
         const double d = over[c] - t[4 * i + c];
         se += d * d;
       }
-      const bool drawn = differs(over[0], over[1], over[2]);
-      const bool fg = differs(raw[4 * i], raw[4 * i + 1], raw[4 * i + 2]);
+      const bool drawn = differs_from(over[0], over[1], over[2], f.background);
+      const bool fg = f.figure[i] != 0;
       inter += drawn && fg;
       uni += drawn || fg;
     }

@@ -31,6 +31,8 @@
 
 namespace svgm {
 
+struct CompactRaw;
+
 // A filled path whose enclosed area falls below this share of keyframe 0's is folded flat.
 inline constexpr double kFoldedArea = 0.1;
 
@@ -66,6 +68,11 @@ GateVerdict judge_fit(const TargetFrames& target, const std::vector<float>& rend
 GateVerdict judge_fit(const TargetFrames& target, const std::function<std::vector<float>(int)>& render,
                       const std::vector<double>& points, const RasterPlan& plan, const Scene& scene,
                       const Affine& view, const GateOptions& options = {});
+// The same for a target whose `raw` a fit has compacted into `raw` (fit/target/compact_raw.h):
+// the same verdict, to the bit, as from the float frames.
+GateVerdict judge_fit(const TargetFrames& target, const CompactRaw* raw,
+                      const std::function<std::vector<float>(int)>& render, const std::vector<double>& points,
+                      const RasterPlan& plan, const Scene& scene, const Affine& view, const GateOptions& options = {});
 
 nlohmann::json gate_json(const GateVerdict& v, const GateOptions& o);
 

@@ -27,7 +27,7 @@ TargetFrames still_target(const TargetFrames& target, int keyframes) {
     for (int k = 0; k < keyframes; ++k) out.insert(out.end(), v.begin(), v.begin() + static_cast<std::ptrdiff_t>(per));
   };
   repeat(target.rgba, 4 * px, s.rgba);
-  repeat(target.raw, 4 * px, s.raw);
+  if (!target.raw.empty()) repeat(target.raw, 4 * px, s.raw);  // nothing reads it (compact_raw.h)
   repeat(target.mask, px, s.mask);
   repeat(target.sdf, px, s.sdf);
   return s;

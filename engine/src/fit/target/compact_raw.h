@@ -1,0 +1,50 @@
+// The target's frames before cleanup (TargetFrames::raw) in the form a fit needs once they are
+// loaded: the preview shows them in 8 bits and the result gate reads which pixels differ from
+// the frame's background, so a fit keeps those (4 bytes per pixel) instead of float RGBA (16;
+// 94 MB for 30 keyframes at 512 px). Both read the compact form exactly as they read `raw`:
+// the preview's bytes and the gate's verdict are the same bits.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "svgmotion/png_io.h"
+#include "svgmotion/target_video.h"
+
+namespace svgm {
+
+// The result gate's figure: a pixel differing from the frame's background (the median of its
+// border) by more than this in some channel (fit/output/result_gate.h).
+inline constexpr float kFigureContrast = 0.1f;
+
+inline bool differs_from(float r, float g, float b, const std::array<float, 3>& background) {
+  return std::max({std::fabs(r - background[0]), std::fabs(g - background[1]), std::fabs(b - background[2])}) >
+         kFigureContrast;
+}
+
+// A target's `raw` once compacted (compact_raw), for its K keyframes of H x W pixels.
+struct CompactRaw {
+  std::vector<uint8_t> rgb8;                 // K*H*W*3: rgba8_image's rounding (its A is 255: raw's is 1)
+  std::vector<uint8_t> figure;               // K*H*W: 1 = differs_from the keyframe's border median
+  std::vector<std::array<float, 3>> border;  // K: border_median_rgb of each keyframe
+};
+
+// Keyframe k's figure as the gate sees it, from t.raw, or from `c` when t.raw is empty.
+struct RawFigure {
+  std::array<float, 3> background{1, 1, 1};  // border_median_rgb of the frame
+  std::vector<uint8_t> figure;               // H*W, 1 = differs_from(background)
+};
+RawFigure raw_figure(const TargetFrames& t, const CompactRaw* c, int k);
+
+// Keyframe k before cleanup as 8-bit RGBA: rgba8_image of t.raw's frame, or from `c`.
+RgbaImage raw_image(const TargetFrames& t, const CompactRaw* c, int k);
+
+// Moves t.raw into its compact form (t.raw is empty afterwards; an empty form when it already
+// was). Nothing that reads `raw` itself may run on `t` after this (the ranker plugins do, on
+// their own loads).
+CompactRaw compact_raw(TargetFrames& t);
+
+}  // namespace svgm
