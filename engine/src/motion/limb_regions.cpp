@@ -28,12 +28,16 @@ std::vector<Owned> owned_points(const Skeleton& s, const Figure& f) {
   for (int n : f.core_nodes) out.push_back({s.nodes[n].pos, s.nodes[n].radius, -1});
   for (size_t l = 0; l < f.limbs.size(); ++l) {
     const SkeletonNode& joint = s.nodes[f.limbs[l].joint];
-    for (int e : f.limbs[l].edges)
+    const auto& standing = f.limbs[l].standing_edges;
+    for (int e : f.limbs[l].edges) {
+      // A fork standing on the ground off a limb that does not is the body's leg (limbs.h).
+      const bool leg = std::find(standing.begin(), standing.end(), e) != standing.end();
       for (size_t i = 0; i < s.edges[e].points.size(); ++i) {
         const Vec2 p = s.edges[e].points[i];
         const bool inside = std::hypot(p.x - joint.pos.x, p.y - joint.pos.y) < joint.radius;
-        out.push_back({p, s.edges[e].radius[i], inside ? -1 : static_cast<int>(l)});
+        out.push_back({p, s.edges[e].radius[i], inside || leg ? -1 : static_cast<int>(l)});
       }
+    }
   }
   return out;
 }

@@ -239,6 +239,24 @@ void label(const Skeleton& s, Figure& f) {
   }
 }
 
+// The forks of each limb off the ground whose end stands on the ground line (as label() finds
+// feet): their own stretch (off the path to the limb's tip) is left to the body.
+void standing_forks(const Skeleton& s, Figure& f) {
+  const double tol = std::max(3.0, kGroundShare * (f.y1 - f.y0));
+  for (Limb& L : f.limbs) {
+    if (L.grounded || L.more_tips.empty()) continue;
+    const std::vector<int> main = path_edges(s, L.edges, L.joint, L.tip);
+    for (int t : L.more_tips) {
+      const SkeletonNode& n = s.nodes[t];
+      if (n.pos.y + n.radius < f.ground_y - tol) continue;
+      for (int e : path_edges(s, L.edges, L.joint, t))
+        if (std::find(main.begin(), main.end(), e) == main.end() &&
+            std::find(L.standing_edges.begin(), L.standing_edges.end(), e) == L.standing_edges.end())
+          L.standing_edges.push_back(e);
+    }
+  }
+}
+
 }  // namespace
 
 const char* limb_kind_name(LimbKind k) {
@@ -304,6 +322,7 @@ Figure find_limbs(const Skeleton& s) {
       f.limbs.push_back(std::move(L));
     }
   label(s, f);
+  standing_forks(s, f);
   std::vector<std::pair<double, size_t>> order;
   for (size_t i = 0; i < f.limbs.size(); ++i)
     order.push_back({joint_t(s, f, f.limbs[i]) * 10 + std::atan2(f.limbs[i].direction.y, f.limbs[i].direction.x), i});
