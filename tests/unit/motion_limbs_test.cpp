@@ -118,6 +118,30 @@ TEST_SUITE("motion") {
     CHECK(assign_points(s, f, {{70, 108}, {20, 46}}) == std::vector<int>{-1, tail});
   }
 
+  TEST_CASE("a tail's branch through a thick rump starts where it gets thin: the rump is the body's") {
+    // A quadruped facing right: a body 30 tall (x 40-150), a rump 44 tall round (50, 70) its
+    // tail's branch runs through, and a thin tail (5 wide) from the rump's back (14, 70) up to
+    // (2, 20). The tail's base is where its branch leaves the rump, not inside it.
+    cv::Mat m(160, 220, CV_8U, cv::Scalar(0));
+    cv::ellipse(m, {100, 70}, {50, 15}, 0, 0, 360, 255, cv::FILLED);
+    cv::ellipse(m, {50, 70}, {36, 22}, 0, 0, 360, 255, cv::FILLED);
+    for (int x : {60, 75, 125, 140}) cv::line(m, {x, 80}, {x, 115}, 255, 8);
+    cv::line(m, {145, 62}, {175, 35}, 255, 10);
+    cv::ellipse(m, {185, 28}, {16, 10}, 0, 0, 360, 255, cv::FILLED);
+    cv::line(m, {16, 70}, {2, 20}, 255, 5);
+    const Skeleton s = skeletonise(m);
+    const Figure f = find_limbs(s);
+    const int tail = find(f, LimbKind::Tail, {2, 20});
+    REQUIRE(tail >= 0);
+    const Limb& L = f.limbs[tail];
+    CHECK(L.body_radius > 0);
+    CHECK(L.base.x < 22);  // out of the rump (its back edge at x 14)
+    const cv::Mat regions = limb_regions(s, f);
+    CHECK(regions.at<int>(40, 8) == tail);  // on the thin tail
+    CHECK(regions.at<int>(70, 40) == -1);   // the rump's middle is the body's
+    CHECK(regions.at<int>(58, 30) == -1);
+  }
+
   TEST_CASE("a bent arm's elbow is where it bends") {
     cv::Mat m = motion_masks::stick_figure();
     cv::line(m, {80, 55}, {115, 60}, 255, 8);  // upper arm out to the right, forearm up

@@ -35,7 +35,11 @@ std::vector<Owned> owned_points(const Skeleton& s, const Figure& f) {
       for (size_t i = 0; i < s.edges[e].points.size(); ++i) {
         const Vec2 p = s.edges[e].points[i];
         const bool inside = std::hypot(p.x - joint.pos.x, p.y - joint.pos.y) < joint.radius;
-        out.push_back({p, s.edges[e].radius[i], inside || leg ? -1 : static_cast<int>(l)});
+        // A tail's thick stretch before its base is the rump it runs through (limbs.h).
+        const Limb& L = f.limbs[l];
+        const bool rump = L.body_radius > 0 && s.edges[e].radius[i] >= L.body_radius &&
+                          std::hypot(p.x - joint.pos.x, p.y - joint.pos.y) < std::hypot(L.base.x - joint.pos.x, L.base.y - joint.pos.y);
+        out.push_back({p, s.edges[e].radius[i], inside || leg || rump ? -1 : static_cast<int>(l)});
       }
     }
   }

@@ -48,6 +48,8 @@ struct Limb {
   std::vector<int> edges;    // every skeleton edge of its sub-tree
   std::vector<Vec2> path;    // skeleton points, joint to tip
   std::vector<double> radius;  // inscribed radius at each path point
+  double body_radius = 0;    // > 0 (tails): a skeleton point this thick or more is the body's
+                             // (a rump the tail's branch runs through), not the limb's
   size_t base_index = 0;     // path[base_index] = base
   Vec2 base, bend, tip_pos;  // shoulder/hip, elbow/knee, hand/foot
   bool bent = false;         // the bend is at least a tenth of the chord off it
