@@ -1,6 +1,7 @@
 // Limbs from the silhouette skeleton (motion/limbs.h): a stick figure's five limbs with their
-// labels, sides and tips, a quadruped's legs, head and tail, a bent arm's elbow, and which limb
-// owns which points, paths and pixels.
+// labels, sides and tips, a quadruped's legs, head and tail (and a leg standing off its tail's
+// branch, which the tail does not own), a bent arm's elbow, and which limb owns which points,
+// paths and pixels.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -89,6 +90,56 @@ TEST_SUITE("motion") {
     REQUIRE(tail >= 0);
     CHECK(distance(f.limbs[tail].tip_pos, {40, 110}) <= 4);
     CHECK_FALSE(f.limbs[tail].grounded);
+  }
+
+  TEST_CASE("a leg standing on a fork of the tail's branch is the body's: the tail's region leaves it") {
+    // A quadruped facing right whose back leg stands from (70, 80) down to the ground line (y
+    // 110) the front legs stand on, and whose thin tail leaves that leg low, at (70, 100), and
+    // rises to (5, 30): one branch of the skeleton with two ends (a tiger's hind leg drawn off
+    // the root of its tail). The tail is its longest path, off the ground.
+    cv::Mat m(160, 220, CV_8U, cv::Scalar(0));
+    cv::ellipse(m, {110, 70}, {55, 22}, 0, 0, 360, 255, cv::FILLED);
+    for (int x : {135, 150}) cv::line(m, {x, 80}, {x, 110}, 255, 8);
+    cv::line(m, {155, 60}, {180, 30}, 255, 10);
+    cv::ellipse(m, {188, 25}, {16, 10}, 0, 0, 360, 255, cv::FILLED);
+    cv::line(m, {70, 80}, {70, 110}, 255, 8);
+    cv::line(m, {70, 100}, {5, 30}, 255, 5);
+    const Skeleton s = skeletonise(m);
+    const Figure f = find_limbs(s);
+    const int tail = find(f, LimbKind::Tail, {5, 30});
+    REQUIRE(tail >= 0);
+    CHECK(distance(f.limbs[tail].tip_pos, {5, 30}) <= 4);
+    CHECK_FALSE(f.limbs[tail].grounded);
+    REQUIRE(f.limbs[tail].more_tips.size() == 1);  // the foot
+    CHECK_FALSE(f.limbs[tail].standing_edges.empty());
+    const cv::Mat regions = limb_regions(s, f);
+    CHECK(regions.at<int>(46, 20) == tail);   // on the tail
+    CHECK(regions.at<int>(107, 70) == -1);    // the foot is the body's
+    CHECK(assign_points(s, f, {{70, 108}, {20, 46}}) == std::vector<int>{-1, tail});
+  }
+
+  TEST_CASE("a tail's branch through a thick rump starts where it gets thin: the rump is the body's") {
+    // A quadruped facing right: a body 30 tall (x 40-150), a rump 44 tall round (50, 70) its
+    // tail's branch runs through, and a thin tail (5 wide) from the rump's back (14, 70) up to
+    // (2, 20). The tail's base is where its branch leaves the rump, not inside it.
+    cv::Mat m(160, 220, CV_8U, cv::Scalar(0));
+    cv::ellipse(m, {100, 70}, {50, 15}, 0, 0, 360, 255, cv::FILLED);
+    cv::ellipse(m, {50, 70}, {36, 22}, 0, 0, 360, 255, cv::FILLED);
+    for (int x : {60, 75, 125, 140}) cv::line(m, {x, 80}, {x, 115}, 255, 8);
+    cv::line(m, {145, 62}, {175, 35}, 255, 10);
+    cv::ellipse(m, {185, 28}, {16, 10}, 0, 0, 360, 255, cv::FILLED);
+    cv::line(m, {16, 70}, {2, 20}, 255, 5);
+    const Skeleton s = skeletonise(m);
+    const Figure f = find_limbs(s);
+    const int tail = find(f, LimbKind::Tail, {2, 20});
+    REQUIRE(tail >= 0);
+    const Limb& L = f.limbs[tail];
+    CHECK(L.body_radius > 0);
+    CHECK(L.base.x < 22);  // out of the rump (its back edge at x 14)
+    const cv::Mat regions = limb_regions(s, f);
+    CHECK(regions.at<int>(40, 8) == tail);  // on the thin tail
+    CHECK(regions.at<int>(70, 40) == -1);   // the rump's middle is the body's
+    CHECK(regions.at<int>(58, 30) == -1);
   }
 
   TEST_CASE("a bent arm's elbow is where it bends") {

@@ -28,12 +28,20 @@ std::vector<Owned> owned_points(const Skeleton& s, const Figure& f) {
   for (int n : f.core_nodes) out.push_back({s.nodes[n].pos, s.nodes[n].radius, -1});
   for (size_t l = 0; l < f.limbs.size(); ++l) {
     const SkeletonNode& joint = s.nodes[f.limbs[l].joint];
-    for (int e : f.limbs[l].edges)
+    const auto& standing = f.limbs[l].standing_edges;
+    for (int e : f.limbs[l].edges) {
+      // A fork standing on the ground off a limb that does not is the body's leg (limbs.h).
+      const bool leg = std::find(standing.begin(), standing.end(), e) != standing.end();
       for (size_t i = 0; i < s.edges[e].points.size(); ++i) {
         const Vec2 p = s.edges[e].points[i];
         const bool inside = std::hypot(p.x - joint.pos.x, p.y - joint.pos.y) < joint.radius;
-        out.push_back({p, s.edges[e].radius[i], inside ? -1 : static_cast<int>(l)});
+        // A tail's thick stretch before its base is the rump it runs through (limbs.h).
+        const Limb& L = f.limbs[l];
+        const bool rump = L.body_radius > 0 && s.edges[e].radius[i] >= L.body_radius &&
+                          std::hypot(p.x - joint.pos.x, p.y - joint.pos.y) < std::hypot(L.base.x - joint.pos.x, L.base.y - joint.pos.y);
+        out.push_back({p, s.edges[e].radius[i], inside || leg || rump ? -1 : static_cast<int>(l)});
       }
+    }
   }
   return out;
 }

@@ -12,6 +12,7 @@ namespace {
 constexpr double kCoreGrow = 0.5;     // an internal branch joins the core at half its thickness
 constexpr double kBendShare = 0.1;    // a bend a tenth of the chord off it is a real elbow
 constexpr double kGroundShare = 0.05; // ground tolerance: a twentieth of the figure's height
+constexpr double kTailThick = 1.6;    // a tail's branch this much thicker than the tail is the body
 
 double len(Vec2 v) { return std::hypot(v.x, v.y); }
 double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
@@ -239,6 +240,48 @@ void label(const Skeleton& s, Figure& f) {
   }
 }
 
+// The forks of each limb off the ground whose end stands on the ground line (as label() finds
+// feet): their own stretch (off the path to the limb's tip) is left to the body.
+void standing_forks(const Skeleton& s, Figure& f) {
+  const double tol = std::max(3.0, kGroundShare * (f.y1 - f.y0));
+  for (Limb& L : f.limbs) {
+    if (L.grounded || L.more_tips.empty()) continue;
+    const std::vector<int> main = path_edges(s, L.edges, L.joint, L.tip);
+    for (int t : L.more_tips) {
+      const SkeletonNode& n = s.nodes[t];
+      if (n.pos.y + n.radius < f.ground_y - tol) continue;
+      for (int e : path_edges(s, L.edges, L.joint, t))
+        if (std::find(main.begin(), main.end(), e) == main.end() &&
+            std::find(L.standing_edges.begin(), L.standing_edges.end(), e) == L.standing_edges.end())
+          L.standing_edges.push_back(e);
+    }
+  }
+}
+
+// A tail's branch starts where the skeleton leaves the core, often deep in a thick rump (a
+// tiger's hind quarters, which its hind leg hangs from): swung from there, the tail carried the
+// rump and the leg. The tail is what is thin: its own thickness is the median inscribed radius
+// of its outer half, and its base moves out to where the branch first gets that thin (within
+// kTailThick of it); the thicker stretch before it is the body's (limb_regions).
+void thin_tail_bases(Figure& f) {
+  for (Limb& L : f.limbs) {
+    const size_t n = L.path.size();
+    if (L.kind != LimbKind::Tail || n < 4 || L.base_index + 2 >= n) continue;
+    std::vector<double> outer(L.radius.begin() + static_cast<long>(L.base_index + (n - L.base_index) / 2), L.radius.end());
+    std::nth_element(outer.begin(), outer.begin() + static_cast<long>(outer.size() / 2), outer.end());
+    const double own = std::max(outer[outer.size() / 2], 0.5);
+    size_t i = L.base_index;
+    while (i + 1 < n && L.radius[i] > kTailThick * own) ++i;
+    if (i == L.base_index) continue;
+    L.body_radius = kTailThick * own;
+    L.base_index = i;
+    L.base = L.path[i];
+    L.length = 0;
+    for (size_t k = i + 1; k < n; ++k) L.length += len(L.path[k] - L.path[k - 1]);
+    if (L.length > 0) L.direction = unit(L.tip_pos - L.base);
+  }
+}
+
 }  // namespace
 
 const char* limb_kind_name(LimbKind k) {
@@ -304,6 +347,8 @@ Figure find_limbs(const Skeleton& s) {
       f.limbs.push_back(std::move(L));
     }
   label(s, f);
+  standing_forks(s, f);
+  thin_tail_bases(f);
   std::vector<std::pair<double, size_t>> order;
   for (size_t i = 0; i < f.limbs.size(); ++i)
     order.push_back({joint_t(s, f, f.limbs[i]) * 10 + std::atan2(f.limbs[i].direction.y, f.limbs[i].direction.x), i});

@@ -19,6 +19,10 @@
 // the rest are arms); a lying core (quadruped, bird, fish) has
 // legs pointing down, a head and a tail along its axis at its two ends (the head has the larger
 // tip disc, else the higher tip) and arms (wings, fins) rising from its middle.
+//
+// A limb off the ground does not own a fork of its sub-tree that stands on the ground: a hind
+// leg whose outline runs into the root of the tail (one branch of the skeleton leaving the
+// rump, two ends) is a leg of the body, and a tail's lash would swing it with the tail.
 #pragma once
 
 #include <string>
@@ -39,9 +43,13 @@ struct Limb {
   int joint = -1;            // the core's skeleton node it hangs from
   int tip = -1;              // its farthest skeleton end node
   std::vector<int> more_tips;  // its other end nodes (fingers, ears), if it forks
+  std::vector<int> standing_edges;  // the stretches of its forks that stand on the ground while
+                                    // it does not: the body's legs, not the limb's (limb_regions)
   std::vector<int> edges;    // every skeleton edge of its sub-tree
   std::vector<Vec2> path;    // skeleton points, joint to tip
   std::vector<double> radius;  // inscribed radius at each path point
+  double body_radius = 0;    // > 0 (tails): a skeleton point this thick or more is the body's
+                             // (a rump the tail's branch runs through), not the limb's
   size_t base_index = 0;     // path[base_index] = base
   Vec2 base, bend, tip_pos;  // shoulder/hip, elbow/knee, hand/foot
   bool bent = false;         // the bend is at least a tenth of the chord off it
