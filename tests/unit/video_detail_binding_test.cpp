@@ -1,4 +1,4 @@
-// Outlines ride on the fills they are drawn on (procedural/detail_binding.h): a drawing whose
+// Outlines ride on the fills they are drawn on (procedural/detail_binding.h: bind_to_hosts): a drawing whose
 // colours and line art are two groups, as openmoji draws them, keeps its outlines on its moving
 // fills; the outline of the still body stays; a stroke running from the body onto the neck
 // stretches across the joint, its body end still and its neck end with the neck.
@@ -49,11 +49,13 @@ TEST_CASE("detail binding: the outlines of a moving neck go with its fill; the s
   REQUIRE(line >= 0);
   CHECK(rig.parts[line].role == Role::Detail);
   CHECK(neck != rig.root);
-  // Binding: the neck's outline to the neck, the shell's outline to nothing (its own part).
-  const auto bound = bind_detail_points(scene, rig);
+  // Binding: the neck's outline to the neck's fill (path 1), the shell's outline to fills of the
+  // shell's part (the shell's, and the tail's where they meet: it holds as the shell does).
+  const auto bound = bind_to_hosts(scene, rig);
   REQUIRE(bound[4].size() == scene.paths[4].subpaths[0].points.size());
-  for (int b : bound[4]) CHECK(b == neck);
-  CHECK(bound[3].empty());
+  for (int b : bound[4]) CHECK(b == 1);
+  REQUIRE(bound[3].size() == scene.paths[3].subpaths[0].points.size());
+  for (int b : bound[3]) CHECK(rig.part_of_path[b] == rig.part_of_path[0]);
 
   const MotionPlan plan = plan_from_steps(parse_explicit_plan("nod:" + rig.parts[neck].name), rig, 1);
   const int F = 9;

@@ -398,6 +398,25 @@ std::vector<Affine> world_transforms(const Rig& rig, const std::vector<Affine>& 
   return world;
 }
 
+// Per path: the plan moves it apart from the figure as a whole (detail_binding.h's `moves`): a
+// located part's or a silhouette limb's own paths, or the paths of a part an action names and of
+// what hangs from it. Whole-figure motions and a silhouette's bends of every path move nothing
+// apart: they move every point by where it is.
+std::vector<char> moved_apart(const Scene& scene, const Rig& rig, const MotionPlan& plan) {
+  std::vector<char> moves(scene.paths.size(), 0);
+  for (const auto& a : plan.actions) {
+    if (a.target == Target::Repeated || a.parts.empty() || a.primitive == Primitive::Spin) continue;
+    if (a.silhouette) {
+      for (int p : a.lobe_paths) moves[static_cast<size_t>(p)] = 1;
+      continue;
+    }
+    for (size_t pi = 0; pi < scene.paths.size() && pi < rig.part_of_path.size(); ++pi)
+      for (int p : a.parts)
+        if (rig.part_of_path[pi] >= 0 && part_under(rig, rig.part_of_path[pi], p)) moves[pi] = 1;
+  }
+  return moves;
+}
+
 }  // namespace
 
 std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames) {
@@ -446,16 +465,12 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     if (a.primitive == Primitive::Spin)
       for (int p : a.parts) spinning[p] = 1;
   const WheelLoads loads = wheel_loads(rig, spinning);
-  // Outlines and shading ride on the fill they are drawn on (detail_binding.h), unless their
-  // own part moves its own way: a spoke turns with its wheel, not with the cabin at its end.
-  std::vector<std::vector<int>> rides_on = bind_detail_points(scene, rig);
-  std::vector<char> own_motion(G, 0);
-  for (const auto& a : plan.actions)
-    for (int p : a.parts) own_motion[p] = 1;
-  for (size_t pi = 0; pi < rides_on.size(); ++pi) {
-    const int g = rig.part_of_path[pi];
-    if (g >= 0 && (own_motion[g] || loads.turns_with[g] >= 0 || loads.rides[g] >= 0)) rides_on[pi].clear();
-  }
+  // Line art moves as the fill it is drawn on, and a still fill as the moving line tracing it
+  // (detail_binding.h): every motion below is applied to a point as its host path's. Parts
+  // turning their own way (a wheel, what turns with it or rides on it) keep to themselves.
+  std::vector<char> fixed(G, 0);
+  for (int g = 0; g < G; ++g) fixed[g] = spinning[g] || loads.turns_with[g] >= 0 || loads.rides[g] >= 0;
+  const std::vector<std::vector<int>> rides_on = bind_to_hosts(scene, rig, moved_apart(scene, rig, plan), fixed);
 
   std::vector<Vec2> out;
   out.reserve(static_cast<size_t>(frames) * (scene.segment_count() * 3 + scene.paths.size() * 2));
@@ -497,9 +512,12 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         // The element's own motion (falls, twinkles), one phase per element.
         const Affine elem = e >= 0 ? element_motion(scene, plan, e, element_box[e], t, W, H) : Affine();
         for (Vec2 q : scene.paths[pi].subpaths[si].points) {
-          // The part whose motion the point takes: its path's, or the one it is drawn on.
+          // The path whose motion the point takes: its own, or the one it is drawn on.
           const int rides = rides_on[pi].empty() ? -1 : rides_on[pi][point];
-          const int by = rides >= 0 ? rides : g;
+          const size_t src = rides >= 0 ? static_cast<size_t>(rides) : pi;
+          const int by = rig.part_of_path[src];
+          const bool bg = src == pi ? background
+                                    : (by >= 0 && (rig.parts[by].role == Role::Background || held[by])) || (src < ground.size() && ground[src]);
           q = elem.apply(q);
           if (!free_particle) {
             for (const auto& a : plan.actions) {
@@ -511,29 +529,29 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
                 // box); what hangs below (legs under a waving torso) keeps its shape and
                 // follows the rig. A wheel (and what turns with it) keeps to its own frame: a
                 // pedalling leg's bend bent a sketched bicycle's wheels with it.
-                if (g >= 0 && g != a.parts[0] && (spins[g] || loads.turns_with[g] >= 0)) continue;
+                if (by >= 0 && by != a.parts[0] && (spins[by] || loads.turns_with[by] >= 0)) continue;
                 const RigBox& hb = rig.parts[a.parts[0]].box;
-                const Vec2 gc = g >= 0 ? rig.parts[g].box.centre() : Vec2{};
+                const Vec2 gc = by >= 0 ? rig.parts[by].box.centre() : Vec2{};
                 // Limbs of the whole silhouette: whatever lies in them bends with them (the
                 // outline drawn over a tail's fill), whichever part it belongs to.
                 if (a.silhouette) {
-                  if (!background && (a.lobe_paths.empty() || std::binary_search(a.lobe_paths.begin(), a.lobe_paths.end(), static_cast<int>(pi))))
+                  if (!bg && (a.lobe_paths.empty() || std::binary_search(a.lobe_paths.begin(), a.lobe_paths.end(), static_cast<int>(src))))
                     q = bend_region(a, amp, t, hb, q);
-                } else if (g == a.parts[0] || (g >= 0 && under(g, a.parts[0]) && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y <= hb.y1))
+                } else if (by == a.parts[0] || (by >= 0 && under(by, a.parts[0]) && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y <= hb.y1))
                   q = bend_region(a, amp, t, hb, q);
-                else if (g >= 0 && under(g, a.parts[0]) && (gc.y <= hb.y1 || std::fabs(gc.x - hb.centre().x) > 0.25 * hb.w()))
-                  q = carried_by_bend(a, amp, t, hb, rig.parts[g].pivot, q);
+                else if (by >= 0 && under(by, a.parts[0]) && (gc.y <= hb.y1 || std::fabs(gc.x - hb.centre().x) > 0.25 * hb.w()))
+                  q = carried_by_bend(a, amp, t, hb, rig.parts[by].pivot, q);
               } else if (a.parts.empty()) {
-                if (!background) q = a.primitive == Primitive::Sway ? sway_lean(a, amp, t, rig.figure, q) : deform(a, amp, t, rig.figure, q);
+                if (!bg) q = a.primitive == Primitive::Sway ? sway_lean(a, amp, t, rig.figure, q) : deform(a, amp, t, rig.figure, q);
               } else {
                 for (int p : a.parts)
                   if (by >= 0 && under(by, p)) q = deform(a, amp, t, reach[p], q);
               }
             }
             // A point on a fill that holds still (a pole, the ground) holds still with it.
-            if (!(rides >= 0 && held[rides])) {
+            if (!(src != pi && by >= 0 && held[by])) {
               if (by >= 0) q = world[by].apply(q);
-              if (!background) q = whole.apply(q);
+              if (!bg) q = whole.apply(q);
             }
           }
           ++point;
