@@ -4,6 +4,8 @@
 // (a backdrop stays still unless the prompt asks).
 #pragma once
 
+#include "svgmotion/scene.h"
+
 namespace svgm {
 
 // A box covering at least this share of the canvas may be a backdrop; chosen so that a figure
@@ -23,6 +25,14 @@ inline bool is_backdrop(double x0, double y0, double x1, double y1, double paint
   const double tx = kBackdropEdge * width, ty = kBackdropEdge * height;
   const int edges = (x0 <= tx) + (y0 <= ty) + (x1 >= width - tx) + (y1 >= height - ty);
   return (x1 - x0) * (y1 - y0) >= kBackdropArea * width * height && edges >= 2 && paint_position < kBackdropEarly;
+}
+
+// The same on `scene`'s canvas, judged on the drawing's own canvas: a drawing given room to move
+// (Scene::room) keeps its backdrop at the edges of the canvas it was drawn on, the room's
+// middle, not at the larger canvas's.
+inline bool is_backdrop(const Scene& scene, double x0, double y0, double x1, double y1, double paint_position) {
+  const double f = 1 + 2 * scene.room, ox = scene.room * scene.width / f, oy = scene.room * scene.height / f;
+  return is_backdrop(x0 - ox, y0 - oy, x1 - ox, y1 - oy, paint_position, scene.width / f, scene.height / f);
 }
 
 }  // namespace svgm
