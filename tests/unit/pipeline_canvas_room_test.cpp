@@ -68,9 +68,9 @@ TEST_CASE("canvas room: a backdrop of the drawing's own canvas is still a backdr
   const Scene roomy = read(give_canvas_room(doc, "t.svg", read(doc), 0.15));
   REQUIRE(roomy.room == doctest::Approx(0.15));
   const double o = 0.15 * 128;  // the drawing's canvas starts here on the larger one
-  CHECK(is_backdrop(roomy, 4 + o, 4 + o, 124 + o, 94 + o, 0.0));
+  CHECK(is_backdrop(roomy, {0}, 4 + o, 4 + o, 124 + o, 94 + o, 0.0));
   CHECK_FALSE(is_backdrop(4 + o, 4 + o, 124 + o, 94 + o, 0.0, roomy.width, roomy.height));  // the larger canvas's edges
-  CHECK_FALSE(is_backdrop(roomy, 50 + o, 50 + o, 70 + o, 100 + o, 0.25));  // the figure
+  CHECK_FALSE(is_backdrop(roomy, {1}, 50 + o, 50 + o, 70 + o, 100 + o, 0.25));  // the figure
 }
 
 TEST_CASE("canvas room: a document without a viewBox gets one from its canvas; a percentage size is left alone") {

@@ -41,7 +41,7 @@ std::vector<char> scenery_paths(const Scene& scene) {
   for (size_t i = 0; i < n; ++i) {
     const Box& b = box[i];
     if (b.empty()) continue;
-    if (is_backdrop(scene, b.x0, b.y0, b.x1, b.y1, static_cast<double>(i) / static_cast<double>(n))) {
+    if (is_backdrop(scene, {static_cast<int>(i)}, b.x0, b.y0, b.x1, b.y1, static_cast<double>(i) / static_cast<double>(n))) {
       scene_drawn = true;
       continue;
     }
