@@ -34,8 +34,8 @@ std::string carriage_scene(bool sky) {
 // every piece drawn in one group with the rock (as a grouper may leave them).
 constexpr const char* kClimber = R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 36 36"><g>
   <path d="M0 0H20L24 36H0Z" fill="#99aab5"/>
-  <rect x="24" y="10" width="6" height="13" fill="#fa743e"/><circle cx="27" cy="6" r="3.5" fill="#ffdc5d"/>
-  <rect x="24" y="23" width="2" height="10" fill="#292f33"/><rect x="28" y="23" width="2" height="10" fill="#292f33"/>
+  <rect x="24" y="9" width="6" height="14" fill="#fa743e"/><circle cx="27" cy="6" r="3.5" fill="#ffdc5d"/>
+  <rect x="24" y="22" width="2" height="11" fill="#292f33"/><rect x="28" y="22" width="2" height="11" fill="#292f33"/>
   <path d="M24 12L20 6L21 5L25 11Z" fill="#ffdc5d"/></g></svg>)";
 
 // A fairy on a 36-unit canvas whose wings fill it: the two wings (one group, painted first)
@@ -111,7 +111,8 @@ TEST_CASE("scenery: wings filling the canvas at their tips are the figure's, not
   CHECK(scenery_paths(s) == std::vector<char>{0, 0, 0, 0});
   const Rig rig = build_rig(s, {});
   for (const RigPart& P : rig.parts) CHECK_MESSAGE(P.role != Role::Background, P.name);
-  const MotionPlan plan = plan_from_prompt(parse_prompt("the fairy flutters her wings"), rig, 1);
+  // Floating up, the whole figure moves: the wings too (as a backdrop they stayed behind).
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the fairy floats up"), rig, 1);
   const int F = 13;
   const std::vector<double> travel = test::path_travel(s, animate_plan(s, rig, plan, F), F);
   CHECK(travel[0] > 0);  // both wings
