@@ -78,9 +78,9 @@ TEST_CASE("scenery: the meadow grouped with a carriage in a scene stays while th
 TEST_CASE("scenery: the frame cuts a rock face along its sides; the climber grouped with it climbs, the rock stays") {
   const Scene s = with_room(kClimber);
   REQUIRE(s.room == doctest::Approx(kAutoRoom));
-  // The rock's outline runs along the whole left side, the top from 0 to 20 and the bottom
-  // from 0 to 24 of the drawing's own 36-unit canvas.
-  CHECK(frame_cut(s, {0}) == doctest::Approx(1 + 20.0 / 36 + 24.0 / 36).epsilon(0.01));
+  // The rock's outline runs along the whole left side (the top from 0 to 20, the bottom from 0
+  // to 24) of the drawing's own 36-unit canvas.
+  CHECK(frame_cut(s, {0}) == doctest::Approx(1).epsilon(0.01));
   CHECK(frame_cut(s, {1}) == 0);  // the climber's body
   CHECK(scenery_paths(s) == std::vector<char>{1, 0, 0, 0, 0, 0});
   const Rig rig = build_rig(s, {});
@@ -103,7 +103,7 @@ TEST_CASE("scenery: wings filling the canvas at their tips are the figure's, not
   // The box rule alone takes the wings for a backdrop: together 34 x 24 of the 36 x 36 canvas
   // (63 %), reaching the left, right and bottom edges, painted first.
   CHECK(is_backdrop(1, 11, 35, 35, 0.125, 36, 36));
-  // The frame touches them only at their tips (2.4 units of the left and right sides each,
+  // The frame touches them only at their tips (2.4 units of the left and of the right side,
   // with the outline sampled at eighths of its segments): no backdrop.
   CHECK(frame_cut(s, {0, 1}) < kBackdropCut);
   const double o = kAutoRoom * 36;  // the drawing's canvas starts here on the larger one

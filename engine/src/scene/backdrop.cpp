@@ -65,7 +65,7 @@ double frame_cut(const Scene& scene, const std::vector<int>& paths) {
   for (int side = 0; side < 4; ++side) {
     const double len = side % 2 == 0 ? H : W;
     for (auto& s : spans[side]) s = {std::clamp(s.first, 0.0, len), std::clamp(s.second, 0.0, len)};
-    cut += union_length(spans[side]) / len;
+    cut = std::max(cut, union_length(spans[side]) / len);
   }
   return cut;
 }
