@@ -6,6 +6,7 @@
 
 #include "error_of.h"
 #include "pipeline/canvas_room.h"
+#include "scene/backdrop.h"
 #include "svgmotion/svg_reader.h"
 
 using namespace svgm;
@@ -47,13 +48,29 @@ TEST_CASE("canvas room: the viewBox grows by the share on each side, width and h
   // (pugixml keeps no whitespace between the nodes outside the root; the fitter's writer does
   // not either.)
   CHECK(out == "<?xml version=\"1.0\"?><!-- mine --><svg xmlns=\"http://www.w3.org/2000/svg\" "
-               "width=\"108px\" height=\"54\" viewBox=\"-8 -9 108 54\">\n  <path d=\"M10 0h72v36z\"/>\n</svg>");
+               "width=\"108px\" height=\"54\" viewBox=\"-8 -9 108 54\" data-svgmotion-room=\"0.25\">\n  <path d=\"M10 0h72v36z\"/>\n</svg>");
   // Read back: the canvas is 1.5 times as large and the shape keeps its size and sits in the middle.
   const Scene s = read(out);
   CHECK(s.width == doctest::Approx(108));
   CHECK(s.height == doctest::Approx(54));
   CHECK(s.paths[0].subpaths[0].points[0].x == doctest::Approx(18));
   CHECK(s.paths[0].subpaths[0].points[0].y == doctest::Approx(9));
+  CHECK(s.room == doctest::Approx(0.25));
+  CHECK(read(doc).room == 0);
+}
+
+TEST_CASE("canvas room: a backdrop of the drawing's own canvas is still a backdrop once the drawing has room") {
+  // A sky over the whole 128-unit canvas, painted first, and a small figure on it: with 15 %
+  // room the sky reaches none of the larger canvas's edges, but all of the drawing's own.
+  const std::string doc = R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 128 128">
+    <rect x="4" y="4" width="120" height="90" fill="#9cf"/><rect x="50" y="60" width="20" height="40" fill="red"/>
+    <rect x="52" y="50" width="10" height="10" fill="red"/><rect x="60" y="50" width="10" height="10" fill="red"/></svg>)";
+  const Scene roomy = read(give_canvas_room(doc, "t.svg", read(doc), 0.15));
+  REQUIRE(roomy.room == doctest::Approx(0.15));
+  const double o = 0.15 * 128;  // the drawing's canvas starts here on the larger one
+  CHECK(is_backdrop(roomy, {0}, 4 + o, 4 + o, 124 + o, 94 + o, 0.0));
+  CHECK_FALSE(is_backdrop(4 + o, 4 + o, 124 + o, 94 + o, 0.0, roomy.width, roomy.height));  // the larger canvas's edges
+  CHECK_FALSE(is_backdrop(roomy, {1}, 50 + o, 50 + o, 70 + o, 100 + o, 0.25));  // the figure
 }
 
 TEST_CASE("canvas room: a document without a viewBox gets one from its canvas; a percentage size is left alone") {

@@ -128,8 +128,15 @@ struct Group {
   std::string name = {};   // what the part is, when a grouper said so (data-name, grouped_svg.h)
 };
 
+// The root attribute that says a document was given room to move (Scene::room).
+inline constexpr const char* kRoomAttribute = "data-svgmotion-room";
+
 struct Scene {
   double width = 0, height = 0;  // canvas size in pixels (CSS px)
+  // The share of the drawing's own canvas added on each side to give it room to move (the root's
+  // data-svgmotion-room, written by pipeline/canvas_room.h): its own canvas is the middle
+  // 1 / (1 + 2 room) of this one. 0 when none was given.
+  double room = 0;
   std::vector<Path> paths;       // in paint order (first is drawn first, i.e. at the bottom)
   std::vector<Group> groups;
   std::vector<std::string> warnings;  // one line each: element and what was done

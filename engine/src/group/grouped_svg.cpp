@@ -144,6 +144,8 @@ void write_grouped_svg(const fs::path& source, const Scene& scene,
   root.append_attribute("height") = number(scene.height).c_str();
   root.append_attribute("viewBox") =
       ("0 0 " + number(scene.width) + " " + number(scene.height)).c_str();
+  // The room the drawing was given is kept for the stages after (Scene::room: its backdrops).
+  if (scene.room > 0) root.append_attribute(kRoomAttribute) = number(scene.room).c_str();
 
   // The source's top-level <defs> and <style>.
   pugi::xml_document src;

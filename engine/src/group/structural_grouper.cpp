@@ -484,8 +484,8 @@ std::vector<char> find_backdrops(const Scene& scene, const std::vector<Box>& box
   const size_t n = scene.paths.size();
   std::vector<char> backdrop(n, 0);
   for (size_t i = 0; i < n; ++i)
-    backdrop[i] = is_backdrop(boxes[i].x0, boxes[i].y0, boxes[i].x1, boxes[i].y1,
-                              static_cast<double>(i) / static_cast<double>(n), scene.width, scene.height);
+    backdrop[i] = is_backdrop(scene, {static_cast<int>(i)}, boxes[i].x0, boxes[i].y0, boxes[i].x1, boxes[i].y1,
+                              static_cast<double>(i) / static_cast<double>(n));
   return backdrop;
 }
 

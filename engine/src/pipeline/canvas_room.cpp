@@ -107,6 +107,10 @@ std::string give_canvas_room(std::string_view text, std::string_view name, const
   (root.attribute("viewBox") ? root.attribute("viewBox") : root.append_attribute("viewBox")).set_value(box.c_str());
   for (const char* side : {"width", "height"})
     if (pugi::xml_attribute a = root.attribute(side)) a.set_value(scaled_length(a.value(), f).c_str());
+  // Said in the document, so a reader knows the drawing's own canvas (Scene::room): a backdrop
+  // reaches its edges, not the room's.
+  (root.attribute(kRoomAttribute) ? root.attribute(kRoomAttribute) : root.append_attribute(kRoomAttribute))
+      .set_value(number_text(share).c_str());
   std::ostringstream out;
   doc.save(out, "", pugi::format_raw | pugi::format_no_declaration, pugi::encoding_utf8);
   return out.str();

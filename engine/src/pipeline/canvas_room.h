@@ -33,7 +33,8 @@ FigureSpan figure_span(const Scene& scene);
 
 // `text`: an SVG document; `share` > 0. The same document with the root's viewBox grown by
 // `share` of its width and height on each side (a viewBox is added from the canvas size when
-// there is none) and width and height (when given in an absolute unit) by 1 + 2 share; the rest
+// there is none), width and height (when given in an absolute unit) by 1 + 2 share and the
+// share said in the root's data-svgmotion-room (svg_reader.h reads it as Scene::room); the rest
 // is kept (comments, doctype and the formatting inside the root; pugixml drops whitespace
 // between the nodes outside it). Throws svgm::Error "<name>: ..." when the
 // document has no <svg> root or an unreadable viewBox.

@@ -9,8 +9,9 @@
 //
 // Roles from geometry (canvas space, y down):
 //  - background: a backdrop (scene/backdrop.h: a large box at two canvas edges, painted
-//    early), or a part named background/sky/ground/floor. It stays still unless a prompt
-//    asks for it.
+//    early, its outline running along the canvas's edges: cut by the frame), the scenery
+//    around a scene's subject (scenery.h), or a part named background/sky/ground/floor. It
+//    stays still unless a prompt asks for it.
 //  - root: the largest central part of the figure (area times centrality).
 //  - every other part hangs from a larger part (the root for parts larger than the root): the
 //    one its box overlaps most, or the nearest. Its pivot is the centroid of its control

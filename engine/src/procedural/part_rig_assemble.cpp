@@ -179,7 +179,10 @@ bool Assembly::find_background() {
                              "mud", "grass", "road", "terrain", "field", "wall"})) {
       P.role = Role::Background;
       P.why = "named as background";
-    } else if (is_backdrop(P.box.x0, P.box.y0, P.box.x1, P.box.y1, mean_index[g] / static_cast<double>(n_paths), CW, CH)) {
+    } else if (U.scenery.count(unit_paths[g].front())) {
+      P.role = Role::Background;
+      P.why = "the scenery around the scene's subject";
+    } else if (is_backdrop(scene, unit_paths[g], P.box.x0, P.box.y0, P.box.x1, P.box.y1, mean_index[g] / static_cast<double>(n_paths))) {
       P.role = Role::Background;
       P.why = "large, at the canvas edges, painted first";
     } else {

@@ -80,6 +80,8 @@ struct Units {
   std::map<int, int> carried_by;  // a path that turns with a wheel -> the wheel's path (split_wheel_loads)
   std::map<int, int> held_by;     // the first path of hands taken from the head -> the first path of
                                   // the arm holding them (split_head_holds)
+  std::set<int> scenery;          // the first path of each part taken from a scene's subject as
+                                  // its scenery (split_scenery)
 };
 
 // The parts: the scene's groups, each split by the names of its paths where the document

@@ -9,6 +9,7 @@
 
 #include "procedural/hands_at_head.h"
 #include "procedural/part_rig_internal.h"
+#include "procedural/scenery.h"
 #include "procedural/stroke_rig.h"
 #include "procedural/wheel_riders.h"
 #include "procedural/wheel_sets.h"
@@ -35,6 +36,25 @@ constexpr double kLimbInCore = 0.5;
 // round upright, motion_plan.cpp). What is left (the stand) stays a part that holds still.
 // Kept whole, the spokes held still with the stand while the rim turned, and cabins grouped
 // with them never rode.
+// A part holding a scene's subject and scenery with it (a carriage and the meadow and rails
+// under it: scenery.h) becomes two: the subject's paths, and the scenery's as a part of its own
+// that stays with the background.
+void split_scenery(const Scene& scene, Units& U) {
+  const std::vector<char> scenery = scenery_paths(scene);
+  const size_t n = U.paths.size();
+  for (size_t u = 0; u < n; ++u) {
+    std::vector<int> subject, rest;
+    for (int pi : U.paths[u]) (scenery[static_cast<size_t>(pi)] ? rest : subject).push_back(pi);
+    if (subject.empty() || rest.empty()) continue;
+    U.paths[u] = subject;
+    U.split[u] = 1;
+    U.scenery.insert(rest.front());
+    U.paths.push_back(rest);
+    U.group.push_back(U.group[u]);
+    U.split.push_back(1);
+  }
+}
+
 void split_wheel_loads(const Scene& scene, Units& U) {
   std::vector<int> wheels(U.wheels.begin(), U.wheels.end());
   std::sort(wheels.begin(), wheels.end(), [&](int a, int b) { return path_box(scene.paths[a]).area() > path_box(scene.paths[b]).area(); });
@@ -178,6 +198,7 @@ Units units_of(const Scene& scene, const SourceNames& names) {
       unit_split.push_back(split);
     }
   }
+  split_scenery(scene, U);
   split_wheel_loads(scene, U);
   return U;
 }

@@ -22,7 +22,7 @@ std::set<int> wheel_set_paths(const Scene& scene) {
     box[i] = path_box(scene.paths[i]);
     if (box[i].empty()) continue;
     const double pos = n > 1 ? static_cast<double>(i) / static_cast<double>(n) : 0;
-    if (!is_backdrop(box[i].x0, box[i].y0, box[i].x1, box[i].y1, pos, scene.width, scene.height)) drawing.add(box[i]);
+    if (!is_backdrop(scene, {static_cast<int>(i)}, box[i].x0, box[i].y0, box[i].x1, box[i].y1, pos)) drawing.add(box[i]);
   }
   if (drawing.empty() || drawing.w() <= drawing.h()) return {};
   const double min_area = kSetWheelArea * scene.width * scene.height;

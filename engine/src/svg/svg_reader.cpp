@@ -256,6 +256,11 @@ Scene Reader::read(std::string_view text) {
   if (!(w > 0) || !(h > 0)) fail("width and height must be positive");
   scene_.width = w;
   scene_.height = h;
+  {
+    svg::Cursor c{root.attribute(kRoomAttribute).value()};
+    const auto room = c.number();
+    if (room && !c.out_of_range && *room > 0 && *room <= 0.5) scene_.room = *room;
+  }
   Viewport vp;
   const Affine view = viewbox_transform(root, w, h, &vp);
   collect_styles(root);
