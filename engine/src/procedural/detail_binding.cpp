@@ -29,12 +29,6 @@ struct Shape {
   std::vector<std::vector<Vec2>> lines;  // the curve, sampled, per subpath
 };
 
-double shoelace(const std::vector<Vec2>& p) {
-  double s = 0;
-  for (size_t i = 0; i < p.size(); ++i) s += p[i].x * p[(i + 1) % p.size()].y - p[(i + 1) % p.size()].x * p[i].y;
-  return 0.5 * s;
-}
-
 // Nonzero winding of the rings about q.
 bool inside(const Shape& f, Vec2 q) {
   int wind = 0;
@@ -153,6 +147,12 @@ std::vector<std::vector<int>> bind_to_hosts(const Scene& scene, const Rig& rig, 
     for (size_t o = h + 1; o < N; ++o) {
       const Shape& O = shapes[o];
       if (!moved(o) || !O.line_art || !O.stroked || O.part == shapes[h].part) continue;
+      // A line whose band does not reach the fill's box traces none of it (scenes hold thousands
+      // of paths: the pairs are many, the overlapping ones few).
+      const RigBox& hb = shapes[h].box;
+      if (hb.empty() || O.box.empty() || O.box.x0 - O.width > hb.x1 || O.box.x1 + O.width < hb.x0 ||
+          O.box.y0 - O.width > hb.y1 || O.box.y1 + O.width < hb.y0)
+        continue;
       const double share = traced_share(scene.paths[h], shapes[h], O);
       if (share >= best) best = share, lead[h] = static_cast<int>(o);
     }

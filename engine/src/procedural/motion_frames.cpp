@@ -472,6 +472,13 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   for (int g = 0; g < G; ++g) fixed[g] = spinning[g] || loads.turns_with[g] >= 0 || loads.rides[g] >= 0;
   const std::vector<std::vector<int>> rides_on = bind_to_hosts(scene, rig, moved_apart(scene, rig, plan), fixed);
 
+  // Whether path p stays where it is under the whole figure's motions: a background, a held
+  // part's, or the ground's.
+  auto stays = [&](size_t p) {
+    const int g = rig.part_of_path[p];
+    return (g >= 0 && (rig.parts[g].role == Role::Background || held[g])) || (p < ground.size() && ground[p]);
+  };
+
   std::vector<Vec2> out;
   out.reserve(static_cast<size_t>(frames) * (scene.segment_count() * 3 + scene.paths.size() * 2));
   for (int f = 0; f < frames; ++f) {
@@ -503,8 +510,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     }
     const std::vector<Affine> world = world_transforms(rig, local, root_turn, spin, planted, loads);
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
-      const int g = rig.part_of_path[pi];
-      const bool background = (g >= 0 && (rig.parts[g].role == Role::Background || held[g])) || (pi < ground.size() && ground[pi]);
+      const bool background = stays(pi);
       size_t point = 0;  // the path's control point, counted over its subpaths (rides_on)
       for (size_t si = 0; si < scene.paths[pi].subpaths.size(); ++si) {
         const int e = element_of[pi][si];
@@ -516,8 +522,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
           const int rides = rides_on[pi].empty() ? -1 : rides_on[pi][point];
           const size_t src = rides >= 0 ? static_cast<size_t>(rides) : pi;
           const int by = rig.part_of_path[src];
-          const bool bg = src == pi ? background
-                                    : (by >= 0 && (rig.parts[by].role == Role::Background || held[by])) || (src < ground.size() && ground[src]);
+          const bool bg = src == pi ? background : stays(src);
           q = elem.apply(q);
           if (!free_particle) {
             for (const auto& a : plan.actions) {

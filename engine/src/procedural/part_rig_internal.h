@@ -26,16 +26,6 @@ bool is_generic_word(const std::string& w);
 bool meaningful(const std::string& name);
 bool has_word(const std::vector<std::string>& words, std::initializer_list<const char*> any);
 
-inline double shoelace(const std::vector<Vec2>& p) {
-  double s = 0;
-  for (size_t i = 0; i < p.size(); ++i) {
-    const Vec2& a = p[i];
-    const Vec2& b = p[(i + 1) % p.size()];
-    s += a.x * b.y - b.x * a.y;
-  }
-  return 0.5 * s;
-}
-
 inline RigBox path_box(const Path& p) {
   RigBox b;
   for (const auto& sp : p.subpaths)
