@@ -9,6 +9,7 @@
 #include <fstream>
 #include <string>
 
+#include "export/lottie_player.h"
 #include "fit/output/tolerance_choice.h"
 #include "temp_dir.h"
 
@@ -27,6 +28,22 @@ void write_square(const fs::path& file, double shift) {
                 "<rect x=\"10\" y=\"20\" width=\"20\" height=\"20\" fill=\"#eeeeee\"><animateTransform "
                 "attributeName=\"transform\" type=\"translate\" values=\"%g 0;%g 0\" dur=\"2s\" "
                 "repeatCount=\"indefinite\"/></rect></svg>",
+                shift, 20 + shift);
+  std::ofstream(file) << text;
+}
+
+// The same square as a Lottie file (60 frames at 30 fps): its layer's position keyed linearly
+// from `shift` to 20 + `shift` units.
+void write_lottie_square(const fs::path& file, double shift) {
+  char text[1024];
+  std::snprintf(text, sizeof text,
+                "{\"v\":\"5.7.0\",\"fr\":30,\"ip\":0,\"op\":60,\"w\":64,\"h\":64,\"layers\":[{\"ty\":4,"
+                "\"ind\":1,\"ip\":0,\"op\":60,\"st\":0,\"ks\":{\"o\":{\"a\":0,\"k\":100},\"r\":{\"a\":0,\"k\":0},"
+                "\"p\":{\"a\":1,\"k\":[{\"t\":0,\"s\":[%g,0,0],\"o\":{\"x\":[0],\"y\":[0]},\"i\":{\"x\":[1],"
+                "\"y\":[1]}},{\"t\":60,\"s\":[%g,0,0]}]},\"a\":{\"a\":0,\"k\":[0,0,0]},\"s\":{\"a\":0,\"k\":[100,"
+                "100,100]}},\"shapes\":[{\"ty\":\"rc\",\"p\":{\"a\":0,\"k\":[20,30]},\"s\":{\"a\":0,\"k\":[20,20]},"
+                "\"r\":{\"a\":0,\"k\":0}},{\"ty\":\"fl\",\"c\":{\"a\":0,\"k\":[0.93333,0.93333,0.93333,1]},"
+                "\"o\":{\"a\":0,\"k\":100}}]}]}",
                 shift, 20 + shift);
   std::ofstream(file) << text;
 }
@@ -90,6 +107,43 @@ TEST_CASE("compact tolerance: the residual shapes' tolerance loosened at the cho
       [](const fs::path& f, double tolerance_1024) { write_square(f, tolerance_1024 / 4); });
   CHECK(plain.residual_scale == 1);
   CHECK(plain.trials.size() == 4);
+  CHECK(fs::is_empty(dir.path));
+}
+
+TEST_CASE("compact tolerance of animation.json: measured in the Lottie player, a file rewritten under one name drawn anew") {
+  if (!LottiePlayer::available()) {
+    MESSAGE("built without librlottie: animation.json is written at lottie_tolerance, nothing to measure");
+    CHECK(lottie_drawer() == nullptr);
+    return;
+  }
+  TempDir dir;
+  // The player draws what the file holds now: the same name written twice, two pictures (rlottie
+  // caches models by key; a path as the key would hand back the first).
+  const fs::path probe = dir.path / "probe.json";
+  std::string why;
+  write_lottie_square(probe, 0);
+  const RgbaImage before = LottiePlayer::open(probe, why)->draw(0, 64, 64);
+  write_lottie_square(probe, 4);
+  const auto player = LottiePlayer::open(probe, why);
+  REQUIRE(player);
+  CHECK(player->total_frames() == 60);
+  const RgbaImage after = player->draw(0, 64, 64);
+  // Pixel (12, 30): inside the square at shift 0 (x from 10 to 30), outside it at shift 4.
+  const size_t at = 4 * (30 * 64 + 12);
+  CHECK(before.rgba[at + 3] == 255);
+  CHECK(std::abs(before.rgba[at] - 238) <= 1);  // 0.93333 of 255, rounded or cut
+  CHECK(after.rgba[at + 3] == 0);
+  CHECK(over_white(after).rgba[at] == 255);
+  fs::remove(probe);
+  // The same search as animation.svg's, on the player's pictures: the square's edges, drawn by
+  // rlottie's own anti-aliasing, give what our render gives within the margin: 2 holds, 3 does not.
+  const ToleranceChoice c = choose_compact_tolerance(
+      dir.path / "animation.json", [](const fs::path& f) { write_lottie_square(f, 0); },
+      [](const fs::path& f, double tolerance_1024) { write_lottie_square(f, tolerance_1024 / 4); }, nullptr,
+      lottie_drawer());
+  CHECK(c.tolerance_1024 == 2);
+  CHECK(c.worst_db >= kCompactTargetDb + kCompactMarginDb);
+  CHECK(c.worst_db < 48);
   CHECK(fs::is_empty(dir.path));
 }
 }  // TEST_SUITE

@@ -105,11 +105,20 @@ std::string tolerance_text(const ExportOutcome& o) {
   else if (o.tolerance_db == 0) std::snprintf(text, sizeof text, "tolerance %g px at 1024 (given)", o.tolerance_1024);
   else if (std::isinf(o.tolerance_db)) std::snprintf(text, sizeof text, "tolerance %g px at 1024 (renders as the full export)", o.tolerance_1024);
   else if (o.residual_scale != 1)
-    std::snprintf(text, sizeof text, "tolerance %g px at 1024, residual shapes %g x (worst %.1f dB of the full export; animation.json at %g)",
-                  o.tolerance_1024, o.residual_scale, o.tolerance_db, lottie_tolerance(o.tolerance_1024));
-  else std::snprintf(text, sizeof text, "tolerance %g px at 1024 (worst %.1f dB of the full export; animation.json at %g)",
-                     o.tolerance_1024, o.tolerance_db, lottie_tolerance(o.tolerance_1024));
-  return text;
+    std::snprintf(text, sizeof text, "tolerance %g px at 1024, residual shapes %g x (worst %.1f dB of the full export)",
+                  o.tolerance_1024, o.residual_scale, o.tolerance_db);
+  else std::snprintf(text, sizeof text, "tolerance %g px at 1024 (worst %.1f dB of the full export)", o.tolerance_1024,
+                     o.tolerance_db);
+  std::string line = text;
+  if (o.lottie_measured && o.lottie_db < kCompactTargetDb + kCompactMarginDb)
+    std::snprintf(text, sizeof text, "; animation.json in full (worst %.1f dB in librlottie)", o.lottie_db);
+  else if (o.lottie_measured)
+    std::snprintf(text, sizeof text, "; animation.json %g px, residual %g x (worst %.1f dB in librlottie)",
+                  o.lottie_tolerance_1024, o.lottie_residual_scale, o.lottie_db);
+  else if (o.tolerance_db != 0 && !o.full_fallback)
+    std::snprintf(text, sizeof text, "; animation.json at %g", lottie_tolerance(o.tolerance_1024));
+  else text[0] = 0;
+  return line + text;
 }
 
 ExportOutcome write_animation_files(const FitResult& result, const ExportSettings& settings, const ExportDocument& doc,
@@ -192,25 +201,54 @@ ExportOutcome write_animation_files(const FitResult& result, const ExportSetting
     write_file_atomic(anim, with_frame_rate(text, anim.string(), result.fps));
   }
   if (settings.lottie) {
+    const fs::path json = fs::path(anim).replace_extension(".json");
     LottieOptions lottie;
     lottie.fps = result.fps;
     lottie.decimals = settings.decimals >= 0 || compact ? settings.decimals : kDefaultDecimals;
     lottie.compact = compact;
-    // Measured: a step tighter than animation.svg's (tolerance_choice.h); given: as given.
-    lottie.tolerance_px = outcome.tolerance_db != 0 ? lottie_tolerance(outcome.tolerance_1024) * px_per_1024 : tolerance_px;
-    // Its residual shapes no looser than animation.svg's transform tolerance: the residual scale
-    // is measured on our render of animation.svg and does not carry over to librlottie (the
-    // bundled man: animation.svg held 46.8 dB at 6 x, animation.json fell to 43.7 dB at 6 x and
-    // 44.7 at 3 x of its own tighter tolerance, 45.9 at 2 x).
-    lottie.residual_scale = outcome.tolerance_db != 0
-                                ? std::min(outcome.residual_scale, outcome.tolerance_1024 / lottie.tolerance_px * px_per_1024)
-                                : outcome.residual_scale;
+    lottie.tolerance_px = tolerance_px;
+    lottie.residual_scale = outcome.residual_scale;
     lottie.name = doc.into.filename().string();
     std::error_code ec;
     if (fs::exists(anim, ec)) lottie.exported_svg = anim;  // gradients follow their shapes as animation.svg draws them
+    const bool measured = settings.compact && !(settings.tolerance_1024 > 0);
+    if (const DrawerMaker draw = measured ? lottie_drawer() : nullptr) {
+      // Measured on its own, in a Lottie player (tolerance_choice.h).
+      auto write_json = [&](const fs::path& file, bool compact_json, double tolerance_1024, double scale) {
+        LottieOptions o = lottie;
+        o.compact = compact_json;
+        o.decimals = compact_json ? settings.decimals : kDefaultDecimals;
+        o.tolerance_px = tolerance_1024 * px_per_1024;
+        o.residual_scale = scale;
+        write_lottie(file, doc.scene, plan, written.points, wt, o, map);
+      };
+      const ToleranceChoice choice = choose_compact_tolerance(
+          json, [&](const fs::path& file) { write_json(file, false, 0, 1); },
+          [&](const fs::path& file, double tolerance_1024) { write_json(file, true, tolerance_1024, 1); },
+          [&](const fs::path& file, double tolerance_1024, double scale) { write_json(file, true, tolerance_1024, scale); },
+          draw);
+      for (const ToleranceTrial& t : choice.trials)
+        log::debug("export: animation.json at %g px at 1024 (residual %g x): worst %.2f dB of the full export in librlottie",
+                   t.tolerance_1024, t.residual_scale, t.worst_db);
+      outcome.lottie_measured = true;
+      outcome.lottie_tolerance_1024 = choice.tolerance_1024;
+      outcome.lottie_residual_scale = choice.residual_scale;
+      outcome.lottie_db = choice.worst_db;
+      lottie.compact = choice.worst_db >= kCompactTargetDb + kCompactMarginDb;
+      lottie.decimals = lottie.compact ? settings.decimals : kDefaultDecimals;
+      lottie.tolerance_px = choice.tolerance_1024 * px_per_1024;
+      lottie.residual_scale = choice.residual_scale;
+    } else if (outcome.tolerance_db != 0) {
+      // No player to measure it: a fixed step tighter than animation.svg's (tolerance_choice.h),
+      // its residual shapes no looser than animation.svg's transform tolerance: the residual scale
+      // is measured on our render of animation.svg and does not carry over to librlottie (the
+      // bundled man: animation.svg held 46.8 dB at 6 x, animation.json fell to 43.7 dB at 6 x and
+      // 44.7 at 3 x of its own tighter tolerance, 45.9 at 2 x).
+      lottie.tolerance_px = lottie_tolerance(outcome.tolerance_1024) * px_per_1024;
+      lottie.residual_scale = std::min(outcome.residual_scale, outcome.tolerance_1024 / lottie.tolerance_px * px_per_1024);
+    }
     lottie.dotlottie = fs::path(anim).replace_extension(".lottie");
-    for (const std::string& w : write_lottie(fs::path(anim).replace_extension(".json"), doc.scene, plan, written.points, wt,
-                                             lottie, map))
+    for (const std::string& w : write_lottie(json, doc.scene, plan, written.points, wt, lottie, map))
       outcome.warnings.push_back(w);
   }
   return outcome;

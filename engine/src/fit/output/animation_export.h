@@ -75,6 +75,10 @@ struct ExportOutcome {
   double tolerance_db = 0;    // measured: the worst PSNR of the compact SVG against the full one
   double residual_scale = 1;  // measured: the residual shapes' tolerance, a multiple of it (kResidualScales)
   bool full_fallback = false; // measured, and no tolerance held the target: written in full
+  // animation.json measured on its own in a Lottie player (tolerance_choice.h: lottie_drawer):
+  bool lottie_measured = false;
+  double lottie_tolerance_1024 = 0, lottie_residual_scale = 1;
+  double lottie_db = 0;  // the worst PSNR of the compact JSON against the full one (below the floor: written in full)
   std::filesystem::path svg;  // the animation written (animation.svg or animation.failed.svg)
 };
 // "tolerance 1.5 px at 1024 (worst 46.2 dB of the full export)", or "(given)" when it was.

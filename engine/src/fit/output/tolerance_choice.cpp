@@ -11,6 +11,7 @@
 #include <string>
 
 #include "export/compact_motion.h"
+#include "export/lottie_player.h"
 #include "export/smil_clock.h"
 #include "opencl/runtime.h"
 #include "raster/render_image.h"
@@ -62,55 +63,96 @@ std::string read_text(const fs::path& file) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// Renders an animated SVG at the sampled times (opaque, over white).
-class Sampler {
+// animation.svg at the sampled times of its SMIL clock (opaque, over white).
+class SvgDrawer : public ExportDrawer {
  public:
-  Sampler(ClRuntime& rt, const std::string& text, const std::string& name) : rt_(rt) {
-    const SmilClock clock = smil_clock(text, name);
+  explicit SvgDrawer(const fs::path& full) : rt_("auto") {
+    const std::string text = read_text(full);
+    const SmilClock clock = smil_clock(text, full.string());
     const double pass = clock.duration_s > 0 ? clock.duration_s : 1;
     for (int k = 0; k < kToleranceTimes; ++k) times_.push_back((k + 0.5) * pass / kToleranceTimes);
-    const Scene first = read_svg_string(text, name);
+    const Scene first = read_svg_string(text, full.string());
     const double larger = std::max(first.width, first.height);
     width_ = std::max(1, static_cast<int>(std::lround(kToleranceRenderPx * (larger > 0 ? first.width / larger : 1))));
   }
-  size_t count() const { return times_.size(); }
-  RgbaImage render(const std::string& text, const std::string& name, size_t k) {
+  size_t count() const override { return times_.size(); }
+  void load(const fs::path& file) override { text_ = read_text(file), name_ = file.string(); }
+  RgbaImage draw(size_t k) override {
     SvgReadLimits at;
     at.animation_time = times_[k];
-    return render_image(rt_, read_svg_string(text, name, at), width_, false);
+    return render_image(rt_, read_svg_string(text_, name_, at), width_, false);
   }
 
  private:
-  ClRuntime& rt_;
+  ClRuntime rt_;
   std::vector<double> times_;
   int width_ = 1;
+  std::string text_, name_;  // the file loaded
+};
+
+// animation.json at whole frames of the player's timeline (opaque, over white).
+class LottieDrawer : public ExportDrawer {
+ public:
+  explicit LottieDrawer(const fs::path& full) {
+    const auto player = open(full);
+    for (int k = 0; k < kToleranceTimes; ++k)
+      frames_.push_back(static_cast<size_t>((k + 0.5) / kToleranceTimes * static_cast<double>(player->total_frames())));
+    const double w = static_cast<double>(player->width()), h = static_cast<double>(player->height());
+    const double larger = std::max(w, h);
+    width_ = std::max(1, static_cast<int>(std::lround(kToleranceRenderPx * w / larger)));
+    height_ = std::max(1, static_cast<int>(std::lround(kToleranceRenderPx * h / larger)));
+  }
+  size_t count() const override { return frames_.size(); }
+  void load(const fs::path& file) override { player_ = open(file); }
+  RgbaImage draw(size_t k) override { return over_white(player_->draw(frames_[k], width_, height_)); }
+
+ private:
+  static std::unique_ptr<LottiePlayer> open(const fs::path& file) {
+    std::string why;
+    auto player = LottiePlayer::open(file, why);
+    if (!player) throw Error(why);
+    return player;
+  }
+  std::vector<size_t> frames_;
+  int width_ = 1, height_ = 1;
+  std::unique_ptr<LottiePlayer> player_;  // the file loaded
 };
 
 }  // namespace
 
+DrawerMaker svg_drawer() {
+  return [](const fs::path& full) -> std::unique_ptr<ExportDrawer> { return std::make_unique<SvgDrawer>(full); };
+}
+
+DrawerMaker lottie_drawer() {
+  if (!LottiePlayer::available()) return nullptr;
+  return [](const fs::path& full) -> std::unique_ptr<ExportDrawer> { return std::make_unique<LottieDrawer>(full); };
+}
+
 ToleranceChoice choose_compact_tolerance(const fs::path& beside, const std::function<void(const fs::path&)>& write_full,
                                          const std::function<void(const fs::path&, double)>& write_compact,
-                                         const std::function<void(const fs::path&, double, double)>& write_residual) {
+                                         const std::function<void(const fs::path&, double, double)>& write_residual,
+                                         const DrawerMaker& draw) {
   const fs::path dir = beside.parent_path().empty() ? fs::path(".") : beside.parent_path();
-  Candidate full{temporary_path(dir / "animation.full.svg")};
+  const std::string ext = beside.extension().string();
+  Candidate full{temporary_path(dir / ("animation.full" + ext))};
   write_full(full.path);
-  const std::string full_text = read_text(full.path);
-  ClRuntime rt("auto");
-  Sampler sampler(rt, full_text, full.path.string());
+  const std::unique_ptr<ExportDrawer> drawer = draw(full.path);
   std::vector<RgbaImage> reference;
-  for (size_t k = 0; k < sampler.count(); ++k) reference.push_back(sampler.render(full_text, full.path.string(), k));
+  drawer->load(full.path);
+  for (size_t k = 0; k < drawer->count(); ++k) reference.push_back(drawer->draw(k));
 
   ToleranceChoice choice;
   const double floor_db = kCompactTargetDb + kCompactMarginDb;
   // The worst PSNR of the compact export at ladder step i, stopped at the first time below floor.
   auto trial = [&](size_t i, double scale = 1) {
-    Candidate c{temporary_path(dir / "animation.compact.svg")};
+    Candidate c{temporary_path(dir / ("animation.compact" + ext))};
     if (scale == 1) write_compact(c.path, kToleranceLadder[i]);
     else write_residual(c.path, kToleranceLadder[i], scale);
-    const std::string text = read_text(c.path);
     ToleranceTrial t{kToleranceLadder[i], std::numeric_limits<double>::infinity(), scale};
-    for (size_t k = 0; k < sampler.count() && t.worst_db >= floor_db; ++k)
-      t.worst_db = std::min(t.worst_db, render_psnr(reference[k], sampler.render(text, c.path.string(), k)));
+    drawer->load(c.path);
+    for (size_t k = 0; k < drawer->count() && t.worst_db >= floor_db; ++k)
+      t.worst_db = std::min(t.worst_db, render_psnr(reference[k], drawer->draw(k)));
     choice.trials.push_back(t);
     return t.worst_db;
   };

@@ -6,16 +6,20 @@
 // 34 kB above the target; at 1.5 it falls to 44.8 dB) or too loose for a drawing with thin, fast parts (the bench
 // kite and bug drop to 40-42 dB at one pixel).
 //
-// The search renders with the engine's own renderer (raster/render_image.h); candidates are
-// written to temporary files beside the animation and removed. The engine draws no Lottie, so
-// animation.json is written two ladder steps tighter than the tolerance found (lottie_tolerance):
-// at the same tolerance it keeps the skew in its residual shapes and rounds in canvas pixels,
-// and librlottie drew the man's 3-5 dB below animation.svg (43.0 dB at 1.25 px against the full
-// JSON, 47.8 dB at 1.1 px; docs/commands.md).
+// animation.svg is drawn by the engine's own renderer (raster/render_image.h), animation.json by
+// the Lottie player the build links (librlottie, export/lottie_player.h), each file measured on
+// its own: the same tolerance draws differently in the two (animation.json keeps the skew in its
+// residual shapes and rounds in canvas pixels; on the bundled man's fit of session 41,
+// animation.svg at 1 px held 46.7 dB and animation.json at 1 px 46.4 dB, at 1.25 px 44.2 and
+// 44.7 dB). Candidates are written to temporary files beside the animation and removed. Without
+// a player animation.json is written two ladder steps tighter than animation.svg's tolerance
+// (lottie_tolerance), which held on every drawing measured but wrote the man's 58 kB where its
+// own measure writes 34 kB.
 #pragma once
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "svgmotion/png_io.h"
@@ -45,21 +49,41 @@ struct ToleranceChoice {
   std::vector<ToleranceTrial> trials;  // in the order tried
 };
 
+// Draws one kind of export file (animation.svg, animation.json) at the measure's sampled times:
+// kToleranceTimes times (k + 0.5) / kToleranceTimes of one pass, kToleranceRenderPx on the
+// larger side, opaque over white. Made from the full export, whose clock and size it takes.
+class ExportDrawer {
+ public:
+  virtual ~ExportDrawer() = default;
+  virtual size_t count() const = 0;
+  virtual void load(const std::filesystem::path& file) = 0;  // the file drawn next
+  virtual RgbaImage draw(size_t k) = 0;                       // at the k-th time (k < count())
+};
+using DrawerMaker = std::function<std::unique_ptr<ExportDrawer>(const std::filesystem::path& full)>;
+// animation.svg by the engine's own renderer (raster/render_image.h), at the times of its SMIL
+// clock.
+DrawerMaker svg_drawer();
+// animation.json by the Lottie player (export/lottie_player.h) at whole frames
+// floor((k + 0.5) / kToleranceTimes * frames), as tests/bench/compact_psnr.sh draws it; nullptr
+// when this build has no player.
+DrawerMaker lottie_drawer();
+
 // `write_full(path)` writes the full export, `write_compact(path, tolerance_1024)` a compact one,
-// both as animation.svg would be written; `beside` names the animation (the temporary files go
-// next to it). Binary search over kToleranceLadder (the error grows with the tolerance): three
-// or four compact candidates, each stopped at its first time below target. Then, when
-// `write_residual(path, tolerance_1024, scale)` is given and a tolerance held, the residual
-// shapes' tolerance is loosened at the chosen one along kResidualScales while the floor holds
-// (one or two more candidates: the residual moves few pixels, the transform the whole part).
-// Throws svgm::Error when a candidate cannot be written or read back.
+// both as the file `beside` names would be written (the temporary candidates go next to it, with
+// its extension), and `draw` draws them. Binary search over kToleranceLadder (the error grows
+// with the tolerance): three or four compact candidates, each stopped at its first time below
+// target. Then, when `write_residual(path, tolerance_1024, scale)` is given and a tolerance held,
+// the residual shapes' tolerance is loosened at the chosen one along kResidualScales while the
+// floor holds (one or two more candidates: the residual moves few pixels, the transform the
+// whole part). Throws svgm::Error when a candidate cannot be written or read back.
 ToleranceChoice choose_compact_tolerance(
     const std::filesystem::path& beside, const std::function<void(const std::filesystem::path&)>& write_full,
     const std::function<void(const std::filesystem::path&, double)>& write_compact,
-    const std::function<void(const std::filesystem::path&, double, double)>& write_residual = nullptr);
+    const std::function<void(const std::filesystem::path&, double, double)>& write_residual = nullptr,
+    const DrawerMaker& draw = svg_drawer());
 
-// The tolerance animation.json is written at for animation.svg's `svg_tolerance_1024`: the
-// ladder step kLottieStepsBelow below it (the first step at the least; a tolerance off the
+// The tolerance animation.json is written at for animation.svg's `svg_tolerance_1024` when no
+// Lottie player is built in to measure it (lottie_drawer): the ladder step kLottieStepsBelow below it (the first step at the least; a tolerance off the
 // ladder counts from the largest step below it). Two since each transform channel is keyed on
 // its own (compact_motion.h): librlottie drew the man's animation.json at 1.25 px at 44.7 dB
 // of the full JSON where animation.svg at 1.5 px held 46.3 dB by our render; at 1.1 px 45.6 dB.
