@@ -9,6 +9,8 @@
 // motion.json in the run directory reports the parts and the plan; one line says it on the
 // terminal. Under the pixel ranker each candidate is scored as the ranker will score it, and
 // one it would flag for continuity or chaotic motion is made again with smaller amplitudes.
+#include <algorithm>
+#include <chrono>
 #include <filesystem>
 
 #include "common/plugin_glue.h"
@@ -64,6 +66,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   if (planner != "offline" && planner != "llm") opt.fail("options.planner must be offline or llm, not '" + planner + "'");
   if (planner == "llm" && !explicit_plan.empty())
     opt.fail("options.motion gives the plan and options.planner: llm would ask a model for one; set only one");
+  const auto started = std::chrono::steady_clock::now();
   const svgm::Scene scene = svgm::read_svg_file(P::file(req, "inputs", "svg"));
   const nlohmann::json& inputs = req.at("inputs");
   const svgm::SourceNames names =
@@ -117,6 +120,13 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
     if (p.has_fill) palette.push_back(p.fill);
     if (p.has_stroke) palette.push_back(p.stroke.color);
   }
+  // The bar's share is the share of the stage's time: the rig and the plan before the first
+  // candidate took seconds that the candidates' count does not measure (at i / n the CLI's ETA,
+  // time so far / share x share left, read three times the time left). After candidate i the
+  // rest is the candidates left at the mean time of those made.
+  const auto loop_start = std::chrono::steady_clock::now();
+  double share = 0;
+  auto seconds = [](auto from) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count(); };
   for (int i = 0; i < n; ++i) {
     char name[16];
     std::snprintf(name, sizeof name, "%02d", i);
@@ -127,7 +137,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
     // Named before it is made: a candidate takes seconds (the first one, 11 s on a loaded
     // machine, was "starting" on the bar until then).
     if (host && host->progress)
-      host->progress(host, static_cast<double>(i) / n, ("making candidate " + std::string(name)).c_str());
+      host->progress(host, share, ("making candidate " + std::string(name)).c_str());
     std::vector<svgm::Vec2> pts;
     for (int attempt = 0;; ++attempt) {
       pts = svgm::animate_plan(scene, rig, plan, o.frames);
@@ -187,7 +197,9 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
     }
     made.push_back({{"name", std::string(name) + ".mp4"}, {"seed", seed}, {"amplitude_scale", plan.scale}, {"keyframes", plan.keyframes},
                     {"plan", plan.summary()}, {"path_body", path_body}, {"bodies", svgm::body_maps_json(maps)}});
-    if (host && host->progress) host->progress(host, (i + 1.0) / n, name);
+    const double so_far = seconds(started), left = (n - 1 - i) * seconds(loop_start) / (i + 1);
+    share = std::max(share, i + 1 == n ? 1.0 : so_far / (so_far + left));
+    if (host && host->progress) host->progress(host, share, name);
   }
   report["candidates"] = made;
   svgm::write_file_atomic(fs::path(req.at("run_dir").get<std::string>()) / "motion.json", svgm::json_text(report, 2) + "\n");
