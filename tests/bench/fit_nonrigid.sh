@@ -50,7 +50,7 @@ PY
   [[ -f $anim ]] || { echo "$name: the fit wrote no animation (see $dir/fit.log)"; continue; }
   $py "$shared/tools/fitcheck.py" eval "$svg" "$dir" "$anim" --hires --between > "$dir/eval.txt"
   line=$(tail -1 "$dir/eval.txt")
-  secs=$(grep -o '"seconds": [0-9.]*' "$dir/out/fit.json" | awk '{print $2}')
+  secs=$(/usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["seconds"])' "$dir/out/fit.json")  # the fit's own, not its keyframe choice's
   rss=$(( $(tail -1 "$dir/rss") / 1024 ))
   eval "$(echo "$line" | tr ' ' '\n' | grep '=')"
   min_hi=$(grep '^keyframe' "$dir/eval.txt" | grep -o 'hires_psnr=[0-9.]*' | cut -d= -f2 | sort -n | head -1)
