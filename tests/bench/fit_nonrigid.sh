@@ -43,11 +43,16 @@ for f in sorted(os.listdir(d + "/clean_hires")):
 PY
     mv "$dir/clean" "$dir/clean_video" && mv "$dir/clean256" "$dir/clean"
   fi
-  rm -rf "$dir/out"
+  rm -rf "$dir/out" "$dir/full"
   /usr/bin/time -f '%M' -o "$dir/rss" "$bin" fit "$svg" --target "$dir/target.mp4" -o "$dir/out" --quiet ${FIT_ARGS:-} 2>"$dir/fit.log"
   anim=$dir/out/animation.svg status=""
   [[ -f $anim ]] || { anim=$dir/out/animation.failed.svg; status=" REJECTED"; }
   [[ -f $anim ]] || { echo "$name: the fit wrote no animation (see $dir/fit.log)"; continue; }
+  # The judge reads each path's animated `d`, not `animateTransform`: the compact export's
+  # wrapper transforms would be scored as still parts. It judges the full export of the same fit.
+  if grep -q animateTransform "$anim"; then
+    "$bin" export "$dir/out" -o "$dir/full" --full --format svg --quiet && anim=$dir/full/$(basename "$anim")
+  fi
   $py "$shared/tools/fitcheck.py" eval "$svg" "$dir" "$anim" --hires --between > "$dir/eval.txt"
   line=$(tail -1 "$dir/eval.txt")
   secs=$(/usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["seconds"])' "$dir/out/fit.json")  # the fit's own, not its keyframe choice's
