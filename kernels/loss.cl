@@ -37,6 +37,9 @@
  * Σ Q²; the backward raster pass evaluates ∂L/∂C at the pixels edges cross
  * (blurred_gradient). Sums run in a fixed order: the loss is bit-reproducible.
  *
+ * X' and E' are packed RGB, three floats a pixel (vload3/vstore3): their fourth channel is
+ * 0, and these passes wait for memory more than they compute (the same floats, the same bits).
+ *
  * Q and R are stored as halves (read with vload_half4, core OpenCL without cl_khr_fp16): they
  * are only read, and a half is within 2^-11 of them, a twentieth of an 8-bit level, while it
  * halves the two largest buffers of the fit. The host computes Σ Q² and R from the rounded Q,
@@ -91,14 +94,14 @@ inline float3 loss_metric(float3 e) {
  * the row's term with the RGB q; what is kept for the backward pass is A⁻ᵀ E' (A⁻ᵀ M E' with a
  * chroma weight), so that its blur (the same per-group taps, the operator's adjoint
  * Aᵀ·diag(G)·A⁻ᵀ) works in the same coordinates. */
-inline float chroma_residual(float3 q, float3 v, __global float4* e) {
+inline float chroma_residual(float3 q, float3 v, __global float* e, int x) {
   const float3 E = rgb_from_ycc(v);
 #ifdef CHROMA_W
   const float3 M = loss_metric(E);
 #else
   const float3 M = E;
 #endif
-  *e = (float4)(ycc_adjoint_from_rgb(M), 0.0f);
+  vstore3(ycc_adjoint_from_rgb(M), x, e);
   return dot(2.0f * q + E, M);
 }
 #endif
@@ -108,8 +111,8 @@ inline float chroma_residual(float3 q, float3 v, __global float4* e) {
  * The host may launch a few frames at a time (ClRaster's loss chunks, to keep X' and E' to a
  * few frames' memory): the launch's global offset is the first frame, and X' and E' hold the
  * launched frames only, indexed from it; everything else is indexed by the frame itself. */
-__kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* ext_x,
-                               __global const half* Q, __global float4* E,
+__kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ext_x,
+                               __global const half* Q, __global float* E,
                                __global int2* ext_e, __global float* row_sums, int width,
                                int height, int frames) {
   const int y = get_global_id(0), k = get_global_id(1);
@@ -125,8 +128,8 @@ __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* e
   ext_e[(size_t)k * height + y] = (int2)(lo, hi);
   float s = 0.0f;
   const size_t kc = (size_t)k - get_global_offset(1); /* the frame within the chunk */
-  __global const float4* f = Xb + kc * width * height;
-  __global float4* e = E + (kc * height + y) * width;
+  __global const float* f = Xb + kc * width * height * 3; /* packed RGB (vload3) */
+  __global float* e = E + (kc * height + y) * width * 3;
   __global const half* q = Q + ((size_t)k * height + y) * width * 4;
   /* Each tap's row contributes on its extent only (zero padding outside the frame and the
    * drawing). Those ranges are taken once per row: [fa, fb] is where every tap is inside (a
@@ -146,63 +149,63 @@ __kernel void blur_y_loss_rows(__global const float4* Xb, __global const int2* e
   }
   const int r = (y - LOSS_R) * width; /* tap row j starts at f + r + j * width */
   for (int x = lo; x <= hi; ++x) {
-    float4 v = (float4)(0.0f);
+    float3 v = (float3)(0.0f);
     if (x >= fa && x <= fb) {
 #if defined(CHROMA_R)
-      for (int j = 0; j <= 2 * LOSS_R; ++j) v += gv_tap(j - LOSS_R) * f[r + j * width + x];
+      for (int j = 0; j <= 2 * LOSS_R; ++j) v += gv_tap(j - LOSS_R).xyz * vload3(r + j * width + x, f);
 #elif LOSS_R == 2
-      v += G2 * f[r + x];
-      v += G1 * f[r + width + x];
-      v += G0 * f[r + 2 * width + x];
-      v += G1 * f[r + 3 * width + x];
-      v += G2 * f[r + 4 * width + x];
+      v += G2 * vload3(r + x, f);
+      v += G1 * vload3(r + width + x, f);
+      v += G0 * vload3(r + 2 * width + x, f);
+      v += G1 * vload3(r + 3 * width + x, f);
+      v += G2 * vload3(r + 4 * width + x, f);
 #else
-      for (int j = 0; j <= 2 * LOSS_R; ++j) v += g_tap(j - LOSS_R) * f[r + j * width + x];
+      for (int j = 0; j <= 2 * LOSS_R; ++j) v += g_tap(j - LOSS_R) * vload3(r + j * width + x, f);
 #endif
     } else {
       for (int j = 0; j <= 2 * LOSS_R; ++j) {
 #ifdef CHROMA_R
-        if (x >= ta[j] && x <= tb[j]) v += gv_tap(j - LOSS_R) * f[r + j * width + x];
+        if (x >= ta[j] && x <= tb[j]) v += gv_tap(j - LOSS_R).xyz * vload3(r + j * width + x, f);
 #else
-        if (x >= ta[j] && x <= tb[j]) v += g_tap(j - LOSS_R) * f[r + j * width + x];
+        if (x >= ta[j] && x <= tb[j]) v += g_tap(j - LOSS_R) * vload3(r + j * width + x, f);
 #endif
       }
     }
 #if defined(CHROMA_R)
-    s += chroma_residual(vload_half4(x, q).xyz, v.xyz, e + x);
+    s += chroma_residual(vload_half4(x, q).xyz, v, e, x);
 #elif defined(CHROMA_W)
-    const float3 m = loss_metric(v.xyz);
-    e[x] = (float4)(m, 0.0f);
-    s += dot(2.0f * vload_half4(x, q).xyz + v.xyz, m);
+    const float3 m = loss_metric(v);
+    vstore3(m, x, e);
+    s += dot(2.0f * vload_half4(x, q).xyz + v, m);
 #else
-    e[x] = v;
-    s += dot(2.0f * vload_half4(x, q).xyz + v.xyz, v.xyz);
+    vstore3(v, x, e);
+    s += dot(2.0f * vload_half4(x, q).xyz + v, v);
 #endif
   }
   row_sums[(size_t)k * height + y] = s;
 }
 
 /* ∂L/∂C at pixel (x, y) of a frame: 2w/N · (R + G ∗ E'), E' read within its row extents. */
-inline float3 blurred_gradient(__global const float4* E, __global const int2* ext_e,
+inline float3 blurred_gradient(__global const float* E, __global const int2* ext_e,
                                __global const half* R, int x, int y, int width, int height,
                                float scale) {
   float3 s = vload_half4(y * width + x, R).xyz;
 #ifdef CHROMA_R
   /* The per-group blur's adjoint: blur the stored A⁻ᵀ E' per channel group, then Aᵀ (loss.cl's
    * chroma_residual). The same taps and order whether or not the extents need tests. */
-  float4 acc = (float4)(0.0f);
+  float3 acc = (float3)(0.0f);
   for (int dy = -LOSS_R; dy <= LOSS_R; ++dy) {
     const int yy = y + dy;
     if (yy < 0 || yy >= height) continue;
     const int2 ex = ext_e[yy];
-    float4 row = (float4)(0.0f);
+    float3 row = (float3)(0.0f);
     for (int dx = -LOSS_R; dx <= LOSS_R; ++dx) {
       const int xx = x + dx;
-      if (xx >= ex.x && xx <= ex.y) row += gv_tap(dx) * E[yy * width + xx];
+      if (xx >= ex.x && xx <= ex.y) row += gv_tap(dx).xyz * vload3(yy * width + xx, E);
     }
-    acc += gv_tap(dy) * row;
+    acc += gv_tap(dy).xyz * row;
   }
-  return scale * (s + rgb_adjoint_from_ycc(acc.xyz));
+  return scale * (s + rgb_adjoint_from_ycc(acc));
 #endif
   /* Inside the frame with every tap within its row's extent (a layered scene's usual case):
    * the same sum without the tests. */
@@ -211,16 +214,16 @@ inline float3 blurred_gradient(__global const float4* E, __global const int2* ex
     inside = ext_e[y + dy].x <= x - LOSS_R && ext_e[y + dy].y >= x + LOSS_R;
   if (inside) {
     for (int dy = -LOSS_R; dy <= LOSS_R; ++dy) {
-      __global const float4* e = E + (y + dy) * width + x;
+      const int at = (y + dy) * width + x;
       float3 row = (float3)(0.0f);
 #if LOSS_R == 2
-      row += G2 * e[-2].xyz;
-      row += G1 * e[-1].xyz;
-      row += G0 * e[0].xyz;
-      row += G1 * e[1].xyz;
-      row += G2 * e[2].xyz;
+      row += G2 * vload3(at - 2, E);
+      row += G1 * vload3(at - 1, E);
+      row += G0 * vload3(at, E);
+      row += G1 * vload3(at + 1, E);
+      row += G2 * vload3(at + 2, E);
 #else
-      for (int dx = -LOSS_R; dx <= LOSS_R; ++dx) row += g_tap(dx) * e[dx].xyz;
+      for (int dx = -LOSS_R; dx <= LOSS_R; ++dx) row += g_tap(dx) * vload3(at + dx, E);
 #endif
       s += g_tap(dy) * row;
     }
@@ -233,7 +236,7 @@ inline float3 blurred_gradient(__global const float4* E, __global const int2* ex
     float3 row = (float3)(0.0f);
     for (int dx = -LOSS_R; dx <= LOSS_R; ++dx) {
       const int xx = x + dx;
-      if (xx >= ex.x && xx <= ex.y) row += g_tap(dx) * E[yy * width + xx].xyz;
+      if (xx >= ex.x && xx <= ex.y) row += g_tap(dx) * vload3(yy * width + xx, E);
     }
     s += g_tap(dy) * row;
   }

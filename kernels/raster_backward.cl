@@ -236,7 +236,7 @@ inline void replay_span(__local float* acc, __local uchar* mark, __local float4*
  * scene so few visible edge pixels repeat that the cache cost more than it saved.) */
 inline void backward_span(__local float* acc, __local uchar* mark, __local float* T, int* tlo,
                           int* thi, __local float2* gcell, int* glo, int* ghi,
-                          __global const float4* E,
+                          __global const float* E,
                           __global const int2* ext_e, __global const half* R,
                           int row, int height, float scale, int xlo, int xhi, int width,
                           float4 color, __global const float4* prow, int painted, int rule,
@@ -411,7 +411,7 @@ __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
                            __local float4* band_rgba,          /* [BAND_H][W] */
                            __local uchar* mark,                /* [BAND_H][W] */
                            __local float4* tape, int tape_cap,
-                           __global float4* image,             /* [chunk][H][W] X' (loss.cl) */
+                           __global float4* image,             /* [chunk][H][W][3] X', packed (loss.cl) */
                            __global int2* extents,             /* [K][H] its row extents */
                            float4 background,
                            __global float4* pool, int pool_cap,
@@ -462,7 +462,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               __global const float4* draw_color,  /* [n_draws] */
                               __global const int* draw_rule,      /* [n_draws] */
                               __global const float4* bounds,      /* [K][n_chunks] */
-                              __global const float4* E,           /* [chunk][H][W] E' (loss.cl) */
+                              __global const float* E,            /* [chunk][H][W][3] E' (loss.cl) */
                               __global const int2* ext_e,         /* [K][H] its row extents */
                               __global const half* R,             /* [K][H][W][4] G ∗ Q, half (loss.cl) */
                               float grad_scale,                   /* 2w/N */
@@ -492,7 +492,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
   if (lid == 0) {
     __global const float4* L = lines + (size_t)k * n_lines;
     __global const float4* B = bounds + (size_t)k * n_chunks;
-    __global const float4* Ek = E + (size_t)(k - k0) * height * width;
+    __global const float* Ek = E + (size_t)(k - k0) * height * width * 3;
     __global const int2* Xk = ext_e + (size_t)k * height;
     __global const half* Rk = R + (size_t)k * height * width * 4;
 #ifdef PREFETCH_ROWS
@@ -501,7 +501,8 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
      * edges, and as demand misses each waited for memory. Changes no value. */
     for (int y = max(y0 - LOSS_R, 0); y < min(y0 + rows + LOSS_R, height); ++y) {
       const int2 ex = Xk[y];
-      for (int x = ex.x; x <= ex.y; x += 4) PREFETCH(Ek + (size_t)y * width + x);
+      /* E' is packed, 12 bytes a pixel: one prefetch per 16 floats. */
+      for (int i = 3 * ex.x; i <= 3 * ex.y + 2; i += 16) PREFETCH(Ek + (size_t)y * width * 3 + i);
       if (y >= y0 && y < y0 + rows)
         for (int x = ex.x; x <= ex.y; x += 8) PREFETCH(Rk + ((size_t)y * width + x) * 4);
     }

@@ -126,6 +126,40 @@ IterationTimes time_iteration(ClRuntime& rt, const Scene& scene, int width, int 
   return {median(fwd), median(tot), plan.n_lines};
 }
 
+// One scene of `bench raster`: its iteration timed, librsvg's render of the same frames, the
+// lines (or one JSON object on one line). Returns iteration / librsvg when librsvg is there.
+std::optional<double> bench_raster_scene(const Args& a, ClRuntime& rt, const std::string& svg,
+                                         int width, int frames, int repeat) {
+  const Scene scene = read_svg_file(svg);
+  const IterationTimes t = time_iteration(rt, scene, width, frames, repeat);
+  // The bar (issue 38): one iteration no longer than librsvg's plain render of the same frames.
+  const std::optional<double> rsvg = librsvg_ms_per_frame(svg, width, frames, 5);
+  if (a.has("--json")) {
+    const std::string rsvg_ms = rsvg ? std::to_string(*rsvg * frames) : "null";
+    std::printf("{\"svg\": \"%s\", \"frames\": %d, \"size\": %d, \"lines\": %d, "
+                "\"forward_ms\": %.4f, \"backward_ms\": %.4f, \"total_ms\": %.4f, "
+                "\"total_ms_per_frame\": %.4f, \"librsvg_ms\": %s, \"peak_rss_mb\": %.1f, \"device\": \"%s\"}\n",
+                svg.c_str(), frames, width, t.lines, t.forward_ms,
+                t.total_ms - t.forward_ms, t.total_ms, t.total_ms / frames, rsvg_ms.c_str(), peak_rss_mb(),
+                rt.info().name.c_str());
+  } else {
+    std::printf("%s: %d frames at %d px, %d lines\n", svg.c_str(), frames, width, t.lines);
+    std::printf("  per iteration: forward %.3f ms, backward (loss + gradients) %.3f ms, total %.3f ms\n",
+                t.forward_ms, t.total_ms - t.forward_ms, t.total_ms);
+    std::printf("  per frame: forward %.3f ms, total %.3f ms; peak memory %.1f MB\n",
+                t.forward_ms / frames, t.total_ms / frames, peak_rss_mb());
+    if (rsvg)
+      std::printf("  librsvg renders the same %d frames in %.3f ms (%.3f ms per frame): iteration / librsvg %.2fx\n",
+                  frames, *rsvg * frames, *rsvg, t.total_ms / (*rsvg * frames));
+    else
+      std::printf("  librsvg: not available (librsvg2-2 and libcairo2 give the comparison)\n");
+    std::printf("  device: %s\n", rt.info().name.c_str());
+  }
+  std::fflush(stdout);
+  if (!rsvg) return std::nullopt;
+  return t.total_ms / (*rsvg * frames);
+}
+
 int bench_raster(const std::vector<std::string>& argv) {
   const Args a = parse_args("bench raster", argv, {"--frames", "--size", "--device", "--repeat"},
                             {"--json", "--scaling", "--profile"});
@@ -164,31 +198,19 @@ int bench_raster(const std::vector<std::string>& argv) {
       std::printf("device: %s, peak memory %.1f MB\n", rt.info().name.c_str(), peak_rss_mb());
     return 0;
   }
-  if (a.positional.size() != 1) throw UsageError("bench raster: expected one input SVG (or --scaling)");
-  const Scene scene = read_svg_file(a.positional[0]);
-  const IterationTimes t = time_iteration(rt, scene, width, frames, repeat);
-  // The bar (issue 38): one iteration no longer than librsvg's plain render of the same frames.
-  const std::optional<double> rsvg = librsvg_ms_per_frame(a.positional[0], width, frames, 5);
-  if (a.has("--json")) {
-    const std::string rsvg_ms = rsvg ? std::to_string(*rsvg * frames) : "null";
-    std::printf("{\"svg\": \"%s\", \"frames\": %d, \"size\": %d, \"lines\": %d, "
-                "\"forward_ms\": %.4f, \"backward_ms\": %.4f, \"total_ms\": %.4f, "
-                "\"total_ms_per_frame\": %.4f, \"librsvg_ms\": %s, \"peak_rss_mb\": %.1f, \"device\": \"%s\"}\n",
-                a.positional[0].c_str(), frames, width, t.lines, t.forward_ms,
-                t.total_ms - t.forward_ms, t.total_ms, t.total_ms / frames, rsvg_ms.c_str(), peak_rss_mb(),
-                rt.info().name.c_str());
-  } else {
-    std::printf("%s: %d frames at %d px, %d lines\n", a.positional[0].c_str(), frames, width, t.lines);
-    std::printf("  per iteration: forward %.3f ms, backward (loss + gradients) %.3f ms, total %.3f ms\n",
-                t.forward_ms, t.total_ms - t.forward_ms, t.total_ms);
-    std::printf("  per frame: forward %.3f ms, total %.3f ms; peak memory %.1f MB\n",
-                t.forward_ms / frames, t.total_ms / frames, peak_rss_mb());
-    if (rsvg)
-      std::printf("  librsvg renders the same %d frames in %.3f ms (%.3f ms per frame): iteration / librsvg %.2fx\n",
-                  frames, *rsvg * frames, *rsvg, t.total_ms / (*rsvg * frames));
-    else
-      std::printf("  librsvg: not available (librsvg2-2 and libcairo2 give the comparison)\n");
-    std::printf("  device: %s\n", rt.info().name.c_str());
+  if (a.positional.empty()) throw UsageError("bench raster: expected one or more input SVGs (or --scaling)");
+  // Several scenes are timed one after the other in the same run (issue 38's acceptance: two
+  // scenes against librsvg, under the same machine load), each with its own lines or JSON
+  // object; one input prints exactly what it always has.
+  std::vector<double> ratios;
+  for (const std::string& svg : a.positional) {
+    const std::optional<double> ratio = bench_raster_scene(a, rt, svg, width, frames, repeat);
+    if (ratio) ratios.push_back(*ratio);
+  }
+  if (a.positional.size() > 1 && !a.has("--json") && !ratios.empty()) {
+    std::printf("%zu scenes: iteration / librsvg", a.positional.size());
+    for (size_t i = 0; i < ratios.size(); ++i) std::printf("%s %.2fx", i ? "," : "", ratios[i]);
+    std::printf(" (max %.2fx)\n", *std::max_element(ratios.begin(), ratios.end()));
   }
   return 0;
 }

@@ -41,6 +41,7 @@ usage:
   svgmotion palette N
   svgmotion bench render|raster IN.svg [--frames K] [--size N] [--repeat R] [--json] [--profile]
                    [--device D]
+  svgmotion bench raster IN.svg [IN2.svg ...] [options]
   svgmotion bench raster --scaling [--json]
   svgmotion bench fit IN.svg --target VIDEO [--iterations N] [--keyframes K] [--size N] [--json]
   svgmotion bench target VIDEO [--size N] [--keyframes K] [--denoise R] [--stabilise] [--repeat R]
@@ -228,12 +229,14 @@ precision, the in-betweens or compact/full, or make clips, in a second instead o
                 "             (a first run otherwise spends most of a minute compiling)\n"},
     {"palette", "usage: svgmotion palette N\n\nPrints N maximally distinct colours (white reserved), one #rrggbb per line.\n"},
     {"bench", R"(usage: svgmotion bench render|raster IN.svg [options]
+       svgmotion bench raster IN.svg [IN2.svg ...] [options]
        svgmotion bench raster --scaling [--json]
        svgmotion bench fit IN.svg --target VIDEO [options]
        svgmotion bench target VIDEO [options]
 
   render        median time per frame of K frames rendered in one batch
-  raster        one differentiable iteration (forward, loss, backward) over K frames
+  raster        one differentiable iteration (forward, loss, backward) over K frames, against
+                librsvg's render of them; several SVGs are timed one after the other
   fit           a whole fit at fit's defaults, without its outputs: setup, iterations, CPU time
   target        loading a target as fit does (decode, denoise, --stabilise), median of R loads
   --frames K    frames per batch (default 15)
@@ -244,7 +247,7 @@ precision, the in-betweens or compact/full, or make clips, in a second instead o
   --target VIDEO  the video the fit follows (fit)
   --denoise R   temporal denoising radius (target; default 2, as fit)
   --stabilise   remove camera shake too (target)
-  --json        one JSON object (ms_per_frame / forward_ms, backward_ms, total_ms, peak_rss_mb, device;
+  --json        one JSON object per scene (ms_per_frame / forward_ms, backward_ms, total_ms, peak_rss_mb, device;
                 target: wall_s, cpu_s, denoise_s, shake_model, max_shake_px, peak_rss_mb)
   --profile     per-kernel times
   --scaling     sweep paths, size and frames on procedural scenes (raster)

@@ -161,8 +161,9 @@ TEST_CASE("loss chunks: one, two or every frame at a time give the same bits, an
     CHECK(same_bits(losses[0], losses[2]));
     CHECK(losses[0][0] > 0);
     CHECK(losses[0][2] > losses[0][0]);  // the frames differ (the shift grows with the frame)
-    // Each frame more in a chunk is one more frame of X' and E': 2 x 16 bytes per pixel.
-    const size_t frame = size_t{kW} * kH * 32;
+    // Each frame more in a chunk is one more frame of X' and E': 2 x 12 bytes per pixel
+    // (packed RGB floats, kernels/loss.cl).
+    const size_t frame = size_t{kW} * kH * 24;
     CHECK(bytes[1] - bytes[0] == frame);
     CHECK(bytes[2] - bytes[0] == 2 * frame);
   }

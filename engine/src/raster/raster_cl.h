@@ -112,7 +112,7 @@ class ClRaster {
   // Bands of the last pass whose tape was not in the pool (raster_backward replayed them).
   int tape_pool_misses();
   // The loss pass runs raster_taped, the y-blur and raster_backward over this many frames at a
-  // time, so the residuals X' and E' (32 bytes per pixel) exist for those frames only: at most
+  // time, so the residuals X' and E' (24 bytes per pixel) exist for those frames only: at most
   // kLossChunkBytes of them, whatever the clip's length (the same bits for any count: each
   // frame's sums and gradients are its own, added in frame order after). For tests: set it
   // (n >= 1); the buffers are made again at that size on the next loss pass.

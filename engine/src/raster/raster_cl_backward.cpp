@@ -14,11 +14,12 @@ namespace {
 // The tape pool's largest size in entries (float4): 2^27, 2 GiB, far above any drawing's need
 // (a 1024 px frame with an edge on every pixel of every draw of a 100-draw scene is 10^8).
 constexpr size_t kMaxPoolEntries = size_t{1} << 27;
-// The loss chunk's residuals X' and E' (float4 each, 32 bytes per pixel) take at most this
-// many bytes: 4 frames at 512 px, 16 at 256 (a coarse fit of 15 keyframes is one chunk, as
-// before the chunks). At 512 px, 21 keyframes held 176 MB of them; 32 MB is a few percent of
-// a pass's time in launches more (ClRaster::set_loss_chunk_frames).
+// The loss chunk's residuals X' and E' (packed RGB floats, 12 bytes each, 24 bytes per pixel)
+// take at most this many bytes: 5 frames at 512 px, 21 at 256 (a coarse fit of 15 keyframes
+// is one chunk, as before the chunks). At 512 px, 21 keyframes held 176 MB of them (as float4);
+// 32 MB is a few percent of a pass's time in launches more (ClRaster::set_loss_chunk_frames).
 constexpr size_t kLossChunkBytes = size_t{32} << 20;
+constexpr size_t kResidualPixelBytes = 3 * sizeof(float);  // X' or E' (kernels/loss.cl)
 }  // namespace
 
 void ClRaster::init_backward() {
@@ -40,7 +41,7 @@ void ClRaster::init_backward() {
     k_flatten_back_ = cl::Kernel(prog, "flatten_backward");
 
     if (chunk_ == 0)
-      chunk_ = static_cast<int>(std::clamp<size_t>(kLossChunkBytes / (static_cast<size_t>(p.height) * p.width * 32), 1, K));
+      chunk_ = static_cast<int>(std::clamp<size_t>(kLossChunkBytes / (static_cast<size_t>(p.height) * p.width * 2 * kResidualPixelBytes), 1, K));
     make_loss_buffers();
     qsum_ = make(K * sizeof(float));
     ext_x_ = make(K * p.height * 2 * sizeof(int));
@@ -120,8 +121,8 @@ void ClRaster::make_loss_buffers() {
   r_ = make(pixels * 4 * sizeof(uint16_t));
   // X' and E' for one chunk of frames (set_loss_chunk_frames).
   const size_t chunk_pixels = static_cast<size_t>(chunk_) * plan_.height * plan_.width;
-  xres_ = make(chunk_pixels * 4 * sizeof(float));
-  resid_ = make(chunk_pixels * 4 * sizeof(float));
+  xres_ = make(chunk_pixels * kResidualPixelBytes);
+  resid_ = make(chunk_pixels * kResidualPixelBytes);
   partial_ = make(K * plan_.n_lines * static_cast<size_t>(bands_) * 4 * sizeof(float));
   if (!backward_ready_) return;  // init_backward binds them with the rest
   set_args_at(k_blur_y_loss_, 0, xres_);
