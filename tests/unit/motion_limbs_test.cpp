@@ -1,6 +1,6 @@
 // Limbs from the silhouette skeleton (motion/limbs.h): a stick figure's five limbs with their
 // labels, sides and tips, a quadruped's legs, head and tail (and a leg standing off its tail's
-// branch, which the tail does not own, nor a blob its branch runs through), a bent arm's elbow, and which limb owns which points,
+// branch, which the tail does not own), a bent arm's elbow, and which limb owns which points,
 // paths and pixels.
 #include <doctest/doctest.h>
 
@@ -140,36 +140,6 @@ TEST_SUITE("motion") {
     CHECK(regions.at<int>(40, 8) == tail);  // on the thin tail
     CHECK(regions.at<int>(70, 40) == -1);   // the rump's middle is the body's
     CHECK(regions.at<int>(58, 30) == -1);
-  }
-
-  TEST_CASE("a thick stretch a tail runs through beyond its base is the body's; the thin tail on both sides stays the tail's") {
-    // A quadruped facing right whose thin tail (5 wide) leaves the top of its back end at
-    // (58, 62), runs out to (20, 45), down through a round blob 18 across at (20, 92) (a hind
-    // foot its curl touches, as a tiger's does) and on to (2, 104). The blob is the body's: a
-    // lash of the tail must not swing the foot it touches.
-    cv::Mat m(160, 220, CV_8U, cv::Scalar(0));
-    cv::ellipse(m, {110, 70}, {55, 22}, 0, 0, 360, 255, cv::FILLED);
-    for (int x : {75, 90, 135, 150}) cv::line(m, {x, 80}, {x, 115}, 255, 8);
-    cv::line(m, {155, 60}, {180, 30}, 255, 10);
-    cv::ellipse(m, {188, 25}, {16, 10}, 0, 0, 360, 255, cv::FILLED);
-    cv::line(m, {58, 62}, {20, 45}, 255, 5);
-    cv::line(m, {20, 45}, {20, 92}, 255, 5);
-    cv::circle(m, {20, 92}, 9, 255, cv::FILLED);
-    cv::line(m, {20, 92}, {2, 104}, 255, 5);
-    const Skeleton s = skeletonise(m);
-    const Figure f = find_limbs(s);
-    const int tail = find(f, LimbKind::Tail, {2, 104});
-    REQUIRE(tail >= 0);
-    const Limb& L = f.limbs[tail];
-    CHECK(distance(L.tip_pos, {2, 104}) <= 4);
-    CHECK_FALSE(L.crossed.empty());
-    for (Vec2 q : L.crossed) CHECK(distance(q, {20, 92}) <= 9);  // only the blob's stretch
-    const cv::Mat regions = limb_regions(s, f);
-    CHECK(regions.at<int>(52, 35) == tail);  // the thin tail before the blob
-    CHECK(regions.at<int>(65, 20) == tail);
-    CHECK(regions.at<int>(92, 20) == -1);    // the blob's middle is the body's
-    CHECK(regions.at<int>(86, 14) == -1);
-    CHECK(regions.at<int>(102, 5) == tail);  // the curl beyond it is the tail's
   }
 
   TEST_CASE("a bent arm's elbow is where it bends") {

@@ -39,9 +39,7 @@ std::vector<Owned> owned_points(const Skeleton& s, const Figure& f) {
         const Limb& L = f.limbs[l];
         const bool rump = L.body_radius > 0 && s.edges[e].radius[i] >= L.body_radius &&
                           std::hypot(p.x - joint.pos.x, p.y - joint.pos.y) < std::hypot(L.base.x - joint.pos.x, L.base.y - joint.pos.y);
-        // ... and a thick stretch it runs over beyond its base (the foot its curl touches).
-        const bool crossed = std::any_of(L.crossed.begin(), L.crossed.end(), [&](Vec2 q) { return q.x == p.x && q.y == p.y; });
-        out.push_back({p, s.edges[e].radius[i], inside || leg || rump || crossed ? -1 : static_cast<int>(l)});
+        out.push_back({p, s.edges[e].radius[i], inside || leg || rump ? -1 : static_cast<int>(l)});
       }
     }
   }

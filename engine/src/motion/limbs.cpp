@@ -270,15 +270,8 @@ void thin_tail_bases(Figure& f) {
     std::vector<double> outer(L.radius.begin() + static_cast<long>(L.base_index + (n - L.base_index) / 2), L.radius.end());
     std::nth_element(outer.begin(), outer.begin() + static_cast<long>(outer.size() / 2), outer.end());
     const double own = std::max(outer[outer.size() / 2], 0.5);
-    // Beyond the base, a stretch as thick as the body between two thin ones is something the
-    // tail's outline runs into (a tiger's curl touching its hind foot): the body's.
-    size_t last_thin = L.base_index;
-    for (size_t k = L.base_index; k < n; ++k)
-      if (L.radius[k] <= kTailThick * own) last_thin = k;
     size_t i = L.base_index;
     while (i + 1 < n && L.radius[i] > kTailThick * own) ++i;
-    for (size_t k = i; k < last_thin; ++k)
-      if (L.radius[k] > kTailThick * own) L.crossed.push_back(L.path[k]);
     if (i == L.base_index) continue;
     L.body_radius = kTailThick * own;
     L.base_index = i;

@@ -50,9 +50,6 @@ struct Limb {
   std::vector<double> radius;  // inscribed radius at each path point
   double body_radius = 0;    // > 0 (tails): a skeleton point this thick or more is the body's
                              // (a rump the tail's branch runs through), not the limb's
-  std::vector<Vec2> crossed;  // (tails) path points beyond the base as thick as the body, with
-                              // thin tail on both sides: what the tail runs over (the foot its
-                              // curl touches) is the body's, not the tail's (limb_regions)
   size_t base_index = 0;     // path[base_index] = base
   Vec2 base, bend, tip_pos;  // shoulder/hip, elbow/knee, hand/foot
   bool bent = false;         // the bend is at least a tenth of the chord off it

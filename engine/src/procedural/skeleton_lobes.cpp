@@ -122,13 +122,6 @@ std::vector<ArmLobe> skeleton_lobes(const Scene& scene, const std::vector<int>& 
         own |= sk.labels == h.component;
         cv::line(own, h.piece, h.figure, cv::Scalar(255), 3);
       }
-    // A tail that runs over a thick stretch left to the body (motion::Limb::crossed) is two
-    // pieces, before and beyond it: its axis joins them, so its end (a tiger's curl beyond the
-    // foot it touches) swings with it.
-    if (!l.crossed.empty())
-      for (size_t i = l.base_index + 1; i < l.path.size(); ++i)
-        cv::line(own, {static_cast<int>(std::lround(l.path[i - 1].x)), static_cast<int>(std::lround(l.path[i - 1].y))},
-                 {static_cast<int>(std::lround(l.path[i].x)), static_cast<int>(std::lround(l.path[i].y))}, cv::Scalar(255), 3);
     cv::dilate(own, own, cv::Mat(), cv::Point(-1, -1), 1);
     std::vector<std::vector<cv::Point>> contours;
     cv::findContours(own, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
