@@ -33,6 +33,22 @@ TEST_CASE("part locator: nouns name kinds of part; a trunk is a branch only on a
   CHECK(parse_prompt("the clock's hands go round").clauses[0].figure == C::Object);
 }
 
+TEST_CASE("part locator: the notes name each bending limb by its skeleton label and its box in shares of the figure's") {
+  // A figure 200 x 100 from (100, 50); a tail lobe over x 260-300, y 100-150 and an arm lobe
+  // over x 100-150, y 50-75: in shares, 0.80-1.00 by 0.50-1.00 and 0.00-0.25 by 0.00-0.25.
+  Rig rig;
+  rig.figure.add(Vec2{100, 50});
+  rig.figure.add(Vec2{300, 150});
+  ArmLobe tail, arm;
+  tail.kind = LobeKind::Tail;
+  tail.outline = {{260, 100}, {300, 100}, {300, 150}, {260, 150}};
+  arm.kind = LobeKind::Arm;
+  arm.outline = {{100, 50}, {150, 60}, {120, 75}};
+  CHECK(fmt_lobes(rig, {tail}) == "tail 0.80,0.50-1.00,1.00");
+  CHECK(fmt_lobes(rig, {tail, arm}) == "tail 0.80,0.50-1.00,1.00, arm 0.00,0.00-0.25,0.25");
+  CHECK(fmt_lobes(rig, {}).empty());
+}
+
 TEST_CASE("part locator: a hare's ears drawn in its body's group twitch; the body and the eye hold") {
   const Drawing d("ears_one_group.svg");
   REQUIRE(d.rig.parts.size() == 1);  // one group: no ear part in the rig

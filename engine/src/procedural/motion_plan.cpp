@@ -427,7 +427,7 @@ struct Builder {
            " of " + rig.parts[a.parts[0]].name + " bend";
     if (skeletal)
       note = std::string("no separate ") + target_name(target) + ": " + std::to_string(a.lobes.size()) + " " +
-             (a.lobes.size() > 1 ? "limbs" : "limb") + " of the figure's silhouette skeleton bend" + (a.lobes.size() > 1 ? "" : "s") + " about " + (a.lobes.size() > 1 ? "their bases" : "its base");
+             (a.lobes.size() > 1 ? "limbs" : "limb") + " of the figure's silhouette skeleton (at " + fmt_lobes(rig, a.lobes) + ") bend" + (a.lobes.size() > 1 ? "" : "s") + " about " + (a.lobes.size() > 1 ? "their bases" : "its base");
     else if (!a.lobes.empty())
       note = std::string("no separate ") + target_name(target) + ": the " + std::to_string(a.lobes.size()) +
              " arm" + (a.lobes.size() > 1 ? "s" : "") + " drawn in the outline of " + rig.parts[a.parts[0]].name + " bend";

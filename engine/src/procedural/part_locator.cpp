@@ -551,6 +551,17 @@ std::string fmt_box(const Rig& rig, const RigBox& b) {
   return s;
 }
 
+std::string fmt_lobes(const Rig& rig, const std::vector<ArmLobe>& lobes) {
+  static const char* kinds[] = {"arm", "leg", "head", "tail", "other"};
+  std::string s;
+  for (const ArmLobe& l : lobes) {
+    RigBox b;
+    for (Vec2 q : l.outline) b.add(q);
+    s += (s.empty() ? "" : ", ") + std::string(kinds[static_cast<int>(l.kind)]) + " " + fmt_box(rig, b);
+  }
+  return s;
+}
+
 PartShape part_shape_of(std::string_view w, FigureClass figure) {
   const bool animal = figure == FigureClass::Biped || figure == FigureClass::Quadruped || figure == FigureClass::Bird ||
                       figure == FigureClass::FishOrSnake || figure == FigureClass::Insect;

@@ -80,4 +80,7 @@ std::vector<ArmLobe> tail_limbs(const Rig& rig);
 // A box in shares of the figure's box, as the notes name it: "0.10,0.20-0.40,0.55".
 std::string fmt_box(const Rig& rig, const RigBox& b);
 
+// The boxes of lobes' outlines (fmt_box), each with its skeleton label: "tail 0.80,0.40-1.00,0.90".
+std::string fmt_lobes(const Rig& rig, const std::vector<ArmLobe>& lobes);
+
 }  // namespace svgm
