@@ -81,6 +81,7 @@ uint64_t fnv(const void* data, size_t n, uint64_t h = 1469598103934665603ull) {
 struct RegionBend::Built {
   std::shared_ptr<const ShapeMesh> mesh;
   std::vector<int> handle_vertex;
+  std::vector<char> held;  // per vertex: a handle the region holds (its triangles' points stay exactly)
   ArapDeformer deformer;
 };
 
@@ -121,8 +122,11 @@ RegionBend::RegionBend(const Scene& scene, const std::vector<int>& paths, const 
   std::vector<int8_t> kind(mesh->vertices.size());
   std::vector<int> handles_in(static_cast<size_t>(mesh->pieces), 0);
   bool turns = false;
+  std::vector<Vec2> pivot(kind.size());
   for (size_t v = 0; v < kind.size(); ++v) {
-    const double w = region_turn(a, 1, 0, box, mesh->vertices[v]).weight;
+    const RegionTurn r = region_turn(a, 1, 0, box, mesh->vertices[v]);
+    const double w = r.weight;
+    pivot[v] = r.pivot;
     kind[v] = static_cast<int8_t>(w <= 0 ? 0 : w >= 1 ? 1 : 2);
     turns = turns || kind[v] != 0;
     if (kind[v] != 2) ++handles_in[static_cast<size_t>(mesh->vertex_piece[v])];
@@ -134,6 +138,20 @@ RegionBend::RegionBend(const Scene& scene, const std::vector<int>& paths, const 
   std::vector<std::vector<int>> next(kind.size());
   for (const auto& t : mesh->triangles)
     for (int k = 0; k < 3; ++k) next[static_cast<size_t>(t[k])].push_back(t[(k + 1) % 3]), next[static_cast<size_t>(t[(k + 1) % 3])].push_back(t[k]);
+  // Where the closed form cuts (a held vertex next to a turned one: a lobe's side; two turned
+  // about different pivots: the two legs of a Lower bend where the mask joins them), the mesh
+  // tears unless both are free.
+  {
+    std::vector<int8_t> cut = kind;
+    for (const auto& t : mesh->triangles)
+      for (int k = 0; k < 3; ++k) {
+        const size_t u = static_cast<size_t>(t[k]), w = static_cast<size_t>(t[(k + 1) % 3]);
+        const bool apart = (kind[u] == 0 && kind[w] == 1) || (kind[u] == 1 && kind[w] == 0) ||
+                           (kind[u] == 1 && kind[w] == 1 && (pivot[u].x != pivot[w].x || pivot[u].y != pivot[w].y));
+        if (apart) cut[u] = cut[w] = 2;
+      }
+    kind.swap(cut);
+  }
   for (int step = 0; step < kBandCells; ++step) {
     std::vector<int8_t> grown = kind;
     for (size_t v = 0; v < kind.size(); ++v)
@@ -160,7 +178,9 @@ RegionBend::RegionBend(const Scene& scene, const std::vector<int>& paths, const 
       hv.push_back(static_cast<int>(v));
       handles.push_back(ArapHandle::at_vertex(static_cast<int>(v)));
     }
-  auto built = std::make_shared<const Built>(Built{mesh, hv, ArapDeformer(*mesh, std::move(handles))});
+  std::vector<char> held(kind.size());
+  for (size_t v = 0; v < kind.size(); ++v) held[v] = kind[v] == 0;
+  auto built = std::make_shared<const Built>(Built{mesh, hv, held, ArapDeformer(*mesh, std::move(handles))});
   std::lock_guard<std::mutex> lock(memo_mutex);
   if (built_memo.size() >= kMemoEntries) built_memo.clear();
   built_memo[bkey] = built;
@@ -187,6 +207,8 @@ Vec2 RegionBend::apply(const std::vector<Vec2>& v, Vec2 q) const {
   const MeshBinding b = bind_point(m, q);
   if (b.triangle < 0) return q;
   const auto& t = m.triangles[static_cast<size_t>(b.triangle)];
+  // On what the region holds the point stays exactly (not within the solver's error).
+  if (built_->held[t[0]] && built_->held[t[1]] && built_->held[t[2]]) return q;
   return b.bary[0] * v[t[0]] + b.bary[1] * v[t[1]] + b.bary[2] * v[t[2]];
 }
 
@@ -196,6 +218,7 @@ Vec2 RegionBend::carry(const std::vector<Vec2>& v, Vec2 pivot, Vec2 q) const {
   const MeshBinding b = bind_point(m, pivot);
   if (b.triangle < 0) return q;
   const auto& t = m.triangles[static_cast<size_t>(b.triangle)];
+  if (built_->held[t[0]] && built_->held[t[1]] && built_->held[t[2]]) return q;
   const double eps = 1.0 / m.scale;  // one mask pixel
   const MeshBinding e{b.triangle, {}, pivot + Vec2{eps, 0}};
   const Vec2 a0 = m.vertices[t[0]], ab = m.vertices[t[1]] - a0, ac = m.vertices[t[2]] - a0, ap = e.rest - a0;
