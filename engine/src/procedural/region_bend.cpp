@@ -159,6 +159,9 @@ RegionBend::RegionBend(const Scene& scene, const std::vector<int>& paths, const 
         for (int u : next[v]) grown[static_cast<size_t>(u)] = 2;
     kind.swap(grown);
   }
+  // A limb too thin for the band (every turned vertex freed): nothing would turn it, and the
+  // mesh would hold it still; the closed form moves it instead.
+  if (std::count(kind.begin(), kind.end(), int8_t{1}) < kMinPieceHandles) return;
   std::fill(handles_in.begin(), handles_in.end(), 0);
   for (size_t v = 0; v < kind.size(); ++v)
     if (kind[v] != 2) ++handles_in[static_cast<size_t>(mesh->vertex_piece[v])];

@@ -14,7 +14,8 @@
 //
 // Where ARAP does not apply, the closed form stays (motion_frames.cpp): a growing located part
 // (pulse: a scaling keeps every shape whole), a bend whose paths leave no mask at the working
-// size, or one whose mesh has no vertex that turns.
+// size, or one whose mesh keeps fewer than kMinPieceHandles vertices that turn once the band is
+// widened (a limb two cells thin: held still by the mesh, it did not move at all).
 #pragma once
 
 #include <memory>
