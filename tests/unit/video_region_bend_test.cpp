@@ -59,6 +59,8 @@ TEST_CASE("a band across a waving sleeve bends with it: not cut, not squeezed, t
   CHECK(folds[0].meshed);
   CHECK(folds[0].flipped == 0);
   CHECK(folds[0].min_area_ratio > 0.25);  // 0.34: the armpit, inside the bend
+  // The same bits again (the mesh and its factorisation remembered the second time).
+  CHECK(animate_plan(s, rig, plan, kFrames) == pts);
   const int band = 2;
   const std::vector<Vec2> rest = band_corners(s, pts, 0, band);
   CHECK(rest[0].x == 80);  // frame 0 is the rest pose, exactly
