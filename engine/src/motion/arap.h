@@ -9,7 +9,7 @@
 // solves (600 vertices: about 0.4 ms a frame, 10 ms to factorise). Everything is sequential:
 // the same inputs give the same bits.
 //
-// How the planner drives it (motion_plan.cpp):
+// How the planner drives it (procedural/region_bend.cpp does 1-3 for region bends):
 //  1. Once per drawing: render the drawing's coverage at a working size (~256 px on the long
 //     side), mask = coverage > 0 with the figure's interior holes filled when it is drawn in
 //     outlines (a line drawing's mask is its strokes only), build_shape_mesh(mask, scale), and

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <set>
 
@@ -259,6 +260,43 @@ void slow_to_follow(const TravelCheck& c, MotionPlan& plan, const std::vector<si
   plan.notes.push_back(line);
 }
 
+// A region bend whose mesh (region_bend.h) folds in some frame (a flipped triangle: the shape
+// turned over on itself) or pinches (a triangle under kPinchArea of its rest area: a hand thinned
+// to a sliver) is made smaller, 0.8 at a time, before any candidate is drawn; a note says how
+// far, and one line per meshed bend says its worst frame.
+void unfold_region_bends(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames) {
+  for (size_t i = 0; i < plan.actions.size(); ++i) {
+    PlannedAction& a = plan.actions[i];
+    if (a.region == Region::None || a.amp == 0) continue;
+    const std::string what = a.verb + " (" + primitive_name(a.primitive) + ")";
+    std::vector<BendFold> folds;
+    BendFold first;
+    int attempt = 0;
+    for (;; ++attempt) {
+      animate_plan(scene, rig, only(plan, {i}), frames, &folds);
+      const BendFold& f = folds[i];
+      if (attempt == 0) first = f;
+      if (!f.meshed || (f.flipped == 0 && f.min_area_ratio >= kPinchArea)) break;
+      if (attempt == kScaleAttempts) {
+        plan.warnings.push_back("the bend of " + what + " still folds its mesh at " + std::to_string(static_cast<int>(a.scale * 100)) +
+                                " % of its size");
+        break;
+      }
+      a.scale *= 0.8;
+    }
+    if (!first.meshed) continue;
+    char line[300];
+    std::snprintf(line, sizeof line, "the bend of %s moves through a mesh: at full size its worst frame (%d) has %d folded triangles, the thinnest at %.0f %% of its area",
+                  what.c_str(), first.frame, first.flipped, first.min_area_ratio * 100);
+    plan.notes.push_back(line);
+    if (attempt > 0) {
+      std::snprintf(line, sizeof line, "the amplitude of %s scaled to %.0f %%: at full size its bend %s its shape", what.c_str(),
+                    a.scale * 100, first.flipped > 0 ? "folds" : "pinches");
+      plan.notes.push_back(line);
+    }
+  }
+}
+
 // Too small to see: the moving parts travel at least kVisibleTravel of the figure's size. Each
 // clause grows as a whole, by at most kMaxBoost, measured again after each raise: a swing's
 // chord (2 r sin(a / 2)) and a bend's reach grow slower than their angle, and one raise by
@@ -349,6 +387,7 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
   const int K_hi = std::min(frames, 2 * (K - 1) + 1);
   const TravelCheck check{scene, rig, exempt, frames, K_hi};
   raise_to_visible(check, plan);
+  unfold_region_bends(scene, rig, plan, frames);
   std::vector<std::string> cut(plan.actions.size());  // why each action was scaled down ("": it was not)
   // Why `one` at its scales breaks a limit ("" when none): the canvas, then the steps and turns
   // between K_hi keyframes.

@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "procedural/detail_binding.h"
 #include "procedural/motion_plan_internal.h"
+#include "procedural/region_bend.h"
 #include "procedural/support_band.h"
 #include "geometry/rigid_bodies.h"
 #include "procedural/wheel_riders.h"
@@ -152,7 +154,10 @@ constexpr double kCore = 0.12, kHip = 0.6, kNeck = 0.3, kTailStart = 0.3, kRamp 
 // An arm lobe's turn grows over this share of its base's width beyond the base.
 constexpr double kLobeRamp = 0.5;
 
-Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
+}  // namespace
+
+// The turn a region bend gives point q at t (motion_plan_internal.h).
+RegionTurn motion_plan_internal::region_turn(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
   const double W = std::max(box.w(), 1e-9), H = std::max(box.h(), 1e-9);
   const Vec2 c = box.centre();
   auto wave = [&](double phase) { return oscillation(a, a.cycles * t + phase); };
@@ -166,50 +171,55 @@ Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box
       if (depth <= 0) continue;
       // A located part that grows (petals opening, petal_rosette.h): its points spread from the
       // lobe's centre, as a pulse scales a part about its middle.
-      if (a.primitive == Primitive::Pulse) return l.pivot + (1 + amp * (0.5 - 0.5 * std::cos(kTau * a.cycles * t))) * (q - l.pivot);
+      if (a.primitive == Primitive::Pulse) return {l.pivot, 0, 1, amp * (0.5 - 0.5 * std::cos(kTau * a.cycles * t)), true};
       const double base = std::hypot(l.base1.x - l.base0.x, l.base1.y - l.base0.y);
       const double w = smoothstep(depth / std::max(kLobeRamp * base, 1e-9));
-      const double ang = amp * (l.side < 0 ? 1 : -1) * wave(a.alternating && l.side > 0 ? 0.5 : 0) * w;
-      return rotate_about(q, l.pivot, ang);
+      return {l.pivot, amp * (l.side < 0 ? 1 : -1) * wave(a.alternating && l.side > 0 ? 0.5 : 0), w};
     }
-    return q;
+    return {};
   }
   switch (a.region) {
     case Region::Sides: {
       const double dx = q.x - c.x;
       const int side = dx < 0 ? -1 : 1;  // as the viewer sees it
       const double core = a.core_left > 0 ? (side < 0 ? a.core_left : a.core_right) : kCore * W;
-      if (std::fabs(dx) <= core) return q;
-      if (a.region_side != 0 && side != a.region_side) return q;
+      if (std::fabs(dx) <= core) return {};
+      if (a.region_side != 0 && side != a.region_side) return {};
       const double w = smoothstep((std::fabs(dx) - core) / (kRamp * W));
       // Mirrored: both sides rise together; alternating: half a cycle apart.
-      const double ang = amp * (side < 0 ? 1 : -1) * wave(a.alternating && side > 0 ? 0.5 : 0) * w;
-      return rotate_about(q, {c.x + side * core, c.y}, ang);
+      return {{c.x + side * core, c.y}, amp * (side < 0 ? 1 : -1) * wave(a.alternating && side > 0 ? 0.5 : 0), w};
     }
     case Region::Lower: {
       const double hip = box.y0 + kHip * H;
-      if (q.y <= hip) return q;
+      if (q.y <= hip) return {};
       const int side = q.x < c.x ? -1 : 1;
-      if (a.region_side != 0 && side != a.region_side) return q;
+      if (a.region_side != 0 && side != a.region_side) return {};
       const double w = smoothstep((q.y - hip) / (kRamp * H));
-      const double ang = amp * wave(a.alternating && side > 0 ? 0.5 : 0) * w * (a.alternating ? 1 : (side < 0 ? 1 : -1));
-      return rotate_about(q, {c.x + side * kCore * W, hip}, ang);
+      return {{c.x + side * kCore * W, hip}, amp * wave(a.alternating && side > 0 ? 0.5 : 0) * (a.alternating ? 1 : (side < 0 ? 1 : -1)), w};
     }
     case Region::Top: {
       const double neck = box.y0 + kNeck * H;
-      if (q.y >= neck) return q;
-      return rotate_about(q, {c.x, neck}, amp * wave(0) * smoothstep((neck - q.y) / (kRamp * H)));
+      if (q.y >= neck) return {};
+      return {{c.x, neck}, amp * wave(0), smoothstep((neck - q.y) / (kRamp * H))};
     }
     case Region::End: {
       const double start = a.direction > 0 ? box.x1 - kTailStart * W : box.x0 + kTailStart * W;
       const double beyond = a.direction * (q.x - start);
-      if (beyond <= 0) return q;
-      return rotate_about(q, {start, c.y}, amp * wave(0) * smoothstep(beyond / (kRamp * W)));
+      if (beyond <= 0) return {};
+      return {{start, c.y}, amp * wave(0), smoothstep(beyond / (kRamp * W))};
     }
     case Region::None: case Region::Located: break;
   }
-  return q;
+  return {};
 }
+
+Vec2 motion_plan_internal::bend_region(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
+  const RegionTurn r = region_turn(a, amp, t, box, q);
+  if (r.pulse) return r.pivot + (1 + r.grow) * (q - r.pivot);
+  return r.weight > 0 ? rotate_about(q, r.pivot, r.angle * r.weight) : q;
+}
+
+namespace {
 
 // A part hanging beside a bending shape, outside its box (not under its middle half, where legs
 // hang from a torso and keep to the rig): moved whole as the bend
@@ -417,9 +427,70 @@ std::vector<char> moved_apart(const Scene& scene, const Rig& rig, const MotionPl
   return moves;
 }
 
+// How region action `a` moves the points of path `src` (of part `by`; `bg`: it stays): 1 bent
+// with the region, 2 carried by the bend (carried_by_bend), 0 not at all. The part's own
+// outlines and what hangs from it within its width and not below it (a hand at the end of a
+// sleeve, also one raised above the sleeve's box) bend; what hangs below (legs under a waving
+// torso) keeps its shape and follows the rig. A wheel (and what turns with it) keeps to its
+// own frame: a pedalling leg's bend bent a sketched bicycle's wheels with it. Limbs of the
+// whole silhouette: whatever lies in them bends with them (the outline drawn over a tail's
+// fill), whichever part it belongs to.
+int region_use(const Rig& rig, const PlannedAction& a, size_t src, int by, bool bg, const std::vector<char>& spinning,
+               const WheelLoads& loads) {
+  if (by >= 0 && by != a.parts[0] && (spinning[by] || loads.turns_with[by] >= 0)) return 0;
+  const RigBox& hb = rig.parts[a.parts[0]].box;
+  const Vec2 gc = by >= 0 ? rig.parts[by].box.centre() : Vec2{};
+  if (a.silhouette)
+    return !bg && (a.lobe_paths.empty() || std::binary_search(a.lobe_paths.begin(), a.lobe_paths.end(), static_cast<int>(src))) ? 1 : 0;
+  const bool hangs = by >= 0 && part_under(rig, by, a.parts[0]);
+  if (by == a.parts[0] || (hangs && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y <= hb.y1)) return 1;
+  if (hangs && (gc.y <= hb.y1 || std::fabs(gc.x - hb.centre().x) > 0.25 * hb.w())) return 2;
+  return 0;
+}
+
+// Each region action's mesh of the paths it bends (region_bend.h; null: the closed form), and
+// `folds` sized for them.
+template <class Stays>
+std::vector<std::unique_ptr<RegionBend>> region_meshes(const Scene& scene, const Rig& rig, const MotionPlan& plan,
+                                                       const std::vector<char>& spinning, const WheelLoads& loads, const Stays& stays,
+                                                       std::vector<BendFold>* folds) {
+  std::vector<std::unique_ptr<RegionBend>> mesh(plan.actions.size());
+  for (size_t i = 0; i < plan.actions.size(); ++i) {
+    const PlannedAction& a = plan.actions[i];
+    if (a.region == Region::None || a.target == Target::Repeated || a.parts.empty() || plan.amplitude(a) == 0) continue;
+    std::vector<int> bent;
+    for (size_t pi = 0; pi < scene.paths.size(); ++pi)
+      if (region_use(rig, a, pi, rig.part_of_path[pi], stays(pi), spinning, loads) == 1) bent.push_back(static_cast<int>(pi));
+    mesh[i] = std::make_unique<RegionBend>(scene, bent, a, rig.parts[a.parts[0]].box);
+    if (mesh[i]->empty()) mesh[i].reset();
+  }
+  if (folds) {
+    folds->assign(plan.actions.size(), BendFold{});
+    for (size_t i = 0; i < mesh.size(); ++i) (*folds)[i].meshed = mesh[i] != nullptr;
+  }
+  return mesh;
+}
+
+// The region meshes at frame f (time t), their folds noted in `folds`.
+std::vector<std::vector<Vec2>> solve_meshes(const std::vector<std::unique_ptr<RegionBend>>& mesh, const MotionPlan& plan, double t, int f,
+                                            std::vector<BendFold>* folds) {
+  std::vector<std::vector<Vec2>> bent(mesh.size());
+  for (size_t i = 0; i < mesh.size(); ++i) {
+    if (!mesh[i]) continue;
+    bent[i] = mesh[i]->solve(plan.amplitude(plan.actions[i]), t);
+    if (!folds) continue;
+    const MeshQuality mq = mesh[i]->quality(bent[i]);
+    BendFold& fd = (*folds)[i];
+    if (mq.flipped > fd.flipped || (fd.flipped == 0 && mq.flipped == 0 && mq.min_area_ratio < fd.min_area_ratio)) fd.frame = f;
+    fd.flipped = std::max(fd.flipped, mq.flipped);
+    fd.min_area_ratio = std::min(fd.min_area_ratio, mq.min_area_ratio);
+  }
+  return bent;
+}
+
 }  // namespace
 
-std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames) {
+std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames, std::vector<BendFold>* folds) {
   const int G = static_cast<int>(rig.parts.size());
   const double W = std::max(rig.figure.w(), 1e-9), H = std::max(rig.figure.h(), 1e-9);
   auto under = [&](int p, int a) { return part_under(rig, p, a); };
@@ -479,6 +550,8 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     return (g >= 0 && (rig.parts[g].role == Role::Background || held[g])) || (p < ground.size() && ground[p]);
   };
 
+  const std::vector<std::unique_ptr<RegionBend>> mesh = region_meshes(scene, rig, plan, spinning, loads, stays, folds);
+
   std::vector<Vec2> out;
   out.reserve(static_cast<size_t>(frames) * (scene.segment_count() * 3 + scene.paths.size() * 2));
   for (int f = 0; f < frames; ++f) {
@@ -509,6 +582,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
       }
     }
     const std::vector<Affine> world = world_transforms(rig, local, root_turn, spin, planted, loads);
+    const std::vector<std::vector<Vec2>> bent = solve_meshes(mesh, plan, t, f, folds);
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
       const bool background = stays(pi);
       size_t point = 0;  // the path's control point, counted over its subpaths (rides_on)
@@ -525,27 +599,16 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
           const bool bg = src == pi ? background : stays(src);
           q = elem.apply(q);
           if (!free_particle) {
-            for (const auto& a : plan.actions) {
+            for (size_t ai = 0; ai < plan.actions.size(); ++ai) {
+              const PlannedAction& a = plan.actions[ai];
               if (!is_deformation(a)) continue;
               const double amp = plan.amplitude(a);
               if (a.region != Region::None) {
-                // The part's own outlines and what hangs from it within its width and not
-                // below it (a hand at the end of a sleeve, also one raised above the sleeve's
-                // box); what hangs below (legs under a waving torso) keeps its shape and
-                // follows the rig. A wheel (and what turns with it) keeps to its own frame: a
-                // pedalling leg's bend bent a sketched bicycle's wheels with it.
-                if (by >= 0 && by != a.parts[0] && (spins[by] || loads.turns_with[by] >= 0)) continue;
+                const int use = region_use(rig, a, src, by, bg, spinning, loads);
                 const RigBox& hb = rig.parts[a.parts[0]].box;
-                const Vec2 gc = by >= 0 ? rig.parts[by].box.centre() : Vec2{};
-                // Limbs of the whole silhouette: whatever lies in them bends with them (the
-                // outline drawn over a tail's fill), whichever part it belongs to.
-                if (a.silhouette) {
-                  if (!bg && (a.lobe_paths.empty() || std::binary_search(a.lobe_paths.begin(), a.lobe_paths.end(), static_cast<int>(src))))
-                    q = bend_region(a, amp, t, hb, q);
-                } else if (by == a.parts[0] || (by >= 0 && under(by, a.parts[0]) && gc.x >= hb.x0 && gc.x <= hb.x1 && gc.y <= hb.y1))
-                  q = bend_region(a, amp, t, hb, q);
-                else if (by >= 0 && under(by, a.parts[0]) && (gc.y <= hb.y1 || std::fabs(gc.x - hb.centre().x) > 0.25 * hb.w()))
-                  q = carried_by_bend(a, amp, t, hb, rig.parts[by].pivot, q);
+                if (use == 1) q = mesh[ai] ? mesh[ai]->apply(bent[ai], q) : bend_region(a, amp, t, hb, q);
+                else if (use == 2)
+                  q = mesh[ai] ? mesh[ai]->carry(bent[ai], rig.parts[by].pivot, q) : carried_by_bend(a, amp, t, hb, rig.parts[by].pivot, q);
               } else if (a.parts.empty()) {
                 if (!bg) q = a.primitive == Primitive::Sway ? sway_lean(a, amp, t, rig.figure, q) : deform(a, amp, t, rig.figure, q);
               } else {

@@ -108,7 +108,16 @@ MotionPlan plan_from_steps(const std::vector<ExplicitStep>& steps, const Rig& ri
 
 // Control points of every frame: frames * (the scene's path points) canvas points, in scene
 // order (paths, subpaths, points), for t = f / (frames - 1).
-std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames);
+// Region bends move their points through an as-rigid-as-possible mesh (region_bend.h); when
+// `folds` is given, it gets one entry per action: the worst frame of that action's mesh.
+struct BendFold {
+  int flipped = 0;            // the most flipped triangles in one frame (folds)
+  double min_area_ratio = 1;  // the smallest deformed / rest triangle area over the frames
+  int frame = -1;             // the frame with the most folds (or the thinnest triangle)
+  bool meshed = false;        // the action bent its region through a mesh
+};
+std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames,
+                               std::vector<BendFold>* folds = nullptr);
 
 // Scales the plan's amplitudes until every frame keeps every control point inside the canvas,
 // no point moves farther than kMaxStep of the diagonal and no swinging part turns farther than
