@@ -94,12 +94,13 @@ TEST_CASE("a band across a waving sleeve bends with it: not cut, not squeezed, t
   }
 }
 
-TEST_CASE("a sleeve swung so far that its mesh folds is caught, and fit_plan makes it smaller") {
+TEST_CASE("a sleeve swung so far that its mesh folds is caught: fit_plan makes it smaller, or bends it in closed form") {
   const Scene s = read_svg_string(kSweater, "sweater.svg");
   const Rig rig = build_rig(s, {});
+  // 90 degrees folds the armpit at full size and unfolds at 0.64 of it (above kMinUnfoldScale).
   MotionPlan plan = plan_from_prompt(parse_prompt("she is waving her arms"), rig, 1);
   REQUIRE(plan.actions.size() == 1);
-  plan.actions[0].amp = 170;  // degrees: the sleeves swing over the body
+  plan.actions[0].amp = 90;
   std::vector<BendFold> folds;
   animate_plan(s, rig, plan, kFrames, &folds);
   REQUIRE(folds.size() == 1);
@@ -109,9 +110,22 @@ TEST_CASE("a sleeve swung so far that its mesh folds is caught, and fit_plan mak
   bool noted = false;
   for (const std::string& n : plan.notes) noted = noted || n.find("its bend folds its shape") != std::string::npos;
   CHECK(noted);
+  CHECK_FALSE(plan.actions[0].closed_form);
   animate_plan(s, rig, plan, kFrames, &folds);
+  CHECK(folds[0].meshed);
   CHECK(folds[0].flipped == 0);
   CHECK(folds[0].min_area_ratio >= 0.05);  // kPinchArea
+  // 170 degrees: the sleeves swing over the body, and the mesh folds until under half the size
+  // (the drawing's parts would only overlap there): the bend keeps its size in closed form.
+  MotionPlan over = plan_from_prompt(parse_prompt("she is waving her arms"), rig, 1);
+  over.actions[0].amp = 170;
+  fit_plan(s, rig, over, kFrames, 15);
+  CHECK(over.actions[0].closed_form);
+  bool closed_noted = false;
+  for (const std::string& n : over.notes) closed_noted = closed_noted || n.find("bent in closed form") != std::string::npos;
+  CHECK(closed_noted);
+  animate_plan(s, rig, over, kFrames, &folds);
+  CHECK_FALSE(folds[0].meshed);
 }
 
 }  // TEST_SUITE

@@ -457,7 +457,8 @@ std::vector<std::unique_ptr<RegionBend>> region_meshes(const Scene& scene, const
   std::vector<std::unique_ptr<RegionBend>> mesh(plan.actions.size());
   for (size_t i = 0; i < plan.actions.size(); ++i) {
     const PlannedAction& a = plan.actions[i];
-    if (a.region == Region::None || a.target == Target::Repeated || a.parts.empty() || plan.amplitude(a) == 0) continue;
+    if (a.region == Region::None || a.closed_form || a.target == Target::Repeated || a.parts.empty() || plan.amplitude(a) == 0)
+      continue;
     std::vector<int> bent;
     for (size_t pi = 0; pi < scene.paths.size(); ++pi)
       if (region_use(rig, a, pi, rig.part_of_path[pi], stays(pi), spinning, loads) == 1) bent.push_back(static_cast<int>(pi));

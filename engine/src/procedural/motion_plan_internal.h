@@ -23,6 +23,9 @@ inline constexpr double kFallbackSwayDeg = 6;
 // margin); and it gives up after this many steps of 0.8 (7 % of the size).
 inline constexpr double kMarginUse = 0.9;
 inline constexpr int kScaleAttempts = 12;
+// A region bend is made smaller until its mesh stops folding down to this share of its size;
+// below it the fold is taken for parts overlapping, and the bend keeps its size in closed form.
+inline constexpr double kMinUnfoldScale = 0.5;
 // fit_plan: a clause whose largest motion is under this share of the figure's diagonal is
 // raised to it (a viewer must see the motion the prompt asked for; the pixel ranker calls a video
 // where under 0.5 % of the foreground changes 'no motion'), by at most this factor.
