@@ -3,7 +3,7 @@
 // glibc raises its mmap threshold to the size of each mmap-ed block freed (up to 32 MB), so
 // after the first frame-sized buffers are freed, later ones of a few MB come from the heap and
 // its per-thread arenas (PoCL allocates its buffers there too, with posix_memalign), whose freed
-// holes stay resident: releasing a fitter's loss buffers did not lower the RSS at all. Pinning
+// holes stay resident, to be filled only by blocks that fit in them. Pinning
 // the threshold keeps every block of 4 MB or more in its own mapping, returned whole on free.
 // The bundled example's `run`: 640 / 634 / 703 MB -> 534 MB with the threshold alone (at 1 MB),
 // the same animation.svg. The price is page faults on every fresh mapping: system time
