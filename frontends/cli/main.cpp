@@ -11,6 +11,7 @@
 
 #include "cli/cli_args.h"
 #include "cli/commands.h"
+#include "cli/malloc_policy.h"
 #include "pipeline/batch.h"
 #include "report/rerun_command.h"
 #include "svgmotion/error.h"
@@ -264,6 +265,7 @@ const char* command_help(const std::string& cmd) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  svgm::cli::use_returning_malloc();  // freed frames go back to the system (malloc_policy.h)
   svgm::follow_batch_parent();  // an item of `svgmotion batch` ends with its batch
   // Bad input must give our one error line, not FFmpeg's or OpenCV's chatter before it. These
   // are read when OpenCV first loads its video back end, i.e. after this point.

@@ -13,6 +13,7 @@
 
 #include "fit/optimise/keyframe_choice.h"
 #include "fit/output/checkpoint.h"
+#include "fit/target/white_runs.h"
 #include "svgmotion/log.h"
 
 namespace svgm {
@@ -275,20 +276,43 @@ void FitRun::refine() {
     (coarse_target == &target ? target_raw : keyed_raw) = {};
     std::vector<float>().swap(coarse_frames.sdf);
     std::vector<uint8_t>().swap(coarse_frames.mask);
-    prepare_fine();
-    fine_options.chroma_weight = chroma_weight;
-    fine = std::make_unique<Fitter>(*rt, fit_scene, *fine_target, fine_options);
-    // The fitter has its distance field on the device and nothing reads the target's mask
-    // after the load's checks: 5 bytes per pixel and keyframe (21 MB for 16 keyframes at 512 px).
-    std::vector<float>().swap(fine_target->sdf);
-    std::vector<uint8_t>().swap(fine_target->mask);
     const double scale = static_cast<double>(fine_size.width) / size.width;
-    fine->adopt_coarse(cfit, scale);
-    log::debug("fit: refining every keyframe at %dx%d for %d iterations", fine_size.width, fine_size.height,
-               refine_iters);
-    run_stage(*fine, coarse_iters, false);
+    // Through the refinement neither target's rgba is read (the coarse fitter's loss waits for
+    // the guard; every finer keyframe is active, so no warm start reads the finer one, whose Q
+    // and R are made before its iterations): each is packed as runs of exact white
+    // (fit/target/white_runs.h) until the stage ends, the coarse one before the finer fitter
+    // is built, the finer one once its Q and R are made.
+    WhiteRuns coarse_rgba = pack_white_runs(coarse_frames.rgba), fine_rgba;
+    bool fine_packed = false;
+    const auto unpack = [&] {
+      if (fine) fine->release_loss_memory();
+      if (fine_packed) fine_target->rgba = unpack_white_runs(fine_rgba);
+      fine_packed = false;
+      coarse_frames.rgba = unpack_white_runs(coarse_rgba);
+    };
+    try {
+      prepare_fine();
+      fine_options.chroma_weight = chroma_weight;
+      fine = std::make_unique<Fitter>(*rt, fit_scene, *fine_target, fine_options);
+      // The fitter has its distance field on the device and nothing reads the target's mask
+      // after the load's checks: 5 bytes per pixel and keyframe (21 MB for 16 keyframes at 512 px).
+      std::vector<float>().swap(fine_target->sdf);
+      std::vector<uint8_t>().swap(fine_target->mask);
+      fine->adopt_coarse(cfit, scale);
+      log::debug("fit: refining every keyframe at %dx%d for %d iterations", fine_size.width, fine_size.height,
+                 refine_iters);
+      fine->prepare_loss_memory();
+      fine_rgba = pack_white_runs(fine_target->rgba);
+      fine_packed = true;
+      log::debug("fit: the targets' frames packed through the refinement: %.1f MB at %d px, %.1f MB at %d px",
+                 fine_rgba.bytes() / 1048576.0, fine_size.width, coarse_rgba.bytes() / 1048576.0, size.width);
+      run_stage(*fine, coarse_iters, false);
+    } catch (...) {
+      unpack();  // whoever reports the failure may read them
+      throw;
+    }
     bar->refine_done(seconds_in());
-    fine->release_loss_memory();
+    unpack();
     if (!stopped) {
       // The refinement's guard. A keyframe the refinement made worse at the coarse width (the
       // snail's pupil, off by more than the fine loss's reach, shrank to a hairline at 512 px:

@@ -88,6 +88,10 @@ class ClRaster {
   // last pass's losses stay readable.
   void release_loss_buffers();
   bool holds_loss_buffers() const { return q_(); }
+  // Makes the loss buffers and the constants Q and R for `background` now, as the next loss
+  // pass would: from here until release_loss_buffers (or another background) the targets are
+  // not read, and a pass that would need them after all throws instead of reading them.
+  void prepare_loss(const std::array<float, 4>& background);
   // Forward pass, blurred-MSE loss against the targets (kernels/loss.cl) and the backward pass
   // down to the control points, all on the device; returns the loss (reading one scalar).
   // `weight` multiplies the mean of the squared blurred residual; the frames are composited

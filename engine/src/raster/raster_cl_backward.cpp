@@ -261,11 +261,15 @@ float ClRaster::read_loss() {
   return loss;
 }
 
-void ClRaster::enqueue_loss_and_gradient(float weight, const std::array<float, 4>& background) {
+void ClRaster::prepare_loss(const std::array<float, 4>& background) {
   init_backward();
   if (!targets_) throw Error("internal: loss without targets (set_targets)");
   if (!q_()) make_loss_buffers();
   prepare_loss_constants(background);
+}
+
+void ClRaster::enqueue_loss_and_gradient(float weight, const std::array<float, 4>& background) {
+  prepare_loss(background);
   const auto& p = plan_;
   const size_t K = static_cast<size_t>(active_);
   const size_t pixels = K * p.height * static_cast<size_t>(p.width);

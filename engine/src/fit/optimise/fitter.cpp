@@ -389,6 +389,8 @@ std::vector<float> Fitter::keyframe_losses() { return raster_->read_frame_losses
 
 void Fitter::release_loss_memory() { raster_->release_loss_buffers(); }
 
+void Fitter::prepare_loss_memory() { raster_->prepare_loss(kWhite); }
+
 std::vector<float> Fitter::evaluate_keyframe_losses() {
   enqueue_motion(K_);
   raster_->set_active_frames(K_);

@@ -245,6 +245,10 @@ class Fitter {
   // Frees the loss's pixel-sized device memory (ClRaster::release_loss_buffers) while this
   // fitter only renders or waits for another; the next iteration or evaluation makes it again.
   void release_loss_memory();
+  // Makes the loss's memory and constants from the target now, as the next iteration would
+  // (ClRaster::prepare_loss): after this the target's rgba is not read again until
+  // release_loss_memory, so its holder may set it aside (fit_stages.cpp's refinement).
+  void prepare_loss_memory();
 
   const RasterPlan& raster_plan() const { return plan_; }
   const FitPlan& fit_plan() const { return fplan_; }

@@ -10,6 +10,7 @@
 #include "fit/optimise/fitter_internal.h"
 #include "fit/optimise/warm_start.h"
 #include "geometry/rigid_bodies.h"
+#include "svgmotion/error.h"
 
 namespace svgm {
 
@@ -62,6 +63,8 @@ void Fitter::warm_start(int k, int src) {
   q.enqueueReadBuffer(raster_->cp_buffer(), CL_TRUE, static_cast<size_t>(src) * plan_.n_cp * 2 * sizeof(float),
                       cp.size() * sizeof(float), cp.data());
   std::vector<uint8_t> prev(static_cast<size_t>(W) * H), next(prev.size());
+  if (target_.rgba.size() < static_cast<size_t>(k + 1) * H * W * 4)
+    throw Error("internal: a warm start without its target's frames (set aside)");
   grey_frames(img, &target_.rgba[static_cast<size_t>(k) * H * W * 4], prev, next);
   std::vector<Vec2> from;
   std::vector<int> index;

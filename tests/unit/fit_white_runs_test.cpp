@@ -1,0 +1,54 @@
+// pack_white_runs / unpack_white_runs (fit/target/white_runs.h): a target's rgba held as runs of
+// exact white while the refinement does not read it. Unpacking must give back the same bits
+// (floats next to 1, white colour with another alpha, -0 and NaN included), and the packed
+// form must hold the non-white pixels alone, counted by hand.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string>
+
+#include "fit/target/white_runs.h"
+#include "svgmotion/error.h"
+
+using namespace svgm;
+
+TEST_SUITE("fit") {
+  TEST_CASE("white runs: the same bits back, the white pixels as counts") {
+    const float below = std::nextafter(1.f, 0.f), above = std::nextafter(1.f, 2.f);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    // Pixels: other, white, white, other, other, white, other (x3 kinds of near-white).
+    const float px[7][4] = {{below, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 0.5f},
+                            {-0.f, nan, 0.25f, 1}, {1, 1, 1, 1}, {1, above, 1, 1}};
+    std::vector<float> rgba;
+    for (const auto& p : px) rgba.insert(rgba.end(), p, p + 4);
+    const std::vector<float> original = rgba;
+    WhiteRuns packed = pack_white_runs(rgba);
+    CHECK(rgba.empty());
+    CHECK(packed.pixels == 7);
+    // A first white run of 0, then other 1, white 2, other 2, white 1, other 1.
+    CHECK(packed.runs == std::vector<uint32_t>{0, 1, 2, 2, 1, 1});
+    CHECK(packed.others.size() == 4 * 4);
+    CHECK(packed.bytes() == 6 * 4 + 16 * 4);
+    const std::vector<float> back = unpack_white_runs(packed);
+    REQUIRE(back.size() == original.size());
+    CHECK(std::memcmp(back.data(), original.data(), back.size() * sizeof(float)) == 0);
+    CHECK(std::signbit(back[16]));  // -0 stays -0
+    CHECK(packed.pixels == 0);
+  }
+
+  TEST_CASE("white runs: all white, empty, and a size that is not RGBA") {
+    std::vector<float> white(4 * 1000, 1.f);
+    WhiteRuns packed = pack_white_runs(white);
+    CHECK(packed.runs == std::vector<uint32_t>{1000});
+    CHECK(packed.others.empty());
+    CHECK(unpack_white_runs(packed) == std::vector<float>(4 * 1000, 1.f));
+    std::vector<float> none;
+    WhiteRuns empty = pack_white_runs(none);
+    CHECK(unpack_white_runs(empty).empty());
+    std::vector<float> odd(6, 1.f);
+    CHECK_THROWS_WITH_AS(pack_white_runs(odd), "internal: packing 6 floats as RGBA", Error);
+    CHECK(odd.size() == 6);  // left as it was
+  }
+}
