@@ -52,6 +52,27 @@ void log_plan(const svgm_host* host, const svgm::MotionPlan& plan, const svgm::R
   host->log(host, 1, ("video procedural: " + line + " (motion.json)").c_str());
 }
 
+// The bar's share as the share of the stage's time: the rig and the plan before the first
+// candidate take seconds the candidates' count does not measure (at i / n of the count the CLI's
+// ETA, time so far / share x share left, read three times the time left). After `made` of `n`
+// candidates the rest is those left at the mean time of those made; never going back.
+class StageShare {
+ public:
+  using Clock = std::chrono::steady_clock;
+  explicit StageShare(Clock::time_point started) : started_(started), first_(Clock::now()) {}
+  double shown() const { return share_; }
+  double made(int made, int n) {
+    const double so_far = seconds(started_), left = (n - made) * seconds(first_) / std::max(made, 1);
+    share_ = std::max(share_, made >= n ? 1.0 : so_far / (so_far + left));
+    return share_;
+  }
+
+ private:
+  static double seconds(Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); }
+  Clock::time_point started_, first_;
+  double share_ = 0;
+};
+
 nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   namespace fs = std::filesystem;
   namespace P = svgm::plugin;
@@ -120,13 +141,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
     if (p.has_fill) palette.push_back(p.fill);
     if (p.has_stroke) palette.push_back(p.stroke.color);
   }
-  // The bar's share is the share of the stage's time: the rig and the plan before the first
-  // candidate took seconds that the candidates' count does not measure (at i / n the CLI's ETA,
-  // time so far / share x share left, read three times the time left). After candidate i the
-  // rest is the candidates left at the mean time of those made.
-  const auto loop_start = std::chrono::steady_clock::now();
-  double share = 0;
-  auto seconds = [](auto from) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - from).count(); };
+  StageShare share(started);
   for (int i = 0; i < n; ++i) {
     char name[16];
     std::snprintf(name, sizeof name, "%02d", i);
@@ -137,7 +152,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
     // Named before it is made: a candidate takes seconds (the first one, 11 s on a loaded
     // machine, was "starting" on the bar until then).
     if (host && host->progress)
-      host->progress(host, share, ("making candidate " + std::string(name)).c_str());
+      host->progress(host, share.shown(), ("making candidate " + std::string(name)).c_str());
     std::vector<svgm::Vec2> pts;
     for (int attempt = 0;; ++attempt) {
       pts = svgm::animate_plan(scene, rig, plan, o.frames);
@@ -197,9 +212,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
     }
     made.push_back({{"name", std::string(name) + ".mp4"}, {"seed", seed}, {"amplitude_scale", plan.scale}, {"keyframes", plan.keyframes},
                     {"plan", plan.summary()}, {"path_body", path_body}, {"bodies", svgm::body_maps_json(maps)}});
-    const double so_far = seconds(started), left = (n - 1 - i) * seconds(loop_start) / (i + 1);
-    share = std::max(share, i + 1 == n ? 1.0 : so_far / (so_far + left));
-    if (host && host->progress) host->progress(host, share, name);
+    if (host && host->progress) host->progress(host, share.made(i + 1, n), name);
   }
   report["candidates"] = made;
   svgm::write_file_atomic(fs::path(req.at("run_dir").get<std::string>()) / "motion.json", svgm::json_text(report, 2) + "\n");
