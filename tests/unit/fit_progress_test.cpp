@@ -7,7 +7,8 @@
 // activated about every 31 iterations at 1.6 ms + 0.6 ms per active keyframe + 1,
 // the coarse fit ending 100 iterations after its last activation, 4.1 s judging
 // 28 frames between keyframes, the refinement at 512 px (4x the pixels) after 1.6
-// s of setup, 150 iterations at 43 ms, 1.3 s writing the outputs. The variants
+// s of setup, 150 iterations at 43 ms, 5.0 s writing the outputs (their tolerance searches for
+// animation.svg and animation.json; 1.3 s before animation.json had a search of its own). The variants
 // move what the estimate cannot know in advance: which plateau test ends each
 // stage, keyframes added by the choice, a slower refinement, a loaded machine. Not covered, and not
 // within 2x near their end: a refinement ending at its earliest test (100) or
@@ -31,7 +32,7 @@ struct Timeline {
   double fixed_ms = 1.6, keyframe_ms = 0.6;  // an iteration: fixed + per (active + 1)
   double choice = 4.1, refine_setup = 1.6;   // s
   double refine_ms = 43;                   // per iteration
-  double end = 1.3;                        // s writing
+  double end = 5.0;                        // s writing
   int coarse_tail = 100;                   // iterations after the last activation
   int added = 0;                           // keyframes the choice adds (0: none)
   int keyed_iters = 100;                   // the joint fit after it
@@ -107,7 +108,8 @@ void check_timeline(const Timeline& tl) {
   const std::vector<Sample> s = replay(tl, end);
   for (size_t i = 1; i < s.size(); ++i) REQUIRE(s[i].fraction >= s[i - 1].fraction);
   CHECK(s.back().fraction < 1);
-  CHECK(s.back().fraction > 0.85);
+  // The last step before the end: what is left is the end's few seconds (5 of the man's 40).
+  CHECK(s.back().fraction > 0.75);
   double worst = 1;
   std::string where;
   int judged = 0;
@@ -149,7 +151,7 @@ TEST_SUITE("fit") {
     SUBCASE("the refinement is 1.6x slower than its prior") {
       Timeline tl;
       tl.refine_ms = 70;
-      tl.end = 2.1;  // the exports run at the refinement's pace
+      tl.end = 8.0;  // the exports run at the refinement's pace
       check_timeline(tl);
     }
     SUBCASE("a loaded machine (load average 20 on 2 cores): the cost is the keyframes'") {
@@ -160,7 +162,7 @@ TEST_SUITE("fit") {
       tl.choice = 17.7;
       tl.refine_setup = 7;
       tl.refine_ms = 285;
-      tl.end = 6.7;
+      tl.end = 26;  // 6.7 s before animation.json's own search: 5.2x the idle 1.3 s, so 5.2 x 5.0 (scaled, not measured)
       check_timeline(tl);
     }
   }
@@ -184,10 +186,11 @@ TEST_SUITE("fit") {
     }
     bar.coarse_step(21, 4, t += 0.01);
     // Without a plateau test every iteration of the budget runs: 79 left at 0.01
-    // s, and the end, 90 iterations with every keyframe active.
+    // s, and the end, kEnd iterations of 0.01 s (the 4 keyframes active + kBase: the
+    // step's units are the pace's).
     CHECK(bar.seconds_left() == doctest::Approx((79 + FitProgress::kEnd) * 0.01));
     CHECK(bar.fraction(t) == doctest::Approx(t / (t + bar.seconds_left())));
-    CHECK(bar.fraction(t) > 0.8);  // 10.21 s of setup and iterations spent, 1.69 left
+    CHECK(bar.fraction(t) > 0.6);  // 10.21 s of setup and iterations spent, 6.29 left
   }
 
   TEST_CASE("fit progress: a stage that outlives its expected end is expected to the next plateau test") {

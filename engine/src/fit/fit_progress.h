@@ -95,11 +95,13 @@ public:
   // (at twice the width: its loss starts from the coarse fit's blur) 1 at the
   // second, 8 at the third, 4 at the fourth, 2 at the budget.
   static constexpr int kCoarseEndTest = 2, kRefineEndTest = 3;
-  // The end (the refinement's guard, the exports at full size, the report): after
-  // a refinement, in its iterations (the man: 1.3 s, 30 of them, on an idle
-  // machine; 6.7 s and 4.7 s, 23.5 and 15.7, on a loaded one), else in iterations
-  // with every keyframe active at the coarse width.
-  static constexpr double kEndRefined = 20, kEnd = 75;
+  // The end (the refinement's guard, the exports at full size with their tolerance
+  // searches for animation.svg and animation.json, the preview, the report): after a
+  // refinement, in its iterations, else in iterations with every keyframe active at
+  // the coarse width. The man, idle, since animation.json has a search of its own:
+  // 5.0 s, about 125 refinement iterations (40 ms each) or 600 coarse ones (8 ms);
+  // before it 1.3 s (30 refinement iterations), when an ETA of 1 s had 4.3 s left.
+  static constexpr double kEndRefined = 110, kEnd = 550;
 
 private:
   enum class Phase { Coarse, Choice, Keyed, Refine };
