@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <fstream>
 #include <iterator>
+#include <functional>
+#include <string>
 #include <vector>
-
-#include "report/sha256.h"
 
 #ifdef SVGM_HAVE_RLOTTIE
 #include <rlottie_capi.h>
@@ -37,14 +37,9 @@ std::unique_ptr<LottiePlayer> LottiePlayer::open(const std::filesystem::path& js
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   // rlottie caches every model it parses under a key (the path, for lottie_animation_from_file)
   // and hands the cached one back for the same key: a file written again under the same name
-  // (the tolerance search's candidates) would be drawn as it was first read. The content's
-  // digest is a key that changes with the content.
-  std::string key;
-  for (unsigned char b : sha256(text)) {
-    static const char* hex = "0123456789abcdef";
-    key += hex[b >> 4];
-    key += hex[b & 15];
-  }
+  // (the tolerance search's candidates) would be drawn as it was first read. A key made of the
+  // content's hash and length changes with the content.
+  const std::string key = std::to_string(std::hash<std::string>{}(text)) + "-" + std::to_string(text.size());
   Lottie_Animation* anim = lottie_animation_from_data(text.c_str(), key.c_str(), json.parent_path().c_str());
   if (!anim) {
     why_not = json.filename().string() + ": librlottie cannot load it";

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <iterator>
 #include <nlohmann/json.hpp>
 
@@ -212,8 +213,10 @@ ExportOutcome write_animation_files(const FitResult& result, const ExportSetting
     std::error_code ec;
     if (fs::exists(anim, ec)) lottie.exported_svg = anim;  // gradients follow their shapes as animation.svg draws them
     const bool measured = settings.compact && !(settings.tolerance_1024 > 0);
+    // Measured on its own, in a Lottie player (tolerance_choice.h), when the build has one and
+    // it can draw the file (a clip of a frame or two has no duration for rlottie).
+    std::optional<ToleranceChoice> choice;
     if (const DrawerMaker draw = measured ? lottie_drawer() : nullptr) {
-      // Measured on its own, in a Lottie player (tolerance_choice.h).
       auto write_json = [&](const fs::path& file, bool compact_json, double tolerance_1024, double scale) {
         LottieOptions o = lottie;
         o.compact = compact_json;
@@ -222,22 +225,28 @@ ExportOutcome write_animation_files(const FitResult& result, const ExportSetting
         o.residual_scale = scale;
         write_lottie(file, doc.scene, plan, written.points, wt, o, map);
       };
-      const ToleranceChoice choice = choose_compact_tolerance(
-          json, [&](const fs::path& file) { write_json(file, false, 0, 1); },
-          [&](const fs::path& file, double tolerance_1024) { write_json(file, true, tolerance_1024, 1); },
-          [&](const fs::path& file, double tolerance_1024, double scale) { write_json(file, true, tolerance_1024, scale); },
-          draw);
-      for (const ToleranceTrial& t : choice.trials)
+      try {
+        choice = choose_compact_tolerance(
+            json, [&](const fs::path& file) { write_json(file, false, 0, 1); },
+            [&](const fs::path& file, double tolerance_1024) { write_json(file, true, tolerance_1024, 1); },
+            [&](const fs::path& file, double tolerance_1024, double scale) { write_json(file, true, tolerance_1024, scale); },
+            draw);
+      } catch (const Error& e) {  // a write that failed fails again below
+        log::debug("export: animation.json not measured in librlottie (%s)", e.what());
+      }
+    }
+    if (choice) {
+      for (const ToleranceTrial& t : choice->trials)
         log::debug("export: animation.json at %g px at 1024 (residual %g x): worst %.2f dB of the full export in librlottie",
                    t.tolerance_1024, t.residual_scale, t.worst_db);
       outcome.lottie_measured = true;
-      outcome.lottie_tolerance_1024 = choice.tolerance_1024;
-      outcome.lottie_residual_scale = choice.residual_scale;
-      outcome.lottie_db = choice.worst_db;
-      lottie.compact = choice.worst_db >= kCompactTargetDb + kCompactMarginDb;
+      outcome.lottie_tolerance_1024 = choice->tolerance_1024;
+      outcome.lottie_residual_scale = choice->residual_scale;
+      outcome.lottie_db = choice->worst_db;
+      lottie.compact = choice->worst_db >= kCompactTargetDb + kCompactMarginDb;
       lottie.decimals = lottie.compact ? settings.decimals : kDefaultDecimals;
-      lottie.tolerance_px = choice.tolerance_1024 * px_per_1024;
-      lottie.residual_scale = choice.residual_scale;
+      lottie.tolerance_px = choice->tolerance_1024 * px_per_1024;
+      lottie.residual_scale = choice->residual_scale;
     } else if (outcome.tolerance_db != 0) {
       // No player to measure it: a fixed step tighter than animation.svg's (tolerance_choice.h),
       // its residual shapes no looser than animation.svg's transform tolerance: the residual scale
