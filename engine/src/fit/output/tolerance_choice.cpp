@@ -67,7 +67,8 @@ std::string read_text(const fs::path& file) {
 class SvgDrawer : public ExportDrawer {
  public:
   explicit SvgDrawer(const fs::path& full) : rt_("auto") {
-    const std::string text = read_text(full);
+    load(full);
+    const std::string& text = text_;
     const SmilClock clock = smil_clock(text, full.string());
     const double pass = clock.duration_s > 0 ? clock.duration_s : 1;
     for (int k = 0; k < kToleranceTimes; ++k) times_.push_back((k + 0.5) * pass / kToleranceTimes);
@@ -94,7 +95,8 @@ class SvgDrawer : public ExportDrawer {
 class LottieDrawer : public ExportDrawer {
  public:
   explicit LottieDrawer(const fs::path& full) {
-    const auto player = open(full);
+    load(full);
+    const auto& player = player_;
     for (int k = 0; k < kToleranceTimes; ++k)
       frames_.push_back(static_cast<size_t>((k + 0.5) / kToleranceTimes * static_cast<double>(player->total_frames())));
     const double w = static_cast<double>(player->width()), h = static_cast<double>(player->height());
@@ -139,8 +141,7 @@ ToleranceChoice choose_compact_tolerance(const fs::path& beside, const std::func
   write_full(full.path);
   const std::unique_ptr<ExportDrawer> drawer = draw(full.path);
   std::vector<RgbaImage> reference;
-  drawer->load(full.path);
-  for (size_t k = 0; k < drawer->count(); ++k) reference.push_back(drawer->draw(k));
+  for (size_t k = 0; k < drawer->count(); ++k) reference.push_back(drawer->draw(k));  // it holds the full export
 
   ToleranceChoice choice;
   const double floor_db = kCompactTargetDb + kCompactMarginDb;

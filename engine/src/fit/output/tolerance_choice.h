@@ -51,7 +51,8 @@ struct ToleranceChoice {
 
 // Draws one kind of export file (animation.svg, animation.json) at the measure's sampled times:
 // kToleranceTimes times (k + 0.5) / kToleranceTimes of one pass, kToleranceRenderPx on the
-// larger side, opaque over white. Made from the full export, whose clock and size it takes.
+// larger side, opaque over white. Made from the full export, whose clock and size it takes, and
+// which it holds loaded until the next load().
 class ExportDrawer {
  public:
   virtual ~ExportDrawer() = default;
