@@ -197,12 +197,17 @@ inline int mark_boundary_lines(__global const float4* L, __global const float4* 
   return any;
 }
 
-/* The forward sweep of one draw's span (composite_span), also pushing B onto the tape at every
- * fractional or marked pixel. */
+/* The forward sweep of one draw's span (composite_span), also pushing an entry onto the tape
+ * at every fractional or marked pixel: (B, a) with B the colour below and a the winding
+ * integral, and aux = (pixel index in the band, V). V, the product of 1 − α over the draws
+ * above the entry's draw up to (not including) the next entry at the same pixel, or to the
+ * top, is filled in later: `prod` holds each pixel's running product since its last entry
+ * and `last` that entry's index (see replay_band). */
 inline void replay_span(__local float* acc, __local uchar* mark, __local float4* out, int* hlo,
                         int* hhi, int xlo, int xhi, int width, float4 color,
                         __global const float4* prow, int painted, int rule,
-                        float4 background, __local float4* tape, int* tp, int cap) {
+                        float4 background, __local float4* tape, __local float2* aux, int* tp,
+                        int cap, __local float* prod, __local int* last, int row_base) {
   float s = 0.0f;
   const int xe = min(xhi, width - 1);
   grow_hull4(out, hlo, hhi, xlo, xe);
@@ -211,12 +216,21 @@ inline void replay_span(__local float* acc, __local uchar* mark, __local float4*
     acc[x] = 0.0f;
     const int marked = mark[x];
     mark[x] = 0;
-    if (marked || is_fractional(s, rule)) {
-      if (*tp < cap) tape[*tp] = out[x] + background * (1.0f - out[x].w);
-      ++*tp;
-    }
     const float4 c = paint_at(color, prow, painted, x);
     const float a = fill_rule_coverage(s, rule) * c.w;
+    if (marked || is_fractional(s, rule)) {
+      const int l = last[x];
+      if (l >= 0 && l < cap) aux[l].y = prod[x];
+      if (*tp < cap) {
+        tape[*tp] = (float4)((out[x] + background * (1.0f - out[x].w)).xyz, s);
+        aux[*tp] = (float2)((float)(row_base + x), 1.0f);
+      }
+      last[x] = *tp;
+      prod[x] = 1.0f;
+      ++*tp;
+    } else {
+      prod[x] *= 1.0f - a;
+    }
     if (a > 0.0f) out[x] = (float4)(c.xyz, 1.0f) * a + out[x] * (1.0f - a);
   }
   acc[xe + 1] = 0.0f;
@@ -226,51 +240,9 @@ inline void replay_span(__local float* acc, __local uchar* mark, __local float4*
     for (int x = xe + 1; x < width; ++x) {
       const float4 c = paint_at(color, prow, painted, x);
       const float a = cov * c.w;
+      prod[x] *= 1.0f - a;
       out[x] = (float4)(c.xyz, 1.0f) * a + out[x] * (1.0f - a);
     }
-  }
-}
-
-/* The top-down sweep of one draw's span: the one-sided g±(p) into gcell, then T *= (1 - α).
- * (Caching ∂L/∂C per pixel, for pixels on the edges of several draws, was tried: in a layered
- * scene so few visible edge pixels repeat that the cache cost more than it saved.) */
-inline void backward_span(__local float* acc, __local uchar* mark, __local float* T, int* tlo,
-                          int* thi, __local float2* gcell, int* glo, int* ghi,
-                          __global const float* E,
-                          __global const int2* ext_e, __global const half* R,
-                          int row, int height, float scale, int xlo, int xhi, int width,
-                          float4 color, __global const float4* prow, int painted, int rule,
-                          __local const float4* tape, int* tp, int cap) {
-  float s = 0.0f;
-  const int xe = min(xhi, width - 1);
-  grow_hull_fill(T, tlo, thi, xlo, xe, 1.0f);  /* transmittance starts at 1 */
-  grow_hull2(gcell, glo, ghi, xlo, xe);
-  for (int x = xlo; x <= xe; ++x) {
-    s += acc[x];
-    acc[x] = 0.0f;
-    const int marked = mark[x];
-    mark[x] = 0;
-    float2 g = (float2)(0.0f);
-    const float4 c = paint_at(color, prow, painted, x);
-    if (marked || is_fractional(s, rule)) {
-      /* Where the draws in front are opaque (T = 0) the pixel's colour does not depend on
-       * this draw: g is 0 exactly, without the 25-tap ∂L/∂C (whose reads of E' and R miss the
-       * cache; in a layered scene most of the lower draws' edges are hidden). */
-      if (*tp < cap && T[x] != 0.0f) {
-        const float3 dC = blurred_gradient(E, ext_e, R, x, row, width, height, scale);
-        const float ga = dot(dC, T[x] * (c.xyz - tape[*tp].xyz));
-        g = ga * c.w * fill_rule_slopes(s, rule);
-      }
-      ++*tp;
-    }
-    gcell[x] = g;
-    T[x] *= 1.0f - fill_rule_coverage(s, rule) * c.w;
-  }
-  acc[xe + 1] = 0.0f;
-  const float cov = fill_rule_coverage(s, rule);
-  if (cov * (painted ? 1.0f : color.w) > RESIDUAL_COVERAGE && xe + 1 < width) {
-    grow_hull_fill(T, tlo, thi, xe + 1, width - 1, 1.0f);
-    for (int x = xe + 1; x < width; ++x) T[x] *= 1.0f - cov * paint_at(color, prow, painted, x).w;
   }
 }
 
@@ -350,11 +322,12 @@ inline float4 walk_line_grad(float4 l, int on, float at, int row, int width,
 }
 
 /* The forward pass of one band replayed bottom-up with its tape: every draw's span composited
- * into band_rgba (the rows' hulls in hlo, hhi) and B pushed onto `tape` at each pixel whose
- * winding integral is fractional or that borders a line on a pixel boundary, in the order
- * (draw, row, x); draw_tape[d] gets the index of draw d's first entry. Returns the tape's
- * length, which may exceed `cap` (the entries past it are not stored). `mark` must be clear;
- * it is clear again after. Shared by raster_taped and raster_backward's fallback, so both
+ * into band_rgba (the rows' hulls in hlo, hhi) and an entry pushed onto `tape` and `aux` at
+ * each pixel whose winding integral is fractional or that borders a line on a pixel boundary,
+ * in the order (draw, row, x) (replay_span); draw_tape[d] gets the index of draw d's first
+ * entry. Returns the tape's length, which may exceed `cap` (the entries past it are not
+ * stored). `mark` must be clear; it is clear again after. `prod` and `last` are scratch of
+ * rows × width (filled here). Shared by raster_taped and raster_backward's fallback, so both
  * tape the same bits. */
 inline int replay_band(__global const float4* L, __global const float4* B,
                        __global const int2* draw_chunks, __global const int2* chunk_lines,
@@ -362,13 +335,18 @@ inline int replay_band(__global const float4* L, __global const float4* B,
                        __global const int* draw_paint, __global const float4* paint, int height,
                        int n_draws, int y0, int rows, int width, int stride, __local float* acc,
                        __local float4* band_rgba, __local uchar* mark, float4 background,
-                       __local float4* tape, int cap, __global int* draw_tape, int* hlo,
-                       int* hhi) {
+                       __local float4* tape, __local float2* aux, int cap,
+                       __global int* draw_tape, int* hlo, int* hhi, __local float* prod,
+                       __local int* last) {
   int xlo[BAND_H], xhi[BAND_H], alo[BAND_H], ahi[BAND_H];
   for (int r = 0; r < BAND_H; ++r) {
     xlo[r] = width; xhi[r] = -1;
     alo[r] = width + 2; ahi[r] = -1;
     hlo[r] = width; hhi[r] = -1;
+  }
+  for (int i = 0; i < rows * width; ++i) {
+    prod[i] = 1.0f;
+    last[i] = -1;
   }
   int tp = 0;
   for (int d = 0; d < n_draws; ++d) {
@@ -386,11 +364,19 @@ inline int replay_band(__global const float4* L, __global const float4* B,
       if (xhi[r] >= xlo[r])
         replay_span(acc + r * stride, mark + r * width, band_rgba + r * width, &hlo[r], &hhi[r],
                     xlo[r], xhi[r], width, color, pimg + (size_t)(y0 + r) * width, painted, rule,
-                    background, tape, &tp, cap);
+                    background, tape, aux, &tp, cap, prod + r * width, last + r * width,
+                    r * width);
       xlo[r] = width;
       xhi[r] = -1;
     }
   }
+  /* Each pixel's last entry gets the product of the draws above it (its V up to the top).
+   * Entries lie within the rows' hulls. */
+  for (int r = 0; r < rows; ++r)
+    for (int x = hlo[r]; x <= hhi[r]; ++x) {
+      const int l = last[r * width + x];
+      if (l >= 0 && l < cap) aux[l].y = prod[r * width + x];
+    }
   return tp;
 }
 
@@ -421,7 +407,11 @@ __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
                            int n_lines, int n_chunks, int n_draws, int n_bands, int width,
                            int height,
                            __global const int* draw_paint,     /* [n_draws] */
-                           __global const float4* paint) {     /* [n_images][H][W] */
+                           __global const float4* paint,       /* [n_images][H][W] */
+                           __local float* prod,                /* [BAND_H][W] (replay_band) */
+                           __local int* last,                  /* [BAND_H][W] */
+                           __local float2* aux,                /* [tape_cap] the tape's (pixel, V) */
+                           __global float2* pool_aux) {        /* [pool_cap] */
   /* The frame: the launch's global offset is the first of its chunk (one work-item deep in
    * that dimension, so the global id is the frame); X' holds the chunk's frames only. */
   const int band = get_group_id(0), k = get_global_id(1), k0 = get_global_offset(1);
@@ -435,13 +425,16 @@ __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
     const int tp = replay_band(lines + (size_t)k * n_lines, bounds + (size_t)k * n_chunks,
                                draw_chunks, chunk_lines, draw_color, draw_rule, draw_paint, paint,
                                height, n_draws, y0, rows, width, width + 2, acc, band_rgba, mark,
-                               background, tape, tape_cap,
-                               pool_draw + (size_t)slot * n_draws, hlo, hhi);
+                               background, tape, aux, tape_cap,
+                               pool_draw + (size_t)slot * n_draws, hlo, hhi, prod, last);
     int2 at = (int2)(-1, tp);
     if (tp <= tape_cap) {
       const int off = atomic_add(pool_used, tp);
       if (off <= pool_cap - tp) {
-        for (int i = 0; i < tp; ++i) pool[off + i] = tape[i];
+        for (int i = 0; i < tp; ++i) {
+          pool[off + i] = tape[i];
+          pool_aux[off + i] = aux[i];
+        }
         at.x = off;
       }
     }
@@ -481,7 +474,10 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               int n_lines, int n_chunks, int n_draws, int n_bands, int width,
                               int height,
                               __global const int* draw_paint,     /* [n_draws] */
-                              __global const float4* paint) {     /* [n_images][H][W] */
+                              __global const float4* paint,       /* [n_images][H][W] */
+                              __local int* last,                  /* [BAND_H][W] (replay) */
+                              __local float2* aux,                /* [tape_cap] */
+                              __global const float2* pool_aux) {  /* raster_taped's (pixel, V) */
   /* The frame, and E' of the chunk's frames only, as in raster_taped. */
   const int band = get_group_id(0), k = get_global_id(1), k0 = get_global_offset(1);
   const int lid = get_local_id(0), lsize = get_local_size(0);
@@ -507,57 +503,62 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
         for (int x = ex.x; x <= ex.y; x += 8) PREFETCH(Rk + ((size_t)y * width + x) * 4);
     }
 #endif
-    /* Per row: the draw's span, and the valid hulls of the lazily cleared row buffers
-     * (accumulation, colour, transmittance, ∂L/∂a; see grow_hull in raster.cl). */
-    int xlo[BAND_H], xhi[BAND_H], alo[BAND_H], ahi[BAND_H], hlo[BAND_H], hhi[BAND_H];
-    int tlo[BAND_H], thi[BAND_H], glo[BAND_H], ghi[BAND_H];
+    /* Per row: the valid hull of the lazily cleared ∂L/∂a cells (see grow_hull in raster.cl),
+     * and the colour hull of the fallback's replay. */
+    int hlo[BAND_H], hhi[BAND_H], glo[BAND_H], ghi[BAND_H];
     for (int r = 0; r < BAND_H; ++r) {
-      xlo[r] = width; xhi[r] = -1;
-      alo[r] = width + 2; ahi[r] = -1;
-      hlo[r] = tlo[r] = glo[r] = width;
-      hhi[r] = thi[r] = ghi[r] = -1;
+      glo[r] = width;
+      ghi[r] = -1;
     }
-    for (int i = 0; i < rows * width; ++i) mark[i] = 0; /* the sweeps keep it clear after this */
     const int slot = k * n_bands + band;
     __global int* draw_tape = pool_draw + (size_t)slot * n_draws;
 
     /* 1. The band's tape: raster_taped's copy, or (when it did not fit the pool) a bottom-up
-     *    replay of the forward pass. */
+     *    replay of the forward pass (band_T its running products). */
     const int2 at = pool_at[slot];
     int tp = at.y;
     if (at.x >= 0) {
-      for (int i = 0; i < tp; ++i) tape[i] = pool[at.x + i];
+      for (int i = 0; i < tp; ++i) {
+        tape[i] = pool[at.x + i];
+        aux[i] = pool_aux[at.x + i];
+      }
     } else {
+      for (int i = 0; i < rows * width; ++i) mark[i] = 0;
       tp = replay_band(L, B, draw_chunks, chunk_lines, draw_color, draw_rule, draw_paint, paint,
                        height, n_draws, y0, rows, width, stride, acc, band_rgba, mark, background,
-                       tape, tape_cap, draw_tape, hlo, hhi);
+                       tape, aux, tape_cap, draw_tape, hlo, hhi, band_T, last);
     }
     if (tp > tape_cap) atomic_max(overflow, tp);
+    /* band_T: each pixel's transmittance below the entries visited so far (W in the essay). */
+    for (int i = 0; i < rows * width; ++i) band_T[i] = 1.0f;
 
-    /* 2. Top-down: ∂L/∂a per edge pixel, then the boundary integrals of every line. */
+    /* 2. Top-down: ∂L/∂a at each of the draw's entries, then the boundary integrals of its
+     *    lines. Only the tape is visited: no accumulation, no sweep. */
     for (int d = n_draws - 1; d >= 0; --d) {
       const int2 chunks = draw_chunks[d];
-      accumulate_draw(L, B, chunk_lines, chunks, y0, rows, width, stride, acc, xlo, xhi, alo,
-                      ahi);
-      if (!mark_boundary_lines(L, B, chunk_lines, chunks, y0, rows, width, stride, acc, mark, xlo,
-                               xhi, alo, ahi))
-        continue; /* no chunk reaches the band (band_reaches), so nothing was accumulated */
       const float4 color = draw_color[d];
       const int rule = draw_rule[d];
       const int painted = draw_paint[d] >= 0;
       __global const float4* pimg = paint_image(paint, draw_paint[d], width, height);
-      prefetch_paint(pimg, painted, y0, rows, xlo, xhi, width);
-      int tq = draw_tape[d];
-      int slo[BAND_H], shi[BAND_H]; /* the spans written into gcell, cleared after the walk */
-      for (int r = 0; r < rows; ++r) {
-        slo[r] = xlo[r];
-        shi[r] = min(xhi[r], width - 1);
-        if (xhi[r] >= xlo[r])
-          backward_span(acc + r * stride, mark + r * width, band_T + r * width, &tlo[r], &thi[r],
-                        gcell + r * width, &glo[r], &ghi[r], Ek, Xk, Rk, y0 + r, height, grad_scale, xlo[r], xhi[r], width,
-                        color, pimg + (size_t)(y0 + r) * width, painted, rule, tape, &tq, tape_cap);
-        xlo[r] = width;
-        xhi[r] = -1;
+      const int e0 = draw_tape[d], e1 = min(d + 1 < n_draws ? draw_tape[d + 1] : tp, tape_cap);
+      for (int e = e0; e < e1; ++e) {
+        const float4 b = tape[e];
+        const float2 u = aux[e];
+        const int px = (int)u.x, r = px / width, x = px - r * width;
+        const float4 c = paint_at(color, pimg + (size_t)(y0 + r) * width, painted, x);
+        const float T = u.y * band_T[px];
+        float2 g = (float2)(0.0f);
+        /* Where the draws in front are opaque (T = 0) the pixel's colour does not depend on
+         * this draw: g is 0 exactly, without the 25-tap ∂L/∂C (whose reads of E' and R miss
+         * the cache; in a layered scene most of the lower draws' edges are hidden). */
+        if (T != 0.0f) {
+          const float3 dC = blurred_gradient(Ek, Xk, Rk, x, y0 + r, width, height, grad_scale);
+          const float ga = dot(dC, T * (c.xyz - b.xyz));
+          g = ga * c.w * fill_rule_slopes(b.w, rule);
+        }
+        grow_hull2(gcell + r * width, &glo[r], &ghi[r], x, x);
+        gcell[px] = g;
+        band_T[px] = T * (1.0f - fill_rule_coverage(b.w, rule) * c.w);
       }
       for (int c = chunks.x; c < chunks.x + chunks.y; ++c) {
         const float4 b = B[c];
@@ -584,8 +585,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
           partial[((size_t)k * n_bands + band) * n_lines + j] = g;
         }
       }
-      for (int r = 0; r < rows; ++r)
-        for (int x = slo[r]; x <= shi[r]; ++x) gcell[r * width + x] = (float2)(0.0f);
+      for (int e = e0; e < e1; ++e) gcell[(int)aux[e].x] = (float2)(0.0f);
     }
   }
 }

@@ -9,10 +9,10 @@ RasterTuning raster_tuning(const DeviceInfo& device, int width) {
   RasterTuning t;
   // Default row: 16 rows per band (enough work per item to amortise the per-draw culling). A
   // band keeps, per row, (W + 2) floats of accumulation and W float4 colours in local memory,
-  // and the backward pass three more floats per pixel (transmittance, the two one-sided
-  // ∂L/∂a) and a mark byte plus its tape. Halve the band until the rows take at most half of
-  // 3/4 of the local memory, leaving the rest to the tape.
-  const uint64_t per_row = static_cast<uint64_t>(width + 2) * 4 + static_cast<uint64_t>(width) * 29;
+  // and the backward pass four more words per pixel (transmittance, the two one-sided ∂L/∂a,
+  // the replay's last tape entry) and a mark byte plus its tape. Halve the band until the rows
+  // take at most half of 3/4 of the local memory, leaving the rest to the tape.
+  const uint64_t per_row = static_cast<uint64_t>(width + 2) * 4 + static_cast<uint64_t>(width) * 33;
   const uint64_t budget = device.local_mem_bytes ? device.local_mem_bytes * 3 / 4 : 32768;
   while (t.band_height > 1 && per_row * t.band_height > budget / 2) t.band_height /= 2;
   t.local_budget = budget;

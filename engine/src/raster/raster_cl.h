@@ -159,7 +159,7 @@ class ClRaster {
   // The tape pool (raster_taped -> raster_backward): tapes, each band's per-draw offsets and
   // its (offset, length), the entries the bands asked for, and that count as last read.
   cl::Kernel k_taped_;
-  cl::Buffer pool_, pool_draw_, pool_at_, pool_used_;
+  cl::Buffer pool_, pool_aux_, pool_draw_, pool_at_, pool_used_;
   int pool_cap_ = 0;
   int pool_asked_ = 0;
   cl::Event pool_read_;

@@ -58,17 +58,19 @@ void ClRaster::init_backward() {
     cp_first_ = make(p.cp_first.size() * sizeof(int), p.cp_first.data());
     cp_entries_ = make(p.cp_entries.size() * sizeof(int), p.cp_entries.data());
 
-    // Local memory of the backward band: rows of accumulation, colour, transmittance, the two
-    // one-sided ∂L/∂a and the boundary marks, and the tape in what is left (raster_taped
-    // needs less: no transmittance or ∂L/∂a).
+    // Local memory of the backward band: rows of accumulation, colour, transmittance (the
+    // replay's running products), the two one-sided ∂L/∂a, the boundary marks and the
+    // replay's last entry per pixel, and the tape in what is left, 24 bytes an entry (B and
+    // the winding integral, the pixel and V). raster_taped needs less: no ∂L/∂a.
     const size_t rows_bytes = static_cast<size_t>(band_h_) *
-                              ((p.width + 2) * sizeof(float) + p.width * (16 + 4 + 8 + 1));
+                              ((p.width + 2) * sizeof(float) + p.width * (16 + 4 + 8 + 1 + 4));
     const size_t fixed = rows_bytes;
+    constexpr size_t kEntryBytes = 4 * sizeof(float) + 2 * sizeof(float);
     if (fixed + 16 * 1024 > local_budget_)
       throw Error("the backward pass needs " + std::to_string(fixed + 16 * 1024) +
                   " bytes of local memory per band, the device offers " +
                   std::to_string(local_budget_));
-    tape_cap_ = static_cast<int>((local_budget_ - fixed) / 16);
+    tape_cap_ = static_cast<int>((local_budget_ - fixed) / kEntryBytes);
 
     const int W = p.width, H = p.height, F = frames_;
     // The residual forward pass writes the x-blurred residual into image_; blur it along y
@@ -85,7 +87,9 @@ void ClRaster::init_backward() {
              cl::Local(static_cast<size_t>(tape_cap_) * 4 * sizeof(float)), tape_cap_);
     // Arguments 18..20 (the pool) are set by resize_pool.
     set_args_at(k_backward_, 21, partial_, overflow_, p.n_lines, n_chunks, n_draws, bands_, W, H,
-                draw_paint_, paint_);
+                draw_paint_, paint_, cl::Local(static_cast<size_t>(band_h_) * p.width * sizeof(int)),
+                cl::Local(static_cast<size_t>(tape_cap_) * 2 * sizeof(float)));
+    // Argument 33 (the pool's (pixel, V)) is set by resize_pool.
     pool_draw_ = make(K * bands_ * std::max<size_t>(n_draws, 1) * sizeof(int));
     pool_at_ = make(K * bands_ * 2 * sizeof(int));
     pool_used_ = make(sizeof(int));
@@ -96,7 +100,10 @@ void ClRaster::init_backward() {
              cl::Local(static_cast<size_t>(tape_cap_) * 4 * sizeof(float)), tape_cap_, xres_, ext_x_);
     // Argument 13 (background) is set per pass, 14..15 (the pool) by resize_pool.
     set_args_at(k_taped_, 16, pool_draw_, pool_at_, pool_used_, p.n_lines, n_chunks, n_draws, bands_, W, H,
-                draw_paint_, paint_);
+                draw_paint_, paint_, cl::Local(static_cast<size_t>(band_h_) * p.width * sizeof(float)),
+                cl::Local(static_cast<size_t>(band_h_) * p.width * sizeof(int)),
+                cl::Local(static_cast<size_t>(tape_cap_) * 2 * sizeof(float)));
+    // Argument 30 (the pool's (pixel, V)) is set by resize_pool.
     // A first pool of a quarter of the frames' pixels; it grows to what the bands ask for.
     resize_pool(static_cast<int>(std::min<size_t>(pixels / 4 + 1, kMaxPoolEntries)));
     set_args(k_gather_lines_, lines_, line_chunk_, bounds_, partial_, line_grad_, p.n_lines,
@@ -142,7 +149,7 @@ void ClRaster::release_loss_buffers() {
   finish_pool_read();
   rt_.queue().finish();  // nothing enqueued still uses them
   // The Float renders' image_ too: a fitter that waits or only renders makes it again.
-  for (cl::Buffer* b : {&q_, &r_, &xres_, &resid_, &partial_, &pool_, &image_}) {
+  for (cl::Buffer* b : {&q_, &r_, &xres_, &resid_, &partial_, &pool_, &pool_aux_, &image_}) {
     if (!(*b)()) continue;
     device_bytes_ -= b->getInfo<CL_MEM_SIZE>();
     *b = cl::Buffer();
@@ -152,10 +159,16 @@ void ClRaster::release_loss_buffers() {
 
 void ClRaster::resize_pool(int entries) {
   if (pool_()) device_bytes_ -= static_cast<size_t>(std::max(pool_cap_, 1)) * 4 * sizeof(float);
+  if (pool_aux_()) device_bytes_ -= static_cast<size_t>(std::max(pool_cap_, 1)) * 2 * sizeof(float);
   pool_cap_ = std::max(entries, 0);
+  // An entry: B and the winding integral (float4) in pool_, its pixel and V (float2) in
+  // pool_aux_ (kernels/raster_backward.cl).
   pool_ = make(static_cast<size_t>(std::max(pool_cap_, 1)) * 4 * sizeof(float));
+  pool_aux_ = make(static_cast<size_t>(std::max(pool_cap_, 1)) * 2 * sizeof(float));
   set_args_at(k_taped_, 14, pool_, pool_cap_);
+  set_args_at(k_taped_, 30, pool_aux_);
   set_args_at(k_backward_, 18, pool_, pool_draw_, pool_at_);
+  set_args_at(k_backward_, 33, pool_aux_);
 }
 
 bool ClRaster::finish_pool_read() {
