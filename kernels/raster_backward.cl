@@ -371,12 +371,11 @@ inline int replay_band(__global const float4* L, __global const float4* B,
     }
   }
   /* Each pixel's last entry gets the product of the draws above it (its V up to the top).
-   * Entries lie within the rows' hulls. */
-  for (int r = 0; r < rows; ++r)
-    for (int x = hlo[r]; x <= hhi[r]; ++x) {
-      const int l = last[r * width + x];
-      if (l >= 0 && l < cap) aux[l].y = prod[r * width + x];
-    }
+   * A walk over the entries, not the band's pixels: a fraction of them are on the tape. */
+  for (int e = 0; e < min(tp, cap); ++e) {
+    const int px = (int)aux[e].x;
+    if (last[px] == e) aux[e].y = prod[px];
+  }
   return tp;
 }
 
