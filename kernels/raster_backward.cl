@@ -10,19 +10,26 @@
  *     ∂C/∂α_i = T_i (c_i − B_i).
  *
  * T_i is known walking the draws from the top down; B_i is known walking them from the bottom
- * up. B_i is only needed where the coverage has a non-zero derivative, i.e. where the winding
+ * up. Both are only needed where the coverage has a non-zero derivative, i.e. where the winding
  * integral a is fractional, which happens only in pixels an edge of the draw crosses. So the
- * fit's forward pass (raster_taped, below) keeps B_i on a tape for exactly those pixels (in
+ * fit's forward pass (raster_taped, below) keeps an entry on a tape for exactly those pixels (in
  * the order (draw, row, x)) while it composites bottom-up, and hands it over in a pool in
  * global memory; a band whose tape did not fit replays the forward pass here (replay_band,
- * the same code, so the same bits). The kernel then walks the draws top-down,
- * recomputes each draw's winding integrals (same lines, same order, so the same bits), reads
- * B_i back from the tape and forms
+ * the same code, so the same bits). An entry holds B_i(p), a (the same bits as the sweep's),
+ * the pixel, and V: the product of (1 − α_j(p)) over the draws j above i up to (not including)
+ * the next draw with an entry at p, or to the top. The forward gets V from a running product
+ * per pixel, restarted at each entry and stored into the pixel's previous entry. Then
+ * T_i(p) = V · W(p), W(p) the transmittance below the entries at p visited so far
+ * (T · (1 − α) of the last one, 1 before any), and the kernel walks the draws top-down over
+ * their entries alone, forming
  *
  *     g(p) = ∂L/∂a_i(p) = Σ_c ∂L/∂C_c(p) · T_i(p) (c_i − B_i(p))_c · alpha_i · f'(a),
  *
  * f' the slope of the fill rule (nonzero: sign(a) where |a| < 1; evenodd: the sign of the fold).
- * No paths x pixels buffer: the tape holds one float4 per edge pixel of the band.
+ * No paths x pixels buffer and no second accumulation of the lines: the tape holds 24 bytes
+ * per edge pixel of the band. (The backward pass used to accumulate every draw's lines again
+ * and sweep its spans top-down for T: half of its time. T's factors are now multiplied in
+ * another association, so T differs from that walk's in the last bits.)
  *
  * Coverage. For a region moving with velocity v, d/dθ ∫_pixel w = ∫_{∂Ω ∩ pixel} (v · n) ds
  * (Reynolds transport; n the unit normal from the higher-winding side to the lower, which for
