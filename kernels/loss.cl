@@ -148,6 +148,46 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
     fb = min(fb, tb[j]);
   }
   const int r = (y - LOSS_R) * width; /* tap row j starts at f + r + j * width */
+#if !defined(CHROMA_R) && !defined(CHROMA_W) && LOSS_R == 2
+  /* The plain blur is the same for each of a pixel's three floats: over the span where every
+   * tap is inside, E' is blurred as a flat run of floats, eight at a time (PoCL kept the
+   * pixel loop scalar), then the row's sum is taken pixel by pixel from the stored E' in x
+   * order. Each float gets the same taps in the same order, and the sum the same terms in
+   * the same order: the same bits as the loop below. */
+  if (fa <= fb) {
+    const int a = 3 * fa, n = 3 * (fb - fa + 1), r3 = 3 * r, w3 = 3 * width;
+    int i = 0;
+    for (; i + 8 <= n; i += 8) {
+      float8 v = (float8)(0.0f);
+      v += G2 * vload8(0, f + r3 + a + i);
+      v += G1 * vload8(0, f + r3 + w3 + a + i);
+      v += G0 * vload8(0, f + r3 + 2 * w3 + a + i);
+      v += G1 * vload8(0, f + r3 + 3 * w3 + a + i);
+      v += G2 * vload8(0, f + r3 + 4 * w3 + a + i);
+      vstore8(v, 0, e + a + i);
+    }
+    for (; i < n; ++i) {
+      float v = 0.0f;
+      v += G2 * f[r3 + a + i];
+      v += G1 * f[r3 + w3 + a + i];
+      v += G0 * f[r3 + 2 * w3 + a + i];
+      v += G1 * f[r3 + 3 * w3 + a + i];
+      v += G2 * f[r3 + 4 * w3 + a + i];
+      e[a + i] = v;
+    }
+  }
+  for (int x = lo; x <= hi; ++x) {
+    float3 v = (float3)(0.0f);
+    if (x >= fa && x <= fb) {
+      v = vload3(x, e);
+    } else {
+      for (int j = 0; j <= 2 * LOSS_R; ++j)
+        if (x >= ta[j] && x <= tb[j]) v += g_tap(j - LOSS_R) * vload3(r + j * width + x, f);
+      vstore3(v, x, e);
+    }
+    s += dot(2.0f * vload_half4(x, q).xyz + v, v);
+  }
+#else
   for (int x = lo; x <= hi; ++x) {
     float3 v = (float3)(0.0f);
     if (x >= fa && x <= fb) {
@@ -182,6 +222,7 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
     s += dot(2.0f * vload_half4(x, q).xyz + v, v);
 #endif
   }
+#endif
   row_sums[(size_t)k * height + y] = s;
 }
 
