@@ -322,8 +322,7 @@ void FitRun::prepare_fine() {
   fine_to.keep_denoised = false;
   fine_to.denoised_from = coarse_target;
   activity("reading the video's keyframes at " + std::to_string(fine_size.width) + " px for the refinement");
-  TargetFrames t = load_target(*target_path, fine_size.width, fine_size.height, fine_to);
-  fine_raw = compact_raw(t);
+  TargetFrames t = load_target_compact(*target_path, fine_size.width, fine_size.height, fine_to, fine_raw);
   release_denoised();
   fine_options = fo.refined_at(static_cast<double>(fine_size.width) / size.width);
   fine_options.pin_rest_keyframe = pin_rest;

@@ -202,8 +202,7 @@ void FitRun::add_keyframes_from_target() {
       o.keep_denoised = to.keep_denoised && refine_w > 0;
       o.denoised_from = nullptr;
       if (to.stabilise) o.shake_from = &target;
-      keyed_target = load_target(*target_path, size.width, size.height, o);
-      keyed_raw = compact_raw(*keyed_target);
+      keyed_target = load_target_compact(*target_path, size.width, size.height, o, keyed_raw);
       FitOptions ko = coarse_options;
       // The new keyframes start close (warm-started from the most alike fitted keyframe) and
       // every keyframe is refined jointly: a quarter of the budget, ended by the plateau test.
@@ -281,12 +280,15 @@ void FitRun::refine() {
     // the guard; every finer keyframe is active, so no warm start reads the finer one, whose Q
     // and R are made before its iterations): each is packed as runs of exact white
     // (fit/target/white_runs.h) until the stage ends, the coarse one before the finer fitter
-    // is built, the finer one once its Q and R are made.
+    // is built, the finer one before its Q and R are made.
     WhiteRuns coarse_rgba = pack_white_runs(coarse_frames.rgba), fine_rgba;
     bool fine_packed = false;
     const auto unpack = [&] {
       if (fine) fine->release_loss_memory();
-      if (fine_packed) fine_target->rgba = unpack_white_runs(fine_rgba);
+      if (fine_packed) {
+        fine_target->rgba = unpack_white_runs(fine_rgba);
+        fine->read_targets_whole();
+      }
       fine_packed = false;
       coarse_frames.rgba = unpack_white_runs(coarse_rgba);
     };
@@ -301,9 +303,15 @@ void FitRun::refine() {
       fine->adopt_coarse(cfit, scale);
       log::debug("fit: refining every keyframe at %dx%d for %d iterations", fine_size.width, fine_size.height,
                  refine_iters);
-      fine->prepare_loss_memory();
+      // Packed before its Q and R are made, which read it a keyframe at a time from the runs:
+      // its floats (88 MB for 21 keyframes at 512 px) and Q and R are never held together.
       fine_rgba = pack_white_runs(fine_target->rgba);
       fine_packed = true;
+      const size_t frame_px = static_cast<size_t>(fine_size.width) * fine_size.height;
+      fine->read_targets_from([&fine_rgba, frame_px](int k, float* out) {
+        unpack_white_runs_range(fine_rgba, static_cast<size_t>(k) * frame_px, frame_px, out);
+      });
+      fine->prepare_loss_memory();
       log::debug("fit: the targets' frames packed through the refinement: %.1f MB at %d px, %.1f MB at %d px",
                  fine_rgba.bytes() / 1048576.0, fine_size.width, coarse_rgba.bytes() / 1048576.0, size.width);
       run_stage(*fine, coarse_iters, false);
