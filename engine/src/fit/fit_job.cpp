@@ -379,6 +379,27 @@ void FitRun::choose_chroma_weight() {
                 chroma_weight, chroma_cal->seconds, drifts.c_str());
   }
   coarse_options.chroma_weight = chroma_weight;
+  // Nothing reads the finer target's frames again before its fitter is made (the refinement).
+  pack_fine_rgba();
+}
+
+void FitRun::pack_fine_rgba() {
+  if (!fine_target || fine_packed) return;
+  fine_rgba = pack_white_runs(fine_target->rgba);
+  fine_packed = true;
+}
+
+void FitRun::unpack_fine_rgba() {
+  if (!fine_packed) return;
+  fine_target->rgba = unpack_white_runs(fine_rgba);
+  fine_packed = false;
+}
+
+void FitRun::drop_fine_target() {
+  fine_target.reset();
+  fine_raw = {};
+  fine_rgba = {};
+  fine_packed = false;
 }
 
 void FitRun::start_fitter() {

@@ -194,8 +194,7 @@ void FitRun::add_keyframes_from_target() {
       // calibration, is read again at these (prepare_fine): it goes now rather than after the
       // stage below (37 bytes per pixel and first keyframe at the finer width: 145 MB for 15
       // at 512 px, held beside this stage's own target and the denoised frames it keeps).
-      fine_target.reset();
-      fine_raw = {};
+      drop_fine_target();
       activity("reading the " + std::to_string(choice.frames.size()) + " keyframes chosen");
       TargetOptions o = to;
       o.frames = choice.frames;
@@ -255,10 +254,7 @@ void FitRun::refine() {
   if (refine_w > 0 && !stopped) {
     const RenderSize fine_size = render_size(scene, refine_w);
     // Loaded before the keyframes were chosen (the chroma weight's calibration): again, at them.
-    if (fine_target && fine_target->keyframes != ctarget.keyframes) {
-      fine_target.reset();
-      fine_raw = {};
-    }
+    if (fine_target && fine_target->keyframes != ctarget.keyframes) drop_fine_target();
     activity("starting the refinement at " + std::to_string(refine_w) + " px");
     // The guard's baseline: how well each coarse keyframe matches the video at the coarse width.
     const std::vector<float> coarse_losses = cfit.evaluate_keyframe_losses();
@@ -281,20 +277,17 @@ void FitRun::refine() {
     // and R are made before its iterations): each is packed as runs of exact white
     // (fit/target/white_runs.h) until the stage ends, the coarse one before the finer fitter
     // is built, the finer one before its Q and R are made.
-    WhiteRuns coarse_rgba = pack_white_runs(coarse_frames.rgba), fine_rgba;
-    bool fine_packed = false;
+    WhiteRuns coarse_rgba = pack_white_runs(coarse_frames.rgba);
     const auto unpack = [&] {
       if (fine) fine->release_loss_memory();
-      if (fine_packed) {
-        fine_target->rgba = unpack_white_runs(fine_rgba);
-        fine->read_targets_whole();
-      }
-      fine_packed = false;
+      unpack_fine_rgba();
+      if (fine) fine->read_targets_whole();
       coarse_frames.rgba = unpack_white_runs(coarse_rgba);
     };
     try {
       prepare_fine();
       fine_options.chroma_weight = chroma_weight;
+      unpack_fine_rgba();  // packed since the chroma weight's calibration, if loaded for it
       fine = std::make_unique<Fitter>(*rt, fit_scene, *fine_target, fine_options);
       // The fitter has its distance field on the device and nothing reads the target's mask
       // after the load's checks: 5 bytes per pixel and keyframe (21 MB for 16 keyframes at 512 px).
@@ -305,10 +298,9 @@ void FitRun::refine() {
                  refine_iters);
       // Packed before its Q and R are made, which read it a keyframe at a time from the runs:
       // its floats (88 MB for 21 keyframes at 512 px) and Q and R are never held together.
-      fine_rgba = pack_white_runs(fine_target->rgba);
-      fine_packed = true;
+      pack_fine_rgba();
       const size_t frame_px = static_cast<size_t>(fine_size.width) * fine_size.height;
-      fine->read_targets_from([&fine_rgba, frame_px](int k, float* out) {
+      fine->read_targets_from([this, frame_px](int k, float* out) {
         unpack_white_runs_range(fine_rgba, static_cast<size_t>(k) * frame_px, frame_px, out);
       });
       fine->prepare_loss_memory();
