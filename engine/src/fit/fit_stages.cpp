@@ -335,6 +335,10 @@ void FitRun::refine() {
         log::info("fit: the refinement matched keyframe%s %s worse at %d px; kept from the coarse fit",
                   refine_kept_coarse.size() > 1 ? "s" : "", ks.c_str(), size.width);
       }
+      // The guard's loss memory (Q and R, the residual chunk, the tape pool at the coarse
+      // width: ~60 MB for 21 keyframes at 256 px) is not needed by the outputs, which render
+      // and read the targets; an evaluation after this would make it again.
+      cfit.release_loss_memory();
     }
   }
 }
