@@ -4,6 +4,7 @@
 // form must hold the non-white pixels alone, counted by hand.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -36,6 +37,31 @@ TEST_SUITE("fit") {
     CHECK(std::memcmp(back.data(), original.data(), back.size() * sizeof(float)) == 0);
     CHECK(std::signbit(back[16]));  // -0 stays -0
     CHECK(packed.pixels == 0);
+  }
+
+  TEST_CASE("white runs: any range of pixels unpacked alone is the same bits as its part of the whole") {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    // White, other x2, white x3, other, white x2 (10 pixels; starting and ending on white).
+    std::vector<float> rgba(4 * 10, 1.f);
+    const float others[3][4] = {{0.5f, 0.25f, 1, 1}, {-0.f, nan, 0.75f, 1}, {1, 1, 1, 0.5f}};
+    std::copy_n(others[0], 4, &rgba[4 * 1]);
+    std::copy_n(others[1], 4, &rgba[4 * 2]);
+    std::copy_n(others[2], 4, &rgba[4 * 6]);
+    const std::vector<float> original = rgba;
+    const WhiteRuns packed = pack_white_runs(rgba);
+    CHECK(packed.runs == std::vector<uint32_t>{1, 2, 3, 1, 3});
+    for (size_t first = 0; first <= 10; ++first)
+      for (size_t count = 0; first + count <= 10; ++count) {
+        std::vector<float> out(4 * count, 0.f);
+        unpack_white_runs_range(packed, first, count, out.data());
+        CAPTURE(first);
+        CAPTURE(count);
+        CHECK(std::memcmp(out.data(), &original[4 * first], out.size() * sizeof(float)) == 0);
+      }
+    CHECK(packed.pixels == 10);  // untouched
+    float out[8];
+    CHECK_THROWS_WITH_AS(unpack_white_runs_range(packed, 9, 2, out), "internal: unpacking pixels past the white runs' frames",
+                         Error);
   }
 
   TEST_CASE("white runs: all white, empty, and a size that is not RGBA") {

@@ -77,6 +77,11 @@ struct TargetOptions {
   // An earlier load of the same source with `stabilise` on (the fit's coarse width, when the
   // refinement loads the clip again at its own): its camera path is reused, not measured twice.
   const TargetFrames* shake_from = nullptr;
+  // When set, each keyframe's frame before cleanup (colour-corrected: what `raw` would hold for
+  // it) is handed here as soon as the keyframe is cleaned, and the returned `raw` is empty: the
+  // load holds one keyframe's floats instead of every keyframe's (16 bytes per pixel and
+  // keyframe; 88 MB for 21 keyframes at 512 px). A fit compacts them (fit/target/compact_raw.h).
+  std::function<void(int k, const float* raw)> raw_sink;
 };
 
 struct TargetFrames {

@@ -322,8 +322,7 @@ void FitRun::prepare_fine() {
   fine_to.keep_denoised = false;
   fine_to.denoised_from = coarse_target;
   activity("reading the video's keyframes at " + std::to_string(fine_size.width) + " px for the refinement");
-  TargetFrames t = load_target(*target_path, fine_size.width, fine_size.height, fine_to);
-  fine_raw = compact_raw(t);
+  TargetFrames t = load_target_compact(*target_path, fine_size.width, fine_size.height, fine_to, fine_raw);
   release_denoised();
   fine_options = fo.refined_at(static_cast<double>(fine_size.width) / size.width);
   fine_options.pin_rest_keyframe = pin_rest;
@@ -380,6 +379,27 @@ void FitRun::choose_chroma_weight() {
                 chroma_weight, chroma_cal->seconds, drifts.c_str());
   }
   coarse_options.chroma_weight = chroma_weight;
+  // Nothing reads the finer target's frames again before its fitter is made (the refinement).
+  pack_fine_rgba();
+}
+
+void FitRun::pack_fine_rgba() {
+  if (!fine_target || fine_packed) return;
+  fine_rgba = pack_white_runs(fine_target->rgba);
+  fine_packed = true;
+}
+
+void FitRun::unpack_fine_rgba() {
+  if (!fine_packed) return;
+  fine_target->rgba = unpack_white_runs(fine_rgba);
+  fine_packed = false;
+}
+
+void FitRun::drop_fine_target() {
+  fine_target.reset();
+  fine_raw = {};
+  fine_rgba = {};
+  fine_packed = false;
 }
 
 void FitRun::start_fitter() {

@@ -29,6 +29,7 @@
 #include "fit/target/compact_raw.h"
 #include "fit/target/frame_scan.h"
 #include "fit/target/rest_start.h"
+#include "fit/target/white_runs.h"
 #include "opencl/runtime.h"
 #include "run/run_directory.h"
 #include "svgmotion/render_size.h"
@@ -136,6 +137,14 @@ struct FitRun {
   // The refinement's target and options (its chroma weight is set below), made on first use:
   // before the coarse fit when the chroma weight's calibration mirrors the refinement too.
   std::optional<TargetFrames> fine_target;
+  // Its rgba packed as runs of white (fit/target/white_runs.h) while nothing reads it: from the
+  // chroma weight's calibration to the finer fitter's start, and from before its Q and R are
+  // made to the refinement's end (88 MB of floats for 21 keyframes at 512 px).
+  WhiteRuns fine_rgba;
+  bool fine_packed = false;
+  void pack_fine_rgba();
+  void unpack_fine_rgba();
+  void drop_fine_target();
   BlurMatch fine_blur;
   FitOptions fine_options;
   // The coarse stage's target: the first load, or the keyframes chosen from the target.

@@ -194,16 +194,14 @@ void FitRun::add_keyframes_from_target() {
       // calibration, is read again at these (prepare_fine): it goes now rather than after the
       // stage below (37 bytes per pixel and first keyframe at the finer width: 145 MB for 15
       // at 512 px, held beside this stage's own target and the denoised frames it keeps).
-      fine_target.reset();
-      fine_raw = {};
+      drop_fine_target();
       activity("reading the " + std::to_string(choice.frames.size()) + " keyframes chosen");
       TargetOptions o = to;
       o.frames = choice.frames;
       o.keep_denoised = to.keep_denoised && refine_w > 0;
       o.denoised_from = nullptr;
       if (to.stabilise) o.shake_from = &target;
-      keyed_target = load_target(*target_path, size.width, size.height, o);
-      keyed_raw = compact_raw(*keyed_target);
+      keyed_target = load_target_compact(*target_path, size.width, size.height, o, keyed_raw);
       FitOptions ko = coarse_options;
       // The new keyframes start close (warm-started from the most alike fitted keyframe) and
       // every keyframe is refined jointly: a quarter of the budget, ended by the plateau test.
@@ -256,10 +254,7 @@ void FitRun::refine() {
   if (refine_w > 0 && !stopped) {
     const RenderSize fine_size = render_size(scene, refine_w);
     // Loaded before the keyframes were chosen (the chroma weight's calibration): again, at them.
-    if (fine_target && fine_target->keyframes != ctarget.keyframes) {
-      fine_target.reset();
-      fine_raw = {};
-    }
+    if (fine_target && fine_target->keyframes != ctarget.keyframes) drop_fine_target();
     activity("starting the refinement at " + std::to_string(refine_w) + " px");
     // The guard's baseline: how well each coarse keyframe matches the video at the coarse width.
     const std::vector<float> coarse_losses = cfit.evaluate_keyframe_losses();
@@ -281,18 +276,18 @@ void FitRun::refine() {
     // the guard; every finer keyframe is active, so no warm start reads the finer one, whose Q
     // and R are made before its iterations): each is packed as runs of exact white
     // (fit/target/white_runs.h) until the stage ends, the coarse one before the finer fitter
-    // is built, the finer one once its Q and R are made.
-    WhiteRuns coarse_rgba = pack_white_runs(coarse_frames.rgba), fine_rgba;
-    bool fine_packed = false;
+    // is built, the finer one before its Q and R are made.
+    WhiteRuns coarse_rgba = pack_white_runs(coarse_frames.rgba);
     const auto unpack = [&] {
       if (fine) fine->release_loss_memory();
-      if (fine_packed) fine_target->rgba = unpack_white_runs(fine_rgba);
-      fine_packed = false;
+      unpack_fine_rgba();
+      if (fine) fine->read_targets_whole();
       coarse_frames.rgba = unpack_white_runs(coarse_rgba);
     };
     try {
       prepare_fine();
       fine_options.chroma_weight = chroma_weight;
+      unpack_fine_rgba();  // packed since the chroma weight's calibration, if loaded for it
       fine = std::make_unique<Fitter>(*rt, fit_scene, *fine_target, fine_options);
       // The fitter has its distance field on the device and nothing reads the target's mask
       // after the load's checks: 5 bytes per pixel and keyframe (21 MB for 16 keyframes at 512 px).
@@ -301,9 +296,14 @@ void FitRun::refine() {
       fine->adopt_coarse(cfit, scale);
       log::debug("fit: refining every keyframe at %dx%d for %d iterations", fine_size.width, fine_size.height,
                  refine_iters);
+      // Packed before its Q and R are made, which read it a keyframe at a time from the runs:
+      // its floats (88 MB for 21 keyframes at 512 px) and Q and R are never held together.
+      pack_fine_rgba();
+      const size_t frame_px = static_cast<size_t>(fine_size.width) * fine_size.height;
+      fine->read_targets_from([this, frame_px](int k, float* out) {
+        unpack_white_runs_range(fine_rgba, static_cast<size_t>(k) * frame_px, frame_px, out);
+      });
       fine->prepare_loss_memory();
-      fine_rgba = pack_white_runs(fine_target->rgba);
-      fine_packed = true;
       log::debug("fit: the targets' frames packed through the refinement: %.1f MB at %d px, %.1f MB at %d px",
                  fine_rgba.bytes() / 1048576.0, fine_size.width, coarse_rgba.bytes() / 1048576.0, size.width);
       run_stage(*fine, coarse_iters, false);
@@ -335,6 +335,10 @@ void FitRun::refine() {
         log::info("fit: the refinement matched keyframe%s %s worse at %d px; kept from the coarse fit",
                   refine_kept_coarse.size() > 1 ? "s" : "", ks.c_str(), size.width);
       }
+      // The guard's loss memory (Q and R, the residual chunk, the tape pool at the coarse
+      // width: ~60 MB for 21 keyframes at 256 px) is not needed by the outputs, which render
+      // and read the targets; an evaluation after this would make it again.
+      cfit.release_loss_memory();
     }
   }
 }

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -81,6 +82,11 @@ class ClRaster {
   // are made from it on the next loss pass, and again after release_loss_buffers).
   void set_targets(const std::vector<float>& rgba);
   void set_targets(std::vector<float>&&) = delete;  // a temporary would be gone by the loss
+  // The same targets read a frame at a time: `frame(k, out)` writes frame k's height * width
+  // RGBA floats to `out`, whenever the loss's constants are made (as above). For a holder that
+  // keeps them packed (fit/target/white_runs.h): the whole clip's floats are never needed.
+  using TargetFrameReader = std::function<void(int k, float* rgba)>;
+  void set_target_frames(TargetFrameReader frame);
   // Frees the loss's pixel-sized device buffers (Q and R in half precision, the residuals X'
   // and E', the tape pool and the bands' partial gradients: 48 bytes and more per pixel and
   // frame, held in host memory by PoCL) until the next loss pass makes them again, from the
@@ -170,7 +176,7 @@ class ClRaster {
       k_gather_points_, k_stroke_back_, k_flatten_back_;
   // The loss's constant parts (kernels/loss.cl): Q = bg·(G∗1) − G∗T, R = G∗Q, Σ Q² per frame,
   // for the background they were made for; and the row extents of X' and E'.
-  const std::vector<float>* targets_ = nullptr;  // the caller's (set_targets)
+  TargetFrameReader targets_;  // the caller's frames (set_targets, set_target_frames)
   std::array<float, 4> q_background_{-1, -1, -1, -1};
   void prepare_loss_constants(const std::array<float, 4>& background);
   cl::Buffer q_, r_, qsum_, ext_x_, ext_e_;

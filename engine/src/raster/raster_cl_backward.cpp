@@ -213,8 +213,16 @@ void ClRaster::set_targets(const std::vector<float>& rgba) {
   if (rgba.size() != want)
     throw Error("internal: target upload of " + std::to_string(rgba.size()) + " floats, expected " +
                 std::to_string(want));
+  const size_t frame = static_cast<size_t>(plan_.height) * plan_.width * 4;
+  set_target_frames([&rgba, want, frame](int k, float* out) {
+    if (rgba.size() != want) throw Error("internal: the loss's targets are gone or resized (set_targets keeps no copy)");
+    std::copy_n(rgba.begin() + static_cast<std::ptrdiff_t>(k * frame), frame, out);
+  });
+}
+
+void ClRaster::set_target_frames(TargetFrameReader frame) {
   init_backward();
-  targets_ = &rgba;
+  targets_ = std::move(frame);
   q_background_ = {-1, -1, -1, -1};  // recompute the loss constants on next use
 }
 
@@ -222,9 +230,8 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
   if (bg == q_background_) return;
   const int W = plan_.width, H = plan_.height, K = frames_;
   const size_t px = static_cast<size_t>(W) * H;
-  if (!targets_ || targets_->size() != static_cast<size_t>(K) * px * 4)
-    throw Error("internal: the loss's targets are gone or resized (set_targets keeps no copy)");
-  const std::vector<float>& targets = *targets_;
+  if (!targets_) throw Error("internal: loss without targets (set_targets)");
+  std::vector<float> frame(px * 4);  // one target frame at a time
   // The render's blur B (loss.cl's taps; per channel group with a chroma σ of its own,
   // raster/loss_taps.h render_blur) and the target's, in double: Q = bg·(B 1) − G_t ∗ T,
   // R = Bᵀ Q.
@@ -237,8 +244,9 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
   std::vector<float> qsum(K);
   auto& queue = rt_.queue();
   for (int k = 0; k < K; ++k) {
+    targets_(k, frame.data());
     for (size_t p = 0; p < px; ++p)
-      for (int c = 0; c < 3; ++c) t[3 * p + c] = targets[(k * px + p) * 4 + c];
+      for (int c = 0; c < 3; ++c) t[3 * p + c] = frame[p * 4 + c];
     const std::vector<double> gt = blur_rgb(t, W, H, g_target);
     // Q as the device stores it (a half, within 2^-11 of it: a twentieth of an 8-bit level),
     // so that Σ Q² and R are those of the Q the loss reads and Σ E² stays a sum of squares.

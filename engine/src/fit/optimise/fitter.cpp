@@ -391,6 +391,12 @@ void Fitter::release_loss_memory() { raster_->release_loss_buffers(); }
 
 void Fitter::prepare_loss_memory() { raster_->prepare_loss(kWhite); }
 
+void Fitter::read_targets_from(std::function<void(int k, float* rgba)> frame) {
+  raster_->set_target_frames(std::move(frame));
+}
+
+void Fitter::read_targets_whole() { raster_->set_targets(target_.rgba); }
+
 std::vector<float> Fitter::evaluate_keyframe_losses() {
   enqueue_motion(K_);
   raster_->set_active_frames(K_);

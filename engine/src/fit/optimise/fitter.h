@@ -249,6 +249,11 @@ class Fitter {
   // (ClRaster::prepare_loss): after this the target's rgba is not read again until
   // release_loss_memory, so its holder may set it aside (fit_stages.cpp's refinement).
   void prepare_loss_memory();
+  // The loss reads the target's frames through `frame` (ClRaster::set_target_frames) instead of
+  // its rgba, until read_targets_whole: its holder may pack them before the loss's constants
+  // are made (the refinement: 16 bytes per pixel and keyframe less beside Q and R as they are made).
+  void read_targets_from(std::function<void(int k, float* rgba)> frame);
+  void read_targets_whole();
 
   const RasterPlan& raster_plan() const { return plan_; }
   const FitPlan& fit_plan() const { return fplan_; }

@@ -27,8 +27,13 @@ RawFigure raw_figure(const TargetFrames& t, const CompactRaw* c, int k) {
     f.figure.assign(at, at + static_cast<std::ptrdiff_t>(px));
     return f;
   }
-  const float* raw = &t.raw[static_cast<size_t>(k) * px * 4];
-  f.background = border_median_rgb(raw, t.width, t.height);
+  return raw_frame_figure(&t.raw[static_cast<size_t>(k) * px * 4], t.width, t.height);
+}
+
+RawFigure raw_frame_figure(const float* raw, int width, int height) {
+  const size_t px = static_cast<size_t>(width) * height;
+  RawFigure f;
+  f.background = border_median_rgb(raw, width, height);
   f.figure.resize(px);
   for (size_t i = 0; i < px; ++i) f.figure[i] = differs_from(raw[4 * i], raw[4 * i + 1], raw[4 * i + 2], f.background);
   return f;
@@ -44,21 +49,36 @@ RgbaImage raw_image(const TargetFrames& t, const CompactRaw* c, int k) {
   return img;
 }
 
+void compact_raw_frame(CompactRaw& c, const float* raw, int width, int height) {
+  const size_t px = static_cast<size_t>(width) * height;
+  const RawFigure f = raw_frame_figure(raw, width, height);
+  c.border.push_back(f.background);
+  c.figure.insert(c.figure.end(), f.figure.begin(), f.figure.end());
+  const RgbaImage img = rgba8_image(raw, width, height);
+  for (size_t i = 0; i < px; ++i) c.rgb8.insert(c.rgb8.end(), &img.rgba[4 * i], &img.rgba[4 * i + 3]);
+}
+
 CompactRaw compact_raw(TargetFrames& t) {
   CompactRaw c;
   if (t.raw.empty()) return c;
   const size_t px = static_cast<size_t>(t.width) * t.height;
   c.rgb8.reserve(static_cast<size_t>(t.keyframes) * px * 3);
   c.figure.reserve(static_cast<size_t>(t.keyframes) * px);
-  for (int k = 0; k < t.keyframes; ++k) {
-    const RawFigure f = raw_figure(t, nullptr, k);
-    c.border.push_back(f.background);
-    c.figure.insert(c.figure.end(), f.figure.begin(), f.figure.end());
-    const RgbaImage img = raw_image(t, nullptr, k);
-    for (size_t i = 0; i < px; ++i) c.rgb8.insert(c.rgb8.end(), &img.rgba[4 * i], &img.rgba[4 * i + 3]);
-  }
+  for (int k = 0; k < t.keyframes; ++k) compact_raw_frame(c, &t.raw[static_cast<size_t>(k) * px * 4], t.width, t.height);
   std::vector<float>().swap(t.raw);
   return c;
+}
+
+TargetFrames load_target_compact(const std::filesystem::path& source, int width, int height, TargetOptions options,
+                                 CompactRaw& raw) {
+  raw = {};
+  // Sized up front: growing by doubling would hold up to twice the compact frames.
+  const size_t K = options.frames.empty() ? static_cast<size_t>(std::max(options.keyframes, 0)) : options.frames.size();
+  const size_t px = static_cast<size_t>(width) * height;
+  raw.rgb8.reserve(K * px * 3);
+  raw.figure.reserve(K * px);
+  options.raw_sink = [&raw, width, height](int, const float* frame) { compact_raw_frame(raw, frame, width, height); };
+  return load_target(source, width, height, options);
 }
 
 }  // namespace svgm

@@ -38,6 +38,8 @@ struct RawFigure {
   std::vector<uint8_t> figure;               // H*W, 1 = differs_from(background)
 };
 RawFigure raw_figure(const TargetFrames& t, const CompactRaw* c, int k);
+// The same of one frame before cleanup (straight RGBA floats, width x height).
+RawFigure raw_frame_figure(const float* raw, int width, int height);
 
 // Keyframe k before cleanup as 8-bit RGBA: rgba8_image of t.raw's frame, or from `c`.
 RgbaImage raw_image(const TargetFrames& t, const CompactRaw* c, int k);
@@ -46,5 +48,14 @@ RgbaImage raw_image(const TargetFrames& t, const CompactRaw* c, int k);
 // was). Nothing that reads `raw` itself may run on `t` after this (the ranker plugins do, on
 // their own loads).
 CompactRaw compact_raw(TargetFrames& t);
+// Appends one keyframe's frame before cleanup (straight RGBA floats, width x height) to `c`, as
+// compact_raw does for each: a load with TargetOptions::raw_sink compacts keyframe by keyframe.
+void compact_raw_frame(CompactRaw& c, const float* raw, int width, int height);
+
+// load_target with its `raw` compacted into `raw` keyframe by keyframe as the load cleans each
+// (TargetOptions::raw_sink): the returned target's `raw` is empty, and the load never holds
+// every keyframe's floats at once. `raw` ends as compact_raw would have made it.
+TargetFrames load_target_compact(const std::filesystem::path& source, int width, int height, TargetOptions options,
+                                 CompactRaw& raw);
 
 }  // namespace svgm

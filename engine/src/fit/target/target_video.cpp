@@ -329,10 +329,9 @@ void mark_ink(const float* rgba, int w, int h, const std::array<float, 3>& bg, f
 }
 
 // Mask, cleaned target and distance field of keyframe k from its raw frame.
-void clean_keyframe(TargetFrames& t, int k, const TargetOptions& opt) {
+void clean_keyframe(TargetFrames& t, int k, const TargetOptions& opt, const float* raw) {
   const int w = t.width, h = t.height;
   const size_t px = static_cast<size_t>(w) * h;
-  const float* raw = t.raw.data() + k * px * 4;
 
   // Ink: a pixel whose colour differs from the frame's background by more than
   // 1 - white_threshold in some channel. The background is white, or the light colour most of
@@ -520,7 +519,8 @@ TargetFrames empty_target(int width, int height, int K, const TargetInfo& info, 
         K == 1 ? 0 : static_cast<int>(num / (2 * int64_t{K - 1}));
   }
   const size_t px = static_cast<size_t>(width) * height;
-  t.raw.assign(K * px * 4, 1.0f);
+  // With a raw_sink each keyframe's frame passes through one slot.
+  t.raw.assign((options.raw_sink ? 1 : K) * px * 4, 1.0f);
   t.rgba.assign(K * px * 4, 1.0f);
   t.mask.assign(K * px, 0);
   t.sdf.assign(K * px, 0.0f);
@@ -594,9 +594,11 @@ void decode_video(const fs::path& source, const TargetOptions& options, int N, i
 
 // Stabilising: the camera's path (measured on every frame, or the first load's), taken out of
 // the kept keyframes as they go to `raw`.
+// `finish(k)` cleans keyframe k once it is stored in slot `slot(k)` of `raw`.
 void remove_camera_shake(TargetFrames& t, const TargetOptions& options, const ShakeEstimator& shake,
                          std::vector<cv::Mat>& kept, const std::vector<int>& kept_index, bool denoise, cv::Size work,
-                         int width, int height) {
+                         int width, int height, const std::function<int(int)>& slot,
+                         const std::function<void(int)>& finish) {
   const int K = t.keyframes;
   if (options.shake_from) {
     t.frame_shake = options.shake_from->frame_shake;
@@ -614,12 +616,12 @@ void remove_camera_shake(TargetFrames& t, const TargetOptions& options, const Sh
     const auto& d = t.frame_shake.at(static_cast<size_t>(kept_index[static_cast<size_t>(k)]));
     const double fit_px = std::hypot(d[0], d[1]) * width / std::max(1, t.source_width);
     t.max_shake_px = std::max(t.max_shake_px, fit_px);
-    if (!denoise) {
-      store_raw(remove_shake(kept[static_cast<size_t>(k)], d), k, width, height, t.raw);
-      continue;
-    }
-    const double s = double(work.width) / t.source_width;  // denoised frames: working size
-    store_rgb(remove_shake(kept[static_cast<size_t>(k)], {d[0] * s, d[1] * s}), k, width, height, t.raw);
+    const double s = denoise ? double(work.width) / t.source_width : 1.0;  // denoised frames: working size
+    const cv::Mat steady = remove_shake(kept[static_cast<size_t>(k)], {d[0] * s, d[1] * s});
+    kept[static_cast<size_t>(k)].release();
+    if (denoise) store_rgb(steady, slot(k), width, height, t.raw);
+    else store_raw(steady, slot(k), width, height, t.raw);
+    finish(k);
   }
 }
 
@@ -674,6 +676,15 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   const bool denoise = options.denoise_radius > 0;
   const int work_w = std::min(info.width, 2 * width);
   const cv::Size work(work_w, std::max(1, static_cast<int>(std::lround(double(info.height) * work_w / info.width))));
+  // Keyframe k stored in its slot of `raw`: colour-corrected and cleaned at once (each keyframe
+  // on its own, as when every keyframe was stored first), then handed to the raw_sink if any.
+  auto slot = [&](int k) { return options.raw_sink ? 0 : k; };
+  auto finish = [&](int k) {
+    float* raw = t.raw.data() + static_cast<size_t>(slot(k)) * px * 4;
+    if (!options.palette.empty()) t.colour_corrected += correct_colours(raw, width, height, options.palette).applied;
+    clean_keyframe(t, k, options, raw);
+    if (options.raw_sink) options.raw_sink(k, raw);
+  };
   auto keep = [&](int k, int frame_index, cv::Mat frame) {
     if (denoise && options.keep_denoised) {
       const auto* f = frame.ptr<float>(0);  // continuous: made by resize / average_aligned
@@ -681,8 +692,11 @@ TargetFrames load_target(const fs::path& source, int width, int height,
       t.denoised.insert(t.denoised.end(), f, f + frame.total() * 3);
       t.denoised_frame.push_back(frame_index);
     }
-    if (!options.stabilise)
-      return denoise ? store_rgb(frame, k, width, height, t.raw) : store_raw(frame, k, width, height, t.raw);
+    if (!options.stabilise) {
+      if (denoise) store_rgb(frame, slot(k), width, height, t.raw);
+      else store_raw(frame, slot(k), width, height, t.raw);
+      return finish(k);
+    }
     kept[static_cast<size_t>(k)] = std::move(frame);
     kept_index[static_cast<size_t>(k)] = frame_index;
   };
@@ -732,13 +746,8 @@ TargetFrames load_target(const fs::path& source, int width, int height,
     t.denoise_seconds = denoiser.seconds();
     if (denoised_k != K) throw Error("internal: " + std::to_string(denoised_k) + " of " + std::to_string(K) + " keyframes denoised");
   }
-  if (options.stabilise) remove_camera_shake(t, options, shake, kept, kept_index, denoise, work, width, height);
-  for (int k = 0; k < K; ++k) {
-    if (!options.palette.empty())
-      t.colour_corrected += correct_colours(t.raw.data() + static_cast<size_t>(k) * px * 4, width, height,
-                                            options.palette).applied;
-    clean_keyframe(t, k, options);
-  }
+  if (options.stabilise) remove_camera_shake(t, options, shake, kept, kept_index, denoise, work, width, height, slot, finish);
+  if (options.raw_sink) std::vector<float>().swap(t.raw);
   return t;
 }
 

@@ -64,4 +64,22 @@ std::vector<float> unpack_white_runs(WhiteRuns& packed) {
   return rgba;
 }
 
+void unpack_white_runs_range(const WhiteRuns& packed, size_t first, size_t count, float* out) {
+  if (first + count > packed.pixels) throw Error("internal: unpacking pixels past the white runs' frames");
+  std::fill(out, out + 4 * count, 1.f);
+  const size_t end = first + count;
+  size_t at = 0, from = 0;  // the run's first pixel, and its first float in `others`
+  bool white = true;
+  for (size_t r = 0; r < packed.runs.size() && at < end; ++r, white = !white) {
+    const size_t run = packed.runs[r], lo = std::max(at, first), hi = std::min(at + run, end);
+    if (!white && lo < hi) {
+      if (from + 4 * (hi - at) > packed.others.size()) throw Error("internal: white runs without their pixels");
+      std::copy_n(packed.others.begin() + static_cast<std::ptrdiff_t>(from + 4 * (lo - at)), 4 * (hi - lo),
+                  out + 4 * (lo - first));
+    }
+    if (!white) from += 4 * run;
+    at += run;
+  }
+}
+
 }  // namespace svgm

@@ -24,5 +24,8 @@ struct WhiteRuns {
 WhiteRuns pack_white_runs(std::vector<float>& rgba);
 // The floats pack_white_runs took, bit for bit; `packed` is emptied, its memory freed.
 std::vector<float> unpack_white_runs(WhiteRuns& packed);
+// Pixels first .. first + count - 1 of what `packed` holds, bit for bit, into `out` (4 * count
+// floats), `packed` untouched: one frame read at a time while the rest stay packed.
+void unpack_white_runs_range(const WhiteRuns& packed, size_t first, size_t count, float* out);
 
 }  // namespace svgm
