@@ -103,8 +103,14 @@ TEST_CASE("eye cue: the skeleton's head and tail labels follow the eye; facing s
 }
 
 TEST_CASE("eye cue: an animal whose round-tufted tail the skeleton reads as its head flicks its tail, not its snout") {
-  const Drawing d("eye_tail.svg");
+  Drawing d("eye_tail.svg");
   REQUIRE(d.rig.parts.size() == 1);
+  // Read in the drawing's own colours (the pipeline's svg is recoloured; it gives the original).
+  Scene recoloured = d.scene;
+  for (Path& p : recoloured.paths) p.fill = Rgba{0.9f, 0.9f, 0.2f, 1};  // no dark left: no eye
+  CHECK(apply_eye_cue(d.rig, d.scene, recoloured).side == 0);
+  CHECK(d.rig.eye_side == 0);
+  CHECK(apply_eye_cue(d.rig, d.scene, d.scene).side == -1);
   CHECK(d.rig.eye_side == -1);
   // The skeleton alone takes the wider tuft at the right for the head.
   bool head_right = false;

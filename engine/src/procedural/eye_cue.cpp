@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 namespace svgm {
 
@@ -48,6 +49,25 @@ int relabel_by_eye(Rig& rig, const EyeCue& eye) {
     else if (l.kind == LobeKind::Tail && ahead > off) l.kind = LobeKind::Head, ++changed;
   }
   return changed;
+}
+
+EyeCue apply_eye_cue(Rig& rig, const Scene& scene, const Scene& paint) {
+  std::map<std::string, const Path*> by_id;
+  for (const Path& p : paint.paths) by_id[p.id] = &p;
+  for (RigElement& e : rig.elements) {
+    e.lightness = -1;
+    if (e.path < 0 || e.path >= static_cast<int>(scene.paths.size())) continue;
+    const auto it = by_id.find(scene.paths[e.path].id);
+    if (it == by_id.end()) continue;
+    const Path& p = *it->second;
+    if (p.has_fill && p.fill.a > 0 && p.opacity > 0) e.lightness = 0.299 * p.fill.r + 0.587 * p.fill.g + 0.114 * p.fill.b;
+  }
+  const EyeCue eye = find_eye(rig);
+  rig.eye_side = eye.side;
+  rig.eye = eye.at;
+  rig.eye_why = eye.why;
+  relabel_by_eye(rig, eye);
+  return eye;
 }
 
 }  // namespace svgm

@@ -37,6 +37,12 @@ struct EyeCue {
 // The eye cue of the rig's figure, from its drawn elements (Rig::elements, their fill's luma).
 EyeCue find_eye(const Rig& rig);
 
+// The eye cue read with the colours of `paint` (the user's drawing: the scene the rig was built
+// from may be recoloured, its fills false colours a palette gave each colour): each element's
+// lightness from the path of `paint` with its path's id (-1 when none has it), then the eye
+// found (Rig::eye_side, eye, eye_why) and the limbs relabelled by it. Returns the cue.
+EyeCue apply_eye_cue(Rig& rig, const Scene& scene, const Scene& paint);
+
 // The silhouette limbs (Rig::limbs) labelled against the eye, relabelled: a head limb whose tip
 // lies on the side away from the eye is the tail, a tail limb whose tip lies on the eye's side
 // the head (beyond kEyeOffCentre of the figure's width from its middle, both). Returns how many

@@ -13,7 +13,6 @@
 
 #include "svg/document_order.h"
 #include "svgmotion/svg_reader.h"
-#include "procedural/eye_cue.h"
 #include "procedural/part_locator.h"
 #include "procedural/part_rig_internal.h"
 
@@ -159,12 +158,6 @@ Rig build_rig(const Scene& scene, const SourceNames& names, const std::vector<st
   if (split_root_limbs(scene, rig, U)) rig = assemble(scene, names, group_names, U);
   if (split_head_holds(scene, rig, U)) rig = assemble(scene, names, group_names, U);
   rig.elements = figure_elements(scene, rig);
-  // A drawn eye says which end is the head; the skeleton's head and tail labels follow it.
-  const EyeCue eye = find_eye(rig);
-  rig.eye_side = eye.side;
-  rig.eye = eye.at;
-  rig.eye_why = eye.why;
-  relabel_by_eye(rig, eye);
   return rig;
 }
 
