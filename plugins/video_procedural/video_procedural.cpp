@@ -97,8 +97,7 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   std::vector<std::string> group_names;
   for (const auto& g : scene.groups) group_names.push_back(g.name);
   svgm::Rig rig = svgm::build_rig(scene, names, group_names);
-  // A drawn eye shows an animal's head end (eye_cue.h), in the user's colours: the svg read
-  // here is recoloured (a palette's false colours), the original has the eye's dark.
+  // A drawn eye shows an animal's head end (eye_cue.h), in the original's colours (not recoloured).
   svgm::apply_eye_cue(rig, scene, inputs.contains("original") ? svgm::read_svg_file(P::file(req, "inputs", "original").string()) : scene);
   const std::string prompt = req.value("prompt", "");
   auto steps = explicit_plan.empty() ? std::vector<svgm::ExplicitStep>{} : svgm::parse_explicit_plan(explicit_plan);
