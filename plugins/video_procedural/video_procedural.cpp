@@ -20,6 +20,7 @@
 #include "svgmotion/atomic_file.h"
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
+#include "procedural/eye_cue.h"
 #include "procedural/motion_plan.h"
 #include "procedural/procedural_video.h"
 #include "svgmotion/utf8_text.h"
@@ -95,7 +96,9 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   // The grouper's part names where it gave some (grouper llm: "left wing"), from data-name.
   std::vector<std::string> group_names;
   for (const auto& g : scene.groups) group_names.push_back(g.name);
-  const svgm::Rig rig = svgm::build_rig(scene, names, group_names);
+  svgm::Rig rig = svgm::build_rig(scene, names, group_names);
+  // A drawn eye shows an animal's head end (eye_cue.h), in the original's colours (not recoloured).
+  svgm::apply_eye_cue(rig, scene, inputs.contains("original") ? svgm::read_svg_file(P::file(req, "inputs", "original").string()) : scene);
   const std::string prompt = req.value("prompt", "");
   auto steps = explicit_plan.empty() ? std::vector<svgm::ExplicitStep>{} : svgm::parse_explicit_plan(explicit_plan);
   const svgm::ParsedPrompt parsed = svgm::parse_prompt(prompt);

@@ -40,6 +40,11 @@ std::string keep_if(const Rig& rig, const Modifiers& mods, size_t n, Keep&& keep
 
 int facing_side(const Rig& rig, std::string* why) {
   if (rig.figure.empty()) return 0;
+  // A drawn eye (eye_cue.h): the plainest sign of the head's end.
+  if (rig.eye_side != 0) {
+    if (why) *why = "its eye";
+    return rig.eye_side;
+  }
   // The rig's head parts, by area.
   double sum = 0, weight = 0;
   for (const RigPart& P : rig.parts)

@@ -1,9 +1,9 @@
 // Which of the figure's limbs a qualifier of the prompt picks (prompt_parse.h reads them right
 // before a part noun): "its hind legs" are the legs at the end of the figure's facing axis away
 // from its head, "the front paws" those at the head's end, "his upper arm" the higher of a pair.
-// The facing comes from the figure, not from the words: the rig's head parts, else the
-// silhouette skeleton's head limbs ahead of every leg (a head leads the legs; a lobe among them
-// is a raised limb or a knee), else where the legs gather (legs hang under the front of a body,
+// The facing comes from the figure, not from the words: a drawn eye (eye_cue.h), else the
+// rig's head parts, else the silhouette skeleton's head limbs ahead of every leg (a head leads
+// the legs; a lobe among them is a raised limb or a knee), else where the legs gather (legs hang under the front of a body,
 // its chest or thorax: with no head to show which end leads, the end with fewer legs is the
 // rear). A qualifier that picks nothing on the drawing is ignored, with a note saying so.
 #pragma once

@@ -79,6 +79,9 @@ int region_host(const Rig& rig, Target t) {
 // mermaids that flicked it. Not the silhouette's head limbs: a cat's tail raised in a curl is
 // labelled a head there, and its head end bent instead.
 int head_side(const Rig& rig, int host) {
+  // A drawn eye (eye_cue.h) shows the head's end first: the rig's head parts come from names
+  // and groups, which an animal drawn in one piece does not have.
+  if (rig.eye_side != 0) return rig.eye_side;
   const RigBox& B = rig.parts[host].box;
   double sum = 0, weight = 0;
   for (size_t i = 0; i < rig.parts.size(); ++i)

@@ -85,6 +85,7 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
           {"ground", ground},
           {"root", root},
           {"parts", parts},
+          {"facing", rig.eye_side == 0 ? json("") : json(std::string(rig.eye_side < 0 ? "left: " : "right: ") + rig.eye_why)},
           {"repeated_elements", rig.repeated.size()},
           {"plan", actions},
           {"amplitude_scale", std::round(plan.scale * 1e4) / 1e4},

@@ -20,6 +20,7 @@ constexpr double kPartMinSize = 0.1;   // a part's longer side at least this sha
 constexpr double kPartMaxShare = 0.35; // a part's box at most this share of F's box
 constexpr double kEarMaxShare = 0.55;  // an ear's, when none of the usual size sticks out: an
                                        // elephant's ear spans most of its head (openmoji's: 0.45)
+constexpr double kEarBehind = 0.1;     // an ear's middle at most this share of F's width behind F's middle (eye_cue.h)
 constexpr double kPairShare = 0.3;     // the second of a pair at least this share of the first's score
 constexpr double kClapperOffCentre = 0.15;  // a clapper's middle within this share of B's width of B's middle
 constexpr double kClapperLow = 0.7;    // its middle below this share of B's height
@@ -174,6 +175,9 @@ LocatedPart ears(const Rig& rig, int body) {
     for (int i : part_candidates(rig, body, max_share)) {
       const RigBox& b = rig.elements[i].box;
       if (b.y0 > F.y0 + kEarTop * F.h() || b.centre().y > F.y0 + kEarMiddle * F.h()) continue;
+      // Ears are at the head's end: with an eye seen (eye_cue.h), not beyond the middle away
+      // from it (a dog's raised tail is no ear).
+      if (rig.eye_side != 0 && (b.centre().x - F.centre().x) * rig.eye_side < -kEarBehind * F.w()) continue;
       const double above = std::clamp((B.y0 - b.y0) / std::max(b.h(), 1e-9), 0.0, 1.0);
       scored.push_back({rig.elements[i].area * (0.25 + above), i});
     }
@@ -638,6 +642,7 @@ std::vector<RigElement> figure_elements(const Scene& scene, const Rig& rig) {
       if (filled) e.area += (static_cast<int>(i) == top ? 1 : -1) * 0.5 * std::fabs(s);
       else e.area += len * (p.has_stroke ? p.stroke.width : 1);
       e.thin = !filled && p.has_stroke && !p.subpaths[i].closed;
+      if (filled && p.opacity > 0) e.lightness = 0.299 * p.fill.r + 0.587 * p.fill.g + 0.114 * p.fill.b;
     }
     if (mine.size() == 1) mine[0].subpath = -1;
     for (auto& e : mine) e.area = std::max(e.area, 0.0);
@@ -667,15 +672,18 @@ LocatedPart locate_part(const Rig& rig, PartShape shape) {
 }
 
 std::vector<ArmLobe> tail_limbs(const Rig& rig) {
-  // Where the head is: the rig's head parts, else the tips of the skeleton's head limbs.
+  // Where the head is: a drawn eye (eye_cue.h), else the rig's head parts, else the tips of the
+  // skeleton's head limbs.
   Vec2 head;
   double weight = 0;
-  for (const RigPart& P : rig.parts)
-    if (P.role == Role::Head && !P.box.empty()) {
-      const double w = std::max(P.box.area(), 1e-12);
-      head = head + w * P.box.centre();
-      weight += w;
-    }
+  if (rig.eye_side != 0) head = rig.eye, weight = 1;
+  if (weight == 0)
+    for (const RigPart& P : rig.parts)
+      if (P.role == Role::Head && !P.box.empty()) {
+        const double w = std::max(P.box.area(), 1e-12);
+        head = head + w * P.box.centre();
+        weight += w;
+      }
   if (weight == 0)
     for (const ArmLobe& l : rig.limbs)
       if (l.kind == LobeKind::Head) head = head + l.tip, weight += 1;

@@ -9,7 +9,8 @@
 // a path drawn apart, as a crab's claws in its body's path), the largest of which is the body:
 //  - ears (ear, antenna): the elements sticking out above the body at the figure's top, at most
 //    two (a pair seen from the side lies on one side), each turning about its end nearest the
-//    body;
+//    body; when a drawn eye shows the head's end (eye_cue.h), none behind the middle away from
+//    it (a dog's raised tail);
 //  - a jet (spout, plume, jet, spray, steam, smoke, fountain): what is drawn above the body's
 //    top, turning about its lowest middle;
 //  - a clapper (clapper, pendulum, tongue of a bell): a small element below the body's middle
@@ -69,7 +70,7 @@ std::vector<RigElement> figure_elements(const Scene& scene, const Rig& rig);
 LocatedPart locate_part(const Rig& rig, PartShape shape);
 
 // A tail the skeleton's labels missed: the limbs of the silhouette (Rig::limbs) opposite the
-// head (the rig's head parts, else the skeleton's head limb). Its tip is the farthest from the
+// head (a drawn eye, eye_cue.h, else the rig's head parts, else the skeleton's head limb). Its tip is the farthest from the
 // head of the limbs that are neither the head nor legs nor as long as half the figure (the body
 // itself, a lying bar's end under its head), on the far side of the figure's middle;
 // other such limbs leaving the body beside its base (the two lobes of a fish's fin) go with it.

@@ -105,6 +105,7 @@ struct RigElement {
   std::vector<Vec2> points;    // its control points
   double area = 0;             // its outlines' fill area (an open stroke's: length times width)
   bool thin = false;           // an open stroke drawn without fill
+  double lightness = -1;       // its plain fill's luma (0 black .. 1 white), -1 without one
 };
 
 struct Rig {
@@ -120,6 +121,10 @@ struct Rig {
   // together, so a tail drawn as an outline over a body's fill is one limb), skeleton_lobes.h.
   std::vector<ArmLobe> limbs;
   std::vector<RigElement> elements;  // the figure's drawn elements (part_locator.h)
+  // The head's side from a drawn eye (eye_cue.h): -1 left, +1 right, 0 none seen; the eye's middle.
+  int eye_side = 0;
+  Vec2 eye;
+  std::string eye_why;
 };
 
 // Names for the paths of a scene from its source document: path id -> the named elements from
