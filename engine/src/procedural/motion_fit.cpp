@@ -319,6 +319,21 @@ void unfold_region_bends(const Scene& scene, const Rig& rig, MotionPlan& plan, i
 void raise_to_visible(const TravelCheck& c, MotionPlan& plan) {
   const double floor = c.floor();
   for (const auto& clause : measured_clauses(plan)) {
+    // Wheels spinning in place are the clause's motion (their points are exempt: whole turns);
+    // when all else it moves is the body's bounce or jitter on them, that accent stays at its
+    // size (raised to the floor, a car's body hopped 8 % of its size over its wheels).
+    bool in_place = false, accents_only = true;
+    for (size_t j : clause) {
+      const PlannedAction& a = plan.actions[j];
+      const bool spins = a.primitive == Primitive::Spin && a.target == Target::Wheels && !a.parts.empty() && !a.rolls;
+      in_place = in_place || spins;
+      accents_only = accents_only && (spins || (a.parts.empty() && (a.primitive == Primitive::Bob || a.primitive == Primitive::Shake)));
+    }
+    in_place = in_place && accents_only;
+    if (in_place) {
+      slow_to_follow(c, plan, clause);
+      continue;
+    }
     double travel = c.travel(plan, clause), boost = 1;
     const double first = travel;
     for (int round = 0; round < kRaiseRounds && travel > 0 && travel < floor && boost < kMaxBoost - 1e-9; ++round) {

@@ -2,7 +2,9 @@
 // on a track, on a meadow) that a grouper put in one part with the ground under it. The whole
 // part then drove with the carriage, the mountains' meadow and the rails with it.
 //
-// A drawing is a scene when one of its paths is a backdrop (scene/backdrop.h). Its subject is
+// A drawing is a scene when one of its paths is a backdrop by its box (scene/backdrop.h) and the
+// frame cuts it, with the other paths painted early that reach an edge (the layers of a
+// landscape: sky, mountains, meadow, rails), along kBackdropCut of a side. Its subject is
 // the largest cluster (by the area of its box) of the paths that reach no edge of the drawing's
 // own canvas (within kBackdropEdge) and are no backdrop, joined where their boxes overlap: the
 // carriage's body, windows and wheels. Every other path is scenery: bands from edge to edge
