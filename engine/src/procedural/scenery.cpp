@@ -74,4 +74,15 @@ std::vector<char> scenery_paths(const Scene& scene) {
   return out;
 }
 
+bool edge_to_edge(const Scene& scene, const std::vector<int>& paths) {
+  Box b;
+  for (int pi : paths)
+    for (const auto& sp : scene.paths[static_cast<size_t>(pi)].subpaths)
+      for (const Vec2& q : sp.points) b.add({q.x, q.y, q.x, q.y});
+  if (b.empty()) return false;
+  const double f = 1 + 2 * scene.room, W = scene.width / f, H = scene.height / f;
+  const double ox = scene.room * W, oy = scene.room * H, tx = kBackdropEdge * W, ty = kBackdropEdge * H;
+  return (b.x0 - ox <= tx && b.x1 - ox >= W - tx) || (b.y0 - oy <= ty && b.y1 - oy >= H - ty);
+}
+
 }  // namespace svgm

@@ -27,4 +27,10 @@ constexpr double kSubjectMin = 0.15;  // of the drawing's canvas: the subject's 
 // is no scene or has no subject apart from its scenery.
 std::vector<char> scenery_paths(const Scene& scene);
 
+// Whether the paths' box runs from edge to edge of the drawing's own canvas (Scene::room), left
+// to right or top to bottom, within kBackdropEdge: a band of scenery (the rails under a carriage,
+// a meadow) rather than a piece at one edge (a splash cut off by the frame, a board running off
+// it: those may be the figure's).
+bool edge_to_edge(const Scene& scene, const std::vector<int>& paths);
+
 }  // namespace svgm
