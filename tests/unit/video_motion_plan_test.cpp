@@ -1550,19 +1550,20 @@ TEST_CASE("a car drives: its body slides a visible distance inside the canvas an
 
 TEST_SUITE("motion") {
 
-TEST_CASE("wheels that look the same at every angle roll with the figure; wheels with a spoke spin in place") {
+TEST_CASE("wheels that look the same at every angle: sent somewhere the figure rolls, else the body bounces on them") {
   // car.svg's wheels each have a spoke: their spin shows, nothing else moves. Without the spokes
   // they are plain discs (a circle as four cubics keeps its radius within 0.03 %): spun in place
-  // no pixel would change (the ranker's 'no motion' for every candidate), so the car rolls.
-  auto plan_for = [](const Scene& scene) {
+  // no pixel would change (the ranker's 'no motion' for every candidate). Sent to the right the
+  // car rolls there; sent nowhere the wheels spin in place and the body bounces on them.
+  auto plan_for = [](const Scene& scene, const std::string& prompt) {
     const Rig rig = build_rig(scene, {});
-    MotionPlan plan = plan_from_prompt(parse_prompt("the car's wheels spin"), rig, 1);
+    MotionPlan plan = plan_from_prompt(parse_prompt(prompt), rig, 1);
     fit_plan(scene, rig, plan, 25, 9);
     return std::make_pair(rig, plan);
   };
   const Fixture spoked("car.svg");
   {
-    const auto [rig, plan] = plan_for(spoked.scene);
+    const auto [rig, plan] = plan_for(spoked.scene, "the car's wheels spin");
     REQUIRE(plan.actions.size() == 1);
     CHECK(plan.actions[0].primitive == Primitive::Spin);
     CHECK(!plan.actions[0].rolls);
@@ -1570,18 +1571,54 @@ TEST_CASE("wheels that look the same at every angle roll with the figure; wheels
   }
   Scene plain = spoked.scene;
   for (int w : {1, 2}) plain.paths[w].subpaths.resize(1);  // the spokes taken out
-  const auto [rig, plan] = plan_for(plain);
+  {
+    const auto [rig, plan] = plan_for(plain, "the car's wheels spin to the right");
+    REQUIRE(plan.actions.size() == 2);
+    CHECK(plan.actions[0].primitive == Primitive::Spin);
+    CHECK(plan.actions[0].parts.size() == 2);
+    CHECK(looks_same_turned(plain, rig, plan.actions[0].parts));
+    CHECK(plan.actions[0].rolls);
+    CHECK(plan.actions[1].primitive == Primitive::Slide);
+    CHECK(plan.actions[1].parts.empty());
+    CHECK(plan.actions[1].direction == 1);
+    REQUIRE(!plan.warnings.empty());
+    CHECK(plan.warnings[0].find("so the figure rolls with them") != std::string::npos);
+    const auto t = path_travel(plain, animate_plan(plain, rig, plan, 25), 25);
+    CHECK(t[0] >= 0.08 * std::hypot(120.0, 65.0));  // the body goes a visible distance
+  }
+  const auto [rig, plan] = plan_for(plain, "the car's wheels spin");
   REQUIRE(plan.actions.size() == 2);
-  CHECK(plan.actions[0].primitive == Primitive::Spin);
-  CHECK(plan.actions[0].parts.size() == 2);
-  CHECK(looks_same_turned(plain, rig, plan.actions[0].parts));
-  CHECK(plan.actions[0].rolls);
-  CHECK(plan.actions[1].primitive == Primitive::Slide);
+  CHECK(!plan.actions[0].rolls);
+  CHECK(plan.actions[1].primitive == Primitive::Bob);
   CHECK(plan.actions[1].parts.empty());
   REQUIRE(!plan.warnings.empty());
-  CHECK(plan.warnings[0].find("look the same at every angle") != std::string::npos);
-  const auto t = path_travel(plain, animate_plan(plain, rig, plan, 25), 25);
-  CHECK(t[0] >= 0.08 * std::hypot(120.0, 65.0));  // the body goes a visible distance
+  CHECK(plan.warnings[0].find("so the body bounces on them") != std::string::npos);
+  // The wheels' points stay on their circles about their resting centres (they spin in place,
+  // on the ground); the body's first point bounces and never leaves its column.
+  const int F = 25;
+  const auto pts = animate_plan(plain, rig, plan, F);
+  const size_t per = pts.size() / F;
+  double bounce = 0;
+  for (int f = 0; f < F; ++f) {
+    for (int w : {1, 2}) {
+      const RigBox box = rig.parts[rig.part_of_path[w]].box;
+      const Vec2 c = box.centre();
+      size_t first = 0;
+      for (int p = 0; p < w; ++p) first += plain.paths[p].subpaths[0].points.size();
+      for (size_t i = 0; i < plain.paths[w].subpaths[0].points.size(); ++i) {
+        const Vec2 q = pts[f * per + first + i], r = pts[first + i];
+        CHECK(std::hypot(q.x - c.x, q.y - c.y) == doctest::Approx(std::hypot(r.x - c.x, r.y - c.y)).epsilon(1e-6));
+      }
+    }
+    const Vec2 d = pts[f * per] - pts[0];
+    CHECK(std::fabs(d.x) < 1e-9);
+    bounce = std::max(bounce, std::fabs(d.y));
+  }
+  // kIdleBounces up-and-downs of kIdleBounce of the figure's height, sampled at the frames.
+  double peak = 0;
+  for (int f = 0; f < F; ++f) peak = std::max(peak, std::fabs(std::sin(2 * M_PI * kIdleBounces * f / (F - 1.0))));
+  CHECK(plan.actions[1].one_sided == 0);
+  CHECK(bounce == doctest::Approx(kIdleBounce * rig.figure.h() * peak).epsilon(1e-6));
 }
 
 }  // TEST_SUITE

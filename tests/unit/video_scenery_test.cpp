@@ -75,6 +75,37 @@ TEST_CASE("scenery: the meadow grouped with a carriage in a scene stays while th
   CHECK(scenery_paths(plain) == std::vector<char>{0, 0, 0, 0});
 }
 
+TEST_CASE("scenery: a landscape in layers is cut by the frame as a whole: mountains and a meadow along the sides") {
+  // The sky with its mountains (path 0) runs along the left side from y 30 to 94 (0.5 of it)
+  // and the right from 40 (0.42): alone, the frame does not cut it enough for a backdrop
+  // (kBackdropCut). With the meadow painted under it at the same edges (y 90 to 124) the
+  // landscape runs along 0.73 of the left side: a scene, whose meadow and rails stay.
+  auto doc = [](bool meadow_at_edges) {
+    return std::string(R"(<svg xmlns="http://www.w3.org/2000/svg" width="128" height="128">
+      <g><path d="M4 30L40 10L80 30L124 40L124 94L4 94Z" fill="#9cf"/></g><g>)") +
+           (meadow_at_edges ? R"(<rect x="4" y="90" width="120" height="34" fill="#6a3"/>)" : R"(<rect x="20" y="96" width="88" height="20" fill="#6a3"/>)") +
+           R"(<rect x="30" y="50" width="70" height="40" fill="#fd5"/>
+              <circle cx="45" cy="92" r="7" fill="#333"/><circle cx="85" cy="92" r="7" fill="#333"/></g>
+              <g><rect x="4" y="118" width="120" height="3" fill="#555"/></g></svg>)";
+  };
+  const Scene s = read_svg_string(doc(true), "landscape.svg");
+  CHECK(frame_cut(s, {0}) < kBackdropCut);
+  CHECK(frame_cut(s, {0, 1}) >= kBackdropCut);
+  CHECK(scenery_paths(s) == std::vector<char>{1, 1, 0, 0, 0, 1});
+  // The rails from edge to edge, a part of their own, stay with the background; the carriage drives.
+  const Rig rig = build_rig(s, {});
+  REQUIRE(rig.part_of_path.at(5) >= 0);
+  CHECK(rig.parts[rig.part_of_path.at(5)].role == Role::Background);
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the carriage rolls to the right"), rig, 1);
+  const std::vector<double> travel = test::path_travel(s, animate_plan(s, rig, plan, 13), 13);
+  CHECK(travel[5] == 0);
+  CHECK(travel[1] == 0);
+  CHECK(travel[2] > 0);
+  // A mat under the carriage that reaches no edge adds nothing the frame cuts: no scene.
+  const Scene mat = read_svg_string(doc(false), "landscape.svg");
+  CHECK(scenery_paths(mat) == std::vector<char>{0, 0, 0, 0, 0, 0});
+}
+
 TEST_CASE("scenery: the frame cuts a rock face along its sides; the climber grouped with it climbs, the rock stays") {
   const Scene s = with_room(kClimber);
   REQUIRE(s.room == doctest::Approx(kAutoRoom));

@@ -68,20 +68,34 @@ void roll_invisible_spins(const Scene& scene, const Rig& rig, MotionPlan& plan) 
     bool alone = true;
     for (const PlannedAction& s : plan.actions) alone = alone && (&s == &a || s.words != a.words);
     if (!alone || !looks_same_turned(scene, rig, a.parts)) continue;
-    PlannedAction roll;
-    roll.verb = a.verb;
-    roll.words = a.words;
-    roll.primitive = Primitive::Slide;
-    roll.target = Target::Whole;
-    roll.amp = slide->amp;
-    roll.cycles = slide->cycles;
-    roll.direction = a.direction;
-    roll.why = "'" + a.words + "': the wheels look the same turned, so the figure rolls with them";
-    a.rolls = true;
     std::string names;
     for (int p : a.parts) names += (names.empty() ? "" : ", ") + rig.parts[p].name;
-    plan.warnings.push_back("the wheels (" + names + ") look the same at every angle: spun in place they would not show, so the figure rolls with them");
-    plan.actions.push_back(std::move(roll));
+    PlannedAction body;
+    body.verb = a.verb;
+    body.words = a.words;
+    body.target = Target::Whole;
+    body.direction = a.travel != 0 ? a.travel : a.direction;
+    body.travel = a.travel;
+    if (a.travel != 0) {
+      // Sent somewhere ("the wheels spin to the right"): the figure rolls there on them.
+      body.primitive = Primitive::Slide;
+      body.amp = slide->amp;
+      body.cycles = slide->cycles;
+      body.why = "'" + a.words + "': the wheels look the same turned, so the figure rolls with them";
+      a.rolls = true;
+      plan.warnings.push_back("the wheels (" + names + ") look the same at every angle: spun in place they would not show, so the figure rolls with them");
+    } else {
+      // Sent nowhere ("the car's wheels spin"): they spin in place and the body bounces on them
+      // (motion_frames.cpp: a bounce of the same words leaves the wheels on the ground). Rolled
+      // out and back instead, a car filling its canvas slid 4 % of its size, its roof moving as
+      // much as its wheels.
+      body.primitive = Primitive::Bob;
+      body.amp = kIdleBounce;
+      body.cycles = kIdleBounces;
+      body.why = "'" + a.words + "': the wheels look the same turned, so the body bounces on them as they spin";
+      plan.warnings.push_back("the wheels (" + names + ") look the same at every angle: spun in place they would not show, so the body bounces on them");
+    }
+    plan.actions.push_back(std::move(body));
   }
 }
 

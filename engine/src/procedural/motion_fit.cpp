@@ -310,6 +310,21 @@ void unfold_region_bends(const Scene& scene, const Rig& rig, MotionPlan& plan, i
   }
 }
 
+// Whether `clause` is wheels spinning in place with at most the body's bounce or jitter on them.
+// The spin is its motion (its points are exempt from the travel: whole turns); the bounce is an
+// accent left at its size (raised to the floor, a car's body hopped 8 % of its size over its
+// wheels), and no warning says it is under the floor.
+bool spins_in_place(const MotionPlan& plan, const std::vector<size_t>& clause) {
+  bool spins = false, accents_only = true;
+  for (size_t j : clause) {
+    const PlannedAction& a = plan.actions[j];
+    const bool spin = a.primitive == Primitive::Spin && a.target == Target::Wheels && !a.parts.empty() && !a.rolls;
+    spins = spins || spin;
+    accents_only = accents_only && (spin || (a.parts.empty() && (a.primitive == Primitive::Bob || a.primitive == Primitive::Shake)));
+  }
+  return spins && accents_only;
+}
+
 // Too small to see: the moving parts travel at least kVisibleTravel of the figure's size. Each
 // clause grows as a whole, by at most kMaxBoost, measured again after each raise: a swing's
 // chord (2 r sin(a / 2)) and a bend's reach grow slower than their angle, and one raise by
@@ -319,6 +334,10 @@ void unfold_region_bends(const Scene& scene, const Rig& rig, MotionPlan& plan, i
 void raise_to_visible(const TravelCheck& c, MotionPlan& plan) {
   const double floor = c.floor();
   for (const auto& clause : measured_clauses(plan)) {
+    if (spins_in_place(plan, clause)) {
+      slow_to_follow(c, plan, clause);
+      continue;
+    }
     double travel = c.travel(plan, clause), boost = 1;
     const double first = travel;
     for (int round = 0; round < kRaiseRounds && travel > 0 && travel < floor && boost < kMaxBoost - 1e-9; ++round) {
@@ -343,7 +362,7 @@ void raise_to_visible(const TravelCheck& c, MotionPlan& plan) {
 void warn_under_floor(const TravelCheck& c, MotionPlan& plan, const std::vector<std::string>& cut) {
   for (const auto& clause : measured_clauses(plan)) {
     const double travel = c.travel(plan, clause);
-    if (travel <= 0 || travel >= c.floor() * (1 - 1e-3)) continue;
+    if (travel <= 0 || travel >= c.floor() * (1 - 1e-3) || spins_in_place(plan, clause)) continue;
     std::string by;
     for (size_t j : clause)
       if (by.empty() && cut[j] == "would leave the canvas") by = "by the canvas";

@@ -86,15 +86,43 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
 // A rolling wheel's turn at t (PlannedAction::rolls), in degrees: the distance the figure's
 // slide of the same words has gone, over the wheel's radius (rolling without slipping; going
 // right turns it clockwise on the screen, and back again on the way back). Whole turns at a
-// steady rate kept turning forwards while the car slid back.
-double rolled_deg(const MotionPlan& plan, const PlannedAction& spin, double t, const RigBox& wheel, const RigBox& figure, double W,
+// steady rate kept turning forwards while the car slid back. `radius`: the rolling radius of
+// the wheel the part belongs to (rolling_radius).
+double rolled_deg(const MotionPlan& plan, const PlannedAction& spin, double t, double radius, const RigBox& figure, double W,
                   double H) {
   for (const PlannedAction& b : plan.actions)
     if (b.primitive == Primitive::Slide && b.parts.empty() && b.verb == spin.verb && b.words == spin.words) {
       const double x = rigid(b, plan.amplitude(b), 1, 0, t, figure, figure.centre(), W, H).e;
-      return x / std::max(0.5 * std::max(wheel.w(), wheel.h()), 1e-9) * (180 / M_PI);
+      return x / std::max(radius, 1e-9) * (180 / M_PI);
     }
   return 0;
+}
+
+// The radius a spun part rolls on: that of the widest part of the same spin about the same
+// centre (within kConcentric of its width). A wheel's pieces (tyre, rim, hub, the lugs on the
+// tyre) turn as one: each turned by the distance over its own radius, a tractor's rim turned
+// faster than its tyre and its lugs were scrambled.
+double rolling_radius(const Rig& rig, const PlannedAction& spin, int part) {
+  const RigBox& b = rig.parts[part].box;
+  double r = 0.5 * std::max(b.w(), b.h());
+  for (int q : spin.parts) {
+    const RigBox& o = rig.parts[q].box;
+    const double ro = 0.5 * std::max(o.w(), o.h());
+    const Vec2 d = o.centre() - b.centre();
+    if (ro > r && std::hypot(d.x, d.y) <= kConcentric * 2 * ro) r = ro;
+  }
+  return r;
+}
+
+// Whether `a`, a motion of the whole figure, is the body's bounce or jitter on its wheels: a Bob
+// or Shake of words that also spin wheels (a car driving, idling). The wheels stay on the ground
+// and keep their centres; the body rides over them. Shaken with the body, a car's wheels hopped
+// off the road with every jolt.
+bool bounces_on_wheels(const MotionPlan& plan, const PlannedAction& a) {
+  if (!a.parts.empty() || (a.primitive != Primitive::Bob && a.primitive != Primitive::Shake)) return false;
+  for (const PlannedAction& s : plan.actions)
+    if (s.primitive == Primitive::Spin && s.target == Target::Wheels && !s.parts.empty() && s.words == a.words) return true;
+  return false;
 }
 
 // Deformations of the shape: a wave along the long axis (Undulate) or a bend (Bend).
@@ -559,11 +587,12 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     const double t = frames > 1 ? static_cast<double>(f) / (frames - 1) : 0;
     std::vector<Affine> local(G), spin(G);
     std::vector<char> spins(G, 0);
-    Affine whole, root_turn;
+    Affine whole, root_turn, over_wheels;
     for (const auto& a : plan.actions) {
       const double amp = plan.amplitude(a);
       if (is_deformation(a) || a.target == Target::Repeated) continue;
-      if (a.parts.empty() && a.primitive == Primitive::Turn) {
+      if (a.parts.empty() && bounces_on_wheels(plan, a)) over_wheels = rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * over_wheels;
+      else if (a.parts.empty() && a.primitive == Primitive::Turn) {
         // Whole turns, never fewer; the plan's scale makes the turn shallower (turn_width).
         PlannedAction shallower = a;
         shallower.scale = a.scale * plan.scale;
@@ -575,7 +604,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
                        : a.parts[i] == rig.root && a.primitive == Primitive::Swing ? root_turn : local[a.parts[i]];
         if (a.rolls) {
           const Vec2 c = P.box.centre();
-          into = Affine::translate(c.x, c.y) * P.wheel_plane * Affine::rotate_deg(rolled_deg(plan, a, t, P.box, rig.figure, W, H)) *
+          into = Affine::translate(c.x, c.y) * P.wheel_plane * Affine::rotate_deg(rolled_deg(plan, a, t, rolling_radius(rig, a, a.parts[i]), rig.figure, W, H)) *
                  P.wheel_plane.inverse() * Affine::translate(-c.x, -c.y) * into;
         } else
           into = rigid(a, amp, a.sign[i], a.phase[i], t, P.box, P.pivot, W, H, P.wheel_plane) * into;
@@ -620,6 +649,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
             // A point on a fill that holds still (a pole, the ground) holds still with it.
             if (!(src != pi && by >= 0 && held[by])) {
               if (by >= 0) q = world[by].apply(q);
+              if (!bg && !(by >= 0 && fixed[by])) q = over_wheels.apply(q);
               if (!bg) q = whole.apply(q);
             }
           }

@@ -273,6 +273,7 @@ struct Builder {
     // Where the prompt sends the figure ("drifts to the right"): a slide of the whole figure
     // goes that way first, in the viewer's frame.
     if (mods.travel != 0 && a.primitive == Primitive::Slide && target == Target::Whole) a.direction = mods.travel;
+    a.travel = mods.travel;
     std::string note;
     if (located) {
       // Its lobes turn, on the root's box for the frames (bend_region); only its paths move.

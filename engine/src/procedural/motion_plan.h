@@ -51,6 +51,7 @@ struct PlannedAction {
   int cycles = 1;
   int vertical = 0;             // Bob: +1 only up, -1 only down
   int direction = 1;            // Spin, Slide, Rock one-sided: which way first
+  int travel = 0;               // where the prompt sends the figure: -1 left, +1 right, 0 nowhere
   int anchored = 0;             // Undulate or Bend of the whole figure: the side a pole holds it
                                 // at (a flag), or a Bend's base (a stalk): 1 left, 2 right, 3 top,
                                 // 4 bottom; 0 free (a fish)

@@ -45,6 +45,10 @@ inline constexpr double kArmHostWider = 1.15;
 // within this share of a wheel's width from its centre turn with it.
 inline constexpr double kWheelShare = 0.5;
 inline constexpr double kConcentric = 0.1;
+// A round part at least kSmallWheelShare of the widest wheel's width whose bottom is within
+// kWheelGround of that width of the lowest large wheel's bottom stands on the same ground: a
+// wheel (a tractor's front wheel is 0.45 of its back one).
+inline constexpr double kSmallWheelShare = 0.25, kWheelGround = 0.1;
 // A part hanging from a spinning part turns with it when this share of its box is inside (a
 // stand reaching into the wheel's box is not carried).
 inline constexpr double kSpinInsideShare = 0.9;

@@ -485,7 +485,10 @@ void Assembly::find_wheels() {
     for (int pi : unit_paths[g])
       if (!scene.paths[pi].subpaths.empty())
         outline = std::max(outline, std::fabs(shoelace(scene.paths[pi].subpaths[0].points)));
-    P.round = has_word(P.words, {"wheel", "tire", "tyre"}) || round_outline(P.box, outline, 0.005 * CW * CH);
+    // A part named a wheel is round when its box could hold one seen at a slant: a flat band
+    // (the ground under a bicycle, named with it) spun as a wheel tilted out of the picture.
+    const double flat = std::max(P.box.w(), P.box.h()) / std::max(std::min(P.box.w(), P.box.h()), 1e-9);
+    P.round = (has_word(P.words, {"wheel", "tire", "tyre"}) && flat <= kWheelFlatMax) || round_outline(P.box, outline, 0.005 * CW * CH);
     // A wheel split from its group turns; it is no limb to swing.
     if (unit_paths[g].size() == 1 && wheel_paths.count(unit_paths[g][0]) && g != rig.root) {
       P.role = Role::Detail;
@@ -495,7 +498,8 @@ void Assembly::find_wheels() {
     // round too, and no limb: the rig took a wheel below the body for a leg, and pedalling
     // swung it about its top like a shin. Its box is its curve's: a wheel spins about the middle
     // of the oval drawn, not of the cubic's handles (18 units off in livesketch's biking).
-    if (line && g != rig.root && unit_paths[g].size() == 1 && is_loop_stroke(scene.paths[unit_paths[g][0]])) {
+    if (line && g != rig.root && unit_paths[g].size() == 1 && is_loop_stroke(scene.paths[unit_paths[g][0]]) &&
+        std::max(cbox[g].w(), cbox[g].h()) <= kWheelFlatMax * std::min(cbox[g].w(), cbox[g].h())) {
       P.box = cbox[g];
       P.wheel_plane = loop_plane(scene.paths[unit_paths[g][0]]);
       P.round = true;

@@ -44,6 +44,10 @@ inline double gap(const RigBox& a, const RigBox& b) {
 }
 
 // A near-square box that its first outline fills about as a circle does, at least `min_area`.
+// A wheel seen at a slant is an oval at most this many times as long as wide (a bicycle's
+// wheels drawn in perspective: under 2); a ground band or a shadow under a vehicle is flatter.
+inline constexpr double kWheelFlatMax = 2.5;
+
 inline bool round_outline(const RigBox& box, double outline, double min_area) {
   const double aspect = box.w() / std::max(box.h(), 1e-9);
   const double fill = outline / std::max(box.area(), 1e-9);

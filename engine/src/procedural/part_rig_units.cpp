@@ -38,13 +38,16 @@ constexpr double kLimbInCore = 0.5;
 // with them never rode.
 // A part holding a scene's subject and scenery with it (a carriage and the meadow and rails
 // under it: scenery.h) becomes two: the subject's paths, and the scenery's as a part of its own
-// that stays with the background.
+// that stays with the background; a band of scenery alone (edge_to_edge) stays with it too.
 void split_scenery(const Scene& scene, Units& U) {
   const std::vector<char> scenery = scenery_paths(scene);
   const size_t n = U.paths.size();
   for (size_t u = 0; u < n; ++u) {
     std::vector<int> subject, rest;
     for (int pi : U.paths[u]) (scenery[static_cast<size_t>(pi)] ? rest : subject).push_back(pi);
+    // A part all scenery that runs from edge to edge (the rails in a group of their own) stays
+    // too: left to the rig's roles, the rails under a carriage were its legs and drove with it.
+    if (subject.empty() && !rest.empty() && edge_to_edge(scene, rest)) U.scenery.insert(rest.front());
     if (subject.empty() || rest.empty()) continue;
     U.paths[u] = subject;
     U.split[u] = 1;

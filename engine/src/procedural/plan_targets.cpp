@@ -85,6 +85,22 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
         if (rig.parts[i].round && rig.parts[i].role != Role::Background && rig.parts[i].box.w() >= (one ? 1.0 : kWheelShare) * widest)
           big.push_back(static_cast<int>(i));
       if (one && big.size() > 1) big.resize(1);
+      // A smaller round part standing on the same ground as a large one is a wheel too (a
+      // tractor's front wheel, half as wide as its back one, was left still).
+      double ground = -1e300;
+      for (int b : big) ground = std::max(ground, rig.parts[b].box.y1);
+      const size_t n_big = big.size();
+      for (size_t i = 0; i < rig.parts.size() && !one; ++i) {
+        const RigPart& P = rig.parts[i];
+        if (!P.round || P.role == Role::Background || std::find(big.begin(), big.end(), static_cast<int>(i)) != big.end()) continue;
+        bool inside = false;  // a hub within a large wheel is its load, not a wheel beside it
+        for (size_t k = 0; k < n_big; ++k) {
+          const RigBox& bb = rig.parts[big[k]].box;
+          const Vec2 c = P.box.centre();
+          inside = inside || (c.x >= bb.x0 && c.x <= bb.x1 && c.y >= bb.y0 && c.y <= bb.y1);
+        }
+        if (!inside && P.box.w() >= kSmallWheelShare * widest && P.box.y1 >= ground - kWheelGround * widest) big.push_back(static_cast<int>(i));
+      }
       for (size_t i = 0; i < rig.parts.size(); ++i) {
         const RigPart& P = rig.parts[i];
         bool keep = std::find(big.begin(), big.end(), static_cast<int>(i)) != big.end();

@@ -36,18 +36,28 @@ std::vector<char> scenery_paths(const Scene& scene) {
   // The drawing's own canvas (Scene::room) and its edges' reach.
   const double f = 1 + 2 * scene.room, W = scene.width / f, H = scene.height / f;
   const double ox = scene.room * W, oy = scene.room * H, tx = kBackdropEdge * W, ty = kBackdropEdge * H;
-  bool scene_drawn = false;
+  // A backdrop by its box (backdrop.h), and the frame's cut of it together with the other early
+  // paths at the edges: a landscape drawn in layers (a sky with its mountains, the meadow, the
+  // rails) runs along the frame as a whole, each layer for a part of a side (a carriage's sky and
+  // mountains along 0.53 of the left side, with the meadow and rails 0.70).
   std::vector<char> inner(n, 0);  // no backdrop, reaching no edge
+  std::vector<int> backdrops, at_edges;
   for (size_t i = 0; i < n; ++i) {
     const Box& b = box[i];
     if (b.empty()) continue;
-    if (is_backdrop(scene, {static_cast<int>(i)}, b.x0, b.y0, b.x1, b.y1, static_cast<double>(i) / static_cast<double>(n))) {
-      scene_drawn = true;
+    const double pos = static_cast<double>(i) / static_cast<double>(n);
+    const bool edge = b.x0 - ox <= tx || b.y0 - oy <= ty || b.x1 - ox >= W - tx || b.y1 - oy >= H - ty;
+    if (is_backdrop(b.x0 - ox, b.y0 - oy, b.x1 - ox, b.y1 - oy, pos, W, H)) {
+      backdrops.push_back(static_cast<int>(i));
       continue;
     }
-    inner[i] = b.x0 - ox > tx && b.y0 - oy > ty && b.x1 - ox < W - tx && b.y1 - oy < H - ty;
+    if (edge && pos < kBackdropEarly) at_edges.push_back(static_cast<int>(i));
+    inner[i] = !edge;
   }
-  if (!scene_drawn) return out;
+  if (backdrops.empty()) return out;
+  std::vector<int> layers = backdrops;
+  layers.insert(layers.end(), at_edges.begin(), at_edges.end());
+  if (frame_cut(scene, layers) < kBackdropCut) return out;
   std::vector<int> up(n);
   std::iota(up.begin(), up.end(), 0);
   for (size_t i = 0; i < n; ++i)
@@ -62,6 +72,17 @@ std::vector<char> scenery_paths(const Scene& scene) {
   if (subject < 0 || cluster[subject].area() < kSubjectMin * W * H) return out;
   for (size_t i = 0; i < n; ++i) out[i] = !(inner[i] && find(up, static_cast<int>(i)) == subject) && !box[i].empty();
   return out;
+}
+
+bool edge_to_edge(const Scene& scene, const std::vector<int>& paths) {
+  Box b;
+  for (int pi : paths)
+    for (const auto& sp : scene.paths[static_cast<size_t>(pi)].subpaths)
+      for (const Vec2& q : sp.points) b.add({q.x, q.y, q.x, q.y});
+  if (b.empty()) return false;
+  const double f = 1 + 2 * scene.room, W = scene.width / f, H = scene.height / f;
+  const double ox = scene.room * W, oy = scene.room * H, tx = kBackdropEdge * W, ty = kBackdropEdge * H;
+  return (b.x0 - ox <= tx && b.x1 - ox >= W - tx) || (b.y0 - oy <= ty && b.y1 - oy >= H - ty);
 }
 
 }  // namespace svgm

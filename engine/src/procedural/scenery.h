@@ -2,7 +2,9 @@
 // on a track, on a meadow) that a grouper put in one part with the ground under it. The whole
 // part then drove with the carriage, the mountains' meadow and the rails with it.
 //
-// A drawing is a scene when one of its paths is a backdrop (scene/backdrop.h). Its subject is
+// A drawing is a scene when one of its paths is a backdrop by its box (scene/backdrop.h) and the
+// frame cuts it, with the other paths painted early that reach an edge (the layers of a
+// landscape: sky, mountains, meadow, rails), along kBackdropCut of a side. Its subject is
 // the largest cluster (by the area of its box) of the paths that reach no edge of the drawing's
 // own canvas (within kBackdropEdge) and are no backdrop, joined where their boxes overlap: the
 // carriage's body, windows and wheels. Every other path is scenery: bands from edge to edge
@@ -24,5 +26,11 @@ constexpr double kSubjectMin = 0.15;  // of the drawing's canvas: the subject's 
 // Per path of `scene`: 1 when it is the scenery of a scene (see above); all 0 when the drawing
 // is no scene or has no subject apart from its scenery.
 std::vector<char> scenery_paths(const Scene& scene);
+
+// Whether the paths' box runs from edge to edge of the drawing's own canvas (Scene::room), left
+// to right or top to bottom, within kBackdropEdge: a band of scenery (the rails under a carriage,
+// a meadow) rather than a piece at one edge (a splash cut off by the frame, a board running off
+// it: those may be the figure's).
+bool edge_to_edge(const Scene& scene, const std::vector<int>& paths);
 
 }  // namespace svgm
