@@ -29,6 +29,12 @@ std::vector<Owned> owned_points(const Skeleton& s, const Figure& f) {
   for (size_t l = 0; l < f.limbs.size(); ++l) {
     const SkeletonNode& joint = s.nodes[f.limbs[l].joint];
     const auto& standing = f.limbs[l].standing_edges;
+    // A tail's stretch through a foot, before its base, is the body's (limbs.h).
+    const auto& path = f.limbs[l].path;
+    const auto through_foot = [&](Vec2 p) {
+      return std::any_of(path.begin(), path.begin() + static_cast<long>(std::min(f.limbs[l].body_until, path.size())),
+                         [&](Vec2 q) { return q.x == p.x && q.y == p.y; });
+    };
     for (int e : f.limbs[l].edges) {
       // A fork standing on the ground off a limb that does not is the body's leg (limbs.h).
       const bool leg = std::find(standing.begin(), standing.end(), e) != standing.end();
@@ -39,7 +45,7 @@ std::vector<Owned> owned_points(const Skeleton& s, const Figure& f) {
         const Limb& L = f.limbs[l];
         const bool rump = L.body_radius > 0 && s.edges[e].radius[i] >= L.body_radius &&
                           std::hypot(p.x - joint.pos.x, p.y - joint.pos.y) < std::hypot(L.base.x - joint.pos.x, L.base.y - joint.pos.y);
-        out.push_back({p, s.edges[e].radius[i], inside || leg || rump ? -1 : static_cast<int>(l)});
+        out.push_back({p, s.edges[e].radius[i], inside || leg || rump || through_foot(p) ? -1 : static_cast<int>(l)});
       }
     }
   }

@@ -282,6 +282,64 @@ void thin_tail_bases(Figure& f) {
   }
 }
 
+// A tail whose branch runs through a foot on its way out (limbs.h): the hind foot touched by a
+// tail drawn down the rump has no branch of its own (the pruning took its short spur), so the
+// pixels of the ground line under it fall to the tail's branch, and the tail swung the foot.
+// The stretch up to the last branch point that owns ground-line pixels (by the regions' rule,
+// nearest disc edge) is the body's; the tail starts where the branch is thin again beyond it.
+// Only for a figure standing on legs, a tail whose tip is off the ground, and when the rest is
+// at least kTailRest of the tail (a tail lying along the ground is all on the ground line).
+constexpr double kTailRest = 0.25;
+
+void tails_through_feet(const Skeleton& s, Figure& f) {
+  if (std::none_of(f.limbs.begin(), f.limbs.end(), [](const Limb& L) { return L.grounded; })) return;
+  const double tol = std::max(3.0, kGroundShare * (f.y1 - f.y0));
+  std::vector<Vec2> ground;
+  for (int y = std::max(0, static_cast<int>(std::floor(f.ground_y - tol))); y < s.height; ++y)
+    for (int x = 0; x < s.width; ++x)
+      if (s.labels.at<int>(y, x) == f.component) ground.push_back({double(x), double(y)});
+  for (Limb& L : f.limbs) {
+    const size_t n = L.path.size();
+    if (L.kind != LimbKind::Tail || L.grounded || n < 4 || L.tip_pos.y + L.tip_radius >= f.ground_y - tol) continue;
+    size_t last = 0;
+    bool through = false;
+    for (const Vec2& p : ground) {
+      double other = std::numeric_limits<double>::infinity(), own = other;
+      size_t at = 0;
+      for (const auto& E : s.edges)
+        if (component_of(s, E) == f.component)
+          for (size_t i = 0; i < E.points.size(); ++i) other = std::min(other, len(p - E.points[i]) - E.radius[i]);
+      for (size_t i = L.base_index; i < n; ++i)
+        if (const double d = len(p - L.path[i]) - L.radius[i]; d < own) own = d, at = i;
+      if (own <= other) last = std::max(last, at), through = true;
+    }
+    if (!through) continue;
+    double rest = 0;
+    for (size_t k = last + 1; k < n; ++k) rest += len(L.path[k] - L.path[k - 1]);
+    if (rest < kTailRest * L.length) continue;
+    // The tail's own thickness: the median radius of the rest's outer half.
+    std::vector<double> outer(L.radius.begin() + static_cast<long>(last + (n - last) / 2), L.radius.end());
+    std::nth_element(outer.begin(), outer.begin() + static_cast<long>(outer.size() / 2), outer.end());
+    const double thin = kTailThick * std::max(outer[outer.size() / 2], 0.5);
+    size_t i = last + 1;
+    while (i + 1 < n && L.radius[i] > thin) ++i;
+    L.body_until = L.base_index = i;
+    L.base = L.path[i];
+    // The edges of its sub-tree that hold none of the tail's own points (a loop round a gap
+    // between tail and rump, the stretch to the foot) are the body's too.
+    for (int e : L.edges) {
+      const auto& P = s.edges[e].points;
+      const bool own = std::any_of(L.path.begin() + static_cast<long>(i), L.path.end(), [&](Vec2 q) {
+        return std::any_of(P.begin(), P.end(), [&](Vec2 r) { return r.x == q.x && r.y == q.y; });
+      });
+      if (!own && std::find(L.standing_edges.begin(), L.standing_edges.end(), e) == L.standing_edges.end()) L.standing_edges.push_back(e);
+    }
+    L.length = 0;
+    for (size_t k = i + 1; k < n; ++k) L.length += len(L.path[k] - L.path[k - 1]);
+    if (L.length > 0) L.direction = unit(L.tip_pos - L.base);
+  }
+}
+
 }  // namespace
 
 const char* limb_kind_name(LimbKind k) {
@@ -349,6 +407,7 @@ Figure find_limbs(const Skeleton& s) {
   label(s, f);
   standing_forks(s, f);
   thin_tail_bases(f);
+  tails_through_feet(s, f);
   std::vector<std::pair<double, size_t>> order;
   for (size_t i = 0; i < f.limbs.size(); ++i)
     order.push_back({joint_t(s, f, f.limbs[i]) * 10 + std::atan2(f.limbs[i].direction.y, f.limbs[i].direction.x), i});

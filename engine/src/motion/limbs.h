@@ -22,7 +22,10 @@
 //
 // A limb off the ground does not own a fork of its sub-tree that stands on the ground: a hind
 // leg whose outline runs into the root of the tail (one branch of the skeleton leaving the
-// rump, two ends) is a leg of the body, and a tail's lash would swing it with the tail.
+// rump, two ends) is a leg of the body, and a tail's lash would swing it with the tail. Nor
+// does a tail own a foot its branch runs through without forking (a tail drawn down the rump
+// and touching the hind foot, whose own short branch the pruning removed): the tail starts
+// past the last point of its branch that owns a piece of the ground line.
 #pragma once
 
 #include <string>
@@ -44,12 +47,15 @@ struct Limb {
   int tip = -1;              // its farthest skeleton end node
   std::vector<int> more_tips;  // its other end nodes (fingers, ears), if it forks
   std::vector<int> standing_edges;  // the stretches of its forks that stand on the ground while
-                                    // it does not: the body's legs, not the limb's (limb_regions)
+                                    // it does not (the body's legs, not the limb's), and a tail's
+                                    // way through a foot: the body's (limb_regions)
   std::vector<int> edges;    // every skeleton edge of its sub-tree
   std::vector<Vec2> path;    // skeleton points, joint to tip
   std::vector<double> radius;  // inscribed radius at each path point
   double body_radius = 0;    // > 0 (tails): a skeleton point this thick or more is the body's
                              // (a rump the tail's branch runs through), not the limb's
+  size_t body_until = 0;     // (tails) path[0 .. body_until) is the body's: a foot the tail's
+                             // branch runs through on its way out of the rump (limb_regions)
   size_t base_index = 0;     // path[base_index] = base
   Vec2 base, bend, tip_pos;  // shoulder/hip, elbow/knee, hand/foot
   bool bent = false;         // the bend is at least a tenth of the chord off it
