@@ -23,6 +23,16 @@ int count(const Figure& f, LimbKind k) {
 }
 
 // The limb of kind k whose tip is nearest `near`, or -1.
+// motion_masks::quadruped without its tail.
+cv::Mat tailless_quadruped() {
+  cv::Mat m(160, 220, CV_8U, cv::Scalar(0));
+  cv::ellipse(m, {110, 70}, {55, 22}, 0, 0, 360, 255, cv::FILLED);
+  for (int x : {70, 85, 135, 150}) cv::line(m, {x, 80}, {x, 140}, 255, 8);
+  cv::line(m, {155, 60}, {180, 30}, 255, 10);
+  cv::ellipse(m, {188, 25}, {16, 10}, 0, 0, 360, 255, cv::FILLED);
+  return m;
+}
+
 int find(const Figure& f, LimbKind k, Vec2 near) {
   int best = -1;
   for (size_t i = 0; i < f.limbs.size(); ++i)
@@ -140,6 +150,40 @@ TEST_SUITE("motion") {
     CHECK(regions.at<int>(40, 8) == tail);  // on the thin tail
     CHECK(regions.at<int>(70, 40) == -1);   // the rump's middle is the body's
     CHECK(regions.at<int>(58, 30) == -1);
+  }
+
+  TEST_CASE("a tail whose branch runs through a foot on the ground starts past the foot") {
+    // A quadruped facing right whose tail (5 wide) runs from its back end (58, 65) down to a
+    // hind foot standing on the ground (a disc at (45, 136), r 8: its short spur is pruned, so
+    // no branch of its own ends there), then curls up off the ground to (12, 108), as a tail
+    // drawn down the rump and touching the hind foot. The foot is the body's, the curl the tail.
+    cv::Mat m = tailless_quadruped();
+    cv::line(m, {58, 65}, {45, 132}, 255, 5);
+    cv::circle(m, {45, 136}, 8, 255, cv::FILLED);
+    cv::line(m, {45, 134}, {12, 108}, 255, 5);
+    const Skeleton s = skeletonise(m);
+    const Figure f = find_limbs(s);
+    const int tail = find(f, LimbKind::Tail, {12, 108});
+    REQUIRE(tail >= 0);
+    const Limb& L = f.limbs[tail];
+    CHECK(distance(L.tip_pos, {12, 108}) <= 7);  // the thinning stops short of a line's end
+    CHECK(L.body_until == L.base_index);
+    CHECK(L.base.x < 45);  // past the foot's middle
+    CHECK(L.base.y > 110);
+    const cv::Mat regions = limb_regions(s, f);
+    CHECK(regions.at<int>(142, 45) == -1);    // the foot on the ground is the body's
+    CHECK(regions.at<int>(100, 50) == -1);    // and so is the stretch down to it
+    CHECK(regions.at<int>(117, 24) == tail);  // the curl is the tail
+  }
+
+  TEST_CASE("a tail lying along the ground stays whole") {
+    // The same quadruped whose tail runs from its back end down to the ground and along it to
+    // (5, 140): its tip is on the ground line, so no foot is split off it.
+    cv::Mat m = tailless_quadruped();
+    cv::line(m, {58, 65}, {40, 138}, 255, 5);
+    cv::line(m, {40, 138}, {5, 140}, 255, 5);
+    const Figure f = find_limbs(skeletonise(m));
+    for (const Limb& L : f.limbs) CHECK(L.body_until == 0);
   }
 
   TEST_CASE("a bent arm's elbow is where it bends") {

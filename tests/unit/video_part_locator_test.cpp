@@ -89,6 +89,28 @@ TEST_CASE("part locator: an elephant's ear, larger than a usual part (38 % of th
   CHECK(t[2] == 0.0);
 }
 
+TEST_CASE("part locator: an ear drawn in one stroke with the head and trunk is its stretch above the figure's middle") {
+  // The stroke's box (x 30-100, y 30-150) reaches 0.8 of the figure's height (y 30-180): no
+  // ear hangs that low, so the lobe holds only its points above the middle (y 105); the trunk's
+  // tip (30, 150) stays out of it, the ear's top (75, 32) is in it.
+  const Drawing d("elephant_head_outline.svg");
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the elephant flaps its ears"), d.rig, 1);
+  REQUIRE(plan.actions.size() >= 1);
+  const PlannedAction& a = plan.actions[0];
+  CHECK(a.region == Region::Located);
+  REQUIRE(a.lobes.size() == 1);
+  CHECK(a.lobe_paths == std::vector<int>{1});
+  CHECK(a.why.find("of one reaching the figure's lower quarter (a head drawn with its ear) only its stretch above the middle") != std::string::npos);
+  double lowest = 0;
+  for (Vec2 q : a.lobes[0].outline) lowest = std::max(lowest, q.y);
+  CHECK(lowest < 110);  // the hull of points at y <= 105, grown by 6 % about its middle
+  CHECK(lobe_depth(a.lobes[0], {30, 150}) == 0.0);
+  CHECK(lobe_depth(a.lobes[0], {75, 33}) > 0.0);
+  const auto t = d.travel(plan);
+  CHECK(t[0] == 0.0);  // the body
+  CHECK(t[1] > 5.0);
+}
+
 TEST_CASE("part locator: a bell's clapper swings about its top under the rim, its fill with its outline; the bell holds") {
   const Drawing d("bell_clapper.svg");
   const MotionPlan plan = plan_from_prompt(parse_prompt("the bell's clapper swings"), d.rig, 1);

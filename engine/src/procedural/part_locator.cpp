@@ -20,6 +20,9 @@ constexpr double kPartMinSize = 0.1;   // a part's longer side at least this sha
 constexpr double kPartMaxShare = 0.35; // a part's box at most this share of F's box
 constexpr double kEarMaxShare = 0.55;  // an ear's, when none of the usual size sticks out: an
                                        // elephant's ear spans most of its head (openmoji's: 0.45)
+constexpr double kEarReach = 0.75;     // an element picked as an ear reaching below this share of F's height is a
+                                       // head drawn with its ear (openmoji's elephant: 0.87; twemoji's own ear: 0.65)
+constexpr double kEarCut = 0.5;        // and its ear is its stretch above this share of F's height
 constexpr double kEarBehind = 0.1;     // an ear's middle at most this share of F's width behind F's middle (eye_cue.h)
 constexpr double kPairShare = 0.3;     // the second of a pair at least this share of the first's score
 constexpr double kClapperOffCentre = 0.15;  // a clapper's middle within this share of B's width of B's middle
@@ -94,9 +97,7 @@ std::vector<int> with_details(const Rig& rig, int e, int body) {
 
 // One lobe over elements `els` turning about `pivot`: its tip is their point farthest from the
 // pivot, its base the line across the axis through the pivot, moved back behind every point.
-ArmLobe lobe_over(const Rig& rig, const std::vector<int>& els, Vec2 pivot) {
-  std::vector<Vec2> pts;
-  for (int e : els) pts.insert(pts.end(), rig.elements[e].points.begin(), rig.elements[e].points.end());
+ArmLobe lobe_over_points(const Rig& rig, const std::vector<Vec2>& pts, Vec2 pivot) {
   ArmLobe l;
   l.pivot = pivot;
   l.tip = pivot;
@@ -121,6 +122,12 @@ ArmLobe lobe_over(const Rig& rig, const std::vector<int>& els, Vec2 pivot) {
   l.outline = hull;
   l.side = l.tip.x < rig.figure.centre().x ? -1 : 1;
   return l;
+}
+
+ArmLobe lobe_over(const Rig& rig, const std::vector<int>& els, Vec2 pivot) {
+  std::vector<Vec2> pts;
+  for (int e : els) pts.insert(pts.end(), rig.elements[e].points.begin(), rig.elements[e].points.end());
+  return lobe_over_points(rig, pts, pivot);
 }
 
 // The point of elements `els` nearest `to`.
@@ -189,15 +196,36 @@ LocatedPart ears(const Rig& rig, int body) {
   if (scored.size() > 1 && scored[1].first >= kPairShare * scored[0].first) picked.push_back(scored[1].second);
   std::set<int> paths;
   std::string where;
+  bool cut = false;
   for (int e : picked) {
     const auto els = with_details(rig, e, body);
-    out.lobes.push_back(lobe_over(rig, els, nearest_point(rig, {e}, B.centre())));
+    // An ear hangs from the head's top: an element reaching down into the figure's lower
+    // quarter is a head drawn in one outline with its ear (an elephant's, its trunk hanging
+    // from it), and its ear is its stretch above the middle; the trunk below holds.
+    const double low = F.y0 + kEarCut * F.h();
+    bool upper = false;
+    if (rig.elements[e].box.y1 > F.y0 + kEarReach * F.h()) {
+      std::vector<Vec2> pts, own;
+      for (int i : els)
+        for (Vec2 q : rig.elements[i].points)
+          if (q.y <= low) (i == e ? own : pts).push_back(q);
+      if (!own.empty()) {
+        Vec2 pivot = own[0];
+        for (Vec2 q : own)
+          if (dist(q, B.centre()) < dist(pivot, B.centre())) pivot = q;
+        pts.insert(pts.end(), own.begin(), own.end());
+        out.lobes.push_back(lobe_over_points(rig, pts, pivot));
+        cut = upper = true;
+      }
+    }
+    if (!upper) out.lobes.push_back(lobe_over(rig, els, nearest_point(rig, {e}, B.centre())));
     add_paths(rig, els, paths);
     where += (where.empty() ? "" : " and ") + path_ids(els, rig) + " at " + fmt_box(rig, rig.elements[e].box);
   }
   out.paths.assign(paths.begin(), paths.end());
   out.why = std::to_string(picked.size()) + (picked.size() > 1 ? " elements stick" : " element sticks") +
-            " out at the figure's top (" + where + "), each turning about its end nearest the body";
+            " out at the figure's top (" + where + "), each turning about its end nearest the body" +
+            (cut ? "; of one reaching the figure's lower quarter (a head drawn with its ear) only its stretch above the middle" : "");
   return out;
 }
 
