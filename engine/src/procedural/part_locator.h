@@ -10,7 +10,9 @@
 //  - ears (ear, antenna): the elements sticking out above the body at the figure's top, at most
 //    two (a pair seen from the side lies on one side), each turning about its end nearest the
 //    body; when a drawn eye shows the head's end (eye_cue.h), none behind the middle away from
-//    it (a dog's raised tail);
+//    it (a dog's raised tail); one reaching the figure's lower quarter is a head drawn in one
+//    outline with its ear (openmoji's elephant, its trunk hanging from it): only its stretch
+//    above the figure's middle turns, about its point there nearest the body's middle;
 //  - a jet (spout, plume, jet, spray, steam, smoke, fountain): what is drawn above the body's
 //    top, turning about its lowest middle;
 //  - a clapper (clapper, pendulum, tongue of a bell): a small element below the body's middle
