@@ -4,6 +4,7 @@
 
 #include <array>
 
+#include "raster/browser_stroke.h"
 #include "raster/layer_compositor.h"
 #include "raster/raster_cl.h"
 #include "raster/raster_plan.h"
@@ -11,9 +12,10 @@
 
 namespace svgm {
 
-RgbaImage render_image(ClRuntime& rt, const Scene& scene, int width, bool transparent,
-                       bool browser_edges) {
-  const RenderSize size = render_size(scene, width);
+namespace {
+
+RgbaImage draw(ClRuntime& rt, const Scene& scene, const RenderSize& size, bool transparent,
+               bool browser_edges) {
   // Gradients and layers (group opacity, clips, masks) are drawn by the CPU compositor; the
   // GPU rasteriser composites flat paths one by one (and stays the fitter's forward pass).
   if (scene.needs_layers()) return render_layers(scene, size, transparent, browser_edges);
@@ -24,6 +26,16 @@ RgbaImage render_image(ClRuntime& rt, const Scene& scene, int width, bool transp
   const std::array<float, 4> white{1, 1, 1, 1}, clear{0, 0, 0, 0};
   raster.forward(ClRaster::Output::Rgba8, transparent ? clear : white);
   return RgbaImage{size.width, size.height, raster.read_rgba8()};
+}
+
+}  // namespace
+
+RgbaImage render_image(ClRuntime& rt, const Scene& scene, int width, bool transparent,
+                       bool browser_edges) {
+  const RenderSize size = render_size(scene, width);
+  // Browser edges also draw strokes as the browser outlines them (raster/browser_stroke.h).
+  if (browser_edges) return draw(rt, with_browser_strokes(scene, size.view), size, transparent, true);
+  return draw(rt, scene, size, transparent, false);
 }
 
 }  // namespace svgm
