@@ -38,6 +38,16 @@ Vec2 cubic_tangent(const Vec2* c, double t) {
   const double u = 1 - t;
   return 3 * (u * u) * (c[1] - c[0]) + 6 * u * t * (c[2] - c[1]) + 3 * (t * t) * (c[3] - c[2]);
 }
+// A conic (rational quadratic of weight w) at t, and a vector along its tangent.
+Vec2 conic_at(const Vec2* c, double w, double t) {
+  const double u = 1 - t, d = u * u + 2 * w * u * t + t * t;
+  return (1 / d) * (u * u * c[0] + 2 * w * u * t * c[1] + t * t * c[2]);
+}
+Vec2 conic_tangent(const Vec2* c, double w, double t) {
+  const Vec2 p20 = c[2] - c[0], p10 = c[1] - c[0];
+  const Vec2 C = w * p10, A = (w - 1) * p20, B = p20 - 2 * C;
+  return t * (t * A + B) + C;
+}
 Vec2 quad_at(const Vec2* q, double t) {
   const double u = 1 - t;
   return u * u * q[0] + 2 * u * t * q[1] + t * t * q[2];
@@ -145,6 +155,29 @@ class Stroker {
     post_join(p3, n, u);
   }
 
+  // A conic arc from the current point (browsers draw circles, ellipses and rounded corners
+  // with conics): its sides are fitted with quadratics like a cubic's, without the first
+  // stage that waits for the offset tangents to meet (Skia's conicStroke).
+  void conic_to(Vec2 ctrl, Vec2 p2, double w) {
+    const Vec2 c[4] = {prev_, ctrl, p2, p2};
+    if (degenerate(ctrl - prev_) || degenerate(p2 - ctrl)) return line_to(p2);
+    Vec2 n, u;
+    if (!pre_join(ctrl, &n, &u, false)) return line_to(p2);
+    conic_w_ = w;
+    for (int side : {1, -1}) {
+      side_ = side;
+      found_tangents_ = true;
+      depth_ = 0;
+      Piece piece;
+      piece.init(0, 1);
+      cubic_piece(c, piece);
+    }
+    conic_w_ = 0;
+    const Vec2 d = p2 - ctrl;
+    u = normal_of((1 / len(d)) * d);
+    post_join(p2, r_ * u, u);
+  }
+
   void close_contour() { finish(true, prev_is_line_); }
   std::vector<OutlineContour> done() {
     finish(false, prev_is_line_);
@@ -193,8 +226,9 @@ class Stroker {
 
   // The point on the cubic at t and the side's offset point and a point along its tangent.
   bool offset_at(const Vec2* c, double t, Vec2* on_curve, Vec2* off, Vec2* tangent) const {
-    Vec2 d = cubic_tangent(c, t);
-    *on_curve = cubic_at(c, t);
+    Vec2 d = conic_w_ > 0 ? conic_tangent(c, conic_w_, t) : cubic_tangent(c, t);
+    *on_curve = conic_w_ > 0 ? conic_at(c, conic_w_, t) : cubic_at(c, t);
+    if (conic_w_ > 0 && d.x == 0 && d.y == 0) d = c[2] - c[0];
     if (d.x == 0 && d.y == 0) {
       if (std::fabs(t) <= kNearlyZero) d = c[2] - c[0];
       else if (std::fabs(1 - t) <= kNearlyZero) d = c[3] - c[1];
@@ -309,7 +343,7 @@ class Stroker {
         f = close_enough(p.q, ray0, ray1);
       }
       if (f == Fit::Quad) {
-        side_path().quad_to(p.q[1], p.q[2]);
+              side_path().quad_to(p.q[1], p.q[2]);
         return true;
       }
       if (f == Fit::Degenerate) {
@@ -502,9 +536,22 @@ class Stroker {
   bool prev_is_line_ = false;
   int side_ = 1, depth_ = 0;
   bool found_tangents_ = false;
+  double conic_w_ = 0;  // the weight while stroking a conic, 0 for a cubic
   Side outer_, inner_;
   std::vector<OutlineContour> out_;
 };
+
+// The conic control point of a cubic that approximates a quarter ellipse (its end tangents'
+// meeting point, which every affine image of such an arc keeps); false for a straight cubic.
+bool quarter_arc_control(const Vec2* q, Vec2* ctrl) {
+  const Vec2 a = q[1] - q[0], b = q[2] - q[3];
+  const double den = cross(a, b);
+  if (std::fabs(den) <= 1e-9 * (dot(a, a) + dot(b, b))) return false;
+  const double s = cross(q[3] - q[0], b) / den;
+  if (!(s > 0)) return false;
+  *ctrl = q[0] + s * a;
+  return true;
+}
 
 }  // namespace
 
@@ -513,13 +560,20 @@ std::vector<OutlineContour> browser_stroke_outline(const Path& path, const Affin
   const double radius = 0.5 * path.stroke.width * view.mean_scale();
   if (!(radius > 0)) return {};
   Stroker st(radius, path.stroke.join, path.stroke.cap, path.stroke.miter_limit);
+  // Browsers draw these shapes' curves as quarter-ellipse conics (Chromium's drawOval and
+  // drawRRect); our reader made each quarter one cubic. A path's own curves stay cubics.
+  const bool arcs = path.tag == "circle" || path.tag == "ellipse" || path.tag == "rect";
   for (const Subpath& sp : path.subpaths) {
     if (sp.points.empty()) continue;
     std::vector<Vec2> px(sp.points.size());
     for (size_t i = 0; i < px.size(); ++i) px[i] = view.apply(sp.points[i]);
     st.move_to(px[0]);
-    for (size_t c = 0; c < sp.segment_count(); ++c)
-      st.cubic_to(px[3 * c + 1], px[3 * c + 2], px[3 * c + 3]);
+    for (size_t c = 0; c < sp.segment_count(); ++c) {
+      const Vec2* q = &px[3 * c];
+      Vec2 ctrl;
+      if (arcs && quarter_arc_control(q, &ctrl)) st.conic_to(ctrl, q[3], std::sqrt(0.5));
+      else st.cubic_to(q[1], q[2], q[3]);
+    }
     if (sp.closed) {
       st.line_to(px[0]);  // the closing line SVG implies (nothing when already there)
       st.close_contour();
