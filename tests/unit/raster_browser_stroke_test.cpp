@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "raster/browser_stroke.h"
+#include "raster/render_image.h"
+#include "raster_test_support.h"
 #include "scene_builders.h"
 #include "svgmotion/svg_reader.h"
 
@@ -21,9 +23,43 @@ int count(const OutlineContour& c, OutlineVerb::Kind k) {
   return n;
 }
 
+// The 8-bit red value at (x, y) over white: 255 * (1 - coverage) for black ink.
+int red(const RgbaImage& img, int x, int y) {
+  return img.rgba[4 * (static_cast<size_t>(y) * img.width + x)];
+}
+
 }  // namespace
 
 TEST_SUITE("raster") {
+
+TEST_CASE("browser edges draw a stroke at most a pixel wide as the browser's hairline") {
+  // A 45-degree line from (2, 2.5) to (26, 26.5), 1 px wide. Chromium draws it as a hairline:
+  // in column 14 a one-pixel-tall box centred on the line's height at the column's centre,
+  // y = 2.5 + (14.5 - 2) = 15, which covers rows 14 and 15 half each (1 in all), where a
+  // 1-px-wide band (exact edges) spreads sqrt(2) px of ink over rows 13 to 16.
+  const Scene s = scene_of(28, 28, {stroked(polygon({{2, 2.5}, {26, 26.5}}, false), 1,
+                                            LineJoin::Miter, LineCap::Butt)});
+  const RgbaImage hair = render_image(runtime(), s, 28, false, true);
+  CHECK(std::abs(red(hair, 14, 14) - 127.5) <= 1);
+  CHECK(std::abs(red(hair, 14, 15) - 127.5) <= 1);
+  CHECK(red(hair, 14, 13) == 255);
+  CHECK(red(hair, 14, 16) == 255);
+  // Ink in the column: 1 px for the hairline, sqrt(2) px for the exact band.
+  const RgbaImage exact = render_image(runtime(), s, 28, false, false);
+  double ink_hair = 0, ink_exact = 0;
+  for (int y = 8; y < 22; ++y) {
+    ink_hair += 1 - red(hair, 14, y) / 255.0;
+    ink_exact += 1 - red(exact, 14, y) / 255.0;
+  }
+  CHECK(ink_hair == doctest::Approx(1.0).epsilon(0.02));
+  CHECK(ink_exact == doctest::Approx(std::sqrt(2.0)).epsilon(0.02));
+  // Half as wide: the same hairline at half alpha (0.25 coverage per row).
+  Scene thin = s;
+  thin.paths[0].stroke.width = 0.5;
+  const RgbaImage half = render_image(runtime(), thin, 28, false, true);
+  CHECK(std::abs(red(half, 14, 14) - 255 * 0.75) <= 1);
+}
+
 
 TEST_CASE("a quadratic edge becomes 2^k chords with Skia's y snapping") {
   // Bulge (2 p1 - p0 - p2) / 4 = (2.5, -2.5) px: max + min/2 = 3.75 px = 30 eighths, 5 bits,

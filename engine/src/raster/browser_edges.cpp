@@ -90,7 +90,7 @@ std::vector<Path> strokes_as_fills(const std::vector<Path>& paths, const Affine&
   for (const Path& p : paths) {
     if (new_index) new_index->push_back(static_cast<int>(out.size()));
     const bool visible = p.has_stroke && p.stroke.color.a * p.opacity > 0 && p.stroke.width > 0;
-    if (!visible) {
+    if (!visible || browser_hairline(p, view)) {  // hairlines stay strokes (browser_hairline.cpp)
       out.push_back(p);
       continue;
     }
@@ -168,6 +168,12 @@ std::vector<Vec2> browser_quad_chords(const Vec2 q[3]) {
   }
   if (up) std::reverse(pts.begin(), pts.end());
   return pts;
+}
+
+std::vector<Vec2> browser_conic_quads(Vec2 p0, Vec2 p1, Vec2 p2, double w) {
+  std::vector<Vec2> quads;
+  conic_to_quads(p0, p1, p2, w, conic_pow2(p0, p1, p2, w), quads);
+  return quads;
 }
 
 std::vector<std::vector<Vec2>> browser_outline_polygons(const std::vector<OutlineContour>& outline) {

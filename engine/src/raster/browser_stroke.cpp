@@ -541,9 +541,11 @@ class Stroker {
   std::vector<OutlineContour> out_;
 };
 
-// The conic control point of a cubic that approximates a quarter ellipse (its end tangents'
-// meeting point, which every affine image of such an arc keeps); false for a straight cubic.
-bool quarter_arc_control(const Vec2* q, Vec2* ctrl) {
+}  // namespace
+
+// Every affine image of a quarter ellipse keeps its end tangents' meeting point as its conic
+// control point.
+bool quarter_arc_conic(const Vec2* q, Vec2* ctrl) {
   const Vec2 a = q[1] - q[0], b = q[2] - q[3];
   const double den = cross(a, b);
   if (std::fabs(den) <= 1e-9 * (dot(a, a) + dot(b, b))) return false;
@@ -552,8 +554,6 @@ bool quarter_arc_control(const Vec2* q, Vec2* ctrl) {
   *ctrl = q[0] + s * a;
   return true;
 }
-
-}  // namespace
 
 std::vector<OutlineContour> browser_stroke_outline(const Path& path, const Affine& view) {
   if (!path.has_stroke) return {};
@@ -571,7 +571,7 @@ std::vector<OutlineContour> browser_stroke_outline(const Path& path, const Affin
     for (size_t c = 0; c < sp.segment_count(); ++c) {
       const Vec2* q = &px[3 * c];
       Vec2 ctrl;
-      if (arcs && quarter_arc_control(q, &ctrl)) st.conic_to(ctrl, q[3], std::sqrt(0.5));
+      if (arcs && quarter_arc_conic(q, &ctrl)) st.conic_to(ctrl, q[3], std::sqrt(0.5));
       else st.cubic_to(q[1], q[2], q[3]);
     }
     if (sp.closed) {

@@ -47,7 +47,19 @@ std::vector<Vec2> browser_quad_chords(const Vec2 q[3]);
 // quadratics, quadratics split at their y extrema and cut into chords (browser_quad_chords).
 std::vector<std::vector<Vec2>> browser_outline_polygons(const std::vector<OutlineContour>& outline);
 
-// `scene` with each visible stroke replaced by a nonzero fill of its browser outline (in paint
+// The conic control point of a cubic that approximates a quarter ellipse (where its end
+// tangents meet), or false for a straight cubic (browser_stroke.cpp).
+bool quarter_arc_conic(const Vec2* cubic, Vec2* ctrl);
+
+// A conic as the quadratics Skia fills it with (3 points each; browser_edges.cpp).
+std::vector<Vec2> browser_conic_quads(Vec2 p0, Vec2 p1, Vec2 p2, double w);
+
+// Whether the browser draws `path`'s stroke as a hairline: at most one pixel wide once `view`
+// scales it (browser_hairline.cpp), and that hairline's coverage over a w x h frame.
+bool browser_hairline(const Path& path, const Affine& view);
+std::vector<float> browser_hairline_coverage(const Path& path, const Affine& view, int w, int h);
+
+// `scene` with each visible stroke wider than a hairline replaced by a nonzero fill of its browser outline (in paint
 // order right after the path's own fill, with the stroke's paint, opacity and layer), so any
 // renderer draws strokes as the browser does. Paths without strokes are unchanged.
 Scene with_browser_strokes(const Scene& scene, const Affine& view);

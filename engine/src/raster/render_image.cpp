@@ -19,6 +19,10 @@ RgbaImage draw(ClRuntime& rt, const Scene& scene, const RenderSize& size, bool t
   // Gradients and layers (group opacity, clips, masks) are drawn by the CPU compositor; the
   // GPU rasteriser composites flat paths one by one (and stays the fitter's forward pass).
   if (scene.needs_layers()) return render_layers(scene, size, transparent, browser_edges);
+  // Hairlines (raster/browser_stroke.h) are drawn by the CPU compositor too.
+  if (browser_edges)
+    for (const Path& p : scene.paths)
+      if (browser_hairline(p, size.view)) return render_layers(scene, size, transparent, true);
   RasterPlan plan = plan_raster(scene, size.view, size.width, size.height);
   plan.browser_edges = browser_edges;
   ClRaster raster(rt, plan, 1);
