@@ -14,8 +14,8 @@
  * exactly its fill of our outline; tests/tools/stroke_agreement.py). Curved strokes need more:
  * Skia outlines a curve's offset with quadratics and cuts those into few chords, so the browser
  * mode also rebuilds every stroke that way before planning (raster/browser_stroke.h), which
- * takes 2-6 px curves and circles from 34-37 dB to 38-45 dB. `render --edges browser` stays
- * opt-in (1-px strokes, which Chromium draws as hairlines, are not matched). The snap has no
+ * takes 2-6 px curves and circles from 34-37 dB to 38-45 dB; strokes at most a pixel wide are
+ * hairlines there, drawn on the CPU (raster/browser_hairline.cpp, 54-57 dB). The snap has no
  * derivative, so the fit's forward pass keeps exact edges.
  */
 __kernel void gather_lines(__global const float2* pts,   /* [K][n_pts] */

@@ -56,10 +56,10 @@ int cmd_render(const std::vector<std::string>& argv) {
   const bool transparent = bg == "transparent";
   const int width = a.get_int("--size", 0, 1, 16384);
   // Exact area coverage by default; `browser` outlines strokes as Chromium does (quadratic
-  // offsets cut into few chords, raster/browser_stroke.h) and rounds edge end points to quarter
-  // pixels in y as its rasteriser does (RasterPlan::browser_edges): 2-6 px strokes then match
-  // Chromium's to 38-56 dB instead of 34-43 (tests/tools/stroke_agreement.py); 1-px strokes,
-  // which Chromium draws as hairlines, stay ~35 dB either way, so it is not the default.
+  // offsets cut into few chords, raster/browser_stroke.h; hairlines for strokes at most a pixel
+  // wide) and rounds edge end points to quarter pixels in y as its rasteriser does
+  // (RasterPlan::browser_edges): strokes then match Chromium's to 38-57 dB instead of 34-43
+  // (tests/tools/stroke_agreement.py). Exact stays the default: it is what the fitter sees.
   const std::string edges = a.get("--edges").value_or("exact");
   if (edges != "exact" && edges != "browser")
     throw Error("render: --edges must be exact or browser, got '" + edges + "'");

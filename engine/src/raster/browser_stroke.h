@@ -12,7 +12,9 @@
 // and hands the rasteriser a filled polygon: the stroke becomes a fill.
 //
 // browser_stroke.cpp builds the outline (lines, quadratics, conics); browser_edges.cpp turns it
-// into polygons and a scene into one whose strokes are such fills.
+// into polygons and a scene into one whose strokes are such fills. Strokes at most one device
+// pixel wide are no outline in Chromium but anti-aliased hairlines: browser_hairline.cpp draws
+// them (through the CPU layer compositor).
 #pragma once
 
 #include <vector>
