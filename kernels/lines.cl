@@ -11,11 +11,12 @@
  * integrating coverage exactly. On a thin stroke that moves each side's edge by up to 1/8 px,
  * which is most of its edge pixels' coverage: measured against Chromium, a straight 3-px
  * stroke drawn with exact edges is 39 dB away, with snapped edges 55 dB (Chromium's stroke is
- * exactly its fill of our outline; tests/tools/stroke_agreement.py). Curved strokes do not gain
- * (35-37 dB either way): Skia outlines a curve's offset with quadratics and splits those into
- * few chords, so its edges are other lines than our finely flattened ones, and snapping ours
- * moves them no closer (1 dB further). Hence `render --edges browser` is opt-in. The snap has
- * no derivative, so the fit's forward pass keeps exact edges.
+ * exactly its fill of our outline; tests/tools/stroke_agreement.py). Curved strokes need more:
+ * Skia outlines a curve's offset with quadratics and cuts those into few chords, so the browser
+ * mode also rebuilds every stroke that way before planning (raster/browser_stroke.h), which
+ * takes 2-6 px curves and circles from 34-37 dB to 38-45 dB; strokes at most a pixel wide are
+ * hairlines there, drawn on the CPU (raster/browser_hairline.cpp, 54-57 dB). The snap has no
+ * derivative, so the fit's forward pass keeps exact edges.
  */
 __kernel void gather_lines(__global const float2* pts,   /* [K][n_pts] */
                            __global const int2* line_ab,  /* [n_lines] point indices */

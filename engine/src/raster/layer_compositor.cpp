@@ -6,6 +6,7 @@
 #include <string>
 
 #include "raster/area_coverage.h"
+#include "raster/browser_stroke.h"
 #include "raster/gradient_paint.h"
 #include "raster/raster_plan.h"
 #include "raster/raster_ref.h"
@@ -63,7 +64,11 @@ class Compositor {
       while (k < stack.size() && k < chain.size() && stack[k].layer == chain[k]) ++k;
       while (stack.size() > k) pop();
       while (stack.size() < chain.size()) stack.push_back({chain[stack.size()], Image(pixels() * 4, 0.0f)});
-      paint(top(), path, d.is_stroke, draw_coverage_box(p.plan, p.pts, static_cast<int>(di)));
+      // Under browser edges a hairline-wide stroke is drawn as the browser's hairline instead.
+      if (browser_edges_ && d.is_stroke && browser_hairline(path, view_))
+        paint(top(), path, true, Coverage{0, 0, w_, h_, browser_hairline_coverage(path, view_, w_, h_)});
+      else
+        paint(top(), path, d.is_stroke, draw_coverage_box(p.plan, p.pts, static_cast<int>(di)));
     }
     while (!stack.empty()) pop();
     return root;

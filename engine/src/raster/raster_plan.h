@@ -96,8 +96,9 @@ struct RasterPlan {
   std::vector<float> paint;
   std::vector<int> chunk_lines;  // (first line, count) pairs
   // Edges as a browser rasterises them: every line's end points rounded to a quarter pixel in y
-  // (kernels/lines.cl says why). For renders people watch; plan_raster leaves it off, and the
-  // fitter, which differentiates coverage, needs it off.
+  // (kernels/lines.cl says why). For renders people watch, which also draw strokes as the
+  // browser outlines them (raster/browser_stroke.h, applied to the scene before planning);
+  // plan_raster leaves it off, and the fitter, which differentiates coverage, needs it off.
   bool browser_edges = false;
   std::vector<int> line_chunk;   // chunk index of every line
 
