@@ -47,7 +47,7 @@
  * add up stays in float.
  */
 
-/* G0..G4, LOSS_R, g_tap: the render's 1-D Gaussian taps, defined in prelude.cl. */
+/* G0..G8, LOSS_R, g_tap: the render's 1-D Gaussian taps, defined in prelude.cl. */
 
 /* One separable pass of the blur, along x (dir = 0) or y (dir = 1), times `scale`. No host
  * routine launches it today (the fit's passes are raster.cl's residual output and the kernels

@@ -32,7 +32,7 @@
 
 /* The 1-D Gaussian the loss blurs the render with: g_j = exp(-j²/2σ²) normalised over
  * j = -LOSS_R..LOSS_R, for j = 0, ±1, ..., σ = 1 and LOSS_R = 2 (5 taps; paper, appendix) unless
- * the build sets them (blur matching, up to 9 taps: raster/loss_taps.h). Used by loss.cl and by
+ * the build sets them (blur matching, up to 17 taps: raster/loss_taps.h). Used by loss.cl and by
  * raster.cl's fused residual pass. */
 #ifndef LOSS_R
 #define LOSS_R 2
@@ -46,15 +46,28 @@
 #ifndef G4
 #define G4 0.0f
 #endif
+#ifndef G5
+#define G5 0.0f
+#endif
+#ifndef G6
+#define G6 0.0f
+#endif
+#ifndef G7
+#define G7 0.0f
+#endif
+#ifndef G8
+#define G8 0.0f
+#endif
 
 inline float g_tap(int j) {
   j = abs(j);
-  return j == 0 ? G0 : j == 1 ? G1 : j == 2 ? G2 : j == 3 ? G3 : G4;
+  return j == 0 ? G0 : j == 1 ? G1 : j == 2 ? G2 : j == 3 ? G3 : j == 4 ? G4 : j == 5 ? G5 : j == 6 ? G6
+       : j == 7 ? G7 : G8;
 }
 
 /* Chroma blur matching (raster/loss_taps.h, render_blur): when the build defines CHROMA_R and
- * GC0..GC4, the render is blurred per channel group in YCbCr (BT.601 without offsets), luma Y
- * by G0..G4 and chroma Cb, Cr by GC0..GC4, B = A⁻¹ · diag(G, GC, GC) · A: codecs keep luma
+ * GC0..GC8, the render is blurred per channel group in YCbCr (BT.601 without offsets), luma Y
+ * by G0..G8 and chroma Cb, Cr by GC0..GC8, B = A⁻¹ · diag(G, GC, GC) · A: codecs keep luma
  * sharp and chroma soft, and a loss that blurs both alike makes the fitter move edges between
  * colours of similar luma. LOSS_R is then the larger of the two radii (a tap beyond a
  * channel's own radius weighs 0). Without CHROMA_R none of this is compiled. */
@@ -65,12 +78,26 @@ inline float g_tap(int j) {
 #ifndef GC4
 #define GC4 0.0f
 #endif
+#ifndef GC5
+#define GC5 0.0f
+#endif
+#ifndef GC6
+#define GC6 0.0f
+#endif
+#ifndef GC7
+#define GC7 0.0f
+#endif
+#ifndef GC8
+#define GC8 0.0f
+#endif
 /* The taps of both groups in one vector: (luma, chroma, chroma, 0), for float4 pixels in YCbCr. */
 inline float4 gv_tap(int j) {
   j = abs(j);
   return j == 0 ? (float4)(G0, GC0, GC0, 0.0f) : j == 1 ? (float4)(G1, GC1, GC1, 0.0f)
        : j == 2 ? (float4)(G2, GC2, GC2, 0.0f) : j == 3 ? (float4)(G3, GC3, GC3, 0.0f)
-       : (float4)(G4, GC4, GC4, 0.0f);
+       : j == 4 ? (float4)(G4, GC4, GC4, 0.0f) : j == 5 ? (float4)(G5, GC5, GC5, 0.0f)
+       : j == 6 ? (float4)(G6, GC6, GC6, 0.0f) : j == 7 ? (float4)(G7, GC7, GC7, 0.0f)
+       : (float4)(G8, GC8, GC8, 0.0f);
 }
 /* A: RGB -> YCbCr, Y = .299R + .587G + .114B, Cb = (B − Y)/1.772, Cr = (R − Y)/1.402. */
 inline float3 ycc_from_rgb(float3 c) {

@@ -195,6 +195,49 @@ TEST_CASE("blur matching: a blurred first frame is matched by the composed blur"
   }
 }
 
+// The render's blur above the paper's σ is the paper's taps composed with the video's Gaussian
+// (raster/loss_taps.h), so a frame blurred by a Gaussian of σ_v is matched at exactly
+// σ = sqrt(1 + σ_v²), and almost perfectly: the rest pose's residual is the rounding of the
+// frame's floats. (A single Gaussian of σ, as before, matched the bat's 512-px video blurred
+// σ 1.5 at 1.20 at 256 px, where σ_v is 0.75 and the composition 1.25.)
+TEST_CASE("blur matching: a frame blurred by a Gaussian is matched exactly by the composed taps") {
+  std::vector<double> cov = coverage(0);
+  for (double& c : cov) c = std::lround(255 * c) / 255.0;  // the render's own 8-bit alpha
+  for (double sigma : {1.25, 1.7}) {
+    const double sv = std::sqrt(sigma * sigma - 1);
+    const BlurMatch m = match_render_blur(render_of(cov), frame_of(gaussian(cov, sv)));
+    CAPTURE(sigma);
+    CAPTURE(m.best_sigma);
+    CAPTURE(m.rest_psnr_db);
+    CHECK(m.render_sigma == doctest::Approx(sigma).epsilon(1e-9));
+    CHECK(m.rest_psnr_db > 70);
+  }
+}
+
+// Composing blurs adds their variances: the composed taps' Σ j² g_j is the paper's taps' plus
+// the video Gaussian's (sampled to 3σ_v), and the taps sum to 1.
+TEST_CASE("loss taps: the composed blur's variance is the paper's plus the video's") {
+  auto variance = [](const std::vector<double>& half) {
+    double v = 0, sum = half[0];
+    for (size_t j = 1; j < half.size(); ++j) v += 2 * double(j * j) * half[j], sum += 2 * half[j];
+    CHECK(sum == doctest::Approx(1).epsilon(1e-12));
+    return v;
+  };
+  const double paper = variance(loss_taps(kLossSigma));
+  CHECK(loss_taps(kLossSigma).size() == 3);  // the paper's 5 taps
+  for (double sigma : {1.05, 1.25, 1.7, 2.0}) {
+    const double sv = video_sigma(sigma);
+    const int r = video_radius(sigma);
+    double w = 0, vv = 0;
+    for (int j = -r; j <= r; ++j) w += std::exp(-0.5 * j * j / (sv * sv));
+    for (int j = -r; j <= r; ++j) vv += j * j * std::exp(-0.5 * j * j / (sv * sv)) / w;
+    CAPTURE(sigma);
+    CHECK(static_cast<int>(loss_taps(sigma).size()) == 3 + r);
+    CHECK(r == std::min(kMaxVideoRadius, static_cast<int>(std::ceil(3 * sv))));
+    CHECK(variance(loss_taps(sigma)) == doctest::Approx(paper + vv).epsilon(1e-12));
+  }
+}
+
 TEST_CASE("blur matching: a first frame that is not the rest pose is not blurred to fit") {
   const BlurMatch m = match_render_blur(render_of(coverage(0)), frame_of(coverage(2)));
   CAPTURE(m.best_sigma);

@@ -15,7 +15,9 @@ constexpr double kMaxSigma = 2.0, kStep = 0.05;
 // Adopted only when the best σ lowers the rest pose's residual by at least a tenth and the
 // first frame is the rest pose at all. Measured on 512-px H.264 non-rigid targets at 256 / 512
 // px, best σ, residual ratio and the rest pose's PSNR: blurred σ 1.5 px at 512: 1.25 / 1.85
-// (theory sqrt(1 + 0.75²) = 1.25 / sqrt(1 + 1.5²) = 1.80), x0.06-0.14, 50-54 dB; clean: 1.0 /
+// (theory sqrt(1 + 0.75²) = 1.25 / sqrt(1 + 1.5²) = 1.80), x0.06-0.14, 50-54 dB (with the
+// composed taps of loss_taps.h, bat: 1.25 / 1.70, x0.13 / x0.10, 52 / 48 dB; the same frames
+// lossless and not colour-corrected: 1.25 / 1.75, 57 / 61 dB); clean: 1.0 /
 // 1.05 (the codec's softness at full size), x1 / x0.86; JPEG quality 20: 1.15 / 1.5, 41-44 dB;
 // a first frame shifted 1-2 px (camera shake): 1.2 / 1.8 at x0.94 / x0.83 but 34-36 dB.
 constexpr double kMinGain = 0.9;
