@@ -55,12 +55,13 @@ int cmd_render(const std::vector<std::string>& argv) {
     throw Error("render: --background must be white or transparent, got '" + bg + "'");
   const bool transparent = bg == "transparent";
   const int width = a.get_int("--size", 0, 1, 16384);
-  // Exact area coverage by default; `browser` outlines strokes as Chromium does (quadratic
-  // offsets cut into few chords, raster/browser_stroke.h; hairlines for strokes at most a pixel
-  // wide) and rounds edge end points to quarter pixels in y as its rasteriser does
-  // (RasterPlan::browser_edges): strokes then match Chromium's to 38-57 dB instead of 34-43
-  // (tests/tools/stroke_agreement.py). Exact stays the default: it is what the fitter sees.
-  const std::string edges = a.get("--edges").value_or("exact");
+  // Browser edges by default: strokes outlined as Chromium outlines them (quadratic offsets cut
+  // into few chords, raster/browser_stroke.h; hairlines for strokes at most a pixel wide) and
+  // edge end points rounded to quarter pixels in y as its rasteriser does
+  // (RasterPlan::browser_edges). Stills and clips are for people, who compare them with what a
+  // browser shows: strokes then match Chromium's to 38-57 dB instead of 34-43
+  // (tests/tools/stroke_agreement.py). `exact` draws what the fitter sees (exact area coverage).
+  const std::string edges = a.get("--edges").value_or("browser");
   if (edges != "exact" && edges != "browser")
     throw Error("render: --edges must be exact or browser, got '" + edges + "'");
   const bool browser_edges = edges == "browser";

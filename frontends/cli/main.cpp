@@ -167,8 +167,9 @@ transparent). The format follows OUT's extension, and OUT may not be the input.
   --quality CRF            mp4/webm constant quality, lower is better: H.264 0..51 (default 20),
                            VP9 0..63 (default 31)
   --time T                 seconds into the SMIL animation
-  --edges E                exact (default: exact area coverage) or browser (strokes outlined
-                           and edges rounded to quarter pixels in y as Chromium draws them)
+  --edges E                browser (default: strokes outlined and edges rounded to quarter
+                           pixels in y as Chromium draws them) or exact (exact area coverage,
+                           what the fitter sees)
   --device D               OpenCL device
   --strict                 unsupported content is an error, not a warning
 )"},
