@@ -72,8 +72,10 @@ struct TargetOptions {
   // load at another width (the refinement's) to reuse instead of decoding and aligning again.
   bool keep_denoised = false;
   // An earlier load of the same source that kept its denoised keyframes: reused when this load
-  // has the same working size and keyframes (nothing is decoded); otherwise ignored.
-  const TargetFrames* denoised_from = nullptr;
+  // has the same working size and keyframes (nothing is decoded); otherwise ignored. Reused, they
+  // are taken: each keyframe's is freed from `denoised_from` once this load has stored it, so the
+  // two loads never hold every keyframe's together (66 MB for 21 keyframes at 512 px).
+  TargetFrames* denoised_from = nullptr;
   // An earlier load of the same source with `stabilise` on (the fit's coarse width, when the
   // refinement loads the clip again at its own): its camera path is reused, not measured twice.
   const TargetFrames* shake_from = nullptr;
@@ -101,9 +103,10 @@ struct TargetFrames {
   bool shake_loop = false;        // the clip is a loop and its shake was told round it
   double denoise_seconds = 0;     // spent averaging keyframes with their neighbours (denoise_radius)
   // With TargetOptions::keep_denoised: the denoised keyframes before shake removal, RGB float at
-  // the working size (K*H*W*3), and the frame each was decoded from (before retiming).
+  // the working size (one H*W*3 vector per keyframe, so a load that reuses them frees each as it
+  // goes), and the frame each was decoded from (before retiming).
   int denoised_width = 0, denoised_height = 0;
-  std::vector<float> denoised;
+  std::vector<std::vector<float>> denoised;
   std::vector<int> denoised_frame;
   // K*H*W*4, row-major per keyframe: the cleaned target, straight RGB in [0,1], A = 1; pixels
   // outside the dilated mask are exactly white (1, 1, 1).

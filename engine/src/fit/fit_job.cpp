@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "fit/heap_trim.h"
 #include "fit/output/checkpoint.h"
 #include "fit/target/correction_palette.h"
 #include "raster/render_image.h"
@@ -97,15 +98,23 @@ bool returns_to_start(const TargetFrames& t) {
 
 int run_fit_job(const FitJob& job, const std::function<bool()>& interrupted) {
   FitRun run(job, interrupted);
+  // Between steps the heap's free pages go back (heap_trim.h): what the run's earlier stages,
+  // the loads and the stages' loss memory left behind.
+  trim_heap();
   run.read_drawing();
   run.prepare_target();
+  trim_heap();
   run.claim_output();
   run.plan_stages();
   run.choose_chroma_weight();
+  trim_heap();
   run.start_fitter();
   run.fit_coarse();
+  trim_heap();
   run.add_keyframes_from_target();
+  trim_heap();
   run.refine();
+  trim_heap();
   run.write_animation();
   run.write_report();
   return run.finish();
@@ -246,7 +255,7 @@ void FitRun::prepare_target() {
 void FitRun::release_denoised() {
   for (TargetFrames* t : {&target, keyed_target ? &*keyed_target : nullptr}) {
     if (!t) continue;
-    std::vector<float>().swap(t->denoised);
+    decltype(t->denoised)().swap(t->denoised);
     t->denoised_frame.clear();
   }
 }
@@ -320,10 +329,11 @@ void FitRun::prepare_fine() {
   if (coarse_target != &target) fine_to.frames = coarse_target->source_index;
   if (to.stabilise) fine_to.shake_from = coarse_target;  // the camera path of the first load
   fine_to.keep_denoised = false;
-  fine_to.denoised_from = coarse_target;
+  fine_to.denoised_from = coarse_target == &target ? &target : &*keyed_target;  // taken, freed as read
   activity("reading the video's keyframes at " + std::to_string(fine_size.width) + " px for the refinement");
   TargetFrames t = load_target_compact(*target_path, fine_size.width, fine_size.height, fine_to, fine_raw);
   release_denoised();
+  trim_heap();
   fine_options = fo.refined_at(static_cast<double>(fine_size.width) / size.width);
   fine_options.pin_rest_keyframe = pin_rest;
   fine_options.held_groups = held_groups;

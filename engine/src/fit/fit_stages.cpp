@@ -11,6 +11,7 @@
 #include <limits>
 #include <numeric>
 
+#include "fit/heap_trim.h"
 #include "fit/optimise/keyframe_choice.h"
 #include "fit/output/checkpoint.h"
 #include "fit/target/white_runs.h"
@@ -166,18 +167,26 @@ void FitRun::add_keyframes_from_target() {
       o.keep_denoised = false;
       o.denoised_from = nullptr;
       if (to.stabilise) o.shake_from = &target;
-      return load_target(*target_path, size.width, size.height, o);
+      TargetFrames t = load_target(*target_path, size.width, size.height, o);
+      trim_heap();
+      return t;
     };
     SplineLoss sl;
     sl.render_sigma = coarse_options.render_blur_sigma;
     sl.chroma_sigma = coarse_options.chroma_blur_sigma;
     sl.chroma_weight = chroma_weight;
     sl.w_image = coarse_options.w_image;
+    // The fitted keyframes' own losses first: the coarse fitter's loss memory (Q and R, the
+    // residual chunk, the tape pool: ~60 MB for 21 keyframes at 256 px) then goes while the
+    // frames between them are judged, with a loss memory of their own (the refinement's guard
+    // makes it again; evaluating reads the parameters only, so the losses are the same).
+    const std::vector<float> kl = fitter->evaluate_keyframe_losses();
+    fitter->release_loss_memory();
+    trim_heap();
     const std::vector<double> frame_db =
         measure_spline_frames(*rt, fitter->raster_plan(), size, fitter->keyframe_points_canvas(), kt,
                               job.loop == LoopMode::Loop && returns_to_start(target), target.source_frames, between,
                               load_frames, sl);
-    const std::vector<float> kl = fitter->evaluate_keyframe_losses();
     std::vector<double> key_db;
     for (float l : kl) key_db.push_back(loss_db(l, target.keyframes, coarse_options.w_image));
     const KeyframeChoice choice = choose_keyframes(target.source_index, key_db, between, frame_db, key_budget);
@@ -263,6 +272,7 @@ void FitRun::refine() {
     // residual chunk 32 MB and the tape pool; the same losses: evaluating reads the parameters
     // only, and the finer fitter's start below reads the coarse one's as they stand).
     cfit.release_loss_memory();
+    trim_heap();
     // The coarse target from here on is the guard's loss (its rgba) and the clip's timing: the
     // gate and the preview judge the refined fit against the finer target. Its frames before
     // cleanup, distance field and mask go (9 bytes per pixel and keyframe at the coarse width).
@@ -287,7 +297,8 @@ void FitRun::refine() {
     try {
       prepare_fine();
       fine_options.chroma_weight = chroma_weight;
-      unpack_fine_rgba();  // packed since the chroma weight's calibration, if loaded for it
+      // Built from the packed frames when the calibration loaded them (the loss reads them
+      // below, a keyframe at a time): their floats (88 MB) are never unpacked for it.
       fine = std::make_unique<Fitter>(*rt, fit_scene, *fine_target, fine_options);
       // The fitter has its distance field on the device and nothing reads the target's mask
       // after the load's checks: 5 bytes per pixel and keyframe (21 MB for 16 keyframes at 512 px).
@@ -304,6 +315,7 @@ void FitRun::refine() {
         unpack_white_runs_range(fine_rgba, static_cast<size_t>(k) * frame_px, frame_px, out);
       });
       fine->prepare_loss_memory();
+      trim_heap();  // the loss constants' temporaries (double frames at 512 px)
       log::debug("fit: the targets' frames packed through the refinement: %.1f MB at %d px, %.1f MB at %d px",
                  fine_rgba.bytes() / 1048576.0, fine_size.width, coarse_rgba.bytes() / 1048576.0, size.width);
       run_stage(*fine, coarse_iters, false);
@@ -312,7 +324,10 @@ void FitRun::refine() {
       throw;
     }
     bar->refine_done(seconds_in());
-    unpack();
+    // The guard below reads the coarse target only: the finer one's floats (88 MB for 21
+    // keyframes at 512 px) are unpacked after it, once the coarse loss memory it makes is gone.
+    fine->release_loss_memory();
+    coarse_frames.rgba = unpack_white_runs(coarse_rgba);
     if (!stopped) {
       // The refinement's guard. A keyframe the refinement made worse at the coarse width (the
       // snail's pupil, off by more than the fine loss's reach, shrank to a hairline at 512 px:
@@ -339,7 +354,10 @@ void FitRun::refine() {
       // width: ~60 MB for 21 keyframes at 256 px) is not needed by the outputs, which render
       // and read the targets; an evaluation after this would make it again.
       cfit.release_loss_memory();
+      trim_heap();
     }
+    unpack_fine_rgba();
+    fine->read_targets_whole();
   }
 }
 

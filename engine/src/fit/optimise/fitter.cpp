@@ -97,7 +97,9 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     else held_nodes_.push_back({b, 1});
   }
   raster_ = std::make_unique<ClRaster>(rt_, plan_, K_, opt_.render_blur_sigma, opt_.chroma_blur_sigma, opt_.chroma_weight);
-  raster_->set_targets(target.rgba);
+  // A target its holder keeps packed (fit_run.h) gives the loss no frames until read_targets_from.
+  if (target.rgba.empty()) raster_->set_target_frames([](int, float*) { throw Error("internal: packed targets unread"); });
+  else raster_->set_targets(target.rgba);
   steps_.assign(K_, 0);
 
   const size_t K = K_, n_cp = plan_.n_cp;

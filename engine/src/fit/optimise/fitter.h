@@ -210,7 +210,8 @@ class Fitter {
  public:
   // `scene` carries the colours to fit with (the target video's); `target` the keyframes at
   // the fitting size. Throws svgm::Error if the target's size does not match the scene's
-  // render size at target.width.
+  // render size at target.width. A target with no rgba (its holder keeps the frames packed)
+  // leaves the loss without frames until read_targets_from.
   Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, const FitOptions& options);
   ~Fitter();
 

@@ -5,6 +5,7 @@
 // Everything OpenCV stays in this file; the public header only speaks std:: types.
 #include "svgmotion/target_video.h"
 
+#include "fit/heap_trim.h"
 #include "fit/target/colour_correction.h"
 #include "fit/target/stabilise.h"
 #include "fit/target/temporal_denoise.h"
@@ -521,10 +522,21 @@ TargetFrames empty_target(int width, int height, int K, const TargetInfo& info, 
   const size_t px = static_cast<size_t>(width) * height;
   // With a raw_sink each keyframe's frame passes through one slot.
   t.raw.assign((options.raw_sink ? 1 : K) * px * 4, 1.0f);
-  t.rgba.assign(K * px * 4, 1.0f);
-  t.mask.assign(K * px, 0);
-  t.sdf.assign(K * px, 0.0f);
+  // Reserved, filled keyframe by keyframe as each is stored (grow_cleaned): a load does not touch
+  // 21 bytes per pixel and keyframe up front (115 MB: 21 at 512 px) beside what it reads from.
+  t.rgba.reserve(K * px * 4);
+  t.mask.reserve(K * px);
+  t.sdf.reserve(K * px);
   return t;
+}
+
+// Keyframes 0 .. k - 1's cleaned frames made: white, mask and sdf 0 until clean_keyframe writes.
+void grow_cleaned(TargetFrames& t, int k) {
+  const size_t px = static_cast<size_t>(t.width) * t.height, n = static_cast<size_t>(k) * px;
+  if (t.mask.size() >= n) return;
+  t.rgba.resize(n * 4, 1.0f);
+  t.mask.resize(n, 0);
+  t.sdf.resize(n, 0.0f);
 }
 
 // load_target's hand-off of one decoded frame (k: the next keyframe, i: the frame's index).
@@ -680,6 +692,7 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   // on its own, as when every keyframe was stored first), then handed to the raw_sink if any.
   auto slot = [&](int k) { return options.raw_sink ? 0 : k; };
   auto finish = [&](int k) {
+    grow_cleaned(t, k + 1);
     float* raw = t.raw.data() + static_cast<size_t>(slot(k)) * px * 4;
     if (!options.palette.empty()) t.colour_corrected += correct_colours(raw, width, height, options.palette).applied;
     clean_keyframe(t, k, options, raw);
@@ -689,7 +702,7 @@ TargetFrames load_target(const fs::path& source, int width, int height,
     if (denoise && options.keep_denoised) {
       const auto* f = frame.ptr<float>(0);  // continuous: made by resize / average_aligned
       CV_Assert(frame.isContinuous() && frame.type() == CV_32FC3);
-      t.denoised.insert(t.denoised.end(), f, f + frame.total() * 3);
+      t.denoised.emplace_back(f, f + frame.total() * 3);
       t.denoised_frame.push_back(frame_index);
     }
     if (!options.stabilise) {
@@ -719,8 +732,11 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   // The refinement's second load reuses the first load's denoised keyframes when they were
   // made at the same working size: no decoding, no aligning (the camera path comes from
   // shake_from, as the keyframes' retimed indices come from the first load).
-  const TargetFrames* from = options.denoised_from;
-  const bool reuse = denoise && from && !from->denoised.empty() && from->denoised_width == work.width &&
+  TargetFrames* from = options.denoised_from;
+  const size_t work_floats = static_cast<size_t>(work.width) * work.height * 3;
+  auto whole = [&](const std::vector<float>& d) { return d.size() == work_floats; };  // none taken yet
+  const bool reuse = denoise && from && static_cast<int>(from->denoised.size()) == K &&
+                     std::all_of(from->denoised.begin(), from->denoised.end(), whole) && from->denoised_width == work.width &&
                      from->denoised_height == work.height && from->keyframes == K && from->source_frames == N &&
                      (options.frames.empty() || options.frames == from->denoised_frame) &&
                      !measure_shake;
@@ -731,11 +747,14 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   if (reuse) {
     t.source_index = from->source_index;
     t.held_frames = from->held_frames;
-    const size_t n = static_cast<size_t>(work.width) * work.height * 3;
     for (int k = 0; k < K; ++k) {
-      cv::Mat f(work.height, work.width, CV_32FC3, const_cast<float*>(from->denoised.data() + k * n));
-      keep(denoised_k++, from->denoised_frame[static_cast<size_t>(k)], f.clone());
+      std::vector<float>& d = from->denoised[static_cast<size_t>(k)];
+      keep(denoised_k++, from->denoised_frame[static_cast<size_t>(k)], cv::Mat(work.height, work.width, CV_32FC3, d.data()).clone());
+      std::vector<float>().swap(d);  // taken: 3 MB at 512 px, from the heap, returned now
+      trim_heap();
     }
+    from->denoised.clear();
+    from->denoised_frame.clear();
   } else if (is_folder) {
     decode_folder(folder, N, K, t.source_index, measure_shake, near_sample, shake, deliver);
   } else {
@@ -748,6 +767,7 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   }
   if (options.stabilise) remove_camera_shake(t, options, shake, kept, kept_index, denoise, work, width, height, slot, finish);
   if (options.raw_sink) std::vector<float>().swap(t.raw);
+  grow_cleaned(t, K);
   return t;
 }
 
