@@ -308,7 +308,9 @@ TEST_CASE("chroma weight: chroma residuals count w times, luma fully; the loss a
     const auto [an, fd] = gradients(c, &lc, &lr, nullptr, sl, sc, w);
     gradients(c, nullptr, &lr_plain, nullptr, sl, sc);
     CHECK(lr > 0);
-    CHECK(lc == doctest::Approx(lr).epsilon(1e-5));
+    // Q is stored as halves (as above): 1e-4, not float rounding (2.7e-5 measured at σ 1.2,
+    // whose taps reach 4 px since they are the paper's composed with the video's, loss_taps.h).
+    CHECK(lc == doctest::Approx(lr).epsilon(1e-4));
     CHECK(lr < 0.999 * lr_plain);  // the chroma part of the residual counts less
     const Agreement a = compare(an, fd);
     MESSAGE("sigma " << sl << "/" << sc << ", weight " << w << ": cosine " << a.cosine << ", relative error " << a.rel_error);
