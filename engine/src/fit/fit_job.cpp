@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "fit/heap_trim.h"
+#include "fit/target/heap_trim.h"
 #include "fit/output/checkpoint.h"
 #include "fit/target/correction_palette.h"
 #include "raster/render_image.h"

@@ -1,7 +1,7 @@
 // The outputs of a fit job (fit_run.h): the result gate's verdict, the animation files in the
 // original colours (animation_export.h), preview.mp4, fit.json, and the closing message.
 #include "fit/fit_run.h"
-#include "fit/heap_trim.h"
+#include "fit/target/heap_trim.h"
 
 #include <algorithm>
 #include <cmath>

@@ -11,7 +11,7 @@
 #include <limits>
 #include <numeric>
 
-#include "fit/heap_trim.h"
+#include "fit/target/heap_trim.h"
 #include "fit/optimise/keyframe_choice.h"
 #include "fit/output/checkpoint.h"
 #include "fit/target/white_runs.h"

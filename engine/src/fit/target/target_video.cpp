@@ -5,7 +5,7 @@
 // Everything OpenCV stays in this file; the public header only speaks std:: types.
 #include "svgmotion/target_video.h"
 
-#include "fit/heap_trim.h"
+#include "fit/target/heap_trim.h"
 #include "fit/target/colour_correction.h"
 #include "fit/target/stabilise.h"
 #include "fit/target/temporal_denoise.h"

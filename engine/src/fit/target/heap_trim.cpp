@@ -1,5 +1,5 @@
 // Handing the heap's free pages back to the system (heap_trim.h).
-#include "fit/heap_trim.h"
+#include "fit/target/heap_trim.h"
 
 #include <cstdlib>  // defines __GLIBC__ on glibc
 
