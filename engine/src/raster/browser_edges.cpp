@@ -188,8 +188,7 @@ std::vector<std::vector<Vec2>> browser_outline_polygons(const std::vector<Outlin
         const Vec2 q[3] = {from, v.c, v.p};
         add_quad(q, poly);
       } else {
-        std::vector<Vec2> quads;
-        conic_to_quads(from, v.c, v.p, v.w, conic_pow2(from, v.c, v.p, v.w), quads);
+        const std::vector<Vec2> quads = browser_conic_quads(from, v.c, v.p, v.w);
         for (size_t i = 0; i + 2 < quads.size(); i += 3) add_quad(&quads[i], poly);
       }
     }
