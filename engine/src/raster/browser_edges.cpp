@@ -146,11 +146,15 @@ std::vector<Vec2> browser_quad_chords(const Vec2 q[3]) {
     const int n = 1 << shift;
     const Vec2 a{px(X0), px(Y0)}, b{px(X1), px(Y1)}, c{px(X2), px(Y2)};
     const double last_y = snap_quarter(c.y);
-    Vec2 snapped{a.x, snap_quarter(a.y)}, prev = a;
+    Vec2 snapped{a.x, snap_quarter(a.y)}, prev = snapped;
     pts.push_back(snapped);
+    // Skia steps forward differences from the start point after snapping its y, so every inner
+    // point carries the start's snap (up to 1/8 px, the same for the whole quadratic).
+    const double start_snap = snapped.y - a.y;
     for (int i = 1; i < n; ++i) {
       const double t = static_cast<double>(i) / n, u = 1 - t;
-      const Vec2 v = u * u * a + 2 * u * t * b + t * t * c;
+      Vec2 v = u * u * a + 2 * u * t * b + t * t * c;
+      v.y += start_snap;
       const double step_x = v.x - prev.x, step_y = v.y - prev.y;
       Vec2 s;
       if (std::fabs(step_y) >= 2 && std::fabs(step_y) * 64 > std::fabs(step_x) && v.y != snapped.y) {
@@ -160,9 +164,11 @@ std::vector<Vec2> browser_quad_chords(const Vec2 q[3]) {
       } else {
         s = {v.x, std::min(last_y, snap_quarter(v.y))};
       }
+      prev = v;
+      // A chord of no height is no edge: Skia's next chord starts where the last real one ended.
+      if (s.y == snapped.y) continue;
       pts.push_back(s);
       snapped = s;
-      prev = v;
     }
     pts.push_back({c.x, last_y});
   }
