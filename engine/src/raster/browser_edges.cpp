@@ -186,8 +186,8 @@ std::vector<std::vector<Vec2>> browser_outline_polygons(const std::vector<Outlin
   std::vector<std::vector<Vec2>> polys;
   for (const OutlineContour& c : outline) {
     std::vector<Vec2> poly{c.start};
+    Vec2 from = c.start;  // the outline's own point: the polygon's last one may be snapped
     for (const OutlineVerb& v : c.verbs) {
-      const Vec2 from = poly.back();
       if (v.kind == OutlineVerb::Line) {
         poly.push_back(v.p);
       } else if (v.kind == OutlineVerb::Quad) {
@@ -197,6 +197,7 @@ std::vector<std::vector<Vec2>> browser_outline_polygons(const std::vector<Outlin
         const std::vector<Vec2> quads = browser_conic_quads(from, v.c, v.p, v.w);
         for (size_t i = 0; i + 2 < quads.size(); i += 3) add_quad(&quads[i], poly);
       }
+      from = v.p;
     }
     if (poly.size() >= 3) polys.push_back(std::move(poly));
   }
