@@ -87,6 +87,47 @@ TEST_CASE("a quadratic edge becomes 2^k chords with Skia's y snapping") {
   CHECK(rc[1].y == doctest::Approx(6.0));
 }
 
+TEST_CASE("a quadratic's inner chord points carry its start's quarter-pixel snap") {
+  // In 1/256 px the start y 0.1 is 25/256 = 0.0977, which snaps to the quarter 0: Skia steps
+  // its forward differences from there, so every inner point moves up by 0.0977. Bulge
+  // |2 p1 - p0 - p2| / 4 = 615/256 / 4 -> 154/256 px = 5 eighths (rounded), 3 bits: k = 1, two
+  // chords. The middle point (8, 0.75 * 0.0977 + 0.25 * 2.5 = 0.698) lies at 0.600 and snaps to
+  // 0.5 (0.698 itself would snap to 0.75).
+  const Vec2 q[3] = {{0, 0.1}, {8, 0.1}, {16, 2.5}};
+  const std::vector<Vec2> c = browser_quad_chords(q);
+  REQUIRE(c.size() == 3);
+  CHECK(c[0].y == 0.0);
+  CHECK(c[1].x == doctest::Approx(8.0));
+  CHECK(c[1].y == 0.5);
+  CHECK(c[2].y == 2.5);
+  // The same quadratic after another one that ends at its start: it starts from the outline's
+  // point (0, 0.1), not from the previous quadratic's snapped last point (0, 0), which would
+  // put the middle point at 0.625 and snap it to 0.75.
+  OutlineContour two;
+  two.start = {-16, 2.5};
+  two.verbs = {{OutlineVerb::Quad, {-8, 0.1}, {0, 0.1}}, {OutlineVerb::Quad, {8, 0.1}, {16, 2.5}}};
+  const std::vector<std::vector<Vec2>> polys = browser_outline_polygons({two});
+  REQUIRE(polys.size() == 1);
+  const std::vector<Vec2>& poly = polys[0];
+  REQUIRE(poly.size() == 5);  // start, the first's middle and end, the second's middle and end
+  CHECK(poly[3].x == doctest::Approx(8.0));
+  CHECK(poly[3].y == 0.5);
+}
+
+TEST_CASE("a chord of no height is dropped: the next one starts from the last real one") {
+  // y = t^2, x = 32 t (2 - t): bulge (2048 + 64 / 2) / 256 px = 65 eighths, 7 bits, k = 3:
+  // points at t = 1/8 .. 7/8 snap to y 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75. Those at 1/8 and 2/8
+  // share the start's row, 4/8 that of 3/8, 6/8 that of 5/8: Skia draws no edge for them.
+  const Vec2 q[3] = {{0, 0}, {32, 0}, {32, 1}};
+  const std::vector<Vec2> c = browser_quad_chords(q);
+  const std::vector<Vec2> want = {{0, 0}, {19.5, 0.25}, {27.5, 0.5}, {31.5, 0.75}, {32, 1}};
+  REQUIRE(c.size() == want.size());
+  for (size_t i = 0; i < want.size(); ++i) {
+    CHECK(c[i].x == doctest::Approx(want[i].x));
+    CHECK(c[i].y == doctest::Approx(want[i].y));
+  }
+}
+
 TEST_CASE("a nearly straight quadratic still gets Skia's minimum of two chords") {
   // Bulge 0.1 px (25 / 256) rounds to 1 eighth: 1 bit, k = 0, raised to 1.
   const Vec2 q[3] = {{0, 0}, {5, 5.2}, {10, 10}};
