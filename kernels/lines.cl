@@ -14,7 +14,7 @@
  * exactly its fill of our outline; tests/tools/stroke_agreement.py). Curved strokes need more:
  * Skia outlines a curve's offset with quadratics and cuts those into few chords, so the browser
  * mode also rebuilds every stroke that way before planning (raster/browser_stroke.h), which
- * takes 2-6 px curves and circles from 34-37 dB to 38-45 dB; strokes at most a pixel wide are
+ * takes 2-6 px curves and circles from 34-37 dB to 50-54 dB; strokes at most a pixel wide are
  * hairlines there, drawn on the CPU (raster/browser_hairline.cpp, 54-57 dB). The snap has no
  * derivative, so the fit's forward pass keeps exact edges.
  */

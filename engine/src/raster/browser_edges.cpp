@@ -10,7 +10,12 @@
 // end points are stored in 1/256 px (truncated) with y rounded to a quarter pixel; each inner
 // vertex is rounded in y to the whole pixel, slid along the chord that reaches it, when that
 // chord rises 2 px or more (and is not nearly horizontal), else to a quarter pixel
-// (SkAnalyticQuadraticEdge::updateQuadratic). The rasteriser's browser edges (kernels/lines.cl)
+// (SkAnalyticQuadraticEdge::updateQuadratic). Those inner vertices are stepped from the start
+// point after its own y snap, so all of them carry that snap, and a chord whose ends snap to
+// one y is skipped (the next starts from the last kept vertex). Modelling both, with each curve
+// starting from the outline's own point (not a snapped chord end), took circle and
+// curve strokes of 2-6 px from 38-45 dB to 50-54 dB against Chromium (stroke_agreement.py).
+// The rasteriser's browser edges (kernels/lines.cl)
 // then put every end point on quarter pixels in y, which leaves these points where they are.
 #include <algorithm>
 #include <cmath>
