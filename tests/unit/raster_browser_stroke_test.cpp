@@ -157,6 +157,28 @@ TEST_CASE("a circle's stroke sides are quadratics within a quarter pixel of the 
   }
 }
 
+TEST_CASE("a join's inner dip goes to where the inner sides cross, not to the pivot") {
+  // A right-angled V, 2 px wide, turning at (10, 10): the inner sides are y = x - sqrt 2 and
+  // y = 20 - x - sqrt 2, which cross at X = (10, 10 - sqrt 2). The inner side still ends at
+  // E = (10 + 1/sqrt 2, 10 - 1/sqrt 2) and restarts at B = (10 - 1/sqrt 2, 10 - 1/sqrt 2), but
+  // dips to X between them; the pivot itself is no vertex (the miter tip is (10, 10 + sqrt 2)).
+  const Path p = stroked(polygon({{0, 0}, {10, 10}, {20, 0}}, false), 2, LineJoin::Miter,
+                         LineCap::Butt);
+  const std::vector<OutlineContour> o = browser_stroke_outline(p, Affine{});
+  REQUIRE(o.size() == 1);
+  const double s2 = std::sqrt(2.0), h = 1 / s2;
+  auto has = [&](Vec2 v) {
+    for (const OutlineVerb& verb : o[0].verbs)
+      if (std::hypot(verb.p.x - v.x, verb.p.y - v.y) < 1e-9) return true;
+    return false;
+  };
+  CHECK(has({10, 10 - s2}));
+  CHECK(has({10 + h, 10 - h}));
+  CHECK(has({10 - h, 10 - h}));
+  CHECK(has({10, 10 + s2}));
+  CHECK_FALSE(has({10, 10}));
+}
+
 TEST_CASE("a straight stroke with butt caps outlines its rectangle") {
   // From (2, 8.6) to (30, 8.6), 3 px wide: sides at y = 7.1 and 10.1.
   const Path p = stroked(polygon({{2, 8.6}, {30, 8.6}}, false), 3, LineJoin::Miter, LineCap::Butt);

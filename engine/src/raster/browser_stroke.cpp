@@ -6,8 +6,9 @@
 // a quarter pixel of it (Skia's tolerance: 1 / (4 * resScale), resScale 1 in pixel space) and
 // otherwise the piece is halved. Cubics are first cut at their inflections. Lines offset
 // exactly. Joins: miter (a miter point, or a bevel past the miter limit), bevel, round (a
-// conic arc per quarter turn); on the inner side a join always goes through the pivot. Caps:
-// butt, square, round (two quarter-circle conics). An open subpath becomes one contour (outer
+// conic arc per quarter turn); on the inner side a join goes through the pivot, as Skia's does,
+// except between two straight sides, where it dips only to where they cross (cut_pivot_dips
+// says why). Caps: butt, square, round (two quarter-circle conics). An open subpath becomes one contour (outer
 // side, end cap, inner side backwards, start cap), a closed one two (outer, inner reversed).
 // Re-derived from reading Skia's sources (third_party_notes.md); the structure is ours.
 #include "raster/browser_stroke.h"
@@ -65,8 +66,9 @@ double dist2_to_line(Vec2 p, Vec2 a, Vec2 b) {
 struct Side {
   Vec2 start;
   std::vector<OutlineVerb> verbs;
+  std::vector<size_t> pivots;  // indices of the verbs that dip to a join's pivot (inner side)
   bool empty = true;
-  void move_to(Vec2 p) { start = p, verbs.clear(), empty = false; }
+  void move_to(Vec2 p) { start = p, verbs.clear(), pivots.clear(), empty = false; }
   Vec2 last() const { return verbs.empty() ? start : verbs.back().p; }
   void line_to(Vec2 p) { verbs.push_back({OutlineVerb::Line, {}, p, 1}); }
   void quad_to(Vec2 c, Vec2 p) { verbs.push_back({OutlineVerb::Quad, c, p, 1}); }
@@ -82,6 +84,37 @@ struct Side {
     }
   }
 };
+
+// Where a join's inner side dips through the pivot P between two straight sides (D -> E, then
+// B -> F), the dip is moved to X, where those two inner offset lines cross, when X lies in the
+// half of each side next to the join: D -> E -> X -> B -> F. E and B stay (Chromium's edges end
+// there, and their y snaps move the inner edges' ends), the returns E -> X and X -> B run back
+// along the same lines, and only the doubly wound loop E, P, B, X is gone. Chromium's
+// rasteriser resolves the winding span by span, so that loop adds nothing there, but ours
+// integrates the winding number over a pixel before clamping it to 1 (kernels/stroke.cl), which
+// made the pixels around a sharp join's inner corner too dark (join rows of stroke_agreement.py
+// 44 -> 50 dB at 3 px). Curved sides keep their dip.
+void cut_pivot_dips(Side& s, bool closed) {
+  for (auto it = s.pivots.rbegin(); it != s.pivots.rend(); ++it) {
+    const size_t k = *it;  // verbs[k] goes to the pivot, verbs[k + 1] back out to the next side
+    const size_t n = s.verbs.size();
+    if (k == 0 || k + 1 >= n) continue;
+    const bool wraps = k + 2 == n;  // a closed side's last join: the next side is its first
+    if (wraps && !closed) continue;
+    const OutlineVerb& in = s.verbs[k - 1];
+    const OutlineVerb& out = s.verbs[wraps ? 0 : k + 2];
+    if (in.kind != OutlineVerb::Line || out.kind != OutlineVerb::Line) continue;
+    const Vec2 d = k >= 2 ? s.verbs[k - 2].p : s.start, e = in.p;
+    const Vec2 b = wraps ? s.start : s.verbs[k + 1].p, f = out.p;
+    const Vec2 r = e - d, q = f - b;
+    const double den = cross(r, q);
+    if (std::fabs(den) <= 1e-12 * (dot(r, r) + dot(q, q))) continue;
+    const double t = cross(b - d, q) / den, u = cross(b - d, r) / den;
+    if (!(t >= 0.5 && t <= 1 && u >= 0 && u <= 0.5)) continue;
+    s.verbs[k].p = d + t * r;
+  }
+  s.pivots.clear();
+}
 
 // One piece [t0, t1] of a cubic's side being fitted with a quadratic (Skia's SkQuadConstruct).
 struct Piece {
@@ -392,6 +425,7 @@ class Stroker {
   }
 
   static void inner_join(Side& inner, Vec2 pivot, Vec2 after) {
+    inner.pivots.push_back(inner.verbs.size());
     inner.line_to(pivot);  // through the pivot, as Skia does
     inner.line_to(pivot - after);
   }
@@ -507,8 +541,10 @@ class Stroker {
 
   void finish(bool close, bool curr_line) {
     if (segments_ > 0) {
+      if (close) join(prev_unit_, prev_, first_unit_, prev_is_line_, curr_line);
+      cut_pivot_dips(outer_, close);  // a left turn's inner side is the outer_ one
+      cut_pivot_dips(inner_, close);
       if (close) {
-        join(prev_unit_, prev_, first_unit_, prev_is_line_, curr_line);
         emit(outer_);
         Side rev;
         rev.move_to(inner_.last());
