@@ -1,4 +1,4 @@
-// Reading the fitter's target: a video (OpenCV's FFmpeg back end) or a folder of numbered PNG
+// Reading the fitter's target: a video (FFmpeg, media/video_decoder.h) or a folder of numbered PNG
 // frames, sampled to K keyframes, resized to the render size, and reduced to a cleaned image, a
 // foreground mask and a distance field per keyframe.
 //
