@@ -126,7 +126,7 @@ struct TargetInfo {
   double fps = 24;
 };
 
-// `source`: a video file (mp4, webm, avi, mov: whatever OpenCV's FFmpeg back end reads) or a
+// `source`: a video file (mp4, webm, avi, mov: whatever FFmpeg's libavformat reads) or a
 // folder of numbered PNG frames, ordered by the last number in each name (000.png,
 // frame_12.png). PNGs with alpha are composited over white. Throws svgm::Error
 // "<path>: <problem>" for a missing/unreadable source, a folder without PNGs or with PNGs that

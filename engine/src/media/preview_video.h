@@ -20,13 +20,13 @@ namespace svgm {
 // than one frame in memory.
 using PreviewPanelFn = std::function<RgbaImage(int frame, int panel)>;
 
-// Writes `frames` frames at `fps` to `file` as an mp4: H.264 (fourcc avc1), or MPEG-4 Part 2
-// (mp4v) when no H.264 encoder can be opened; a file named .webm gets VP9 (else VP8) in WebM. Odd frame sizes are padded with white on the
-// right/bottom to even ones (4:2:0 chroma needs them; encoders would crop instead). Written to
-// a hidden temporary name in the same folder and renamed once it reads back as a video, so a
-// failure never leaves a partial file. Throws svgm::Error "<file>: <problem>"; a write the disk
-// refuses is named as such ("<file>: cannot write: No space left on device"), not as a missing
-// encoder.
+// Writes `frames` frames at `fps` to `file` through media/video_encoder.h: H.264 in an mp4
+// (faststart, BT.709-tagged, which media/video_decoder.h reads back with the same matrix), or VP9
+// in WebM for a file named .webm. Odd frame sizes are padded with white on the right/bottom
+// (4:2:0 chroma needs even sides). Written to a hidden temporary name in the same folder and
+// renamed when complete, so a failure never leaves a partial file. Throws svgm::Error
+// "<file>: <problem>"; a write the disk refuses is named as such ("<file>: cannot write: No
+// space left on device").
 void write_preview_video(const std::filesystem::path& file, int frames, int panels,
                          const PreviewPanelFn& panel_image, double fps);
 

@@ -1,15 +1,14 @@
 // Still frames of a video (see video_frames.h). The video is read once, front to back, keeping
-// only the frames asked for: seeking (CAP_PROP_POS_FRAMES) is inexact for some codecs.
+// only the frames asked for: seeking is inexact for some codecs.
 #include "report/video_frames.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include <algorithm>
 #include <map>
 
-#include "image/video_capture.h"
+#include "media/video_decoder.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -36,7 +35,7 @@ RgbaImage thumbnail(const cv::Mat& bgr, int width) {
 }  // namespace
 
 std::vector<RgbaImage> video_frames(const fs::path& file, const std::vector<int>& indices, int width) {
-  cv::VideoCapture cap = open_video_capture(file);
+  VideoDecoder cap(file);
   std::map<int, RgbaImage> wanted;
   for (int i : indices) wanted[std::max(0, i)];
   const int last_wanted = wanted.empty() ? -1 : wanted.rbegin()->first;
@@ -60,13 +59,9 @@ std::vector<RgbaImage> video_frames(const fs::path& file, const std::vector<int>
 }
 
 int video_frame_count(const fs::path& file) {
-  cv::VideoCapture cap = open_video_capture(file);
+  VideoDecoder cap(file);
   int n = 0;
-  try {
-    while (cap.grab()) ++n;
-  } catch (const cv::Exception&) {
-    throw Error(file.string() + ": not a readable video");
-  }
+  while (cap.grab()) ++n;
   if (n == 0) throw Error(file.string() + ": not a readable video");
   return n;
 }

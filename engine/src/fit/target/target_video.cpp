@@ -1,4 +1,4 @@
-// Reading the fitter's target: a video (OpenCV's FFmpeg back end) or a folder of numbered PNG
+// Reading the fitter's target: a video (FFmpeg, media/video_decoder.h) or a folder of numbered PNG
 // frames, sampled to K keyframes, resized to the render size, and reduced to a cleaned image, a
 // foreground mask and a distance field per keyframe.
 //
@@ -9,12 +9,11 @@
 #include "fit/target/colour_correction.h"
 #include "fit/target/stabilise.h"
 #include "fit/target/temporal_denoise.h"
-#include "image/video_capture.h"
+#include "image/png_frame.h"
+#include "media/video_decoder.h"
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include <algorithm>
 #include <array>
@@ -171,26 +170,22 @@ FolderSource scan_folder(const fs::path& folder) {
 
 // ---- videos ---------------------------------------------------------------------------------
 
-// Counts by reading: CAP_PROP_FRAME_COUNT comes from the container and can be 0 or wrong.
-// grab() decodes without the colour conversion, so counting costs less than reading.
+// Counts by reading: the container's frame count can be 0 or wrong. grab() decodes without the
+// colour conversion, so counting costs less than reading.
 TargetInfo probe_video(const fs::path& file) {
-  cv::VideoCapture cap = open_video_capture(file);
+  VideoDecoder cap(file);
   // The container's size, before decoding a frame of an oversized clip (0 when it has none).
-  check_frame_size(file, static_cast<int>(cap.get(cv::CAP_PROP_FRAME_WIDTH)), static_cast<int>(cap.get(cv::CAP_PROP_FRAME_HEIGHT)));
+  check_frame_size(file, cap.width(), cap.height());
   TargetInfo info;
-  const double fps = cap.get(cv::CAP_PROP_FPS);
+  const double fps = cap.fps();
   info.fps = std::isfinite(fps) && fps > 0 ? fps : 24.0;
   cv::Mat first;
-  try {
-    if (!cap.read(first) || first.empty()) fail(file, "not a readable video");
-    info.width = first.cols;
-    info.height = first.rows;
-    check_frame_size(file, info.width, info.height);
-    info.frames = 1;
-    while (cap.grab()) ++info.frames;
-  } catch (const cv::Exception&) {
-    fail(file, "not a readable video");
-  }
+  if (!cap.read(first) || first.empty()) fail(file, "not a readable video");
+  info.width = first.cols;
+  info.height = first.rows;
+  check_frame_size(file, info.width, info.height);
+  info.frames = 1;
+  while (cap.grab()) ++info.frames;
   return info;
 }
 
@@ -550,12 +545,7 @@ void decode_folder(const FolderSource& folder, int N, int K, const std::vector<i
     const bool sampled = k < K && i == source_index[static_cast<size_t>(k)];
     if (!sampled && !measure_shake && !near_sample(i)) continue;  // not read
     const fs::path& file = folder.frames[static_cast<size_t>(i)].path;
-    cv::Mat img;
-    try {
-      img = cv::imread(file.string(), cv::IMREAD_UNCHANGED);
-    } catch (const cv::Exception&) {
-      img.release();
-    }
+    const cv::Mat img = read_png_frame(file);
     if (img.empty()) fail(file, "not a readable PNG");
     if (img.cols != folder.width || img.rows != folder.height)
       fail(file, "decodes to " + size_text(img.cols, img.rows) + ", but its header says " +
@@ -574,7 +564,7 @@ void decode_video(const fs::path& source, const TargetOptions& options, int N, i
   // Second pass: sequential reads (seeking is unreliable across codecs). Every frame is
   // decoded (a thumbnail of each finds held frames); only the sampled ones are kept at the
   // target size, and, when denoising, their neighbours go to the denoiser.
-  cv::VideoCapture cap = open_video_capture(source);
+  VideoDecoder cap(source);
   int k = 0, run_start = 0;
   cv::Mat prev_thumb;
   try {
