@@ -2,8 +2,8 @@
 # Lottie export on AniClipart drawings (needs ../shared, not part of the test suite): for each
 # SVG, ../shared/tools/fitcheck.py makes a known-motion target (49 frames), `svgmotion fit`
 # fits it (ITERS iterations: the players' agreement does not depend on the fit's quality),
-# then our render, lottie-web (svg and canvas renderers, headless Chromium) and librlottie draw
-# 5 frames of the result; one row per SVG and player with the PSNR of each frame against ours.
+# then our render, lottie-web (svg and canvas renderers, headless Chromium), librlottie and
+# dotlottie-web (animation.lottie, ThorVG in WebAssembly) draw 5 frames of the result; one row per SVG and player with the PSNR of each frame against ours.
 # Then the size of animation.svg/.json at --precision 3, 2, 1 (the same fit written again).
 #   usage: lottie_players.sh [BIN] [WORKDIR] [ITERS] [SVG...]   (build/npm from .ci/setup.sh)
 set -u
@@ -17,7 +17,7 @@ shared=$root/../shared
 svgs=("$@")
 [[ ${#svgs[@]} -gt 0 ]] || svgs=("$shared"/bench/aniclipart/{man_dance,octopus,balloon}.svg)
 tools=$root/build/tests
-modules=$root/build/npm/node_modules
+modules=${NODE_MODULES:-$root/build/npm/node_modules}  # .ci/setup.sh installs them there
 mkdir -p "$work"
 frames=(0 6 12 30 45)
 for svg in "${svgs[@]}"; do
@@ -34,7 +34,8 @@ for svg in "${svgs[@]}"; do
   node "$root/tests/integration/lottie/lottie_web_frames.js" "$modules" "$dir/out/animation.json" $W $H "$dir/web_" svg "${frames[@]}"
   node "$root/tests/integration/lottie/lottie_web_frames.js" "$modules" "$dir/out/animation.json" $W $H "$dir/canvas_" canvas "${frames[@]}"
   "$tools/rlottie_frames" "$dir/out/animation.json" $W $H "$dir/rl_" "${frames[@]}"
-  for player in web canvas rl; do
+  node "$root/tests/integration/lottie/dotlottie_web_frames.js" "$modules" "$dir/out/animation.lottie" $W $H "$dir/dl_" "${frames[@]}"
+  for player in web canvas rl dl; do
     row=()
     for i in "${!frames[@]}"; do row+=("$("$tools/png_psnr" "$dir/ours_$i.png" "$dir/${player}_$i.png" | sed 's/^psnr=\([0-9.]*\).*/\1/')"); done
     printf '%-12s %-7s %sx%s frames %s: %s\n' "$name" "$player" $W $H "${frames[*]}" "${row[*]}"
