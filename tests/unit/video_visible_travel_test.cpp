@@ -134,4 +134,45 @@ TEST_CASE("a figure bobbing on a ground the prompt names rises from it, to the f
   CHECK(has_line(plan.notes, "rises from the waves"));
 }
 
+TEST_CASE("a shake of 1 % of the figure's size is raised past four times to the floor") {
+  // A ball a third of its canvas shaking 0.012 of its height: 0.85 % of its diagonal. Raised
+  // at most four times (the limit before) it stayed at 3.4 %; the canvas and the fitter's
+  // steps allow the floor.
+  const Scene s = ball(60);
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("it shakes"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  REQUIRE(plan.actions[0].primitive == Primitive::Shake);
+  const double before = largest(s, rig, plan);
+  REQUIRE(before < 0.02 * diagonal(rig));  // the drawing makes the test mean something
+  fit_plan(s, rig, plan, kFrames, kKeyframes);
+  CHECK(plan.actions[0].scale > 4);
+  CHECK(largest(s, rig, plan) >= 0.08 * diagonal(rig));
+  CHECK(plan.warnings.empty());
+}
+
+TEST_CASE("a raised turn stops at 60 degrees, and a warning says the raise held it under the floor") {
+  // A tall body (40 x 200) and a small head on it (14 x 14): the head's corners lie 15.7 units
+  // from its neck, under the floor of 8 % of the figure's 220 units (17.6) even at 60 degrees.
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="260">
+           <g><path d="M 80 40 L 120 40 L 120 240 L 80 240 Z" fill="#a60"/></g>
+           <g><path d="M 93 26 L 107 26 L 107 40 L 93 40 Z" fill="#fc9"/></g></svg>)", "tall.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("he nods his head slightly"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  INFO(plan.actions[0].why);
+  REQUIRE(plan.actions[0].parts.size() == 1);
+  REQUIRE(rig.parts[plan.actions[0].parts[0]].role == Role::Head);
+  const double asked = plan.amplitude(plan.actions[0]);
+  REQUIRE(asked < 15);  // a slight nod: raised four times it would not reach 60 degrees
+  fit_plan(s, rig, plan, kFrames, kKeyframes);
+  CHECK(plan.amplitude(plan.actions[0]) == doctest::Approx(60));
+  const double travel = largest(s, rig, plan);
+  // At 60 degrees the chord is the radius: the head's corner, 15.65 units from its neck.
+  CHECK(travel == doctest::Approx(std::hypot(7.0, 14.0)).epsilon(0.01));
+  CHECK(travel < 0.08 * diagonal(rig));
+  CHECK(has_line(plan.warnings, "by the largest raise (12 times, turns to 60 degrees), under the 8 %"));
+}
+
 }  // TEST_SUITE
