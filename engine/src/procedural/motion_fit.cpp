@@ -274,7 +274,8 @@ void slow_to_follow(const TravelCheck& c, MotionPlan& plan, const std::vector<si
 // shell, a fencer's arm across the chest) folds it where the drawing only overlaps: when
 // unfolding would take the bend under kMinUnfoldScale of its size (the fencer's thrust to 3 %
 // of the figure's size from 21 %, the crab's claws to 2 % from 10 %), the bend stays at its
-// size in the closed form (motion_frames.cpp), as before the mesh, and a note says so.
+// size in the closed form (motion_frames.cpp), as before the mesh, and a note says so. A bend
+// made smaller has "would fold its mesh" in `cut` (warn_under_floor names it).
 void unfold_region_bends(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, std::vector<std::string>& cut) {
   for (size_t i = 0; i < plan.actions.size(); ++i) {
     PlannedAction& a = plan.actions[i];
