@@ -6,7 +6,8 @@
 # motion from motion.json (motion_score.py --verdict) and reads the ranker's verdict on every
 # candidate from ranking.json. One row per case: share of the motion on the parts named, still
 # ratio, paths out of the canvas, the farthest travel of a point that must move (% of the figure's
-# diagonal; the floor is 8, shown not scored), flagged candidates (k/N and the first reason), the plan, the
+# diagonal; the floor is 8, a bar unless the verb is exempt or the canvas held it:
+# motion_score.py), flagged candidates (k/N and the first reason), the plan, the
 # prompt's words not understood ("(fallback sway)": none was a motion word), pass or FAIL(the bars
 # missed); then the totals, with the passes that only the fallback sway earned. The bar:
 # share >= 0.7 in at least 90 % of the cases, still parts still, nothing out of the frame, no
@@ -90,5 +91,5 @@ while IFS=$'\t' read -r name set file prompt move still backdrop; do
     *) unflagged=$((unflagged + 1)) ;;
   esac
 done < "$here/motion_emoji.tsv"
-echo "cases: $total; share/still/out bars met: $bars; no candidate flagged: $unflagged; both (pass): $pass," \
+echo "cases: $total; share/still/out/travel bars met: $bars; no candidate flagged: $unflagged; both (pass): $pass," \
   "of which $fallback on the fallback sway (no motion word understood) ($((SECONDS - seconds)) s)"

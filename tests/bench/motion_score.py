@@ -32,8 +32,13 @@ of a still point (in % of the canvas diagonal), how many paths left the canvas, 
 Pass: share >= 0.7, still ratio <= 0.25, nothing out of the canvas.
 The travel column (with --verdict) is the issue's floor for motion a viewer can see: the largest
 travel of a point that must move, in % of the drawing's box diagonal (the figure's size); the
-engine raises a clause's motion to 8 % of it (motion_plan_internal.h, kVisibleTravel). It is
-measured and shown, not one of the bars: "<8" follows it when it is below the floor.
+engine raises a clause's motion to 8 % of it (motion_plan_internal.h, kVisibleTravel). It is one
+of the bars: "<8" follows it when it is below the floor, and the case fails (FAIL(travel)) unless
+  - every verb of the plan is one whose motion is small by meaning (EXEMPT_VERBS: a pulse, a
+    breath or a heartbeat swells by a few % and reads as inflating at 8 % of the size; a tremble
+    is a shiver, a jitter of a pixel or two; a twinkle is a blink of light): "<8 exempt", or
+  - motion.json warns that the canvas held the motion under the floor (the figure fills its
+    picture: amplitudes are scaled down only to stay inside the frame): "<8 canvas".
 With --verdict (tests/bench/motion_emoji.sh), the line also says what the ranker thought of the
 candidates and what the prompt's parser did not understand: share, still ratio, paths out of
 the canvas, travel (below), flagged candidates (ranking.json: those with defects or an error, "k/N" and the
@@ -50,6 +55,7 @@ STILL_RATIO_MAX = 0.25  # still paths move at most a quarter as much as the expe
 LARGE = 0.45        # share of the canvas: a background (as a reader of the drawing would say)
 EDGE = 0.04         # share of the canvas size: a box this close to an edge touches it
 TRAVEL_MIN = 8      # % of the figure's diagonal: motion a viewer can see (the item 4)
+EXEMPT_VERBS = {"pulse", "tremble", "twinkle"}  # small by meaning (the docstring says why)
 EARLY = 0.35        # share of the paths: a background is painted among the first ones
 
 
@@ -222,9 +228,16 @@ def main():
         # label of 'all' (or of a figure's top) scores as if it were the motion asked for.
         if any("no motion understood" in w for w in m.get("warnings", [])):
             words += " (fallback sway)"
+        seen, small = f"{travel:.1f}", travel < TRAVEL_MIN
+        if small:
+            seen += "<8"
+            verbs = {a["verb"] for a in m["plan"]}
+            if verbs and verbs <= EXEMPT_VERBS:
+                seen, small = seen + " exempt", False
+            elif any("by the canvas, under the" in w for w in m.get("warnings", [])):
+                seen, small = seen + " canvas", False
         why = [w for w, bad in (("share", share < SHARE_MIN), ("still", ratio > STILL_RATIO_MAX), ("out", out > 0),
-                                ("flagged", v is None or v[0] > 0)) if bad]
-        seen = f"{travel:.1f}" + ("<8" if travel < TRAVEL_MIN else "")
+                                ("travel", small), ("flagged", v is None or v[0] > 0)) if bad]
         print(f"{share:.2f}\t{ratio:.2f}\t{out}\t{seen}\t{flags}\t{plan}\t{words}\t{'FAIL(' + ','.join(why) + ')' if why else 'pass'}")
         return
     print(f"{share:.2f}\t{ratio:.2f}\t{still_max:.2f}\t{out}\t{'pass' if ok else 'FAIL'}\t{len(move)}/{len(still)}/{len(pts)}\t{plan}")

@@ -128,4 +128,36 @@ TEST_CASE("a sleeve swung so far that its mesh folds is caught: fit_plan makes i
   CHECK_FALSE(folds[0].meshed);
 }
 
+TEST_CASE("a patch lying inside a waving sleeve, across its bend, moves rigidly; the band sticking out of it still bends") {
+  // The sweater with a patch (76..88 x 44..56) drawn on the left sleeve where the bend's ramp
+  // is, inside its fill, after it; the band (80..86, 2 units out of the sleeve above and below)
+  // lies across the sleeve and is no shape the sleeve carries.
+  const Scene s = read_svg_string(R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+  <g><path d="M 85 120 L 115 120 L 120 190 L 80 190 Z" fill="#fc0"/></g>
+  <g><path d="M 20 40 L 180 40 L 180 60 L 110 60 L 110 120 L 90 120 L 90 60 L 20 60 Z" fill="#00f"/>
+     <path d="M 80 38 L 86 38 L 86 62 L 80 62 Z" fill="#f00"/>
+     <path d="M 76 44 L 88 44 L 88 56 L 76 56 Z" fill="#0f0"/></g></svg>)", "patched.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("she is waving her arms"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  REQUIRE(plan.actions[0].region == Region::Sides);
+  const std::vector<Vec2> pts = animate_plan(s, rig, plan, kFrames);
+  const std::vector<Vec2> rest = band_corners(s, pts, 0, 3), band_rest = band_corners(s, pts, 0, 2);
+  double moved = 0, band_longest = 0;
+  for (int f = 0; f < kFrames; ++f) {
+    const std::vector<Vec2> c = band_corners(s, pts, f, 3);
+    moved = std::max(moved, std::hypot(c[0].x - rest[0].x, c[0].y - rest[0].y));
+    // Every distance between two corners of the patch is the one at rest.
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        CHECK(std::hypot(c[j].x - c[i].x, c[j].y - c[i].y) ==
+              doctest::Approx(std::hypot(rest[j].x - rest[i].x, rest[j].y - rest[i].y)).epsilon(1e-9));
+    const std::vector<Vec2> b = band_corners(s, pts, f, 2);
+    band_longest = std::max(band_longest, std::hypot(b[2].x - b[3].x, b[2].y - b[3].y) / 6);
+  }
+  CHECK(moved > 5);             // the patch moved with the sleeve
+  CHECK(band_longest > 1.05);   // the band across the bend bends (its outer edge grows)
+  CHECK(band_rest[0].x == 80);
+}
+
 }  // TEST_SUITE

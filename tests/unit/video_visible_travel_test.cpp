@@ -134,4 +134,50 @@ TEST_CASE("a figure bobbing on a ground the prompt names rises from it, to the f
   CHECK(has_line(plan.notes, "rises from the waves"));
 }
 
+TEST_CASE("a shake of 1 % of the figure's size is raised past four times to the floor") {
+  // A ball a third of its canvas shaking 0.012 of its height: 0.85 % of its diagonal. Raised
+  // at most four times (the limit before) it stayed at 3.4 %; the canvas and the fitter's
+  // steps allow the floor.
+  const Scene s = ball(60);
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("it shakes"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  REQUIRE(plan.actions[0].primitive == Primitive::Shake);
+  const double before = largest(s, rig, plan);
+  REQUIRE(before < 0.02 * diagonal(rig));  // the drawing makes the test mean something
+  fit_plan(s, rig, plan, kFrames, kKeyframes);
+  CHECK(plan.actions[0].scale > 4);
+  CHECK(largest(s, rig, plan) >= 0.08 * diagonal(rig));
+  CHECK(plan.warnings.empty());
+}
+
+TEST_CASE("a raised turn stops at a quarter turn, and a warning says the raise held it under the floor") {
+  // A tall body (40 x 200) and a flat head on it (18 x 5), its neck about the middle of its
+  // bottom: its corners lie about 10.3 units from there, and at 90 degrees they move about
+  // 14.6 (the radius times the square root of 2), under the floor of 8 % of the figure's 208.9
+  // units (16.7).
+  const Scene s = read_svg_string(
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="260">
+           <g><path d="M 80 40 L 120 40 L 120 240 L 80 240 Z" fill="#a60"/></g>
+           <g><path d="M 91 35 L 109 35 L 109 40 L 91 40 Z" fill="#fc9"/></g></svg>)", "tall.svg");
+  const Rig rig = build_rig(s, {});
+  MotionPlan plan = plan_from_prompt(parse_prompt("he nods his head"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  INFO(plan.actions[0].why);
+  REQUIRE(plan.actions[0].parts.size() == 1);
+  REQUIRE(rig.parts[plan.actions[0].parts[0]].role == Role::Head);
+  const double asked = plan.amplitude(plan.actions[0]);
+  REQUIRE(asked < 22.5);  // raised four times (the limit before) it would not reach 90 degrees,
+  REQUIRE(12 * asked > 90);  // twelve times it would pass it
+  // Keyframes enough for a quarter turn (at 15 the step between two of them cuts it to 72).
+  const int F = 97;
+  fit_plan(s, rig, plan, F, 49);
+  CHECK(plan.amplitude(plan.actions[0]) == doctest::Approx(90));
+  double travel = 0;
+  for (double v : test::path_travel(s, animate_plan(s, rig, plan, F), F)) travel = std::max(travel, v);
+  CHECK(travel < 0.08 * diagonal(rig));
+  CHECK(travel > 0.8 * 0.08 * diagonal(rig));  // about the radius times the square root of 2
+  CHECK(has_line(plan.warnings, "by the largest raise (12 times, turns to 90 degrees), under the 8 %"));
+}
+
 }  // TEST_SUITE

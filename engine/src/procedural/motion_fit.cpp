@@ -144,6 +144,12 @@ double largest_travel(const std::vector<Vec2>& pts, const std::vector<char>& exe
   return largest;
 }
 
+// Whether `a`'s amplitude is an angle in degrees (motion_verbs.h's units).
+bool turns_degrees(const PlannedAction& a) {
+  return a.primitive == Primitive::Swing || a.primitive == Primitive::Rock || a.primitive == Primitive::Bend ||
+         a.primitive == Primitive::Sway;
+}
+
 bool oscillates(const PlannedAction& a) {
   return a.primitive == Primitive::Swing || a.primitive == Primitive::Rock || a.primitive == Primitive::Bend ||
          a.primitive == Primitive::Sway || a.region != Region::None;
@@ -268,8 +274,9 @@ void slow_to_follow(const TravelCheck& c, MotionPlan& plan, const std::vector<si
 // shell, a fencer's arm across the chest) folds it where the drawing only overlaps: when
 // unfolding would take the bend under kMinUnfoldScale of its size (the fencer's thrust to 3 %
 // of the figure's size from 21 %, the crab's claws to 2 % from 10 %), the bend stays at its
-// size in the closed form (motion_frames.cpp), as before the mesh, and a note says so.
-void unfold_region_bends(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames) {
+// size in the closed form (motion_frames.cpp), as before the mesh, and a note says so. A bend
+// made smaller has "would fold its mesh" in `cut` (warn_under_floor names it).
+void unfold_region_bends(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, std::vector<std::string>& cut) {
   for (size_t i = 0; i < plan.actions.size(); ++i) {
     PlannedAction& a = plan.actions[i];
     if (a.region == Region::None || a.amp == 0) continue;
@@ -303,6 +310,7 @@ void unfold_region_bends(const Scene& scene, const Rig& rig, MotionPlan& plan, i
                   what.c_str(), first.frame, first.flipped, first.min_area_ratio * 100);
     plan.notes.push_back(line);
     if (attempt > 0) {
+      cut[i] = "would fold its mesh";
       std::snprintf(line, sizeof line, "the amplitude of %s scaled to %.0f %%: at full size its bend %s its shape", what.c_str(),
                     a.scale * 100, first.flipped > 0 ? "folds" : "pinches");
       plan.notes.push_back(line);
@@ -340,8 +348,13 @@ void raise_to_visible(const TravelCheck& c, MotionPlan& plan) {
     }
     double travel = c.travel(plan, clause), boost = 1;
     const double first = travel;
-    for (int round = 0; round < kRaiseRounds && travel > 0 && travel < floor && boost < kMaxBoost - 1e-9; ++round) {
-      const double step = std::min(kMaxBoost / boost, kRaiseAim * floor / travel);
+    // The largest raise the clause's turns allow (kMaxRaisedTurn), with kMaxBoost's.
+    double most = kMaxBoost;
+    for (size_t j : clause)
+      if (turns_degrees(plan.actions[j]) && std::fabs(plan.amplitude(plan.actions[j])) > 1e-9)
+        most = std::min(most, std::max(1.0, kMaxRaisedTurn / std::fabs(plan.amplitude(plan.actions[j]))));
+    for (int round = 0; round < kRaiseRounds && travel > 0 && travel < floor && boost < most - 1e-9; ++round) {
+      const double step = std::min(most / boost, kRaiseAim * floor / travel);
       for (size_t j : clause) plan.actions[j].scale *= step;
       boost *= step;
       travel = c.travel(plan, clause);
@@ -367,8 +380,12 @@ void warn_under_floor(const TravelCheck& c, MotionPlan& plan, const std::vector<
     for (size_t j : clause)
       if (by.empty() && cut[j] == "would leave the canvas") by = "by the canvas";
     for (size_t j : clause)
+      if (by.empty() && cut[j] == "would fold its mesh") by = "by its mesh, folding at a larger bend";
+    for (size_t j : clause)
       if (by.empty() && !cut[j].empty()) by = "by the fitter's steps between keyframes";
-    if (by.empty()) by = "by the largest raise (" + std::to_string(static_cast<int>(kMaxBoost)) + " times)";
+    if (by.empty())
+      by = "by the largest raise (" + std::to_string(static_cast<int>(kMaxBoost)) + " times, turns to " +
+           std::to_string(static_cast<int>(kMaxRaisedTurn)) + " degrees)";
     char line[300];
     std::snprintf(line, sizeof line, "%s held to %.1f %% of the figure's size %s, under the %.0f %% a viewer can see",
                   plan.actions[clause.front()].verb.c_str(), c.percent(travel), by.c_str(), 100 * kVisibleTravel);
@@ -419,8 +436,8 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
   const int K_hi = std::min(frames, 2 * (K - 1) + 1);
   const TravelCheck check{scene, rig, exempt, frames, K_hi};
   raise_to_visible(check, plan);
-  unfold_region_bends(scene, rig, plan, frames);
   std::vector<std::string> cut(plan.actions.size());  // why each action was scaled down ("": it was not)
+  unfold_region_bends(scene, rig, plan, frames, cut);
   // Why `one` at its scales breaks a limit ("" when none): the canvas, then the steps and turns
   // between K_hi keyframes.
   auto broken = [&](const MotionPlan& one) {

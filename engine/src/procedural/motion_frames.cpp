@@ -7,6 +7,7 @@
 #include <cmath>
 #include <memory>
 
+#include "procedural/carried_shapes.h"
 #include "procedural/detail_binding.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/region_bend.h"
@@ -500,6 +501,22 @@ std::vector<std::unique_ptr<RegionBend>> region_meshes(const Scene& scene, const
   return mesh;
 }
 
+// Per path, the diagonal of the part whose region bend moves it point by point (0: none does;
+// carried_shapes.h).
+template <class Stays>
+std::vector<double> bend_sizes(const Scene& scene, const Rig& rig, const MotionPlan& plan, const std::vector<char>& spinning,
+                               const WheelLoads& loads, const Stays& stays) {
+  std::vector<double> size(scene.paths.size(), 0);
+  for (const PlannedAction& a : plan.actions) {
+    if (a.region == Region::None || a.target == Target::Repeated || a.parts.empty() || plan.amplitude(a) == 0) continue;
+    const RigBox& hb = rig.parts[a.parts[0]].box;
+    for (size_t pi = 0; pi < scene.paths.size(); ++pi)
+      if (region_use(rig, a, pi, rig.part_of_path[pi], stays(pi), spinning, loads) == 1)
+        size[pi] = std::max(size[pi], std::hypot(hb.w(), hb.h()));
+  }
+  return size;
+}
+
 // The region meshes at frame f (time t), their folds noted in `folds`.
 std::vector<std::vector<Vec2>> solve_meshes(const std::vector<std::unique_ptr<RegionBend>>& mesh, const MotionPlan& plan, double t, int f,
                                             std::vector<BendFold>* folds) {
@@ -580,6 +597,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   };
 
   const std::vector<std::unique_ptr<RegionBend>> mesh = region_meshes(scene, rig, plan, spinning, loads, stays, folds);
+  const std::vector<std::vector<size_t>> carried = carried_shapes(scene, bend_sizes(scene, rig, plan, spinning, loads, stays), rides_on);
 
   std::vector<Vec2> out;
   out.reserve(static_cast<size_t>(frames) * (scene.segment_count() * 3 + scene.paths.size() * 2));
@@ -659,6 +677,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
       }
     }
   }
+  keep_carried_rigid(scene, carried, frames, out);
   return out;
 }
 

@@ -28,9 +28,15 @@ inline constexpr int kScaleAttempts = 12;
 inline constexpr double kMinUnfoldScale = 0.5;
 // fit_plan: a clause whose largest motion is under this share of the figure's diagonal is
 // raised to it (a viewer must see the motion the prompt asked for; the pixel ranker calls a video
-// where under 0.5 % of the foreground changes 'no motion'), by at most this factor.
+// where under 0.5 % of the foreground changes 'no motion'), by at most kMaxBoost, and no turn
+// of it (a swing, rock, sway or bend, in degrees) raised past kMaxRaisedTurn, a quarter turn
+// each way (past it a swinging part turns upside down): the canvas and the fitter's steps scale
+// it back afterwards. At 4 times a tiger's lashing tail (a bend of 4.5 degrees, 0.7 % of its
+// size) and an alarm clock's shake (1 %) stayed at 2.8 and 4 %, too little to see; at 60
+// degrees a whale's spout (75 degrees to reach the floor) stayed at 6.6 %.
 inline constexpr double kVisibleTravel = 0.08;  // of the figure's diagonal (the floor)
-inline constexpr double kMaxBoost = 4;
+inline constexpr double kMaxBoost = 12;
+inline constexpr double kMaxRaisedTurn = 90;  // degrees
 // The raise is measured again up to this many times (a swing's chord grows slower than its
 // angle), aiming this share over the floor: motion.json rounds travels to 0.1 px, 0.9 % of the
 // floor on a 72 px emoji, and a clause raised to exactly 8 % read as 7.9 there.
