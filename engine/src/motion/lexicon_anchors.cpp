@@ -13,6 +13,12 @@ const std::vector<VerbAnchor> kVerbAnchors = {
   // Every sense of "erupt" is a beginning, an increase, an appearance or catching fire; what a
   // drawing of an eruption shows is its plume going up.
   {"erupt", "rise"},
+  // Taking off is leaving (a departure, "move") and landing arriving in WordNet; what a drawing
+  // of either shows is the whole figure climbing away or coming down.
+  {"take_off", "takeoff"},
+  {"lift_off", "takeoff"},
+  {"blast_off", "takeoff"},
+  {"land", "sink"},
   // "explode" and "burst" are changes of integrity in WordNet (no motion above them); drawn,
   // a burst is a quick swelling.
   {"explode", "swell"},

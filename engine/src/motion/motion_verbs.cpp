@@ -51,6 +51,10 @@ const std::vector<Verb> kVerbs = {
   {"bounce",  {"bounc", "boing"},               {{P::Hop, T::Whole, 0.08, 2}}, P::Hop},
   {"bob",     {"bob"},                          {{P::Bob, T::Whole, 0.04, 2}}, P::Swing},  // a bobbing head nods on its neck: moved up and down whole it came off the neck, and a head drawn in the body's shape had no part to move
   {"float",   {"float", "drift", "levitat"},    {{P::Bob, T::Whole, 0.05, 1}, {P::Rock, T::Whole, 3, 1}}, P::Bob},
+  // Leaving the ground (a plane taking off, a rocket lifting off: lexicon_anchors.cpp): the whole
+  // figure climbs away and comes back, going forward as it climbs. Read as "move" (a slide of 4 %
+  // and a stretch), the plane taking off crept along the runway.
+  {"takeoff", {"takeoff", "liftoff", "blastoff"}, {{P::Bob, T::Whole, 0.12, 1}, {P::Slide, T::Whole, 0.06, 1}}, P::Bob},
   {"rise",    {"ris", "rose", "ascend"},        {{P::Bob, T::Whole, 0.06, 1}}, P::Bob},
   {"sink",    {"sink", "sank", "div", "descend"}, {{P::Bob, T::Whole, 0.06, 1}, {P::Rock, T::Whole, 4, 1}}, P::Bob},
   {"sway",    {"sway", "blow", "breez"},        {{P::Sway, T::Whole, 8, 1}}, P::Swing},
@@ -88,7 +92,13 @@ const std::vector<Verb> kVerbs = {
   // Size.
   {"pulse",   {"puls", "breath", "beat", "throb", "heav"}, {{P::Pulse, T::Whole, 0.05, 2}}, P::Pulse},
   {"grow",    {"grow", "grew", "inflat", "swell", "expand", "shrink", "shrank", "deflat", "open", "bloom", "unfold", "unfurl"}, {{P::Pulse, T::Whole, 0.1, 1}}, P::Pulse},
+  // A flame flickers: its tip sways quickly and it stretches up from its base. No stem: the word
+  // "flicker" is twinkle's (stars), and motion_plan.cpp reads it so when a fire or a light flickers.
+  {"flicker", {},                               {{P::Bend, T::Whole, 12, 3}, {P::Stretch, T::Whole, 0.08, 2}}, P::Swing},
   {"twinkle", {"twinkl", "sparkl", "glow", "shin", "flicker", "blink", "glitter", "shimmer"}, {{P::Pulse, T::Repeated, 0.2, 2}}, P::Pulse},
+  // A figure that falls itself (motion_plan.cpp: a fall with no repeated elements to move): down
+  // and back, turning to and fro as a leaf does. No stem: the words are fall's.
+  {"tumble",  {},                               {{P::Bob, T::Whole, 0.12, 1}, {P::Rock, T::Whole, 12, 2}}, P::Bob},
   // Repeated elements.
   {"fall",    {"fall", "fell", "rain", "pour", "drip", "snow", "tumbl", "descend", "shower"}, {{P::Fall, T::Repeated, 0.12, 1}}, P::Fall},
 };

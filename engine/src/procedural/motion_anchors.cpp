@@ -79,6 +79,7 @@ int anchored_side(const Rig& rig, bool thick) {
 int bend_anchor(const Rig& rig, FigureClass figure) {
   if (const int side = anchored_side(rig, true)) return side;
   if (figure == FigureClass::FishOrSnake || figure == FigureClass::Bird || figure == FigureClass::Insect) return 0;
+  if (figure == FigureClass::Flame) return 4;  // a flame burns up from its base, however wide
   return figure == FigureClass::Plant || rig.figure.h() >= kUpright * rig.figure.w() ? 4 : 0;
 }
 

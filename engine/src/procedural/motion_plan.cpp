@@ -15,6 +15,7 @@
 #include "procedural/motion_plan_internal.h"
 #include "procedural/support_band.h"
 #include "procedural/part_locator.h"
+#include "procedural/self_movers.h"
 
 namespace svgm {
 
@@ -196,6 +197,11 @@ struct Builder {
       rock_on_part = false;
       return "petals open: they spread from the flower's centre";
     }
+    // A rising plume swells up from its base (self_movers.h); swung, "steam rises" went side to side.
+    if (plume_rises(located, a.primitive)) {
+      a.primitive = Primitive::Pulse, amp = plume_growth(rig, *located), rock_on_part = false;
+      return "a plume rises: it swells up from its base";
+    }
     if (located) {
       if (a.primitive != Primitive::Swing || base.primitive != Primitive::Swing) amp = 0;
       a.primitive = Primitive::Swing;
@@ -268,7 +274,7 @@ struct Builder {
     }
     a.vertical = mods.vertical;
     if (a.primitive == Primitive::Undulate && target == Target::Whole) a.anchored = anchored_side(rig, true);
-    if (a.primitive == Primitive::Bend && target == Target::Whole) a.anchored = bend_anchor(rig, figure);
+    if (a.primitive == Primitive::Bend && target == Target::Whole) a.anchored = bend_anchor(rig, verb.name == "flicker" ? FigureClass::Flame : figure);
     a.direction = mods.side != 0 ? mods.side : ((rng() & 1) ? 1 : -1);
     // Where the prompt sends the figure ("drifts to the right"): a slide of the whole figure
     // goes that way first, in the viewer's frame.
@@ -324,6 +330,14 @@ struct Builder {
       }
     if (limb_role && !note.empty() && rig.root >= 0 && a.primitive == Primitive::Swing)
       bend_region(a, target, base, mods, plural, note, which);
+    // A fall with nothing drawn apart to fall (no drops; "the maple leaf tumbles") is the figure's own (self_movers.h).
+    if (const Verb* tumble = find_verb_by_name("tumble");
+        a.primitive == Primitive::Fall && (target == Target::Repeated ? rig.repeated.empty() : target != Target::Whole && a.parts.empty())) {
+      Modifiers down = mods;
+      down.vertical = -1;  // down and back
+      for (const Action& t : tumble->actions) add(*tumble, t, Target::Whole, {}, "", down, false, words, false, "nothing drawn apart to fall: the figure falls itself");
+      return;
+    }
     if (target == Target::Repeated && rig.repeated.empty()) {
       plan.warnings.push_back("'" + words + "': no repeated elements (drops, stars) found; " + verb.name + " is left out");
       return;
@@ -661,7 +675,8 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
   std::vector<std::string> restated;
   for (const Clause& c : prompt.clauses) {
     const size_t first_action = b.plan.actions.size();
-    const ClauseTarget ct = target_of(c, &unknown);
+    ClauseTarget ct = target_of(c, &unknown);  // then a fire's or a light's flames when no part is named (self_movers.h)
+    if (LocatedPart lit; !ct.have && !(lit = flames_of_light(c, rig)).lobes.empty()) ct = {Target::Named, {}, "flames", lit.lobes.size() > 1, true, lit};
     const Target target = ct.target;
     const std::vector<int>& named = ct.named;
     const std::string& target_word = ct.word;
@@ -673,7 +688,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
       if (const Verb* wag = find_verb_by_name("wag"))
         b.add(*wag, wag->actions[0], Target::Named, {}, target_word, c.mods, plural, c.text, true,
               "no motion word for the " + target_word + ": it swings", located);
-    for (const Verb* v : c.verbs)
+    for (const Verb* v : clause_verbs(c, rig, located))
       for (size_t i = 0; i < v->actions.size(); ++i) {
         const Action& act = v->actions[i];
         // A ball a limb's verb acts on ("throws the ball", "kicks the ball") goes with the limb:
@@ -692,7 +707,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
           b.plan.notes.push_back(std::string("a ") + figure_class_name(b.figure) + " has no arms: " + v->name + "'s arm swing left out");
           continue;
         }
-        if (i > 0 && act.target == Target::Whole && names_limbs && (is_limb_target(v->actions[0].target) || paddles(*v, rig) || located)) {
+        if (i > 0 && act.target == Target::Whole && (names_limbs || located) && (is_limb_target(v->actions[0].target) || paddles(*v, rig) || located)) {
           accents_left_out.push_back(v->name + "'s " + primitive_name(act.primitive));
           continue;
         }
@@ -717,7 +732,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
       std::string what;
       for (const auto& n : c.nouns)
         if (n.motion && !n.object_of_preposition) {
-          v = n.motion;
+          v = flame_verb(n.motion, c, rig, nullptr);
           what = "'" + n.word + "'";
           break;
         }

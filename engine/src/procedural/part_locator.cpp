@@ -250,6 +250,44 @@ LocatedPart jet(const Rig& rig, int body) {
   return out;
 }
 
+// Flames (of a candle, a lamp, a torch): the tips of what is drawn above the body's top, each
+// element there with nothing else of it drawn above it (a candle carries its flame: the flame
+// is the tip, the candle under it holds), with its details, each flickering about its lowest
+// middle. A fire drawn as one blaze has nothing above its body: none found, the whole figure
+// flickers (motion_plan.cpp).
+LocatedPart flames(const Rig& rig, int body) {
+  LocatedPart out;
+  const RigBox& B = rig.elements[body].box;
+  std::vector<int> above;
+  for (size_t i = 0; i < rig.elements.size(); ++i)
+    if (static_cast<int>(i) != body && rig.elements[i].box.centre().y < B.y0 && rig.elements[i].box.area() < B.area())
+      above.push_back(static_cast<int>(i));
+  std::set<int> taken, paths;
+  std::vector<int> tips;
+  RigBox all;
+  for (int e : above) {
+    const RigBox& E = rig.elements[e].box;
+    bool covered = false;  // another element over it: its middle higher, across its width, not inside it
+    for (int o : above) {
+      const RigBox& O = rig.elements[o].box;
+      covered = covered || (o != e && O.centre().y < E.y0 + 0.25 * E.h() && O.centre().x > E.x0 && O.centre().x < E.x1 && !inside(O, E));
+    }
+    if (covered || taken.count(e)) continue;
+    const std::vector<int> els = with_details(rig, e, body);
+    RigBox box;
+    for (int d : els) taken.insert(d), box.add(rig.elements[d].box);
+    out.lobes.push_back(lobe_over(rig, els, {box.centre().x, box.y1}));
+    add_paths(rig, els, paths);
+    tips.push_back(e);
+    all.add(box);
+  }
+  if (tips.empty()) return out;
+  out.paths.assign(paths.begin(), paths.end());
+  out.why = std::to_string(tips.size()) + " tip" + (tips.size() > 1 ? "s" : "") + " drawn above the body's top with nothing above them (" +
+            path_ids(tips, rig) + " at " + fmt_box(rig, all) + "), each about its lowest middle";
+  return out;
+}
+
 LocatedPart clapper(const Rig& rig, int body) {
   LocatedPart out;
   const RigBox& B = rig.elements[body].box;
@@ -599,6 +637,7 @@ PartShape part_shape_of(std::string_view w, FigureClass figure) {
                       figure == FigureClass::FishOrSnake || figure == FigureClass::Insect;
   if (any_stem(w, {"ear", "antenna", "antennae"})) return PartShape::Ears;
   if (any_stem(w, {"spout", "plume", "jet", "spray", "steam", "smok", "fountain", "geyser"})) return PartShape::Jet;
+  if (any_stem(w, {"flame", "flamelet"})) return PartShape::Flames;
   if (any_stem(w, {"clapper", "pendulum"})) return PartShape::Clapper;
   if (figure == FigureClass::Object && any_stem(w, {"hand", "needl", "pointer"})) return PartShape::Hands;
   if (any_stem(w, {"claw", "pincer", "nipper", "mandibl", "chela"})) return PartShape::SidePair;
@@ -612,6 +651,7 @@ const char* part_shape_name(PartShape s) {
   switch (s) {
     case PartShape::Ears: return "ears";
     case PartShape::Jet: return "jet";
+    case PartShape::Flames: return "flames";
     case PartShape::Clapper: return "clapper";
     case PartShape::Hands: return "hands";
     case PartShape::SidePair: return "side pair";
@@ -686,6 +726,7 @@ LocatedPart locate_part(const Rig& rig, PartShape shape) {
   switch (shape) {
     case PartShape::Ears: out = ears(rig, body); break;
     case PartShape::Jet: out = jet(rig, body); break;
+    case PartShape::Flames: out = flames(rig, body); break;
     case PartShape::Clapper: out = clapper(rig, body); break;
     case PartShape::Hands: out = hands(rig, body); break;
     case PartShape::SidePair: out = side_pair(rig, body); break;

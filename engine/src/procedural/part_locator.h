@@ -15,6 +15,9 @@
 //    above the figure's middle turns, about its point there nearest the body's middle;
 //  - a jet (spout, plume, jet, spray, steam, smoke, fountain): what is drawn above the body's
 //    top, turning about its lowest middle;
+//  - flames (flame): the tips of what is drawn above the body's top, each element there with
+//    nothing else drawn over it (a candle's flame, not the candle), each turning about its
+//    lowest middle; a blaze drawn whole has none (the whole figure flickers);
 //  - a clapper (clapper, pendulum, tongue of a bell): a small element below the body's middle
 //    and centred under it, turning about its top;
 //  - hands (of a clock or a dial: hand, needle, pointer): thin elements inside a larger one,
@@ -49,7 +52,7 @@
 
 namespace svgm {
 
-enum class PartShape { None, Ears, Jet, Clapper, Hands, SidePair, Branch, Petals, Strands, Bloom };
+enum class PartShape { None, Ears, Jet, Flames, Clapper, Hands, SidePair, Branch, Petals, Strands, Bloom };
 
 // The kind of part a noun names ("ears" -> Ears, "clapper" -> Clapper), None for nouns the
 // locator does not place. `figure`: the prompt's figure class (lexicon.h): a trunk is a branch

@@ -1,0 +1,48 @@
+// Things that move by themselves (see self_movers.h).
+#include "procedural/self_movers.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace svgm {
+
+bool twinkle_of_fire(const Clause& c, bool lights) {
+  const Verb* twinkle = find_verb_by_name("twinkle");
+  if (std::find(c.verbs.begin(), c.verbs.end(), twinkle) == c.verbs.end()) return false;
+  bool fire = c.figure == FigureClass::Flame;
+  for (const auto& n : c.nouns)
+    fire = fire || (!n.object_of_preposition && (n.figure == FigureClass::Flame || ((lights || n.figure == FigureClass::None) && n.motion == twinkle)));
+  return fire;
+}
+
+// With no flame found and repeated sparks drawn, the twinkle stays theirs: a storm's lightning
+// "strikes" (a flicker of fire) over its rain drops.
+const Verb* flame_verb(const Verb* v, const Clause& c, const Rig& rig, const LocatedPart* located) {
+  if (!v || v->name != "twinkle") return v;
+  const bool flame = (located && located->shape == PartShape::Flames) || (rig.repeated.empty() && twinkle_of_fire(c, false));
+  const Verb* f = flame ? find_verb_by_name("flicker") : nullptr;
+  return f ? f : v;
+}
+
+std::vector<const Verb*> clause_verbs(const Clause& c, const Rig& rig, const LocatedPart* located) {
+  std::vector<const Verb*> out;
+  for (const Verb* v : c.verbs) out.push_back(flame_verb(v, c, rig, located));
+  return out;
+}
+
+LocatedPart flames_of_light(const Clause& c, const Rig& rig) {
+  if (rig.root < 0 || !twinkle_of_fire(c, true)) return {};
+  return locate_part(rig, PartShape::Flames);
+}
+
+bool plume_rises(const LocatedPart* located, Primitive p) {
+  return located && located->shape == PartShape::Jet && (p == Primitive::Bob || p == Primitive::Pulse || p == Primitive::Stretch);
+}
+
+double plume_growth(const Rig& rig, const LocatedPart& plume) {
+  double reach = 0;
+  for (const ArmLobe& l : plume.lobes) reach = std::max(reach, std::hypot(l.tip.x - l.pivot.x, l.tip.y - l.pivot.y));
+  return std::clamp(kPlumeRise * rig.figure.h() / std::max(reach, 1e-9), kPlumeGrowMin, kPlumeGrowMax);
+}
+
+}  // namespace svgm

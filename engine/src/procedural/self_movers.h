@@ -1,0 +1,45 @@
+// Things that move by themselves, as a prompt names them (issue 35): a fire's or a lamp's flames
+// flicker, a plume of smoke or steam rises, a thing with nothing drawn apart to fall tumbles
+// itself. What moves is the thing the noun names, found on the drawing, and how it moves is its
+// own: a flame's tip sways fast from its base (not a pulse of repeated sparks), a plume swells up
+// from where it leaves the body (not a swing on its base), a falling leaf goes down whole (not a
+// fall of the drops it does not have). motion_plan.cpp asks these questions of each clause.
+#pragma once
+
+#include "motion/motion_verbs.h"
+#include "procedural/part_locator.h"
+#include "procedural/prompt_parse.h"
+
+namespace svgm {
+
+// Whether the clause's twinkle ("flickers", "glows") is said of fire or of a light: who twinkles
+// is a fire (the lexicon's flame class) or a thing whose own motion is a twinkle with no class
+// (a source of light), or with `lights` any thing whose own motion is a twinkle (the lexicon
+// files a candle as an object, as it does a star: asked only where flames are looked for).
+bool twinkle_of_fire(const Clause& c, bool lights);
+
+// The verb a clause's verb `v` becomes: a twinkle of fire or light is the flame's flicker when
+// its flames are located (`located`) or the drawing has no repeated sparks to twinkle; any
+// other verb is itself.
+const Verb* flame_verb(const Verb* v, const Clause& c, const Rig& rig, const LocatedPart* located);
+
+// The clause's verbs, each as flame_verb reads it.
+std::vector<const Verb*> clause_verbs(const Clause& c, const Rig& rig, const LocatedPart* located);
+
+// The flames of a fire or a light that flickers with no part named ("the candles flicker"; in
+// "the candle flames flicker" the flames read as a verb): the locator's flames, empty when the
+// clause is not of fire or of a light or none are found (a star has nothing drawn above it).
+LocatedPart flames_of_light(const Clause& c, const Rig& rig);
+
+// Whether a verb of primitive `p` aimed at the located part makes a plume rise: a jet (smoke,
+// steam, a spout) that bobs, swells or stretches.
+bool plume_rises(const LocatedPart* located, Primitive p);
+
+// A rising plume's growth about its base (a fraction of its length): its top goes up
+// kPlumeRise of the figure's height, the growth between kPlumeGrowMin and kPlumeGrowMax.
+double plume_growth(const Rig& rig, const LocatedPart& plume);
+inline constexpr double kPlumeRise = 0.12;     // issue 35's floor on a visible motion is 8 %
+inline constexpr double kPlumeGrowMin = 0.25;  // a long plume still swells by a quarter
+inline constexpr double kPlumeGrowMax = 0.6;   // a small one by at most this (it leaves the canvas)
+
+}  // namespace svgm

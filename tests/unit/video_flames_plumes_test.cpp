@@ -1,0 +1,146 @@
+// Things that move by themselves on drawings made for these tests (issue 35): a candle's flame
+// flickers about its base while the candle and the cake hold, a fire drawn as one blaze flickers
+// whole from its base, a plume of steam rises (its top goes up, its base stays where it leaves
+// the pot), and a drawing with no repeated drops whose prompt says it tumbles falls whole.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "procedural/motion_plan.h"
+#include "procedural/part_locator.h"
+
+#include "motion_drawing.h"
+using namespace svgm;
+using svgm::test::Drawing;
+
+namespace {
+
+// The points of path `p` of `scene` at frame f of animate_plan's output `pts` (F frames).
+std::vector<Vec2> path_points(const Scene& scene, const std::vector<Vec2>& pts, int F, size_t p, int f) {
+  const size_t per = pts.size() / F;
+  size_t first = 0;
+  for (size_t q = 0; q < p; ++q)
+    for (const auto& sp : scene.paths[q].subpaths) first += sp.points.size();
+  size_t n = 0;
+  for (const auto& sp : scene.paths[p].subpaths) n += sp.points.size();
+  return {pts.begin() + f * per + first, pts.begin() + f * per + first + n};
+}
+
+}  // namespace
+
+TEST_SUITE("video") {
+
+TEST_CASE("flames: a candle's flame is the tip drawn over it; 'flame' names the kind") {
+  CHECK(part_shape_of("flames", FigureClass::None) == PartShape::Flames);
+  CHECK(part_shape_of("flame", FigureClass::Flame) == PartShape::Flames);
+  const Drawing d("candle_flames.svg");
+  const LocatedPart f = locate_part(d.rig, PartShape::Flames);
+  // Two tips (each flame over a candle), the first with its core; not the candles under them.
+  CHECK(f.lobes.size() == 2);
+  CHECK(f.paths == std::vector<int>{3, 4, 5});
+  for (const ArmLobe& l : f.lobes) CHECK(l.pivot.y == doctest::Approx(78));  // each flame's lowest middle
+}
+
+TEST_CASE("flames: the candle flames flicker, each about its base; the cake and the candles hold") {
+  const Drawing d("candle_flames.svg");
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the candle flames flicker"), d.rig, 1);
+  REQUIRE(plan.actions.size() == 1);  // the flicker's stretch of the whole figure is left out
+  const PlannedAction& a = plan.actions[0];
+  CHECK(a.verb == "flicker");
+  CHECK(a.region == Region::Located);
+  CHECK(a.primitive == Primitive::Swing);
+  CHECK(a.cycles >= 3);
+  CHECK(a.why.find("the flames found as flames: 2 tips drawn above the body's top") != std::string::npos);
+  const auto t = d.travel(plan);
+  CHECK(t[0] == 0.0);  // the cake
+  CHECK(t[1] == 0.0);  // the candles
+  CHECK(t[2] == 0.0);
+  CHECK(t[3] > 5.0);   // the flames and the core of one
+  CHECK(t[4] > 2.0);
+  CHECK(t[5] > 5.0);
+}
+
+TEST_CASE("flames: candles that flicker, no flame named, flicker by their flames; the stretch of the whole is left out") {
+  const Drawing d("candle_flames.svg");
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the candles flicker"), d.rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].verb == "flicker");
+  CHECK(plan.actions[0].region == Region::Located);
+  CHECK(plan.actions[0].lobe_paths == std::vector<int>{3, 4, 5});
+  const auto t = d.travel(plan);
+  CHECK(t[0] == 0.0);
+  CHECK(t[1] == 0.0);
+  CHECK(t[3] > 5.0);
+}
+
+TEST_CASE("flames: a fire drawn as one blaze flickers whole, bending and stretching up from its base") {
+  const Drawing d("blaze.svg");
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the fire flickers"), d.rig, 1);
+  REQUIRE(plan.actions.size() == 2);
+  CHECK(plan.actions[0].verb == "flicker");
+  CHECK(plan.actions[0].primitive == Primitive::Bend);
+  CHECK(plan.actions[0].anchored == 4);  // held at its bottom
+  CHECK(plan.actions[1].primitive == Primitive::Stretch);
+  const int F = 13;
+  const std::vector<Vec2> pts = animate_plan(d.scene, d.rig, plan, F);
+  // The tip (100, 20) moves more than 8 % of the figure's height (160); the bottom of the
+  // outline (its lowest point, y about 172) hardly at all.
+  const std::vector<Vec2> rest = path_points(d.scene, pts, F, 0, 0);
+  size_t low = 0;
+  for (size_t i = 0; i < rest.size(); ++i)
+    if (rest[i].y > rest[low].y) low = i;
+  double tip = 0, base = 0;
+  for (int f = 1; f < F; ++f) {
+    const std::vector<Vec2> q = path_points(d.scene, pts, F, 0, f);
+    tip = std::max(tip, std::hypot(q[0].x - rest[0].x, q[0].y - rest[0].y));
+    base = std::max(base, std::hypot(q[low].x - rest[low].x, q[low].y - rest[low].y));
+  }
+  CHECK(tip > 0.08 * 160);
+  CHECK(base < 0.25 * tip);
+}
+
+TEST_CASE("plumes: steam rises from the pot, swelling up from its base; the pot holds") {
+  const Drawing d("steam_pot.svg");
+  const MotionPlan plan = plan_from_prompt(parse_prompt("steam rises from the pot"), d.rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  const PlannedAction& a = plan.actions[0];
+  CHECK(a.region == Region::Located);
+  CHECK(a.primitive == Primitive::Pulse);
+  CHECK(a.why.find("a plume rises: it swells up from its base") != std::string::npos);
+  const int F = 13;
+  const std::vector<Vec2> pts = animate_plan(d.scene, d.rig, plan, F);
+  const std::vector<Vec2> rest = path_points(d.scene, pts, F, 1, 0);
+  auto top = [](const std::vector<Vec2>& q) { double y = 1e9; for (Vec2 p : q) y = std::min(y, p.y); return y; };
+  auto bottom = [](const std::vector<Vec2>& q) { double y = -1e9; for (Vec2 p : q) y = std::max(y, p.y); return y; };
+  double highest = top(rest), lowest = bottom(rest);
+  for (int f = 1; f < F; ++f) {
+    const std::vector<Vec2> q = path_points(d.scene, pts, F, 1, f);
+    highest = std::min(highest, top(q));
+    lowest = std::max(lowest, bottom(q));
+  }
+  // Its top goes up at least 8 % of the figure's height (150: y 30 to 180); its base (y 100,
+  // where it leaves the pot) does not go down into the pot.
+  CHECK(top(rest) - highest >= 0.08 * 150);
+  CHECK(lowest - bottom(rest) < 1.0);
+  CHECK(d.travel(plan)[0] == 0.0);  // the pot
+}
+
+TEST_CASE("a fall with no repeated drops: the feather tumbles, the whole of it going down first and back") {
+  const Drawing d("feather.svg");
+  REQUIRE(d.rig.repeated.empty());
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the feather tumbles to the ground"), d.rig, 1);
+  REQUIRE(plan.actions.size() == 2);
+  CHECK(plan.actions[0].verb == "tumble");
+  CHECK(plan.actions[0].primitive == Primitive::Bob);
+  CHECK(plan.actions[0].vertical == -1);  // down and back, never above where it was
+  CHECK(plan.actions[1].primitive == Primitive::Rock);
+  CHECK(plan.actions[0].why.find("nothing drawn apart to fall: the figure falls itself") != std::string::npos);
+  const int F = 13;
+  const std::vector<Vec2> pts = animate_plan(d.scene, d.rig, plan, F);
+  // The quill's top (100, 40) goes down more than 8 % of the figure's height (140) at mid-loop.
+  const Vec2 rest = path_points(d.scene, pts, F, 1, 0)[0], mid = path_points(d.scene, pts, F, 1, F / 2)[0];
+  CHECK(mid.y - rest.y > 0.08 * 140);
+}
+
+}  // TEST_SUITE
