@@ -1,10 +1,7 @@
 // Per-frame colour correction against the drawing's colours (see colour_correction.h).
 #include "fit/target/colour_correction.h"
 
-#include "fit/target/edge_width.h"
-
 #include <Eigen/Dense>
-#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -136,28 +133,6 @@ void apply(const std::array<float, 12>& m, const float* c, float* out) {
     out[j] = std::clamp(m[4 * j] * c[0] + m[4 * j + 1] * c[1] + m[4 * j + 2] * c[2] + m[4 * j + 3], 0.f, 1.f);
 }
 
-// Clears the flat mark of pixels whose (2r+1)-square window holds a value further than
-// kFlatTolerance from theirs in some channel (per-channel max and min filters).
-void keep_wide_flat(const float* rgba, int w, int h, int r, std::vector<char>& is_flat) {
-  cv::Mat rgb(h, w, CV_32FC3);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const float* p = rgba + (static_cast<size_t>(y) * w + x) * 4;
-      rgb.at<cv::Vec3f>(y, x) = cv::Vec3f(p[0], p[1], p[2]);
-    }
-  cv::Mat hi, lo;
-  const cv::Mat k = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * r + 1, 2 * r + 1));
-  cv::dilate(rgb, hi, k, cv::Point(-1, -1), 1, cv::BORDER_REPLICATE);
-  cv::erode(rgb, lo, k, cv::Point(-1, -1), 1, cv::BORDER_REPLICATE);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      char& f = is_flat[static_cast<size_t>(y) * w + x];
-      if (!f) continue;
-      const cv::Vec3f c = rgb.at<cv::Vec3f>(y, x), a = hi.at<cv::Vec3f>(y, x), b = lo.at<cv::Vec3f>(y, x);
-      for (int j = 0; j < 3; ++j) f = f && a[j] - c[j] <= kFlatTolerance && c[j] - b[j] <= kFlatTolerance;
-    }
-}
-
 }  // namespace
 
 ColourCorrection correct_colours(float* rgba, int w, int h, const std::vector<std::array<float, 3>>& palette) {
@@ -168,11 +143,8 @@ ColourCorrection correct_colours(float* rgba, int w, int h, const std::vector<st
   if (std::find(colours.begin(), colours.end(), std::array<float, 3>{1, 1, 1}) == colours.end())
     colours.push_back({1, 1, 1});
 
-  // Flat pixels, found once on the uncorrected frame (an affine map keeps flatness roughly):
-  // first every 8-neighbour within kFlatTolerance; then, on a blurred frame, every pixel within
-  // about one blur sigma too, so the tails of the edges' ramps are not taken for flat colour.
-  const size_t n = static_cast<size_t>(w) * h;
-  std::vector<char> is_flat(n, 0);
+  // Flat pixels, found once on the uncorrected frame (an affine map keeps flatness roughly).
+  std::vector<int> flat;
   for (int y = 1; y + 1 < h; ++y)
     for (int x = 1; x + 1 < w; ++x) {
       const float* p = rgba + (static_cast<size_t>(y) * w + x) * 4;
@@ -183,15 +155,8 @@ ColourCorrection correct_colours(float* rgba, int w, int h, const std::vector<st
           ok = std::fabs(q[0] - p[0]) <= kFlatTolerance && std::fabs(q[1] - p[1]) <= kFlatTolerance &&
                std::fabs(q[2] - p[2]) <= kFlatTolerance;
         }
-      is_flat[static_cast<size_t>(y) * w + x] = ok;
+      if (ok) flat.push_back(y * w + x);
     }
-  const EdgeWidth edges = measure_edge_width(rgba, w, h, is_flat);
-  out.edge_sigma = edges.sigma;
-  out.flat_radius = std::max(1, static_cast<int>(std::lround(edges.sigma)));
-  if (out.flat_radius > 1) keep_wide_flat(rgba, w, h, out.flat_radius, is_flat);
-  std::vector<int> flat;
-  for (size_t i = 0; i < n; ++i)
-    if (is_flat[i]) flat.push_back(static_cast<int>(i));
 
   std::array<float, 12> map = out.map;
   const size_t nc = colours.size();
@@ -242,6 +207,7 @@ ColourCorrection correct_colours(float* rgba, int w, int h, const std::vector<st
   // (normalised convolution: smoothed gains over smoothed evidence), divides the frame where
   // there is enough evidence. A darkened part is then its own colour again instead of looking
   // like a darker colour of the drawing, which the fit would otherwise grow over it.
+  const size_t n = static_cast<size_t>(w) * h;
   std::vector<float> gain_sum(n, 0.f), support(n, 0.f);
   for (int i : flat) {
     float c[3], g = 1;
@@ -257,6 +223,8 @@ ColourCorrection correct_colours(float* rgba, int w, int h, const std::vector<st
   box_blur(gain_sum, w, h, r);
   box_blur(support, w, h, r);
   // Apply everywhere, then snap the flat pixels that clearly show one of the colours.
+  std::vector<char> is_flat(n, 0);
+  for (int i : flat) is_flat[static_cast<size_t>(i)] = 1;
   for (size_t i = 0; i < n; ++i) {
     float* p = rgba + i * 4;
     float c[3];

@@ -6,10 +6,8 @@
 // blurred-MSE loss pull the drawing's edges towards the wrong place. The drawing itself tells
 // us what the frame should contain: its own flat colours (or the recolouring palette) and the
 // white background. So, per frame:
-//   1. flat pixels (every 8-neighbour within kFlatTolerance; on a blurred frame, every pixel
-//      within the edges' blur sigma, measured on the frame by measure_edge_width, so the
-//      gentle tails of blurred edges are not taken for flat colour and snapped) are matched to
-//      the nearest of those colours, accepting only clear matches (close, and much closer than the second
+//   1. flat pixels (every 8-neighbour within kFlatTolerance) are matched to the nearest of
+//      those colours, accepting only clear matches (close, and much closer than the second
 //      nearest: a ratio test, as in feature matching); a flat pixel that no colour clearly
 //      explains is matched by hue (the colour whose multiple by a gain in 0.7..1.3 is
 //      nearest), since shading darkens a part towards other colours of the drawing without
@@ -36,8 +34,6 @@ struct ColourCorrection {
   int colours_matched = 0;  // palette colours (white included) with enough flat pixels
   size_t pixels_snapped = 0;
   size_t pixels_shaded = 0;  // pixels divided by the smoothed shading gain
-  double edge_sigma = 0;    // the frame's edge blur, measure_edge_width (0: none measured)
-  int flat_radius = 1;      // flatness judged over this many pixels around (1: the 8-neighbours)
   bool applied = false;     // false: the frame was left as it was (too little evidence)
 };
 
