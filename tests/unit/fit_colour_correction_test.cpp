@@ -4,6 +4,7 @@
 // third of its container's frame rate has its keyframes timed at the first frame of each run.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -59,6 +60,32 @@ TEST_CASE("colour correction: an 8% tint on an off-white background comes back e
     CHECK(px(f, 45, 20)[j] == blue[static_cast<size_t>(j)]);
     CHECK(px(f, 2, 2)[j] == 1.f);
   }
+}
+
+TEST_CASE("colour correction: an edge pixel gets only the map's change of luma, the same in every channel") {
+  const Colour red{0.8f, 0.1f, 0.1f}, blue{0.1f, 0.2f, 0.9f};
+  auto tint = [](Colour c) { return Colour{std::min(1.f, c[0] * 1.08f), c[1], c[2] * 0.92f}; };
+  std::vector<float> f = two_blocks(tint(red), tint(blue), {0.95f, 0.95f, 0.95f});
+  const std::vector<float> before = f;
+  const ColourCorrection cc = correct_colours(f.data(), kW, kH, {red, blue});
+  REQUIRE(cc.applied);
+  // (8, 20): the red block's first column, beside the paper: not flat. The map alone would
+  // take it to red (a different change per channel); it gets the luma of that change.
+  const float* p = px(before, 8, 20);
+  float mapped[3], l = 0;
+  for (int j = 0; j < 3; ++j) {
+    const float v = cc.map[4 * j] * p[0] + cc.map[4 * j + 1] * p[1] + cc.map[4 * j + 2] * p[2] + cc.map[4 * j + 3];
+    mapped[j] = std::clamp(v, 0.f, 1.f);
+  }
+  l = 0.299f * (mapped[0] - p[0]) + 0.587f * (mapped[1] - p[1]) + 0.114f * (mapped[2] - p[2]);
+  CHECK(std::fabs(mapped[0] - p[0] - (mapped[2] - p[2])) > 0.05);  // the map's own change is not grey
+  // Then the shading step divides the pixel by the part's smoothed gain, one number for all
+  // three channels (here about 1.01: the tint's 1.08 and 0.92 against red's own hue).
+  const float g = (p[0] + l) / px(f, 8, 20)[0];
+  CHECK(g == doctest::Approx(1.0).epsilon(0.05));
+  for (int j = 1; j < 3; ++j) CHECK(px(f, 8, 20)[j] * g == doctest::Approx(p[j] + l).epsilon(1e-5));
+  // Flat interiors are still the drawing's colours exactly.
+  for (int j = 0; j < 3; ++j) CHECK(px(f, 15, 20)[j] == red[static_cast<size_t>(j)]);
 }
 
 TEST_CASE("colour correction: a 15% shading ramp inside a part is snapped flat") {

@@ -18,8 +18,9 @@
 //      normal equations); steps 1-2 alternate a few times, as in ICP;
 //   3. shading: each flat pixel's gain against its colour, smoothed into a field over 1/12 of
 //      the frame (normalised convolution), divides the frame where there is evidence;
-//   4. the map is applied to the whole frame, and flat pixels that clearly match a colour are
-//      set to it exactly (the shading and noise the steps above leave).
+//   4. the map is applied to the whole frame (off the flats, only its change of luma: the
+//      codec's chroma there is smeared, not shifted), and flat pixels that clearly match a
+//      colour are set to it exactly (the shading and noise the steps above leave).
 // Edge pixels keep their corrected values: they hold the sub-pixel edge positions we fit.
 #pragma once
 
