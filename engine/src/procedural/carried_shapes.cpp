@@ -1,8 +1,10 @@
 // Small shapes a bending region carries move rigidly (carried_shapes.h).
 #include "procedural/carried_shapes.h"
 
+#include <array>
 #include <cmath>
 
+#include "motion/arap.h"
 #include "procedural/shape_overlap.h"
 
 namespace svgm {
@@ -75,14 +77,14 @@ void keep_carried_rigid(const Scene& scene, const std::vector<std::vector<size_t
       for (size_t i : shape) c0 = c0 + rest[i], c1 = c1 + moved[i];
       c0 = (1.0 / shape.size()) * c0;
       c1 = (1.0 / shape.size()) * c1;
-      // The rotation that best takes the rest points about their centre onto the moved ones.
-      double dot = 0, crs = 0;
+      // The rotation that best takes the rest points about their centre onto the moved ones
+      // (the ARAP local step's closed form).
+      std::array<double, 4> m{};
       for (size_t i : shape) {
-        const Vec2 r = rest[i] - c0, m = moved[i] - c1;
-        dot += r.x * m.x + r.y * m.y;
-        crs += r.x * m.y - r.y * m.x;
+        const Vec2 e = rest[i] - c0, f = moved[i] - c1;
+        m[0] += f.x * e.x, m[1] += f.x * e.y, m[2] += f.y * e.x, m[3] += f.y * e.y;
       }
-      const double a = std::atan2(crs, dot), cs = std::cos(a), sn = std::sin(a);
+      const double a = best_rotation_angle(m), cs = std::cos(a), sn = std::sin(a);
       for (size_t i : shape) {
         const Vec2 r = rest[i] - c0;
         moved[i] = c1 + Vec2{cs * r.x - sn * r.y, sn * r.x + cs * r.y};
