@@ -5,7 +5,8 @@
 #   lottie  fit writes animation.json beside animation.svg; lottie-web (headless Chromium) and
 #           librlottie draw it like `svgmotion render --time` at 5 times (PSNR bar below)
 #   lottie_paint  the same for gradients (tests/data/lottie/gradients.svg) and clip-path, mask
-#           and group opacity (man_clip_mask.svg), with animation.lottie drawn by dotlottie-web,
+#           and group opacity (man_clip_mask.svg), drawn by lottie-web (svg and canvas renderers),
+#           librlottie and, from animation.lottie, dotlottie-web,
 #           both files valid against the lottie-spec schema (ajv), every player >= 40 dB
 # TOOLS_DIR holds png_psnr and rlottie_frames (tests/tools); NODE_MODULES holds lottie-web and
 # puppeteer-core, and for lottie_paint dotlottie-web, ajv and the lottie-spec schema
@@ -227,9 +228,10 @@ lottie_paint)
     frames=(0 1 2 3 5)
     must "$bin" render "$out/animation.svg" -o "$tmp/$name/ours_%d.png" --fps 24 --size $W 2>/dev/null
     must node "$here/lottie/lottie_web_frames.js" "$node_modules" "$out/animation.json" $W $H "$tmp/$name/web_" svg "${frames[@]}"
+    must node "$here/lottie/lottie_web_frames.js" "$node_modules" "$out/animation.json" $W $H "$tmp/$name/canvas_" canvas "${frames[@]}"
     must "$tools/rlottie_frames" "$out/animation.json" $W $H "$tmp/$name/rl_" "${frames[@]}"
     must node "$here/lottie/dotlottie_web_frames.js" "$node_modules" "$out/animation.lottie" $W $H "$tmp/$name/dl_" "${frames[@]}"
-    for player in web rl dl; do
+    for player in web canvas rl dl; do
       row=()
       for i in "${!frames[@]}"; do row+=("$(psnr "$tmp/$name/ours_${frames[$i]}.png" "$tmp/$name/${player}_$i.png")"); done
       echo "# $name: PSNR vs svgmotion render at frames ${frames[*]}: $player ${row[*]}"

@@ -191,7 +191,7 @@ TEST_CASE("lottie: clip-path, mask and group opacity become precompositions with
   const auto& L = s.j["layers"];
   REQUIRE(L.size() == 4);
   // Top: "both" = clip matte (td) above a precomp (alpha matte, the opacity) of [mask matte,
-  // content (luma matte)].
+  // content (alpha matte)].
   CHECK(L[0]["td"] == 1);
   CHECK(L[1]["tt"] == 1);
   CHECK(L[1]["ks"]["o"]["k"] == 50);
@@ -205,7 +205,32 @@ TEST_CASE("lottie: clip-path, mask and group opacity become precompositions with
   CHECK(masked[0]["td"] == 1);
   CHECK(masked[0]["hasMask"] == true);  // the mask's region
   CHECK(masked[0]["masksProperties"][0]["mode"] == "a");
-  CHECK(masked[1]["tt"] == 3);  // luminance
+  CHECK(masked[1]["tt"] == 1);  // a luminance mask, as an alpha matte of its content made white
+  nlohmann::json mask_content;
+  for (const auto& a : s.j["assets"])
+    if (a["id"] == masked[0]["refId"]) mask_content = a["layers"];
+  REQUIRE(mask_content.size() == 1);
+  CHECK(item(mask_content[0], "fl")["c"]["k"] == nlohmann::json::array({1, 1, 1, 1}));  // #fff: L 1, alpha 1
+}
+
+TEST_CASE("lottie: group opacity over overlapping paths is an alpha matte of the canvas, one path keeps it as opacity") {
+  const Static s = export_static(R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="40" height="30">
+    <g opacity="0.4"><rect width="20" height="20" fill="#f00"/><rect x="10" y="10" width="20" height="20" fill="#00f"/></g>
+    <g opacity="0.5"><rect x="30" width="5" height="5"/></g></svg>)svg");
+  const auto& L = s.j["layers"];
+  REQUIRE(L.size() == 3);
+  // Top: the one-path group, faded by its layer's opacity.
+  CHECK(L[0]["ks"]["o"]["k"] == 50);
+  CHECK(L[0].find("tt") == L[0].end());
+  // The two rects: a canvas-wide matte at 40 % above their precomposition at 100 %.
+  CHECK(L[1]["td"] == 1);
+  CHECK(L[1]["ks"]["o"]["k"] == 40);
+  const auto rc = L[1]["shapes"][0]["it"][0];
+  CHECK(rc["ty"] == "rc");
+  CHECK(rc["s"]["k"] == nlohmann::json::array({42, 32}));
+  CHECK(L[2]["tt"] == 1);
+  CHECK(L[2]["ks"]["o"]["k"] == 100);
+  CHECK(L[2]["ind"].get<int>() == L[1]["ind"].get<int>() + 1);
 }
 
 TEST_CASE("lottie: a dashed stroke keeps its dashes, caps and joins (an odd list repeated, in canvas units)") {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "export/lottie_luma_matte.h"
 #include "export/lottie_paint.h"
 
 namespace svgm::lottie {
@@ -11,7 +12,7 @@ namespace {
 
 // Layer `ty` codes and matte modes.
 constexpr int kPrecompLayer = 0, kShapeLayer = 4;
-constexpr int kAlphaMatte = 1, kLumaMatte = 3;
+constexpr int kAlphaMatte = 1, kInvertedAlphaMatte = 2;
 
 class Composer {
  public:
@@ -33,11 +34,16 @@ class Composer {
     std::vector<int> items;  // >= 0: a path index; < 0: -(child node + 1)
   };
 
+  // Paths drawn from outside the scene's list (a mask's content) with the gradients they index.
+  struct PathSource {
+    const std::vector<Path>* paths;
+    const std::vector<Gradient>* gradients;
+  };
+
   // The layers (top first) drawing `paths` (back to front) of the scene's paths (`source`
   // null) or of a mask's content, with their compositing layers as precompositions.
-  std::vector<std::string> paths_in_layers(const std::vector<int>& paths, const std::vector<Path>* source,
-                                           bool with_nulls) {
-    const std::vector<Path>& all = source ? *source : scene_.paths;
+  std::vector<std::string> paths_in_layers(const std::vector<int>& paths, const PathSource* source, bool with_nulls) {
+    const std::vector<Path>& all = source ? *source->paths : scene_.paths;
     std::vector<Node> nodes(1);  // nodes[0]: the composition itself
     std::vector<int> open = {0};  // node indices, outermost first
     for (const int p : paths) {
@@ -59,15 +65,14 @@ class Composer {
     return node_layers(nodes, 0, source, with_nulls);
   }
 
-  std::vector<std::string> node_layers(const std::vector<Node>& nodes, int n, const std::vector<Path>* source,
-                                       bool with_nulls) {
+  std::vector<std::string> node_layers(const std::vector<Node>& nodes, int n, const PathSource* source, bool with_nulls) {
     std::vector<std::string> out;
     std::vector<bool> groups(scene_.groups.size(), false);
     const Node& node = nodes[static_cast<size_t>(n)];
     for (auto it = node.items.rbegin(); it != node.items.rend(); ++it) {
       if (*it >= 0) {
         if (source) {
-          out.push_back(static_path_layer((*source)[static_cast<size_t>(*it)], next_ind_++));
+          out.push_back(static_path_layer((*source->paths)[static_cast<size_t>(*it)], next_ind_++, *source->gradients, false));
         } else {
           out.push_back(in_.path_layers[static_cast<size_t>(*it)]);
           const int g = in_.path_group[static_cast<size_t>(*it)];
@@ -77,8 +82,8 @@ class Composer {
       }
       const int child = -*it - 1;
       const std::string content = asset(node_layers(nodes, child, source, with_nulls));
-      for (std::string& l : layer_instance(scene_.layers[static_cast<size_t>(nodes[static_cast<size_t>(child)].layer)],
-                                           content, nodes[static_cast<size_t>(child)].layer))
+      const int layer = nodes[static_cast<size_t>(child)].layer;
+      for (std::string& l : layer_instance(scene_.layers[static_cast<size_t>(layer)], content, layer, paths_below(nodes, child) > 1))
         out.push_back(std::move(l));
     }
     // A group's null layer (a handle with the identity transform) beside its paths, in each
@@ -89,33 +94,98 @@ class Composer {
     return out;
   }
 
-  // The layers (top first) drawing compositing layer `l` whose content is asset `content`.
-  std::vector<std::string> layer_instance(const Layer& l, const std::string& content, int index) {
-    const std::string name = "layer " + std::to_string(index);
-    if (l.clip < 0 && l.mask < 0) return {precomp_layer(name, content, l.opacity, 0, false, {})};
-    std::string masked = content;
-    std::vector<std::string> out;
-    if (l.mask >= 0) {
-      std::vector<std::string> pair = {mask_matte(l.mask),
-                                       precomp_layer(name, content, l.clip < 0 ? l.opacity : 1.0f, matte_mode(l.mask), false, {})};
-      if (l.clip < 0) return pair;
-      masked = asset(pair);
-    }
-    return {clip_matte(l.clip), precomp_layer(name, masked, l.opacity, kAlphaMatte, false, {})};
+  // The paths drawn by node `n` and the nodes inside it.
+  static int paths_below(const std::vector<Node>& nodes, int n) {
+    int count = 0;
+    for (const int i : nodes[static_cast<size_t>(n)].items) count += i >= 0 ? 1 : paths_below(nodes, -i - 1);
+    return count;
   }
 
-  int matte_mode(int mask) const { return scene_.masks[static_cast<size_t>(mask)].luminance ? kLumaMatte : kAlphaMatte; }
+  // The layers (top first) drawing compositing layer `l` whose content is asset `content`.
+  //
+  // Its group opacity is the outermost layer's opacity, except over content of more than one
+  // path: lottie-web's canvas renderer fades each path of a precomposition on its own (its
+  // globalAlpha), so overlapping paths would show through each other. There the content is
+  // taken through an alpha matte of the whole canvas at that opacity, which every player
+  // composites offscreen (the svg renderers and librlottie, ThorVG, fade a precomposition as
+  // one either way).
+  std::vector<std::string> layer_instance(const Layer& l, const std::string& content, int index, bool many_paths) {
+    const std::string name = "layer " + std::to_string(index);
+    const bool fade_by_matte = many_paths && l.opacity < 1;
+    const float opacity = fade_by_matte ? 1.0f : l.opacity;
+    std::vector<std::string> out;
+    if (l.clip < 0 && l.mask < 0) {
+      out = {precomp_layer(name, content, opacity, 0, false, {})};
+    } else {
+      std::string masked = content;
+      if (l.mask >= 0) {
+        out = {mask_matte(l.mask), precomp_layer(name, content, l.clip < 0 ? opacity : 1.0f, kAlphaMatte, false, {})};
+        if (l.clip >= 0) masked = asset(out);
+      }
+      if (l.clip >= 0) out = {clip_matte(l.clip), precomp_layer(name, masked, opacity, kAlphaMatte, false, {})};
+    }
+    if (!fade_by_matte) return out;
+    const std::string faded = out.size() == 1 ? content : asset(out);
+    return {opacity_matte(l.opacity), precomp_layer(name, faded, 1, kAlphaMatte, false, {})};
+  }
 
-  // The matte layer (`td` 1) of mask `m`: its content in a precomposition limited to its region.
+  // A matte (`td` 1) of opacity `o` over the whole canvas: a rectangle one pixel larger on
+  // every side, filled opaque, its layer at opacity o.
+  std::string opacity_matte(float o) {
+    JsonText j(in_.decimals);
+    begin_layer(j, next_ind_++, "group opacity", kShapeLayer, o, 0, true);
+    const double w = std::max(1.0, scene_.width), h = std::max(1.0, scene_.height);
+    j.raw(",\"shapes\":[{\"ty\":\"gr\",\"it\":[{\"ty\":\"rc\",\"p\":{\"a\":0,\"k\":[").coord(w / 2).raw(",");
+    j.coord(h / 2).raw("]},\"s\":{\"a\":0,\"k\":[").coord(w + 2).raw(",").coord(h + 2);
+    j.raw("]},\"r\":{\"a\":0,\"k\":0}},{\"ty\":\"fl\",\"c\":{\"a\":0,\"k\":[0,0,0,1]},\"o\":{\"a\":0,\"k\":100},\"r\":1,\"bm\":0},");
+    j.raw(kGroupTransform).raw("]}]");
+    end_layer(j);
+    return j.text();
+  }
+
+  // The matte layer (`td` 1) of mask `m`, an alpha matte: its content (a luminance mask's
+  // rewritten so that alpha is its value) in a precomposition limited to its region.
   std::string mask_matte(int m) {
     const Mask& mask = scene_.masks[static_cast<size_t>(m)];
-    std::vector<int> paths;
-    for (size_t i = 0; i < mask.paths.size(); ++i) paths.push_back(static_cast<int>(i));
-    std::string content = asset(paths_in_layers(paths, &mask.paths, false));
+    std::string content;
+    if (mask.luminance) {
+      content = luminance_content(mask);
+    } else {
+      std::vector<int> paths;
+      for (size_t i = 0; i < mask.paths.size(); ++i) paths.push_back(static_cast<int>(i));
+      const PathSource source = {&mask.paths, &scene_.gradients};
+      content = asset(paths_in_layers(paths, &source, false));
+    }
     if (mask.mask >= 0)
-      content = asset({mask_matte(mask.mask), precomp_layer("mask content", content, 1, matte_mode(mask.mask), false, {})});
+      content = asset({mask_matte(mask.mask), precomp_layer("mask content", content, 1, kAlphaMatte, false, {})});
     if (mask.region.empty()) content = asset({});  // an empty region: the mask hides everything
     return precomp_layer("mask " + std::to_string(m), content, 1, 0, true, mask.region);
+  }
+
+  // A luminance mask's content as an asset whose alpha is the mask's value (lottie_luma_matte.h):
+  // its paths white at alpha L a, each black path over earlier ones cutting them as an inverted
+  // alpha matte.
+  std::string luminance_content(const Mask& mask) {
+    const AlphaMatteContent white = luminance_as_alpha(mask, scene_.gradients);
+    if (!white.exact) approximate_.push_back("luminance mask of grey shapes over each other drawn as their alpha");
+    const PathSource source = {&white.paths, &white.gradients};
+    std::vector<std::string> below;  // the layers (top first) of the content so far
+    std::vector<int> run;            // paths drawn over `below` since the last cut
+    for (size_t i = 0; i <= white.paths.size(); ++i) {
+      if (i < white.paths.size() && !white.cut[i]) {
+        run.push_back(static_cast<int>(i));
+        continue;
+      }
+      std::vector<std::string> layers = paths_in_layers(run, &source, false);
+      layers.insert(layers.end(), below.begin(), below.end());
+      below = std::move(layers);
+      run.clear();
+      if (i == white.paths.size()) break;
+      const std::string so_far = asset(below);
+      below = {static_path_layer(white.paths[i], next_ind_++, white.gradients, true),
+               precomp_layer("cut by " + white.paths[i].id, so_far, 1, kInvertedAlphaMatte, false, {})};
+    }
+    return asset(below);
   }
 
   // The matte layer (`td` 1) of clip `c`: its shapes in opaque black.
@@ -155,10 +225,11 @@ class Composer {
     return j.text();
   }
 
-  // A static path (a mask's content) as a shape layer with its paints.
-  std::string static_path_layer(const Path& p, int ind) {
+  // A static path (a mask's content) as a shape layer with its paints (`gradients` indexed by
+  // its gradient indices); a matte (`td` 1) when `matte`.
+  std::string static_path_layer(const Path& p, int ind, const std::vector<Gradient>& gradients, bool matte) {
     JsonText j(in_.decimals);
-    begin_layer(j, ind, p.id, kShapeLayer, p.layer >= 0 ? p.local_opacity : p.opacity, 0, false);
+    begin_layer(j, ind, p.id, kShapeLayer, p.layer >= 0 ? p.local_opacity : p.opacity, 0, matte);
     j.raw(",\"shapes\":[{\"ty\":\"gr\",\"nm\":").str(p.id).raw(",\"it\":[");
     const size_t shapes_begin = j.text().size();
     write_shapes(j, p);
@@ -167,8 +238,8 @@ class Composer {
       for (const Vec2& q : sp.points) rest.push_back(q.x), rest.push_back(q.y);
     PaintInputs paint;
     paint.points = {rest.data()};
-    if (p.fill_gradient >= 0) paint.fill = {{&scene_.gradients[static_cast<size_t>(p.fill_gradient)]}, {0}};
-    if (p.stroke_gradient >= 0) paint.stroke = {{&scene_.gradients[static_cast<size_t>(p.stroke_gradient)]}, {0}};
+    if (p.fill_gradient >= 0) paint.fill = {{&gradients[static_cast<size_t>(p.fill_gradient)]}, {0}};
+    if (p.stroke_gradient >= 0) paint.stroke = {{&gradients[static_cast<size_t>(p.stroke_gradient)]}, {0}};
     write_paint_items(j, shapes_begin, p, paint, approximate_);
     j.raw(j.text().size() == shapes_begin ? "" : ",").raw(kGroupTransform).raw("]}]");
     end_layer(j);

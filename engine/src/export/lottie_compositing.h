@@ -6,9 +6,11 @@
 // content (its paths' shape layers and its inner compositing layers, in paint order), with
 //   - L's group opacity as that layer's opacity (`ks.o`): the content is composited first and
 //     faded once, instead of each path being faded on its own;
-//   - L's mask as a track matte: the layer right above it (`td` 1) draws the mask's content (a
-//     precomposition of its paths, with their paints and layers, limited to the mask's region by
-//     a Lottie mask), and L's layer takes it as a luma (`tt` 3) or alpha (`tt` 1) matte;
+//   - L's mask as an alpha matte (`tt` 1): the layer right above it (`td` 1) draws the mask's
+//     content (a precomposition of its paths, with their paints and layers, limited to the
+//     mask's region by a Lottie mask). A luminance mask's content is rewritten so that its alpha
+//     is the mask's value (lottie_luma_matte.h), not written as a luma matte (`tt` 3), which
+//     lottie-web's canvas renderer cannot draw;
 //   - L's clip-path as an alpha matte drawing its shapes in opaque black (each under its
 //     clip-rule); a clipPath's own clip-path clips that matte in turn. With both a clip and a
 //     mask, the masked content is precomposed once more and clipped.
