@@ -40,11 +40,11 @@ int cmd_export(const std::vector<std::string>& argv) {
   std::stringstream list(a.get("--format").value_or("svg,lottie"));
   for (std::string f; std::getline(list, f, ',');) {
     if (f == "svg") settings.svg = true;
-    else if (f == "lottie") settings.lottie = true;
+    else if (f == "lottie" || f == "dotlottie") settings.lottie = true;  // animation.json and its .lottie, together
     else if (f == "gif" || f == "mp4" || f == "webm" || f == "webp") clips.push_back(f), settings.svg = true;
-    else throw Error("export: unknown format '" + f + "' (svg, lottie, gif, mp4, webm, webp)");
+    else throw Error("export: unknown format '" + f + "' (svg, lottie, dotlottie, gif, mp4, webm, webp)");
   }
-  if (!settings.svg && !settings.lottie) throw Error("export: --format names no format (svg, lottie, gif, mp4, webm, webp)");
+  if (!settings.svg && !settings.lottie) throw Error("export: --format names no format (svg, lottie, dotlottie, gif, mp4, webm, webp)");
   // Clip settings, checked before anything is written. The frame rate defaults to the fit's
   // (the target video's), so a 24 fps animation is not resampled to 30.
   const bool has_fps = a.has("--fps");
@@ -71,7 +71,7 @@ int cmd_export(const std::vector<std::string>& argv) {
     wrote += (wrote.empty() ? "" : ", ") + p.filename().string() + " (" + std::to_string(ec ? 0 : (size + 512) / 1024) + " kB)";
   };
   if (settings.svg) add(r.svg);
-  if (settings.lottie) add(fs::path(r.svg).replace_extension(".json"));
+  if (settings.lottie) add(fs::path(r.svg).replace_extension(".json")), add(fs::path(r.svg).replace_extension(".lottie"));
   for (const std::string& c : clips) {
     const fs::path clip = out / ("animation." + c);
     char fps[32];

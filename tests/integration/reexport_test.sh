@@ -109,7 +109,7 @@ one_error "export of a folder that is not a run or fit directory" 1 "svgmotion: 
 one_error "export of a file" 1 "svgmotion: $tmp/sq0.svg: not a folder" export "$tmp/sq0.svg"
 mkdir -p "$tmp/nockpt/.svgmotion"
 one_error "export without a checkpoint" 1 "svgmotion: $tmp/nockpt/checkpoint.bin: no checkpoint (no fit has run in $tmp/nockpt)" export "$tmp/nockpt"
-one_error "export of an unknown format" 1 "svgmotion: export: unknown format 'png' (svg, lottie, gif, mp4, webm, webp)" export "$tmp/fit" -o "$tmp/never" --format svg,png
+one_error "export of an unknown format" 1 "svgmotion: export: unknown format 'png' (svg, lottie, dotlottie, gif, mp4, webm, webp)" export "$tmp/fit" -o "$tmp/never" --format svg,png
 check "... writes nothing" '[[ ! -e $tmp/never ]]'
 one_error "export of a transparent mp4" 1 "svgmotion: export: --transparent is for gif, webm and webp clips (mp4's H.264 has no alpha)" export "$tmp/fit" -o "$tmp/never" --format svg,mp4 --transparent
 one_error "export --quality for a GIF" 1 "svgmotion: export: --quality is for mp4 and webm clips (a CRF, lower is better)" export "$tmp/fit" -o "$tmp/never" --format gif --quality 20
