@@ -128,10 +128,13 @@ inline float chroma_residual(float3 q, float3 v, __global float* e, int x) {
 }
 #endif
 
-/* Q at x of a row whose tiles are `row`, `in` pixels into its tiles (blur_y_loss_rows). */
-inline float3 qval(__global const half* Q, __global const int* row, int in, int x) {
+/* Where a row's Q is read from x on, to the end of x's tile (blur_y_loss_rows): pool pixel
+ * *at, advancing by *step (1 in a stored tile, 0 on the constant) per pixel. A lookup per
+ * tile, not per pixel: one per pixel made the row loop several times slower. */
+inline void q_tile_start(__global const int* row, int in, int x, size_t* at, int* step) {
   const int t = row[x / LOSS_TILE];
-  return vload_half4(t < 0 ? (size_t)(-1 - t) : (size_t)t * (LOSS_TILE * LOSS_TILE) + in + x % LOSS_TILE, Q).xyz;
+  *step = t < 0 ? 0 : 1;
+  *at = t < 0 ? (size_t)(-1 - t) : (size_t)t * (LOSS_TILE * LOSS_TILE) + in + x % LOSS_TILE;
 }
 
 /* Per (row, frame): E' = the y-blur of X' over the rows' extents, kept (with its extent) for
@@ -158,8 +161,8 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
   const size_t kc = (size_t)k - get_global_offset(1); /* the frame within the chunk */
   __global const float* f = Xb + kc * width * height * 3; /* packed RGB (vload3) */
   __global float* e = E + (kc * height + y) * width * 3;
-  /* Q's pixel (x, y) is pool pixel qrow[x / LOSS_TILE] (a tile's number or the constant's
-   * −1 − k) turned by qpix; the tiles of row y, looked up once per pixel. */
+  /* Row y's tiles in frame k's index (a tile's number in Q's pool, or the constant's −1 − k),
+   * and where row y starts within a tile. */
   __global const int* qrow = loss_frame_tiles(tiles, k, width, height) + (y / LOSS_TILE) * ((width + LOSS_TILE - 1) / LOSS_TILE);
   const int qin = (y % LOSS_TILE) * LOSS_TILE;
   /* Each tap's row contributes on its extent only (zero padding outside the frame and the
@@ -207,7 +210,10 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
       e[a + i] = v;
     }
   }
-  for (int x = lo; x <= hi; ++x) {
+  size_t qa = 0;
+  int qs = 0;
+  for (int x = lo; x <= hi; ++x, qa += qs) {
+    if (x == lo || x % LOSS_TILE == 0) q_tile_start(qrow, qin, x, &qa, &qs);
     float3 v = (float3)(0.0f);
     if (x >= fa && x <= fb) {
       v = vload3(x, e);
@@ -216,10 +222,13 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
         if (x >= ta[j] && x <= tb[j]) v += g_tap(j - LOSS_R) * vload3(r + j * width + x, f);
       vstore3(v, x, e);
     }
-    s += dot(2.0f * qval(Q, qrow, qin, x) + v, v);
+    s += dot(2.0f * vload_half4(qa, Q).xyz + v, v);
   }
 #else
-  for (int x = lo; x <= hi; ++x) {
+  size_t qa = 0;
+  int qs = 0;
+  for (int x = lo; x <= hi; ++x, qa += qs) {
+    if (x == lo || x % LOSS_TILE == 0) q_tile_start(qrow, qin, x, &qa, &qs);
     float3 v = (float3)(0.0f);
     if (x >= fa && x <= fb) {
 #if defined(CHROMA_R)
@@ -243,14 +252,14 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
       }
     }
 #if defined(CHROMA_R)
-    s += chroma_residual(qval(Q, qrow, qin, x), v, e, x);
+    s += chroma_residual(vload_half4(qa, Q).xyz, v, e, x);
 #elif defined(CHROMA_W)
     const float3 m = loss_metric(v);
     vstore3(m, x, e);
-    s += dot(2.0f * qval(Q, qrow, qin, x) + v, m);
+    s += dot(2.0f * vload_half4(qa, Q).xyz + v, m);
 #else
     vstore3(v, x, e);
-    s += dot(2.0f * qval(Q, qrow, qin, x) + v, v);
+    s += dot(2.0f * vload_half4(qa, Q).xyz + v, v);
 #endif
   }
 #endif
