@@ -45,7 +45,29 @@
  * halves the two largest buffers of the fit. The host computes Σ Q² and R from the rounded Q,
  * so the loss is exactly that of a target whose Q is the stored one; everything the kernels
  * add up stays in float.
+ *
+ * And they are stored by tiles of LOSS_TILE x LOSS_TILE pixels (raster/loss_tiles.h): a
+ * clipart frame is mostly white paper far from any ink, where Q and R are one value (the
+ * blurred background less the blurred white target), so each frame keeps only its tiles that
+ * are not all that value (near the figure, and at the frame's border, where zero padding bends
+ * the blurs). Layout (ClRaster::prepare_loss_constants): Q's pool and R's, pixels of four
+ * halves, start with frame k's constant at pixel k, then hold the stored tiles, each
+ * LOSS_TILE² pixels in rows; `tiles` holds per frame and tile (row-major) the tile's number in
+ * the pools, or −1 − k for the constant. The kernels read the same halves as from a dense
+ * frame, so the same bits; the bundled example's Q and R at 512 px were 88 MB dense.
  */
+
+/* The pool pixel holding (x, y) of the frame whose tile index is `tiles`. */
+inline size_t loss_tile_pixel(__global const int* tiles, int x, int y, int width) {
+  const int t = tiles[(y / LOSS_TILE) * ((width + LOSS_TILE - 1) / LOSS_TILE) + x / LOSS_TILE];
+  return t < 0 ? (size_t)(-1 - t)
+               : (size_t)t * (LOSS_TILE * LOSS_TILE) + (y % LOSS_TILE) * LOSS_TILE + x % LOSS_TILE;
+}
+
+/* The tile index of frame k. */
+inline __global const int* loss_frame_tiles(__global const int* tiles, int k, int width, int height) {
+  return tiles + (size_t)k * ((width + LOSS_TILE - 1) / LOSS_TILE) * ((height + LOSS_TILE - 1) / LOSS_TILE);
+}
 
 /* G0..G8, LOSS_R, g_tap: the render's 1-D Gaussian taps, defined in prelude.cl. */
 
@@ -106,6 +128,15 @@ inline float chroma_residual(float3 q, float3 v, __global float* e, int x) {
 }
 #endif
 
+/* Where a row's Q is read from x on, to the end of x's tile (blur_y_loss_rows): pool pixel
+ * *at, advancing by *step (1 in a stored tile, 0 on the constant) per pixel. A lookup per
+ * tile, not per pixel: one per pixel made the row loop several times slower. */
+inline void q_tile_start(__global const int* row, int in, int x, size_t* at, int* step) {
+  const int t = row[x / LOSS_TILE];
+  *step = t < 0 ? 0 : 1;
+  *at = t < 0 ? (size_t)(-1 - t) : (size_t)t * (LOSS_TILE * LOSS_TILE) + in + x % LOSS_TILE;
+}
+
 /* Per (row, frame): E' = the y-blur of X' over the rows' extents, kept (with its extent) for
  * the backward pass, and the row's Σ (2 Q·E' + E'·E') over pixels and channels, in x order.
  * The host may launch a few frames at a time (ClRaster's loss chunks, to keep X' and E' to a
@@ -114,7 +145,7 @@ inline float chroma_residual(float3 q, float3 v, __global float* e, int x) {
 __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ext_x,
                                __global const half* Q, __global float* E,
                                __global int2* ext_e, __global float* row_sums, int width,
-                               int height, int frames) {
+                               int height, int frames, __global const int* tiles) {
   const int y = get_global_id(0), k = get_global_id(1);
   if (y >= height || k >= frames) return;
   __global const int2* ex = ext_x + (size_t)k * height;
@@ -130,7 +161,10 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
   const size_t kc = (size_t)k - get_global_offset(1); /* the frame within the chunk */
   __global const float* f = Xb + kc * width * height * 3; /* packed RGB (vload3) */
   __global float* e = E + (kc * height + y) * width * 3;
-  __global const half* q = Q + ((size_t)k * height + y) * width * 4;
+  /* Row y's tiles in frame k's index (a tile's number in Q's pool, or the constant's −1 − k),
+   * and where row y starts within a tile. */
+  __global const int* qrow = loss_frame_tiles(tiles, k, width, height) + (y / LOSS_TILE) * ((width + LOSS_TILE - 1) / LOSS_TILE);
+  const int qin = (y % LOSS_TILE) * LOSS_TILE;
   /* Each tap's row contributes on its extent only (zero padding outside the frame and the
    * drawing). Those ranges are taken once per row: [fa, fb] is where every tap is inside (a
    * background makes it the whole row), and there no tap needs its test. Rows of a drawing that
@@ -176,7 +210,10 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
       e[a + i] = v;
     }
   }
-  for (int x = lo; x <= hi; ++x) {
+  size_t qa = 0;
+  int qs = 0;
+  for (int x = lo; x <= hi; ++x, qa += qs) {
+    if (x == lo || x % LOSS_TILE == 0) q_tile_start(qrow, qin, x, &qa, &qs);
     float3 v = (float3)(0.0f);
     if (x >= fa && x <= fb) {
       v = vload3(x, e);
@@ -185,10 +222,13 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
         if (x >= ta[j] && x <= tb[j]) v += g_tap(j - LOSS_R) * vload3(r + j * width + x, f);
       vstore3(v, x, e);
     }
-    s += dot(2.0f * vload_half4(x, q).xyz + v, v);
+    s += dot(2.0f * vload_half4(qa, Q).xyz + v, v);
   }
 #else
-  for (int x = lo; x <= hi; ++x) {
+  size_t qa = 0;
+  int qs = 0;
+  for (int x = lo; x <= hi; ++x, qa += qs) {
+    if (x == lo || x % LOSS_TILE == 0) q_tile_start(qrow, qin, x, &qa, &qs);
     float3 v = (float3)(0.0f);
     if (x >= fa && x <= fb) {
 #if defined(CHROMA_R)
@@ -212,14 +252,14 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
       }
     }
 #if defined(CHROMA_R)
-    s += chroma_residual(vload_half4(x, q).xyz, v, e, x);
+    s += chroma_residual(vload_half4(qa, Q).xyz, v, e, x);
 #elif defined(CHROMA_W)
     const float3 m = loss_metric(v);
     vstore3(m, x, e);
-    s += dot(2.0f * vload_half4(x, q).xyz + v, m);
+    s += dot(2.0f * vload_half4(qa, Q).xyz + v, m);
 #else
     vstore3(v, x, e);
-    s += dot(2.0f * vload_half4(x, q).xyz + v, v);
+    s += dot(2.0f * vload_half4(qa, Q).xyz + v, v);
 #endif
   }
 #endif
@@ -228,9 +268,9 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
 
 /* ∂L/∂C at pixel (x, y) of a frame: 2w/N · (R + G ∗ E'), E' read within its row extents. */
 inline float3 blurred_gradient(__global const float* E, __global const int2* ext_e,
-                               __global const half* R, int x, int y, int width, int height,
-                               float scale) {
-  float3 s = vload_half4(y * width + x, R).xyz;
+                               __global const half* R, __global const int* tiles, int x, int y,
+                               int width, int height, float scale) {
+  float3 s = vload_half4(loss_tile_pixel(tiles, x, y, width), R).xyz;
 #ifdef CHROMA_R
   /* The per-group blur's adjoint: blur the stored A⁻ᵀ E' per channel group, then Aᵀ (loss.cl's
    * chroma_residual). The same taps and order whether or not the extents need tests. */

@@ -463,7 +463,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               __global const float4* bounds,      /* [K][n_chunks] */
                               __global const float* E,            /* [chunk][H][W][3] E' (loss.cl) */
                               __global const int2* ext_e,         /* [K][H] its row extents */
-                              __global const half* R,             /* [K][H][W][4] G ∗ Q, half (loss.cl) */
+                              __global const half* R,             /* G ∗ Q, half, by tiles (loss.cl) */
                               float grad_scale,                   /* 2w/N */
                               float4 background,
                               __local float* acc,                 /* [BAND_H][W + 2] */
@@ -483,7 +483,8 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               __global const float4* paint,       /* [n_images][H][W] */
                               __local int* last,                  /* [BAND_H][W] (replay) */
                               __local float2* aux,                /* [tape_cap] */
-                              __global const float2* pool_aux) {  /* raster_taped's (pixel, V) */
+                              __global const float2* pool_aux,    /* raster_taped's (pixel, V) */
+                              __global const int* tiles) {        /* R's tile index (loss.cl) */
   /* The frame, and E' of the chunk's frames only, as in raster_taped. */
   const int band = get_group_id(0), k = get_global_id(1), k0 = get_global_offset(1);
   const int lid = get_local_id(0), lsize = get_local_size(0);
@@ -496,7 +497,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
     __global const float4* B = bounds + (size_t)k * n_chunks;
     __global const float* Ek = E + (size_t)(k - k0) * height * width * 3;
     __global const int2* Xk = ext_e + (size_t)k * height;
-    __global const half* Rk = R + (size_t)k * height * width * 4;
+    __global const int* Rt = loss_frame_tiles(tiles, k, width, height);
 #ifdef PREFETCH_ROWS
     /* The rows of E' and R this band's edge pixels read (blurred_gradient), within their
      * drawing extents, one prefetch per 64-byte line: the reads come scattered over the draws'
@@ -506,7 +507,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
       /* E' is packed, 12 bytes a pixel: one prefetch per 16 floats. */
       for (int i = 3 * ex.x; i <= 3 * ex.y + 2; i += 16) PREFETCH(Ek + (size_t)y * width * 3 + i);
       if (y >= y0 && y < y0 + rows)
-        for (int x = ex.x; x <= ex.y; x += 8) PREFETCH(Rk + ((size_t)y * width + x) * 4);
+        for (int x = ex.x; x <= ex.y; x += 8) PREFETCH(R + loss_tile_pixel(Rt, x, y, width) * 4);
     }
 #endif
     /* Per row: the valid hull of the lazily cleared ∂L/∂a cells (see grow_hull in raster.cl),
@@ -558,7 +559,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
          * this draw: g is 0 exactly, without the 25-tap ∂L/∂C (whose reads of E' and R miss
          * the cache; in a layered scene most of the lower draws' edges are hidden). */
         if (T != 0.0f) {
-          const float3 dC = blurred_gradient(Ek, Xk, Rk, x, y0 + r, width, height, grad_scale);
+          const float3 dC = blurred_gradient(Ek, Xk, R, Rt, x, y0 + r, width, height, grad_scale);
           const float ga = dot(dC, T * (c.xyz - b.xyz));
           g = ga * c.w * fill_rule_slopes(b.w, rule);
         }

@@ -4,8 +4,11 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <fstream>
+#include <string>
 
 #include "motion/wordnet.h"
+#include "motion/wordnet_pages.h"
 #include "temp_dir.h"
 
 using namespace svgm::wordnet;
@@ -27,9 +30,39 @@ uint32_t synset_with(const Database& db, const std::string& lemma, Pos pos, cons
   return 0;
 }
 
+// Resident kB of this process's mappings of files in `dir` (/proc/self/smaps).
+long resident_kb_in(const std::string& dir) {
+  std::ifstream smaps("/proc/self/smaps");
+  std::string line;
+  bool in = false;
+  long kb = 0;
+  while (std::getline(smaps, line)) {
+    const size_t sp = line.find(' ');
+    if (sp != std::string::npos && line.find('-') < sp) {  // a mapping's header line
+      const size_t slash = line.find('/');
+      in = slash != std::string::npos && line.compare(slash, dir.size() + 1, dir + "/") == 0;
+    } else if (in && line.rfind("Rss:", 0) == 0) {
+      kb += std::stol(line.substr(4));
+    }
+  }
+  return kb;
+}
+
 }  // namespace
 
 TEST_SUITE("motion") {
+
+TEST_CASE("wordnet: release_shared_pages drops the files' resident pages, and lookups read them again alike") {
+  const Database* db = db_or_skip();
+  if (!db) return;
+  const std::vector<uint32_t> before = db->senses("run", Pos::Verb);
+  REQUIRE_FALSE(before.empty());
+  CHECK(resident_kb_in(db->dir()) > 0);  // the lookup touched index.verb and the exceptions' reads
+  release_shared_pages();
+  CHECK(resident_kb_in(db->dir()) == 0);
+  CHECK(db->senses("run", Pos::Verb) == before);
+  CHECK(resident_kb_in(db->dir()) > 0);
+}
 
 TEST_CASE("wordnet: inflections find their lemmas (exception lists and detachment rules)") {
   const Database* db = db_or_skip();

@@ -2,6 +2,7 @@
 // index, synsets parsed from the data line at the index's byte offset, morphy's exceptions and
 // detachment rules.
 #include "motion/wordnet.h"
+#include "motion/wordnet_pages.h"
 
 #include <fcntl.h>
 #include <sys/mman.h>
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <cstring>
 #include <cstdlib>
 #include <fstream>
@@ -109,14 +111,39 @@ std::unique_ptr<Database> Database::open(const std::string& dir) {
   return db;
 }
 
+namespace {
+
+// The shared database's folder (see the file comment); empty when none is configured.
+std::string shared_dir() {
+  const char* env = std::getenv("SVGM_WORDNET_DIR");
+#ifdef SVGM_WORDNET_DEFAULT_DIR
+  return env && *env ? env : SVGM_WORDNET_DEFAULT_DIR;
+#else
+  return env && *env ? env : "";
+#endif
+}
+
+}  // namespace
+
+void release_shared_pages() {
+  // Every mapping of the folder's files (wordnet_pages.h).
+  const std::string dir = shared_dir();
+  if (dir.empty()) return;
+  std::ifstream maps("/proc/self/maps");
+  std::string line;
+  while (std::getline(maps, line)) {
+    // "start-end perms offset dev inode path"
+    const size_t slash = line.find('/');
+    if (slash == std::string::npos || line.compare(slash, dir.size() + 1, dir + "/") != 0) continue;
+    const uintptr_t from = std::strtoull(line.c_str(), nullptr, 16);
+    const uintptr_t to = std::strtoull(line.c_str() + line.find('-') + 1, nullptr, 16);
+    if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
+  }
+}
+
 const Database* Database::shared() {
   static const std::unique_ptr<Database> db = [] {
-    const char* env = std::getenv("SVGM_WORDNET_DIR");
-#ifdef SVGM_WORDNET_DEFAULT_DIR
-    const std::string dir = env && *env ? env : SVGM_WORDNET_DEFAULT_DIR;
-#else
-    const std::string dir = env && *env ? env : "";
-#endif
+    const std::string dir = shared_dir();
     std::unique_ptr<Database> d = dir.empty() ? nullptr : open(dir);
     if (!d)
       log::info("motion words: no WordNet database%s%s (install wordnet-base or set SVGM_WORDNET_DIR); "

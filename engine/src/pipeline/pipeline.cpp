@@ -1,6 +1,7 @@
 // The pipeline runner (see pipeline.h).
 #include "pipeline/pipeline.h"
 #include "fit/output/animation_export.h"
+#include "motion/wordnet_pages.h"
 #include "pipeline/candidate_choice.h"
 #include "pipeline/canvas_room.h"
 #include "svgmotion/atomic_file.h"
@@ -219,6 +220,9 @@ std::vector<StageReport> run_pipeline(const nlohmann::json& config, const Plugin
                             {"prompt", config.value("prompt", "")}, {"seed", config.value("seed", 0)},
                             {"device", config.value("device", "auto")}, {"input", input},
                             {"stages", config["stages"]}};  // every stage's settings, read-only
+      // The fitter reads no words: WordNet's pages, mapped by the prompt's stages, leave the
+      // resident set before its peak (issue 38; a later lookup reads them again).
+      if (sf.stage == "fitter") wordnet::release_shared_pages();
       const nlohmann::json response = host.run(sf.stage, plugin, req);
       for (const auto& [k, v] : sf.outputs.items())
         if (!fs::exists(run / v.get<std::string>()))

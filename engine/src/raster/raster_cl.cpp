@@ -6,6 +6,7 @@
 #include <string>
 
 #include "opencl/tuning.h"
+#include "raster/loss_tiles.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -70,7 +71,8 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double ren
     cl::Program& prog =
         rt_.program({"flatten.cl", "stroke.cl", "lines.cl", "raster.cl", "loss.cl",
                      "raster_backward.cl", "stroke_backward.cl"},
-                    kernel_build_options(tuning) + loss_tap_options(render_sigma_, chroma_sigma_, chroma_weight_));
+                    kernel_build_options(tuning) + loss_tap_options(render_sigma_, chroma_sigma_, chroma_weight_) +
+                        " -DLOSS_TILE=" + std::to_string(kLossTile));
     program_ = &prog;
     local_budget_ = tuning.local_budget;
     k_flatten_ = cl::Kernel(prog, "flatten");

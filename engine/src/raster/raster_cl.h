@@ -129,6 +129,12 @@ class ClRaster {
   void set_loss_chunk_frames(int n);
   int loss_chunk_frames() const { return chunk_; }
 
+  // Q and R are held by tiles (raster/loss_tiles.h): those of the frames' tiles that are not
+  // their frame's constant. For tests: `every` stores every tile (the dense layout by tiles;
+  // the same bits), from the next loss pass whose constants are made.
+  void set_every_loss_tile(bool every) { every_loss_tile_ = every; q_background_ = {-1, -1, -1, -1}; }
+  size_t loss_tiles_stored() const { return loss_tiles_stored_; }
+
   // Bytes of device memory this routine allocated.
   size_t device_bytes() const { return device_bytes_; }
 
@@ -180,6 +186,9 @@ class ClRaster {
   std::array<float, 4> q_background_{-1, -1, -1, -1};
   void prepare_loss_constants(const std::array<float, 4>& background);
   cl::Buffer q_, r_, qsum_, ext_x_, ext_e_;
+  cl::Buffer qr_tiles_;  // per frame and tile: its number in q_ and r_, or −1 − frame
+  bool every_loss_tile_ = false;
+  size_t loss_tiles_stored_ = 0;
   // The loss chunk's residuals (set_loss_chunk_frames): X' (the x-blurred render, written by
   // raster_taped) and E' (resid_, its y-blur), chunk_ frames each.
   int chunk_ = 0;  // 0: chosen by init_backward

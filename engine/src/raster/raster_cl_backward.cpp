@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "raster/half_float.h"
+#include "raster/loss_tiles.h"
 #include "raster/raster_cl.h"
 #include "svgmotion/error.h"
 
@@ -75,7 +76,7 @@ void ClRaster::init_backward() {
     const int W = p.width, H = p.height, F = frames_;
     // The residual forward pass writes the x-blurred residual into image_; blur it along y
     // with the row sums of E² (kernels/loss.cl).
-    set_args(k_blur_y_loss_, xres_, ext_x_, q_, resid_, ext_e_, row_sums_, W, H, F);
+    set_args(k_blur_y_loss_, xres_, ext_x_, q_, resid_, ext_e_, row_sums_, W, H, F, qr_tiles_);
     set_args(k_loss_total_, row_sums_, qsum_, loss_, 1.0f, H, F);
     set_args(k_backward_, lines_, draw_chunks_, chunk_lines_, draw_color_, draw_rule_, bounds_,
              resid_, ext_e_, r_, 1.0f, cl_float4{{0, 0, 0, 0}},
@@ -90,6 +91,7 @@ void ClRaster::init_backward() {
                 draw_paint_, paint_, cl::Local(static_cast<size_t>(band_h_) * p.width * sizeof(int)),
                 cl::Local(static_cast<size_t>(tape_cap_) * 2 * sizeof(float)));
     // Argument 33 (the pool's (pixel, V)) is set by resize_pool.
+    set_args_at(k_backward_, 34, qr_tiles_);
     pool_draw_ = make(K * bands_ * std::max<size_t>(n_draws, 1) * sizeof(int));
     pool_at_ = make(K * bands_ * 2 * sizeof(int));
     pool_used_ = make(sizeof(int));
@@ -122,10 +124,11 @@ void ClRaster::init_backward() {
 
 void ClRaster::make_loss_buffers() {
   const size_t K = static_cast<size_t>(frames_);
-  const size_t pixels = K * plan_.height * static_cast<size_t>(plan_.width);
-  // Q and R are only read: halves (prepare_loss_constants).
-  q_ = make(pixels * 4 * sizeof(uint16_t));
-  r_ = make(pixels * 4 * sizeof(uint16_t));
+  // Q and R (halves, by tiles) and their tile index: made at their size by
+  // prepare_loss_constants, which knows how many tiles it stores.
+  q_ = make(0);
+  r_ = make(0);
+  qr_tiles_ = make(0);
   // X' and E' for one chunk of frames (set_loss_chunk_frames).
   const size_t chunk_pixels = static_cast<size_t>(chunk_) * plan_.height * plan_.width;
   xres_ = make(chunk_pixels * kResidualPixelBytes);
@@ -137,8 +140,10 @@ void ClRaster::make_loss_buffers() {
   // Made again after release_loss_buffers: bound where init_backward bound them, and the pool
   // at the capacity it had grown to (what the bands asked for stays what they ask for).
   set_args_at(k_blur_y_loss_, 2, q_, resid_);
+  set_args_at(k_blur_y_loss_, 9, qr_tiles_);
   set_args_at(k_backward_, 6, resid_);
   set_args_at(k_backward_, 8, r_);
+  set_args_at(k_backward_, 34, qr_tiles_);
   set_args_at(k_backward_, 21, partial_);
   set_args_at(k_gather_lines_, 3, partial_);
   resize_pool(pool_cap_);
@@ -149,7 +154,7 @@ void ClRaster::release_loss_buffers() {
   finish_pool_read();
   rt_.queue().finish();  // nothing enqueued still uses them
   // The Float renders' image_ too: a fitter that waits or only renders makes it again.
-  for (cl::Buffer* b : {&q_, &r_, &xres_, &resid_, &partial_, &pool_, &pool_aux_, &image_}) {
+  for (cl::Buffer* b : {&q_, &r_, &qr_tiles_, &xres_, &resid_, &partial_, &pool_, &pool_aux_, &image_}) {
     if (!(*b)()) continue;
     device_bytes_ -= b->getInfo<CL_MEM_SIZE>();
     *b = cl::Buffer();
@@ -237,37 +242,88 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
   // R = Bᵀ Q.
   const std::vector<double> g_target = loss_stencil(kLossSigma);
   const std::vector<double> g1 = render_blur(std::vector<double>(px * 3, 1.0), W, H, render_sigma_, chroma_sigma_);
-  std::vector<double> t(px * 3), q(px * 3);
-  // One frame's Q and R at a time: whole-clip host copies were 32 bytes per pixel and frame at
-  // the fit's peak (176 MB for 21 keyframes at 512 px).
+  std::vector<double> q(px * 3);
+  // One frame's Q and R at a time, kept by tiles (raster/loss_tiles.h): whole-clip host copies
+  // were 32 bytes per pixel and frame at the fit's peak (176 MB for 21 keyframes at 512 px),
+  // the dense device copies 16 (88 MB).
   std::vector<uint16_t> qh(px * 4, 0), rh(px * 4, 0);
   std::vector<float> qsum(K);
-  auto& queue = rt_.queue();
+  std::vector<LossTiles> tiles(static_cast<size_t>(K));
   for (int k = 0; k < K; ++k) {
     targets_(k, frame.data());
-    for (size_t p = 0; p < px; ++p)
-      for (int c = 0; c < 3; ++c) t[3 * p + c] = frame[p * 4 + c];
-    const std::vector<double> gt = blur_rgb(t, W, H, g_target);
-    // Q as the device stores it (a half, within 2^-11 of it: a twentieth of an 8-bit level),
-    // so that Σ Q² and R are those of the Q the loss reads and Σ E² stays a sum of squares.
-    for (size_t i = 0; i < q.size(); ++i) {
-      const uint16_t h = float_to_half(static_cast<float>(bg[i % 3] * g1[i] - gt[i]));
-      qh[i / 3 * 4 + i % 3] = h;
-      q[i] = half_to_float(h);
+    {
+      // The target and its blur are freed before R is made: each temporary here is a frame of
+      // doubles (6.3 MB at 512 px), and this loop was the fit's peak (issue 38).
+      std::vector<double> t(px * 3);
+      for (size_t p = 0; p < px; ++p)
+        for (int c = 0; c < 3; ++c) t[3 * p + c] = frame[p * 4 + c];
+      const std::vector<double> gt = blur_rgb(t, W, H, g_target);
+      t = std::vector<double>();
+      // Q as the device stores it (a half, within 2^-11 of it: a twentieth of an 8-bit level),
+      // so that Σ Q² and R are those of the Q the loss reads and Σ E² stays a sum of squares.
+      for (size_t i = 0; i < q.size(); ++i) {
+        const uint16_t h = float_to_half(static_cast<float>(bg[i % 3] * g1[i] - gt[i]));
+        qh[i / 3 * 4 + i % 3] = h;
+        q[i] = half_to_float(h);
+      }
     }
     // With a chroma weight the metric M (loss.cl's loss_metric): Σ Qᵀ M Q and R = Bᵀ M Q.
-    std::vector<double> mq = q;
-    if (chroma_weight_ != 1) mq = chroma_metric(q, chroma_weight_);
     double sum = 0;
-    for (size_t i = 0; i < q.size(); ++i) sum += q[i] * mq[i];
-    const std::vector<double> r = render_blur(mq, W, H, render_sigma_, chroma_sigma_, true);
+    std::vector<double> r;
+    if (chroma_weight_ != 1) {
+      const std::vector<double> mq = chroma_metric(q, chroma_weight_);
+      for (size_t i = 0; i < q.size(); ++i) sum += q[i] * mq[i];
+      r = render_blur(mq, W, H, render_sigma_, chroma_sigma_, true);
+    } else {
+      for (size_t i = 0; i < q.size(); ++i) sum += q[i] * q[i];
+      r = render_blur(q, W, H, render_sigma_, chroma_sigma_, true);
+    }
     qsum[k] = static_cast<float>(sum);
     for (size_t i = 0; i < r.size(); ++i) rh[i / 3 * 4 + i % 3] = float_to_half(static_cast<float>(r[i]));
-    const size_t bytes = qh.size() * sizeof(uint16_t), at = static_cast<size_t>(k) * bytes;
-    queue.enqueueWriteBuffer(q_, CL_TRUE, at, bytes, qh.data());
-    queue.enqueueWriteBuffer(r_, CL_TRUE, at, bytes, rh.data());
+    tiles[static_cast<size_t>(k)] = tile_loss_frame(qh.data(), rh.data(), W, H, every_loss_tile_);
   }
+  // The device's layout (loss.cl's loss_tile_pixel): Q's pool and R's, each the frames'
+  // constants (pixel k: frame k's) in the first `c0` tiles, then every frame's stored tiles in
+  // frame order; the index holds, per frame and tile, the tile's number in the pool or −1 − k.
+  constexpr size_t kTilePixels = size_t{kLossTile} * kLossTile;
+  const size_t c0 = (static_cast<size_t>(K) + kTilePixels - 1) / kTilePixels;
+  size_t n_tiles = c0;
+  for (const LossTiles& f : tiles) n_tiles += static_cast<size_t>(f.stored());
+  const size_t per_frame = tiles[0].tile.size();
+  std::vector<int> index(static_cast<size_t>(K) * per_frame);
+  std::vector<uint16_t> consts_q(c0 * kTilePixels * 4, 0), consts_r(consts_q.size(), 0);
+  for (int k = 0, next = static_cast<int>(c0); k < K; ++k) {
+    const LossTiles& f = tiles[static_cast<size_t>(k)];
+    for (size_t i = 0; i < per_frame; ++i) index[k * per_frame + i] = f.tile[i] < 0 ? -1 - k : next + f.tile[i];
+    next += f.stored();
+    std::copy(f.q_const.begin(), f.q_const.end(), consts_q.begin() + 4 * k);
+    std::copy(f.r_const.begin(), f.r_const.end(), consts_r.begin() + 4 * k);
+  }
+  const size_t tile_bytes = kTilePixels * 4 * sizeof(uint16_t);
+  for (cl::Buffer* b : {&q_, &r_, &qr_tiles_}) device_bytes_ -= b->getInfo<CL_MEM_SIZE>();
+  q_ = make(n_tiles * tile_bytes);
+  r_ = make(n_tiles * tile_bytes);
+  qr_tiles_ = make(index.size() * sizeof(int));
+  auto& queue = rt_.queue();
+  queue.enqueueWriteBuffer(q_, CL_TRUE, 0, consts_q.size() * sizeof(uint16_t), consts_q.data());
+  queue.enqueueWriteBuffer(r_, CL_TRUE, 0, consts_r.size() * sizeof(uint16_t), consts_r.data());
+  size_t at = c0 * tile_bytes;
+  for (LossTiles& f : tiles) {
+    const size_t bytes = f.q.size() * sizeof(uint16_t);
+    if (bytes) {
+      queue.enqueueWriteBuffer(q_, CL_TRUE, at, bytes, f.q.data());
+      queue.enqueueWriteBuffer(r_, CL_TRUE, at, bytes, f.r.data());
+    }
+    at += bytes;
+    f = LossTiles{};  // each frame's host copy freed once written
+  }
+  queue.enqueueWriteBuffer(qr_tiles_, CL_TRUE, 0, index.size() * sizeof(int), index.data());
   queue.enqueueWriteBuffer(qsum_, CL_TRUE, 0, qsum.size() * sizeof(float), qsum.data());
+  loss_tiles_stored_ = n_tiles - c0;
+  set_args_at(k_blur_y_loss_, 2, q_);
+  set_args_at(k_blur_y_loss_, 9, qr_tiles_);
+  set_args_at(k_backward_, 8, r_);
+  set_args_at(k_backward_, 34, qr_tiles_);
   q_background_ = bg;
 }
 

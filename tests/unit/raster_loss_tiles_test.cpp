@@ -1,0 +1,162 @@
+// The loss's constants Q and R by tiles (raster/loss_tiles.h, kernels/loss.cl's
+// loss_tile_pixel): which tiles a frame stores, where each pixel lands, and that the tiled
+// layout gives the loss and the gradient bit for bit as the layout storing every tile does,
+// while holding fewer tiles when the target is white far from its figure.
+#include <doctest/doctest.h>
+
+#include <cstring>
+
+#include "raster/loss_tiles.h"
+#include "raster_test_support.h"
+#include "scene_builders.h"
+
+using namespace svgm;
+using namespace svgm::test;
+
+namespace {
+
+constexpr int T = kLossTile;
+
+// W x H pixels of four halves, every one `v` (Q) and `v + 1` (R) in the three colours.
+struct Frame {
+  int W, H;
+  std::vector<uint16_t> q, r;
+  Frame(int w, int h, uint16_t v) : W(w), H(h), q(size_t(w) * h * 4, 0), r(q.size(), 0) {
+    for (size_t p = 0; p < q.size(); p += 4)
+      for (int c = 0; c < 3; ++c) set(p / 4 % w, p / 4 / w, v);
+  }
+  void set(size_t x, size_t y, uint16_t v) {
+    for (int c = 0; c < 3; ++c) {
+      q[(y * W + x) * 4 + c] = v;
+      r[(y * W + x) * 4 + c] = static_cast<uint16_t>(v + 1);
+    }
+  }
+};
+
+// Frame pixel (x, y)'s Q halves as the device finds them (loss.cl's loss_tile_pixel, with the
+// frame's constant as its own pixel).
+std::array<uint16_t, 4> q_at(const LossTiles& t, int x, int y) {
+  const int s = t.tile[static_cast<size_t>(y / T) * t.tiles_x + x / T];
+  if (s < 0) return t.q_const;
+  std::array<uint16_t, 4> v;
+  std::memcpy(v.data(), &t.q[(static_cast<size_t>(s) * T * T + (y % T) * T + x % T) * 4], sizeof v);
+  return v;
+}
+
+constexpr int kW = 128, kH = 96, kK = 3;
+const std::array<float, 4> kWhite{1, 1, 1, 1};
+
+// A small figure in the middle of white paper, moved by (dx, dy) per frame.
+Scene figure() {
+  return scene_of(kW, kH, {filled(circle({64, 48}, 10), {0.9f, 0.2f, 0.1f, 1}),
+                           filled(polygon({{56, 40}, {74, 44}, {62, 60}}), {0.1f, 0.3f, 0.8f, 0.6f})});
+}
+
+std::vector<float> moved(const RasterPlan& plan, float dx, float dy) {
+  std::vector<float> cp;
+  for (int k = 0; k < kK; ++k)
+    for (size_t i = 0; i < plan.rest_cp.size(); i += 2) {
+      cp.push_back(static_cast<float>(plan.rest_cp[i]) + dx * (k + 1));
+      cp.push_back(static_cast<float>(plan.rest_cp[i + 1]) + dy);
+    }
+  return cp;
+}
+
+// The figure rendered at a shift, composited on white (straight RGB, A = 1).
+std::vector<float> targets_at(const RasterPlan& plan, float dx, float dy) {
+  ClRaster r(runtime(), plan, kK);
+  r.set_control_points(moved(plan, dx, dy));
+  r.set_active_frames(kK);
+  r.forward();
+  std::vector<float> img = r.read_image();
+  for (size_t p = 0; p < img.size(); p += 4) {
+    for (int c = 0; c < 3; ++c) img[p + c] += 1 - img[p + 3];
+    img[p + 3] = 1;
+  }
+  return img;
+}
+
+bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+}  // namespace
+
+TEST_SUITE("raster") {
+
+TEST_CASE("tile_loss_frame: uniform tiles of the commonest value are not stored; each pixel reads its own halves") {
+  // 40 x 20: tiles 3 x 2, the last column 8 pixels wide, the last row 4 high.
+  Frame f(40, 20, 7);
+  f.set(20, 3, 9);   // tile (1, 0) differs inside
+  f.set(39, 19, 5);  // the corner tile (2, 1), partial, differs at its last pixel
+  const LossTiles t = tile_loss_frame(f.q.data(), f.r.data(), f.W, f.H);
+  CHECK(t.tiles_x == 3);
+  CHECK(t.tiles_y == 2);
+  CHECK(t.tile == std::vector<int>{-1, 0, -1, -1, -1, 1});
+  CHECK(t.stored() == 2);
+  CHECK(t.q_const == std::array<uint16_t, 4>{7, 7, 7, 0});
+  CHECK(t.r_const == std::array<uint16_t, 4>{8, 8, 8, 0});
+  for (int y = 0; y < f.H; ++y)
+    for (int x = 0; x < f.W; ++x) {
+      std::array<uint16_t, 4> want;
+      std::memcpy(want.data(), &f.q[(static_cast<size_t>(y) * f.W + x) * 4], sizeof want);
+      REQUIRE(q_at(t, x, y) == want);
+    }
+  // Pixels of a stored tile outside the frame are zero.
+  CHECK(t.q[(size_t(1) * T * T + 4 * T + 0) * 4] == 0);  // tile (2, 1), row 4: below the frame
+  CHECK(t.q[(size_t(1) * T * T + 0 * T + 8) * 4] == 0);  // tile (2, 1), column 8: right of it
+
+  // A uniform tile of another value is stored; every_tile stores all of them in order.
+  Frame g(40, 20, 7);
+  for (int y = 16; y < 20; ++y)
+    for (int x = 0; x < 16; ++x) g.set(x, y, 3);  // tile (0, 1), all 3
+  const LossTiles u = tile_loss_frame(g.q.data(), g.r.data(), g.W, g.H);
+  CHECK(u.tile == std::vector<int>{-1, -1, -1, 0, -1, -1});
+  CHECK(u.q[0] == 3);
+  const LossTiles every = tile_loss_frame(g.q.data(), g.r.data(), g.W, g.H, true);
+  CHECK(every.tile == std::vector<int>{0, 1, 2, 3, 4, 5});
+  for (int y = 0; y < g.H; ++y)
+    for (int x = 0; x < g.W; ++x) REQUIRE(q_at(every, x, y) == q_at(u, x, y));
+}
+
+TEST_CASE("tiled Q and R: the same loss, frame losses and gradient bits as every tile stored, from fewer tiles") {
+  const RasterPlan plan = plan_raster(figure(), Affine{}, kW, kH);
+  const std::vector<float> targets = targets_at(plan, 2.5f, -1.25f);
+  const std::vector<float> cp = moved(plan, 0.5f, 0.75f);
+  const size_t tiles = size_t{kK} * (kW / T) * (kH / T);
+  // The plain loss, and the chroma-weighted one with a chroma blur of its own (R and Q then
+  // go through the per-group blur and the metric).
+  for (const auto& [chroma_sigma, chroma_weight] : {std::pair{0.0, 1.0}, std::pair{1.6, 0.25}}) {
+    CAPTURE(chroma_weight);
+    std::vector<float> bits[2], losses[2];
+    size_t stored[2] = {}, bytes[2] = {};
+    for (int every = 0; every < 2; ++every) {
+      ClRaster r(runtime(), plan, kK, kLossSigma, chroma_sigma, chroma_weight);
+      r.set_every_loss_tile(every == 1);
+      r.set_control_points(cp);
+      r.set_active_frames(kK);
+      r.set_targets(targets);
+      const float loss = r.loss_and_gradient(1000.0f, kWhite);
+      bits[every] = r.read_cp_gradient();
+      bits[every].push_back(loss);
+      losses[every] = r.read_frame_losses();
+      stored[every] = r.loss_tiles_stored();
+      bytes[every] = r.device_bytes();
+    }
+    CHECK(same_bits(bits[0], bits[1]));
+    CHECK(same_bits(losses[0], losses[1]));
+    CHECK(losses[0][0] > 0);
+    double norm = 0;
+    for (size_t i = 0; i + 1 < bits[0].size(); ++i) norm += double(bits[0][i]) * bits[0][i];
+    CHECK(norm > 0);
+    CHECK(stored[1] == tiles);
+    // The white paper's tiles inside the frame, away from its border and the figure, are not
+    // stored: at most the border ring (24 of 48 tiles a frame) and the figure's 4 x 4.
+    CHECK(stored[0] <= size_t{kK} * (24 + 16));
+    CHECK(stored[0] >= size_t{kK} * 4);  // the figure's tiles at least
+    // Q and R are T² pixels of 8 bytes a stored tile each.
+    CHECK(bytes[1] - bytes[0] == (stored[1] - stored[0]) * T * T * 16);
+  }
+}
+
+}  // TEST_SUITE
