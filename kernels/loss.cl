@@ -8,6 +8,9 @@
  * g = exp(-j²/2σ²) / Σ over j = -2..2, and zero padding outside the frame. G, the render's, is
  * the same unless blur matching widened it, to radius LOSS_R (prelude.cl's taps: a video
  * softer than the render is matched by blurring the render as much; raster/loss_taps.h).
+ * Then only what is drawn takes G: the paper (bg, the same at every pose) is blurred by G_t
+ * as the target is, so that E = G ∗ (C − bg) − G_t ∗ (T − bg); with zero padding a wider G on
+ * the paper left a band along the frame's border that no pose could fit (see Q below).
  * Only the host touches G_t (in Q below). The gradient is
  *
  *     ∂L/∂C = G ∗ (2 w / N · E)
@@ -18,13 +21,13 @@
  * Only the drawn part changes between iterations. Write C = bg + X with X = P − a·bg, zero
  * wherever nothing is drawn (P the premultiplied render, a its alpha). Then, by linearity,
  *
- *     E = E' + Q,   E' = G ∗ X,   Q = bg·(G ∗ 1) − G_t ∗ T,
+ *     E = E' + Q,   E' = G ∗ X,   Q = bg·(G_t ∗ 1) − G_t ∗ T,
  *     Σ E² = Σ Q² + Σ (2 Q·E' + E'·E'),
  *     ∂L/∂C = 2w/N · (R + G ∗ E'),   R = G ∗ Q.
  *
  * Chroma blur matching generalises G to a per-group blur in YCbCr (prelude.cl):
  * B = A⁻¹ · diag(G, G_c, G_c) · A, luma sharp at the render σ, chroma soft at its own σ
- * (codecs subsample and quantise chroma harder). Then E' = B X, Q = bg·(B 1) − G_t ∗ T,
+ * (codecs subsample and quantise chroma harder). Then E' = B X, Q = bg·(G_t 1) − G_t ∗ T,
  * R = Bᵀ Q and ∂L/∂C = 2w/N · (R + Bᵀ E'), Bᵀ = Aᵀ · diag(G, G_c, G_c) · A⁻ᵀ: the raster pass
  * blurs A·X along x, blur_y_loss_rows finishes the blur and keeps A⁻ᵀ E', blurred_gradient
  * blurs that and applies Aᵀ. With G_c = G the build leaves CHROMA_R undefined and the code is

@@ -256,6 +256,26 @@ TEST_CASE("blur matching: a wider render blur keeps the loss and gradient exact"
   CHECK(a.rel_error < 1e-3);
 }
 
+// The paper is blurred as the target is, whatever the render's σ (kernels/loss.cl, Q): a
+// drawing with nothing in the frame against a blank page has loss 0 at a wider render blur and
+// a chroma blur of its own. With the render's blur on the paper too, zero padding left a band
+// along the border (1 - (B 1) against 1 - (G_t 1)) that no pose could fit.
+TEST_CASE("blur matching: nothing drawn against a blank page costs nothing at any render blur") {
+  Case c = make_case(scene_of(40, 32, {filled(circle({20, 16}, 9), {0.9f, 0.2f, 0.1f, 1})}), 5, 2);
+  const RasterPlan plan = plan_raster(c.scene, Affine{}, 40, 32);
+  std::fill(c.targets.begin(), c.targets.end(), 1.f);
+  for (size_t i = 0; i < c.cp.size(); ++i) c.cp[i] += 500;  // the disc far outside the frame
+  for (const auto& [sl, sc] : {std::pair{1.0, 0.0}, std::pair{1.4, 0.0}, std::pair{1.3, 1.9}}) {
+    CAPTURE(sl);
+    CAPTURE(sc);
+    ClRaster r(runtime(), plan, c.K, sl, sc);
+    r.set_control_points(std::vector<float>(c.cp.begin(), c.cp.end()));
+    r.set_targets(c.targets);
+    CHECK(std::fabs(r.loss_and_gradient(kWeight, {1, 1, 1, 1})) < 1e-12f);
+    CHECK(ref_loss(plan, c.cp, c.targets, c.K, {1, 1, 1, 1}, sl, sc) == 0);
+  }
+}
+
 // Chroma blur matching (raster/loss_taps.h, render_blur): luma blurred at the render σ,
 // chroma in YCbCr at its own. The kernels' loss follows the reference's per-group blur and the
 // gradient its finite differences, with the chroma blur wider than luma's radius (1 / 1.6: radii

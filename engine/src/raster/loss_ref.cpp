@@ -35,8 +35,8 @@ double chroma_sq_sum(const std::vector<double>& image, const std::vector<float>&
   for (size_t p = 0; p < ycc.size() / 3; ++p) {
     double c[3];
     for (int ch = 0; ch < 3; ++ch) {
-      c[ch] = image[4 * p + ch] + background[ch] * (1.0 - image[4 * p + 3]);
-      t[3 * p + ch] = target[4 * p + ch];
+      c[ch] = image[4 * p + ch] - background[ch] * image[4 * p + 3];  // what is drawn, X
+      t[3 * p + ch] = target[4 * p + ch] - background[ch];
     }
     for (int i = 0; i < 3; ++i) ycc[3 * p + i] = kYcc[i][0] * c[0] + kYcc[i][1] * c[1] + kYcc[i][2] * c[2];
   }
@@ -76,8 +76,10 @@ double blurred_sq_sum(const std::vector<double>& image, const std::vector<float>
   std::vector<double> c(static_cast<size_t>(width) * height * 3), t(c.size());
   for (size_t p = 0; p < c.size() / 3; ++p)
     for (int ch = 0; ch < 3; ++ch) {
-      c[3 * p + ch] = image[4 * p + ch] + background[ch] * (1.0 - image[4 * p + 3]);
-      t[3 * p + ch] = target[4 * p + ch];
+      // What is drawn (X = C - bg) against the target less the paper: the paper blurs as the
+      // target does, whatever the render's σ (raster_cl_backward.cpp, Q).
+      c[3 * p + ch] = image[4 * p + ch] - background[ch] * image[4 * p + 3];
+      t[3 * p + ch] = target[4 * p + ch] - background[ch];
     }
   double sum = 0;
   for (int y = 0; y < height; ++y)

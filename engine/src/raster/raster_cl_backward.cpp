@@ -238,10 +238,14 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
   if (!targets_) throw Error("internal: loss without targets (set_targets)");
   std::vector<float> frame(px * 4);  // one target frame at a time
   // The render's blur B (loss.cl's taps; per channel group with a chroma σ of its own,
-  // raster/loss_taps.h render_blur) and the target's, in double: Q = bg·(B 1) − G_t ∗ T,
-  // R = Bᵀ Q.
+  // raster/loss_taps.h render_blur) and the target's, in double: Q = bg·(G_t 1) − G_t ∗ T,
+  // R = Bᵀ Q. The paper is blurred as the target is, B only acting on what is drawn (X): with
+  // zero padding, bg·(B 1) − bg·(G_t 1) was a band along the frame's border wherever blur
+  // matching widened B, the same at every pose: a floor under the loss (a blurred bat's loss
+  // at rest 7.3e-5 against 2.8e-6 clean) that the relative plateau and activation tests
+  // (optimise/fitter.h) read as a loss that had stopped falling.
   const std::vector<double> g_target = loss_stencil(kLossSigma);
-  const std::vector<double> g1 = render_blur(std::vector<double>(px * 3, 1.0), W, H, render_sigma_, chroma_sigma_);
+  const std::vector<double> g1 = blur_rgb(std::vector<double>(px * 3, 1.0), W, H, g_target);
   std::vector<double> q(px * 3);
   // One frame's Q and R at a time, kept by tiles (raster/loss_tiles.h): whole-clip host copies
   // were 32 bytes per pixel and frame at the fit's peak (176 MB for 21 keyframes at 512 px),
