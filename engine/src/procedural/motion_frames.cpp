@@ -196,13 +196,14 @@ RegionTurn motion_plan_internal::region_turn(const PlannedAction& a, double amp,
   if (!a.lobes.empty()) {
     for (const ArmLobe& l : a.lobes) {
       if (a.region_side != 0 && l.side != a.region_side) continue;
+      // A rigid part (one lobe, its own paths only: region_use) turns whole, every point of it.
       const double depth = lobe_depth(l, q);
-      if (depth <= 0) continue;
+      if (depth <= 0 && !a.rigid) continue;
       // A located part that grows (petals opening, petal_rosette.h): its points spread from the
       // lobe's centre, as a pulse scales a part about its middle.
       if (a.primitive == Primitive::Pulse) return {l.pivot, 0, 1, amp * (0.5 - 0.5 * std::cos(kTau * a.cycles * t)), true};
       const double base = std::hypot(l.base1.x - l.base0.x, l.base1.y - l.base0.y);
-      const double w = smoothstep(depth / std::max(kLobeRamp * base, 1e-9));
+      const double w = a.rigid ? 1 : smoothstep(depth / std::max(kLobeRamp * base, 1e-9));
       return {l.pivot, amp * (l.side < 0 ? 1 : -1) * wave(a.alternating && l.side > 0 ? 0.5 : 0), w};
     }
     return {};

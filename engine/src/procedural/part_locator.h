@@ -18,8 +18,9 @@
 //  - flames (flame): the tips of what is drawn above the body's top, each element there with
 //    nothing else drawn over it (a candle's flame, not the candle), each turning about its
 //    lowest middle; a blaze drawn whole has none (the whole figure flickers);
-//  - a clapper (clapper, pendulum, tongue of a bell): a small element below the body's middle
-//    and centred under it, turning about its top;
+//  - a clapper (clapper, pendulum, tongue of a bell): the lowest small element below the body's
+//    middle and centred under it, with the others there that overlap it (its colour under its
+//    outline), turning whole (rigid) about the middle of their top;
 //  - hands (of a clock or a dial: hand, needle, pointer): thin elements inside a larger one,
 //    one end of each at a common centre they turn about;
 //  - a side pair (claw, pincer, nipper, mandible): the mirrored pair of side protrusions (each
@@ -66,6 +67,8 @@ struct LocatedPart {
   std::vector<ArmLobe> lobes;  // each turns about its pivot; empty: not found
   std::vector<int> paths;      // scene paths whose points may move (sorted)
   std::string why;             // what was chosen and why, one phrase
+  bool rigid = false;          // it turns whole about its pivot (a clapper hangs free: bent from
+                               // a ramp at its top, or through a mesh, its top stayed and it folded)
 };
 
 // The elements of the figure (every part but the background), for Rig::elements.
