@@ -302,23 +302,6 @@ TEST_CASE("parse: what hangs from something sways under it ('the sloth hangs fro
   CHECK(p.clauses[1].mods.speed == 0.5);
 }
 
-TEST_CASE("parse: effort on a held tool ('he pulls the oar') moves the arms, not the whole figure") {
-  const ParsedPrompt p = parse_prompt("he pulls the oar through the water");
-  REQUIRE(p.clauses.size() == 1);
-  CHECK(verb_names(p.clauses[0]) == std::vector<std::string>{"pull"});
-  const Verb* pull = find_verb_by_name("pull");
-  REQUIRE(pull);
-  REQUIRE(pull->actions.size() == 1);
-  CHECK(pull->actions[0].target == Target::Arms);
-  CHECK(pull->actions[0].primitive == Primitive::Swing);
-  for (const char* w : {"pushes", "hauling", "tugged"}) CHECK_MESSAGE(find_verb_by_word(w) == pull, w);
-  // "pulse" and "heave" (a chest's) keep their own verb.
-  CHECK(find_verb_by_word("pulses")->name == "pulse");
-  CHECK(find_verb_by_word("heaves")->name == "pulse");
-  if (!wordnet_or_skip()) return;
-  CHECK(verb_of("drag") == "pull");  // WordNet: drag is a kind of haul
-}
-
 TEST_CASE("lexicon: a whole-figure motion claims no sense that only moves something else") {
   if (!wordnet_or_skip()) return;
   // WordNet's sentence frames: "travel, go, move" is said of its subject alone; "move, displace"

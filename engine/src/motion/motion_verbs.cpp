@@ -30,12 +30,6 @@ const std::vector<Verb> kVerbs = {
   {"lift",    {"lift", "rais", "hold"},         {{P::Swing, T::Arms, 24, 2, Pr::Mirrored}}, P::Swing},
   {"reach",   {"reach", "spread"},              {{P::Swing, T::Arms, 20, 1, Pr::Mirrored}}, P::Swing},
   {"pump",    {"pump"},                         {{P::Swing, T::Arms, 20, 2, Pr::Alternating}}, P::Swing},
-  // Effort on a held tool or a load ("pulls the oar", "pushes the cart", "hauls the rope"): the
-  // arms draw it in and let it out (a held tool rides with the hand: carried_shapes.h). Read
-  // through WordNet as "move" (cause to move), a rower slid whole with his boat and his arms
-  // never pulled. WordNet places jerk, twitch, tow, drag and draw under it: a part named with
-  // them ("twitches its ears") swings as the arms would.
-  {"pull",    {"pull", "push", "haul", "tug"}, {{P::Swing, T::Arms, 26, 2, Pr::Mirrored}}, P::Swing},
   // Rubbing is a part going back and forth against something (its pair, the body, a surface):
   // quick small swings of the part the prompt names, the hands when it names none. WordNet
   // places its kinds here (scour, massage, chafe, scratch).

@@ -31,8 +31,9 @@ constexpr double kLineAcross = 0.2;
 constexpr double kLineTouch = 0.03;
 // The rest of a drawing with one backdrop, all of it together under this share of the
 // backdrop's fill area, is details drawn on it, not a figure before it: twemoji's snake (1f40d),
-// its body winding across the canvas and cut by its right edge, has an eye and a tongue of 3 %
-// of it; the smallest figure on a scene's backdrop in the suites is a figure of its own size.
+// its body winding across the canvas and cut by its right edge (0.69 of it), has an eye and a
+// tongue of 3.7 % of its area. A scene with a figure (the suites' climber on a rock face) keeps
+// its backdrops: it has two, and its figure is far larger.
 constexpr double kDetailsOnly = 0.05;
 constexpr const char* kBackdropWhy = "large, at the canvas edges, painted first";
 
