@@ -117,8 +117,8 @@ TEST_CASE("part locator: a bell's clapper swings about its top under the rim, it
   REQUIRE(plan.actions.size() == 1);
   const PlannedAction& a = plan.actions[0];
   CHECK(a.region == Region::Located);
-  CHECK(a.rigid);
   REQUIRE(a.lobes.size() == 1);
+  CHECK(a.lobes[0].rigid);
   // The top of the clapper: its fill's, y 156 (the outline's arc starts at 160).
   CHECK(a.lobes[0].pivot.x == doctest::Approx(100));
   CHECK(a.lobes[0].pivot.y == doctest::Approx(156));
@@ -143,7 +143,7 @@ TEST_CASE("part locator: a clapper hanging inside its bell's outline swings whol
   REQUIRE(plan.actions.size() == 1);
   const PlannedAction& a = plan.actions[0];
   REQUIRE(a.lobes.size() == 1);
-  CHECK(a.rigid);
+  CHECK(a.lobes[0].rigid);
   CHECK(a.lobe_paths == std::vector<int>{0, 2});
   const Vec2 top = a.lobes[0].pivot;
   CHECK(top.x == doctest::Approx(100));

@@ -74,8 +74,6 @@ struct PlannedAction {
                                 // whole turns
   bool closed_form = false;     // region bends: the closed-form bend, not the mesh (region_bend.h:
                                 // fit_plan's choice when unfolding the mesh would hide the motion)
-  bool rigid = false;           // Located: the lobes' paths turn whole about the pivot, no ramp
-                                // and no mesh (part_locator.h's rigid parts: a clapper)
   std::string why;
 };
 

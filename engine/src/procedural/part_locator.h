@@ -67,8 +67,6 @@ struct LocatedPart {
   std::vector<ArmLobe> lobes;  // each turns about its pivot; empty: not found
   std::vector<int> paths;      // scene paths whose points may move (sorted)
   std::string why;             // what was chosen and why, one phrase
-  bool rigid = false;          // it turns whole about its pivot (a clapper hangs free: bent from
-                               // a ramp at its top, or through a mesh, its top stayed and it folded)
 };
 
 // The elements of the figure (every part but the background), for Rig::elements.
