@@ -312,8 +312,10 @@ LocatedPart clapper(const Rig& rig, int body) {
   RigBox b;
   for (int e : els) b.add(rig.elements[e].box);
   // It hangs free: bent from a ramp at its top, or through a mesh with the bell, its top stayed
-  // and it folded (the mesh held openmoji's clapper to 4.3 % of the figure's size).
-  out.lobes.push_back(lobe_over(rig, els, {b.centre().x, b.y0}));
+  // and it folded (the mesh held openmoji's clapper to 4.3 % of the figure's size). It hangs
+  // from its top inside the body, or from the body's bottom when drawn wholly below it (turned
+  // about its own flat top, twemoji's half disc, 1f514, raised a corner over the bell's rim).
+  out.lobes.push_back(lobe_over(rig, els, {b.centre().x, std::min(b.y0, B.y1)}));
   out.lobes.back().rigid = true;
   std::set<int> paths;
   add_paths(rig, els, paths);

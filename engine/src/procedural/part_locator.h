@@ -20,7 +20,8 @@
 //    lowest middle; a blaze drawn whole has none (the whole figure flickers);
 //  - a clapper (clapper, pendulum, tongue of a bell): the lowest small element below the body's
 //    middle and centred under it, with the others there that overlap it (its colour under its
-//    outline), turning whole (rigid) about the middle of their top;
+//    outline), turning whole (rigid) about the middle of their top, or of the body's bottom
+//    when they hang wholly below it;
 //  - hands (of a clock or a dial: hand, needle, pointer): thin elements inside a larger one,
 //    one end of each at a common centre they turn about;
 //  - a side pair (claw, pincer, nipper, mandible): the mirrored pair of side protrusions (each
