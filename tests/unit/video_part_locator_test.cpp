@@ -111,22 +111,67 @@ TEST_CASE("part locator: an ear drawn in one stroke with the head and trunk is i
   CHECK(t[1] > 5.0);
 }
 
-TEST_CASE("part locator: a bell's clapper swings about its top under the rim, its fill with its outline; the bell holds") {
+TEST_CASE("part locator: a bell's clapper under the rim swings from the rim's middle, its fill with its outline; the bell holds") {
   const Drawing d("bell_clapper.svg");
   const MotionPlan plan = plan_from_prompt(parse_prompt("the bell's clapper swings"), d.rig, 1);
   REQUIRE(plan.actions.size() == 1);
   const PlannedAction& a = plan.actions[0];
   CHECK(a.region == Region::Located);
   REQUIRE(a.lobes.size() == 1);
+  CHECK(a.lobes[0].rigid);
+  // Drawn wholly below the rim (y 155; its fill starts at 156, its outline's arc at 160), it
+  // hangs from the rim's middle.
   CHECK(a.lobes[0].pivot.x == doctest::Approx(100));
-  CHECK(a.lobes[0].pivot.y == doctest::Approx(160));
+  CHECK(a.lobes[0].pivot.y == doctest::Approx(155));
   // The outline's arc is lowest; the fill it is drawn over goes with it.
-  CHECK(a.why.find("the lowest small element centred under the body (path 4+3") != std::string::npos);
+  CHECK(a.why.find("the lowest small element centred under the body, with what overlaps it (path 3+4") != std::string::npos);
   const auto t = d.travel(plan);
   CHECK(t[0] == 0.0);
   CHECK(t[1] == 0.0);
   CHECK(t[2] > 3.0);
   CHECK(t[3] > 3.0);
+}
+
+TEST_CASE("part locator: a clapper hanging inside its bell's outline swings whole: its shape unchanged, its top still") {
+  // The clapper's disc starts inside the bell (its top at y 140, the rim at 155) and hangs below
+  // it, its outline's arc over its lower half: the two swing as one rigid piece about the disc's top.
+  const Scene s = read_svg_string(R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">
+        <g><circle cx="100" cy="152" r="12" fill="#a70"/>
+           <path d="M 100 30 C 60 30 55 80 50 140 L 40 155 L 160 155 L 150 140 C 145 80 140 30 100 30 Z" fill="#fc2"/>
+           <path d="M 89 156 C 91 168 109 168 111 156" fill="none" stroke="#000" stroke-width="2"/></g></svg>)", "bell.svg");
+  const Rig rig = build_rig(s, {});
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the bell's clapper swings"), rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  const PlannedAction& a = plan.actions[0];
+  REQUIRE(a.lobes.size() == 1);
+  CHECK(a.lobes[0].rigid);
+  CHECK(a.lobe_paths == std::vector<int>{0, 2});
+  const Vec2 top = a.lobes[0].pivot;
+  CHECK(top.x == doctest::Approx(100));
+  CHECK(top.y == doctest::Approx(140));
+  const int F = 13;
+  const std::vector<Vec2> pts = animate_plan(s, rig, plan, F);
+  const size_t per = pts.size() / F;
+  // The clapper's points (the disc's, then the arc's after the bell's) and the bell's.
+  std::vector<size_t> clapper, bell;
+  size_t i = 0;
+  for (size_t p = 0; p < s.paths.size(); ++p)
+    for (const auto& sp : s.paths[p].subpaths)
+      for (size_t q = 0; q < sp.points.size(); ++q, ++i) (p == 1 ? bell : clapper).push_back(i);
+  double turned = 0;
+  for (int f = 1; f < F; ++f) {
+    const Vec2* P = &pts[f * per];
+    // Rigid: every distance between two of its points is as at rest, and so is each point's
+    // distance from the top it hangs by.
+    for (size_t u : clapper) {
+      CHECK(std::hypot(P[u].x - top.x, P[u].y - top.y) == doctest::Approx(std::hypot(pts[u].x - top.x, pts[u].y - top.y)).epsilon(1e-6));
+      for (size_t v : clapper)
+        CHECK(std::hypot(P[u].x - P[v].x, P[u].y - P[v].y) == doctest::Approx(std::hypot(pts[u].x - pts[v].x, pts[u].y - pts[v].y)).epsilon(1e-6));
+      turned = std::max(turned, std::hypot(P[u].x - pts[u].x, P[u].y - pts[u].y));
+    }
+    for (size_t u : bell) CHECK(std::hypot(P[u].x - pts[u].x, P[u].y - pts[u].y) == 0.0);
+  }
+  CHECK(turned > 3.0);  // it does swing
 }
 
 TEST_CASE("part locator: a clock's hands turn about the face's middle, not as arms of its case; the tick mark holds") {

@@ -150,4 +150,28 @@ TEST_CASE("scenery: wings filling the canvas at their tips are the figure's, not
   CHECK(travel[1] > 0);
 }
 
+TEST_CASE("scenery: a long thin figure spanning its canvas, with only its eye and tongue besides, is the figure") {
+  // A snake's body arching over the canvas (painted first, 90 % of the canvas by its box, its
+  // back along the left and the right edges for nine tenths of them), its tongue and its eye:
+  // 43 units of area beside its 3750.
+  auto scene = [](const char* more) {
+    return read_svg_string(std::string(R"(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">
+        <g><path d="M 0 100 L 0 10 L 100 10 L 100 100 L 85 100 L 85 25 L 15 25 L 15 100 Z" fill="#7b5"/></g>
+        <g><path d="M 20 2 L 30 5 L 20 8 Z" fill="#d24"/></g>
+        <g><circle cx="10" cy="17" r="2" fill="#000"/></g>)") + more + "</svg>", "snake.svg");
+  };
+  const Scene s = scene("");
+  REQUIRE(is_backdrop(s, {0}, 0, 10, 100, 100, 0.0));  // the backdrop rule alone takes it
+  const Rig rig = build_rig(s, {});
+  for (const RigPart& P : rig.parts) CHECK_MESSAGE(P.role != Role::Background, P.name);
+  CHECK(rig.figure.x0 == doctest::Approx(0));
+  CHECK(rig.figure.y1 == doctest::Approx(100));
+  // A figure of its own before the same shape (a third of its area): the shape is its backdrop.
+  const Scene f = scene(R"(<g><rect x="35" y="40" width="30" height="40" fill="#c33"/></g>)");
+  const Rig frig = build_rig(f, {});
+  REQUIRE(frig.parts.size() == 4);
+  CHECK(frig.parts[0].role == Role::Background);
+  CHECK(frig.parts[3].role != Role::Background);
+}
+
 }  // TEST_SUITE

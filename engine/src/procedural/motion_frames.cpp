@@ -196,13 +196,14 @@ RegionTurn motion_plan_internal::region_turn(const PlannedAction& a, double amp,
   if (!a.lobes.empty()) {
     for (const ArmLobe& l : a.lobes) {
       if (a.region_side != 0 && l.side != a.region_side) continue;
+      // A rigid part (one lobe, its own paths only: region_use) turns whole, every point of it.
       const double depth = lobe_depth(l, q);
-      if (depth <= 0) continue;
+      if (depth <= 0 && !l.rigid) continue;
       // A located part that grows (petals opening, petal_rosette.h): its points spread from the
       // lobe's centre, as a pulse scales a part about its middle.
       if (a.primitive == Primitive::Pulse) return {l.pivot, 0, 1, amp * (0.5 - 0.5 * std::cos(kTau * a.cycles * t)), true};
       const double base = std::hypot(l.base1.x - l.base0.x, l.base1.y - l.base0.y);
-      const double w = smoothstep(depth / std::max(kLobeRamp * base, 1e-9));
+      const double w = l.rigid ? 1 : smoothstep(depth / std::max(kLobeRamp * base, 1e-9));
       return {l.pivot, amp * (l.side < 0 ? 1 : -1) * wave(a.alternating && l.side > 0 ? 0.5 : 0), w};
     }
     return {};
@@ -488,6 +489,8 @@ std::vector<std::unique_ptr<RegionBend>> region_meshes(const Scene& scene, const
     const PlannedAction& a = plan.actions[i];
     if (a.region == Region::None || a.closed_form || a.target == Target::Repeated || a.parts.empty() || plan.amplitude(a) == 0)
       continue;
+    // Rigid lobes turn in closed form: a rotation folds nothing.
+    if (!a.lobes.empty() && std::all_of(a.lobes.begin(), a.lobes.end(), [](const ArmLobe& l) { return l.rigid; })) continue;
     std::vector<int> bent;
     for (size_t pi = 0; pi < scene.paths.size(); ++pi)
       if (region_use(rig, a, pi, rig.part_of_path[pi], stays(pi), spinning, loads) == 1) bent.push_back(static_cast<int>(pi));

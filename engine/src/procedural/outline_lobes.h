@@ -30,6 +30,8 @@ struct ArmLobe {
   std::vector<Vec2> outline;  // the lobe's stretch of the outline, base0 .. base1
   LobeKind kind = LobeKind::Arm;  // a limb of the silhouette's skeleton (skeleton_lobes.h),
                                   // whose outline is the contour of the silhouette it owns
+  bool rigid = false;         // its paths turn whole about the pivot, no ramp and no mesh: a part
+                              // that hangs free (part_locator.h's clapper), not a limb that bends
 };
 
 // The arm lobes of `outline`'s first subpath (closed, at least a few cubics), left first.

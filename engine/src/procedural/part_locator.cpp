@@ -291,22 +291,37 @@ LocatedPart flames(const Rig& rig, int body) {
 LocatedPart clapper(const Rig& rig, int body) {
   LocatedPart out;
   const RigBox& B = rig.elements[body].box;
+  std::vector<int> fits;
   int best = -1;
   for (size_t i = 0; i < rig.elements.size(); ++i) {
     const RigBox& b = rig.elements[i].box;
     if (static_cast<int>(i) == body || b.area() > kClapperMaxShare * B.area()) continue;
     if (std::fabs(b.centre().x - B.centre().x) > kClapperOffCentre * B.w() || b.centre().y < B.y0 + kClapperLow * B.h()) continue;
+    fits.push_back(static_cast<int>(i));
     if (best < 0 || b.centre().y > rig.elements[best].box.centre().y) best = static_cast<int>(i);
   }
   if (best < 0) return out;
-  const RigBox& b = rig.elements[best].box;
-  const auto els = with_details(rig, best, body);
-  out.lobes.push_back(lobe_over(rig, els, {b.centre().x, b.y0}));
+  // The clapper is every element there that overlaps the lowest (openmoji's bell: its outline's
+  // lower arc, 1F514, and the disc of colour under it, which rose behind the bell's rim), with
+  // their details; it hangs from the middle of their top. The arc alone swung off its colour.
+  std::set<int> mine;
+  for (int i : fits)
+    if (overlap_area(rig.elements[i].box, rig.elements[best].box) > 0)
+      for (int e : with_details(rig, i, body)) mine.insert(e);
+  const std::vector<int> els(mine.begin(), mine.end());
+  RigBox b;
+  for (int e : els) b.add(rig.elements[e].box);
+  // It hangs free: bent from a ramp at its top, or through a mesh with the bell, its top stayed
+  // and it folded (the mesh held openmoji's clapper to 4.3 % of the figure's size). It hangs
+  // from its top inside the body, or from the body's bottom when drawn wholly below it (turned
+  // about its own flat top, twemoji's half disc, 1f514, raised a corner over the bell's rim).
+  out.lobes.push_back(lobe_over(rig, els, {b.centre().x, std::min(b.y0, B.y1)}));
+  out.lobes.back().rigid = true;
   std::set<int> paths;
   add_paths(rig, els, paths);
   out.paths.assign(paths.begin(), paths.end());
-  out.why = "the lowest small element centred under the body (" + path_ids(els, rig) + " at " + fmt_box(rig, b) +
-            "), turning about its top";
+  out.why = "the lowest small element centred under the body, with what overlaps it (" + path_ids(els, rig) + " at " +
+            fmt_box(rig, b) + "), swinging whole about its top";
   return out;
 }
 

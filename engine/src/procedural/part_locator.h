@@ -18,8 +18,10 @@
 //  - flames (flame): the tips of what is drawn above the body's top, each element there with
 //    nothing else drawn over it (a candle's flame, not the candle), each turning about its
 //    lowest middle; a blaze drawn whole has none (the whole figure flickers);
-//  - a clapper (clapper, pendulum, tongue of a bell): a small element below the body's middle
-//    and centred under it, turning about its top;
+//  - a clapper (clapper, pendulum, tongue of a bell): the lowest small element below the body's
+//    middle and centred under it, with the others there that overlap it (its colour under its
+//    outline), turning whole (rigid) about the middle of their top, or of the body's bottom
+//    when they hang wholly below it;
 //  - hands (of a clock or a dial: hand, needle, pointer): thin elements inside a larger one,
 //    one end of each at a common centre they turn about;
 //  - a side pair (claw, pincer, nipper, mandible): the mirrored pair of side protrusions (each

@@ -29,6 +29,13 @@ constexpr double kHeadMaxAspect = 2.0;
 constexpr double kLineHeadTop = 0.1;
 constexpr double kLineAcross = 0.2;
 constexpr double kLineTouch = 0.03;
+// The rest of a drawing with one backdrop, all of it together under this share of the
+// backdrop's fill area, is details drawn on it, not a figure before it: twemoji's snake (1f40d),
+// its body winding across the canvas and cut by its right edge (0.69 of it), has an eye and a
+// tongue of 3.7 % of its area. A scene with a figure (the suites' climber on a rock face) keeps
+// its backdrops: it has two, and its figure is far larger.
+constexpr double kDetailsOnly = 0.05;
+constexpr const char* kBackdropWhy = "large, at the canvas edges, painted first";
 
 // Each hanging part's chain top: the part its chain hangs from the root by (the guard stops a
 // cycle of parents).
@@ -184,12 +191,21 @@ bool Assembly::find_background() {
       P.why = "the scenery around the scene's subject";
     } else if (is_backdrop(scene, unit_paths[g], P.box.x0, P.box.y0, P.box.x1, P.box.y1, mean_index[g] / static_cast<double>(n_paths))) {
       P.role = Role::Background;
-      P.why = "large, at the canvas edges, painted first";
+      P.why = kBackdropWhy;
     } else {
       ++figure_parts;
     }
   }
-  if (figure_parts == 0)  // nothing left to animate: there is no background
+  // Nothing left to animate, or only details drawn on one large shape the box rule took for a
+  // backdrop (a snake winding across its canvas, its eye and tongue): there is no background.
+  double backdrop_area = 0, figure_area = 0;
+  int backdrops = 0;
+  for (const auto& P : rig.parts) {
+    if (P.box.empty()) continue;
+    if (P.role != Role::Background) figure_area += P.area;
+    else if (P.why == kBackdropWhy) backdrop_area = std::max(backdrop_area, P.area), ++backdrops;
+  }
+  if (figure_parts == 0 || (backdrops == 1 && figure_area < kDetailsOnly * backdrop_area))
     for (auto& P : rig.parts)
       if (P.role == Role::Background) { P.role = Role::Detail; P.why.clear(); }
   for (const auto& P : rig.parts)
