@@ -197,11 +197,8 @@ struct Builder {
       rock_on_part = false;
       return "petals open: they spread from the flower's centre";
     }
-    // A rising plume swells up from its base (self_movers.h); swung, "steam rises" went side to side.
-    if (plume_rises(located, a.primitive)) {
-      a.primitive = Primitive::Pulse, amp = plume_growth(rig, *located), rock_on_part = false;
-      return "a plume rises: it swells up from its base";
-    }
+    // A rising plume swells, a rotor spins (self_movers.h); swung, "steam rises" went side to side.
+    if (std::string own = own_motion(rig, located, a.primitive, amp); !own.empty()) return rock_on_part = false, own;
     if (located) {
       if (a.primitive != Primitive::Swing || base.primitive != Primitive::Swing) amp = 0;
       a.primitive = Primitive::Swing;
@@ -269,7 +266,7 @@ struct Builder {
     if (mods.once > 0) a.cycles = 1;
     if (mods.once < 0) a.cycles = std::max(2, a.cycles);
     if (whole_turns) {
-      a.amp = std::max(1.0, std::round(base.amp * (mods.speed > 1 ? 2 : 1)));  // whole turns
+      a.amp = std::max(1.0, std::round((base.primitive == Primitive::Spin ? base.amp : 1) * (mods.speed > 1 ? 2 : 1)));  // whole turns
       a.cycles = 1;
     }
     a.vertical = mods.vertical;

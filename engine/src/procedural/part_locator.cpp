@@ -8,6 +8,7 @@
 
 #include "motion/motion_verbs.h"
 #include "procedural/petal_rosette.h"
+#include "procedural/rotor_blades.h"
 
 namespace svgm {
 
@@ -310,12 +311,7 @@ LocatedPart clapper(const Rig& rig, int body) {
   return out;
 }
 
-// An element's long axis: its two ends (the extreme points along its principal direction) and
-// its length over its width.
-struct Axis {
-  Vec2 a, b;
-  double elongation = 0;
-};
+using Axis = ElementAxis;
 Axis axis_of(const RigElement& e) {
   Axis ax;
   if (e.points.size() < 2) return ax;
@@ -612,6 +608,9 @@ bool any_stem(std::string_view w, std::initializer_list<std::string_view> stems)
 
 }  // namespace
 
+ElementAxis element_axis(const RigElement& e) { return axis_of(e); }
+ArmLobe lobe_over_elements(const Rig& rig, const std::vector<int>& els, Vec2 pivot) { return lobe_over(rig, els, pivot); }
+
 // A box in shares of the figure's box, for the notes: "0.10,0.20-0.40,0.55".
 std::string fmt_box(const Rig& rig, const RigBox& b) {
   const RigBox& F = rig.figure;
@@ -644,6 +643,7 @@ PartShape part_shape_of(std::string_view w, FigureClass figure) {
   if (animal && any_stem(w, {"trunk", "proboscis", "snout"})) return PartShape::Branch;
   if (any_stem(w, {"petal"})) return PartShape::Petals;
   if (any_stem(w, {"tentacl", "tendril", "strand"})) return PartShape::Strands;
+  if (any_stem(w, {"propell", "rotor", "blade", "vane"})) return PartShape::Rotor;
   return PartShape::None;
 }
 
@@ -659,6 +659,7 @@ const char* part_shape_name(PartShape s) {
     case PartShape::Petals: return "petals";
     case PartShape::Strands: return "strands";
     case PartShape::Bloom: return "bloom";
+    case PartShape::Rotor: return "rotor";
     case PartShape::None: break;
   }
   return "none";
@@ -734,6 +735,7 @@ LocatedPart locate_part(const Rig& rig, PartShape shape) {
     case PartShape::Petals: out = find_petals(rig); break;
     case PartShape::Strands: out = strands(rig, body); break;
     case PartShape::Bloom: out = bloom(rig); break;
+    case PartShape::Rotor: out = rotor_blades(rig, body); break;
     case PartShape::None: break;
   }
   out.shape = shape;
