@@ -269,7 +269,7 @@ struct Builder {
       a.amp = std::max(1.0, std::round((base.primitive == Primitive::Spin ? base.amp : 1) * (mods.speed > 1 ? 2 : 1)));  // whole turns
       a.cycles = 1;
     }
-    a.vertical = mods.vertical;
+    a.vertical = mods.vertical || verb.name != "takeoff" || a.primitive != Primitive::Bob ? mods.vertical : 1;  // a launch climbs, never dipping below where it stood
     if (a.primitive == Primitive::Undulate && target == Target::Whole) a.anchored = anchored_side(rig, true);
     if (a.primitive == Primitive::Bend && target == Target::Whole) a.anchored = bend_anchor(rig, verb.name == "flicker" ? FigureClass::Flame : figure);
     a.direction = mods.side != 0 ? mods.side : ((rng() & 1) ? 1 : -1);
@@ -628,7 +628,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
       std::vector<int> hits;
       // A part of a kind the locator knows, unless the document names a part so: found on the
       // figure by its kind's prior (part_locator.h).
-      if (!ct.have && !n.object_of_preposition && !n.own_predicate && locatable(n)) {
+      if (!ct.have && (!n.object_of_preposition || n.preposition == "of") && !n.own_predicate && locatable(n)) {  // "a cloud of smoke"
         ct.have = true;
         ct.target = Target::Named;
         ct.word = n.word;

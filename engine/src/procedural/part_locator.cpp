@@ -39,6 +39,7 @@ constexpr double kStemMin = 0.3;       // a stem at least this share of F's heig
 constexpr double kBloomMin = 0.08;     // a bloom's box at least this share of F's box
 constexpr double kTailMaxLength = 0.5; // a tail no longer than this share of F's longer side
 constexpr double kStrandReach = 0.1;   // a strand's end within this share of F's longer side of the body's box
+constexpr double kJetGap = 0.02;       // a plume floats this share of F's height above its source's top (what reaches it stands on it)
 constexpr double kStrandAlong = 0.5;   // strokes drawn along one strand: boxes overlapping this share of the smaller
 
 double overlap_area(const RigBox& a, const RigBox& b) {
@@ -232,15 +233,21 @@ LocatedPart ears(const Rig& rig, int body) {
 
 LocatedPart jet(const Rig& rig, int body) {
   LocatedPart out;
+  // The source is the element of most drawn area: a thin curl of smoke can have the largest box.
+  for (size_t i = 0; i < rig.elements.size(); ++i)
+    if (rig.elements[i].area > rig.elements[body].area) body = static_cast<int>(i);
   const RigBox& B = rig.elements[body].box;
-  // Everything drawn above the body's top (a spout's drops together).
+  // Everything drawn above the body's top (a spout's drops together), but what stands on it (a
+  // factory's chimney and roof under its smoke: their bottoms at its top) when anything else is.
   std::vector<int> els;
   RigBox box;
-  for (size_t i = 0; i < rig.elements.size(); ++i)
-    if (static_cast<int>(i) != body && rig.elements[i].box.centre().y < B.y0 && rig.elements[i].box.area() < B.area()) {
-      els.push_back(static_cast<int>(i));
-      box.add(rig.elements[i].box);
-    }
+  for (int pass = 0; pass < 2 && els.empty(); ++pass)
+    for (size_t i = 0; i < rig.elements.size(); ++i)
+      if (static_cast<int>(i) != body && rig.elements[i].box.centre().y < B.y0 && rig.elements[i].box.area() < B.area() &&
+          (pass == 1 || rig.elements[i].box.y1 < B.y0 - kJetGap * rig.figure.h())) {
+        els.push_back(static_cast<int>(i));
+        box.add(rig.elements[i].box);
+      }
   if (els.empty()) return out;
   out.lobes.push_back(lobe_over(rig, els, {box.centre().x, box.y1}));
   std::set<int> paths;

@@ -38,7 +38,7 @@ LocatedPart flames_of_light(const Clause& c, const Rig& rig) {
 }
 
 bool plume_rises(const LocatedPart* located, Primitive p) {
-  return located && located->shape == PartShape::Jet && (p == Primitive::Bob || p == Primitive::Pulse || p == Primitive::Stretch);
+  return located && located->shape == PartShape::Jet && (p == Primitive::Bob || p == Primitive::Pulse || p == Primitive::Stretch || p == Primitive::Undulate);
 }
 
 std::string own_motion(const Rig& rig, const LocatedPart* located, Primitive& primitive, double& amp) {

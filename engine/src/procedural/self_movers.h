@@ -34,7 +34,8 @@ std::vector<const Verb*> clause_verbs(const Clause& c, const Rig& rig, const Loc
 LocatedPart flames_of_light(const Clause& c, const Rig& rig);
 
 // Whether a verb of primitive `p` aimed at the located part makes a plume rise: a jet (smoke,
-// steam, a spout) that bobs, swells or stretches.
+// steam, a spout) that bobs, swells, stretches or billows (swung, a billowing cloud of smoke
+// rocked on the chimney it rises from).
 bool plume_rises(const LocatedPart* located, Primitive p);
 
 // How a located part that moves its own way moves, whatever verb is aimed at it: a plume that
