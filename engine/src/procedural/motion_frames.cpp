@@ -522,6 +522,7 @@ std::vector<double> bend_sizes(const Scene& scene, const Rig& rig, const MotionP
   std::vector<double> size(scene.paths.size(), 0);
   for (const PlannedAction& a : plan.actions) {
     if (a.region == Region::None || a.target == Target::Repeated || a.parts.empty() || plan.amplitude(a) == 0) continue;
+    if (!a.lobes.empty() && (a.primitive == Primitive::Spin || a.primitive == Primitive::Stretch)) continue;  // a rotor's own motion, whole
     const RigBox& hb = rig.parts[a.parts[0]].box;
     for (size_t pi = 0; pi < scene.paths.size(); ++pi)
       if (region_use(rig, a, pi, rig.part_of_path[pi], stays(pi), spinning, loads) == 1)

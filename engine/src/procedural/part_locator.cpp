@@ -337,6 +337,7 @@ Axis axis_of(const RigElement& e) {
     w1 = std::max(w1, t);
   }
   ax.elongation = (hi - lo) / std::max(w1 - w0, 1e-9);
+  ax.mid_a = c + lo * u, ax.mid_b = c + hi * u;
   return ax;
 }
 

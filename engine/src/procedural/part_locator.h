@@ -73,6 +73,7 @@ struct LocatedPart {
 // its length over its width.
 struct ElementAxis {
   Vec2 a, b;
+  Vec2 mid_a, mid_b;  // the ends on its middle line (through its centroid along the direction)
   double elongation = 0;
 };
 ElementAxis element_axis(const RigElement& e);

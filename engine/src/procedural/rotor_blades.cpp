@@ -31,8 +31,8 @@ struct Blade {
 std::vector<Blade> blades_at(const std::vector<int>& cand, const std::vector<ElementAxis>& ax, Vec2 hub, double tol) {
   std::vector<Blade> out;
   for (size_t k = 0; k < cand.size(); ++k) {
-    const bool a_near = dist(ax[k].a, hub) <= dist(ax[k].b, hub);
-    const Vec2 n = a_near ? ax[k].a : ax[k].b, f = a_near ? ax[k].b : ax[k].a;
+    const bool a_near = dist(ax[k].mid_a, hub) <= dist(ax[k].mid_b, hub);
+    const Vec2 n = a_near ? ax[k].mid_a : ax[k].mid_b, f = a_near ? ax[k].mid_b : ax[k].mid_a;
     if (dist(n, hub) <= tol) out.push_back({cand[k], n, f});
   }
   return out;
@@ -65,17 +65,17 @@ LocatedPart rotor_blades(const Rig& rig, int body) {
     const RigBox &E = rig.elements[i].box, &B = rig.elements[body].box;
     if (static_cast<int>(i) == body || (part_rig_internal::overlap(E, B) >= 0.5 * E.area() && part_rig_internal::overlap(E, B) >= 0.5 * B.area())) continue;
     const ElementAxis a = element_axis(rig.elements[i]);
-    if ((a.elongation < kBladeElongation && !rig.elements[i].thin) || dist(a.a, a.b) < kBladeMinLength * D) continue;
+    if ((a.elongation < kBladeElongation && !rig.elements[i].thin) || dist(a.mid_a, a.mid_b) < kBladeMinLength * D) continue;
     cand.push_back(static_cast<int>(i));
     ax.push_back(a);
   }
   // The hub: where the most blade directions meet (then the most blades: a fill and its
   // outline), looked for at every blade end (the ends there averaged) and at the middle of
   // every small element (a hub drawn as a disc the blades stop short of).
-  std::vector<std::pair<Vec2, bool>> looks;
-  for (const ElementAxis& a : ax) looks.push_back({a.a, false}), looks.push_back({a.b, false});
+  std::vector<std::pair<Vec2, bool>> looks;  // the discs first: a tie goes to a drawn hub
   for (const RigElement& e : rig.elements)
     if (std::hypot(e.box.w(), e.box.h()) <= 2 * tol) looks.push_back({e.box.centre(), true});
+  for (const ElementAxis& a : ax) looks.push_back({a.mid_a, false}), looks.push_back({a.mid_b, false});
   size_t best_dirs = 0, best_n = 0;
   Vec2 hub;
   for (const auto& [at_point, disc] : looks) {
@@ -121,6 +121,14 @@ LocatedPart rotor_blades(const Rig& rig, int body) {
     }
     ArmLobe l = lobe_over_elements(rig, els, hub);
     l.side = -1;  // every blade turns the same way
+    // Its tip on its middle line (the way to its points' centroid), not at a corner of its end: an
+    // edge-on blade squeezes along that line, never across it.
+    Vec2 c;
+    size_t n = 0;
+    for (int e : els)
+      for (Vec2 q : rig.elements[e].points) c = c + q, ++n;
+    c = (1.0 / std::max<size_t>(n, 1)) * c;
+    if (dist(c, hub) > 0) l.tip = hub + (dist(l.tip, hub) / dist(c, hub)) * (c - hub);
     out.lobes.push_back(l);
   }
   out.paths.assign(paths.begin(), paths.end());
