@@ -53,8 +53,10 @@ const std::vector<Verb> kVerbs = {
   {"float",   {"float", "drift", "levitat"},    {{P::Bob, T::Whole, 0.05, 1}, {P::Rock, T::Whole, 3, 1}}, P::Bob},
   // Leaving the ground (a plane taking off, a rocket lifting off: lexicon_anchors.cpp): the whole
   // figure climbs away and comes back, going forward as it climbs. Read as "move" (a slide of 4 %
-  // and a stretch), the plane taking off crept along the runway.
-  {"takeoff", {"takeoff", "liftoff", "blastoff"}, {{P::Bob, T::Whole, 0.12, 1}, {P::Slide, T::Whole, 0.06, 1}}, P::Bob},
+  // and a stretch), the plane taking off crept along the runway; a bob of 12 % about where it
+  // stood dipped as far below and read as a hover: it climbs only up (motion_plan.cpp), a
+  // quarter of its height where the canvas has room (fit_plan scales it down where not).
+  {"takeoff", {"takeoff", "liftoff", "blastoff"}, {{P::Bob, T::Whole, 0.25, 1}, {P::Slide, T::Whole, 0.06, 1}}, P::Bob},
   {"rise",    {"ris", "rose", "ascend"},        {{P::Bob, T::Whole, 0.06, 1}}, P::Bob},
   {"sink",    {"sink", "sank", "div", "descend"}, {{P::Bob, T::Whole, 0.06, 1}, {P::Rock, T::Whole, 4, 1}}, P::Bob},
   {"sway",    {"sway", "blow", "breez"},        {{P::Sway, T::Whole, 8, 1}}, P::Swing},

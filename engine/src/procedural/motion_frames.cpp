@@ -11,6 +11,7 @@
 #include "procedural/detail_binding.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/region_bend.h"
+#include "procedural/rotor_blades.h"
 #include "procedural/support_band.h"
 #include "geometry/rigid_bodies.h"
 #include "procedural/wheel_riders.h"
@@ -202,6 +203,10 @@ RegionTurn motion_plan_internal::region_turn(const PlannedAction& a, double amp,
       // A located part that grows (petals opening, petal_rosette.h): its points spread from the
       // lobe's centre, as a pulse scales a part about its middle.
       if (a.primitive == Primitive::Pulse) return {l.pivot, 0, 1, amp * (0.5 - 0.5 * std::cos(kTau * a.cycles * t)), true};
+      // A rotor's blades (rotor_blades.h): face on they turn whole about the hub, edge on their
+      // length along their line follows |cos| of the turn (two blades in line: twice a turn).
+      if (a.primitive == Primitive::Spin) return {l.pivot, 360.0 * amp * a.direction * t, 1};
+      if (a.primitive == Primitive::Stretch) return {l.pivot, 0, 1, std::max(kEdgeOnMin, 1 - amp * (1 - std::fabs(std::cos(kTau * a.cycles * t)))) - 1, true};
       const double base = std::hypot(l.base1.x - l.base0.x, l.base1.y - l.base0.y);
       const double w = l.rigid ? 1 : smoothstep(depth / std::max(kLobeRamp * base, 1e-9));
       return {l.pivot, amp * (l.side < 0 ? 1 : -1) * wave(a.alternating && l.side > 0 ? 0.5 : 0), w};
@@ -245,6 +250,14 @@ RegionTurn motion_plan_internal::region_turn(const PlannedAction& a, double amp,
 
 Vec2 motion_plan_internal::bend_region(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
   const RegionTurn r = region_turn(a, amp, t, box, q);
+  if (r.pulse && a.primitive == Primitive::Stretch) {
+    // Along the blade's line only (the lobe's pivot to its tip).
+    for (const ArmLobe& l : a.lobes)
+      if (l.pivot.x == r.pivot.x && l.pivot.y == r.pivot.y) {
+        const Vec2 u = (1 / std::max(std::hypot(l.tip.x - l.pivot.x, l.tip.y - l.pivot.y), 1e-9)) * (l.tip - l.pivot), d = q - r.pivot;
+        return q + (r.grow * (d.x * u.x + d.y * u.y)) * u;
+      }
+  }
   if (r.pulse) return r.pivot + (1 + r.grow) * (q - r.pivot);
   return r.weight > 0 ? rotate_about(q, r.pivot, r.angle * r.weight) : q;
 }
@@ -512,6 +525,7 @@ std::vector<double> bend_sizes(const Scene& scene, const Rig& rig, const MotionP
   std::vector<double> size(scene.paths.size(), 0);
   for (const PlannedAction& a : plan.actions) {
     if (a.region == Region::None || a.target == Target::Repeated || a.parts.empty() || plan.amplitude(a) == 0) continue;
+    if (!a.lobes.empty() && (a.primitive == Primitive::Spin || a.primitive == Primitive::Stretch)) continue;  // a rotor's own motion, whole
     const RigBox& hb = rig.parts[a.parts[0]].box;
     for (size_t pi = 0; pi < scene.paths.size(); ++pi)
       if (region_use(rig, a, pi, rig.part_of_path[pi], stays(pi), spinning, loads) == 1)
@@ -582,7 +596,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
 
   std::vector<char> spinning(G, 0);
   for (const auto& a : plan.actions)
-    if (a.primitive == Primitive::Spin)
+    if (a.primitive == Primitive::Spin && a.region == Region::None)  // a rotor's spin turns its blades, not its part
       for (int p : a.parts) spinning[p] = 1;
   const WheelLoads loads = wheel_loads(rig, spinning);
   // Line art moves as the fill it is drawn on, and a still fill as the moving line tracing it

@@ -197,11 +197,8 @@ struct Builder {
       rock_on_part = false;
       return "petals open: they spread from the flower's centre";
     }
-    // A rising plume swells up from its base (self_movers.h); swung, "steam rises" went side to side.
-    if (plume_rises(located, a.primitive)) {
-      a.primitive = Primitive::Pulse, amp = plume_growth(rig, *located), rock_on_part = false;
-      return "a plume rises: it swells up from its base";
-    }
+    // A rising plume swells, a rotor spins (self_movers.h); swung, "steam rises" went side to side.
+    if (std::string own = own_motion(rig, located, a.primitive, amp); !own.empty()) return rock_on_part = false, own;
     if (located) {
       if (a.primitive != Primitive::Swing || base.primitive != Primitive::Swing) amp = 0;
       a.primitive = Primitive::Swing;
@@ -269,10 +266,10 @@ struct Builder {
     if (mods.once > 0) a.cycles = 1;
     if (mods.once < 0) a.cycles = std::max(2, a.cycles);
     if (whole_turns) {
-      a.amp = std::max(1.0, std::round(base.amp * (mods.speed > 1 ? 2 : 1)));  // whole turns
+      a.amp = std::max(1.0, std::round((base.primitive == Primitive::Spin ? base.amp : 1) * (mods.speed > 1 ? 2 : 1)));  // whole turns
       a.cycles = 1;
     }
-    a.vertical = mods.vertical;
+    a.vertical = mods.vertical || verb.name != "takeoff" || a.primitive != Primitive::Bob ? mods.vertical : 1;  // a launch climbs, never dipping below where it stood
     if (a.primitive == Primitive::Undulate && target == Target::Whole) a.anchored = anchored_side(rig, true);
     if (a.primitive == Primitive::Bend && target == Target::Whole) a.anchored = bend_anchor(rig, verb.name == "flicker" ? FigureClass::Flame : figure);
     a.direction = mods.side != 0 ? mods.side : ((rng() & 1) ? 1 : -1);
@@ -631,7 +628,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
       std::vector<int> hits;
       // A part of a kind the locator knows, unless the document names a part so: found on the
       // figure by its kind's prior (part_locator.h).
-      if (!ct.have && !n.object_of_preposition && !n.own_predicate && locatable(n)) {
+      if (!ct.have && (!n.object_of_preposition || n.preposition == "of") && !n.own_predicate && locatable(n)) {  // "a cloud of smoke"
         ct.have = true;
         ct.target = Target::Named;
         ct.word = n.word;

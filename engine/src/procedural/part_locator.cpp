@@ -8,6 +8,7 @@
 
 #include "motion/motion_verbs.h"
 #include "procedural/petal_rosette.h"
+#include "procedural/rotor_blades.h"
 
 namespace svgm {
 
@@ -38,6 +39,7 @@ constexpr double kStemMin = 0.3;       // a stem at least this share of F's heig
 constexpr double kBloomMin = 0.08;     // a bloom's box at least this share of F's box
 constexpr double kTailMaxLength = 0.5; // a tail no longer than this share of F's longer side
 constexpr double kStrandReach = 0.1;   // a strand's end within this share of F's longer side of the body's box
+constexpr double kJetGap = 0.02;       // a plume floats this share of F's height above its source's top (what reaches it stands on it)
 constexpr double kStrandAlong = 0.5;   // strokes drawn along one strand: boxes overlapping this share of the smaller
 
 double overlap_area(const RigBox& a, const RigBox& b) {
@@ -231,15 +233,21 @@ LocatedPart ears(const Rig& rig, int body) {
 
 LocatedPart jet(const Rig& rig, int body) {
   LocatedPart out;
+  // The source is the element of most drawn area: a thin curl of smoke can have the largest box.
+  for (size_t i = 0; i < rig.elements.size(); ++i)
+    if (rig.elements[i].area > rig.elements[body].area) body = static_cast<int>(i);
   const RigBox& B = rig.elements[body].box;
-  // Everything drawn above the body's top (a spout's drops together).
+  // Everything drawn above the body's top (a spout's drops together), but what stands on it (a
+  // factory's chimney and roof under its smoke: their bottoms at its top) when anything else is.
   std::vector<int> els;
   RigBox box;
-  for (size_t i = 0; i < rig.elements.size(); ++i)
-    if (static_cast<int>(i) != body && rig.elements[i].box.centre().y < B.y0 && rig.elements[i].box.area() < B.area()) {
-      els.push_back(static_cast<int>(i));
-      box.add(rig.elements[i].box);
-    }
+  for (int pass = 0; pass < 2 && els.empty(); ++pass)
+    for (size_t i = 0; i < rig.elements.size(); ++i)
+      if (static_cast<int>(i) != body && rig.elements[i].box.centre().y < B.y0 && rig.elements[i].box.area() < B.area() &&
+          (pass == 1 || rig.elements[i].box.y1 < B.y0 - kJetGap * rig.figure.h())) {
+        els.push_back(static_cast<int>(i));
+        box.add(rig.elements[i].box);
+      }
   if (els.empty()) return out;
   out.lobes.push_back(lobe_over(rig, els, {box.centre().x, box.y1}));
   std::set<int> paths;
@@ -325,12 +333,7 @@ LocatedPart clapper(const Rig& rig, int body) {
   return out;
 }
 
-// An element's long axis: its two ends (the extreme points along its principal direction) and
-// its length over its width.
-struct Axis {
-  Vec2 a, b;
-  double elongation = 0;
-};
+using Axis = ElementAxis;
 Axis axis_of(const RigElement& e) {
   Axis ax;
   if (e.points.size() < 2) return ax;
@@ -349,6 +352,7 @@ Axis axis_of(const RigElement& e) {
     w1 = std::max(w1, t);
   }
   ax.elongation = (hi - lo) / std::max(w1 - w0, 1e-9);
+  ax.mid_a = c + lo * u, ax.mid_b = c + hi * u;
   return ax;
 }
 
@@ -627,6 +631,9 @@ bool any_stem(std::string_view w, std::initializer_list<std::string_view> stems)
 
 }  // namespace
 
+ElementAxis element_axis(const RigElement& e) { return axis_of(e); }
+ArmLobe lobe_over_elements(const Rig& rig, const std::vector<int>& els, Vec2 pivot) { return lobe_over(rig, els, pivot); }
+
 // A box in shares of the figure's box, for the notes: "0.10,0.20-0.40,0.55".
 std::string fmt_box(const Rig& rig, const RigBox& b) {
   const RigBox& F = rig.figure;
@@ -659,6 +666,7 @@ PartShape part_shape_of(std::string_view w, FigureClass figure) {
   if (animal && any_stem(w, {"trunk", "proboscis", "snout"})) return PartShape::Branch;
   if (any_stem(w, {"petal"})) return PartShape::Petals;
   if (any_stem(w, {"tentacl", "tendril", "strand"})) return PartShape::Strands;
+  if (any_stem(w, {"propell", "rotor", "blade", "vane"})) return PartShape::Rotor;
   return PartShape::None;
 }
 
@@ -674,6 +682,7 @@ const char* part_shape_name(PartShape s) {
     case PartShape::Petals: return "petals";
     case PartShape::Strands: return "strands";
     case PartShape::Bloom: return "bloom";
+    case PartShape::Rotor: return "rotor";
     case PartShape::None: break;
   }
   return "none";
@@ -749,6 +758,7 @@ LocatedPart locate_part(const Rig& rig, PartShape shape) {
     case PartShape::Petals: out = find_petals(rig); break;
     case PartShape::Strands: out = strands(rig, body); break;
     case PartShape::Bloom: out = bloom(rig); break;
+    case PartShape::Rotor: out = rotor_blades(rig, body); break;
     case PartShape::None: break;
   }
   out.shape = shape;

@@ -35,6 +35,7 @@
 //    middles below its bottom) with one end at the body (a jellyfish's tentacles under its
 //    bell), at least two, each with the strokes drawn along it (a colour under its outline),
 //    turning about that end, all the same way (mirrored, neighbours crossed).
+//  - a rotor (propeller, rotor, blade, vane): blades about a hub (rotor_blades.h);
 //  - a bloom (no noun: a whole plant's bend, motion_plan.cpp): a flower's head on one stem,
 //    the largest element above the stem's top end and at it with those above the end that
 //    overlap it in turn, turning about that end (its neck); the stem and the leaves along it
@@ -54,7 +55,7 @@
 
 namespace svgm {
 
-enum class PartShape { None, Ears, Jet, Flames, Clapper, Hands, SidePair, Branch, Petals, Strands, Bloom };
+enum class PartShape { None, Ears, Jet, Flames, Clapper, Hands, SidePair, Branch, Petals, Strands, Bloom, Rotor };
 
 // The kind of part a noun names ("ears" -> Ears, "clapper" -> Clapper), None for nouns the
 // locator does not place. `figure`: the prompt's figure class (lexicon.h): a trunk is a branch
@@ -69,6 +70,19 @@ struct LocatedPart {
   std::vector<int> paths;      // scene paths whose points may move (sorted)
   std::string why;             // what was chosen and why, one phrase
 };
+
+// An element's long axis: its two ends (its extreme points along its principal direction) and
+// its length over its width.
+struct ElementAxis {
+  Vec2 a, b;
+  Vec2 mid_a, mid_b;  // the ends on its middle line (through its centroid along the direction)
+  double elongation = 0;
+};
+ElementAxis element_axis(const RigElement& e);
+
+// One lobe over elements `els` turning about `pivot`: its tip their point farthest from it, its
+// base behind every one of their points.
+ArmLobe lobe_over_elements(const Rig& rig, const std::vector<int>& els, Vec2 pivot);
 
 // The elements of the figure (every part but the background), for Rig::elements.
 std::vector<RigElement> figure_elements(const Scene& scene, const Rig& rig);

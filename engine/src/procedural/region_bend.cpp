@@ -98,8 +98,9 @@ std::map<std::pair<uint64_t, uint64_t>, std::shared_ptr<const RegionBend::Built>
 RegionBend::RegionBend(const Scene& scene, const std::vector<int>& paths, const PlannedAction& a, const RigBox& box)
     : action_(a), box_(box) {
   if (paths.empty() || !(scene.width > 0 && scene.height > 0)) return;
-  // A growing part scales about its middle: no shape is cut, nothing to bend.
-  if (!a.lobes.empty() && a.primitive == Primitive::Pulse) return;
+  // A growing part scales about its middle, a rotor's blades turn or squeeze whole about their hub
+  // (rotor_blades.h): no shape is cut, nothing to bend.
+  if (!a.lobes.empty() && (a.primitive == Primitive::Pulse || a.primitive == Primitive::Spin || a.primitive == Primitive::Stretch)) return;
   const double scale = kWorkingSize / std::max(scene.width, scene.height);
   const cv::Mat mask = bent_mask(scene, paths, scale);
   uint64_t key = fnv(mask.data, mask.total());

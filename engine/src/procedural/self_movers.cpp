@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "procedural/rotor_blades.h"
+
 namespace svgm {
 
 bool twinkle_of_fire(const Clause& c, bool lights) {
@@ -36,7 +38,18 @@ LocatedPart flames_of_light(const Clause& c, const Rig& rig) {
 }
 
 bool plume_rises(const LocatedPart* located, Primitive p) {
-  return located && located->shape == PartShape::Jet && (p == Primitive::Bob || p == Primitive::Pulse || p == Primitive::Stretch);
+  return located && located->shape == PartShape::Jet && (p == Primitive::Bob || p == Primitive::Pulse || p == Primitive::Stretch || p == Primitive::Undulate);
+}
+
+std::string own_motion(const Rig& rig, const LocatedPart* located, Primitive& primitive, double& amp) {
+  if (plume_rises(located, primitive)) {
+    primitive = Primitive::Pulse, amp = plume_growth(rig, *located);
+    return "a plume rises: it swells up from its base";
+  }
+  if (!located || located->shape != PartShape::Rotor) return "";
+  rotor_motion(*located, primitive, amp);
+  return rotor_edge_on(*located) ? "a rotor seen edge on: its blades' length along their line shrinks and grows about the hub"
+                                 : "a rotor's blades spin about their hub";
 }
 
 double plume_growth(const Rig& rig, const LocatedPart& plume) {

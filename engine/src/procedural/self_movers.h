@@ -10,6 +10,8 @@
 #include "procedural/part_locator.h"
 #include "procedural/prompt_parse.h"
 
+#include <string>
+
 namespace svgm {
 
 // Whether the clause's twinkle ("flickers", "glows") is said of fire or of a light: who twinkles
@@ -32,8 +34,15 @@ std::vector<const Verb*> clause_verbs(const Clause& c, const Rig& rig, const Loc
 LocatedPart flames_of_light(const Clause& c, const Rig& rig);
 
 // Whether a verb of primitive `p` aimed at the located part makes a plume rise: a jet (smoke,
-// steam, a spout) that bobs, swells or stretches.
+// steam, a spout) that bobs, swells, stretches or billows (swung, a billowing cloud of smoke
+// rocked on the chimney it rises from).
 bool plume_rises(const LocatedPart* located, Primitive p);
+
+// How a located part that moves its own way moves, whatever verb is aimed at it: a plume that
+// rises swells up from its base (plume_rises); a rotor's blades spin about their hub
+// (rotor_blades.h: "the blades turn in the breeze" is no swing on a joint). Sets `primitive`
+// and `amp`; returns why, empty when `located` is neither (nothing changed).
+std::string own_motion(const Rig& rig, const LocatedPart* located, Primitive& primitive, double& amp);
 
 // A rising plume's growth about its base (a fraction of its length): its top goes up
 // kPlumeRise of the figure's height, the growth between kPlumeGrowMin and kPlumeGrowMax.

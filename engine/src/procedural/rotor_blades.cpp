@@ -1,0 +1,157 @@
+// Rotors: blades about a hub, found and moved (see rotor_blades.h).
+#include "procedural/rotor_blades.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "procedural/part_rig_internal.h"
+
+namespace svgm {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double dist(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+// The angle between two directions, in degrees (0 .. 180).
+double angle_between(double a, double b) {
+  double d = std::fabs(a - b) * 180 / kPi;
+  while (d > 360) d -= 360;
+  return d > 180 ? 360 - d : d;
+}
+
+struct Blade {
+  int e;
+  Vec2 near, far;  // its end at the hub and its other end
+};
+
+// The blades with an end within `tol` of `hub`, each with that end as `near`.
+std::vector<Blade> blades_at(const std::vector<int>& cand, const std::vector<ElementAxis>& ax, Vec2 hub, double tol) {
+  std::vector<Blade> out;
+  for (size_t k = 0; k < cand.size(); ++k) {
+    const bool a_near = dist(ax[k].mid_a, hub) <= dist(ax[k].mid_b, hub);
+    const Vec2 n = a_near ? ax[k].mid_a : ax[k].mid_b, f = a_near ? ax[k].mid_b : ax[k].mid_a;
+    if (dist(n, hub) <= tol) out.push_back({cand[k], n, f});
+  }
+  return out;
+}
+
+// The blades grouped by direction from the hub (a fill and the outline over it point one way).
+std::vector<std::vector<Blade>> by_direction(const std::vector<Blade>& blades, Vec2 hub) {
+  std::vector<std::vector<Blade>> groups;
+  std::vector<double> dirs;
+  for (const Blade& b : blades) {
+    const double d = std::atan2(b.far.y - hub.y, b.far.x - hub.x);
+    size_t g = 0;
+    while (g < dirs.size() && angle_between(dirs[g], d) > kSameDirection) ++g;
+    if (g == dirs.size()) dirs.push_back(d), groups.emplace_back();
+    groups[g].push_back(b);
+  }
+  return groups;
+}
+
+}  // namespace
+
+LocatedPart rotor_blades(const Rig& rig, int body) {
+  LocatedPart out;
+  const RigBox& F = rig.figure;
+  const double D = std::max(F.w(), F.h()), tol = kHubMeet * D;
+  std::vector<int> cand;
+  std::vector<ElementAxis> ax;
+  for (size_t i = 0; i < rig.elements.size(); ++i) {
+    // Not the body, nor its outline drawn over it (each box covering half the other's).
+    const RigBox &E = rig.elements[i].box, &B = rig.elements[body].box;
+    if (static_cast<int>(i) == body || (part_rig_internal::overlap(E, B) >= 0.5 * E.area() && part_rig_internal::overlap(E, B) >= 0.5 * B.area())) continue;
+    const ElementAxis a = element_axis(rig.elements[i]);
+    if ((a.elongation < kBladeElongation && !rig.elements[i].thin) || dist(a.mid_a, a.mid_b) < kBladeMinLength * D) continue;
+    cand.push_back(static_cast<int>(i));
+    ax.push_back(a);
+  }
+  // The hub: where the most blade directions meet (then the most blades: a fill and its
+  // outline), looked for at every blade end (the ends there averaged) and at the middle of
+  // every small element (a hub drawn as a disc the blades stop short of).
+  std::vector<std::pair<Vec2, bool>> looks;  // the discs first: a tie goes to a drawn hub
+  for (const RigElement& e : rig.elements)
+    if (std::hypot(e.box.w(), e.box.h()) <= 2 * tol) looks.push_back({e.box.centre(), true});
+  for (const ElementAxis& a : ax) looks.push_back({a.mid_a, false}), looks.push_back({a.mid_b, false});
+  size_t best_dirs = 0, best_n = 0;
+  Vec2 hub;
+  for (const auto& [at_point, disc] : looks) {
+    const std::vector<Blade> at = blades_at(cand, ax, at_point, tol);
+    Vec2 c = at_point;
+    if (!disc && !at.empty()) {
+      c = {};
+      for (const Blade& b : at) c = c + (1.0 / at.size()) * b.near;
+    }
+    const size_t dirs = by_direction(at, c).size();
+    if (dirs > best_dirs || (dirs == best_dirs && at.size() > best_n)) best_dirs = dirs, best_n = at.size(), hub = c;
+  }
+  // Two directions at least: one blade alone is any elongated shape (a wing, a leg).
+  if (best_dirs < 2) return out;
+  // A rotor's blades are alike: the directions whose blades are as long as those of the most
+  // others (within kSameLength) are its blades; what else ends at the hub (the nose a propeller
+  // is on, its spinner) is not.
+  std::vector<std::vector<Blade>> groups = by_direction(blades_at(cand, ax, hub, tol), hub);
+  std::vector<double> len;
+  for (const auto& g : groups) {
+    double l = 0;
+    for (const Blade& b : g) l = std::max(l, dist(b.near, b.far));
+    len.push_back(l);
+  }
+  auto alike = [](double a, double b) { return std::max(a, b) <= (1 + kSameLength) * std::min(a, b); };
+  size_t best = 0, most = 0;
+  for (size_t i = 0; i < len.size(); ++i) {
+    size_t n = 0;
+    for (double l : len) n += alike(l, len[i]) ? 1 : 0;
+    if (n > most) most = n, best = i;
+  }
+  if (most < 2) return out;
+  std::set<int> paths;
+  std::string which;
+  for (size_t gi = 0; gi < groups.size(); ++gi) {
+    if (!alike(len[gi], len[best])) continue;
+    const auto& group = groups[gi];
+    std::vector<int> els;
+    for (const Blade& b : group) {
+      els.push_back(b.e);
+      paths.insert(rig.elements[b.e].path);
+      which += (which.empty() ? "" : "+") + std::to_string(rig.elements[b.e].path + 1);
+    }
+    ArmLobe l = lobe_over_elements(rig, els, hub);
+    l.side = -1;  // every blade turns the same way
+    // Its tip on its middle line (the way to its points' centroid), not at a corner of its end: an
+    // edge-on blade squeezes along that line, never across it.
+    Vec2 c;
+    size_t n = 0;
+    for (int e : els)
+      for (Vec2 q : rig.elements[e].points) c = c + q, ++n;
+    c = (1.0 / std::max<size_t>(n, 1)) * c;
+    if (dist(c, hub) > 0) l.tip = hub + (dist(l.tip, hub) / dist(c, hub)) * (c - hub);
+    out.lobes.push_back(l);
+  }
+  out.paths.assign(paths.begin(), paths.end());
+  out.why = std::to_string(out.lobes.size()) + " blade direction" + (out.lobes.size() > 1 ? "s" : "") + " (path " + which +
+            ") meeting at a hub at " + fmt_box(rig, RigBox{hub.x, hub.y, hub.x, hub.y}) + (rotor_edge_on(out) ? ", in one line: seen edge on" : "");
+  return out;
+}
+
+bool rotor_edge_on(const LocatedPart& rotor) {
+  // Every direction in line with the first, one way or the other.
+  if (rotor.lobes.empty()) return false;
+  const ArmLobe& f = rotor.lobes[0];
+  const double d0 = std::atan2(f.tip.y - f.pivot.y, f.tip.x - f.pivot.x);
+  for (const ArmLobe& l : rotor.lobes) {
+    const double a = angle_between(d0, std::atan2(l.tip.y - l.pivot.y, l.tip.x - l.pivot.x));
+    if (a > kSameDirection && a < 180 - kSameDirection) return false;
+  }
+  return true;
+}
+
+void rotor_motion(const LocatedPart& rotor, Primitive& primitive, double& amp) {
+  if (rotor_edge_on(rotor)) primitive = Primitive::Stretch, amp = 1 - kEdgeOnMin;
+  else primitive = Primitive::Spin, amp = 1;
+}
+
+}  // namespace svgm
