@@ -25,31 +25,6 @@ Scene two_shapes() {
                            filled(polygon({{3, 4}, {30, 6}, {14, 28}}), {0.1f, 0.3f, 0.8f, 0.6f})});
 }
 
-// The rest pose shifted by (dx, dy) in every frame, for control points and targets alike.
-std::vector<float> shifted(const RasterPlan& plan, float dx, float dy) {
-  std::vector<float> cp;
-  for (int k = 0; k < kK; ++k)
-    for (size_t i = 0; i < plan.rest_cp.size(); i += 2) {
-      cp.push_back(static_cast<float>(plan.rest_cp[i]) + dx * (k + 1));
-      cp.push_back(static_cast<float>(plan.rest_cp[i + 1]) + dy);
-    }
-  return cp;
-}
-
-// Targets: the scene rendered at another shift, composited on white (straight RGB, A = 1).
-std::vector<float> targets_at(const RasterPlan& plan, float dx, float dy) {
-  ClRaster r(runtime(), plan, kK);
-  r.set_control_points(shifted(plan, dx, dy));
-  r.set_active_frames(kK);
-  r.forward();
-  std::vector<float> img = r.read_image();
-  for (size_t p = 0; p < img.size(); p += 4) {
-    for (int c = 0; c < 3; ++c) img[p + c] += 1 - img[p + 3];
-    img[p + 3] = 1;
-  }
-  return img;
-}
-
 // The loss then the gradient, as one vector of bits to compare.
 std::vector<float> pass(ClRaster& r) {
   const float loss = r.loss_and_gradient(kWeight, kWhite);
@@ -58,19 +33,15 @@ std::vector<float> pass(ClRaster& r) {
   return out;
 }
 
-bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
-}
-
 }  // namespace
 
 TEST_SUITE("raster") {
 
 TEST_CASE("released loss buffers: device bytes fall by their size, and the next pass makes them again with identical bits") {
   const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
-  const std::vector<float> targets = targets_at(plan, 2.5f, -1.25f);
+  const std::vector<float> targets = targets_on_white(plan, kK, 2.5f, -1.25f);
   ClRaster r(runtime(), plan, kK);
-  r.set_control_points(shifted(plan, 0.5f, 0.75f));
+  r.set_control_points(shifted_cp(plan, kK, 0.5f, 0.75f));
   r.set_active_frames(kK);
   r.set_targets(targets);
   const std::vector<float> first = pass(r);
@@ -100,9 +71,9 @@ TEST_CASE("released loss buffers: device bytes fall by their size, and the next 
 
 TEST_CASE("set_targets keeps no copy: the loss's constants are made from the caller's frames on the next pass") {
   const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
-  std::vector<float> targets = targets_at(plan, 2.5f, -1.25f);
-  const std::vector<float> other = targets_at(plan, -3.0f, 2.0f);
-  const std::vector<float> cp = shifted(plan, 0.5f, 0.75f);
+  std::vector<float> targets = targets_on_white(plan, kK, 2.5f, -1.25f);
+  const std::vector<float> other = targets_on_white(plan, kK, -3.0f, 2.0f);
+  const std::vector<float> cp = shifted_cp(plan, kK, 0.5f, 0.75f);
   ClRaster r(runtime(), plan, kK);
   r.set_control_points(cp);
   r.set_active_frames(kK);
@@ -128,8 +99,8 @@ TEST_CASE("set_targets keeps no copy: the loss's constants are made from the cal
 
 TEST_CASE("loss chunks: one, two or every frame at a time give the same bits, and X' and E' are held for a chunk only") {
   const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
-  const std::vector<float> targets = targets_at(plan, 2.5f, -1.25f);
-  const std::vector<float> cp = shifted(plan, 0.5f, 0.75f);
+  const std::vector<float> targets = targets_on_white(plan, kK, 2.5f, -1.25f);
+  const std::vector<float> cp = shifted_cp(plan, kK, 0.5f, 0.75f);
   // The plain loss, and the chroma-weighted one with a chroma blur of its own (loss.cl's
   // CHROMA_R kernels index X' and E' on their own lines).
   for (const auto& [chroma_sigma, chroma_weight] : {std::pair{0.0, 1.0}, std::pair{1.6, 0.25}}) {
@@ -172,7 +143,7 @@ TEST_CASE("loss chunks: one, two or every frame at a time give the same bits, an
 TEST_CASE("release_image: the Float renders' buffer goes once read, and the next render makes it again with the same bits") {
   const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
   ClRaster r(runtime(), plan, kK);
-  r.set_control_points(shifted(plan, 0.5f, 0.75f));
+  r.set_control_points(shifted_cp(plan, kK, 0.5f, 0.75f));
   r.set_active_frames(kK);
   const size_t before = r.device_bytes();
   r.forward();
@@ -189,7 +160,7 @@ TEST_CASE("release_image: the Float renders' buffer goes once read, and the next
 TEST_CASE("render_frames: a chunk of frames alone has the bits a Float forward of every frame gives them, and holds nothing after") {
   const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
   ClRaster r(runtime(), plan, kK);
-  r.set_control_points(shifted(plan, 0.5f, 0.75f));
+  r.set_control_points(shifted_cp(plan, kK, 0.5f, 0.75f));
   r.set_active_frames(kK);
   r.forward();
   const std::vector<float> all = r.read_image();

@@ -52,34 +52,6 @@ Scene figure() {
                            filled(polygon({{56, 40}, {74, 44}, {62, 60}}), {0.1f, 0.3f, 0.8f, 0.6f})});
 }
 
-std::vector<float> moved(const RasterPlan& plan, float dx, float dy) {
-  std::vector<float> cp;
-  for (int k = 0; k < kK; ++k)
-    for (size_t i = 0; i < plan.rest_cp.size(); i += 2) {
-      cp.push_back(static_cast<float>(plan.rest_cp[i]) + dx * (k + 1));
-      cp.push_back(static_cast<float>(plan.rest_cp[i + 1]) + dy);
-    }
-  return cp;
-}
-
-// The figure rendered at a shift, composited on white (straight RGB, A = 1).
-std::vector<float> targets_at(const RasterPlan& plan, float dx, float dy) {
-  ClRaster r(runtime(), plan, kK);
-  r.set_control_points(moved(plan, dx, dy));
-  r.set_active_frames(kK);
-  r.forward();
-  std::vector<float> img = r.read_image();
-  for (size_t p = 0; p < img.size(); p += 4) {
-    for (int c = 0; c < 3; ++c) img[p + c] += 1 - img[p + 3];
-    img[p + 3] = 1;
-  }
-  return img;
-}
-
-bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
-}
-
 }  // namespace
 
 TEST_SUITE("raster") {
@@ -121,8 +93,8 @@ TEST_CASE("tile_loss_frame: uniform tiles of the commonest value are not stored;
 
 TEST_CASE("tiled Q and R: the same loss, frame losses and gradient bits as every tile stored, from fewer tiles") {
   const RasterPlan plan = plan_raster(figure(), Affine{}, kW, kH);
-  const std::vector<float> targets = targets_at(plan, 2.5f, -1.25f);
-  const std::vector<float> cp = moved(plan, 0.5f, 0.75f);
+  const std::vector<float> targets = targets_on_white(plan, kK, 2.5f, -1.25f);
+  const std::vector<float> cp = shifted_cp(plan, kK, 0.5f, 0.75f);
   const size_t tiles = size_t{kK} * (kW / T) * (kH / T);
   // The plain loss, and the chroma-weighted one with a chroma blur of its own (R and Q then
   // go through the per-group blur and the metric).

@@ -1,6 +1,7 @@
 // Test-only: render a scene through the OpenCL rasteriser and the CPU reference.
 #pragma once
 
+#include <cstring>
 #include <vector>
 
 #include "opencl/runtime.h"
@@ -37,6 +38,37 @@ double alpha_sum(const V& img) {
   double s = 0;
   for (size_t i = 3; i < img.size(); i += 4) s += img[i];
   return s;
+}
+
+// `frames` copies of the rest pose, frame k shifted by (dx (k + 1), dy): control points for
+// a plan's frames, and (through targets_on_white) targets a known shift away.
+inline std::vector<float> shifted_cp(const RasterPlan& plan, int frames, float dx, float dy) {
+  std::vector<float> cp;
+  for (int k = 0; k < frames; ++k)
+    for (size_t i = 0; i < plan.rest_cp.size(); i += 2) {
+      cp.push_back(static_cast<float>(plan.rest_cp[i]) + dx * static_cast<float>(k + 1));
+      cp.push_back(static_cast<float>(plan.rest_cp[i + 1]) + dy);
+    }
+  return cp;
+}
+
+// The plan's scene at shifted_cp(plan, frames, dx, dy), composited on white (straight RGB,
+// A = 1): what a target video of that motion holds.
+inline std::vector<float> targets_on_white(const RasterPlan& plan, int frames, float dx, float dy) {
+  ClRaster r(runtime(), plan, frames);
+  r.set_control_points(shifted_cp(plan, frames, dx, dy));
+  r.set_active_frames(frames);
+  r.forward();
+  std::vector<float> img = r.read_image();
+  for (size_t p = 0; p < img.size(); p += 4) {
+    for (int c = 0; c < 3; ++c) img[p + c] += 1 - img[p + 3];
+    img[p + 3] = 1;
+  }
+  return img;
+}
+
+inline bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
 }
 
 }  // namespace svgm::test
