@@ -1,7 +1,8 @@
 // The loss's memory (ClRaster::set_targets, release_loss_buffers, set_loss_chunk_frames): the
 // raster keeps no copy of the targets, frees its pixel-sized loss buffers on request and holds
 // the residuals of a few frames at a time, and none of it changes a bit of the loss or the
-// gradient; renders of a few frames (render_frames) hold only those frames, with their bits.
+// gradient; renders of a few frames (render_frames) hold only those frames, with their bits, and
+// a caller drawing frame after frame (render_frames_into) reuses one image until release_image.
 #include <doctest/doctest.h>
 
 #include <cstring>
@@ -184,6 +185,30 @@ TEST_CASE("render_frames: a chunk of frames alone has the bits a Float forward o
   CHECK_THROWS_WITH_AS(r.render_frames(2, 2, {0, 0, 0, 0}), "internal: render_frames of frames 2..3 outside 0..2", Error);
   // And they differ from frame to frame (the test would pass on one frame drawn three times otherwise).
   CHECK_FALSE(same_bits(r.render_frames(0, 1, {0, 0, 0, 0}), r.render_frames(1, 1, {0, 0, 0, 0})));
+}
+
+TEST_CASE("render_frames_into: frame after frame through one kept image, the same bits, freed by release_image") {
+  const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
+  ClRaster r(runtime(), plan, kK);
+  r.set_control_points(shifted_cp(plan, kK, 0.5f, 0.75f));
+  r.set_active_frames(kK);
+  const size_t before = r.device_bytes();
+  const size_t frame_bytes = size_t{kW} * kH * 4 * sizeof(float);
+  std::vector<float> out;
+  for (int f = 0; f < kK; ++f) {
+    CAPTURE(f);
+    r.render_frames_into(f, 1, {1, 1, 1, 1}, out);
+    CHECK(same_bits(out, r.render_frames(f, 1, {1, 1, 1, 1})));
+    CHECK(r.device_bytes() == before + frame_bytes);  // one frame's image, kept
+  }
+  // Another count makes the image again at its size; the host vector is resized.
+  r.render_frames_into(1, 2, {0, 0, 0, 0}, out);
+  CHECK(out.size() == 2 * frame_bytes / sizeof(float));
+  CHECK(same_bits(out, r.render_frames(1, 2, {0, 0, 0, 0})));
+  CHECK(r.device_bytes() == before + 2 * frame_bytes);
+  r.release_image();
+  CHECK(r.device_bytes() == before);
+  CHECK_THROWS_WITH_AS(r.render_frames_into(3, 1, {0, 0, 0, 0}, out), "internal: render_frames of frames 3..3 outside 0..2", Error);
 }
 
 TEST_CASE("loss chunks: a chunk of no frames is refused") {

@@ -42,14 +42,15 @@ void write_procedural_video(const Scene& scene, const std::vector<Vec2>& pts, ui
   std::uniform_real_distribution<double> U(-1, 1);
   const double dir[3] = {U(rng), U(rng), U(rng)};
   const int W = size.width, H = size.height;
+  // One frame rendered at a time, as the encoder asks for it (the same bits as its part of a
+  // render of every frame): all 49 frames at once were 16 bytes per pixel and frame on the
+  // device and again on the host, 410 MB at 512 px, the bundled example's peak once the fit's
+  // memory was cut (issue 38). The frame's images are made once and reused (render_frames_into).
+  std::vector<float> img;
+  cv::Mat m(H, W, CV_32FC4), blurred(H, W, CV_32FC4);
   write_preview_video(out, o.frames, 1, [&](int f, int) {
     const double t = static_cast<double>(f) / (o.frames - 1);
-    // One frame rendered at a time, as the encoder asks for it (the same bits as its part of a
-    // render of every frame): all 49 frames at once were 16 bytes per pixel and frame on the
-    // device and again on the host, 410 MB at 512 px, the bundled example's peak once the
-    // fit's memory was cut (issue 38).
-    const std::vector<float> img = r.render_frames(f, 1, {1, 1, 1, 1});
-    cv::Mat m(H, W, CV_32FC4);
+    r.render_frames_into(f, 1, {1, 1, 1, 1}, img);
     for (int y = 0; y < H; ++y)
       for (int x = 0; x < W; ++x) {
         const float* c = &img[(static_cast<size_t>(y) * W + x) * 4];
@@ -59,8 +60,9 @@ void write_procedural_video(const Scene& scene, const std::vector<Vec2>& pts, ui
         v[3] = 1;
         m.at<cv::Vec4f>(y, x) = v;
       }
-    if (o.blur_sigma > 0) cv::GaussianBlur(m, m, cv::Size(0, 0), o.blur_sigma);
-    return rgba8_image(reinterpret_cast<const float*>(m.data), W, H);
+    if (o.blur_sigma <= 0) return rgba8_image(reinterpret_cast<const float*>(m.data), W, H);
+    cv::GaussianBlur(m, blurred, cv::Size(0, 0), o.blur_sigma);
+    return rgba8_image(reinterpret_cast<const float*>(blurred.data), W, H);
   }, o.fps);
 }
 

@@ -208,16 +208,34 @@ void ClRaster::enqueue_geometry(int first, int count) {
 }
 
 std::vector<float> ClRaster::render_frames(int first, int count, const std::array<float, 4>& background) {
+  std::vector<float> out;
+  cl::Buffer img;  // the chunk's own output, gone when this returns: image_ (every frame's) is not made
+  render_into(first, count, background, img, out);
+  return out;
+}
+
+void ClRaster::render_frames_into(int first, int count, const std::array<float, 4>& background, std::vector<float>& out) {
+  const size_t bytes = static_cast<size_t>(count) * plan_.height * plan_.width * 4 * sizeof(float);
+  if (render_image_() && render_image_.getInfo<CL_MEM_SIZE>() != bytes) {
+    device_bytes_ -= render_image_.getInfo<CL_MEM_SIZE>();
+    render_image_ = cl::Buffer();
+  }
+  const bool made = !render_image_();
+  render_into(first, count, background, render_image_, out);
+  if (made) device_bytes_ += bytes;
+}
+
+void ClRaster::render_into(int first, int count, const std::array<float, 4>& background, cl::Buffer& img,
+                           std::vector<float>& out) {
   if (first < 0 || count < 1 || first + count > frames_)
     throw Error("internal: render_frames of frames " + std::to_string(first) + ".." +
                 std::to_string(first + count - 1) + " outside 0.." + std::to_string(frames_ - 1));
   const auto& p = plan_;
   const size_t pixels = static_cast<size_t>(count) * p.height * p.width;
-  std::vector<float> out(pixels * 4);
+  out.resize(pixels * 4);
   events_.clear();
   try {
-    // The chunk's own output, gone when this returns: image_ (every frame's) is not made.
-    cl::Buffer img(rt_.context(), CL_MEM_READ_WRITE, out.size() * sizeof(float));
+    if (!img()) img = cl::Buffer(rt_.context(), CL_MEM_READ_WRITE, out.size() * sizeof(float));
     k_raster_.setArg(8, img);
     k_raster_.setArg(9, img);
     k_raster_.setArg(10, img);
@@ -232,7 +250,6 @@ std::vector<float> ClRaster::render_frames(int first, int count, const std::arra
     throw Error(std::string("OpenCL rasteriser launch failed on ") + rt_.info().name + ": " +
                 e.what() + " " + cl_status_name(e.err()));
   }
-  return out;
 }
 
 void ClRaster::launch(const char* name, cl::Kernel& k, const cl::NDRange& global,
@@ -274,6 +291,11 @@ std::vector<float> ClRaster::read_image() {
 }
 
 void ClRaster::release_image() {
+  if (render_image_()) {
+    rt_.queue().finish();
+    device_bytes_ -= render_image_.getInfo<CL_MEM_SIZE>();
+    render_image_ = cl::Buffer();
+  }
   if (!image_()) return;
   rt_.queue().finish();  // nothing enqueued still writes it
   device_bytes_ -= image_.getInfo<CL_MEM_SIZE>();
