@@ -21,6 +21,7 @@
 #include "fit/optimise/fitter.h"
 #include "fit/plan/segment_split.h"
 #include "fit/target/compact_raw.h"
+#include "opencl/compiler_pages.h"
 #include "opencl/runtime.h"
 #include "svgmotion/error.h"
 #include "svgmotion/render_size.h"
@@ -52,6 +53,7 @@ int bench_fit(const std::vector<std::string>& argv) {
   const CompactRaw raw = compact_raw(target);  // as `fit` keeps it (fit/target/compact_raw.h)
   ClRuntime rt(a.get("--device").value_or("auto"));
   Fitter fitter(rt, scene, target, fo);
+  release_compiler_pages();  // as a fit does once its programs are built (opencl/compiler_pages.h)
   const auto t1 = std::chrono::steady_clock::now();
   const double c1 = cpu_seconds();
   const double setup_mb = peak_rss_mb();
