@@ -21,6 +21,7 @@
 #include "fit/optimise/fitter.h"
 #include "fit/plan/segment_split.h"
 #include "fit/target/compact_raw.h"
+#include "opencl/compiler_pages.h"
 #include "opencl/runtime.h"
 #include "svgmotion/error.h"
 #include "svgmotion/render_size.h"
@@ -56,7 +57,13 @@ int bench_fit(const std::vector<std::string>& argv) {
   const double c1 = cpu_seconds();
   const double setup_mb = peak_rss_mb();
   LossTerms loss;
-  while (!fitter.done()) loss = fitter.step();
+  // The OpenCL compiler's clean pages go once the first step has built its programs, as a fit
+  // lets them go once its first render has (opencl/compiler_pages.h; the fitter builds its
+  // programs as its first step needs them, and the first build touches the compiler again).
+  for (bool released = false; !fitter.done();) {
+    loss = fitter.step();
+    if (!released) released = true, release_compiler_pages();
+  }
   const auto t2 = std::chrono::steady_clock::now();
   const double c2 = cpu_seconds();
   const double setup_s = std::chrono::duration<double>(t1 - t0).count();

@@ -3,7 +3,8 @@
 // keyframe's floats. It must give the same target as load_target followed by compact_raw: the
 // cleaned frames, masks and distance fields bit for bit, the same compact frames, on a clip
 // that exercises colour correction, stabilising and denoising, whose paths store keyframes at
-// different moments of the load.
+// different moments of the load. The cleaned frames streamed out of the load
+// (TargetOptions::rgba_sink) and packed as they come must be the same as the whole load's.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -15,6 +16,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "fit/target/compact_raw.h"
+#include "fit/target/distance_field.h"
+#include "fit/target/white_runs.h"
 #include "svgmotion/target_video.h"
 
 #include "temp_dir.h"
@@ -60,6 +63,33 @@ void check_same(const std::filesystem::path& dir, const TargetOptions& o, int w,
   CHECK(got.figure == expected.figure);
   CHECK(got.border == expected.border);
   CHECK(got.rgb8.size() == static_cast<size_t>(t.keyframes) * w * h * 3);
+  // The cleaned frames handed over keyframe by keyframe (TargetOptions::rgba_sink) and packed as
+  // they come are the whole load's, packed, bit for bit; the returned rgba is empty.
+  TargetOptions streamed = o;
+  WhiteRuns packed;
+  int next = 0;
+  streamed.rgba_sink = [&](int k, const float* rgba) {
+    CHECK(k == next++);
+    append_white_runs(packed, rgba, static_cast<size_t>(w) * h);
+  };
+  CompactRaw got2;
+  const TargetFrames s = load_target_compact(dir, w, h, streamed, got2);
+  CHECK(s.rgba.empty());
+  CHECK(next == whole.keyframes);
+  CHECK(same_bits(s.sdf, whole.sdf));
+  CHECK(s.mask == whole.mask);
+  CHECK(got2.rgb8 == expected.rgb8);
+  std::vector<float> whole_rgba = whole.rgba;
+  const WhiteRuns expected_runs = pack_white_runs(whole_rgba);
+  CHECK(packed.pixels == expected_runs.pixels);
+  CHECK(packed.runs == expected_runs.runs);
+  CHECK(same_bits(packed.others, expected_runs.others));
+  CHECK(same_bits(unpack_white_runs(packed), whole.rgba));
+  // The distance field made again from the mask (distance_field.h) is the load's, bit for bit.
+  TargetFrames remade = whole;
+  std::vector<float>().swap(remade.sdf);
+  fill_distance_fields(remade);
+  CHECK(same_bits(remade.sdf, whole.sdf));
 }
 
 }  // namespace

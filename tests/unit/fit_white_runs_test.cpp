@@ -77,4 +77,33 @@ TEST_SUITE("fit") {
     CHECK_THROWS_WITH_AS(pack_white_runs(odd), "internal: packing 6 floats as RGBA", Error);
     CHECK(odd.size() == 6);  // left as it was
   }
+
+  TEST_CASE("white runs: frames appended one by one pack as the whole does, runs going on across frames") {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    // Three frames of 4 pixels: the first ends on other, the second is other then white, the
+    // third all white (its run goes on from the second's), then other at the very end.
+    // o: other pixels of three kinds.
+    const float o1[4] = {0.5f, 0.25f, 1, 1}, o2[4] = {-0.f, nan, 0.75f, 1}, o3[4] = {1, 1, 1, 0.5f};
+    const float w[4] = {1, 1, 1, 1};
+    const float* order[13] = {w, w, o1, o2, o3, w, w, w, w, w, w, w, o1};
+    std::vector<float> rgba;
+    for (const float* p : order) rgba.insert(rgba.end(), p, p + 4);
+    std::vector<float> whole_copy = rgba;
+    const WhiteRuns whole = pack_white_runs(whole_copy);
+    CHECK(whole.runs == std::vector<uint32_t>{2, 3, 7, 1});
+    for (const size_t frame : {size_t{1}, size_t{2}, size_t{4}, size_t{13}}) {
+      CAPTURE(frame);
+      WhiteRuns appended;
+      for (size_t first = 0; first < 13; first += frame) append_white_runs(appended, &rgba[4 * first], std::min(frame, 13 - first));
+      append_white_runs(appended, rgba.data(), 0);  // nothing: changes nothing
+      CHECK(appended.pixels == whole.pixels);
+      CHECK(appended.runs == whole.runs);
+      REQUIRE(appended.others.size() == whole.others.size());
+      CHECK(std::memcmp(appended.others.data(), whole.others.data(), whole.others.size() * sizeof(float)) == 0);
+    }
+    WhiteRuns none;
+    append_white_runs(none, nullptr, 0);
+    std::vector<float> empty;
+    CHECK(none.runs == pack_white_runs(empty).runs);  // {0}: one empty white run
+  }
 }

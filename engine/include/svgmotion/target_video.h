@@ -84,6 +84,11 @@ struct TargetOptions {
   // load holds one keyframe's floats instead of every keyframe's (16 bytes per pixel and
   // keyframe; 88 MB for 21 keyframes at 512 px). A fit compacts them (fit/target/compact_raw.h).
   std::function<void(int k, const float* raw)> raw_sink;
+  // The same for the cleaned frames: each keyframe's `rgba` is handed here as soon as it is
+  // cleaned, and the returned `rgba` is empty (its mask and distance field are kept). A fit's
+  // refinement packs them as they come (fit/target/white_runs.h): the load never holds every
+  // keyframe's floats (88 MB for 21 keyframes at 512 px), nor them and their packed form.
+  std::function<void(int k, const float* rgba)> rgba_sink;
 };
 
 struct TargetFrames {

@@ -4,6 +4,7 @@
 // outputs in fit_outputs.cpp; fit_run.h is what they share.
 #include "fit/fit_job.h"
 #include "fit/fit_run.h"
+#include "opencl/compiler_pages.h"
 #include "svgmotion/atomic_file.h"
 
 #include <unistd.h>
@@ -15,6 +16,7 @@
 #include <fstream>
 
 #include "fit/target/heap_trim.h"
+#include "fit/target/distance_field.h"
 #include "fit/output/checkpoint.h"
 #include "fit/target/correction_palette.h"
 #include "raster/render_image.h"
@@ -214,6 +216,7 @@ void FitRun::prepare_target() {
   // (TargetOptions::keep_part_share): the share is the same at every width the fit loads.
   RgbaImage rest_render = render_image(*rt, fit_scene, size.width, false);
   to.keep_part_share = 0.5 * smallest_part_share(rest_render.rgba, rest_render.width, rest_render.height, to.white_threshold);
+  release_compiler_pages("the rest pose's render");
   activity("reading the video's keyframes at " + std::to_string(size.width) + " px");
   target = load_target(*target_path, size.width, size.height, to);
   // Blur matching at the fitting width first (see match_blur): the rest pose is judged as
@@ -258,6 +261,11 @@ void FitRun::release_denoised() {
     decltype(t->denoised)().swap(t->denoised);
     t->denoised_frame.clear();
   }
+}
+
+void FitRun::release_compiler_pages(const char* after) {
+  const size_t kb = svgm::release_compiler_pages();
+  log::debug("fit: the OpenCL compiler's clean pages released after %s: %.1f MB", after, kb / 1000.0);
 }
 
 void FitRun::claim_output() {
@@ -330,6 +338,12 @@ void FitRun::prepare_fine() {
   if (to.stabilise) fine_to.shake_from = coarse_target;  // the camera path of the first load
   fine_to.keep_denoised = false;
   fine_to.denoised_from = coarse_target == &target ? &target : &*keyed_target;  // taken, freed as read
+  // Its cleaned frames are packed as runs of white as the load cleans each (white_runs.h): their
+  // floats (88 MB for 21 keyframes at 512 px) are never held whole for a stage that reads them
+  // a keyframe at a time (the refinement's loss) or keyframe 0 alone (blur matching).
+  fine_rgba = {};
+  const size_t fine_px = static_cast<size_t>(fine_size.width) * fine_size.height;
+  fine_to.rgba_sink = [this, fine_px](int, const float* rgba) { append_white_runs(fine_rgba, rgba, fine_px); };
   activity("reading the video's keyframes at " + std::to_string(fine_size.width) + " px for the refinement");
   TargetFrames t = load_target_compact(*target_path, fine_size.width, fine_size.height, fine_to, fine_raw);
   release_denoised();
@@ -340,10 +354,19 @@ void FitRun::prepare_fine() {
   fine_options.known_body = known.body;
   fine_options.known_maps = known.maps;
   fine_options.iterations = refine_iters;
+  fine_rgba.others.shrink_to_fit();
+  fine_rgba.runs.shrink_to_fit();
+  t.rgba.resize(fine_px * 4);  // keyframe 0 alone: what blur matching reads
+  unpack_white_runs_range(fine_rgba, 0, fine_px, t.rgba.data());
   fine_blur = match_blur(t, fine_size);
+  std::vector<float>().swap(t.rgba);
   fine_options.render_blur_sigma = fine_blur.render_sigma;
   fine_options.chroma_blur_sigma = fine_blur.chroma_sigma;
+  // Its distance field is made again from its mask when a fitter needs it (distance_field.h):
+  // it is not held through the coarse stage (22 MB for 21 keyframes at 512 px).
+  std::vector<float>().swap(t.sdf);
   fine_target = std::move(t);
+  fine_packed = true;
 }
 
 // The chroma weight: the job's, or the one under which a still fit of the first frame
@@ -375,6 +398,8 @@ void FitRun::choose_chroma_weight() {
     ChromaCalibrationOptions co;
     co.iterations = std::min(co.iterations, coarse_options.iterations);
     co.fine_iterations = std::min(co.fine_iterations, std::max(1, refine_iters));
+    unpack_fine_rgba();  // the calibration's fine stage reads its target's frames whole
+    if (fine_target) fill_distance_fields(*fine_target);
     const std::optional<ChromaStage> fine_stage =
         fine_target ? std::optional<ChromaStage>(ChromaStage{&*fine_target, fine_options}) : std::nullopt;
     chroma_cal = calibrate_chroma_weight(*rt, fit_scene, ChromaStage{&target, coarse_options},
@@ -391,6 +416,7 @@ void FitRun::choose_chroma_weight() {
   coarse_options.chroma_weight = chroma_weight;
   // Nothing reads the finer target's frames again before its fitter is made (the refinement).
   pack_fine_rgba();
+  if (fine_target) std::vector<float>().swap(fine_target->sdf);
 }
 
 void FitRun::pack_fine_rgba() {
@@ -415,6 +441,7 @@ void FitRun::drop_fine_target() {
 void FitRun::start_fitter() {
   activity("preparing the fitter");
   fitter.emplace(*rt, fit_scene, target, coarse_options);
+  release_compiler_pages("the fitter's programs");
   log::debug("fit: %s: %d keyframes of %d frames (%.3g fps) at %dx%d; %d paths in %d groups, %d control points; "
              "%d iterations on %s",
              target_path->c_str(), target.keyframes, target.source_frames, target.fps, size.width, size.height,

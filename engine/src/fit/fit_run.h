@@ -75,6 +75,9 @@ struct FitRun {
 
   // Helpers of the steps.
   void release_denoised();
+  // The OpenCL compiler's clean pages out of the resident set (opencl/compiler_pages.h), once
+  // the programs of the step named `after` are built; logged with the MB dropped.
+  void release_compiler_pages(const char* after);
   double work(int it) const;
   // `done`: a match already made at this width (the rest start's, prepare_target).
   BlurMatch match_blur(const TargetFrames& t, const RenderSize& at, const BlurMatch* done = nullptr);

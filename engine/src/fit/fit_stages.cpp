@@ -2,6 +2,7 @@
 // target and the refinement at the finer width, each a run of iterations under one watch
 // (divergence, progress, checkpoints).
 #include "fit/fit_run.h"
+#include "fit/target/distance_field.h"
 
 #include <unistd.h>
 
@@ -299,6 +300,7 @@ void FitRun::refine() {
       fine_options.chroma_weight = chroma_weight;
       // Built from the packed frames when the calibration loaded them (the loss reads them
       // below, a keyframe at a time): their floats (88 MB) are never unpacked for it.
+      fill_distance_fields(*fine_target);  // dropped after the load (prepare_fine)
       fine = std::make_unique<Fitter>(*rt, fit_scene, *fine_target, fine_options);
       // The fitter has its distance field on the device and nothing reads the target's mask
       // after the load's checks: 5 bytes per pixel and keyframe (21 MB for 16 keyframes at 512 px).
@@ -318,6 +320,7 @@ void FitRun::refine() {
       trim_heap();  // the loss constants' temporaries (double frames at 512 px)
       log::debug("fit: the targets' frames packed through the refinement: %.1f MB at %d px, %.1f MB at %d px",
                  fine_rgba.bytes() / 1048576.0, fine_size.width, coarse_rgba.bytes() / 1048576.0, size.width);
+      release_compiler_pages("the finer fitter's programs");
       run_stage(*fine, coarse_iters, false);
     } catch (...) {
       unpack();  // whoever reports the failure may read them

@@ -7,6 +7,7 @@
 
 #include "fit/target/heap_trim.h"
 #include "fit/target/colour_correction.h"
+#include "fit/target/distance_field.h"
 #include "fit/target/stabilise.h"
 #include "fit/target/temporal_denoise.h"
 #include "image/png_frame.h"
@@ -324,8 +325,9 @@ void mark_ink(const float* rgba, int w, int h, const std::array<float, 3>& bg, f
   }
 }
 
-// Mask, cleaned target and distance field of keyframe k from its raw frame.
-void clean_keyframe(TargetFrames& t, int k, const TargetOptions& opt, const float* raw) {
+// Mask, cleaned target and distance field of keyframe k from its raw frame (the cleaned frame
+// in slot `rgba_slot` of t.rgba).
+void clean_keyframe(TargetFrames& t, int k, int rgba_slot, const TargetOptions& opt, const float* raw) {
   const int w = t.width, h = t.height;
   const size_t px = static_cast<size_t>(w) * h;
 
@@ -410,15 +412,9 @@ void clean_keyframe(TargetFrames& t, int k, const TargetOptions& opt, const floa
   }
   uint8_t* mask = t.mask.data() + k * px;
   float* sdf = t.sdf.data() + k * px;
-  float* out = t.rgba.data() + k * px * 4;
-  if (!any) {
-    std::fill(mask, mask + px, uint8_t{0});
-    std::fill(sdf, sdf + px, static_cast<float>(w + h));
-    std::fill(out, out + px * 4, 1.0f);
-    return;
-  }
-  cv::Mat dist;
-  if (opt.dilate_px > 0) {
+  float* out = t.rgba.data() + static_cast<size_t>(rgba_slot) * px * 4;
+  if (any && opt.dilate_px > 0) {
+    cv::Mat dist;
     cv::distanceTransform(background, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
     // A small tolerance so that integer distances (r itself) are inside whatever the rounding.
     const float r = static_cast<float>(opt.dilate_px) + 1e-3f;
@@ -428,19 +424,19 @@ void clean_keyframe(TargetFrames& t, int k, const TargetOptions& opt, const floa
       for (int x = 0; x < w; ++x) b[x] = d[x] <= r ? 0 : 255;
     }
   }
-  cv::distanceTransform(background, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
+  // The mask (the kept figure, dilated), the figure's pixels on white, and the distance field
+  // from the mask (distance_field.h: the distance to the nearest mask pixel).
   for (int y = 0; y < h; ++y) {
-    const float* d = dist.ptr<float>(y);
     const uint8_t* b = background.ptr<uint8_t>(y);
     for (int x = 0; x < w; ++x) {
       const size_t i = static_cast<size_t>(y) * w + x;
-      const bool fg = b[x] == 0;
+      const bool fg = any && b[x] == 0;
       mask[i] = fg ? 1 : 0;
-      sdf[i] = fg ? 0.0f : d[x];
       for (int c = 0; c < 3; ++c) out[i * 4 + c] = fg ? raw[i * 4 + c] : 1.0f;
       out[i * 4 + 3] = 1.0f;
     }
   }
+  distance_field_from_mask(mask, w, h, sdf);
 }
 
 void check_options(const fs::path& source, int width, int height, const TargetOptions& o) {
@@ -519,17 +515,18 @@ TargetFrames empty_target(int width, int height, int K, const TargetInfo& info, 
   t.raw.assign((options.raw_sink ? 1 : K) * px * 4, 1.0f);
   // Reserved, filled keyframe by keyframe as each is stored (grow_cleaned): a load does not touch
   // 21 bytes per pixel and keyframe up front (115 MB: 21 at 512 px) beside what it reads from.
-  t.rgba.reserve(K * px * 4);
+  t.rgba.reserve((options.rgba_sink ? 1 : K) * px * 4);
   t.mask.reserve(K * px);
   t.sdf.reserve(K * px);
   return t;
 }
 
-// Keyframes 0 .. k - 1's cleaned frames made: white, mask and sdf 0 until clean_keyframe writes.
-void grow_cleaned(TargetFrames& t, int k) {
+// Keyframes 0 .. k - 1's cleaned frames made: white, mask and sdf 0 until clean_keyframe writes
+// (with an rgba_sink, one slot of rgba for them all).
+void grow_cleaned(TargetFrames& t, int k, bool one_slot) {
   const size_t px = static_cast<size_t>(t.width) * t.height, n = static_cast<size_t>(k) * px;
   if (t.mask.size() >= n) return;
-  t.rgba.resize(n * 4, 1.0f);
+  t.rgba.resize((one_slot ? px : n) * 4, 1.0f);
   t.mask.resize(n, 0);
   t.sdf.resize(n, 0.0f);
 }
@@ -682,11 +679,13 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   // on its own, as when every keyframe was stored first), then handed to the raw_sink if any.
   auto slot = [&](int k) { return options.raw_sink ? 0 : k; };
   auto finish = [&](int k) {
-    grow_cleaned(t, k + 1);
+    grow_cleaned(t, k + 1, bool(options.rgba_sink));
     float* raw = t.raw.data() + static_cast<size_t>(slot(k)) * px * 4;
     if (!options.palette.empty()) t.colour_corrected += correct_colours(raw, width, height, options.palette).applied;
-    clean_keyframe(t, k, options, raw);
+    const int cleaned_slot = options.rgba_sink ? 0 : k;
+    clean_keyframe(t, k, cleaned_slot, options, raw);
     if (options.raw_sink) options.raw_sink(k, raw);
+    if (options.rgba_sink) options.rgba_sink(k, t.rgba.data());
   };
   auto keep = [&](int k, int frame_index, cv::Mat frame) {
     if (denoise && options.keep_denoised) {
@@ -757,7 +756,8 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   }
   if (options.stabilise) remove_camera_shake(t, options, shake, kept, kept_index, denoise, work, width, height, slot, finish);
   if (options.raw_sink) std::vector<float>().swap(t.raw);
-  grow_cleaned(t, K);
+  grow_cleaned(t, K, bool(options.rgba_sink));
+  if (options.rgba_sink) std::vector<float>().swap(t.rgba);
   return t;
 }
 

@@ -14,31 +14,35 @@ namespace {
 bool is_white(const float* p) { return p[0] == 1.f && p[1] == 1.f && p[2] == 1.f && p[3] == 1.f; }
 }  // namespace
 
-WhiteRuns pack_white_runs(std::vector<float>& rgba) {
-  if (rgba.size() % 4 != 0) throw Error("internal: packing " + std::to_string(rgba.size()) + " floats as RGBA");
-  WhiteRuns out;
-  out.pixels = rgba.size() / 4;
-  size_t n_others = 0;
-  for (size_t i = 0; i < out.pixels; ++i) n_others += !is_white(&rgba[4 * i]);
-  out.others.reserve(4 * n_others);
+void append_white_runs(WhiteRuns& packed, const float* rgba, size_t pixels) {
   constexpr uint32_t kMaxRun = std::numeric_limits<uint32_t>::max();
-  bool white = true;  // the kind of the run being counted: runs start with a white one
-  uint32_t run = 0;
-  for (size_t i = 0; i < out.pixels; ++i) {
-    const float* p = &rgba[4 * i];
-    if (is_white(p) != white || run == kMaxRun) {
-      out.runs.push_back(run);  // a full run is followed by an empty one of the other kind
+  if (packed.runs.empty()) packed.runs.push_back(0);  // runs start with a white one
+  // The run being counted is the last; its kind alternates from white at index 0.
+  bool white = packed.runs.size() % 2 == 1;
+  for (size_t i = 0; i < pixels; ++i) {
+    const float* p = rgba + 4 * i;
+    if (is_white(p) != white || packed.runs.back() == kMaxRun) {
+      packed.runs.push_back(0);  // a full run is followed by an empty one of the other kind
       white = !white;
-      run = 0;
       if (is_white(p) != white) {
-        out.runs.push_back(0);
+        packed.runs.push_back(0);
         white = !white;
       }
     }
-    ++run;
-    if (!white) out.others.insert(out.others.end(), p, p + 4);
+    ++packed.runs.back();
+    if (!white) packed.others.insert(packed.others.end(), p, p + 4);
   }
-  out.runs.push_back(run);
+  packed.pixels += pixels;
+}
+
+WhiteRuns pack_white_runs(std::vector<float>& rgba) {
+  if (rgba.size() % 4 != 0) throw Error("internal: packing " + std::to_string(rgba.size()) + " floats as RGBA");
+  WhiteRuns out;
+  const size_t pixels = rgba.size() / 4;
+  size_t n_others = 0;
+  for (size_t i = 0; i < pixels; ++i) n_others += !is_white(&rgba[4 * i]);
+  out.others.reserve(4 * n_others);
+  append_white_runs(out, rgba.data(), pixels);
   out.runs.shrink_to_fit();
   std::vector<float>().swap(rgba);
   return out;

@@ -22,6 +22,10 @@ struct WhiteRuns {
 
 // Packs `rgba` (a multiple of 4 floats) and empties it, its memory freed.
 WhiteRuns pack_white_runs(std::vector<float>& rgba);
+// Packs `pixels` more RGBA pixels onto the end of `packed`: appending a target's frames one by
+// one as its load cleans them gives what pack_white_runs gives of them whole, run for run (a run
+// goes on across a frame's end), so the load never holds every frame's floats.
+void append_white_runs(WhiteRuns& packed, const float* rgba, size_t pixels);
 // The floats pack_white_runs took, bit for bit; `packed` is emptied, its memory freed.
 std::vector<float> unpack_white_runs(WhiteRuns& packed);
 // Pixels first .. first + count - 1 of what `packed` holds, bit for bit, into `out` (4 * count
