@@ -13,8 +13,10 @@
 # share >= 0.7 in at least 90 % of the cases, still parts still, nothing out of the frame, no
 # candidate flagged.
 #
-# A run is interrupted (SIGINT, as Ctrl-C) once the ranker has written ranking.json: the layers,
-# tracker and fitter do not change what is scored and took half of each case's time; FIT=1 lets
+# A run is killed (SIGKILL) once the ranker has written ranking.json: the layers, tracker and
+# fitter do not change what is scored and took half of each case's time. (SIGINT, as Ctrl-C, let
+# the run finish its current stage and then write the animation so far, as a user wants: every
+# case ran its fitter's set-up and the exports, about three times as long.) FIT=1 lets
 # every run finish. Runs go one at a time, nice'd. CASES (a regular expression over the case
 # names) picks some cases; SETTINGS (space-separated key=value) adds settings to every run;
 # RESCORE=1 scores the run directories already in OUT_DIR again without running (after a label
@@ -49,7 +51,7 @@ run_case() {
     # log.txt's line for the ranker's end comes after ranking.json is in place.
     while kill -0 "$pid" 2>/dev/null; do
       if grep -q "ranker: done" "$d/log.txt" 2>/dev/null; then
-        kill -INT "$pid" 2>/dev/null
+        kill -KILL "$pid" 2>/dev/null
         break
       fi
       sleep 0.5
