@@ -2,14 +2,17 @@
 // flying saucer that hovers bobs whole, never narrowing (no wings to beat: its sides bent as
 // wings made it look as if it turned about its vertical axis); a jet filling its canvas's top
 // takes off from a runway that stays, going away into the sky (smaller toward its top) as far
-// as the issue's floor when there is no room to climb; two fallen leaves tumble each its own way.
+// as the issue's floor when there is no room to climb; two fallen leaves tumble each its own way;
+// a kick scooter's plain wheels, its steering column hung from the front one, bounce the body.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "procedural/figure_pieces.h"
+#include "procedural/invisible_spin.h"
 #include "procedural/motion_plan.h"
+#include "procedural/motion_plan_internal.h"
 
 #include "motion_drawing.h"
 using namespace svgm;
@@ -133,6 +136,26 @@ TEST_CASE("tumbles: two leaves drawn apart fall, turn and drift each its own way
   const double diag = std::hypot(d.rig.figure.w(), d.rig.figure.h());
   CHECK(std::max(t[0], t[1]) >= 0.08 * diag);
   CHECK(std::max(t[2], t[3]) >= 0.08 * diag);
+}
+
+TEST_CASE("wheels: a scooter's plain wheels look the same turned though its column hangs from one; the body bounces") {
+  const Drawing d("kick_scooter.svg");
+  MotionPlan plan = plan_from_prompt(parse_prompt("the scooter's wheels spin"), d.rig, 1);
+  REQUIRE(!plan.actions.empty());
+  const PlannedAction& spin = plan.actions[0];
+  REQUIRE(spin.primitive == Primitive::Spin);
+  REQUIRE(spin.parts.size() == 2);
+  // The column (path 5) hangs from a spun wheel: what the rule must see past.
+  const int column = d.rig.part_of_path.at(5);
+  REQUIRE(std::any_of(spin.parts.begin(), spin.parts.end(), [&](int w) { return motion_plan_internal::part_under(d.rig, column, w); }));
+  CHECK(looks_same_turned(d.scene, d.rig, spin.parts));
+  fit_plan(d.scene, d.rig, plan, 25, 9);
+  REQUIRE(plan.actions.size() == 2);
+  CHECK(plan.actions[1].primitive == Primitive::Bob);
+  CHECK(plan.actions[1].target == Target::Whole);
+  const std::vector<double> t = d.travel(plan, 25);
+  CHECK(t[4] > 0);  // the deck bounces
+  CHECK(t[5] > 0);  // and the column with it
 }
 
 }  // TEST_SUITE
