@@ -130,11 +130,12 @@ TEST_CASE("a fall with no repeated drops: the feather tumbles, the whole of it g
   const Drawing d("feather.svg");
   REQUIRE(d.rig.repeated.empty());
   const MotionPlan plan = plan_from_prompt(parse_prompt("the feather tumbles to the ground"), d.rig, 1);
-  REQUIRE(plan.actions.size() == 2);
+  REQUIRE(plan.actions.size() == 3);
   CHECK(plan.actions[0].verb == "tumble");
   CHECK(plan.actions[0].primitive == Primitive::Bob);
   CHECK(plan.actions[0].vertical == -1);  // down and back, never above where it was
   CHECK(plan.actions[1].primitive == Primitive::Rock);
+  CHECK(plan.actions[2].primitive == Primitive::Slide);  // drifting on the air
   CHECK(plan.actions[0].why.find("nothing drawn apart to fall: the figure falls itself") != std::string::npos);
   const int F = 13;
   const std::vector<Vec2> pts = animate_plan(d.scene, d.rig, plan, F);

@@ -12,6 +12,7 @@
 #include "svgmotion/svg_reader.h"
 #include "procedural/invisible_spin.h"
 #include "procedural/motion_plan.h"
+#include "procedural/motion_plan_internal.h"
 #include "procedural/support_band.h"
 #include "geometry/rigid_bodies.h"
 #include "rank/pixel_ranker.h"
@@ -1096,8 +1097,9 @@ TEST_CASE("a motion too small to see is raised to 8 % of the figure's diagonal, 
   CHECK(plan.actions[0].scale > 1.0);
   CHECK(plan.actions[0].scale <= 4.0);
   const double after = largest(plan);
-  // (A turn's chord grows a little slower than its angle: within 1 %.)
-  CHECK(after == doctest::Approx(std::min(0.08 * diag, 12 * before)).epsilon(0.01));
+  // Aiming kRaiseAim over the floor (a turn's chord grows a little slower than its angle:
+  // within 1 %).
+  CHECK(after == doctest::Approx(std::min(motion_plan_internal::kRaiseAim * 0.08 * diag, 12 * before)).epsilon(0.01));
   REQUIRE(!plan.notes.empty());
   CHECK(plan.notes[0].find("nod raised to") == 0);
   // A plain motion is left as it is.

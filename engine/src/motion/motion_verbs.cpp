@@ -55,8 +55,11 @@ const std::vector<Verb> kVerbs = {
   // figure climbs away and comes back, going forward as it climbs. Read as "move" (a slide of 4 %
   // and a stretch), the plane taking off crept along the runway; a bob of 12 % about where it
   // stood dipped as far below and read as a hover: it climbs only up (motion_plan.cpp), a
-  // quarter of its height where the canvas has room (fit_plan scales it down where not).
-  {"takeoff", {"takeoff", "liftoff", "blastoff"}, {{P::Bob, T::Whole, 0.25, 1}, {P::Slide, T::Whole, 0.06, 1}}, P::Bob},
+  // quarter of its height where the canvas has room (fit_plan scales it down where not). It also
+  // shrinks toward its top, going away into the sky (a negative pulse, about its top: motion_plan.cpp),
+  // and rumbles as it goes: a figure filling its canvas had no room to climb and did not move at
+  // all. "Launches" is a launch (read as a drive, a rocket slid along the ground).
+  {"takeoff", {"takeoff", "liftoff", "blastoff", "launch"}, {{P::Bob, T::Whole, 0.25, 1}, {P::Slide, T::Whole, 0.06, 1}, {P::Pulse, T::Whole, -0.3, 1}, {P::Shake, T::Whole, 0.012, 8}}, P::Bob},
   {"rise",    {"ris", "rose", "ascend"},        {{P::Bob, T::Whole, 0.06, 1}}, P::Bob},
   {"sink",    {"sink", "sank", "div", "descend"}, {{P::Bob, T::Whole, 0.06, 1}, {P::Rock, T::Whole, 4, 1}}, P::Bob},
   {"sway",    {"sway", "blow", "breez"},        {{P::Sway, T::Whole, 8, 1}}, P::Swing},
@@ -73,7 +76,7 @@ const std::vector<Verb> kVerbs = {
   // A vehicle drives: it travels (a slide, out and back within the canvas) with its engine's
   // tremor, its wheels rolling with it. With the shake and spin alone a car whose wheels are
   // plain discs did not move at all, and "drives off to the right" stood still.
-  {"drive",   {"driv", "drove", "roll", "accelerat", "launch", "speed"}, {{P::Shake, T::Whole, 0.006, 6}, {P::Spin, T::Wheels, 1, 1}, {P::Slide, T::Whole, 0.1, 1}}, P::Spin},
+  {"drive",   {"driv", "drove", "roll", "accelerat", "speed"}, {{P::Shake, T::Whole, 0.006, 6}, {P::Spin, T::Wheels, 1, 1}, {P::Slide, T::Whole, 0.1, 1}}, P::Spin},
   {"dodge",   {"dodg", "evad"},                 {{P::Swing, T::Root, 8, 2}}, P::Swing},  // a lean of the body about the hips, the legs planted
   // Bodies that bend.
   {"swim",    {"swim", "swam", "paddl"},        {{P::Undulate, T::Whole, 0.05, 1}, {P::Slide, T::Whole, 0.02, 1}}, P::Undulate},
@@ -99,8 +102,9 @@ const std::vector<Verb> kVerbs = {
   {"flicker", {},                               {{P::Bend, T::Whole, 12, 3}, {P::Stretch, T::Whole, 0.08, 2}}, P::Swing},
   {"twinkle", {"twinkl", "sparkl", "glow", "shin", "flicker", "blink", "glitter", "shimmer"}, {{P::Pulse, T::Repeated, 0.2, 2}}, P::Pulse},
   // A figure that falls itself (motion_plan.cpp: a fall with no repeated elements to move): down
-  // and back, turning to and fro as a leaf does. No stem: the words are fall's.
-  {"tumble",  {},                               {{P::Bob, T::Whole, 0.12, 1}, {P::Rock, T::Whole, 12, 2}}, P::Bob},
+  // and back, turning to and fro as a leaf does, drifting on the air. No stem: the words are
+  // fall's. A figure in pieces (two leaves) tumbles each piece its own way (figure_pieces.h).
+  {"tumble",  {},                               {{P::Bob, T::Whole, 0.12, 1}, {P::Rock, T::Whole, 12, 2}, {P::Slide, T::Whole, 0.05, 1}}, P::Bob},
   // Repeated elements.
   {"fall",    {"fall", "fell", "rain", "pour", "drip", "snow", "tumbl", "descend", "shower"}, {{P::Fall, T::Repeated, 0.12, 1}}, P::Fall},
 };

@@ -21,6 +21,11 @@ bool looks_same_turned(const Scene& scene, const Rig& rig, const std::vector<int
     bool any = false;
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
       if (!motion_plan_internal::part_under(rig, rig.part_of_path[pi], p)) continue;
+      // What hangs from the wheel but reaches out of it (a scooter's fork and handlebar, hung
+      // from its front wheel) does not turn with it: the wheel looks the same turned without it.
+      const RigBox& b = rig.parts[rig.part_of_path[pi]].box;
+      const double ox = std::min(b.x1, P.box.x1) - std::max(b.x0, P.box.x0), oy = std::min(b.y1, P.box.y1) - std::max(b.y0, P.box.y0);
+      if (rig.part_of_path[pi] != p && (ox <= 0 || oy <= 0 || ox * oy < kInsideWheel * b.area())) continue;
       const Path& path = scene.paths[pi];
       if (path.fill_gradient >= 0 || path.stroke_gradient >= 0 || (path.has_stroke && !path.stroke.dashes.empty())) return false;
       for (const Subpath& sp : path.subpaths) {

@@ -14,7 +14,7 @@
 
 namespace svgm {
 
-// True when every path of `parts` (and of what hangs from them) keeps its distance from its
+// True when every path of `parts` (and of what hangs from them within the wheel: kInsideWheel) keeps its distance from its
 // part's centre within kRoundTolerance of the radius all round (in the wheel's plane), is painted
 // without a gradient or dashes, every open subpath ends where it began, and `parts` is not
 // empty.
@@ -41,5 +41,9 @@ inline constexpr int kIdleBounces = 4;
 // A point's distance from the centre may vary by this share of the radius on a "round" path
 // (a circle written as four cubics is within 0.03 %; a wheel's hexagonal nut, 13 %).
 inline constexpr double kRoundTolerance = 0.04;
+
+// A part hanging from a wheel is judged with it when at least this share of its box lies within
+// the wheel's (a hub, a tyre's tread; not a fork reaching up to the handlebar).
+inline constexpr double kInsideWheel = 0.5;
 
 }  // namespace svgm

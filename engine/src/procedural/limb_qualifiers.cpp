@@ -102,4 +102,14 @@ std::string keep_qualified(const Rig& rig, const Modifiers& mods, std::vector<Ar
   });
 }
 
+std::string arms_left_out(const Verb& v, size_t i, FigureClass figure, FigureClass clause_figure) {
+  const Action& act = v.actions[i];
+  if (act.target != Target::Arms) return "";
+  if (i > 0 && v.actions[0].target == Target::Legs && figure != FigureClass::None && figure != FigureClass::Biped)
+    return std::string("a ") + figure_class_name(figure) + " has no arms: " + v.name + "'s arm swing left out";
+  if ((v.name == "fly" || v.name == "hover" || v.name == "soar") && (clause_figure == FigureClass::Object || clause_figure == FigureClass::Wheeled))
+    return std::string("a flying ") + figure_class_name(clause_figure) + " has no wings to beat: " + v.name + "'s wing beat left out";
+  return "";
+}
+
 }  // namespace svgm

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "motion/lexicon.h"
 #include "motion/motion_verbs.h"
 #include "procedural/outline_lobes.h"
 #include "procedural/part_rig.h"
@@ -26,5 +27,13 @@ int facing_side(const Rig& rig, std::string* why);
 // nothing was asked.
 std::string keep_qualified(const Rig& rig, const Modifiers& mods, std::vector<int>& parts);
 std::string keep_qualified(const Rig& rig, const Modifiers& mods, std::vector<ArmLobe>& limbs);
+
+// Why the `i`th action of verb `v` (an arm or wing swing) is left out, empty when it is not: a
+// gait's arm swing is a person's (on a four-legged animal, a bird or a fish it found no arms and
+// bent the sides of the body: a running dog's head and tail swung as arms); a machine that flies
+// (an object: a saucer, a balloon) beats no wings (its sides bent as wings, a hovering saucer
+// narrowed as if it turned about its vertical axis). `figure`: the prompt's figure class;
+// `clause_figure`: the clause's.
+std::string arms_left_out(const Verb& v, size_t i, FigureClass figure, FigureClass clause_figure);
 
 }  // namespace svgm

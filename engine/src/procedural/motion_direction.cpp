@@ -36,7 +36,8 @@ std::string direction_words(const PlannedAction& a) {
     case Primitive::Squash: return "down, squashed, and back up";
     case Primitive::Fall: return "down, each element in its own phase";
     case Primitive::Shake: return "a small jitter";
-    case Primitive::Pulse: return "larger and smaller about its centre";
+    case Primitive::Pulse:
+      return a.vertical == 1 && a.amp < 0 ? "smaller toward its top and back (away)" : "larger and smaller about its centre";
     case Primitive::Stretch: return "longer along its length and back";
     case Primitive::Undulate: {
       static const char* from[] = {"", " from the pole at its left", " from the pole at its right", " from the pole at its top",

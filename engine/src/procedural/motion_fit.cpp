@@ -150,6 +150,16 @@ bool turns_degrees(const PlannedAction& a) {
          a.primitive == Primitive::Sway;
 }
 
+// Whether action i is a one-way climb of the whole figure (a launch's) and another action of
+// its words shrinks the figure (the launch going away): that one shows the launch without room.
+bool climbs_with_more(const MotionPlan& plan, size_t i) {
+  const PlannedAction& a = plan.actions[i];
+  if (a.primitive != Primitive::Bob || a.vertical != 1 || !a.parts.empty()) return false;
+  for (const PlannedAction& b : plan.actions)
+    if (&b != &a && b.words == a.words && b.primitive == Primitive::Pulse && b.amp < 0 && b.parts.empty()) return true;
+  return false;
+}
+
 bool oscillates(const PlannedAction& a) {
   return a.primitive == Primitive::Swing || a.primitive == Primitive::Rock || a.primitive == Primitive::Bend ||
          a.primitive == Primitive::Sway || a.region != Region::None;
@@ -483,6 +493,14 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
           plan.actions[i].one_sided = side;
         }
       }
+    // A climb with no room above (a launch from a figure at the canvas's top) is left out when
+    // its words move the figure otherwise (the launch going away, smaller): kept at the smallest
+    // scale, it still left the canvas and shrank every motion with it to half.
+    if (best < 0 && !all && climbs_with_more(plan, i)) {
+      scale = 0;
+      plan.notes.push_back(what + " left out: no room above to climb");
+      continue;
+    }
     if (best < 0) {
       for (size_t j = 0; j < plan.actions.size(); ++j)
         if ((all || j == i) && cut[j].empty()) cut[j] = first_why;

@@ -9,6 +9,7 @@
 
 #include "procedural/carried_shapes.h"
 #include "procedural/detail_binding.h"
+#include "procedural/figure_pieces.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/region_bend.h"
 #include "procedural/rotor_blades.h"
@@ -53,11 +54,12 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
       return Affine::translate(0, ty);
     }
     case Primitive::Slide: return Affine::translate(a.direction * amp * W * s, 0);
-    case Primitive::Shake:
-      return Affine::translate(amp * H * s, 0.6 * amp * H * std::sin(kTau * (std::max(1, a.cycles - 1) * t + phase)));
+    case Primitive::Shake:  // on the ground (vertical != 0: a launch's rumble), only sideways
+      return Affine::translate(amp * H * s, a.vertical != 0 ? 0 : 0.6 * amp * H * std::sin(kTau * (std::max(1, a.cycles - 1) * t + phase)));
     case Primitive::Pulse: {
+      // Shrinking up (vertical 1): about the top's middle, a launch going away into the sky.
       const double f = 1 + amp * k;
-      return about(centre, Affine::scale(f, f));
+      return about(a.vertical == 1 && amp < 0 ? Vec2{centre.x, box.y0} : centre, Affine::scale(f, f));
     }
     case Primitive::Squash: {
       const double sy = 1 - 1.2 * amp * k;
@@ -83,6 +85,29 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
     }
     default: return {};
   }
+}
+
+// The motion of piece k (box `box`) of a figure moved apart (figure_pieces.h): the action's own,
+// every other piece turning and drifting the other way and each a little shorter than the one
+// before (to 3/4), so no two pieces move in step.
+Affine piece_motion(const PlannedAction& a, double amp, size_t k, double t, const RigBox& box, const RigBox& figure, double W, double H) {
+  if (!a.apart) return rigid(a, amp, 1, 0, t, figure, figure.centre(), W, H);  // all pieces as one
+  PlannedAction one = a;
+  const double sign = k % 2 ? -1 : 1;
+  one.direction = static_cast<int>(sign) * a.direction;
+  return rigid(one, amp * (1 - 0.125 * static_cast<double>(k % 3)), sign, 0, t, box, {box.centre().x, box.y1}, W, H);
+}
+
+// A figure in pieces moved apart (figure_pieces.h): each piece's box, for its own motion, and in
+// `piece_of` each part's piece; none when no action moves the figure apart.
+std::vector<RigBox> piece_boxes(const Rig& rig, const MotionPlan& plan, std::vector<int>& piece_of) {
+  std::vector<RigBox> out;
+  if (std::none_of(plan.actions.begin(), plan.actions.end(), [](const PlannedAction& a) { return a.apart; })) return out;
+  piece_of = figure_pieces(rig);
+  out.resize(static_cast<size_t>(std::max(0, piece_count(piece_of))));
+  for (size_t g = 0; g < rig.parts.size(); ++g)
+    if (piece_of[g] >= 0) out[piece_of[g]].add(rig.parts[g].box);
+  return out;
 }
 
 // A rolling wheel's turn at t (PlannedAction::rolls), in degrees: the distance the figure's
@@ -593,6 +618,8 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   for (int g = 0; g < G; ++g)
     planted[g] = rig.parts[g].parent == rig.root && rig.root >= 0 && !reach[g].empty() &&
                  reach[g].y1 >= rig.figure.y1 - kPlanted * rig.figure.h();
+  std::vector<int> piece_of;
+  const std::vector<RigBox> piece_box = piece_boxes(rig, plan, piece_of);
 
   std::vector<char> spinning(G, 0);
   for (const auto& a : plan.actions)
@@ -623,6 +650,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     std::vector<Affine> local(G), spin(G);
     std::vector<char> spins(G, 0);
     Affine whole, root_turn, over_wheels;
+    std::vector<Affine> whole_of(piece_box.size());  // the whole figure's motion, per piece
     for (const auto& a : plan.actions) {
       const double amp = plan.amplitude(a);
       if (is_deformation(a) || a.target == Target::Repeated) continue;
@@ -632,7 +660,10 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         PlannedAction shallower = a;
         shallower.scale = a.scale * plan.scale;
         whole = rigid(shallower, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
-      } else if (a.parts.empty()) whole = rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
+      } else if (a.parts.empty()) {
+        whole = rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
+        for (size_t k = 0; k < whole_of.size(); ++k) whole_of[k] = piece_motion(a, amp, k, t, piece_box[k], rig.figure, W, H) * whole_of[k];
+      }
       for (size_t i = 0; i < a.parts.size(); ++i) {
         const RigPart& P = rig.parts[a.parts[i]];
         Affine& into = a.primitive == Primitive::Spin ? spin[a.parts[i]]
@@ -685,7 +716,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
             if (!(src != pi && by >= 0 && held[by])) {
               if (by >= 0) q = world[by].apply(q);
               if (!bg && !(by >= 0 && fixed[by])) q = over_wheels.apply(q);
-              if (!bg) q = whole.apply(q);
+              if (!bg) q = (by >= 0 && !whole_of.empty() && piece_of[by] >= 0 ? whole_of[piece_of[by]] : whole).apply(q);
             }
           }
           ++point;

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "svgmotion/error.h"
+#include "procedural/figure_pieces.h"
 #include "procedural/invisible_spin.h"
 #include "procedural/limb_qualifiers.h"
 #include "procedural/motion_plan_internal.h"
@@ -269,7 +270,9 @@ struct Builder {
       a.amp = std::max(1.0, std::round((base.primitive == Primitive::Spin ? base.amp : 1) * (mods.speed > 1 ? 2 : 1)));  // whole turns
       a.cycles = 1;
     }
-    a.vertical = mods.vertical || verb.name != "takeoff" || a.primitive != Primitive::Bob ? mods.vertical : 1;  // a launch climbs, never dipping below where it stood
+    // A launch climbs (never below where it stood), shrinks toward its top and rumbles sideways.
+  a.apart = verb.name == "tumble" && target == Target::Whole;
+  a.vertical = mods.vertical || verb.name != "takeoff" || a.primitive == Primitive::Slide ? mods.vertical : 1;
     if (a.primitive == Primitive::Undulate && target == Target::Whole) a.anchored = anchored_side(rig, true);
     if (a.primitive == Primitive::Bend && target == Target::Whole) a.anchored = bend_anchor(rig, verb.name == "flicker" ? FigureClass::Flame : figure);
     a.direction = mods.side != 0 ? mods.side : ((rng() & 1) ? 1 : -1);
@@ -328,8 +331,10 @@ struct Builder {
     if (limb_role && !note.empty() && rig.root >= 0 && a.primitive == Primitive::Swing)
       bend_region(a, target, base, mods, plural, note, which);
     // A fall with nothing drawn apart to fall (no drops; "the maple leaf tumbles") is the figure's own (self_movers.h).
+    // So does a figure in pieces the prompt names ("the leaves tumble": a fall moved no limb).
     if (const Verb* tumble = find_verb_by_name("tumble");
-        a.primitive == Primitive::Fall && (target == Target::Repeated ? rig.repeated.empty() : target != Target::Whole && a.parts.empty())) {
+        a.primitive == Primitive::Fall && (target == Target::Repeated ? rig.repeated.empty()
+                                           : target != Target::Whole && (a.parts.empty() || piece_count(figure_pieces(rig)) >= 2))) {
       Modifiers down = mods;
       down.vertical = -1;  // down and back
       for (const Action& t : tumble->actions) add(*tumble, t, Target::Whole, {}, "", down, false, words, false, "nothing drawn apart to fall: the figure falls itself");
@@ -356,11 +361,20 @@ struct Builder {
     pick_sides(a, base, mods, plural, note);
     // One-sided whole-figure motions (lean, bow) go one way and back.
     if (a.primitive == Primitive::Rock && base.pairing == Pairing::OneSide) a.vertical = 2;
-    // Skip a repeat: the same primitive on the same parts.
-    for (const auto& b : plan.actions)
-      if (b.primitive == a.primitive && b.target == a.target && b.parts == a.parts && b.region == a.region) return;
     explain(a, verb, target, words, mods, {note, which, paddle, beat, instead, spacing});
-    plan.actions.push_back(std::move(a));
+    if (!repeats(a)) plan.actions.push_back(std::move(a));
+  }
+
+  // Whether `a` repeats an action (the same primitive on the same parts: skipped); a larger one
+  // of another verb takes its place ("the flying saucer blasts off" kept the flight's bob of 5 %,
+  // not the climb of 25 %).
+  bool repeats(PlannedAction& a) {
+    for (auto& b : plan.actions)
+      if (b.primitive == a.primitive && b.target == a.target && b.parts == a.parts && b.region == a.region) {
+        if (std::fabs(a.amp) > std::fabs(b.amp) && a.target == Target::Whole && b.verb != a.verb) b = std::move(a);
+        return true;
+      }
+    return false;
   }
 
   // No separate part for a limb role: a region of a part bends instead (the outline's arms, the
@@ -529,18 +543,6 @@ bool locatable_noun(const PromptNoun& n, const Rig& rig, FigureClass figure) {
          !locate_part(rig, shape).lobes.empty();
 }
 
-// Where the figure moves ("bobs on the waves"; support_band.h): "on the waves" for the first
-// noun after a preposition of place that names no part of the figure; empty when none does.
-std::string ground_words(const ParsedPrompt& prompt, const Rig& rig) {
-  for (const Clause& c : prompt.clauses)
-    for (const auto& n : c.nouns) {
-      if (!n.object_of_preposition || n.target != Target::Named || !names_ground(n.preposition)) continue;
-      std::string ignore;
-      if (parts_for(rig, Target::Named, n.word, &ignore).empty()) return n.preposition + " the " + n.word;
-    }
-  return "";
-}
-
 // A noun naming a kind of figure ("the grasshopper": an insect) was understood: it chose the
 // figure's class, though no part is named so.
 // A verb by which a figure gets somewhere: a gait (legs in turn), hops, a swimming or crawling
@@ -697,11 +699,8 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
           restated.push_back("'" + c.text + "'");
           break;
         }
-        // A gait's arm swing is a person's: on a four-legged animal, a bird or a fish it found no
-        // arms and bent the sides of the body (a running dog's head and tail swung as arms).
-        if (i > 0 && act.target == Target::Arms && v->actions[0].target == Target::Legs && b.figure != FigureClass::None &&
-            b.figure != FigureClass::Biped) {
-          b.plan.notes.push_back(std::string("a ") + figure_class_name(b.figure) + " has no arms: " + v->name + "'s arm swing left out");
+        if (std::string why = arms_left_out(*v, i, b.figure, c.figure); !why.empty()) {
+          b.plan.notes.push_back(why);
           continue;
         }
         if (i > 0 && act.target == Target::Whole && (names_limbs || located) && (is_limb_target(v->actions[0].target) || paddles(*v, rig) || located)) {

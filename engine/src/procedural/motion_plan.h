@@ -72,6 +72,8 @@ struct PlannedAction {
   bool rolls = false;           // Spin of wheels: they roll with the figure's Slide of the same
                                 // words (the turn follows the distance, both ways), instead of
                                 // whole turns
+  bool apart = false;           // Whole: each separate piece of the figure (figure_pieces.h)
+                                // moves its own way (a tumble of two leaves)
   bool closed_form = false;     // region bends: the closed-form bend, not the mesh (region_bend.h:
                                 // fit_plan's choice when unfolding the mesh would hide the motion)
   std::string why;

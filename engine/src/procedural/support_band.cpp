@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "procedural/motion_plan_internal.h"
 #include "procedural/part_rig_internal.h"
 
 namespace svgm {
@@ -22,6 +23,26 @@ constexpr double kCrest = 0.05;
 
 bool names_ground(const std::string& p) {
   return p == "on" || p == "onto" || p == "along" || p == "across" || p == "over" || p == "through" || p == "off";
+}
+
+// Where the figure moves ("bobs on the waves"; support_band.h): "on the waves" for the first
+// noun after a preposition of place that names no part of the figure; empty when none does.
+// A launch leaves a ground ("takes off from the runway"), named or not ("off the ground"): the
+// runway drawn under a plane rose with it (the support band, when the drawing has one, stays).
+std::string ground_words(const ParsedPrompt& prompt, const Rig& rig) {
+  using motion_plan_internal::parts_for;
+  bool launch = false;
+  for (const Clause& c : prompt.clauses) {
+    const bool leaves = std::any_of(c.verbs.begin(), c.verbs.end(), [](const Verb* v) { return v && v->name == "takeoff"; });
+    launch = launch || leaves;
+    for (const auto& n : c.nouns) {
+      if (!n.object_of_preposition || n.target != Target::Named || !(names_ground(n.preposition) || (leaves && n.preposition == "from")))
+        continue;
+      std::string ignore;
+      if (parts_for(rig, Target::Named, n.word, &ignore).empty()) return n.preposition + " the " + n.word;
+    }
+  }
+  return launch ? "off the ground" : "";
 }
 
 std::vector<char> support_paths(const Scene& scene, const Rig& rig) {

@@ -14,12 +14,18 @@
 #include <vector>
 
 #include "procedural/part_rig.h"
+#include "procedural/prompt_parse.h"
 #include "svgmotion/scene.h"
 
 namespace svgm {
 
 // Whether the preposition opens a phrase that names where the figure moves (a ground).
 bool names_ground(const std::string& preposition);
+
+// The prompt's words for the ground the figure moves on: "on the waves" for the first noun after
+// a preposition of place (names_ground) that names no part of the figure; a launch leaves a
+// ground, named after "from" or not ("off the ground"). Empty when none.
+std::string ground_words(const ParsedPrompt& prompt, const Rig& rig);
 
 // Per path of the scene: 1 when it belongs to the band the figure moves on (see above).
 std::vector<char> support_paths(const Scene& scene, const Rig& rig);
