@@ -17,15 +17,16 @@ namespace svgm {
 // inside its box. Lobes empty when no element is such a thing.
 LocatedPart flames_over_core(const Rig& rig, int body);
 
-// Whether element `e`'s top is blunt: its points in its top kBluntTop of its height spread over
-// at least kBluntSpread of its width (a flame's tip is one point).
-bool blunt_top(const RigElement& e);
+// Whether element `e`'s top is blunt: its points in its top `top` of its height spread over at
+// least kBluntSpread of its width (a flame's tip is one point).
+inline constexpr double kBluntTop = 0.15;
+bool blunt_top(const RigElement& e, double top = kBluntTop);
 
 inline constexpr double kCoreBelow = 0.25;   // its top below this share of the blaze's height
 inline constexpr double kCoreBottom = 0.1;   // its bottom within this share of the blaze's height of the blaze's bottom
 inline constexpr double kCoreSpan = 0.8;     // across at least this share of the blaze's width
 inline constexpr double kCoreGrow = 0.05;    // its details' boxes within its box grown by this share of its diagonal
-inline constexpr double kBluntTop = 0.15;
 inline constexpr double kBluntSpread = 0.5;
+inline constexpr double kTipTop = 0.05;      // a blaze's top this share of its height is one tip
 
 }  // namespace svgm
