@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "procedural/flame_core.h"
 #include "procedural/motion_plan.h"
 #include "procedural/part_locator.h"
 
@@ -142,6 +143,70 @@ TEST_CASE("a fall with no repeated drops: the feather tumbles, the whole of it g
   // The quill's top (100, 40) goes down more than 8 % of the figure's height (140) at mid-loop.
   const Vec2 rest = path_points(d.scene, pts, F, 1, 0)[0], mid = path_points(d.scene, pts, F, 1, F / 2)[0];
   CHECK(mid.y - rest.y > 0.08 * 140);
+}
+
+TEST_CASE("plumes: a puff over a chimney of bands rises; the bands standing on the roof under it stay") {
+  // The bands touch edge to edge from the roof (y 110) up to the puff (y 20-50): each carries the
+  // next, the puff carries nothing (plume_stacks.h). Without the rule the two upper bands rose
+  // with it.
+  const Drawing d("chimney_puff.svg");
+  const LocatedPart p = locate_part(d.rig, PartShape::Jet);
+  CHECK(p.paths == std::vector<int>{3});
+  CHECK(p.why.find("3 with another drawn on them edge to edge stay") != std::string::npos);
+  const MotionPlan plan = plan_from_prompt(parse_prompt("smoke rises from the chimney"), d.rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].primitive == Primitive::Pulse);
+  const auto t = d.travel(plan);
+  CHECK(t[0] == 0.0);  // the building
+  CHECK(t[1] == 0.0);  // the red bands
+  CHECK(t[2] == 0.0);  // the white band
+  CHECK(t[3] > 0.08 * 160 * 0.5);  // the puff's top goes up
+}
+
+TEST_CASE("plumes: a thin curl of smoke whose box is larger than its cigarette's is the plume") {
+  const Drawing d("curl_over_bar.svg");
+  CHECK(d.rig.elements.size() == 2);
+  const LocatedPart p = locate_part(d.rig, PartShape::Jet);
+  REQUIRE(p.lobes.size() == 1);
+  CHECK(p.paths == std::vector<int>{1});
+  CHECK(p.lobes[0].pivot.y == doctest::Approx(140));  // the curl's lowest middle, where it leaves the bar
+  const auto t = d.travel(plan_from_prompt(parse_prompt("smoke rises from the cigarette"), d.rig, 1));
+  CHECK(t[0] == 0.0);
+  CHECK(t[1] > 8.0);
+}
+
+TEST_CASE("flames: a heart drawn over the lower half of a blaze holds; the blaze's stretch above it flickers") {
+  const Drawing d("heart_blaze.svg");
+  CHECK(blunt_top(d.rig.elements[1]));   // the heart's two lobes
+  CHECK(!blunt_top(d.rig.elements[0]));  // the blaze's one tip
+  const LocatedPart f = locate_part(d.rig, PartShape::Flames);
+  REQUIRE(f.lobes.size() == 1);
+  CHECK(f.paths == std::vector<int>{0});
+  CHECK(f.lobes[0].pivot.x == doctest::Approx(100));
+  CHECK(f.lobes[0].pivot.y == doctest::Approx(85));  // the heart's top
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the flames around the heart flicker"), d.rig, 1);
+  REQUIRE(!plan.actions.empty());
+  CHECK(plan.actions[0].region == Region::Located);
+  // The heart's points on its curve hold; its handles near the flames' base line turn less than
+  // a pixel (the bend's smoothing of the neighbouring tangents), 1 % of the figure's height.
+  const int F = 13;
+  const std::vector<Vec2> pts = animate_plan(d.scene, d.rig, plan, F);
+  const std::vector<Vec2> rest = path_points(d.scene, pts, F, 1, 0);
+  double on_curve = 0;
+  for (int f = 1; f < F; ++f) {
+    const std::vector<Vec2> q = path_points(d.scene, pts, F, 1, f);
+    for (size_t i = 0; i < q.size(); i += 3) on_curve = std::max(on_curve, std::hypot(q[i].x - rest[i].x, q[i].y - rest[i].y));
+  }
+  CHECK(on_curve == 0.0);
+  const auto t = d.travel(plan);
+  CHECK(t[1] < 0.01 * 165);  // the heart
+  CHECK(t[0] > 5.0);   // the flame's tip
+}
+
+TEST_CASE("flames: a flame's pointed core is no thing burning: a blaze with one finds no flames over a core") {
+  const Drawing d("blaze.svg");
+  CHECK(!blunt_top(d.rig.elements[1]));
+  CHECK(flames_over_core(d.rig, 0).lobes.empty());
 }
 
 }  // TEST_SUITE

@@ -8,7 +8,9 @@
 
 #include "geometry/convex_hull.h"
 #include "motion/motion_verbs.h"
+#include "procedural/flame_core.h"
 #include "procedural/petal_rosette.h"
+#include "procedural/plume_stacks.h"
 #include "procedural/rotor_blades.h"
 
 namespace svgm {
@@ -40,7 +42,6 @@ constexpr double kStemMin = 0.3;       // a stem at least this share of F's heig
 constexpr double kBloomMin = 0.08;     // a bloom's box at least this share of F's box
 constexpr double kTailMaxLength = 0.5; // a tail no longer than this share of F's longer side
 constexpr double kStrandReach = 0.1;   // a strand's end within this share of F's longer side of the body's box
-constexpr double kJetGap = 0.02;       // a plume floats this share of F's height above its source's top (what reaches it stands on it)
 constexpr double kStrandAlong = 0.5;   // strokes drawn along one strand: boxes overlapping this share of the smaller
 
 double overlap_area(const RigBox& a, const RigBox& b) {
@@ -213,30 +214,21 @@ LocatedPart ears(const Rig& rig, int body) {
   return out;
 }
 
-LocatedPart jet(const Rig& rig, int body) {
+LocatedPart jet(const Rig& rig) {
   LocatedPart out;
-  // The source is the element of most drawn area: a thin curl of smoke can have the largest box.
-  for (size_t i = 0; i < rig.elements.size(); ++i)
-    if (rig.elements[i].area > rig.elements[body].area) body = static_cast<int>(i);
-  const RigBox& B = rig.elements[body].box;
-  // Everything drawn above the body's top (a spout's drops together), but what stands on it (a
-  // factory's chimney and roof under its smoke: their bottoms at its top) when anything else is.
-  std::vector<int> els;
-  RigBox box;
-  for (int pass = 0; pass < 2 && els.empty(); ++pass)
-    for (size_t i = 0; i < rig.elements.size(); ++i)
-      if (static_cast<int>(i) != body && rig.elements[i].box.centre().y < B.y0 && rig.elements[i].box.area() < B.area() &&
-          (pass == 1 || rig.elements[i].box.y1 < B.y0 - kJetGap * rig.figure.h())) {
-        els.push_back(static_cast<int>(i));
-        box.add(rig.elements[i].box);
-      }
+  // What is drawn above its source's top, less what stands under it (plume_stacks.h).
+  size_t stacked = 0;
+  const std::vector<int> els = plume_elements(rig, stacked);
   if (els.empty()) return out;
+  RigBox box;
+  for (int i : els) box.add(rig.elements[i].box);
   out.lobes.push_back(lobe_over(rig, els, {box.centre().x, box.y1}));
   std::set<int> paths;
   add_paths(rig, els, paths);
   out.paths.assign(paths.begin(), paths.end());
   out.why = std::to_string(els.size()) + " element" + (els.size() > 1 ? "s" : "") + " drawn above the body's top (" +
-            path_ids(els, rig) + " at " + fmt_box(rig, box) + "), turning about their lowest middle";
+            path_ids(els, rig) + " at " + fmt_box(rig, box) + "), turning about their lowest middle" +
+            (stacked ? "; " + std::to_string(stacked) + " with another drawn on them edge to edge stay" : "");
   return out;
 }
 
@@ -615,6 +607,7 @@ bool any_stem(std::string_view w, std::initializer_list<std::string_view> stems)
 
 ElementAxis element_axis(const RigElement& e) { return axis_of(e); }
 ArmLobe lobe_over_elements(const Rig& rig, const std::vector<int>& els, Vec2 pivot) { return lobe_over(rig, els, pivot); }
+ArmLobe lobe_over_point_set(const Rig& rig, const std::vector<Vec2>& pts, Vec2 pivot) { return lobe_over_points(rig, pts, pivot); }
 
 // A box in shares of the figure's box, for the notes: "0.10,0.20-0.40,0.55".
 std::string fmt_box(const Rig& rig, const RigBox& b) {
@@ -731,8 +724,8 @@ LocatedPart locate_part(const Rig& rig, PartShape shape) {
   if (body < 0 || rig.figure.empty()) return out;
   switch (shape) {
     case PartShape::Ears: out = ears(rig, body); break;
-    case PartShape::Jet: out = jet(rig, body); break;
-    case PartShape::Flames: out = flames(rig, body); break;
+    case PartShape::Jet: out = jet(rig); break;
+    case PartShape::Flames: out = flames(rig, body), out = out.lobes.empty() ? flames_over_core(rig, body) : out; break;
     case PartShape::Clapper: out = clapper(rig, body); break;
     case PartShape::Hands: out = hands(rig, body); break;
     case PartShape::SidePair: out = side_pair(rig, body); break;

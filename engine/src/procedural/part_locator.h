@@ -83,6 +83,8 @@ ElementAxis element_axis(const RigElement& e);
 // One lobe over elements `els` turning about `pivot`: its tip their point farthest from it, its
 // base behind every one of their points.
 ArmLobe lobe_over_elements(const Rig& rig, const std::vector<int>& els, Vec2 pivot);
+// The same over points `pts`.
+ArmLobe lobe_over_point_set(const Rig& rig, const std::vector<Vec2>& pts, Vec2 pivot);
 
 // The elements of the figure (every part but the background), for Rig::elements.
 std::vector<RigElement> figure_elements(const Scene& scene, const Rig& rig);
