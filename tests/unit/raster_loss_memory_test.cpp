@@ -26,6 +26,12 @@ Scene two_shapes() {
                            filled(polygon({{3, 4}, {30, 6}, {14, 28}}), {0.1f, 0.3f, 0.8f, 0.6f})});
 }
 
+// Every frame active, at the control points shifted by a growing amount per frame.
+void pose_shifted(ClRaster& r, const RasterPlan& plan) {
+  r.set_control_points(shifted_cp(plan, kK, 0.5f, 0.75f));
+  r.set_active_frames(kK);
+}
+
 // The loss then the gradient, as one vector of bits to compare.
 std::vector<float> pass(ClRaster& r) {
   const float loss = r.loss_and_gradient(kWeight, kWhite);
@@ -42,8 +48,7 @@ TEST_CASE("released loss buffers: device bytes fall by their size, and the next 
   const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
   const std::vector<float> targets = targets_on_white(plan, kK, 2.5f, -1.25f);
   ClRaster r(runtime(), plan, kK);
-  r.set_control_points(shifted_cp(plan, kK, 0.5f, 0.75f));
-  r.set_active_frames(kK);
+  pose_shifted(r, plan);
   r.set_targets(targets);
   const std::vector<float> first = pass(r);
   const std::vector<float> losses = r.read_frame_losses();
@@ -144,8 +149,7 @@ TEST_CASE("loss chunks: one, two or every frame at a time give the same bits, an
 TEST_CASE("release_image: the Float renders' buffer goes once read, and the next render makes it again with the same bits") {
   const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
   ClRaster r(runtime(), plan, kK);
-  r.set_control_points(shifted_cp(plan, kK, 0.5f, 0.75f));
-  r.set_active_frames(kK);
+  pose_shifted(r, plan);
   const size_t before = r.device_bytes();
   r.forward();
   const std::vector<float> first = r.read_image();
@@ -161,8 +165,7 @@ TEST_CASE("release_image: the Float renders' buffer goes once read, and the next
 TEST_CASE("render_frames: a chunk of frames alone has the bits a Float forward of every frame gives them, and holds nothing after") {
   const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
   ClRaster r(runtime(), plan, kK);
-  r.set_control_points(shifted_cp(plan, kK, 0.5f, 0.75f));
-  r.set_active_frames(kK);
+  pose_shifted(r, plan);
   r.forward();
   const std::vector<float> all = r.read_image();
   r.release_image();
@@ -190,8 +193,7 @@ TEST_CASE("render_frames: a chunk of frames alone has the bits a Float forward o
 TEST_CASE("render_frames_into: frame after frame through one kept image, the same bits, freed by release_image") {
   const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
   ClRaster r(runtime(), plan, kK);
-  r.set_control_points(shifted_cp(plan, kK, 0.5f, 0.75f));
-  r.set_active_frames(kK);
+  pose_shifted(r, plan);
   const size_t before = r.device_bytes();
   const size_t frame_bytes = size_t{kW} * kH * 4 * sizeof(float);
   std::vector<float> out;

@@ -47,7 +47,7 @@ void write_procedural_video(const Scene& scene, const std::vector<Vec2>& pts, ui
   // device and again on the host, 410 MB at 512 px, the bundled example's peak once the fit's
   // memory was cut (issue 38). The frame's images are made once and reused (render_frames_into).
   std::vector<float> img;
-  cv::Mat m(H, W, CV_32FC4), blurred(H, W, CV_32FC4);
+  cv::Mat m(H, W, CV_32FC4), blurred;  // GaussianBlur makes `blurred` once, then reuses it
   write_preview_video(out, o.frames, 1, [&](int f, int) {
     const double t = static_cast<double>(f) / (o.frames - 1);
     r.render_frames_into(f, 1, {1, 1, 1, 1}, img);
