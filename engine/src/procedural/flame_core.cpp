@@ -7,14 +7,6 @@
 
 namespace svgm {
 
-namespace {
-
-bool within(const RigBox& in, const RigBox& out, double grow = 0) {
-  return in.x0 >= out.x0 - grow && in.x1 <= out.x1 + grow && in.y0 >= out.y0 - grow && in.y1 <= out.y1 + grow;
-}
-
-}  // namespace
-
 bool blunt_top(const RigElement& e, double top) {
   const RigBox& b = e.box;
   double lo = 1e300, hi = -1e300;
@@ -36,7 +28,7 @@ LocatedPart flames_over_core(const Rig& rig, int body) {
     const RigElement& e = rig.elements[i];
     // Drawn over the blaze (a later path), inside its box, low in it down to its bottom, across
     // it, blunt (a band across a lantern reaches neither its bottom nor a flame's tip).
-    if (static_cast<int>(i) == body || e.path <= blaze.path || !within(e.box, B) || e.box.y0 < B.y0 + kCoreBelow * B.h() ||
+    if (static_cast<int>(i) == body || e.path <= blaze.path || !e.box.within(B) || e.box.y0 < B.y0 + kCoreBelow * B.h() ||
         e.box.y1 < B.y1 - kCoreBottom * B.h() || e.box.w() < kCoreSpan * B.w() || !blunt_top(e))
       continue;
     if (core < 0 || e.box.area() > rig.elements[core].box.area()) core = static_cast<int>(i);
@@ -49,7 +41,7 @@ LocatedPart flames_over_core(const Rig& rig, int body) {
     const RigElement& e = rig.elements[i];
     // The thing's outline and what is drawn on it hold: their boxes within its own, grown a
     // little (an outline's arcs bulge past its fill's top).
-    if (static_cast<int>(i) == core || within(e.box, C, kCoreGrow * std::hypot(C.w(), C.h())) || e.box.y0 >= C.y0) continue;
+    if (static_cast<int>(i) == core || e.box.within(C, kCoreGrow * std::hypot(C.w(), C.h())) || e.box.y0 >= C.y0) continue;
     for (Vec2 q : e.points)
       if (q.y <= C.y0) pts.push_back(q);
     paths.insert(e.path);

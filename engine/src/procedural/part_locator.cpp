@@ -52,7 +52,7 @@ double overlap_area(const RigBox& a, const RigBox& b) {
 bool inside(const RigBox& inner, const RigBox& outer) {
   // A box without area (a straight stroke's) is inside when it lies within.
   if (inner.area() <= 0)
-    return !inner.empty() && inner.x0 >= outer.x0 && inner.x1 <= outer.x1 && inner.y0 >= outer.y0 && inner.y1 <= outer.y1;
+    return !inner.empty() && inner.within(outer);
   return overlap_area(inner, outer) >= kInside * inner.area();
 }
 

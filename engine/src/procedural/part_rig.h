@@ -61,6 +61,10 @@ struct RigBox {
   double h() const { return std::max(0.0, y1 - y0); }
   double area() const { return w() * h(); }
   Vec2 centre() const { return {0.5 * (x0 + x1), 0.5 * (y0 + y1)}; }
+  // Whether this box lies within `outer` grown by `grow` on every side.
+  bool within(const RigBox& outer, double grow = 0) const {
+    return x0 >= outer.x0 - grow && x1 <= outer.x1 + grow && y0 >= outer.y0 - grow && y1 <= outer.y1 + grow;
+  }
 };
 
 enum class Role { Root, Head, UpperLimb, LowerLimb, Tail, Detail, Background };
