@@ -140,6 +140,42 @@ inline void q_tile_start(__global const int* row, int in, int x, size_t* at, int
   *at = t < 0 ? (size_t)(-1 - t) : (size_t)t * (LOSS_TILE * LOSS_TILE) + in + x % LOSS_TILE;
 }
 
+/* Prefetches what the next row of blur_y_loss_rows touches first in memory (CPU devices,
+ * PREFETCH_ROWS): the X' row its newest tap reads (row y + LOSS_R + 1; the older tap rows
+ * were read by the rows before) over that row's extent, one prefetch per 64-byte line, Q's
+ * stored tiles along row y + 1 (16 pixels of four halves, two lines a tile), and the lines of
+ * E' it writes (for writing). PoCL runs a group's work-items one after the other, rows in
+ * order, so the next row's lines stream in while this row computes; as demand misses they
+ * were most of this kernel's time (the load of Q, of the newest tap row and the E' store,
+ * perf on sushi). Changes no value. */
+inline void prefetch_next_row(__global const float* f, __global const int2* ex,
+                              __global const half* Q, __global const int* qrow,
+                              __global float* e, int y, int width, int height) {
+#ifdef PREFETCH_ROWS
+  const int yx = y + LOSS_R + 1;
+  if (yx < height && ex[yx].x <= ex[yx].y)
+    for (int i = 3 * ex[yx].x; i <= 3 * ex[yx].y + 2; i += 16) PREFETCH(f + (size_t)yx * width * 3 + i);
+  const int yq = y + 1, tiles_x = (width + LOSS_TILE - 1) / LOSS_TILE;
+  if (yq >= height) return;
+  int lo = width, hi = -1; /* row yq's E' extent, as blur_y_loss_rows takes it */
+  for (int yy = max(yq - LOSS_R, 0); yy <= min(yq + LOSS_R, height - 1); ++yy)
+    if (ex[yy].x <= ex[yy].y) {
+      lo = min(lo, ex[yy].x);
+      hi = max(hi, ex[yy].y);
+    }
+  if (lo > hi) return;
+  for (int i = 3 * lo; i <= 3 * hi + 2; i += 16) PREFETCH_W(e + (size_t)width * 3 + i);
+  __global const int* row = qrow + (yq % LOSS_TILE == 0 ? tiles_x : 0);
+  const int in = (yq % LOSS_TILE) * LOSS_TILE;
+  for (int t = lo / LOSS_TILE; t <= hi / LOSS_TILE; ++t) {
+    const int n = row[t];
+    if (n < 0) continue; /* the frame's constant: one pixel, read by every row */
+    __global const half* p = Q + ((size_t)n * (LOSS_TILE * LOSS_TILE) + in) * 4;
+    for (int i = 0; i < LOSS_TILE * 4; i += 32) PREFETCH(p + i);
+  }
+#endif
+}
+
 /* Per (row, frame): E' = the y-blur of X' over the rows' extents, kept (with its extent) for
  * the backward pass, and the row's Σ (2 Q·E' + E'·E') over pixels and channels, in x order.
  * The host may launch a few frames at a time (ClRaster's loss chunks, to keep X' and E' to a
@@ -185,6 +221,7 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
     fb = min(fb, tb[j]);
   }
   const int r = (y - LOSS_R) * width; /* tap row j starts at f + r + j * width */
+  prefetch_next_row(f, ex, Q, qrow, e, y, width, height);
 #if !defined(CHROMA_R) && !defined(CHROMA_W) && LOSS_R == 2
   /* The plain blur is the same for each of a pixel's three floats: over the span where every
    * tap is inside, E' is blurred as a flat run of floats, eight at a time (PoCL kept the

@@ -128,9 +128,11 @@ inline float3 rgb_adjoint_from_ycc(float3 v) {
  * prefetch instruction. Nothing elsewhere, and it never changes a value. */
 #if defined(PREFETCH_ROWS) && defined(__clang__)
 #define PREFETCH(p) __builtin_prefetch(p)
+#define PREFETCH_W(p) __builtin_prefetch(p, 1) /* the line will be written */
 #else
 #undef PREFETCH_ROWS
 #define PREFETCH(p) ((void)0)
+#define PREFETCH_W(p) ((void)0)
 #endif
 
 inline float cross2(float2 a, float2 b) { return a.x * b.y - a.y * b.x; }
