@@ -538,6 +538,10 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
     if (tp > tape_cap) atomic_max(overflow, tp);
     /* band_T: each pixel's transmittance below the entries visited so far (W in the essay). */
     for (int i = 0; i < rows * width; ++i) band_T[i] = 1.0f;
+    /* band_rgba (the fallback replay's colours, not read again) keeps ∂L/∂C of each pixel with
+     * an entry once computed (w = 1): it depends on the pixel alone, and where draws overlap
+     * (a fill and its stroke, shapes that touch) several entries share a pixel. */
+    for (int e = 0; e < min(tp, tape_cap); ++e) band_rgba[(int)aux[e].x].w = 0.0f;
 
     /* 2. Top-down: ∂L/∂a at each of the draw's entries, then the boundary integrals of its
      *    lines. Only the tape is visited: no accumulation, no sweep. */
@@ -566,7 +570,9 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
          * this draw: g is 0 exactly, without the 25-tap ∂L/∂C (whose reads of E' and R miss
          * the cache; in a layered scene most of the lower draws' edges are hidden). */
         if (T != 0.0f) {
-          const float3 dC = blurred_gradient(Ek, Xk, R, Rt, x, y0 + r, width, height, grad_scale);
+          if (band_rgba[px].w == 0.0f)
+            band_rgba[px] = (float4)(blurred_gradient(Ek, Xk, R, Rt, x, y0 + r, width, height, grad_scale), 1.0f);
+          const float3 dC = band_rgba[px].xyz;
           const float ga = dot(dC, T * (c.xyz - b.xyz));
           g = ga * c.w * fill_rule_slopes(b.w, rule);
         }
