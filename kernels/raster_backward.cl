@@ -467,7 +467,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               float grad_scale,                   /* 2w/N */
                               float4 background,
                               __local float* acc,                 /* [BAND_H][W + 2] */
-                              __local float4* band_rgba,          /* [BAND_H][W] (replay) */
+                              __local float4* band_rgba,          /* [BAND_H][W] (replay, then ∂L/∂C) */
                               __local float* band_T,              /* [BAND_H][W] */
                               __local float2* gcell,              /* [BAND_H][W] (g+, g−) */
                               __local uchar* mark,                /* [BAND_H][W] */

@@ -23,7 +23,11 @@ RasterTuning raster_tuning(const DeviceInfo& device, int width) {
   // (two thirds of the gradient's ∂L/∂C time on a sushi scene). A paint image's row is a 4 kB
   // page of its own, where the hardware's streamer starts cold (half of the backward sweep's
   // time on a scene of gradients). Prefetched up front, the rows stream in (sushi:
-  // raster_backward 15.0 -> 13.1 ms CPU per iteration). GPUs hide the latency.
+  // raster_backward 15.0 -> 13.1 ms CPU per iteration). Likewise the loss's y-blur reads its
+  // next row of X' and Q and writes E', the residual output writes X', and the backward reads
+  // a painted draw's colour at each of its tape entries: as demand misses these were the
+  // y-blur's stalls (sushi) and over half of raster_backward's own time (sunrise's gradients).
+  // GPUs hide the latency.
   t.prefetch_rows = device.type != "gpu";
   return t;
 }
