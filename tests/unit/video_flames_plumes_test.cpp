@@ -214,6 +214,17 @@ TEST_CASE("flames: a heart drawn over the lower half of a blaze holds; the blaze
   CHECK(t[0] > 5.0);   // the flame's tip
 }
 
+TEST_CASE("flames: a heart in a part of its own, drawn on the blaze, holds: it rides on none of the flames") {
+  const Drawing d("heart_blaze_groups.svg");
+  REQUIRE(d.rig.parts.size() == 2);
+  const LocatedPart f = locate_part(d.rig, PartShape::Flames);
+  CHECK(f.paths == std::vector<int>{0});
+  CHECK(f.holds == std::vector<int>{1});  // the heart
+  const auto t = d.travel(plan_from_prompt(parse_prompt("the flames around the heart flicker"), d.rig, 1));
+  CHECK(t[1] == 0.0);  // the heart, every point
+  CHECK(t[0] > 5.0);   // the flame's tip
+}
+
 TEST_CASE("flames: a flame's pointed core is no thing burning: a blaze with one finds no flames over a core") {
   const Drawing d("blaze.svg");
   CHECK(!blunt_top(d.rig.elements[1]));
