@@ -343,4 +343,33 @@ TEST_CASE("lexicon: kinds of rubbing read as rub; a verb WordNet joins to the ne
   CHECK(verb_names(parse_prompt("the man sits down").clauses.at(0)) == std::vector<std::string>{"sit"});
 }
 
+TEST_CASE("parse: a verb said of fire next to it is fire's flicker; a participle before another noun stays its verb") {
+  if (!wordnet_or_skip()) return;
+  // "flames leaping around it": what the flames do, and fire does one thing (not the verb leap,
+  // which moved the whole heart up and down).
+  const ParsedPrompt heart = parse_prompt("the heart burns, flames leaping around it");
+  const Clause& flames = heart.clauses.back();
+  CHECK(verb_names(flames) == std::vector<std::string>{"twinkle"});
+  CHECK(flames.verb_words == std::vector<std::string>{"leaping->twinkle"});
+  CHECK(noun_named(flames, "flames"));
+  CHECK(std::count(heart.readings.begin(), heart.readings.end(), "'leaping' said of flames read as twinkle (what flames does)") == 1);
+  // Before the noun (its adjective) and as the subject's verb, the same.
+  CHECK(verb_names(parse_prompt("leaping flames").clauses.at(0)) == std::vector<std::string>{"twinkle"});
+  CHECK(verb_names(parse_prompt("the dancing flames").clauses.at(0)) == std::vector<std::string>{"twinkle"});
+  CHECK(verb_names(parse_prompt("the fire dances").clauses.at(0)) == std::vector<std::string>{"twinkle"});
+  CHECK(verb_names(parse_prompt("a flickering candle").clauses.at(0)) == std::vector<std::string>{"twinkle"});
+  // Not fire: the participle is the noun's verb ("spinning wheels" spin; water does many things).
+  const Clause wheels = parse_prompt("spinning wheels").clauses.at(0);
+  CHECK(verb_names(wheels) == std::vector<std::string>{"spin"});
+  CHECK(noun_named(wheels, "wheels"));
+  const Clause leaves = parse_prompt("falling leaves").clauses.at(0);
+  CHECK(verb_names(leaves) == std::vector<std::string>{"fall"});
+  CHECK(noun_named(leaves, "leaves"));
+  CHECK(verb_names(parse_prompt("rolling waves").clauses.at(0)) == verb_names(parse_prompt("the waves roll").clauses.at(0)));
+  CHECK(verb_names(parse_prompt("rolling waves").clauses.at(0)) != std::vector<std::string>{"twinkle"});
+  CHECK(verb_names(parse_prompt("the water falls").clauses.at(0)) == std::vector<std::string>{"fall"});
+  // Fire after a preposition is where, not who: "the man leaps over the fire" leaps.
+  CHECK(verb_names(parse_prompt("the man leaps over the fire").clauses.at(0)) == std::vector<std::string>{"leap"});
+}
+
 }  // TEST_SUITE

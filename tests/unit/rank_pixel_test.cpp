@@ -407,6 +407,37 @@ TEST_CASE("rank pixel: a flat figure turning while it twists in the plane is no 
   CHECK(has(part.defects, "out-of-plane motion"));
 }
 
+// A checkerboard of the three palette colours in 6 px squares, shaken 6 px left and right on
+// alternate frames: every square changes colour between two frames (the plain mean difference is
+// far above the chaos line), yet each frame is the one before moved by 12 px. With `recolour`,
+// odd frames are also inverted, the page with them (as in the chaotic test below): a change no
+// shift explains.
+std::vector<float> draw_shaken_checker(int k, bool recolour) {
+  const double dx = k % 2 ? 6 : -6;
+  return supersampled([&](double u, double v, double* c) {
+    const double x = u - 24 - dx, y = v - 24;
+    const bool flip = recolour && k % 2;
+    if (x < 0 || x >= 48 || y < 0 || y >= 48) {
+      if (flip) c[0] = c[1] = c[2] = 0;
+      return;
+    }
+    const Rgba& p = kPalette[(static_cast<int>(x / 6) + static_cast<int>(y / 6)) % 3];
+    c[0] = flip ? 1 - p.r : p.r, c[1] = flip ? 1 - p.g : p.g, c[2] = flip ? 1 - p.b : p.b;
+  });
+}
+
+TEST_CASE("rank pixel: a figure shaken rigidly is no chaotic motion; a change no shift explains is") {
+  const CandidateScore shaken = score_candidate(candidate_of([](int k) { return draw_shaken_checker(k, false); }), kPalette);
+  INFO(shaken.to_json().dump(2));
+  // The plain mean difference was above the chaos line (the reason names the aligned one).
+  CHECK(shaken.motion.reason.find("shifted to match the one before") != std::string::npos);
+  CHECK(shaken.motion.value == 0.0);
+  CHECK_FALSE(has(shaken.defects, "chaotic motion"));
+  const CandidateScore recoloured = score_candidate(candidate_of([](int k) { return draw_shaken_checker(k, true); }), kPalette);
+  INFO(recoloured.to_json().dump(2));
+  CHECK(has(recoloured.defects, "chaotic motion"));
+}
+
 TEST_CASE("rank pixel: chaotic motion and bad input") {
   const Motion m = random_motion(11);
   TargetFrames t = make_candidate(m, Kind::Clean);

@@ -175,6 +175,17 @@ TEST_CASE("plumes: a thin curl of smoke whose box is larger than its cigarette's
   CHECK(t[1] > 8.0);
 }
 
+TEST_CASE("plumes: a cup's rim and the coffee in it, as wide as the saucer's top, stay; the wisps over them rise") {
+  const Drawing d("steam_cup_rim.svg");
+  const LocatedPart p = locate_part(d.rig, PartShape::Jet);
+  REQUIRE(p.lobes.size() == 1);
+  CHECK(p.paths == std::vector<int>{4, 5});  // the two wisps: not the rim (2) nor the coffee (3)
+  const auto t = d.travel(plan_from_prompt(parse_prompt("steam curls up from the cup of coffee"), d.rig, 1));
+  for (int i = 0; i < 4; ++i) CHECK(t[i] == 0.0);  // the saucer, the cup, its rim, the coffee
+  CHECK(t[4] > 8.0);
+  CHECK(t[5] > 8.0);
+}
+
 TEST_CASE("flames: a heart drawn over the lower half of a blaze holds; the blaze's stretch above it flickers") {
   const Drawing d("heart_blaze.svg");
   CHECK(blunt_top(d.rig.elements[1]));   // the heart's two lobes
@@ -200,6 +211,17 @@ TEST_CASE("flames: a heart drawn over the lower half of a blaze holds; the blaze
   CHECK(on_curve == 0.0);
   const auto t = d.travel(plan);
   CHECK(t[1] < 0.01 * 165);  // the heart
+  CHECK(t[0] > 5.0);   // the flame's tip
+}
+
+TEST_CASE("flames: a heart in a part of its own, drawn on the blaze, holds: it rides on none of the flames") {
+  const Drawing d("heart_blaze_groups.svg");
+  REQUIRE(d.rig.parts.size() == 2);
+  const LocatedPart f = locate_part(d.rig, PartShape::Flames);
+  CHECK(f.paths == std::vector<int>{0});
+  CHECK(f.holds == std::vector<int>{1});  // the heart
+  const auto t = d.travel(plan_from_prompt(parse_prompt("the flames around the heart flicker"), d.rig, 1));
+  CHECK(t[1] == 0.0);  // the heart, every point
   CHECK(t[0] > 5.0);   // the flame's tip
 }
 

@@ -114,6 +114,30 @@ TEST_CASE("rotors: a propeller seen edge on squeezes along its line as |cos| of 
   CHECK(t[2] >= 0.08 * 153);
 }
 
+TEST_CASE("rotors: a propeller drawn as two strokes crossing at its hub spins whole about it; a lone stroke is no rotor") {
+  const Drawing d("rotor_crossed.svg");
+  const LocatedPart r = locate_part(d.rig, PartShape::Rotor);
+  INFO(r.why);
+  // Both strokes, each across the hub (170,100): two lobes, not in one line; not the aerial
+  // (path 2, one stroke), nor the fuselage that crosses the wing at its middle.
+  CHECK(r.paths == std::vector<int>{3, 4});
+  REQUIRE(r.lobes.size() == 2);
+  CHECK_FALSE(rotor_edge_on(r));
+  for (const ArmLobe& l : r.lobes) {
+    CHECK(l.pivot.x == doctest::Approx(170).epsilon(0.01));
+    CHECK(l.pivot.y == doctest::Approx(100).epsilon(0.01));
+  }
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the propeller spins"), d.rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].primitive == Primitive::Spin);
+  const auto t = d.travel(plan);
+  CHECK(t[0] == 0.0);  // the fuselage
+  CHECK(t[1] == 0.0);  // the wing
+  CHECK(t[2] == 0.0);  // the aerial
+  CHECK(t[3] > 40.0);  // each stroke turns whole: its ends (28 px from the hub) go round
+  CHECK(t[4] > 30.0);
+}
+
 TEST_CASE("plumes: a cloud of smoke over a chimney rises; the chimney standing on the building holds") {
   const Drawing d("smoke_factory.svg");
   const LocatedPart j = locate_part(d.rig, PartShape::Jet);

@@ -36,11 +36,12 @@ LocatedPart flames_over_core(const Rig& rig, int body) {
   if (core < 0) return out;
   const RigBox& C = rig.elements[core].box;
   std::vector<Vec2> pts;
-  std::set<int> paths;
+  std::set<int> paths, holds;
   for (size_t i = 0; i < rig.elements.size(); ++i) {
     const RigElement& e = rig.elements[i];
     // The thing's outline and what is drawn on it hold: their boxes within its own, grown a
     // little (an outline's arcs bulge past its fill's top).
+    if (static_cast<int>(i) == core || e.box.within(C, kCoreGrow * std::hypot(C.w(), C.h()))) holds.insert(e.path);
     if (static_cast<int>(i) == core || e.box.within(C, kCoreGrow * std::hypot(C.w(), C.h())) || e.box.y0 >= C.y0) continue;
     for (Vec2 q : e.points)
       if (q.y <= C.y0) pts.push_back(q);
@@ -49,6 +50,9 @@ LocatedPart flames_over_core(const Rig& rig, int body) {
   if (pts.empty()) return out;
   out.lobes.push_back(lobe_over_point_set(rig, pts, {C.centre().x, C.y0}));
   out.paths.assign(paths.begin(), paths.end());
+  // A path both (a subpath in the blaze, another on the thing) moves.
+  for (int p : paths) holds.erase(p);
+  out.holds.assign(holds.begin(), holds.end());
   out.why = "nothing drawn above the blaze's top; a thing burning drawn over its lower part (path " +
             std::to_string(rig.elements[core].path + 1) + " at " + fmt_box(rig, C) + "): the flames are the stretch above it, about its top's middle";
   return out;

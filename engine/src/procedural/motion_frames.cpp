@@ -495,6 +495,16 @@ std::vector<char> moved_apart(const Scene& scene, const Rig& rig, const MotionPl
   return moves;
 }
 
+// What each path's points ride on (detail_binding.h), but what a located part's finder says holds
+// rides on none of it: the heart drawn over the lower half of a blaze took the blaze's bend as
+// line art on its fill (twemoji 2764-fe0f-200d-1f525).
+std::vector<std::vector<int>> hosts_of(const Scene& scene, const Rig& rig, const MotionPlan& plan, const std::vector<char>& fixed) {
+  std::vector<std::vector<int>> rides_on = bind_to_hosts(scene, rig, moved_apart(scene, rig, plan), fixed);
+  for (const PlannedAction& a : plan.actions)
+    for (int p : a.held_paths) rides_on[static_cast<size_t>(p)].clear();
+  return rides_on;
+}
+
 // How region action `a` moves the points of path `src` (of part `by`; `bg`: it stays): 1 bent
 // with the region, 2 carried by the bend (carried_by_bend), 0 not at all. The part's own
 // outlines and what hangs from it within its width and not below it (a hand at the end of a
@@ -631,7 +641,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   // turning their own way (a wheel, what turns with it or rides on it) keep to themselves.
   std::vector<char> fixed(G, 0);
   for (int g = 0; g < G; ++g) fixed[g] = spinning[g] || loads.turns_with[g] >= 0 || loads.rides[g] >= 0;
-  const std::vector<std::vector<int>> rides_on = bind_to_hosts(scene, rig, moved_apart(scene, rig, plan), fixed);
+  const std::vector<std::vector<int>> rides_on = hosts_of(scene, rig, plan, fixed);
 
   // Whether path p stays where it is under the whole figure's motions: a background, a held
   // part's, or the ground's.

@@ -288,6 +288,7 @@ struct Builder {
       a.lobes = located->lobes;
       a.silhouette = true;
       a.lobe_paths = located->paths;
+      a.held_paths = located->holds;
       a.sign = {1};
       a.phase = {0};
       note = "the " + (target_word.empty() ? std::string("head") : target_word) + " found as " + part_shape_name(located->shape) + ": " + located->why;

@@ -65,6 +65,7 @@ struct PlannedAction {
                                 // figure's silhouette (Rig::limbs)
   bool silhouette = false;      // lobes are Rig::limbs: the points of every part within them bend
   std::vector<int> lobe_paths;  // when not empty, only these scene paths' points bend (sorted)
+  std::vector<int> held_paths;  // scene paths that ride on none of lobe_paths (LocatedPart::holds)
   double scale = 1;             // this action's own amplitude factor (fit_plan), times plan.scale
   int one_sided = 0;            // Swing, Rock, Bend, Sway, region bends: 0 back and forth about
                                 // rest; +1 / -1 out to one side only and back (fit_plan: the

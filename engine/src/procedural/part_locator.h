@@ -68,6 +68,8 @@ struct LocatedPart {
   PartShape shape = PartShape::None;
   std::vector<ArmLobe> lobes;  // each turns about its pivot; empty: not found
   std::vector<int> paths;      // scene paths whose points may move (sorted)
+  std::vector<int> holds;      // scene paths that hold while it moves, though drawn on it (the
+                               // thing burning drawn over a blaze: flame_core.h), sorted
   std::string why;             // what was chosen and why, one phrase
 };
 

@@ -44,8 +44,13 @@ std::vector<int> plume_elements(const Rig& rig, size_t& stacked) {
     if (source < 0) continue;
     const RigBox& B = rig.elements[source].box;
     std::vector<int> above;
-    for (size_t i = 0; i < rig.elements.size(); ++i)
-      if (static_cast<int>(i) != source && rig.elements[i].box.centre().y < B.y0) above.push_back(static_cast<int>(i));
+    for (size_t i = 0; i < rig.elements.size(); ++i) {
+      const RigBox& E = rig.elements[i].box;
+      // Across the source's top, reaching below it, as wide as most of it: the source's own top
+      // (a cup's rim, the coffee in it, a pot's lid), not what rises from it.
+      const bool own_top = E.y1 > B.y0 && E.w() >= kRimSpan * B.w();
+      if (static_cast<int>(i) != source && E.centre().y < B.y0 && !own_top) above.push_back(static_cast<int>(i));
+    }
     const std::vector<int> stack = plume_stack(rig, above);
     for (int pass = 0; pass < 2 && els.empty(); ++pass)
       for (int i : above)

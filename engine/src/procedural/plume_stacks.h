@@ -7,6 +7,10 @@
 //    of smoke had the most area, with nothing above it.
 //  - Everything drawn above the source's top (a spout's drops together), but what stands on it (a
 //    factory's roof under its smoke: its bottom at the source's top) when anything else is.
+//  - But the source's own top: what lies across it, reaching below its top and as wide as
+//    kRimSpan of it (twemoji's coffee 2615: the cup's rim and the coffee in it rose with the
+//    steam, share 0.55, under a saucer of most area). A plume is narrower than what it rises from,
+//    or floats above it (a cigarette's curl, wider than the cigarette, starts above its end).
 //  - A stack: a factory's chimney drawn as bands edge to edge, a puff of smoke sitting on its top
 //    band. An element with another sitting on it edge to edge (the other's bottom at its top,
 //    within kStackTouch of the figure's height, its middle over it) stays with the source: the
@@ -30,6 +34,7 @@ std::vector<int> plume_elements(const Rig& rig, size_t& stacked);
 std::vector<int> plume_stack(const Rig& rig, const std::vector<int>& els);
 
 inline constexpr double kStackTouch = 0.01;  // bands drawn edge to edge touch exactly
+inline constexpr double kRimSpan = 0.6;    // the source's own top: this share of its width at least
 inline constexpr double kJetGap = 0.02;      // a plume floats this share of the figure's height above its source's top
 
 }  // namespace svgm

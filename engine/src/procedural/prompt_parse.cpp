@@ -227,6 +227,28 @@ void read_part_noun(const std::string& w, const PartNoun& n, bool after_noun_wor
   after_prep = false;
 }
 
+// A verb said of fire right next to it ("flames leaping around it", "the leaping flames", "the
+// fire dances") is how fire moves: fire does one thing, and the verbs said of it (leap, dance,
+// lick, climb) are figures of speech for its flicker. A participle before a noun is that noun's
+// adjective ("leaping flames"); after one, what it does ("flames leaping"). The heart on fire's
+// flames read as leaping moved the whole heart up and down (share 0.32). Water does many things
+// (falls, flows, ripples): its verbs stay. `subject`: the noun right before, or null.
+const Verb* fire_motion(const Lexicon& lexicon, const std::string& w, const Verb* v, bool participle, const PromptNoun* subject,
+                        const std::string& next, ParsedPrompt& out) {
+  if (!lexicon.has_wordnet()) return v;
+  const Verb* own = nullptr;
+  std::string fire;
+  if (subject && !subject->object_of_preposition && subject->figure == FigureClass::Flame && subject->motion)
+    own = subject->motion, fire = subject->word;
+  else if (participle && !next.empty()) {
+    const NounReading r = lexicon.noun(next);
+    if (r.figure == FigureClass::Flame && r.motion) own = r.motion, fire = next;
+  }
+  if (!own || own == v) return v;
+  out.readings.push_back("'" + w + "' said of " + fire + " read as " + own->name + " (what " + fire + " does)");
+  return own;
+}
+
 // Words of one clause (lower case, letters only). `after_prep` says the clause continues a
 // prepositional phrase ("with black dots and black boots": "and" split it, and "boots" is
 // still what she is dressed with); on return, whether the clause ends inside one. Words the
@@ -303,10 +325,11 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
     const bool noun_place = ((after_determiner || after_preposition) && !participle) || object;
     const Verb* v = noun_place || subject ? nullptr : verb_for_word(w);
     if (v && joined_without_motion(lexicon, w, next, out)) continue;
+    if (v) v = fire_motion(lexicon, w, v, participle, after_noun_word && !c.nouns.empty() ? &c.nouns.back() : nullptr, next, out);
     if (v) {
       if (std::find(c.verbs.begin(), c.verbs.end(), v) == c.verbs.end()) {
         c.verbs.push_back(v);
-        c.verb_words.push_back(w);
+        c.verb_words.push_back(v == verb_for_word(w) ? w : w + "->" + v->name);
       }
       after_prep = false;
       prev_was_verb = true;

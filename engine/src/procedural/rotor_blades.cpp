@@ -25,15 +25,25 @@ double angle_between(double a, double b) {
 struct Blade {
   int e;
   Vec2 near, far;  // its end at the hub and its other end
+  // A pair of blades drawn as one shape across the hub (its middle there): `far` is one end,
+  // and a copy with `opposite` set stands for the other (a direction of its own, no lobe).
+  bool through = false, opposite = false;
 };
 
-// The blades with an end within `tol` of `hub`, each with that end as `near`.
+// The blades with an end within `tol` of `hub`, each with that end as `near`; and the shapes
+// whose middle is there (within `tol` and kThroughMiddle of their length): a two-bladed
+// propeller drawn as one shape (twemoji's small plane 1f6e9 has one across its two blades).
 std::vector<Blade> blades_at(const std::vector<int>& cand, const std::vector<ElementAxis>& ax, Vec2 hub, double tol) {
   std::vector<Blade> out;
   for (size_t k = 0; k < cand.size(); ++k) {
     const bool a_near = dist(ax[k].mid_a, hub) <= dist(ax[k].mid_b, hub);
     const Vec2 n = a_near ? ax[k].mid_a : ax[k].mid_b, f = a_near ? ax[k].mid_b : ax[k].mid_a;
-    if (dist(n, hub) <= tol) out.push_back({cand[k], n, f});
+    const Vec2 mid = 0.5 * (ax[k].mid_a + ax[k].mid_b);
+    // Centred there first: a short shape across the hub has both its ends within `tol` of it.
+    if (dist(mid, hub) <= std::min(tol, kThroughMiddle * dist(ax[k].mid_a, ax[k].mid_b)))
+      out.push_back({cand[k], mid, ax[k].mid_a, true, false}), out.push_back({cand[k], mid, ax[k].mid_b, true, true});
+    else if (dist(n, hub) <= tol)
+      out.push_back({cand[k], n, f});
   }
   return out;
 }
@@ -72,27 +82,48 @@ LocatedPart rotor_blades(const Rig& rig, int body) {
   // The hub: where the most blade directions meet (then the most blades: a fill and its
   // outline), looked for at every blade end (the ends there averaged) and at the middle of
   // every small element (a hub drawn as a disc the blades stop short of).
-  std::vector<std::pair<Vec2, bool>> looks;  // the discs first: a tie goes to a drawn hub
-  for (const RigElement& e : rig.elements)
-    if (std::hypot(e.box.w(), e.box.h()) <= 2 * tol) looks.push_back({e.box.centre(), true});
-  for (const ElementAxis& a : ax) looks.push_back({a.mid_a, false}), looks.push_back({a.mid_b, false});
+  // Each look: a point and the disc drawn there (-1: none). The discs first: a tie goes to a
+  // drawn hub.
+  std::vector<std::pair<Vec2, int>> looks;
+  for (size_t i = 0; i < rig.elements.size(); ++i)
+    if (std::hypot(rig.elements[i].box.w(), rig.elements[i].box.h()) <= 2 * tol) looks.push_back({rig.elements[i].box.centre(), static_cast<int>(i)});
+  for (const ElementAxis& a : ax) looks.push_back({a.mid_a, -1}), looks.push_back({a.mid_b, -1});
+  // And at the middle of every blade: two strokes crossing there (openmoji's small plane 1F6E9),
+  // no disc and no blade ending there.
+  for (const ElementAxis& a : ax) looks.push_back({0.5 * (a.mid_a + a.mid_b), -1});
   size_t best_dirs = 0, best_n = 0;
   Vec2 hub;
-  for (const auto& [at_point, disc] : looks) {
+  for (const auto& [at_point, drawn] : looks) {
+    const bool disc = drawn >= 0;
     const std::vector<Blade> at = blades_at(cand, ax, at_point, tol);
+    // One shape across a point (or a stroke and its outline, one line) is any long shape: a
+    // rotor needs a hub drawn apart from it, or a blade ending there, or shapes across it in two
+    // lines at least (openmoji's drone E1D2 has a stroke and its outline across each rotor's
+    // ring and no hub: none is found, as before).
+    std::set<int> shapes;
+    size_t across = 0, ends = 0;
+    for (const Blade& b : at) shapes.insert(b.e), across += b.through && !b.opposite ? 1 : 0, ends += b.through ? 0 : 1;
+    const bool own_disc = disc && !shapes.empty() && !shapes.count(drawn);
+    if (shapes.size() < 2 && !own_disc) continue;
+    // The middles of the shapes across the hub, averaged: they are centred on it (the nose a
+    // propeller sits on ends a little short of it); else the blade ends met there.
     Vec2 c = at_point;
-    if (!disc && !at.empty()) {
+    const bool by_middles = across > 0;
+    if (!disc && (across > 0 || ends > 0)) {
       c = {};
-      for (const Blade& b : at) c = c + (1.0 / at.size()) * b.near;
+      for (const Blade& b : at)
+        if (b.through == by_middles && !b.opposite) c = c + (1.0 / (by_middles ? across : ends)) * b.near;
     }
     const size_t dirs = by_direction(at, c).size();
+    if (!own_disc && ends == 0 && dirs < 3) continue;
     if (dirs > best_dirs || (dirs == best_dirs && at.size() > best_n)) best_dirs = dirs, best_n = at.size(), hub = c;
   }
   // Two directions at least: one blade alone is any elongated shape (a wing, a leg).
   if (best_dirs < 2) return out;
   // A rotor's blades are alike: the directions whose blades are as long as those of the most
   // others (within kSameLength) are its blades; what else ends at the hub (the nose a propeller
-  // is on, its spinner) is not.
+  // is on, its spinner) is not. A shape across the hub is the rotor's whatever its length (a
+  // nose or a tail ends at the hub, it is not centred on it).
   std::vector<std::vector<Blade>> groups = by_direction(blades_at(cand, ax, hub, tol), hub);
   std::vector<double> len;
   for (const auto& g : groups) {
@@ -111,23 +142,30 @@ LocatedPart rotor_blades(const Rig& rig, int body) {
   std::set<int> paths;
   std::string which;
   for (size_t gi = 0; gi < groups.size(); ++gi) {
-    if (!alike(len[gi], len[best])) continue;
     const auto& group = groups[gi];
+    const bool across = std::any_of(group.begin(), group.end(), [](const Blade& b) { return b.through && !b.opposite; });
+    if (!alike(len[gi], len[best]) && !across) continue;
     std::vector<int> els;
     for (const Blade& b : group) {
+      // In a direction with a shape across the hub, a blade ending there is the rotor's only
+      // when as long as its blades (the nose and the spinner point the same way).
+      if (b.opposite || (!b.through && !alike(dist(b.near, b.far), len[best]))) continue;
       els.push_back(b.e);
       paths.insert(rig.elements[b.e].path);
       which += (which.empty() ? "" : "+") + std::to_string(rig.elements[b.e].path + 1);
     }
+    if (els.empty()) continue;
     ArmLobe l = lobe_over_elements(rig, els, hub);
     l.side = -1;  // every blade turns the same way
     // Its tip on its middle line (the way to its points' centroid), not at a corner of its end: an
-    // edge-on blade squeezes along that line, never across it.
+    // edge-on blade squeezes along that line, never across it. A shape across the hub has its
+    // centroid there: the way to its far end.
     Vec2 c;
     size_t n = 0;
-    for (int e : els)
-      for (Vec2 q : rig.elements[e].points) c = c + q, ++n;
-    c = (1.0 / std::max<size_t>(n, 1)) * c;
+    for (const Blade& b : group)
+      if (!b.through)
+        for (Vec2 q : rig.elements[b.e].points) c = c + q, ++n;
+    c = n > 0 ? (1.0 / n) * c : std::find_if(group.begin(), group.end(), [](const Blade& b) { return !b.opposite; })->far;
     if (dist(c, hub) > 0) l.tip = hub + (dist(l.tip, hub) / dist(c, hub)) * (c - hub);
     out.lobes.push_back(l);
   }

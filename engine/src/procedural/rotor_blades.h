@@ -35,6 +35,7 @@ inline constexpr double kBladeMinLength = 0.05;  // and at least this share of t
 inline constexpr double kHubMeet = 0.12;         // blade ends within this share of the figure's longer side of a hub meet there
 inline constexpr double kSameDirection = 25;     // degrees: blades this close in direction are one (fill, outline)
 inline constexpr double kSameLength = 0.15;      // blades of one rotor: lengths within this share of each other
+inline constexpr double kThroughMiddle = 0.25;  // a shape across the hub: its middle within this share of its length of it
 inline constexpr double kEdgeOnMin = 0.15;       // an edge-on blade's length never below this share of its own
 
 }  // namespace svgm

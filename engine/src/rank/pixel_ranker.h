@@ -26,9 +26,11 @@
 //                     its share: a turn while it twists in the plane)
 //   motion            over the pixels that are foreground in either frame: r = largest share of
 //                     them whose colour differs from the first frame's by more than 0.15, m =
-//                     mean absolute difference of consecutive frames. (0.005 - r) / 0.004 below
-//                     r = 0.5% ("no motion"), (m - 0.25) / 0.3 above m = 0.25 ("chaotic
-//                     motion"), else 0
+//                     mean absolute difference of consecutive frames, each shifted by the
+//                     whole-frame shift (up to 20 % of the frame) that matches the one before
+//                     best when the plain mean is above 0.25 (a figure shaken or carried
+//                     rigidly is no chaos). (0.005 - r) / 0.004 below r = 0.5% ("no motion"),
+//                     (m - 0.25) / 0.3 above m = 0.25 ("chaotic motion"), else 0
 // every value clamped to [0, 1]. Score (lower = better, in [0, 1]):
 //   score = (1.0 drift + 1.5 invented + 1.2 continuity + 0.8 out_of_plane + 1.0 motion) / 5.5
 // A signal >= defect_threshold (0.5) names a defect: "colour drift", "invented content",
