@@ -335,7 +335,7 @@ struct Builder {
     // A fall with nothing drawn apart to fall (no drops; "the maple leaf tumbles") is the figure's own (self_movers.h).
     // So does a figure in pieces the prompt names ("the leaves tumble": a fall moved no limb).
     if (const Verb* tumble = find_verb_by_name("tumble");
-        a.primitive == Primitive::Fall && (target == Target::Repeated ? rig.repeated.empty()
+        a.primitive == Primitive::Fall && (target == Target::Repeated ? rig.repeated.empty() || repeated_are_the_figure(rig)
                                            : target != Target::Whole && (a.parts.empty() || piece_count(figure_pieces(rig)) >= 2))) {
       Modifiers down = mods;
       down.vertical = -1;  // down and back
