@@ -65,6 +65,26 @@ TEST_CASE("hovers: a flying saucer bobs up and down whole, keeping its width in 
   CHECK(down > 0);
 }
 
+TEST_CASE("hovers: a machine the prompt names no class for, or a creature's class, beats no wings it does not have") {
+  const Drawing d("saucer.svg");
+  // "UFO": no class; "blimp": WordNet's first blimp is a very fat person (a biped). Neither finds
+  // wings on the saucer, so neither bends its sides (a turn about its vertical axis, narrowing).
+  for (const char* prompt : {"the UFO hovers", "the blimp hovers", "it hovers over the town"}) {
+    CAPTURE(prompt);
+    const MotionPlan plan = plan_from_prompt(parse_prompt(prompt), d.rig, 1);
+    REQUIRE(!plan.actions.empty());
+    for (const PlannedAction& a : plan.actions) {
+      CHECK(a.target == Target::Whole);
+      CHECK(a.region != Region::Sides);
+    }
+    CHECK(std::any_of(plan.notes.begin(), plan.notes.end(), [](const std::string& n) { return n.find("wing beat") != std::string::npos; }));
+  }
+  // A bird keeps its wing beat where it has wings (bird.svg's are parts of their own).
+  const Drawing bird("bird.svg");
+  const MotionPlan flap = plan_from_prompt(parse_prompt("the bird hovers"), bird.rig, 1);
+  CHECK(std::any_of(flap.actions.begin(), flap.actions.end(), [](const PlannedAction& a) { return a.primitive == Primitive::Swing; }));
+}
+
 TEST_CASE("launches: a jet at the canvas's top takes off from a runway that stays, going away into the sky") {
   const Drawing d("runway_jet.svg");
   MotionPlan plan = plan_from_prompt(parse_prompt("the plane takes off from the runway"), d.rig, 1);

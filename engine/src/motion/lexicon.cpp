@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "motion/lexicon_anchors.h"
+#include "motion/sense_context.h"
 
 namespace svgm {
 
@@ -313,14 +314,16 @@ std::vector<uint32_t> Lexicon::noun_senses(const std::string& lemma) const {
   return out;
 }
 
-NounReading Lexicon::noun(std::string_view word) const {
+NounReading Lexicon::noun(std::string_view word, const std::vector<std::string>& context) const {
   NounReading r;
   if (!db_) return r;
   const std::vector<std::string> lemmas = db_->base_forms(word, Pos::Noun);
   // The class: the first sense (noun_senses' order) with an anchor up its hypernyms; the
   // nearest anchor gives the class, the nearest with a motion the motion.
   for (const std::string& lemma : lemmas) {
-    for (uint32_t sense : noun_senses(lemma)) {
+    std::string why;
+    const std::vector<uint32_t> ordered = senses_by_context(*db_, lemma, noun_senses(lemma), context, &why);
+    for (uint32_t sense : ordered) {
       std::vector<uint32_t> chain = {sense};
       for (const auto& a : db_->hypernyms(Pos::Noun, sense, kMaxNounDepth)) chain.push_back(a.offset);
       const char* motion = nullptr;
@@ -334,6 +337,7 @@ NounReading Lexicon::noun(std::string_view word) const {
         }
       }
       if (r.figure == FigureClass::None) continue;
+      if (sense == ordered.front() && !why.empty()) r.sense_why = why;
       if (motion) {
         r.motion = vocabulary_verb(motion);
         r.motion_word = motion;

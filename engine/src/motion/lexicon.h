@@ -38,6 +38,8 @@ struct NounReading {
   const Verb* motion = nullptr;    // the motion the thing makes by itself (noun-driven)
   std::string motion_word;         // the word that motion was named by ("flicker" for twinkle)
   std::string via;                 // the WordNet word that gave the class ("bird", "ungulate" ...)
+  std::string sense_why;           // when the context chose a sense other than the most frequent
+                                   // (sense_context.h): "drone: sense 4 by 'aircraft', 'fly'"
 };
 
 class Lexicon {
@@ -51,7 +53,8 @@ class Lexicon {
   VerbReading verb(std::string_view word) const;
   // A phrasal verb ("takes" "off", "fans" "out") when WordNet lists it; else not placed.
   VerbReading phrasal_verb(std::string_view word, std::string_view particle) const;
-  NounReading noun(std::string_view word) const;
+  // `context`: the prompt's other words, which may pick a less frequent sense (sense_context.h).
+  NounReading noun(std::string_view word, const std::vector<std::string>& context = {}) const;
   // Whether WordNet files a sense of the noun `word` with the animals (noun.animal holds their
   // body parts: "foreleg", "forepaw", "forewing"; "forearm" and "forehead" are noun.body).
   bool noun_is_animal_word(std::string_view word) const;

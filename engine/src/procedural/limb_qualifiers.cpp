@@ -102,14 +102,26 @@ std::string keep_qualified(const Rig& rig, const Modifiers& mods, std::vector<Ar
   });
 }
 
-std::string arms_left_out(const Verb& v, size_t i, FigureClass figure, FigureClass clause_figure) {
+std::string arms_left_out(const Verb& v, size_t i, FigureClass figure, FigureClass clause_figure, const Rig& rig) {
   const Action& act = v.actions[i];
   if (act.target != Target::Arms) return "";
   if (i > 0 && v.actions[0].target == Target::Legs && figure != FigureClass::None && figure != FigureClass::Biped)
     return std::string("a ") + figure_class_name(figure) + " has no arms: " + v.name + "'s arm swing left out";
-  if ((v.name == "fly" || v.name == "hover" || v.name == "soar") && (clause_figure == FigureClass::Object || clause_figure == FigureClass::Wheeled))
+  if (v.name != "fly" && v.name != "hover" && v.name != "soar") return "";
+  const bool creature = clause_figure == FigureClass::Biped || clause_figure == FigureClass::Quadruped ||
+                        clause_figure == FigureClass::Bird || clause_figure == FigureClass::Insect ||
+                        clause_figure == FigureClass::FishOrSnake;
+  if (clause_figure != FigureClass::None && !creature)
     return std::string("a flying ") + figure_class_name(clause_figure) + " has no wings to beat: " + v.name + "'s wing beat left out";
+  const bool limbs_apart = std::any_of(rig.parts.begin(), rig.parts.end(), [](const RigPart& P) { return P.role == Role::UpperLimb; });
+  if (clause_figure == FigureClass::None && !limbs_apart)
+    return "a flying figure of no kind the prompt names, with no wings drawn apart: " + v.name + "'s wing beat left out";
   return "";
+}
+
+std::string wings_left_out(const Verb& v, const PlannedAction& a) {
+  if ((v.name != "fly" && v.name != "hover" && v.name != "soar") || a.region != Region::Sides || !a.lobes.empty()) return "";
+  return "no wings found to beat: " + v.name + "'s wing beat would bend the body's sides, left out";
 }
 
 }  // namespace svgm

@@ -13,6 +13,7 @@
 
 #include "motion/lexicon.h"
 #include "motion/motion_verbs.h"
+#include "procedural/motion_plan.h"
 #include "procedural/outline_lobes.h"
 #include "procedural/part_rig.h"
 
@@ -32,8 +33,17 @@ std::string keep_qualified(const Rig& rig, const Modifiers& mods, std::vector<Ar
 // gait's arm swing is a person's (on a four-legged animal, a bird or a fish it found no arms and
 // bent the sides of the body: a running dog's head and tail swung as arms); a machine that flies
 // (an object: a saucer, a balloon) beats no wings (its sides bent as wings, a hovering saucer
-// narrowed as if it turned about its vertical axis). `figure`: the prompt's figure class;
+// narrowed as if it turned about its vertical axis). Only a creature beats wings or arms in
+// flight: a figure of no creature's class (a machine, a plume, a plant) never does, and one the
+// prompt names no class for only when the rig has arms or wings drawn apart (upper limbs: a
+// "chopper" hovering had only its sides to bend). `figure`: the prompt's figure class;
 // `clause_figure`: the clause's.
-std::string arms_left_out(const Verb& v, size_t i, FigureClass figure, FigureClass clause_figure);
+std::string arms_left_out(const Verb& v, size_t i, FigureClass figure, FigureClass clause_figure, const Rig& rig);
+
+// Why a flight's wing beat `a` of verb `v` is left out, empty when it is not: it found no wings
+// (no part apart, no lobe of the outline or the silhouette) and would bend the body's sides, which
+// narrowed a hovering machine the prompt's noun called a creature ("blimp" is first a very fat
+// person) as if it turned about its vertical axis, mirrored in some frames.
+std::string wings_left_out(const Verb& v, const PlannedAction& a);
 
 }  // namespace svgm

@@ -12,6 +12,7 @@
 #include "svgmotion/error.h"
 #include "procedural/figure_pieces.h"
 #include "procedural/invisible_spin.h"
+#include "procedural/gait_travel.h"
 #include "procedural/limb_qualifiers.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/support_band.h"
@@ -331,10 +332,11 @@ struct Builder {
       }
     if (limb_role && !note.empty() && rig.root >= 0 && a.primitive == Primitive::Swing)
       bend_region(a, target, base, mods, plural, note, which);
+    if (std::string why = wings_left_out(verb, a); !why.empty()) return plan.notes.push_back(why);
     // A fall with nothing drawn apart to fall (no drops; "the maple leaf tumbles") is the figure's own (self_movers.h).
     // So does a figure in pieces the prompt names ("the leaves tumble": a fall moved no limb).
     if (const Verb* tumble = find_verb_by_name("tumble");
-        a.primitive == Primitive::Fall && (target == Target::Repeated ? rig.repeated.empty()
+        a.primitive == Primitive::Fall && (target == Target::Repeated ? rig.repeated.empty() || repeated_are_the_figure(rig)
                                            : target != Target::Whole && (a.parts.empty() || piece_count(figure_pieces(rig)) >= 2))) {
       Modifiers down = mods;
       down.vertical = -1;  // down and back
@@ -548,28 +550,29 @@ bool locatable_noun(const PromptNoun& n, const Rig& rig, FigureClass figure) {
 // figure's class, though no part is named so.
 // A verb by which a figure gets somewhere: a gait (legs in turn), hops, a swimming or crawling
 // body's wave, wings in flight.
-bool locomotes(const Verb& v) {
-  for (const Action& a : v.actions)
-    if ((a.target == Target::Legs && a.pairing == Pairing::Alternating) || a.primitive == Primitive::Hop ||
-        a.primitive == Primitive::Undulate)
-      return true;
-  return v.name == "fly" || v.name == "soar" || v.name == "float";
-}
+bool locomotes(const Verb& v) { return gets_somewhere(v) || v.name == "fly" || v.name == "soar" || v.name == "float"; }
 
 // Where the prompt sends a figure that gets somewhere by itself ("the dog runs to the right", "the
-// bird flies left") and its verb has no travel of its own: the whole figure slides that way and
-// back, as a vehicle drives (kTravelSlide), the gait going on as it goes. Without it the direction
-// was read and then ignored: the dog ran on the spot. `from`: the clause's first action.
-void travel_where_told(Builder& b, const Clause& c, size_t from) {
-  if (c.mods.travel == 0) return;
+// bird flies left"), or a gait's way when it says none (gait_travel.h), and its verb has no travel
+// of its own: the whole figure slides that way and back, as a vehicle drives (kTravelSlide), the
+// gait going on as it goes. Without it the dog ran on the spot. `from`: the clause's first action.
+void travel_where_told(Builder& b, const Clause& c, size_t from, const ParsedPrompt& prompt) {
   const Verb* mover = nullptr;
   for (const Verb* v : c.verbs)
-    if (!mover && locomotes(*v)) mover = v;
+    if (!mover && (locomotes(*v) || v->name == "move")) mover = v;
   if (!mover) return;
-  for (size_t i = from; i < b.plan.actions.size(); ++i)
-    if (b.plan.actions[i].primitive == Primitive::Slide && b.plan.actions[i].parts.empty()) return;
+  // A gait with no direction said goes the way the figure faces (gait_travel.h).
+  Modifiers mods = c.mods;
+  std::string why = "told where it goes: the figure travels there and back";
+  if (mods.travel == 0 && (!is_gait(*mover, c.figure) || (mods.travel = untold_travel(prompt, c, b.rig, &why)) == 0)) return;
   static const Action kTravelSlide{Primitive::Slide, Target::Whole, 0.08, 1};
-  b.add(*mover, kTravelSlide, Target::Whole, {}, "", c.mods, false, c.text, false, "told where it goes: the figure travels there and back");
+  for (size_t i = from; i < b.plan.actions.size(); ++i)
+    if (PlannedAction& a = b.plan.actions[i]; a.primitive == Primitive::Slide && a.parts.empty()) {
+      // Its own slide (a crawl's creep, a swim's glide) goes that way, as far as a travel goes.
+      if (c.mods.travel == 0) a.amp = std::max(a.amp, kTravelSlide.amp), a.direction = a.travel = mods.travel, a.why += "; " + why;
+      return;
+    }
+  if (mover->name != "move") b.add(*mover, kTravelSlide, Target::Whole, {}, "", mods, false, c.text, false, why);
 }
 
 bool names_figure_kind(const PromptNoun& n) {
@@ -700,7 +703,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
           restated.push_back("'" + c.text + "'");
           break;
         }
-        if (std::string why = arms_left_out(*v, i, b.figure, c.figure); !why.empty()) {
+        if (std::string why = arms_left_out(*v, i, b.figure, c.figure, rig); !why.empty()) {
           b.plan.notes.push_back(why);
           continue;
         }
@@ -715,7 +718,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
         b.add(*v, act, retarget || elements_too ? target : act.target, retarget ? named : std::vector<int>{}, target_word, c.mods,
               retarget && plural, c.text, retarget, "", retarget ? located : nullptr);
       }
-    travel_where_told(b, c, first_action);
+    travel_where_told(b, c, first_action, prompt);
   }
   if (!accents_left_out.empty())
     b.plan.notes.push_back("the prompt names the limbs that move: the whole-figure " + join(accents_left_out, ", ") + " left out");

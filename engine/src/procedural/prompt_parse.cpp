@@ -155,10 +155,37 @@ bool ends_with(const std::string& w, const char* suffix) {
   return w.size() > n && w.compare(w.size() - n, n, suffix) == 0;
 }
 
+// The words a noun's sense is chosen by (motion/sense_context.h): the prompt's other words, less
+// the vocabulary's verbs that are no part nouns (a "bob" is also a haircut: "bobs on the waves"
+// read the waves as hairdos) and the word right before each place the noun stands, which
+// modifies it ("cigarette smoke" is smoke, not the roll of tobacco WordNet also calls smoke).
+// Nor the noun of a prepositional phrase other than "of" ("rises from the cigarette", "bobs on
+// the waves"): it names where or whence, another thing ("the wheels of the car" name its whole).
+std::vector<std::string> sense_context(const std::vector<std::string>& words, const std::string& w) {
+  std::vector<std::string> out;
+  bool in_phrase = false;
+  for (size_t i = 0; i < words.size(); ++i) {
+    const std::string& x = words[i];
+    if (is_preposition(x)) {
+      in_phrase = x != "of";
+      continue;
+    }
+    const bool before_it = i + 1 < words.size() && words[i + 1] == w;
+    const bool verb = verb_for_word(x) && !noun_for_word(x);
+    // (Nor a word of two letters or an auxiliary: "is" is also WordNet's noun Iceland.)
+    const bool auxiliary = x.size() < 3 || x == "are" || x == "was" || x == "were" || x == "has" || x == "have" || x == "been" || x == "does";
+    if (x != w && !before_it && !verb && !auxiliary && !in_phrase) out.push_back(x);
+    // The phrase ends at its noun: the first word after it that is not an article or a possessive.
+    if (in_phrase && !is_determiner(x) && !is_possessive(x)) in_phrase = false;
+  }
+  return out;
+}
+
 // A noun outside the vocabulary, as WordNet reads it: its figure class, the motion such a thing
 // makes by itself, and the body part it is a kind or a part of.
 void read_lexicon_noun(const Lexicon& lexicon, const std::string& w, const std::string& next, PromptNoun& n, ParsedPrompt& out) {
-  const NounReading r = lexicon.noun(w);
+  const NounReading r = lexicon.noun(w, sense_context(out.words, w));
+  if (!r.sense_why.empty()) out.readings.push_back("'" + w + "' by its context: " + r.sense_why);
   n.figure = r.figure;
   n.motion = r.motion;
   // A kind or a part of a body part the vocabulary knows ("talons": claws, "fingers": hands).
@@ -301,7 +328,7 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
     // biker is pedalling") is the one who moves: the whole figure, not a part named like it (a
     // surfer's shadow drawn as "shadow_surfer" swung while the surfer stood still).
     if ((prev_was_start || after_determiner) && is_agent_noun(w)) {
-      if (agent_figure == FigureClass::None) agent_figure = lexicon.noun(w).figure;
+      if (agent_figure == FigureClass::None) agent_figure = lexicon.noun(w, sense_context(out.words, w)).figure;
       continue;
     }
     // A verb's word right after an article, a possessive or a preposition is a noun ("rides the
@@ -464,6 +491,7 @@ ParsedPrompt parse_prompt(const std::string& prompt) {
   }
   flush();
   ParsedPrompt out;
+  for (const auto& clause : raw) out.words.insert(out.words.end(), clause.begin(), clause.end());
   std::vector<Clause> clauses;
   bool prep_open = false;  // the clause before ended inside a prepositional phrase, with no verb
   for (size_t i = 0; i < raw.size(); ++i) {

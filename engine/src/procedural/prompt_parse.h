@@ -59,6 +59,8 @@ struct ParsedPrompt {
   // What the lexicon read, one line each for the report: "shuffles read as walk",
   // "hummingbird: a bird".
   std::vector<std::string> readings;
+  // Every word of the prompt, lower case, in order: the context a noun's sense is chosen by.
+  std::vector<std::string> words;
 };
 
 ParsedPrompt parse_prompt(const std::string& prompt);

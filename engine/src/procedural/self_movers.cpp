@@ -58,4 +58,14 @@ double plume_growth(const Rig& rig, const LocatedPart& plume) {
   return std::clamp(kPlumeRise * rig.figure.h() / std::max(reach, 1e-9), kPlumeGrowMin, kPlumeGrowMax);
 }
 
+bool repeated_are_the_figure(const Rig& rig) {
+  if (rig.repeated.empty() || rig.figure.empty()) return false;
+  RigBox span;
+  for (const auto& element : rig.repeated)
+    for (const ElementPiece& piece : element)
+      for (const RigElement& e : rig.elements)
+        if (e.path == piece.path && (piece.subpath < 0 || e.subpath < 0 || e.subpath == piece.subpath)) span.add(e.box);
+  return !span.empty() && span.w() >= kOneThingSpan * rig.figure.w() && span.h() >= kOneThingSpan * rig.figure.h();
+}
+
 }  // namespace svgm

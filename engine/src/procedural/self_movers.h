@@ -51,4 +51,14 @@ inline constexpr double kPlumeRise = 0.12;     // issue 35's floor on a visible 
 inline constexpr double kPlumeGrowMin = 0.25;  // a long plume still swells by a quarter
 inline constexpr double kPlumeGrowMax = 0.6;   // a small one by at most this (it leaves the canvas)
 
+// Whether the rig's repeated elements are the figure itself, one thing drawn in similar pieces
+// (a snowflake's arms drawn as eight small strokes): together they span kOneThingSpan of the
+// figure's box both across and down (openmoji's snowflake: its eight small strokes span all its
+// width and 77 % of its height, the long arms reaching past them). Drops falling from a cloud
+// span its width but not its height (the cloud above them: 32 % and 40 % in the suite's snow
+// and rain). "The snowflake falls" then falls whole, turning as it goes
+// (a tumble), not as eight strokes dropping apart from each other.
+bool repeated_are_the_figure(const Rig& rig);
+inline constexpr double kOneThingSpan = 0.7;
+
 }  // namespace svgm

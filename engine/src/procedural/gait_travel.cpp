@@ -1,0 +1,69 @@
+// Which way a figure goes on its gait when the prompt does not say (see gait_travel.h).
+#include "procedural/gait_travel.h"
+
+#include <sstream>
+#include <vector>
+
+#include "procedural/limb_qualifiers.h"
+#include "procedural/motion_plan_internal.h"
+
+namespace svgm {
+
+namespace {
+
+// "on the spot", "in place", "in one spot": the clause keeps the figure where it is.
+bool stays_put(const std::string& text) {
+  std::vector<std::string> w;
+  std::istringstream in(text);
+  for (std::string x; in >> x;) w.push_back(x);
+  for (size_t i = 0; i + 1 < w.size(); ++i)
+    if ((w[i] == "on" || w[i] == "in") && (w[i + 1] == "place" || w[i + 1] == "spot" || (i + 2 < w.size() && w[i + 2] == "spot")))
+      return true;
+  return false;
+}
+
+}  // namespace
+
+bool gets_somewhere(const Verb& v) {
+  for (const Action& a : v.actions)
+    if ((a.target == Target::Legs && a.pairing == Pairing::Alternating) || a.primitive == Primitive::Hop ||
+        a.primitive == Primitive::Undulate)
+      return true;
+  return false;
+}
+
+bool is_gait(const Verb& v, FigureClass figure) {
+  if (v.name == "move") return true;
+  bool legs = false, wave = false, wheels = false;
+  for (const Action& a : v.actions) {
+    legs = legs || (a.target == Target::Legs && a.pairing == Pairing::Alternating);
+    wave = wave || a.primitive == Primitive::Undulate;
+    wheels = wheels || a.primitive == Primitive::Spin;
+  }
+  const bool thing = figure == FigureClass::Object || figure == FigureClass::Scene || figure == FigureClass::Liquid ||
+                     figure == FigureClass::Flame || figure == FigureClass::Plant || figure == FigureClass::Wheeled;
+  return (legs && !wheels) || (wave && !thing);
+}
+
+int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, std::string* why) {
+  if (c.mods.travel != 0 || c.mods.vertical != 0 || c.mods.depth != 0) return 0;
+  for (const Clause& other : prompt.clauses) {
+    if (stays_put(other.text)) return 0;
+    for (const PromptNoun& n : other.nouns)
+      if (!n.object_of_preposition && motion_plan_internal::is_limb_target(n.target)) return 0;
+  }
+  std::string how;
+  const int facing = facing_side(rig, &how);
+  if (facing != 0) {
+    if (why) *why = std::string("no direction said: the figure faces ") + (facing < 0 ? "left" : "right") + " (" + how + ") and goes that way";
+    return facing;
+  }
+  // Facing not known: a person drawn so faces the viewer and walks on the spot; any other figure
+  // is drawn in profile more often than not, and its travel goes both ways about where it stands
+  // (a slide's loop), so the way it goes first matters little: to the right, as a reader reads.
+  if (c.figure == FigureClass::Biped) return 0;
+  if (why) *why = "no direction said and its facing not known: the figure goes to the right first and back";
+  return 1;
+}
+
+}  // namespace svgm

@@ -1,0 +1,36 @@
+// Which way a figure goes on its gait when the prompt does not say (issue 35: "the dog walks",
+// "the caterpillar crawls", "the fish swims"). A gait gets somewhere: legs in turn on the spot,
+// a body's wave in place, read as a figure marking time, not walking. So a gait's clause with no
+// direction of its own (no "to the left", no "up", no "towards the viewer", not "on the spot" or
+// "in place") travels the way the figure faces (limb_qualifiers.h: its eye, its head, its legs),
+// as "to the right" would send it (motion_plan.cpp's travel_where_told). A figure whose facing is
+// not known goes to the right first (its travel is a loop both ways about where it stands),
+// unless it is a person, who drawn so faces the viewer and walks on the spot, as before.
+#pragma once
+
+#include <string>
+
+#include "motion/motion_verbs.h"
+#include "procedural/part_rig.h"
+#include "procedural/prompt_parse.h"
+
+namespace svgm {
+
+// Whether `v` gets a figure somewhere when sent: legs in turn, hops, a body's wave.
+bool gets_somewhere(const Verb& v);
+
+// Whether `v`, said of a figure of class `figure` with no direction, is a gait that carries it
+// along: legs in turn (not a rider's pedalling: a vehicle's travel is its drive's), a crawl (the
+// vocabulary's "move", whose own slide is the crawl's creep), a body's wave on a figure that may
+// be a creature (a swimming fish, a slithering worm; not a flag's or the sea's ripple). Not a hop
+// ("the ball bounces", "he jumps for joy" stay) nor a flight ("flies", "floats" hold their place).
+bool is_gait(const Verb& v, FigureClass figure);
+
+// The viewer's side (-1 left, +1 right) a gait's clause `c` of `prompt` sends the figure when its
+// words say none; 0 when they say one, or the prompt says it stays (in any clause: "runs on the
+// spot, legs striding"), or it names limbs that move (their stride, not the figure's travel; the
+// plan leaves out the whole figure's accents then, a swim's own slide among them), or the figure is a person whose facing is not known. `why` gets "no
+// direction said: the figure faces left (its eye) and goes that way".
+int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, std::string* why);
+
+}  // namespace svgm

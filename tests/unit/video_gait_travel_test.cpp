@@ -1,0 +1,68 @@
+// A gait with no direction said goes the way the figure faces (procedural/gait_travel.h): an
+// animal with its eye at the left walks or crawls to the left, a visible distance; "on the spot"
+// anywhere in the prompt, a direction said, a clause naming the striding legs, or a figure whose
+// facing is not known keeps the old in-place gait; a flight is no gait.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+
+#include "procedural/eye_cue.h"
+#include "procedural/gait_travel.h"
+#include "procedural/motion_plan.h"
+
+#include "motion_drawing.h"
+using namespace svgm;
+using svgm::test::Drawing;
+
+namespace {
+
+// The whole figure's slides of a plan, as their directions.
+std::vector<int> slide_ways(const MotionPlan& plan) {
+  std::vector<int> out;
+  for (const auto& a : plan.actions)
+    if (a.primitive == Primitive::Slide && a.parts.empty()) out.push_back(a.direction);
+  return out;
+}
+
+}  // namespace
+
+TEST_SUITE("video") {
+
+TEST_CASE("gait travel: an animal facing left (its eye) walks and crawls to the left with no direction said") {
+  Drawing d("eye_tail.svg");  // a four-legged animal, its eye on the snout at the left
+  apply_eye_cue(d.rig, d.scene, d.scene);
+  REQUIRE(d.rig.eye_side == -1);
+  for (const char* prompt : {"the animal walks", "the dog trots", "the caterpillar crawls"}) {
+    CAPTURE(prompt);
+    MotionPlan plan = plan_from_prompt(parse_prompt(prompt), d.rig, 1);
+    CHECK(slide_ways(plan) == std::vector<int>{-1});
+    // A travel's amplitude: 8 % of the figure's width (a crawl's own creep raised to it).
+    for (const auto& a : plan.actions)
+      if (a.primitive == Primitive::Slide) CHECK(a.amp >= 0.08 * 0.85);
+    const int F = 25;
+    fit_plan(d.scene, d.rig, plan, F, 9);
+    const std::vector<Vec2> pts = animate_plan(d.scene, d.rig, plan, F);
+    // A quarter of the loop in (the slide's far end), the eye (path 1, its points after path 0's)
+    // is to the left of where it stood, by 4 % of the figure's width or, as here, most of the
+    // room the canvas leaves at the left (the snout is 8 units from its edge).
+    size_t eye = 0;
+    for (const auto& sp : d.scene.paths[0].subpaths) eye += sp.points.size();
+    const size_t per = pts.size() / F;
+    const double room = std::min(0.04 * d.rig.figure.w(), d.rig.figure.x0);
+    CHECK(pts[eye].x - pts[F / 4 * per + eye].x >= 0.25 * room);  // (a crawl's stretch shares the room)
+  }
+}
+
+TEST_CASE("gait travel: a direction said, 'on the spot', the striding legs named or a flight keep the old plan") {
+  Drawing d("eye_tail.svg");
+  apply_eye_cue(d.rig, d.scene, d.scene);
+  CHECK(slide_ways(plan_from_prompt(parse_prompt("the animal walks to the right"), d.rig, 1)) == std::vector<int>{1});
+  CHECK(slide_ways(plan_from_prompt(parse_prompt("the animal walks on the spot"), d.rig, 1)).empty());
+  CHECK(slide_ways(plan_from_prompt(parse_prompt("the animal runs on the spot, legs striding"), d.rig, 1)).empty());
+  CHECK(slide_ways(plan_from_prompt(parse_prompt("the bird flies"), d.rig, 1)).empty());
+  // No facing known (a stick figure seen from the front): the gait stays in place, as before.
+  const Drawing man("stick_figure.svg");
+  CHECK(slide_ways(plan_from_prompt(parse_prompt("the man walks"), man.rig, 1)).empty());
+}
+
+}  // TEST_SUITE
