@@ -68,6 +68,10 @@ int bench_fit(const std::vector<std::string>& argv) {
   fitter.read_targets_from([&packed, frame_px](int k, float* out) {
     unpack_white_runs_range(packed, static_cast<size_t>(k) * frame_px, frame_px, out);
   });
+  // The fitter holds the distance field on the device and reads neither it nor the mask from
+  // the target again, as the refinement's target drops them (5 bytes per pixel and keyframe).
+  std::vector<float>().swap(target.sdf);
+  std::vector<uint8_t>().swap(target.mask);
   // The OpenCL compiler's clean pages go after a first render, before any loss memory is made,
   // as a fit lets them go after its rest pose's render (opencl/compiler_pages.h): a process's
   // first kernels touch the compiler's pages again even when their binaries come from the
