@@ -21,6 +21,8 @@
 #include "fit/optimise/fitter.h"
 #include "fit/plan/segment_split.h"
 #include "fit/target/compact_raw.h"
+#include "fit/target/heap_trim.h"
+#include "fit/target/white_runs.h"
 #include "opencl/compiler_pages.h"
 #include "opencl/runtime.h"
 #include "svgmotion/error.h"
@@ -49,17 +51,38 @@ int bench_fit(const std::vector<std::string>& argv) {
   const RenderSize size = render_size(scene, width);
   TargetOptions to;
   to.keyframes = keyframes;
-  TargetFrames target = load_target(*target_path, size.width, size.height, to);
-  const CompactRaw raw = compact_raw(target);  // as `fit` keeps it (fit/target/compact_raw.h)
+  // The target held as a fit's refinement holds it (fit_job.cpp's prepare_fine): `raw` compacted
+  // and `rgba` packed as runs of white as the load cleans each keyframe (fit/target/white_runs.h),
+  // the loss and the warm starts reading a keyframe at a time from the runs. Its floats (16 bytes
+  // per pixel and keyframe: 88 MB for 21 keyframes at 512 px) are never whole; the same bits.
+  WhiteRuns packed;
+  const size_t frame_px = static_cast<size_t>(size.width) * size.height;
+  to.rgba_sink = [&packed, frame_px](int, const float* rgba) { append_white_runs(packed, rgba, frame_px); };
+  CompactRaw raw;
+  TargetFrames target = load_target_compact(*target_path, size.width, size.height, to, raw);
+  packed.runs.shrink_to_fit();
+  packed.others.shrink_to_fit();
+  trim_heap();  // the load's frames
   ClRuntime rt(a.get("--device").value_or("auto"));
   Fitter fitter(rt, scene, target, fo);
+  fitter.read_targets_from([&packed, frame_px](int k, float* out) {
+    unpack_white_runs_range(packed, static_cast<size_t>(k) * frame_px, frame_px, out);
+  });
+  // The fitter holds the distance field on the device and reads neither it nor the mask from
+  // the target again, as the refinement's target drops them (5 bytes per pixel and keyframe).
+  std::vector<float>().swap(target.sdf);
+  std::vector<uint8_t>().swap(target.mask);
+  // The OpenCL compiler's clean pages go after a first render, before any loss memory is made,
+  // as a fit lets them go after its rest pose's render (opencl/compiler_pages.h): a process's
+  // first kernels touch the compiler's pages again even when their binaries come from the
+  // cache, and in the first step they were resident beside the loss's first buffers.
+  (void)fitter.render_keyframe(0);
+  release_compiler_pages();
   const auto t1 = std::chrono::steady_clock::now();
   const double c1 = cpu_seconds();
   const double setup_mb = peak_rss_mb();
   LossTerms loss;
-  // The OpenCL compiler's clean pages go once the first step has built its programs, as a fit
-  // lets them go once its first render has (opencl/compiler_pages.h; the fitter builds its
-  // programs as its first step needs them, and the first build touches the compiler again).
+  // The first step's kernels (the loss's and the gradient's) touch a few MB of them again.
   for (bool released = false; !fitter.done();) {
     loss = fitter.step();
     if (!released) released = true, release_compiler_pages();

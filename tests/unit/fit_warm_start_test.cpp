@@ -13,6 +13,7 @@
 
 #include "fit/optimise/field_warm_start.h"
 #include "fit/plan/fit_plan.h"
+#include "fit/target/white_runs.h"
 #include "fit/optimise/fitter.h"
 #include "fit/optimise/motion_model.h"
 #include "fit/optimise/warm_start.h"
@@ -238,6 +239,41 @@ TEST_CASE("field warm start: a dot moving across the part it sits on is carried 
   CHECK(square < 0.5);
   MESSAGE("the dot's centre is " << err << " px from its target place (it moved " << std::hypot(shift.x, shift.y) << ")");
   CHECK(err < 0.5);
+}
+
+TEST_CASE("a fitter reading packed targets a frame at a time fits as one given the whole clip, warm starts included") {
+  // `bench fit` keeps its target packed (fit/target/white_runs.h) and hands the fitter a frame
+  // reader (Fitter::read_targets_from): the loss's constants and each keyframe's warm start
+  // read the frames from the runs. Three keyframes, so two warm starts read the target.
+  Scene s = scene_of(64, 64, {filled(polygon({{8, 8}, {56, 8}, {56, 56}, {8, 56}}), {0.9f, 0.75f, 0.5f, 1}),
+                              filled(circle({26, 30}, 2.5), {0.1f, 0.1f, 0.15f, 1})});
+  s.groups = {{"part", {0, 1}}};
+  s.paths[0].group = s.paths[1].group = 0;
+  const int K = 3;
+  const auto dir = std::filesystem::temp_directory_path() / ("svgm_packedws_" + std::to_string(::getpid()));
+  write_known_motion(s, 64, K, [](int k, int) { MotionParams p = identity_params(); p[0] = 0.03f * k; return p; },
+                     [&](int k, Vec2 q) { return std::hypot(q.x - 26, q.y - 30) < 6 ? k * Vec2{3, 2} : Vec2{}; }, dir);
+  TargetOptions to;
+  to.keyframes = K;
+  const TargetFrames whole = load_target(dir, 64, 64, to);
+  std::filesystem::remove_all(dir);
+  TargetFrames bare = whole;
+  std::vector<float> floats = whole.rgba;
+  const WhiteRuns packed = pack_white_runs(floats);
+  bare.rgba.clear();
+  FitOptions fo;
+  fo.iterations = 120;
+  Fitter a(runtime(), s, whole, fo);
+  Fitter b(runtime(), s, bare, fo);
+  const size_t px = 64 * 64;
+  b.read_targets_from([&packed, px](int k, float* out) { unpack_white_runs_range(packed, k * px, px, out); });
+  while (!a.done()) a.step();
+  while (!b.done()) b.step();
+  CHECK(a.iteration() == b.iteration());
+  CHECK(a.active_keyframes() == K);
+  CHECK(a.field_warm_starts_tried == b.field_warm_starts_tried);
+  CHECK(a.keyframe_points_canvas() == b.keyframe_points_canvas());
+  CHECK(a.keyframe_losses() == b.keyframe_losses());
 }
 
 }  // TEST_SUITE

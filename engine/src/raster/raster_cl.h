@@ -93,6 +93,8 @@ class ClRaster {
   // keeps them packed (fit/target/white_runs.h): the whole clip's floats are never needed.
   using TargetFrameReader = std::function<void(int k, float* rgba)>;
   void set_target_frames(TargetFrameReader frame);
+  // Frame k of the targets as the loss reads them (either form above), into `rgba`.
+  void target_frame(int k, float* rgba) const;
   // Frees the loss's pixel-sized device buffers (Q and R in half precision, the residuals X'
   // and E', the tape pool and the bands' partial gradients: 48 bytes and more per pixel and
   // frame, held in host memory by PoCL) until the next loss pass makes them again, from the

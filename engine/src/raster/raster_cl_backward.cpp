@@ -231,6 +231,11 @@ void ClRaster::set_target_frames(TargetFrameReader frame) {
   q_background_ = {-1, -1, -1, -1};  // recompute the loss constants on next use
 }
 
+void ClRaster::target_frame(int k, float* rgba) const {
+  if (!targets_) throw Error("internal: a target frame read before the targets were set");
+  targets_(k, rgba);
+}
+
 void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
   if (bg == q_background_) return;
   const int W = plan_.width, H = plan_.height, K = frames_;

@@ -63,9 +63,20 @@ void Fitter::warm_start(int k, int src) {
   q.enqueueReadBuffer(raster_->cp_buffer(), CL_TRUE, static_cast<size_t>(src) * plan_.n_cp * 2 * sizeof(float),
                       cp.size() * sizeof(float), cp.data());
   std::vector<uint8_t> prev(static_cast<size_t>(W) * H), next(prev.size());
-  if (target_.rgba.size() < static_cast<size_t>(k + 1) * H * W * 4)
-    throw Error("internal: a warm start without its target's frames (set aside)");
-  grey_frames(img, &target_.rgba[static_cast<size_t>(k) * H * W * 4], prev, next);
+  // Keyframe k's target: from the whole clip, or read as the loss reads it when its holder
+  // keeps the frames packed (read_targets_from: `bench fit`), one frame's floats (1 MB at 512 px).
+  std::vector<float> packed_frame;
+  const float* target_k = nullptr;
+  if (target_.rgba.empty()) {
+    packed_frame.resize(static_cast<size_t>(H) * W * 4);
+    raster_->target_frame(k, packed_frame.data());
+    target_k = packed_frame.data();
+  } else {
+    if (target_.rgba.size() < static_cast<size_t>(k + 1) * H * W * 4)
+      throw Error("internal: a warm start without its target's frames (set aside)");
+    target_k = &target_.rgba[static_cast<size_t>(k) * H * W * 4];
+  }
+  grey_frames(img, target_k, prev, next);
   std::vector<Vec2> from;
   std::vector<int> index;
   for (int i = 0; i < plan_.n_cp; ++i)
