@@ -25,6 +25,16 @@
 using namespace svgm;
 using namespace svgm::test;
 
+// A light square with a dark dot (radius 2.5 px, centred at (26, 30)) painted on it, one part,
+// at 64 px.
+static Scene square_with_dot() {
+  Scene s = scene_of(64, 64, {filled(polygon({{8, 8}, {56, 8}, {56, 56}, {8, 56}}), {0.9f, 0.75f, 0.5f, 1}),
+                              filled(circle({26, 30}, 2.5), {0.1f, 0.1f, 0.15f, 1})});
+  s.groups = {{"part", {0, 1}}};
+  s.paths[0].group = s.paths[1].group = 0;
+  return s;
+}
+
 TEST_SUITE("fit") {
 
 TEST_CASE("fit_similarity recovers a known similarity, ignoring zero-weight outliers") {
@@ -201,10 +211,7 @@ TEST_CASE("field warm start: a dot moving across the part it sits on is carried 
   // Without the warm start (FitOptions::track off) the fit chases the dot with the whole
   // part's homography: the square drifted 6.7 px in these 150 iterations. With it, the field
   // carries the dot and the square stays.
-  Scene s = scene_of(64, 64, {filled(polygon({{8, 8}, {56, 8}, {56, 56}, {8, 56}}), {0.9f, 0.75f, 0.5f, 1}),
-                              filled(circle({26, 30}, 2.5), {0.1f, 0.1f, 0.15f, 1})});
-  s.groups = {{"part", {0, 1}}};
-  s.paths[0].group = s.paths[1].group = 0;
+  Scene s = square_with_dot();
   const int K = 2;
   const Vec2 shift{4, 3};
   const auto dir = std::filesystem::temp_directory_path() / ("svgm_fieldws_" + std::to_string(::getpid()));
@@ -245,10 +252,7 @@ TEST_CASE("a fitter reading packed targets a frame at a time fits as one given t
   // `bench fit` keeps its target packed (fit/target/white_runs.h) and hands the fitter a frame
   // reader (Fitter::read_targets_from): the loss's constants and each keyframe's warm start
   // read the frames from the runs. Three keyframes, so two warm starts read the target.
-  Scene s = scene_of(64, 64, {filled(polygon({{8, 8}, {56, 8}, {56, 56}, {8, 56}}), {0.9f, 0.75f, 0.5f, 1}),
-                              filled(circle({26, 30}, 2.5), {0.1f, 0.1f, 0.15f, 1})});
-  s.groups = {{"part", {0, 1}}};
-  s.paths[0].group = s.paths[1].group = 0;
+  Scene s = square_with_dot();
   const int K = 3;
   const auto dir = std::filesystem::temp_directory_path() / ("svgm_packedws_" + std::to_string(::getpid()));
   write_known_motion(s, 64, K, [](int k, int) { MotionParams p = identity_params(); p[0] = 0.03f * k; return p; },

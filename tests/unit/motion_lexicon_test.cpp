@@ -11,16 +11,11 @@
 #include "svgmotion/svg_reader.h"
 #include "procedural/motion_plan.h"
 #include "procedural/prompt_parse.h"
+#include "wordnet_or_skip.h"
 
 using namespace svgm;
 
 namespace {
-
-bool wordnet_or_skip() {
-  if (Lexicon::shared().has_wordnet()) return true;
-  MESSAGE("WordNet is not installed (apt install wordnet-base): skipped");
-  return false;
-}
 
 std::string verb_of(const char* word) {
   const VerbReading r = Lexicon::shared().verb(word);

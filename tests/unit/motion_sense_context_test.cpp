@@ -7,16 +7,11 @@
 #include "motion/lexicon.h"
 #include "motion/sense_context.h"
 #include "procedural/prompt_parse.h"
+#include "wordnet_or_skip.h"
 
 using namespace svgm;
 
 namespace {
-
-bool wordnet_or_skip() {
-  if (Lexicon::shared().has_wordnet()) return true;
-  MESSAGE("WordNet is not installed (apt install wordnet-base): skipped");
-  return false;
-}
 
 FigureClass first_class(const char* prompt) {
   const ParsedPrompt p = parse_prompt(prompt);

@@ -6,6 +6,7 @@
 #include "motion/lexicon.h"
 #include "procedural/limb_qualifiers.h"
 #include "procedural/prompt_parse.h"
+#include "wordnet_or_skip.h"
 
 using namespace svgm;
 
@@ -63,10 +64,7 @@ TEST_CASE("qualifiers before a part noun pick which limbs, and are no nouns") {
 }
 
 TEST_CASE("a qualifier written into the part noun: forelegs, hindwings; not forearm") {
-  if (!Lexicon::shared().has_wordnet()) {
-    MESSAGE("WordNet is not installed: skipped");
-    return;
-  }
+  if (!wordnet_or_skip()) return;
   const Clause fore = parse_prompt("the horse paws with its forelegs").clauses.at(0);
   CHECK(fore.mods.end == 1);
   REQUIRE(has_noun(fore, "legs"));
