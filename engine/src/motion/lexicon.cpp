@@ -96,6 +96,11 @@ const char* figure_class_name(FigureClass c) {
   return names[static_cast<size_t>(c)];
 }
 
+bool is_creature(FigureClass c) {
+  return c == FigureClass::Biped || c == FigureClass::Quadruped || c == FigureClass::Bird || c == FigureClass::FishOrSnake ||
+         c == FigureClass::Insect;
+}
+
 const Verb* vocabulary_verb(std::string_view word) { return find_verb_by_word(word); }
 
 const Verb* default_verb(FigureClass c) {

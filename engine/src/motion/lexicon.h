@@ -25,6 +25,9 @@ namespace svgm {
 // What kind of figure a noun names, for the motion it may make on its own.
 enum class FigureClass { None, Biped, Quadruped, Bird, FishOrSnake, Insect, Plant, Wheeled, Flame, Liquid, Object, Scene };
 const char* figure_class_name(FigureClass c);  // "biped", "fish_or_snake", ...; "none"
+// A living thing that moves itself (biped, quadruped, bird, fish or snake, insect): what beats
+// wings and walks; plants, flames, liquids, machines, objects and scenes do not.
+bool is_creature(FigureClass c);
 
 struct VerbReading {
   const Verb* verb = nullptr;  // null: not placed

@@ -40,8 +40,7 @@ bool is_gait(const Verb& v, FigureClass figure) {
     wave = wave || a.primitive == Primitive::Undulate;
     wheels = wheels || a.primitive == Primitive::Spin;
   }
-  const bool thing = figure == FigureClass::Object || figure == FigureClass::Scene || figure == FigureClass::Liquid ||
-                     figure == FigureClass::Flame || figure == FigureClass::Plant || figure == FigureClass::Wheeled;
+  const bool thing = figure != FigureClass::None && !is_creature(figure);
   return (legs && !wheels) || (wave && !thing);
 }
 

@@ -8,6 +8,9 @@ namespace svgm {
 
 namespace {
 
+// The flight verbs whose arms' action is a wing beat (the verb table's fly, hover and soar).
+bool beats_wings_in_flight(const Verb& v) { return v.name == "fly" || v.name == "hover" || v.name == "soar"; }
+
 // A head part off the figure's middle by less than this share of its width shows no facing.
 constexpr double kHeadOffCentre = 0.1;
 
@@ -107,11 +110,8 @@ std::string arms_left_out(const Verb& v, size_t i, FigureClass figure, FigureCla
   if (act.target != Target::Arms) return "";
   if (i > 0 && v.actions[0].target == Target::Legs && figure != FigureClass::None && figure != FigureClass::Biped)
     return std::string("a ") + figure_class_name(figure) + " has no arms: " + v.name + "'s arm swing left out";
-  if (v.name != "fly" && v.name != "hover" && v.name != "soar") return "";
-  const bool creature = clause_figure == FigureClass::Biped || clause_figure == FigureClass::Quadruped ||
-                        clause_figure == FigureClass::Bird || clause_figure == FigureClass::Insect ||
-                        clause_figure == FigureClass::FishOrSnake;
-  if (clause_figure != FigureClass::None && !creature)
+  if (!beats_wings_in_flight(v)) return "";
+  if (clause_figure != FigureClass::None && !is_creature(clause_figure))
     return std::string("a flying ") + figure_class_name(clause_figure) + " has no wings to beat: " + v.name + "'s wing beat left out";
   const bool limbs_apart = std::any_of(rig.parts.begin(), rig.parts.end(), [](const RigPart& P) { return P.role == Role::UpperLimb; });
   if (clause_figure == FigureClass::None && !limbs_apart)
@@ -120,7 +120,7 @@ std::string arms_left_out(const Verb& v, size_t i, FigureClass figure, FigureCla
 }
 
 std::string wings_left_out(const Verb& v, const PlannedAction& a) {
-  if ((v.name != "fly" && v.name != "hover" && v.name != "soar") || a.region != Region::Sides || !a.lobes.empty()) return "";
+  if (!beats_wings_in_flight(v) || a.region != Region::Sides || !a.lobes.empty()) return "";
   return "no wings found to beat: " + v.name + "'s wing beat would bend the body's sides, left out";
 }
 
