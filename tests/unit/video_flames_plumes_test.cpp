@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "procedural/flame_core.h"
+#include "procedural/flame_lick.h"
 #include "procedural/motion_plan.h"
 #include "procedural/part_locator.h"
 
@@ -212,6 +213,63 @@ TEST_CASE("flames: a heart drawn over the lower half of a blaze holds; the blaze
   const auto t = d.travel(plan);
   CHECK(t[1] < 0.01 * 165);  // the heart
   CHECK(t[0] > 5.0);   // the flame's tip
+}
+
+TEST_CASE("flames: the tongues of a blaze are its top edge's tips, each licking half a cycle after its neighbour") {
+  // A zigzag top edge: tips at x 0, 40 and 80 (y 0), notches between them 30 lower, the blaze's
+  // bottom at 50.
+  const std::vector<Vec2> zigzag = {{0, 0}, {20, 30}, {40, 0}, {60, 30}, {80, 0}, {0, 50}, {80, 50}};
+  CHECK(tongue_tips(zigzag) == std::vector<double>{0, 40, 80});
+  // Notches 5 deep (under kTongueProminence of the height 50): one tongue, its tip the first highest point.
+  const std::vector<Vec2> wiggle = {{0, 0}, {20, 5}, {40, 0}, {60, 5}, {80, 0}, {0, 50}, {80, 50}};
+  CHECK(tongue_tips(wiggle) == std::vector<double>{0});
+  // The phase: flat over each tongue (within a quarter of the gap of its tip), half a cycle a tongue.
+  const std::vector<double> tips = {0, 40, 80};
+  CHECK(tongue_phase(tips, -5) == 0.0);
+  CHECK(tongue_phase(tips, 10) == 0.0);
+  CHECK(tongue_phase(tips, 20) == doctest::Approx(0.25));
+  CHECK(tongue_phase(tips, 35) == 0.5);
+  CHECK(tongue_phase(tips, 45) == 0.5);
+  CHECK(tongue_phase(tips, 90) == 1.0);
+}
+
+TEST_CASE("flames: a blaze's tongues lick in turn, and the lick folds the blaze at no amplitude") {
+  const Drawing d("heart_three_tongues.svg");
+  const LocatedPart f = locate_part(d.rig, PartShape::Flames);
+  REQUIRE(f.lobes.size() == 1);
+  CHECK(f.lobes[0].kind == LobeKind::Blaze);
+  CHECK(f.lobes[0].tongues == std::vector<double>{45, 100, 155});
+  MotionPlan plan = plan_from_prompt(parse_prompt("the flames around the heart flicker"), d.rig, 1);
+  REQUIRE(!plan.actions.empty());
+  // The three tips (points 3, 9 and 15 of the blaze): half a cycle apart, the side tips rise
+  // while the middle one falls and back (a turn of the whole blaze about the heart's top raised one
+  // side tip and lowered the other).
+  const int F = 25;
+  const std::vector<Vec2> pts = animate_plan(d.scene, d.rig, plan, F);
+  const std::vector<Vec2> rest = path_points(d.scene, pts, F, 0, 0);
+  int in_turn = 0;
+  for (int k = 1; k < F - 1; ++k) {
+    const std::vector<Vec2> q = path_points(d.scene, pts, F, 0, k);
+    const double left = q[3].y - rest[3].y, mid = q[9].y - rest[9].y, right = q[15].y - rest[15].y;
+    if (std::fabs(mid) > 1 && left * mid < 0 && right * mid < 0) ++in_turn;
+  }
+  CHECK(in_turn >= F / 2);
+  // The heart holds, the tips move at least 8 % of the figure's size (its diagonal, ~230).
+  const auto t = d.travel(plan);
+  CHECK(t[1] == 0.0);
+  CHECK(t[0] > 0.08 * 230);
+  // Folds at no amplitude: mapped at 80 degrees, every small cell of a grid over the blaze's area
+  // above the heart stays the same way round (none turned over) at every frame.
+  PlannedAction a = plan.actions[0];
+  for (int k = 0; k <= 24; ++k)
+    for (double y = 15; y < 85; y += 2)
+      for (double x = 20; x < 180; x += 2) {
+        const Vec2 p = flame_lick(f.lobes[0], a, 80, k / 24.0, {x, y});
+        const Vec2 px = flame_lick(f.lobes[0], a, 80, k / 24.0, {x + 0.01, y});
+        const Vec2 py = flame_lick(f.lobes[0], a, 80, k / 24.0, {x, y + 0.01});
+        const double cross = (px.x - p.x) * (py.y - p.y) - (px.y - p.y) * (py.x - p.x);
+        REQUIRE(cross > 0);
+      }
 }
 
 TEST_CASE("flames: a heart in a part of its own, drawn on the blaze, holds: it rides on none of the flames") {

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <set>
 
+#include "procedural/flame_lick.h"
+
 namespace svgm {
 
 bool blunt_top(const RigElement& e, double top) {
@@ -48,13 +50,17 @@ LocatedPart flames_over_core(const Rig& rig, int body) {
     paths.insert(e.path);
   }
   if (pts.empty()) return out;
+  // Its tongues lick, each column by its own phase (flame_lick.h): turned as one lobe, the
+  // blaze's sides folded its mesh.
   out.lobes.push_back(lobe_over_point_set(rig, pts, {C.centre().x, C.y0}));
+  out.lobes.back().kind = LobeKind::Blaze;
+  out.lobes.back().tongues = tongue_tips(pts);
   out.paths.assign(paths.begin(), paths.end());
   // A path both (a subpath in the blaze, another on the thing) moves.
   for (int p : paths) holds.erase(p);
   out.holds.assign(holds.begin(), holds.end());
   out.why = "nothing drawn above the blaze's top; a thing burning drawn over its lower part (path " +
-            std::to_string(rig.elements[core].path + 1) + " at " + fmt_box(rig, C) + "): the flames are the stretch above it, about its top's middle";
+            std::to_string(rig.elements[core].path + 1) + " at " + fmt_box(rig, C) + "): the flames are the stretch above it, licking up tongue by tongue";
   return out;
 }
 

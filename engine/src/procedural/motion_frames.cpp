@@ -10,6 +10,7 @@
 #include "procedural/carried_shapes.h"
 #include "procedural/detail_binding.h"
 #include "procedural/figure_pieces.h"
+#include "procedural/flame_lick.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/region_bend.h"
 #include "procedural/rotor_blades.h"
@@ -274,6 +275,9 @@ RegionTurn motion_plan_internal::region_turn(const PlannedAction& a, double amp,
 }
 
 Vec2 motion_plan_internal::bend_region(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
+  // A blaze's tongues lick (flame_lick.h): not a turn about a pivot.
+  for (const ArmLobe& l : a.lobes)
+    if (l.kind == LobeKind::Blaze) return flame_lick(l, a, amp, t, q);
   const RegionTurn r = region_turn(a, amp, t, box, q);
   if (r.pulse && a.primitive == Primitive::Stretch) {
     // Along the blade's line only (the lobe's pivot to its tip).

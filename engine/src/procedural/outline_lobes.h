@@ -19,8 +19,10 @@
 
 namespace svgm {
 
-// What a limb read from a silhouette skeleton is (skeleton_lobes.h; motion/limbs.h's kinds).
-enum class LobeKind { Arm, Leg, Head, Tail, Other };
+// What a limb read from a silhouette skeleton is (skeleton_lobes.h; motion/limbs.h's kinds), or
+// a blaze's tongues over a thing burning (flame_core.h), which lick instead of turning
+// (flame_lick.h).
+enum class LobeKind { Arm, Leg, Head, Tail, Other, Blaze };
 
 struct ArmLobe {
   int side = 0;               // as the viewer sees it: -1 left, +1 right
@@ -32,6 +34,7 @@ struct ArmLobe {
                                   // whose outline is the contour of the silhouette it owns
   bool rigid = false;         // its paths turn whole about the pivot, no ramp and no mesh: a part
                               // that hangs free (part_locator.h's clapper), not a limb that bends
+  std::vector<double> tongues;  // a Blaze: the x of its tongues' tips, left to right
 };
 
 // The arm lobes of `outline`'s first subpath (closed, at least a few cubics), left first.

@@ -101,6 +101,8 @@ RegionBend::RegionBend(const Scene& scene, const std::vector<int>& paths, const 
   // A growing part scales about its middle, a rotor's blades turn or squeeze whole about their hub
   // (rotor_blades.h): no shape is cut, nothing to bend.
   if (!a.lobes.empty() && (a.primitive == Primitive::Pulse || a.primitive == Primitive::Spin || a.primitive == Primitive::Stretch)) return;
+  // A blaze licks in closed form, which folds at no amplitude (flame_lick.h).
+  if (std::any_of(a.lobes.begin(), a.lobes.end(), [](const ArmLobe& l) { return l.kind == LobeKind::Blaze; })) return;
   const double scale = kWorkingSize / std::max(scene.width, scene.height);
   const cv::Mat mask = bent_mask(scene, paths, scale);
   uint64_t key = fnv(mask.data, mask.total());
