@@ -54,7 +54,7 @@ LocatedPart flames_over_core(const Rig& rig, int body) {
   // blaze's sides folded its mesh.
   out.lobes.push_back(lobe_over_point_set(rig, pts, {C.centre().x, C.y0}));
   out.lobes.back().kind = LobeKind::Blaze;
-  out.lobes.back().tongues = tongue_tips(pts);
+  out.lobes.back().tongue_spacing = tongue_spacing(pts);
   out.paths.assign(paths.begin(), paths.end());
   // A path both (a subpath in the blaze, another on the thing) moves.
   for (int p : paths) holds.erase(p);

@@ -10,12 +10,12 @@ namespace svgm {
 
 using namespace motion_plan_internal;
 
-std::vector<double> tongue_tips(const std::vector<Vec2>& pts) {
-  if (pts.empty()) return {};
+double tongue_spacing(const std::vector<Vec2>& pts) {
+  if (pts.empty()) return 0;
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
   for (Vec2 q : pts) x0 = std::min(x0, q.x), x1 = std::max(x1, q.x), y0 = std::min(y0, q.y), y1 = std::max(y1, q.y);
   const double W = x1 - x0, H = y1 - y0;
-  if (!(W > 0) || !(H > 0)) return {0.5 * (x0 + x1)};
+  if (!(W > 0) || !(H > 0)) return 0;
   // The top edge: per column its highest point (the least y); columns with none are left out.
   std::vector<Vec2> top(kTongueColumns, Vec2{0, 1e300});
   for (Vec2 q : pts) {
@@ -47,17 +47,15 @@ std::vector<double> tongue_tips(const std::vector<Vec2>& pts) {
     }
   }
   if (rising && best_y < 1e300) tips.push_back(best_x);
-  return tips;
+  if (tips.size() < 2) return 0;
+  return (tips.back() - tips.front()) / static_cast<double>(tips.size() - 1);
 }
 
-double tongue_phase(const std::vector<double>& tips, double x) {
-  for (size_t i = 0; i + 1 < tips.size(); ++i)
-    if (x < tips[i + 1]) {
-      const double f = (x - tips[i]) / std::max(tips[i + 1] - tips[i], 1e-12);
-      const double s = std::clamp((f - 0.25) / 0.5, 0.0, 1.0);
-      return 0.5 * (static_cast<double>(i) + s * s * (3 - 2 * s));
-    }
-  return tips.empty() ? 0 : 0.5 * static_cast<double>(tips.size() - 1);
+double tongue_phase(double spacing, double tip, double x) {
+  if (!(spacing > 0)) return 0;
+  const double g = (x - tip) / spacing, k = std::floor(g);
+  const double s = std::clamp((g - k - 0.25) / 0.5, 0.0, 1.0);
+  return 0.5 * (k + s * s * (3 - 2 * s));
 }
 
 Vec2 flame_lick(const ArmLobe& lobe, const PlannedAction& a, double amp, double t, Vec2 q) {
@@ -69,7 +67,7 @@ Vec2 flame_lick(const ArmLobe& lobe, const PlannedAction& a, double amp, double 
   const double B = std::min(0.5 * lean, kLickMax), A = 0.5 * lean * (amp < 0 ? -1 : 1);
   // The lick: up and down along the column by its tongue's phase; zero at the loop's ends (t = 0
   // and 1).
-  const double phase = tongue_phase(lobe.tongues, q.x), u = a.cycles * t;
+  const double phase = tongue_phase(lobe.tongue_spacing, lobe.tip.x, q.x), u = a.cycles * t;
   const double P = std::sin(kTau * (u - phase)) - std::sin(kTau * -phase);
   const double v = std::min((lobe.pivot.y - q.y) / H, 1.0);
   const double y = q.y - B * H * v * v * P;

@@ -33,18 +33,19 @@ inline constexpr double kTongueProminence = 0.12;
 // The top edge is read in this many columns across the blaze.
 inline constexpr int kTongueColumns = 32;
 
-// The tips of the tongues of a blaze whose points (above its base) are `pts`: the x of each tip
-// of its top edge, left to right (one when the edge has no notch).
-std::vector<double> tongue_tips(const std::vector<Vec2>& pts);
+// The spacing of the tongues of a blaze whose points (above its base) are `pts`: the mean
+// distance between neighbouring tips of its top edge; 0 when it has one tip.
+double tongue_spacing(const std::vector<Vec2>& pts);
 
-// The lick's phase (in cycles) at x for tongues with tips `tips`: half a cycle from one tongue to
-// the next, the same over each tongue (a thin tongue rises whole: a phase running across it
-// sheared its tip into a hook), changing over the middle half of the gap between two tips.
-double tongue_phase(const std::vector<double>& tips, double x);
+// The lick's phase (in cycles) at x for tongues `spacing` apart, one of them at `tip`: half a
+// cycle from one tongue to the next, the same over each tongue (a thin tongue rises whole: a
+// phase running across it sheared its tip into a hook), changing over the middle half of the gap
+// between two tips. 0 everywhere when spacing is 0 (one tongue).
+double tongue_phase(double spacing, double tip, double x);
 
-// Point q of a blaze lobe (LobeKind::Blaze) at amplitude `amp` (degrees: the sway's lean at the
-// tips, tan(amp) of the height, shared half and half with the lick) and time t; q below the
-// lobe's pivot holds.
+// Point q of a blaze lobe (LobeKind::Blaze: its tip the tip of a tongue) at amplitude `amp`
+// (degrees: tan(amp) of the blaze's height, half of it the sway's lean at the tips, half the
+// lick's rise, that capped at kLickMax) and time t; q below the lobe's pivot holds.
 Vec2 flame_lick(const ArmLobe& lobe, const PlannedAction& a, double amp, double t, Vec2 q);
 
 }  // namespace svgm

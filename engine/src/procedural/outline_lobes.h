@@ -34,7 +34,7 @@ struct ArmLobe {
                                   // whose outline is the contour of the silhouette it owns
   bool rigid = false;         // its paths turn whole about the pivot, no ramp and no mesh: a part
                               // that hangs free (part_locator.h's clapper), not a limb that bends
-  std::vector<double> tongues;  // a Blaze: the x of its tongues' tips, left to right
+  double tongue_spacing = 0;  // a Blaze: the distance between its neighbouring tongues' tips
 };
 
 // The arm lobes of `outline`'s first subpath (closed, at least a few cubics), left first.
