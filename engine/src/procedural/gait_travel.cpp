@@ -65,4 +65,15 @@ int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, s
   return 1;
 }
 
+void crawl_in_steps(MotionPlan& plan, size_t from, size_t slide, FigureClass figure) {
+  PlannedAction& s = plan.actions[slide];
+  if (s.verb != "move" || s.travel == 0 || (figure != FigureClass::None && !is_creature(figure))) return;
+  for (size_t i = from; i < plan.actions.size(); ++i)
+    if (PlannedAction& a = plan.actions[i]; a.primitive == Primitive::Stretch && a.parts.empty() && a.verb == s.verb) {
+      a.inches = s.inches = true;
+      a.amp = s.amp, a.cycles = s.cycles = 1, a.direction = a.travel = s.travel;
+      a.why += "; a crawl's steps: longer ahead of its planted rear, then gathered up behind its planted front";
+    }
+}
+
 }  // namespace svgm

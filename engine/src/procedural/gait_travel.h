@@ -11,6 +11,7 @@
 #include <string>
 
 #include "motion/motion_verbs.h"
+#include "procedural/motion_plan.h"
 #include "procedural/part_rig.h"
 #include "procedural/prompt_parse.h"
 
@@ -32,5 +33,17 @@ bool is_gait(const Verb& v, FigureClass figure);
 // plan leaves out the whole figure's accents then, a swim's own slide among them), or the figure is a person whose facing is not known. `why` gets "no
 // direction said: the figure faces left (its eye) and goes that way".
 int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, std::string* why);
+
+// How far ahead (and behind) of where it stands a figure sent somewhere goes, of its width
+// (travel_profile.h: forward steadily, then back); fit_plan scales it down only to keep the figure
+// in its canvas. At 8 % about rest, scaled to 80 % to fit, a turtle slid 3 of its canvas's 72
+// units each way and read as rocking.
+inline constexpr double kTravelReach = 0.15;
+
+// A crawl sent somewhere ("move": "crawls", "creeps", "inches"; on a figure that may be a
+// creature): the whole figure's stretch of the clause (actions from `from`) and its slide
+// `slide` go by the crawl's steps (PlannedAction::inches, travel_profile.h): the stretch the size
+// of a step, along the way the slide goes, once a loop. A thing that "moves" slides as before.
+void crawl_in_steps(MotionPlan& plan, size_t from, size_t slide, FigureClass figure);
 
 }  // namespace svgm

@@ -563,13 +563,16 @@ void travel_where_told(Builder& b, const Clause& c, size_t from, const ParsedPro
   if (!mover) return;
   // A gait with no direction said goes the way the figure faces (gait_travel.h).
   Modifiers mods = c.mods;
-  std::string why = "told where it goes: the figure travels there and back";
+  std::string why = "told where it goes: the figure goes there steadily and glides back";
   if (mods.travel == 0 && (!is_gait(*mover, c.figure) || (mods.travel = untold_travel(prompt, c, b.rig, &why)) == 0)) return;
-  static const Action kTravelSlide{Primitive::Slide, Target::Whole, 0.08, 1};
+  static const Action kTravelSlide{Primitive::Slide, Target::Whole, kTravelReach, 1};
   for (size_t i = from; i < b.plan.actions.size(); ++i)
     if (PlannedAction& a = b.plan.actions[i]; a.primitive == Primitive::Slide && a.parts.empty()) {
-      // Its own slide (a crawl's creep, a swim's glide) goes that way, as far as a travel goes.
-      if (c.mods.travel == 0) a.amp = std::max(a.amp, kTravelSlide.amp), a.direction = a.travel = mods.travel, a.why += "; " + why;
+      // Its own slide (a crawl's creep, a swim's glide) goes that way, as far as a travel goes
+      // (told or not: "crawls slowly to the left" crept 4 % of the snail's width).
+      a.amp = std::max(a.amp, kTravelSlide.amp), a.direction = a.travel = mods.travel;
+      if (c.mods.travel == 0) a.why += "; " + why;
+      crawl_in_steps(b.plan, from, i, c.figure);
       return;
     }
   if (mover->name != "move") b.add(*mover, kTravelSlide, Target::Whole, {}, "", mods, false, c.text, false, why);
