@@ -32,6 +32,8 @@ bool gets_somewhere(const Verb& v) {
   return false;
 }
 
+bool locomotes(const Verb& v) { return gets_somewhere(v) || v.name == "fly" || v.name == "soar" || v.name == "float"; }
+
 bool is_gait(const Verb& v, FigureClass figure) {
   if (v.name == "move") return true;
   bool legs = false, wave = false, wheels = false;

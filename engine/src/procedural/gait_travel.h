@@ -20,6 +20,10 @@ namespace svgm {
 // Whether `v` gets a figure somewhere when sent: legs in turn, hops, a body's wave.
 bool gets_somewhere(const Verb& v);
 
+// A verb by which a figure gets somewhere: a gait (legs in turn), hops, a swimming or crawling
+// body's wave, wings in flight.
+bool locomotes(const Verb& v);
+
 // Whether `v`, said of a figure of class `figure` with no direction, is a gait that carries it
 // along: legs in turn (not a rider's pedalling: a vehicle's travel is its drive's), a crawl (the
 // vocabulary's "move", whose own slide is the crawl's creep), a body's wave on a figure that may

@@ -31,7 +31,7 @@ std::string direction_words(const PlannedAction& a) {
     case Primitive::Spin: return a.rolls ? "rolling with the figure's slide" : std::string(turn(a.direction)) + ", whole turns";
     case Primitive::Turn: return "about its vertical axis, whole turns (mirrored while its back is shown)";
     case Primitive::Slide:
-      if (a.travel != 0 && a.parts.empty())  // travel_profile.h
+      if (a.goes || a.inches)  // travel_profile.h
         return std::string(a.inches ? "crawls " : "goes ") + (a.direction > 0 ? "right" : "left") + (a.inches ? " in steps" : " steadily") +
                ", then glides back";
       return a.direction > 0 ? "right first, then left" : "left first, then right";

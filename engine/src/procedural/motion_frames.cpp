@@ -54,10 +54,10 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
       const double ty = a.vertical == 1 ? -amp * H * k : a.vertical == -1 ? amp * H * k : -amp * H * s;
       return Affine::translate(0, ty);
     }
-    // Sent somewhere (a travel): forward steadily most of the loop, or by a crawl's steps, and
+    // Going somewhere on its own: forward steadily most of the loop, or by a crawl's steps, and
     // back (travel_profile.h); otherwise to one side and the other about rest.
     case Primitive::Slide: {
-      const double x = a.travel == 0 || !a.parts.empty() ? s : a.inches ? crawl_at(u).rear : going_at(u);
+      const double x = a.inches ? crawl_at(u).rear : a.goes ? going_at(u) : s;
       return Affine::translate(a.direction * amp * W * x, 0);
     }
     case Primitive::Shake:  // on the ground (vertical != 0: a launch's rumble), only sideways
