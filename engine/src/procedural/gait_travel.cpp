@@ -67,9 +67,23 @@ int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, s
   return 1;
 }
 
+namespace {
+
+// Whether `text` says a crawl's own word ("crawls", "creeps", "crept", "inches"): said of any
+// figure, a creature's gait (a caterpillar is no class the lexicon knows: an object).
+bool says_crawl(const std::string& text) {
+  std::istringstream in(text);
+  for (std::string w; in >> w;)
+    for (const char* stem : {"crawl", "creep", "crept", "inch"})
+      if (w.rfind(stem, 0) == 0) return true;
+  return false;
+}
+
+}  // namespace
+
 void crawl_in_steps(MotionPlan& plan, size_t from, size_t slide, FigureClass figure) {
   PlannedAction& s = plan.actions[slide];
-  if (s.verb != "move" || s.travel == 0 || (figure != FigureClass::None && !is_creature(figure))) return;
+  if (s.verb != "move" || s.travel == 0 || !(is_creature(figure) || says_crawl(s.words))) return;
   for (size_t i = from; i < plan.actions.size(); ++i)
     if (PlannedAction& a = plan.actions[i]; a.primitive == Primitive::Stretch && a.parts.empty() && a.verb == s.verb) {
       a.inches = s.inches = true;

@@ -44,10 +44,11 @@ int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, s
 // units each way and read as rocking.
 inline constexpr double kTravelReach = 0.15;
 
-// A crawl sent somewhere ("move": "crawls", "creeps", "inches"; on a figure that may be a
-// creature): the whole figure's stretch of the clause (actions from `from`) and its slide
-// `slide` go by the crawl's steps (PlannedAction::inches, travel_profile.h): the stretch the size
-// of a step, along the way the slide goes, once a loop. A thing that "moves" slides as before.
+// A crawl sent somewhere ("move" said of a creature, or in a crawl's own words: "crawls",
+// "creeps", "inches", whatever the figure): the whole figure's stretch of the clause (actions
+// from `from`) and its slide `slide` go by the crawl's steps (PlannedAction::inches,
+// travel_profile.h): the stretch the size of a step, along the way the slide goes, once a loop.
+// A thing that "moves" or "goes" slides as before.
 void crawl_in_steps(MotionPlan& plan, size_t from, size_t slide, FigureClass figure);
 
 }  // namespace svgm
