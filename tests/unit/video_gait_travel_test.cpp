@@ -36,13 +36,13 @@ TEST_CASE("gait travel: an animal facing left (its eye) walks and crawls to the 
     CAPTURE(prompt);
     MotionPlan plan = plan_from_prompt(parse_prompt(prompt), d.rig, 1);
     CHECK(slide_ways(plan) == std::vector<int>{-1});
-    // A travel's amplitude: 8 % of the figure's width (a crawl's own creep raised to it).
+    // A travel's amplitude: at least 8 % of the figure's width (kTravelReach; a crawl's own creep raised to it).
     for (const auto& a : plan.actions)
       if (a.primitive == Primitive::Slide) CHECK(a.amp >= 0.08 * 0.85);
     const int F = 25;
     fit_plan(d.scene, d.rig, plan, F, 9);
     const std::vector<Vec2> pts = animate_plan(d.scene, d.rig, plan, F);
-    // A quarter of the loop in (the slide's far end), the eye (path 1, its points after path 0's)
+    // A quarter of the loop in (most of the way to its far end, travel_profile.h), the eye (path 1, its points after path 0's)
     // is to the left of where it stood, by 4 % of the figure's width or, as here, most of the
     // room the canvas leaves at the left (the snout is 8 units from its edge).
     size_t eye = 0;

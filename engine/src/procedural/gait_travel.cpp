@@ -32,6 +32,8 @@ bool gets_somewhere(const Verb& v) {
   return false;
 }
 
+bool locomotes(const Verb& v) { return gets_somewhere(v) || v.name == "fly" || v.name == "soar" || v.name == "float"; }
+
 bool is_gait(const Verb& v, FigureClass figure) {
   if (v.name == "move") return true;
   bool legs = false, wave = false, wheels = false;
@@ -63,6 +65,31 @@ int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, s
   if (c.figure == FigureClass::Biped) return 0;
   if (why) *why = "no direction said and its facing not known: the figure goes to the right first and back";
   return 1;
+}
+
+namespace {
+
+// Whether `text` says a crawl's own word ("crawls", "creeps", "crept", "inches"): said of any
+// figure, a creature's gait (a caterpillar is no class the lexicon knows: an object).
+bool says_crawl(const std::string& text) {
+  std::istringstream in(text);
+  for (std::string w; in >> w;)
+    for (const char* stem : {"crawl", "creep", "crept", "inch"})
+      if (w.rfind(stem, 0) == 0) return true;
+  return false;
+}
+
+}  // namespace
+
+void crawl_in_steps(MotionPlan& plan, size_t from, size_t slide, FigureClass figure) {
+  PlannedAction& s = plan.actions[slide];
+  if (s.verb != "move" || s.travel == 0 || !(is_creature(figure) || says_crawl(s.words))) return;
+  for (size_t i = from; i < plan.actions.size(); ++i)
+    if (PlannedAction& a = plan.actions[i]; a.primitive == Primitive::Stretch && a.parts.empty() && a.verb == s.verb) {
+      a.inches = s.inches = true;
+      a.amp = s.amp, a.cycles = s.cycles = 1, a.direction = a.travel = s.travel;
+      a.why += "; a crawl's steps: longer ahead of its planted rear, then gathered up behind its planted front";
+    }
 }
 
 }  // namespace svgm

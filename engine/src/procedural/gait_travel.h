@@ -11,6 +11,7 @@
 #include <string>
 
 #include "motion/motion_verbs.h"
+#include "procedural/motion_plan.h"
 #include "procedural/part_rig.h"
 #include "procedural/prompt_parse.h"
 
@@ -18,6 +19,10 @@ namespace svgm {
 
 // Whether `v` gets a figure somewhere when sent: legs in turn, hops, a body's wave.
 bool gets_somewhere(const Verb& v);
+
+// A verb by which a figure gets somewhere: a gait (legs in turn), hops, a swimming or crawling
+// body's wave, wings in flight.
+bool locomotes(const Verb& v);
 
 // Whether `v`, said of a figure of class `figure` with no direction, is a gait that carries it
 // along: legs in turn (not a rider's pedalling: a vehicle's travel is its drive's), a crawl (the
@@ -32,5 +37,18 @@ bool is_gait(const Verb& v, FigureClass figure);
 // plan leaves out the whole figure's accents then, a swim's own slide among them), or the figure is a person whose facing is not known. `why` gets "no
 // direction said: the figure faces left (its eye) and goes that way".
 int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, std::string* why);
+
+// How far ahead (and behind) of where it stands a figure sent somewhere goes, of its width
+// (travel_profile.h: forward steadily, then back); fit_plan scales it down only to keep the figure
+// in its canvas. At 8 % about rest, scaled to 80 % to fit, a turtle slid 3 of its canvas's 72
+// units each way and read as rocking.
+inline constexpr double kTravelReach = 0.15;
+
+// A crawl sent somewhere ("move" said of a creature, or in a crawl's own words: "crawls",
+// "creeps", "inches", whatever the figure): the whole figure's stretch of the clause (actions
+// from `from`) and its slide `slide` go by the crawl's steps (PlannedAction::inches,
+// travel_profile.h): the stretch the size of a step, along the way the slide goes, once a loop.
+// A thing that "moves" or "goes" slides as before.
+void crawl_in_steps(MotionPlan& plan, size_t from, size_t slide, FigureClass figure);
 
 }  // namespace svgm

@@ -30,7 +30,11 @@ std::string direction_words(const PlannedAction& a) {
   switch (a.primitive) {
     case Primitive::Spin: return a.rolls ? "rolling with the figure's slide" : std::string(turn(a.direction)) + ", whole turns";
     case Primitive::Turn: return "about its vertical axis, whole turns (mirrored while its back is shown)";
-    case Primitive::Slide: return a.direction > 0 ? "right first, then left" : "left first, then right";
+    case Primitive::Slide:
+      if (a.goes || a.inches)  // travel_profile.h
+        return std::string(a.inches ? "crawls " : "goes ") + (a.direction > 0 ? "right" : "left") + (a.inches ? " in steps" : " steadily") +
+               ", then glides back";
+      return a.direction > 0 ? "right first, then left" : "left first, then right";
     case Primitive::Hop: return "up in an arc and back down";
     case Primitive::Bob: return a.vertical > 0 ? "up from rest and back" : a.vertical < 0 ? "down from rest and back" : "up and down";
     case Primitive::Squash: return "down, squashed, and back up";
@@ -38,7 +42,9 @@ std::string direction_words(const PlannedAction& a) {
     case Primitive::Shake: return "a small jitter";
     case Primitive::Pulse:
       return a.vertical == 1 && a.amp < 0 ? "smaller toward its top and back (away)" : "larger and smaller about its centre";
-    case Primitive::Stretch: return "longer along its length and back";
+    case Primitive::Stretch:
+      return a.inches ? std::string("longer ") + (a.direction > 0 ? "right" : "left") + " ahead of its rear, then gathered up"
+                      : "longer along its length and back";
     case Primitive::Undulate: {
       static const char* from[] = {"", " from the pole at its left", " from the pole at its right", " from the pole at its top",
                                    " from the pole at its bottom"};

@@ -15,6 +15,7 @@
 #include "procedural/region_bend.h"
 #include "procedural/rotor_blades.h"
 #include "procedural/support_band.h"
+#include "procedural/travel_profile.h"
 #include "geometry/rigid_bodies.h"
 #include "procedural/wheel_riders.h"
 
@@ -54,7 +55,12 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
       const double ty = a.vertical == 1 ? -amp * H * k : a.vertical == -1 ? amp * H * k : -amp * H * s;
       return Affine::translate(0, ty);
     }
-    case Primitive::Slide: return Affine::translate(a.direction * amp * W * s, 0);
+    // Going somewhere on its own: forward steadily most of the loop, or by a crawl's steps, and
+    // back (travel_profile.h); otherwise to one side and the other about rest.
+    case Primitive::Slide: {
+      const double x = a.inches ? crawl_at(u).rear : a.goes ? going_at(u) : s;
+      return Affine::translate(a.direction * amp * W * x, 0);
+    }
     case Primitive::Shake:  // on the ground (vertical != 0: a launch's rumble), only sideways
       return Affine::translate(amp * H * s, a.vertical != 0 ? 0 : 0.6 * amp * H * std::sin(kTau * (std::max(1, a.cycles - 1) * t + phase)));
     case Primitive::Pulse: {
@@ -67,6 +73,12 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
       return about(base, Affine::scale(1 + 0.5 * amp * k, sy));
     }
     case Primitive::Stretch: {
+      if (a.inches) {
+        // A crawl's step: longer ahead of its planted rear, along the way it goes, by the step
+        // its slide takes (travel_profile.h).
+        const double step = 2.0 / kCrawlSteps, f = 1 + amp * step * crawl_at(u).stretch * W / std::max(box.w(), 1e-9);
+        return about({a.direction > 0 ? box.x0 : box.x1, centre.y}, Affine::scale(f, 1 / std::sqrt(f)));
+      }
       const double f = 1 + amp * k;
       if (box.w() >= box.h()) return about({box.x0, centre.y}, Affine::scale(f, 1 / std::sqrt(f)));
       return about(base, Affine::scale(1 / std::sqrt(f), f));

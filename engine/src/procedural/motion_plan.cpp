@@ -548,10 +548,6 @@ bool locatable_noun(const PromptNoun& n, const Rig& rig, FigureClass figure) {
 
 // A noun naming a kind of figure ("the grasshopper": an insect) was understood: it chose the
 // figure's class, though no part is named so.
-// A verb by which a figure gets somewhere: a gait (legs in turn), hops, a swimming or crawling
-// body's wave, wings in flight.
-bool locomotes(const Verb& v) { return gets_somewhere(v) || v.name == "fly" || v.name == "soar" || v.name == "float"; }
-
 // Where the prompt sends a figure that gets somewhere by itself ("the dog runs to the right", "the
 // bird flies left"), or a gait's way when it says none (gait_travel.h), and its verb has no travel
 // of its own: the whole figure slides that way and back, as a vehicle drives (kTravelSlide), the
@@ -563,16 +559,20 @@ void travel_where_told(Builder& b, const Clause& c, size_t from, const ParsedPro
   if (!mover) return;
   // A gait with no direction said goes the way the figure faces (gait_travel.h).
   Modifiers mods = c.mods;
-  std::string why = "told where it goes: the figure travels there and back";
+  std::string why = "told where it goes: the figure goes there steadily and glides back";
   if (mods.travel == 0 && (!is_gait(*mover, c.figure) || (mods.travel = untold_travel(prompt, c, b.rig, &why)) == 0)) return;
-  static const Action kTravelSlide{Primitive::Slide, Target::Whole, 0.08, 1};
+  static const Action kTravelSlide{Primitive::Slide, Target::Whole, kTravelReach, 1};
   for (size_t i = from; i < b.plan.actions.size(); ++i)
     if (PlannedAction& a = b.plan.actions[i]; a.primitive == Primitive::Slide && a.parts.empty()) {
-      // Its own slide (a crawl's creep, a swim's glide) goes that way, as far as a travel goes.
-      if (c.mods.travel == 0) a.amp = std::max(a.amp, kTravelSlide.amp), a.direction = a.travel = mods.travel, a.why += "; " + why;
+      // Its own slide (a crawl's creep, a swim's glide) goes that way, as far as a travel goes
+      // (told or not: "crawls slowly to the left" crept 4 % of the snail's width).
+      a.amp = std::max(a.amp, kTravelSlide.amp), a.direction = a.travel = mods.travel, a.goes = true, a.why += c.mods.travel ? "" : "; " + why;
+      crawl_in_steps(b.plan, from, i, c.figure);
       return;
     }
+  const size_t had = b.plan.actions.size();
   if (mover->name != "move") b.add(*mover, kTravelSlide, Target::Whole, {}, "", mods, false, c.text, false, why);
+  if (b.plan.actions.size() > had) b.plan.actions.back().goes = true;
 }
 
 bool names_figure_kind(const PromptNoun& n) {

@@ -70,6 +70,10 @@ struct PlannedAction {
   int one_sided = 0;            // Swing, Rock, Bend, Sway, region bends: 0 back and forth about
                                 // rest; +1 / -1 out to one side only and back (fit_plan: the
                                 // other side would leave the canvas)
+  bool goes = false;            // Slide of the whole figure going somewhere on its own (a gait,
+                                // a swim, a flight): forward steadily, then back (travel_profile.h)
+  bool inches = false;          // Slide and Stretch of the whole figure sent crawling somewhere:
+                                // its steps, the ends planted in turn (travel_profile.h)
   bool rolls = false;           // Spin of wheels: they roll with the figure's Slide of the same
                                 // words (the turn follows the distance, both ways), instead of
                                 // whole turns

@@ -1,0 +1,46 @@
+// The travel of a figure sent somewhere over one loop, steady or by crawling steps (see
+// travel_profile.h).
+#include "procedural/travel_profile.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace svgm {
+
+namespace {
+
+double ease(double x) { return 0.5 - 0.5 * std::cos(M_PI * x); }
+
+// Where in the forward run (0 at its start, behind; 1 at its end, ahead) loop time u is, or -1
+// during the glide back, with `back` its share done (0 to 1). The run is centred on u = 0.
+double forward_share(double u, double* back) {
+  const double c = u - std::floor(u), half = 0.5 * kForwardShare;
+  if (c < half) return 0.5 + c / kForwardShare;
+  if (c >= 1 - half) return (c - (1 - half)) / kForwardShare;
+  *back = (c - half) / (1 - kForwardShare);
+  return -1;
+}
+
+}  // namespace
+
+double going_at(double u) {
+  double back = 0;
+  const double s = forward_share(u, &back);
+  return s >= 0 ? 2 * s - 1 : 1 - 2 * ease(back);
+}
+
+CrawlPose crawl_at(double u) {
+  double back = 0;
+  const double s = forward_share(u, &back);
+  if (s < 0) return {1 - 2 * ease(back), 0};
+  // Step j of kCrawlSteps, w its share done: the first half stretches (the rear planted), the
+  // second gathers (the front planted: the rear catches up by what the stretch gives back).
+  const double step = 2.0 / kCrawlSteps, at = s * kCrawlSteps;
+  const double j = std::min(std::floor(at), kCrawlSteps - 1.0), w = at - j;
+  const double start = -1 + j * step;
+  if (w < 0.5) return {start, ease(2 * w)};
+  const double e = 1 - ease(2 * w - 1);
+  return {start + (1 - e) * step, e};
+}
+
+}  // namespace svgm
