@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <tuple>
 
 #include "procedural/part_rig_internal.h"
 
@@ -62,6 +63,66 @@ std::vector<std::vector<Blade>> by_direction(const std::vector<Blade>& blades, V
   return groups;
 }
 
+// The blades about `hub` grouped by direction, each direction's length (its longest blade), and
+// the direction whose length the most others share (within kSameLength): a rotor's blades are
+// alike; what else ends at the hub (the nose a propeller is on, a rotor's mast) is not.
+struct BladeSpread {
+  std::vector<std::vector<Blade>> groups;
+  std::vector<double> len;
+  size_t best = 0, most = 0;
+  double span = 0;  // the alike blades' lengths, summed: how large the rotor is
+};
+
+bool alike(double a, double b) { return std::max(a, b) <= (1 + kSameLength) * std::min(a, b); }
+
+BladeSpread spread_at(const std::vector<int>& cand, const std::vector<ElementAxis>& ax, Vec2 hub, double tol) {
+  BladeSpread s;
+  s.groups = by_direction(blades_at(cand, ax, hub, tol), hub);
+  for (const auto& g : s.groups) {
+    double l = 0;
+    for (const Blade& b : g) l = std::max(l, dist(b.near, b.far));
+    s.len.push_back(l);
+  }
+  for (size_t i = 0; i < s.len.size(); ++i) {
+    size_t n = 0;
+    for (double l : s.len) n += alike(l, s.len[i]) ? 1 : 0;
+    if (n > s.most) s.most = n, s.best = i;
+  }
+  for (double l : s.len) s.span += s.most > 0 && alike(l, s.len[s.best]) ? l : 0;
+  return s;
+}
+
+// Whether the rotor's spin axis lies in the picture's plane: blades all in one line through the
+// hub (`line`: its direction) held there by something running across that line: an elongated
+// element other than the blades (the body included) with an end at the hub, within
+// kSameDirection of square to the line: a helicopter's mast under its main rotor, a side view's
+// nose behind its propeller. A rotor's disc seen edge on projects to a line square to its axis;
+// two blades in line with nothing across them (a helicopter's tail rotor at the boom's end, its
+// blades slanting across the boom) are a two-bladed rotor seen face on.
+bool held_across(const Rig& rig, const std::set<int>& blades, Vec2 hub, double line, double tol) {
+  for (size_t i = 0; i < rig.elements.size(); ++i) {
+    if (blades.count(static_cast<int>(i))) continue;
+    const ElementAxis a = element_axis(rig.elements[i]);
+    if (a.elongation < kBladeElongation && !rig.elements[i].thin) continue;
+    if (std::min(dist(a.mid_a, hub), dist(a.mid_b, hub)) > tol) continue;
+    const double d = angle_between(line, std::atan2(a.mid_b.y - a.mid_a.y, a.mid_b.x - a.mid_a.x));
+    if (std::fabs(d - 90) <= kSameDirection) return true;
+  }
+  return false;
+}
+
+// Whether every lobe lies in line with the first, one way or the other; `line` its direction.
+bool lobes_in_line(const std::vector<ArmLobe>& lobes, double& line) {
+  if (lobes.empty()) return false;
+  const ArmLobe& f = lobes[0];
+  line = std::atan2(f.tip.y - f.pivot.y, f.tip.x - f.pivot.x);
+  for (const ArmLobe& l : lobes) {
+    const double a = angle_between(line, std::atan2(l.tip.y - l.pivot.y, l.tip.x - l.pivot.x));
+    if (a > kSameDirection && a < 180 - kSameDirection) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 LocatedPart rotor_blades(const Rig& rig, int body) {
@@ -91,7 +152,18 @@ LocatedPart rotor_blades(const Rig& rig, int body) {
   // And at the middle of every blade: two strokes crossing there (openmoji's small plane 1F6E9),
   // no disc and no blade ending there.
   for (const ElementAxis& a : ax) looks.push_back({0.5 * (a.mid_a + a.mid_b), -1});
-  size_t best_dirs = 0, best_n = 0;
+  // Looks are ranked by how many blades alike in length meet there (a rotor's), then by their
+  // length (the rotor a prompt names is the largest: a helicopter's main rotor, not its tail
+  // rotor), then by a hub drawn apart, then by the fewest other directions met there (what the
+  // rotor sits on: a mast, a nose), then by the blades met. Ranked by the most directions, a
+  // helicopter's mast (a small elongated element, its middle a look) met the rotor's two blades
+  // (their ends within kHubMeet of its middle) and the mast's own two halves: four directions,
+  // the hub put halfway down the mast, and the blades and the mast turned about it through the
+  // cabin (twemoji's 1f681).
+  size_t best_most = 0, best_dirs = 0, best_n = 0;
+  double best_span = 0;
+  long best_others = 0;
+  bool best_disc = false;
   Vec2 hub;
   for (const auto& [at_point, drawn] : looks) {
     const bool disc = drawn >= 0;
@@ -116,7 +188,11 @@ LocatedPart rotor_blades(const Rig& rig, int body) {
     }
     const size_t dirs = by_direction(at, c).size();
     if (!own_disc && ends == 0 && dirs < 3) continue;
-    if (dirs > best_dirs || (dirs == best_dirs && at.size() > best_n)) best_dirs = dirs, best_n = at.size(), hub = c;
+    const BladeSpread sp = spread_at(cand, ax, c, tol);
+    const long others = static_cast<long>(sp.groups.size()) - static_cast<long>(sp.most);
+    const auto score = std::make_tuple(sp.most, sp.span, own_disc, -others, at.size());
+    if (score > std::make_tuple(best_most, best_span, best_disc, -best_others, best_n))
+      best_most = sp.most, best_span = sp.span, best_disc = own_disc, best_others = others, best_dirs = dirs, best_n = at.size(), hub = c;
   }
   // Two directions at least: one blade alone is any elongated shape (a wing, a leg).
   if (best_dirs < 2) return out;
@@ -124,21 +200,11 @@ LocatedPart rotor_blades(const Rig& rig, int body) {
   // others (within kSameLength) are its blades; what else ends at the hub (the nose a propeller
   // is on, its spinner) is not. A shape across the hub is the rotor's whatever its length (a
   // nose or a tail ends at the hub, it is not centred on it).
-  std::vector<std::vector<Blade>> groups = by_direction(blades_at(cand, ax, hub, tol), hub);
-  std::vector<double> len;
-  for (const auto& g : groups) {
-    double l = 0;
-    for (const Blade& b : g) l = std::max(l, dist(b.near, b.far));
-    len.push_back(l);
-  }
-  auto alike = [](double a, double b) { return std::max(a, b) <= (1 + kSameLength) * std::min(a, b); };
-  size_t best = 0, most = 0;
-  for (size_t i = 0; i < len.size(); ++i) {
-    size_t n = 0;
-    for (double l : len) n += alike(l, len[i]) ? 1 : 0;
-    if (n > most) most = n, best = i;
-  }
-  if (most < 2) return out;
+  const BladeSpread spread = spread_at(cand, ax, hub, tol);
+  const std::vector<std::vector<Blade>>& groups = spread.groups;
+  const std::vector<double>& len = spread.len;
+  const size_t best = spread.best;
+  if (spread.most < 2) return out;
   std::set<int> paths;
   std::string which;
   for (size_t gi = 0; gi < groups.size(); ++gi) {
@@ -171,24 +237,21 @@ LocatedPart rotor_blades(const Rig& rig, int body) {
   }
   out.paths.assign(paths.begin(), paths.end());
   out.why = std::to_string(out.lobes.size()) + " blade direction" + (out.lobes.size() > 1 ? "s" : "") + " (path " + which +
-            ") meeting at a hub at " + fmt_box(rig, RigBox{hub.x, hub.y, hub.x, hub.y}) + (rotor_edge_on(out) ? ", in one line: seen edge on" : "");
+            ") meeting at a hub at " + fmt_box(rig, RigBox{hub.x, hub.y, hub.x, hub.y}) + (rotor_edge_on(rig, out) ? ", in one line across what holds it: seen edge on" : "");
   return out;
 }
 
-bool rotor_edge_on(const LocatedPart& rotor) {
-  // Every direction in line with the first, one way or the other.
-  if (rotor.lobes.empty()) return false;
-  const ArmLobe& f = rotor.lobes[0];
-  const double d0 = std::atan2(f.tip.y - f.pivot.y, f.tip.x - f.pivot.x);
-  for (const ArmLobe& l : rotor.lobes) {
-    const double a = angle_between(d0, std::atan2(l.tip.y - l.pivot.y, l.tip.x - l.pivot.x));
-    if (a > kSameDirection && a < 180 - kSameDirection) return false;
-  }
-  return true;
+bool rotor_edge_on(const Rig& rig, const LocatedPart& rotor) {
+  double line = 0;
+  if (!lobes_in_line(rotor.lobes, line)) return false;
+  std::set<int> blades;
+  for (size_t i = 0; i < rig.elements.size(); ++i)
+    if (std::binary_search(rotor.paths.begin(), rotor.paths.end(), rig.elements[i].path)) blades.insert(static_cast<int>(i));
+  return held_across(rig, blades, rotor.lobes[0].pivot, line, kHubMeet * std::max(rig.figure.w(), rig.figure.h()));
 }
 
-void rotor_motion(const LocatedPart& rotor, Primitive& primitive, double& amp) {
-  if (rotor_edge_on(rotor)) primitive = Primitive::Stretch, amp = 1 - kEdgeOnMin;
+void rotor_motion(const Rig& rig, const LocatedPart& rotor, Primitive& primitive, double& amp) {
+  if (rotor_edge_on(rig, rotor)) primitive = Primitive::Stretch, amp = 1 - kEdgeOnMin;
   else primitive = Primitive::Spin, amp = 1;
 }
 
