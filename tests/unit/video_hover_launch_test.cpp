@@ -166,6 +166,7 @@ TEST_CASE("tumbles: leaves tumbling in the wind on one leaf with no limbs: the f
   MotionPlan plan = plan_from_prompt(parse_prompt("leaves tumbling in the wind"), d.rig, 1);
   REQUIRE(!plan.actions.empty());
   for (const PlannedAction& a : plan.actions) {
+    INFO(a.why);
     CHECK(a.verb == "tumble");
     CHECK(a.target == Target::Whole);
   }

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
-#include <tuple>
 
 #include "procedural/part_rig_internal.h"
 
@@ -70,7 +69,6 @@ struct BladeSpread {
   std::vector<std::vector<Blade>> groups;
   std::vector<double> len;
   size_t best = 0, most = 0;
-  double span = 0;  // the alike blades' lengths, summed: how large the rotor is
 };
 
 bool alike(double a, double b) { return std::max(a, b) <= (1 + kSameLength) * std::min(a, b); }
@@ -86,9 +84,9 @@ BladeSpread spread_at(const std::vector<int>& cand, const std::vector<ElementAxi
   for (size_t i = 0; i < s.len.size(); ++i) {
     size_t n = 0;
     for (double l : s.len) n += alike(l, s.len[i]) ? 1 : 0;
-    if (n > s.most) s.most = n, s.best = i;
+    // Of classes as large, the longest blades (a bar's halves, not the mast's it sits on).
+    if (n > s.most || (n == s.most && s.len[i] > s.len[s.best])) s.most = n, s.best = i;
   }
-  for (double l : s.len) s.span += s.most > 0 && alike(l, s.len[s.best]) ? l : 0;
   return s;
 }
 
@@ -152,18 +150,8 @@ LocatedPart rotor_blades(const Rig& rig, int body) {
   // And at the middle of every blade: two strokes crossing there (openmoji's small plane 1F6E9),
   // no disc and no blade ending there.
   for (const ElementAxis& a : ax) looks.push_back({0.5 * (a.mid_a + a.mid_b), -1});
-  // Looks are ranked by how many blades alike in length meet there (a rotor's), then by their
-  // length (the rotor a prompt names is the largest: a helicopter's main rotor, not its tail
-  // rotor), then by a hub drawn apart, then by the fewest other directions met there (what the
-  // rotor sits on: a mast, a nose), then by the blades met. Ranked by the most directions, a
-  // helicopter's mast (a small elongated element, its middle a look) met the rotor's two blades
-  // (their ends within kHubMeet of its middle) and the mast's own two halves: four directions,
-  // the hub put halfway down the mast, and the blades and the mast turned about it through the
-  // cabin (twemoji's 1f681).
-  size_t best_most = 0, best_dirs = 0, best_n = 0;
-  double best_span = 0;
-  long best_others = 0;
-  bool best_disc = false;
+  size_t best_dirs = 0, best_n = 0;
+  bool drawn_hub = false;
   Vec2 hub;
   for (const auto& [at_point, drawn] : looks) {
     const bool disc = drawn >= 0;
@@ -189,10 +177,7 @@ LocatedPart rotor_blades(const Rig& rig, int body) {
     const size_t dirs = by_direction(at, c).size();
     if (!own_disc && ends == 0 && dirs < 3) continue;
     const BladeSpread sp = spread_at(cand, ax, c, tol);
-    const long others = static_cast<long>(sp.groups.size()) - static_cast<long>(sp.most);
-    const auto score = std::make_tuple(sp.most, sp.span, own_disc, -others, at.size());
-    if (score > std::make_tuple(best_most, best_span, best_disc, -best_others, best_n))
-      best_most = sp.most, best_span = sp.span, best_disc = own_disc, best_others = others, best_dirs = dirs, best_n = at.size(), hub = c;
+    if (dirs > best_dirs || (dirs == best_dirs && at.size() > best_n)) best_dirs = dirs, best_n = at.size(), hub = c, drawn_hub = own_disc;
   }
   // Two directions at least: one blade alone is any elongated shape (a wing, a leg).
   if (best_dirs < 2) return out;
@@ -200,6 +185,22 @@ LocatedPart rotor_blades(const Rig& rig, int body) {
   // others (within kSameLength) are its blades; what else ends at the hub (the nose a propeller
   // is on, its spinner) is not. A shape across the hub is the rotor's whatever its length (a
   // nose or a tail ends at the hub, it is not centred on it).
+  // The hub where the rotor's blades meet: the middle of the alike blades' inner ends. Looked
+  // for at a helicopter's mast's middle (a small elongated element), the most directions met
+  // there were the blades' two and the mast's own two halves; turned about that point, the
+  // blades and the mast swung through the cabin (twemoji's 1f681). Moved to the blades' inner
+  // ends, the mast only ends there: it is what holds the rotor, not a blade. A hub drawn apart
+  // (a disc the blades meet at) stays where it is drawn.
+  if (!drawn_hub) {
+    const BladeSpread first = spread_at(cand, ax, hub, tol);
+    Vec2 inner;
+    size_t n = 0;
+    for (size_t g = 0; g < first.groups.size(); ++g)
+      if (first.most >= 2 && alike(first.len[g], first.len[first.best]))
+        for (const Blade& b : first.groups[g])
+          if (!b.opposite) inner = inner + b.near, ++n;
+    if (n > 0) hub = (1.0 / n) * inner;
+  }
   const BladeSpread spread = spread_at(cand, ax, hub, tol);
   const std::vector<std::vector<Blade>>& groups = spread.groups;
   const std::vector<double>& len = spread.len;
