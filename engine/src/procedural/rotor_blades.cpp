@@ -176,15 +176,10 @@ LocatedPart rotor_blades(const Rig& rig, int body) {
     }
     const size_t dirs = by_direction(at, c).size();
     if (!own_disc && ends == 0 && dirs < 3) continue;
-    const BladeSpread sp = spread_at(cand, ax, c, tol);
     if (dirs > best_dirs || (dirs == best_dirs && at.size() > best_n)) best_dirs = dirs, best_n = at.size(), hub = c, drawn_hub = own_disc;
   }
   // Two directions at least: one blade alone is any elongated shape (a wing, a leg).
   if (best_dirs < 2) return out;
-  // A rotor's blades are alike: the directions whose blades are as long as those of the most
-  // others (within kSameLength) are its blades; what else ends at the hub (the nose a propeller
-  // is on, its spinner) is not. A shape across the hub is the rotor's whatever its length (a
-  // nose or a tail ends at the hub, it is not centred on it).
   // The hub where the rotor's blades meet: the middle of the alike blades' inner ends. Looked
   // for at a helicopter's mast's middle (a small elongated element), the most directions met
   // there were the blades' two and the mast's own two halves; turned about that point, the
@@ -201,6 +196,10 @@ LocatedPart rotor_blades(const Rig& rig, int body) {
           if (!b.opposite) inner = inner + b.near, ++n;
     if (n > 0) hub = (1.0 / n) * inner;
   }
+  // A rotor's blades are alike: the directions whose blades are as long as those of the most
+  // others (within kSameLength) are its blades; what else ends at the hub (the nose a propeller
+  // is on, its spinner) is not. A shape across the hub is the rotor's whatever its length (a
+  // nose or a tail ends at the hub, it is not centred on it).
   const BladeSpread spread = spread_at(cand, ax, hub, tol);
   const std::vector<std::vector<Blade>>& groups = spread.groups;
   const std::vector<double>& len = spread.len;
