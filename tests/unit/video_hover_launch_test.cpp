@@ -158,6 +158,37 @@ TEST_CASE("tumbles: two leaves drawn apart fall, turn and drift each its own way
   CHECK(std::max(t[2], t[3]) >= 0.08 * diag);
 }
 
+TEST_CASE("tumbles: leaves tumbling in the wind on one leaf with no limbs: the figure tumbles itself, down and back in the canvas") {
+  // "leaves" names limbs the drawing has none of: a stand-in was found, and a fall moves no
+  // part (only drops and the figure itself fall): the leaf stood still and the ranker flagged
+  // every candidate 'no motion'.
+  const Drawing d("leaf_in_wind.svg");
+  MotionPlan plan = plan_from_prompt(parse_prompt("leaves tumbling in the wind"), d.rig, 1);
+  REQUIRE(!plan.actions.empty());
+  for (const PlannedAction& a : plan.actions) {
+    INFO(a.why);
+    CHECK(a.verb == "tumble");
+    CHECK(a.target == Target::Whole);
+  }
+  const int F = 25;
+  fit_plan(d.scene, d.rig, plan, F, 9);
+  const std::vector<Vec2> pts = animate_plan(d.scene, d.rig, plan, F);
+  const std::vector<size_t> leaf = {0, 1};
+  const RigBox b0 = frame_box(d.scene, pts, F, 0, leaf);
+  double fall = 0;
+  for (int f = 0; f < F; ++f) {
+    const RigBox b = frame_box(d.scene, pts, F, f, leaf);
+    CHECK(b.x0 >= 0);
+    CHECK(b.y0 >= 0);
+    CHECK(b.x1 <= 200);
+    CHECK(b.y1 <= 200);
+    fall = std::max(fall, b.centre().y - b0.centre().y);
+  }
+  CHECK(fall >= 0.08 * d.rig.figure.h());  // it goes down, the issue's floor at least
+  const RigBox last = frame_box(d.scene, pts, F, F - 1, leaf);
+  CHECK(last.centre().y == doctest::Approx(b0.centre().y).epsilon(0.01));  // and back: the loop closes
+}
+
 TEST_CASE("wheels: a scooter's plain wheels look the same turned though its column hangs from one; the body bounces") {
   const Drawing d("kick_scooter.svg");
   MotionPlan plan = plan_from_prompt(parse_prompt("the scooter's wheels spin"), d.rig, 1);

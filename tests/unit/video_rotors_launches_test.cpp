@@ -45,7 +45,7 @@ TEST_CASE("rotors: a turbine's three blades are found about the hub disc, each w
   const Drawing d("rotor_turbine.svg");
   const LocatedPart r = locate_part(d.rig, PartShape::Rotor);
   REQUIRE(r.lobes.size() == 3);
-  CHECK_FALSE(rotor_edge_on(r));
+  CHECK_FALSE(rotor_edge_on(d.rig, r));
   CHECK(r.paths == std::vector<int>{1, 2, 3, 4, 5, 6});  // the blades' fills and outlines
   for (const ArmLobe& l : r.lobes) {
     CHECK(l.pivot.x == doctest::Approx(100));  // the hub disc's middle
@@ -87,7 +87,7 @@ TEST_CASE("rotors: a propeller seen edge on squeezes along its line as |cos| of 
   const Drawing d("rotor_edge_on.svg");
   const LocatedPart r = locate_part(d.rig, PartShape::Rotor);
   REQUIRE(r.lobes.size() == 2);
-  CHECK(rotor_edge_on(r));
+  CHECK(rotor_edge_on(d.rig, r));
   const MotionPlan plan = plan_from_prompt(parse_prompt("the propeller spins"), d.rig, 1);
   REQUIRE(plan.actions.size() == 1);
   const PlannedAction& a = plan.actions[0];
@@ -122,7 +122,7 @@ TEST_CASE("rotors: a propeller drawn as two strokes crossing at its hub spins wh
   // (path 2, one stroke), nor the fuselage that crosses the wing at its middle.
   CHECK(r.paths == std::vector<int>{3, 4});
   REQUIRE(r.lobes.size() == 2);
-  CHECK_FALSE(rotor_edge_on(r));
+  CHECK_FALSE(rotor_edge_on(d.rig, r));
   for (const ArmLobe& l : r.lobes) {
     CHECK(l.pivot.x == doctest::Approx(170).epsilon(0.01));
     CHECK(l.pivot.y == doctest::Approx(100).epsilon(0.01));
@@ -136,6 +136,53 @@ TEST_CASE("rotors: a propeller drawn as two strokes crossing at its hub spins wh
   CHECK(t[2] == 0.0);  // the aerial
   CHECK(t[3] > 40.0);  // each stroke turns whole: its ends (28 px from the hub) go round
   CHECK(t[4] > 30.0);
+}
+
+TEST_CASE("rotors: a helicopter's main rotor, one bar on a mast, is seen edge on: it squeezes about its hub, never over the cabin") {
+  const Drawing d("rotor_helicopter.svg");
+  const LocatedPart r = locate_part(d.rig, PartShape::Rotor);
+  INFO(r.why);
+  // The bar (path 3), not the mast (path 2) nor the tail rotor (paths 4, 5: shorter blades).
+  CHECK(r.paths == std::vector<int>{3});
+  REQUIRE(!r.lobes.empty());
+  CHECK(r.lobes[0].pivot.x == doctest::Approx(90));  // the bar's middle, on the mast
+  CHECK(r.lobes[0].pivot.y == doctest::Approx(40).epsilon(0.01));
+  CHECK(rotor_edge_on(d.rig, r));
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the helicopter hovers, its rotor spinning"), d.rig, 1);
+  const PlannedAction* spin = nullptr;
+  for (const PlannedAction& a : plan.actions)
+    if (a.region == Region::Located) spin = &a;
+  REQUIRE(spin);
+  CHECK(spin->primitive == Primitive::Stretch);
+  const int F = 17;
+  const std::vector<Vec2> pts = animate_plan(d.scene, d.rig, plan, F);
+  double shortest = 1e9, longest = 0;
+  for (int f = 0; f < F; ++f) {
+    const std::vector<Vec2> q = points_at(d.scene, pts, F, 3, f);
+    double x0 = 1e9, x1 = -1e9, y1 = -1e9;
+    for (const Vec2& p : q) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+    shortest = std::min(shortest, x1 - x0), longest = std::max(longest, x1 - x0);
+    CHECK(0.5 * (x0 + x1) == doctest::Approx(90).epsilon(0.01));  // its middle stays on the hub
+    CHECK(y1 <= 43 + 0.5);  // never down over the cabin (its top at 70) or the window
+  }
+  CHECK(longest == doctest::Approx(140).epsilon(0.01));  // drawn width shrinks and grows back
+  CHECK(shortest < 0.5 * 140);
+}
+
+TEST_CASE("rotors: a tail rotor, two blades in a slanting line with nothing across them, is seen face on: it spins") {
+  // The boom the tail rotor sits on runs 45 degrees from its blades' line, not square to it.
+  const Drawing d("rotor_tail.svg");
+  const LocatedPart r = locate_part(d.rig, PartShape::Rotor);
+  INFO(r.why);
+  REQUIRE(r.lobes.size() == 2);
+  CHECK_FALSE(rotor_edge_on(d.rig, r));
+  for (const ArmLobe& l : r.lobes) {
+    CHECK(l.pivot.x == doctest::Approx(130));
+    CHECK(l.pivot.y == doctest::Approx(100));
+  }
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the rotor spins"), d.rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  CHECK(plan.actions[0].primitive == Primitive::Spin);
 }
 
 TEST_CASE("plumes: a cloud of smoke over a chimney rises; the chimney standing on the building holds") {

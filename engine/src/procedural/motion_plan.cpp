@@ -334,10 +334,11 @@ struct Builder {
       bend_region(a, target, base, mods, plural, note, which);
     if (std::string why = wings_left_out(verb, a); !why.empty()) return plan.notes.push_back(why);
     // A fall with nothing drawn apart to fall (no drops; "the maple leaf tumbles") is the figure's own (self_movers.h).
-    // So does a figure in pieces the prompt names ("the leaves tumble": a fall moved no limb).
+    // So does a figure in pieces the prompt names ("the leaves tumble": a fall moved no limb), or one with only a stand-in
+    // for the part named (a fall moves no part: "leaves tumbling in the wind" on one leaf moved nothing, every candidate flagged).
     if (const Verb* tumble = find_verb_by_name("tumble");
         a.primitive == Primitive::Fall && (target == Target::Repeated ? rig.repeated.empty() || repeated_are_the_figure(rig)
-                                           : target != Target::Whole && (a.parts.empty() || piece_count(figure_pieces(rig)) >= 2))) {
+                                           : target != Target::Whole && (a.parts.empty() || (!located && !note.empty()) || piece_count(figure_pieces(rig)) >= 2))) {
       Modifiers down = mods;
       down.vertical = -1;  // down and back
       for (const Action& t : tumble->actions) add(*tumble, t, Target::Whole, {}, "", down, false, words, false, "nothing drawn apart to fall: the figure falls itself");

@@ -62,6 +62,65 @@ std::vector<std::vector<Blade>> by_direction(const std::vector<Blade>& blades, V
   return groups;
 }
 
+// The blades about `hub` grouped by direction, each direction's length (its longest blade), and
+// the direction whose length the most others share (within kSameLength): a rotor's blades are
+// alike; what else ends at the hub (the nose a propeller is on, a rotor's mast) is not.
+struct BladeSpread {
+  std::vector<std::vector<Blade>> groups;
+  std::vector<double> len;
+  size_t best = 0, most = 0;
+};
+
+bool alike(double a, double b) { return std::max(a, b) <= (1 + kSameLength) * std::min(a, b); }
+
+BladeSpread spread_at(const std::vector<int>& cand, const std::vector<ElementAxis>& ax, Vec2 hub, double tol) {
+  BladeSpread s;
+  s.groups = by_direction(blades_at(cand, ax, hub, tol), hub);
+  for (const auto& g : s.groups) {
+    double l = 0;
+    for (const Blade& b : g) l = std::max(l, dist(b.near, b.far));
+    s.len.push_back(l);
+  }
+  for (size_t i = 0; i < s.len.size(); ++i) {
+    size_t n = 0;
+    for (double l : s.len) n += alike(l, s.len[i]) ? 1 : 0;
+    // Of classes as large, the longest blades (a bar's halves, not the mast's it sits on).
+    if (n > s.most || (n == s.most && s.len[i] > s.len[s.best])) s.most = n, s.best = i;
+  }
+  return s;
+}
+
+// Whether the rotor's spin axis lies in the picture's plane: blades all in one line through the
+// hub (`line`: its direction) held there by something running across that line: an elongated
+// element other than the blades (the body included) with an end at the hub, within
+// kSameDirection of square to the line: a helicopter's mast under its main rotor, a side view's
+// nose behind its propeller. A rotor's disc seen edge on projects to a line square to its axis;
+// two blades in line with nothing across them (a helicopter's tail rotor at the boom's end, its
+// blades slanting across the boom) are a two-bladed rotor seen face on.
+bool held_across(const Rig& rig, const std::set<int>& blades, Vec2 hub, double line, double tol) {
+  for (size_t i = 0; i < rig.elements.size(); ++i) {
+    if (blades.count(static_cast<int>(i))) continue;
+    const ElementAxis a = element_axis(rig.elements[i]);
+    if (a.elongation < kBladeElongation && !rig.elements[i].thin) continue;
+    if (std::min(dist(a.mid_a, hub), dist(a.mid_b, hub)) > tol) continue;
+    const double d = angle_between(line, std::atan2(a.mid_b.y - a.mid_a.y, a.mid_b.x - a.mid_a.x));
+    if (std::fabs(d - 90) <= kSameDirection) return true;
+  }
+  return false;
+}
+
+// Whether every lobe lies in line with the first, one way or the other; `line` its direction.
+bool lobes_in_line(const std::vector<ArmLobe>& lobes, double& line) {
+  if (lobes.empty()) return false;
+  const ArmLobe& f = lobes[0];
+  line = std::atan2(f.tip.y - f.pivot.y, f.tip.x - f.pivot.x);
+  for (const ArmLobe& l : lobes) {
+    const double a = angle_between(line, std::atan2(l.tip.y - l.pivot.y, l.tip.x - l.pivot.x));
+    if (a > kSameDirection && a < 180 - kSameDirection) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 LocatedPart rotor_blades(const Rig& rig, int body) {
@@ -92,6 +151,7 @@ LocatedPart rotor_blades(const Rig& rig, int body) {
   // no disc and no blade ending there.
   for (const ElementAxis& a : ax) looks.push_back({0.5 * (a.mid_a + a.mid_b), -1});
   size_t best_dirs = 0, best_n = 0;
+  bool drawn_hub = false;
   Vec2 hub;
   for (const auto& [at_point, drawn] : looks) {
     const bool disc = drawn >= 0;
@@ -116,29 +176,35 @@ LocatedPart rotor_blades(const Rig& rig, int body) {
     }
     const size_t dirs = by_direction(at, c).size();
     if (!own_disc && ends == 0 && dirs < 3) continue;
-    if (dirs > best_dirs || (dirs == best_dirs && at.size() > best_n)) best_dirs = dirs, best_n = at.size(), hub = c;
+    if (dirs > best_dirs || (dirs == best_dirs && at.size() > best_n)) best_dirs = dirs, best_n = at.size(), hub = c, drawn_hub = own_disc;
   }
   // Two directions at least: one blade alone is any elongated shape (a wing, a leg).
   if (best_dirs < 2) return out;
+  // The hub where the rotor's blades meet: the middle of the alike blades' inner ends. Looked
+  // for at a helicopter's mast's middle (a small elongated element), the most directions met
+  // there were the blades' two and the mast's own two halves; turned about that point, the
+  // blades and the mast swung through the cabin (twemoji's 1f681). Moved to the blades' inner
+  // ends, the mast only ends there: it is what holds the rotor, not a blade. A hub drawn apart
+  // (a disc the blades meet at) stays where it is drawn.
+  if (!drawn_hub) {
+    const BladeSpread first = spread_at(cand, ax, hub, tol);
+    Vec2 inner;
+    size_t n = 0;
+    for (size_t g = 0; g < first.groups.size(); ++g)
+      if (first.most >= 2 && alike(first.len[g], first.len[first.best]))
+        for (const Blade& b : first.groups[g])
+          if (!b.opposite) inner = inner + b.near, ++n;
+    if (n > 0) hub = (1.0 / n) * inner;
+  }
   // A rotor's blades are alike: the directions whose blades are as long as those of the most
   // others (within kSameLength) are its blades; what else ends at the hub (the nose a propeller
   // is on, its spinner) is not. A shape across the hub is the rotor's whatever its length (a
   // nose or a tail ends at the hub, it is not centred on it).
-  std::vector<std::vector<Blade>> groups = by_direction(blades_at(cand, ax, hub, tol), hub);
-  std::vector<double> len;
-  for (const auto& g : groups) {
-    double l = 0;
-    for (const Blade& b : g) l = std::max(l, dist(b.near, b.far));
-    len.push_back(l);
-  }
-  auto alike = [](double a, double b) { return std::max(a, b) <= (1 + kSameLength) * std::min(a, b); };
-  size_t best = 0, most = 0;
-  for (size_t i = 0; i < len.size(); ++i) {
-    size_t n = 0;
-    for (double l : len) n += alike(l, len[i]) ? 1 : 0;
-    if (n > most) most = n, best = i;
-  }
-  if (most < 2) return out;
+  const BladeSpread spread = spread_at(cand, ax, hub, tol);
+  const std::vector<std::vector<Blade>>& groups = spread.groups;
+  const std::vector<double>& len = spread.len;
+  const size_t best = spread.best;
+  if (spread.most < 2) return out;
   std::set<int> paths;
   std::string which;
   for (size_t gi = 0; gi < groups.size(); ++gi) {
@@ -171,24 +237,21 @@ LocatedPart rotor_blades(const Rig& rig, int body) {
   }
   out.paths.assign(paths.begin(), paths.end());
   out.why = std::to_string(out.lobes.size()) + " blade direction" + (out.lobes.size() > 1 ? "s" : "") + " (path " + which +
-            ") meeting at a hub at " + fmt_box(rig, RigBox{hub.x, hub.y, hub.x, hub.y}) + (rotor_edge_on(out) ? ", in one line: seen edge on" : "");
+            ") meeting at a hub at " + fmt_box(rig, RigBox{hub.x, hub.y, hub.x, hub.y}) + (rotor_edge_on(rig, out) ? ", in one line across what holds it: seen edge on" : "");
   return out;
 }
 
-bool rotor_edge_on(const LocatedPart& rotor) {
-  // Every direction in line with the first, one way or the other.
-  if (rotor.lobes.empty()) return false;
-  const ArmLobe& f = rotor.lobes[0];
-  const double d0 = std::atan2(f.tip.y - f.pivot.y, f.tip.x - f.pivot.x);
-  for (const ArmLobe& l : rotor.lobes) {
-    const double a = angle_between(d0, std::atan2(l.tip.y - l.pivot.y, l.tip.x - l.pivot.x));
-    if (a > kSameDirection && a < 180 - kSameDirection) return false;
-  }
-  return true;
+bool rotor_edge_on(const Rig& rig, const LocatedPart& rotor) {
+  double line = 0;
+  if (!lobes_in_line(rotor.lobes, line)) return false;
+  std::set<int> blades;
+  for (size_t i = 0; i < rig.elements.size(); ++i)
+    if (std::binary_search(rotor.paths.begin(), rotor.paths.end(), rig.elements[i].path)) blades.insert(static_cast<int>(i));
+  return held_across(rig, blades, rotor.lobes[0].pivot, line, kHubMeet * std::max(rig.figure.w(), rig.figure.h()));
 }
 
-void rotor_motion(const LocatedPart& rotor, Primitive& primitive, double& amp) {
-  if (rotor_edge_on(rotor)) primitive = Primitive::Stretch, amp = 1 - kEdgeOnMin;
+void rotor_motion(const Rig& rig, const LocatedPart& rotor, Primitive& primitive, double& amp) {
+  if (rotor_edge_on(rig, rotor)) primitive = Primitive::Stretch, amp = 1 - kEdgeOnMin;
   else primitive = Primitive::Spin, amp = 1;
 }
 

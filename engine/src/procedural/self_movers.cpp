@@ -47,8 +47,8 @@ std::string own_motion(const Rig& rig, const LocatedPart* located, Primitive& pr
     return "a plume rises: it swells up from its base";
   }
   if (!located || located->shape != PartShape::Rotor) return "";
-  rotor_motion(*located, primitive, amp);
-  return rotor_edge_on(*located) ? "a rotor seen edge on: its blades' length along their line shrinks and grows about the hub"
+  rotor_motion(rig, *located, primitive, amp);
+  return rotor_edge_on(rig, *located) ? "a rotor seen edge on: its blades' length along their line shrinks and grows about the hub"
                                  : "a rotor's blades spin about their hub";
 }
 
