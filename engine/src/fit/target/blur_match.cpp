@@ -17,7 +17,11 @@ constexpr double kMaxSigma = 2.0, kStep = 0.05;
 // px, best σ, residual ratio and the rest pose's PSNR: blurred σ 1.5 px at 512: 1.25 / 1.85
 // (theory sqrt(1 + 0.75²) = 1.25 / sqrt(1 + 1.5²) = 1.80), x0.06-0.14, 50-54 dB (with the
 // composed taps of loss_taps.h, bat: 1.25 / 1.70, x0.13 / x0.10, 52 / 48 dB; the same frames
-// lossless and not colour-corrected: 1.25 / 1.75, 57 / 61 dB); clean: 1.0 /
+// lossless and not colour-corrected: 1.25 / 1.75, 57 / 61 dB; the H.264 frames not
+// colour-corrected: 1.25 / 1.80, denoised or not: the colour correction, not the codec, takes
+// 512 px to 1.70, and tests/tools/video_blur_probe.py finds the codec's luma blur 1.50 as
+// applied; at 512, searched to 2.5, the best chroma σ is 2.4-2.5 with luma 1.70-1.80, x0.95-0.97, not
+// adopted); clean: 1.0 /
 // 1.05 (the codec's softness at full size), x1 / x0.86; JPEG quality 20: 1.15 / 1.5, 41-44 dB;
 // a first frame shifted 1-2 px (camera shake): 1.2 / 1.8 at x0.94 / x0.83 but 34-36 dB.
 constexpr double kMinGain = 0.9;
