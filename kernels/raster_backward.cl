@@ -392,7 +392,10 @@ inline int replay_band(__global const float4* L, __global const float4* B,
  * finish decides where a tape lies, never what it holds), and raster_backward reads it back
  * instead of replaying the band: one pass over the draws instead of two. A band whose tape
  * does not fit its local capacity or the pool gets the offset -1 and raster_backward replays
- * it; pool_used[0] ends as the total the bands asked for, so the host can grow the pool. */
+ * it. The pool holds one chunk of frames' tapes (the launch's): raster_backward reads them
+ * before the next chunk's raster_taped writes over them, and each chunk counts its entries in
+ * its own slot, pool_used[k0], which ends as the total its bands asked for, so the host can
+ * grow the pool. */
 __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
                            __global const int2* draw_chunks,   /* [n_draws] */
                            __global const int2* chunk_lines,   /* [n_chunks] */
@@ -409,7 +412,7 @@ __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
                            __global float4* pool, int pool_cap,
                            __global int* pool_draw,            /* [K][n_bands][n_draws] */
                            __global int2* pool_at,             /* [K][n_bands] (offset, length) */
-                           __global int* pool_used,            /* [1] */
+                           __global int* pool_used,            /* [K]: [k0] this chunk's */
                            int n_lines, int n_chunks, int n_draws, int n_bands, int width,
                            int height,
                            __global const int* draw_paint,     /* [n_draws] */
@@ -435,7 +438,7 @@ __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
                                pool_draw + (size_t)slot * n_draws, hlo, hhi, prod, last);
     int2 at = (int2)(-1, tp);
     if (tp <= tape_cap) {
-      const int off = atomic_add(pool_used, tp);
+      const int off = atomic_add(pool_used + k0, tp);
       if (off <= pool_cap - tp) {
         for (int i = 0; i < tp; ++i) {
           pool[off + i] = tape[i];
