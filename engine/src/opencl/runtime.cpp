@@ -154,6 +154,7 @@ cl::Program& ClRuntime::program(const std::vector<std::string>& files, const std
       built = true;
       ++loaded_from_cache_;
       compiled_in_child_ += from_child;
+      if (from_child) log::debug("opencl: %s compiled in a child process, loaded from the cache", key_files.c_str());
     } catch (const cl::Error&) {
       built = false;  // stale or foreign binary: fall back to source
     }
