@@ -114,9 +114,7 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     return b;
   };
   try {
-    // "fitter": compiled in a child when it is missing from the cache (opencl/compile_child.h).
-    cl::Program& prog =
-        rt_.program({"field.cl", "motion.cl", "regularise.cl", "adam.cl"}, kFitterProgramOptions, "fitter");
+    cl::Program& prog = rt_.program({"field.cl", "motion.cl", "regularise.cl", "adam.cl"}, kFitterProgramOptions, "fitter");
     k_motion_ = cl::Kernel(prog, "motion_forward");
     k_motion_back_ = cl::Kernel(prog, "motion_backward");
     k_smooth_ = cl::Kernel(prog, "smoothness");
