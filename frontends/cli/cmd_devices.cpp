@@ -8,6 +8,7 @@
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "cli/warm_kernels.h"
+#include "opencl/compile_child.h"
 #include "opencl/cpu_share.h"
 #include "opencl/kernel_cache.h"
 #include "opencl/runtime.h"
@@ -38,6 +39,7 @@ int cmd_devices(const std::vector<std::string>& argv) {
   const Args a = parse_args("devices", argv, {"--device", "--warm-for"}, {"--warm"});
   // The child that compiles one program for a fit (opencl/compile_child.h); not for users.
   if (const auto spec = a.get("--warm-for")) {
+    setenv(kCompileChildVar, "", 1);  // this is the child: it compiles in itself
     ClRuntime rt(a.get("--device").value_or("auto"));
     warm_for(rt, *spec);
     return 0;

@@ -29,11 +29,13 @@ bool compile_in_child(const std::string& spec, const std::string& device) {
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
-  // The environment without the variable: the child compiles in itself.
-  const std::string prefix = std::string(kCompileChildVar) + "=";
+  // The environment with the variable empty: the child compiles in itself (the CLI sets it
+  // only when it is unset).
+  std::string off = std::string(kCompileChildVar) + "=";
   std::vector<char*> envp;
   for (char** e = environ; e && *e; ++e)
-    if (std::strncmp(*e, prefix.c_str(), prefix.size()) != 0) envp.push_back(*e);
+    if (std::strncmp(*e, off.c_str(), off.size()) != 0) envp.push_back(*e);
+  envp.push_back(off.data());
   envp.push_back(nullptr);
   posix_spawn_file_actions_t fa;
   posix_spawn_file_actions_init(&fa);

@@ -28,7 +28,7 @@ inline const char* const kCompileChildVar = "SVGMOTION_COMPILE_CHILD";
 bool compile_child_enabled();
 
 // Runs `$SVGMOTION_COMPILE_CHILD devices --warm-for SPEC [--device DEVICE]` with its output
-// discarded and its environment inherited, without the variable (so the child compiles in
+// discarded and its environment inherited, the variable empty (so the child compiles in
 // itself), and waits for it. True when it exited 0. Never throws: a child that cannot start or
 // fails only means the caller compiles in its own process, as before.
 bool compile_in_child(const std::string& spec, const std::string& device);
