@@ -30,7 +30,8 @@ void warm(const std::string& device) {
   warm_fitter(rt);
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("warm: %d kernel programs compiled, %d already cached, %.1f s (cache: %s)\n",
-              rt.programs_built_from_source(), rt.programs_loaded_from_cache(), s, kernel_cache_dir().c_str());
+              rt.programs_built_from_source() + rt.programs_compiled_in_child(),
+              rt.programs_loaded_from_cache() - rt.programs_compiled_in_child(), s, kernel_cache_dir().c_str());
 }
 
 }  // namespace
