@@ -392,7 +392,10 @@ inline int replay_band(__global const float4* L, __global const float4* B,
  * finish decides where a tape lies, never what it holds), and raster_backward reads it back
  * instead of replaying the band: one pass over the draws instead of two. A band whose tape
  * does not fit its local capacity or the pool gets the offset -1 and raster_backward replays
- * it; pool_used[0] ends as the total the bands asked for, so the host can grow the pool. */
+ * it. The pool holds one chunk of frames' tapes (the launch's): raster_backward reads them
+ * before the next chunk's raster_taped writes over them, and each chunk counts its entries in
+ * its own slot, pool_used[k0], which ends as the total its bands asked for, so the host can
+ * grow the pool. */
 __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
                            __global const int2* draw_chunks,   /* [n_draws] */
                            __global const int2* chunk_lines,   /* [n_chunks] */
@@ -409,7 +412,7 @@ __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
                            __global float4* pool, int pool_cap,
                            __global int* pool_draw,            /* [K][n_bands][n_draws] */
                            __global int2* pool_at,             /* [K][n_bands] (offset, length) */
-                           __global int* pool_used,            /* [1] */
+                           __global int* pool_used,            /* [K]: [k0] this chunk's */
                            int n_lines, int n_chunks, int n_draws, int n_bands, int width,
                            int height,
                            __global const int* draw_paint,     /* [n_draws] */
@@ -435,7 +438,7 @@ __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
                                pool_draw + (size_t)slot * n_draws, hlo, hhi, prod, last);
     int2 at = (int2)(-1, tp);
     if (tp <= tape_cap) {
-      const int off = atomic_add(pool_used, tp);
+      const int off = atomic_add(pool_used + k0, tp);
       if (off <= pool_cap - tp) {
         for (int i = 0; i < tp; ++i) {
           pool[off + i] = tape[i];
@@ -475,7 +478,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               __global const float4* pool,        /* raster_taped's tapes */
                               __global int* pool_draw,            /* [K][n_bands][n_draws] */
                               __global const int2* pool_at,       /* [K][n_bands] */
-                              __global float4* partial,           /* [K][n_bands][n_lines] */
+                              __global float4* partial,           /* [chunk][n_bands][n_lines] */
                               __global int* overflow,             /* [1]: tape overflows */
                               int n_lines, int n_chunks, int n_draws, int n_bands, int width,
                               int height,
@@ -602,7 +605,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
             grow_hull2(gcell + r * width, &glo[r], &ghi[r], ca, cb);
             g += walk_line_grad(l, on, at, y0 + r, width, gcell + r * width);
           }
-          partial[((size_t)k * n_bands + band) * n_lines + j] = g;
+          partial[((size_t)(k - k0) * n_bands + band) * n_lines + j] = g;
         }
       }
       for (int e = e0; e < e1; ++e) gcell[(int)aux[e].x] = (float2)(0.0f);
@@ -610,12 +613,14 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
   }
 }
 
-/* ∂L/∂line: the sum of a line's band partials, over the bands that visited it, in order. */
+/* ∂L/∂line: the sum of a line's band partials, over the bands that visited it, in order. Run
+ * for each chunk of frames after its raster_backward (the launch's offset is its first frame):
+ * the partials are the chunk's only. */
 __kernel void gather_line_grads(__global const float4* lines, __global const int* line_chunk,
                                 __global const float4* bounds, __global const float4* partial,
                                 __global float4* line_grad, int n_lines, int n_chunks,
                                 int n_bands, int width, int height) {
-  const int j = get_global_id(0), k = get_global_id(1);
+  const int j = get_global_id(0), k = get_global_id(1), k0 = get_global_offset(1);
   if (j >= n_lines) return;
   const float4 l = lines[(size_t)k * n_lines + j];
   const float4 b = bounds[(size_t)k * n_chunks + line_chunk[j]];
@@ -627,7 +632,7 @@ __kernel void gather_line_grads(__global const float4* lines, __global const int
     const int y0 = band * BAND_H, rows = min(BAND_H, height - y0);
     const float fy0 = (float)y0, fy1 = (float)(y0 + rows);
     if (!band_reaches(b, fy0, fy1, (float)width)) continue; /* the band skipped it */
-    g += partial[((size_t)k * n_bands + band) * n_lines + j];
+    g += partial[((size_t)(k - k0) * n_bands + band) * n_lines + j];
   }
   line_grad[(size_t)k * n_lines + j] = g;
 }

@@ -1,6 +1,5 @@
 // `svgmotion devices`: the OpenCL devices this machine offers, and which `auto` picks;
 // `--warm` compiles and caches the kernel programs a default run uses, once, at set-up.
-#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -8,49 +7,44 @@
 
 #include "cli/cli_args.h"
 #include "cli/commands.h"
+#include "cli/warm_kernels.h"
+#include "opencl/compile_child.h"
 #include "opencl/cpu_share.h"
 #include "opencl/kernel_cache.h"
 #include "opencl/runtime.h"
-#include "raster/raster_cl.h"
-#include "raster/raster_plan.h"
-#include "scene/synthetic_scene.h"
+#include "raster/loss_taps.h"
 #include "svgmotion/device.h"
-#include "svgmotion/render_size.h"
 
 namespace svgm::cli {
 
 namespace {
 
-// Builds, and launches once so that PoCL compiles each kernel for its work-group size too, what
-// a default run builds: the raster program at the recolorer's and the fit's widths (256 px,
-// band height 16; 512 px and up, 8) with the default blur, and the fitter's program. A fit whose
-// blur is matched to a blurred target still builds its own taps then.
+// Builds, and launches every kernel of, what a default run builds: the raster program at the
+// recolorer's and the fit's widths (256 px, band height 16; 512 px and up, 8) with the default
+// blur, and the fitter's program (warm_kernels.h). A fit whose blur is matched to a blurred
+// target still builds its own taps then (in a child process: opencl/compile_child.h).
 void warm(const std::string& device) {
   const auto t0 = std::chrono::steady_clock::now();
   ClRuntime rt(device);
-  for (int width : {256, 512}) {
-    const Scene scene = synthetic_blobs(3, width, 1);
-    const RenderSize size = render_size(scene, width);
-    const RasterPlan plan = plan_raster(scene, size.view, size.width, size.height);
-    ClRaster r(rt, plan, 2);
-    const std::array<float, 4> white{1, 1, 1, 1};
-    r.set_rest_pose();
-    r.forward(ClRaster::Output::Rgba8, white);
-    r.forward(ClRaster::Output::Float, white);
-    const std::vector<float> target = r.read_image();  // set_targets keeps no copy
-    r.set_targets(target);
-    r.loss_and_gradient(1000.0f, white);
-  }
-  rt.program({"field.cl", "motion.cl", "regularise.cl", "adam.cl"}, kFitterProgramOptions);
+  for (int width : {256, 512}) warm_raster(rt, width, width, kLossSigma, kLossSigma, 1);
+  warm_fitter(rt);
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("warm: %d kernel programs compiled, %d already cached, %.1f s (cache: %s)\n",
-              rt.programs_built_from_source(), rt.programs_loaded_from_cache(), s, kernel_cache_dir().c_str());
+              rt.programs_built_from_source() + rt.programs_compiled_in_child(),
+              rt.programs_loaded_from_cache() - rt.programs_compiled_in_child(), s, kernel_cache_dir().c_str());
 }
 
 }  // namespace
 
 int cmd_devices(const std::vector<std::string>& argv) {
-  const Args a = parse_args("devices", argv, {"--device"}, {"--warm"});
+  const Args a = parse_args("devices", argv, {"--device", "--warm-for"}, {"--warm"});
+  // The child that compiles one program for a fit (opencl/compile_child.h); not for users.
+  if (const auto spec = a.get("--warm-for")) {
+    setenv(kCompileChildVar, "", 1);  // this is the child: it compiles in itself
+    ClRuntime rt(a.get("--device").value_or("auto"));
+    warm_for(rt, *spec);
+    return 0;
+  }
   if (a.has("--warm")) {
     warm(a.get("--device").value_or("auto"));
     return 0;

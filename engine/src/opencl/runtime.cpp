@@ -10,6 +10,7 @@
 #include <fstream>
 #include <optional>
 
+#include "opencl/compile_child.h"
 #include "opencl/kernel_cache.h"
 #include "opencl/kernel_sources.h"
 #include "svgmotion/error.h"
@@ -79,7 +80,7 @@ void say_compiling(const std::vector<std::string>& files, const fs::path& dir, b
 
 }  // namespace
 
-ClRuntime::ClRuntime(const std::string& device_spec, bool profiling) : profiling_(profiling) {
+ClRuntime::ClRuntime(const std::string& device_spec, bool profiling) : device_spec_(device_spec), profiling_(profiling) {
   const auto devices = list_devices();
   const size_t pick = select_device(devices, device_spec);
   info_ = devices[pick];
@@ -107,8 +108,8 @@ ClRuntime::ClRuntime(const std::string& device_spec, bool profiling) : profiling
   }
 }
 
-cl::Program& ClRuntime::program(const std::vector<std::string>& files,
-                                const std::string& options) {
+cl::Program& ClRuntime::program(const std::vector<std::string>& files, const std::string& options,
+                                const std::string& child_spec) {
   std::string source(kernel_source("prelude.cl"));
   std::string key_files;
   for (const auto& f : files) {
@@ -137,13 +138,23 @@ cl::Program& ClRuntime::program(const std::vector<std::string>& files,
   bool built = false;
   // A truncated or corrupt file reads as missing (kernel_cache.h); one the driver refuses
   // (another driver version) is rebuilt too; either way the rebuild rewrites the entry.
-  if (const auto bin = cached.empty() ? std::nullopt : read_cached_binary(cached)) {
+  std::optional<std::string> bin = cached.empty() ? std::nullopt : read_cached_binary(cached);
+  // Missing: a child compiles it, and launches its kernels (compile_child.h), when it can.
+  bool from_child = false;
+  if (!bin && !cached.empty() && !child_spec.empty() && compile_child_enabled()) {
+    say_compiling(files, dir, said_compiling_);
+    from_child = compile_in_child(child_spec, device_spec_);
+    if (from_child) bin = read_cached_binary(cached);
+  }
+  if (bin) {
     try {
       cl::Program::Binaries bins{std::vector<unsigned char>(bin->begin(), bin->end())};
       prog = cl::Program(context_, {device_}, bins);
       prog.build({device_}, options.c_str());
       built = true;
       ++loaded_from_cache_;
+      compiled_in_child_ += from_child;
+      if (from_child) log::debug("opencl: %s compiled in a child process, loaded from the cache", key_files.c_str());
     } catch (const cl::Error&) {
       built = false;  // stale or foreign binary: fall back to source
     }

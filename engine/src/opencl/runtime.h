@@ -39,7 +39,11 @@ class ClRuntime {
   // "compiling the OpenCL kernels (once, about N s)" (N: the last such build measured here).
   // The raster program's options vary with its blur taps (loss_tap_options); the fitter's
   // program takes kFitterProgramOptions.
-  cl::Program& program(const std::vector<std::string>& files, const std::string& options);
+  // `child_spec`: how `svgmotion devices --warm-for` makes the same program and launches its
+  // kernels; when given, the program is missing from the disk cache and compile_child_enabled(),
+  // a child process compiles it (opencl/compile_child.h) and this one loads the cached binary.
+  cl::Program& program(const std::vector<std::string>& files, const std::string& options,
+                       const std::string& child_spec = "");
 
   // Seconds spent compiling or loading programs so far (benchmarks report time without it).
   double compile_seconds() const { return compile_seconds_; }
@@ -49,6 +53,8 @@ class ClRuntime {
   // tell reuse from a silent rebuild.
   int programs_built_from_source() const { return built_from_source_; }
   int programs_loaded_from_cache() const { return loaded_from_cache_; }
+  // Of those loaded from the cache, how many a child process compiled first.
+  int programs_compiled_in_child() const { return compiled_in_child_; }
 
  private:
   DeviceInfo info_;
@@ -57,7 +63,8 @@ class ClRuntime {
   cl::CommandQueue queue_;
   std::map<std::string, cl::Program> programs_;
   double compile_seconds_ = 0;
-  int built_from_source_ = 0, loaded_from_cache_ = 0;
+  std::string device_spec_;
+  int built_from_source_ = 0, loaded_from_cache_ = 0, compiled_in_child_ = 0;
   bool said_compiling_ = false;  // "compiling the OpenCL kernels" was logged
   bool profiling_ = false;
 };

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "opencl/tuning.h"
+#include "raster/launch_groups.h"
 #include "raster/loss_tiles.h"
 #include "svgmotion/error.h"
 
@@ -68,11 +69,18 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double ren
   try {
     // One program for the forward and backward kernels: PoCL compiles it once, then the
     // binary comes from the cache.
+    // Missing from the cache, it is compiled in a child (opencl/compile_child.h) told how to
+    // make the same program: `svgmotion devices --warm-for` makes a ClRaster of this width,
+    // height and blur, and launches every kernel as this one will.
+    char child_spec[160];
+    std::snprintf(child_spec, sizeof child_spec, "raster %d %d %.17g %.17g %.17g", p.width, p.height, render_sigma_,
+                  chroma_sigma_, chroma_weight_);
     cl::Program& prog =
         rt_.program({"flatten.cl", "stroke.cl", "lines.cl", "raster.cl", "loss.cl",
                      "raster_backward.cl", "stroke_backward.cl"},
                     kernel_build_options(tuning) + loss_tap_options(render_sigma_, chroma_sigma_, chroma_weight_) +
-                        " -DLOSS_TILE=" + std::to_string(kLossTile));
+                        " -DLOSS_TILE=" + std::to_string(kLossTile),
+                    child_spec);
     program_ = &prog;
     local_budget_ = tuning.local_budget;
     k_flatten_ = cl::Kernel(prog, "flatten");
@@ -201,7 +209,7 @@ void ClRaster::enqueue_geometry(int first, int count) {
   const cl::NDRange at = first ? cl::NDRange(0, first) : cl::NullRange;
   if (p.n_flat > 0) launch("flatten", k_flatten_, cl::NDRange(round_up(p.n_flat, wg), K), cl::NullRange, at);
   if (!p.strokes.empty())
-    launch("stroke", k_stroke_, cl::NDRange(round_up(p.strokes.size(), 8), K), cl::NullRange, at);
+    launch("stroke", k_stroke_, cl::NDRange(round_up(p.strokes.size(), 8), K), kStrokeGroup, at);
   if (p.n_lines > 0) launch("gather_lines", k_lines_, cl::NDRange(round_up(p.n_lines, wg), K), cl::NullRange, at);
   if (!p.chunk_lines.empty())
     launch("chunk_bounds", k_bounds_, cl::NDRange(round_up(p.chunk_lines.size() / 2, wg), K), cl::NullRange, at);

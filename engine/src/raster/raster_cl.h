@@ -176,11 +176,15 @@ class ClRaster {
 
   bool backward_ready_ = false;
   int tape_cap_ = 0;
-  // The tape pool (raster_taped -> raster_backward): tapes, each band's per-draw offsets and
-  // its (offset, length), the entries the bands asked for, and that count as last read.
+  // The tape pool (raster_taped -> raster_backward): one chunk of frames' tapes (the loss
+  // pass's chunks take turns: a pool of 24 bytes an entry for every frame's tapes was 31 MB for
+  // the bundled example's 21 keyframes at 512 px), each band's per-draw offsets and its
+  // (offset, length), the entries each chunk's bands asked for (at its first frame), those
+  // counts as last read, and their largest.
   cl::Kernel k_taped_;
   cl::Buffer pool_, pool_aux_, pool_draw_, pool_at_, pool_used_;
   int pool_cap_ = 0;
+  std::vector<int> pool_asked_by_chunk_;
   int pool_asked_ = 0;
   cl::Event pool_read_;
   void resize_pool(int entries);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "raster/half_float.h"
+#include "raster/launch_groups.h"
 #include "raster/loss_tiles.h"
 #include "raster/raster_cl.h"
 #include "svgmotion/error.h"
@@ -27,7 +28,6 @@ void ClRaster::init_backward() {
   if (backward_ready_) return;
   const auto& p = plan_;
   const size_t K = static_cast<size_t>(frames_);
-  const size_t pixels = K * p.height * static_cast<size_t>(p.width);
   const int n_draws = static_cast<int>(p.draws.size());
   const int n_chunks = static_cast<int>(p.chunk_lines.size() / 2);
   try {
@@ -94,7 +94,8 @@ void ClRaster::init_backward() {
     set_args_at(k_backward_, 34, qr_tiles_);
     pool_draw_ = make(K * bands_ * std::max<size_t>(n_draws, 1) * sizeof(int));
     pool_at_ = make(K * bands_ * 2 * sizeof(int));
-    pool_used_ = make(sizeof(int));
+    pool_used_ = make(K * sizeof(int));  // per chunk, at its first frame
+    pool_asked_by_chunk_.assign(K, 0);
     set_args(k_taped_, lines_, draw_chunks_, chunk_lines_, draw_color_, draw_rule_, bounds_,
              cl::Local(static_cast<size_t>(band_h_) * (p.width + 2) * sizeof(float)),
              cl::Local(static_cast<size_t>(band_h_) * p.width * 4 * sizeof(float)),
@@ -106,8 +107,9 @@ void ClRaster::init_backward() {
                 cl::Local(static_cast<size_t>(band_h_) * p.width * sizeof(int)),
                 cl::Local(static_cast<size_t>(tape_cap_) * 2 * sizeof(float)));
     // Argument 30 (the pool's (pixel, V)) is set by resize_pool.
-    // A first pool of a quarter of the frames' pixels; it grows to what the bands ask for.
-    resize_pool(static_cast<int>(std::min<size_t>(pixels / 4 + 1, kMaxPoolEntries)));
+    // A first pool of a quarter of a chunk's pixels (it holds one chunk's tapes at a time); it
+    // grows to what the bands of a chunk ask for.
+    resize_pool(static_cast<int>(std::min<size_t>(static_cast<size_t>(chunk_) * p.height * p.width / 4 + 1, kMaxPoolEntries)));
     set_args(k_gather_lines_, lines_, line_chunk_, bounds_, partial_, line_grad_, p.n_lines,
              n_chunks, bands_, W, H);
     set_args(k_gather_points_, line_grad_, pt_first_, pt_entries_, grad_pts_, p.n_lines, p.n_pts);
@@ -123,7 +125,6 @@ void ClRaster::init_backward() {
 }
 
 void ClRaster::make_loss_buffers() {
-  const size_t K = static_cast<size_t>(frames_);
   // Q and R (halves, by tiles) and their tile index: made at their size by
   // prepare_loss_constants, which knows how many tiles it stores.
   q_ = make(0);
@@ -133,7 +134,10 @@ void ClRaster::make_loss_buffers() {
   const size_t chunk_pixels = static_cast<size_t>(chunk_) * plan_.height * plan_.width;
   xres_ = make(chunk_pixels * kResidualPixelBytes);
   resid_ = make(chunk_pixels * kResidualPixelBytes);
-  partial_ = make(K * plan_.n_lines * static_cast<size_t>(bands_) * 4 * sizeof(float));
+  // The bands' partial gradients of the lines, a chunk's frames only: gather_line_grads sums
+  // them after each chunk's backward pass (every frame's were 20 MB for the bundled example's
+  // 21 keyframes at 512 px, K x lines x bands x 16 B).
+  partial_ = make(static_cast<size_t>(chunk_) * plan_.n_lines * static_cast<size_t>(bands_) * 4 * sizeof(float));
   if (!backward_ready_) return;  // init_backward binds them with the rest
   set_args_at(k_blur_y_loss_, 0, xres_);
   set_args_at(k_taped_, 11, xres_);
@@ -180,6 +184,8 @@ bool ClRaster::finish_pool_read() {
   if (!pool_read_()) return false;
   pool_read_.wait();
   pool_read_ = cl::Event();
+  // The most a chunk's bands asked for (each chunk's count is at its first frame; the rest 0).
+  pool_asked_ = *std::max_element(pool_asked_by_chunk_.begin(), pool_asked_by_chunk_.end());
   return true;
 }
 
@@ -209,7 +215,7 @@ void ClRaster::forward_taped(const std::array<float, 4>& background) {
   events_.clear();
   auto& q = rt_.queue();
   k_taped_.setArg(13, cl_float4{{background[0], background[1], background[2], background[3]}});
-  q.enqueueFillBuffer(pool_used_, 0, 0, sizeof(int));
+  q.enqueueFillBuffer(pool_used_, 0, 0, static_cast<size_t>(frames_) * sizeof(int));
   enqueue_geometry();
 }
 
@@ -371,23 +377,26 @@ void ClRaster::enqueue_loss_and_gradient(float weight, const std::array<float, 4
     k_loss_total_.setArg(5, active_);
     k_blur_y_loss_.setArg(8, active_);
     q.enqueueFillBuffer(overflow_, 0, 0, sizeof(int));
-    // A chunk of frames at a time (the launch's offset is its first frame): X' and E' are the
-    // chunk's; the tapes, row sums and partial gradients are every frame's.
+    // A chunk of frames at a time (the launch's offset is its first frame): X' and E', the
+    // tapes and the lines' partial gradients are the chunk's; the row sums every frame's. Each
+    // frame's sums are its own, so the chunks give the same bits as one pass over every frame.
     for (int k0 = 0; k0 < active_; k0 += chunk_) {
       const int n = std::min(chunk_, active_ - k0);
       launch("raster_taped", k_taped_, cl::NDRange(bands_ * group_, n), cl::NDRange(group_, 1), cl::NDRange(0, k0));
-      launch("blur_y_loss_rows", k_blur_y_loss_, cl::NDRange(round_up(p.height, 16), n), cl::NullRange,
+      launch("blur_y_loss_rows", k_blur_y_loss_, cl::NDRange(round_up(p.height, 16), n), kRowGroup,
              cl::NDRange(0, k0));
       launch("raster_backward", k_backward_, cl::NDRange(bands_ * group_, n), cl::NDRange(group_, 1),
              cl::NDRange(0, k0));
+      launch("gather_line_grads", k_gather_lines_, cl::NDRange(round_up(p.n_lines, 64), n), cl::NullRange,
+             cl::NDRange(0, k0));
     }
     launch("loss_total", k_loss_total_, cl::NDRange(1));
-    launch("gather_line_grads", k_gather_lines_, cl::NDRange(round_up(p.n_lines, 64), K));
     launch("gather_point_grads", k_gather_points_, cl::NDRange(round_up(p.n_pts, 64), K));
     if (!p.strokes.empty())
-      launch("stroke_backward", k_stroke_back_, cl::NDRange(round_up(p.strokes.size(), 8), K));
+      launch("stroke_backward", k_stroke_back_, cl::NDRange(round_up(p.strokes.size(), 8), K), kStrokeGroup);
     launch("flatten_backward", k_flatten_back_, cl::NDRange(round_up(p.n_cp, 64), K));
-    q.enqueueReadBuffer(pool_used_, CL_FALSE, 0, sizeof(int), &pool_asked_, nullptr, &pool_read_);
+    q.enqueueReadBuffer(pool_used_, CL_FALSE, 0, static_cast<size_t>(frames_) * sizeof(int), pool_asked_by_chunk_.data(),
+                        nullptr, &pool_read_);
   } catch (const cl::Error& e) {
     throw Error(std::string("OpenCL backward pass failed on ") + rt_.info().name + ": " +
                 e.what() + " " + cl_status_name(e.err()));

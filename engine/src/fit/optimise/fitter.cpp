@@ -114,7 +114,7 @@ Fitter::Fitter(ClRuntime& rt, const Scene& scene, const TargetFrames& target, co
     return b;
   };
   try {
-    cl::Program& prog = rt_.program({"field.cl", "motion.cl", "regularise.cl", "adam.cl"}, kFitterProgramOptions);
+    cl::Program& prog = rt_.program({"field.cl", "motion.cl", "regularise.cl", "adam.cl"}, kFitterProgramOptions, "fitter");
     k_motion_ = cl::Kernel(prog, "motion_forward");
     k_motion_back_ = cl::Kernel(prog, "motion_backward");
     k_smooth_ = cl::Kernel(prog, "smoothness");
@@ -319,7 +319,9 @@ LossTerms Fitter::fit_iteration() {
     enqueue_stable(q, k_contain_, cl::NDRange(round_up(n_cp, 64), Ka));
     if (ncoh) enqueue_stable(q, k_cohesion_, cl::NDRange(round_up(n_cp, 64), Ka));
     // 4. Back through the motion model to homographies and offsets.
-    enqueue_stable(q, k_motion_back_, cl::NDRange(round_up(G_, 8), Ka));
+    // Groups of 8 whatever the group count, so that its compiled work-group function is the same
+    // for every drawing (as the raster's stroke kernels; opencl/compile_child.h).
+    q.enqueueNDRangeKernel(k_motion_back_, cl::NullRange, cl::NDRange(round_up(G_, 8), Ka), cl::NDRange(8, 1));
     // 5. Smoothness adds to the offset gradient.
     enqueue_stable(q, k_smooth_, cl::NDRange(round_up(n_cp, 64), Ka));
     // 6. Back through the fields to their coefficients (the free offsets' gradient is the
