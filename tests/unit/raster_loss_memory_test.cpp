@@ -139,8 +139,10 @@ TEST_CASE("loss chunks: one, two or every frame at a time give the same bits, an
     CHECK(losses[0][0] > 0);
     CHECK(losses[0][2] > losses[0][0]);  // the frames differ (the shift grows with the frame)
     // Each frame more in a chunk is one more frame of X' and E': 2 x 12 bytes per pixel
-    // (packed RGB floats, kernels/loss.cl).
-    const size_t frame = size_t{kW} * kH * 24;
+    // (packed RGB floats, kernels/loss.cl), and of the lines' partial gradients: 4 floats a
+    // line a band (bands of 16 rows, raster_cl.h; gather_line_grads sums them chunk by chunk).
+    const size_t bands = (kH + 15) / 16;
+    const size_t frame = size_t{kW} * kH * 24 + size_t(plan.n_lines) * bands * 16;
     CHECK(bytes[1] - bytes[0] == frame);
     CHECK(bytes[2] - bytes[0] == 2 * frame);
   }
