@@ -11,7 +11,8 @@ here=$(cd "$(dirname "$0")" && pwd)
 bin=${1:-$here/../../build/frontends/svgmotion}
 work=${2:-/tmp/svgm_fitcheck}
 shift 2 2>/dev/null
-shared=$here/../../../shared
+shared=${SHARED_DIR:-$here/../../../shared}  # SHARED_DIR: ../shared seen from a checkout elsewhere (a worktree)
+[ -d "$shared/tools" ] || { echo "$(basename "$0"): $shared: no ../shared (set SHARED_DIR)" >&2; exit 1; }
 svgs=("$@")
 [[ ${#svgs[@]} -gt 0 ]] || svgs=("$shared"/bench/aniclipart/*.svg)
 mkdir -p "$work"

@@ -21,7 +21,8 @@ done
 shift $((OPTIND - 1))
 svgs=()
 for a in "$@"; do svgs+=("$a"); done
-shared=$here/../../../shared
+shared=${SHARED_DIR:-$here/../../../shared}  # SHARED_DIR: ../shared seen from a checkout elsewhere (a worktree)
+[ -d "$shared/tools" ] || { echo "$(basename "$0"): $shared: no ../shared (set SHARED_DIR)" >&2; exit 1; }
 py=/usr/bin/python3
 mkdir -p "$work"
 printf '%-14s %7s %7s %7s %7s %7s %7s %8s %7s %7s\n' svg psnr min_iou hires min_hi bf min_bf between seconds peak_mb

@@ -18,7 +18,7 @@ set -u
 here=$(cd "$(dirname "$0")" && pwd)
 build=${1:-$here/../../build}
 out=${2:-/tmp/motion_prompts}
-bench=$here/../../../shared/bench
+bench=${BENCH_DIR:-$here/../../../shared/bench}
 B=$build/frontends/svgmotion
 [ -x "$B" ] || { echo "motion_prompts.sh: $B: not built" >&2; exit 1; }
 [ -d "$bench" ] || { echo "motion_prompts.sh: $bench: no bench folder" >&2; exit 1; }
