@@ -3,8 +3,6 @@
 // Errors (svgm::Error and anything else) print "svgmotion: <message>" on stderr and exit 1;
 // usage mistakes exit 2; a result that must not be trusted (svgm::Rejected) exits 3 or 4.
 // `svgmotion CMD --help` prints the command's options. Nothing is written by a command that fails (outputs are atomic).
-#include <unistd.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -14,7 +12,6 @@
 #include "cli/cli_args.h"
 #include "cli/commands.h"
 #include "cli/malloc_policy.h"
-#include "opencl/compile_child.h"
 #include "pipeline/batch.h"
 #include "report/rerun_command.h"
 #include "svgmotion/error.h"
@@ -270,13 +267,6 @@ const char* command_help(const std::string& cmd) {
 
 int main(int argc, char** argv) {
   svgm::cli::use_returning_malloc();  // freed frames go back to the system (malloc_policy.h)
-  // Kernels missing from the cache are compiled by a child svgmotion (opencl/compile_child.h),
-  // unless the environment says otherwise (SVGMOTION_COMPILE_CHILD= compiles in the process).
-  char exe[4096];
-  if (const ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1); n > 0) {
-    exe[n] = '\0';
-    setenv(svgm::kCompileChildVar, exe, 0);
-  }
   svgm::follow_batch_parent();  // an item of `svgmotion batch` ends with its batch
   // Bad input must give our one error line, not FFmpeg's or OpenCV's chatter before it. These
   // are read when OpenCV first loads its video back end, i.e. after this point.

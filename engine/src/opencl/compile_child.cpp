@@ -17,13 +17,15 @@ extern char** environ;
 namespace svgm {
 
 bool compile_child_enabled() {
+  // Absolute only: posix_spawn does not search PATH, and a relative name would run whatever file
+  // of that name the working directory holds.
   const char* exe = std::getenv(kCompileChildVar);
-  return exe && *exe;
+  return exe && exe[0] == '/';
 }
 
 bool compile_in_child(const std::string& spec, const std::string& device) {
+  if (!compile_child_enabled()) return false;
   const char* exe = std::getenv(kCompileChildVar);
-  if (!exe || !*exe) return false;
   std::vector<std::string> args{exe, "devices", "--warm-for", spec};
   if (!device.empty()) args.insert(args.end(), {"--device", device});
   std::vector<char*> argv;
