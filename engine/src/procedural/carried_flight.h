@@ -1,0 +1,33 @@
+// Flight that carries the whole figure (issue 35): a hover is the body held up in the air by the
+// beat of its wings or its rotor, a buzz its body darting about a small area. The whole
+// figure's motion is then what the verb says, not an accent of the limbs' beat: a prompt naming
+// the wings ("the hummingbird hovers, its wings a blur") or the rotor in another clause ("the
+// helicopter hovers, its rotor whirring") left the bob out as it leaves out a wave's hop, and
+// the body hung still; measured with the wings, whose beat alone passed the visible floor, a
+// helicopter's bob stayed at 4 % of its height, too little to read as a hover.
+#pragma once
+
+#include <string>
+
+#include "motion/motion_verbs.h"
+#include "procedural/motion_plan.h"
+#include "procedural/prompt_parse.h"
+
+namespace svgm {
+
+// Whether verb `v` carries the whole figure (the verb table's hover and buzz).
+bool carries_figure(const Verb& v);
+
+// Whether `v`'s whole-figure actions in clause `c` stay when the prompt names the limbs that
+// move: `v` carries the figure and the part its clause names (`part_word`, empty when none) is
+// not what the verb is said of. After the verb ("hovers, its wings a blur") the part is how the
+// figure does it; before it ("its rotor whirring", "its wings buzzing") the part is the verb's
+// subject and moves alone.
+bool keeps_whole(const Verb& v, const Clause& c, const std::string& part_word);
+
+// Whether `a` is a carrying verb's motion of the whole figure: fit_plan measures it against the
+// visible floor by itself (not with the wings' beat of the same words) and never scales it down
+// with the limbs (motion_fit.cpp).
+bool carried_whole(const PlannedAction& a);
+
+}  // namespace svgm
