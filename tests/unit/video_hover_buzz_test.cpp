@@ -90,8 +90,11 @@ TEST_CASE("hovers: a bird whose prompt names its wings keeps the hover's bob; th
   const int F = 25;
   fit_plan(d.scene, d.rig, plan, F, 9);
   const std::vector<double> t = d.travel(plan, F);
-  // The body (path 0) and the head (path 3) move by the bob alone, past the visible floor.
-  CHECK(t[0] >= 0.08 * diagonal(d.rig) * (1 - 1e-6));
+  // The body (path 0) and the head (path 3) move by the bob alone: raised to the visible floor,
+  // then cut only with every action by the plan's scale (the wings' fast beat between 9
+  // keyframes; fit_plan's warning names it). Left out as an accent of the named wings, 0.
+  CHECK(plan.scale >= 0.8);
+  CHECK(t[0] >= 0.08 * diagonal(d.rig) * plan.scale * (1 - 1e-6));
   CHECK(t[3] == doctest::Approx(t[0]).epsilon(1e-6));
   CHECK(t[1] > t[0]);  // a wing beats as it bobs
 }
@@ -122,8 +125,10 @@ TEST_CASE("buzzes: a bee darts about in a figure eight, across once a loop and u
   const Vec2 q1 = path_middle(d.scene, pts, F, 0, (F - 1) / 4) - rest, q3 = path_middle(d.scene, pts, F, 0, 3 * (F - 1) / 4) - rest;
   CHECK(q1.x == doctest::Approx(-q3.x).epsilon(1e-6));
   CHECK(std::fabs(q1.y - q3.y) < 1e-6 * d.rig.figure.h());
-  // The body's dart is visible by itself, the wings' beat aside.
-  CHECK(test::path_travel(d.scene, pts, F)[0] >= 0.08 * diagonal(d.rig) * (1 - 1e-6));
+  // The body's dart is raised to the visible floor by itself, the wings' beat aside (then cut
+  // only with every action by the plan's scale, as above).
+  CHECK(plan.scale >= 0.8);
+  CHECK(test::path_travel(d.scene, pts, F)[0] >= 0.08 * diagonal(d.rig) * plan.scale * (1 - 1e-6));
 }
 
 TEST_CASE("buzzes: said of a part the drawing does not have, the figure does not dart for it") {

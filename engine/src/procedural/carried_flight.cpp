@@ -20,7 +20,6 @@ size_t position(const std::vector<std::string>& words, const std::string& word) 
 
 bool keeps_whole(const Verb& v, const Clause& c, const std::string& part_word) {
   if (!carries_figure(v)) return false;
-  if (part_word.empty()) return true;
   // By the clause's words, not the noun's after_verb: a clause with no verb of its own joins the
   // one before it ("hovers, its wings a blur"), its nouns read before the verb was.
   std::vector<std::string> words;
@@ -33,7 +32,12 @@ bool keeps_whole(const Verb& v, const Clause& c, const std::string& part_word) {
       const std::string said = c.verb_words[i].substr(0, c.verb_words[i].find_first_of(" -"));
       verb_at = std::min(verb_at, position(words, said));
     }
-  return position(words, part_word) > verb_at;
+  // Said of a part ("its rotors whirring": a possessive before the verb), found or not: the
+  // figure does not dart about for it. Unfound, a drone's rotors whirring had it dart instead of
+  // hovering.
+  for (size_t i = 0; i < verb_at; ++i)
+    if (words[i] == "its" || words[i] == "his" || words[i] == "her" || words[i] == "their") return false;
+  return part_word.empty() || position(words, part_word) > verb_at;
 }
 
 bool carried_whole(const PlannedAction& a) {

@@ -18,11 +18,11 @@ namespace svgm {
 // Whether verb `v` carries the whole figure (the verb table's hover and buzz).
 bool carries_figure(const Verb& v);
 
-// Whether `v`'s whole-figure actions in clause `c` stay when the prompt names the limbs that
-// move: `v` carries the figure and the part its clause names (`part_word`, empty when none) is
-// not what the verb is said of. After the verb ("hovers, its wings a blur") the part is how the
-// figure does it; before it ("its rotor whirring", "its wings buzzing") the part is the verb's
-// subject and moves alone.
+// Whether `v`'s whole-figure actions in clause `c` stay, whatever limbs the prompt names: `v`
+// carries the figure and is not said of a part. A part after the verb ("hovers, its wings a
+// blur") is how the figure does it; before it ("its rotor whirring", "its wings buzzing": a
+// possessive before the verb, the part found or not) it is the verb's subject and moves alone.
+// `part_word`: the part the clause names, empty when none.
 bool keeps_whole(const Verb& v, const Clause& c, const std::string& part_word);
 
 // Whether `a` is a carrying verb's motion of the whole figure: fit_plan measures it against the

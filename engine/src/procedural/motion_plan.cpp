@@ -709,7 +709,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
           b.plan.notes.push_back(why);
           continue;
         }
-        if (i > 0 && act.target == Target::Whole && (names_limbs || located) && (is_limb_target(v->actions[0].target) || paddles(*v, rig) || located) && !keeps_whole(*v, c, target_word)) {
+        if (i > 0 && act.target == Target::Whole && (carries_figure(*v) ? !keeps_whole(*v, c, target_word) : (names_limbs || located) && (is_limb_target(v->actions[0].target) || paddles(*v, rig) || located))) {
           accents_left_out.push_back(v->name + "'s " + primitive_name(act.primitive));
           continue;
         }
