@@ -70,7 +70,8 @@ while IFS=$'\t' read -r name set file prompt move still backdrop; do
     openmoji) svg=$emoji/node_modules/openmoji/color/svg/$file ;;
     bench) svg=$bench/$file
       [ -d "$bench" ] || { echo "motion_emoji.sh: $bench: no bench folder (set BENCH_DIR)" >&2; exit 1; } ;;
-    *) echo "motion_emoji.sh: $name: unknown set '$set' (twemoji, openmoji or bench)" >&2; exit 1 ;;
+    data) svg=$here/../data/$file ;;  # our own test drawings (a helicopter: both emoji are held out)
+    *) echo "motion_emoji.sh: $name: unknown set '$set' (twemoji, openmoji, bench or data)" >&2; exit 1 ;;
   esac
   d=$out/$name
   total=$((total + 1))

@@ -21,6 +21,11 @@ const std::vector<Verb> kVerbs = {
   {"fly",     {"fly", "flie", "flew"},          {{P::Swing, T::Arms, 26, 2, Pr::Mirrored}, {P::Bob, T::Whole, 0.05, 1}}, P::Swing},
   {"flutter", {"flutter"},                      {{P::Swing, T::Arms, 16, 5, Pr::Mirrored}}, P::Swing},
   {"hover",   {"hover"},                        {{P::Swing, T::Arms, 18, 4, Pr::Mirrored}, {P::Bob, T::Whole, 0.04, 1}}, P::Swing},
+  // The sound of wings or blades beating fast. Said of a flyer ("the bee buzzes about"), its wings
+  // beat fast and its body darts about a small area: across once a loop and up and down twice, a
+  // figure eight. Said of a part ("its rotor whirring"), that part moves (a rotor spins:
+  // rotor_blades.h). Not "hum" nor "drone": a person hums a tune (WordNet: speak).
+  {"buzz",    {"buzz", "whir", "whirr", "whiz", "whizz"}, {{P::Swing, T::Arms, 16, 6, Pr::Mirrored}, {P::Slide, T::Whole, 0.07, 1}, {P::Bob, T::Whole, 0.05, 2}}, P::Swing},
   {"soar",    {"soar", "glid"},                 {{P::Rock, T::Whole, 5, 1}, {P::Bob, T::Whole, 0.04, 1}, {P::Swing, T::Arms, 8, 1, Pr::Mirrored}}, P::Swing},
   {"wave",    {"wav", "greet", "goodby"},       {{P::Swing, T::Arms, 35, 2, Pr::OneSide}}, P::Swing},
   {"clap",    {"clap"},                         {{P::Swing, T::Arms, 22, 4, Pr::Mirrored}}, P::Swing},

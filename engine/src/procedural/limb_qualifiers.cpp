@@ -8,8 +8,8 @@ namespace svgm {
 
 namespace {
 
-// The flight verbs whose arms' action is a wing beat (the verb table's fly, hover and soar).
-bool beats_wings_in_flight(const Verb& v) { return v.name == "fly" || v.name == "hover" || v.name == "soar"; }
+// The flight verbs whose arms' action is a wing beat (the verb table's fly, hover, soar and buzz).
+bool beats_wings_in_flight(const Verb& v) { return v.name == "fly" || v.name == "hover" || v.name == "soar" || v.name == "buzz"; }
 
 // A head part off the figure's middle by less than this share of its width shows no facing.
 constexpr double kHeadOffCentre = 0.1;

@@ -10,6 +10,7 @@
 #include <numeric>
 #include <set>
 
+#include "procedural/carried_flight.h"
 #include "procedural/invisible_spin.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/support_band.h"
@@ -118,7 +119,8 @@ std::string turn_broken(const MotionPlan& plan, int frames, int K) {
 // bobbed more than its legs moved (share of the motion on the legs 0.35).
 void accents_follow_limbs(MotionPlan& plan) {
   for (auto& a : plan.actions) {
-    if (a.target != Target::Whole || a.primitive == Primitive::Spin || a.primitive == Primitive::Turn) continue;
+    // A hover's bob is the hover itself (carried_flight.h), not an accent: it keeps the floor.
+    if (a.target != Target::Whole || a.primitive == Primitive::Spin || a.primitive == Primitive::Turn || carried_whole(a)) continue;
     // No limbs of the same words: nothing to follow. With a default of 1 every whole-figure
     // motion raised to the visible floor (a duck's bob at 305 %) was set back to 100 %.
     double limbs = HUGE_VAL;
@@ -190,7 +192,9 @@ MotionPlan only(const MotionPlan& plan, const std::vector<size_t>& keep) {
 // walk's legs, arms and bob grow together), but none with a turn or a fall (whole turns are
 // never scaled; falling elements leave the picture whatever their size) and none that only
 // spins. A spin beside other actions (a car's drive: its slide and its wheels) is measured by
-// those: the spinning points are exempt, and a spin's whole turns ignore the scale.
+// those: the spinning points are exempt, and a spin's whole turns ignore the scale. A hover's
+// or a buzz's motion of the whole figure is a clause of its own (carried_flight.h): the wings'
+// beat passing the floor does not make the body's bob visible.
 std::vector<std::vector<size_t>> measured_clauses(const MotionPlan& plan) {
   std::vector<std::vector<size_t>> out;
   std::vector<char> done(plan.actions.size(), 0);
@@ -199,7 +203,8 @@ std::vector<std::vector<size_t>> measured_clauses(const MotionPlan& plan) {
     std::vector<size_t> clause;
     bool measurable = true, scalable = false;
     for (size_t j = i; j < plan.actions.size(); ++j)
-      if (plan.actions[j].verb == plan.actions[i].verb && plan.actions[j].words == plan.actions[i].words) {
+      if (plan.actions[j].verb == plan.actions[i].verb && plan.actions[j].words == plan.actions[i].words &&
+          carried_whole(plan.actions[j]) == carried_whole(plan.actions[i])) {
         clause.push_back(j);
         done[j] = 1;
         const Primitive p = plan.actions[j].primitive;

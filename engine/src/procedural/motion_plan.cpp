@@ -10,6 +10,7 @@
 #include <set>
 
 #include "svgmotion/error.h"
+#include "procedural/carried_flight.h"
 #include "procedural/figure_pieces.h"
 #include "procedural/invisible_spin.h"
 #include "procedural/gait_travel.h"
@@ -704,11 +705,11 @@ MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t
           restated.push_back("'" + c.text + "'");
           break;
         }
-        if (std::string why = arms_left_out(*v, i, b.figure, c.figure, rig); !why.empty()) {
+        if (std::string why = retarget ? "" : arms_left_out(*v, i, b.figure, c.figure, rig); !why.empty()) {  // a named part moves
           b.plan.notes.push_back(why);
           continue;
         }
-        if (i > 0 && act.target == Target::Whole && (names_limbs || located) && (is_limb_target(v->actions[0].target) || paddles(*v, rig) || located)) {
+        if (i > 0 && act.target == Target::Whole && (carries_figure(*v) ? !keeps_whole(*v, c, target_word) : (names_limbs || located) && (is_limb_target(v->actions[0].target) || paddles(*v, rig) || located))) {
           accents_left_out.push_back(v->name + "'s " + primitive_name(act.primitive));
           continue;
         }
@@ -795,6 +796,5 @@ MotionPlan plan_from_steps(const std::vector<ExplicitStep>& steps, const Rig& ri
   }
   return b.plan;
 }
-
 
 }  // namespace svgm
