@@ -5,10 +5,12 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "procedural/eye_cue.h"
 #include "procedural/gait_travel.h"
 #include "procedural/motion_plan.h"
+#include "procedural/motion_plan_internal.h"
 
 #include "motion_drawing.h"
 using namespace svgm;
@@ -63,6 +65,27 @@ TEST_CASE("gait travel: a direction said, 'on the spot', the striding legs named
   // No facing known (a stick figure seen from the front): the gait stays in place, as before.
   const Drawing man("stick_figure.svg");
   CHECK(slide_ways(plan_from_prompt(parse_prompt("the man walks"), man.rig, 1)).empty());
+}
+
+TEST_CASE("gait travel: an animal filling its canvas, its travel held there, steps visibly on its body") {
+  Drawing d("eye_tail.svg");  // 8 units of room each side of a 204-unit figure
+  apply_eye_cue(d.rig, d.scene, d.scene);
+  MotionPlan plan = plan_from_prompt(parse_prompt("the animal walks"), d.rig, 1);
+  const int F = 25;
+  fit_plan(d.scene, d.rig, plan, F, 9);
+  // Its gait without the travel: the legs' steps and the bob alone.
+  MotionPlan body = plan;
+  int travels = 0;
+  for (auto& a : body.actions)
+    if (a.goes) a.amp = 0, ++travels;
+  REQUIRE(travels == 1);
+  double farthest = 0;
+  for (double t : svgm::test::path_travel(d.scene, animate_plan(d.scene, d.rig, body, F), F)) farthest = std::max(farthest, t);
+  const double diagonal = std::hypot(d.rig.figure.w(), d.rig.figure.h());
+  CHECK(farthest >= 0.999 * motion_plan_internal::kVisibleTravel * diagonal);
+  bool noted = false;
+  for (const auto& n : plan.notes) noted = noted || n.find("gait on the body raised") != std::string::npos;
+  CHECK(noted);
 }
 
 }  // TEST_SUITE
