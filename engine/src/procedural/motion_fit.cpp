@@ -565,6 +565,16 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
           plan.actions[i].one_sided = side;
         }
       }
+    // A travel (a figure going somewhere: goes, inches) uses the room the canvas leaves, not the
+    // 0.8 step under it: halved between the scale kept and the one broken, four times. Cut by
+    // 0.8 from a reach of 15 %, an ant's march went 12 % where 13.4 % fitted.
+    if (!all && best > 0 && best < scale && (plan.actions[i].goes || plan.actions[i].inches))
+      for (double hi = std::min(scale, best / 0.8), k = 0; k < 4; ++k) {
+        const double mid = 0.5 * (best + hi);
+        MotionPlan at = one;
+        for (size_t j : together) at.actions[j].scale = mid;
+        (broken(at).empty() ? best : hi) = mid;
+      }
     // A climb with no room above (a launch from a figure at the canvas's top) is left out when
     // its words move the figure otherwise (the launch going away, smaller): kept at the smallest
     // scale, it still left the canvas and shrank every motion with it to half.
