@@ -567,13 +567,15 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
       }
     // A travel (a figure going somewhere: goes, inches) uses the room the canvas leaves, not the
     // 0.8 step under it: halved between the scale kept and the one broken, four times. Cut by
-    // 0.8 from a reach of 15 %, an ant's march went 12 % where 13.4 % fitted.
+    // 0.8 from a reach of 15 %, an ant's march went 12 % where 13.4 % fitted. Each scale tried
+    // must fit with the other motions too: alone, a rabbit's travel took the room its hops
+    // needed, and the whole motion was cut to 80 %.
     if (!all && best > 0 && best < scale && (plan.actions[i].goes || plan.actions[i].inches))
       for (double hi = std::min(scale, best / 0.8), k = 0; k < 4; ++k) {
         const double mid = 0.5 * (best + hi);
-        MotionPlan at = one;
-        for (size_t j : together) at.actions[j].scale = mid;
-        (broken(at).empty() ? best : hi) = mid;
+        MotionPlan at = one, with_all = plan;  // alone and with the rest (a hop beside it)
+        for (size_t j : together) at.actions[j].scale = with_all.actions[j].scale = mid;
+        (broken(at).empty() && broken(with_all).empty() ? best : hi) = mid;
       }
     // A climb with no room above (a launch from a figure at the canvas's top) is left out when
     // its words move the figure otherwise (the launch going away, smaller): kept at the smallest
