@@ -100,6 +100,35 @@ TEST_CASE("elongated parts: a rose droops at its neck, the top of its one stem; 
   CHECK(t[3] > 5.0);   // the petal drawn on it
 }
 
+TEST_CASE("elongated parts: a plant that nods turns its bloom about the top of its stem, the stem and leaf still") {
+  const Drawing d("rose_stem.svg");
+  const ParsedPrompt prompt = parse_prompt("the rose nods");
+  REQUIRE(prompt.clauses[0].figure == FigureClass::Plant);
+  const MotionPlan plan = plan_from_prompt(prompt, d.rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  const PlannedAction& a = plan.actions[0];
+  CHECK(a.region == Region::Located);
+  REQUIRE(a.lobes.size() == 1);
+  CHECK(a.lobes[0].pivot.x == doctest::Approx(100));
+  CHECK(a.lobes[0].pivot.y == doctest::Approx(95));
+  // Two nods a loop: at t = 1/8 (frame 2 of 17) the first is at its full angle. The head turns
+  // whole about (100, 95): its bottom (that point) stays, its top (100, 25), 70 above it,
+  // moves the chord 2 * 70 * sin(angle / 2).
+  const int F = 17;
+  const std::vector<Vec2> pts = animate_plan(d.scene, d.rig, plan, F);
+  const size_t per = pts.size() / F;
+  size_t head = 0;
+  for (int p = 0; p < 2; ++p)
+    for (const auto& sp : d.scene.paths[p].subpaths) head += sp.points.size();
+  const Vec2 bottom = pts[2 * per + head], top = pts[2 * per + head + 3];  // "M 100 95 C 60 95 60 25 100 25"
+  CHECK(std::hypot(bottom.x - 100, bottom.y - 95) < 1e-6);
+  const double angle = std::fabs(plan.amplitude(a)) * M_PI / 180;
+  CHECK(std::hypot(top.x - 100, top.y - 25) == doctest::Approx(2 * 70 * std::sin(angle / 2)).epsilon(1e-3));
+  const auto t = d.travel(plan);
+  CHECK(t[0] == 0.0);  // the stem
+  CHECK(t[1] == 0.0);  // the leaf
+}
+
 TEST_CASE("elongated parts: a sheaf of two stems has no one bloom: it bends from its base as before") {
   const Scene s = read_svg_string(
       R"(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200"><g>

@@ -5,10 +5,12 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "procedural/eye_cue.h"
 #include "procedural/gait_travel.h"
 #include "procedural/motion_plan.h"
+#include "procedural/motion_plan_internal.h"
 
 #include "motion_drawing.h"
 using namespace svgm;
@@ -36,9 +38,10 @@ TEST_CASE("gait travel: an animal facing left (its eye) walks and crawls to the 
     CAPTURE(prompt);
     MotionPlan plan = plan_from_prompt(parse_prompt(prompt), d.rig, 1);
     CHECK(slide_ways(plan) == std::vector<int>{-1});
-    // A travel's amplitude: at least 8 % of the figure's width (kTravelReach; a crawl's own creep raised to it).
+    // A travel's amplitude: at least kTravelReach of the figure's width (a crawl's own creep raised
+    // to it; a walk's added slide not cut by Builder::add's jitter).
     for (const auto& a : plan.actions)
-      if (a.primitive == Primitive::Slide) CHECK(a.amp >= 0.08 * 0.85);
+      if (a.primitive == Primitive::Slide) CHECK(a.amp >= kTravelReach);
     const int F = 25;
     fit_plan(d.scene, d.rig, plan, F, 9);
     const std::vector<Vec2> pts = animate_plan(d.scene, d.rig, plan, F);
@@ -63,6 +66,27 @@ TEST_CASE("gait travel: a direction said, 'on the spot', the striding legs named
   // No facing known (a stick figure seen from the front): the gait stays in place, as before.
   const Drawing man("stick_figure.svg");
   CHECK(slide_ways(plan_from_prompt(parse_prompt("the man walks"), man.rig, 1)).empty());
+}
+
+TEST_CASE("gait travel: an animal filling its canvas, its travel held there, steps visibly on its body") {
+  Drawing d("eye_tail.svg");  // 8 units of room each side of a 204-unit figure
+  apply_eye_cue(d.rig, d.scene, d.scene);
+  MotionPlan plan = plan_from_prompt(parse_prompt("the animal walks"), d.rig, 1);
+  const int F = 25;
+  fit_plan(d.scene, d.rig, plan, F, 9);
+  // Its gait without the travel: the legs' steps and the bob alone.
+  MotionPlan body = plan;
+  int travels = 0;
+  for (auto& a : body.actions)
+    if (a.goes) a.amp = 0, ++travels;
+  REQUIRE(travels == 1);
+  double farthest = 0;
+  for (double t : svgm::test::path_travel(d.scene, animate_plan(d.scene, d.rig, body, F), F)) farthest = std::max(farthest, t);
+  const double diagonal = std::hypot(d.rig.figure.w(), d.rig.figure.h());
+  CHECK(farthest >= 0.999 * motion_plan_internal::kVisibleTravel * diagonal);
+  bool noted = false;
+  for (const auto& n : plan.notes) noted = noted || n.find("gait on the body raised") != std::string::npos;
+  CHECK(noted);
 }
 
 }  // TEST_SUITE

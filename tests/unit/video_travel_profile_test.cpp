@@ -96,4 +96,39 @@ TEST_CASE("travel: a caterpillar that crawls, told or not where, stretches ahead
   }
 }
 
+TEST_CASE("travel: a crawl fitted to a canvas it fills keeps its ends planted in both steps, at every frame") {
+  Drawing d("eye_tail.svg");  // 8 units of room each side of a 204-unit figure: the canvas cuts the travel
+  apply_eye_cue(d.rig, d.scene, d.scene);
+  MotionPlan plan = plan_from_prompt(parse_prompt("the caterpillar crawls"), d.rig, 1);
+  const int F = 25;  // t = f / 24
+  fit_plan(d.scene, d.rig, plan, F, 9);
+  double slide = 0, stretch = 0;
+  for (const auto& a : plan.actions)
+    if (a.inches) (a.primitive == Primitive::Slide ? slide : stretch) = plan.amplitude(a);
+  REQUIRE(slide > 0);
+  CHECK(stretch == doctest::Approx(slide));  // scaled as one: the stretch is the slide's step
+  const std::vector<Vec2> pts = animate_plan(d.scene, d.rig, plan, F);
+  // Going left: the rear is the right end, the front the left. The second step (frames 0..8):
+  // stretching to frame 4, the rear where it stood; gathering to frame 8, the front where it
+  // reached. The first step (frames 16..24, from behind): stretching to frame 20, gathering to 24.
+  for (int f : {1, 2, 3, 4}) CHECK(x_span(pts, F, f).second == doctest::Approx(x_span(pts, F, 0).second));
+  for (int f : {5, 6, 7, 8}) CHECK(x_span(pts, F, f).first == doctest::Approx(x_span(pts, F, 4).first));
+  for (int f : {17, 18, 19, 20}) CHECK(x_span(pts, F, f).second == doctest::Approx(x_span(pts, F, 16).second));
+  for (int f : {21, 22, 23, 24}) CHECK(x_span(pts, F, f).first == doctest::Approx(x_span(pts, F, 20).first));
+  CHECK(x_span(pts, F, 6).second < x_span(pts, F, 4).second - 0.01 * d.rig.figure.w());  // the rear did gather up
+}
+
+TEST_CASE("travel: a crawl's own words are whole words ('creepy' or 'crawlspace' send nothing crawling)") {
+  Drawing d("eye_tail.svg");
+  apply_eye_cue(d.rig, d.scene, d.scene);
+  auto inches = [&](const char* prompt) {
+    const MotionPlan plan = plan_from_prompt(parse_prompt(prompt), d.rig, 1);
+    return std::any_of(plan.actions.begin(), plan.actions.end(), [](const PlannedAction& a) { return a.inches; });
+  };
+  CHECK(inches("the box inches to the left"));
+  CHECK(inches("the box crept to the left"));
+  CHECK_FALSE(inches("the creepy box moves to the left"));
+  CHECK_FALSE(inches("the box moves to the left out of the crawlspace"));
+}
+
 }  // TEST_SUITE

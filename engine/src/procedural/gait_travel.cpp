@@ -1,6 +1,7 @@
 // Which way a figure goes on its gait when the prompt does not say (see gait_travel.h).
 #include "procedural/gait_travel.h"
 
+#include <cctype>
 #include <sstream>
 #include <vector>
 
@@ -70,12 +71,21 @@ int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, s
 namespace {
 
 // Whether `text` says a crawl's own word ("crawls", "creeps", "crept", "inches"): said of any
-// figure, a creature's gait (a caterpillar is no class the lexicon knows: an object).
+// figure, a creature's gait (a caterpillar is no class the lexicon knows: an object). Whole words
+// only, a stem and its endings: by prefix, "a creepy doll moves" and "crawlspace" or "inchoate"
+// sent a figure crawling.
 bool says_crawl(const std::string& text) {
   std::istringstream in(text);
-  for (std::string w; in >> w;)
-    for (const char* stem : {"crawl", "creep", "crept", "inch"})
-      if (w.rfind(stem, 0) == 0) return true;
+  for (std::string w; in >> w;) {
+    std::string word;
+    for (char ch : w)
+      if (std::isalpha(static_cast<unsigned char>(ch))) word += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (word == "crept") return true;
+    for (const std::string stem : {"crawl", "creep", "inch"})
+      if (word.rfind(stem, 0) == 0)
+        for (const char* ending : {"", "s", "es", "ed", "ing"})
+          if (word == stem + ending) return true;
+  }
   return false;
 }
 

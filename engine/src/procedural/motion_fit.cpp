@@ -120,7 +120,12 @@ std::string turn_broken(const MotionPlan& plan, int frames, int K) {
 void accents_follow_limbs(MotionPlan& plan) {
   for (auto& a : plan.actions) {
     // A hover's bob is the hover itself (carried_flight.h), not an accent: it keeps the floor.
-    if (a.target != Target::Whole || a.primitive == Primitive::Spin || a.primitive == Primitive::Turn || carried_whole(a)) continue;
+    // A travel (a figure going somewhere: PlannedAction::goes, inches) is no accent either: cut
+    // with a crocodile's legs (their bend folded at full size), its walk went 64 % as far as the
+    // canvas allowed.
+    if (a.target != Target::Whole || a.primitive == Primitive::Spin || a.primitive == Primitive::Turn || carried_whole(a) ||
+        a.goes || a.inches)
+      continue;
     // No limbs of the same words: nothing to follow. With a default of 1 every whole-figure
     // motion raised to the visible floor (a duck's bob at 305 %) was set back to 100 %.
     double limbs = HUGE_VAL;
@@ -133,6 +138,30 @@ void accents_follow_limbs(MotionPlan& plan) {
     std::snprintf(line, sizeof line, "%s (%s) of the whole figure scaled to %.0f %% with its limbs' swing", a.verb.c_str(),
                   primitive_name(a.primitive), limbs * 100);
     plan.notes.push_back(line);
+  }
+}
+
+// The actions scaled with action i as one: a crawl's slide and stretch (PlannedAction::inches) of
+// the same words, whose steps plant the ends only while the stretch is the size of the slide's
+// step (travel_profile.h); any other action alone. Scaled apart (the canvas cut the slide, which
+// reaches behind the figure, and not the stretch, which reaches only ahead), the planted ends
+// slipped.
+std::vector<size_t> scaled_with(const MotionPlan& plan, size_t i) {
+  const PlannedAction& a = plan.actions[i];
+  if (!a.inches) return {i};
+  std::vector<size_t> out;
+  for (size_t j = 0; j < plan.actions.size(); ++j)
+    if (plan.actions[j].inches && plan.actions[j].verb == a.verb && plan.actions[j].words == a.words) out.push_back(j);
+  return out;
+}
+
+// Each crawl's slide and stretch at the smaller of their scales (scaled_with): smaller, the crawl
+// keeps to the room either kept.
+void tie_crawl_scales(MotionPlan& plan) {
+  for (size_t i = 0; i < plan.actions.size(); ++i) {
+    double least = plan.actions[i].scale;
+    for (size_t j : scaled_with(plan, i)) least = std::min(least, plan.actions[j].scale);
+    for (size_t j : scaled_with(plan, i)) plan.actions[j].scale = least;
   }
 }
 
@@ -223,6 +252,7 @@ struct TravelCheck {
   const Scene& scene;
   const Rig& rig;
   const std::vector<char>& exempt;
+  const std::vector<char>& by_curve;
   int frames, K_hi;
   double floor() const { return kVisibleTravel * std::hypot(rig.figure.w(), rig.figure.h()); }
   double percent(double travel) const { return 100 * travel / std::max(std::hypot(rig.figure.w(), rig.figure.h()), 1e-9); }
@@ -233,6 +263,17 @@ struct TravelCheck {
   // Whether the fitter follows `one` between K_hi keyframes (steps and turns; not the canvas).
   bool follows(const MotionPlan& one) const {
     return limit_broken_steps(scene, animate_plan(scene, rig, one, frames), exempt, frames, K_hi).empty() && turn_broken(one, frames, K_hi).empty();
+  }
+  // The travel `clause` keeps, alone, once cut by 0.8 at a time until it keeps every limit (the
+  // canvas, the fitter's steps), as fit_scales would cut it; 0 when kScaleAttempts cuts do not do.
+  double travel_kept(const MotionPlan& plan, const std::vector<size_t>& clause) const {
+    MotionPlan one = only(plan, clause);
+    for (int attempt = 0; attempt <= kScaleAttempts; ++attempt) {
+      const std::vector<Vec2> pts = animate_plan(scene, rig, one, frames);
+      if (limit_broken(scene, pts, exempt, by_curve, frames, K_hi).empty()) return largest_travel(pts, exempt, frames);
+      for (size_t j : clause) one.actions[j].scale *= 0.8;
+    }
+    return 0;
   }
   // The travel `clause` (alone in `one`) keeps once cut by 0.8 at a time until the fitter
   // follows it, as fit_scales would cut it; 0 when kScaleAttempts cuts do not do.
@@ -348,6 +389,28 @@ bool spins_in_place(const MotionPlan& plan, const std::vector<size_t>& clause) {
   return spins && accents_only;
 }
 
+// The actions of `clause` the visible floor raises: all of them, but for a traveller whose
+// travel (its slide going somewhere, PlannedAction::goes or inches) the canvas keeps under the
+// floor, those that move it on its body (its legs' steps, its bob, a swim's wave), measured
+// without the travel. Measured with it, a turtle filling its canvas "plodding along" had its
+// legs at the lexicon's size, under the floor, and its 15 % travel cut by the canvas to under
+// the floor too: it stood nearly still. `held_by` gets why (for the note); empty when the
+// clause is measured whole. A crawl's stretch goes with its slide (scaled_with): no body left.
+std::vector<size_t> gait_on_body(const TravelCheck& c, const MotionPlan& plan, const std::vector<size_t>& clause, std::string* held_by) {
+  std::vector<size_t> travel, body;
+  for (size_t j : clause) {
+    const PlannedAction& a = plan.actions[j];
+    ((a.goes || a.inches) && a.parts.empty() && (a.primitive == Primitive::Slide || a.inches) ? travel : body).push_back(j);
+  }
+  if (travel.empty() || body.empty()) return clause;
+  const double kept = c.travel_kept(plan, travel);
+  if (kept >= c.floor()) return clause;
+  char line[160];
+  std::snprintf(line, sizeof line, " (its travel held to %.1f %% by the canvas)", c.percent(kept));
+  *held_by = line;
+  return body;
+}
+
 // Too small to see: the moving parts travel at least kVisibleTravel of the figure's size. Each
 // clause grows as a whole, by at most kMaxBoost, measured again after each raise: a swing's
 // chord (2 r sin(a / 2)) and a bend's reach grow slower than their angle, and one raise by
@@ -361,23 +424,28 @@ void raise_to_visible(const TravelCheck& c, MotionPlan& plan) {
       slow_to_follow(c, plan, clause);
       continue;
     }
-    double travel = c.travel(plan, clause), boost = 1;
+    // A traveller the canvas holds (a figure filling its picture): its gait must read on its
+    // body, its legs' steps and its bob raised to the floor without the travel (gait_on_body).
+    std::string held_by;
+    const std::vector<size_t> raised = gait_on_body(c, plan, clause, &held_by);
+    double travel = c.travel(plan, raised), boost = 1;
     const double first = travel;
     // The largest raise the clause's turns allow (kMaxRaisedTurn), with kMaxBoost's.
     double most = kMaxBoost;
-    for (size_t j : clause)
+    for (size_t j : raised)
       if (turns_degrees(plan.actions[j]) && std::fabs(plan.amplitude(plan.actions[j])) > 1e-9)
         most = std::min(most, std::max(1.0, kMaxRaisedTurn / std::fabs(plan.amplitude(plan.actions[j]))));
     for (int round = 0; round < kRaiseRounds && travel > 0 && travel < floor && boost < most - 1e-9; ++round) {
       const double step = std::min(most / boost, kRaiseAim * floor / travel);
-      for (size_t j : clause) plan.actions[j].scale *= step;
+      for (size_t j : raised) plan.actions[j].scale *= step;
       boost *= step;
-      travel = c.travel(plan, clause);
+      travel = c.travel(plan, raised);
     }
     if (boost > 1) {
-      char line[240];
-      std::snprintf(line, sizeof line, "%s raised to %.0f %%: it moved %.1f %% of the figure's size, too little to see",
-                    plan.actions[clause.front()].verb.c_str(), boost * 100, c.percent(first));
+      char line[300];
+      std::snprintf(line, sizeof line, "%s%s raised to %.0f %%: it moved %.1f %% of the figure's size, too little to see%s",
+                    plan.actions[clause.front()].verb.c_str(), held_by.empty() ? "" : "'s gait on the body", boost * 100,
+                    c.percent(first), held_by.c_str());
       plan.notes.push_back(line);
     }
     slow_to_follow(c, plan, clause);
@@ -449,7 +517,7 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
   // amplitude is cut. Cut to follow 15 keyframes, a butterfly's wings, a snake and a skier moved
   // 11-64 % of what their verbs ask, too little to see.
   const int K_hi = std::min(frames, 2 * (K - 1) + 1);
-  const TravelCheck check{scene, rig, exempt, frames, K_hi};
+  const TravelCheck check{scene, rig, exempt, by_curve, frames, K_hi};
   raise_to_visible(check, plan);
   std::vector<std::string> cut(plan.actions.size());  // why each action was scaled down ("": it was not)
   unfold_region_bends(scene, rig, plan, frames, cut);
@@ -464,14 +532,20 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
   // Each action alone first, then all together.
   for (size_t i = 0; i <= plan.actions.size(); ++i) {
     const bool all = i == plan.actions.size();
-    if (all) accents_follow_limbs(plan);
+    if (all) {
+      accents_follow_limbs(plan);
+      tie_crawl_scales(plan);
+    }
     if (!all && (plan.actions[i].primitive == Primitive::Spin || plan.actions[i].primitive == Primitive::Turn)) continue;
     const std::string what = all ? "the motion" : plan.actions[i].verb + " (" + primitive_name(plan.actions[i].primitive) + ")";
     // The largest scale (from the current one down by 0.8) at which `one` keeps the limits, and
     // why the first scale tried did not; -1 when none of kScaleAttempts does.
+    const std::vector<size_t> together = all ? std::vector<size_t>{} : scaled_with(plan, i);
+    auto in = [](const std::vector<size_t>& v, size_t j) { return std::find(v.begin(), v.end(), j) != v.end(); };
     auto search = [&](MotionPlan one, double start, std::string* first_why) {
       double scale = start;
       for (int attempt = 0; attempt <= kScaleAttempts; ++attempt, scale *= 0.8) {
+        for (size_t j : together) one.actions[j].scale = scale;
         if (!all) one.actions[i].scale = scale;
         else one.scale = scale;
         const std::string why = broken(one);
@@ -480,7 +554,7 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
       }
       return -1.0;
     };
-    MotionPlan one = all ? plan : only(plan, {i});
+    MotionPlan one = all ? plan : only(plan, together);
     double& scale = all ? plan.scale : plan.actions[i].scale;
     std::string first_why;
     double best = search(one, scale, &first_why);
@@ -498,6 +572,18 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
           plan.actions[i].one_sided = side;
         }
       }
+    // A travel (a figure going somewhere: goes, inches) uses the room the canvas leaves, not the
+    // 0.8 step under it: halved between the scale kept and the one broken, four times. Cut by
+    // 0.8 from a reach of 15 %, an ant's march went 12 % where 13.4 % fitted. Each scale tried
+    // must fit with the other motions too: alone, a rabbit's travel took the room its hops
+    // needed, and the whole motion was cut to 80 %.
+    if (!all && best > 0 && best < scale && (plan.actions[i].goes || plan.actions[i].inches))
+      for (double hi = std::min(scale, best / 0.8), k = 0; k < 4; ++k) {
+        const double mid = 0.5 * (best + hi);
+        MotionPlan at = one, with_all = plan;  // alone and with the rest (a hop beside it)
+        for (size_t j : together) at.actions[j].scale = with_all.actions[j].scale = mid;
+        (broken(at).empty() && broken(with_all).empty() ? best : hi) = mid;
+      }
     // A climb with no room above (a launch from a figure at the canvas's top) is left out when
     // its words move the figure otherwise (the launch going away, smaller): kept at the smallest
     // scale, it still left the canvas and shrank every motion with it to half.
@@ -508,8 +594,9 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
     }
     if (best < 0) {
       for (size_t j = 0; j < plan.actions.size(); ++j)
-        if ((all || j == i) && cut[j].empty()) cut[j] = first_why;
+        if ((all || in(together, j)) && cut[j].empty()) cut[j] = first_why;
       scale *= std::pow(0.8, kScaleAttempts);
+      for (size_t j : together) plan.actions[j].scale = scale;
       plan.warnings.push_back(what + " " + first_why + " even at " + std::to_string(static_cast<int>(scale * 100)) + " % of its size");
       whole_failed = whole_failed || (!all && plan.actions[i].target == Target::Whole);
       continue;
@@ -518,13 +605,14 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
       plan.notes.push_back(what + " swings to one side only: the other " + first_why);
     if (best < scale) {
       for (size_t j = 0; j < plan.actions.size(); ++j)
-        if ((all || j == i) && cut[j].empty()) cut[j] = first_why;
+        if ((all || in(together, j)) && cut[j].empty()) cut[j] = first_why;
       char line[240];
       std::snprintf(line, sizeof line, "%s scaled to %.0f %%: at full size %s %s", all ? "all amplitudes" : ("the amplitude of " + what).c_str(),
                     best * 100, all ? "the motion" : "it", first_why.c_str());
       plan.notes.push_back(line);
     }
     scale = best;
+    for (size_t j : together) plan.actions[j].scale = best;
   }
   // The keyframes the fitter needs for the motion as scaled.
   const int need = keyframes_to_follow(scene, animate_plan(scene, rig, plan, frames), plan, exempt, frames, K, K_hi);

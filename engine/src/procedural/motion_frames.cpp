@@ -100,6 +100,15 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
   }
 }
 
+// The whole figure's motion `so_far` with `m`, the motion of its action `a`, added: after it,
+// but a crawl's stretch (PlannedAction::inches) before it. The stretch is about the rear where it
+// stands at rest, so it comes first, before the slide (and any other motion of the figure)
+// carries it, whatever the plan's order; applied after the slide, it pivoted about the rest rear
+// while the rear was elsewhere, and the planted ends slipped while the body gathered up.
+Affine compose_whole(const Affine& so_far, const Affine& m, const PlannedAction& a) {
+  return a.inches && a.primitive == Primitive::Stretch ? so_far * m : m * so_far;
+}
+
 // The motion of piece k (box `box`) of a figure moved apart (figure_pieces.h): the action's own,
 // every other piece turning and drifting the other way and each a little shorter than the one
 // before (to 3/4), so no two pieces move in step.
@@ -687,8 +696,8 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         shallower.scale = a.scale * plan.scale;
         whole = rigid(shallower, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
       } else if (a.parts.empty()) {
-        whole = rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
-        for (size_t k = 0; k < whole_of.size(); ++k) whole_of[k] = piece_motion(a, amp, k, t, piece_box[k], rig.figure, W, H) * whole_of[k];
+        whole = compose_whole(whole, rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H), a);
+        for (size_t k = 0; k < whole_of.size(); ++k) whole_of[k] = compose_whole(whole_of[k], piece_motion(a, amp, k, t, piece_box[k], rig.figure, W, H), a);
       }
       for (size_t i = 0; i < a.parts.size(); ++i) {
         const RigPart& P = rig.parts[a.parts[i]];

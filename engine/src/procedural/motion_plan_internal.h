@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "procedural/motion_plan.h"
+#include "procedural/part_locator.h"
 #include "rank/pixel_ranker.h"
 
 namespace svgm::motion_plan_internal {
@@ -175,6 +176,9 @@ int spin_symmetry(const Rig& rig, const std::vector<int>& parts);
 // The parts target `t` (or, for Target::Named, `noun`) means, with a note when a fallback had
 // to stand in (plan_targets.cpp).
 std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, std::string* note);
+// The bloom on one stem (part_locator.h) a plant's `primitive` aimed at `target` turns instead
+// (plan_targets.cpp); no lobes when none does.
+LocatedPart plant_bloom(const Rig& rig, Primitive primitive, Target target, FigureClass figure, const std::string& noun);
 // The oscillation of a back-and-forth action at phase u (in cycles) (motion_frames.cpp).
 double oscillation(const PlannedAction& a, double u);
 

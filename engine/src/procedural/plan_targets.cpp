@@ -154,6 +154,20 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
   return v;
 }
 
+// A plant bent whole with a bloom on one stem bends at its neck: the head turns there, the stem
+// and its leaves hold (bent from the stem's base, a rose's leaf at mid-height swung as far as its
+// head). A plant's head is its bloom too: a nod (any turn of the head) on a plant with no head
+// part turns the bloom about the top of its stem. As the top region of the figure's box (a
+// person's head above the neck), a daisy's bloom, half the plant's height, bent its upper petals
+// out of shape while the rest of it held.
+LocatedPart plant_bloom(const Rig& rig, Primitive primitive, Target target, FigureClass figure, const std::string& noun) {
+  if (figure != FigureClass::Plant) return {};
+  std::string no_head;
+  const bool bends = primitive == Primitive::Bend && target == Target::Whole;
+  const bool nods = primitive == Primitive::Swing && target == Target::Head && (parts_for(rig, Target::Head, noun, &no_head), !no_head.empty());
+  return bends || nods ? locate_part(rig, PartShape::Bloom) : LocatedPart{};
+}
+
 }  // namespace motion_plan_internal
 
 }  // namespace svgm
