@@ -1,62 +1,47 @@
 // Compiling OpenCL programs in a child process (see compile_child.h).
 #include "opencl/compile_child.h"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cstdlib>
-#include <cstring>
+#include <exception>
 
+#include "generators/command_runner.h"
 #include "svgmotion/log.h"
-
-extern char** environ;
 
 namespace svgm {
 
+namespace {
+// The child's limit: a program's build and its kernels' first launches took 43 s from empty
+// caches on a 2-core machine (`devices --warm`, three programs); ten times that before it is
+// taken for hung, and the caller compiles in itself.
+constexpr double kChildTimeoutSeconds = 600;
+}  // namespace
+
 bool compile_child_enabled() {
-  // Absolute only: posix_spawn does not search PATH, and a relative name would run whatever file
-  // of that name the working directory holds.
+  // Absolute only: a relative name would run whatever file of that name the working directory
+  // (or PATH, which run_command searches) holds.
   const char* exe = std::getenv(kCompileChildVar);
   return exe && exe[0] == '/';
 }
 
 bool compile_in_child(const std::string& spec, const std::string& device) {
   if (!compile_child_enabled()) return false;
-  const char* exe = std::getenv(kCompileChildVar);
-  std::vector<std::string> args{exe, "devices", "--warm-for", spec};
-  if (!device.empty()) args.insert(args.end(), {"--device", device});
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  // The environment with the variable empty: the child compiles in itself (the CLI sets it
-  // only when it is unset).
-  std::string off = std::string(kCompileChildVar) + "=";
-  std::vector<char*> envp;
-  for (char** e = environ; e && *e; ++e)
-    if (std::strncmp(*e, off.c_str(), off.size()) != 0) envp.push_back(*e);
-  envp.push_back(off.data());
-  envp.push_back(nullptr);
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-  pid_t pid = 0;
-  const int rc = posix_spawn(&pid, exe, &fa, nullptr, argv.data(), envp.data());
-  posix_spawn_file_actions_destroy(&fa);
-  if (rc != 0) {
-    log::debug("opencl: cannot start %s to compile the kernels (%s): compiling them here", exe, std::strerror(rc));
+  std::vector<std::string> argv{std::getenv(kCompileChildVar), "devices", "--warm-for", spec};
+  if (!device.empty()) argv.insert(argv.end(), {"--device", device});
+  // Through run_command (generators/command_runner.h): a process group of its own, stopped on a
+  // time limit or the user's Ctrl-C, none of this process's descriptors (OpenCL drivers,
+  // sockets) inherited. The environment is this one's; the child empties the variable itself
+  // (cmd_devices.cpp), so it compiles in itself.
+  CommandResult r;
+  try {
+    r = run_command(argv, "/dev/null", kChildTimeoutSeconds);
+  } catch (const std::exception& e) {
+    log::debug("opencl: cannot start %s to compile the kernels (%s): compiling them here", argv[0].c_str(), e.what());
     return false;
   }
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return false;
-  const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
-  if (!ok) log::debug("opencl: the kernels' compile in a child (%s) failed: compiling them here", spec.c_str());
-  return ok;
+  if (!r.ok())
+    log::debug("opencl: the kernels' compile in a child (%s) %s: compiling them here", spec.c_str(),
+               describe(r, kChildTimeoutSeconds).c_str());
+  return r.ok();
 }
 
 }  // namespace svgm
