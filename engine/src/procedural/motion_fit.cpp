@@ -99,6 +99,11 @@ std::string turn_broken(const MotionPlan& plan, int frames, int K) {
       if (360 * plan.amplitude(a) / std::max(K - 1, 1) > kMaxTurn + 1e-9) return "would turn the figure too far between keyframes";
       continue;
     }
+    // Arms turning over (a crawl) turn evenly too, whole turns: more keyframes, never less turn.
+    if (a.primitive == Primitive::Windmill) {
+      if (360 * plan.amplitude(a) / std::max(K - 1, 1) > kMaxTurn + 1e-9) return "would turn a part too far between keyframes for the tracker to follow";
+      continue;
+    }
     if (a.primitive != Primitive::Swing || a.region != Region::None) continue;
     const double amp = plan.amplitude(a);
     for (double phase : a.phase)
@@ -118,7 +123,7 @@ std::string turn_broken(const MotionPlan& plan, int frames, int K) {
 // bobbed more than its legs moved (share of the motion on the legs 0.35).
 void accents_follow_limbs(MotionPlan& plan) {
   for (auto& a : plan.actions) {
-    if (a.target != Target::Whole || a.primitive == Primitive::Spin || a.primitive == Primitive::Turn) continue;
+    if (a.target != Target::Whole || a.primitive == Primitive::Spin || a.primitive == Primitive::Turn || a.primitive == Primitive::Toss) continue;
     // No limbs of the same words: nothing to follow. With a default of 1 every whole-figure
     // motion raised to the visible floor (a duck's bob at 305 %) was set back to 100 %.
     double limbs = HUGE_VAL;
@@ -204,7 +209,7 @@ std::vector<std::vector<size_t>> measured_clauses(const MotionPlan& plan) {
         done[j] = 1;
         const Primitive p = plan.actions[j].primitive;
         measurable = measurable && p != Primitive::Turn && p != Primitive::Fall;
-        scalable = scalable || p != Primitive::Spin;
+        scalable = scalable || (p != Primitive::Spin && p != Primitive::Windmill);
       }
     if (measurable && scalable) out.push_back(clause);
   }
@@ -417,7 +422,7 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
     for (const auto& a : plan.actions) turns = turns || a.primitive == Primitive::Turn;
     std::set<int> spinning;
     for (const auto& a : plan.actions)
-      if (a.primitive == Primitive::Spin)
+      if (a.primitive == Primitive::Spin || a.primitive == Primitive::Windmill)  // whole turns: not scaled
         for (int p : a.parts) spinning.insert(p);
     bool falls = false;
     for (const auto& a : plan.actions) falls = falls || a.primitive == Primitive::Fall;
@@ -460,7 +465,9 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
   for (size_t i = 0; i <= plan.actions.size(); ++i) {
     const bool all = i == plan.actions.size();
     if (all) accents_follow_limbs(plan);
-    if (!all && (plan.actions[i].primitive == Primitive::Spin || plan.actions[i].primitive == Primitive::Turn)) continue;
+    if (!all && (plan.actions[i].primitive == Primitive::Spin || plan.actions[i].primitive == Primitive::Turn ||
+                 plan.actions[i].primitive == Primitive::Windmill))
+      continue;
     const std::string what = all ? "the motion" : plan.actions[i].verb + " (" + primitive_name(plan.actions[i].primitive) + ")";
     // The largest scale (from the current one down by 0.8) at which `one` keeps the limits, and
     // why the first scale tried did not; -1 when none of kScaleAttempts does.

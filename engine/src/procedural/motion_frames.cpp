@@ -49,6 +49,8 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
     // About the vertical axis through the middle: never wider than at rest, so it stays where
     // the figure stands in the canvas.
     case Primitive::Turn: return about(centre, Affine::scale(turn_width(amp * t, a.scale), 1));
+    // Whole turns about the joint, from the phase's start (a crawl's arms half a turn apart).
+    case Primitive::Windmill: return about(pivot, Affine::rotate_deg(sign * 360.0 * (amp * t + phase)));
     case Primitive::Rock:
       return about(a.parts.empty() ? base : pivot, Affine::rotate_deg(a.vertical == 2 ? a.direction * amp * k : sign * amp * s));
     case Primitive::Bob: {
@@ -679,7 +681,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     std::vector<Affine> whole_of(piece_box.size());  // the whole figure's motion, per piece
     for (const auto& a : plan.actions) {
       const double amp = plan.amplitude(a);
-      if (is_deformation(a) || a.target == Target::Repeated) continue;
+      if (is_deformation(a) || a.target == Target::Repeated || a.primitive == Primitive::Toss) continue;
       if (a.parts.empty() && bounces_on_wheels(plan, a)) over_wheels = rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * over_wheels;
       else if (a.parts.empty() && a.primitive == Primitive::Turn) {
         // Whole turns, never fewer; the plan's scale makes the turn shallower (turn_width).
@@ -705,6 +707,9 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     }
     const std::vector<Affine> world = world_transforms(rig, local, root_turn, spin, planted, loads);
     const std::vector<std::vector<Vec2>> bent = solve_meshes(mesh, plan, t, f, folds);
+    TossFrame toss = still_toss_frame(scene);  // tossed things fly apart from the rig (tossed_things.h)
+    for (const auto& a : plan.actions)
+      if (a.primitive == Primitive::Toss) add_toss(a.tossed, a.arc, plan.amplitude(a), a.cycles * t, toss);
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
       const bool background = stays(pi);
       size_t point = 0;  // the path's control point, counted over its subpaths (rides_on)
@@ -719,6 +724,12 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
           const size_t src = rides >= 0 ? static_cast<size_t>(rides) : pi;
           const int by = rig.part_of_path[src];
           const bool bg = src == pi ? background : stays(src);
+          if (toss.on[pi][si]) {
+            q = whole.apply(q + toss.shift[pi][si]);
+            ++point;
+            out.push_back(q);
+            continue;
+          }
           q = elem.apply(q);
           if (!free_particle) {
             for (size_t ai = 0; ai < plan.actions.size(); ++ai) {

@@ -18,6 +18,7 @@
 #include "procedural/support_band.h"
 #include "procedural/part_locator.h"
 #include "procedural/self_movers.h"
+#include "procedural/toss_and_stroke.h"
 
 namespace svgm {
 
@@ -27,10 +28,11 @@ namespace motion_plan_internal {
 const char* unit_of(Primitive p) {
   switch (p) {
     case Primitive::Swing: case Primitive::Rock: case Primitive::Bend: case Primitive::Sway: return "degrees";
-    case Primitive::Spin: case Primitive::Turn: return "turns";
+    case Primitive::Spin: case Primitive::Turn: case Primitive::Windmill: return "turns";
     case Primitive::Pulse: case Primitive::Stretch: return "fraction of size";
     case Primitive::Fall: return "canvas heights";
     case Primitive::Undulate: return "figure lengths";
+    case Primitive::Toss: return "share of the arc";
     case Primitive::Slide: return "figure widths";
     default: return "figure heights";
   }
@@ -41,9 +43,7 @@ bool whole_only(Primitive p) {
          p == Primitive::Squash || p == Primitive::Stretch || p == Primitive::Shake;
 }
 
-bool is_limb_target(Target t) {
-  return t == Target::Arms || t == Target::Legs || t == Target::Limbs || t == Target::Tail;
-}
+bool is_limb_target(Target t) { return t == Target::Arms || t == Target::Legs || t == Target::Limbs || t == Target::Tail; }
 
 std::string join(const std::vector<std::string>& v, const char* sep) {
   std::string s;
@@ -54,9 +54,7 @@ std::string join(const std::vector<std::string>& v, const char* sep) {
 // Whether the clause says the figure acts forward ("thrusts his foil forward"; apply_modifier
 // keeps the word and sets nothing: which side is forward is the drawing's).
 bool says_forward(const Modifiers& m) {
-  for (const auto& w : m.words)
-    if (w == "forward" || w == "forwards" || w == "ahead" || w == "onward" || w == "onwards") return true;
-  return false;
+  return std::any_of(m.words.begin(), m.words.end(), [](const std::string& w) { return w == "forward" || w == "forwards" || w == "ahead" || w == "onward" || w == "onwards"; });
 }
 
 // The part whose region bends for a limb role that has no part of its own. Arms: the widest
@@ -224,6 +222,10 @@ struct Builder {
            bool primary_retargeted, const std::string& instead = "", const LocatedPart* located = nullptr) {
     Action base = base_in;
     std::string paddle;
+    if (base.primitive == Primitive::Toss || base.primitive == Primitive::Windmill) {  // toss_and_stroke.h: else an arm swing
+      if (auto own = plan_round_motion(rig, verb, base_in, mods, words, rng(), base, paddle)) return plan.actions.push_back(std::move(*own));
+      target = base.target;
+    }
     if (&base_in == &verb.actions[0] && target == Target::Whole && paddles(verb, rig)) {
       base = {Primitive::Swing, Target::Legs, kPartAmplitude[static_cast<size_t>(Primitive::Swing)], 2 * base.cycles, Pairing::Alternating};
       target = Target::Legs;
@@ -576,9 +578,7 @@ void travel_where_told(Builder& b, const Clause& c, size_t from, const ParsedPro
   if (b.plan.actions.size() > had) b.plan.actions.back().goes = true;
 }
 
-bool names_figure_kind(const PromptNoun& n) {
-  return n.figure != FigureClass::None && n.figure != FigureClass::Object && n.figure != FigureClass::Scene;
-}
+bool names_figure_kind(const PromptNoun& n) { return n.figure != FigureClass::None && n.figure != FigureClass::Object && n.figure != FigureClass::Scene; }
 
 namespace {
 
@@ -795,6 +795,5 @@ MotionPlan plan_from_steps(const std::vector<ExplicitStep>& steps, const Rig& ri
   }
   return b.plan;
 }
-
 
 }  // namespace svgm
