@@ -563,7 +563,8 @@ void travel_where_told(Builder& b, const Clause& c, size_t from, const ParsedPro
   // A gait with no direction said goes the way the figure faces (gait_travel.h).
   Modifiers mods = c.mods;
   std::string why = "told where it goes: the figure goes there steadily and glides back";
-  if (mods.travel == 0 && (!is_gait(*mover, c.figure) || (mods.travel = untold_travel(prompt, c, b.rig, &why)) == 0)) return;
+  // A swimmer's strokes (toss_and_stroke.h) loop in place: gliding back, a crawl swam backwards.
+  if (mods.travel == 0 && (!is_gait(*mover, c.figure) || stroke_reading(c) || (mods.travel = untold_travel(prompt, c, b.rig, &why)) == 0)) return;
   static const Action kTravelSlide{Primitive::Slide, Target::Whole, kTravelReach, 1};
   for (size_t i = from; i < b.plan.actions.size(); ++i)
     if (PlannedAction& a = b.plan.actions[i]; a.primitive == Primitive::Slide && a.parts.empty()) {

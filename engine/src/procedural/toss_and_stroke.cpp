@@ -68,7 +68,7 @@ std::optional<PlannedAction> plan_toss(const Rig& rig, const Verb& verb, const A
   return a;
 }
 
-std::optional<PlannedAction> plan_windmill(const Rig& rig, const Verb& verb, const Action& base, const Modifiers& mods,
+std::optional<PlannedAction> plan_windmill(const Rig& rig, const Verb& verb, const Modifiers& mods,
                                            const std::string& words, uint32_t coin, Action& instead, std::string& why) {
   std::string note;
   std::vector<int> arms = parts_for(rig, Target::Arms, "", &note);
@@ -134,7 +134,7 @@ const Verb* stroke_reading(const Clause& c) {
 std::optional<PlannedAction> plan_round_motion(const Rig& rig, const Verb& verb, const Action& base, const Modifiers& mods,
                                                const std::string& words, uint32_t coin, Action& instead, std::string& why) {
   if (base.primitive == Primitive::Toss) return plan_toss(rig, verb, base, mods, words, instead, why);
-  return plan_windmill(rig, verb, base, mods, words, coin, instead, why);
+  return plan_windmill(rig, verb, mods, words, coin, instead, why);
 }
 
 }  // namespace svgm

@@ -111,9 +111,25 @@ TossArc cascade_arc(const Rig& rig, std::vector<TossedThing>& things) {
   const RigBox& F = rig.figure;
   arc.centre = xmax - xmin >= kTossMinSpan * F.w() ? 0.5 * (xmin + xmax) : F.centre().x;
   arc.outer = std::max(0.5 * (xmax - xmin), 0.5 * kTossMinSpan * F.w());
-  arc.inner = kTossInner * arc.outer;
   arc.hand = ymax;
-  arc.rise = std::max(ymax - ymin, kTossMinRise * arc.outer);
+  // The hands, when the figure has arms of its own on both sides under the things: each arm's
+  // end (its box's corner farthest from its shoulder). The things are caught there and thrown
+  // from there; from the lowest thing, they never came down to the hands.
+  std::vector<Vec2> hands;
+  for (const RigPart& P : rig.parts) {
+    if (P.role != Role::UpperLimb || P.box.empty()) continue;
+    Vec2 far = P.pivot;
+    for (Vec2 q : {Vec2{P.box.x0, P.box.y0}, Vec2{P.box.x1, P.box.y0}, Vec2{P.box.x0, P.box.y1}, Vec2{P.box.x1, P.box.y1}})
+      if (std::hypot(q.x - P.pivot.x, q.y - P.pivot.y) > std::hypot(far.x - P.pivot.x, far.y - P.pivot.y)) far = q;
+    hands.push_back(far);
+  }
+  if (hands.size() == 2 && hands[0].y > ymin && hands[1].y > ymin && std::fabs(hands[0].x - hands[1].x) >= kTossMinSpan * F.w() * 0.5) {
+    arc.centre = 0.5 * (hands[0].x + hands[1].x);
+    arc.outer = 0.5 * std::fabs(hands[0].x - hands[1].x);
+    arc.hand = 0.5 * (hands[0].y + hands[1].y);
+  }
+  arc.inner = kTossInner * arc.outer;
+  arc.rise = std::max(arc.hand - ymin, kTossMinRise * arc.outer);
   // The phases: N equal steps apart; the order and the offset that put the things nearest where
   // the drawing has them (every order for up to 6 things, else left to right).
   const size_t N = things.size();
@@ -138,8 +154,10 @@ TossArc cascade_arc(const Rig& rig, std::vector<TossedThing>& things) {
 }
 
 Vec2 toss_shift(const TossArc& arc, const TossedThing& th, double amp, double u) {
-  const Vec2 a = cascade_point(arc, th.phase + u), b = cascade_point(arc, th.phase);
-  return {amp * (a.x - b.x), amp * (a.y - b.y)};
+  const Vec2 a = cascade_point(arc, th.phase + u), b = cascade_point(arc, th.phase), rest = th.box.centre();
+  // Where the drawing has it off the curve, that offset fades out and back over each cycle.
+  const double keep = 0.5 + 0.5 * std::cos(2 * M_PI * u);
+  return {amp * (a.x - b.x - (1 - keep) * (rest.x - b.x)), amp * (a.y - b.y - (1 - keep) * (rest.y - b.y))};
 }
 
 TossFrame still_toss_frame(const Scene& scene) {

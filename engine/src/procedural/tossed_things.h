@@ -17,7 +17,7 @@
 // are N equal phases apart (three balls: the hands throw in turn), each given the phase on the
 // curve nearest where the drawing has it (the order and the offset with the least squared
 // distance), and each moves by the curve's difference from that phase, so the loop starts at
-// the drawing. The idea of the cascade's timing (odd counts alternate hands) is Shannon's
+// the drawing; its offset from the curve fades out by half a cycle and back (toss_shift). The idea of the cascade's timing (odd counts alternate hands) is Shannon's
 // juggling theorem (third_party_notes.md).
 #pragma once
 
@@ -63,7 +63,9 @@ TossArc cascade_arc(const Rig& rig, std::vector<TossedThing>& things);
 Vec2 cascade_point(const TossArc& arc, double v);
 
 // How far thing `th` is from its place in the drawing after u cycles, at amplitude `amp`
-// (1: the whole curve; less shrinks the curve about where the drawing has it).
+// (1: the whole curve; less shrinks the motion toward where the drawing has it). Its offset from
+// the curve where the drawing has it fades out and back over each cycle (by 1/2 + cos(2 pi u)/2):
+// half a cycle on, every thing is on the one curve, as a cascade is.
 Vec2 toss_shift(const TossArc& arc, const TossedThing& th, double amp, double u);
 
 // Each path's and subpath's shift in one frame (on[p][s]: it belongs to a tossed thing).
