@@ -222,10 +222,8 @@ struct Builder {
            bool primary_retargeted, const std::string& instead = "", const LocatedPart* located = nullptr) {
     Action base = base_in;
     std::string paddle;
-    if (base.primitive == Primitive::Toss || base.primitive == Primitive::Windmill) {  // toss_and_stroke.h: else an arm swing
-      if (auto own = plan_round_motion(rig, verb, base_in, mods, words, rng(), base, paddle)) return plan.actions.push_back(std::move(*own));
-      target = base.target;
-    }
+    if (base.primitive == Primitive::Toss || base.primitive == Primitive::Windmill)  // toss_and_stroke.h: else an arm swing
+      if (auto own = plan_round_motion(rig, verb, base_in, mods, words, rng(), base, target, paddle)) return plan.actions.push_back(std::move(*own));
     if (&base_in == &verb.actions[0] && target == Target::Whole && paddles(verb, rig)) {
       base = {Primitive::Swing, Target::Legs, kPartAmplitude[static_cast<size_t>(Primitive::Swing)], 2 * base.cycles, Pairing::Alternating};
       target = Target::Legs;
@@ -264,8 +262,7 @@ struct Builder {
     }
     const std::string beat = recast(a, target, amp, rock_on_part, base, located);
     const bool whole_turns = a.primitive == Primitive::Spin || a.primitive == Primitive::Turn;
-    std::uniform_real_distribution<double> U(0, 1);
-    a.amp = amp * mods.size * (whole_turns ? 1 : 0.85 + 0.3 * U(rng));
+    a.amp = amp * mods.size * (whole_turns ? 1 : 0.85 + 0.3 * std::uniform_real_distribution<double>(0, 1)(rng));
     a.cycles = std::max(1, static_cast<int>(std::lround(base.cycles * mods.speed)));
     if (mods.once > 0) a.cycles = 1;
     if (mods.once < 0) a.cycles = std::max(2, a.cycles);

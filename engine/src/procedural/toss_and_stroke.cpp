@@ -132,9 +132,11 @@ const Verb* stroke_reading(const Clause& c) {
 }
 
 std::optional<PlannedAction> plan_round_motion(const Rig& rig, const Verb& verb, const Action& base, const Modifiers& mods,
-                                               const std::string& words, uint32_t coin, Action& instead, std::string& why) {
-  if (base.primitive == Primitive::Toss) return plan_toss(rig, verb, base, mods, words, instead, why);
-  return plan_windmill(rig, verb, mods, words, coin, instead, why);
+                                               const std::string& words, uint32_t coin, Action& instead, Target& target, std::string& why) {
+  std::optional<PlannedAction> own = base.primitive == Primitive::Toss ? plan_toss(rig, verb, base, mods, words, instead, why)
+                                                                        : plan_windmill(rig, verb, mods, words, coin, instead, why);
+  if (!own) target = instead.target;
+  return own;
 }
 
 }  // namespace svgm

@@ -28,8 +28,8 @@ inline constexpr double kStrokeSwingDeg = 60;
 const Verb* stroke_reading(const Clause& c);
 
 // The planned action of a Toss or Windmill action `base` of `verb`, or nothing: then `instead`
-// is what the clause does (an arm swing) and `why` says so.
+// is what the clause does (an arm swing), `target` its target, and `why` says so.
 std::optional<PlannedAction> plan_round_motion(const Rig& rig, const Verb& verb, const Action& base, const Modifiers& mods,
-                                               const std::string& words, uint32_t coin, Action& instead, std::string& why);
+                                               const std::string& words, uint32_t coin, Action& instead, Target& target, std::string& why);
 
 }  // namespace svgm

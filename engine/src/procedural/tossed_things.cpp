@@ -117,7 +117,8 @@ TossArc cascade_arc(const Rig& rig, std::vector<TossedThing>& things) {
   // from there; from the lowest thing, they never came down to the hands.
   std::vector<Vec2> hands;
   for (const RigPart& P : rig.parts) {
-    if (P.role != Role::UpperLimb || P.box.empty()) continue;
+    // Arms on the body (a ball drawn at a hand may hang from the arm as a limb of its own).
+    if (P.role != Role::UpperLimb || P.box.empty() || P.parent != rig.root || rig.root < 0) continue;
     Vec2 far = P.pivot;
     for (Vec2 q : {Vec2{P.box.x0, P.box.y0}, Vec2{P.box.x1, P.box.y0}, Vec2{P.box.x0, P.box.y1}, Vec2{P.box.x1, P.box.y1}})
       if (std::hypot(q.x - P.pivot.x, q.y - P.pivot.y) > std::hypot(far.x - P.pivot.x, far.y - P.pivot.y)) far = q;
