@@ -31,6 +31,11 @@ const std::vector<Verb> kVerbs = {
   {"clap",    {"clap"},                         {{P::Swing, T::Arms, 22, 4, Pr::Mirrored}}, P::Swing},
   {"cheer",   {"cheer", "celebrat", "rejoic"},  {{P::Swing, T::Arms, 32, 3, Pr::Mirrored}, {P::Hop, T::Whole, 0.03, 3}}, P::Swing},
   {"punch",   {"punch", "box", "jab", "fight", "fenc", "thrust", "stab", "pok"}, {{P::Swing, T::Arms, 26, 3, Pr::OneAtATime}, {P::Swing, T::Root, 1.5, 3}}, P::Swing},  // the body turns into each punch about the hips, the legs planted (motion_plan.h), a little: at 4 degrees a boxer's body and head outweighed his fist; one fist, the other keeps guard
+  // Juggling: the tossed things (balls held up by a figure, tossed_things.h) fly a cascade from
+  // hand to hand, the arms pumping a little as they throw. "Tosses the balls" and "keeps the
+  // balls in the air" read so too when the drawing holds such things (tossed_things.h); "toss"
+  // alone stays the wind's (fronds toss).
+  {"juggle",  {"juggl"},                        {{P::Toss, T::Whole, 1, 1}, {P::Swing, T::Arms, 8, 3, Pr::Alternating}}, P::Toss},
   {"throw",   {"throw", "threw", "hurl", "fling", "flung"}, {{P::Swing, T::Arms, 40, 1, Pr::OneSide}}, P::Swing},  // one arm swings over and back; not "toss" nor "pitch": fronds toss in the wind, boats pitch
   {"lift",    {"lift", "rais", "hold"},         {{P::Swing, T::Arms, 24, 2, Pr::Mirrored}}, P::Swing},
   {"reach",   {"reach", "spread"},              {{P::Swing, T::Arms, 20, 1, Pr::Mirrored}}, P::Swing},
@@ -83,6 +88,12 @@ const std::vector<Verb> kVerbs = {
   // plain discs did not move at all, and "drives off to the right" stood still.
   {"drive",   {"driv", "drove", "roll", "accelerat", "speed"}, {{P::Shake, T::Whole, 0.006, 6}, {P::Spin, T::Wheels, 1, 1}, {P::Slide, T::Whole, 0.1, 1}}, P::Spin},
   {"dodge",   {"dodg", "evad"},                 {{P::Swing, T::Root, 8, 2}}, P::Swing},  // a lean of the body about the hips, the legs planted
+  // A swimmer's strokes: the arms turn over about the shoulders in whole turns, in turn (the
+  // front crawl), backwards (backstroke) or together (butterfly: arm_strokes.h reads "crawl" and
+  // "butterfly" so only of a swimmer).
+  {"stroke",  {"freestyl"},                     {{P::Windmill, T::Arms, 1, 1, Pr::Alternating}}, P::Windmill},
+  {"backstroke", {"backstrok"},                 {{P::Windmill, T::Arms, 1, 1, Pr::Alternating}}, P::Windmill},
+  {"butterfly", {},                             {{P::Windmill, T::Arms, 1, 1, Pr::Mirrored}}, P::Windmill},
   // Bodies that bend.
   {"swim",    {"swim", "swam", "paddl"},        {{P::Undulate, T::Whole, 0.05, 1}, {P::Slide, T::Whole, 0.02, 1}}, P::Undulate},
   {"slither", {"slither", "undulat", "wriggl", "squirm", "sinuous", "snak", "weav"}, {{P::Undulate, T::Whole, 0.06, 1}}, P::Undulate},
@@ -203,8 +214,8 @@ bool is_filler_word(std::string_view w) {
 }
 
 const char* primitive_name(Primitive p) {
-  static constexpr std::array<const char*, 15> names = {"swing", "spin", "hop", "bob", "slide", "rock", "undulate",
-                                                        "bend", "shake", "pulse", "squash", "stretch", "fall", "sway", "turn"};
+  static constexpr std::array<const char*, 17> names = {"swing", "spin", "hop", "bob", "slide", "rock", "undulate", "bend", "shake",
+                                                        "pulse", "squash", "stretch", "fall", "sway", "turn", "toss", "windmill"};
   return names[static_cast<size_t>(p)];
 }
 

@@ -35,6 +35,9 @@ enum class Primitive {
              // lower part planted (a glass on its foot, a tree on its roots) [degrees of lean]
   Turn,      // whole turns about the figure's vertical axis (a pirouette): its width scaled by
              // the turn's cosine about its middle, mirrored past a quarter turn [turns per loop]
+  Toss,      // the small round things a figure holds up (balls) fly from hand to hand along
+             // arcs, each in its own phase (a juggler's cascade: tossed_things.h) [share of the arc]
+  Windmill,  // whole turns of a limb about its joint (a swimmer's over-arm stroke) [turns per loop]
 };
 
 // Which parts an action moves, by role in the rig (part_rig.h).

@@ -36,6 +36,8 @@ std::string direction_words(const PlannedAction& a) {
                ", then glides back";
       return a.direction > 0 ? "right first, then left" : "left first, then right";
     case Primitive::Hop: return "up in an arc and back down";
+    case Primitive::Toss: return "from hand to hand along arcs, each thing in its own phase (a cascade)";
+    case Primitive::Windmill: return std::string(turn(a.direction)) + ", whole turns about the shoulders" + pairing(a);
     case Primitive::Bob: return a.vertical > 0 ? "up from rest and back" : a.vertical < 0 ? "down from rest and back" : "up and down";
     case Primitive::Squash: return "down, squashed, and back up";
     case Primitive::Fall: return "down, each element in its own phase";

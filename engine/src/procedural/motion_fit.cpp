@@ -100,6 +100,11 @@ std::string turn_broken(const MotionPlan& plan, int frames, int K) {
       if (360 * plan.amplitude(a) / std::max(K - 1, 1) > kMaxTurn + 1e-9) return "would turn the figure too far between keyframes";
       continue;
     }
+    // Arms turning over (a crawl) turn evenly too, whole turns: more keyframes, never less turn.
+    if (a.primitive == Primitive::Windmill) {
+      if (360 * plan.amplitude(a) / std::max(K - 1, 1) > kMaxTurn + 1e-9) return "would turn a part too far between keyframes for the tracker to follow";
+      continue;
+    }
     if (a.primitive != Primitive::Swing || a.region != Region::None) continue;
     const double amp = plan.amplitude(a);
     for (double phase : a.phase)
@@ -122,9 +127,9 @@ void accents_follow_limbs(MotionPlan& plan) {
     // A hover's bob is the hover itself (carried_flight.h), not an accent: it keeps the floor.
     // A travel (a figure going somewhere: PlannedAction::goes, inches) is no accent either: cut
     // with a crocodile's legs (their bend folded at full size), its walk went 64 % as far as the
-    // canvas allowed.
-    if (a.target != Target::Whole || a.primitive == Primitive::Spin || a.primitive == Primitive::Turn || carried_whole(a) ||
-        a.goes || a.inches)
+    // canvas allowed. Nor is a juggler's toss (the balls' arcs).
+    if (a.target != Target::Whole || a.primitive == Primitive::Spin || a.primitive == Primitive::Turn ||
+        a.primitive == Primitive::Toss || carried_whole(a) || a.goes || a.inches)
       continue;
     // No limbs of the same words: nothing to follow. With a default of 1 every whole-figure
     // motion raised to the visible floor (a duck's bob at 305 %) was set back to 100 %.
@@ -238,7 +243,7 @@ std::vector<std::vector<size_t>> measured_clauses(const MotionPlan& plan) {
         done[j] = 1;
         const Primitive p = plan.actions[j].primitive;
         measurable = measurable && p != Primitive::Turn && p != Primitive::Fall;
-        scalable = scalable || p != Primitive::Spin;
+        scalable = scalable || (p != Primitive::Spin && p != Primitive::Windmill);
       }
     if (measurable && scalable) out.push_back(clause);
   }
@@ -490,7 +495,7 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
     for (const auto& a : plan.actions) turns = turns || a.primitive == Primitive::Turn;
     std::set<int> spinning;
     for (const auto& a : plan.actions)
-      if (a.primitive == Primitive::Spin)
+      if (a.primitive == Primitive::Spin || a.primitive == Primitive::Windmill)  // whole turns: not scaled
         for (int p : a.parts) spinning.insert(p);
     bool falls = false;
     for (const auto& a : plan.actions) falls = falls || a.primitive == Primitive::Fall;
@@ -536,7 +541,9 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
       accents_follow_limbs(plan);
       tie_crawl_scales(plan);
     }
-    if (!all && (plan.actions[i].primitive == Primitive::Spin || plan.actions[i].primitive == Primitive::Turn)) continue;
+    if (!all && (plan.actions[i].primitive == Primitive::Spin || plan.actions[i].primitive == Primitive::Turn ||
+                 plan.actions[i].primitive == Primitive::Windmill))
+      continue;
     const std::string what = all ? "the motion" : plan.actions[i].verb + " (" + primitive_name(plan.actions[i].primitive) + ")";
     // The largest scale (from the current one down by 0.8) at which `one` keeps the limits, and
     // why the first scale tried did not; -1 when none of kScaleAttempts does.

@@ -49,6 +49,8 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
     // About the vertical axis through the middle: never wider than at rest, so it stays where
     // the figure stands in the canvas.
     case Primitive::Turn: return about(centre, Affine::scale(turn_width(amp * t, a.scale), 1));
+    // Whole turns about the joint, from the phase's start (a crawl's arms half a turn apart).
+    case Primitive::Windmill: return about(pivot, Affine::rotate_deg(sign * 360.0 * (amp * t + phase)));
     case Primitive::Rock:
       return about(a.parts.empty() ? base : pivot, Affine::rotate_deg(a.vertical == 2 ? a.direction * amp * k : sign * amp * s));
     case Primitive::Bob: {
@@ -611,6 +613,14 @@ std::vector<std::vector<Vec2>> solve_meshes(const std::vector<std::unique_ptr<Re
   return bent;
 }
 
+// The tossed things' shifts at t: they fly apart from the rig's motions (tossed_things.h).
+TossFrame toss_frame(const Scene& scene, const MotionPlan& plan, double t) {
+  TossFrame toss = still_toss_frame(scene);
+  for (const auto& a : plan.actions)
+    if (a.primitive == Primitive::Toss) add_toss(a.tossed, a.arc, plan.amplitude(a), a.cycles * t, toss);
+  return toss;
+}
+
 }  // namespace
 
 std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames, std::vector<BendFold>* folds) {
@@ -631,15 +641,13 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         for (const Vec2& q : subs[si].points) element_box[e].add(q);
       }
     }
-  bool particles = false;
-  for (const auto& a : plan.actions) particles = particles || (a.target == Target::Repeated && a.primitive == Primitive::Fall);
+  const bool particles = std::any_of(plan.actions.begin(), plan.actions.end(), [](const auto& a) { return a.target == Target::Repeated && a.primitive == Primitive::Fall; });
   // Each part's box including what hangs from it (the extent a deformation spans).
   std::vector<RigBox> reach(G);
   for (int g = 0; g < G; ++g) reach[g] = chain_box(rig, g);
   // Parts the whole figure's motions leave where they are (fit_plan).
   std::vector<char> held(G, 0);
-  for (int g = 0; g < G; ++g)
-    for (int h : plan.held) held[g] = held[g] || under(g, h);
+  for (int g = 0; g < G; ++g) held[g] = std::any_of(plan.held.begin(), plan.held.end(), [&](int h) { return under(g, h); });
   // The pole a wave runs from holds still (the wave's weight is small but not nothing across
   // its width: a flag's pole moved 0.8 px and the fitted one drifted out of the canvas).
   for (const auto& a : plan.actions)
@@ -688,7 +696,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     std::vector<Affine> whole_of(piece_box.size());  // the whole figure's motion, per piece
     for (const auto& a : plan.actions) {
       const double amp = plan.amplitude(a);
-      if (is_deformation(a) || a.target == Target::Repeated) continue;
+      if (is_deformation(a) || a.target == Target::Repeated || a.primitive == Primitive::Toss) continue;
       if (a.parts.empty() && bounces_on_wheels(plan, a)) over_wheels = rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * over_wheels;
       else if (a.parts.empty() && a.primitive == Primitive::Turn) {
         // Whole turns, never fewer; the plan's scale makes the turn shallower (turn_width).
@@ -714,6 +722,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     }
     const std::vector<Affine> world = world_transforms(rig, local, root_turn, spin, planted, loads);
     const std::vector<std::vector<Vec2>> bent = solve_meshes(mesh, plan, t, f, folds);
+    const TossFrame toss = toss_frame(scene, plan, t);
     for (size_t pi = 0; pi < scene.paths.size(); ++pi) {
       const bool background = stays(pi);
       size_t point = 0;  // the path's control point, counted over its subpaths (rides_on)
@@ -728,6 +737,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
           const size_t src = rides >= 0 ? static_cast<size_t>(rides) : pi;
           const int by = rig.part_of_path[src];
           const bool bg = src == pi ? background : stays(src);
+          if (toss.on[pi][si] && (out.push_back(whole.apply(q + toss.shift[pi][si])), ++point)) continue;
           q = elem.apply(q);
           if (!free_particle) {
             for (size_t ai = 0; ai < plan.actions.size(); ++ai) {

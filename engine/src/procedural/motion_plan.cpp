@@ -19,6 +19,7 @@
 #include "procedural/support_band.h"
 #include "procedural/part_locator.h"
 #include "procedural/self_movers.h"
+#include "procedural/toss_and_stroke.h"
 
 namespace svgm {
 
@@ -28,10 +29,11 @@ namespace motion_plan_internal {
 const char* unit_of(Primitive p) {
   switch (p) {
     case Primitive::Swing: case Primitive::Rock: case Primitive::Bend: case Primitive::Sway: return "degrees";
-    case Primitive::Spin: case Primitive::Turn: return "turns";
+    case Primitive::Spin: case Primitive::Turn: case Primitive::Windmill: return "turns";
     case Primitive::Pulse: case Primitive::Stretch: return "fraction of size";
     case Primitive::Fall: return "canvas heights";
     case Primitive::Undulate: return "figure lengths";
+    case Primitive::Toss: return "share of the arc";
     case Primitive::Slide: return "figure widths";
     default: return "figure heights";
   }
@@ -42,9 +44,7 @@ bool whole_only(Primitive p) {
          p == Primitive::Squash || p == Primitive::Stretch || p == Primitive::Shake;
 }
 
-bool is_limb_target(Target t) {
-  return t == Target::Arms || t == Target::Legs || t == Target::Limbs || t == Target::Tail;
-}
+bool is_limb_target(Target t) { return t == Target::Arms || t == Target::Legs || t == Target::Limbs || t == Target::Tail; }
 
 std::string join(const std::vector<std::string>& v, const char* sep) {
   std::string s;
@@ -55,9 +55,7 @@ std::string join(const std::vector<std::string>& v, const char* sep) {
 // Whether the clause says the figure acts forward ("thrusts his foil forward"; apply_modifier
 // keeps the word and sets nothing: which side is forward is the drawing's).
 bool says_forward(const Modifiers& m) {
-  for (const auto& w : m.words)
-    if (w == "forward" || w == "forwards" || w == "ahead" || w == "onward" || w == "onwards") return true;
-  return false;
+  return std::any_of(m.words.begin(), m.words.end(), [](const std::string& w) { return w == "forward" || w == "forwards" || w == "ahead" || w == "onward" || w == "onwards"; });
 }
 
 // The part whose region bends for a limb role that has no part of its own. Arms: the widest
@@ -225,6 +223,8 @@ struct Builder {
            bool primary_retargeted, const std::string& instead = "", const LocatedPart* located = nullptr) {
     Action base = base_in;
     std::string paddle;
+    if (base.primitive == Primitive::Toss || base.primitive == Primitive::Windmill)  // toss_and_stroke.h: else an arm swing
+      if (auto own = plan_round_motion(rig, verb, base_in, mods, words, rng(), base, target, paddle)) return plan.actions.push_back(std::move(*own));
     if (&base_in == &verb.actions[0] && target == Target::Whole && paddles(verb, rig)) {
       base = {Primitive::Swing, Target::Legs, kPartAmplitude[static_cast<size_t>(Primitive::Swing)], 2 * base.cycles, Pairing::Alternating};
       target = Target::Legs;
@@ -260,8 +260,7 @@ struct Builder {
     }
     const std::string beat = recast(a, target, amp, rock_on_part, base, located);
     const bool whole_turns = a.primitive == Primitive::Spin || a.primitive == Primitive::Turn;
-    std::uniform_real_distribution<double> U(0, 1);
-    a.amp = amp * mods.size * (whole_turns ? 1 : 0.85 + 0.3 * U(rng));
+    a.amp = amp * mods.size * (whole_turns ? 1 : 0.85 + 0.3 * std::uniform_real_distribution<double>(0, 1)(rng));
     a.cycles = std::max(1, static_cast<int>(std::lround(base.cycles * mods.speed)));
     if (mods.once > 0) a.cycles = 1;
     if (mods.once < 0) a.cycles = std::max(2, a.cycles);
@@ -559,7 +558,8 @@ void travel_where_told(Builder& b, const Clause& c, size_t from, const ParsedPro
   // A gait with no direction said goes the way the figure faces (gait_travel.h).
   Modifiers mods = c.mods;
   std::string why = "told where it goes: the figure goes there steadily and glides back";
-  if (mods.travel == 0 && (!is_gait(*mover, c.figure) || (mods.travel = untold_travel(prompt, c, b.rig, &why)) == 0)) return;
+  // A swimmer's strokes (toss_and_stroke.h) loop in place: gliding back, a crawl swam backwards.
+  if (mods.travel == 0 && (!is_gait(*mover, c.figure) || stroke_reading(c) || (mods.travel = untold_travel(prompt, c, b.rig, &why)) == 0)) return;
   static const Action kTravelSlide{Primitive::Slide, Target::Whole, kTravelReach, 1};
   for (size_t i = from; i < b.plan.actions.size(); ++i)
     if (PlannedAction& a = b.plan.actions[i]; a.primitive == Primitive::Slide && a.parts.empty()) {
@@ -577,9 +577,7 @@ void travel_where_told(Builder& b, const Clause& c, size_t from, const ParsedPro
     b.plan.actions.back().goes = true, b.plan.actions.back().amp = std::max(b.plan.actions.back().amp, kTravelReach * mods.size);
 }
 
-bool names_figure_kind(const PromptNoun& n) {
-  return n.figure != FigureClass::None && n.figure != FigureClass::Object && n.figure != FigureClass::Scene;
-}
+bool names_figure_kind(const PromptNoun& n) { return n.figure != FigureClass::None && n.figure != FigureClass::Object && n.figure != FigureClass::Scene; }
 
 namespace {
 

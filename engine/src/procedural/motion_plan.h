@@ -29,6 +29,7 @@
 #include "motion/motion_verbs.h"
 #include "procedural/part_rig.h"
 #include "procedural/prompt_parse.h"
+#include "procedural/tossed_things.h"
 
 namespace svgm {
 
@@ -81,6 +82,8 @@ struct PlannedAction {
                                 // moves its own way (a tumble of two leaves)
   bool closed_form = false;     // region bends: the closed-form bend, not the mesh (region_bend.h:
                                 // fit_plan's choice when unfolding the mesh would hide the motion)
+  std::vector<TossedThing> tossed;  // Toss: the things it tosses, each with its phase
+  TossArc arc;                  // Toss: the cascade they fly (tossed_things.h)
   std::string why;
 };
 
@@ -102,7 +105,7 @@ struct MotionPlan {
   // The amplitude `a` moves with: its own, times its scale and the plan's (the whole turns of a
   // spin or a turn are never scaled).
   double amplitude(const PlannedAction& a) const {
-    return a.primitive == Primitive::Spin || a.primitive == Primitive::Turn ? a.amp : a.amp * a.scale * scale;
+    return a.primitive == Primitive::Spin || a.primitive == Primitive::Turn || a.primitive == Primitive::Windmill ? a.amp : a.amp * a.scale * scale;
   }
   std::string summary() const;  // one line: "flap wing_left+wing_right 30 deg x3; bob whole"
 };

@@ -68,8 +68,8 @@ inline constexpr double kCoreMin = 0.12, kCoreMax = 0.35;
 
 // The usual amplitude of each primitive on one part, in its unit (motion_verbs.h), in the order
 // of Primitive: for a whole-figure verb a prompt aims at a part ("his legs squatting").
-inline constexpr double kPartAmplitude[] = {20, 1, 0.07, 0.04, 0.04, 6, 0.05, 15, 0.01, 0.08, 0.08, 0.08, 0.12, 6, 1};
-static_assert(sizeof kPartAmplitude / sizeof kPartAmplitude[0] == static_cast<size_t>(Primitive::Turn) + 1);
+inline constexpr double kPartAmplitude[] = {20, 1, 0.07, 0.04, 0.04, 6, 0.05, 15, 0.01, 0.08, 0.08, 0.08, 0.12, 6, 1, 1, 1};
+static_assert(sizeof kPartAmplitude / sizeof kPartAmplitude[0] == static_cast<size_t>(Primitive::Windmill) + 1);
 // A Sway's hinge, in shares of the figure's height from its top: the lower 45 % stays planted
 // (a wine glass's stem and foot, a saxophonist's legs); above it the lean grows over kRamp of
 // the height (bend_region's ramp) to the full angle.

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "procedural/rotor_blades.h"
+#include "procedural/toss_and_stroke.h"
 
 namespace svgm {
 
@@ -27,8 +28,17 @@ const Verb* flame_verb(const Verb* v, const Clause& c, const Rig& rig, const Loc
 }
 
 std::vector<const Verb*> clause_verbs(const Clause& c, const Rig& rig, const LocatedPart* located) {
+  // Several things tossed by a figure holding them up is a juggle; a swimmer's crawl a stroke
+  // (toss_and_stroke.h): they stand for the throw, the swim and the crawl's move.
+  const Verb* juggle = reads_as_juggling(c, rig) ? find_verb_by_name("juggle") : nullptr;
+  const Verb* stroke = stroke_reading(c);
   std::vector<const Verb*> out;
-  for (const Verb* v : c.verbs) out.push_back(flame_verb(v, c, rig, located));
+  for (const Verb* v : c.verbs) {
+    const Verb* by = juggle && v->name == "throw" ? juggle : stroke && (v->name == "swim" || v->name == "move") ? stroke : flame_verb(v, c, rig, located);
+    if (std::find(out.begin(), out.end(), by) == out.end()) out.push_back(by);
+  }
+  if (juggle && std::find(out.begin(), out.end(), juggle) == out.end()) out.insert(out.begin(), juggle);
+  if (stroke && std::find(out.begin(), out.end(), stroke) == out.end()) out.insert(out.begin(), stroke);
   return out;
 }
 
