@@ -539,14 +539,8 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                        tape, aux, tape_cap, draw_tape, hlo, hhi, band_T, last);
     }
     if (tp > tape_cap) atomic_max(overflow, tp);
-    /* band_T: each pixel's transmittance below the entries visited so far (W in the essay).
-     * Only pixels with an entry read it: set theirs (a band's edges cover a fraction of it),
-     * or the whole band when the tape is longer than the band has pixels. */
-    if (min(tp, tape_cap) < rows * width) {
-      for (int e = 0; e < min(tp, tape_cap); ++e) band_T[(int)aux[e].x] = 1.0f;
-    } else {
-      for (int i = 0; i < rows * width; ++i) band_T[i] = 1.0f;
-    }
+    /* band_T: each pixel's transmittance below the entries visited so far (W in the essay). */
+    for (int i = 0; i < rows * width; ++i) band_T[i] = 1.0f;
     /* band_rgba (the fallback replay's colours, not read again) keeps ∂L/∂C of each pixel with
      * an entry once computed (w = 1): it depends on the pixel alone, and where draws overlap
      * (a fill and its stroke, shapes that touch) several entries share a pixel. */
@@ -556,11 +550,6 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
      *    lines. Only the tape is visited: no accumulation, no sweep. */
     for (int d = n_draws - 1; d >= 0; --d) {
       const int2 chunks = draw_chunks[d];
-      /* Which rows of the band hold an entry of this draw with a non-zero ∂L/∂a (see the
-       * line walk below). */
-      int row_g[BAND_H];
-      for (int r = 0; r < rows; ++r) row_g[r] = 0;
-      int any_g = 0;
       const float4 color = draw_color[d];
       const int rule = draw_rule[d];
       const int painted = draw_paint[d] >= 0;
@@ -592,26 +581,12 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
         }
         grow_hull2(gcell + r * width, &glo[r], &ghi[r], x, x);
         gcell[px] = g;
-        if (g.x != 0.0f || g.y != 0.0f) { /* NaN counts as non-zero: it must propagate */
-          row_g[r] = 1;
-          any_g = 1;
-        }
         band_T[px] = T * (1.0f - fill_rule_coverage(b.w, rule) * c.w);
       }
-      /* A row whose cells all hold a zero ∂L/∂a (the draw hidden there, T = 0, or no entry)
-       * adds an exact ±0 to a line's gradient: the walk skips it, and a draw with no such row
-       * in the band (hidden under the draws above it, common in a layered scene) only writes
-       * its lines' zero partials. The sums are the same bits: a sum started at +0 is never −0,
-       * so adding a signed zero to it changes nothing. */
       for (int c = chunks.x; c < chunks.x + chunks.y; ++c) {
         const float4 b = B[c];
         if (!band_reaches(b, fy0, fy1, fw)) continue;
         const int2 range = chunk_lines[c];
-        if (!any_g) {
-          for (int j = range.x; j < range.x + range.y; ++j)
-            partial[((size_t)(k - k0) * n_bands + band) * n_lines + j] = (float4)(0.0f);
-          continue;
-        }
         for (int j = range.x; j < range.x + range.y; ++j) {
           const float4 l = L[j];
           const float ymin = fmin(l.y, l.w) - fy0, ymax = fmax(l.y, l.w) - fy0;
@@ -627,7 +602,6 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
           const int cb = (int)clamp(floor(fmax(l.x, l.z)), 0.0f, fw - 1.0f);
           float4 g = (float4)(0.0f);
           for (int r = r0; r <= r1; ++r) {
-            if (!row_g[r]) continue;
             grow_hull2(gcell + r * width, &glo[r], &ghi[r], ca, cb);
             g += walk_line_grad(l, on, at, y0 + r, width, gcell + r * width);
           }
