@@ -14,6 +14,7 @@
 #include "raster/raster_cl.h"
 #include "raster/raster_plan.h"
 #include "scene/synthetic_scene.h"
+#include "scoped_env.h"
 #include "temp_dir.h"
 
 using namespace svgm;
@@ -36,8 +37,9 @@ size_t work_group_functions(const fs::path& dir) {
 TEST_SUITE("opencl") {
   TEST_CASE("a program missing from the cache is compiled by a child; this process loads it and builds none") {
     test::TempDir dir("svgm_child");
-    setenv("SVGMOTION_CACHE_DIR", dir.path.c_str(), 1);
-    setenv(kCompileChildVar, SVGM_CLI_EXE, 1);
+    // Given back at the end of the case, set or not: later tests share this process.
+    test::ScopedEnv cache("SVGMOTION_CACHE_DIR", dir.path.string());
+    test::ScopedEnv child(kCompileChildVar, std::string(SVGM_CLI_EXE));
     {
       ClRuntime rt("auto");
       const Scene s = synthetic_blobs(2, 64);
@@ -52,7 +54,7 @@ TEST_SUITE("opencl") {
       CHECK(bins == 1);
     }
     // Without a usable child it compiles here, as before.
-    setenv(kCompileChildVar, "/nonexistent/svgmotion", 1);
+    child.set(std::string("/nonexistent/svgmotion"));
     {
       ClRuntime rt("auto");
       const Scene s = synthetic_blobs(2, 64);
@@ -60,8 +62,6 @@ TEST_SUITE("opencl") {
       CHECK(rt.programs_compiled_in_child() == 0);
       CHECK(rt.programs_built_from_source() == 1);
     }
-    unsetenv(kCompileChildVar);
-    unsetenv("SVGMOTION_CACHE_DIR");
   }
 
   TEST_CASE("after the child, a render of many strokes compiles nothing in PoCL's cache") {
