@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "svgmotion/svg_reader.h"
 #include "procedural/motion_plan.h"
@@ -51,6 +52,22 @@ RigBox box(double x0, double y0, double x1, double y1) {
   return b;
 }
 
+// The plan of `words` said of the test rose (rose_stem.svg: one stem whose top is (100, 95), a
+// leaf, a head and a petal drawn on it), checked to be one action on the located bloom, pivoted
+// at the stem's top.
+MotionPlan rose_bloom_plan(const Drawing& d, const std::string& words) {
+  const ParsedPrompt prompt = parse_prompt(words);
+  REQUIRE(prompt.clauses[0].figure == FigureClass::Plant);
+  MotionPlan plan = plan_from_prompt(prompt, d.rig, 1);
+  REQUIRE(plan.actions.size() == 1);
+  const PlannedAction& a = plan.actions[0];
+  CHECK(a.region == Region::Located);
+  REQUIRE(a.lobes.size() == 1);
+  CHECK(a.lobes[0].pivot.x == doctest::Approx(100));
+  CHECK(a.lobes[0].pivot.y == doctest::Approx(95));
+  return plan;
+}
+
 }  // namespace
 
 TEST_SUITE("video") {
@@ -81,15 +98,8 @@ TEST_CASE("elongated parts: a jellyfish's tentacles wave about their ends under 
 TEST_CASE("elongated parts: a rose droops at its neck, the top of its one stem; the stem and the leaf hold") {
   const Drawing d("rose_stem.svg");
   REQUIRE(d.rig.parts.size() == 1);
-  const ParsedPrompt prompt = parse_prompt("the rose droops on its stem");
-  REQUIRE(prompt.clauses[0].figure == FigureClass::Plant);
-  const MotionPlan plan = plan_from_prompt(prompt, d.rig, 1);
-  REQUIRE(plan.actions.size() == 1);
+  const MotionPlan plan = rose_bloom_plan(d, "the rose droops on its stem");
   const PlannedAction& a = plan.actions[0];
-  CHECK(a.region == Region::Located);
-  REQUIRE(a.lobes.size() == 1);
-  CHECK(a.lobes[0].pivot.x == doctest::Approx(100));
-  CHECK(a.lobes[0].pivot.y == doctest::Approx(95));
   CHECK(a.lobe_paths == std::vector<int>{2, 3});
   CHECK(a.one_sided != 0);  // down and back, not up past the stem as well
   CHECK(a.why.find("found as bloom: 2 elements drawn above the top of the one stem (path 1)") != std::string::npos);
@@ -102,15 +112,8 @@ TEST_CASE("elongated parts: a rose droops at its neck, the top of its one stem; 
 
 TEST_CASE("elongated parts: a plant that nods turns its bloom about the top of its stem, the stem and leaf still") {
   const Drawing d("rose_stem.svg");
-  const ParsedPrompt prompt = parse_prompt("the rose nods");
-  REQUIRE(prompt.clauses[0].figure == FigureClass::Plant);
-  const MotionPlan plan = plan_from_prompt(prompt, d.rig, 1);
-  REQUIRE(plan.actions.size() == 1);
+  const MotionPlan plan = rose_bloom_plan(d, "the rose nods");
   const PlannedAction& a = plan.actions[0];
-  CHECK(a.region == Region::Located);
-  REQUIRE(a.lobes.size() == 1);
-  CHECK(a.lobes[0].pivot.x == doctest::Approx(100));
-  CHECK(a.lobes[0].pivot.y == doctest::Approx(95));
   // Two nods a loop: at t = 1/8 (frame 2 of 17) the first is at its full angle. The head turns
   // whole about (100, 95): its bottom (that point) stays, its top (100, 25), 70 above it,
   // moves the chord 2 * 70 * sin(angle / 2).
