@@ -56,6 +56,8 @@ TEST_CASE("canvas room: a figure across 85 % of its canvas gets room when the pr
   CHECK(auto_room(wide, "the zebra wags its tail", nullptr, 0) == 0);
   CHECK(auto_room(wide, "the ladybird crawls up", nullptr, 0) == 0);
   CHECK(auto_room(wide, "", nullptr, 0) == 0);
+  CHECK(auto_room(wide, "the cyclist pedals hard", nullptr, 0) == 0);  // untold, a rider stays: no gait
+  CHECK(auto_room(wide, "the cyclist pedals to the left", nullptr, 0) == kAutoRoom);
   // At 60 % of the width it has room enough: kTravelReach of its width each way fits.
   const Scene narrow = read(R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 50">
     <rect x="20" y="15" width="60" height="20" fill="red"/></svg>)");

@@ -14,7 +14,8 @@ bool sends_figure_across(const ParsedPrompt& prompt) {
     for (const Verb* v : c.verbs)
       if (gets_somewhere(*v) || v->name == "move") {
         told = told || c.mods.travel != 0;
-        untold = untold || (c.mods.travel == 0 && c.mods.vertical == 0 && c.mods.depth == 0);
+        // Untold, only a gait goes (travel_where_told): a rider's pedalling is the vehicle's.
+        untold = untold || (c.mods.travel == 0 && c.mods.vertical == 0 && c.mods.depth == 0 && is_gait(*v, c.figure));
       }
   }
   return told || (untold && !stays);
