@@ -35,6 +35,19 @@ bool head_point(const Rig& rig, Vec2& at) {
   return true;
 }
 
+// Whether element e has a twin mirrored across the figure's middle: another element of like
+// size (kTwinSize) whose middle, reflected, lies within kTwinNear of the figure's width of e's.
+bool mirrored(const Rig& rig, const std::vector<RigElement>& E, int e) {
+  const RigBox& b = E[e].box;
+  const double cx = rig.figure.centre().x, near = kTwinNear * rig.figure.w();
+  for (size_t j = 0; j < E.size(); ++j) {
+    const RigBox& o = E[j].box;
+    if (static_cast<int>(j) == e || o.area() < (1 - kTwinSize) * b.area() || o.area() > (1 + kTwinSize) * b.area()) continue;
+    if (std::hypot(2 * cx - o.centre().x - b.centre().x, o.centre().y - b.centre().y) <= near) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 LocatedPart wing_on_body(const Rig& rig) {
@@ -62,6 +75,8 @@ LocatedPart wing_on_body(const Rig& rig) {
     if (rig.eye_side != 0 && ((e.x >= b.x0 && e.x <= b.x1 && e.y >= b.y0 && e.y <= b.y1) ||
                               std::hypot(b.centre().x - e.x, b.centre().y - e.y) < kWingFromEye * D))
       continue;
+    // Not one of a mirrored pair (a bat seen from the front: its wing's panels left and right).
+    if (mirrored(rig, E, static_cast<int>(i))) continue;
     if (wing < 0 || b.area() > E[wing].box.area()) wing = static_cast<int>(i);
   }
   if (wing < 0) return out;

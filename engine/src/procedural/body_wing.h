@@ -10,7 +10,8 @@
 // and in none of its limbs (Rig::limbs: a cheek patch lies in the head's), and away from the
 // eye. It turns about its shoulder: its point nearest the head (the drawn eye, eye_cue.h, else
 // the rig's head parts, else the tips of the silhouette's head limbs), else nearest the body's
-// middle; only its own paths (and those drawn on it) move, the body under it holds.
+// middle; only its own paths (and those drawn on it) move, the body under it holds. A front
+// view's wings come in mirrored pairs: a shape with a twin across the middle is none.
 #pragma once
 
 #include <string>
@@ -25,6 +26,11 @@ constexpr double kWingMinShare = 0.03;  // of the body element's box: a wing's b
 constexpr double kWingMaxShare = 0.45;  // and at most (a larger inner shape is a second body colour)
 constexpr double kWingLow = 0.75;       // its middle above this share of the body's height from its top
 constexpr double kWingFromEye = 0.2;    // its middle at least this share of the figure's longer side from the eye
+// A side view's wing has no twin: none of like size (areas within kTwinSize of each other)
+// lies mirrored across the figure's middle within kTwinNear of its width (a front-view bat's
+// wing panels do: one panel turned alone tore its wing).
+constexpr double kTwinSize = 0.3;
+constexpr double kTwinNear = 0.1;
 
 // The wing drawn over the body of the rig's figure; lobes empty when none fits.
 LocatedPart wing_on_body(const Rig& rig);
