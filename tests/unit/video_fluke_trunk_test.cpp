@@ -8,6 +8,7 @@
 
 #include "svgmotion/svg_reader.h"
 #include "procedural/skeleton_lobes.h"
+#include "test_paths.h"
 
 using namespace svgm;
 
@@ -16,7 +17,7 @@ TEST_SUITE("video") {
 TEST_CASE("a whale's forked fluke on a thin stalk is one limb turning about the stalk's root; the body is no limb") {
   // The drawing: an ellipse (the body, x 5-75, y 34-66) and a stalk from its top right (x 68-75,
   // y 22-46) forking at y 17-22 into two lobes with tips near (60.5, 9.5) and (84.5, 9.5).
-  const Scene s = read_svg_file(std::string(SVGM_TEST_DATA) + "/motion/fluke_tail.svg");
+  const Scene s = read_svg_file(svgm::test::data_path("motion/fluke_tail.svg"));
   const std::vector<ArmLobe> lobes = skeleton_lobes(s, {0, 1});
   REQUIRE(lobes.size() == 1);
   const ArmLobe& fluke = lobes[0];
