@@ -10,7 +10,6 @@
 #include <set>
 
 #include "svgmotion/error.h"
-#include "procedural/body_wing.h"
 #include "procedural/carried_flight.h"
 #include "procedural/figure_pieces.h"
 #include "procedural/invisible_spin.h"
@@ -444,8 +443,7 @@ struct Builder {
       if (!picked.empty() && sided) {
         a.lobes = std::move(picked);
         a.silhouette = skeletal = true;
-      } else if (LocatedPart wing; winged && !(wing = wing_on_body(rig)).lobes.empty())
-        return beat_drawn_wing(rig, a, wing, note);  // a bird's wing drawn over its flank (body_wing.h)
+      }
     }
     // A tail leaves the end away from the head; the seed's coin only when no head shows which.
     // (The coin is drawn for a far end only, as before: the other bends' draws stay the seed's.)
