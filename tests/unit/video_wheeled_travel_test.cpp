@@ -59,16 +59,4 @@ TEST_CASE("a wheeled figure's move, glide, flight or gait is its drive: its whee
   CHECK(wheeled_travel(person.verbs[0], person)->name == "move");
 }
 
-TEST_CASE("a bus and a train are wheeled, as WordNet's wheeled vehicles are; a shuttle is not") {
-  if (!wordnet_or_skip()) return;
-  const Lexicon& lx = Lexicon::shared();
-  CHECK(lx.noun("bus").figure == FigureClass::Wheeled);
-  CHECK(lx.noun("train").figure == FigureClass::Wheeled);
-  CHECK(lx.noun("car").figure == FigureClass::Wheeled);
-  CHECK(lx.noun("sailboat").figure == FigureClass::Object);  // a vessel rocks: not on wheels
-  // WordNet's public transport holds the shuttle too: the space shuttle is no wheeled figure.
-  CHECK(lx.noun("shuttle").figure != FigureClass::Wheeled);
-  CHECK(parse_prompt("the space shuttle blasts off").clauses.at(0).figure != FigureClass::Wheeled);
-}
-
 }  // TEST_SUITE
