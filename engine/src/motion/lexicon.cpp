@@ -43,6 +43,11 @@ constexpr std::array<int, 6> kPartFiles = {5, 6, 8, 17, 19, 20};
 constexpr int kMaxPartDepth = 3;
 constexpr int kMaxNounDepth = 20;  // deeper than any noun hierarchy in WordNet 3.0 (19)
 constexpr int kAnimalFile = 5, kFoodFile = 13, kPersonFile = 18;
+// A verb of making a noise: one of its first kSoundSenses senses within kSoundDepth hypernym
+// steps of a sound anchor ("hum" 1 is to sing, 2 to make a low sound; "chug" is one step from
+// "sound, go"; "crow" 3, to utter shrill sounds, one step from "utter, emit").
+constexpr size_t kSoundSenses = 3;
+constexpr int kSoundDepth = 2;
 
 template <size_t N>
 bool in(const std::array<int, N>& a, int v) { return std::find(a.begin(), a.end(), v) != a.end(); }
@@ -177,6 +182,10 @@ void Lexicon::claim_parts() {
 }
 
 void Lexicon::place_anchors() {
+  for (const VerbSense& a : sound_anchors()) {
+    const std::vector<uint32_t> senses = db_->senses(a.lemma, Pos::Verb);
+    if (a.sense >= 1 && static_cast<size_t>(a.sense) <= senses.size()) sound_roots_.push_back(senses[a.sense - 1]);
+  }
   for (const svgm::NounAnchor& a : noun_anchors()) {
     const std::vector<uint32_t> senses = db_->senses(a.lemma, Pos::Noun);
     if (a.sense >= 1 && static_cast<size_t>(a.sense) <= senses.size())
@@ -190,6 +199,23 @@ bool Lexicon::noun_is_animal_word(std::string_view word) const {
     for (uint32_t sense : db_->senses(lemma, Pos::Noun))
       if (const auto s = db_->synset(Pos::Noun, sense); s && s->lex_file == kAnimalFile) return true;
   return false;
+}
+
+bool Lexicon::is_sound_verb(std::string_view word) const {
+  if (!db_) return false;
+  const std::vector<std::string> lemmas = db_->base_forms(word, Pos::Verb);
+  if (lemmas.empty()) return false;
+  const std::vector<uint32_t> senses = db_->senses(lemmas.front(), Pos::Verb);
+  bool sound = false;
+  for (size_t r = 0; r < std::min<size_t>(senses.size(), kSoundSenses); ++r) {
+    const std::optional<Synset> s = db_->synset(Pos::Verb, senses[r]);
+    if (!s) continue;
+    if (s->lex_file == kMotionFile) return false;
+    std::vector<uint32_t> up = {senses[r]};
+    for (const auto& a : db_->hypernyms(Pos::Verb, senses[r], kSoundDepth)) up.push_back(a.offset);
+    for (uint32_t o : up) sound = sound || std::find(sound_roots_.begin(), sound_roots_.end(), o) != sound_roots_.end();
+  }
+  return sound;
 }
 
 bool Lexicon::knows_verb(std::string_view word) const { return db_ && !db_->base_forms(word, Pos::Verb).empty(); }
@@ -282,6 +308,14 @@ VerbReading Lexicon::verb_from_lemmas(const std::vector<std::string>& lemmas) co
   return {};
 }
 
+FigureClass Lexicon::sense_class(uint32_t sense) const {
+  std::vector<uint32_t> chain = {sense};
+  for (const auto& a : db_->hypernyms(Pos::Noun, sense, kMaxNounDepth)) chain.push_back(a.offset);
+  for (uint32_t o : chain)
+    if (const auto it = noun_anchors_.find(o); it != noun_anchors_.end() && it->second.figure != FigureClass::None) return it->second.figure;
+  return FigureClass::None;
+}
+
 std::vector<uint32_t> Lexicon::noun_senses(const std::string& lemma) const {
   const std::vector<uint32_t> senses = db_->senses(lemma, Pos::Noun);
   const int tagged = db_->tagged_senses(lemma, Pos::Noun);
@@ -306,8 +340,11 @@ std::vector<uint32_t> Lexicon::noun_senses(const std::string& lemma) const {
   // An animal comes before the senses ahead of it that are people ("whale", "snake", "crab"
   // said of a person are figures of speech), food made of it ("octopus") or not ranked by
   // tagged frequency at all ("seal": eight artifacts first, in no meaningful order).
+  // Not an animal sense the anchors class as no creature: "baby" 6, a young mammal, is filed
+  // under "young" apart from the mammals (an object), and the infant of the first sense, a person,
+  // was read so.
   for (size_t i = 0; i < order.size(); ++i) {
-    if (order[i].lex_file != kAnimalFile) continue;
+    if (order[i].lex_file != kAnimalFile || !is_creature(sense_class(order[i].offset))) continue;
     const bool before_ok = std::all_of(order.begin(), order.begin() + static_cast<long>(i), [&](const Sense& s) {
       return s.lex_file == kPersonFile || s.lex_file == kFoodFile || s.rank >= tagged;
     });

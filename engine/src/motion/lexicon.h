@@ -61,6 +61,12 @@ class Lexicon {
   // Whether WordNet files a sense of the noun `word` with the animals (noun.animal holds their
   // body parts: "foreleg", "forepaw", "forewing"; "forearm" and "forehead" are noun.body).
   bool noun_is_animal_word(std::string_view word) const;
+  // Whether `word` as a verb mostly says a noise is made ("chugs", "rumbles", "drones", "hums",
+  // "crows"): one of its first senses is a kind of making a noise (lexicon_anchors.h's
+  // sound_anchors) and none of them a motion ("zooms", "whistles" past: moving with a noise).
+  // What moves then is the one making it (prompt_parse.cpp: a machine's own motion, an
+  // insect's wings, a creature's mouth).
+  bool is_sound_verb(std::string_view word) const;
   bool knows_verb(std::string_view word) const;
   bool knows_noun(std::string_view word) const;
   // How many of the word's senses as `pos` are ranked by tagged frequency (its first base form):
@@ -72,6 +78,7 @@ class Lexicon {
   using Pos = wordnet::Pos;
   VerbReading verb_from_lemmas(const std::vector<std::string>& lemmas) const;
   std::vector<uint32_t> noun_senses(const std::string& lemma) const;
+  FigureClass sense_class(uint32_t sense) const;  // the nearest class anchor up its hypernyms
   void claim_verbs();
   bool is_drawn_change(uint32_t offset) const;
   void claim_parts();
@@ -89,6 +96,7 @@ class Lexicon {
     const char* motion;  // a word of the vocabulary, or null
   };
   std::unordered_map<uint32_t, NounPlace> noun_anchors_;  // noun synset -> class, motion
+  std::vector<uint32_t> sound_roots_;                     // verb synsets of making a noise
 };
 
 // The motion a figure of this class makes when the prompt names none for it (a bird flaps, a

@@ -93,11 +93,16 @@ const std::vector<NounAnchor> kNounAnchors = {
   {"structure", 1, F::Scene, nullptr},  // buildings, bridges
   {"physical_entity", 1, F::Object, nullptr},
 };
+
+// Making a noise: WordNet's "sound, go" (make a certain noise: chug, rumble, drone, hum 2, buzz),
+// "noise, make noise, resound" (clang, clatter) and "utter, emit, let out" (crow, bark, roar).
+const std::vector<VerbSense> kSoundAnchors = {{"sound", 2}, {"noise", 1}, {"utter", 2}};
 // clang-format on
 
 }  // namespace
 
 const std::vector<VerbAnchor>& verb_anchors() { return kVerbAnchors; }
+const std::vector<VerbSense>& sound_anchors() { return kSoundAnchors; }
 const std::vector<NounAnchor>& noun_anchors() { return kNounAnchors; }
 
 const char* class_motion(FigureClass c) {

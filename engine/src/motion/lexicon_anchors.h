@@ -27,6 +27,15 @@ struct NounAnchor {
 };
 const std::vector<NounAnchor>& noun_anchors();
 
+// A verb synset (lemma and WordNet 3.0 sense number, 1-based) that every way of making a noise
+// is a kind of: "chug", "rumble", "drone" (sound, go: "make a certain noise"), "crow" (utter,
+// emit). Lexicon::is_sound_verb reads a verb under one as a sound.
+struct VerbSense {
+  const char* lemma;
+  int sense;
+};
+const std::vector<VerbSense>& sound_anchors();
+
 // The motion word of each class (default_verb).
 const char* class_motion(FigureClass c);
 
