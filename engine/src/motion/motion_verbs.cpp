@@ -210,7 +210,7 @@ bool is_filler_word(std::string_view w) {
                 "in", "on", "onto", "into", "to", "at", "as", "by", "for", "from", "while", "then", "out", "over",
                 "under", "through", "across", "around", "about", "its", "has", "have", "some", "very", "so", "too",
                 "each", "other", "back", "forth", "side", "mid", "air", "s", "one", "own", "like", "making", "keeps",
-                "keep", "starts", "start", "begins", "slowly"});
+                "keep", "starts", "start", "begins", "slowly", "along", "round"});
 }
 
 const char* primitive_name(Primitive p) {

@@ -87,6 +87,9 @@ struct Modifiers {
   // own side: "his right arm"): "drifts right", "walks to the left" (prompt_parse reads which
   // a "left" or "right" is), "rightwards".
   int travel = 0;    // +1 to the viewer's right, -1 to the left, 0 neither or both
+  // "across the screen", "swims across the pond": it goes across, the prompt says not which way
+  // (motion_plan.cpp sends it the way it faces, else to the right).
+  bool across = false;
   int depth = 0;     // +1 towards the viewer ("towards the camera"), -1 away ("into the distance")
   // Which of the named limbs, by where they are on the figure (prompt_parse reads these words
   // only right before a part noun: "its hind legs", "the front paws", "his lower arm"):

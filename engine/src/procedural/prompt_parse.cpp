@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "procedural/gait_travel.h"
 #include "svgmotion/error.h"
 
 namespace svgm {
@@ -54,13 +55,15 @@ bool is_possessive(const std::string& w) {
 }
 
 bool is_particle(const std::string& w) {
-  return w == "off" || w == "out" || w == "up" || w == "down" || w == "away" || w == "over" || w == "around";
+  return w == "off" || w == "out" || w == "up" || w == "down" || w == "away" || w == "over" || w == "around" || w == "along" ||
+         w == "round" || w == "about";
 }
 
 // "left" or "right" where the whole figure goes ("drifts right", "walks to the left"), not the
 // figure's own side ("his right arm", "the left wing", "to his left"): no possessive before it
 // and no noun after it. A bare one ("leans left") keeps setting the side as it always has; "to
-// the left" is only the travel.
+// the left" is only the travel. After "from" it is where the figure sets out from: it goes the
+// other way ("from left to right": to the right; read as two ways, they cancelled to none).
 bool read_travel(const std::string& w, const std::string& prev, const std::string& prev2, const std::string& next,
                  Modifiers& m) {
   if (w != "left" && w != "right") return false;
@@ -68,6 +71,12 @@ bool read_travel(const std::string& w, const std::string& prev, const std::strin
   const bool next_is_noun = !next.empty() && !is_filler_word(next) && !is_preposition(next) && !is_conjunction(next) &&
                             !apply_modifier(next, probe);
   if (is_possessive(prev) || next_is_noun) return false;
+  if (prev == "from" || (prev == "the" && prev2 == "from")) {
+    const int from = w == "right" ? -1 : 1;
+    m.travel = m.travel == -from ? 0 : from;
+    m.words.push_back("from the " + w);
+    return true;
+  }
   const int dir = w == "right" ? 1 : -1;
   m.travel = m.travel == -dir ? 0 : dir;
   const bool phrase = prev == "the" && (prev2 == "to" || prev2 == "toward" || prev2 == "towards");
@@ -276,6 +285,47 @@ const Verb* fire_motion(const Lexicon& lexicon, const std::string& w, const Verb
   return own;
 }
 
+// A verb of making a noise (Lexicon::is_sound_verb: "chugs", "rumbles", "drones", "crows") says
+// what moves by who makes it, the clause's first noun of a class that is not in a phrase: a
+// thing that moves by itself makes its noise moving so (a train chugs as it drives, a boat as it
+// rocks); an insect with its wings (its buzz); a thing that does not move by itself shakes
+// with it (an alarm clock rings, as a cartoon draws it); a creature, or no one named, with its
+// mouth (WordNet's reading where it has one, "hums": sings, speaks; else speak, a stem of eat).
+// Read through WordNet alone, "the locomotive chugs" was not understood and "the beetle drones"
+// moved its head.
+// Who does what the clause says: its last noun of a class before its verb, not in a phrase (the
+// head of a compound: the train of "the steam train", the clock of "the alarm clock").
+const PromptNoun* clause_subject(const Clause& c) {
+  const PromptNoun* who = nullptr;
+  for (const PromptNoun& n : c.nouns)
+    if (!n.object_of_preposition && !n.after_verb && n.figure != FigureClass::None) who = &n;
+  return who;
+}
+
+VerbReading sound_motion(const Lexicon& lexicon, const std::string& w, const Clause& c) {
+  const PromptNoun* who = clause_subject(c);
+  if (who && who->figure == FigureClass::Insect) return {find_verb_by_name("buzz"), "an insect's noise: its wings", 0};
+  if (who && who->motion && !is_creature(who->figure)) return {who->motion, "what " + who->word + " does", 0};
+  if (who && who->figure == FigureClass::Object) return {find_verb_by_name("tremble"), "a thing making a noise shakes", 0};
+  VerbReading r = lexicon.verb(w);
+  if (!r.verb) r = {vocabulary_verb("speak"), "a voice: speak", 0};
+  return r;
+}
+
+// A thing that goes by itself (a vehicle's drive, an aircraft's flight: not a creature, whose
+// verbs say more) sent somewhere ("the steam train puffs off to the left": its smoke, read as a
+// blow) goes by its own motion when no verb of the clause takes it anywhere: the train swayed
+// where it stood. A clause with no verb moves by the noun's motion anyway (motion_plan.cpp).
+void own_motion_sent(Clause& c, ParsedPrompt& out) {
+  const PromptNoun* who = clause_subject(c);
+  if ((c.mods.travel == 0 && !c.mods.across) || c.verbs.empty() || !who || !who->motion || is_creature(who->figure) || !locomotes(*who->motion) ||
+      std::any_of(c.verbs.begin(), c.verbs.end(), [](const Verb* v) { return locomotes(*v); }))
+    return;
+  out.readings.push_back("'" + who->word + "' sent somewhere goes by its own motion, " + who->motion->name);
+  c.verbs.push_back(who->motion);
+  c.verb_words.push_back(who->word + "->" + who->motion->name);
+}
+
 // Words of one clause (lower case, letters only). `after_prep` says the clause continues a
 // prepositional phrase ("with black dots and black boots": "and" split it, and "boots" is
 // still what she is dressed with); on return, whether the clause ends inside one. Words the
@@ -304,6 +354,8 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
     prev_was_verb = prev_was_noun = false;
     const std::string next = wi + 1 < words.size() ? words[wi + 1] : std::string();
     if (read_travel(w, before, before2, next, c.mods)) continue;
+    // "walks across the road": it goes across (which way: gait_travel.h), after a verb only.
+    if (w == "across" && !c.verbs.empty() && !c.mods.across) c.mods.across = true, c.mods.words.push_back("across");
     if (const int d = depth_of(words, wi)) {
       c.mods.depth = d;
       c.mods.words.push_back(d > 0 ? "towards the viewer" : "away");
@@ -348,7 +400,9 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
     // the rain, lashing; not "rain" falling on eyelashes).
     const bool next_verb_only = next_third && !next_verb && lexicon.has_wordnet() && lexicon.knows_verb(next) &&
                                 lexicon.tagged_senses(next, wordnet::Pos::Verb) > lexicon.tagged_senses(next, wordnet::Pos::Noun);
-    const bool subject = bare && ((next_verb && next_verb != verb_for_word(w)) || ((prev_was_start || after_determiner) && next_verb_only));
+    // After a noun too, a compound's head ("the steam train puffs": no training, no exercise).
+    const bool subject = bare && ((next_verb && next_verb != verb_for_word(w)) ||
+                                  ((prev_was_start || after_determiner || after_noun_word) && next_verb_only));
     const bool noun_place = ((after_determiner || after_preposition) && !participle) || object;
     const Verb* v = noun_place || subject ? nullptr : verb_for_word(w);
     if (v && joined_without_motion(lexicon, w, next, out)) continue;
@@ -389,13 +443,14 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
       if (!r.verb && subj && subj->motion && !subj->object_of_preposition &&
           (subj->figure == FigureClass::Flame || subj->figure == FigureClass::Liquid))
         r = {subj->motion, "what " + subj->word + " does", 0};
+      if (!r.verb && lexicon.is_sound_verb(w)) r = sound_motion(lexicon, w, c);
       if (!r.verb) r = lexicon.verb(w);
       if (r.verb) {
         if (std::find(c.verbs.begin(), c.verbs.end(), r.verb) == c.verbs.end()) {
           c.verbs.push_back(r.verb);
           c.verb_words.push_back(said + "->" + r.verb->name);
         }
-        out.readings.push_back("'" + said + "' read as " + r.verb->name + (r.via == "anchor" ? "" : r.via.rfind("what ", 0) == 0 ? " (" + r.via + ")" : " (WordNet: " + r.via + ")"));
+        out.readings.push_back("'" + said + "' read as " + r.verb->name + (r.via == "anchor" ? "" : r.via.find(' ') != std::string::npos ? " (" + r.via + ")" : " (WordNet: " + r.via + ")"));
         after_prep = false;
         prev_was_verb = true;
         continue;
@@ -454,6 +509,7 @@ void merge_into(Clause& into, Clause from) {
     if (!apply_modifier(w, into.mods)) into.mods.words.push_back(w);
   if (from.mods.travel) into.mods.travel = into.mods.travel == -from.mods.travel ? 0 : from.mods.travel;
   if (from.mods.depth) into.mods.depth = from.mods.depth;
+  into.mods.across = into.mods.across || from.mods.across;
   if (from.mods.end) into.mods.end = from.mods.end;
   if (from.mods.level) into.mods.level = from.mods.level;
 }
@@ -502,6 +558,7 @@ ParsedPrompt parse_prompt(const std::string& prompt) {
       for (const PromptNoun& n : c.nouns)
         if (n.after_verb && !n.object_of_preposition && !n.own_predicate) antecedent = &n;
     clauses.push_back(read_clause(raw[i], after_prep, out, antecedent));
+    own_motion_sent(clauses.back(), out);
     prep_open = after_prep && clauses.back().verbs.empty();
   }
   // A clause without a verb joins the one before it (or, first in the prompt, the one after).

@@ -16,7 +16,12 @@
 // walk); in a noun's place (after an article, a possessive or a preposition, or before a verb:
 // "rides the waves", "the hummingbird hovers"), as a figure class and the motion such a thing
 // makes by itself. "left" and "right" before a part ("his right arm") are the figure's own side;
-// elsewhere ("drifts right", "walks to the left") where the whole figure travels.
+// elsewhere ("drifts right", "walks to the left") where the whole figure travels; after "from"
+// ("from left to right") where it sets out from. "across" after a verb says it goes across, not
+// which way (Modifiers::across). A verb of making a noise ("the locomotive chugs", "the beetle
+// drones") is read as the motion of who makes it: a vehicle's own, an insect's wings, a thing's
+// shake, a creature's voice; a vehicle sent somewhere by a verb that takes it nowhere goes by its
+// own motion too.
 #pragma once
 
 #include <string>
