@@ -1,6 +1,7 @@
 // Which way a figure goes on its gait when the prompt does not say (see gait_travel.h).
 #include "procedural/gait_travel.h"
 
+#include <algorithm>
 #include <cctype>
 #include <sstream>
 #include <vector>
@@ -28,7 +29,13 @@ bool gets_somewhere(const Verb& v) {
   return false;
 }
 
-bool locomotes(const Verb& v) { return gets_somewhere(v) || v.name == "fly" || v.name == "soar" || v.name == "float"; }
+bool locomotes(const Verb& v) {
+  if (gets_somewhere(v) || v.name == "fly" || v.name == "soar" || v.name == "float") return true;
+  // A slide of the whole figure of its own (a drive, a glide, a buzz's dart): told a way, it
+  // goes there as far as a gait does. Looped at its own 10 % or 4 %, "the locomotive chugs
+  // along to the right" and "the ship sails to the right" moved a few pixels and back.
+  return std::any_of(v.actions.begin(), v.actions.end(), [](const Action& a) { return a.primitive == Primitive::Slide && a.target == Target::Whole; });
+}
 
 bool is_gait(const Verb& v, FigureClass figure) {
   if (v.name == "move") return true;
@@ -61,6 +68,16 @@ int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, s
   if (c.figure == FigureClass::Biped) return 0;
   if (why) *why = "no direction said and its facing not known: the figure goes to the right first and back";
   return 1;
+}
+
+ParsedPrompt travel_across(const ParsedPrompt& prompt, const Rig& rig) {
+  ParsedPrompt out = prompt;
+  for (Clause& c : out.clauses)
+    if (c.mods.across && c.mods.travel == 0) {
+      const int facing = facing_side(rig, nullptr);
+      c.mods.travel = facing != 0 ? facing : 1;
+    }
+  return out;
 }
 
 namespace {

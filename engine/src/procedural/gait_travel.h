@@ -21,7 +21,7 @@ namespace svgm {
 bool gets_somewhere(const Verb& v);
 
 // A verb by which a figure gets somewhere: a gait (legs in turn), hops, a swimming or crawling
-// body's wave, wings in flight.
+// body's wave, wings in flight, a slide of its own (a drive, a glide).
 bool locomotes(const Verb& v);
 
 // Whether `v`, said of a figure of class `figure` with no direction, is a gait that carries it
@@ -37,6 +37,12 @@ bool is_gait(const Verb& v, FigureClass figure);
 // plan leaves out the whole figure's accents then, a swim's own slide among them), or the figure is a person whose facing is not known. `why` gets "no
 // direction said: the figure faces left (its eye) and goes that way".
 int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, std::string* why);
+
+// `prompt` with each clause that says the figure goes across and not which way ("floats across
+// the screen", "the truck rolls across": Modifiers::across) sent the way the figure faces, else to
+// the right, as a reader reads: "across" is a travel told, whatever the verb (the cloud and the
+// truck it was said of stayed where they were).
+ParsedPrompt travel_across(const ParsedPrompt& prompt, const Rig& rig);
 
 // "on the spot", "in place", "in one spot": words that keep the figure where it is.
 bool stays_put(const std::string& text);

@@ -603,7 +603,8 @@ void sway_or_name_missed(Builder& b, const ParsedPrompt& prompt, const std::vect
 
 }  // namespace
 
-MotionPlan plan_from_prompt(const ParsedPrompt& prompt, const Rig& rig, uint32_t seed) {
+MotionPlan plan_from_prompt(const ParsedPrompt& said, const Rig& rig, uint32_t seed) {
+  const ParsedPrompt prompt = travel_across(said, rig);
   Builder b{rig, std::mt19937(seed), {}};
   for (const Clause& c : prompt.clauses)
     if (b.figure == FigureClass::None) b.figure = c.figure;

@@ -13,7 +13,7 @@ bool sends_figure_across(const ParsedPrompt& prompt) {
     for (const PromptNoun& n : c.nouns) stays = stays || (!n.object_of_preposition && motion_plan_internal::is_limb_target(n.target));
     for (const Verb* v : c.verbs)
       if (gets_somewhere(*v) || v->name == "move") {
-        told = told || c.mods.travel != 0;
+        told = told || c.mods.travel != 0 || c.mods.across;
         // Untold, only a gait goes (travel_where_told): a rider's pedalling is the vehicle's.
         untold = untold || (c.mods.travel == 0 && c.mods.vertical == 0 && c.mods.depth == 0 && is_gait(*v, c.figure));
       }
