@@ -375,4 +375,72 @@ TEST_CASE("parse: a verb said of fire next to it is fire's flicker; a participle
   CHECK(verb_names(parse_prompt("the man leaps over the fire").clauses.at(0)) == std::vector<std::string>{"leap"});
 }
 
+TEST_CASE("parse: a verb of making a noise moves who makes it: a vehicle's drive, an insect's wings, a thing's shake, a voice") {
+  if (!wordnet_or_skip()) return;
+  const Lexicon& lex = Lexicon::shared();
+  CHECK(lex.is_sound_verb("chugs"));
+  CHECK(lex.is_sound_verb("drones"));
+  CHECK(lex.is_sound_verb("hums"));  // its first sense is to sing, its second a low sound
+  CHECK_FALSE(lex.is_sound_verb("zooms"));  // moves along quickly (or with a hum): a motion
+  CHECK_FALSE(lex.is_sound_verb("walks"));
+  // The locomotive drives as it chugs, to the right; nothing is left not understood ("along" is
+  // no noun).
+  const ParsedPrompt loco = parse_prompt("the locomotive chugs along to the right");
+  REQUIRE(loco.clauses.size() == 1);
+  CHECK(verb_names(loco.clauses[0]) == std::vector<std::string>{"drive"});
+  CHECK(loco.clauses[0].mods.travel == 1);
+  CHECK(loco.unplaced.empty());
+  CHECK(noun_named(loco.clauses[0], "along") == nullptr);
+  CHECK(verb_names(parse_prompt("the train rumbles across the screen").clauses.at(0)) == std::vector<std::string>{"drive"});
+  // An insect's noise is its wings (WordNet reads "drone" and "hum" as speaking).
+  CHECK(verb_names(parse_prompt("the beetle drones").clauses.at(0)) == std::vector<std::string>{"buzz"});
+  CHECK(verb_names(parse_prompt("the bee hums").clauses.at(0)) == std::vector<std::string>{"buzz"});
+  // A thing that does not move by itself shakes; a creature's noise is its voice, a person's too.
+  CHECK(verb_names(parse_prompt("the alarm clock rings").clauses.at(0)) == std::vector<std::string>{"tremble"});
+  CHECK(verb_names(parse_prompt("the rooster crows").clauses.at(0)) == std::vector<std::string>{"eat"});
+  CHECK(verb_names(parse_prompt("she hums a tune").clauses.at(0)) == std::vector<std::string>{"eat"});
+}
+
+TEST_CASE("parse: the head of a compound before a verb WordNet uses as one is who does it ('the steam train puffs')") {
+  if (!wordnet_or_skip()) return;
+  const Clause c = parse_prompt("the steam train puffs off to the left").clauses.at(0);
+  const std::vector<std::string> verbs = verb_names(c);
+  CHECK(std::find(verbs.begin(), verbs.end(), "exercise") == verbs.end());  // "train" is no training
+  REQUIRE(noun_named(c, "train"));
+  CHECK(c.figure == FigureClass::Wheeled);
+  CHECK(c.mods.travel == -1);
+  // Sent somewhere by a verb that takes it nowhere (a puff, read as a blow: sway), a vehicle
+  // goes by its own drive; a creature's verb stays what it says ("the dog looks to the left").
+  CHECK(std::find(verbs.begin(), verbs.end(), "drive") != verbs.end());
+  CHECK(verb_names(parse_prompt("the dog looks to the left").clauses.at(0)) == std::vector<std::string>{"look"});
+  CHECK(verb_names(parse_prompt("the car shakes").clauses.at(0)) == std::vector<std::string>{"shake"});
+}
+
+TEST_CASE("parse: 'across', 'from the left', 'along' and 'round and round' say where it goes, not who or what") {
+  if (!wordnet_or_skip()) return;
+  const Modifiers across = parse_prompt("the cloud floats across the screen slowly").clauses.at(0).mods;
+  CHECK(across.across);
+  CHECK(across.travel == 0);  // which way: the plan's (travel_across)
+  CHECK(across.speed == 0.5);
+  CHECK_FALSE(parse_prompt("a scarf across his shoulders flutters").clauses.at(0).mods.across);  // before any verb
+  // Where it sets out from: it goes the other way (read as two ways, "from left to right" went none).
+  CHECK(parse_prompt("the snake slithers from left to right").clauses.at(0).mods.travel == 1);
+  CHECK(parse_prompt("the crab scuttles from the right").clauses.at(0).mods.travel == -1);
+  // "round and round" says the spin again: no second clause, no "move" read from "round".
+  const ParsedPrompt spin = parse_prompt("the wheel spins round and round");
+  REQUIRE(spin.clauses.size() == 1);
+  CHECK(verb_names(spin.clauses[0]) == std::vector<std::string>{"spin"});
+  const Clause hop = parse_prompt("the chick hops along").clauses.at(0);
+  CHECK(verb_names(hop) == std::vector<std::string>{"hop"});
+  CHECK(noun_named(hop, "along") == nullptr);
+}
+
+TEST_CASE("lexicon: an animal sense the anchors class as no creature does not go before the person ('baby')") {
+  if (!wordnet_or_skip()) return;
+  CHECK(Lexicon::shared().noun("baby").figure == FigureClass::Biped);  // "baby" 6, a young mammal, is no mammal in WordNet
+  // An animal sense that is a creature still goes before its figures of speech.
+  CHECK(Lexicon::shared().noun("snake").figure == FigureClass::FishOrSnake);
+  CHECK(Lexicon::shared().noun("whale").figure == FigureClass::FishOrSnake);
+}
+
 }  // TEST_SUITE

@@ -2,7 +2,7 @@
 // the right"): the whole figure slides that way first and back, its gait going on; a verb that
 // does not take the figure anywhere ("waves to the right") and a verb with a travel of its own
 // ("drives") get no second slide. Before, the direction was read and ignored: the figure walked
-// on the spot.
+// on the spot. "across" with no way said is a travel told too (gait_travel.h's travel_across).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -60,6 +60,30 @@ TEST_CASE("no direction, a verb that goes nowhere, or a verb with its own travel
   const Drawing car("car.svg");
   const MotionPlan drive = plan_from_prompt(parse_prompt("the car drives to the right"), car.rig, 1);
   CHECK(slides(drive) == 1);
+}
+
+TEST_CASE("'across' with no way said sends any figure that gets somewhere across: the way it faces, else right") {
+  const Drawing fx("stick_figure.svg");
+  // A bounce is no gait: said with no way it stays; "across" is a travel told.
+  CHECK(slides(plan_from_prompt(parse_prompt("the man bounces"), fx.rig, 1)) == 0);
+  for (const char* prompt : {"the man bounces across the screen", "the man floats across"}) {
+    CAPTURE(prompt);
+    MotionPlan plan = plan_from_prompt(parse_prompt(prompt), fx.rig, 1);
+    REQUIRE(slides(plan) == 1);
+    int dir = 0;
+    for (const auto& a : plan.actions)
+      if (a.primitive == Primitive::Slide && a.parts.empty()) dir = a.travel;
+    // The stick figure shows no facing (no eye, its head above its middle): to the right.
+    CHECK(dir == 1);
+    const int F = 49;
+    fit_plan(fx.scene, fx.rig, plan, F, 15);
+    const auto pts = animate_plan(fx.scene, fx.rig, plan, F);
+    CHECK(torso_x(pts, F, F / 4) - torso_x(pts, F, 0) > 4.4);
+  }
+  // A vehicle's own drive goes that way too.
+  const Drawing car("car.svg");
+  for (const auto& a : plan_from_prompt(parse_prompt("the car rolls across the road"), car.rig, 1).actions)
+    if (a.primitive == Primitive::Slide && a.parts.empty()) CHECK(a.travel != 0);
 }
 
 }  // TEST_SUITE
