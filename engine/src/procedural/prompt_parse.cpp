@@ -315,11 +315,13 @@ VerbReading sound_motion(const Lexicon& lexicon, const std::string& w, const Cla
 // A thing that goes by itself (a vehicle's drive, an aircraft's flight: not a creature, whose
 // verbs say more) sent somewhere ("the steam train puffs off to the left": its smoke, read as a
 // blow) goes by its own motion when no verb of the clause takes it anywhere: the train swayed
-// where it stood. A clause with no verb moves by the noun's motion anyway (motion_plan.cpp).
+// where it stood. A clause with no verb moves by the noun's motion anyway (motion_plan.cpp); one
+// that names a part moves that part ("the car's wheels spin to the right": they roll it along).
 void own_motion_sent(Clause& c, ParsedPrompt& out) {
   const PromptNoun* who = clause_subject(c);
   if ((c.mods.travel == 0 && !c.mods.across) || c.verbs.empty() || !who || !who->motion || is_creature(who->figure) || !locomotes(*who->motion) ||
-      std::any_of(c.verbs.begin(), c.verbs.end(), [](const Verb* v) { return locomotes(*v); }))
+      std::any_of(c.verbs.begin(), c.verbs.end(), [](const Verb* v) { return locomotes(*v); }) ||
+      std::any_of(c.nouns.begin(), c.nouns.end(), [](const PromptNoun& n) { return n.target != Target::Named && !n.object_of_preposition; }))
     return;
   out.readings.push_back("'" + who->word + "' sent somewhere goes by its own motion, " + who->motion->name);
   c.verbs.push_back(who->motion);
