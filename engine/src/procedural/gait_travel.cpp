@@ -63,6 +63,24 @@ int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, s
   return 1;
 }
 
+bool goes_against_facing(const Rig& rig, int travel, std::string* why) {
+  if (travel == 0) return false;
+  std::string how;
+  const int facing = facing_side(rig, &how);
+  if (facing == 0 || facing == travel) return false;
+  if (why)
+    *why = std::string("it faces ") + (facing < 0 ? "left" : "right") + " (" + how + "): it turns round to go " + (travel < 0 ? "left" : "right") +
+           " and turns back to come home facing its own way";
+  return true;
+}
+
+void turn_round_to_go(const Rig& rig, PlannedAction& a) {
+  std::string why;
+  if (!a.goes || a.inches || !goes_against_facing(rig, a.travel, &why)) return;
+  a.turns_round = true;
+  a.why += "; " + why;
+}
+
 namespace {
 
 // Whether `text` says a crawl's own word ("crawls", "creeps", "crept", "inches"): said of any
