@@ -44,11 +44,12 @@ CrawlPose crawl_at(double u);
 // it keeps edge on (turned_width). The pixel ranker reads 16 frames of a loop (one each 1/15 of
 // it) and flags a colour whose area changes by 55 % between two of them (a 'continuity' break);
 // the width falls to kTurnRoundEdge and grows back at a steady rate of its logarithm, so the
-// largest change between two of its frames is 1 - kTurnRoundEdge^(2 / 15 / kTurnShare): 49 %
+// largest change between two of its frames is 1 - kTurnRoundEdge^(2 / 15 / kTurnShare): 37 %
 // here. Over 1/8 of the loop to a pirouette's 0.3 edge on, the camel's area fell 73 % between
-// two of them and every candidate was flagged.
-inline constexpr double kTurnShare = 0.18;
-inline constexpr double kTurnRoundEdge = 0.4;
+// two of them and every candidate was flagged; over 0.18 to 0.4 (47 % for the whole figure) a
+// hopping rabbit's small patches (40 px of the ranker's 128 px frame) lost 65 %.
+inline constexpr double kTurnShare = 0.2;
+inline constexpr double kTurnRoundEdge = 0.5;
 
 struct TurnedPose {
   double along = 0;  // how far along its way out: 0 at rest, 1 as far as it goes
