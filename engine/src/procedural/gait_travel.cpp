@@ -65,9 +65,12 @@ int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, s
 
 bool goes_against_facing(const Rig& rig, int travel, std::string* why) {
   if (travel == 0) return false;
+  // Only a facing the drawing shows plainly turns it: its eye or its head parts. The skeleton's
+  // cues (a head limb ahead of the legs, legs gathered at one end) took a fish's tail for its head
+  // (twemoji 1f41f, its fins for legs), and a fish told its own way turned round and swam tail first.
   std::string how;
   const int facing = facing_side(rig, &how);
-  if (facing == 0 || facing == travel) return false;
+  if (facing == 0 || facing == travel || (how != "its eye" && how != "its head")) return false;
   if (why)
     *why = std::string("it faces ") + (facing < 0 ? "left" : "right") + " (" + how + "): it turns round to go " + (travel < 0 ? "left" : "right") +
            " and turns back to come home facing its own way";

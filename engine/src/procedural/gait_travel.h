@@ -39,9 +39,10 @@ bool is_gait(const Verb& v, FigureClass figure);
 int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, std::string* why);
 
 // Whether a figure sent `travel` (-1 left, +1 right) goes against the way it faces
-// (limb_qualifiers.h's facing_side: its eye, its head, its legs), so it must turn round to go
-// (PlannedAction::turns_round): a zebra drawn facing left, told to trot to the right, went there
-// tail first. Not when its facing is not known (a person facing the viewer, most vehicles).
+// (limb_qualifiers.h's facing_side, from its drawn eye or head parts only), so it must turn round
+// to go (PlannedAction::turns_round): a zebra drawn facing left, told to trot to the right, went
+// there tail first. Not when its facing is not known that plainly (a person facing the viewer,
+// most vehicles, a facing only the silhouette's skeleton suggests).
 // `why` gets "it faces left (its eye): it turns round to go right and back to come home".
 bool goes_against_facing(const Rig& rig, int travel, std::string* why);
 
