@@ -100,9 +100,22 @@ TEST_CASE("compose_affine: the composed homography is the affine map applied aft
     CHECK(got.x == doctest::Approx(want.x).epsilon(1e-9));
     CHECK(got.y == doctest::Approx(want.y).epsilon(1e-9));
   }
-  // A mirroring map is refused, and leaves the parameters as they were.
+  // A mirroring map (a figure turned round about its vertical axis through x = 70, at 0.4 of its
+  // width) composes too: a negative sx, every point where the two steps put it.
+  const Affine mirror = Affine::translate(c.x, 0) * Affine::scale(-0.4, 1) * Affine::translate(-c.x, 0);
+  MotionParams mirrored = th;
+  REQUIRE(compose_affine(mirrored, mirror, o, scale));
+  CHECK(mirrored[3] < 0);
+  CHECK(mirrored[4] > 0);
+  for (const Vec2 p : {Vec2{10, 20}, Vec2{100, 80}, Vec2{64, 48}, Vec2{0, 95}}) {
+    const Vec2 want = mirror.apply(apply_motion(th, p, o, scale));
+    const Vec2 got = apply_motion(mirrored, p, o, scale);
+    CHECK(got.x == doctest::Approx(want.x).epsilon(1e-9));
+    CHECK(got.y == doctest::Approx(want.y).epsilon(1e-9));
+  }
+  // A degenerate map (everything onto a line) is refused, and leaves the parameters as they were.
   MotionParams kept = th;
-  CHECK_FALSE(compose_affine(kept, Affine::scale(-1, 1), o, scale));
+  CHECK_FALSE(compose_affine(kept, Affine::scale(0, 1), o, scale));
   CHECK(kept == th);
 }
 

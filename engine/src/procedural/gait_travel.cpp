@@ -80,6 +80,27 @@ ParsedPrompt travel_across(const ParsedPrompt& prompt, const Rig& rig) {
   return out;
 }
 
+bool goes_against_facing(const Rig& rig, int travel, std::string* why) {
+  if (travel == 0) return false;
+  // Only a facing the drawing shows plainly turns it: its eye or its head parts. The skeleton's
+  // cues (a head limb ahead of the legs, legs gathered at one end) took a fish's tail for its head
+  // (twemoji 1f41f, its fins for legs), and a fish told its own way turned round and swam tail first.
+  std::string how;
+  const int facing = facing_side(rig, &how);
+  if (facing == 0 || facing == travel || (how != "its eye" && how != "its head")) return false;
+  if (why)
+    *why = std::string("it faces ") + (facing < 0 ? "left" : "right") + " (" + how + "): it turns round to go " + (travel < 0 ? "left" : "right") +
+           " and turns back to come home facing its own way";
+  return true;
+}
+
+void turn_round_to_go(const Rig& rig, PlannedAction& a) {
+  std::string why;
+  if (!a.goes || a.inches || !goes_against_facing(rig, a.travel, &why)) return;
+  a.turns_round = true;
+  a.why += "; " + why;
+}
+
 namespace {
 
 // Whether `text` says a crawl's own word ("crawls", "creeps", "crept", "inches"): said of any

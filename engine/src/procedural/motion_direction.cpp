@@ -31,6 +31,8 @@ std::string direction_words(const PlannedAction& a) {
     case Primitive::Spin: return a.rolls ? "rolling with the figure's slide" : std::string(turn(a.direction)) + ", whole turns";
     case Primitive::Turn: return "about its vertical axis, whole turns (mirrored while its back is shown)";
     case Primitive::Slide:
+      if (a.turns_round)  // travel_profile.h
+        return std::string("turns round, goes ") + (a.direction > 0 ? "right" : "left") + " steadily, turns back and comes home";
       if (a.goes || a.inches)  // travel_profile.h
         return std::string(a.inches ? "crawls " : "goes ") + (a.direction > 0 ? "right" : "left") + (a.inches ? " in steps" : " steadily") +
                ", then glides back";

@@ -488,12 +488,12 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
   bool whole_failed = false;
   // Points exempt from the step limit: falling elements (they jump back while invisible),
   // spinning parts (whole turns cannot be scaled; rotation is what flow tracking follows best)
-  // and a figure turning about its vertical axis (whole turns; it is mirrored at the edge-on
-  // moment, where the fitter starts from the known map).
+  // and a figure turning about its vertical axis (whole turns, or turning round to go: it is
+  // mirrored at the edge-on moment, where the fitter starts from the known map).
   std::vector<char> exempt, by_curve;
   {
     bool turns = false;
-    for (const auto& a : plan.actions) turns = turns || a.primitive == Primitive::Turn;
+    for (const auto& a : plan.actions) turns = turns || a.primitive == Primitive::Turn || (a.turns_round && a.amp != 0);
     std::set<int> spinning;
     for (const auto& a : plan.actions)
       if (a.primitive == Primitive::Spin || a.primitive == Primitive::Windmill)  // whole turns: not scaled

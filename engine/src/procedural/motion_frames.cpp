@@ -60,6 +60,8 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
     // Going somewhere on its own: forward steadily most of the loop, or by a crawl's steps, and
     // back (travel_profile.h); otherwise to one side and the other about rest.
     case Primitive::Slide: {
+      // Turned round to go: no amplitude, no turn (a plan measured without it, fit_plan, is still).
+      if (a.turns_round) return amp == 0 ? Affine() : turned_going_map(2 * a.direction * amp * W, centre.x, u);
       const double x = a.inches ? crawl_at(u).rear : a.goes ? going_at(u) : s;
       return Affine::translate(a.direction * amp * W * x, 0);
     }
@@ -134,6 +136,16 @@ std::vector<RigBox> piece_boxes(const Rig& rig, const MotionPlan& plan, std::vec
   return out;
 }
 
+// The whole figure turning round to go (PlannedAction::turns_round) at t, with its travel: the
+// outermost motion of the whole figure, so its bob, rock and bounce are its own, mirrored with it.
+Affine turned_round(const MotionPlan& plan, const Rig& rig, double t) {
+  const double W = std::max(rig.figure.w(), 1e-9), H = std::max(rig.figure.h(), 1e-9);
+  Affine m;
+  for (const PlannedAction& a : plan.actions)
+    if (a.parts.empty() && a.turns_round) m = rigid(a, plan.amplitude(a), 1, 0, t, rig.figure, rig.figure.centre(), W, H) * m;
+  return m;
+}
+
 // A rolling wheel's turn at t (PlannedAction::rolls), in degrees: the distance the figure's
 // slide of the same words has gone, over the wheel's radius (rolling without slipping; going
 // right turns it clockwise on the screen, and back again on the way back). Whole turns at a
@@ -143,8 +155,14 @@ double rolled_deg(const MotionPlan& plan, const PlannedAction& spin, double t, d
                   double H) {
   for (const PlannedAction& b : plan.actions)
     if (b.primitive == Primitive::Slide && b.parts.empty() && b.verb == spin.verb && b.words == spin.words) {
-      const double x = rigid(b, plan.amplitude(b), 1, 0, t, figure, figure.centre(), W, H).e;
-      return x / std::max(radius, 1e-9) * (180 / M_PI);
+      // (Turned round, the slide's map holds the mirror too: its travel alone.)
+      const double x = b.turns_round ? 2 * b.direction * plan.amplitude(b) * W * turned_going_at(b.cycles * t).along
+                                     : rigid(b, plan.amplitude(b), 1, 0, t, figure, figure.centre(), W, H).e;
+      // Turned round (mirrored), the wheel's own turn shows mirrored: it turns the other way in
+      // its own frame to roll the way the figure goes on the screen, and eases from one to the
+      // other while the figure turns (a turn in place rolls its wheels), so no frame jumps.
+      const double own = b.turns_round ? std::cos(kTau * turned_going_at(b.cycles * t).turns) : 1;
+      return own * x / std::max(radius, 1e-9) * (180 / M_PI);
     }
   return 0;
 }
@@ -659,11 +677,9 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   // ground (legs, feet): the root's own swing does not carry them.
   std::vector<char> planted(G, 0);
   for (int g = 0; g < G; ++g)
-    planted[g] = rig.parts[g].parent == rig.root && rig.root >= 0 && !reach[g].empty() &&
-                 reach[g].y1 >= rig.figure.y1 - kPlanted * rig.figure.h();
+    planted[g] = rig.parts[g].parent == rig.root && rig.root >= 0 && !reach[g].empty() && reach[g].y1 >= rig.figure.y1 - kPlanted * rig.figure.h();
   std::vector<int> piece_of;
   const std::vector<RigBox> piece_box = piece_boxes(rig, plan, piece_of);
-
   std::vector<char> spinning(G, 0);
   for (const auto& a : plan.actions)
     if (a.primitive == Primitive::Spin && a.region == Region::None)  // a rotor's spin turns its blades, not its part
@@ -703,7 +719,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         PlannedAction shallower = a;
         shallower.scale = a.scale * plan.scale;
         whole = rigid(shallower, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
-      } else if (a.parts.empty()) {
+      } else if (a.parts.empty() && !a.turns_round) {  // (turning round: turned_round, after)
         whole = compose_whole(whole, rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H), a);
         for (size_t k = 0; k < whole_of.size(); ++k) whole_of[k] = compose_whole(whole_of[k], piece_motion(a, amp, k, t, piece_box[k], rig.figure, W, H), a);
       }
@@ -720,6 +736,8 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         if (a.primitive == Primitive::Spin) spins[a.parts[i]] = 1;
       }
     }
+    whole = turned_round(plan, rig, t) * whole;
+    for (Affine& w : whole_of) w = turned_round(plan, rig, t) * w;
     const std::vector<Affine> world = world_transforms(rig, local, root_turn, spin, planted, loads);
     const std::vector<std::vector<Vec2>> bent = solve_meshes(mesh, plan, t, f, folds);
     const TossFrame toss = toss_frame(scene, plan, t);

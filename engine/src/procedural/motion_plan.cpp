@@ -567,6 +567,7 @@ void travel_where_told(Builder& b, const Clause& c, size_t from, const ParsedPro
       // (told or not: "crawls slowly to the left" crept 4 % of the snail's width).
       a.amp = std::max(a.amp, kTravelSlide.amp), a.direction = a.travel = mods.travel, a.goes = true, a.why += c.mods.travel ? "" : "; " + why;
       crawl_in_steps(b.plan, from, i, c.figure);
+      turn_round_to_go(b.rig, a);
       return;
     }
   const size_t had = b.plan.actions.size();
@@ -574,7 +575,8 @@ void travel_where_told(Builder& b, const Clause& c, size_t from, const ParsedPro
   // Its reach is the travel's (at the words' size), not under it: add's jitter of 0.85 to 1.15
   // left a walk's and a trot's at 13.4 % of the width where a crawl's own slide had 15 %.
   if (b.plan.actions.size() > had)
-    b.plan.actions.back().goes = true, b.plan.actions.back().amp = std::max(b.plan.actions.back().amp, kTravelReach * mods.size);
+    b.plan.actions.back().goes = true, b.plan.actions.back().amp = std::max(b.plan.actions.back().amp, kTravelReach * mods.size),
+    turn_round_to_go(b.rig, b.plan.actions.back());
 }
 
 bool names_figure_kind(const PromptNoun& n) { return n.figure != FigureClass::None && n.figure != FigureClass::Object && n.figure != FigureClass::Scene; }

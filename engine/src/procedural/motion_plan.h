@@ -73,6 +73,10 @@ struct PlannedAction {
                                 // other side would leave the canvas)
   bool goes = false;            // Slide of the whole figure going somewhere on its own (a gait,
                                 // a swim, a flight): forward steadily, then back (travel_profile.h)
+  bool turns_round = false;     // Slide that goes (goes): the figure faces the other way, so it
+                                // turns round about its vertical axis to go, and back to come
+                                // home (travel_profile.h's turned_going_at; the mirror is the
+                                // whole figure's outermost motion, animate_plan)
   bool inches = false;          // Slide and Stretch of the whole figure sent crawling somewhere:
                                 // its steps, the ends planted in turn (travel_profile.h)
   bool rolls = false;           // Spin of wheels: they roll with the figure's Slide of the same

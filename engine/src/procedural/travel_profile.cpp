@@ -1,5 +1,5 @@
-// The travel of a figure sent somewhere over one loop, steady or by crawling steps (see
-// travel_profile.h).
+// The travel of a figure sent somewhere over one loop, steady, by crawling steps or turning round
+// to go (see travel_profile.h).
 #include "procedural/travel_profile.h"
 
 #include <algorithm>
@@ -41,6 +41,27 @@ CrawlPose crawl_at(double u) {
   if (w < 0.5) return {start, ease(2 * w)};
   const double e = 1 - ease(2 * w - 1);
   return {start + (1 - e) * step, e};
+}
+
+TurnedPose turned_going_at(double u) {
+  const double c = u - std::floor(u), leg = 0.5 - kTurnShare;
+  // The turns at a steady rate (turned_width's steady loss of width): eased, the width fell
+  // fastest at the edge-on moment.
+  if (c < kTurnShare) return {0, 0.5 * c / kTurnShare};
+  if (c < 0.5) return {(c - kTurnShare) / leg, 0.5};
+  if (c < 0.5 + kTurnShare) return {1, 0.5 + 0.5 * (c - 0.5) / kTurnShare};
+  return {1 - (c - 0.5 - kTurnShare) / leg, 1};
+}
+
+double turned_width(double turns) {
+  // h: how far through its half turn (0 facing a side, 0.5 edge on); d: 1 facing, 0 edge on.
+  const double h = 2 * (turns - 0.5 * std::floor(2 * turns)), d = std::fabs(1 - 2 * h);
+  return (std::cos(2 * M_PI * turns) < 0 ? -1 : 1) * std::pow(kTurnRoundEdge, 1 - d);
+}
+
+Affine turned_going_map(double reach, double middle, double u) {
+  const TurnedPose p = turned_going_at(u);
+  return Affine::translate(reach * p.along + middle, 0) * Affine::scale(turned_width(p.turns), 1) * Affine::translate(-middle, 0);
 }
 
 }  // namespace svgm

@@ -113,9 +113,14 @@ bool compose_affine(MotionParams& th, const Affine& m, Vec2 origin, double scale
   const double b00 = th[3], b01 = th[5] * th[4], b10 = th[6] * th[3], b11 = th[4];  // Sh S
   const double l00 = cr * b00 - sr * b10, l01 = cr * b01 - sr * b11, l10 = sr * b00 + cr * b10, l11 = sr * b01 + cr * b11;
   const double n00 = m.a * l00 + m.c * l10, n01 = m.a * l01 + m.c * l11, n10 = m.b * l00 + m.d * l10, n11 = m.b * l01 + m.d * l11;
-  if (!(n00 * n11 - n01 * n10 > 0)) return false;
-  // QR: the first column fixes the turn and sx; R^T (A L) is then [[sx, shx sy], [0, sy]].
-  const double sx = std::hypot(n00, n10), rot = std::atan2(n10, n00);
+  const double det = n00 * n11 - n01 * n10;
+  if (!(std::fabs(det) > 1e-12)) return false;
+  // QR: the first column fixes the turn and sx; R^T (A L) is then [[sx, shx sy], [0, sy]]. A
+  // mirrored map (a figure turned round to go, its back shown: det < 0) takes a negative sx
+  // (motion.cl's S is signed), sy staying positive; refused, a zebra turned round had no known
+  // start and its fit stayed facing its own way.
+  const double flip = det < 0 ? -1 : 1;
+  const double sx = flip * std::hypot(n00, n10), rot = std::atan2(flip * n10, flip * n00);
   const double c2 = std::cos(rot), s2 = std::sin(rot);
   const double u = c2 * n01 + s2 * n11, sy = -s2 * n01 + c2 * n11;
   // Translation: f = A L (n - c) + A (c + t) + t_a, in normalised units t_a = (A o + b - o) / s.

@@ -48,8 +48,8 @@ void compose_similarity(MotionParams& th, const Similarity& s, Vec2 origin, doub
 // Applies a pixel-space affine map after the homography `th`, as compose_similarity. The
 // result is refactored into kernels/motion.cl's R · Sh · S with shy = 0 (a QR factorisation of
 // the linear part). A known motion of a wheel seen at a slant (a turn in its own tilted plane)
-// is affine, not a similarity. False, th untouched, when th has a projective part or the map
-// would mirror the group.
+// is affine, not a similarity. A mirroring map (a figure turned round, its back shown) gives a
+// negative sx. False, th untouched, when th has a projective part or the map is degenerate.
 bool compose_affine(MotionParams& th, const Affine& m, Vec2 origin, double scale);
 
 }  // namespace svgm
