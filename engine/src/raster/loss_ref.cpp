@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/frame_border_blur.h"
 #include "raster/loss_taps.h"
 
 namespace svgm::ref {
@@ -40,6 +41,7 @@ double chroma_sq_sum(const std::vector<double>& image, const std::vector<float>&
     }
     for (int i = 0; i < 3; ++i) ycc[3 * p + i] = kYcc[i][0] * c[0] + kYcc[i][1] * c[1] + kYcc[i][2] * c[2];
   }
+  remove_outside_blur(t, width, height, render_sigma);  // as the loss's Q (raster_cl_backward.cpp)
   double sum = 0;
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
@@ -81,6 +83,7 @@ double blurred_sq_sum(const std::vector<double>& image, const std::vector<float>
       c[3 * p + ch] = image[4 * p + ch] - background[ch] * image[4 * p + 3];
       t[3 * p + ch] = target[4 * p + ch] - background[ch];
     }
+  remove_outside_blur(t, width, height, render_sigma);  // as the loss's Q (raster_cl_backward.cpp)
   double sum = 0;
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {

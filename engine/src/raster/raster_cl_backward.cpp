@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/frame_border_blur.h"
 #include "raster/half_float.h"
 #include "raster/launch_groups.h"
 #include "raster/loss_tiles.h"
@@ -272,6 +273,15 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
       std::vector<double> t(px * 3);
       for (size_t p = 0; p < px; ++p)
         for (int c = 0; c < 3; ++c) t[3 * p + c] = frame[p * 4 + c];
+      if (render_sigma_ > kLossSigma) {
+        // A soft video's ink that the outside blurred in at the frame's border, which the
+        // render's zero-padded blur cannot draw (raster/frame_border_blur.h); every other
+        // pixel keeps its bits (the share is exactly 0 there).
+        std::vector<double> d(t.size());
+        for (size_t i = 0; i < t.size(); ++i) d[i] = t[i] - bg[i % 3];
+        const std::vector<double> share = outside_blur(d, W, H, render_sigma_);
+        for (size_t i = 0; i < t.size(); ++i) t[i] -= share[i];
+      }
       const std::vector<double> gt = blur_rgb(t, W, H, g_target);
       t = std::vector<double>();
       // Q as the device stores it (a half, within 2^-11 of it: a twentieth of an 8-bit level),
