@@ -12,6 +12,7 @@
 
 #include "report/inline_svg.h"
 #include "temp_dir.h"
+#include "test_paths.h"
 
 using namespace svgm;
 namespace fs = std::filesystem;
@@ -69,11 +70,11 @@ TEST_SUITE("report") {
         {"overlay_transform", ""},  // kept: report.html's box clips it (report_hostile_test.sh)
     };
     size_t files = 0;
-    for (const auto& e : fs::directory_iterator(fs::path(SVGM_TEST_DATA) / "hostile")) files += e.path().extension() == ".svg";
+    for (const auto& e : fs::directory_iterator(fs::path(svgm::test::data_path("hostile")))) files += e.path().extension() == ".svg";
     CHECK(files == std::size(cases));  // a new file gets its line here
     for (const Case& c : cases) {
       CAPTURE(c.file);
-      const InlinedSvg s = inline_svg(fs::path(SVGM_TEST_DATA) / "hostile" / (std::string(c.file) + ".svg"));
+      const InlinedSvg s = inline_svg(fs::path(svgm::test::data_path("hostile")) / (std::string(c.file) + ".svg"));
       CHECK(s.dropped == c.dropped);
       CHECK(s.markup.find(kSquare) != std::string::npos);
       const std::string m = lower(s.markup);

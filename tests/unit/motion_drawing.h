@@ -9,10 +9,11 @@
 
 #include "svgmotion/svg_reader.h"
 #include "procedural/motion_plan.h"
+#include "test_paths.h"
 
 namespace svgm::test {
 
-inline std::string motion_data(const char* name) { return std::string(SVGM_TEST_DATA) + "/motion/" + name; }
+inline std::string motion_data(const char* name) { return svgm::test::data_path(std::string("motion/") + name); }
 
 // Largest displacement from frame 0 of the points of each path of `scene`, over F frames of
 // animate_plan's output `pts`.

@@ -66,6 +66,14 @@ TEST_CASE("lexicon: nouns get a figure class through their hypernyms") {
   CHECK(lx.noun("tulips").figure == FigureClass::Plant);
   CHECK(lx.noun("geese").figure == FigureClass::Bird);
   CHECK(lx.noun("salmon").figure == FigureClass::FishOrSnake);
+  // A bus and a train are wheeled (anchors: WordNet files them under public transport); a
+  // sailboat is a vessel that rocks; the space shuttle, public transport too, is not wheeled.
+  CHECK(lx.noun("bus").figure == FigureClass::Wheeled);
+  CHECK(lx.noun("train").figure == FigureClass::Wheeled);
+  CHECK(lx.noun("car").figure == FigureClass::Wheeled);
+  CHECK(lx.noun("sailboat").figure == FigureClass::Object);
+  CHECK(lx.noun("shuttle").figure != FigureClass::Wheeled);
+  CHECK(parse_prompt("the space shuttle blasts off").clauses.at(0).figure != FigureClass::Wheeled);
   CHECK(lx.noun("surfer").figure == FigureClass::Biped);
   CHECK(lx.noun("man").figure == FigureClass::Biped);        // not Homo the primate
   CHECK(lx.noun("whale").figure == FigureClass::FishOrSnake);  // not "a large person"

@@ -16,6 +16,7 @@
 #include "scene/synthetic_scene.h"
 #include "scoped_env.h"
 #include "temp_dir.h"
+#include "test_paths.h"
 
 using namespace svgm;
 namespace fs = std::filesystem;
@@ -39,7 +40,7 @@ TEST_SUITE("opencl") {
     test::TempDir dir("svgm_child");
     // Given back at the end of the case, set or not: later tests share this process.
     test::ScopedEnv cache("SVGMOTION_CACHE_DIR", dir.path.string());
-    test::ScopedEnv child(kCompileChildVar, std::string(SVGM_CLI_EXE));
+    test::ScopedEnv child(kCompileChildVar, svgm::test::cli_exe());
     {
       ClRuntime rt("auto");
       const Scene s = synthetic_blobs(2, 64);
@@ -80,7 +81,7 @@ TEST_SUITE("opencl") {
     }
     const std::string env = "SVGMOTION_CACHE_DIR='" + (dir.path / "svgm").string() + "' POCL_CACHE_DIR='" +
                             (dir.path / "pocl").string() + "' ";
-    const std::string exe = std::string("'") + SVGM_CLI_EXE + "'";
+    const std::string exe = "'" + svgm::test::cli_exe() + "'";
     REQUIRE(std::system((env + exe + " devices --warm-for 'raster 64 48 1 1 1' >/dev/null 2>&1").c_str()) == 0);
     const size_t after_child = work_group_functions(dir.path / "pocl");
     CHECK(after_child > 0);

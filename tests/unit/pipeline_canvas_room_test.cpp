@@ -41,6 +41,33 @@ TEST_CASE("canvas room: the figure's span leaves out a backdrop rectangle but no
   CHECK(figure_span(read(R"(<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10"/>)")).empty);
 }
 
+TEST_CASE("canvas room: a figure across 85 % of its canvas gets room when the prompt sends it across, not when it stays") {
+  // A 100 x 50 canvas; a body from x 5 to 90 (85 % of the width, under kFillsCanvas), 20 tall.
+  const Scene wide = read(R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 50">
+    <rect x="5" y="15" width="85" height="20" fill="red"/></svg>)");
+  char why[160] = "";
+  CHECK(auto_room(wide, "the zebra trots to the right", why, sizeof why) == kAutoRoom);
+  CHECK(std::string(why) == "the prompt sends the figure across and it spans 85 % of its canvas's width");
+  CHECK(auto_room(wide, "the lizard crawls to the left", nullptr, 0) == kAutoRoom);
+  CHECK(auto_room(wide, "the dog walks", nullptr, 0) == kAutoRoom);  // untold: the way it faces
+  // Kept where it is, only its limbs or tail named, no gait, or sent up: no room across.
+  CHECK(auto_room(wide, "the jogger runs on the spot", nullptr, 0) == 0);
+  CHECK(auto_room(wide, "the grasshopper rubs its hind legs together", nullptr, 0) == 0);
+  CHECK(auto_room(wide, "the zebra wags its tail", nullptr, 0) == 0);
+  CHECK(auto_room(wide, "the ladybird crawls up", nullptr, 0) == 0);
+  CHECK(auto_room(wide, "", nullptr, 0) == 0);
+  CHECK(auto_room(wide, "the cyclist pedals hard", nullptr, 0) == 0);  // untold, a rider stays: no gait
+  CHECK(auto_room(wide, "the cyclist pedals to the left", nullptr, 0) == kAutoRoom);
+  // At 60 % of the width it has room enough: kTravelReach of its width each way fits.
+  const Scene narrow = read(R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 50">
+    <rect x="20" y="15" width="60" height="20" fill="red"/></svg>)");
+  CHECK(auto_room(narrow, "the zebra trots to the right", nullptr, 0) == 0);
+  // Filling the canvas gets room whatever the prompt says.
+  const Scene full = read(R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 50">
+    <rect x="2" y="15" width="96" height="20" fill="red"/></svg>)");
+  CHECK(auto_room(full, "the zebra wags its tail", nullptr, 0) == kAutoRoom);
+}
+
 TEST_CASE("canvas room: the viewBox grows by the share on each side, width and height by 1 + 2 share, the rest kept") {
   const std::string doc = "<?xml version=\"1.0\"?>\n<!-- mine -->\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
                           "width=\"72px\" height=\"36\" viewBox=\"10 0 72 36\">\n  <path d=\"M10 0h72v36z\"/>\n</svg>";

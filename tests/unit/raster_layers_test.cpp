@@ -14,6 +14,7 @@
 #include "raster/raster_ref.h"
 #include "svgmotion/render_size.h"
 #include "svgmotion/svg_reader.h"
+#include "test_paths.h"
 
 using namespace svgm;
 
@@ -26,7 +27,7 @@ struct Rendered {
 };
 
 Rendered render_file(const std::string& name) {
-  const Scene s = read_svg_file(SVGM_TEST_DATA "/paint/" + name);
+  const Scene s = read_svg_file(svgm::test::data_path("paint/" + name));
   const RenderSize size = render_size(s, 0);
   return {size.width, size.height, composite_layers(s, size)};
 }

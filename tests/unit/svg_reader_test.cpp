@@ -9,6 +9,7 @@
 
 #include "svgmotion/error.h"
 #include "svgmotion/svg_reader.h"
+#include "test_paths.h"
 
 using namespace svgm;
 
@@ -264,7 +265,7 @@ TEST_CASE("paint values: invalid paints are ignored, gradients give their mean c
 }
 
 TEST_CASE("the cascade: presentation attributes, then <style> rules by specificity, then style=") {
-  const Scene s = read_svg_file(SVGM_TEST_DATA "/svg/style_sheet.svg");
+  const Scene s = read_svg_file(svgm::test::data_path("svg/style_sheet.svg"));
   CHECK(s.width == 100);
   CHECK(s.height == 100);
   REQUIRE(s.paths.size() == 5);
@@ -277,12 +278,12 @@ TEST_CASE("the cascade: presentation attributes, then <style> rules by specifici
   CHECK(s.paths[3].stroke.miter_limit == 10);
   CHECK(color(s.paths[4].fill, 1, 0, 0));  // the sheet beats the fill attribute
   REQUIRE(s.warnings.size() == 1);
-  const std::string name = SVGM_TEST_DATA "/svg/style_sheet.svg";
+  const std::string name = svgm::test::data_path("svg/style_sheet.svg");
   CHECK(s.warnings[0] == name + ": <style>: 2 CSS rules ignored (only tag, .class and #id selectors are supported)");
 }
 
 TEST_CASE("a file with every shape: counts, groups, canvas mapping") {
-  const Scene s = read_svg_file(SVGM_TEST_DATA "/svg/shapes.svg");
+  const Scene s = read_svg_file(svgm::test::data_path("svg/shapes.svg"));
   CHECK(s.width == 200);
   CHECK(s.height == 100);
   REQUIRE(s.paths.size() == 8);
@@ -411,7 +412,7 @@ TEST_CASE("limits: deep nesting, use bombs, segment count, file size, missing fi
   tiny.max_file_bytes = 64u << 20;
   CHECK(error_of(std::string((64u << 20) + (1u << 19), ' '), tiny) ==
         "x.svg: file is 64.5 MB, larger than the 64 MB limit");
-  const std::string broken = SVGM_TEST_DATA "/svg/broken.svg";
+  const std::string broken = svgm::test::data_path("svg/broken.svg");
   try {
     read_svg_file(broken);
     FAIL("no error");
@@ -419,10 +420,10 @@ TEST_CASE("limits: deep nesting, use bombs, segment count, file size, missing fi
     CHECK(std::string(e.what()) == broken + ": not well-formed XML at offset 96: Start-end tags mismatch");
   }
   try {
-    read_svg_file(SVGM_TEST_DATA "/svg/missing.svg");
+    read_svg_file(svgm::test::data_path("svg/missing.svg"));
     FAIL("no error");
   } catch (const Error& e) {
-    CHECK(std::string(e.what()) == SVGM_TEST_DATA "/svg/missing.svg: cannot open: No such file or directory");
+    CHECK(std::string(e.what()) == svgm::test::data_path("svg/missing.svg") + ": cannot open: No such file or directory");
   }
 }
 

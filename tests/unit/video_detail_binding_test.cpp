@@ -9,12 +9,13 @@
 #include "svgmotion/svg_reader.h"
 #include "procedural/detail_binding.h"
 #include "procedural/motion_plan.h"
+#include "test_paths.h"
 
 using namespace svgm;
 
 namespace {
 
-std::string data(const char* name) { return std::string(SVGM_TEST_DATA) + "/motion/" + name; }
+std::string data(const char* name) { return svgm::test::data_path(std::string("motion/") + name); }
 
 // Index of the first point of `path` in a frame of animate_plan's output.
 size_t first_point(const Scene& s, size_t path) {

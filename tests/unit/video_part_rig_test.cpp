@@ -11,12 +11,13 @@
 #include "svgmotion/svg_reader.h"
 #include "procedural/part_rig.h"
 #include "procedural/stroke_rig.h"
+#include "test_paths.h"
 
 using namespace svgm;
 
 namespace {
 
-std::string data(const char* name) { return std::string(SVGM_TEST_DATA) + "/motion/" + name; }
+std::string data(const char* name) { return svgm::test::data_path(std::string("motion/") + name); }
 
 Rig rig_of(const char* name) {
   const Scene s = read_svg_file(data(name));

@@ -23,11 +23,32 @@ struct Owned {
 
 std::vector<Owned> owned_points(const Skeleton& s, const Figure& f) {
   std::vector<Owned> out;
-  for (int e : f.core_edges)
-    for (size_t i = 0; i < s.edges[e].points.size(); ++i) out.push_back({s.edges[e].points[i], s.edges[e].radius[i], -1});
-  for (int n : f.core_nodes) out.push_back({s.nodes[n].pos, s.nodes[n].radius, -1});
+  // A limb with a stalk (limbs.cpp's with_stalk: its path's first points lie on the core's
+  // edges, on none of its own) owns that stretch of the trunk and the neck's disc.
+  const auto on_edges = [&](const std::vector<int>& edges, Vec2 p) {
+    for (int e : edges)
+      for (const Vec2& q : s.edges[e].points)
+        if (q.x == p.x && q.y == p.y) return true;
+    return false;
+  };
+  std::vector<size_t> stalk(f.limbs.size(), 0);
+  std::vector<char> neck(s.nodes.size(), 0);
+  std::vector<Vec2> stalks;
   for (size_t l = 0; l < f.limbs.size(); ++l) {
-    const SkeletonNode& joint = s.nodes[f.limbs[l].joint];
+    const Limb& L = f.limbs[l];
+    while (stalk[l] < L.path.size() && on_edges(f.core_edges, L.path[stalk[l]]) && !on_edges(L.edges, L.path[stalk[l]])) ++stalk[l];
+    if (stalk[l] > 0) neck[L.joint] = 1, stalks.insert(stalks.end(), L.path.begin(), L.path.begin() + static_cast<long>(stalk[l]));
+  }
+  const auto on_stalk = [&](Vec2 p) { return std::any_of(stalks.begin(), stalks.end(), [&](Vec2 q) { return q.x == p.x && q.y == p.y; }); };
+  for (int e : f.core_edges)
+    for (size_t i = 0; i < s.edges[e].points.size(); ++i)
+      if (!on_stalk(s.edges[e].points[i])) out.push_back({s.edges[e].points[i], s.edges[e].radius[i], -1});
+  for (int n : f.core_nodes)
+    if (!neck[n]) out.push_back({s.nodes[n].pos, s.nodes[n].radius, -1});
+  for (size_t l = 0; l < f.limbs.size(); ++l) {
+    for (size_t i = 0; i < stalk[l]; ++i) out.push_back({f.limbs[l].path[i], f.limbs[l].radius[i], static_cast<int>(l)});
+    SkeletonNode joint = s.nodes[f.limbs[l].joint];
+    if (stalk[l] > 0) joint.radius = 0;  // the neck's disc is the limb's
     const auto& standing = f.limbs[l].standing_edges;
     // A tail's stretch through a foot, before its base, is the body's (limbs.h).
     const auto& path = f.limbs[l].path;

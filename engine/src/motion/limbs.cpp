@@ -23,6 +23,25 @@ Vec2 unit(Vec2 v) {
 
 int component_of(const Skeleton& s, const SkeletonEdge& e) { return s.nodes[e.a].component; }
 
+// The component's terminal branch that holds the body, if one does (a trunk): thicker on average
+// than `thick` (1 / kCoreGrow times the internal branch the core would start from, kTailThick
+// times the junction a star's core would be) and with more body (mean radius squared times
+// length) than `body`. A whale whose tail fluke forks off a thin stalk: its skeleton is a star,
+// one junction at the fork with three branches (the fluke's two lobes, and the body through the
+// stalk to the head); the junction was the core and the body hung from it as a leg, so a tail
+// beat swung the whole whale about its tail. -1 when none.
+int body_branch(const Skeleton& s, const Figure& f, double thick, double body) {
+  int best = -1;
+  for (size_t i = 0; i < s.edges.size(); ++i) {
+    const SkeletonEdge& E = s.edges[i];
+    if (component_of(s, E) != f.component || !E.terminal || E.mean_radius < thick) continue;
+    const double b = E.mean_radius * E.mean_radius * E.length;
+    if (b > body && (best < 0 || b > s.edges[best].mean_radius * s.edges[best].mean_radius * s.edges[best].length))
+      best = static_cast<int>(i);
+  }
+  return best;
+}
+
 void pick_core(const Skeleton& s, Figure& f) {
   std::vector<int> internal;
   for (size_t i = 0; i < s.edges.size(); ++i)
@@ -32,11 +51,21 @@ void pick_core(const Skeleton& s, Figure& f) {
     if (!in_core[n]) f.core_nodes.push_back(n);
     in_core[n] = 1;
   };
-  if (!internal.empty()) {
-    int seed = internal[0];
-    auto body = [&](int e) { return s.edges[e].mean_radius * s.edges[e].mean_radius * s.edges[e].length; };
-    for (int e : internal)
-      if (body(e) > body(seed)) seed = e;
+  auto body = [&](int e) { return s.edges[e].mean_radius * s.edges[e].mean_radius * s.edges[e].length; };
+  int seed = -1;
+  for (int e : internal)
+    if (seed < 0 || body(e) > body(seed)) seed = e;
+  int star = -1;  // without internal branches: the thickest junction
+  for (size_t n = 0; n < s.nodes.size() && seed < 0; ++n)
+    if (s.nodes[n].component == f.component && s.nodes[n].junction() && (star < 0 || s.nodes[n].radius > s.nodes[star].radius))
+      star = static_cast<int>(n);
+  if (seed >= 0 || star >= 0) {
+    // A terminal branch far thicker than that holds the body: the core starts from it.
+    const int trunk = seed >= 0 ? body_branch(s, f, s.edges[seed].mean_radius / kCoreGrow, body(seed))
+                                : body_branch(s, f, kTailThick * s.nodes[star].radius, 0);
+    if (trunk >= 0) seed = trunk;
+  }
+  if (seed >= 0) {
     std::vector<char> taken(s.edges.size(), 0);
     f.core_edges.push_back(seed);
     taken[seed] = 1;
@@ -56,12 +85,7 @@ void pick_core(const Skeleton& s, Figure& f) {
     }
     return;
   }
-  int best = -1;
-  for (size_t n = 0; n < s.nodes.size(); ++n)
-    if (s.nodes[n].component == f.component && s.nodes[n].junction() &&
-        (best < 0 || s.nodes[n].radius > s.nodes[best].radius))
-      best = static_cast<int>(n);
-  if (best >= 0) return add_node(best);
+  if (star >= 0) return add_node(star);
   for (size_t e = 0; e < s.edges.size(); ++e)  // one branch (or a loop): the longest is the core
     if (component_of(s, s.edges[e]) == f.component &&
         (f.single_branch < 0 || s.edges[e].length > s.edges[f.single_branch].length))
@@ -156,6 +180,31 @@ void limb_geometry(const Skeleton& s, const Figure& f, Limb& L, const std::vecto
   L.bent = far >= kBendShare * chord_len && chord_len > 0;
 }
 
+// A limb hanging from a trunk's neck (find_limbs) starts down the trunk, where it is last as thin
+// as kCoreGrow of the trunk's thickest: that thin stretch (a whale's tail stalk) is the limb's,
+// its base at the stalk's root, and the neck's disc is no longer the body's (limb_regions tells a
+// stalk by its points: on the core's edges, none of the limb's own).
+void with_stalk(const SkeletonEdge& T, int neck, Limb& L) {
+  std::vector<Vec2> pts;
+  std::vector<double> rad;
+  const bool from_a = T.a == neck;
+  for (size_t k = 1; k < T.points.size(); ++k) {  // from the neck inward, the neck's own point left out
+    const size_t i = from_a ? k : T.points.size() - 1 - k;
+    if (T.radius[i] >= kCoreGrow * T.max_radius) break;
+    pts.push_back(T.points[i]);
+    rad.push_back(T.radius[i]);
+  }
+  std::reverse(pts.begin(), pts.end());
+  std::reverse(rad.begin(), rad.end());
+  L.path.insert(L.path.begin(), pts.begin(), pts.end());
+  L.radius.insert(L.radius.begin(), rad.begin(), rad.end());
+  L.base_index = 0;
+  L.base = L.path[0];
+  L.length = 0;
+  for (size_t i = 1; i < L.path.size(); ++i) L.length += len(L.path[i] - L.path[i - 1]);
+  if (L.length > 0) L.direction = unit(L.tip_pos - L.base);
+}
+
 // A core shorter than it is thick is a point: a star of limbs (a plus sign, a bird's wings and
 // head round one junction) has no axis to place them along.
 bool point_core(const Figure& f) { return f.core_length < std::max(2.0, f.core_radius); }
@@ -244,6 +293,9 @@ void label(const Skeleton& s, Figure& f) {
 // feet): their own stretch (off the path to the limb's tip) is left to the body.
 void standing_forks(const Skeleton& s, Figure& f) {
   const double tol = std::max(3.0, kGroundShare * (f.y1 - f.y0));
+  // No limb's tip reaches the figure's bottom: there is no ground line to stand on (label's
+  // rule; the lowest tip of a fluke held up over a whale's body is no floor for its other lobe).
+  if (f.ground_y < f.y1 - tol) return;
   for (Limb& L : f.limbs) {
     if (L.grounded || L.more_tips.empty()) continue;
     const std::vector<int> main = path_edges(s, L.edges, L.joint, L.tip);
@@ -371,14 +423,34 @@ Figure find_limbs(const Skeleton& s) {
   std::vector<char> core_node(s.nodes.size(), 0), used(s.edges.size(), 0);
   for (int n : f.core_nodes) core_node[n] = 1;
   for (int e : f.core_edges) used[e] = 1;
+  // A core that is a trunk (pick_core) narrowing to a neck where it joins the rest: what hangs
+  // from the neck is one limb, however it forks (a whale's fluke, its two lobes off one stalk,
+  // beats as one tail).
+  int neck = -1;
+  if (!f.core_edges.empty() && s.edges[f.core_edges[0]].terminal) {
+    const SkeletonEdge& T = s.edges[f.core_edges[0]];
+    const int n = s.nodes[T.a].end() ? T.b : T.a;
+    // ... and only when every end behind it lies ahead of the neck, out of the body's end (a
+    // fluke, a forked fin): not limbs folding back along the body (a scooter's handlebar and
+    // wheels), which stay limbs of their own.
+    const Vec2 out = -1.0 * (T.a == n ? T.dir_a : T.dir_b);
+    bool ahead = s.nodes[n].radius < kCoreGrow * T.max_radius;
+    for (size_t m = 0; m < s.nodes.size() && ahead; ++m)
+      if (static_cast<int>(m) != n && s.nodes[m].component == f.component && s.nodes[m].end() && static_cast<int>(m) != T.a && static_cast<int>(m) != T.b)
+        ahead = dot(s.nodes[m].pos - s.nodes[n].pos, out) > 0;
+    if (ahead) neck = n;
+  }
   for (int c : f.core_nodes)
     for (int first : s.nodes[c].edges) {
       if (used[first]) continue;
-      // The sub-tree behind `first`, not crossing the core.
+      // The sub-tree behind `first`, not crossing the core (behind every branch of a neck).
       Limb L;
       L.joint = c;
       std::vector<int> stack = {first};
       used[first] = 1;
+      if (c == neck)
+        for (int other : s.nodes[c].edges)
+          if (!used[other]) used[other] = 1, stack.push_back(other);
       std::vector<int> ends;
       while (!stack.empty()) {
         const int e = stack.back();
@@ -402,6 +474,7 @@ Figure find_limbs(const Skeleton& s) {
         if (tip != L.tip) L.more_tips.push_back(tip);
       if (best.empty()) continue;
       limb_geometry(s, f, L, best);
+      if (c == neck) with_stalk(s.edges[f.core_edges[0]], c, L);
       f.limbs.push_back(std::move(L));
     }
   label(s, f);

@@ -8,6 +8,8 @@
 #include <pugixml.hpp>
 #include <sstream>
 
+#include "procedural/prompt_parse.h"
+#include "procedural/travel_words.h"
 #include "svg/document_order.h"
 #include "svg/svg_number.h"
 #include "svgmotion/error.h"
@@ -79,6 +81,20 @@ FigureSpan figure_span(const Scene& scene) {
   s.y = (std::min(y1, H) - std::max(y0, 0.0)) / H;
   s.empty = false;
   return s;
+}
+
+double auto_room(const Scene& scene, const std::string& prompt, char* why, size_t size) {
+  const FigureSpan span = figure_span(scene);
+  if (span.empty) return 0;
+  if (std::max(span.x, span.y) >= kFillsCanvas) {
+    if (why) std::snprintf(why, size, "the drawing fills %.0f %% of its canvas's %s", 100 * std::max(span.x, span.y), span.x >= span.y ? "width" : "height");
+    return kAutoRoom;
+  }
+  if (span.x >= kTravelFills && !prompt.empty() && sends_figure_across(parse_prompt(prompt))) {
+    if (why) std::snprintf(why, size, "the prompt sends the figure across and it spans %.0f %% of its canvas's width", 100 * span.x);
+    return kAutoRoom;
+  }
+  return 0;
 }
 
 std::string give_canvas_room(std::string_view text, std::string_view name, const Scene& scene, double share) {

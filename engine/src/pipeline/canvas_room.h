@@ -11,6 +11,11 @@
 // is made by the procedural plugin from this canvas and the figure spans at least kFillsCanvas of
 // the canvas's width or height (a backdrop, a shape covering the whole canvas, is not the
 // figure); a video the user brings is drawn on the canvas as it is, so auto leaves it alone.
+// A figure the prompt sends across the canvas (a gait, a crawl, hops: gait_travel.h's
+// sends_figure_across) gets the room already at kTravelFills of the canvas's width: it goes
+// kTravelReach of its width ahead and behind where it stands, and with less room the plan cut
+// the travel to fit (a trotting zebra across 88 % of its canvas went 5 % of its width, at 38 %
+// of its reach, and read as marking time).
 #pragma once
 
 #include <string>
@@ -22,6 +27,7 @@ namespace svgm {
 
 constexpr double kAutoRoom = 0.15;     // of the canvas's size, added on each side
 constexpr double kFillsCanvas = 0.92;  // the figure's share of the canvas's width or height
+constexpr double kTravelFills = 0.75;  // of the canvas's width, for a figure sent across it
 
 // The figure's extent as shares of the canvas's width and height: the box of every painted
 // path's control points (a stroke's half width added), backdrops left out.
@@ -30,6 +36,11 @@ struct FigureSpan {
   bool empty = true;
 };
 FigureSpan figure_span(const Scene& scene);
+
+// The share of room stages.video.room=auto gives `scene` (its figure's span) for `prompt`:
+// kAutoRoom when the figure fills kFillsCanvas of the canvas, or kTravelFills of its width and the
+// prompt sends it across; else 0. `why` (of `size` chars, may be null) says which.
+double auto_room(const Scene& scene, const std::string& prompt, char* why, size_t size);
 
 // `text`: an SVG document; `share` > 0. The same document with the root's viewBox grown by
 // `share` of its width and height on each side (a viewBox is added from the canvas size when

@@ -107,12 +107,7 @@ std::string staged_input(const nlohmann::json& config, const std::string& input)
     share = room.get<double>();
     std::snprintf(why, sizeof why, "stages.video.room is %g", share);
   } else {
-    const FigureSpan span = figure_span(scene);
-    if (!span.empty && std::max(span.x, span.y) >= kFillsCanvas) {
-      share = kAutoRoom;
-      std::snprintf(why, sizeof why, "the drawing fills %.0f %% of its canvas's %s", 100 * std::max(span.x, span.y),
-                    span.x >= span.y ? "width" : "height");
-    }
+    share = auto_room(scene, config.value("prompt", std::string()), why, sizeof why);
   }
   if (share <= 0) return text;
   log::info("%s: %s: its canvas grows by %.0f %% on each side so the motion stays in view "

@@ -10,9 +10,6 @@
 
 namespace svgm {
 
-namespace {
-
-// "on the spot", "in place", "in one spot": the clause keeps the figure where it is.
 bool stays_put(const std::string& text) {
   std::vector<std::string> w;
   std::istringstream in(text);
@@ -22,8 +19,6 @@ bool stays_put(const std::string& text) {
       return true;
   return false;
 }
-
-}  // namespace
 
 bool gets_somewhere(const Verb& v) {
   for (const Action& a : v.actions)

@@ -38,6 +38,9 @@ bool is_gait(const Verb& v, FigureClass figure);
 // direction said: the figure faces left (its eye) and goes that way".
 int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, std::string* why);
 
+// "on the spot", "in place", "in one spot": words that keep the figure where it is.
+bool stays_put(const std::string& text);
+
 // How far ahead (and behind) of where it stands a figure sent somewhere goes, of its width
 // (travel_profile.h: forward steadily, then back); fit_plan scales it down only to keep the figure
 // in its canvas. At 8 % about rest, scaled to 80 % to fit, a turtle slid 3 of its canvas's 72

@@ -96,13 +96,11 @@ std::string turn_broken(const MotionPlan& plan, int frames, int K) {
     // A figure turning about its vertical axis turns 360 * amp degrees a loop, evenly: with too
     // few keyframes most of its pixels change between two of them, which the pixel ranker calls
     // chaotic motion (a pirouette at 15 keyframes: 24 degrees, a mean frame difference of 0.45).
-    if (a.primitive == Primitive::Turn) {
-      if (360 * plan.amplitude(a) / std::max(K - 1, 1) > kMaxTurn + 1e-9) return "would turn the figure too far between keyframes";
-      continue;
-    }
     // Arms turning over (a crawl) turn evenly too, whole turns: more keyframes, never less turn.
-    if (a.primitive == Primitive::Windmill) {
-      if (360 * plan.amplitude(a) / std::max(K - 1, 1) > kMaxTurn + 1e-9) return "would turn a part too far between keyframes for the tracker to follow";
+    if (a.primitive == Primitive::Turn || a.primitive == Primitive::Windmill) {
+      if (360 * plan.amplitude(a) / std::max(K - 1, 1) > kMaxTurn + 1e-9)
+        return a.primitive == Primitive::Turn ? "would turn the figure too far between keyframes"
+                                              : "would turn a part too far between keyframes for the tracker to follow";
       continue;
     }
     if (a.primitive != Primitive::Swing || a.region != Region::None) continue;
@@ -265,29 +263,32 @@ struct TravelCheck {
   double travel(const MotionPlan& plan, const std::vector<size_t>& clause) const {
     return largest_travel(animate_plan(scene, rig, only(plan, clause), frames), exempt, frames);
   }
-  // Whether the fitter follows `one` between K_hi keyframes (steps and turns; not the canvas).
-  bool follows(const MotionPlan& one) const {
-    return limit_broken_steps(scene, animate_plan(scene, rig, one, frames), exempt, frames, K_hi).empty() && turn_broken(one, frames, K_hi).empty();
+  // Whether the fitter follows `one`, animated as `pts`, between K_hi keyframes (steps and
+  // turns; not the canvas).
+  bool followed(const MotionPlan& one, const std::vector<Vec2>& pts) const {
+    return limit_broken_steps(scene, pts, exempt, frames, K_hi).empty() && turn_broken(one, frames, K_hi).empty();
   }
-  // The travel `clause` keeps, alone, once cut by 0.8 at a time until it keeps every limit (the
-  // canvas, the fitter's steps), as fit_scales would cut it; 0 when kScaleAttempts cuts do not do.
-  double travel_kept(const MotionPlan& plan, const std::vector<size_t>& clause) const {
-    MotionPlan one = only(plan, clause);
+  bool follows(const MotionPlan& one) const { return followed(one, animate_plan(scene, rig, one, frames)); }
+  // The travel `clause` (alone in `one`) keeps once cut by 0.8 at a time until `holds(one, its
+  // points)`, as fit_scales would cut it; 0 when kScaleAttempts cuts do not do.
+  template <class Holds>
+  double travel_cut(MotionPlan one, const std::vector<size_t>& clause, Holds holds) const {
     for (int attempt = 0; attempt <= kScaleAttempts; ++attempt) {
       const std::vector<Vec2> pts = animate_plan(scene, rig, one, frames);
-      if (limit_broken(scene, pts, exempt, by_curve, frames, K_hi).empty()) return largest_travel(pts, exempt, frames);
+      if (holds(one, pts)) return largest_travel(pts, exempt, frames);
       for (size_t j : clause) one.actions[j].scale *= 0.8;
     }
     return 0;
   }
-  // The travel `clause` (alone in `one`) keeps once cut by 0.8 at a time until the fitter
-  // follows it, as fit_scales would cut it; 0 when kScaleAttempts cuts do not do.
+  // The travel `clause` keeps, alone, within every limit (the canvas, the fitter's steps).
+  double travel_kept(const MotionPlan& plan, const std::vector<size_t>& clause) const {
+    return travel_cut(only(plan, clause), clause, [&](const MotionPlan&, const std::vector<Vec2>& pts) {
+      return limit_broken(scene, pts, exempt, by_curve, frames, K_hi).empty();
+    });
+  }
+  // The travel `clause` (alone in `one`) keeps where the fitter follows it.
   double travel_followed(MotionPlan one, const std::vector<size_t>& clause) const {
-    for (int attempt = 0; attempt <= kScaleAttempts; ++attempt) {
-      if (follows(one)) return travel(one, clause);
-      for (size_t j : clause) one.actions[j].scale *= 0.8;
-    }
-    return 0;
+    return travel_cut(std::move(one), clause, [&](const MotionPlan& m, const std::vector<Vec2>& pts) { return followed(m, pts); });
   }
 };
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "procedural/gait_travel.h"
 #include "procedural/rotor_blades.h"
 #include "procedural/toss_and_stroke.h"
 
@@ -27,6 +28,14 @@ const Verb* flame_verb(const Verb* v, const Clause& c, const Rig& rig, const Loc
   return f ? f : v;
 }
 
+const Verb* wheeled_travel(const Verb* v, const Clause& c) {
+  if (!v || c.figure != FigureClass::Wheeled) return v;
+  // A gait (legs in turn, not a pedalling rider's; the generic move) or a glide or a flight.
+  const bool carried = is_gait(*v, c.figure) || v->name == "glide" || v->name == "soar" || v->name == "fly";
+  const Verb* drive = carried ? find_verb_by_name("drive") : nullptr;
+  return drive ? drive : v;
+}
+
 std::vector<const Verb*> clause_verbs(const Clause& c, const Rig& rig, const LocatedPart* located) {
   // Several things tossed by a figure holding them up is a juggle; a swimmer's crawl a stroke
   // (toss_and_stroke.h): they stand for the throw, the swim and the crawl's move.
@@ -34,7 +43,7 @@ std::vector<const Verb*> clause_verbs(const Clause& c, const Rig& rig, const Loc
   const Verb* stroke = stroke_reading(c);
   std::vector<const Verb*> out;
   for (const Verb* v : c.verbs) {
-    const Verb* by = juggle && v->name == "throw" ? juggle : stroke && (v->name == "swim" || v->name == "move") ? stroke : flame_verb(v, c, rig, located);
+    const Verb* by = juggle && v->name == "throw" ? juggle : stroke && (v->name == "swim" || v->name == "move") ? stroke : wheeled_travel(flame_verb(v, c, rig, located), c);
     if (std::find(out.begin(), out.end(), by) == out.end()) out.push_back(by);
   }
   if (juggle && std::find(out.begin(), out.end(), juggle) == out.end()) out.insert(out.begin(), juggle);

@@ -25,8 +25,17 @@ bool twinkle_of_fire(const Clause& c, bool lights);
 // other verb is itself.
 const Verb* flame_verb(const Verb* v, const Clause& c, const Rig& rig, const LocatedPart* located);
 
-// The clause's verbs, each as flame_verb reads it.
+// The clause's verbs, each as flame_verb reads it, and each of a figure on wheels as wheeled_travel does.
 std::vector<const Verb*> clause_verbs(const Clause& c, const Rig& rig, const LocatedPart* located);
+
+// A figure on wheels (the clause's class is wheeled: a car, a tractor, a bus) gets somewhere by
+// its wheels: a verb that carries a figure along by other means (a generic move, which WordNet
+// reads "pulls away", "trundles", "chugs" as; a glide; a flight; a gait of legs in turn: "the
+// racing car zooms off" read as a run and a soar) is its class's drive (wheels rolling as the
+// body slides). Read as they were, the taxi slid and stretched with its wheels still, and the
+// racing car bent its lower part for legs and bobbed as if in flight. Any other verb (a hop, a
+// spin, a takeoff, a rock) is itself.
+const Verb* wheeled_travel(const Verb* v, const Clause& c);
 
 // The flames of a fire or a light that flickers with no part named ("the candles flicker"; in
 // "the candle flames flicker" the flames read as a verb): the locator's flames, empty when the

@@ -1,0 +1,24 @@
+// Whether a prompt sends its figure across the canvas (see travel_words.h).
+#include "procedural/travel_words.h"
+
+#include "procedural/gait_travel.h"
+#include "procedural/motion_plan_internal.h"
+
+namespace svgm {
+
+bool sends_figure_across(const ParsedPrompt& prompt) {
+  bool stays = false, told = false, untold = false;
+  for (const Clause& c : prompt.clauses) {
+    stays = stays || stays_put(c.text);
+    for (const PromptNoun& n : c.nouns) stays = stays || (!n.object_of_preposition && motion_plan_internal::is_limb_target(n.target));
+    for (const Verb* v : c.verbs)
+      if (gets_somewhere(*v) || v->name == "move") {
+        told = told || c.mods.travel != 0;
+        // Untold, only a gait goes (travel_where_told): a rider's pedalling is the vehicle's.
+        untold = untold || (c.mods.travel == 0 && c.mods.vertical == 0 && c.mods.depth == 0 && is_gait(*v, c.figure));
+      }
+  }
+  return told || (untold && !stays);
+}
+
+}  // namespace svgm

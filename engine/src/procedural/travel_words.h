@@ -1,0 +1,17 @@
+// Whether a prompt sends its figure across the canvas, read from the words alone, before any
+// drawing is read (issue 35: the pipeline gives such a figure room to travel in,
+// pipeline/canvas_room.h). A clause whose verb gets the figure somewhere (a gait, hops, a crawl,
+// a body's wave: gait_travel.h) sends it across when it says "to the left" or "to the right",
+// or, when its verb is a gait (not a rider's pedalling: gait_travel.h's is_gait), says no way at
+// all while no clause keeps it where it is ("on the spot") nor names the limbs that move: then
+// untold_travel sends it the way it faces. Apart from gait_travel.h, whose
+// motion_plan.h the pipeline cannot include beside the exporters' PathMotion.
+#pragma once
+
+#include "procedural/prompt_parse.h"
+
+namespace svgm {
+
+bool sends_figure_across(const ParsedPrompt& prompt);
+
+}  // namespace svgm
