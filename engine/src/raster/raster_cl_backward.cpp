@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "raster/frame_border_blur.h"
 #include "raster/half_float.h"
 #include "raster/launch_groups.h"
 #include "raster/loss_tiles.h"
@@ -257,7 +256,10 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
   // at rest 7.3e-5 against 2.8e-6 clean) that the relative plateau and activation tests
   // (optimise/fitter.h) read as a loss that had stopped falling.
   const std::vector<double> g_target = loss_stencil(kLossSigma);
-  const std::vector<double> g1 = blur_rgb(std::vector<double>(px * 3, 1.0), W, H, g_target);
+  // Above σ 1 both blurs pad by reflection (loss_taps.h, loss_reflects): then G_t 1 = 1, and a
+  // target's ink that runs off the frame stays as dark to the border as the render's.
+  const bool reflect = loss_reflects(render_sigma_);
+  const std::vector<double> g1 = blur_rgb(std::vector<double>(px * 3, 1.0), W, H, g_target, reflect);
   std::vector<double> q(px * 3);
   // One frame's Q and R at a time, kept by tiles (raster/loss_tiles.h): whole-clip host copies
   // were 32 bytes per pixel and frame at the fit's peak (176 MB for 21 keyframes at 512 px),
@@ -273,16 +275,7 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
       std::vector<double> t(px * 3);
       for (size_t p = 0; p < px; ++p)
         for (int c = 0; c < 3; ++c) t[3 * p + c] = frame[p * 4 + c];
-      if (render_sigma_ > kLossSigma) {
-        // A soft video's ink that the outside blurred in at the frame's border, which the
-        // render's zero-padded blur cannot draw (raster/frame_border_blur.h); every other
-        // pixel keeps its bits (the share is exactly 0 there).
-        std::vector<double> d(t.size());
-        for (size_t i = 0; i < t.size(); ++i) d[i] = t[i] - bg[i % 3];
-        const std::vector<double> share = outside_blur(d, W, H, render_sigma_);
-        for (size_t i = 0; i < t.size(); ++i) t[i] -= share[i];
-      }
-      const std::vector<double> gt = blur_rgb(t, W, H, g_target);
+      const std::vector<double> gt = blur_rgb(t, W, H, g_target, reflect);
       t = std::vector<double>();
       // Q as the device stores it (a half, within 2^-11 of it: a twentieth of an 8-bit level),
       // so that Σ Q² and R are those of the Q the loss reads and Σ E² stays a sum of squares.
@@ -298,10 +291,10 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
     if (chroma_weight_ != 1) {
       const std::vector<double> mq = chroma_metric(q, chroma_weight_);
       for (size_t i = 0; i < q.size(); ++i) sum += q[i] * mq[i];
-      r = render_blur(mq, W, H, render_sigma_, chroma_sigma_, true);
+      r = render_blur(mq, W, H, render_sigma_, chroma_sigma_, true, reflect);
     } else {
       for (size_t i = 0; i < q.size(); ++i) sum += q[i] * q[i];
-      r = render_blur(q, W, H, render_sigma_, chroma_sigma_, true);
+      r = render_blur(q, W, H, render_sigma_, chroma_sigma_, true, reflect);
     }
     qsum[k] = static_cast<float>(sum);
     for (size_t i = 0; i < r.size(); ++i) rh[i / 3 * 4 + i % 3] = float_to_half(static_cast<float>(r[i]));
