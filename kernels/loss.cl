@@ -371,11 +371,16 @@ inline float3 blurred_gradient(__global const float* E, __global const int2* ext
                                int width, int height, float scale) {
   float3 s = vload_half4(loss_tile_pixel(tiles, x, y, width), R).xyz;
 #ifdef LOSS_REFLECT
+  /* Only within LOSS_R (+1) of the border do the adjoint's taps differ from the stencil (the
+   * same values elsewhere: loss_adjoint_taps' plain case), and only there are they made. */
+  const int near = x <= LOSS_R || x + LOSS_R + 1 >= width || y <= LOSS_R || y + LOSS_R + 1 >= height;
   float4 wx[2 * LOSS_R + 1], wy[2 * LOSS_R + 1];
-  loss_adjoint_taps(x, width, wx);
-  loss_adjoint_taps(y, height, wy);
-#define TAP_X(d) wx[(d) + LOSS_R]
-#define TAP_Y(d) wy[(d) + LOSS_R]
+  if (near) {
+    loss_adjoint_taps(x, width, wx);
+    loss_adjoint_taps(y, height, wy);
+  }
+#define TAP_X(d) (near ? wx[(d) + LOSS_R] : LOSS_TAP4(d))
+#define TAP_Y(d) (near ? wy[(d) + LOSS_R] : LOSS_TAP4(d))
 #elif defined(CHROMA_R)
 #define TAP_X(d) gv_tap(d)
 #define TAP_Y(d) gv_tap(d)
