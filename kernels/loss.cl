@@ -18,6 +18,14 @@
  * because a separable convolution with a symmetric kernel and zero padding is its own adjoint
  * (the plain form: ∂L/∂C[p] = Σ_q G[q - p] · 2w/N · E[q], the same stencil).
  *
+ * With LOSS_REFLECT (a render σ above 1, prelude.cl) both blurs pad by reflection instead of
+ * zeros: a tap beyond the frame reads the pixel mirrored inside it, in the render's passes
+ * here and in the host's G_t of the target (raster/loss_taps.h, loss_reflects). The operator
+ * is then not its own adjoint within LOSS_R of the border: there ∂L/∂C[p] = Σ_q A[q][p] ·
+ * 2w/N · E[q] with A[q][p] the sum of the taps of q that read p (loss_adjoint_taps); every
+ * other pixel keeps the stencil. A mirrored pixel lies within LOSS_R of the tap's pixel, so
+ * the extents below hold as they are.
+ *
  * Only the drawn part changes between iterations. Write C = bg + X with X = P − a·bg, zero
  * wherever nothing is drawn (P the premultiplied render, a its alpha). Then, by linearity,
  *
@@ -85,7 +93,13 @@ __kernel void blur_pass(__global const float4* src, __global float4* dst, float 
   __global const float4* f = src + (size_t)k * width * height;
   const int step = dir == 0 ? 1 : width, pos = y * width + x;
   const int at = dir == 0 ? x : y, n = dir == 0 ? width : height;
-#ifdef CHROMA_R
+#if defined(LOSS_REFLECT) && defined(CHROMA_R)
+  float4 s = (float4)(0.0f);
+  for (int j = -LOSS_R; j <= LOSS_R; ++j) s += gv_tap(j) * f[pos + (loss_reflect(at + j, n) - at) * step];
+#elif defined(LOSS_REFLECT)
+  float4 s = (float4)(0.0f);
+  for (int j = -LOSS_R; j <= LOSS_R; ++j) s += g_tap(j) * f[pos + (loss_reflect(at + j, n) - at) * step];
+#elif defined(CHROMA_R)
   float4 s = gv_tap(0) * f[pos];
   for (int j = 1; j <= LOSS_R; ++j) {
     if (at >= j) s += gv_tap(j) * f[pos - j * step];
@@ -190,7 +204,11 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
   __global const int2* ex = ext_x + (size_t)k * height;
   int lo = width, hi = -1;
   for (int j = -LOSS_R; j <= LOSS_R; ++j) {
+#ifdef LOSS_REFLECT
+    const int yy = loss_reflect(y + j, height); /* a row within LOSS_R of y: the same extent */
+#else
     const int yy = y + j;
+#endif
     if (yy < 0 || yy >= height || ex[yy].x > ex[yy].y) continue;
     lo = min(lo, ex[yy].x);
     hi = max(hi, ex[yy].y);
@@ -212,8 +230,17 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
    * (tap rows top to bottom), so the same bits. */
   int ta[2 * LOSS_R + 1], tb[2 * LOSS_R + 1];
   int fa = lo, fb = hi;
+#ifdef LOSS_REFLECT
+  /* Tap row j reads row ro[j] / width, mirrored into the frame (prelude.cl). */
+  int ro[2 * LOSS_R + 1];
+#endif
   for (int j = 0; j <= 2 * LOSS_R; ++j) {
+#ifdef LOSS_REFLECT
+    const int yy = loss_reflect(y + j - LOSS_R, height);
+    ro[j] = yy * width;
+#else
     const int yy = y + j - LOSS_R;
+#endif
     const int ok = yy >= 0 && yy < height;
     ta[j] = ok ? ex[yy].x : width;
     tb[j] = ok ? ex[yy].y : -1;
@@ -221,6 +248,11 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
     fb = min(fb, tb[j]);
   }
   const int r = (y - LOSS_R) * width; /* tap row j starts at f + r + j * width */
+#ifdef LOSS_REFLECT
+#define TAP_ROW(j) ro[j]
+#else
+#define TAP_ROW(j) (r + (j) * width)
+#endif
   prefetch_next_row(f, ex, Q, qrow, e, y, width, height);
 #if !defined(CHROMA_R) && !defined(CHROMA_W) && LOSS_R == 2
   /* The plain blur is the same for each of a pixel's three floats: over the span where every
@@ -272,7 +304,7 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
     float3 v = (float3)(0.0f);
     if (x >= fa && x <= fb) {
 #if defined(CHROMA_R)
-      for (int j = 0; j <= 2 * LOSS_R; ++j) v += gv_tap(j - LOSS_R).xyz * vload3(r + j * width + x, f);
+      for (int j = 0; j <= 2 * LOSS_R; ++j) v += gv_tap(j - LOSS_R).xyz * vload3(TAP_ROW(j) + x, f);
 #elif LOSS_R == 2
       v += G2 * vload3(r + x, f);
       v += G1 * vload3(r + width + x, f);
@@ -280,14 +312,14 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
       v += G1 * vload3(r + 3 * width + x, f);
       v += G2 * vload3(r + 4 * width + x, f);
 #else
-      for (int j = 0; j <= 2 * LOSS_R; ++j) v += g_tap(j - LOSS_R) * vload3(r + j * width + x, f);
+      for (int j = 0; j <= 2 * LOSS_R; ++j) v += g_tap(j - LOSS_R) * vload3(TAP_ROW(j) + x, f);
 #endif
     } else {
       for (int j = 0; j <= 2 * LOSS_R; ++j) {
 #ifdef CHROMA_R
-        if (x >= ta[j] && x <= tb[j]) v += gv_tap(j - LOSS_R).xyz * vload3(r + j * width + x, f);
+        if (x >= ta[j] && x <= tb[j]) v += gv_tap(j - LOSS_R).xyz * vload3(TAP_ROW(j) + x, f);
 #else
-        if (x >= ta[j] && x <= tb[j]) v += g_tap(j - LOSS_R) * vload3(r + j * width + x, f);
+        if (x >= ta[j] && x <= tb[j]) v += g_tap(j - LOSS_R) * vload3(TAP_ROW(j) + x, f);
 #endif
       }
     }
@@ -304,13 +336,58 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
   }
 #endif
   row_sums[(size_t)k * height + y] = s;
+#undef TAP_ROW
 }
+
+#ifdef LOSS_REFLECT
+#ifdef CHROMA_R
+#define LOSS_TAP4(j) gv_tap(j)
+#else
+#define LOSS_TAP4(j) ((float4)(g_tap(j)))
+#endif
+/* The adjoint's taps at pixel p of a row (or column) of n pixels with reflect padding:
+ * w[i] = A[q][p] for q = p − LOSS_R + i, the taps of output q that read p (q + j itself, or
+ * mirrored into p). Beyond LOSS_R of the border that is the stencil. Per channel group (x luma,
+ * y and z chroma) with CHROMA_R. */
+inline void loss_adjoint_taps(int p, int n, float4* w) {
+  const int plain = p > LOSS_R && p + LOSS_R + 1 < n;
+  for (int i = 0; i <= 2 * LOSS_R; ++i) {
+    const int q = p - LOSS_R + i;
+    float4 s = (float4)(0.0f);
+    if (plain) {
+      s = LOSS_TAP4(i - LOSS_R);
+    } else if (q >= 0 && q < n) {
+      for (int j = -LOSS_R; j <= LOSS_R; ++j)
+        if (loss_reflect(q + j, n) == p) s += LOSS_TAP4(j);
+    }
+    w[i] = s;
+  }
+}
+#endif
 
 /* ∂L/∂C at pixel (x, y) of a frame: 2w/N · (R + G ∗ E'), E' read within its row extents. */
 inline float3 blurred_gradient(__global const float* E, __global const int2* ext_e,
                                __global const half* R, __global const int* tiles, int x, int y,
                                int width, int height, float scale) {
   float3 s = vload_half4(loss_tile_pixel(tiles, x, y, width), R).xyz;
+#ifdef LOSS_REFLECT
+  /* Only within LOSS_R (+1) of the border do the adjoint's taps differ from the stencil (the
+   * same values elsewhere: loss_adjoint_taps' plain case), and only there are they made. */
+  const int near = x <= LOSS_R || x + LOSS_R + 1 >= width || y <= LOSS_R || y + LOSS_R + 1 >= height;
+  float4 wx[2 * LOSS_R + 1], wy[2 * LOSS_R + 1];
+  if (near) {
+    loss_adjoint_taps(x, width, wx);
+    loss_adjoint_taps(y, height, wy);
+  }
+#define TAP_X(d) (near ? wx[(d) + LOSS_R] : LOSS_TAP4(d))
+#define TAP_Y(d) (near ? wy[(d) + LOSS_R] : LOSS_TAP4(d))
+#elif defined(CHROMA_R)
+#define TAP_X(d) gv_tap(d)
+#define TAP_Y(d) gv_tap(d)
+#else
+#define TAP_X(d) ((float4)(g_tap(d)))
+#define TAP_Y(d) ((float4)(g_tap(d)))
+#endif
 #ifdef CHROMA_R
   /* The per-group blur's adjoint: blur the stored A⁻ᵀ E' per channel group, then Aᵀ (loss.cl's
    * chroma_residual). The same taps and order whether or not the extents need tests. */
@@ -322,15 +399,21 @@ inline float3 blurred_gradient(__global const float* E, __global const int2* ext
     float3 row = (float3)(0.0f);
     for (int dx = -LOSS_R; dx <= LOSS_R; ++dx) {
       const int xx = x + dx;
-      if (xx >= ex.x && xx <= ex.y) row += gv_tap(dx).xyz * vload3(yy * width + xx, E);
+      if (xx >= ex.x && xx <= ex.y) row += TAP_X(dx).xyz * vload3(yy * width + xx, E);
     }
-    acc += gv_tap(dy).xyz * row;
+    acc += TAP_Y(dy).xyz * row;
   }
   return scale * (s + rgb_adjoint_from_ycc(acc));
 #endif
   /* Inside the frame with every tap within its row's extent (a layered scene's usual case):
-   * the same sum without the tests. */
-  int inside = x >= LOSS_R && x + LOSS_R < width && y >= LOSS_R && y + LOSS_R < height;
+   * the same sum without the tests. With reflect padding the pixels LOSS_R from the border
+   * also take back what mirrored taps read of them: one pixel more is not inside. */
+#ifdef LOSS_REFLECT
+  const int m = LOSS_R + 1;
+#else
+  const int m = LOSS_R;
+#endif
+  int inside = x >= m && x + m < width && y >= m && y + m < height;
   for (int dy = -LOSS_R; dy <= LOSS_R && inside; ++dy)
     inside = ext_e[y + dy].x <= x - LOSS_R && ext_e[y + dy].y >= x + LOSS_R;
   if (inside) {
@@ -357,11 +440,13 @@ inline float3 blurred_gradient(__global const float* E, __global const int2* ext
     float3 row = (float3)(0.0f);
     for (int dx = -LOSS_R; dx <= LOSS_R; ++dx) {
       const int xx = x + dx;
-      if (xx >= ex.x && xx <= ex.y) row += g_tap(dx) * vload3(yy * width + xx, E);
+      if (xx >= ex.x && xx <= ex.y) row += TAP_X(dx).x * vload3(yy * width + xx, E);
     }
-    s += g_tap(dy) * row;
+    s += TAP_Y(dy).x * row;
   }
   return scale * s;
+#undef TAP_X
+#undef TAP_Y
 }
 
 /* One work-item: L = scale · Σ_k (Σ Q²_k + Σ row sums), in order, and per-frame losses. */

@@ -65,6 +65,18 @@ inline float g_tap(int j) {
        : j == 7 ? G7 : G8;
 }
 
+/* The loss's padding at the frame's border (raster/loss_taps.h, loss_reflects): zeros, or with
+ * LOSS_REFLECT (blur matching, a render σ above 1) reflect-101, index −1 reading 1 and n
+ * reading n − 2, so that a soft video's ink running off the frame, which its blur kept dark to
+ * the border, is matched by a render that does not fade there. loss_reflect(k, n) is the pixel
+ * tap index k reads (clamped when the frame is narrower than the stencil), as reflect101 on the
+ * host. */
+inline int loss_reflect(int k, int n) {
+  if (k < 0) k = -k;
+  if (k >= n) k = 2 * (n - 1) - k;
+  return clamp(k, 0, n - 1);
+}
+
 /* Chroma blur matching (raster/loss_taps.h, render_blur): when the build defines CHROMA_R and
  * GC0..GC8, the render is blurred per channel group in YCbCr (BT.601 without offsets), luma Y
  * by G0..G8 and chroma Cb, Cr by GC0..GC8, B = A⁻¹ · diag(G, GC, GC) · A: codecs keep luma

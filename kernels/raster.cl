@@ -253,10 +253,14 @@ inline uchar4 to_rgba8_pixel(float4 c, float4 background) {
 
 /* X' at pixel x of a row from its X (`f`, valid in [lo, hi]) with each tap tested against
  * the hull: the taps outside it are zero. The plain blur (no per-group chroma). */
-inline void x_blur_tested(__local const float4* f, __global float* o, int x, int lo, int hi) {
+inline void x_blur_tested(__local const float4* f, __global float* o, int x, int lo, int hi, int width) {
   float4 v = (float4)(0.0f);
   for (int j = -LOSS_R; j <= LOSS_R; ++j) {
+#ifdef LOSS_REFLECT
+    const int xx = loss_reflect(x + j, width);
+#else
     const int xx = x + j;
+#endif
     if (xx >= lo && xx <= hi) v += g_tap(j) * f[xx];
   }
   vstore3(v.xyz, x, o);
@@ -329,7 +333,7 @@ inline void write_band(__local float4* band_rgba, __local const int* hull, __glo
        * kept the pixel loop one float4 a tap. Each float gets the same taps in the same
        * order as below. */
       __local const float* ff = (__local const float*)f;
-      for (; x < lo + LOSS_R && x <= hi2; ++x) x_blur_tested(f, o, x, lo, hi);
+      for (; x < lo + LOSS_R && x <= hi2; ++x) x_blur_tested(f, o, x, lo, hi, width);
       for (; x + 3 <= hi - LOSS_R; x += 4) {
         float16 v = (float16)(0.0f);
         v += G2 * vload16(0, ff + 4 * (x - 2));
@@ -358,8 +362,14 @@ inline void write_band(__local float4* band_rgba, __local const int* hull, __glo
           for (int j = -LOSS_R; j <= LOSS_R; ++j) v += g_tap(j) * f[x + j];
 #endif
         } else {
+          /* Taps beyond the frame read it mirrored with LOSS_REFLECT (prelude.cl); a mirrored
+           * pixel lies within LOSS_R of x, so X' still ends LOSS_R beyond the hull. */
           for (int j = -LOSS_R; j <= LOSS_R; ++j) {
+#ifdef LOSS_REFLECT
+            const int xx = loss_reflect(x + j, width);
+#else
             const int xx = x + j;
+#endif
 #ifdef CHROMA_R
             if (xx >= lo && xx <= hi) v += gv_tap(j) * f[xx];
 #else

@@ -31,6 +31,7 @@ double chroma_sq_sum(const std::vector<double>& image, const std::vector<float>&
     return std::abs(j) <= r ? g[static_cast<size_t>(j + r)] : 0.0;
   };
   const int R = static_cast<int>(std::max({gl.size(), gc.size(), gt.size()}) / 2);
+  const bool reflect = loss_reflects(render_sigma);  // both blurs, as the kernels' LOSS_REFLECT
   std::vector<double> ycc(static_cast<size_t>(width) * height * 3), t(ycc.size());
   for (size_t p = 0; p < ycc.size() / 3; ++p) {
     double c[3];
@@ -46,7 +47,8 @@ double chroma_sq_sum(const std::vector<double>& image, const std::vector<float>&
       double v[3] = {0, 0, 0}, gtt[3] = {0, 0, 0};
       for (int dy = -R; dy <= R; ++dy)
         for (int dx = -R; dx <= R; ++dx) {
-          const int xx = x + dx, yy = y + dy;
+          int xx = x + dx, yy = y + dy;
+          if (reflect) xx = reflect101(xx, width), yy = reflect101(yy, height);
           if (xx < 0 || yy < 0 || xx >= width || yy >= height) continue;  // zero padding
           const size_t at = 3 * (static_cast<size_t>(yy) * width + xx);
           for (int ch = 0; ch < 3; ++ch) {
@@ -71,6 +73,7 @@ double blurred_sq_sum(const std::vector<double>& image, const std::vector<float>
     return chroma_sq_sum(image, target, width, height, background, render_sigma, chroma_sigma, chroma_weight);
   const std::vector<double> gr = loss_stencil(render_sigma), gt = loss_stencil(kLossSigma);
   const int Rr = static_cast<int>(gr.size() / 2), Rt = static_cast<int>(gt.size() / 2), R = std::max(Rr, Rt);
+  const bool reflect = loss_reflects(render_sigma);  // both blurs, as the kernels' LOSS_REFLECT
   // A tap outside a stencil's radius weighs 0.
   auto tap = [](const std::vector<double>& g, int r, int j) { return std::abs(j) <= r ? g[static_cast<size_t>(j + r)] : 0.0; };
   std::vector<double> c(static_cast<size_t>(width) * height * 3), t(c.size());
@@ -88,7 +91,8 @@ double blurred_sq_sum(const std::vector<double>& image, const std::vector<float>
       for (int ch = 0; ch < 3; ++ch)
         for (int dy = -R; dy <= R; ++dy)
           for (int dx = -R; dx <= R; ++dx) {
-            const int xx = x + dx, yy = y + dy;
+            int xx = x + dx, yy = y + dy;
+            if (reflect) xx = reflect101(xx, width), yy = reflect101(yy, height);
             if (xx < 0 || yy < 0 || xx >= width || yy >= height) continue;  // zero padding
             const size_t at = 3 * (static_cast<size_t>(yy) * width + xx) + ch;
             e[ch] += tap(gr, Rr, dx) * tap(gr, Rr, dy) * c[at] - tap(gt, Rt, dx) * tap(gt, Rt, dy) * t[at];

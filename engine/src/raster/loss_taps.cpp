@@ -4,32 +4,60 @@
 
 namespace svgm {
 
-std::vector<double> blur_rgb(const std::vector<double>& in, int W, int H, const std::vector<double>& g) {
+namespace {
+
+// One separable pass along x (`along_x`) or y. Zero padding drops the taps beyond the frame;
+// reflect-101 reads them mirrored. The adjoint scatters each output's taps back to the pixels
+// they read (with zero padding that is the same sum, as the stencil is symmetric; it is taken
+// the plain way then, so the zero-padded bits stay those of the gather).
+void blur_pass(const std::vector<double>& in, std::vector<double>& out, int W, int H, const std::vector<double>& g,
+               bool along_x, bool reflect, bool adjoint) {
   const int R = static_cast<int>(g.size() / 2);
   auto at = [W](int x, int y, int c) { return 3 * (static_cast<size_t>(y) * W + x) + c; };
+  const int n = along_x ? W : H;
+  if (!reflect) {
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x)
+        for (int c = 0; c < 3; ++c) {
+          const int i = along_x ? x : y;
+          double s = 0;
+          for (int j = -R; j <= R; ++j)
+            if (i + j >= 0 && i + j < n) s += g[static_cast<size_t>(j + R)] * in[along_x ? at(x + j, y, c) : at(x, y + j, c)];
+          out[at(x, y, c)] = s;
+        }
+    return;
+  }
+  std::fill(out.begin(), out.end(), 0.0);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const int i = along_x ? x : y;
+        for (int j = -R; j <= R; ++j) {
+          const int k = reflect101(i + j, n);
+          const size_t from = at(x, y, c), to = along_x ? at(k, y, c) : at(x, k, c);
+          if (adjoint)
+            out[to] += g[static_cast<size_t>(j + R)] * in[from];
+          else
+            out[from] += g[static_cast<size_t>(j + R)] * in[to];
+        }
+      }
+}
+
+}  // namespace
+
+std::vector<double> blur_rgb(const std::vector<double>& in, int W, int H, const std::vector<double>& g, bool reflect,
+                             bool adjoint) {
+  // The 2-D operator is the product of the two passes, which commute: the adjoint is the
+  // product of their adjoints.
   std::vector<double> tmp(in.size()), out(in.size());
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x)
-      for (int c = 0; c < 3; ++c) {
-        double s = 0;
-        for (int j = -R; j <= R; ++j)
-          if (x + j >= 0 && x + j < W) s += g[static_cast<size_t>(j + R)] * in[at(x + j, y, c)];
-        tmp[at(x, y, c)] = s;
-      }
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x)
-      for (int c = 0; c < 3; ++c) {
-        double s = 0;
-        for (int j = -R; j <= R; ++j)
-          if (y + j >= 0 && y + j < H) s += g[static_cast<size_t>(j + R)] * tmp[at(x, y + j, c)];
-        out[at(x, y, c)] = s;
-      }
+  blur_pass(in, tmp, W, H, g, true, reflect, adjoint);
+  blur_pass(tmp, out, W, H, g, false, reflect, adjoint);
   return out;
 }
 
 std::vector<double> render_blur(const std::vector<double>& in, int W, int H, double sigma, double chroma_sigma,
-                                bool adjoint) {
-  if (chroma_sigma == sigma) return blur_rgb(in, W, H, loss_stencil(sigma));
+                                bool adjoint, bool reflect) {
+  if (chroma_sigma == sigma) return blur_rgb(in, W, H, loss_stencil(sigma), reflect, adjoint);
   // Into the blur's coordinates: A (forward) or A⁻ᵀ (adjoint); out: A⁻¹ or Aᵀ.
   auto into = [&](int i, int j) { return adjoint ? kYccInv[j][i] : kYcc[i][j]; };
   auto out_of = [&](int i, int j) { return adjoint ? kYcc[j][i] : kYccInv[i][j]; };
@@ -42,8 +70,8 @@ std::vector<double> render_blur(const std::vector<double>& in, int W, int H, dou
       f[3 * p + i] = s;
     }
   // Every channel blurred at both σ; luma keeps the first, chroma the second.
-  const std::vector<double> luma = blur_rgb(f, W, H, loss_stencil(sigma));
-  const std::vector<double> chroma = blur_rgb(f, W, H, loss_stencil(chroma_sigma));
+  const std::vector<double> luma = blur_rgb(f, W, H, loss_stencil(sigma), reflect, adjoint);
+  const std::vector<double> chroma = blur_rgb(f, W, H, loss_stencil(chroma_sigma), reflect, adjoint);
   std::vector<double> out(in.size());
   for (size_t p = 0; p < px; ++p) {
     const double v[3] = {luma[3 * p], chroma[3 * p + 1], chroma[3 * p + 2]};

@@ -58,10 +58,33 @@ inline std::vector<double> loss_taps(double sigma) {
   return std::vector<double>(full.begin() + R, full.end());
 }
 
-// The loss's blur on the host, in double: `stencil` (g_{-R}..g_R) applied separably, with
-// zero padding, to W x H pixels of 3 interleaved channels. Shared by the loss's constants
-// (raster_cl_backward.cpp) and blur matching (fit/target/blur_match.cpp).
-std::vector<double> blur_rgb(const std::vector<double>& in, int W, int H, const std::vector<double>& stencil);
+// The padding of the loss's blurs at the frame's border. The paper's loss pads with zeros, the
+// render and the target alike. Once blur matching widens the render's blur (σ > 1) both blurs
+// pad by reflection instead (reflect-101: index −1 reads 1, n reads n − 2): a soft video is
+// blurred from a scene that goes on beyond the frame (a camera, a model; a filter pads by
+// reflection), so its ink stays dark up to the border, and a render blurred over paper beyond
+// the frame faded there: no pose fitted both, and the fitter fattened every part that ran off
+// the frame (the blurred bat's wings: 25-45 % of its error at 1024 px lay within 12 px of the
+// border at 512). With both blurs reflected the render's (G_t ∗ G_v) is exactly G_t applied to
+// the render blurred as the video is (a reflect-101 blur of a symmetric stencil keeps the
+// mirror symmetry), so the model is the video's own where the border mirrors the scene.
+inline bool loss_reflects(double render_sigma) { return render_sigma > kLossSigma; }
+
+// Reflect-101 of index k into [0, n): exact for k within n − 1 of the frame, clamped beyond
+// (a frame narrower than a stencil), as the kernels' loss_reflect (prelude.cl).
+inline int reflect101(int k, int n) {
+  if (k < 0) k = -k;
+  if (k >= n) k = 2 * (n - 1) - k;
+  return std::clamp(k, 0, n - 1);
+}
+
+// The loss's blur on the host, in double: `stencil` (g_{-R}..g_R) applied separably to W x H
+// pixels of 3 interleaved channels, with zero padding or, with `reflect`, reflect-101 padding;
+// with `adjoint`, the transpose of that operator (the same as the blur with zero padding; with
+// reflection the taps that read a mirrored pixel give back to it). Shared by the loss's
+// constants (raster_cl_backward.cpp) and blur matching (fit/target/blur_match.cpp).
+std::vector<double> blur_rgb(const std::vector<double>& in, int W, int H, const std::vector<double>& stencil,
+                             bool reflect = false, bool adjoint = false);
 
 // The taps as a full stencil, g_{-R}..g_R.
 inline std::vector<double> loss_stencil(double sigma) {
@@ -87,10 +110,10 @@ constexpr double kYccInv[3][3] = {{1, 0, 1.402},
                                   {1, 1.772, 0}};
 
 // B (or, with `adjoint`, Bᵀ = Aᵀ · diag(G_σ, G_σc, G_σc) · A⁻ᵀ) applied to W x H pixels of 3
-// interleaved RGB channels, zero padding, in double. With σc = σ it is blur_rgb with
-// loss_stencil(σ), the same arithmetic.
+// interleaved RGB channels, zero or (`reflect`) reflect-101 padding, in double. With σc = σ it
+// is blur_rgb with loss_stencil(σ), the same arithmetic.
 std::vector<double> render_blur(const std::vector<double>& in, int W, int H, double sigma, double chroma_sigma,
-                                bool adjoint = false);
+                                bool adjoint = false, bool reflect = false);
 
 // M·e at every RGB triple of `e` (interleaved): M = w·I + (1 − w)·y yᵀ/|y|², y = kYcc's luma
 // row. A residual of chroma alone (yᵀe = 0) counts w times, one of luma alone fully

@@ -22,7 +22,8 @@ namespace {
 
 // prelude.cl's render taps when they are not the paper's (whose program stays the cached one).
 // A chroma σ of its own adds the chroma taps GC0.. and CHROMA_R, and LOSS_R becomes the larger
-// radius (the luma taps beyond their own radius are prelude.cl's zeros).
+// radius (the luma taps beyond their own radius are prelude.cl's zeros); a render σ above 1
+// adds LOSS_REFLECT.
 std::string loss_tap_options(double sigma, double chroma_sigma, double chroma_weight) {
   std::string weight;
   if (chroma_weight != 1) {
@@ -41,6 +42,8 @@ std::string loss_tap_options(double sigma, double chroma_sigma, double chroma_we
     return o;
   };
   const std::vector<double> g = loss_taps(sigma);
+  // Above σ 1 the loss's blurs pad by reflection (loss_taps.h, loss_reflects; prelude.cl).
+  if (loss_reflects(sigma)) weight += " -DLOSS_REFLECT";
   if (chroma_sigma == sigma) return " -DLOSS_R=" + std::to_string(g.size() - 1) + taps("G", g) + weight;
   const std::vector<double> gc = loss_taps(chroma_sigma);
   return " -DLOSS_R=" + std::to_string(std::max(g.size(), gc.size()) - 1) + taps("G", g) +

@@ -256,7 +256,10 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
   // at rest 7.3e-5 against 2.8e-6 clean) that the relative plateau and activation tests
   // (optimise/fitter.h) read as a loss that had stopped falling.
   const std::vector<double> g_target = loss_stencil(kLossSigma);
-  const std::vector<double> g1 = blur_rgb(std::vector<double>(px * 3, 1.0), W, H, g_target);
+  // Above σ 1 both blurs pad by reflection (loss_taps.h, loss_reflects): then G_t 1 = 1, and a
+  // target's ink that runs off the frame stays as dark to the border as the render's.
+  const bool reflect = loss_reflects(render_sigma_);
+  const std::vector<double> g1 = blur_rgb(std::vector<double>(px * 3, 1.0), W, H, g_target, reflect);
   std::vector<double> q(px * 3);
   // One frame's Q and R at a time, kept by tiles (raster/loss_tiles.h): whole-clip host copies
   // were 32 bytes per pixel and frame at the fit's peak (176 MB for 21 keyframes at 512 px),
@@ -272,7 +275,7 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
       std::vector<double> t(px * 3);
       for (size_t p = 0; p < px; ++p)
         for (int c = 0; c < 3; ++c) t[3 * p + c] = frame[p * 4 + c];
-      const std::vector<double> gt = blur_rgb(t, W, H, g_target);
+      const std::vector<double> gt = blur_rgb(t, W, H, g_target, reflect);
       t = std::vector<double>();
       // Q as the device stores it (a half, within 2^-11 of it: a twentieth of an 8-bit level),
       // so that Σ Q² and R are those of the Q the loss reads and Σ E² stays a sum of squares.
@@ -288,10 +291,10 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
     if (chroma_weight_ != 1) {
       const std::vector<double> mq = chroma_metric(q, chroma_weight_);
       for (size_t i = 0; i < q.size(); ++i) sum += q[i] * mq[i];
-      r = render_blur(mq, W, H, render_sigma_, chroma_sigma_, true);
+      r = render_blur(mq, W, H, render_sigma_, chroma_sigma_, true, reflect);
     } else {
       for (size_t i = 0; i < q.size(); ++i) sum += q[i] * q[i];
-      r = render_blur(q, W, H, render_sigma_, chroma_sigma_, true);
+      r = render_blur(q, W, H, render_sigma_, chroma_sigma_, true, reflect);
     }
     qsum[k] = static_cast<float>(sum);
     for (size_t i = 0; i < r.size(); ++i) rh[i / 3 * 4 + i % 3] = float_to_half(static_cast<float>(r[i]));
