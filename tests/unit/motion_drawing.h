@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "svgmotion/svg_reader.h"
+#include "procedural/eye_cue.h"
 #include "procedural/motion_plan.h"
 #include "test_paths.h"
 
@@ -38,5 +39,13 @@ struct Drawing {
   // Largest displacement from frame 0 of the points of each scene path over `plan`'s frames.
   std::vector<double> travel(const MotionPlan& plan, int F = 13) const { return path_travel(scene, animate_plan(scene, rig, plan, F), F); }
 };
+
+// eye_tail.svg, a four-legged animal whose eye on its snout at the left shows it faces left,
+// with that facing read (apply_eye_cue): the travel, turn and gait tests' animal.
+inline Drawing eye_tail_animal() {
+  Drawing d("eye_tail.svg");
+  apply_eye_cue(d.rig, d.scene, d.scene);
+  return d;
+}
 
 }  // namespace svgm::test

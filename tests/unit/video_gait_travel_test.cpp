@@ -15,6 +15,7 @@
 #include "motion_drawing.h"
 using namespace svgm;
 using svgm::test::Drawing;
+using svgm::test::eye_tail_animal;
 
 namespace {
 
@@ -31,8 +32,7 @@ std::vector<int> slide_ways(const MotionPlan& plan) {
 TEST_SUITE("video") {
 
 TEST_CASE("gait travel: an animal facing left (its eye) walks and crawls to the left with no direction said") {
-  Drawing d("eye_tail.svg");  // a four-legged animal, its eye on the snout at the left
-  apply_eye_cue(d.rig, d.scene, d.scene);
+  Drawing d = eye_tail_animal();  // a four-legged animal, its eye on the snout at the left
   REQUIRE(d.rig.eye_side == -1);
   for (const char* prompt : {"the animal walks", "the dog trots", "the caterpillar crawls"}) {
     CAPTURE(prompt);
@@ -57,8 +57,7 @@ TEST_CASE("gait travel: an animal facing left (its eye) walks and crawls to the 
 }
 
 TEST_CASE("gait travel: a direction said, 'on the spot', the striding legs named or a flight keep the old plan") {
-  Drawing d("eye_tail.svg");
-  apply_eye_cue(d.rig, d.scene, d.scene);
+  Drawing d = eye_tail_animal();
   CHECK(slide_ways(plan_from_prompt(parse_prompt("the animal walks to the right"), d.rig, 1)) == std::vector<int>{1});
   CHECK(slide_ways(plan_from_prompt(parse_prompt("the animal walks on the spot"), d.rig, 1)).empty());
   CHECK(slide_ways(plan_from_prompt(parse_prompt("the animal runs on the spot, legs striding"), d.rig, 1)).empty());
@@ -69,8 +68,7 @@ TEST_CASE("gait travel: a direction said, 'on the spot', the striding legs named
 }
 
 TEST_CASE("gait travel: an animal filling its canvas, its travel held there, steps visibly on its body") {
-  Drawing d("eye_tail.svg");  // 8 units of room each side of a 204-unit figure
-  apply_eye_cue(d.rig, d.scene, d.scene);
+  Drawing d = eye_tail_animal();  // 8 units of room each side of a 204-unit figure
   MotionPlan plan = plan_from_prompt(parse_prompt("the animal walks"), d.rig, 1);
   const int F = 25;
   fit_plan(d.scene, d.rig, plan, F, 9);

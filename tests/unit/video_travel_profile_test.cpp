@@ -14,6 +14,7 @@
 #include "motion_drawing.h"
 using namespace svgm;
 using svgm::test::Drawing;
+using svgm::test::eye_tail_animal;
 
 namespace {
 
@@ -53,8 +54,7 @@ TEST_CASE("travel profile: forward at a steady pace two thirds of the loop, then
 }
 
 TEST_CASE("travel: an animal that walks with no direction goes its way farthest a third of the loop in, a visible distance") {
-  Drawing d("eye_tail.svg");  // a four-legged animal, its eye on the snout at the left
-  apply_eye_cue(d.rig, d.scene, d.scene);
+  Drawing d = eye_tail_animal();  // a four-legged animal, its eye on the snout at the left
   REQUIRE(d.rig.eye_side == -1);
   const MotionPlan plan = plan_from_prompt(parse_prompt("the animal walks"), d.rig, 1);
   const int F = 25;  // t = f / 24: frame 8 is a third of the loop in
@@ -71,8 +71,7 @@ TEST_CASE("travel: an animal that walks with no direction goes its way farthest 
 }
 
 TEST_CASE("travel: a caterpillar that crawls, told or not where, stretches ahead of its planted rear and gathers behind its planted front") {
-  Drawing d("eye_tail.svg");
-  apply_eye_cue(d.rig, d.scene, d.scene);
+  Drawing d = eye_tail_animal();
   for (const char* prompt : {"the caterpillar crawls", "the caterpillar crawls slowly to the left"}) {
     CAPTURE(prompt);
     const MotionPlan plan = plan_from_prompt(parse_prompt(prompt), d.rig, 1);
@@ -97,8 +96,7 @@ TEST_CASE("travel: a caterpillar that crawls, told or not where, stretches ahead
 }
 
 TEST_CASE("travel: a crawl fitted to a canvas it fills keeps its ends planted in both steps, at every frame") {
-  Drawing d("eye_tail.svg");  // 8 units of room each side of a 204-unit figure: the canvas cuts the travel
-  apply_eye_cue(d.rig, d.scene, d.scene);
+  Drawing d = eye_tail_animal();  // 8 units of room each side of a 204-unit figure: the canvas cuts the travel
   MotionPlan plan = plan_from_prompt(parse_prompt("the caterpillar crawls"), d.rig, 1);
   const int F = 25;  // t = f / 24
   fit_plan(d.scene, d.rig, plan, F, 9);
@@ -119,8 +117,7 @@ TEST_CASE("travel: a crawl fitted to a canvas it fills keeps its ends planted in
 }
 
 TEST_CASE("travel: a crawl's own words are whole words ('creepy' or 'crawlspace' send nothing crawling)") {
-  Drawing d("eye_tail.svg");
-  apply_eye_cue(d.rig, d.scene, d.scene);
+  Drawing d = eye_tail_animal();
   auto inches = [&](const char* prompt) {
     const MotionPlan plan = plan_from_prompt(parse_prompt(prompt), d.rig, 1);
     return std::any_of(plan.actions.begin(), plan.actions.end(), [](const PlannedAction& a) { return a.inches; });

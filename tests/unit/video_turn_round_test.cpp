@@ -17,6 +17,7 @@
 #include "motion_drawing.h"
 using namespace svgm;
 using svgm::test::Drawing;
+using svgm::test::eye_tail_animal;
 
 namespace {
 
@@ -75,8 +76,7 @@ TEST_CASE("turn round: at rest at both ends, mirrored going out, facing its own 
 }
 
 TEST_CASE("turn round: an animal facing left told to walk right turns round; told left, untold or facing unknown, it does not") {
-  Drawing d("eye_tail.svg");  // a four-legged animal, its eye on the snout at the left
-  apply_eye_cue(d.rig, d.scene, d.scene);
+  Drawing d = eye_tail_animal();  // a four-legged animal, its eye on the snout at the left
   REQUIRE(d.rig.eye_side == -1);
   for (const char* prompt : {"the animal walks to the right", "the dog trots off to the right", "the fish swims to the right"}) {
     CAPTURE(prompt);
@@ -96,8 +96,7 @@ TEST_CASE("turn round: an animal facing left told to walk right turns round; tol
 }
 
 TEST_CASE("turn round: the animal's eye goes to its right side going out, back to its left coming home, at rest at the loop's ends") {
-  Drawing d("eye_tail.svg");
-  apply_eye_cue(d.rig, d.scene, d.scene);
+  Drawing d = eye_tail_animal();
   MotionPlan plan = plan_from_prompt(parse_prompt("the animal walks to the right"), d.rig, 1);
   const int F = 49;  // t = f / 48
   fit_plan(d.scene, d.rig, plan, F, 15);
