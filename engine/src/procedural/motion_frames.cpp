@@ -736,8 +736,9 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         if (a.primitive == Primitive::Spin) spins[a.parts[i]] = 1;
       }
     }
-    whole = turned_round(plan, rig, t) * whole;
-    for (Affine& w : whole_of) w = turned_round(plan, rig, t) * w;
+    const Affine turned = turned_round(plan, rig, t);
+    whole = turned * whole;
+    for (Affine& w : whole_of) w = turned * w;
     const std::vector<Affine> world = world_transforms(rig, local, root_turn, spin, planted, loads);
     const std::vector<std::vector<Vec2>> bent = solve_meshes(mesh, plan, t, f, folds);
     const TossFrame toss = toss_frame(scene, plan, t);
