@@ -137,13 +137,15 @@ std::vector<RigBox> piece_boxes(const Rig& rig, const MotionPlan& plan, std::vec
 }
 
 // The whole figure turning round to go (PlannedAction::turns_round) at t, with its travel: the
-// outermost motion of the whole figure, so its bob, rock and bounce are its own, mirrored with it.
-Affine turned_round(const MotionPlan& plan, const Rig& rig, double t) {
+// outermost motion of the whole figure and of each of its pieces (made once a frame), so its bob,
+// rock and bounce are its own, mirrored with it.
+void turn_round(const MotionPlan& plan, const Rig& rig, double t, Affine& whole, std::vector<Affine>& whole_of) {
   const double W = std::max(rig.figure.w(), 1e-9), H = std::max(rig.figure.h(), 1e-9);
   Affine m;
   for (const PlannedAction& a : plan.actions)
     if (a.parts.empty() && a.turns_round) m = rigid(a, plan.amplitude(a), 1, 0, t, rig.figure, rig.figure.centre(), W, H) * m;
-  return m;
+  whole = m * whole;
+  for (Affine& w : whole_of) w = m * w;
 }
 
 // A rolling wheel's turn at t (PlannedAction::rolls), in degrees: the distance the figure's
@@ -719,7 +721,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         PlannedAction shallower = a;
         shallower.scale = a.scale * plan.scale;
         whole = rigid(shallower, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
-      } else if (a.parts.empty() && !a.turns_round) {  // (turning round: turned_round, after)
+      } else if (a.parts.empty() && !a.turns_round) {  // (turning round: turn_round, after)
         whole = compose_whole(whole, rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H), a);
         for (size_t k = 0; k < whole_of.size(); ++k) whole_of[k] = compose_whole(whole_of[k], piece_motion(a, amp, k, t, piece_box[k], rig.figure, W, H), a);
       }
@@ -736,9 +738,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         if (a.primitive == Primitive::Spin) spins[a.parts[i]] = 1;
       }
     }
-    const Affine turned = turned_round(plan, rig, t);
-    whole = turned * whole;
-    for (Affine& w : whole_of) w = turned * w;
+    turn_round(plan, rig, t, whole, whole_of);
     const std::vector<Affine> world = world_transforms(rig, local, root_turn, spin, planted, loads);
     const std::vector<std::vector<Vec2>> bent = solve_meshes(mesh, plan, t, f, folds);
     const TossFrame toss = toss_frame(scene, plan, t);
