@@ -375,6 +375,7 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
     // A known part noun is a noun even where its word could be a verb ("drops", "hands").
     if (const PartNoun* n = noun_for_word(part_word)) {
       read_part_noun(part_word, *n, after_noun_word, is_possessive(before2), after_prep, preposition, c, modifier_noun, out);
+      if (!c.nouns.empty() && c.nouns.back().word == part_word) c.nouns.back().owned = is_possessive(before) || is_possessive(before2);
       prev_was_noun = true;
       continue;
     }
