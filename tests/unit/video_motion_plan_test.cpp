@@ -425,6 +425,26 @@ TEST_CASE("a prompt with no motion word sways gently, naming the words it did no
   CHECK(j["plan"][0]["direction"].get<std::string>().rfind("side to side, ", 0) == 0);
 }
 
+TEST_CASE("a part said of itself that the drawing has none of is the drawing: 'the face yawns' moves the whole face") {
+  const Fixture fx("plain_face.svg");
+  // The face is the drawing: the yawn (a breath, lexicon anchors) swells it all; the head's nod
+  // turns it all. Before, the pulse was left out for want of a head and the figure swayed.
+  for (const char* prompt : {"the face yawns", "the head nods"}) {
+    CAPTURE(prompt);
+    const MotionPlan plan = fx.plan(prompt);
+    REQUIRE_FALSE(plan.actions.empty());
+    CHECK(plan.actions[0].verb == (std::string(prompt) == "the face yawns" ? "pulse" : "nod"));
+    CHECK(plan.actions[0].target == Target::Whole);
+    CHECK(plan.actions[0].primitive != Primitive::Sway);
+    CHECK(plan.warnings.empty());
+  }
+  // A figure that has the part moves the part ("the head nods" on a figure with a head).
+  const Fixture figure("stick_figure.svg");
+  const MotionPlan nod = figure.plan("the head nods");
+  REQUIRE_FALSE(nod.actions.empty());
+  CHECK(nod.actions[0].target == Target::Head);
+}
+
 TEST_CASE("the report names the parts, the root and the plan with amplitudes and reasons") {
   const Fixture fx("bird.svg");
   const MotionPlan plan = fx.plan("a bird flapping its wings gently");

@@ -182,6 +182,13 @@ void Lexicon::claim_parts() {
 }
 
 void Lexicon::place_anchors() {
+  for (const VerbSenseAnchor& a : verb_sense_anchors()) {
+    const std::vector<uint32_t> senses = db_->senses(a.lemma, Pos::Verb);
+    const Verb* v = vocabulary_verb(a.motion);
+    if (!v || a.sense < 1 || static_cast<size_t>(a.sense) > senses.size()) continue;
+    auto& claims = verb_claims_[senses[a.sense - 1]];
+    if (std::none_of(claims.begin(), claims.end(), [&](const VerbClaim& c) { return c.verb == v; })) claims.push_back({v, a.lemma});
+  }
   for (const VerbSense& a : sound_anchors()) {
     const std::vector<uint32_t> senses = db_->senses(a.lemma, Pos::Verb);
     if (a.sense >= 1 && static_cast<size_t>(a.sense) <= senses.size()) sound_roots_.push_back(senses[a.sense - 1]);

@@ -97,12 +97,29 @@ const std::vector<NounAnchor> kNounAnchors = {
 // Making a noise: WordNet's "sound, go" (make a certain noise: chug, rumble, drone, hum 2, buzz),
 // "noise, make noise, resound" (clang, clatter) and "utter, emit, let out" (crow, bark, roar).
 const std::vector<VerbSense> kSoundAnchors = {{"sound", 2}, {"noise", 1}, {"utter", 2}};
+
+// The body's doings, drawn as what a viewer sees the body do.
+const std::vector<VerbSenseAnchor> kVerbSenseAnchors = {
+  // Laughing shakes the body (giggle, chuckle, guffaw, snicker: all kinds of laugh 1).
+  {"laugh", 1, "shake"},
+  // Breathing swells and settles the chest (yawn, sigh, snore, inhale, exhale, wheeze).
+  {"breathe", 1, "pulse"},
+  // Weeping heaves it (sob, bawl, wail, whimper: kinds of cry 2, "cry, weep").
+  {"cry", 2, "pulse"},
+  // A shrug is WordNet's gesture; drawn, both arms lift from the shoulders and fall.
+  {"shrug", 1, "lift"},
+  // Melting is a change of state (no motion above it); drawn, the thing slumps down and spreads:
+  // melt 2 "dissolve, thaw, unfreeze" and melt 3 "melt, run, melt down" (melt 1 is to fade).
+  {"melt", 2, "sit"},
+  {"melt", 3, "sit"},
+};
 // clang-format on
 
 }  // namespace
 
 const std::vector<VerbAnchor>& verb_anchors() { return kVerbAnchors; }
 const std::vector<VerbSense>& sound_anchors() { return kSoundAnchors; }
+const std::vector<VerbSenseAnchor>& verb_sense_anchors() { return kVerbSenseAnchors; }
 const std::vector<NounAnchor>& noun_anchors() { return kNounAnchors; }
 
 const char* class_motion(FigureClass c) {

@@ -36,6 +36,18 @@ struct VerbSense {
 };
 const std::vector<VerbSense>& sound_anchors();
 
+// A verb synset that every verb beneath it draws as one vocabulary motion. Where a whole family
+// of verbs has no motion above it in WordNet (the body's doings: laughing, breathing, weeping
+// are filed under verb.body and rise to "express emotion" or to nothing), claiming the family's
+// root places every kind of it: "giggles", "chuckles" and "guffaws" under laugh, "yawns",
+// "sighs" and "snores" under breathe. A word's own claims nearer to it still win (lexicon.cpp).
+struct VerbSenseAnchor {
+  const char* lemma;
+  int sense;
+  const char* motion;  // a word the vocabulary's stems match
+};
+const std::vector<VerbSenseAnchor>& verb_sense_anchors();
+
 // The motion word of each class (default_verb).
 const char* class_motion(FigureClass c);
 

@@ -11,6 +11,7 @@
 
 #include "svgmotion/error.h"
 #include "procedural/carried_flight.h"
+#include "procedural/clause_target.h"
 #include "procedural/figure_pieces.h"
 #include "procedural/invisible_spin.h"
 #include "procedural/gait_travel.h"
@@ -535,17 +536,7 @@ std::string MotionPlan::summary() const {
   return s;
 }
 
-// Whether the noun names a part the locator finds on the figure (part_locator.h), unless the
-// document names a part so.
-bool locatable_noun(const PromptNoun& n, const Rig& rig, FigureClass figure) {
-  const PartShape shape = part_shape_of(n.word, figure);
-  std::string ignore;
-  return shape != PartShape::None && rig.root >= 0 && parts_for(rig, Target::Named, n.word, &ignore).empty() &&
-         !locate_part(rig, shape).lobes.empty();
-}
 
-// A noun naming a kind of figure ("the grasshopper": an insect) was understood: it chose the
-// figure's class, though no part is named so.
 // Where the prompt sends a figure that gets somewhere by itself ("the dog runs to the right", "the
 // bird flies left"), or a gait's way when it says none (gait_travel.h), and its verb has no travel
 // of its own: the whole figure slides that way and back, as a vehicle drives (kTravelSlide), the
@@ -578,7 +569,6 @@ void travel_where_told(Builder& b, const Clause& c, size_t from, const ParsedPro
     turn_round_to_go(b.rig, b.plan.actions.back());
 }
 
-bool names_figure_kind(const PromptNoun& n) { return n.figure != FigureClass::None && n.figure != FigureClass::Object && n.figure != FigureClass::Scene; }
 
 namespace {
 
@@ -622,53 +612,8 @@ MotionPlan plan_from_prompt(const ParsedPrompt& said, const Rig& rig, uint32_t s
     for (const auto& n : c.nouns)
       names_limbs = names_limbs || (!n.object_of_preposition && !n.own_predicate && (is_limb_target(n.target) || locatable(n)));
   std::vector<std::string> accents_left_out;
-  // The clause's targets: known part nouns, and other words that name a part of the drawing.
-  struct ClauseTarget {
-    Target target = Target::Whole;
-    std::vector<int> named;
-    std::string word;
-    bool plural = false, have = false;
-    LocatedPart located;  // a part the rig has none for, found on the figure (lobes empty: none)
-  };
   auto target_of = [&](const Clause& c, std::vector<std::string>* unknown_words) {
-    ClauseTarget ct;
-    for (const auto& n : c.nouns) {
-      std::vector<int> hits;
-      // A part of a kind the locator knows, unless the document names a part so: found on the
-      // figure by its kind's prior (part_locator.h).
-      if (!ct.have && (!n.object_of_preposition || n.preposition == "of") && !n.own_predicate && locatable(n)) {  // "a cloud of smoke"
-        ct.have = true;
-        ct.target = Target::Named;
-        ct.word = n.word;
-        ct.plural = n.plural;
-        ct.located = locate_part(rig, part_shape_of(n.word, b.figure));
-        continue;
-      }
-      if (n.target == Target::Named) {
-        std::string ignore;
-        hits = parts_for(rig, Target::Named, n.word, &ignore);
-        if (hits.empty()) {
-          // The ground's noun was understood: it is where the figure moves. So was the figure's
-          // own noun, the subject naming a kind of figure ("the tiger": a quadruped): it names
-          // who moves, not a part (the report listed "tiger" as not understood).
-          const bool figure = names_figure_kind(n) && n.figure == c.figure && !n.after_verb && !n.object_of_preposition;
-          if (unknown_words && !figure && b.plan.ground.substr(b.plan.ground.rfind(' ') + 1) != n.word) unknown_words->push_back(n.word);
-          continue;
-        }
-        // The verb's object naming only the backdrop ("rides the waves") is where the figure
-        // moves, not what moves: the backdrop moves when it is the subject ("the waves roll").
-        bool backdrop = true;
-        for (int h : hits) backdrop = backdrop && rig.parts[h].role == Role::Background;
-        if (backdrop && n.after_verb) continue;
-      }
-      if (ct.have || n.object_of_preposition || n.own_predicate) continue;
-      ct.have = true;
-      ct.target = n.target;
-      ct.named = hits;
-      ct.word = n.word;
-      ct.plural = n.plural;
-    }
-    return ct;
+    return clause_target(c, prompt, rig, b.figure, b.plan.ground, unknown_words);
   };
   // Verbs the prompt aims at a part in some clause ("his upper body sways"): the same verb with
   // no part elsewhere ("performs with a rhythmic sway") says that motion again, and on the whole

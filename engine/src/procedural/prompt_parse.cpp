@@ -251,12 +251,13 @@ bool read_thing_compound(const std::string& w, bool plural, Clause& c, std::vect
 
 // A part noun the vocabulary knows, `w` as written: a noun of the clause, or the head of a
 // compound naming a thing the verb acts on ("the rock face"; not after a possessive: "his robot
-// arm"). Closes a prepositional phrase it ends.
-void read_part_noun(const std::string& w, const PartNoun& n, bool after_noun_word, bool after_possessive, bool& after_prep,
+// arm"). Closes a prepositional phrase it ends. `after_possessive`: two words back ("his robot
+// arm", "its left wing"); `owned`: one ("its head").
+void read_part_noun(const std::string& w, const PartNoun& n, bool after_noun_word, bool owned, bool after_possessive, bool& after_prep,
                     const std::string& preposition, Clause& c, std::vector<bool>& modifier_noun, ParsedPrompt& out) {
   const bool plural = (w.size() > n.stem.size() && w.back() == 's') || w == "feet" || w == "leaves";
   if (after_noun_word && !after_possessive && read_thing_compound(w, plural, c, modifier_noun, out)) return;
-  c.nouns.push_back({w, n.target, plural, after_prep, !c.verbs.empty()});
+  c.nouns.push_back({w, n.target, plural, after_prep, !c.verbs.empty(), owned || after_possessive});
   if (after_prep) c.nouns.back().preposition = preposition;
   if (after_noun_word && !modifier_noun.empty()) modifier_noun.back() = true;
   modifier_noun.push_back(false);
@@ -374,7 +375,7 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
     const std::string part_word = read_qualified_part(lexicon, w, c.mods, out);
     // A known part noun is a noun even where its word could be a verb ("drops", "hands").
     if (const PartNoun* n = noun_for_word(part_word)) {
-      read_part_noun(part_word, *n, after_noun_word, is_possessive(before2), after_prep, preposition, c, modifier_noun, out);
+      read_part_noun(part_word, *n, after_noun_word, is_possessive(before), is_possessive(before2), after_prep, preposition, c, modifier_noun, out);
       prev_was_noun = true;
       continue;
     }

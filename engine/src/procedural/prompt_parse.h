@@ -38,6 +38,7 @@ struct PromptNoun {
   bool plural = false;
   bool object_of_preposition = false;  // "on the umbrella": not a target
   bool after_verb = false;             // "rides the waves": the verb's object
+  bool owned = false;                  // after a possessive ("its head", "his left arm")
   bool own_predicate = false;          // "its hood slightly flared": said to do something the
                                        // vocabulary does not know, so not another verb's target
   FigureClass figure = FigureClass::None;  // the lexicon's class of the thing it names
