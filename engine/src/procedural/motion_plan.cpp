@@ -553,7 +553,7 @@ bool locatable_noun(const PromptNoun& n, const Rig& rig, FigureClass figure) {
 void travel_where_told(Builder& b, const Clause& c, size_t from, const ParsedPrompt& prompt) {
   const Verb* mover = nullptr;
   for (const Verb* v : c.verbs)
-    if (!mover && (locomotes(*v) || v->name == "move")) mover = v;
+    if (!mover && (locomotes(*v) || v->name == "move")) mover = legged_crawl(v, c, b.rig);  // a crawl on legs walks
   if (!mover) return;
   // A gait with no direction said goes the way the figure faces (gait_travel.h).
   Modifiers mods = c.mods;
