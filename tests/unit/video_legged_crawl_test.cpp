@@ -70,10 +70,14 @@ TEST_CASE("legged crawl: a legless grub crawls by its steps, a fish's crawl is n
   const PlannedAction* stretch = find_action(plan, Primitive::Stretch, Target::Whole);
   REQUIRE(stretch);
   CHECK(stretch->inches);
-  // A snake's crawl on a drawing with legs stays the creep (its class has none to walk on).
+  // A snake's crawl on a drawing with legs stays the creep (its class has none to walk on), and
+  // so does a caterpillar's (the lexicon's object: its prolegs are no legs to stride on).
   const Drawing bug("six_legged_bug.svg");
-  const MotionPlan snake = plan_from_prompt(parse_prompt("the snake crawls to the right"), bug.rig, 1);
-  CHECK(find_action(snake, Primitive::Swing, Target::Legs) == nullptr);
+  for (const char* prompt : {"the snake crawls to the right", "the caterpillar crawls to the right"}) {
+    CAPTURE(prompt);
+    const MotionPlan creep = plan_from_prompt(parse_prompt(prompt), bug.rig, 1);
+    CHECK(find_action(creep, Primitive::Swing, Target::Legs) == nullptr);
+  }
 }
 
 }  // TEST_SUITE

@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "motion/lexicon.h"
-#include "procedural/gait_travel.h"
 #include "procedural/motion_plan_internal.h"
 
 namespace svgm {
@@ -28,8 +27,9 @@ int walkable_legs(const Rig& rig, std::string* why) {
 }
 
 const Verb* legged_crawl(const Verb* v, const Clause& c, const Rig& rig) {
-  if (!v || v->name != "move" || c.figure == FigureClass::FishOrSnake) return v;
-  if (!says_crawl(c.text) && !is_creature(c.figure)) return v;
+  // Who crawls must be a creature the lexicon knows: a caterpillar (no class: an object) or a
+  // box that "inches along" creeps by its steps whatever its drawing shows below it.
+  if (!v || v->name != "move" || !is_creature(c.figure) || c.figure == FigureClass::FishOrSnake) return v;
   if (walkable_legs(rig, nullptr) == 0) return v;
   const Verb* walk = find_verb_by_name("walk");
   return walk ? walk : v;

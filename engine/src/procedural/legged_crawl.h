@@ -7,7 +7,8 @@
 // silhouette's skeleton, skeleton_lobes.h) is the walk's: legs in turn, the body going steadily
 // the way it goes (motion_plan.cpp's travel_where_told). A legless figure, a fish or a snake
 // (its crawl is a slither's creep), a figure whose only "legs" are stand-ins (parts_for's
-// fallback: a caterpillar's body bent at its lower part) crawl as before.
+// fallback: a body bent at its lower part), and a crawler the lexicon files as no creature (a
+// caterpillar, an object: its prolegs are no legs to stride on) crawl as before.
 #pragma once
 
 #include <string>
@@ -23,9 +24,8 @@ namespace svgm {
 // else its silhouette's leg limbs; 0 when fewer than two. `why` gets "2 legs drawn as parts".
 int walkable_legs(const Rig& rig, std::string* why);
 
-// The verb `v` of clause `c` becomes: the walk when it is the generic move said as a crawl (a
-// crawl's own word, or any move of a creature that is not a fish or a snake) of a figure with
-// legs to walk on; else `v`.
+// The verb `v` of clause `c` becomes: the walk when it is the generic move (a crawl, a creep,
+// a move) said of a creature that is not a fish or a snake, drawn with legs to walk on; else `v`.
 const Verb* legged_crawl(const Verb* v, const Clause& c, const Rig& rig);
 
 }  // namespace svgm
