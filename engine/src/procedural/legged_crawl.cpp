@@ -14,7 +14,10 @@ int walkable_legs(const Rig& rig, std::string* why) {
   // Parts of the legs' role, with no stand-in (a note says parts_for fell back to other parts).
   std::string fallback;
   const std::vector<int> parts = motion_plan_internal::parts_for(rig, Target::Legs, "", &fallback);
-  if (fallback.empty() && parts.size() >= 2) {
+  // They are what the walk moves (Builder::add): one (a cricket's hind leg taken for its side
+  // limb) is no gait, whatever the silhouette shows.
+  if (fallback.empty() && !parts.empty()) {
+    if (parts.size() < 2) return 0;
     if (why) *why = std::to_string(parts.size()) + " legs drawn as parts";
     return static_cast<int>(parts.size());
   }
