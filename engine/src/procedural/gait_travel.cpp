@@ -101,6 +101,12 @@ void turn_round_to_go(const Rig& rig, PlannedAction& a) {
   a.why += "; " + why;
 }
 
+namespace {
+
+// Whether `text` says a crawl's own word ("crawls", "creeps", "crept", "inches"): said of any
+// figure, a creature's gait (a caterpillar is no class the lexicon knows: an object). Whole words
+// only, a stem and its endings: by prefix, "a creepy doll moves" and "crawlspace" or "inchoate"
+// sent a figure crawling.
 bool says_crawl(const std::string& text) {
   std::istringstream in(text);
   for (std::string w; in >> w;) {
@@ -115,6 +121,8 @@ bool says_crawl(const std::string& text) {
   }
   return false;
 }
+
+}  // namespace
 
 void crawl_in_steps(MotionPlan& plan, size_t from, size_t slide, FigureClass figure) {
   PlannedAction& s = plan.actions[slide];

@@ -65,12 +65,6 @@ bool stays_put(const std::string& text);
 // units each way and read as rocking.
 inline constexpr double kTravelReach = 0.15;
 
-// Whether `text` says a crawl's own word ("crawls", "creeps", "crept", "inches"): said of any
-// figure, a creature's gait (a caterpillar is no class the lexicon knows: an object). Whole words
-// only, a stem and its endings: by prefix, "a creepy doll moves" and "crawlspace" or "inchoate"
-// sent a figure crawling.
-bool says_crawl(const std::string& text);
-
 // A crawl sent somewhere ("move" said of a creature, or in a crawl's own words: "crawls",
 // "creeps", "inches", whatever the figure): the whole figure's stretch of the clause (actions
 // from `from`) and its slide `slide` go by the crawl's steps (PlannedAction::inches,
