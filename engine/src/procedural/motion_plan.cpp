@@ -544,7 +544,7 @@ std::string MotionPlan::summary() const {
 void travel_where_told(Builder& b, const Clause& c, size_t from, const ParsedPrompt& prompt) {
   const Verb* mover = nullptr;
   for (const Verb* v : c.verbs)
-    if (!mover && (locomotes(*v) || v->name == "move")) mover = v;
+    if (!mover && (locomotes(*v) || v->name == "move")) mover = legged_crawl(v, c, b.rig);  // a crawl on legs walks
   if (!mover) return;
   // A gait with no direction said goes the way the figure faces (gait_travel.h).
   Modifiers mods = c.mods;

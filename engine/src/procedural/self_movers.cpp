@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "procedural/gait_travel.h"
+#include "procedural/legged_crawl.h"
 #include "procedural/rotor_blades.h"
 #include "procedural/toss_and_stroke.h"
 
@@ -43,7 +44,7 @@ std::vector<const Verb*> clause_verbs(const Clause& c, const Rig& rig, const Loc
   const Verb* stroke = stroke_reading(c);
   std::vector<const Verb*> out;
   for (const Verb* v : c.verbs) {
-    const Verb* by = juggle && v->name == "throw" ? juggle : stroke && (v->name == "swim" || v->name == "move") ? stroke : wheeled_travel(flame_verb(v, c, rig, located), c);
+    const Verb* by = juggle && v->name == "throw" ? juggle : stroke && (v->name == "swim" || v->name == "move") ? stroke : legged_crawl(wheeled_travel(flame_verb(v, c, rig, located), c), c, rig);
     if (std::find(out.begin(), out.end(), by) == out.end()) out.push_back(by);
   }
   if (juggle && std::find(out.begin(), out.end(), juggle) == out.end()) out.insert(out.begin(), juggle);

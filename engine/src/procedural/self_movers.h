@@ -7,6 +7,7 @@
 #pragma once
 
 #include "motion/motion_verbs.h"
+#include "procedural/legged_crawl.h"
 #include "procedural/part_locator.h"
 #include "procedural/prompt_parse.h"
 
@@ -25,7 +26,8 @@ bool twinkle_of_fire(const Clause& c, bool lights);
 // other verb is itself.
 const Verb* flame_verb(const Verb* v, const Clause& c, const Rig& rig, const LocatedPart* located);
 
-// The clause's verbs, each as flame_verb reads it, and each of a figure on wheels as wheeled_travel does.
+// The clause's verbs, each as flame_verb reads it, each of a figure on wheels as wheeled_travel
+// does, and a crawl on legs as legged_crawl does.
 std::vector<const Verb*> clause_verbs(const Clause& c, const Rig& rig, const LocatedPart* located);
 
 // A figure on wheels (the clause's class is wheeled: a car, a tractor, a bus) gets somewhere by
