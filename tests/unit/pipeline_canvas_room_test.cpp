@@ -6,6 +6,7 @@
 
 #include "error_of.h"
 #include "pipeline/canvas_room.h"
+#include "procedural/travel_words.h"
 #include "scene/backdrop.h"
 #include "svgmotion/svg_reader.h"
 
@@ -82,7 +83,7 @@ TEST_CASE("canvas room: a figure told a way gets the turning figure's room, a fi
   CHECK(auto_room(wide, "the bullet train glides off to the left", nullptr, 0) == kTurnRoom);
   CHECK(auto_room(wide, "the lorry drives", nullptr, 0) == 0);  // no way told, no gait: stays
   CHECK(auto_room(wide, "the dog walks", nullptr, 0) == kAutoRoom);
-  CHECK(auto_room(wide, "the jogger runs to the right on the spot", nullptr, 0) == 0);
+  CHECK_FALSE(sends_figure_one_way(parse_prompt("the jogger runs to the right on the spot")));  // kept where it is
   CHECK(kTurnRoom > kAutoRoom);
   // A figure as wide as its canvas then has kTurnRoom of its width on each side: its trip there
   // is at least 20 % of its width.
