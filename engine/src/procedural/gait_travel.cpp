@@ -102,6 +102,13 @@ void turn_round_to_go(const Rig& rig, FigureClass figure, PlannedAction& a) {
   a.why += "; " + why;
 }
 
+bool leave_out_turns(MotionPlan& plan) {
+  bool any = false;
+  for (PlannedAction& a : plan.actions)
+    if (a.turns_round) a.turns_round = false, a.why += "; its turn round left out (the pixel ranker saw a colour vanish edge on)", any = true;
+  return any;
+}
+
 namespace {
 
 // Whether `text` says a crawl's own word ("crawls", "creeps", "crept", "inches"): said of any

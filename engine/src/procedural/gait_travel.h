@@ -58,6 +58,11 @@ bool goes_against_facing(const Rig& rig, FigureClass figure, int travel, std::st
 // why saying so.
 void turn_round_to_go(const Rig& rig, FigureClass figure, PlannedAction& a);
 
+// Leaves out every turn round of `plan` (PlannedAction::turns_round): the figure goes where it
+// goes facing its own way. Whether there was one. For a candidate the pixel ranker flags when
+// the turn puts it edge on (video_procedural.cpp's self check).
+bool leave_out_turns(MotionPlan& plan);
+
 // "on the spot", "in place", "in one spot": words that keep the figure where it is.
 bool stays_put(const std::string& text);
 
