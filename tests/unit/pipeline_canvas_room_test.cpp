@@ -6,6 +6,7 @@
 
 #include "error_of.h"
 #include "pipeline/canvas_room.h"
+#include "procedural/travel_words.h"
 #include "scene/backdrop.h"
 #include "svgmotion/svg_reader.h"
 
@@ -46,9 +47,9 @@ TEST_CASE("canvas room: a figure across 85 % of its canvas gets room when the pr
   const Scene wide = read(R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 50">
     <rect x="5" y="15" width="85" height="20" fill="red"/></svg>)");
   char why[160] = "";
-  CHECK(auto_room(wide, "the zebra trots to the right", why, sizeof why) == kAutoRoom);
+  CHECK(auto_room(wide, "the zebra trots across", why, sizeof why) == kAutoRoom);
   CHECK(std::string(why) == "the prompt sends the figure across and it spans 85 % of its canvas's width");
-  CHECK(auto_room(wide, "the lizard crawls to the left", nullptr, 0) == kAutoRoom);
+  CHECK(auto_room(wide, "the lizard crawls to the left", nullptr, 0) == kTurnRoom);  // told a way: it may turn round
   CHECK(auto_room(wide, "the dog walks", nullptr, 0) == kAutoRoom);  // untold: the way it faces
   // Kept where it is, only its limbs or tail named, no gait, or sent up: no room across.
   CHECK(auto_room(wide, "the jogger runs on the spot", nullptr, 0) == 0);
@@ -57,7 +58,7 @@ TEST_CASE("canvas room: a figure across 85 % of its canvas gets room when the pr
   CHECK(auto_room(wide, "the ladybird crawls up", nullptr, 0) == 0);
   CHECK(auto_room(wide, "", nullptr, 0) == 0);
   CHECK(auto_room(wide, "the cyclist pedals hard", nullptr, 0) == 0);  // untold, a rider stays: no gait
-  CHECK(auto_room(wide, "the cyclist pedals to the left", nullptr, 0) == kAutoRoom);
+  CHECK(auto_room(wide, "the cyclist pedals to the left", nullptr, 0) == kTurnRoom);
   // At 60 % of the width it has room enough: kTravelReach of its width each way fits.
   const Scene narrow = read(R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 50">
     <rect x="20" y="15" width="60" height="20" fill="red"/></svg>)");
@@ -66,6 +67,27 @@ TEST_CASE("canvas room: a figure across 85 % of its canvas gets room when the pr
   const Scene full = read(R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 50">
     <rect x="2" y="15" width="96" height="20" fill="red"/></svg>)");
   CHECK(auto_room(full, "the zebra wags its tail", nullptr, 0) == kAutoRoom);
+}
+
+TEST_CASE("canvas room: a figure told a way gets the turning figure's room, a fifth of its width on each side") {
+  // Told a way, a figure drawn facing the other way turns round and its whole trip (twice
+  // kTravelReach of its width) lies on the told side: kTurnRoom, more than kAutoRoom, for a
+  // gait, a drive or a glide told a way; as before for a figure sent across with no way said,
+  // kept on the spot, or with limbs named.
+  const Scene wide = read(R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 50">
+    <rect x="5" y="15" width="85" height="20" fill="red"/></svg>)");
+  char why[160] = "";
+  CHECK(auto_room(wide, "the zebra trots to the right", why, sizeof why) == kTurnRoom);
+  CHECK(std::string(why) == "the prompt tells the figure a way to go and it spans 85 % of its canvas's width");
+  CHECK(auto_room(wide, "the lorry drives away to the right", nullptr, 0) == kTurnRoom);
+  CHECK(auto_room(wide, "the bullet train glides off to the left", nullptr, 0) == kTurnRoom);
+  CHECK(auto_room(wide, "the lorry drives", nullptr, 0) == 0);  // no way told, no gait: stays
+  CHECK(auto_room(wide, "the dog walks", nullptr, 0) == kAutoRoom);
+  CHECK_FALSE(sends_figure_one_way(parse_prompt("the jogger runs to the right on the spot")));  // kept where it is
+  CHECK(kTurnRoom > kAutoRoom);
+  // A figure as wide as its canvas then has kTurnRoom of its width on each side: its trip there
+  // is at least 20 % of its width.
+  CHECK(kTurnRoom >= 0.2);
 }
 
 TEST_CASE("canvas room: the viewBox grows by the share on each side, width and height by 1 + 2 share, the rest kept") {

@@ -87,9 +87,9 @@ TEST_CASE("turn round: an animal facing left told to walk right turns round; tol
     CHECK(turning_slides(plan_from_prompt(parse_prompt(prompt), d.rig, 1)) == 0);
   }
   std::string why;
-  CHECK(goes_against_facing(d.rig, 1, &why));
+  CHECK(goes_against_facing(d.rig, FigureClass::Quadruped, 1, &why));
   CHECK(why == "it faces left (its eye): it turns round to go right and turns back to come home facing its own way");
-  CHECK_FALSE(goes_against_facing(d.rig, -1, nullptr));
+  CHECK_FALSE(goes_against_facing(d.rig, FigureClass::Quadruped, -1, nullptr));
   // A person seen from the front: no facing known, no turn.
   const Drawing man("stick_figure.svg");
   CHECK(turning_slides(plan_from_prompt(parse_prompt("the man walks to the right"), man.rig, 1)) == 0);

@@ -86,6 +86,10 @@ FigureSpan figure_span(const Scene& scene) {
 double auto_room(const Scene& scene, const std::string& prompt, char* why, size_t size) {
   const FigureSpan span = figure_span(scene);
   if (span.empty) return 0;
+  if (span.x >= kTravelFills && !prompt.empty() && sends_figure_one_way(parse_prompt(prompt))) {
+    if (why) std::snprintf(why, size, "the prompt tells the figure a way to go and it spans %.0f %% of its canvas's width", 100 * span.x);
+    return kTurnRoom;
+  }
   if (std::max(span.x, span.y) >= kFillsCanvas) {
     if (why) std::snprintf(why, size, "the drawing fills %.0f %% of its canvas's %s", 100 * std::max(span.x, span.y), span.x >= span.y ? "width" : "height");
     return kAutoRoom;

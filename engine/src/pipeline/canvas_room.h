@@ -15,7 +15,11 @@
 // sends_figure_across) gets the room already at kTravelFills of the canvas's width: it goes
 // kTravelReach of its width ahead and behind where it stands, and with less room the plan cut
 // the travel to fit (a trotting zebra across 88 % of its canvas went 5 % of its width, at 38 %
-// of its reach, and read as marking time).
+// of its reach, and read as marking time). A figure told a way (travel_words.h's
+// sends_figure_one_way) gets kTurnRoom: drawn facing the other way it turns round and its whole
+// trip, 2 kTravelReach of its width, lies on the told side; at kAutoRoom the camel sent right
+// kept 45 % of it (a tenth of its width, read as marking time). At kTurnRoom a figure as wide
+// as its canvas has a fifth of its width on each side: its trip is at least 20 % of its width.
 #pragma once
 
 #include <string>
@@ -28,6 +32,7 @@ namespace svgm {
 constexpr double kAutoRoom = 0.15;     // of the canvas's size, added on each side
 constexpr double kFillsCanvas = 0.92;  // the figure's share of the canvas's width or height
 constexpr double kTravelFills = 0.75;  // of the canvas's width, for a figure sent across it
+constexpr double kTurnRoom = 0.2;      // of the canvas's size on each side, for a figure told a way
 
 // The figure's extent as shares of the canvas's width and height: the box of every painted
 // path's control points (a stroke's half width added), backdrops left out.
@@ -38,8 +43,9 @@ struct FigureSpan {
 FigureSpan figure_span(const Scene& scene);
 
 // The share of room stages.video.room=auto gives `scene` (its figure's span) for `prompt`:
-// kAutoRoom when the figure fills kFillsCanvas of the canvas, or kTravelFills of its width and the
-// prompt sends it across; else 0. `why` (of `size` chars, may be null) says which.
+// kTurnRoom when the figure spans kTravelFills of the canvas's width and the prompt tells it a
+// way, else kAutoRoom when the figure fills kFillsCanvas of the canvas, or kTravelFills of its
+// width and the prompt sends it across; else 0. `why` (of `size` chars, may be null) says which.
 double auto_room(const Scene& scene, const std::string& prompt, char* why, size_t size);
 
 // `text`: an SVG document; `share` > 0. The same document with the root's viewBox grown by

@@ -57,7 +57,7 @@ int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, s
       if (!n.object_of_preposition && motion_plan_internal::is_limb_target(n.target)) return 0;
   }
   std::string how;
-  const int facing = facing_side(rig, &how);
+  const int facing = facing_side(rig, c.figure, &how);
   if (facing != 0) {
     if (why) *why = std::string("no direction said: the figure faces ") + (facing < 0 ? "left" : "right") + " (" + how + ") and goes that way";
     return facing;
@@ -74,31 +74,39 @@ ParsedPrompt travel_across(const ParsedPrompt& prompt, const Rig& rig) {
   ParsedPrompt out = prompt;
   for (Clause& c : out.clauses)
     if (c.mods.across && c.mods.travel == 0) {
-      const int facing = facing_side(rig, nullptr);
+      const int facing = facing_side(rig, c.figure, nullptr);
       c.mods.travel = facing != 0 ? facing : 1;
     }
   return out;
 }
 
-bool goes_against_facing(const Rig& rig, int travel, std::string* why) {
+bool goes_against_facing(const Rig& rig, FigureClass figure, int travel, std::string* why) {
   if (travel == 0) return false;
   // Only a facing the drawing shows plainly turns it: its eye or its head parts. The skeleton's
   // cues (a head limb ahead of the legs, legs gathered at one end) took a fish's tail for its head
   // (twemoji 1f41f, its fins for legs), and a fish told its own way turned round and swam tail first.
+  // A vehicle's outline (shape_facing.h) is plain too: its low front.
   std::string how;
-  const int facing = facing_side(rig, &how);
-  if (facing == 0 || facing == travel || (how != "its eye" && how != "its head")) return false;
+  const int facing = facing_side(rig, figure, &how);
+  if (facing == 0 || facing == travel || (how != "its eye" && how != "its head" && how.rfind("its shape", 0) != 0)) return false;
   if (why)
     *why = std::string("it faces ") + (facing < 0 ? "left" : "right") + " (" + how + "): it turns round to go " + (travel < 0 ? "left" : "right") +
            " and turns back to come home facing its own way";
   return true;
 }
 
-void turn_round_to_go(const Rig& rig, PlannedAction& a) {
+void turn_round_to_go(const Rig& rig, FigureClass figure, PlannedAction& a) {
   std::string why;
-  if (!a.goes || a.inches || !goes_against_facing(rig, a.travel, &why)) return;
+  if (!a.goes || a.inches || !goes_against_facing(rig, figure, a.travel, &why)) return;
   a.turns_round = true;
   a.why += "; " + why;
+}
+
+bool leave_out_turns(MotionPlan& plan) {
+  bool any = false;
+  for (PlannedAction& a : plan.actions)
+    if (a.turns_round) a.turns_round = false, a.why += "; its turn round left out (the pixel ranker saw a colour vanish edge on)", any = true;
+  return any;
 }
 
 namespace {

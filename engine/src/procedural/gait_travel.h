@@ -45,16 +45,23 @@ int untold_travel(const ParsedPrompt& prompt, const Clause& c, const Rig& rig, s
 ParsedPrompt travel_across(const ParsedPrompt& prompt, const Rig& rig);
 
 // Whether a figure sent `travel` (-1 left, +1 right) goes against the way it faces
-// (limb_qualifiers.h's facing_side, from its drawn eye or head parts only), so it must turn round
-// to go (PlannedAction::turns_round): a zebra drawn facing left, told to trot to the right, went
-// there tail first. Not when its facing is not known that plainly (a person facing the viewer,
-// most vehicles, a facing only the silhouette's skeleton suggests).
+// (limb_qualifiers.h's facing_side for the figure's class `figure`: its drawn eye or head parts,
+// a vehicle's outline), so it must turn round to go (PlannedAction::turns_round): a zebra drawn
+// facing left, told to trot to the right, went there tail first, a lorry boot first. Not when its
+// facing is not known that plainly (a person facing the viewer, a saloon car level at both ends,
+// a facing only the silhouette's skeleton suggests).
 // `why` gets "it faces left (its eye): it turns round to go right and back to come home".
-bool goes_against_facing(const Rig& rig, int travel, std::string* why);
+bool goes_against_facing(const Rig& rig, FigureClass figure, int travel, std::string* why);
 
 // A slide `a` going somewhere steadily (PlannedAction::goes; not a crawl's steps) against the
-// way the figure faces turns round to go (PlannedAction::turns_round), its why saying so.
-void turn_round_to_go(const Rig& rig, PlannedAction& a);
+// way the figure (of class `figure`) faces turns round to go (PlannedAction::turns_round), its
+// why saying so.
+void turn_round_to_go(const Rig& rig, FigureClass figure, PlannedAction& a);
+
+// Leaves out every turn round of `plan` (PlannedAction::turns_round): the figure goes where it
+// goes facing its own way. Whether there was one. For a candidate the pixel ranker flags when
+// the turn puts it edge on (video_procedural.cpp's self check).
+bool leave_out_turns(MotionPlan& plan);
 
 // "on the spot", "in place", "in one spot": words that keep the figure where it is.
 bool stays_put(const std::string& text);

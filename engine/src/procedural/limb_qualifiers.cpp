@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "procedural/shape_facing.h"
+
 namespace svgm {
 
 namespace {
@@ -13,6 +15,9 @@ bool beats_wings_in_flight(const Verb& v) { return v.name == "fly" || v.name == 
 
 // A head part off the figure's middle by less than this share of its width shows no facing.
 constexpr double kHeadOffCentre = 0.1;
+
+// A person's eye shows a facing only this share of the figure's width off its middle.
+constexpr double kPersonEyeOffCentre = 0.15;
 
 // The viewer's side of the figure's middle `x` is on: -1, +1, or 0 on the middle itself.
 int side_of(const Rig& rig, double x) {
@@ -41,10 +46,22 @@ std::string keep_if(const Rig& rig, const Modifiers& mods, size_t n, Keep&& keep
 
 }  // namespace
 
-int facing_side(const Rig& rig, std::string* why) {
+int facing_side(const Rig& rig, FigureClass figure, std::string* why) {
   if (rig.figure.empty()) return 0;
-  // A drawn eye (eye_cue.h): the plainest sign of the head's end.
-  if (rig.eye_side != 0) {
+  // A vehicle's front from its outline (shape_facing.h), else a rider's eye; never its "head"
+  // part (the part above its body: a fire engine's ladder, a lorry's trailer, read as the head,
+  // turned four of the vehicles probed the wrong way) nor its skeleton (no legs, no head limb).
+  if (figure == FigureClass::Wheeled) {
+    if (const int side = shape_facing(rig, figure, why); side != 0) return side;
+    if (rig.eye_side != 0 && why) *why = "its eye";
+    return rig.eye_side;
+  }
+  // A drawn eye (eye_cue.h): the plainest sign of the head's end. A person's only beyond
+  // kPersonEyeOffCentre of the width off the middle: a person drawn from the front with a tool
+  // beside them has one dark dot a little off the middle (the cue's bound was that until a long
+  // tail put a shark's and a dolphin's eye nearer the middle), and a person must stay unturned.
+  const bool eye_off = figure != FigureClass::Biped || std::fabs(rig.eye.x - rig.figure.centre().x) >= kPersonEyeOffCentre * rig.figure.w();
+  if (rig.eye_side != 0 && eye_off) {
     if (why) *why = "its eye";
     return rig.eye_side;
   }

@@ -20,7 +20,10 @@
 namespace svgm {
 
 // The viewer's side the figure faces: -1 left, +1 right, 0 unknown; `why` says how it was found.
-int facing_side(const Rig& rig, std::string* why);
+// With the prompt's figure class `figure`: a vehicle (FigureClass::Wheeled) is read from its
+// outline (shape_facing.h: its low front), else a rider's eye, and by nothing else.
+int facing_side(const Rig& rig, FigureClass figure, std::string* why);
+inline int facing_side(const Rig& rig, std::string* why) { return facing_side(rig, FigureClass::None, why); }
 
 // Keeps the parts (the rig's, by index) or the limbs of the silhouette that `mods.end` and
 // `mods.level` pick; unchanged when neither is set or when none would be left. Returns a note for

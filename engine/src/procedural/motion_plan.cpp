@@ -558,7 +558,7 @@ void travel_where_told(Builder& b, const Clause& c, size_t from, const ParsedPro
       // (told or not: "crawls slowly to the left" crept 4 % of the snail's width).
       a.amp = std::max(a.amp, kTravelSlide.amp), a.direction = a.travel = mods.travel, a.goes = true, a.why += c.mods.travel ? "" : "; " + why;
       crawl_in_steps(b.plan, from, i, c.figure);
-      return turn_round_to_go(b.rig, a);  // a crawl's steps do not turn round (gait_travel.h)
+      return turn_round_to_go(b.rig, c.figure, a);  // a crawl's steps do not turn round (gait_travel.h)
     }
   const size_t had = b.plan.actions.size();
   if (mover->name != "move") b.add(*mover, kTravelSlide, Target::Whole, {}, "", mods, false, c.text, false, why);
@@ -566,7 +566,7 @@ void travel_where_told(Builder& b, const Clause& c, size_t from, const ParsedPro
   // left a walk's and a trot's at 13.4 % of the width where a crawl's own slide had 15 %.
   if (b.plan.actions.size() > had)
     b.plan.actions.back().goes = true, b.plan.actions.back().amp = std::max(b.plan.actions.back().amp, kTravelReach * mods.size),
-    turn_round_to_go(b.rig, b.plan.actions.back());
+    turn_round_to_go(b.rig, c.figure, b.plan.actions.back());
 }
 
 

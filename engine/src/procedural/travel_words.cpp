@@ -21,4 +21,13 @@ bool sends_figure_across(const ParsedPrompt& prompt) {
   return told || (untold && !stays);
 }
 
+bool sends_figure_one_way(const ParsedPrompt& prompt) {
+  bool told = false;
+  for (const Clause& c : prompt.clauses) {
+    if (stays_put(c.text)) return false;
+    for (const Verb* v : c.verbs) told = told || (c.mods.travel != 0 && (locomotes(*v) || v->name == "move"));
+  }
+  return told;
+}
+
 }  // namespace svgm

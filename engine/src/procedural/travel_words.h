@@ -14,4 +14,10 @@ namespace svgm {
 
 bool sends_figure_across(const ParsedPrompt& prompt);
 
+// Whether a prompt tells its figure a way to go ("to the left", "to the right") by a verb that
+// gets it somewhere or a slide of its own (a drive, a glide: gait_travel.h's locomotes), not
+// kept where it is: a figure drawn facing the other way turns round and makes its whole trip on
+// the told side (travel_profile.h's turned_going_at), so it needs the room there twice over.
+bool sends_figure_one_way(const ParsedPrompt& prompt);
+
 }  // namespace svgm
