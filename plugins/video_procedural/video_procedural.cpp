@@ -75,6 +75,61 @@ class StageShare {
   double share_ = 0;
 };
 
+// Draws candidate `name` into `file` and, with `ranker` (the pixel ranker's options; null: no
+// self check), has the ranker look at it: a candidate it would flag is made again, its turn
+// round left out or its amplitudes smaller (kSelfCheckAttempts). Returns its points.
+std::vector<svgm::Vec2> checked_candidate(const svgm::Scene& scene, const svgm::Rig& rig, svgm::MotionPlan& plan,
+                                          const svgm::ProceduralVideoOptions& o, const std::filesystem::path& file, uint32_t seed,
+                                          const char* name, const std::vector<svgm::Rgba>& palette, const svgm::PixelRankOptions* ranker) {
+  std::vector<svgm::Vec2> pts;
+  for (int attempt = 0;; ++attempt) {
+    pts = svgm::animate_plan(scene, rig, plan, o.frames);
+    svgm::write_procedural_video(scene, pts, seed, o, file);
+    if (!ranker || palette.empty()) break;
+    svgm::PixelRankOptions check = *ranker;
+    check.keyframes = svgm::frames_to_rank(*ranker, plan.keyframes);
+    const svgm::CandidateScore sc = svgm::score_candidate_file(file, palette, check);
+    // What a smaller motion cures: parts whose visible area jumps between the ranker's
+    // frames (continuity), and chaotic motion. 'No motion' is not cured by less of it.
+    std::string why;
+    if (sc.continuity.value >= check.defect_threshold) why = "continuity: " + sc.continuity.reason;
+    else if (sc.motion.value >= check.defect_threshold && sc.motion.reason.find("chaotic") != std::string::npos)
+      why = "chaotic motion: " + sc.motion.reason;
+    if (why.empty()) break;
+    char line[400];
+    // A figure turning round (gait_travel.h) goes edge on: a thin patch of colour (a line
+    // drawing's door or window, a few pixels wide) falls to nothing there, and smaller
+    // amplitudes do not make a turn wider (an openmoji bus was flagged at 41 %). The turn is left
+    // out first: the figure goes the told way facing its own way, as it did before it turned.
+    if (why.rfind("continuity", 0) == 0 && svgm::leave_out_turns(plan)) {
+      std::snprintf(line, sizeof line, "candidate %s: turning round left out: the pixel ranker saw %s", name, why.c_str());
+      plan.notes.push_back(line);
+      continue;
+    }
+    if (attempt == kSelfCheckAttempts) {
+      std::snprintf(line, sizeof line, "candidate %s: the pixel ranker still flags it at %.0f %% of its amplitudes (%s)", name,
+                    plan.scale * 100, why.c_str());
+      plan.warnings.push_back(line);
+      break;
+    }
+    // Whole turns are never scaled: when smaller amplitudes move nothing differently, the
+    // candidate made again would be the same one (a spinning dancer was made five times).
+    svgm::MotionPlan smaller = plan;
+    smaller.scale *= 0.8;
+    if (svgm::animate_plan(scene, rig, smaller, o.frames) == pts) {
+      std::snprintf(line, sizeof line, "candidate %s: the pixel ranker flags it and smaller amplitudes would not change it (%s)", name,
+                    why.c_str());
+      plan.warnings.push_back(line);
+      break;
+    }
+    plan.scale *= 0.8;
+    std::snprintf(line, sizeof line, "candidate %s: amplitudes scaled to %.0f %%: the pixel ranker saw %s", name, plan.scale * 100,
+                  why.c_str());
+    plan.notes.push_back(line);
+  }
+  return pts;
+}
+
 nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
   namespace fs = std::filesystem;
   namespace P = svgm::plugin;
@@ -157,52 +212,8 @@ nlohmann::json run(const nlohmann::json& req, const svgm_host* host) {
     // machine, was "starting" on the bar until then).
     if (host && host->progress)
       host->progress(host, share.shown(), ("making candidate " + std::string(name)).c_str());
-    std::vector<svgm::Vec2> pts;
-    for (int attempt = 0;; ++attempt) {
-      pts = svgm::animate_plan(scene, rig, plan, o.frames);
-      svgm::write_procedural_video(scene, pts, seed, o, dir / (std::string(name) + ".mp4"));
-      if (!self_check || palette.empty()) break;
-      svgm::PixelRankOptions check = ro;
-      check.keyframes = svgm::frames_to_rank(ro, plan.keyframes);
-      const svgm::CandidateScore sc = svgm::score_candidate_file(dir / (std::string(name) + ".mp4"), palette, check);
-      // What a smaller motion cures: parts whose visible area jumps between the ranker's
-      // frames (continuity), and chaotic motion. 'No motion' is not cured by less of it.
-      std::string why;
-      if (sc.continuity.value >= check.defect_threshold) why = "continuity: " + sc.continuity.reason;
-      else if (sc.motion.value >= check.defect_threshold && sc.motion.reason.find("chaotic") != std::string::npos)
-        why = "chaotic motion: " + sc.motion.reason;
-      if (why.empty()) break;
-      char line[400];
-      // A figure turning round (gait_travel.h) goes edge on: a thin patch of colour (a line
-      // drawing's door or window, a few pixels wide) falls to nothing there, and smaller
-      // amplitudes do not make a turn wider (an openmoji bus was flagged at 41 %). The turn is left
-      // out first: the figure goes the told way facing its own way, as it did before it turned.
-      if (why.rfind("continuity", 0) == 0 && svgm::leave_out_turns(plan)) {
-        std::snprintf(line, sizeof line, "candidate %s: turning round left out: the pixel ranker saw %s", name, why.c_str());
-        plan.notes.push_back(line);
-        continue;
-      }
-      if (attempt == kSelfCheckAttempts) {
-        std::snprintf(line, sizeof line, "candidate %s: the pixel ranker still flags it at %.0f %% of its amplitudes (%s)", name,
-                      plan.scale * 100, why.c_str());
-        plan.warnings.push_back(line);
-        break;
-      }
-      // Whole turns are never scaled: when smaller amplitudes move nothing differently, the
-      // candidate made again would be the same one (a spinning dancer was made five times).
-      svgm::MotionPlan smaller = plan;
-      smaller.scale *= 0.8;
-      if (svgm::animate_plan(scene, rig, smaller, o.frames) == pts) {
-        std::snprintf(line, sizeof line, "candidate %s: the pixel ranker flags it and smaller amplitudes would not change it (%s)", name,
-                      why.c_str());
-        plan.warnings.push_back(line);
-        break;
-      }
-      plan.scale *= 0.8;
-      std::snprintf(line, sizeof line, "candidate %s: amplitudes scaled to %.0f %%: the pixel ranker saw %s", name, plan.scale * 100,
-                    why.c_str());
-      plan.notes.push_back(line);
-    }
+    const std::vector<svgm::Vec2> pts =
+        checked_candidate(scene, rig, plan, o, dir / (std::string(name) + ".mp4"), seed, name, palette, self_check ? &ro : nullptr);
     if (i == 0) {
       report = svgm::motion_report(scene, rig, plan);
       report["prompt"] = prompt;
