@@ -424,8 +424,9 @@ std::vector<size_t> gait_on_body(const TravelCheck& c, const MotionPlan& plan, c
 // fitter could not follow at its raised size is slowed (slow_to_follow); the canvas then scales
 // clauses back where they would not fit (fit_scales), and warn_under_floor says so.
 void raise_to_visible(const TravelCheck& c, MotionPlan& plan) {
-  const double floor = c.floor();
   for (const auto& clause : measured_clauses(plan)) {
+    // A carried flight's body (kCarriedTravel) farther than the floor.
+    const double floor = carried_whole(plan.actions[clause.front()]) ? c.floor() * kCarriedTravel / kVisibleTravel : c.floor();
     if (spins_in_place(plan, clause)) {
       slow_to_follow(c, plan, clause);
       continue;
@@ -580,12 +581,13 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
           plan.actions[i].one_sided = side;
         }
       }
-    // A travel (a figure going somewhere: goes, inches) uses the room the canvas leaves, not the
-    // 0.8 step under it: halved between the scale kept and the one broken, four times. Cut by
-    // 0.8 from a reach of 15 %, an ant's march went 12 % where 13.4 % fitted. Each scale tried
+    // A travel (a figure going somewhere: goes, inches) or a carried flight's body (a hover's
+    // bob, a buzz's dart: kCarriedTravel) uses the room the canvas leaves, not the 0.8 step
+    // under it: halved between the scale kept and the one broken, four times. Cut by 0.8 from a
+    // reach of 15 %, an ant's march went 12 % where 13.4 % fitted. Each scale tried
     // must fit with the other motions too: alone, a rabbit's travel took the room its hops
     // needed, and the whole motion was cut to 80 %.
-    if (!all && best > 0 && best < scale && (plan.actions[i].goes || plan.actions[i].inches))
+    if (!all && best > 0 && best < scale && (plan.actions[i].goes || plan.actions[i].inches || carried_whole(plan.actions[i])))
       for (double hi = std::min(scale, best / 0.8), k = 0; k < 4; ++k) {
         const double mid = 0.5 * (best + hi);
         MotionPlan at = one, with_all = plan;  // alone and with the rest (a hop beside it)
