@@ -417,6 +417,32 @@ std::vector<size_t> gait_on_body(const TravelCheck& c, const MotionPlan& plan, c
   return body;
 }
 
+// A carried flight's body (carried_whole: a hover's bob, a buzz's dart), at `travel` once raised
+// to the floor, raised on to kCarriedTravel of the figure's size as far as the canvas lets the
+// whole plan stay in it (halved between the floor's scale and kCarriedTravel's, five times):
+// raised past the room, a bee's dart beside its beating wings left the canvas and every motion
+// was cut with it, the dart to 6.2 % of its size. Returns the factor applied (1: none).
+double carry_farther(const TravelCheck& c, MotionPlan& plan, const std::vector<size_t>& clause, double travel) {
+  const double aim = kRaiseAim * kCarriedTravel * std::hypot(c.rig.figure.w(), c.rig.figure.h());
+  if (travel <= 0 || travel >= aim || !carried_whole(plan.actions[clause.front()])) return 1;
+  auto in_canvas = [&](double f) {
+    MotionPlan m = plan;
+    for (size_t j : clause) m.actions[j].scale *= f;
+    return limit_broken(c.scene, animate_plan(c.scene, c.rig, m, c.frames), c.exempt, c.by_curve, c.frames, c.K_hi) !=
+           "would leave the canvas";
+  };
+  // The travel grows nearly in proportion to a bob's and a slide's scale (no turn to flatten it).
+  double lo = 1, hi = std::min(aim / travel, kMaxBoost);
+  if (!in_canvas(hi))
+    for (int k = 0; k < 5; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (in_canvas(mid) ? lo : hi) = mid;
+    }
+  else lo = hi;
+  for (size_t j : clause) plan.actions[j].scale *= lo;
+  return lo;
+}
+
 // Too small to see: the moving parts travel at least kVisibleTravel of the figure's size. Each
 // clause grows as a whole, by at most kMaxBoost, measured again after each raise: a swing's
 // chord (2 r sin(a / 2)) and a bend's reach grow slower than their angle, and one raise by
@@ -424,9 +450,8 @@ std::vector<size_t> gait_on_body(const TravelCheck& c, const MotionPlan& plan, c
 // fitter could not follow at its raised size is slowed (slow_to_follow); the canvas then scales
 // clauses back where they would not fit (fit_scales), and warn_under_floor says so.
 void raise_to_visible(const TravelCheck& c, MotionPlan& plan) {
+  const double floor = c.floor();
   for (const auto& clause : measured_clauses(plan)) {
-    // A carried flight's body (kCarriedTravel) farther than the floor.
-    const double floor = carried_whole(plan.actions[clause.front()]) ? c.floor() * kCarriedTravel / kVisibleTravel : c.floor();
     if (spins_in_place(plan, clause)) {
       slow_to_follow(c, plan, clause);
       continue;
@@ -448,6 +473,7 @@ void raise_to_visible(const TravelCheck& c, MotionPlan& plan) {
       boost *= step;
       travel = c.travel(plan, raised);
     }
+    boost *= carry_farther(c, plan, raised, first > 0 ? travel : 0);
     if (boost > 1) {
       char line[300];
       std::snprintf(line, sizeof line, "%s%s raised to %.0f %%: it moved %.1f %% of the figure's size, too little to see%s",
