@@ -418,25 +418,25 @@ std::vector<size_t> gait_on_body(const TravelCheck& c, const MotionPlan& plan, c
 }
 
 // A carried flight's body (carried_whole: a hover's bob, a buzz's dart), at `travel` once raised
-// to the floor, raised on to kCarriedTravel of the figure's size as far as the canvas lets the
-// whole plan stay in it (halved between the floor's scale and kCarriedTravel's, five times):
-// raised past the room, a bee's dart beside its beating wings left the canvas and every motion
-// was cut with it, the dart to 6.2 % of its size. Returns the factor applied (1: none).
+// to the floor, raised on to kCarriedTravel of the figure's size as far as the whole plan stays
+// in the canvas and within the fitter's steps (halved between the floor's scale and
+// kCarriedTravel's, five times): raised past the room, a bee's dart beside its beating wings
+// left the canvas and every motion was cut with it, the dart to 6.2 % of its size; past the
+// steps, a hovering bird's wings were cut to 64 % with its bob. Returns the factor applied.
 double carry_farther(const TravelCheck& c, MotionPlan& plan, const std::vector<size_t>& clause, double travel) {
   const double aim = kRaiseAim * kCarriedTravel * std::hypot(c.rig.figure.w(), c.rig.figure.h());
   if (travel <= 0 || travel >= aim || !carried_whole(plan.actions[clause.front()])) return 1;
-  auto in_canvas = [&](double f) {
+  auto fits = [&](double f) {
     MotionPlan m = plan;
     for (size_t j : clause) m.actions[j].scale *= f;
-    return limit_broken(c.scene, animate_plan(c.scene, c.rig, m, c.frames), c.exempt, c.by_curve, c.frames, c.K_hi) !=
-           "would leave the canvas";
+    return limit_broken(c.scene, animate_plan(c.scene, c.rig, m, c.frames), c.exempt, c.by_curve, c.frames, c.K_hi).empty();
   };
   // The travel grows nearly in proportion to a bob's and a slide's scale (no turn to flatten it).
   double lo = 1, hi = std::min(aim / travel, kMaxBoost);
-  if (!in_canvas(hi))
+  if (!fits(hi))
     for (int k = 0; k < 5; ++k) {
       const double mid = 0.5 * (lo + hi);
-      (in_canvas(mid) ? lo : hi) = mid;
+      (fits(mid) ? lo : hi) = mid;
     }
   else lo = hi;
   for (size_t j : clause) plan.actions[j].scale *= lo;
