@@ -98,6 +98,12 @@ double auto_room(const Scene& scene, const std::string& prompt, char* why, size_
     if (why) std::snprintf(why, size, "the prompt sends the figure across and it spans %.0f %% of its canvas's width", 100 * span.x);
     return kAutoRoom;
   }
+  if (std::max(span.x, span.y) >= kTravelFills && !prompt.empty() && carries_figure_about(parse_prompt(prompt))) {
+    if (why)
+      std::snprintf(why, size, "the prompt carries the figure about in the air and it spans %.0f %% of its canvas's %s",
+                    100 * std::max(span.x, span.y), span.x >= span.y ? "width" : "height");
+    return kAutoRoom;
+  }
   return 0;
 }
 

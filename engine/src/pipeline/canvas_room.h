@@ -15,7 +15,9 @@
 // sends_figure_across) gets the room already at kTravelFills of the canvas's width: it goes
 // kTravelReach of its width ahead and behind where it stands, and with less room the plan cut
 // the travel to fit (a trotting zebra across 88 % of its canvas went 5 % of its width, at 38 %
-// of its reach, and read as marking time). A figure told a way (travel_words.h's
+// of its reach, and read as marking time). So does a figure the prompt carries about in the air
+// (a hover, a buzz, a float, an insect's flight: travel_words.h's carries_figure_about) from
+// kTravelFills of the canvas's width or height. A figure told a way (travel_words.h's
 // sends_figure_one_way) gets kTurnRoom: drawn facing the other way it turns round and its whole
 // trip, 2 kTravelReach of its width, lies on the told side; at kAutoRoom the camel sent right
 // kept 45 % of it (a tenth of its width, read as marking time). At kTurnRoom a figure as wide

@@ -417,6 +417,32 @@ std::vector<size_t> gait_on_body(const TravelCheck& c, const MotionPlan& plan, c
   return body;
 }
 
+// A carried flight's body (carried_whole: a hover's bob, a buzz's dart), at `travel` once raised
+// to the floor, raised on to kCarriedTravel of the figure's size as far as the whole plan stays
+// in the canvas and within the fitter's steps (halved between the floor's scale and
+// kCarriedTravel's, five times): raised past the room, a bee's dart beside its beating wings
+// left the canvas and every motion was cut with it, the dart to 6.2 % of its size; past the
+// steps, a hovering bird's wings were cut to 64 % with its bob. Returns the factor applied.
+double carry_farther(const TravelCheck& c, MotionPlan& plan, const std::vector<size_t>& clause, double travel) {
+  const double aim = kRaiseAim * kCarriedTravel * std::hypot(c.rig.figure.w(), c.rig.figure.h());
+  if (travel <= 0 || travel >= aim || !carried_whole(plan.actions[clause.front()])) return 1;
+  auto fits = [&](double f) {
+    MotionPlan m = plan;
+    for (size_t j : clause) m.actions[j].scale *= f;
+    return limit_broken(c.scene, animate_plan(c.scene, c.rig, m, c.frames), c.exempt, c.by_curve, c.frames, c.K_hi).empty();
+  };
+  // The travel grows nearly in proportion to a bob's and a slide's scale (no turn to flatten it).
+  double lo = 1, hi = std::min(aim / travel, kMaxBoost);
+  if (!fits(hi))
+    for (int k = 0; k < 5; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (fits(mid) ? lo : hi) = mid;
+    }
+  else lo = hi;
+  for (size_t j : clause) plan.actions[j].scale *= lo;
+  return lo;
+}
+
 // Too small to see: the moving parts travel at least kVisibleTravel of the figure's size. Each
 // clause grows as a whole, by at most kMaxBoost, measured again after each raise: a swing's
 // chord (2 r sin(a / 2)) and a bend's reach grow slower than their angle, and one raise by
@@ -447,6 +473,7 @@ void raise_to_visible(const TravelCheck& c, MotionPlan& plan) {
       boost *= step;
       travel = c.travel(plan, raised);
     }
+    boost *= carry_farther(c, plan, raised, first > 0 ? travel : 0);
     if (boost > 1) {
       char line[300];
       std::snprintf(line, sizeof line, "%s%s raised to %.0f %%: it moved %.1f %% of the figure's size, too little to see%s",
@@ -580,12 +607,13 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
           plan.actions[i].one_sided = side;
         }
       }
-    // A travel (a figure going somewhere: goes, inches) uses the room the canvas leaves, not the
-    // 0.8 step under it: halved between the scale kept and the one broken, four times. Cut by
-    // 0.8 from a reach of 15 %, an ant's march went 12 % where 13.4 % fitted. Each scale tried
+    // A travel (a figure going somewhere: goes, inches) or a carried flight's body (a hover's
+    // bob, a buzz's dart: kCarriedTravel) uses the room the canvas leaves, not the 0.8 step
+    // under it: halved between the scale kept and the one broken, four times. Cut by 0.8 from a
+    // reach of 15 %, an ant's march went 12 % where 13.4 % fitted. Each scale tried
     // must fit with the other motions too: alone, a rabbit's travel took the room its hops
     // needed, and the whole motion was cut to 80 %.
-    if (!all && best > 0 && best < scale && (plan.actions[i].goes || plan.actions[i].inches))
+    if (!all && best > 0 && best < scale && (plan.actions[i].goes || plan.actions[i].inches || carried_whole(plan.actions[i])))
       for (double hi = std::min(scale, best / 0.8), k = 0; k < 4; ++k) {
         const double mid = 0.5 * (best + hi);
         MotionPlan at = one, with_all = plan;  // alone and with the rest (a hop beside it)

@@ -37,14 +37,34 @@ const Verb* wheeled_travel(const Verb* v, const Clause& c) {
   return drive ? drive : v;
 }
 
+const Verb* insect_flight(const Verb* v, const Clause& c, const std::string& word) {
+  if (!v || c.figure != FigureClass::Insect) return v;
+  const bool flight = v->name == "fly" || v->name == "flutter" || v->name == "soar" || v->name == "glide" || v->name == "move";
+  if (!flight) return v;
+  const std::string said = word.substr(0, word.find_first_of(" -"));
+  for (const char* legs : {"crawl", "creep", "crept", "inch"})
+    if (word_matches(said, legs)) return v;
+  for (const PromptNoun& n : c.nouns)
+    if (n.after_verb && !n.object_of_preposition && !n.own_predicate &&
+        (n.target == Target::Arms || n.target == Target::Legs || n.target == Target::Limbs || n.target == Target::Tail))
+      return v;
+  const Verb* buzz = find_verb_by_name("buzz");
+  return buzz ? buzz : v;
+}
+
 std::vector<const Verb*> clause_verbs(const Clause& c, const Rig& rig, const LocatedPart* located) {
   // Several things tossed by a figure holding them up is a juggle; a swimmer's crawl a stroke
   // (toss_and_stroke.h): they stand for the throw, the swim and the crawl's move.
   const Verb* juggle = reads_as_juggling(c, rig) ? find_verb_by_name("juggle") : nullptr;
   const Verb* stroke = stroke_reading(c);
   std::vector<const Verb*> out;
-  for (const Verb* v : c.verbs) {
-    const Verb* by = juggle && v->name == "throw" ? juggle : stroke && (v->name == "swim" || v->name == "move") ? stroke : legged_crawl(wheeled_travel(flame_verb(v, c, rig, located), c), c, rig);
+  for (size_t i = 0; i < c.verbs.size(); ++i) {
+    const Verb* v = c.verbs[i];
+    const std::string& word = i < c.verb_words.size() ? c.verb_words[i] : v->name;
+    const Verb* by = juggle && v->name == "throw" ? juggle
+                     : stroke && (v->name == "swim" || v->name == "move")
+                         ? stroke
+                         : legged_crawl(insect_flight(wheeled_travel(flame_verb(v, c, rig, located), c), c, word), c, rig);
     if (std::find(out.begin(), out.end(), by) == out.end()) out.push_back(by);
   }
   if (juggle && std::find(out.begin(), out.end(), juggle) == out.end()) out.insert(out.begin(), juggle);

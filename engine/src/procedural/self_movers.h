@@ -27,8 +27,20 @@ bool twinkle_of_fire(const Clause& c, bool lights);
 const Verb* flame_verb(const Verb* v, const Clause& c, const Rig& rig, const LocatedPart* located);
 
 // The clause's verbs, each as flame_verb reads it, each of a figure on wheels as wheeled_travel
-// does, and a crawl on legs as legged_crawl does.
+// does, each of an insect as insect_flight does, and a crawl on legs as legged_crawl does.
 std::vector<const Verb*> clause_verbs(const Clause& c, const Rig& rig, const LocatedPart* located);
+
+// An insect that goes about goes by flight (issue 35): a verb said of the whole insect (the
+// clause's class is insect) that moves it about other than on its legs (a flight, a flutter, a
+// soar, a glide, a generic move: WordNet reads "flits" as flutter, "zips" as move) is buzz's
+// dart about a small area with its wings beating fast (motion_verbs.cpp). Read as they were, a
+// mosquito that "flits around" and a butterfly that "flutters by" beat their wings in place, a
+// fly that "zips around" slid with its wings still, and a beetle that "flies about, wings
+// beating" (the wings named, the flight's bob left out as their accent) stayed where it was. A
+// verb whose object is a part ("flutters its wings": a limb noun after the verb) moves that
+// part; a crawl, a creep or an inch (move's words of legs on the ground) stays a crawl.
+// `word`: the verb as written (Clause::verb_words).
+const Verb* insect_flight(const Verb* v, const Clause& c, const std::string& word);
 
 // A figure on wheels (the clause's class is wheeled: a car, a tractor, a bus) gets somewhere by
 // its wheels: a verb that carries a figure along by other means (a generic move, which WordNet

@@ -2,7 +2,9 @@
 #include "procedural/travel_words.h"
 
 #include "procedural/gait_travel.h"
+#include "procedural/carried_flight.h"
 #include "procedural/motion_plan_internal.h"
+#include "procedural/self_movers.h"
 
 namespace svgm {
 
@@ -28,6 +30,20 @@ bool sends_figure_one_way(const ParsedPrompt& prompt) {
     for (const Verb* v : c.verbs) told = told || (c.mods.travel != 0 && (locomotes(*v) || v->name == "move"));
   }
   return told;
+}
+
+bool carries_figure_about(const ParsedPrompt& prompt) {
+  for (const Clause& c : prompt.clauses) {
+    std::string part;
+    for (const PromptNoun& n : c.nouns)
+      if (part.empty() && !n.object_of_preposition && !n.own_predicate && n.target != Target::Named) part = n.word;
+    for (size_t i = 0; i < c.verbs.size(); ++i) {
+      const Verb* v = insect_flight(c.verbs[i], c, i < c.verb_words.size() ? c.verb_words[i] : c.verbs[i]->name);
+      if (v->name == "float" && part.empty()) return true;
+      if (carries_figure(*v) && keeps_whole(*v, c, part)) return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace svgm

@@ -20,4 +20,13 @@ bool sends_figure_across(const ParsedPrompt& prompt);
 // the told side (travel_profile.h's turned_going_at), so it needs the room there twice over.
 bool sends_figure_one_way(const ParsedPrompt& prompt);
 
+// Whether a prompt carries its whole figure about in the air, read from the words alone: a
+// clause whose verb (as an insect's flight reads it: self_movers.h's insect_flight) is a hover,
+// a buzz (carried_flight.h) or a float, said of the figure, not of a part ("its rotor
+// whirring"). Such a figure moves whole by kCarriedTravel of its size (a float by the visible
+// floor), which a figure filling most of its canvas has no room for: given none under
+// kFillsCanvas, a drone hovering and a balloon drifting were held to 5.5 and 5.9 % of their
+// size (pipeline/canvas_room.h gives them room from kTravelFills).
+bool carries_figure_about(const ParsedPrompt& prompt);
+
 }  // namespace svgm
