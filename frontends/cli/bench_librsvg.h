@@ -10,10 +10,18 @@
 
 namespace svgm::cli {
 
-// Median over `repeat` runs of the milliseconds per frame librsvg takes to render `svg` `frames`
-// times at `width` px wide (height from its intrinsic aspect) onto a fresh white ARGB32 cairo
-// surface each time, as /work/shared/tools/rsvg_time.py measures. Nothing when librsvg cannot
-// be loaded or the file not read.
-std::optional<double> librsvg_ms_per_frame(const std::string& svg, int width, int frames, int repeat);
+// librsvg's time per frame: wall milliseconds, and the CPU milliseconds of the process (user +
+// sys) over the same span, each the median over the runs. librsvg renders on this thread alone,
+// so on a machine shared with other jobs its CPU time is its work and the wall time that work
+// plus the time it waited for a core.
+struct LibrsvgTimes {
+  double ms_per_frame = 0, cpu_ms_per_frame = 0;
+};
+
+// Medians over `repeat` runs of the time per frame librsvg takes to render `svg` `frames` times
+// at `width` px wide (height from its intrinsic aspect) onto a fresh white ARGB32 cairo surface
+// each time, as /work/shared/tools/rsvg_time.py measures. Nothing when librsvg cannot be loaded
+// or the file not read.
+std::optional<LibrsvgTimes> librsvg_ms_per_frame(const std::string& svg, int width, int frames, int repeat);
 
 }  // namespace svgm::cli
