@@ -78,6 +78,15 @@ TEST_CASE("legged crawl: a legless grub crawls by its steps, a fish's crawl is n
     const MotionPlan creep = plan_from_prompt(parse_prompt(prompt), bug.rig, 1);
     CHECK(find_action(creep, Primitive::Swing, Target::Legs) == nullptr);
   }
+  // A move of a part the clause names is that part's, not a crawl: "lowers" is WordNet's move,
+  // and the giraffe lowering its neck had walked (the suite's tw_giraffe_neck).
+  const Clause lowers = parse_prompt("the beetle lowers its head").clauses.at(0);
+  REQUIRE(lowers.verbs.size() == 1);
+  CHECK(lowers.verbs[0]->name == "move");
+  CHECK(legged_crawl(lowers.verbs[0], lowers, bug.rig)->name == "move");
+  const Clause crawls = parse_prompt("the beetle crawls along").clauses.at(0);
+  REQUIRE(crawls.verbs.size() == 1);
+  CHECK(legged_crawl(crawls.verbs[0], crawls, bug.rig)->name == "walk");
 }
 
 }  // TEST_SUITE

@@ -33,6 +33,12 @@ const Verb* legged_crawl(const Verb* v, const Clause& c, const Rig& rig) {
   // Who crawls must be a creature the lexicon knows: a caterpillar (no class: an object) or a
   // box that "inches along" creeps by its steps whatever its drawing shows below it.
   if (!v || v->name != "move" || !is_creature(c.figure) || c.figure == FigureClass::FishOrSnake) return v;
+  // A move of a part the clause names ("the giraffe lowers its long neck": WordNet's lower is a
+  // move) moves that part; only the figure's own move is a crawl (the neck had walked).
+  for (const PromptNoun& n : c.nouns)
+    if (!n.object_of_preposition && n.target != Target::Named && n.target != Target::Whole && n.target != Target::Repeated &&
+        n.target != Target::Background)
+      return v;
   if (walkable_legs(rig, nullptr) == 0) return v;
   const Verb* walk = find_verb_by_name("walk");
   return walk ? walk : v;

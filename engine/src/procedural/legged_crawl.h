@@ -27,7 +27,8 @@ namespace svgm {
 int walkable_legs(const Rig& rig, std::string* why);
 
 // The verb `v` of clause `c` becomes: the walk when it is the generic move (a crawl, a creep,
-// a move) said of a creature that is not a fish or a snake, drawn with legs to walk on; else `v`.
+// a move) said of a creature that is not a fish or a snake, drawn with legs to walk on, and the
+// clause names no part of it to move ("lowers its neck"); else `v`.
 const Verb* legged_crawl(const Verb* v, const Clause& c, const Rig& rig);
 
 }  // namespace svgm
