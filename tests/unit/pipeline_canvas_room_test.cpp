@@ -17,6 +17,12 @@ namespace {
 
 Scene read(const std::string& text) { return read_svg_string(text, "t.svg"); }
 
+// A 100 x 50 canvas; a body from x 5 to 90 (85 % of the width, under kFillsCanvas), 20 tall.
+Scene wide_body() {
+  return read(R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 50">
+    <rect x="5" y="15" width="85" height="20" fill="red"/></svg>)");
+}
+
 }  // namespace
 
 TEST_SUITE("pipeline") {
@@ -43,9 +49,7 @@ TEST_CASE("canvas room: the figure's span leaves out a backdrop rectangle but no
 }
 
 TEST_CASE("canvas room: a figure across 85 % of its canvas gets room when the prompt sends it across, not when it stays") {
-  // A 100 x 50 canvas; a body from x 5 to 90 (85 % of the width, under kFillsCanvas), 20 tall.
-  const Scene wide = read(R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 50">
-    <rect x="5" y="15" width="85" height="20" fill="red"/></svg>)");
+  const Scene wide = wide_body();
   char why[160] = "";
   CHECK(auto_room(wide, "the zebra trots across", why, sizeof why) == kAutoRoom);
   CHECK(std::string(why) == "the prompt sends the figure across and it spans 85 % of its canvas's width");
@@ -74,8 +78,7 @@ TEST_CASE("canvas room: a figure told a way gets the turning figure's room, a fi
   // kTravelReach of its width) lies on the told side: kTurnRoom, more than kAutoRoom, for a
   // gait, a drive or a glide told a way; as before for a figure sent across with no way said,
   // kept on the spot, or with limbs named.
-  const Scene wide = read(R"(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 50">
-    <rect x="5" y="15" width="85" height="20" fill="red"/></svg>)");
+  const Scene wide = wide_body();
   char why[160] = "";
   CHECK(auto_room(wide, "the zebra trots to the right", why, sizeof why) == kTurnRoom);
   CHECK(std::string(why) == "the prompt tells the figure a way to go and it spans 85 % of its canvas's width");

@@ -86,7 +86,10 @@ FigureSpan figure_span(const Scene& scene) {
 double auto_room(const Scene& scene, const std::string& prompt, char* why, size_t size) {
   const FigureSpan span = figure_span(scene);
   if (span.empty) return 0;
-  if (span.x >= kTravelFills && !prompt.empty() && sends_figure_one_way(parse_prompt(prompt))) {
+  // The prompt read once, and only for a figure wide or tall enough for its words to matter.
+  const bool words = !prompt.empty() && std::max(span.x, span.y) >= kTravelFills;
+  const ParsedPrompt said = words ? parse_prompt(prompt) : ParsedPrompt{};
+  if (words && span.x >= kTravelFills && sends_figure_one_way(said)) {
     if (why) std::snprintf(why, size, "the prompt tells the figure a way to go and it spans %.0f %% of its canvas's width", 100 * span.x);
     return kTurnRoom;
   }
@@ -94,11 +97,11 @@ double auto_room(const Scene& scene, const std::string& prompt, char* why, size_
     if (why) std::snprintf(why, size, "the drawing fills %.0f %% of its canvas's %s", 100 * std::max(span.x, span.y), span.x >= span.y ? "width" : "height");
     return kAutoRoom;
   }
-  if (span.x >= kTravelFills && !prompt.empty() && sends_figure_across(parse_prompt(prompt))) {
+  if (words && span.x >= kTravelFills && sends_figure_across(said)) {
     if (why) std::snprintf(why, size, "the prompt sends the figure across and it spans %.0f %% of its canvas's width", 100 * span.x);
     return kAutoRoom;
   }
-  if (std::max(span.x, span.y) >= kTravelFills && !prompt.empty() && carries_figure_about(parse_prompt(prompt))) {
+  if (words && carries_figure_about(said)) {
     if (why)
       std::snprintf(why, size, "the prompt carries the figure about in the air and it spans %.0f %% of its canvas's %s",
                     100 * std::max(span.x, span.y), span.x >= span.y ? "width" : "height");

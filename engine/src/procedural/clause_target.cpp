@@ -60,8 +60,7 @@ ClauseTarget clause_target(const Clause& c, const ParsedPrompt& prompt, const Ri
     // and the whole figure moves. Not a part named after a verb ("raises its head"), nor one
     // owned ("its head slithers"), nor of something named before it ("the man's face": its
     // first noun is the man); not the drawing's repeated elements or backdrop.
-    const bool part = n.target != Target::Named && n.target != Target::Whole && n.target != Target::Repeated && n.target != Target::Background;
-    if (part && &c == &prompt.clauses.front() && &n == &c.nouns.front() && !n.after_verb && !n.owned) {
+    if (is_part_target(n.target) && &c == &prompt.clauses.front() && &n == &c.nouns.front() && !n.after_verb && !n.owned) {
       std::string none;
       if (parts_for(rig, n.target, n.word, &none).empty()) {
         ct.target = Target::Whole;

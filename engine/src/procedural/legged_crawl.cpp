@@ -36,9 +36,7 @@ const Verb* legged_crawl(const Verb* v, const Clause& c, const Rig& rig) {
   // A move of a part the clause names ("the giraffe lowers its long neck": WordNet's lower is a
   // move) moves that part; only the figure's own move is a crawl (the neck had walked).
   for (const PromptNoun& n : c.nouns)
-    if (!n.object_of_preposition && n.target != Target::Named && n.target != Target::Whole && n.target != Target::Repeated &&
-        n.target != Target::Background)
-      return v;
+    if (!n.object_of_preposition && motion_plan_internal::is_part_target(n.target)) return v;
   if (walkable_legs(rig, nullptr) == 0) return v;
   const Verb* walk = find_verb_by_name("walk");
   return walk ? walk : v;

@@ -46,6 +46,9 @@ bool whole_only(Primitive p) {
 }
 
 bool is_limb_target(Target t) { return t == Target::Arms || t == Target::Legs || t == Target::Limbs || t == Target::Tail; }
+bool is_part_target(Target t) {
+  return t != Target::Named && t != Target::Whole && t != Target::Repeated && t != Target::Background;
+}
 
 std::string join(const std::vector<std::string>& v, const char* sep) {
   std::string s;

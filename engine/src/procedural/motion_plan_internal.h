@@ -157,6 +157,9 @@ inline constexpr double kHeadOffCentre = 0.1;
 const char* unit_of(Primitive p);
 std::string join(const std::vector<std::string>& v, const char* sep);
 bool is_limb_target(Target t);
+// A target naming a part of the figure (a limb, the head, the body, the wheels): not the whole
+// figure, a word matched to part names, the repeated elements or the backdrop.
+bool is_part_target(Target t);
 // Keeps only the parts whose ancestors are not also in the set (a limb's segments follow it).
 std::vector<int> topmost(const Rig& rig, std::vector<int> parts);
 // Whether part p is at or under part a (a descendant through the parents).

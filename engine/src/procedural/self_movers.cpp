@@ -6,6 +6,7 @@
 
 #include "procedural/gait_travel.h"
 #include "procedural/legged_crawl.h"
+#include "procedural/motion_plan_internal.h"
 #include "procedural/rotor_blades.h"
 #include "procedural/toss_and_stroke.h"
 
@@ -37,6 +38,8 @@ const Verb* wheeled_travel(const Verb* v, const Clause& c) {
   return drive ? drive : v;
 }
 
+const std::string& verb_word(const Clause& c, size_t i) { return i < c.verb_words.size() ? c.verb_words[i] : c.verbs.at(i)->name; }
+
 const Verb* insect_flight(const Verb* v, const Clause& c, const std::string& word) {
   if (!v || c.figure != FigureClass::Insect) return v;
   const bool flight = v->name == "fly" || v->name == "flutter" || v->name == "soar" || v->name == "glide" || v->name == "move";
@@ -45,9 +48,7 @@ const Verb* insect_flight(const Verb* v, const Clause& c, const std::string& wor
   for (const char* legs : {"crawl", "creep", "crept", "inch"})
     if (word_matches(said, legs)) return v;
   for (const PromptNoun& n : c.nouns)
-    if (n.after_verb && !n.object_of_preposition && !n.own_predicate &&
-        (n.target == Target::Arms || n.target == Target::Legs || n.target == Target::Limbs || n.target == Target::Tail))
-      return v;
+    if (n.after_verb && !n.object_of_preposition && !n.own_predicate && motion_plan_internal::is_limb_target(n.target)) return v;
   const Verb* buzz = find_verb_by_name("buzz");
   return buzz ? buzz : v;
 }
@@ -60,7 +61,7 @@ std::vector<const Verb*> clause_verbs(const Clause& c, const Rig& rig, const Loc
   std::vector<const Verb*> out;
   for (size_t i = 0; i < c.verbs.size(); ++i) {
     const Verb* v = c.verbs[i];
-    const std::string& word = i < c.verb_words.size() ? c.verb_words[i] : v->name;
+    const std::string& word = verb_word(c, i);
     const Verb* by = juggle && v->name == "throw" ? juggle
                      : stroke && (v->name == "swim" || v->name == "move")
                          ? stroke

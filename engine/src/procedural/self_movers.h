@@ -42,6 +42,9 @@ std::vector<const Verb*> clause_verbs(const Clause& c, const Rig& rig, const Loc
 // `word`: the verb as written (Clause::verb_words).
 const Verb* insect_flight(const Verb* v, const Clause& c, const std::string& word);
 
+// The clause's verb `i` as written (Clause::verb_words), else its vocabulary name.
+const std::string& verb_word(const Clause& c, size_t i);
+
 // A figure on wheels (the clause's class is wheeled: a car, a tractor, a bus) gets somewhere by
 // its wheels: a verb that carries a figure along by other means (a generic move, which WordNet
 // reads "pulls away", "trundles", "chugs" as; a glide; a flight; a gait of legs in turn: "the

@@ -38,7 +38,7 @@ bool carries_figure_about(const ParsedPrompt& prompt) {
     for (const PromptNoun& n : c.nouns)
       if (part.empty() && !n.object_of_preposition && !n.own_predicate && n.target != Target::Named) part = n.word;
     for (size_t i = 0; i < c.verbs.size(); ++i) {
-      const Verb* v = insect_flight(c.verbs[i], c, i < c.verb_words.size() ? c.verb_words[i] : c.verbs[i]->name);
+      const Verb* v = insect_flight(c.verbs[i], c, verb_word(c, i));
       if (v->name == "float" && part.empty()) return true;
       if (carries_figure(*v) && keeps_whole(*v, c, part)) return true;
     }
