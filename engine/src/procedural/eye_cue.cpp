@@ -8,19 +8,25 @@
 
 namespace svgm {
 
+bool eye_like(const RigElement& e, const RigBox& F) {
+  const RigBox& b = e.box;
+  if (e.lightness < 0 || e.lightness > kEyeDark || b.empty() || F.empty()) return false;
+  const double D = std::max(F.w(), F.h());
+  const double lo = std::min(b.w(), b.h()), hi = std::max(b.w(), b.h());
+  if (hi > kEyeMaxSize * D || hi < kEyeMinSize * D || lo < kEyeRound * hi) return false;
+  return e.area >= kEyeFilled * b.area() && b.centre().y <= F.y0 + kEyeHigh * F.h();
+}
+
 EyeCue find_eye(const Rig& rig) {
   EyeCue out;
   const RigBox& F = rig.figure;
   if (F.empty() || F.w() <= 0 || F.h() <= 0) return out;
-  const double D = std::max(F.w(), F.h()), mid = F.centre().x;
+  const double mid = F.centre().x;
   double sum_x = 0, sum_y = 0, weight = 0;
   int left = 0, right = 0;
   for (const RigElement& e : rig.elements) {
+    if (!eye_like(e, F)) continue;
     const RigBox& b = e.box;
-    if (e.lightness < 0 || e.lightness > kEyeDark || b.empty()) continue;
-    const double lo = std::min(b.w(), b.h()), hi = std::max(b.w(), b.h());
-    if (hi > kEyeMaxSize * D || hi < kEyeMinSize * D || lo < kEyeRound * hi) continue;
-    if (e.area < kEyeFilled * b.area() || b.centre().y > F.y0 + kEyeHigh * F.h()) continue;
     const double off = b.centre().x - mid;
     // One near the middle says nothing of the ends, and breaks none.
     if (std::fabs(off) < kEyeOffCentre * F.w()) continue;

@@ -37,6 +37,10 @@ struct EyeCue {
   std::string why;      // what was found, for notes
 };
 
+// Whether a drawn element looks like an eye of the figure boxed by F: small, dark, round,
+// filled and in its upper part (the bounds above; its lightness set by apply_eye_cue).
+bool eye_like(const RigElement& e, const RigBox& F);
+
 // The eye cue of the rig's figure, from its drawn elements (Rig::elements, their fill's luma).
 EyeCue find_eye(const Rig& rig);
 

@@ -180,8 +180,17 @@ struct FramePixels {
   explicit FramePixels(size_t P) : fg(P, 0), far(P, 0), dnear(P, 0.f), dblend(P, 0.f), label(P, -1) {}
 };
 
+// A pixel within `radius` of one of `colours`.
+bool near_any(const Rgb& p, const std::vector<Rgb>& colours, double radius) {
+  for (const Rgb& c : colours)
+    if (dist(p, c) < radius) return true;
+  return false;
+}
+
+// `rest`: colours the first frame already shows that no palette colour explains (below); a
+// pixel near one of them is not "far", so it is no invented content.
 FramePixels classify_pixels(const float* f, size_t P, const Rgb& bg, const std::vector<Rgb>& pal,
-                            const PixelRankOptions& o) {
+                            const std::vector<Rgb>& rest, const PixelRankOptions& o) {
   const size_t C = pal.size();
   const double bg_tolerance = 1 - o.white_threshold;
   FramePixels px(P);
@@ -201,9 +210,35 @@ FramePixels classify_pixels(const float* f, size_t P, const Rgb& bg, const std::
     px.dnear[i] = static_cast<float>(best);
     px.dblend[i] = static_cast<float>(expl);
     if (best < o.far_distance) px.label[i] = static_cast<int32_t>(bi);
-    if (expl > o.far_distance) px.far[i] = 1;
+    if (expl > o.far_distance && !near_any(p, rest, o.far_distance)) px.far[i] = 1;
   }
   return px;
+}
+
+// The colours of the first frame's off-palette areas (pixels whose 3x3 neighbourhood is all
+// off-palette), as centres at least far_distance / 2 apart, in raster order, at most
+// kMaxRestColours. A drawing's own translucent shapes blend with what lies under them into
+// colours of no path: twemoji's fly draws its wings at opacity .5, and where they lie over its
+// body every frame, the rest frame included, showed 7-8 % of the foreground off the palette, so
+// every candidate was flagged "invented content" whatever its motion. Content is invented when
+// it is new: a colour the rest frame already shows is the drawing's. (A candidate's first frame
+// is the rest pose: the procedural provider's by construction, an image-to-video model's as it
+// starts from the image.) A first frame too far off the palette to describe with
+// kMaxRestColours colours keeps the rest of its off-palette pixels far.
+constexpr size_t kMaxRestColours = 32;
+
+std::vector<Rgb> rest_colours(const TargetFrames& t, const Rgb& bg, const std::vector<Rgb>& pal,
+                              const PixelRankOptions& o) {
+  const size_t P = static_cast<size_t>(t.width) * t.height;
+  const FramePixels px = classify_pixels(t.raw.data(), P, bg, pal, {}, o);
+  const std::vector<uint8_t> core = core_of(px.far, t.width, t.height);
+  std::vector<Rgb> centres;
+  for (size_t i = 0; i < P && centres.size() < kMaxRestColours; ++i) {
+    if (!core[i]) continue;
+    const Rgb p{t.raw[4 * i], t.raw[4 * i + 1], t.raw[4 * i + 2]};
+    if (!near_any(p, centres, o.far_distance / 2)) centres.push_back(p);
+  }
+  return centres;
 }
 
 // Areas per colour, without the pixels that are a mixture of two of their neighbours'
@@ -244,11 +279,11 @@ void count_colour_areas(const float* f, int k, int W, int H, const Rgb& bg, cons
 
 // Frame k's foreground, colour areas, drift and invented content, into `st`.
 void measure_frame(const TargetFrames& t, int k, size_t P, const std::vector<Rgb>& pal,
-                   const PixelRankOptions& o, FrameStats& st) {
+                   const std::vector<Rgb>& rest, const PixelRankOptions& o, FrameStats& st) {
   const int W = t.width, H = t.height;
   const float* f = &t.raw[P * 4 * k];
   const Rgb bg = frame_background(f, W, H);
-  FramePixels px = classify_pixels(f, P, bg, pal, o);
+  FramePixels px = classify_pixels(f, P, bg, pal, rest, o);
   count_colour_areas(f, k, W, H, bg, px, pal, st);
   const size_t nfg = px.nfg;
   st.total[k] = static_cast<double>(nfg);
@@ -594,7 +629,8 @@ CandidateScore score_candidate(const TargetFrames& t, const std::vector<Rgba>& p
   if (pal.empty()) throw Error("pixel ranker: the palette has no colours");
 
   FrameStats st(pal.size(), K);
-  for (int k = 0; k < K; ++k) measure_frame(t, k, P, pal, o, st);
+  const std::vector<Rgb> rest = rest_colours(t, frame_background(t.raw.data(), W, H), pal, o);
+  for (int k = 0; k < K; ++k) measure_frame(t, k, P, pal, rest, o, st);
 
   CandidateScore s;
   const double mean_fg = std::accumulate(st.total.begin(), st.total.end(), 0.0) / K;

@@ -9,9 +9,11 @@
 //                     growth / 0.08) (0.02: what H.264 alone costs a flat colour)
 //   invented_content  8-connected blobs of foreground pixels farther than far_distance from
 //                     every palette colour and from every palette colour's blend with white
-//                     (anti-aliased edges), with at least one pixel whose 3x3 neighbourhood is
-//                     all far (so 1-2 px seams between shapes do not count), as a fraction f of
-//                     the foreground, max over frames: (f - 0.005) / 0.03
+//                     (anti-aliased edges) and from every colour the first frame already shows
+//                     off the palette (a translucent shape's blend with what lies under it),
+//                     with at least one pixel whose 3x3 neighbourhood is all far (so 1-2 px
+//                     seams between shapes do not count), as a fraction f of the foreground,
+//                     max over frames: (f - 0.005) / 0.03
 //   continuity        per palette colour, its area per frame (its pixels nearest to it within
 //                     far_distance, but for those nearer to a mixture of two of their 8
 //                     neighbours' colours (or the background) than to it: seams where two
