@@ -95,6 +95,24 @@ TEST_CASE("elongated parts: a jellyfish's tentacles wave about their ends under 
   CHECK(locate_part(Drawing("bell_clapper.svg").rig, PartShape::Strands).lobes.empty());
 }
 
+TEST_CASE("elongated parts: a squid's arms hang from its head as well as from its mantle, and all of them wave") {
+  // The head (a stout ellipse over the mantle's bottom) is joined to the body: the four arms
+  // under it, 26 units below the mantle (past kStrandReach of it), hang from it. Measured from
+  // the mantle alone, only the two outer arms were strands and moved.
+  const Drawing d("squid_arms.svg");
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the squid waves its tentacles"), d.rig, 1);
+  REQUIRE(!plan.actions.empty());
+  const PlannedAction& a = plan.actions[0];
+  CHECK(a.region == Region::Located);
+  CHECK(a.lobes.size() == 6);
+  CHECK(a.lobe_paths == std::vector<int>{2, 3, 4, 5, 6, 7});
+  for (const ArmLobe& l : a.lobes) CHECK(l.pivot.y < 118);  // each about its top, at the mantle or the head
+  const auto t = d.travel(plan);
+  CHECK(t[0] == 0.0);  // the mantle
+  CHECK(t[1] == 0.0);  // the head
+  for (int p = 2; p < 8; ++p) CHECK(t[p] > 5.0);
+}
+
 TEST_CASE("elongated parts: a rose droops at its neck, the top of its one stem; the stem and the leaf hold") {
   const Drawing d("rose_stem.svg");
   REQUIRE(d.rig.parts.size() == 1);
