@@ -549,6 +549,9 @@ LocatedPart strands(const Rig& rig, int body) {
   for (size_t g = 0; g < groups.size(); ++g) {
     ArmLobe l = lobe_over(rig, groups[g], ends[g]);
     l.side = -1;  // every strand turns the same way: mirrored, the two middle ones crossed
+    std::set<int> own;
+    add_paths(rig, groups[g], own);
+    l.paths.assign(own.begin(), own.end());  // each strand's strokes turn with it (owner_lobe)
     out.lobes.push_back(l);
     add_paths(rig, groups[g], paths);
   }
