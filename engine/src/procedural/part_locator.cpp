@@ -503,7 +503,7 @@ LocatedPart strands(const Rig& rig, int body) {
   const RigBox& B = rig.elements[body].box;
   const double D = std::max(F.w(), F.h());
   // What strands hang from: the body and the stout elements joined to it, in turn (a squid's
-  // head drawn between its mantle and its arms: measured from the mantle alone, 2 of its 8 arms
+  // head drawn between its mantle and its arms: measured from the mantle alone, 2 of its 7 arms
   // reached it and only those two moved).
   std::vector<RigBox> trunk = {B};
   std::vector<char> joined(rig.elements.size(), 0);
