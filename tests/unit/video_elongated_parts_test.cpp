@@ -11,6 +11,7 @@
 
 #include "svgmotion/svg_reader.h"
 #include "procedural/motion_plan.h"
+#include "procedural/motion_plan_internal.h"
 #include "procedural/part_locator.h"
 
 #include "motion_drawing.h"
@@ -93,6 +94,49 @@ TEST_CASE("elongated parts: a jellyfish's tentacles wave about their ends under 
   for (int p = 2; p < 8; ++p) CHECK(t[p] > 5.0);
   // A bell with a clapper has no strands.
   CHECK(locate_part(Drawing("bell_clapper.svg").rig, PartShape::Strands).lobes.empty());
+}
+
+TEST_CASE("elongated parts: a squid's arms hang from its head as well as from its mantle, and all of them wave") {
+  // The head (a stout ellipse over the mantle's bottom) is joined to the body: the four arms
+  // under it, 26 units below the mantle (past kStrandReach of it), hang from it. Measured from
+  // the mantle alone, only the two outer arms were strands and moved.
+  const Drawing d("squid_arms.svg");
+  const MotionPlan plan = plan_from_prompt(parse_prompt("the squid waves its tentacles"), d.rig, 1);
+  REQUIRE(!plan.actions.empty());
+  const PlannedAction& a = plan.actions[0];
+  CHECK(a.region == Region::Located);
+  CHECK(a.lobes.size() == 6);
+  CHECK(a.lobe_paths == std::vector<int>{2, 3, 4, 5, 6, 7});
+  for (const ArmLobe& l : a.lobes) CHECK(l.pivot.y < 118);  // each about its top, at the mantle or the head
+  const auto t = d.travel(plan);
+  CHECK(t[0] == 0.0);  // the mantle
+  CHECK(t[1] == 0.0);  // the head
+  for (int p = 2; p < 8; ++p) CHECK(t[p] > 5.0);
+}
+
+TEST_CASE("elongated parts: a strand's own strokes turn with it where its neighbour's outline overlaps it") {
+  // Two strands 8 apart, each a band 10 wide either side: the point (6, 60) lies in both. By
+  // outline it takes the first (pivot (0, 0)); a point of path 3, which the second strand was
+  // built from, takes the second, fully turned (60 beyond its base, past the ramp).
+  PlannedAction a;
+  a.region = Region::Located;
+  a.primitive = Primitive::Swing;
+  a.cycles = 1;
+  a.lobes = {limb(LobeKind::Other, {0, 0}, {0, 100}, 10), limb(LobeKind::Other, {8, 0}, {8, 100}, 10)};
+  a.lobes[1].paths = {3};
+  const RigBox b = box(-10, 0, 18, 100);
+  const auto by_outline = motion_plan_internal::region_turn(a, 30, 0.25, b, {6, 60});
+  CHECK(by_outline.pivot.x == 0.0);
+  const auto owned = motion_plan_internal::region_turn(a, 30, 0.25, b, {6, 60}, 3);
+  CHECK(owned.pivot.x == 8.0);
+  CHECK(owned.weight == 1.0);
+  CHECK(owned.angle == by_outline.angle);
+  // Path 2 belongs to no strand: by outline, as before.
+  CHECK(motion_plan_internal::region_turn(a, 30, 0.25, b, {6, 60}, 2).pivot.x == 0.0);
+  // The squid's strands each own the paths they were found on.
+  const LocatedPart arms = locate_part(Drawing("squid_arms.svg").rig, PartShape::Strands);
+  REQUIRE(arms.lobes.size() == 6);
+  for (const ArmLobe& l : arms.lobes) CHECK(l.paths.size() == 1);
 }
 
 TEST_CASE("elongated parts: a rose droops at its neck, the top of its one stem; the stem and the leaf hold") {

@@ -256,7 +256,7 @@ constexpr double kLobeRamp = 0.5;
 }  // namespace
 
 // The turn a region bend gives point q at t (motion_plan_internal.h).
-RegionTurn motion_plan_internal::region_turn(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
+RegionTurn motion_plan_internal::region_turn(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q, int path) {
   const double W = std::max(box.w(), 1e-9), H = std::max(box.h(), 1e-9);
   const Vec2 c = box.centre();
   auto wave = [&](double phase) { return oscillation(a, a.cycles * t + phase); };
@@ -264,10 +264,11 @@ RegionTurn motion_plan_internal::region_turn(const PlannedAction& a, double amp,
   // the middle of its base, the turn growing from nothing at the base over half its width (the
   // outline stays in one piece).
   if (!a.lobes.empty()) {
+    const int own = owner_lobe(a.lobes, path);
     for (const ArmLobe& l : a.lobes) {
-      if (a.region_side != 0 && l.side != a.region_side) continue;
+      if ((a.region_side != 0 && l.side != a.region_side) || (own >= 0 && &l != &a.lobes[own])) continue;
       // A rigid part (one lobe, its own paths only: region_use) turns whole, every point of it.
-      const double depth = lobe_depth(l, q);
+      const double depth = own >= 0 ? lobe_owned_depth(l, q) : lobe_depth(l, q);
       if (depth <= 0 && !l.rigid) continue;
       // A located part that grows (petals opening, petal_rosette.h): its points spread from the
       // lobe's centre, as a pulse scales a part about its middle.
@@ -317,11 +318,11 @@ RegionTurn motion_plan_internal::region_turn(const PlannedAction& a, double amp,
   return {};
 }
 
-Vec2 motion_plan_internal::bend_region(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
+Vec2 motion_plan_internal::bend_region(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q, int path) {
   // A blaze's tongues lick (flame_lick.h): not a turn about a pivot.
   for (const ArmLobe& l : a.lobes)
     if (l.kind == LobeKind::Blaze) return flame_lick(l, a, amp, t, q);
-  const RegionTurn r = region_turn(a, amp, t, box, q);
+  const RegionTurn r = region_turn(a, amp, t, box, q, path);
   if (r.pulse && a.primitive == Primitive::Stretch) {
     // Along the blade's line only (the lobe's pivot to its tip).
     for (const ArmLobe& l : a.lobes)
@@ -766,7 +767,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
               if (a.region != Region::None) {
                 const int use = region_use(rig, a, src, by, bg, spinning, loads);
                 const RigBox& hb = rig.parts[a.parts[0]].box;
-                if (use == 1) q = mesh[ai] ? mesh[ai]->apply(bent[ai], q) : bend_region(a, amp, t, hb, q);
+                if (use == 1) q = mesh[ai] ? mesh[ai]->apply(bent[ai], q) : bend_region(a, amp, t, hb, q, static_cast<int>(src));
                 else if (use == 2)
                   q = mesh[ai] ? mesh[ai]->carry(bent[ai], rig.parts[by].pivot, q) : carried_by_bend(a, amp, t, hb, rig.parts[by].pivot, q);
               } else if (a.parts.empty()) {

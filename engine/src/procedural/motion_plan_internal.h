@@ -125,9 +125,10 @@ struct RegionTurn {
   double angle = 0, weight = 0, grow = 0;
   bool pulse = false;
 };
-RegionTurn region_turn(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q);
+// `path`: the scene path q belongs to (-1: unknown), for lobes that own their paths (owner_lobe).
+RegionTurn region_turn(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q, int path = -1);
 // The closed-form bend: q turned by region_turn's angle times its weight (or grown).
-Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q);
+Vec2 bend_region(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q, int path = -1);
 // fit_plan: a region bend's mesh may thin no triangle below this share of its rest area (a
 // pinch); below, or with a triangle flipped (a fold), its amplitude is scaled down. The inside
 // of a sharp bend compresses: the test sweater's armpit, at 35 degrees, to 11 % with the closed

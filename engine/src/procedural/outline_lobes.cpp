@@ -132,4 +132,16 @@ double lobe_depth(const ArmLobe& lobe, Vec2 q) {
   return inside || near <= kLobeMargin * L ? beyond : 0;
 }
 
+int owner_lobe(const std::vector<ArmLobe>& lobes, int path) {
+  for (size_t k = 0; k < lobes.size() && path >= 0; ++k)
+    if (std::binary_search(lobes[k].paths.begin(), lobes[k].paths.end(), path)) return static_cast<int>(k);
+  return -1;
+}
+
+double lobe_owned_depth(const ArmLobe& lobe, Vec2 q) {
+  const Vec2 A = lobe.base0, B = lobe.base1;
+  const double tip_side = cross(A, B, lobe.tip) > 0 ? 1 : -1;
+  return std::max(0.0, tip_side * cross(A, B, q) / std::max(dist(A, B), 1e-9));
+}
+
 }  // namespace svgm

@@ -35,6 +35,8 @@ struct ArmLobe {
   bool rigid = false;         // its paths turn whole about the pivot, no ramp and no mesh: a part
                               // that hangs free (part_locator.h's clapper), not a limb that bends
   double tongue_spacing = 0;  // a Blaze: the distance between its neighbouring tongues' tips
+  std::vector<int> paths;     // a located part's lobe: the scene paths it was built from (sorted),
+                              // or none (the lobe takes the points its outline holds)
 };
 
 // The arm lobes of `outline`'s first subpath (closed, at least a few cubics), left first.
@@ -44,5 +46,13 @@ std::vector<ArmLobe> arm_lobes(const Path& outline);
 // side and inside the lobe's outline, or within kLobeMargin of the base's width of it (the
 // handles of its curves lie just outside the curves).
 double lobe_depth(const ArmLobe& lobe, Vec2 q);
+
+// The lobe of `lobes` built from path `path` (ArmLobe::paths), -1 when none is. Its points turn
+// with it alone, by how far beyond its base they lie (lobe_owned_depth): the hulls of strands
+// drawn close together overlap, and a point taking the first lobe whose outline held it tore a
+// squid's arm from its outline stroke (openmoji 1F991: the ranker saw the colour under it
+// appear and cut the wave to 41 %).
+int owner_lobe(const std::vector<ArmLobe>& lobes, int path);
+double lobe_owned_depth(const ArmLobe& lobe, Vec2 q);
 
 }  // namespace svgm

@@ -40,7 +40,6 @@ constexpr double kHullGrow = 0.06;     // a lobe's outline is its hull grown by 
 constexpr double kGround = 0.03;       // a limb whose outline comes this share of F's height to F's bottom stands
 constexpr double kStemMin = 0.3;       // a stem at least this share of F's height
 constexpr double kBloomMin = 0.08;     // a bloom's box at least this share of F's box
-constexpr double kTailMaxLength = 0.5; // a tail no longer than this share of F's longer side
 constexpr double kStrandReach = 0.1;   // a strand's end within this share of F's longer side of the body's box
 constexpr double kStrandAlong = 0.5;   // strokes drawn along one strand: boxes overlapping this share of the smaller
 
@@ -503,8 +502,27 @@ LocatedPart strands(const Rig& rig, int body) {
   const RigBox& F = rig.figure;
   const RigBox& B = rig.elements[body].box;
   const double D = std::max(F.w(), F.h());
+  // What strands hang from: the body and the stout elements joined to it, in turn (a squid's
+  // head drawn between its mantle and its arms: measured from the mantle alone, 2 of its 7 arms
+  // reached it and only those two moved).
+  std::vector<RigBox> trunk = {B};
+  std::vector<char> joined(rig.elements.size(), 0);
+  for (size_t n = 0; n != trunk.size();) {
+    n = trunk.size();
+    for (size_t i = 0; i < rig.elements.size(); ++i) {
+      const RigElement& e = rig.elements[i];
+      if (!joined[i] && static_cast<int>(i) != body && !e.thin && axis_of(e).elongation < kThin &&
+          std::any_of(trunk.begin(), trunk.end(), [&](const RigBox& t) { return overlap_area(t, e.box) > 0; }))
+        joined[i] = 1, trunk.push_back(e.box);
+    }
+  }
+  auto from_trunk = [&](Vec2 q) {
+    double d = 1e300;
+    for (const RigBox& t : trunk) d = std::min(d, box_distance(t, q));
+    return d;
+  };
   // Elongated elements hanging below the body (their middles below its bottom: a highlight
-  // drawn on the bell is no tentacle), one end at the body: each with its end there.
+  // drawn on the bell is no tentacle), one end at the trunk: each with its end there.
   std::vector<std::pair<int, Vec2>> hanging;
   for (size_t i = 0; i < rig.elements.size(); ++i) {
     const RigElement& e = rig.elements[i];
@@ -513,8 +531,8 @@ LocatedPart strands(const Rig& rig, int body) {
       continue;
     const Axis ax = axis_of(e);
     if (ax.elongation < kThin && !e.thin) continue;
-    const Vec2 end = box_distance(B, ax.a) < box_distance(B, ax.b) ? ax.a : ax.b;
-    if (box_distance(B, end) <= kStrandReach * D) hanging.push_back({static_cast<int>(i), end});
+    const Vec2 end = from_trunk(ax.a) < from_trunk(ax.b) ? ax.a : ax.b;
+    if (from_trunk(end) <= kStrandReach * D) hanging.push_back({static_cast<int>(i), end});
   }
   // Strokes drawn along one strand (a colour under its outline) are one strand: the longest
   // leads, its end the pivot.
@@ -531,6 +549,9 @@ LocatedPart strands(const Rig& rig, int body) {
   for (size_t g = 0; g < groups.size(); ++g) {
     ArmLobe l = lobe_over(rig, groups[g], ends[g]);
     l.side = -1;  // every strand turns the same way: mirrored, the two middle ones crossed
+    std::set<int> own;
+    add_paths(rig, groups[g], own);
+    l.paths.assign(own.begin(), own.end());  // each strand's strokes turn with it (owner_lobe)
     out.lobes.push_back(l);
     add_paths(rig, groups[g], paths);
   }
@@ -538,8 +559,10 @@ LocatedPart strands(const Rig& rig, int body) {
   RigBox all;
   for (const auto& g : groups)
     for (int e : g) all.add(rig.elements[e].box);
-  out.why = std::to_string(groups.size()) + " elongated elements hang below the body (" + std::to_string(hanging.size()) +
-            " strokes at " + fmt_box(rig, all) + "), each turning about its end at the body";
+  std::string ids;
+  for (const auto& g : groups) ids += (ids.empty() ? "" : ", ") + path_ids(g, rig);
+  out.why = std::to_string(groups.size()) + " elongated elements hang below the body (" + ids + " at " + fmt_box(rig, all) +
+            "), each turning about its end at the body";
   return out;
 }
 
@@ -737,47 +760,6 @@ LocatedPart locate_part(const Rig& rig, PartShape shape) {
     case PartShape::None: break;
   }
   out.shape = shape;
-  return out;
-}
-
-std::vector<ArmLobe> tail_limbs(const Rig& rig) {
-  // Where the head is: a drawn eye (eye_cue.h), else the rig's head parts, else the tips of the
-  // skeleton's head limbs.
-  Vec2 head;
-  double weight = 0;
-  if (rig.eye_side != 0) head = rig.eye, weight = 1;
-  if (weight == 0)
-    for (const RigPart& P : rig.parts)
-      if (P.role == Role::Head && !P.box.empty()) {
-        const double w = std::max(P.box.area(), 1e-12);
-        head = head + w * P.box.centre();
-        weight += w;
-      }
-  if (weight == 0)
-    for (const ArmLobe& l : rig.limbs)
-      if (l.kind == LobeKind::Head) head = head + l.tip, weight += 1;
-  if (weight == 0 || rig.figure.empty()) return {};
-  head = (1 / weight) * head;
-  const Vec2 c = rig.figure.centre(), front = head - c;
-  int best = -1;
-  for (size_t i = 0; i < rig.limbs.size(); ++i) {
-    const ArmLobe& l = rig.limbs[i];
-    if (l.kind == LobeKind::Head || l.kind == LobeKind::Leg) continue;
-    // As long as half the figure: the body itself (a lying bar with a head on it), no tail.
-    if (dist(l.pivot, l.tip) > kTailMaxLength * std::max(rig.figure.w(), rig.figure.h())) continue;
-    const Vec2 to = l.tip - c;
-    if (to.x * front.x + to.y * front.y >= 0) continue;  // on the head's side of the middle
-    if (best < 0 || dist(l.tip, head) > dist(rig.limbs[best].tip, head)) best = static_cast<int>(i);
-  }
-  if (best < 0) return {};
-  const ArmLobe& tail = rig.limbs[best];
-  const double base = dist(tail.base0, tail.base1);
-  std::vector<ArmLobe> out = {tail};
-  for (size_t i = 0; i < rig.limbs.size(); ++i) {
-    const ArmLobe& l = rig.limbs[i];
-    if (static_cast<int>(i) != best && l.kind != LobeKind::Head && l.kind != LobeKind::Leg && dist(l.pivot, tail.pivot) <= base)
-      out.push_back(l);
-  }
   return out;
 }
 
