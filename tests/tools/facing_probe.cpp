@@ -8,6 +8,7 @@
 #include <exception>
 #include <string>
 
+#include "procedural/body_facing.h"
 #include "procedural/eye_cue.h"
 #include "procedural/limb_qualifiers.h"
 #include "procedural/shape_facing.h"
@@ -37,9 +38,12 @@ int main(int argc, char** argv) {
       std::string shape_why, why;
       const int shape = shape_facing(rig, cls, &shape_why);
       const int facing = facing_side(rig, cls, &why);
+      const int body = body_facing(rig, cls, nullptr);
       const SideProfile p = side_profile(rig);
-      std::printf("%s\teye %s\tshape %s\tfacing %s\tleft top %.2f thick %.2f\tright top %.2f thick %.2f\t%s\n", argv[a], side(rig.eye_side),
-                  side(shape), side(facing), p.left.top, p.left.thick, p.right.top, p.right.thick, why.c_str());
+      const BodyEnds e = body_ends(rig);
+      std::printf("%s\teye %s\tshape %s\tfacing %s\tleft top %.2f thick %.2f\tright top %.2f thick %.2f\tbody %s over %.3f %.3f fill %.3f %.3f\t%s\n", argv[a],
+                  side(rig.eye_side), side(shape), side(facing), p.left.top, p.left.thick, p.right.top, p.right.thick, side(body), e.overhang_left,
+                  e.overhang_right, e.fill_left, e.fill_right, why.c_str());
     } catch (const std::exception& e) {
       std::printf("%s\terror\t%s\n", argv[a], e.what());
     }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "procedural/body_facing.h"
 #include "procedural/shape_facing.h"
 
 namespace svgm {
@@ -77,6 +78,9 @@ int facing_side(const Rig& rig, FigureClass figure, std::string* why) {
     if (why) *why = "its head";
     return side_of(rig, sum / weight);
   }
+  // An animal's silhouette (body_facing.h): its head held out beyond its feet, slimmer than its
+  // rump. Before the skeleton's cues, which read a coin's worth (below).
+  if (const int side = body_facing(rig, figure, why); side != 0) return side;
   // The skeleton's head limbs that lead the legs: based beyond every leg's base.
   double lo = 1e300, hi = -1e300;
   int left = 0, right = 0;

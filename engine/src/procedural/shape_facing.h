@@ -16,7 +16,8 @@
 // rises: two of four read wrong; a boat is no wheeled class) nor creatures: on 78 side views of
 // animals of both sets, "the head end is the higher" read 32, 20 right and 12 wrong (a skunk's
 // raised tail, a fish's or a whale's fins and flukes, an elephant's or a hippo's low head), where
-// the eye cue read 32 with none wrong: an openmoji animal drawn without an eye stays unread.
+// the eye cue read 32 with none wrong. An animal drawn without an eye is read by its silhouette
+// otherwise (body_facing.h: its head held out beyond its feet and slimmer than its rump).
 //
 // Only read for a vehicle, and before its eye (limb_qualifiers.h): a locomotive's round window
 // was taken for an eye.
