@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "procedural/eye_cue.h"
+#include "procedural/motion_plan_internal.h"
 
 namespace svgm {
 
@@ -39,6 +40,15 @@ FrontFace front_face(const Rig& rig) {
       out.why = buf;
     }
   return out;
+}
+
+std::string tail_not_drawn(const Rig& rig) {
+  if (rig.root < 0 || std::any_of(rig.limbs.begin(), rig.limbs.end(), [](const ArmLobe& l) {
+        return motion_plan_internal::lobe_serves(l.kind, Target::Tail);
+      }))
+    return "";
+  const FrontFace face = front_face(rig);
+  return face.seen ? "no tail drawn: the figure is seen from the front (" + face.why + ")" : "";
 }
 
 }  // namespace svgm

@@ -34,4 +34,8 @@ struct FrontFace {
 // in the elements' order on a tie).
 FrontFace front_face(const Rig& rig);
 
+// Why a tail the prompt names is not drawn: the figure is seen from the front and no limb of its
+// silhouette is a tail ("no tail drawn: the figure is seen from the front (...)"); "" otherwise.
+std::string tail_not_drawn(const Rig& rig);
+
 }  // namespace svgm

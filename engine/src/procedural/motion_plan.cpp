@@ -332,13 +332,9 @@ struct Builder {
             verb.name + " has no " + target_name(target) + " on a figure held by a pole: it ripples");
         return;
       }
-    // A tail on a figure seen from the front (front_face.h) is not drawn: the whole figure
-    // wags, not the far end of its box (a dog's face bent an ear).
-    if (target == Target::Tail && !note.empty() && rig.root >= 0 && a.primitive == Primitive::Swing &&
-        std::none_of(rig.limbs.begin(), rig.limbs.end(), [](const ArmLobe& l) { return lobe_serves(l.kind, Target::Tail); }))
-      if (const FrontFace face = front_face(rig); face.seen)
-        return add(verb, base_in, Target::Whole, {}, "", mods, plural, words, false,
-                   "no tail drawn: the figure is seen from the front (" + face.why + "); the whole figure " + verb.name + "s");
+    // A tail on a figure seen from the front is not drawn (front_face.h): the whole figure wags.
+    if (std::string why; target == Target::Tail && !note.empty() && a.primitive == Primitive::Swing && !(why = tail_not_drawn(rig)).empty())
+      return add(verb, base_in, Target::Whole, {}, "", mods, plural, words, false, why + "; the whole figure " + verb.name + "s");
     if (limb_role && !note.empty() && rig.root >= 0 && a.primitive == Primitive::Swing)
       bend_region(a, target, base, mods, plural, note, which);
     if (std::string why = wings_left_out(verb, a); !why.empty()) return plan.notes.push_back(why);
