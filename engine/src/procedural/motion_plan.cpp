@@ -411,6 +411,18 @@ struct Builder {
           if (lobe_serves(l.kind, target)) consider(l);
         if (far) a.region_side = far->side;
       }
+      // No side asked: when the limbs of this kind are found on one side only (a polo player's
+      // raised arm, the other under the water), that side, not the coin's: on the other the
+      // whole figure's sides bent.
+      if (mods.side == 0) {
+        int sides = 0;  // bit 0: left, bit 1: right
+        auto count = [&](const ArmLobe& l) { sides |= l.side < 0 ? 1 : l.side > 0 ? 2 : 0; };
+        if (target == Target::Arms)
+          for (const ArmLobe& l : rig.parts[a.parts[0]].arm_lobes) count(l);
+        for (const ArmLobe& l : rig.limbs)
+          if (lobe_serves(l.kind, target)) count(l);
+        if (sides == 1 || sides == 2) a.region_side = sides == 1 ? -1 : 1;
+      }
     }
     // Arms drawn in the outline (part_rig.h) bend instead of the sides, when there is one on
     // every side that moves: a girl waving both arms has one lobe, her raised sleeve, and the
