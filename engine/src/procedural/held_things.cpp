@@ -1,6 +1,9 @@
 // A held thing moved by the arms (see held_things.h).
 #include "procedural/held_things.h"
 
+#include <cctype>
+#include <string>
+
 #include "procedural/motion_plan_internal.h"
 
 namespace svgm {
@@ -30,10 +33,27 @@ bool arms_found(const Rig& rig) {
   return false;
 }
 
+// Who does it is a person: the clause's figure is a person, or it names none and says "he" or
+// "she" ("he swings his golf club": the pronouns are no nouns, and the clause had no class).
+bool said_of_person(const Clause& c) {
+  if (c.figure == FigureClass::Biped) return true;
+  if (c.figure != FigureClass::None) return false;
+  std::string word;
+  for (size_t i = 0; i <= c.text.size(); ++i) {
+    if (i < c.text.size() && c.text[i] != ' ') {
+      word += static_cast<char>(std::tolower(static_cast<unsigned char>(c.text[i])));
+      continue;
+    }
+    if (word == "he" || word == "she" || word == "his" || word == "her" || word == "him") return true;
+    word.clear();
+  }
+  return false;
+}
+
 }  // namespace
 
 const Verb* held_thing_reading(const Verb* v, const Clause& c, const Rig& rig) {
-  if (!v || v->actions.empty() || c.figure != FigureClass::Biped) return v;
+  if (!v || v->actions.empty() || !said_of_person(c)) return v;
   const Action& first = v->actions[0];
   if (first.target != Target::Whole) return v;
   const char* as = first.primitive == Primitive::Rock || first.primitive == Primitive::Sway ? "wield"

@@ -4,9 +4,9 @@
 // rocked on his feet with the club still in his hands and the rower slid with his boat. When
 // the verb's object is a thing the drawing has no part for (not the figure's own part, not a
 // person) and who does it is a person, the arms move instead, and what the hand holds goes with
-// them (skeleton_lobes.h: a piece drawn beside a hand is that limb's). A swing of a held thing
-// is one arm's big swing, as a throw's (wield); a pull or a push of it is both arms' strokes
-// (haul). motion_verbs.cpp has both verbs. Only when the rig finds arms: else their motion
+// them (skeleton_lobes.h: a piece drawn beside a hand is that limb's); "he" or "she" says a
+// person too. A swing of a held thing is one arm's big swing, as a throw's (wield); a pull or a
+// push of it is both arms' strokes (haul). motion_verbs.cpp has both verbs. Only when the rig finds arms: else their motion
 // would bend the sides of the whole figure (a rower's boat and sea).
 #pragma once
 
