@@ -37,6 +37,11 @@ const std::vector<Verb> kVerbs = {
   // alone stays the wind's (fronds toss).
   {"juggle",  {"juggl"},                        {{P::Toss, T::Whole, 1, 1}, {P::Swing, T::Arms, 8, 3, Pr::Alternating}}, P::Toss},
   {"throw",   {"throw", "threw", "hurl", "fling", "flung"}, {{P::Swing, T::Arms, 40, 1, Pr::OneSide}}, P::Swing},  // one arm swings over and back; not "toss" nor "pitch": fronds toss in the wind, boats pitch
+  // A thing a person holds, moved by the arms (procedural/held_things.h reads "swings the club"
+  // and "pulls the oars" so): a swing of it is one arm's big swing and back, as a throw's; a
+  // pull or a push both arms' strokes. No stems: the prompt's own verb says which.
+  {"wield",   {},                               {{P::Swing, T::Arms, 40, 1, Pr::OneSide}}, P::Swing},
+  {"haul",    {},                               {{P::Swing, T::Arms, 24, 2, Pr::Mirrored}}, P::Swing},
   {"lift",    {"lift", "rais", "hold"},         {{P::Swing, T::Arms, 24, 2, Pr::Mirrored}}, P::Swing},
   {"reach",   {"reach", "spread"},              {{P::Swing, T::Arms, 20, 1, Pr::Mirrored}}, P::Swing},
   {"pump",    {"pump"},                         {{P::Swing, T::Arms, 20, 2, Pr::Alternating}}, P::Swing},

@@ -415,6 +415,28 @@ struct Builder {
           if (lobe_serves(l.kind, target)) consider(l);
         if (far) a.region_side = far->side;
       }
+      // No side asked: when the limbs of this kind are found on one side only (a polo player's
+      // raised arm, the other under the water), that side, not the coin's: on the other the
+      // whole figure's sides bent.
+      // With arms on both sides, a one-sided verb's (a throw, a wave, a swing of a thing held)
+      // is the one raised above its shoulder when the other is not: a throw's arm holding the
+      // ball up, not the one held out (the coin swung a polo player's). Not a punch's, one arm
+      // then the other: a fencer's thrust is the sword arm's, not the hand raised behind him.
+      if (mods.side == 0) {
+        int sides = 0, raised = 0;  // bits: 1 left, 2 right
+        auto count = [&](const ArmLobe& l) {
+          const int bit = l.side < 0 ? 1 : l.side > 0 ? 2 : 0;
+          sides |= bit;
+          if (l.pivot.y - l.tip.y > std::fabs(l.tip.x - l.pivot.x)) raised |= bit;
+        };
+        if (target == Target::Arms)
+          for (const ArmLobe& l : rig.parts[a.parts[0]].arm_lobes) count(l);
+        for (const ArmLobe& l : rig.limbs)
+          if (lobe_serves(l.kind, target)) count(l);
+        if (sides == 1 || sides == 2) a.region_side = sides == 1 ? -1 : 1;
+        else if (target == Target::Arms && base.pairing == Pairing::OneSide && !says_forward(mods) && (raised == 1 || raised == 2))
+          a.region_side = raised == 1 ? -1 : 1;
+      }
     }
     // Arms drawn in the outline (part_rig.h) bend instead of the sides, when there is one on
     // every side that moves: a girl waving both arms has one lobe, her raised sleeve, and the

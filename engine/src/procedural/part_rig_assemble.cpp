@@ -13,6 +13,7 @@
 #include "procedural/shape_overlap.h"
 #include "procedural/skeleton_lobes.h"
 #include "procedural/stroke_rig.h"
+#include "procedural/support_band.h"
 
 namespace svgm::part_rig_internal {
 
@@ -483,12 +484,18 @@ void Assembly::find_arm_lobes() {
   }
 }
 
-// The limbs of the figure's silhouette.
+// The limbs of the figure's silhouette, without the ground band it stands in (support_band.h:
+// the water's ends were a polo player's arms).
 void Assembly::find_silhouette_limbs() {
   std::vector<int> figure_paths;
   for (int g = 0; g < G; ++g)
     if (rig.parts[g].role != Role::Background) figure_paths.insert(figure_paths.end(), unit_paths[g].begin(), unit_paths[g].end());
   std::sort(figure_paths.begin(), figure_paths.end());
+  const std::vector<char> ground = ground_band_paths(scene, rig);
+  std::vector<int> above;
+  for (int pi : figure_paths)
+    if (!ground[pi]) above.push_back(pi);
+  if (!above.empty()) figure_paths = std::move(above);
   rig.limbs = skeleton_lobes(scene, figure_paths);
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "procedural/gait_travel.h"
+#include "procedural/held_things.h"
 #include "procedural/legged_crawl.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/rotor_blades.h"
@@ -65,7 +66,7 @@ std::vector<const Verb*> clause_verbs(const Clause& c, const Rig& rig, const Loc
     const Verb* by = juggle && v->name == "throw" ? juggle
                      : stroke && (v->name == "swim" || v->name == "move")
                          ? stroke
-                         : legged_crawl(insect_flight(wheeled_travel(flame_verb(v, c, rig, located), c), c, word), c, rig);
+                         : held_thing_reading(legged_crawl(insect_flight(wheeled_travel(flame_verb(v, c, rig, located), c), c, word), c, rig), c, rig);
     if (std::find(out.begin(), out.end(), by) == out.end()) out.push_back(by);
   }
   if (juggle && std::find(out.begin(), out.end(), juggle) == out.end()) out.insert(out.begin(), juggle);

@@ -27,7 +27,8 @@ bool twinkle_of_fire(const Clause& c, bool lights);
 const Verb* flame_verb(const Verb* v, const Clause& c, const Rig& rig, const LocatedPart* located);
 
 // The clause's verbs, each as flame_verb reads it, each of a figure on wheels as wheeled_travel
-// does, each of an insect as insect_flight does, and a crawl on legs as legged_crawl does.
+// does, each of an insect as insect_flight does, a crawl on legs as legged_crawl does, and a
+// person's motion of a thing held as held_thing_reading does (held_things.h).
 std::vector<const Verb*> clause_verbs(const Clause& c, const Rig& rig, const LocatedPart* located);
 
 // An insect that goes about goes by flight (issue 35): a verb said of the whole insect (the

@@ -61,6 +61,34 @@ std::vector<Hold> held_pieces(const motion::Skeleton& sk, const motion::Figure& 
   return out;
 }
 
+// The limb the skeleton labelled the head when the figure's head is drawn apart from it (an
+// openmoji person's head is a disc above the shoulders, a gap of white between): then the one
+// limb rising from the upper body is a raised arm, not the head (a polo player's throwing arm
+// was the head, and "throws the ball" found no arm). The head apart: a piece of the mask other
+// than the figure's, held by no limb, above the core's middle, nearer the core's middle than
+// the labelled head's tip and nearer its axis across. -1 when the head limb is the head.
+int head_drawn_apart(const motion::Skeleton& sk, const motion::Figure& fig, const std::vector<Hold>& holds) {
+  int head = -1;
+  for (size_t i = 0; i < fig.limbs.size(); ++i)
+    if (fig.limbs[i].kind == motion::LimbKind::Head) head = static_cast<int>(i);
+  if (head < 0) return -1;
+  const size_t n = sk.component_area.size();
+  std::vector<double> sx(n, 0), sy(n, 0), count(n, 0);
+  for (int y = 0; y < sk.height; ++y)
+    for (int x = 0; x < sk.width; ++x)
+      if (const int c = sk.labels.at<int>(y, x); c >= 0 && c != fig.component) sx[c] += x, sy[c] += y, count[c] += 1;
+  const motion::Limb& L = fig.limbs[static_cast<size_t>(head)];
+  const Vec2 core = fig.core_centre;
+  const double reach = std::hypot(L.tip_pos.x - core.x, L.tip_pos.y - core.y), across = std::fabs(L.tip_pos.x - core.x);
+  for (size_t c = 0; c < n; ++c) {
+    if (count[c] < kHeadApartMin * sk.component_area[static_cast<size_t>(fig.component)]) continue;
+    if (std::any_of(holds.begin(), holds.end(), [&](const Hold& h) { return h.component == static_cast<int>(c); })) continue;
+    const Vec2 m{sx[c] / count[c], sy[c] / count[c]};
+    if (m.y < core.y && std::hypot(m.x - core.x, m.y - core.y) < reach && std::fabs(m.x - core.x) < across) return head;
+  }
+  return -1;
+}
+
 }  // namespace
 
 std::vector<ArmLobe> skeleton_lobes(const Scene& scene, const std::vector<int>& paths) {
@@ -109,6 +137,7 @@ std::vector<ArmLobe> skeleton_lobes(const Scene& scene, const std::vector<int>& 
   const motion::Figure fig = motion::find_limbs(sk);
   const cv::Mat regions = motion::limb_regions(sk, fig);
   const std::vector<Hold> holds = held_pieces(sk, fig, regions, std::max(1, static_cast<int>(std::lround(kHeldGap * kSkeletonSize))));
+  const int arm_not_head = head_drawn_apart(sk, fig, holds);
   std::vector<ArmLobe> out;
   for (size_t li = 0; li < fig.limbs.size(); ++li) {
     const motion::Limb& l = fig.limbs[li];
@@ -130,7 +159,7 @@ std::vector<ArmLobe> skeleton_lobes(const Scene& scene, const std::vector<int>& 
       if (cv::contourArea(contours[c]) > cv::contourArea(contours[biggest])) biggest = c;
     if (contours.empty() || contours[biggest].size() < 3) continue;
     ArmLobe lobe;
-    lobe.kind = lobe_kind(l.kind);
+    lobe.kind = static_cast<int>(li) == arm_not_head ? LobeKind::Arm : lobe_kind(l.kind);
     lobe.side = l.side;
     const double r = std::max(l.radius[l.base_index], 1.0);
     const Vec2 n{-l.direction.y * r, l.direction.x * r};

@@ -15,6 +15,10 @@
 // limb's lobe and moves with it (the thinning reads the largest piece only, so it stayed put
 // while the arm thrust).
 //
+// A head drawn apart (a disc above the shoulders across a gap, as openmoji draws its people) is
+// a piece the thinning does not read: the one limb rising from the upper body, which the
+// skeleton labels the head, is then a raised arm (skeleton_lobes.cpp, head_drawn_apart).
+//
 // The mask: every filled path of the part drawn as polygons (its cubics sampled), every stroked
 // one as polylines of its width, at kSkeletonSize pixels on the box's long side; the same paths
 // give the same lobes (OpenCV's fills and the thinning are deterministic).
@@ -29,6 +33,8 @@ namespace svgm {
 
 constexpr int kSkeletonSize = 160;       // px on the long side of the part's box
 constexpr double kLimbMinLength = 0.12;  // of the figure's larger side: shorter branches are nubs
+constexpr double kHeadApartMin = 0.02;  // of the figure's pixels: a piece apart this large may be
+                                        // its head (smaller: a speck, a drop of sweat)
 constexpr double kHeldGap = 0.03;        // of the mask's long side: a hand and what it holds are
                                          // drawn this close (an openmoji glove and foil: 0.02)
 

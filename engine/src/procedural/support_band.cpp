@@ -19,6 +19,8 @@ constexpr double kWide = 0.6, kBottom = 0.05, kTop = 0.4;
 // crest line of its waves), belong to it.
 constexpr double kCrest = 0.05;
 
+std::vector<char> band_paths(const Scene& scene, const Rig& rig, double wide);
+
 }  // namespace
 
 bool names_ground(const std::string& p) {
@@ -45,7 +47,14 @@ std::string ground_words(const ParsedPrompt& prompt, const Rig& rig) {
   return launch ? "off the ground" : "";
 }
 
-std::vector<char> support_paths(const Scene& scene, const Rig& rig) {
+std::vector<char> support_paths(const Scene& scene, const Rig& rig) { return band_paths(scene, rig, kWide); }
+
+std::vector<char> ground_band_paths(const Scene& scene, const Rig& rig) { return band_paths(scene, rig, kGroundWide); }
+
+namespace {
+
+// The band at least `wide` of the figure's width (see support_band.h), per path.
+std::vector<char> band_paths(const Scene& scene, const Rig& rig, double wide) {
   using namespace part_rig_internal;
   const size_t n = scene.paths.size();
   std::vector<char> out(n, 0);
@@ -62,7 +71,7 @@ std::vector<char> support_paths(const Scene& scene, const Rig& rig) {
   for (size_t i = 0; i < n; ++i) {
     const RigBox& b = box[i];
     if (!figure_path(i) || b.empty()) continue;
-    if (b.w() < kWide * W || b.y1 < F.y1 - kBottom * H || b.y0 < F.y0 + kTop * H) continue;
+    if (b.w() < wide * W || b.y1 < F.y1 - kBottom * H || b.y0 < F.y0 + kTop * H) continue;
     if (band < 0 || b.w() > box[band].w()) band = static_cast<int>(i);
   }
   if (band < 0) return out;
@@ -79,5 +88,7 @@ std::vector<char> support_paths(const Scene& scene, const Rig& rig) {
   if (!above) std::fill(out.begin(), out.end(), 0);
   return out;
 }
+
+}  // namespace
 
 }  // namespace svgm

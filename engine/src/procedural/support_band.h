@@ -30,4 +30,13 @@ std::string ground_words(const ParsedPrompt& prompt, const Rig& rig);
 // Per path of the scene: 1 when it belongs to the band the figure moves on (see above).
 std::vector<char> support_paths(const Scene& scene, const Rig& rig);
 
+// The same band when it is as wide as the whole figure (kGroundWide of its width), named in the
+// prompt or not: the water a polo player stands in up to the chest, the sea under a surfer. It
+// is ground, never the figure's limb: the rig reads the figure's limbs from the silhouette
+// without it (part_rig_assemble.cpp). In the silhouette with it, the skeleton's thick core was
+// the water and its two ends the arms, and a throw swung the water's left end. A lying cat's
+// body is no such band: its head and tail reach past it.
+constexpr double kGroundWide = 0.9;
+std::vector<char> ground_band_paths(const Scene& scene, const Rig& rig);
+
 }  // namespace svgm
