@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <random>
 #include <set>
 
@@ -13,6 +14,7 @@
 #include "procedural/carried_flight.h"
 #include "procedural/clause_target.h"
 #include "procedural/figure_pieces.h"
+#include "procedural/flight_axis.h"
 #include "procedural/invisible_spin.h"
 #include "procedural/gait_travel.h"
 #include "procedural/limb_qualifiers.h"
@@ -160,6 +162,24 @@ struct Builder {
   std::mt19937 rng;
   MotionPlan plan;
   FigureClass figure = FigureClass::None;  // what the prompt says the figure is (its first clause's)
+  std::optional<FlightAxis> axis;          // the figure's axis and nose, read at its first launch
+
+  // The way a launch of the whole figure goes (flight_axis.h): towards its nose, unless none is
+  // read or it points down by more than kNoseDown (a launch never goes down): then none, and the
+  // launch climbs straight up, shrinking towards its top, as before.
+  // The nose's way, raised to kMinClimb above the level on its side when it points lower.
+  static Vec2 climbing(Vec2 nose) {
+    if (-nose.y >= std::sin(kMinClimb * M_PI / 180)) return nose;
+    return {(nose.x >= 0 ? 1 : -1) * std::cos(kMinClimb * M_PI / 180), -std::sin(kMinClimb * M_PI / 180)};
+  }
+
+  const FlightAxis& launch_axis() {
+    if (!axis) {
+      axis = flight_axis(rig);
+      if (axis->found && axis->nose.y > kNoseDown) axis->found = false, axis->why += "; it points down: straight up instead";
+    }
+    return *axis;
+  }
 
   // Whether the whole figure, spun, turns about its vertical axis: it is not round (a wheel, a
   // clock face, a wheeled figure: those spin in the image's plane, their shape the same at every
@@ -275,6 +295,30 @@ struct Builder {
     // A launch climbs (never below where it stood), shrinks toward its top and rumbles sideways.
   a.apart = verb.name == "tumble" && target == Target::Whole;
   a.vertical = mods.vertical || verb.name != "takeoff" || a.primitive == Primitive::Slide ? mods.vertical : 1;
+    if (verb.name == "land" && target == Target::Whole) a.vertical = -1;
+    // A launch along the figure's nose: the climb goes that way, at least kMinClimb above the
+    // level (a plane drawn level climbs forward off the ground); the sideways slide and the
+    // shrink (away into the sky: on a rocket on a slant it read as going away, not off) have no
+    // place in it. Its rumble stays sideways, on the ground.
+    std::string heading;
+    // A creature (a bird taking off) keeps its climb: its wings and head, not its outline, say
+    // where it goes.
+    if (verb.name == "takeoff" && target == Target::Whole && !is_creature(figure)) {
+      if (launch_axis().found) {
+        if (a.primitive == Primitive::Slide || a.primitive == Primitive::Pulse) return;
+        if (a.primitive == Primitive::Bob) a.heading = climbing(axis->nose);
+        heading = "a launch goes along its axis towards its nose: " + axis->why;
+      } else heading = "a launch goes straight up: " + axis->why;
+    }
+    // A landing comes in along the nose when it points level or down (an arriving plane), else
+    // straight down (a plane drawn climbing, a parachute).
+    if (verb.name == "land" && target == Target::Whole && a.primitive == Primitive::Bob) {
+      const FlightAxis way = flight_axis(rig);
+      const bool along = !is_creature(figure) && way.found && way.nose.y >= -kNoseDown;
+      a.heading = along ? way.nose : Vec2{0, 1};
+      heading = along ? "a landing comes in along its nose: " + way.why
+                      : "a landing comes straight down: " + (is_creature(figure) ? std::string("a creature") : way.found ? std::string("its nose points up") : way.why);
+    }
     if (a.primitive == Primitive::Undulate && target == Target::Whole) a.anchored = anchored_side(rig, true);
     if (a.primitive == Primitive::Bend && target == Target::Whole) a.anchored = bend_anchor(rig, verb.name == "flicker" ? FigureClass::Flame : figure);
     a.direction = mods.side != 0 ? mods.side : ((rng() & 1) ? 1 : -1);
@@ -366,7 +410,7 @@ struct Builder {
     pick_sides(a, base, mods, plural, note);
     // One-sided whole-figure motions (lean, bow) go one way and back.
     if (a.primitive == Primitive::Rock && base.pairing == Pairing::OneSide) a.vertical = 2;
-    explain(a, verb, target, words, mods, {note, which, paddle, beat, instead, spacing});
+    explain(a, verb, target, words, mods, {note, which, paddle, beat, instead, spacing, heading});
     if (!repeats(a)) plan.actions.push_back(std::move(a));
   }
 
