@@ -242,6 +242,31 @@ struct Builder {
     return beat;
   }
 
+  // A launch along the figure's nose: the climb goes that way, at least kMinClimb above the
+  // level (a plane drawn level climbs forward off the ground); the sideways slide and the shrink
+  // (away into the sky: on a rocket on a slant it read as going away, not off) have no place in
+  // it (false: `a` is left out). Its rumble stays sideways, on the ground. A creature (a bird
+  // taking off) keeps its climb: its wings and head, not its outline, say where it goes. A
+  // landing comes in along the nose when it points level or down (an arriving plane), else
+  // straight down (a plane drawn climbing, a parachute). `why` says which.
+  bool aim_flight(PlannedAction& a, const std::string& verb, std::string& why) {
+    if (verb == "takeoff" && !is_creature(figure)) {
+      if (!launch_axis().found) return why = "a launch goes straight up: " + axis->why, true;
+      if (a.primitive == Primitive::Slide || a.primitive == Primitive::Pulse) return false;
+      if (a.primitive == Primitive::Bob) a.heading = climbing(axis->nose);
+      why = "a launch goes along its axis towards its nose: " + axis->why;
+    }
+    if (verb == "land" && a.primitive == Primitive::Bob) {
+      a.vertical = -1;
+      const FlightAxis way = is_creature(figure) ? FlightAxis{} : flight_axis(rig);
+      const bool along = way.found && way.nose.y >= -kNoseDown;
+      a.heading = along ? way.nose : Vec2{0, 1};
+      why = along ? "a landing comes in along its nose: " + way.why
+                  : "a landing comes straight down: " + (is_creature(figure) ? std::string("a creature") : way.found ? std::string("its nose points up") : way.why);
+    }
+    return true;
+  }
+
   void add(const Verb& verb, const Action& base_in, Target target, const std::vector<int>& named_parts,
            const std::string& target_word, const Modifiers& mods, bool plural, const std::string& words,
            bool primary_retargeted, const std::string& instead = "", const LocatedPart* located = nullptr) {
@@ -295,30 +320,8 @@ struct Builder {
     // A launch climbs (never below where it stood), shrinks toward its top and rumbles sideways.
   a.apart = verb.name == "tumble" && target == Target::Whole;
   a.vertical = mods.vertical || verb.name != "takeoff" || a.primitive == Primitive::Slide ? mods.vertical : 1;
-    if (verb.name == "land" && target == Target::Whole) a.vertical = -1;
-    // A launch along the figure's nose: the climb goes that way, at least kMinClimb above the
-    // level (a plane drawn level climbs forward off the ground); the sideways slide and the
-    // shrink (away into the sky: on a rocket on a slant it read as going away, not off) have no
-    // place in it. Its rumble stays sideways, on the ground.
     std::string heading;
-    // A creature (a bird taking off) keeps its climb: its wings and head, not its outline, say
-    // where it goes.
-    if (verb.name == "takeoff" && target == Target::Whole && !is_creature(figure)) {
-      if (launch_axis().found) {
-        if (a.primitive == Primitive::Slide || a.primitive == Primitive::Pulse) return;
-        if (a.primitive == Primitive::Bob) a.heading = climbing(axis->nose);
-        heading = "a launch goes along its axis towards its nose: " + axis->why;
-      } else heading = "a launch goes straight up: " + axis->why;
-    }
-    // A landing comes in along the nose when it points level or down (an arriving plane), else
-    // straight down (a plane drawn climbing, a parachute).
-    if (verb.name == "land" && target == Target::Whole && a.primitive == Primitive::Bob) {
-      const FlightAxis way = flight_axis(rig);
-      const bool along = !is_creature(figure) && way.found && way.nose.y >= -kNoseDown;
-      a.heading = along ? way.nose : Vec2{0, 1};
-      heading = along ? "a landing comes in along its nose: " + way.why
-                      : "a landing comes straight down: " + (is_creature(figure) ? std::string("a creature") : way.found ? std::string("its nose points up") : way.why);
-    }
+    if (target == Target::Whole && !aim_flight(a, verb.name, heading)) return;
     if (a.primitive == Primitive::Undulate && target == Target::Whole) a.anchored = anchored_side(rig, true);
     if (a.primitive == Primitive::Bend && target == Target::Whole) a.anchored = bend_anchor(rig, verb.name == "flicker" ? FigureClass::Flame : figure);
     a.direction = mods.side != 0 ? mods.side : ((rng() & 1) ? 1 : -1);

@@ -49,6 +49,8 @@ double land_at(double u) {
   return 0;
 }
 
+double flight_at(bool lands, double u) { return lands ? -land_at(u) : launch_at(u); }
+
 CrawlPose crawl_at(double u) {
   double back = 0;
   const double s = forward_share(u, &back);

@@ -55,6 +55,10 @@ double land_at(double u);
 inline constexpr double kLandBack = 0.4;   // of a landing's loop when it is farthest back
 inline constexpr double kLandDown = 0.8;   // of a landing's loop when it is down
 
+// Where a figure launched (`lands` false) or landing is along its heading at loop time u:
+// launch_at, or minus land_at (behind it).
+double flight_at(bool lands, double u);
+
 // A crawl's pose at loop time u: the rear's place and the body's stretch, the front at rear +
 // stretch * 2 / kCrawlSteps. Rest (0, 0) at u = 0.
 CrawlPose crawl_at(double u);
