@@ -13,6 +13,7 @@
 #include "procedural/flight_axis.h"
 #include "procedural/motion_plan.h"
 #include "procedural/travel_profile.h"
+#include "procedural/travel_words.h"
 
 #include "motion_drawing.h"
 #include "wordnet_or_skip.h"
@@ -153,6 +154,10 @@ TEST_CASE("lands: a rocket pointing down comes in along its nose and stays down;
   const MotionPlan up = plan_from_prompt(parse_prompt("the rocket lands"), Drawing("rocket_slant.svg").rig, 1);
   REQUIRE(actions_of(up) == "bob");
   CHECK(up.actions[0].heading == Vec2{0, 1});
+  // Both get the room of a trip one way (pipeline/canvas_room.h); a hover does not.
+  CHECK(launches_figure(parse_prompt("the plane lands")));
+  CHECK(launches_figure(parse_prompt("the rocket blasts off")));
+  CHECK_FALSE(launches_figure(parse_prompt("the plane hovers")));
 }
 
 TEST_CASE("zz flight axis probe") {
