@@ -7,8 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "procedural/flight_axis.h"
 #include "procedural/motion_plan.h"
@@ -158,15 +156,6 @@ TEST_CASE("lands: a rocket pointing down comes in along its nose and stays down;
   CHECK(launches_figure(parse_prompt("the plane lands")));
   CHECK(launches_figure(parse_prompt("the rocket blasts off")));
   CHECK_FALSE(launches_figure(parse_prompt("the plane hovers")));
-}
-
-TEST_CASE("zz flight axis probe") {
-  const char* f = std::getenv("FLIGHT_PROBE");
-  if (!f) return;
-  const Scene scene = read_svg_file(f);
-  const Rig rig = build_rig(scene, read_source_names(f));
-  const FlightAxis a = flight_axis(rig);
-  std::printf("%s: found %d nose %.2f %.2f: %s\n", f, a.found, a.nose.x, a.nose.y, a.why.c_str());
 }
 
 }  // TEST_SUITE
