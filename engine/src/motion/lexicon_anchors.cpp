@@ -18,7 +18,7 @@ const std::vector<VerbAnchor> kVerbAnchors = {
   {"take_off", "takeoff"},
   {"lift_off", "takeoff"},
   {"blast_off", "takeoff"},
-  {"land", "sink"},
+  {"land", "touchdown"},
   // "explode" and "burst" are changes of integrity in WordNet (no motion above them); drawn,
   // a burst is a quick swelling.
   {"explode", "swell"},

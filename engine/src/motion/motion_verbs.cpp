@@ -73,8 +73,16 @@ const std::vector<Verb> kVerbs = {
   // quarter of its height where the canvas has room (fit_plan scales it down where not). It also
   // shrinks toward its top, going away into the sky (a negative pulse, about its top: motion_plan.cpp),
   // and rumbles as it goes: a figure filling its canvas had no room to climb and did not move at
-  // all. "Launches" is a launch (read as a drive, a rocket slid along the ground).
+  // all. "Launches" is a launch (read as a drive, a rocket slid along the ground). A figure whose
+  // nose is read (flight_axis.h: a rocket, a plane) goes along it instead, speeding up, without
+  // the slide and the shrink (motion_plan.cpp): on a rocket on a slant they read as going away.
   {"takeoff", {"takeoff", "liftoff", "blastoff", "launch"}, {{P::Bob, T::Whole, 0.25, 1}, {P::Slide, T::Whole, 0.06, 1}, {P::Pulse, T::Whole, -0.3, 1}, {P::Shake, T::Whole, 0.012, 8}}, P::Bob},
+  // Coming down to the ground (a plane landing: lexicon_anchors.cpp): the figure comes in along
+  // its nose when it points down (flight_axis.h), else straight down, slowing to rest, and stays
+  // (travel_profile.h's land_at). Read as a sink (a bob both ways and a rock), the arriving plane
+  // rocked with its runway and bobbed about where it stood. Its stem is "touchdown" only: WordNet
+  // reads "lands", "landed" as land (lexicon_anchors.cpp); a stem "land" would read "landscape".
+  {"land",    {"touchdown"},                    {{P::Bob, T::Whole, 0.25, 1}}, P::Bob},
   {"rise",    {"ris", "rose", "ascend"},        {{P::Bob, T::Whole, 0.06, 1}}, P::Bob},
   {"sink",    {"sink", "sank", "div", "descend"}, {{P::Bob, T::Whole, 0.06, 1}, {P::Rock, T::Whole, 4, 1}}, P::Bob},
   {"sway",    {"sway", "blow", "breez"},        {{P::Sway, T::Whole, 8, 1}}, P::Swing},

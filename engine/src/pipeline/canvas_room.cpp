@@ -93,6 +93,11 @@ double auto_room(const Scene& scene, const std::string& prompt, char* why, size_
     if (why) std::snprintf(why, size, "the prompt tells the figure a way to go and it spans %.0f %% of its canvas's width", 100 * span.x);
     return kTurnRoom;
   }
+  if (words && launches_figure(said)) {
+    if (why) std::snprintf(why, size, "the prompt launches the figure and it spans %.0f %% of its canvas's %s", 100 * std::max(span.x, span.y),
+                           span.x >= span.y ? "width" : "height");
+    return kTurnRoom;
+  }
   if (std::max(span.x, span.y) >= kFillsCanvas) {
     if (why) std::snprintf(why, size, "the drawing fills %.0f %% of its canvas's %s", 100 * std::max(span.x, span.y), span.x >= span.y ? "width" : "height");
     return kAutoRoom;

@@ -22,6 +22,8 @@
 // trip, 2 kTravelReach of its width, lies on the told side; at kAutoRoom the camel sent right
 // kept 45 % of it (a tenth of its width, read as marking time). At kTurnRoom a figure as wide
 // as its canvas has a fifth of its width on each side: its trip is at least 20 % of its width.
+// A figure the prompt launches (travel_words.h's launches_figure) gets kTurnRoom too, from
+// kTravelFills of the canvas's width or height: it goes off along its nose, one way.
 #pragma once
 
 #include <string>
@@ -46,7 +48,7 @@ FigureSpan figure_span(const Scene& scene);
 
 // The share of room stages.video.room=auto gives `scene` (its figure's span) for `prompt`:
 // kTurnRoom when the figure spans kTravelFills of the canvas's width and the prompt tells it a
-// way, else kAutoRoom when the figure fills kFillsCanvas of the canvas, or kTravelFills of its
+// way, or of its width or height and the prompt launches it, else kAutoRoom when the figure fills kFillsCanvas of the canvas, or kTravelFills of its
 // width and the prompt sends it across; else 0. `why` (of `size` chars, may be null) says which.
 double auto_room(const Scene& scene, const std::string& prompt, char* why, size_t size);
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "procedural/body_facing.h"
+#include "procedural/motion_plan_internal.h"
 #include "procedural/shape_facing.h"
 
 namespace svgm {
@@ -143,6 +144,22 @@ std::string arms_left_out(const Verb& v, size_t i, FigureClass figure, FigureCla
 std::string wings_left_out(const Verb& v, const PlannedAction& a) {
   if (!beats_wings_in_flight(v) || a.region != Region::Sides || !a.lobes.empty()) return "";
   return "no wings found to beat: " + v.name + "'s wing beat would bend the body's sides, left out";
+}
+
+int lone_or_raised_side(const Rig& rig, int part, Target target, bool one_sided) {
+  int sides = 0, raised = 0;  // bits: 1 left, 2 right
+  auto count = [&](const ArmLobe& l) {
+    const int bit = l.side < 0 ? 1 : l.side > 0 ? 2 : 0;
+    sides |= bit;
+    if (l.pivot.y - l.tip.y > std::fabs(l.tip.x - l.pivot.x)) raised |= bit;
+  };
+  if (target == Target::Arms && part >= 0)
+    for (const ArmLobe& l : rig.parts[static_cast<size_t>(part)].arm_lobes) count(l);
+  for (const ArmLobe& l : rig.limbs)
+    if (motion_plan_internal::lobe_serves(l.kind, target)) count(l);
+  if (sides == 1 || sides == 2) return sides == 1 ? -1 : 1;
+  if (target == Target::Arms && one_sided && (raised == 1 || raised == 2)) return raised == 1 ? -1 : 1;
+  return 0;
 }
 
 }  // namespace svgm

@@ -25,6 +25,15 @@ namespace svgm {
 int facing_side(const Rig& rig, FigureClass figure, std::string* why);
 inline int facing_side(const Rig& rig, std::string* why) { return facing_side(rig, FigureClass::None, why); }
 
+// The side (-1 left, +1 right, 0 none) a region bend of `target` on part `part` takes when the
+// prompt names none: the side its limbs are on when they are found on one side only (a polo
+// player's raised arm, the other under the water: the coin's other side bent the whole
+// figure's sides), else for `one_sided` arm verbs (a throw, a wave, a swing of a thing held; not
+// a punch's one arm then the other, nor one sent forward) the arm raised above its shoulder when
+// the other is not (a throw's arm holding the ball up, not the one held out). Limbs: the part's
+// arms drawn in its outline (for arms) and the silhouette's limbs that serve `target`.
+int lone_or_raised_side(const Rig& rig, int part, Target target, bool one_sided);
+
 // Keeps the parts (the rig's, by index) or the limbs of the silhouette that `mods.end` and
 // `mods.level` pick; unchanged when neither is set or when none would be left. Returns a note for
 // the plan's report ("hind: the rear limbs, the figure faces left (its head)"), empty when

@@ -2,6 +2,7 @@
 #include "procedural/motion_direction.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace svgm {
 
@@ -40,7 +41,11 @@ std::string direction_words(const PlannedAction& a) {
     case Primitive::Hop: return "up in an arc and back down";
     case Primitive::Toss: return "from hand to hand along arcs, each thing in its own phase (a cascade)";
     case Primitive::Windmill: return std::string(turn(a.direction)) + ", whole turns about the shoulders" + pairing(a);
-    case Primitive::Bob: return a.vertical > 0 ? "up from rest and back" : a.vertical < 0 ? "down from rest and back" : "up and down";
+    case Primitive::Bob:
+      if ((a.heading.x != 0 || a.heading.y != 0) && a.vertical < 0)
+        return "comes in from behind along " + std::to_string(static_cast<int>(std::lround(std::atan2(-a.heading.y, a.heading.x) * 180 / M_PI))) + " degrees above the right, slowing, and stays down";
+      if (a.heading.x != 0 || a.heading.y != 0) return "off along its nose, " + std::to_string(static_cast<int>(std::lround(std::atan2(-a.heading.y, a.heading.x) * 180 / M_PI))) + " degrees above the right, speeding up, and settles back";
+      return a.vertical > 0 ? "up from rest and back" : a.vertical < 0 ? "down from rest and back" : "up and down";
     case Primitive::Squash: return "down, squashed, and back up";
     case Primitive::Fall: return "down, each element in its own phase";
     case Primitive::Shake: return "a small jitter";

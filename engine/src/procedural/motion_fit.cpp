@@ -194,6 +194,9 @@ bool climbs_with_more(const MotionPlan& plan, size_t i) {
   return false;
 }
 
+// Whether `a` is a launch along the figure's nose (a travel of its own: flight_axis.h).
+bool launches(const PlannedAction& a) { return a.primitive == Primitive::Bob && (a.heading.x != 0 || a.heading.y != 0); }
+
 bool oscillates(const PlannedAction& a) {
   return a.primitive == Primitive::Swing || a.primitive == Primitive::Rock || a.primitive == Primitive::Bend ||
          a.primitive == Primitive::Sway || a.region != Region::None;
@@ -607,13 +610,13 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
           plan.actions[i].one_sided = side;
         }
       }
-    // A travel (a figure going somewhere: goes, inches) or a carried flight's body (a hover's
+    // A travel (a figure going somewhere: goes, inches; a launch) or a carried flight's body (a hover's
     // bob, a buzz's dart: kCarriedTravel) uses the room the canvas leaves, not the 0.8 step
     // under it: halved between the scale kept and the one broken, four times. Cut by 0.8 from a
     // reach of 15 %, an ant's march went 12 % where 13.4 % fitted. Each scale tried
     // must fit with the other motions too: alone, a rabbit's travel took the room its hops
     // needed, and the whole motion was cut to 80 %.
-    if (!all && best > 0 && best < scale && (plan.actions[i].goes || plan.actions[i].inches || carried_whole(plan.actions[i])))
+    if (!all && best > 0 && best < scale && (plan.actions[i].goes || plan.actions[i].inches || carried_whole(plan.actions[i]) || launches(plan.actions[i])))
       for (double hi = std::min(scale, best / 0.8), k = 0; k < 4; ++k) {
         const double mid = 0.5 * (best + hi);
         MotionPlan at = one, with_all = plan;  // alone and with the rest (a hop beside it)

@@ -53,7 +53,9 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
     case Primitive::Windmill: return about(pivot, Affine::rotate_deg(sign * 360.0 * (amp * t + phase)));
     case Primitive::Rock:
       return about(a.parts.empty() ? base : pivot, Affine::rotate_deg(a.vertical == 2 ? a.direction * amp * k : sign * amp * s));
-    case Primitive::Bob: {
+    case Primitive::Bob: {  // along a heading: a launch or a landing by amp of the figure's extent that way
+      if (const double reach = amp * (std::fabs(a.heading.x) * W + std::fabs(a.heading.y) * H) * flight_at(a.vertical < 0, u); a.heading != Vec2{})
+        return Affine::translate(a.heading.x * reach, a.heading.y * reach);
       const double ty = a.vertical == 1 ? -amp * H * k : a.vertical == -1 ? amp * H * k : -amp * H * s;
       return Affine::translate(0, ty);
     }

@@ -14,6 +14,7 @@
 #include "procedural/clause_target.h"
 #include "procedural/front_face.h"
 #include "procedural/figure_pieces.h"
+#include "procedural/flight_aim.h"
 #include "procedural/invisible_spin.h"
 #include "procedural/gait_travel.h"
 #include "procedural/limb_qualifiers.h"
@@ -161,6 +162,7 @@ struct Builder {
   std::mt19937 rng;
   MotionPlan plan;
   FigureClass figure = FigureClass::None;  // what the prompt says the figure is (its first clause's)
+  FlightAim flight;                        // where its launches and landings go (flight_aim.h)
 
   // Whether the whole figure, spun, turns about its vertical axis: it is not round (a wheel, a
   // clock face, a wheeled figure: those spin in the image's plane, their shape the same at every
@@ -267,15 +269,16 @@ struct Builder {
     const bool whole_turns = a.primitive == Primitive::Spin || a.primitive == Primitive::Turn;
     a.amp = amp * mods.size * (whole_turns ? 1 : 0.85 + 0.3 * std::uniform_real_distribution<double>(0, 1)(rng));
     a.cycles = std::max(1, static_cast<int>(std::lround(base.cycles * mods.speed)));
-    if (mods.once > 0) a.cycles = 1;
-    if (mods.once < 0) a.cycles = std::max(2, a.cycles);
+    a.cycles = mods.once > 0 ? 1 : mods.once < 0 ? std::max(2, a.cycles) : a.cycles;  // "once", "again and again"
     if (whole_turns) {
       a.amp = std::max(1.0, std::round((base.primitive == Primitive::Spin ? base.amp : 1) * (mods.speed > 1 ? 2 : 1)));  // whole turns
       a.cycles = 1;
     }
-    // A launch climbs (never below where it stood), shrinks toward its top and rumbles sideways.
-  a.apart = verb.name == "tumble" && target == Target::Whole;
-  a.vertical = mods.vertical || verb.name != "takeoff" || a.primitive == Primitive::Slide ? mods.vertical : 1;
+    // A launch climbs (never below where it stood), along its nose (flight_aim.h), and rumbles sideways.
+    a.apart = verb.name == "tumble" && target == Target::Whole;
+    a.vertical = mods.vertical || verb.name != "takeoff" || a.primitive == Primitive::Slide ? mods.vertical : 1;
+    std::string heading;
+    if (target == Target::Whole && !flight.aim(rig, figure, a, verb.name, heading)) return;
     if (a.primitive == Primitive::Undulate && target == Target::Whole) a.anchored = anchored_side(rig, true);
     if (a.primitive == Primitive::Bend && target == Target::Whole) a.anchored = bend_anchor(rig, verb.name == "flicker" ? FigureClass::Flame : figure);
     a.direction = mods.side != 0 ? mods.side : ((rng() & 1) ? 1 : -1);
@@ -332,8 +335,7 @@ struct Builder {
             verb.name + " has no " + target_name(target) + " on a figure held by a pole: it ripples");
         return;
       }
-    // A tail on a figure seen from the front is not drawn (front_face.h): the whole figure wags.
-    if (std::string why; target == Target::Tail && !note.empty() && a.primitive == Primitive::Swing && !(why = tail_not_drawn(rig)).empty())
+    if (std::string why; target == Target::Tail && !note.empty() && a.primitive == Primitive::Swing && !(why = tail_not_drawn(rig)).empty())  // front_face.h
       return add(verb, base_in, Target::Whole, {}, "", mods, plural, words, false, why + "; the whole figure " + verb.name + "s");
     if (limb_role && !note.empty() && rig.root >= 0 && a.primitive == Primitive::Swing)
       bend_region(a, target, base, mods, plural, note, which);
@@ -370,7 +372,7 @@ struct Builder {
     pick_sides(a, base, mods, plural, note);
     // One-sided whole-figure motions (lean, bow) go one way and back.
     if (a.primitive == Primitive::Rock && base.pairing == Pairing::OneSide) a.vertical = 2;
-    explain(a, verb, target, words, mods, {note, which, paddle, beat, instead, spacing});
+    explain(a, verb, target, words, mods, {note, which, paddle, beat, instead, spacing, heading});
     if (!repeats(a)) plan.actions.push_back(std::move(a));
   }
 
@@ -415,28 +417,10 @@ struct Builder {
           if (lobe_serves(l.kind, target)) consider(l);
         if (far) a.region_side = far->side;
       }
-      // No side asked: when the limbs of this kind are found on one side only (a polo player's
-      // raised arm, the other under the water), that side, not the coin's: on the other the
-      // whole figure's sides bent.
-      // With arms on both sides, a one-sided verb's (a throw, a wave, a swing of a thing held)
-      // is the one raised above its shoulder when the other is not: a throw's arm holding the
-      // ball up, not the one held out (the coin swung a polo player's). Not a punch's, one arm
-      // then the other: a fencer's thrust is the sword arm's, not the hand raised behind him.
-      if (mods.side == 0) {
-        int sides = 0, raised = 0;  // bits: 1 left, 2 right
-        auto count = [&](const ArmLobe& l) {
-          const int bit = l.side < 0 ? 1 : l.side > 0 ? 2 : 0;
-          sides |= bit;
-          if (l.pivot.y - l.tip.y > std::fabs(l.tip.x - l.pivot.x)) raised |= bit;
-        };
-        if (target == Target::Arms)
-          for (const ArmLobe& l : rig.parts[a.parts[0]].arm_lobes) count(l);
-        for (const ArmLobe& l : rig.limbs)
-          if (lobe_serves(l.kind, target)) count(l);
-        if (sides == 1 || sides == 2) a.region_side = sides == 1 ? -1 : 1;
-        else if (target == Target::Arms && base.pairing == Pairing::OneSide && !says_forward(mods) && (raised == 1 || raised == 2))
-          a.region_side = raised == 1 ? -1 : 1;
-      }
+      // No side asked: the side its limbs are on, or its raised arm (limb_qualifiers.h).
+      if (mods.side == 0)
+        if (const int side = lone_or_raised_side(rig, a.parts[0], target, base.pairing == Pairing::OneSide && !says_forward(mods)); side != 0)
+          a.region_side = side;
     }
     // Arms drawn in the outline (part_rig.h) bend instead of the sides, when there is one on
     // every side that moves: a girl waving both arms has one lobe, her raised sleeve, and the

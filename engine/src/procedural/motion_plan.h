@@ -82,6 +82,9 @@ struct PlannedAction {
   bool rolls = false;           // Spin of wheels: they roll with the figure's Slide of the same
                                 // words (the turn follows the distance, both ways), instead of
                                 // whole turns
+  Vec2 heading{0, 0};           // Bob of the whole figure (a launch's climb, a landing): the
+                                // unit way it goes, towards its nose (flight_axis.h), instead of
+                                // straight up or down; {0, 0}: none
   bool apart = false;           // Whole: each separate piece of the figure (figure_pieces.h)
                                 // moves its own way (a tumble of two leaves)
   bool closed_form = false;     // region bends: the closed-form bend, not the mesh (region_bend.h:

@@ -19,8 +19,6 @@ constexpr double kWide = 0.6, kBottom = 0.05, kTop = 0.4;
 // crest line of its waves), belong to it.
 constexpr double kCrest = 0.05;
 
-std::vector<char> band_paths(const Scene& scene, const Rig& rig, double wide);
-
 }  // namespace
 
 bool names_ground(const std::string& p) {
@@ -31,11 +29,12 @@ bool names_ground(const std::string& p) {
 // noun after a preposition of place that names no part of the figure; empty when none does.
 // A launch leaves a ground ("takes off from the runway"), named or not ("off the ground"): the
 // runway drawn under a plane rose with it (the support band, when the drawing has one, stays).
+// So does a landing come down on one (an arriving plane's runway rocked with it).
 std::string ground_words(const ParsedPrompt& prompt, const Rig& rig) {
   using motion_plan_internal::parts_for;
   bool launch = false;
   for (const Clause& c : prompt.clauses) {
-    const bool leaves = std::any_of(c.verbs.begin(), c.verbs.end(), [](const Verb* v) { return v && v->name == "takeoff"; });
+    const bool leaves = std::any_of(c.verbs.begin(), c.verbs.end(), [](const Verb* v) { return v && (v->name == "takeoff" || v->name == "land"); });
     launch = launch || leaves;
     for (const auto& n : c.nouns) {
       if (!n.object_of_preposition || n.target != Target::Named || !(names_ground(n.preposition) || (leaves && n.preposition == "from")))
@@ -47,22 +46,16 @@ std::string ground_words(const ParsedPrompt& prompt, const Rig& rig) {
   return launch ? "off the ground" : "";
 }
 
-std::vector<char> support_paths(const Scene& scene, const Rig& rig) { return band_paths(scene, rig, kWide); }
-
-std::vector<char> ground_band_paths(const Scene& scene, const Rig& rig) { return band_paths(scene, rig, kGroundWide); }
-
 namespace {
 
-// The band at least `wide` of the figure's width (see support_band.h), per path.
-std::vector<char> band_paths(const Scene& scene, const Rig& rig, double wide) {
-  using namespace part_rig_internal;
-  const size_t n = scene.paths.size();
+// The band at least `wide` of the figure's width among the paths whose boxes are `box` (see
+// support_band.h), per path.
+std::vector<char> band_of(const std::vector<RigBox>& box, const Rig& rig, double wide) {
+  const size_t n = box.size();
   std::vector<char> out(n, 0);
   const RigBox& F = rig.figure;
   if (F.empty()) return out;
   const double W = F.w(), H = F.h();
-  std::vector<RigBox> box(n);
-  for (size_t i = 0; i < n; ++i) box[i] = path_box(scene.paths[i]);
   auto figure_path = [&](size_t i) {
     const int g = i < rig.part_of_path.size() ? rig.part_of_path[i] : -1;
     return g < 0 || rig.parts[g].role != Role::Background;
@@ -90,5 +83,22 @@ std::vector<char> band_paths(const Scene& scene, const Rig& rig, double wide) {
 }
 
 }  // namespace
+
+static std::vector<RigBox> path_boxes(const Scene& scene) {
+  std::vector<RigBox> box(scene.paths.size());
+  for (size_t i = 0; i < box.size(); ++i) box[i] = part_rig_internal::path_box(scene.paths[i]);
+  return box;
+}
+
+std::vector<char> support_paths(const Scene& scene, const Rig& rig) { return band_of(path_boxes(scene), rig, kWide); }
+
+std::vector<char> ground_band_paths(const Scene& scene, const Rig& rig) { return band_of(path_boxes(scene), rig, kGroundWide); }
+
+std::vector<char> support_paths(const Rig& rig) {
+  std::vector<RigBox> box(rig.part_of_path.size());
+  for (const RigElement& e : rig.elements)
+    if (e.path >= 0 && static_cast<size_t>(e.path) < box.size()) box[e.path].add(e.box);
+  return band_of(box, rig, kWide);
+}
 
 }  // namespace svgm

@@ -29,6 +29,10 @@ std::string ground_words(const ParsedPrompt& prompt, const Rig& rig);
 
 // Per path of the scene: 1 when it belongs to the band the figure moves on (see above).
 std::vector<char> support_paths(const Scene& scene, const Rig& rig);
+// The same from the rig alone (each path's box from its drawn elements, Rig::elements: the
+// figure's paths have the same boxes), for the plan, which has no scene (flight_axis.h leaves the
+// band out of a launched figure's shape).
+std::vector<char> support_paths(const Rig& rig);
 
 // The same band when it is as wide as the whole figure (kGroundWide of its width), named in the
 // prompt or not: the water a polo player stands in up to the chest, the sea under a surfer. It

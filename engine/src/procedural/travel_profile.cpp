@@ -29,6 +29,28 @@ double going_at(double u) {
   return s >= 0 ? 2 * s - 1 : 1 - 2 * ease(back);
 }
 
+double launch_at(double u) {
+  const double c = u - std::floor(u);
+  if (c < kIgnitionShare) return 0;
+  if (c < kLaunchOut) {
+    const double x = (c - kIgnitionShare) / (kLaunchOut - kIgnitionShare);
+    return x * x * x * (4 - 3 * x);
+  }
+  return 1 - ease((c - kLaunchOut) / (1 - kLaunchOut));
+}
+
+double land_at(double u) {
+  const double c = u - std::floor(u);
+  if (c < kLandBack) return ease(c / kLandBack);
+  if (c < kLandDown) {
+    const double x = 1 - (c - kLandBack) / (kLandDown - kLandBack);
+    return x * x;
+  }
+  return 0;
+}
+
+double flight_at(bool lands, double u) { return lands ? -land_at(u) : launch_at(u); }
+
 CrawlPose crawl_at(double u) {
   double back = 0;
   const double s = forward_share(u, &back);

@@ -18,6 +18,11 @@
 // to as far as it goes, turns back, and comes home facing its own way, ending at rest: a walk
 // there and back, all of it forwards. Its reach is on the told side only (the way home is the
 // way out), so the same sweep as the steady loop's lies wholly on that side.
+//
+// A launch (flight_axis.h: a rocket, a plane going off along its nose) has no way home in a
+// loop but back: it stands through its ignition (kIgnitionShare of the loop, its rumble), goes
+// off gathering speed to kLaunchOut of the loop, and settles back, eased, in the rest: the going
+// quick, the return slow, so what is seen is the launch.
 #pragma once
 
 #include "svgmotion/affine.h"
@@ -26,6 +31,8 @@ namespace svgm {
 
 inline constexpr double kForwardShare = 2.0 / 3;  // of the loop spent going forward
 inline constexpr int kCrawlSteps = 2;             // stretch-and-gather steps in one forward run
+inline constexpr double kIgnitionShare = 0.12;    // of a launch's loop spent at rest, rumbling
+inline constexpr double kLaunchOut = 0.55;        // of a launch's loop when it is farthest out
 
 // Where a figure travelling steadily is at loop time u (in cycles; any real): -1 (behind its
 // rest place) to +1 (ahead), 0 at u = 0.
@@ -35,6 +42,22 @@ struct CrawlPose {
   double rear = 0;     // the rear's place, -1 to +1 as going_at's
   double stretch = 0;  // the body's extension, 0 to 1 step (a step: 2 / kCrawlSteps of rear's unit)
 };
+
+// How far out a launch is at loop time u (in cycles; any real): 0 at rest through the ignition,
+// out to 1 at kLaunchOut (x^3 (4 - 3x) of the way's time x: speeding up most of the way, still at
+// the far end), back to 0 by the loop's end (a half cosine).
+double launch_at(double u);
+
+// How far back along its way in a landing is at loop time u: 0 (landed) at u = 0, eased back
+// out to 1 by kLandBack, then coming in, slowing down ((1 - x)^2), to rest at kLandDown, and
+// resting there to the loop's end: the arrival is the quick, seen part, the rest the stay.
+double land_at(double u);
+inline constexpr double kLandBack = 0.4;   // of a landing's loop when it is farthest back
+inline constexpr double kLandDown = 0.8;   // of a landing's loop when it is down
+
+// Where a figure launched (`lands` false) or landing is along its heading at loop time u:
+// launch_at, or minus land_at (behind it).
+double flight_at(bool lands, double u);
 
 // A crawl's pose at loop time u: the rear's place and the body's stretch, the front at rear +
 // stretch * 2 / kCrawlSteps. Rest (0, 0) at u = 0.

@@ -46,4 +46,11 @@ bool carries_figure_about(const ParsedPrompt& prompt) {
   return false;
 }
 
+bool launches_figure(const ParsedPrompt& prompt) {
+  for (const Clause& c : prompt.clauses)
+    for (const Verb* v : c.verbs)
+      if (v && (v->name == "takeoff" || v->name == "land")) return true;
+  return false;
+}
+
 }  // namespace svgm

@@ -29,4 +29,11 @@ bool sends_figure_one_way(const ParsedPrompt& prompt);
 // size (pipeline/canvas_room.h gives them room from kTravelFills).
 bool carries_figure_about(const ParsedPrompt& prompt);
 
+// Whether a prompt launches or lands its figure (a clause whose verb is a takeoff: "takes off",
+// "blasts off", "launches"; or a landing): it goes off along its nose (flight_axis.h), or comes
+// in along it, by a quarter of its size, which a figure filling its canvas had no room for at
+// kAutoRoom (an arriving plane came in from 12 % of its length); pipeline/canvas_room.h gives it
+// kTurnRoom from kTravelFills of the canvas's width or height.
+bool launches_figure(const ParsedPrompt& prompt);
+
 }  // namespace svgm
