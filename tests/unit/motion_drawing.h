@@ -14,6 +14,16 @@
 
 namespace svgm::test {
 
+// A drawn element whose control points are the corners of the box x0,y0-x1,y1 (its area the
+// box's), filled with luma `lightness`: an eye, a body, a mark on a rig made by hand.
+inline RigElement box_element(double x0, double y0, double x1, double y1, double lightness) {
+  RigElement e;
+  for (Vec2 q : {Vec2{x0, y0}, Vec2{x1, y0}, Vec2{x1, y1}, Vec2{x0, y1}}) e.box.add(q), e.points.push_back(q);
+  e.area = (x1 - x0) * (y1 - y0);
+  e.lightness = lightness;
+  return e;
+}
+
 inline std::string motion_data(const char* name) { return svgm::test::data_path(std::string("motion/") + name); }
 
 // Largest displacement from frame 0 of the points of each path of `scene`, over F frames of

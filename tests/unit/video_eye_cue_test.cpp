@@ -20,15 +20,7 @@ using svgm::test::Drawing;
 
 namespace {
 
-// An element whose control points are the corners of the box x0,y0-x1,y1 (its area the box's),
-// filled with luma `lightness`.
-RigElement blob(double x0, double y0, double x1, double y1, double lightness) {
-  RigElement e;
-  for (Vec2 q : {Vec2{x0, y0}, Vec2{x1, y0}, Vec2{x1, y1}, Vec2{x0, y1}}) e.box.add(q), e.points.push_back(q);
-  e.area = (x1 - x0) * (y1 - y0);
-  e.lightness = lightness;
-  return e;
-}
+RigElement blob(double x0, double y0, double x1, double y1, double l) { return svgm::test::box_element(x0, y0, x1, y1, l); }
 
 // A figure 200 x 100 from (0, 0) whose body is a light element over all of it.
 Rig side_figure() {

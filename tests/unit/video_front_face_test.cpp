@@ -12,20 +12,14 @@
 #include "procedural/motion_plan.h"
 #include "procedural/prompt_parse.h"
 #include "svgmotion/svg_reader.h"
+#include "motion_drawing.h"
 #include "test_paths.h"
 
 using namespace svgm;
 
 namespace {
 
-// An element whose control points are the corners of the box x0,y0-x1,y1, filled with luma `l`.
-RigElement mark(double x0, double y0, double x1, double y1, double l) {
-  RigElement e;
-  for (Vec2 q : {Vec2{x0, y0}, Vec2{x1, y0}, Vec2{x1, y1}, Vec2{x0, y1}}) e.box.add(q), e.points.push_back(q);
-  e.area = (x1 - x0) * (y1 - y0);
-  e.lightness = l;
-  return e;
-}
+RigElement mark(double x0, double y0, double x1, double y1, double l) { return svgm::test::box_element(x0, y0, x1, y1, l); }
 
 // A light figure 200 x 200 from (0, 0).
 Rig face_rig() {
