@@ -129,6 +129,10 @@ class ClRaster {
   void set_tape_pool_capacity(int entries);
   // Bands of the last pass whose tape was not in the pool (raster_backward replayed them).
   int tape_pool_misses();
+  // For tests: the entries the last pass's bands put in the pool (the most of any chunk of
+  // frames). Entries whose draw is hidden at their pixel are not among them
+  // (kernels/raster_backward.cl, drop_hidden_entries).
+  int tape_pool_entries();
   // The loss pass runs raster_taped, the y-blur and raster_backward over this many frames at a
   // time, so the residuals X' and E' (24 bytes per pixel) exist for those frames only: at most
   // kLossChunkBytes of them, whatever the clip's length (the same bits for any count: each

@@ -201,6 +201,11 @@ int ClRaster::tape_pool_misses() {
   return static_cast<int>(std::count_if(at.begin(), at.end(), [](const cl_int2& a) { return a.s[0] < 0; }));
 }
 
+int ClRaster::tape_pool_entries() {
+  finish_pool_read();
+  return pool_asked_;
+}
+
 void ClRaster::set_loss_chunk_frames(int n) {
   if (n < 1) throw Error("internal: loss chunk of " + std::to_string(n) + " frames");
   release_loss_buffers();
