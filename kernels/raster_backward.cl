@@ -26,6 +26,8 @@
  *     g(p) = ∂L/∂a_i(p) = Σ_c ∂L/∂C_c(p) · T_i(p) (c_i − B_i(p))_c · alpha_i · f'(a),
  *
  * f' the slope of the fill rule (nonzero: sign(a) where |a| < 1; evenodd: the sign of the fold).
+ * An entry whose draw is hidden at its pixel (V = 0, or below such an entry there) has T = 0 and
+ * g = 0: raster_taped keeps it out of the pool (drop_hidden_entries).
  * No paths x pixels buffer and no second accumulation of the lines: the tape holds 24 bytes
  * per edge pixel of the band. (The backward pass used to accumulate every draw's lines again
  * and sweep its spans top-down for T: half of its time. T's factors are now multiplied in
