@@ -398,15 +398,15 @@ inline int replay_band(__global const float4* L, __global const float4* B,
  * written as g = 0 or left cleared (the walk's ±0 terms add nothing to a sum begun at +0).
  * In a layered drawing a fifth to a third of the entries (the train and sushi of `bench
  * raster`): the pool's copies of them both ways and the backward's visit go. Marks a dropped
- * entry with V = −1 (a kept V is >= 0) and returns how many are kept. `flag` is scratch, one
- * int per pixel of the band. */
-inline int drop_hidden_entries(__local float2* aux, int tp, __local int* flag) {
-  for (int e = 0; e < tp; ++e) flag[(int)aux[e].x] = 0;
+ * entry with V = −1 (a kept V is >= 0) and returns how many are kept. `last` is replay_band's
+ * (each pixel's last entry), overwritten: a pixel's first visit here finds its own index there
+ * (>= 0), later ones whether the entry above was hidden (−2) or not (−3). */
+inline int drop_hidden_entries(__local float2* aux, int tp, __local int* last) {
   int kept = 0;
   for (int e = tp - 1; e >= 0; --e) { /* (draw, row, x) backwards: each pixel's entries top-down */
     const int px = (int)aux[e].x;
-    const int hidden = flag[px] || aux[e].y == 0.0f;
-    flag[px] = hidden;
+    const int hidden = last[px] == -2 || aux[e].y == 0.0f;
+    last[px] = hidden ? -2 : -3;
     if (hidden)
       aux[e].y = -1.0f;
     else
