@@ -55,6 +55,9 @@ TEST_CASE("leave way: 'away' and 'off' after a verb that gets somewhere say the 
   CHECK_FALSE(leaves("the ship rocks on the waves"));
   CHECK_FALSE(leaves("the cat jumps off the table"));
   CHECK_FALSE(leaves("the flag waves"));
+  // A launch's own "off" is the launch's (flight_aim.h), not a leaving.
+  CHECK_FALSE(leaves("the flying saucer blasts off"));
+  CHECK_FALSE(leaves("the jet takes off into the sky"));
   // It travels across: the pipeline gives it room (travel_words.h).
   CHECK(sends_figure_across(parse_prompt("the ship sails away")));
 }

@@ -14,7 +14,11 @@ namespace svgm {
 
 bool says_leaving(const Clause& c) {
   bool moves = false;
-  for (const Verb* v : c.verbs) moves = moves || (v && (locomotes(*v) || v->name == "move"));
+  // A launch's or a landing's "off" is its own ("takes off", "blasts off": flight_aim.h).
+  for (const Verb* v : c.verbs) {
+    if (v && (v->name == "takeoff" || v->name == "land")) return false;
+    moves = moves || (v && (locomotes(*v) || v->name == "move"));
+  }
   if (!moves) return false;
   std::vector<std::string> w;
   std::istringstream in(c.text);
