@@ -88,4 +88,19 @@ TEST_CASE("leave way: a rocket with no facing flies off nose first: up and right
   CHECK(going_ways(plan_from_prompt(p, m.rig, 1)) == std::vector<int>{-1});
 }
 
+TEST_CASE("leave way: a boat sailing away leaves its sea where it is, as a launch leaves its ground") {
+  if (!wordnet_or_skip()) return;
+  const Drawing d("boat_on_sea.svg");
+  const ParsedPrompt p = parse_prompt("the boat sails away");
+  MotionPlan plan = plan_from_prompt(p, d.rig, 1);
+  CHECK(going_ways(plan).size() == 1);
+  const int F = 13;
+  fit_plan(d.scene, d.rig, plan, F, 9);
+  const std::vector<double> moved = d.travel(plan, F);
+  CAPTURE(moved[0]);
+  CAPTURE(moved[1]);
+  CHECK(moved[0] < 0.5);  // the sea (path 0) stays
+  CHECK(moved[1] > 3);    // the hull goes (a travel of 15 % of the figure's 100 units, less what the canvas keeps)
+}
+
 }  // TEST_SUITE
