@@ -15,6 +15,7 @@
 #include "procedural/front_face.h"
 #include "procedural/figure_pieces.h"
 #include "procedural/flight_aim.h"
+#include "procedural/leave_way.h"
 #include "procedural/invisible_spin.h"
 #include "procedural/gait_travel.h"
 #include "procedural/limb_qualifiers.h"
@@ -563,6 +564,8 @@ void travel_where_told(Builder& b, const Clause& c, size_t from, const ParsedPro
   Modifiers mods = c.mods;
   std::string why = "told where it goes: the figure goes there steadily and glides back";
   // A swimmer's strokes (toss_and_stroke.h) loop in place: gliding back, a crawl swam backwards.
+  // A figure told it leaves ("sails away", "flies off") goes the way it faces (leave_way.h).
+  if (mods.travel == 0 && !stroke_reading(c)) mods.travel = leaving_side(prompt, c, b.rig, &why);
   if (mods.travel == 0 && (!is_gait(*mover, c.figure) || stroke_reading(c) || (mods.travel = untold_travel(prompt, c, b.rig, &why)) == 0)) return;
   static const Action kTravelSlide{Primitive::Slide, Target::Whole, kTravelReach, 1};
   for (size_t i = from; i < b.plan.actions.size(); ++i)

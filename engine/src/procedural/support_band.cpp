@@ -5,6 +5,7 @@
 
 #include "procedural/motion_plan_internal.h"
 #include "procedural/part_rig_internal.h"
+#include "procedural/travel_words.h"
 
 namespace svgm {
 
@@ -35,7 +36,9 @@ std::string ground_words(const ParsedPrompt& prompt, const Rig& rig) {
   bool launch = false;
   for (const Clause& c : prompt.clauses) {
     const bool leaves = std::any_of(c.verbs.begin(), c.verbs.end(), [](const Verb* v) { return v && (v->name == "takeoff" || v->name == "land"); });
-    launch = launch || leaves;
+    // A figure that leaves untold which way ("the ship sails away": leave_way.h) leaves its
+    // ground as a launch does: the sea stays while the ship goes.
+    launch = launch || leaves || (c.mods.travel == 0 && says_leaving(c));
     for (const auto& n : c.nouns) {
       if (!n.object_of_preposition || n.target != Target::Named || !(names_ground(n.preposition) || (leaves && n.preposition == "from")))
         continue;

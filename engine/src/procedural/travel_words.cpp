@@ -6,12 +6,36 @@
 #include "procedural/motion_plan_internal.h"
 #include "procedural/self_movers.h"
 
+#include <sstream>
+#include <string>
+#include <vector>
+
 namespace svgm {
+
+bool says_leaving(const Clause& c) {
+  bool moves = false;
+  // A launch's or a landing's "off" is its own ("takes off", "blasts off": flight_aim.h).
+  for (const Verb* v : c.verbs) {
+    if (v && (v->name == "takeoff" || v->name == "land")) return false;
+    moves = moves || (v && (locomotes(*v) || v->name == "move"));
+  }
+  if (!moves) return false;
+  std::vector<std::string> w;
+  std::istringstream in(c.text);
+  for (std::string x; in >> x;) w.push_back(x);
+  for (size_t i = 0; i < w.size(); ++i) {
+    const std::string next = i + 1 < w.size() ? w[i + 1] : std::string();
+    const bool names_where = next == "the" || next == "a" || next == "an" || next == "its" || next == "his" || next == "her" || next == "their";
+    if (w[i] == "away" || (w[i] == "off" && !names_where)) return true;
+  }
+  return false;
+}
 
 bool sends_figure_across(const ParsedPrompt& prompt) {
   bool stays = false, told = false, untold = false;
   for (const Clause& c : prompt.clauses) {
     stays = stays || stays_put(c.text);
+    told = told || says_leaving(c);
     for (const PromptNoun& n : c.nouns) stays = stays || (!n.object_of_preposition && motion_plan_internal::is_limb_target(n.target));
     for (const Verb* v : c.verbs)
       if (gets_somewhere(*v) || v->name == "move") {

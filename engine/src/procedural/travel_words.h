@@ -36,4 +36,10 @@ bool carries_figure_about(const ParsedPrompt& prompt);
 // kTurnRoom from kTravelFills of the canvas's width or height.
 bool launches_figure(const ParsedPrompt& prompt);
 
+// Whether clause `c` says its figure leaves: a verb by which it gets somewhere (gait_travel.h's
+// locomotes: a drive, a sail, a flight, a gait) with "away" or "off" as its particle ("sails
+// away", "flies off into the sky"; not "off the table", where "off" says where from). It goes
+// the way it faces (leave_way.h), across the canvas: sends_figure_across counts it.
+bool says_leaving(const Clause& c);
+
 }  // namespace svgm
