@@ -685,7 +685,7 @@ Ranking rank(std::vector<CandidateScore> scores) {
   size_t n = 0;
   for (const auto& c : r.candidates) n += c.error.empty() ? 1 : 0;
   r.reason = fmt("lowest score %.3f of %.0f candidate", b.score + b.motion_penalty, static_cast<double>(n)) + (n == 1 ? "" : "s");
-  if (b.motion_penalty > 0) r.reason += fmt(" (%.3f, and %.3f for moving less than the most moving)", b.score, b.motion_penalty);
+  if (b.motion_penalty >= 0.0005) r.reason += fmt(" (%.3f, and %.3f for moving less than the most moving)", b.score, b.motion_penalty);
   if (r.candidates.size() > 1 && r.candidates[1].error.empty())
     r.reason += " (next: " + r.candidates[1].name + fmt(", %.3f)", r.candidates[1].score + r.candidates[1].motion_penalty);
   if (b.defects.empty()) {
