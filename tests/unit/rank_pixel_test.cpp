@@ -216,6 +216,41 @@ struct TempDir {
   }
 };
 
+
+// A line drawing of an animal side on, turning round about x = 48 as the procedural video turns
+// one (gait_travel.h): its width 1 in frames 0-7, 0.62 and 0.35 of it in frames 8 and 9, then
+// mirrored, -1, from frame 10 on (the ranker's keyframes of an openmoji water buffalo turning
+// caught it so). A body filled red, outlined in green 1.3 px wide; three legs drawn as blue
+// strokes 1.3 px wide, and one filled leg of olive 4 px wide standing just behind a blue one.
+// Points move; strokes keep their width, as the procedural video draws them. With
+// `grown_leg`, the olive leg is three times as long in the two narrow frames: its area grows
+// while the figure narrows, which no turn does.
+const std::vector<Rgba> kLinePalette = {{0.84f, 0.16f, 0.16f, 1}, {0.16f, 0.64f, 0.16f, 1}, {0.12f, 0.2f, 0.85f, 1},
+                                        {0.5f, 0.5f, 0.f, 1}};
+
+std::vector<float> draw_turning_animal(int k, bool grown_leg) {
+  const double w = k < 8 ? 1.0 : k == 8 ? 0.62 : k == 9 ? 0.35 : -1.0;
+  const double leg_len = grown_leg && (k == 8 || k == 9) ? 36 : 12;
+  auto X = [&](double x) { return 48 + w * (x - 48); };
+  auto near_segment = [](double u, double v, double x0, double y0, double x1, double y1, double half) {
+    const double dx = x1 - x0, dy = y1 - y0, dd = dx * dx + dy * dy;
+    const double a = dd > 0 ? std::clamp(((u - x0) * dx + (v - y0) * dy) / dd, 0.0, 1.0) : 0.0;
+    return std::hypot(u - x0 - a * dx, v - y0 - a * dy) < half;
+  };
+  return supersampled([&](double u, double v, double* c) {
+    auto set = [&](const Rgba& q) { c[0] = q.r, c[1] = q.g, c[2] = q.b; };
+    const double bx0 = std::min(X(22), X(74)), bx1 = std::max(X(22), X(74));
+    // The olive leg behind, then the body and its outline, then the blue legs over them.
+    const double ox0 = std::min(X(40), X(44)), ox1 = std::max(X(40), X(44));
+    if (u > ox0 && u < ox1 && v > 54 && v < 54 + leg_len) set(kLinePalette[3]);
+    if (u > bx0 && u < bx1 && v > 34 && v < 56) set(kLinePalette[0]);
+    const double corners[5][2] = {{22, 34}, {74, 34}, {74, 56}, {22, 56}, {22, 34}};
+    for (int i = 0; i < 4; ++i)
+      if (near_segment(u, v, X(corners[i][0]), corners[i][1], X(corners[i + 1][0]), corners[i + 1][1], 0.65)) set(kLinePalette[1]);
+    for (double lx : {28.0, 46.0, 68.0})
+      if (near_segment(u, v, X(lx), 56, X(lx + 2), 70, 0.65)) set(kLinePalette[2]);
+  });
+}
 }  // namespace
 
 TEST_SUITE("fit") {
@@ -340,6 +375,63 @@ TargetFrames translucent_over(double from_x, double from_y, double to_x, double 
         for (int i = 0; i < 3; ++i) c[i] = 0.5 * c[i] + 0.5 * (i == 0 ? 1.0 : i == 1 ? 0.9 : 0.0);
     });
   });
+}
+
+TEST_CASE("rank pixel: a line drawing turning round keeps its colours; a part growing as it narrows does not") {
+  // Counted in whole pixels and against no change of the figure, the olive leg fell from 48 px
+  // to a few as the figure went edge on in one keyframe and came back: a "continuity" defect,
+  // and the procedural video left every such turn out.
+  const CandidateScore turn = score_candidate(candidate_of([](int k) { return draw_turning_animal(k, false); }), kLinePalette);
+  INFO(turn.to_json().dump(2));
+  CHECK(turn.continuity.value < 0.5);
+  CHECK_FALSE(has(turn.defects, "continuity"));
+  const CandidateScore grown = score_candidate(candidate_of([](int k) { return draw_turning_animal(k, true); }), kLinePalette);
+  INFO(grown.to_json().dump(2));
+  CHECK(has(grown.defects, "continuity"));
+}
+
+TEST_CASE("rank pixel: a stroke thinner than a pixel keeps its area as it slides across the pixel grid") {
+  // A blue stroke 0.8 px wide, 60 px long, sliding right 0.1 px a frame beside a red disc that
+  // stands still. Counted in whole pixels, it was 60 px where it lay on one column (80 % of the
+  // pixel: near enough its colour) and 0 px where it straddled two (40 % of each: near none),
+  // "a colour vanishes" on a steady slide, as a bus's door did turning edge on. Shared by
+  // coverage, each frame holds about 48 px of it.
+  const CandidateScore s = score_candidate(candidate_of([](int k) {
+    const double x = 40.1 + 0.1 * k;
+    return supersampled([&](double u, double v, double* c) {
+      auto set = [&](const Rgba& q) { c[0] = q.r, c[1] = q.g, c[2] = q.b; };
+      if ((u - 70) * (u - 70) + (v - 48) * (v - 48) < 10.0 * 10.0) set(kLinePalette[0]);
+      if (std::abs(u - x) < 0.4 && v > 18 && v < 78) set(kLinePalette[2]);
+    });
+  }), kLinePalette);
+  INFO(s.to_json().dump(2));
+  CHECK(s.continuity.value < 0.5);
+  CHECK_FALSE(has(s.defects, "continuity"));
+}
+
+TEST_CASE("rank pixel: of clean candidates, the one that moves clearly more wins over a slightly cleaner still one") {
+  // tw_ambulance_speeds (session 54): the chosen candidate moved 0.46 of its siblings' motion.
+  auto clean = [](const char* name, double score, double motion) {
+    CandidateScore c;
+    c.name = name, c.score = score, c.mean_motion = motion;
+    return c;
+  };
+  std::vector<CandidateScore> s = {clean("02.mp4", 0.002, 0.1235), clean("03.mp4", 0.065, 0.2647), clean("00.mp4", 0.071, 0.2673)};
+  CandidateScore flagged = clean("01.mp4", 0.001, 0.3);
+  flagged.defects = {"continuity"};
+  s.push_back(flagged);
+  const Ranking r = rank(s);
+  CHECK(r.chosen == "03.mp4");
+  CHECK(r.candidates.back().name == "01.mp4");  // flagged: after every clean one, and not charged
+  CHECK(r.candidates.back().motion_penalty == 0);
+  // The most moving clean candidate pays nothing; half of its motion pays kMotionPreference / 2.
+  for (const auto& c : r.candidates)
+    if (c.name == "00.mp4") CHECK(c.motion_penalty == 0);
+  const Ranking half = rank({clean("a", 0.0, 0.1), clean("b", 0.0, 0.2)});
+  CHECK(half.chosen == "b");
+  CHECK(half.candidates[1].motion_penalty == doctest::Approx(kMotionPreference / 2));
+  // Close motion leaves the choice to the score.
+  CHECK(rank({clean("a", 0.01, 0.19), clean("b", 0.05, 0.2)}).chosen == "a");
 }
 
 TEST_CASE("rank pixel: a translucent shape's blend the first frame shows is no invented content") {

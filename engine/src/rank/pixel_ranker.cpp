@@ -2,6 +2,7 @@
 #include "rank/pixel_ranker.h"
 
 #include "generators/candidates.h"
+#include "rank/colour_coverage.h"
 
 #include <algorithm>
 #include <array>
@@ -117,6 +118,8 @@ nlohmann::json CandidateScore::to_json() const {
                   {"out_of_plane", sig(out_of_plane)},
                   {"motion", sig(motion)}};
   j["defects"] = defects;
+  j["mean_motion"] = mean_motion;
+  j["motion_penalty"] = motion_penalty;
   return j;
 }
 
@@ -241,42 +244,6 @@ std::vector<Rgb> rest_colours(const TargetFrames& t, const Rgb& bg, const std::v
   return centres;
 }
 
-// Areas per colour, without the pixels that are a mixture of two of their neighbours'
-// colours: where two shapes meet, anti-aliasing and the colour bleeding of 4:2:0 video
-// leave a seam of in-between colours, and among twenty-odd maximally distinct palette
-// colours one often lies near the middle of two others. A ladybird's spot (36 px at the
-// analysis size) counted 36-42 px in some frames and 90-107 px in others as it crawled
-// steadily up, the seams of its shell and head counting for it as they crossed pixel
-// rows, and every procedural candidate was flagged "continuity". A shape of the colour
-// itself, even one pixel wide, has neighbours of other colours on both sides but is no
-// mixture of them.
-void count_colour_areas(const float* f, int k, int W, int H, const Rgb& bg, const FramePixels& px,
-                        const std::vector<Rgb>& pal, FrameStats& st) {
-  const std::vector<uint8_t>& fg = px.fg;
-  const std::vector<int32_t>& label = px.label;
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x) {
-      const size_t i = static_cast<size_t>(y) * W + x;
-      const int32_t c = label[i];
-      if (c < 0) continue;
-      const Rgb p{f[4 * i], f[4 * i + 1], f[4 * i + 2]};
-      std::array<const Rgb*, 9> around{};
-      size_t n = 0;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int u = x + dx, v = y + dy;
-          if ((dx == 0 && dy == 0) || u < 0 || v < 0 || u >= W || v >= H) continue;
-          const size_t j = static_cast<size_t>(v) * W + u;
-          const Rgb* q = !fg[j] ? &bg : label[j] >= 0 && label[j] != c ? &pal[static_cast<size_t>(label[j])] : nullptr;
-          if (q && std::find(around.begin(), around.begin() + n, q) == around.begin() + n) around[n++] = q;
-        }
-      bool mixture = false;
-      for (size_t a = 0; a < n && !mixture; ++a)
-        for (size_t b = a + 1; b < n && !mixture; ++b) mixture = dist_to_mixture(p, *around[a], *around[b]) < px.dnear[i];
-      if (!mixture) st.area[static_cast<size_t>(c)][k] += 1;
-    }
-}
-
 // Frame k's foreground, colour areas, drift and invented content, into `st`.
 void measure_frame(const TargetFrames& t, int k, size_t P, const std::vector<Rgb>& pal,
                    const std::vector<Rgb>& rest, const PixelRankOptions& o, FrameStats& st) {
@@ -284,7 +251,9 @@ void measure_frame(const TargetFrames& t, int k, size_t P, const std::vector<Rgb
   const float* f = &t.raw[P * 4 * k];
   const Rgb bg = frame_background(f, W, H);
   FramePixels px = classify_pixels(f, P, bg, pal, rest, o);
-  count_colour_areas(f, k, W, H, bg, px, pal, st);
+  std::vector<double> soft(pal.size(), 0.0);
+  add_soft_colour_areas(f, W, H, bg, px.fg, px.label, px.dnear, pal, o.far_distance, soft);
+  for (size_t c = 0; c < pal.size(); ++c) st.area[c][k] = soft[c];
   const size_t nfg = px.nfg;
   st.total[k] = static_cast<double>(nfg);
   st.has_fg[k] = nfg > 0;
@@ -341,41 +310,72 @@ RankSignal invented_content_signal(const FrameStats& st) {
   return r;
 }
 
-// Continuity per palette colour; `appear_vanish` receives the larger of its appearing and
-// vanishing parts (which explain out-of-plane area changes).
-RankSignal continuity_signal(const FrameStats& st, const std::vector<Rgb>& pal, double mean_fg,
+double foreground_spread(const FrameStats& st, int k, int W, int H);
+
+// What a flat change of the whole figure takes of a colour's area when the figure's spread
+// (foreground_spread) changes by the factor `rho` (at most 1): a turn about its vertical axis
+// narrows every filled part with it (rho) and pushes its parts over one another, which hides
+// more of the ones behind. Measured on an openmoji water buffalo turning round: where its spread
+// fell to 0.61 of the frame before, a leg behind another kept 0.35 of its area, the body 0.51
+// (outlines keep their width and more). rho squared bounds what such a turn takes; a change with
+// no change of the figure's spread (a bend cutting a hand, a blob) is judged as it is.
+double flat_change_floor(double rho) { return rho * rho; }
+
+// Continuity per palette colour (soft areas, colour_coverage.h), each change measured against
+// what the change of the whole figure's spread explains (flat_change_floor); `appear_vanish`
+// receives the larger of its appearing and vanishing parts (which explain out-of-plane area
+// changes).
+RankSignal continuity_signal(const FrameStats& st, const std::vector<Rgb>& pal, const std::vector<double>& spread, double mean_fg,
                              int K, double& appear_vanish) {
   RankSignal r;
   const size_t C = pal.size();
   const double significant = std::max(8.0, 0.02 * mean_fg);
+  // The floor of what the figure's change from frame a to frame b explains of a colour's change
+  // in the same direction (1: none).
+  auto floor_of = [&](int a, int b) {
+    const double lo = std::min(spread[a], spread[b]), hi = std::max(spread[a], spread[b]);
+    return lo > 0 ? flat_change_floor(lo / hi) : 1.0;
+  };
   double vanish = 0, appear = 0, jump = 0;
   std::string vr, ar, jr;
   for (size_t c = 0; c < C; ++c) {
     const auto& a = st.area[c];
-    const double a0 = a[0], amin = *std::min_element(a.begin(), a.end()),
-                 amax = *std::max_element(a.begin(), a.end());
+    const double a0 = a[0];
+    // The least of the colour's areas, each raised by what the figure's narrowing since frame 0
+    // explains; the most, each lowered by what its widening explains.
+    double least = std::numeric_limits<double>::max(), most = 0;
+    int kmin = 0;
+    for (int k = 0; k < K; ++k) {
+      const double f = floor_of(0, k);
+      const double low = spread[k] <= spread[0] ? a[k] / f : a[k], high = spread[k] >= spread[0] ? a[k] * f : a[k];
+      if (low < least) least = low, kmin = k;
+      most = std::max(most, high);
+    }
+    const double amax = *std::max_element(a.begin(), a.end());
     if (a0 >= significant) {
-      const double v = clamp01((kRankVanishRatio - amin / a0) / 0.25);
+      const double v = clamp01((kRankVanishRatio - least / a0) / 0.25);
       if (vr.empty() || v > vanish) {
         vanish = std::max(vanish, v);
-        const int kmin = static_cast<int>(std::min_element(a.begin(), a.end()) - a.begin());
-        vr = hex(pal[c]) + fmt(" falls from %.0f px to %.0f px (frame %.0f)", a0, amin, kmin);
+        vr = hex(pal[c]) + fmt(" falls from %.0f px to %.0f px (frame %.0f)", a0, a[kmin], kmin);
       }
     }
-    if (amax >= significant) {
-      const double v = clamp01((kRankVanishRatio - a0 / amax) / 0.25);
+    if (amax >= significant && most > 0) {
+      const double v = clamp01((kRankVanishRatio - a0 / most) / 0.25);
       if (v > appear) {
         appear = v;
         ar = hex(pal[c]) + fmt(" appears: %.0f px in frame 0, up to %.0f px later", a0, amax);
       }
     }
     for (int k = 0; k + 1 < K; ++k) {
-      const double hi = std::max(a[k], a[k + 1]);
+      const double hi = std::max(a[k], a[k + 1]), lo = std::min(a[k], a[k + 1]);
       if (hi < significant) continue;
-      const double j = std::abs(a[k + 1] - a[k]) / hi;
+      const bool with_figure = (a[k + 1] < a[k]) == (spread[k + 1] < spread[k]);
+      const double f = with_figure ? floor_of(k, k + 1) : 1.0;
+      const double j = std::max(0.0, 1 - lo / hi / f);
       if (j > jump) {
         jump = j;
-        jr = hex(pal[c]) + fmt(" jumps from %.0f px to %.0f px (frame %.0f)", a[k], a[k + 1], k + 1);
+        jr = hex(pal[c]) + fmt(" jumps from %.0f px to %.0f px (frame %.0f)", a[k], a[k + 1], k + 1) +
+             (f < 1 ? fmt(", the figure's spread x%.2f", spread[k + 1] / spread[k]) : "");
       }
     }
   }
@@ -383,7 +383,7 @@ RankSignal continuity_signal(const FrameStats& st, const std::vector<Rgb>& pal, 
   appear_vanish = std::max(vanish, appear);
   r.value = std::max(appear_vanish, jv);
   if (r.value <= 0)
-    r.reason = fmt("palette colours keep their areas (largest frame-to-frame change %.0f%%)", 100 * jump);
+    r.reason = fmt("palette colours keep their areas (largest frame-to-frame change %.0f%% beyond the figure's own)", 100 * jump);
   else if (vanish >= appear && vanish >= jv)
     r.reason = "a colour vanishes: " + vr;
   else if (appear >= jv)
@@ -551,9 +551,10 @@ double aligned_diff(const TargetFrames& t, const FrameStats& st, int ka, int kb)
   return low;
 }
 
-// Motion amount; `motion_defect` receives the defect's name when there is one.
+// Motion amount; `motion_defect` receives the defect's name when there is one, `mean` the mean
+// frame difference (how much a viewer sees move, for rank()).
 RankSignal motion_signal(const TargetFrames& t, const FrameStats& st, size_t P, int K,
-                         std::string& motion_defect) {
+                         std::string& motion_defect, double& mean) {
   RankSignal r;
   const std::vector<std::vector<uint8_t>>& fgs = st.fgs;
   // Over the pixels foreground in frame ka or kb: the mean absolute colour difference, and the
@@ -588,6 +589,7 @@ RankSignal motion_signal(const TargetFrames& t, const FrameStats& st, size_t P, 
     range = std::max(range, moved);
   }
   const double m = pairs > 0 ? sum / pairs : 0.0;
+  mean = m;
   // Large frame differences are chaos only when no shift of the frame before explains them.
   double aligned = m;
   if (m > 0.25) {
@@ -637,10 +639,12 @@ CandidateScore score_candidate(const TargetFrames& t, const std::vector<Rgba>& p
   s.colour_drift = colour_drift_signal(st, K);
   s.invented_content = invented_content_signal(st);
   double appear_vanish = 0;
-  s.continuity = continuity_signal(st, pal, mean_fg, K, appear_vanish);
+  std::vector<double> spread(K);
+  for (int k = 0; k < K; ++k) spread[k] = foreground_spread(st, k, W, H);
+  s.continuity = continuity_signal(st, pal, spread, mean_fg, K, appear_vanish);
   s.out_of_plane = out_of_plane_signal(st, mean_fg, K, W, H, appear_vanish);
   std::string motion_defect;
-  s.motion = motion_signal(t, st, P, K, motion_defect);
+  s.motion = motion_signal(t, st, P, K, motion_defect, s.mean_motion);
 
   const RankSignal* sig[5] = {&s.colour_drift, &s.invented_content, &s.continuity, &s.out_of_plane, &s.motion};
   const char* names[5] = {"colour drift", "invented content", "continuity", "out-of-plane motion", nullptr};
@@ -655,13 +659,22 @@ CandidateScore score_candidate(const TargetFrames& t, const std::vector<Rgba>& p
 }
 
 Ranking rank(std::vector<CandidateScore> scores) {
-  std::stable_sort(scores.begin(), scores.end(), [](const CandidateScore& a, const CandidateScore& b) {
-    const bool ea = !a.error.empty() || !std::isfinite(a.score), eb = !b.error.empty() || !std::isfinite(b.score);
+  auto readable = [](const CandidateScore& c) { return c.error.empty() && std::isfinite(c.score); };
+  double most = 0;
+  for (const auto& c : scores)
+    if (readable(c) && c.defects.empty()) most = std::max(most, c.mean_motion);
+  for (auto& c : scores)
+    c.motion_penalty = readable(c) && c.defects.empty() && most > 0 ? kMotionPreference * (1 - c.mean_motion / most) : 0.0;
+  std::stable_sort(scores.begin(), scores.end(), [&](const CandidateScore& a, const CandidateScore& b) {
+    const bool ea = !readable(a), eb = !readable(b);
     if (ea != eb) return eb;
-    if (!ea && a.score != b.score) return a.score < b.score;
+    if (ea) return a.name < b.name;
+    if (a.defects.empty() != b.defects.empty()) return a.defects.empty();
+    const double ka = a.score + a.motion_penalty, kb = b.score + b.motion_penalty;
+    if (ka != kb) return ka < kb;
     return a.name < b.name;
   });
-  if (scores.empty() || !scores.front().error.empty() || !std::isfinite(scores.front().score))
+  if (scores.empty() || !readable(scores.front()))
     throw Error(scores.empty() ? "pixel ranker: no candidates"
                                : "pixel ranker: no readable candidate (" + scores.front().name + ": " +
                                      scores.front().error + ")");
@@ -671,9 +684,10 @@ Ranking rank(std::vector<CandidateScore> scores) {
   r.chosen = b.name;
   size_t n = 0;
   for (const auto& c : r.candidates) n += c.error.empty() ? 1 : 0;
-  r.reason = fmt("lowest score %.3f of %.0f candidate", b.score, static_cast<double>(n)) + (n == 1 ? "" : "s");
+  r.reason = fmt("lowest score %.3f of %.0f candidate", b.score + b.motion_penalty, static_cast<double>(n)) + (n == 1 ? "" : "s");
+  if (b.motion_penalty >= 0.0005) r.reason += fmt(" (%.3f, and %.3f for moving less than the most moving)", b.score, b.motion_penalty);
   if (r.candidates.size() > 1 && r.candidates[1].error.empty())
-    r.reason += " (next: " + r.candidates[1].name + fmt(", %.3f)", r.candidates[1].score);
+    r.reason += " (next: " + r.candidates[1].name + fmt(", %.3f)", r.candidates[1].score + r.candidates[1].motion_penalty);
   if (b.defects.empty()) {
     r.reason += "; no defects";
   } else {

@@ -14,13 +14,15 @@
 //                     with at least one pixel whose 3x3 neighbourhood is all far (so 1-2 px
 //                     seams between shapes do not count), as a fraction f of the foreground,
 //                     max over frames: (f - 0.005) / 0.03
-//   continuity        per palette colour, its area per frame (its pixels nearest to it within
-//                     far_distance, but for those nearer to a mixture of two of their 8
-//                     neighbours' colours (or the background) than to it: seams where two
-//                     other shapes meet): a colour present in frame 0 that
+//   continuity        per palette colour, its soft area per frame (colour_coverage.h: each
+//                     pixel shared among the colours it is a mixture of, so a stroke thinner
+//                     than a pixel keeps its area; a seam where two other shapes meet is no
+//                     area of the colour between them): a colour present in frame 0 that
 //                     (almost) vanishes, one absent in frame 0 that appears, or a big relative
 //                     jump between consecutive frames: max of (0.3 - min/first) / 0.25,
-//                     (0.3 - first/max) / 0.25 and (jump - 0.35) / 0.4
+//                     (0.3 - first/max) / 0.25 and (jump - 0.35) / 0.4, each change in the
+//                     direction of the whole figure's (its foreground spread x rho) taken
+//                     beyond rho^2 only (a flat turn narrows and overlaps its parts)
 //   out_of_plane      relative std s of the total foreground area, counted only when no colour
 //                     appears or vanishes: (s - 0.08) / 0.22 * (1 - appear/vanish value), and
 //                     only for the frames that are no flat change of the first (its box
@@ -36,7 +38,9 @@
 // every value clamped to [0, 1]. Score (lower = better, in [0, 1]):
 //   score = (1.0 drift + 1.5 invented + 1.2 continuity + 0.8 out_of_plane + 1.0 motion) / 5.5
 // A signal >= defect_threshold (0.5) names a defect: "colour drift", "invented content",
-// "continuity", "out-of-plane motion", "no motion" or "chaotic motion".
+// "continuity", "out-of-plane motion", "no motion" or "chaotic motion". rank() puts clean
+// candidates first and charges a clean one that moves less than the most moving clean one
+// (kMotionPreference).
 #pragma once
 
 #include <filesystem>
@@ -76,6 +80,8 @@ struct CandidateScore {
   double score = 0;  // lower = better; +inf when the candidate could not be read
   RankSignal colour_drift, invented_content, continuity, out_of_plane, motion;
   std::vector<std::string> defects;
+  double mean_motion = 0;     // the motion signal's mean frame difference on the foreground
+  double motion_penalty = 0;  // rank(): what moving less than the most moving clean candidate costs
   std::string error;  // non-empty: unreadable, not ranked
   nlohmann::json to_json() const;
 };
@@ -110,7 +116,18 @@ struct Ranking {
   nlohmann::json to_json() const;  // {"chosen", "reason", "candidates": [...]}
 };
 
-// Orders scored candidates and picks the best. Throws svgm::Error when none is readable.
+// What a clean candidate's ranking pays for moving less than the most moving clean one: this
+// times 1 - its mean frame difference / the largest. A viewer asked for motion sees the motion,
+// not a colour's area wavering by a third: on the suite of session 54 the ranker chose an
+// ambulance "speeding away" that moved 0.46 of its most moving sibling (0.002 against 0.065,
+// a continuity value of 0.24 on the others); half the motion pays 0.075, what a continuity
+// value of 0.34 costs (1.2 / 5.5 of it). Candidates with defects are never ranked above a clean
+// one, nor charged.
+inline constexpr double kMotionPreference = 0.15;
+
+// Orders scored candidates and picks the best: readable before unreadable, clean before
+// flagged, then by score plus motion_penalty (kMotionPreference), then by name. Fills each
+// clean candidate's motion_penalty. Throws svgm::Error when none is readable.
 Ranking rank(std::vector<CandidateScore> scores);
 
 // Scores every entry of `dir` (video files or folders of PNG frames, by name order) and ranks
