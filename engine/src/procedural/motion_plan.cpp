@@ -282,14 +282,6 @@ struct Builder {
     if (target == Target::Whole && !flight.aim(rig, figure, a, verb.name, heading)) return;
     if (a.primitive == Primitive::Undulate && target == Target::Whole) a.anchored = anchored_side(rig, true);
     if (a.primitive == Primitive::Bend && target == Target::Whole) a.anchored = bend_anchor(rig, verb.name == "flicker" ? FigureClass::Flame : figure);
-    // A plant sways or bends from where its pot or the ground holds it (sway_base.h).
-    std::string rooted_why;
-    if (figure == FigureClass::Plant && target == Target::Whole && (a.primitive == Primitive::Sway || (a.primitive == Primitive::Bend && a.anchored == 4))) {
-      const PlantBase base = plant_base(rig);
-      a.rooted = true;
-      a.root = base.root;
-      rooted_why = base.why;
-    }
     a.direction = mods.side != 0 ? mods.side : ((rng() & 1) ? 1 : -1);
     // Where the prompt sends the figure ("drifts to the right"): a slide of the whole figure
     // goes that way first, in the viewer's frame.
@@ -381,7 +373,7 @@ struct Builder {
     pick_sides(a, base, mods, plural, note);
     // One-sided whole-figure motions (lean, bow) go one way and back.
     if (a.primitive == Primitive::Rock && base.pairing == Pairing::OneSide) a.vertical = 2;
-    explain(a, verb, target, words, mods, {note, which, paddle, beat, instead, spacing, heading, rooted_why});
+    explain(a, verb, target, words, mods, {note, which, paddle, beat, instead, spacing, heading, root_plant(a, rig, figure)});  // roots a plant: sway_base.h
     if (!repeats(a)) plan.actions.push_back(std::move(a));
   }
 

@@ -81,6 +81,16 @@ PlantBase plant_base(const Rig& rig) {
   return {{x, F.y1}, false, why};
 }
 
+std::string root_plant(PlannedAction& a, const Rig& rig, FigureClass figure) {
+  if (figure != FigureClass::Plant || a.target != Target::Whole || !a.parts.empty() ||
+      !(a.primitive == Primitive::Sway || (a.primitive == Primitive::Bend && a.anchored == 4)))
+    return "";
+  const PlantBase base = plant_base(rig);
+  a.rooted = true;
+  a.root = base.root;
+  return base.why;
+}
+
 Vec2 sway_lean(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
   const double turn = a.direction * amp * oscillation(a, a.cycles * t);
   if (a.rooted) {

@@ -38,6 +38,11 @@ struct PlantBase {
 // Where the plant drawn by `rig` is held (see above).
 PlantBase plant_base(const Rig& rig);
 
+// Roots `a` at plant_base when it is a sway of a whole figure the prompt names a plant (`figure`),
+// or its bend from its base (anchored at the bottom): PlannedAction::rooted and root. Returns
+// where it is held, in words, or "" when `a` is left as it was.
+std::string root_plant(PlannedAction& a, const Rig& rig, FigureClass figure);
+
 // Point q of a figure with box `box` under the sway `a` at time t, with amplitude `amp` in
 // degrees: rooted about a.root (PlannedAction::rooted), else leaning its top about its middle.
 Vec2 sway_lean(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q);
