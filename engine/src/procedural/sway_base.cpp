@@ -22,6 +22,10 @@ constexpr double kMouthBand = 0.15, kMouthSpan = 0.5;
 // A band stacked on the holder (a rim) is at least kBandWide of its width and lies within
 // kBandOver of its width beyond either side.
 constexpr double kBandWide = 0.8, kBandOver = 0.25;
+// A holder stands under the plant: its middle within kHolderOffCentre of the figure's width of
+// the figure's middle (a hibiscus's leaf at its bottom left, flat where the bloom covers it,
+// was taken for a pot and the bloom swayed about the leaf).
+constexpr double kHolderOffCentre = 0.15;
 
 bool solid(const RigElement& e) { return !e.thin && e.box.area() > 0 && e.area >= kHolderSolid * e.box.area(); }
 
@@ -49,7 +53,7 @@ PlantBase plant_base(const Rig& rig) {
   for (size_t i = 0; i < els.size(); ++i) {
     const RigBox& b = els[i].box;
     if (solid(els[i]) && b.y1 >= F.y1 - kFootBand * H && b.w() >= kHolderWide * W && b.h() <= kHolderTall * H && flat_top(els[i]) &&
-        (seed < 0 || b.w() > els[static_cast<size_t>(seed)].box.w()))
+        std::fabs(b.centre().x - F.centre().x) <= kHolderOffCentre * W && (seed < 0 || b.w() > els[static_cast<size_t>(seed)].box.w()))
       seed = static_cast<int>(i);
   }
   char why[160];
@@ -68,7 +72,7 @@ PlantBase plant_base(const Rig& rig) {
         }
       }
     }
-    std::snprintf(why, sizeof why, "held at the mouth of what it stands in (y %.1f): it sways from there", holder.y0);
+    std::snprintf(why, sizeof why, "held at the mouth of what it stands in (y %.1f): it moves from there", holder.y0);
     return {{holder.centre().x, holder.y0}, true, why};
   }
   // The stem's foot: the middle of what is drawn at the figure's bottom.
@@ -77,7 +81,7 @@ PlantBase plant_base(const Rig& rig) {
     for (const Vec2& p : e.points)
       if (p.y >= F.y1 - kFootBand * H) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
   const double x = hi >= lo ? 0.5 * (lo + hi) : F.centre().x;
-  std::snprintf(why, sizeof why, "held at its stem's foot (%.1f, %.1f): it sways from there", x, F.y1);
+  std::snprintf(why, sizeof why, "held at its stem's foot (%.1f, %.1f): it moves from there", x, F.y1);
   return {{x, F.y1}, false, why};
 }
 

@@ -9,7 +9,8 @@
 // rooted (plant_base), for a figure the prompt names a plant:
 //  - at the mouth of what holds it (a pot, a vase, a mound of earth): the widest solid element
 //    drawn at the figure's bottom (it spans at least kHolderWide of the figure's width, fills
-//    at least kHolderSolid of its own box, stands at most kHolderTall of the figure's height),
+//    at least kHolderSolid of its own box, stands at most kHolderTall of the figure's height,
+//    has a flat top and stands under the figure's middle),
 //    with the solid bands stacked on it (a pot's rim: as wide, at its top); its top's middle;
 //  - else at the foot of its stem: the middle of the points drawn in the lowest kFootBand of
 //    the figure.
