@@ -90,6 +90,8 @@ TEST_CASE("lexicon: nouns get a figure class through their hypernyms") {
   CHECK(lx.noun("man").figure == FigureClass::Biped);        // not Homo the primate
   CHECK(lx.noun("whale").figure == FigureClass::FishOrSnake);  // not "a large person"
   CHECK(lx.noun("turtle").figure == FigureClass::Quadruped);   // not the turtleneck sweater
+  CHECK(lx.noun("herb").figure == FigureClass::Plant);         // "herbaceous plant" is no clipping
+  CHECK(lx.noun("peacock").figure == FigureClass::Bird);       // peacock_butterfly is one
   CHECK(lx.noun("happiness").figure == FigureClass::None);
   CHECK(std::string(figure_class_name(FigureClass::FishOrSnake)) == "fish_or_snake");
 }

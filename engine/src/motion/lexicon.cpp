@@ -337,9 +337,12 @@ std::vector<uint32_t> Lexicon::noun_senses(const std::string& lemma) const {
     if (!s) continue;
     // A synset listing a longer word that starts with the lemma names that thing by its first
     // word ("turtle" for turtleneck, "peacock" for peacock_butterfly): the lemma's own meaning
-    // comes first.
+    // comes first. Not a phrase whose first word is an adjective ("herbaceous plant" beside
+    // "herb" is the herb itself: taken for a clipping, a herb was the potherb, a food).
     const bool clipped = std::any_of(s->words.begin(), s->words.end(), [&](const std::string& w) {
-      return w.size() > lemma.size() && w.compare(0, lemma.size(), lemma) == 0;
+      if (w.size() <= lemma.size() || w.compare(0, lemma.size(), lemma) != 0) return false;
+      const std::string first = w.substr(0, w.find('_'));
+      return first == lemma || db_->senses(first, Pos::Adj).empty();
     });
     order.push_back({senses[r], static_cast<int>(r), s->lex_file, clipped});
   }

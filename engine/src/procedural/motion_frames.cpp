@@ -15,6 +15,7 @@
 #include "procedural/region_bend.h"
 #include "procedural/rotor_blades.h"
 #include "procedural/support_band.h"
+#include "procedural/sway_base.h"
 #include "procedural/travel_profile.h"
 #include "geometry/rigid_bodies.h"
 #include "procedural/wheel_riders.h"
@@ -220,10 +221,11 @@ Vec2 deform(const PlannedAction& a, double amp, double t, const RigBox& box, Vec
     // Held at one side (a stalk at its root, a banner at its pole): it bends from there, each
     // point displaced across the figure by the square of its distance from the held side (a
     // cantilever's curve), the far side as far as tan(angle) of the figure's length.
+    // A plant rooted in a pot bends from the pot's mouth (sway_base.h); the pot holds.
     const bool across_x = a.anchored <= 2;
-    const double len = std::max(across_x ? box.w() : box.h(), 1e-9);
+    const double len = std::max(across_x ? box.w() : a.rooted ? a.root.y - box.y0 : box.h(), 1e-9);
     const double f = across_x ? (q.x - box.x0) / len : (q.y - box.y0) / len;
-    const double v = a.anchored % 2 == 1 ? f : 1 - f;
+    const double v = a.anchored % 2 == 1 ? f : a.rooted ? std::max(1 - f, 0.0) : 1 - f;
     const double e = std::tan(amp * M_PI / 180) * len * v * v * oscillation(a, a.cycles * t) * a.direction;
     return across_x ? Vec2{q.x, q.y + e} : Vec2{q.x + e, q.y};
   } else if (a.primitive == Primitive::Bend) {
@@ -351,16 +353,6 @@ Vec2 carried_by_bend(const PlannedAction& a, double amp, double t, const RigBox&
   const double ang = std::atan2(e.y - p.y, e.x - p.x);
   const double cs = std::cos(ang), sn = std::sin(ang), dx = q.x - pivot.x, dy = q.y - pivot.y;
   return p + Vec2{cs * dx - sn * dy, sn * dx + cs * dy};
-}
-
-// A Sway of the figure with box `box`: above the hinge the points lean about the hinge's middle,
-// the lean growing smoothly over kRamp of the height (the shape stays in one piece); below it
-// they hold.
-Vec2 sway_lean(const PlannedAction& a, double amp, double t, const RigBox& box, Vec2 q) {
-  const double H = std::max(box.h(), 1e-9), hinge = box.y0 + kSwayHinge * H;
-  if (q.y >= hinge) return q;
-  const double w = smoothstep((hinge - q.y) / (kRamp * H));
-  return rotate_about(q, {box.centre().x, hinge}, a.direction * amp * oscillation(a, a.cycles * t) * w);
 }
 
 // The share of box a inside box b.

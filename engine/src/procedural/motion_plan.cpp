@@ -21,6 +21,7 @@
 #include "procedural/limb_qualifiers.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/support_band.h"
+#include "procedural/sway_base.h"
 #include "procedural/part_locator.h"
 #include "procedural/self_movers.h"
 #include "procedural/toss_and_stroke.h"
@@ -373,7 +374,7 @@ struct Builder {
     pick_sides(a, base, mods, plural, note);
     // One-sided whole-figure motions (lean, bow) go one way and back.
     if (a.primitive == Primitive::Rock && base.pairing == Pairing::OneSide) a.vertical = 2;
-    explain(a, verb, target, words, mods, {note, which, paddle, beat, instead, spacing, heading});
+    explain(a, verb, target, words, mods, {note, which, paddle, beat, instead, spacing, heading, root_plant(a, rig, figure)});  // roots a plant: sway_base.h
     if (!repeats(a)) plan.actions.push_back(std::move(a));
   }
 
@@ -518,7 +519,7 @@ struct Builder {
              : std::string(target_name(target)) + " (" + join(names, ", ") + ")");
     for (const std::string& n : notes)
       if (!n.empty()) a.why += "; " + n;
-    if (a.anchored != 0) {
+    if (a.anchored != 0 && !a.rooted) {  // (a rooted plant's note says where it is held)
       static const char* sides[] = {"", "left", "right", "top", "bottom"};
       if (a.primitive == Primitive::Bend)
         a.why += std::string("; held at its ") + sides[a.anchored] + (pole_parts(rig, a.anchored, true).empty() ? "" : " by a pole") +

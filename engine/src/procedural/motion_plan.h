@@ -56,6 +56,9 @@ struct PlannedAction {
   int anchored = 0;             // Undulate or Bend of the whole figure: the side a pole holds it
                                 // at (a flag), or a Bend's base (a stalk): 1 left, 2 right, 3 top,
                                 // 4 bottom; 0 free (a fish)
+  bool rooted = false;          // Sway of a plant, or its Bend from its base (anchored 4): it
+  Vec2 root{0, 0};              // turns from `root`, where its pot or the ground holds it
+                                // (sway_base.h), not about its middle or its box's bottom
   Region region = Region::None; // a Swing of a region of parts[0] instead of whole parts
   int region_side = 0;          // Sides/Lower: -1 only the viewer's left, +1 only the right
   bool alternating = false;     // Sides/Lower: the two sides half a cycle apart

@@ -43,6 +43,7 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
       const Vec2 c = a.primitive == Primitive::Spin ? rig.parts[p].box.centre() : rig.parts[p].pivot;
       pivots.push_back({std::round(c.x * 100) / 100, std::round(c.y * 100) / 100});
     }
+    if (a.rooted) pivots.push_back({std::round(a.root.x * 100) / 100, std::round(a.root.y * 100) / 100});  // where a plant is held
     const char* unit = unit_of(a.primitive);
     actions.push_back({{"verb", a.verb},
                        {"motion", primitive_name(a.primitive)},
