@@ -140,4 +140,9 @@ HangSupport hang_support(const Scene& scene, const Rig& rig) {
   return out;
 }
 
+Affine pendulum(const PlannedAction& a, double amp, double t, Vec2 grip) {
+  const double deg = a.direction * amp * motion_plan_internal::oscillation(a, a.cycles * t);
+  return Affine::translate(grip.x, grip.y) * Affine::rotate_deg(deg) * Affine::translate(-grip.x, -grip.y);
+}
+
 }  // namespace svgm

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "procedural/motion_plan.h"
 #include "procedural/part_rig.h"
 #include "procedural/prompt_parse.h"
 #include "svgmotion/scene.h"
@@ -33,5 +34,10 @@ struct HangSupport {
   bool found = false;
 };
 HangSupport hang_support(const Scene& scene, const Rig& rig);
+
+// A hanging figure's sway or rock at time t: the whole of it turns about its grip, as a
+// pendulum; leant about a hinge near its feet (as a standing figure sways), it bent away from
+// what it hung from.
+Affine pendulum(const PlannedAction& a, double amp, double t, Vec2 grip);
 
 }  // namespace svgm
