@@ -11,6 +11,7 @@
 #include "procedural/detail_binding.h"
 #include "procedural/figure_pieces.h"
 #include "procedural/flame_lick.h"
+#include "procedural/hang_support.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/region_bend.h"
 #include "procedural/rotor_blades.h"
@@ -47,8 +48,7 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
   switch (a.primitive) {
     case Primitive::Swing: return about(pivot, Affine::rotate_deg(sign * amp * s));
     case Primitive::Spin: return about(centre, plane * Affine::rotate_deg(360.0 * amp * a.direction * t) * plane.inverse());
-    // About the vertical axis through the middle: never wider than at rest, so it stays where
-    // the figure stands in the canvas.
+    // About the vertical axis through the middle: never wider than at rest, so it stays where the figure stands.
     case Primitive::Turn: return about(centre, Affine::scale(turn_width(amp * t, a.scale), 1));
     // Whole turns about the joint, from the phase's start (a crawl's arms half a turn apart).
     case Primitive::Windmill: return about(pivot, Affine::rotate_deg(sign * 360.0 * (amp * t + phase)));
@@ -668,8 +668,9 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   for (const auto& a : plan.actions)
     if ((a.primitive == Primitive::Undulate || a.primitive == Primitive::Bend) && a.anchored != 0)
       for (int p : pole_parts(rig, a.anchored, true)) held[p] = 1;
-  // The ground the prompt says the figure moves on stays (support_band.h).
-  const std::vector<char> ground = plan.ground.empty() ? std::vector<char>() : support_paths(scene, rig);
+  // The ground the prompt says the figure moves on stays, or what it hangs from (support_band.h, hang_support.h).
+  const HangSupport hang = plan.hang.empty() ? HangSupport{} : hang_support(scene, rig);
+  const std::vector<char> ground = plan.ground.empty() ? hang.paths : support_paths(scene, rig);
   // Chains hanging from the root that reach the lowest kPlanted of the figure stand on the
   // ground (legs, feet): the root's own swing does not carry them.
   std::vector<char> planted(G, 0);
@@ -689,13 +690,11 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   for (int g = 0; g < G; ++g) fixed[g] = spinning[g] || loads.turns_with[g] >= 0 || loads.rides[g] >= 0;
   const std::vector<std::vector<int>> rides_on = hosts_of(scene, rig, plan, fixed);
 
-  // Whether path p stays where it is under the whole figure's motions: a background, a held
-  // part's, or the ground's.
+  // Whether path p stays where it is under the whole figure's motions: a background, a held part's, the ground's.
   auto stays = [&](size_t p) {
     const int g = rig.part_of_path[p];
     return (g >= 0 && (rig.parts[g].role == Role::Background || held[g])) || (p < ground.size() && ground[p]);
   };
-
   const std::vector<std::unique_ptr<RegionBend>> mesh = region_meshes(scene, rig, plan, spinning, loads, stays, folds);
   const std::vector<std::vector<size_t>> carried = carried_shapes(scene, bend_sizes(scene, rig, plan, spinning, loads, stays), rides_on);
 
@@ -717,8 +716,9 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         shallower.scale = a.scale * plan.scale;
         whole = rigid(shallower, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
       } else if (a.parts.empty() && !a.turns_round) {  // (turning round: turn_round, after)
-        whole = compose_whole(whole, rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H), a);
-        for (size_t k = 0; k < whole_of.size(); ++k) whole_of[k] = compose_whole(whole_of[k], piece_motion(a, amp, k, t, piece_box[k], rig.figure, W, H), a);
+        const bool swings = hang.found && a.primitive == Primitive::Rock;  // (hang_support.h)
+        whole = compose_whole(whole, swings ? pendulum(a, amp, t, hang.grip) : rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H), a);
+        for (size_t k = 0; k < whole_of.size(); ++k) whole_of[k] = compose_whole(whole_of[k], swings ? pendulum(a, amp, t, hang.grip) : piece_motion(a, amp, k, t, piece_box[k], rig.figure, W, H), a);
       }
       for (size_t i = 0; i < a.parts.size(); ++i) {
         const RigPart& P = rig.parts[a.parts[i]];
@@ -765,7 +765,8 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
                 else if (use == 2)
                   q = mesh[ai] ? mesh[ai]->carry(bent[ai], rig.parts[by].pivot, q) : carried_by_bend(a, amp, t, hb, rig.parts[by].pivot, q);
               } else if (a.parts.empty()) {
-                if (!bg) q = a.primitive == Primitive::Sway ? sway_lean(a, amp, t, rig.figure, q) : deform(a, amp, t, rig.figure, q);
+                if (!bg && a.primitive == Primitive::Sway) q = hang.found ? pendulum(a, amp, t, hang.grip).apply(q) : sway_lean(a, amp, t, rig.figure, q);
+                else if (!bg) q = deform(a, amp, t, rig.figure, q);
               } else {
                 for (int p : a.parts)
                   if (by >= 0 && under(by, p)) q = deform(a, amp, t, reach[p], q);
@@ -787,6 +788,5 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   keep_carried_rigid(scene, carried, frames, out);
   return out;
 }
-
 
 }  // namespace svgm

@@ -20,6 +20,7 @@
 #include "procedural/gait_travel.h"
 #include "procedural/limb_qualifiers.h"
 #include "procedural/motion_plan_internal.h"
+#include "procedural/hang_support.h"
 #include "procedural/support_band.h"
 #include "procedural/sway_base.h"
 #include "procedural/part_locator.h"
@@ -619,6 +620,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& said, const Rig& rig, uint32_t s
   b.plan.source = "prompt";
   std::vector<std::string> unknown;
   b.plan.ground = ground_words(prompt, rig);
+  b.plan.hang = hang_words(prompt, rig);
   auto locatable = [&](const PromptNoun& n) { return locatable_noun(n, rig, b.figure); };
   // Does the prompt say which limbs move ("waving its arms", "sways its tentacles")? Then the
   // whole-figure accents of its limb verbs (cheering's hop, flapping's bob, dancing's rock) are

@@ -112,6 +112,9 @@ struct MotionPlan {
                                 // at the canvas's edge when the figure could not move otherwise)
   std::string ground;           // the prompt's words naming a ground the figure moves on ("on
                                 // the waves"): the band drawn there stays (support_band.h)
+  std::string hang;             // the prompt's words naming what the figure hangs from ("from
+                                // the branch"): it stays, the figure swings about its grip
+                                // (hang_support.h)
   // The amplitude `a` moves with: its own, times its scale and the plan's (the whole turns of a
   // spin or a turn are never scaled).
   double amplitude(const PlannedAction& a) const {

@@ -8,6 +8,7 @@
 
 #include "procedural/motion_direction.h"
 #include "procedural/motion_plan_internal.h"
+#include "procedural/hang_support.h"
 #include "procedural/support_band.h"
 #include "geometry/rigid_bodies.h"
 
@@ -81,9 +82,19 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
               {"why", ids.empty() ? "no band drawn across the figure's bottom: nothing is held"
                                   : "the band drawn across the figure's bottom stays while the figure moves"}};
   }
+  // What the prompt says the figure hangs from, the paths drawn as it and its grip.
+  json hang = nullptr;
+  if (!plan.hang.empty()) {
+    const HangSupport h = hang_support(scene, rig);
+    json ids = json::array();
+    for (size_t pi = 0; pi < h.paths.size(); ++pi)
+      if (h.paths[pi]) ids.push_back(scene.paths[pi].id);
+    hang = {{"words", plan.hang}, {"paths", ids}, {"grip", h.found ? json::array({std::round(h.grip.x * 100) / 100, std::round(h.grip.y * 100) / 100}) : json(nullptr)}};
+  }
   return {{"source", plan.source},
           {"held", held},
           {"ground", ground},
+          {"hang", hang},
           {"root", root},
           {"parts", parts},
           {"facing", rig.eye_side == 0 ? json("") : json(std::string(rig.eye_side < 0 ? "left: " : "right: ") + rig.eye_why)},
