@@ -50,6 +50,17 @@ struct Drawing {
   std::vector<double> travel(const MotionPlan& plan, int F = 13) const { return path_travel(scene, animate_plan(scene, rig, plan, F), F); }
 };
 
+// A drawing of tests/data/motion mirrored left to right (x -> width - x), its rig rebuilt from
+// the mirrored paths alone: a figure facing or pointing the other way.
+inline Drawing mirrored_drawing(const char* name) {
+  Drawing d(name);
+  for (Path& p : d.scene.paths)
+    for (auto& sp : p.subpaths)
+      for (Vec2& q : sp.points) q.x = d.scene.width - q.x;
+  d.rig = build_rig(d.scene, {});
+  return d;
+}
+
 // eye_tail.svg, a four-legged animal whose eye on its snout at the left shows it faces left,
 // with that facing read (apply_eye_cue): the travel, turn and gait tests' animal.
 inline Drawing eye_tail_animal() {

@@ -18,18 +18,10 @@
 
 using namespace svgm;
 using svgm::test::Drawing;
+using svgm::test::mirrored_drawing;
 
 namespace {
 
-// The drawing mirrored left to right (x -> width - x), its rig rebuilt.
-Drawing mirrored(const char* name) {
-  Drawing d(name);
-  for (Path& p : d.scene.paths)
-    for (auto& sp : p.subpaths)
-      for (Vec2& q : sp.points) q.x = d.scene.width - q.x;
-  d.rig = build_rig(d.scene, {});
-  return d;
-}
 
 // The drawing turned upside down (y -> height - y), its rig rebuilt: the nose points down.
 Drawing flipped(const char* name) {
@@ -67,7 +59,7 @@ TEST_CASE("flight axis: a rocket on a slant is mirrored about its length, its no
   // Drawn along (cos 45, -sin 45): within the 3 degree steps of the mirror search.
   CHECK(a.nose.x == doctest::Approx(std::sqrt(0.5)).epsilon(0.04));
   CHECK(a.nose.y == doctest::Approx(-std::sqrt(0.5)).epsilon(0.04));
-  const FlightAxis m = flight_axis(mirrored("rocket_slant.svg").rig);
+  const FlightAxis m = flight_axis(mirrored_drawing("rocket_slant.svg").rig);
   REQUIRE(m.found);
   CHECK(m.nose.x == doctest::Approx(-std::sqrt(0.5)).epsilon(0.04));
   CHECK(m.nose.y == doctest::Approx(-std::sqrt(0.5)).epsilon(0.04));
@@ -119,7 +111,7 @@ TEST_CASE("launches: the rocket on a slant goes off towards its nose, speeding u
 }
 
 TEST_CASE("launches: a rocket mirrored goes up and to the left; one pointing down climbs straight up as before") {
-  const MotionPlan left = plan_from_prompt(parse_prompt("the rocket launches"), mirrored("rocket_slant.svg").rig, 1);
+  const MotionPlan left = plan_from_prompt(parse_prompt("the rocket launches"), mirrored_drawing("rocket_slant.svg").rig, 1);
   REQUIRE(actions_of(left) == "bob shake");
   CHECK(left.actions[0].heading.x < -0.6);
   CHECK(left.actions[0].heading.y < -0.6);

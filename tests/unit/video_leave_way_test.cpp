@@ -16,6 +16,7 @@
 
 using namespace svgm;
 using svgm::test::Drawing;
+using svgm::test::mirrored_drawing;
 
 namespace {
 
@@ -27,15 +28,6 @@ std::vector<int> going_ways(const MotionPlan& plan) {
   return out;
 }
 
-// The drawing mirrored left to right (x -> width - x), its rig rebuilt.
-Drawing mirrored(const char* name) {
-  Drawing d(name);
-  for (Path& p : d.scene.paths)
-    for (auto& sp : p.subpaths)
-      for (Vec2& q : sp.points) q.x = d.scene.width - q.x;
-  d.rig = build_rig(d.scene, {});
-  return d;
-}
 
 bool leaves(const char* prompt) {
   const ParsedPrompt p = parse_prompt(prompt);
@@ -83,7 +75,7 @@ TEST_CASE("leave way: a rocket with no facing flies off nose first: up and right
   CHECK(leaving_side(p, p.clauses[0], d.rig, &why) == 1);
   CAPTURE(why);
   CHECK(going_ways(plan_from_prompt(p, d.rig, 1)) == std::vector<int>{1});
-  const Drawing m = mirrored("rocket_slant.svg");
+  const Drawing m = mirrored_drawing("rocket_slant.svg");
   CHECK(leaving_side(p, p.clauses[0], m.rig, &why) == -1);
   CHECK(going_ways(plan_from_prompt(p, m.rig, 1)) == std::vector<int>{-1});
 }
