@@ -1,8 +1,9 @@
 // The target's frames before cleanup (TargetFrames::raw) in the form a fit needs once they are
 // loaded: the preview shows them in 8 bits and the result gate reads which pixels differ from
-// the frame's background, so a fit keeps those (4 bytes per pixel) instead of float RGBA (16;
-// 94 MB for 30 keyframes at 512 px). Both read the compact form exactly as they read `raw`:
-// the preview's bytes and the gate's verdict are the same bits.
+// the frame's background, so a fit keeps those (4 bytes per pixel, held deflated: a few per cent
+// of that on a drawing's paper) instead of float RGBA (16; 94 MB for 30 keyframes at 512 px).
+// Both read the compact form exactly as they read `raw`: the preview's bytes and the gate's
+// verdict are the same bits.
 #pragma once
 
 #include <algorithm>
@@ -25,12 +26,21 @@ inline bool differs_from(float r, float g, float b, const std::array<float, 3>& 
          kFigureContrast;
 }
 
-// A target's `raw` once compacted (compact_raw), for its K keyframes of H x W pixels.
+// A target's `raw` once compacted (compact_raw), for its K keyframes of H x W pixels. Each
+// keyframe's bytes are held deflated (deflated_bytes.h): they are read once each, at the end of
+// a fit, and the 4 bytes per pixel and keyframe (36 MB for 34 keyframes at 512 px) deflate to a
+// few per cent on a drawing's white paper and flat colours.
 struct CompactRaw {
-  std::vector<uint8_t> rgb8;                 // K*H*W*3: rgba8_image's rounding (its A is 255: raw's is 1)
-  std::vector<uint8_t> figure;               // K*H*W: 1 = differs_from the keyframe's border median
+  size_t pixels = 0;  // H*W, per keyframe
+  // K: keyframe k's rgb8 (H*W*3: rgba8_image's rounding; its A is 255, raw's is 1), then its
+  // figure (H*W: 1 = differs_from the keyframe's border median), deflated.
+  std::vector<std::vector<uint8_t>> frames;
   std::vector<std::array<float, 3>> border;  // K: border_median_rgb of each keyframe
+  size_t keyframes() const { return frames.size(); }
+  size_t bytes() const;
 };
+// Keyframe k of `c` inflated: rgb8 (3 per pixel), then figure (1 per pixel).
+std::vector<uint8_t> compact_frame(const CompactRaw& c, int k);
 
 // Keyframe k's figure as the gate sees it, from t.raw, or from `c` when t.raw is empty.
 struct RawFigure {
