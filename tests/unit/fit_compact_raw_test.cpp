@@ -8,6 +8,7 @@
 
 #include "fit/output/result_gate.h"
 #include "fit/target/compact_raw.h"
+#include "fit/target/white_runs.h"
 #include "media/preview_video.h"
 #include "raster/raster_plan.h"
 #include "svgmotion/error.h"
@@ -51,8 +52,9 @@ TEST_CASE("compact_raw: the preview's bytes and the gate's figure as from the fl
   const CompactRaw c = compact_raw(t);
   CHECK(t.raw.empty());
   const size_t px = static_cast<size_t>(kW) * kH;
-  CHECK(c.rgb8.size() == kK * px * 3);
-  CHECK(c.figure.size() == kK * px);
+  CHECK(c.keyframes() == static_cast<size_t>(kK));
+  CHECK(c.pixels == px);
+  for (int k = 0; k < kK; ++k) CHECK(compact_frame(c, k).size() == px * 4);
   CHECK(c.border.size() == static_cast<size_t>(kK));
   for (int k = 0; k < kK; ++k) {
     const RgbaImage a = rgba8_image(&before.raw[k * px * 4], kW, kH), b = raw_image(t, &c, k);
@@ -70,7 +72,7 @@ TEST_CASE("compact_raw: the preview's bytes and the gate's figure as from the fl
     CHECK(fb.figure[1 * kW + 14] == 0);
   }
   // Again: nothing left to compact.
-  CHECK(compact_raw(t).figure.empty());
+  CHECK(compact_raw(t).frames.empty());
 }
 
 TEST_CASE("compact_raw: the result gate's verdict is the same bits from the compact form") {
@@ -98,10 +100,52 @@ TEST_CASE("compact_raw: the result gate's verdict is the same bits from the comp
   CHECK(a.iou == b.iou);
   CHECK(a.reasons == b.reasons);
   CHECK(a.passed == b.passed);
+  // The cleaned frames read a keyframe at a time from their packed runs (the finer target's, kept
+  // packed after the refinement), the target's rgba gone: the same verdict, to the bit.
+  TargetFrames packed_target = t;
+  WhiteRuns runs = pack_white_runs(packed_target.rgba);
+  REQUIRE(packed_target.rgba.empty());
+  int reads = 0;
+  const GateVerdict p = judge_fit(packed_target, &c, [&](int k) {
+    return std::vector<float>(renders.begin() + static_cast<std::ptrdiff_t>(k * frame),
+                              renders.begin() + static_cast<std::ptrdiff_t>((k + 1) * frame));
+  }, pts, plan, scene, Affine{}, {}, [&](int k, float* out) {
+    ++reads;
+    unpack_white_runs_range(runs, static_cast<size_t>(k) * px, px, out);
+  });
+  CHECK(reads == kK);
+  CHECK(p.psnr_db == a.psnr_db);
+  CHECK(p.iou == a.iou);
+  CHECK(p.reasons == a.reasons);
+  CHECK(p.passed == a.passed);
   // Keyframe 0: the 64 drawn pixels are the square, the figure is it and one pixel more;
   // keyframe 1's square is 2 columns on: 48 in common of 80 + 1.
   CHECK(b.iou[0] == doctest::Approx(64.0 / 65));
   CHECK(b.iou[1] == doctest::Approx(48.0 / 81));
+}
+
+TEST_CASE("compact_raw: a drawing's frames are held deflated, a small share of their 4 bytes a pixel") {
+  // 64 x 64 white paper with a flat 16 x 16 square: 16 kB of bytes a keyframe before deflating.
+  constexpr int W = 64;
+  const size_t px = static_cast<size_t>(W) * W;
+  std::vector<float> raw(px * 4, 1.f);
+  for (int y = 20; y < 36; ++y)
+    for (int x = 10; x < 26; ++x)
+      for (int ch = 0; ch < 3; ++ch) raw[(static_cast<size_t>(y) * W + x) * 4 + ch] = 0.25f * (ch + 1);
+  CompactRaw c;
+  compact_raw_frame(c, raw.data(), W, W);
+  compact_raw_frame(c, raw.data(), W, W);
+  REQUIRE(c.keyframes() == 2);
+  CHECK(c.bytes() < 2 * px * 4 / 20);
+  // Inflated: the 8-bit colours and the figure, exactly.
+  const std::vector<uint8_t> f = compact_frame(c, 1);
+  REQUIRE(f.size() == px * 4);
+  CHECK(f[3 * (20 * W + 10)] == 64);       // 0.25 -> 63.75, rounded
+  CHECK(f[3 * (20 * W + 10) + 2] == 191);  // 0.75 -> 191.25
+  CHECK(f[3 * px + 20 * W + 10] == 1);
+  CHECK(f[3 * px + 0] == 0);
+  CHECK(f[0] == 255);
+  CHECK_THROWS_AS(compact_frame(c, 2), std::out_of_range);
 }
 
 TEST_CASE("compact_raw: a target without frames before cleanup is an internal error, not a read past the end") {

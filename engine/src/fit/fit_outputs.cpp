@@ -34,6 +34,12 @@ RgbaImage render_panel(const std::vector<float>& render, int w, int h) {
 
 }  // namespace
 
+CleanedFrameReader FitRun::final_cleaned_reader() const {
+  if (!fine || !fine_packed) return {};
+  const size_t px = static_cast<size_t>(fine_target->width) * fine_target->height;
+  return [this, px](int k, float* out) { unpack_white_runs_range(fine_rgba, static_cast<size_t>(k) * px, px, out); };
+}
+
 void FitRun::write_animation() {
   activity("writing the animation");
   Fitter& final_fit = this->final_fit();
@@ -66,7 +72,7 @@ void FitRun::write_animation() {
   // every keyframe at once were 16 bytes per pixel and keyframe, on the device and the host,
   // the fit's peak (126 MB for 30 keyframes at 512 px).
   verdict = judge_fit(final_target, &final_raw(), [&](int k) { return final_fit.render_keyframe(k); }, points,
-                      final_fit.raster_plan(), fit_scene, final_size.view, gate_options);
+                      final_fit.raster_plan(), fit_scene, final_size.view, gate_options, final_cleaned_reader());
   // Nothing after the gate reads the targets' cleaned frames (the preview shows the frames
   // before cleanup, compact; fit.json the targets' counts): 16 bytes per pixel and keyframe,
   // 88 MB for 21 keyframes at 512 px and 22 MB at 256, freed before the preview's encoder.

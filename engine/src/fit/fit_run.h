@@ -211,6 +211,10 @@ struct FitRun {
   Fitter& coarse_fit() { return keyed ? *keyed : *fitter; }
   Fitter& final_fit() { return fine ? *fine : coarse_fit(); }
   const TargetFrames& final_target() const { return fine ? *fine_target : *coarse_target; }
+  // The gate's reader of the final target's cleaned frames: a keyframe at a time from the runs
+  // when the finer target's are packed (they stay so after the refinement); none (the gate
+  // reads final_target().rgba) otherwise.
+  CleanedFrameReader final_cleaned_reader() const;
   const CompactRaw& final_raw() const { return fine ? fine_raw : coarse_target == &target ? target_raw : keyed_raw; }
 };
 

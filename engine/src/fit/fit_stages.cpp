@@ -16,6 +16,7 @@
 #include "fit/optimise/keyframe_choice.h"
 #include "fit/output/checkpoint.h"
 #include "fit/target/white_runs.h"
+#include "svgmotion/error.h"
 #include "svgmotion/log.h"
 
 namespace svgm {
@@ -212,6 +213,21 @@ void FitRun::add_keyframes_from_target() {
       o.denoised_from = nullptr;
       if (to.stabilise) o.shake_from = &target;
       keyed_target = load_target_compact(*target_path, size.width, size.height, o, keyed_raw);
+      // The refinement's target is read now, from the denoised keyframes this load kept, before
+      // this stage's fitter is made rather than after the stage: they go as it takes them, and
+      // it is held through the stage compact and packed (fit_job.cpp's prepare_fine: deflated
+      // 8-bit raw, runs of white and the mask) where they were float RGB at the denoising's size
+      // (12 bytes per pixel and keyframe: 107 MB for the twemoji dog's 34 keyframes at 512 px).
+      // The same load from the same frames, so the same bits; a target it cannot read is
+      // reported by the refinement, as before.
+      coarse_target = &*keyed_target;  // the refinement's frames and denoised keyframes
+      if (refine_w > 0) {
+        try {
+          prepare_fine();
+          release_compiler_pages("the refinement's blur matching");
+        } catch (const Error&) {
+        }
+      }
       FitOptions ko = coarse_options;
       // The new keyframes start close (warm-started from the most alike fitted keyframe) and
       // every keyframe is refined jointly: a quarter of the budget, ended by the plateau test.
@@ -359,8 +375,11 @@ void FitRun::refine() {
       cfit.release_loss_memory();
       trim_heap();
     }
-    unpack_fine_rgba();
-    fine->read_targets_whole();
+    // The finer target's frames stay packed to the end: the gate reads them a keyframe at a
+    // time (FitRun::final_cleaned_reader), the preview reads the compact frames before cleanup,
+    // and the fitter's loss, were it evaluated again, reads them from the runs (set above).
+    // Unpacked here, they were the run's peak with many keyframes: 16 bytes per pixel and
+    // keyframe, 142 MB for the twemoji dog's 34 at 512 px, beside every other target and fitter.
   }
 }
 

@@ -144,7 +144,8 @@ GateVerdict judge_fit(const TargetFrames& target, const std::function<std::vecto
 
 GateVerdict judge_fit(const TargetFrames& target, const CompactRaw* compact,
                       const std::function<std::vector<float>(int)>& render, const std::vector<double>& points,
-                      const RasterPlan& plan, const Scene& scene, const Affine& view, const GateOptions& o) {
+                      const RasterPlan& plan, const Scene& scene, const Affine& view, const GateOptions& o,
+                      const CleanedFrameReader& cleaned) {
   GateVerdict v;
   const int K = target.keyframes, W = target.width, H = target.height;
   const size_t px = static_cast<size_t>(W) * H;
@@ -179,7 +180,12 @@ GateVerdict judge_fit(const TargetFrames& target, const CompactRaw* compact,
     // background and white parts of the drawing count the same on both sides.
     const std::vector<float> rendered = render(k);
     const float* r = rendered.data();
-    const float* t = &target.rgba[static_cast<size_t>(k) * px * 4];
+    std::vector<float> frame;  // keyframe k's cleaned frame, when its holder keeps them packed
+    if (cleaned) {
+      frame.resize(px * 4);
+      cleaned(k, frame.data());
+    }
+    const float* t = cleaned ? frame.data() : &target.rgba[static_cast<size_t>(k) * px * 4];
     const RawFigure f = raw_figure(target, compact, k);  // the target's figure and background
     double se = 0;
     size_t inter = 0, uni = 0;

@@ -69,10 +69,15 @@ GateVerdict judge_fit(const TargetFrames& target, const std::function<std::vecto
                       const std::vector<double>& points, const RasterPlan& plan, const Scene& scene,
                       const Affine& view, const GateOptions& options = {});
 // The same for a target whose `raw` a fit has compacted into `raw` (fit/target/compact_raw.h):
-// the same verdict, to the bit, as from the float frames.
+// the same verdict, to the bit, as from the float frames. `cleaned`, when given, writes keyframe
+// k's cleaned frame (H * W RGBA floats, what target.rgba holds for it) to its second argument:
+// for a target whose rgba its holder keeps packed (fit/target/white_runs.h), read a keyframe at
+// a time instead of whole (16 bytes per pixel and keyframe: 142 MB for 34 keyframes at 512 px).
+using CleanedFrameReader = std::function<void(int k, float* rgba)>;
 GateVerdict judge_fit(const TargetFrames& target, const CompactRaw* raw,
                       const std::function<std::vector<float>(int)>& render, const std::vector<double>& points,
-                      const RasterPlan& plan, const Scene& scene, const Affine& view, const GateOptions& options = {});
+                      const RasterPlan& plan, const Scene& scene, const Affine& view, const GateOptions& options = {},
+                      const CleanedFrameReader& cleaned = {});
 
 nlohmann::json gate_json(const GateVerdict& v, const GateOptions& o);
 
