@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <string>
 
 #include "cli/cli_args.h"
@@ -19,19 +20,41 @@ namespace svgm::cli {
 
 namespace {
 
-// Builds, and launches every kernel of, what a default run builds: the raster program at the
-// recolorer's and the fit's widths (256 px, band height 16; 512 px and up, 8) with the default
-// blur, and the fitter's program (warm_kernels.h). A fit whose blur is matched to a blurred
-// target still builds its own taps then (in a child process: opencl/compile_child.h).
+// Builds, and launches every kernel of, what a default run builds (warm_kernels.h), and says
+// what it built: the raster program at the recolorer's and the fit's widths (256 px, band
+// height 16; 512 px and up, 8), each in its two builds (raster/loss_blur.h): the paper's blur
+// (plain renders, and fits whose video is as sharp as the render) and the matched one, which
+// serves every blur matching picks (any σ, chroma σ and chroma weight: its taps are a kernel
+// argument); then the fitter's program. A default run's first fit then compiles nothing.
 void warm(const std::string& device) {
   const auto t0 = std::chrono::steady_clock::now();
   ClRuntime rt(device);
-  for (int width : {256, 512}) warm_raster(rt, width, width, kLossSigma, kLossSigma, 1);
-  warm_fitter(rt);
+  int compiled = 0, cached = 0;
+  // One program: how it was obtained and how long that took.
+  auto one = [&](const std::string& what, const std::function<void()>& make) {
+    const auto s0 = std::chrono::steady_clock::now();
+    const int before = rt.programs_built_from_source() + rt.programs_compiled_in_child();
+    make();
+    const bool built = rt.programs_built_from_source() + rt.programs_compiled_in_child() > before;
+    (built ? compiled : cached) += 1;
+    std::printf("warm: %-48s %s, %.1f s\n", what.c_str(), built ? "compiled" : "cached",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count());
+    std::fflush(stdout);
+  };
+  // A matched blur with every part the build has (a radius above the paper's, reflect
+  // padding, chroma taps of their own, a chroma weight): the program is the same for any.
+  constexpr double kSigma = 1.2, kChromaSigma = 1.35, kChromaWeight = 0.5;
+  for (int width : {256, 512}) {
+    const std::string px = std::to_string(width) + " px";
+    one("raster program, " + px + ", the paper's blur",
+        [&] { warm_raster(rt, width, width, kLossSigma, kLossSigma, 1); });
+    one("raster program, " + px + ", blur-matched (any sigma)",
+        [&] { warm_raster(rt, width, width, kSigma, kChromaSigma, kChromaWeight); });
+  }
+  one("fitter program", [&] { warm_fitter(rt); });
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("warm: %d kernel programs compiled, %d already cached, %.1f s (cache: %s)\n",
-              rt.programs_built_from_source() + rt.programs_compiled_in_child(),
-              rt.programs_loaded_from_cache() - rt.programs_compiled_in_child(), s, kernel_cache_dir().c_str());
+  std::printf("warm: %d kernel programs compiled, %d already cached, %.1f s (cache: %s)\n", compiled, cached, s,
+              kernel_cache_dir().c_str());
 }
 
 }  // namespace
