@@ -330,8 +330,9 @@ inline float3 blurred_gradient(const LossBlur* lb, __global const float* E, __gl
 #ifdef LOSS_MATCHED
   /* The blur's adjoint per channel group: blur the stored M E' (A⁻ᵀ M E' in YCbCr), then Aᵀ
    * with LOSS_YCC (matched_residual). The same taps in the same order with or without the
-   * tests. */
-  float3 acc = (float3)(0.0f);
+   * tests. In RGB the sum starts from R, as the paper's build's does (the taps compiled into
+   * the program added the same terms in this order). */
+  float3 acc = LOSS_YCC ? (float3)(0.0f) : s;
   if (inside) {
     for (int dy = -LOSS_R; dy <= LOSS_R; ++dy) {
       const int at = (y + dy) * width + x;
@@ -361,7 +362,7 @@ inline float3 blurred_gradient(const LossBlur* lb, __global const float* E, __gl
       acc += (near ? wy[dy + LOSS_R] : gv_tap(dy)).xyz * row;
     }
   }
-  return scale * (s + (LOSS_YCC ? rgb_adjoint_from_ycc(acc) : acc));
+  return scale * (LOSS_YCC ? s + rgb_adjoint_from_ycc(acc) : acc);
 #else
   if (inside) {
     for (int dy = -LOSS_R; dy <= LOSS_R; ++dy) {
