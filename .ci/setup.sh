@@ -43,7 +43,8 @@ cmake --build build -j "$jobs"
 
 if [[ $mode == example ]]; then
   ./build/frontends/svgmotion devices
-  # The OpenCL kernels compiled once, here, rather than during the first run (most of a minute).
+  # The OpenCL kernels a default run uses (six programs; docs/commands.md) compiled once, here,
+  # rather than during the first run: that run then compiles nothing.
   ./build/frontends/svgmotion devices --warm
   # The main job, offline: the procedural video provider stands in for a video model.
   ./build/frontends/svgmotion run --input tests/data/examples/man.svg \

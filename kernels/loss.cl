@@ -7,7 +7,8 @@
  * G_t the 5x5 Gaussian with σ = 1 (paper, appendix), applied separably as g ⊗ g with
  * g = exp(-j²/2σ²) / Σ over j = -2..2, and zero padding outside the frame. G, the render's, is
  * the same unless blur matching widened it, to radius LOSS_R (prelude.cl's taps: a video
- * softer than the render is matched by blurring the render as much; raster/loss_taps.h).
+ * softer than the render is matched by blurring the render as much; raster/loss_taps.h, and
+ * the LOSS_MATCHED build, whose taps are the kernels' LossBlur argument).
  * Then only what is drawn takes G: the paper (bg, the same at every pose) is blurred by G_t
  * as the target is, so that E = G ∗ (C − bg) − G_t ∗ (T − bg); with zero padding a wider G on
  * the paper left a band along the frame's border that no pose could fit (see Q below).
@@ -18,7 +19,7 @@
  * because a separable convolution with a symmetric kernel and zero padding is its own adjoint
  * (the plain form: ∂L/∂C[p] = Σ_q G[q - p] · 2w/N · E[q], the same stencil).
  *
- * With LOSS_REFLECT (a render σ above 1, prelude.cl) both blurs pad by reflection instead of
+ * With LOSS_REFLECTS (a render σ above 1, prelude.cl) both blurs pad by reflection instead of
  * zeros: a tap beyond the frame reads the pixel mirrored inside it, in the render's passes
  * here and in the host's G_t of the target (raster/loss_taps.h, loss_reflects). The operator
  * is then not its own adjoint within LOSS_R of the border: there ∂L/∂C[p] = Σ_q A[q][p] ·
@@ -38,8 +39,8 @@
  * (codecs subsample and quantise chroma harder). Then E' = B X, Q = bg·(G_t 1) − G_t ∗ T,
  * R = Bᵀ Q and ∂L/∂C = 2w/N · (R + Bᵀ E'), Bᵀ = Aᵀ · diag(G, G_c, G_c) · A⁻ᵀ: the raster pass
  * blurs A·X along x, blur_y_loss_rows finishes the blur and keeps A⁻ᵀ E', blurred_gradient
- * blurs that and applies Aᵀ. With G_c = G the build leaves CHROMA_R undefined and the code is
- * the plain one above.
+ * blurs that and applies Aᵀ. With G_c = G (LOSS_YCC 0) the passes stay in RGB, the plain form
+ * above.
  *
  * Q, R and Σ Q² depend on the targets only and are computed once (ClRaster::set_targets); each
  * iteration touches only the pixels within LOSS_R (or 2 LOSS_R, for the gradient) of something drawn: the
@@ -80,67 +81,50 @@ inline __global const int* loss_frame_tiles(__global const int* tiles, int k, in
   return tiles + (size_t)k * ((width + LOSS_TILE - 1) / LOSS_TILE) * ((height + LOSS_TILE - 1) / LOSS_TILE);
 }
 
-/* G0..G8, LOSS_R, g_tap: the render's 1-D Gaussian taps, defined in prelude.cl. */
+/* LOSS_R, gv_tap (and g_tap in the paper's build): the render's 1-D Gaussian taps, defined in
+ * prelude.cl from the build or from `lb`. */
 
 /* One separable pass of the blur, along x (dir = 0) or y (dir = 1), times `scale`. No host
  * routine launches it today (the fit's passes are raster.cl's residual output and the kernels
  * below); it is kept as the plain form of one pass. With the per-group blur its pixels are in
  * YCbCr and each group takes its own taps, as in the fused passes. */
 __kernel void blur_pass(__global const float4* src, __global float4* dst, float scale, int dir,
-                        int width, int height, int frames) {
+                        int width, int height, int frames, __constant LossBlur* loss_blur) {
+  LOSS_BLUR_PRIVATE;
   const int x = get_global_id(0), y = get_global_id(1), k = get_global_id(2);
   if (x >= width || y >= height || k >= frames) return;
   __global const float4* f = src + (size_t)k * width * height;
   const int step = dir == 0 ? 1 : width, pos = y * width + x;
   const int at = dir == 0 ? x : y, n = dir == 0 ? width : height;
-#if defined(LOSS_REFLECT) && defined(CHROMA_R)
   float4 s = (float4)(0.0f);
-  for (int j = -LOSS_R; j <= LOSS_R; ++j) s += gv_tap(j) * f[pos + (loss_reflect(at + j, n) - at) * step];
-#elif defined(LOSS_REFLECT)
-  float4 s = (float4)(0.0f);
-  for (int j = -LOSS_R; j <= LOSS_R; ++j) s += g_tap(j) * f[pos + (loss_reflect(at + j, n) - at) * step];
-#elif defined(CHROMA_R)
-  float4 s = gv_tap(0) * f[pos];
-  for (int j = 1; j <= LOSS_R; ++j) {
-    if (at >= j) s += gv_tap(j) * f[pos - j * step];
-    if (at + j < n) s += gv_tap(j) * f[pos + j * step];
+  for (int j = -LOSS_R; j <= LOSS_R; ++j) {
+    const int t = LOSS_REFLECTS ? loss_reflect(at + j, n) : at + j;
+    if (t >= 0 && t < n) s += gv_tap(j) * f[pos + (t - at) * step];
   }
-#else
-  float4 s = G0 * f[pos];
-  for (int j = 1; j <= LOSS_R; ++j) {
-    if (at >= j) s += g_tap(j) * f[pos - j * step];
-    if (at + j < n) s += g_tap(j) * f[pos + j * step];
-  }
-#endif
   dst[(size_t)k * width * height + pos] = scale * s;
 }
 
-#ifdef CHROMA_W
-/* The chroma weight w (CHROMA_W, fit/target/blur_match.h): the squared residual is measured as
- * Eᵀ M E with M = w·I + (1 − w)·y yᵀ/|y|², y = (.299, .587, .114) the luma row of A. A residual
- * of luma alone (along y) counts fully; one of chroma alone (yᵀE = 0: a codec's chroma error,
- * A⁻¹ (0, Cb, Cr)) counts w times. M is symmetric and constant, so it commutes with the blur:
- * with it, Σ E² becomes Σ (Qᵀ M Q + 2 Qᵀ M E' + E'ᵀ M E'), the host's Σ Q² and R take M
- * (ClRaster::prepare_loss_constants) and the backward pass blurs M E' where it blurred E'. */
-inline float3 loss_metric(float3 e) {
+#ifdef LOSS_MATCHED
+/* The chroma weight w (LossBlur's chroma_w, fit/target/blur_match.h): the squared residual is
+ * measured as Eᵀ M E with M = w·I + (1 − w)·y yᵀ/|y|², y = (.299, .587, .114) the luma row of
+ * A. A residual of luma alone (along y) counts fully; one of chroma alone (yᵀE = 0: a codec's
+ * chroma error, A⁻¹ (0, Cb, Cr)) counts w times. M is symmetric and constant, so it commutes
+ * with the blur: with it, Σ E² becomes Σ (Qᵀ M Q + 2 Qᵀ M E' + E'ᵀ M E'), the host's Σ Q² and
+ * R take M (ClRaster::prepare_loss_constants) and the backward pass blurs M E' where it
+ * blurred E'. At w = 1 it returns e exactly (1·e + 0·y). */
+inline float3 loss_metric(const LossBlur* lb, float3 e) {
   const float3 y = (float3)(0.299f, 0.587f, 0.114f);
-  return CHROMA_W * e + ((1.0f - CHROMA_W) * dot(y, e) / dot(y, y)) * y;
+  return lb->chroma_w * e + ((1.0f - lb->chroma_w) * dot(y, e) / dot(y, y)) * y;
 }
-#endif
 
-#ifdef CHROMA_R
-/* With the per-group blur (prelude.cl) the y-blur `v` is B·X in YCbCr: E' = A⁻¹ v in RGB makes
- * the row's term with the RGB q; what is kept for the backward pass is A⁻ᵀ E' (A⁻ᵀ M E' with a
- * chroma weight), so that its blur (the same per-group taps, the operator's adjoint
- * Aᵀ·diag(G)·A⁻ᵀ) works in the same coordinates. */
-inline float chroma_residual(float3 q, float3 v, __global float* e, int x) {
-  const float3 E = rgb_from_ycc(v);
-#ifdef CHROMA_W
-  const float3 M = loss_metric(E);
-#else
-  const float3 M = E;
-#endif
-  vstore3(ycc_adjoint_from_rgb(M), x, e);
+/* The row term of pixel x and what the backward pass keeps of it. The y-blur `v` is B·X, in
+ * YCbCr with the per-group blur (LOSS_YCC, prelude.cl): then E' = A⁻¹ v in RGB makes the row's
+ * term with the RGB q, and what is kept is A⁻ᵀ M E', so that its blur (the same per-group taps,
+ * the operator's adjoint Aᵀ·diag(G)·A⁻ᵀ) works in the same coordinates; in RGB, M E'. */
+inline float matched_residual(const LossBlur* lb, float3 q, float3 v, __global float* e, int x) {
+  const float3 E = LOSS_YCC ? rgb_from_ycc(v) : v;
+  const float3 M = loss_metric(lb, E);
+  vstore3(LOSS_YCC ? ycc_adjoint_from_rgb(M) : M, x, e);
   return dot(2.0f * q + E, M);
 }
 #endif
@@ -162,7 +146,7 @@ inline void q_tile_start(__global const int* row, int in, int x, size_t* at, int
  * order, so the next row's lines stream in while this row computes; as demand misses they
  * were most of this kernel's time (the load of Q, of the newest tap row and the E' store,
  * perf on sushi). Changes no value. */
-inline void prefetch_next_row(__global const float* f, __global const int2* ex,
+inline void prefetch_next_row(const LossBlur* lb, __global const float* f, __global const int2* ex,
                               __global const half* Q, __global const int* qrow,
                               __global float* e, int y, int width, int height) {
 #ifdef PREFETCH_ROWS
@@ -198,17 +182,16 @@ inline void prefetch_next_row(__global const float* f, __global const int2* ex,
 __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ext_x,
                                __global const half* Q, __global float* E,
                                __global int2* ext_e, __global float* row_sums, int width,
-                               int height, int frames, __global const int* tiles) {
+                               int height, int frames, __global const int* tiles,
+                               __constant LossBlur* loss_blur) {
+  LOSS_BLUR_PRIVATE;
   const int y = get_global_id(0), k = get_global_id(1);
   if (y >= height || k >= frames) return;
   __global const int2* ex = ext_x + (size_t)k * height;
   int lo = width, hi = -1;
   for (int j = -LOSS_R; j <= LOSS_R; ++j) {
-#ifdef LOSS_REFLECT
-    const int yy = loss_reflect(y + j, height); /* a row within LOSS_R of y: the same extent */
-#else
-    const int yy = y + j;
-#endif
+    /* Mirrored, a row within LOSS_R of y: the same extent. */
+    const int yy = LOSS_REFLECTS ? loss_reflect(y + j, height) : y + j;
     if (yy < 0 || yy >= height || ex[yy].x > ex[yy].y) continue;
     lo = min(lo, ex[yy].x);
     hi = max(hi, ex[yy].y);
@@ -228,15 +211,15 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
    * is not a rectangle have extents that differ, and testing every tap of every pixel against
    * them was most of this kernel's time. Either way the same taps are added in the same order
    * (tap rows top to bottom), so the same bits. */
-  int ta[2 * LOSS_R + 1], tb[2 * LOSS_R + 1];
+  int ta[2 * LOSS_R_MAX + 1], tb[2 * LOSS_R_MAX + 1];
   int fa = lo, fb = hi;
-#ifdef LOSS_REFLECT
-  /* Tap row j reads row ro[j] / width, mirrored into the frame (prelude.cl). */
-  int ro[2 * LOSS_R + 1];
+#ifdef LOSS_MATCHED
+  /* Tap row j reads row ro[j] / width (mirrored into the frame with LOSS_REFLECTS). */
+  int ro[2 * LOSS_R_MAX + 1];
 #endif
   for (int j = 0; j <= 2 * LOSS_R; ++j) {
-#ifdef LOSS_REFLECT
-    const int yy = loss_reflect(y + j - LOSS_R, height);
+#ifdef LOSS_MATCHED
+    const int yy = LOSS_REFLECTS ? loss_reflect(y + j - LOSS_R, height) : y + j - LOSS_R;
     ro[j] = yy * width;
 #else
     const int yy = y + j - LOSS_R;
@@ -247,14 +230,9 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
     fa = max(fa, ta[j]);
     fb = min(fb, tb[j]);
   }
+  prefetch_next_row(lb, f, ex, Q, qrow, e, y, width, height);
+#ifndef LOSS_MATCHED
   const int r = (y - LOSS_R) * width; /* tap row j starts at f + r + j * width */
-#ifdef LOSS_REFLECT
-#define TAP_ROW(j) ro[j]
-#else
-#define TAP_ROW(j) (r + (j) * width)
-#endif
-  prefetch_next_row(f, ex, Q, qrow, e, y, width, height);
-#if !defined(CHROMA_R) && !defined(CHROMA_W) && LOSS_R == 2
   /* The plain blur is the same for each of a pixel's three floats: over the span where every
    * tap is inside, E' is blurred as a flat run of floats, eight at a time (PoCL kept the
    * pixel loop scalar), then the row's sum is taken pixel by pixel from the stored E' in x
@@ -297,68 +275,40 @@ __kernel void blur_y_loss_rows(__global const float* Xb, __global const int2* ex
     s += dot(2.0f * vload_half4(qa, Q).xyz + v, v);
   }
 #else
+  /* Any radius and taps (LossBlur): the same taps in the same order with or without the
+   * extents' tests. */
   size_t qa = 0;
   int qs = 0;
   for (int x = lo; x <= hi; ++x, qa += qs) {
     if (x == lo || x % LOSS_TILE == 0) q_tile_start(qrow, qin, x, &qa, &qs);
     float3 v = (float3)(0.0f);
     if (x >= fa && x <= fb) {
-#if defined(CHROMA_R)
-      for (int j = 0; j <= 2 * LOSS_R; ++j) v += gv_tap(j - LOSS_R).xyz * vload3(TAP_ROW(j) + x, f);
-#elif LOSS_R == 2
-      v += G2 * vload3(r + x, f);
-      v += G1 * vload3(r + width + x, f);
-      v += G0 * vload3(r + 2 * width + x, f);
-      v += G1 * vload3(r + 3 * width + x, f);
-      v += G2 * vload3(r + 4 * width + x, f);
-#else
-      for (int j = 0; j <= 2 * LOSS_R; ++j) v += g_tap(j - LOSS_R) * vload3(TAP_ROW(j) + x, f);
-#endif
+      for (int j = 0; j <= 2 * LOSS_R; ++j) v += gv_tap(j - LOSS_R).xyz * vload3(ro[j] + x, f);
     } else {
-      for (int j = 0; j <= 2 * LOSS_R; ++j) {
-#ifdef CHROMA_R
-        if (x >= ta[j] && x <= tb[j]) v += gv_tap(j - LOSS_R).xyz * vload3(TAP_ROW(j) + x, f);
-#else
-        if (x >= ta[j] && x <= tb[j]) v += g_tap(j - LOSS_R) * vload3(TAP_ROW(j) + x, f);
-#endif
-      }
+      for (int j = 0; j <= 2 * LOSS_R; ++j)
+        if (x >= ta[j] && x <= tb[j]) v += gv_tap(j - LOSS_R).xyz * vload3(ro[j] + x, f);
     }
-#if defined(CHROMA_R)
-    s += chroma_residual(vload_half4(qa, Q).xyz, v, e, x);
-#elif defined(CHROMA_W)
-    const float3 m = loss_metric(v);
-    vstore3(m, x, e);
-    s += dot(2.0f * vload_half4(qa, Q).xyz + v, m);
-#else
-    vstore3(v, x, e);
-    s += dot(2.0f * vload_half4(qa, Q).xyz + v, v);
-#endif
+    s += matched_residual(lb, vload_half4(qa, Q).xyz, v, e, x);
   }
 #endif
   row_sums[(size_t)k * height + y] = s;
-#undef TAP_ROW
 }
 
-#ifdef LOSS_REFLECT
-#ifdef CHROMA_R
-#define LOSS_TAP4(j) gv_tap(j)
-#else
-#define LOSS_TAP4(j) ((float4)(g_tap(j)))
-#endif
+#ifdef LOSS_MATCHED
 /* The adjoint's taps at pixel p of a row (or column) of n pixels with reflect padding:
  * w[i] = A[q][p] for q = p − LOSS_R + i, the taps of output q that read p (q + j itself, or
  * mirrored into p). Beyond LOSS_R of the border that is the stencil. Per channel group (x luma,
- * y and z chroma) with CHROMA_R. */
-inline void loss_adjoint_taps(int p, int n, float4* w) {
+ * y and z chroma). */
+inline void loss_adjoint_taps(const LossBlur* lb, int p, int n, float4* w) {
   const int plain = p > LOSS_R && p + LOSS_R + 1 < n;
   for (int i = 0; i <= 2 * LOSS_R; ++i) {
     const int q = p - LOSS_R + i;
     float4 s = (float4)(0.0f);
     if (plain) {
-      s = LOSS_TAP4(i - LOSS_R);
+      s = gv_tap(i - LOSS_R);
     } else if (q >= 0 && q < n) {
       for (int j = -LOSS_R; j <= LOSS_R; ++j)
-        if (loss_reflect(q + j, n) == p) s += LOSS_TAP4(j);
+        if (loss_reflect(q + j, n) == p) s += gv_tap(j);
     }
     w[i] = s;
   }
@@ -366,69 +316,63 @@ inline void loss_adjoint_taps(int p, int n, float4* w) {
 #endif
 
 /* ∂L/∂C at pixel (x, y) of a frame: 2w/N · (R + G ∗ E'), E' read within its row extents. */
-inline float3 blurred_gradient(__global const float* E, __global const int2* ext_e,
+inline float3 blurred_gradient(const LossBlur* lb, __global const float* E, __global const int2* ext_e,
                                __global const half* R, __global const int* tiles, int x, int y,
                                int width, int height, float scale) {
   float3 s = vload_half4(loss_tile_pixel(tiles, x, y, width), R).xyz;
-#ifdef LOSS_REFLECT
-  /* Only within LOSS_R (+1) of the border do the adjoint's taps differ from the stencil (the
-   * same values elsewhere: loss_adjoint_taps' plain case), and only there are they made. */
-  const int near = x <= LOSS_R || x + LOSS_R + 1 >= width || y <= LOSS_R || y + LOSS_R + 1 >= height;
-  float4 wx[2 * LOSS_R + 1], wy[2 * LOSS_R + 1];
-  if (near) {
-    loss_adjoint_taps(x, width, wx);
-    loss_adjoint_taps(y, height, wy);
-  }
-#define TAP_X(d) (near ? wx[(d) + LOSS_R] : LOSS_TAP4(d))
-#define TAP_Y(d) (near ? wy[(d) + LOSS_R] : LOSS_TAP4(d))
-#elif defined(CHROMA_R)
-#define TAP_X(d) gv_tap(d)
-#define TAP_Y(d) gv_tap(d)
-#else
-#define TAP_X(d) ((float4)(g_tap(d)))
-#define TAP_Y(d) ((float4)(g_tap(d)))
-#endif
-#ifdef CHROMA_R
-  /* The per-group blur's adjoint: blur the stored A⁻ᵀ E' per channel group, then Aᵀ (loss.cl's
-   * chroma_residual). The same taps and order whether or not the extents need tests. */
-  float3 acc = (float3)(0.0f);
-  for (int dy = -LOSS_R; dy <= LOSS_R; ++dy) {
-    const int yy = y + dy;
-    if (yy < 0 || yy >= height) continue;
-    const int2 ex = ext_e[yy];
-    float3 row = (float3)(0.0f);
-    for (int dx = -LOSS_R; dx <= LOSS_R; ++dx) {
-      const int xx = x + dx;
-      if (xx >= ex.x && xx <= ex.y) row += TAP_X(dx).xyz * vload3(yy * width + xx, E);
-    }
-    acc += TAP_Y(dy).xyz * row;
-  }
-  return scale * (s + rgb_adjoint_from_ycc(acc));
-#endif
   /* Inside the frame with every tap within its row's extent (a layered scene's usual case):
    * the same sum without the tests. With reflect padding the pixels LOSS_R from the border
    * also take back what mirrored taps read of them: one pixel more is not inside. */
-#ifdef LOSS_REFLECT
-  const int m = LOSS_R + 1;
-#else
-  const int m = LOSS_R;
-#endif
+  const int m = LOSS_REFLECTS ? LOSS_R + 1 : LOSS_R;
   int inside = x >= m && x + m < width && y >= m && y + m < height;
   for (int dy = -LOSS_R; dy <= LOSS_R && inside; ++dy)
     inside = ext_e[y + dy].x <= x - LOSS_R && ext_e[y + dy].y >= x + LOSS_R;
+#ifdef LOSS_MATCHED
+  /* The blur's adjoint per channel group: blur the stored M E' (A⁻ᵀ M E' in YCbCr), then Aᵀ
+   * with LOSS_YCC (matched_residual). The same taps in the same order with or without the
+   * tests. In RGB the sum starts from R, as the paper's build's does (the taps compiled into
+   * the program added the same terms in this order). */
+  float3 acc = LOSS_YCC ? (float3)(0.0f) : s;
   if (inside) {
     for (int dy = -LOSS_R; dy <= LOSS_R; ++dy) {
       const int at = (y + dy) * width + x;
       float3 row = (float3)(0.0f);
-#if LOSS_R == 2
+      for (int dx = -LOSS_R; dx <= LOSS_R; ++dx) row += gv_tap(dx).xyz * vload3(at + dx, E);
+      acc += gv_tap(dy).xyz * row;
+    }
+  } else {
+    /* Only within LOSS_R (+1) of the border do reflect padding's adjoint taps differ from the
+     * stencil (the same values elsewhere: loss_adjoint_taps' plain case), and only there are
+     * they made. */
+    const int near = LOSS_REFLECTS && (x <= LOSS_R || x + LOSS_R + 1 >= width || y <= LOSS_R || y + LOSS_R + 1 >= height);
+    float4 wx[2 * LOSS_R_MAX + 1], wy[2 * LOSS_R_MAX + 1];
+    if (near) {
+      loss_adjoint_taps(lb, x, width, wx);
+      loss_adjoint_taps(lb, y, height, wy);
+    }
+    for (int dy = -LOSS_R; dy <= LOSS_R; ++dy) {
+      const int yy = y + dy;
+      if (yy < 0 || yy >= height) continue;
+      const int2 ex = ext_e[yy];
+      float3 row = (float3)(0.0f);
+      for (int dx = -LOSS_R; dx <= LOSS_R; ++dx) {
+        const int xx = x + dx;
+        if (xx >= ex.x && xx <= ex.y) row += (near ? wx[dx + LOSS_R] : gv_tap(dx)).xyz * vload3(yy * width + xx, E);
+      }
+      acc += (near ? wy[dy + LOSS_R] : gv_tap(dy)).xyz * row;
+    }
+  }
+  return scale * (LOSS_YCC ? s + rgb_adjoint_from_ycc(acc) : acc);
+#else
+  if (inside) {
+    for (int dy = -LOSS_R; dy <= LOSS_R; ++dy) {
+      const int at = (y + dy) * width + x;
+      float3 row = (float3)(0.0f);
       row += G2 * vload3(at - 2, E);
       row += G1 * vload3(at - 1, E);
       row += G0 * vload3(at, E);
       row += G1 * vload3(at + 1, E);
       row += G2 * vload3(at + 2, E);
-#else
-      for (int dx = -LOSS_R; dx <= LOSS_R; ++dx) row += g_tap(dx) * vload3(at + dx, E);
-#endif
       s += g_tap(dy) * row;
     }
     return scale * s;
@@ -440,13 +384,12 @@ inline float3 blurred_gradient(__global const float* E, __global const int2* ext
     float3 row = (float3)(0.0f);
     for (int dx = -LOSS_R; dx <= LOSS_R; ++dx) {
       const int xx = x + dx;
-      if (xx >= ex.x && xx <= ex.y) row += TAP_X(dx).x * vload3(yy * width + xx, E);
+      if (xx >= ex.x && xx <= ex.y) row += g_tap(dx) * vload3(yy * width + xx, E);
     }
-    s += TAP_Y(dy).x * row;
+    s += g_tap(dy) * row;
   }
   return scale * s;
-#undef TAP_X
-#undef TAP_Y
+#endif
 }
 
 /* One work-item: L = scale · Σ_k (Σ Q²_k + Σ row sums), in order, and per-frame losses. */

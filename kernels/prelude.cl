@@ -30,43 +30,61 @@
 #define CAP_ROUND 1
 #define CAP_SQUARE 2
 
-/* The 1-D Gaussian the loss blurs the render with: g_j = exp(-j²/2σ²) normalised over
- * j = -LOSS_R..LOSS_R, for j = 0, ±1, ..., σ = 1 and LOSS_R = 2 (5 taps; paper, appendix) unless
- * the build sets them (blur matching, up to 17 taps: raster/loss_taps.h). Used by loss.cl and by
- * raster.cl's fused residual pass. */
-#ifndef LOSS_R
+/* The render's blur in the loss (loss.cl, raster.cl's fused residual pass; raster/loss_taps.h
+ * on the host). Two builds of the raster program serve every blur:
+ *
+ * - the paper's (no LOSS_MATCHED): the 1-D Gaussian g_j = exp(-j²/2σ²) normalised over
+ *   j = -2..2, σ = 1 (5 taps; paper, appendix), as compile-time constants G0..G2, zero padding
+ *   at the frame's border, the same blur for every channel;
+ * - LOSS_MATCHED (blur matching, raster/loss_blur.h): any render σ, chroma σ and chroma
+ *   weight, read at run time from a LossBlur the host fills: the taps, the radius (up to
+ *   LOSS_R_MAX, 17 taps), the padding and the chroma weight. Blur matching picks σ in steps of
+ *   0.05 from the video (1.1 to 1.35 on an H.264 target), and taps compiled into the program
+ *   made every σ a program of its own, 30-50 s of PoCL compiling and 210 MB at the first run
+ *   that chose it, which `devices --warm` could not foresee; with them as data one program
+ *   per width covers every σ.
+ *
+ * Every kernel that blurs takes `__constant LossBlur* loss_blur` as its last argument in both
+ * builds (the paper's never reads it), copies it to private memory (LOSS_BLUR_PRIVATE: a
+ * private copy cannot alias the global buffers the loops write, so its loads leave the loops),
+ * and hands `lb` to the helpers, whose macros below read it. */
+#define LOSS_TAPS_MAX 9 /* g_0..g_8 */
+typedef struct {
+  float4 g[LOSS_TAPS_MAX]; /* tap j: (luma, chroma, chroma, 0) */
+  int r;                   /* the radius: taps j = -r..r */
+  int reflect;             /* reflect-101 padding (else zeros) */
+  int ycc;                 /* the per-group blur in YCbCr (its chroma taps are not its luma's) */
+  float chroma_w;          /* the chroma weight w of loss_metric (loss.cl) */
+} LossBlur;
+#define LOSS_BLUR_PRIVATE                 \
+  const LossBlur loss_blur_copy = *loss_blur; \
+  const LossBlur* lb = &loss_blur_copy
+
+#ifdef LOSS_MATCHED
+#define LOSS_R_MAX (LOSS_TAPS_MAX - 1)
+#define LOSS_R (lb->r)
+#define LOSS_REFLECTS (lb->reflect)
+#define LOSS_YCC (lb->ycc)
+/* The taps of both groups as a vector (luma, chroma, chroma, 0), for float4 pixels in YCbCr
+ * (LOSS_YCC) or RGB (then the host gives chroma the luma taps). */
+#define gv_tap(j) (lb->g[abs(j)])
+#else
+#define LOSS_R_MAX 2
 #define LOSS_R 2
+#define LOSS_REFLECTS 0
+#define LOSS_YCC 0
 #define G0 0.4026199469f
 #define G1 0.2442019099f
 #define G2 0.0544886845f
-#endif
-#ifndef G3
-#define G3 0.0f
-#endif
-#ifndef G4
-#define G4 0.0f
-#endif
-#ifndef G5
-#define G5 0.0f
-#endif
-#ifndef G6
-#define G6 0.0f
-#endif
-#ifndef G7
-#define G7 0.0f
-#endif
-#ifndef G8
-#define G8 0.0f
-#endif
-
 inline float g_tap(int j) {
   j = abs(j);
-  return j == 0 ? G0 : j == 1 ? G1 : j == 2 ? G2 : j == 3 ? G3 : j == 4 ? G4 : j == 5 ? G5 : j == 6 ? G6
-       : j == 7 ? G7 : G8;
+  return j == 0 ? G0 : j == 1 ? G1 : G2;
 }
+#define gv_tap(j) ((float4)(g_tap(j)))
+#endif
 
 /* The loss's padding at the frame's border (raster/loss_taps.h, loss_reflects): zeros, or with
- * LOSS_REFLECT (blur matching, a render σ above 1) reflect-101, index −1 reading 1 and n
+ * LOSS_REFLECTS (blur matching, a render σ above 1) reflect-101, index −1 reading 1 and n
  * reading n − 2, so that a soft video's ink running off the frame, which its blur kept dark to
  * the border, is matched by a render that does not fade there. loss_reflect(k, n) is the pixel
  * tap index k reads (clamped when the frame is narrower than the stencil), as reflect101 on the
@@ -77,40 +95,11 @@ inline int loss_reflect(int k, int n) {
   return clamp(k, 0, n - 1);
 }
 
-/* Chroma blur matching (raster/loss_taps.h, render_blur): when the build defines CHROMA_R and
- * GC0..GC8, the render is blurred per channel group in YCbCr (BT.601 without offsets), luma Y
- * by G0..G8 and chroma Cb, Cr by GC0..GC8, B = A⁻¹ · diag(G, GC, GC) · A: codecs keep luma
- * sharp and chroma soft, and a loss that blurs both alike makes the fitter move edges between
- * colours of similar luma. LOSS_R is then the larger of the two radii (a tap beyond a
- * channel's own radius weighs 0). Without CHROMA_R none of this is compiled. */
-#ifdef CHROMA_R
-#ifndef GC3
-#define GC3 0.0f
-#endif
-#ifndef GC4
-#define GC4 0.0f
-#endif
-#ifndef GC5
-#define GC5 0.0f
-#endif
-#ifndef GC6
-#define GC6 0.0f
-#endif
-#ifndef GC7
-#define GC7 0.0f
-#endif
-#ifndef GC8
-#define GC8 0.0f
-#endif
-/* The taps of both groups in one vector: (luma, chroma, chroma, 0), for float4 pixels in YCbCr. */
-inline float4 gv_tap(int j) {
-  j = abs(j);
-  return j == 0 ? (float4)(G0, GC0, GC0, 0.0f) : j == 1 ? (float4)(G1, GC1, GC1, 0.0f)
-       : j == 2 ? (float4)(G2, GC2, GC2, 0.0f) : j == 3 ? (float4)(G3, GC3, GC3, 0.0f)
-       : j == 4 ? (float4)(G4, GC4, GC4, 0.0f) : j == 5 ? (float4)(G5, GC5, GC5, 0.0f)
-       : j == 6 ? (float4)(G6, GC6, GC6, 0.0f) : j == 7 ? (float4)(G7, GC7, GC7, 0.0f)
-       : (float4)(G8, GC8, GC8, 0.0f);
-}
+/* Chroma blur matching (raster/loss_taps.h, render_blur): with LOSS_YCC the render is blurred
+ * per channel group in YCbCr (BT.601 without offsets), luma Y by the taps' x and chroma Cb, Cr
+ * by their y and z, B = A⁻¹ · diag(G, GC, GC) · A: codecs keep luma sharp and chroma soft, and
+ * a loss that blurs both alike makes the fitter move edges between colours of similar luma.
+ * The radius is the larger of the two (a tap beyond a group's own radius weighs 0). */
 /* A: RGB -> YCbCr, Y = .299R + .587G + .114B, Cb = (B − Y)/1.772, Cr = (R − Y)/1.402. */
 inline float3 ycc_from_rgb(float3 c) {
   return (float3)(0.299f * c.x + 0.587f * c.y + 0.114f * c.z,
@@ -133,7 +122,6 @@ inline float3 rgb_adjoint_from_ycc(float3 v) {
                   0.587f * v.x - 0.331264108f * v.y - 0.418687589f * v.z,
                   0.114f * v.x + 0.5f * v.y - 0.0813124108f * v.z);
 }
-#endif
 
 /* A hint that the line holding *p will be read soon (PREFETCH_ROWS, set by the host for CPU
  * devices, engine/src/opencl/tuning.cpp): clang's builtin, which PoCL lowers to the CPU's

@@ -252,16 +252,15 @@ inline uchar4 to_rgba8_pixel(float4 c, float4 background) {
 }
 
 /* X' at pixel x of a row from its X (`f`, valid in [lo, hi]) with each tap tested against
- * the hull: the taps outside it are zero. The plain blur (no per-group chroma). */
-inline void x_blur_tested(__local const float4* f, __global float* o, int x, int lo, int hi, int width) {
+ * the hull: the taps outside it are zero. Taps beyond the frame read it mirrored with
+ * LOSS_REFLECTS (prelude.cl); a mirrored pixel lies within LOSS_R of x, so X' still ends
+ * LOSS_R beyond the hull. */
+inline void x_blur_tested(const LossBlur* lb, __local const float4* f, __global float* o, int x, int lo, int hi,
+                          int width) {
   float4 v = (float4)(0.0f);
   for (int j = -LOSS_R; j <= LOSS_R; ++j) {
-#ifdef LOSS_REFLECT
-    const int xx = loss_reflect(x + j, width);
-#else
-    const int xx = x + j;
-#endif
-    if (xx >= lo && xx <= hi) v += g_tap(j) * f[xx];
+    const int xx = LOSS_REFLECTS ? loss_reflect(x + j, width) : x + j;
+    if (xx >= lo && xx <= hi) v += gv_tap(j) * f[xx];
   }
   vstore3(v.xyz, x, o);
 }
@@ -269,10 +268,10 @@ inline void x_blur_tested(__local const float4* f, __global float* o, int x, int
 /* The output stage of a band (raster and raster_taped): `band_rgba` holds the band's
  * premultiplied colours, valid within each row's hull (hull[2r], hull[2r + 1]); the work-items
  * of the group share the rows. */
-inline void write_band(__local float4* band_rgba, __local const int* hull, __global float4* image,
-                       __global uchar4* rgba8, __global int2* extents, float4 background,
-                       int out_mode, int k, int y0, int rows, int width, int height, int lid,
-                       int lsize) {
+inline void write_band(const LossBlur* lb, __local float4* band_rgba, __local const int* hull,
+                       __global float4* image, __global uchar4* rgba8, __global int2* extents,
+                       float4 background, int out_mode, int k, int y0, int rows, int width,
+                       int height, int lid, int lsize) {
   const size_t base = ((size_t)k * height + y0) * width;
   if (out_mode == OUT_RGBA8) {
     /* Outside a row's hull no draw wrote: background. Over an opaque background the result is
@@ -315,12 +314,10 @@ inline void write_band(__local float4* band_rgba, __local const int* hull, __glo
         continue;
       }
       __local float4* f = band_rgba + r * width;
-#ifdef CHROMA_R
-      /* The per-group blur works in YCbCr (prelude.cl): X' = x-blur of A·X. */
-      for (int x = lo; x <= hi; ++x) f[x] = (float4)(ycc_from_rgb(f[x].xyz - background.xyz * f[x].w), 0.0f);
-#else
-      for (int x = lo; x <= hi; ++x) f[x] = (float4)(f[x].xyz - background.xyz * f[x].w, 0.0f);
-#endif
+      if (LOSS_YCC) /* the per-group blur works in YCbCr (prelude.cl): X' = x-blur of A·X */
+        for (int x = lo; x <= hi; ++x) f[x] = (float4)(ycc_from_rgb(f[x].xyz - background.xyz * f[x].w), 0.0f);
+      else
+        for (int x = lo; x <= hi; ++x) f[x] = (float4)(f[x].xyz - background.xyz * f[x].w, 0.0f);
       const int lo2 = max(lo - LOSS_R, 0), hi2 = min(hi + LOSS_R, width - 1);
       /* X' packed, three floats a pixel (its fourth channel is 0): a quarter less memory
        * traffic in the loss's passes, which wait for memory. */
@@ -328,12 +325,12 @@ inline void write_band(__local float4* band_rgba, __local const int* hull, __glo
       /* Taps outside the hull are zero and skipped; in [lo + LOSS_R, hi − LOSS_R] none is, and
        * the taps go without their tests (the same sum in the same order: the same bits). */
       int x = lo2;
-#if !defined(CHROMA_R) && LOSS_R == 2
+#ifndef LOSS_MATCHED
       /* The span without tests, four pixels (sixteen floats) a step, packed to twelve: PoCL
        * kept the pixel loop one float4 a tap. Each float gets the same taps in the same
        * order as below. */
       __local const float* ff = (__local const float*)f;
-      for (; x < lo + LOSS_R && x <= hi2; ++x) x_blur_tested(f, o, x, lo, hi, width);
+      for (; x < lo + LOSS_R && x <= hi2; ++x) x_blur_tested(lb, f, o, x, lo, hi, width);
       for (; x + 3 <= hi - LOSS_R; x += 4) {
         float16 v = (float16)(0.0f);
         v += G2 * vload16(0, ff + 4 * (x - 2));
@@ -348,36 +345,21 @@ inline void write_band(__local float4* band_rgba, __local const int* hull, __glo
       for (; x <= hi2; ++x) {
         float4 v = (float4)(0.0f);
         if (x >= lo + LOSS_R && x <= hi - LOSS_R) {
-#if defined(CHROMA_R)
+#ifdef LOSS_MATCHED
           for (int j = -LOSS_R; j <= LOSS_R; ++j) v += gv_tap(j) * f[x + j];
-#elif LOSS_R == 2
-          /* The loop below written out: PoCL kept it a loop with a table lookup per tap (a
-           * quarter of raster_taped's own time). Same taps, same order. */
+#else
+          /* The loop written out: PoCL kept it a loop with a table lookup per tap (a quarter
+           * of raster_taped's own time). Same taps, same order. */
           v += G2 * f[x - 2];
           v += G1 * f[x - 1];
           v += G0 * f[x];
           v += G1 * f[x + 1];
           v += G2 * f[x + 2];
-#else
-          for (int j = -LOSS_R; j <= LOSS_R; ++j) v += g_tap(j) * f[x + j];
 #endif
+          vstore3(v.xyz, x, o);
         } else {
-          /* Taps beyond the frame read it mirrored with LOSS_REFLECT (prelude.cl); a mirrored
-           * pixel lies within LOSS_R of x, so X' still ends LOSS_R beyond the hull. */
-          for (int j = -LOSS_R; j <= LOSS_R; ++j) {
-#ifdef LOSS_REFLECT
-            const int xx = loss_reflect(x + j, width);
-#else
-            const int xx = x + j;
-#endif
-#ifdef CHROMA_R
-            if (xx >= lo && xx <= hi) v += gv_tap(j) * f[xx];
-#else
-            if (xx >= lo && xx <= hi) v += g_tap(j) * f[xx];
-#endif
-          }
+          x_blur_tested(lb, f, o, x, lo, hi, width);
         }
-        vstore3(v.xyz, x, o);
       }
       *ext = (int2)(lo2, hi2);
     }
@@ -400,7 +382,8 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
                      float4 background, int out_mode,
                      int n_lines, int n_chunks, int n_draws, int width, int height,
                      __global const int* draw_paint,    /* [n_draws] paint image or -1 */
-                     __global const float4* paint) {    /* [n_images][H][W] (RasterPlan::paint) */
+                     __global const float4* paint,      /* [n_images][H][W] (RasterPlan::paint) */
+                     __constant LossBlur* loss_blur) {  /* the residual's blur (prelude.cl) */
   /* One work-group per (band, frame). Clearing and the final write are spread over the group's
    * work-items (PoCL vectorises such loops across work-items); the draw loop, which must run
    * in paint order, is done by work-item 0. */
@@ -448,7 +431,8 @@ __kernel void raster(__global const float4* lines,      /* [K][n_lines] */
   }
   }
   barrier(CLK_LOCAL_MEM_FENCE);
-  write_band(band_rgba, hull, image, rgba8, extents, background, out_mode, slot, y0, rows, width,
+  LOSS_BLUR_PRIVATE; /* after the barrier: nothing private of it lives across one */
+  write_band(lb, band_rgba, hull, image, rgba8, extents, background, out_mode, slot, y0, rows, width,
              height, lid, lsize);
 }
 

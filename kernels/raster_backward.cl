@@ -449,7 +449,8 @@ __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
                            __local float* prod,                /* [BAND_H][W] (replay_band) */
                            __local int* last,                  /* [BAND_H][W] */
                            __local float2* aux,                /* [tape_cap] the tape's (pixel, V) */
-                           __global float2* pool_aux) {        /* [pool_cap] */
+                           __global float2* pool_aux,          /* [pool_cap] */
+                           __constant LossBlur* loss_blur) {   /* the residual's blur (prelude.cl) */
   /* The frame: the launch's global offset is the first of its chunk (one work-item deep in
    * that dimension, so the global id is the frame); X' holds the chunk's frames only. */
   const int band = get_group_id(0), k = get_global_id(1), k0 = get_global_offset(1);
@@ -492,7 +493,8 @@ __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
     }
   }
   barrier(CLK_LOCAL_MEM_FENCE);
-  write_band(band_rgba, hull, image, (__global uchar4*)image, extents + (size_t)k0 * height, background,
+  LOSS_BLUR_PRIVATE; /* after the barrier: nothing private of it lives across one */
+  write_band(lb, band_rgba, hull, image, (__global uchar4*)image, extents + (size_t)k0 * height, background,
              OUT_RESIDUAL, k - k0, y0, rows, width, height, lid, lsize);
 }
 
@@ -525,7 +527,8 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               __local int* last,                  /* [BAND_H][W] (replay) */
                               __local float2* aux,                /* [tape_cap] */
                               __global const float2* pool_aux,    /* raster_taped's (pixel, V) */
-                              __global const int* tiles) {        /* R's tile index (loss.cl) */
+                              __global const int* tiles,          /* R's tile index (loss.cl) */
+                              __constant LossBlur* loss_blur) {   /* the loss's blur (prelude.cl) */
   /* The frame, and E' of the chunk's frames only, as in raster_taped. */
   const int band = get_group_id(0), k = get_global_id(1), k0 = get_global_offset(1);
   const int lid = get_local_id(0), lsize = get_local_size(0);
@@ -534,6 +537,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
   const int stride = width + 2;
 
   if (lid == 0) {
+    LOSS_BLUR_PRIVATE; /* within work-item 0's part: nothing private of it lives across a barrier */
     __global const float4* L = lines + (size_t)k * n_lines;
     __global const float4* B = bounds + (size_t)k * n_chunks;
     __global const float* Ek = E + (size_t)(k - k0) * height * width * 3;
@@ -612,7 +616,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
          * the cache; in a layered scene most of the lower draws' edges are hidden). */
         if (T != 0.0f) {
           if (band_rgba[px].w == 0.0f)
-            band_rgba[px] = (float4)(blurred_gradient(Ek, Xk, R, Rt, x, y0 + r, width, height, grad_scale), 1.0f);
+            band_rgba[px] = (float4)(blurred_gradient(lb, Ek, Xk, R, Rt, x, y0 + r, width, height, grad_scale), 1.0f);
           const float3 dC = band_rgba[px].xyz;
           const float ga = dot(dC, T * (c.xyz - b.xyz));
           g = ga * c.w * fill_rule_slopes(b.w, rule);

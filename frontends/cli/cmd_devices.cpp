@@ -3,6 +3,8 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
+#include <set>
 #include <string>
 
 #include "cli/cli_args.h"
@@ -12,6 +14,8 @@
 #include "opencl/cpu_share.h"
 #include "opencl/kernel_cache.h"
 #include "opencl/runtime.h"
+#include "opencl/tuning.h"
+#include "fit/output/tolerance_choice.h"
 #include "raster/loss_taps.h"
 #include "svgmotion/device.h"
 
@@ -19,19 +23,52 @@ namespace svgm::cli {
 
 namespace {
 
-// Builds, and launches every kernel of, what a default run builds: the raster program at the
-// recolorer's and the fit's widths (256 px, band height 16; 512 px and up, 8) with the default
-// blur, and the fitter's program (warm_kernels.h). A fit whose blur is matched to a blurred
-// target still builds its own taps then (in a child process: opencl/compile_child.h).
+// Builds, and launches every kernel of, what a default run builds (warm_kernels.h), and says
+// what it built. The raster program depends on the width through its tuning alone (the band
+// height: 16 rows at 256 px, 8 at 512, 4 at 1024 on PoCL), so it is built once per tuning of
+// the widths a default run renders at: the fit's 256 px, the video's and the refinement's
+// 512 px, and the compact export's tolerance renders, whose larger side is 1024 px
+// (fit/output/tolerance_choice.h; a narrower drawing's width falls in one of the classes
+// below). Each in the builds a run uses there (raster/loss_blur.h): the paper's blur (renders,
+// and fits of a video as sharp as the render) everywhere, and at the fitting widths the matched
+// one, which serves every blur matching picks (any σ, chroma σ and chroma weight: its taps are
+// a kernel argument). Then the fitter's program. A default run then compiles nothing.
 void warm(const std::string& device) {
   const auto t0 = std::chrono::steady_clock::now();
   ClRuntime rt(device);
-  for (int width : {256, 512}) warm_raster(rt, width, width, kLossSigma, kLossSigma, 1);
-  warm_fitter(rt);
+  int compiled = 0, cached = 0;
+  // One program: how it was obtained and how long that took.
+  auto one = [&](const std::string& what, const std::function<void()>& make) {
+    const auto s0 = std::chrono::steady_clock::now();
+    const int before = rt.programs_built_from_source() + rt.programs_compiled_in_child();
+    make();
+    const bool built = rt.programs_built_from_source() + rt.programs_compiled_in_child() > before;
+    (built ? compiled : cached) += 1;
+    std::printf("warm: %-56s %s, %.1f s\n", what.c_str(), built ? "compiled" : "cached",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count());
+    std::fflush(stdout);
+  };
+  // A matched blur with every part the build has (a radius above the paper's, reflect
+  // padding, chroma taps of their own, a chroma weight): the program is the same for any.
+  constexpr double kSigma = 1.2, kChromaSigma = 1.35, kChromaWeight = 0.5;
+  std::set<std::string> tunings;
+  for (int width : {256, 512, kToleranceRenderPx}) {
+    if (!tunings.insert(kernel_build_options(raster_tuning(rt.info(), width))).second) continue;
+    const bool fits = width <= 512;
+    // The export's renders are a frame at a time: a few rows launch every kernel as a full
+    // frame does (the same work-group sizes), without a 1024-px frame's loss buffers.
+    const int height = fits ? width : 64;
+    const std::string px = std::to_string(width) + " px (band " + std::to_string(raster_tuning(rt.info(), width).band_height) + ")";
+    one("raster program, " + px + ", the paper's blur",
+        [&] { warm_raster(rt, width, height, kLossSigma, kLossSigma, 1); });
+    if (fits)
+      one("raster program, " + px + ", blur-matched (any sigma)",
+          [&] { warm_raster(rt, width, height, kSigma, kChromaSigma, kChromaWeight); });
+  }
+  one("fitter program", [&] { warm_fitter(rt); });
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("warm: %d kernel programs compiled, %d already cached, %.1f s (cache: %s)\n",
-              rt.programs_built_from_source() + rt.programs_compiled_in_child(),
-              rt.programs_loaded_from_cache() - rt.programs_compiled_in_child(), s, kernel_cache_dir().c_str());
+  std::printf("warm: %d kernel programs compiled, %d already cached, %.1f s (cache: %s)\n", compiled, cached, s,
+              kernel_cache_dir().c_str());
 }
 
 }  // namespace

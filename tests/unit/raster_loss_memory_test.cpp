@@ -107,8 +107,8 @@ TEST_CASE("loss chunks: one, two or every frame at a time give the same bits, an
   const RasterPlan plan = plan_raster(two_shapes(), Affine{}, kW, kH);
   const std::vector<float> targets = targets_on_white(plan, kK, 2.5f, -1.25f);
   const std::vector<float> cp = shifted_cp(plan, kK, 0.5f, 0.75f);
-  // The plain loss, and the chroma-weighted one with a chroma blur of its own (loss.cl's
-  // CHROMA_R kernels index X' and E' on their own lines).
+  // The plain loss, and the chroma-weighted one with a chroma blur of its own (the matched
+  // build's YCbCr passes, raster/loss_blur.h, index X' and E' on their own lines).
   for (const auto& [chroma_sigma, chroma_weight] : {std::pair{0.0, 1.0}, std::pair{1.6, 0.25}}) {
     CAPTURE(chroma_weight);
     std::vector<float> bits[3], losses[3];

@@ -37,8 +37,9 @@ class ClRuntime {
   // The program made of prelude.cl + `files` built with `options` (cached in memory and on
   // disk). Throws svgm::Error with the build log on failure. The first build from source logs
   // "compiling the OpenCL kernels (once, about N s)" (N: the last such build measured here).
-  // The raster program's options vary with its blur taps (loss_tap_options); the fitter's
-  // program takes kFitterProgramOptions.
+  // The raster program's options vary with the width's tuning and with whether its blur is the
+  // paper's (raster/loss_blur.h: any other blur's taps are a kernel argument, not an option);
+  // the fitter's program takes kFitterProgramOptions.
   // `child_spec`: how `svgmotion devices --warm-for` makes the same program and launches its
   // kernels; when given, the program is missing from the disk cache and compile_child_enabled(),
   // a child process compiles it (opencl/compile_child.h) and this one loads the cached binary.

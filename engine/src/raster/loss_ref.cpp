@@ -31,7 +31,7 @@ double chroma_sq_sum(const std::vector<double>& image, const std::vector<float>&
     return std::abs(j) <= r ? g[static_cast<size_t>(j + r)] : 0.0;
   };
   const int R = static_cast<int>(std::max({gl.size(), gc.size(), gt.size()}) / 2);
-  const bool reflect = loss_reflects(render_sigma);  // both blurs, as the kernels' LOSS_REFLECT
+  const bool reflect = loss_reflects(render_sigma);  // both blurs, as the kernels' LOSS_REFLECTS
   std::vector<double> ycc(static_cast<size_t>(width) * height * 3), t(ycc.size());
   for (size_t p = 0; p < ycc.size() / 3; ++p) {
     double c[3];
@@ -73,7 +73,7 @@ double blurred_sq_sum(const std::vector<double>& image, const std::vector<float>
     return chroma_sq_sum(image, target, width, height, background, render_sigma, chroma_sigma, chroma_weight);
   const std::vector<double> gr = loss_stencil(render_sigma), gt = loss_stencil(kLossSigma);
   const int Rr = static_cast<int>(gr.size() / 2), Rt = static_cast<int>(gt.size() / 2), R = std::max(Rr, Rt);
-  const bool reflect = loss_reflects(render_sigma);  // both blurs, as the kernels' LOSS_REFLECT
+  const bool reflect = loss_reflects(render_sigma);  // both blurs, as the kernels' LOSS_REFLECTS
   // A tap outside a stencil's radius weighs 0.
   auto tap = [](const std::vector<double>& g, int r, int j) { return std::abs(j) <= r ? g[static_cast<size_t>(j + r)] : 0.0; };
   std::vector<double> c(static_cast<size_t>(width) * height * 3), t(c.size());

@@ -25,7 +25,7 @@ constexpr double kLossSigma = 1.0;
 // G_t ∗ G_v: at σ 1.7 (a 512-px video blurred σ 1.5) its taps ended at 2.4σ, and blur matching
 // chose σ 1.20 for that video at 256 px where the composition is 1.25 (bat, twemoji 1f987).
 constexpr int kMaxVideoRadius = 6;
-constexpr int kMaxLossRadius = 2 + kMaxVideoRadius;  // the kernels' G0..G8
+constexpr int kMaxLossRadius = 2 + kMaxVideoRadius;  // the kernels' LOSS_R_MAX
 
 inline double video_sigma(double sigma) { return sigma > kLossSigma ? std::sqrt(sigma * sigma - kLossSigma * kLossSigma) : 0; }
 inline int video_radius(double sigma) {

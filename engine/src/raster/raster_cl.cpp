@@ -7,6 +7,7 @@
 
 #include "opencl/tuning.h"
 #include "raster/launch_groups.h"
+#include "raster/loss_blur.h"
 #include "raster/loss_tiles.h"
 #include "svgmotion/error.h"
 
@@ -17,40 +18,6 @@ cl::Buffer ClRaster::make(size_t bytes, const void* host) {
   if (host) return input_buffer(rt_.context(), host, bytes);
   return cl::Buffer(rt_.context(), CL_MEM_READ_WRITE, std::max(bytes, kMinBufferBytes));
 }
-
-namespace {
-
-// prelude.cl's render taps when they are not the paper's (whose program stays the cached one).
-// A chroma σ of its own adds the chroma taps GC0.. and CHROMA_R, and LOSS_R becomes the larger
-// radius (the luma taps beyond their own radius are prelude.cl's zeros); a render σ above 1
-// adds LOSS_REFLECT.
-std::string loss_tap_options(double sigma, double chroma_sigma, double chroma_weight) {
-  std::string weight;
-  if (chroma_weight != 1) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, " -DCHROMA_W=%.9gf", chroma_weight);
-    weight = buf;
-  }
-  if (sigma == kLossSigma && chroma_sigma == sigma) return weight;
-  auto taps = [](const char* name, const std::vector<double>& g) {
-    std::string o;
-    for (size_t j = 0; j < g.size(); ++j) {
-      char buf[48];
-      std::snprintf(buf, sizeof buf, " -D%s%zu=%.9gf", name, j, g[j]);
-      o += buf;
-    }
-    return o;
-  };
-  const std::vector<double> g = loss_taps(sigma);
-  // Above σ 1 the loss's blurs pad by reflection (loss_taps.h, loss_reflects; prelude.cl).
-  if (loss_reflects(sigma)) weight += " -DLOSS_REFLECT";
-  if (chroma_sigma == sigma) return " -DLOSS_R=" + std::to_string(g.size() - 1) + taps("G", g) + weight;
-  const std::vector<double> gc = loss_taps(chroma_sigma);
-  return " -DLOSS_R=" + std::to_string(std::max(g.size(), gc.size()) - 1) + taps("G", g) +
-         " -DCHROMA_R=" + std::to_string(gc.size() - 1) + taps("GC", gc) + weight;
-}
-
-}  // namespace
 
 ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double render_sigma, double chroma_sigma,
                    double chroma_weight)
@@ -71,7 +38,8 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double ren
   bands_ = (p.height + band_h_ - 1) / band_h_;
   try {
     // One program for the forward and backward kernels: PoCL compiles it once, then the
-    // binary comes from the cache.
+    // binary comes from the cache. The paper's blur is compiled in; every other blur shares
+    // the LOSS_MATCHED build, its taps an argument (raster/loss_blur.h).
     // Missing from the cache, it is compiled in a child (opencl/compile_child.h) told how to
     // make the same program: `svgmotion devices --warm-for` makes a ClRaster of this width,
     // height and blur, and launches every kernel as this one will.
@@ -81,7 +49,7 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double ren
     cl::Program& prog =
         rt_.program({"flatten.cl", "stroke.cl", "lines.cl", "raster.cl", "loss.cl",
                      "raster_backward.cl", "stroke_backward.cl"},
-                    kernel_build_options(tuning) + loss_tap_options(render_sigma_, chroma_sigma_, chroma_weight_) +
+                    kernel_build_options(tuning) + loss_blur_options(render_sigma_, chroma_sigma_, chroma_weight_) +
                         " -DLOSS_TILE=" + std::to_string(kLossTile),
                     child_spec);
     program_ = &prog;
@@ -124,6 +92,8 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double ren
     paint_ = make(p.paint.size() * sizeof(float), p.paint.data());
     chunk_lines_ = make(p.chunk_lines.size() * sizeof(int), p.chunk_lines.data());
     bounds_ = make(K * (p.chunk_lines.size() / 2) * 4 * sizeof(float));
+    const LossBlurArgs blur = loss_blur_args(render_sigma_, chroma_sigma_, chroma_weight_);
+    loss_blur_ = make(sizeof blur, &blur);
     // The output buffers are made on first use: a render needs only the 8-bit one.
 
     // Arguments never change between batches: set them once.
@@ -145,6 +115,7 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double ren
     k_raster_.setArg(17, p.height);
     k_raster_.setArg(18, draw_paint_);
     k_raster_.setArg(19, paint_);
+    k_raster_.setArg(20, loss_blur_);
   } catch (const cl::Error& e) {
     throw Error(std::string("OpenCL setup of the rasteriser failed on ") + rt_.info().name +
                 ": " + e.what() + " " + cl_status_name(e.err()));

@@ -27,7 +27,8 @@ class ClRaster {
   // `chroma_sigma`: the σ of the render's chroma blur in YCbCr (raster/loss_taps.h,
   // render_blur); 0 means render_sigma, the plain blur of every channel alike.
   // `chroma_weight` (0, 1]: how much a residual of chroma alone counts against one of luma
-  // (kernels/loss.cl's loss_metric; 1, the plain squared error, compiles the plain kernels).
+  // (kernels/loss.cl's loss_metric; 1, the plain squared error). Any blur but the paper's
+  // (σ 1, every channel alike, weight 1) runs on one program (raster/loss_blur.h).
   ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double render_sigma = kLossSigma,
            double chroma_sigma = 0, double chroma_weight = 1);
 
@@ -171,7 +172,8 @@ class ClRaster {
   int active_ = 0;
   double render_sigma_ = kLossSigma;
   double chroma_sigma_ = kLossSigma;  // = render_sigma_ unless the chroma blur is its own
-  double chroma_weight_ = 1;          // loss.cl's CHROMA_W
+  double chroma_weight_ = 1;          // loss.cl's loss_metric
+  cl::Buffer loss_blur_;              // the kernels' LossBlur (raster/loss_blur.h)
   int band_h_ = 16, bands_ = 0, group_ = 1;
   size_t device_bytes_ = 0;
   std::vector<std::pair<std::string, cl::Event>> events_;
