@@ -19,6 +19,7 @@
 #include "procedural/invisible_spin.h"
 #include "procedural/gait_travel.h"
 #include "procedural/limb_qualifiers.h"
+#include "procedural/bust_head.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/hang_support.h"
 #include "procedural/support_band.h"
@@ -249,7 +250,9 @@ struct Builder {
     bool rock_on_part = false;  // a rock's degrees, about the figure's base, now on a part
     // A plant's bloom on one stem turns for the whole plant's bend or its head's turn (plant_bloom).
     LocatedPart bloom;
-    if (!located && !(bloom = plant_bloom(rig, a.primitive, target, figure, target_word)).lobes.empty()) {
+    // A portrait's head (a bust, or a head alone) turns on its neck for a turn of the head (bust_head.h).
+    if (!located && (!(bloom = plant_bloom(rig, a.primitive, target, figure, target_word)).lobes.empty() ||
+                     (target == Target::Head && !(bloom = bust_head(rig)).lobes.empty()))) {
       located = &bloom;
       target = a.target = Target::Named;
       // It droops to the side the head leans and back, not up past the stem as well.
