@@ -10,7 +10,9 @@
 //    height, turning whole about the middle of the shoulders' top (the neck);
 //  - a head alone: no shoulders, no limbs in the rig, a compact figure: the whole figure is the
 //    head, turning whole about the middle of its bottom (the chin on the neck below it).
-// Never when the rig finds arms (a standing figure on a board or a band of ground has them).
+// Never when the rig finds arms (a standing figure on a board or a band of ground has them); only
+// said of a person or of no figure named (motion_plan.cpp): an owl is compact and limbless, a
+// snake's coils lie wide on the bottom under its raised head, and neither is a portrait.
 #pragma once
 
 #include "procedural/part_locator.h"

@@ -250,9 +250,11 @@ struct Builder {
     bool rock_on_part = false;  // a rock's degrees, about the figure's base, now on a part
     // A plant's bloom on one stem turns for the whole plant's bend or its head's turn (plant_bloom).
     LocatedPart bloom;
-    // A portrait's head (a bust, or a head alone) turns on its neck for a turn of the head (bust_head.h).
+    // A portrait's head (a bust, or a head alone) turns on its neck for a turn of a person's head
+    // (bust_head.h): a person or no figure named ("she nods"); an owl or a coiled snake is no bust.
+    const bool person = figure == FigureClass::Biped || figure == FigureClass::None;
     if (!located && (!(bloom = plant_bloom(rig, a.primitive, target, figure, target_word)).lobes.empty() ||
-                     (target == Target::Head && !(bloom = bust_head(rig)).lobes.empty()))) {
+                     (target == Target::Head && person && !(bloom = bust_head(rig)).lobes.empty()))) {
       located = &bloom;
       target = a.target = Target::Named;
       // It droops to the side the head leans and back, not up past the stem as well.
