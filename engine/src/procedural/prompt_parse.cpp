@@ -459,6 +459,13 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
         continue;
       }
     }
+    // A manner the modifiers do not list ("bows politely", "waves cheerfully"): WordNet knows the
+    // word as an adverb and not as a noun. Kept as a noun after the verb it was the verb's object,
+    // a thing held: "he bows politely" swung his arm (held_things.h) and the bow was lost.
+    if (lexicon.has_wordnet() && !lexicon.knows_noun(w) && lexicon.tagged_senses(w, wordnet::Pos::Adv) > 0) {
+      out.readings.push_back("'" + w + "': a manner, no motion");
+      continue;
+    }
     PromptNoun n{w, Target::Named, w.size() > 3 && w.back() == 's', after_prep, !c.verbs.empty()};
     if (after_prep) n.preposition = preposition;
     // In a verb's place, a verb WordNet knows and the lexicon could not place ("the cat
