@@ -58,6 +58,16 @@ TEST_CASE("bust head: a head drawn alone is the whole figure, turning about the 
   CHECK(t[1] > 1.0);
 }
 
+TEST_CASE("bust head: only a head said of no animal: 'he shakes his head no' turns it, 'the owl turns its head' does not") {
+  const Drawing d("head_alone.svg");
+  // "no" reads as an object, the clause's figure: still no animal, the head alone turns.
+  CHECK(plan_from_prompt(parse_prompt("he shakes his head no"), d.rig, 1).actions[0].region == Region::Located);
+  // An owl is compact and limbless too, and no portrait: its rig's head turns as before.
+  const MotionPlan owl = plan_from_prompt(parse_prompt("the owl nods its head"), d.rig, 1);
+  REQUIRE_FALSE(owl.actions.empty());
+  CHECK(owl.actions[0].region != Region::Located);
+}
+
 TEST_CASE("bust head: a figure with arms has no bust head (the stick figure's head is its rig's)") {
   const Drawing d("stick_figure.svg");
   CHECK(bust_head(d.rig).lobes.empty());

@@ -19,7 +19,6 @@
 #include "procedural/invisible_spin.h"
 #include "procedural/gait_travel.h"
 #include "procedural/limb_qualifiers.h"
-#include "procedural/bust_head.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/hang_support.h"
 #include "procedural/support_band.h"
@@ -248,13 +247,9 @@ struct Builder {
     a.target = target;
     double amp = base.amp;
     bool rock_on_part = false;  // a rock's degrees, about the figure's base, now on a part
-    // A plant's bloom on one stem turns for the whole plant's bend or its head's turn (plant_bloom).
+    // A plant's bloom on one stem, or a portrait's head, turns for a bend or a head's turn (bloom_or_bust_head).
     LocatedPart bloom;
-    // A portrait's head (a bust, or a head alone) turns on its neck for a turn of a person's head
-    // (bust_head.h): a person or no figure named ("she nods"); an owl or a coiled snake is no bust.
-    const bool person = figure == FigureClass::Biped || figure == FigureClass::None;
-    if (!located && (!(bloom = plant_bloom(rig, a.primitive, target, figure, target_word)).lobes.empty() ||
-                     (target == Target::Head && person && !(bloom = bust_head(rig)).lobes.empty()))) {
+    if (!located && !(bloom = bloom_or_bust_head(rig, a.primitive, target, figure, target_word)).lobes.empty()) {
       located = &bloom;
       target = a.target = Target::Named;
       // It droops to the side the head leans and back, not up past the stem as well.
