@@ -457,4 +457,24 @@ TEST_CASE("lexicon: an animal sense the anchors class as no creature does not go
   CHECK(Lexicon::shared().noun("whale").figure == FigureClass::FishOrSnake);
 }
 
+TEST_CASE("lexicon: a manner word the modifiers do not list is no object of the verb ('he bows politely' bows)") {
+  if (!wordnet_or_skip()) return;
+  // WordNet knows "politely" and "cheerfully" as adverbs and not as nouns: kept as nouns after
+  // the verb they were its objects, things held (held_things.h), and the bow swung an arm.
+  for (const char* prompt : {"he bows politely", "she waves cheerfully"}) {
+    CAPTURE(prompt);
+    const ParsedPrompt p = parse_prompt(prompt);
+    REQUIRE(p.clauses.size() == 1);
+    CHECK(p.clauses[0].nouns.empty());
+    REQUIRE(p.clauses[0].verbs.size() == 1);
+  }
+  CHECK(parse_prompt("he bows politely").clauses[0].verbs[0]->name == "bow");
+  // A word WordNet knows as a noun stays one ("the judge swings his gavel": the gavel is held).
+  const ParsedPrompt g = parse_prompt("the judge swings his gavel");
+  REQUIRE(g.clauses.size() == 1);
+  bool gavel = false;
+  for (const auto& n : g.clauses[0].nouns) gavel = gavel || n.word == "gavel";
+  CHECK(gavel);
+}
+
 }  // TEST_SUITE

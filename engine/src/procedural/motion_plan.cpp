@@ -247,9 +247,9 @@ struct Builder {
     a.target = target;
     double amp = base.amp;
     bool rock_on_part = false;  // a rock's degrees, about the figure's base, now on a part
-    // A plant's bloom on one stem turns for the whole plant's bend or its head's turn (plant_bloom).
+    // A plant's bloom on one stem, or a portrait's head, turns for a bend or a head's turn (bloom_or_bust_head).
     LocatedPart bloom;
-    if (!located && !(bloom = plant_bloom(rig, a.primitive, target, figure, target_word)).lobes.empty()) {
+    if (!located && !(bloom = bloom_or_bust_head(rig, a.primitive, target, figure, target_word)).lobes.empty()) {
       located = &bloom;
       target = a.target = Target::Named;
       // It droops to the side the head leans and back, not up past the stem as well.

@@ -189,6 +189,9 @@ std::vector<int> parts_for(const Rig& rig, Target t, const std::string& noun, st
 // The bloom on one stem (part_locator.h) a plant's `primitive` aimed at `target` turns instead
 // (plan_targets.cpp); no lobes when none does.
 LocatedPart plant_bloom(const Rig& rig, Primitive primitive, Target target, FigureClass figure, const std::string& noun);
+// That bloom, else for a turn of a head said of no animal (a person or no figure named: "she
+// nods"; an owl or a coiled snake is no bust) the head of a bust or of a head alone (bust_head.h).
+LocatedPart bloom_or_bust_head(const Rig& rig, Primitive primitive, Target target, FigureClass figure, const std::string& noun);
 // The oscillation of a back-and-forth action at phase u (in cycles) (motion_frames.cpp).
 double oscillation(const PlannedAction& a, double u);
 

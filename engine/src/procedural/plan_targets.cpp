@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "procedural/bust_head.h"
 #include "procedural/motion_plan_internal.h"
 
 namespace svgm {
@@ -166,6 +167,13 @@ LocatedPart plant_bloom(const Rig& rig, Primitive primitive, Target target, Figu
   const bool bends = primitive == Primitive::Bend && target == Target::Whole;
   const bool nods = primitive == Primitive::Swing && target == Target::Head && (parts_for(rig, Target::Head, noun, &no_head), !no_head.empty());
   return bends || nods ? locate_part(rig, PartShape::Bloom) : LocatedPart{};
+}
+
+LocatedPart bloom_or_bust_head(const Rig& rig, Primitive primitive, Target target, FigureClass figure, const std::string& noun) {
+  LocatedPart bloom = plant_bloom(rig, primitive, target, figure, noun);
+  // Not said of an animal or a plant ("he shakes his head no" read "no" as an object: no person).
+  const bool person = figure == FigureClass::Biped || (!is_creature(figure) && figure != FigureClass::Plant);
+  return bloom.lobes.empty() && target == Target::Head && person ? bust_head(rig) : bloom;
 }
 
 }  // namespace motion_plan_internal

@@ -329,6 +329,15 @@ void own_motion_sent(Clause& c, ParsedPrompt& out) {
   c.verb_words.push_back(who->word + "->" + who->motion->name);
 }
 
+// A manner the modifiers do not list ("bows politely", "waves cheerfully"): WordNet knows the
+// word as an adverb and not as a noun; said in the readings. Kept as a noun after the verb it
+// was the verb's object, a thing held: "he bows politely" swung his arm (held_things.h).
+bool read_manner(const Lexicon& lexicon, const std::string& w, ParsedPrompt& out) {
+  if (!lexicon.has_wordnet() || lexicon.knows_noun(w) || lexicon.tagged_senses(w, wordnet::Pos::Adv) <= 0) return false;
+  out.readings.push_back("'" + w + "': a manner, no motion");
+  return true;
+}
+
 // Words of one clause (lower case, letters only). `after_prep` says the clause continues a
 // prepositional phrase ("with black dots and black boots": "and" split it, and "boots" is
 // still what she is dressed with); on return, whether the clause ends inside one. Words the
@@ -420,7 +429,7 @@ Clause read_clause(const std::vector<std::string>& words, bool& after_prep, Pars
       continue;
     }
     if (is_preposition(w)) { after_prep = true, preposition = w; continue; }
-    if (is_filler_word(w)) continue;
+    if (is_filler_word(w) || read_manner(lexicon, w, out)) continue;
     // Not in the vocabulary: the lexicon, as a verb in a verb's place. Not in a noun's: inside
     // a prepositional phrase ("with black dots"), or as the subject of a verb after it ("horses
     // gallop", "the candle flame flickers"). A past participle says a state ("its hood
