@@ -567,15 +567,10 @@ TossFrame toss_frame(const Scene& scene, const MotionPlan& plan, double t) {
   return toss;
 }
 
-}  // namespace
-
-std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames, std::vector<BendFold>* folds) {
-  const int G = static_cast<int>(rig.parts.size());
-  const double W = std::max(rig.figure.w(), 1e-9), H = std::max(rig.figure.h(), 1e-9);
-  auto under = [&](int p, int a) { return part_under(rig, p, a); };
-  // Repeated elements: which element each subpath belongs to (an element may be some of the
-  // subpaths of one path); and whether they fly free.
-  std::vector<std::vector<int>> element_of(scene.paths.size());
+// Repeated elements: in `element_of`, per subpath of each path, the element it belongs to (an
+// element may be some of the subpaths of one path), -1 for none; returns each element's box.
+std::vector<RigBox> element_subpaths(const Scene& scene, const Rig& rig, std::vector<std::vector<int>>& element_of) {
+  element_of.assign(scene.paths.size(), {});
   for (size_t pi = 0; pi < scene.paths.size(); ++pi) element_of[pi].assign(scene.paths[pi].subpaths.size(), -1);
   std::vector<RigBox> element_box(rig.repeated.size());
   for (size_t e = 0; e < rig.repeated.size(); ++e)
@@ -587,6 +582,18 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         for (const Vec2& q : subs[si].points) element_box[e].add(q);
       }
     }
+  return element_box;
+}
+
+}  // namespace
+
+std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames, std::vector<BendFold>* folds) {
+  const int G = static_cast<int>(rig.parts.size());
+  const double W = std::max(rig.figure.w(), 1e-9), H = std::max(rig.figure.h(), 1e-9);
+  auto under = [&](int p, int a) { return part_under(rig, p, a); };
+  // Repeated elements: which element each subpath belongs to; and whether they fly free.
+  std::vector<std::vector<int>> element_of;
+  const std::vector<RigBox> element_box = element_subpaths(scene, rig, element_of);
   const bool particles = std::any_of(plan.actions.begin(), plan.actions.end(), [](const auto& a) { return a.target == Target::Repeated && a.primitive == Primitive::Fall; });
   // Each part's box including what hangs from it (the extent a deformation spans).
   std::vector<RigBox> reach(G);
