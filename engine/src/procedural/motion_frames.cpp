@@ -630,7 +630,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   // turning their own way (a wheel, what turns with it or rides on it) keep to themselves.
   std::vector<char> fixed(G, 0);
   for (int g = 0; g < G; ++g) fixed[g] = spinning[g] || loads.turns_with[g] >= 0 || loads.rides[g] >= 0;
-  const std::vector<std::vector<int>> rides_on = hosts_of(scene, rig, plan, fixed);
+  const std::vector<std::vector<int>> rides_on = seat_apart(seat, hosts_of(scene, rig, plan, fixed));
 
   // Whether path p stays where it is under the whole figure's motions: a background, a held part's, the ground's.
   auto stays = [&](size_t p) {

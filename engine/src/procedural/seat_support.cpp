@@ -118,6 +118,14 @@ bool seat_goes(const PlannedAction& a) {
   return a.primitive == Primitive::Slide || a.primitive == Primitive::Turn || a.turns_round || a.travel != 0;
 }
 
+std::vector<std::vector<int>> seat_apart(const SeatSupport& seat, std::vector<std::vector<int>> rides_on) {
+  if (!seat.found) return rides_on;
+  for (size_t p = 0; p < rides_on.size() && p < seat.seat.size(); ++p)
+    for (int& h : rides_on[p])
+      if (h >= 0 && static_cast<size_t>(h) < seat.seat.size() && seat.seat[h] != seat.seat[p]) h = -1;
+  return rides_on;
+}
+
 void rise_from_seat(const Scene& scene, const Rig& rig, MotionPlan& plan) {
   if (plan.seat.empty() || !seat_support(scene, rig).found) return;
   for (auto& a : plan.actions)

@@ -40,6 +40,11 @@ SeatSupport seat_support(const Scene& scene, const Rig& rig);
 // round), or says a way to go. Motions in place (a bob, a sway, a rock, a squash) leave it.
 bool seat_goes(const PlannedAction& a);
 
+// The hosts each control point rides on (motion_frames.cpp's hosts_of, -1 for its own path), with
+// none across the seat's edge: a rider's leg drawn over the horse's body took the still horse's
+// motion and stretched down from the rising rider.
+std::vector<std::vector<int>> seat_apart(const SeatSupport& seat, std::vector<std::vector<int>> rides_on);
+
 // A sitter bobbing on its seat rises from it and settles back (down, it would sink into it),
 // as on a ground band (motion_fit.cpp's rise_from_ground); no seat found, nothing changes.
 void rise_from_seat(const Scene& scene, const Rig& rig, MotionPlan& plan);
