@@ -13,6 +13,7 @@
 #include "procedural/carried_flight.h"
 #include "procedural/invisible_spin.h"
 #include "procedural/motion_plan_internal.h"
+#include "procedural/seat_support.h"
 #include "procedural/support_band.h"
 
 namespace svgm {
@@ -683,6 +684,7 @@ void rise_from_ground(const Scene& scene, const Rig& rig, MotionPlan& plan) {
 
 void fit_plan(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames, int keyframes) {
   rise_from_ground(scene, rig, plan);
+  rise_from_seat(scene, rig, plan);
   roll_invisible_spins(scene, rig, plan);
   const MotionPlan asked = plan;
   if (!fit_scales(scene, rig, plan, frames, keyframes)) return;

@@ -15,6 +15,7 @@
 #include "procedural/motion_plan_internal.h"
 #include "procedural/region_bend.h"
 #include "procedural/rotor_blades.h"
+#include "procedural/seat_support.h"
 #include "procedural/support_band.h"
 #include "procedural/sway_base.h"
 #include "procedural/travel_profile.h"
@@ -36,76 +37,6 @@ double oscillation(const PlannedAction& a, double u) {
 using namespace motion_plan_internal;
 
 namespace {
-
-// The rigid motion of one action at time t on a part (or the figure) with box `box` and
-// attachment `pivot`; `H`, `W` the figure's size (units of the translations).
-Affine rigid(const PlannedAction& a, double amp, double sign, double phase, double t, const RigBox& box, Vec2 pivot,
-             double W, double H, const Affine& plane = {}) {
-  const double u = a.cycles * t + phase;
-  const double s = oscillation(a, u), k = 0.5 - 0.5 * std::cos(kTau * u);
-  const Vec2 base{box.centre().x, box.y1}, centre = box.centre();
-  auto about = [](Vec2 c, const Affine& m) { return Affine::translate(c.x, c.y) * m * Affine::translate(-c.x, -c.y); };
-  switch (a.primitive) {
-    case Primitive::Swing: return about(pivot, Affine::rotate_deg(sign * amp * s));
-    case Primitive::Spin: return about(centre, plane * Affine::rotate_deg(360.0 * amp * a.direction * t) * plane.inverse());
-    // About the vertical axis through the middle: never wider than at rest, so it stays where the figure stands.
-    case Primitive::Turn: return about(centre, Affine::scale(turn_width(amp * t, a.scale), 1));
-    // Whole turns about the joint, from the phase's start (a crawl's arms half a turn apart).
-    case Primitive::Windmill: return about(pivot, Affine::rotate_deg(sign * 360.0 * (amp * t + phase)));
-    case Primitive::Rock:
-      return about(a.parts.empty() ? base : pivot, Affine::rotate_deg(a.vertical == 2 ? a.direction * amp * k : sign * amp * s));
-    case Primitive::Bob: {  // along a heading: a launch or a landing by amp of the figure's extent that way
-      if (const double reach = amp * (std::fabs(a.heading.x) * W + std::fabs(a.heading.y) * H) * flight_at(a.vertical < 0, u); a.heading != Vec2{})
-        return Affine::translate(a.heading.x * reach, a.heading.y * reach);
-      const double ty = a.vertical == 1 ? -amp * H * k : a.vertical == -1 ? amp * H * k : -amp * H * s;
-      return Affine::translate(0, ty);
-    }
-    // Going somewhere on its own: forward steadily most of the loop, or by a crawl's steps, and
-    // back (travel_profile.h); otherwise to one side and the other about rest.
-    case Primitive::Slide: {
-      // Turned round to go: no amplitude, no turn (a plan measured without it, fit_plan, is still).
-      if (a.turns_round) return amp == 0 ? Affine() : turned_going_map(2 * a.direction * amp * W, centre.x, u);
-      const double x = a.inches ? crawl_at(u).rear : a.goes ? going_at(u) : s;
-      return Affine::translate(a.direction * amp * W * x, 0);
-    }
-    case Primitive::Shake:  // on the ground (vertical != 0: a launch's rumble), only sideways
-      return Affine::translate(amp * H * s, a.vertical != 0 ? 0 : 0.6 * amp * H * std::sin(kTau * (std::max(1, a.cycles - 1) * t + phase)));
-    case Primitive::Pulse: {
-      // Shrinking up (vertical 1): about the top's middle, a launch going away into the sky.
-      const double f = 1 + amp * k;
-      return about(a.vertical == 1 && amp < 0 ? Vec2{centre.x, box.y0} : centre, Affine::scale(f, f));
-    }
-    case Primitive::Squash: {
-      const double sy = 1 - 1.2 * amp * k;
-      return about(base, Affine::scale(1 + 0.5 * amp * k, sy));
-    }
-    case Primitive::Stretch: {
-      if (a.inches) {
-        // A crawl's step: longer ahead of its planted rear, along the way it goes, by the step
-        // its slide takes (travel_profile.h).
-        const double step = 2.0 / kCrawlSteps, f = 1 + amp * step * crawl_at(u).stretch * W / std::max(box.w(), 1e-9);
-        return about({a.direction > 0 ? box.x0 : box.x1, centre.y}, Affine::scale(f, 1 / std::sqrt(f)));
-      }
-      const double f = 1 + amp * k;
-      if (box.w() >= box.h()) return about({box.x0, centre.y}, Affine::scale(f, 1 / std::sqrt(f)));
-      return about(base, Affine::scale(1 / std::sqrt(f), f));
-    }
-    case Primitive::Hop: {
-      // Per cycle: a fifth on the ground squashing, then the flight (stretched rising,
-      // squashed a little falling), landing where it started.
-      const double c = u - std::floor(u);
-      double ty = 0, sy = 1;
-      if (c < 0.2) sy = 1 - 0.6 * amp * std::sin(M_PI * c / 0.2);
-      else {
-        const double v = (c - 0.2) / 0.8;
-        ty = -amp * H * std::sin(M_PI * v);
-        sy = 1 + 0.4 * amp * std::sin(kTau * v);
-      }
-      return Affine::translate(0, ty) * about(base, Affine::scale(1 / std::sqrt(sy), sy));
-    }
-    default: return {};
-  }
-}
 
 // The whole figure's motion `so_far` with `m`, the motion of its action `a`, added: after it,
 // but a crawl's stretch (PlannedAction::inches) before it. The stretch is about the rear where it
@@ -636,15 +567,10 @@ TossFrame toss_frame(const Scene& scene, const MotionPlan& plan, double t) {
   return toss;
 }
 
-}  // namespace
-
-std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames, std::vector<BendFold>* folds) {
-  const int G = static_cast<int>(rig.parts.size());
-  const double W = std::max(rig.figure.w(), 1e-9), H = std::max(rig.figure.h(), 1e-9);
-  auto under = [&](int p, int a) { return part_under(rig, p, a); };
-  // Repeated elements: which element each subpath belongs to (an element may be some of the
-  // subpaths of one path); and whether they fly free.
-  std::vector<std::vector<int>> element_of(scene.paths.size());
+// Repeated elements: in `element_of`, per subpath of each path, the element it belongs to (an
+// element may be some of the subpaths of one path), -1 for none; returns each element's box.
+std::vector<RigBox> element_subpaths(const Scene& scene, const Rig& rig, std::vector<std::vector<int>>& element_of) {
+  element_of.assign(scene.paths.size(), {});
   for (size_t pi = 0; pi < scene.paths.size(); ++pi) element_of[pi].assign(scene.paths[pi].subpaths.size(), -1);
   std::vector<RigBox> element_box(rig.repeated.size());
   for (size_t e = 0; e < rig.repeated.size(); ++e)
@@ -656,6 +582,18 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         for (const Vec2& q : subs[si].points) element_box[e].add(q);
       }
     }
+  return element_box;
+}
+
+}  // namespace
+
+std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames, std::vector<BendFold>* folds) {
+  const int G = static_cast<int>(rig.parts.size());
+  const double W = std::max(rig.figure.w(), 1e-9), H = std::max(rig.figure.h(), 1e-9);
+  auto under = [&](int p, int a) { return part_under(rig, p, a); };
+  // Repeated elements: which element each subpath belongs to; and whether they fly free.
+  std::vector<std::vector<int>> element_of;
+  const std::vector<RigBox> element_box = element_subpaths(scene, rig, element_of);
   const bool particles = std::any_of(plan.actions.begin(), plan.actions.end(), [](const auto& a) { return a.target == Target::Repeated && a.primitive == Primitive::Fall; });
   // Each part's box including what hangs from it (the extent a deformation spans).
   std::vector<RigBox> reach(G);
@@ -671,6 +609,10 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   // The ground the prompt says the figure moves on stays, or what it hangs from (support_band.h, hang_support.h).
   const HangSupport hang = plan.hang.empty() ? HangSupport{} : hang_support(scene, rig);
   const std::vector<char> ground = plan.ground.empty() ? hang.paths : support_paths(scene, rig);
+  // What it sits in or on, when no ground band holds (seat_support.h): motions in place move the
+  // sitter about its own box and leave the seat; what goes carries the seat too (`carried`).
+  const SeatSupport seat = plan.seat.empty() || std::count(ground.begin(), ground.end(), 1) ? SeatSupport{} : seat_support(scene, rig);
+  const RigBox& mover = seat.found ? seat.sitter : rig.figure;
   // Chains hanging from the root that reach the lowest kPlanted of the figure stand on the
   // ground (legs, feet): the root's own swing does not carry them.
   std::vector<char> planted(G, 0);
@@ -688,7 +630,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
   // turning their own way (a wheel, what turns with it or rides on it) keep to themselves.
   std::vector<char> fixed(G, 0);
   for (int g = 0; g < G; ++g) fixed[g] = spinning[g] || loads.turns_with[g] >= 0 || loads.rides[g] >= 0;
-  const std::vector<std::vector<int>> rides_on = hosts_of(scene, rig, plan, fixed);
+  const std::vector<std::vector<int>> rides_on = seat_apart(seat, hosts_of(scene, rig, plan, fixed));
 
   // Whether path p stays where it is under the whole figure's motions: a background, a held part's, the ground's.
   auto stays = [&](size_t p) {
@@ -704,7 +646,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     const double t = frames > 1 ? static_cast<double>(f) / (frames - 1) : 0;
     std::vector<Affine> local(G), spin(G);
     std::vector<char> spins(G, 0);
-    Affine whole, root_turn, over_wheels;
+    Affine whole, root_turn, over_wheels, carried;
     std::vector<Affine> whole_of(piece_box.size());  // the whole figure's motion, per piece
     for (const auto& a : plan.actions) {
       const double amp = plan.amplitude(a);
@@ -715,9 +657,12 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         PlannedAction shallower = a;
         shallower.scale = a.scale * plan.scale;
         whole = rigid(shallower, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * whole;
+        carried = rigid(shallower, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * carried;
       } else if (a.parts.empty() && !a.turns_round) {  // (turning round: turn_round, after)
         const bool swings = hang.found && a.primitive == Primitive::Rock;  // (hang_support.h)
-        whole = compose_whole(whole, swings ? pendulum(a, amp, t, hang.grip) : rigid(a, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H), a);
+        const Affine m = swings ? pendulum(a, amp, t, hang.grip) : rigid(a, amp, 1, 0, t, mover, mover.centre(), W, H);
+        whole = compose_whole(whole, m, a);
+        if (seat_goes(a)) carried = compose_whole(carried, m, a);
         for (size_t k = 0; k < whole_of.size(); ++k) whole_of[k] = compose_whole(whole_of[k], swings ? pendulum(a, amp, t, hang.grip) : piece_motion(a, amp, k, t, piece_box[k], rig.figure, W, H), a);
       }
       for (size_t i = 0; i < a.parts.size(); ++i) {
@@ -734,6 +679,8 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
       }
     }
     turn_round(plan, rig, t, whole, whole_of);
+    std::vector<Affine> none;
+    turn_round(plan, rig, t, carried, none);
     const std::vector<Affine> world = world_transforms(rig, local, root_turn, spin, planted, loads);
     const std::vector<std::vector<Vec2>> bent = solve_meshes(mesh, plan, t, f, folds);
     const TossFrame toss = toss_frame(scene, plan, t);
@@ -751,6 +698,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
           const size_t src = rides >= 0 ? static_cast<size_t>(rides) : pi;
           const int by = rig.part_of_path[src];
           const bool bg = src == pi ? background : stays(src);
+          const bool sat = seat.found && seat.seat[src];  // on the seat: only what goes moves it
           if (toss.on[pi][si] && (out.push_back(whole.apply(q + toss.shift[pi][si])), ++point)) continue;
           q = elem.apply(q);
           if (!free_particle) {
@@ -765,8 +713,8 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
                 else if (use == 2)
                   q = mesh[ai] ? mesh[ai]->carry(bent[ai], rig.parts[by].pivot, q) : carried_by_bend(a, amp, t, hb, rig.parts[by].pivot, q);
               } else if (a.parts.empty()) {
-                if (!bg && a.primitive == Primitive::Sway) q = hang.found ? pendulum(a, amp, t, hang.grip).apply(q) : sway_lean(a, amp, t, rig.figure, q);
-                else if (!bg) q = deform(a, amp, t, rig.figure, q);
+                if (!bg && !sat && a.primitive == Primitive::Sway) q = hang.found ? pendulum(a, amp, t, hang.grip).apply(q) : sway_lean(a, amp, t, mover, q);
+                else if (!bg && !sat) q = deform(a, amp, t, mover, q);
               } else {
                 for (int p : a.parts)
                   if (by >= 0 && under(by, p)) q = deform(a, amp, t, reach[p], q);
@@ -776,7 +724,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
             if (!(src != pi && by >= 0 && held[by])) {
               if (by >= 0) q = world[by].apply(q);
               if (!bg && !(by >= 0 && fixed[by])) q = over_wheels.apply(q);
-              if (!bg) q = (by >= 0 && !whole_of.empty() && piece_of[by] >= 0 ? whole_of[piece_of[by]] : whole).apply(q);
+              if (!bg) q = (sat ? carried : by >= 0 && !whole_of.empty() && piece_of[by] >= 0 ? whole_of[piece_of[by]] : whole).apply(q);
             }
           }
           ++point;

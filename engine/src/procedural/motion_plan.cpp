@@ -21,6 +21,7 @@
 #include "procedural/limb_qualifiers.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/hang_support.h"
+#include "procedural/seat_support.h"
 #include "procedural/support_band.h"
 #include "procedural/sway_base.h"
 #include "procedural/part_locator.h"
@@ -621,6 +622,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& said, const Rig& rig, uint32_t s
   std::vector<std::string> unknown;
   b.plan.ground = ground_words(prompt, rig);
   b.plan.hang = hang_words(prompt, rig);
+  b.plan.seat = seat_words(prompt, rig);
   auto locatable = [&](const PromptNoun& n) { return locatable_noun(n, rig, b.figure); };
   // Does the prompt say which limbs move ("waving its arms", "sways its tentacles")? Then the
   // whole-figure accents of its limb verbs (cheering's hop, flapping's bob, dancing's rock) are

@@ -115,6 +115,8 @@ struct MotionPlan {
   std::string hang;             // the prompt's words naming what the figure hangs from ("from
                                 // the branch"): it stays, the figure swings about its grip
                                 // (hang_support.h)
+  std::string seat;             // the prompt's words naming what the figure sits in or on ("in
+                                // the bathtub"): it stays under motions in place (seat_support.h)
   // The amplitude `a` moves with: its own, times its scale and the plan's (the whole turns of a
   // spin or a turn are never scaled).
   double amplitude(const PlannedAction& a) const {

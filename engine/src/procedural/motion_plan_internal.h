@@ -194,5 +194,10 @@ LocatedPart plant_bloom(const Rig& rig, Primitive primitive, Target target, Figu
 LocatedPart bloom_or_bust_head(const Rig& rig, Primitive primitive, Target target, FigureClass figure, const std::string& noun);
 // The oscillation of a back-and-forth action at phase u (in cycles) (motion_frames.cpp).
 double oscillation(const PlannedAction& a, double u);
+// The rigid motion of one action at time t on a part (or the figure) with box `box` and
+// attachment `pivot`; `H`, `W` the figure's size (units of the translations); `plane` a wheel's
+// plane a spin turns in (rigid_motion.cpp).
+Affine rigid(const PlannedAction& a, double amp, double sign, double phase, double t, const RigBox& box, Vec2 pivot, double W, double H,
+             const Affine& plane = {});
 
 }  // namespace svgm::motion_plan_internal

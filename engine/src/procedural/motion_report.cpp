@@ -9,6 +9,7 @@
 #include "procedural/motion_direction.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/hang_support.h"
+#include "procedural/seat_support.h"
 #include "procedural/support_band.h"
 #include "geometry/rigid_bodies.h"
 
@@ -91,10 +92,21 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
       if (h.paths[pi]) ids.push_back(scene.paths[pi].id);
     hang = {{"words", plan.hang}, {"paths", ids}, {"grip", h.found ? json::array({std::round(h.grip.x * 100) / 100, std::round(h.grip.y * 100) / 100}) : json(nullptr)}};
   }
+  // What the prompt says the figure sits in or on, the paths drawn as it and the sitter's box.
+  json seat = nullptr;
+  if (!plan.seat.empty()) {
+    const SeatSupport s = seat_support(scene, rig);
+    json ids = json::array();
+    for (size_t pi = 0; pi < s.seat.size(); ++pi)
+      if (s.seat[pi]) ids.push_back(scene.paths[pi].id);
+    const RigBox& b = s.sitter;
+    seat = {{"words", plan.seat}, {"paths", ids}, {"sitter", s.found ? json::array({b.x0, b.y0, b.x1, b.y1}) : json(nullptr)}};
+  }
   return {{"source", plan.source},
           {"held", held},
           {"ground", ground},
           {"hang", hang},
+          {"seat", seat},
           {"root", root},
           {"parts", parts},
           {"facing", rig.eye_side == 0 ? json("") : json(std::string(rig.eye_side < 0 ? "left: " : "right: ") + rig.eye_why)},

@@ -52,6 +52,9 @@ std::string ground_words(const ParsedPrompt& prompt, const Rig& rig) {
     for (const auto& n : c.nouns) {
       if (!n.object_of_preposition || n.target != Target::Named || !(names_ground(n.preposition) || (leaves && n.preposition == "from")))
         continue;
+      // "on his skis", "on its board": the figure's own gear goes with it (seat_support.h); left
+      // as ground, the skis stayed while the skier glided off them.
+      if (n.owned && n.preposition != "from") continue;
       std::string ignore;
       if (parts_for(rig, Target::Named, n.word, &ignore).empty()) return n.preposition + " the " + n.word;
     }

@@ -23,7 +23,8 @@ namespace svgm {
 bool names_ground(const std::string& preposition);
 
 // The prompt's words for the ground the figure moves on: "on the waves" for the first noun after
-// a preposition of place (names_ground) that names no part of the figure; a launch, and a figure
+// a preposition of place (names_ground) that names no part of the figure and is not its own ("on
+// his skis": gear that goes with it, seat_support.h); a launch, and a figure
 // that leaves with no way told ("sails away": travel_words.h's says_leaving), leaves a ground,
 // named after "from" or not ("off the ground"). Empty when none.
 std::string ground_words(const ParsedPrompt& prompt, const Rig& rig);
