@@ -4,10 +4,13 @@
 // with the boat and the water a rower pulls through rowed with him.
 //
 // Found from the drawing, not from the word: the prompt only says that there is a ground (a
-// noun after on, onto, along, across, over, through or off that names no part of the figure);
-// the band is the widest path at the figure's bottom that spans most of its width and lies in
-// its lower part, with every path drawn within it (the crest line of the waves). No such band,
-// no support: "the rose droops on its stem" holds nothing.
+// noun after on, onto, along, across, over, through or off that names no part of the figure;
+// or a thing that leaves, or goes a way told: the sea stays as the ship sails to the left);
+// the band is the widest path at the figure's bottom that spans most of its width in one piece
+// (two wheels drawn as one path are no ground) and lies in its lower part, or that the rest of
+// the figure stands on (a tall sea under a flat boat), with every path drawn within it (the
+// crest line of the waves). No such band, no support: "the rose droops on its stem" holds
+// nothing.
 #pragma once
 
 #include <string>
@@ -25,7 +28,8 @@ bool names_ground(const std::string& preposition);
 // The prompt's words for the ground the figure moves on: "on the waves" for the first noun after
 // a preposition of place (names_ground) that names no part of the figure; a launch, and a figure
 // that leaves with no way told ("sails away": travel_words.h's says_leaving), leaves a ground,
-// named after "from" or not ("off the ground"). Empty when none.
+// named after "from" or not ("off the ground"); a thing (not a creature: its board or skis go
+// with it) sent a way told goes along one ("along the ground"). Empty when none.
 std::string ground_words(const ParsedPrompt& prompt, const Rig& rig);
 
 // Per path of the scene: 1 when it belongs to the band the figure moves on (see above).
