@@ -2,7 +2,7 @@
 // sails away to the left") leaves its sea where it is, as a leaving untold does; a tall sea the
 // boat stands on is ground though it starts high in the drawing; two wheels drawn as one path
 // are not ground (a scooter's wheels stayed while its body crept off), nor is a vehicle's body
-// that reaches its bottom with its windows within.
+// that reaches its bottom with its windows within, nor a hull drawn down past its sea.
 #include <doctest/doctest.h>
 
 #include "procedural/motion_plan.h"
@@ -35,6 +35,22 @@ TEST_CASE("ground band: a boat sent a way told leaves its sea where it is; a cre
   CHECK(plan_from_prompt(parse_prompt("the boat rocks"), d.rig, 1).ground.empty());
   // A creature's gait told a way goes with what is drawn under it (a board, skis).
   CHECK(plan_from_prompt(parse_prompt("the dog walks to the left"), d.rig, 1).ground.empty());
+}
+
+TEST_CASE("ground band: a hull drawn down past its sea is not the ground of a ship sent a way told: the hull goes") {
+  if (!wordnet_or_skip()) return;
+  const Drawing d("ship_hull_below_sea.svg");
+  REQUIRE(d.scene.paths.size() == 4);
+  MotionPlan plan = plan_from_prompt(parse_prompt("the ship sails to the left"), d.rig, 1);
+  REQUIRE(plan.ground == kAlongGround);
+  // The stripe lies within the hull, the cabin and the sea do not: the rest does not stand on it.
+  CHECK(support_paths(d.scene, d.rig, plan.ground) == std::vector<char>{0, 0, 0, 0});
+  const int F = 13;
+  fit_plan(d.scene, d.rig, plan, F, 9);
+  const std::vector<double> moved = d.travel(plan, F);
+  CAPTURE(moved[0]);
+  CHECK(moved[0] > 3);  // the hull (path 0) goes with its cabin
+  CHECK(moved[2] > 3);
 }
 
 TEST_CASE("ground band: a sea taller than the drawing's lower 60 % is ground when the boat stands on it") {

@@ -670,7 +670,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
       for (int p : pole_parts(rig, a.anchored, true)) held[p] = 1;
   // The ground the prompt says the figure moves on stays, or what it hangs from (support_band.h, hang_support.h).
   const HangSupport hang = plan.hang.empty() ? HangSupport{} : hang_support(scene, rig);
-  const std::vector<char> ground = plan.ground.empty() ? hang.paths : support_paths(scene, rig);
+  const std::vector<char> ground = plan.ground.empty() ? hang.paths : support_paths(scene, rig, plan.ground);
   // Chains hanging from the root that reach the lowest kPlanted of the figure stand on the
   // ground (legs, feet): the root's own swing does not carry them.
   std::vector<char> planted(G, 0);

@@ -68,7 +68,7 @@ std::string ground_words(const ParsedPrompt& prompt, const Rig& rig) {
       if (parts_for(rig, Target::Named, n.word, &ignore).empty()) return n.preposition + " the " + n.word;
     }
   }
-  return launch ? "off the ground" : goes ? "along the ground" : "";
+  return launch ? "off the ground" : goes ? kAlongGround : "";
 }
 
 namespace {
@@ -92,7 +92,7 @@ bool rest_stands_on(const std::vector<RigBox>& box, const std::function<bool(siz
 
 // The band at least `wide` of the figure's width among the paths whose boxes are `box` and
 // whose widest connected pieces are `piece` wide (see support_band.h), per path.
-std::vector<char> band_of(const std::vector<RigBox>& box, const std::vector<double>& piece, const Rig& rig, double wide) {
+std::vector<char> band_of(const std::vector<RigBox>& box, const std::vector<double>& piece, const Rig& rig, double wide, bool stood_on = false) {
   const size_t n = box.size();
   std::vector<char> out(n, 0);
   const RigBox& F = rig.figure;
@@ -113,7 +113,7 @@ std::vector<char> band_of(const std::vector<RigBox>& box, const std::vector<doub
     if (b.y0 < F.y0 + kTop * H && !rest_stands_on(box, figure_path, i, eps)) continue;
     if (band < 0 || b.w() > box[band].w()) band = static_cast<int>(i);
   }
-  if (band < 0) return out;
+  if (band < 0 || (stood_on && !rest_stands_on(box, figure_path, band, eps))) return out;
   const RigBox& B = box[band];
   bool above = false;  // something of the figure stands above the band
   for (size_t i = 0; i < n; ++i) {
@@ -147,7 +147,9 @@ static std::vector<double> piece_widths(const Scene& scene) {
   return out;
 }
 
-std::vector<char> support_paths(const Scene& scene, const Rig& rig) { return band_of(path_boxes(scene), piece_widths(scene), rig, kWide); }
+std::vector<char> support_paths(const Scene& scene, const Rig& rig, const std::string& words) {
+  return band_of(path_boxes(scene), piece_widths(scene), rig, kWide, words == kAlongGround);
+}
 
 // The fill of path p over its box: the control polygons' signed areas added (a hole takes its
 // share away), or -1 for a path with no fill (a stroke says nothing of a slab).

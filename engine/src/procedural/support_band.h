@@ -32,8 +32,14 @@ bool names_ground(const std::string& preposition);
 // with it) sent a way told goes along one ("along the ground"). Empty when none.
 std::string ground_words(const ParsedPrompt& prompt, const Rig& rig);
 
-// Per path of the scene: 1 when it belongs to the band the figure moves on (see above).
-std::vector<char> support_paths(const Scene& scene, const Rig& rig);
+// ground_words for a thing sent a way told, no ground named: its band must be one the rest of
+// the figure stands on (more of its paths above it than within it, none hanging lower). A ship's
+// hull reaching below its sea (drawn past the canvas) was taken for the ground, and the sea went.
+inline const std::string kAlongGround = "along the ground";
+
+// Per path of the scene: 1 when it belongs to the band the figure moves on (see above), for the
+// prompt's ground words `words` (ground_words).
+std::vector<char> support_paths(const Scene& scene, const Rig& rig, const std::string& words = "");
 // The same from the rig alone (each path's box from its drawn elements, Rig::elements: the
 // figure's paths have the same boxes), for the plan, which has no scene (flight_axis.h leaves the
 // band out of a launched figure's shape).
