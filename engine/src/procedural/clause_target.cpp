@@ -43,7 +43,10 @@ ClauseTarget clause_target(const Clause& c, const ParsedPrompt& prompt, const Ri
         // The ground's noun was understood: it is where the figure moves. So was the figure's
         // own noun, the subject naming a kind of figure ("the tiger": a quadruped): it names
         // who moves, not a part (the report listed "tiger" as not understood).
-        const bool own_noun = names_figure_kind(n) && n.figure == c.figure && !n.after_verb && !n.object_of_preposition;
+        // So was a thing's noun the lexicon gave a motion of its own ("the ship": a vessel, which
+        // rocks; "the speedboat"): the suite listed every ship, ferry and speedboat as not understood.
+        const bool kind = names_figure_kind(n) || (n.figure == FigureClass::Object && n.motion);
+        const bool own_noun = kind && n.figure == c.figure && !n.after_verb && !n.object_of_preposition;
         if (unknown_words && !own_noun && ground.substr(ground.rfind(' ') + 1) != n.word) unknown_words->push_back(n.word);
         continue;
       }

@@ -671,7 +671,7 @@ bool fit_scales(const Scene& scene, const Rig& rig, MotionPlan& plan, int frames
 // No band found, nothing to sink into: "on the breeze" bobs both ways.
 void rise_from_ground(const Scene& scene, const Rig& rig, MotionPlan& plan) {
   if (plan.ground.empty()) return;
-  const std::vector<char> band = support_paths(scene, rig);
+  const std::vector<char> band = support_paths(scene, rig, plan.ground);
   if (std::find(band.begin(), band.end(), 1) == band.end()) return;
   for (auto& a : plan.actions)
     if (a.primitive == Primitive::Bob && a.target == Target::Whole && a.vertical == 0 && a.amp > 0) {

@@ -608,7 +608,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
       for (int p : pole_parts(rig, a.anchored, true)) held[p] = 1;
   // The ground the prompt says the figure moves on stays, or what it hangs from (support_band.h, hang_support.h).
   const HangSupport hang = plan.hang.empty() ? HangSupport{} : hang_support(scene, rig);
-  const std::vector<char> ground = plan.ground.empty() ? hang.paths : support_paths(scene, rig);
+  const std::vector<char> ground = plan.ground.empty() ? hang.paths : support_paths(scene, rig, plan.ground);
   // What it sits in or on, when no ground band holds (seat_support.h): motions in place move the
   // sitter about its own box and leave the seat; what goes carries the seat too (`carried`).
   const SeatSupport seat = plan.seat.empty() || std::count(ground.begin(), ground.end(), 1) ? SeatSupport{} : seat_support(scene, rig);

@@ -76,7 +76,7 @@ nlohmann::json motion_report(const Scene& scene, const Rig& rig, const MotionPla
   json ground = nullptr;
   if (!plan.ground.empty()) {
     json ids = json::array();
-    const std::vector<char> band = support_paths(scene, rig);
+    const std::vector<char> band = support_paths(scene, rig, plan.ground);
     for (size_t pi = 0; pi < band.size(); ++pi)
       if (band[pi]) ids.push_back(scene.paths[pi].id);
     ground = {{"words", plan.ground}, {"paths", ids},
