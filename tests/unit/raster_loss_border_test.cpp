@@ -73,20 +73,8 @@ TEST_CASE("loss border: drawings crossing the border keep the loss and gradient 
   const Scene scene = scene_of(kW, kH, {filled(circle({2, 14}, 9), {0.9f, 0.2f, 0.1f, 1}),
                                         filled(polygon({{24, 18}, {47, 24}, {33, 39}}), {0.1f, 0.6f, 0.3f, 0.7f})});
   const RasterPlan plan = plan_raster(scene, Affine{}, kW, kH);
-  std::mt19937 rng(23);
-  std::normal_distribution<double> N(0, 0.7);
-  std::vector<double> cp(plan.rest_cp.begin(), plan.rest_cp.end()), target_cp = cp;
+  const auto [cp, target] = perturbed_pair(plan, 23);
   const size_t n = static_cast<size_t>(plan.n_cp - 3) * 2;  // the 3 padding points stay at 0
-  for (size_t i = 0; i < n; ++i) {
-    cp[i] += N(rng);
-    target_cp[i] += 2 * N(rng);
-  }
-  std::vector<float> target;
-  const std::vector<double> t = ref::render(plan, target_cp);
-  for (size_t p = 0; p < t.size() / 4; ++p) {  // composited on white, as targets are
-    for (int ch = 0; ch < 3; ++ch) target.push_back(static_cast<float>(t[4 * p + ch] + 1.0 - t[4 * p + 3]));
-    target.push_back(1.f);
-  }
   for (const auto& [sl, sc] : {std::pair{1.8, 0.0}, std::pair{1.3, 1.9}}) {
     CAPTURE(sl);
     CAPTURE(sc);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstring>
+#include <random>
 #include <vector>
 
 #include "opencl/runtime.h"
@@ -65,6 +66,31 @@ inline std::vector<float> targets_on_white(const RasterPlan& plan, int frames, f
     img[p + 3] = 1;
   }
   return img;
+}
+
+// A frame and a target perturbed from the plan's rest pose (seeded normal offsets, sd 0.7 px and
+// twice that; the 3 padding points stay at 0): `cp` the frame's control points, `target` the
+// target's render by the CPU reference composited on white, as targets are.
+struct PerturbedPair {
+  std::vector<double> cp;
+  std::vector<float> target;
+};
+inline PerturbedPair perturbed_pair(const RasterPlan& plan, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> N(0, 0.7);
+  PerturbedPair out{std::vector<double>(plan.rest_cp.begin(), plan.rest_cp.end()), {}};
+  std::vector<double> target_cp = out.cp;
+  const size_t n = static_cast<size_t>(plan.n_cp - 3) * 2;
+  for (size_t i = 0; i < n; ++i) {
+    out.cp[i] += N(rng);
+    target_cp[i] += 2 * N(rng);
+  }
+  const std::vector<double> t = ref::render(plan, target_cp);
+  for (size_t p = 0; p < t.size() / 4; ++p) {
+    for (int ch = 0; ch < 3; ++ch) out.target.push_back(static_cast<float>(t[4 * p + ch] + 1.0 - t[4 * p + 3]));
+    out.target.push_back(1.f);
+  }
+  return out;
 }
 
 inline bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
