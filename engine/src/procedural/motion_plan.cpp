@@ -27,6 +27,7 @@
 #include "procedural/part_locator.h"
 #include "procedural/self_movers.h"
 #include "procedural/toss_and_stroke.h"
+#include "procedural/turn_agreement.h"
 
 namespace svgm {
 
@@ -377,6 +378,8 @@ struct Builder {
     // One-sided whole-figure motions (lean, bow) go one way and back.
     if (a.primitive == Primitive::Rock && base.pairing == Pairing::OneSide) a.vertical = 2;
     explain(a, verb, target, words, mods, {note, which, paddle, beat, instead, spacing, heading, root_plant(a, rig, figure)});  // roots a plant: sway_base.h
+    // A turn of the same body as an earlier one goes its way: the two must not cancel (turn_agreement.h).
+    if (agree_with_earlier_turns(plan.actions, a, mods.side != 0)) a.why += "; the same way first as the earlier turn of the same body (they would cancel)";
     if (!repeats(a)) plan.actions.push_back(std::move(a));
   }
 
