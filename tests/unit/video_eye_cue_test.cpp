@@ -94,6 +94,27 @@ TEST_CASE("eye cue: the skeleton's head and tail labels follow the eye; facing s
   CHECK(relabel_by_eye(rig, EyeCue{}) == 0);
 }
 
+TEST_CASE("eye cue: a limb belongs to the end its base leaves, when that is off the middle: antennae swept back stay the head's") {
+  Rig rig = side_figure();
+  rig.elements.push_back(blob(170, 20, 178, 28, 0.1));  // the eye at the right
+  auto from = [](LobeKind kind, Vec2 pivot, Vec2 tip) {
+    ArmLobe l;
+    l.kind = kind;
+    l.pivot = pivot;
+    l.tip = tip;
+    return l;
+  };
+  rig.limbs = {from(LobeKind::Tail, {165, 15}, {15, 5}),    // antennae: from the head back past the tail's end
+               from(LobeKind::Head, {30, 40}, {150, 2}),    // a tail curled forward over the back
+               from(LobeKind::Tail, {105, 50}, {10, 60})};  // a base at the middle: by its tip, a tail still
+  const EyeCue eye = find_eye(rig);
+  REQUIRE(eye.side == 1);
+  CHECK(relabel_by_eye(rig, eye) == 2);
+  CHECK(rig.limbs[0].kind == LobeKind::Head);
+  CHECK(rig.limbs[1].kind == LobeKind::Tail);
+  CHECK(rig.limbs[2].kind == LobeKind::Tail);
+}
+
 TEST_CASE("eye cue: an animal whose round-tufted tail the skeleton reads as its head flicks its tail, not its snout") {
   Drawing d("eye_tail.svg");
   REQUIRE(d.rig.parts.size() == 1);

@@ -50,7 +50,11 @@ int relabel_by_eye(Rig& rig, const EyeCue& eye) {
   const double mid = rig.figure.centre().x, off = kEyeOffCentre * rig.figure.w();
   int changed = 0;
   for (ArmLobe& l : rig.limbs) {
-    const double ahead = (l.tip.x - mid) * eye.side;  // > 0: towards the eye
+    // The end a limb belongs to is where it leaves the body: its base, when that lies off the
+    // middle; else its tip. A shrimp's antennae leave its head and sweep back over its body to
+    // past the tail: by their tips they were the tail ("flicks its tail" waved the antennae).
+    const double base = (l.pivot.x - mid) * eye.side;
+    const double ahead = std::fabs(base) > off ? base : (l.tip.x - mid) * eye.side;  // > 0: towards the eye
     if (l.kind == LobeKind::Head && ahead < -off) l.kind = LobeKind::Tail, ++changed;
     else if (l.kind == LobeKind::Tail && ahead > off) l.kind = LobeKind::Head, ++changed;
   }

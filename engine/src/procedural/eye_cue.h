@@ -50,10 +50,12 @@ EyeCue find_eye(const Rig& rig);
 // found (Rig::eye_side, eye, eye_why) and the limbs relabelled by it. Returns the cue.
 EyeCue apply_eye_cue(Rig& rig, const Scene& scene, const Scene& paint);
 
-// The silhouette limbs (Rig::limbs) labelled against the eye, relabelled: a head limb whose tip
-// lies on the side away from the eye is the tail, a tail limb whose tip lies on the eye's side
-// the head (beyond kEyeOffCentre of the figure's width from its middle, both). Returns how many
-// changed. Nothing changes without an eye.
+// The silhouette limbs (Rig::limbs) labelled against the eye, relabelled: a head limb that
+// belongs to the side away from the eye is the tail, a tail limb that belongs to the eye's side
+// the head (beyond kEyeOffCentre of the figure's width from its middle, both). A limb belongs to
+// the side its base (pivot) lies on, when that is off the middle (a shrimp's antennae leave its
+// head and sweep back past its tail), else to its tip's. Returns how many changed. Nothing
+// changes without an eye.
 int relabel_by_eye(Rig& rig, const EyeCue& eye);
 
 }  // namespace svgm

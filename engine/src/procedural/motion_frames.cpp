@@ -19,6 +19,7 @@
 #include "procedural/support_band.h"
 #include "procedural/sway_base.h"
 #include "procedural/travel_profile.h"
+#include "procedural/turn_agreement.h"
 #include "geometry/rigid_bodies.h"
 #include "procedural/wheel_riders.h"
 
@@ -51,7 +52,7 @@ Affine compose_whole(const Affine& so_far, const Affine& m, const PlannedAction&
 // every other piece turning and drifting the other way and each a little shorter than the one
 // before (to 3/4), so no two pieces move in step.
 Affine piece_motion(const PlannedAction& a, double amp, size_t k, double t, const RigBox& box, const RigBox& figure, double W, double H) {
-  if (!a.apart) return rigid(a, amp, 1, 0, t, figure, figure.centre(), W, H);  // all pieces as one
+  if (!a.apart) return rigid(a, amp, whole_turn_sign(a), 0, t, figure, figure.centre(), W, H);  // all pieces as one
   PlannedAction one = a;
   const double sign = k % 2 ? -1 : 1;
   one.direction = static_cast<int>(sign) * a.direction;
@@ -660,7 +661,8 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
         carried = rigid(shallower, amp, 1, 0, t, rig.figure, rig.figure.centre(), W, H) * carried;
       } else if (a.parts.empty() && !a.turns_round) {  // (turning round: turn_round, after)
         const bool swings = hang.found && a.primitive == Primitive::Rock;  // (hang_support.h)
-        const Affine m = swings ? pendulum(a, amp, t, hang.grip) : rigid(a, amp, 1, 0, t, mover, mover.centre(), W, H);
+        // (A rock goes its direction first, as a sway and a pendulum do: turn_agreement.h.)
+        const Affine m = swings ? pendulum(a, amp, t, hang.grip) : rigid(a, amp, whole_turn_sign(a), 0, t, mover, mover.centre(), W, H);
         whole = compose_whole(whole, m, a);
         if (seat_goes(a)) carried = compose_whole(carried, m, a);
         for (size_t k = 0; k < whole_of.size(); ++k) whole_of[k] = compose_whole(whole_of[k], swings ? pendulum(a, amp, t, hang.grip) : piece_motion(a, amp, k, t, piece_box[k], rig.figure, W, H), a);

@@ -27,6 +27,7 @@
 #include "procedural/part_locator.h"
 #include "procedural/self_movers.h"
 #include "procedural/toss_and_stroke.h"
+#include "procedural/turn_agreement.h"
 
 namespace svgm {
 
@@ -377,7 +378,14 @@ struct Builder {
     // One-sided whole-figure motions (lean, bow) go one way and back.
     if (a.primitive == Primitive::Rock && base.pairing == Pairing::OneSide) a.vertical = 2;
     explain(a, verb, target, words, mods, {note, which, paddle, beat, instead, spacing, heading, root_plant(a, rig, figure)});  // roots a plant: sway_base.h
-    if (!repeats(a)) plan.actions.push_back(std::move(a));
+    if (!repeats(agreed(a, mods))) plan.actions.push_back(std::move(a));
+  }
+
+  // `a`, a turn of the whole figure, going the way an earlier one goes, unless the prompt said
+  // which way: the two must not cancel (turn_agreement.h).
+  PlannedAction& agreed(PlannedAction& a, const Modifiers& mods) const {
+    if (agree_with_earlier_turns(plan.actions, a, mods.side != 0)) a.why += "; the same way first as the figure's earlier turn (they would cancel)";
+    return a;
   }
 
   // Whether `a` repeats an action (the same primitive on the same parts: skipped); a larger one
