@@ -268,7 +268,7 @@ inline int line_boundary(float4 l, int width, float* at) {
  * lines. And whether any line of the chunk lies on a pixel boundary (line_boundary), in
  * `snapped`: the fit's bands skip the boundary tests of a chunk without one. Classified once
  * per line and frame here, they were made again by every band the chunk reaches, in the taped
- * forward and in the backward: 4% of a fit's iteration on a layered scene. One work-item per
+ * forward and in the backward: 4% of `bench raster`'s iteration on the train. One work-item per
  * (chunk, frame). */
 __kernel void chunk_bounds(__global const float4* lines,    /* [K][n_lines] */
                            __global const int2* chunk_lines, /* [n_chunks] (first line, count) */
