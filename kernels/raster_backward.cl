@@ -27,7 +27,10 @@
  *
  * f' the slope of the fill rule (nonzero: sign(a) where |a| < 1; evenodd: the sign of the fold).
  * An entry whose draw is hidden at its pixel (V = 0, or below such an entry there) has T = 0 and
- * g = 0: raster_taped keeps it out of the pool (drop_hidden_entries).
+ * g = 0: raster_taped keeps it out of the pool (drop_hidden_entries). Taping only where
+ * ∂L/∂C is not zero would save nothing: none of the kept entries had an exactly zero ∂L/∂C,
+ * in `bench raster` (train, 111k entries an iteration) or over a fit's last iterations
+ * (the example's procedural wave, 1.1M entries); a fit's residual is nowhere exactly zero.
  * No paths x pixels buffer and no second accumulation of the lines: the tape holds 24 bytes
  * per edge pixel of the band. (The backward pass used to accumulate every draw's lines again
  * and sweep its spans top-down for T: half of its time. T's factors are now multiplied in
@@ -76,13 +79,6 @@
 
 #define FRACTION_EPS 1e-6f /* |a| this close to an integer is treated as interior or exterior */
 
-/* A coordinate within SNAP_REL · max(|v|, W) of an integer lies on a pixel boundary. 2^-18:
- * 32 float ulps of the canvas width, above the rounding of the fitter's control points (the
- * motion model works in units of half the canvas, ~6 roundings of 2^-24 of it, and the
- * flattening adds a Bernstein combination), far below any offset a drawing means (4e-3 px at
- * 1024 px): within it, which side of the boundary the float geometry lands on is rounding. */
-#define SNAP_REL 3.8146973e-6f
-
 /* How far (px) outside a band a chunk's box may end and still be visited by the band's
  * gradient walk: a line on the band's top or bottom boundary gives half its integral to the
  * row inside. Must match between raster_backward and gather_line_grads. */
@@ -113,38 +109,6 @@ inline float2 fill_rule_slopes(float a, int rule) {
   return (float2)(0.0f);
 }
 
-/* Whether v lies on an integer (within rounding on a canvas `extent` wide, SNAP_REL); *n gets
- * the integer. */
-inline int on_integer(float v, float extent, float* n) {
-  *n = rint(v);
-  return fabs(v - *n) <= SNAP_REL * fmax(extent, fabs(v));
-}
-
-/* Whether line l lies on the pixel column boundary x = *X (both ends on the same integer). */
-inline int on_column(float4 l, float extent, float* X) {
-  float b;
-  return on_integer(l.x, extent, X) && on_integer(l.z, extent, &b) && b == *X;
-}
-
-/* Whether line l lies on the pixel row boundary y = *Y. */
-inline int on_row(float4 l, float extent, float* Y) {
-  float b;
-  return on_integer(l.y, extent, Y) && on_integer(l.w, extent, &b) && b == *Y;
-}
-
-/* Where a line lies (line_boundary): inside the pixels it crosses, or on a pixel column or
- * row boundary. */
-#define ON_NONE 0
-#define ON_COLUMN 1
-#define ON_ROW 2
-
-/* ON_COLUMN with *at = X, ON_ROW with *at = Y, or ON_NONE, on a canvas `width` pixels wide. */
-inline int line_boundary(float4 l, int width, float* at) {
-  if (on_column(l, (float)width, at)) return ON_COLUMN;
-  if (on_row(l, (float)width, at)) return ON_ROW;
-  return ON_NONE;
-}
-
 /* Whether the band [fy0, fy1) walks the lines of a chunk with box b for gradients. */
 inline int band_reaches(float4 b, float fy0, float fy1, float fw) {
   return !(b.w < fy0 - BAND_REACH || b.y > fy1 + BAND_REACH || b.x > fw + BAND_REACH);
@@ -166,15 +130,17 @@ inline void grow_hull2(__local float2* buf, int* lo, int* hi, int a, int b) {
  * spans and clean accumulation hulls to them. The sweeps read and clear the marks. Returns
  * whether any chunk of the draw reaches the band (band_reaches). */
 inline int mark_boundary_lines(__global const float4* L, __global const float4* B,
-                               __global const int2* chunk_lines, int2 chunks, int y0, int rows,
-                               int width, int stride, __local float* acc, __local uchar* mark,
-                               int* xlo, int* xhi, int* alo, int* ahi) {
+                               __global const int* S, __global const int2* chunk_lines,
+                               int2 chunks, int y0, int rows, int width, int stride,
+                               __local float* acc, __local uchar* mark, int* xlo, int* xhi,
+                               int* alo, int* ahi) {
   const float fy0 = (float)y0, fy1 = (float)(y0 + rows), fw = (float)width;
   int any = 0;
   for (int c = chunks.x; c < chunks.x + chunks.y; ++c) {
     const float4 b = B[c];
     if (!band_reaches(b, fy0, fy1, fw)) continue;
     any = 1;
+    if (!S[c]) continue; /* no line of the chunk on a pixel boundary (chunk_bounds) */
     const int2 range = chunk_lines[c];
     for (int j = range.x; j < range.x + range.y; ++j) {
       const float4 l = L[j];
@@ -339,7 +305,7 @@ inline float4 walk_line_grad(float4 l, int on, float at, int row, int width,
  * rows × width (filled here). Shared by raster_taped and raster_backward's fallback, so both
  * tape the same bits. */
 inline int replay_band(__global const float4* L, __global const float4* B,
-                       __global const int2* draw_chunks, __global const int2* chunk_lines,
+                       __global const int* S, __global const int2* draw_chunks, __global const int2* chunk_lines,
                        __global const float4* draw_color, __global const int* draw_rule,
                        __global const int* draw_paint, __global const float4* paint, int height,
                        int n_draws, int y0, int rows, int width, int stride, __local float* acc,
@@ -362,7 +328,7 @@ inline int replay_band(__global const float4* L, __global const float4* B,
     draw_tape[d] = tp;
     accumulate_draw(L, B, chunk_lines, draw_chunks[d], y0, rows, width, stride, acc, xlo, xhi,
                     alo, ahi);
-    mark_boundary_lines(L, B, chunk_lines, draw_chunks[d], y0, rows, width, stride, acc, mark,
+    mark_boundary_lines(L, B, S, chunk_lines, draw_chunks[d], y0, rows, width, stride, acc, mark,
                         xlo, xhi, alo, ahi);
     const float4 color = draw_color[d];
     const int rule = draw_rule[d];
@@ -450,7 +416,8 @@ __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
                            __local int* last,                  /* [BAND_H][W] */
                            __local float2* aux,                /* [tape_cap] the tape's (pixel, V) */
                            __global float2* pool_aux,          /* [pool_cap] */
-                           __constant LossBlur* loss_blur) {   /* the residual's blur (prelude.cl) */
+                           __constant LossBlur* loss_blur,     /* the residual's blur (prelude.cl) */
+                           __global const int* snapped) {      /* [K][n_chunks] (chunk_bounds) */
   /* The frame: the launch's global offset is the first of its chunk (one work-item deep in
    * that dimension, so the global id is the frame); X' holds the chunk's frames only. */
   const int band = get_group_id(0), k = get_global_id(1), k0 = get_global_offset(1);
@@ -462,7 +429,7 @@ __kernel void raster_taped(__global const float4* lines,      /* [K][n_lines] */
     for (int i = 0; i < rows * width; ++i) mark[i] = 0;
     const int slot = k * n_bands + band;
     const int tp = replay_band(lines + (size_t)k * n_lines, bounds + (size_t)k * n_chunks,
-                               draw_chunks, chunk_lines, draw_color, draw_rule, draw_paint, paint,
+                               snapped + (size_t)k * n_chunks, draw_chunks, chunk_lines, draw_color, draw_rule, draw_paint, paint,
                                height, n_draws, y0, rows, width, width + 2, acc, band_rgba, mark,
                                background, tape, aux, tape_cap,
                                pool_draw + (size_t)slot * n_draws, hlo, hhi, prod, last);
@@ -528,7 +495,8 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
                               __local float2* aux,                /* [tape_cap] */
                               __global const float2* pool_aux,    /* raster_taped's (pixel, V) */
                               __global const int* tiles,          /* R's tile index (loss.cl) */
-                              __constant LossBlur* loss_blur) {   /* the loss's blur (prelude.cl) */
+                              __constant LossBlur* loss_blur,     /* the loss's blur (prelude.cl) */
+                              __global const int* snapped) {      /* [K][n_chunks] (chunk_bounds) */
   /* The frame, and E' of the chunk's frames only, as in raster_taped. */
   const int band = get_group_id(0), k = get_global_id(1), k0 = get_global_offset(1);
   const int lid = get_local_id(0), lsize = get_local_size(0);
@@ -540,6 +508,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
     LOSS_BLUR_PRIVATE; /* within work-item 0's part: nothing private of it lives across a barrier */
     __global const float4* L = lines + (size_t)k * n_lines;
     __global const float4* B = bounds + (size_t)k * n_chunks;
+    __global const int* S = snapped + (size_t)k * n_chunks;
     __global const float* Ek = E + (size_t)(k - k0) * height * width * 3;
     __global const int2* Xk = ext_e + (size_t)k * height;
     __global const int* Rt = loss_frame_tiles(tiles, k, width, height);
@@ -576,7 +545,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
       }
     } else {
       for (int i = 0; i < rows * width; ++i) mark[i] = 0;
-      tp = replay_band(L, B, draw_chunks, chunk_lines, draw_color, draw_rule, draw_paint, paint,
+      tp = replay_band(L, B, S, draw_chunks, chunk_lines, draw_color, draw_rule, draw_paint, paint,
                        height, n_draws, y0, rows, width, stride, acc, band_rgba, mark, background,
                        tape, aux, tape_cap, draw_tape, hlo, hhi, band_T, last);
     }
@@ -629,6 +598,7 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
         const float4 b = B[c];
         if (!band_reaches(b, fy0, fy1, fw)) continue;
         const int2 range = chunk_lines[c];
+        const int snap = S[c];
         if (e0 == e1) {
           /* No entry of the draw in the band (none, or every one hidden: raster_taped's
            * drop_hidden_entries): every cell its lines cross reads +0, and their walks give
@@ -641,8 +611,9 @@ __kernel void raster_backward(__global const float4* lines,      /* [K][n_lines]
           const float4 l = L[j];
           const float ymin = fmin(l.y, l.w) - fy0, ymax = fmax(l.y, l.w) - fy0;
           int r0 = max((int)floor(ymin), 0), r1 = min((int)ceil(ymax), rows) - 1;
-          float at;
-          const int on = line_boundary(l, width, &at);
+          /* A chunk without a line on a pixel boundary needs no test of its lines. */
+          float at = 0.0f;
+          const int on = snap ? line_boundary(l, width, &at) : ON_NONE;
           if (on == ON_ROW) { /* rows Y − 1 and Y border it */
             r0 = (int)clamp(at - fy0 - 1.0f, 0.0f, (float)rows);
             r1 = (int)clamp(at - fy0, -1.0f, (float)(rows - 1));

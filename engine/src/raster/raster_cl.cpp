@@ -92,6 +92,7 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double ren
     paint_ = make(p.paint.size() * sizeof(float), p.paint.data());
     chunk_lines_ = make(p.chunk_lines.size() * sizeof(int), p.chunk_lines.data());
     bounds_ = make(K * (p.chunk_lines.size() / 2) * 4 * sizeof(float));
+    chunk_snap_ = make(K * (p.chunk_lines.size() / 2) * sizeof(int));  // chunk_bounds' boundary flags
     const LossBlurArgs blur = loss_blur_args(render_sigma_, chroma_sigma_, chroma_weight_);
     loss_blur_ = make(sizeof blur, &blur);
     // The output buffers are made on first use: a render needs only the 8-bit one.
@@ -103,7 +104,7 @@ ClRaster::ClRaster(ClRuntime& rt, const RasterPlan& plan, int frames, double ren
     set_args(k_lines_, pts_, line_ab_, lines_, p.n_pts, p.n_lines, p.browser_edges ? 1 : 0);
     const int n_draws = static_cast<int>(p.draws.size());
     const int n_chunks = static_cast<int>(p.chunk_lines.size() / 2);
-    set_args(k_bounds_, lines_, chunk_lines_, bounds_, p.n_lines, n_chunks);
+    set_args(k_bounds_, lines_, chunk_lines_, bounds_, p.n_lines, n_chunks, chunk_snap_, p.width);
     set_args(k_raster_, lines_, draw_chunks_, chunk_lines_, draw_color_, draw_rule_, bounds_,
              cl::Local(static_cast<size_t>(band_h_) * (p.width + 2) * sizeof(float)),
              cl::Local(static_cast<size_t>(band_h_) * p.width * 4 * sizeof(float)));

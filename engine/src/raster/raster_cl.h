@@ -216,7 +216,7 @@ class ClRaster {
       cp_entries_;
   cl::Kernel k_flatten_, k_stroke_, k_lines_, k_bounds_, k_raster_;
   cl::Buffer cp_, vert_cp_, vert_w_, vert_join_, sp_a_, sp_b_, sp_f_, pts_, line_ab_, lines_,
-      draw_chunks_, chunk_lines_, draw_color_, draw_rule_, bounds_, acc_, image_, rgba_,
+      draw_chunks_, chunk_lines_, draw_color_, draw_rule_, bounds_, chunk_snap_, acc_, image_, rgba_,
       draw_paint_, paint_, render_image_;
   void render_into(int first, int count, const std::array<float, 4>& background, cl::Buffer& img, std::vector<float>& out);
 };

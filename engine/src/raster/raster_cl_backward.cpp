@@ -91,7 +91,7 @@ void ClRaster::init_backward() {
                 draw_paint_, paint_, cl::Local(static_cast<size_t>(band_h_) * p.width * sizeof(int)),
                 cl::Local(static_cast<size_t>(tape_cap_) * 2 * sizeof(float)));
     // Argument 33 (the pool's (pixel, V)) is set by resize_pool.
-    set_args_at(k_backward_, 34, qr_tiles_, loss_blur_);
+    set_args_at(k_backward_, 34, qr_tiles_, loss_blur_, chunk_snap_);
     pool_draw_ = make(K * bands_ * std::max<size_t>(n_draws, 1) * sizeof(int));
     pool_at_ = make(K * bands_ * 2 * sizeof(int));
     pool_used_ = make(K * sizeof(int));  // per chunk, at its first frame
@@ -108,6 +108,7 @@ void ClRaster::init_backward() {
                 cl::Local(static_cast<size_t>(tape_cap_) * 2 * sizeof(float)));
     // Argument 30 (the pool's (pixel, V)) is set by resize_pool.
     k_taped_.setArg(31, loss_blur_);
+    k_taped_.setArg(32, chunk_snap_);
     // A first pool of a quarter of a chunk's pixels (it holds one chunk's tapes at a time); it
     // grows to what the bands of a chunk ask for.
     resize_pool(static_cast<int>(std::min<size_t>(static_cast<size_t>(chunk_) * p.height * p.width / 4 + 1, kMaxPoolEntries)));
