@@ -60,13 +60,14 @@
  *
  * And they are stored by tiles of LOSS_TILE x LOSS_TILE pixels (raster/loss_tiles.h): a
  * clipart frame is mostly white paper far from any ink, where Q and R are one value (the
- * blurred background less the blurred white target), so each frame keeps only its tiles that
- * are not all that value (near the figure, and at the frame's border, where zero padding bends
- * the blurs). Layout (ClRaster::prepare_loss_constants): Q's pool and R's, pixels of four
- * halves, start with frame k's constant at pixel k, then hold the stored tiles, each
- * LOSS_TILE² pixels in rows; `tiles` holds per frame and tile (row-major) the tile's number in
- * the pools, or −1 − k for the constant. The kernels read the same halves as from a dense
- * frame, so the same bits; the bundled example's Q and R at 512 px were 88 MB dense.
+ * blurred background less the blurred white target), as inside a flat fill, so each frame
+ * stores only its tiles that are not all one value (near the figure's edges, and at the
+ * frame's border, where zero padding bends the blurs) and holds each other tile as its value.
+ * Layout (ClRaster::prepare_loss_constants): Q's pool and R's, pixels of four halves, hold the
+ * stored tiles, each LOSS_TILE² pixels in rows, then the uniform tiles' values, a pixel each;
+ * `tiles` holds per frame and tile (row-major) the tile's number in the pools, or −1 − c for
+ * the value at pool pixel c. The kernels read the same halves as from a dense frame, so the
+ * same bits; the bundled example's Q and R at 512 px were 88 MB dense.
  */
 
 /* The pool pixel holding (x, y) of the frame whose tile index is `tiles`. */
@@ -130,7 +131,7 @@ inline float matched_residual(const LossBlur* lb, float3 q, float3 v, __global f
 #endif
 
 /* Where a row's Q is read from x on, to the end of x's tile (blur_y_loss_rows): pool pixel
- * *at, advancing by *step (1 in a stored tile, 0 on the constant) per pixel. A lookup per
+ * *at, advancing by *step (1 in a stored tile, 0 on a uniform tile's value) per pixel. A lookup per
  * tile, not per pixel: one per pixel made the row loop several times slower. */
 inline void q_tile_start(__global const int* row, int in, int x, size_t* at, int* step) {
   const int t = row[x / LOSS_TILE];
@@ -167,7 +168,7 @@ inline void prefetch_next_row(const LossBlur* lb, __global const float* f, __glo
   const int in = (yq % LOSS_TILE) * LOSS_TILE;
   for (int t = lo / LOSS_TILE; t <= hi / LOSS_TILE; ++t) {
     const int n = row[t];
-    if (n < 0) continue; /* the frame's constant: one pixel, read by every row */
+    if (n < 0) continue; /* a uniform tile's value: one pixel, read by every row */
     __global const half* p = Q + ((size_t)n * (LOSS_TILE * LOSS_TILE) + in) * 4;
     for (int i = 0; i < LOSS_TILE * 4; i += 32) PREFETCH(p + i);
   }

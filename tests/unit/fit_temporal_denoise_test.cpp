@@ -15,6 +15,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "fit/target/deflated_bytes.h"
 #include "fit/target/temporal_denoise.h"
 #include "svgmotion/target_video.h"
 
@@ -176,7 +177,13 @@ TEST_CASE("temporal denoise: load_target's denoised keyframes are closer to the 
   TargetFrames coarse = load_target(dir.path, kW / 2, kH / 2, half);
   CHECK(coarse.denoised_width == kW);
   REQUIRE(coarse.denoised.size() == static_cast<size_t>(K));
-  for (const std::vector<float>& d : coarse.denoised) CHECK(d.size() == px * 3);
+  // Held deflated by byte planes: each inflates to exactly a frame's floats, and is smaller.
+  std::vector<float> inflated(px * 3);
+  for (const std::vector<uint8_t>& d : coarse.denoised) {
+    CHECK(d.size() < px * 3 * sizeof(float));
+    CHECK_NOTHROW(inflate_floats(d, inflated.data(), px * 3));
+    CHECK_THROWS(inflate_floats(d, inflated.data(), px * 3 - 1));
+  }
   CHECK(coarse.denoised_frame == coarse.source_index);
   TargetOptions reuse = opt;
   reuse.denoised_from = &coarse;

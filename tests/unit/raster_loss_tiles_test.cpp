@@ -33,11 +33,14 @@ struct Frame {
   }
 };
 
-// Frame pixel (x, y)'s Q halves as the device finds them (loss.cl's loss_tile_pixel, with the
-// frame's constant as its own pixel).
+// Frame pixel (x, y)'s Q halves as the device finds them (loss.cl's loss_tile_pixel, with each
+// uniform tile's value as a pixel of its own).
 std::array<uint16_t, 4> q_at(const LossTiles& t, int x, int y) {
   const int s = t.tile[static_cast<size_t>(y / T) * t.tiles_x + x / T];
-  if (s < 0) return t.q_const;
+  if (s < 0) {
+    const auto& v = t.values[static_cast<size_t>(-1 - s)];
+    return {v[0], v[1], v[2], v[3]};
+  }
   std::array<uint16_t, 4> v;
   std::memcpy(v.data(), &t.q[(static_cast<size_t>(s) * T * T + (y % T) * T + x % T) * 4], sizeof v);
   return v;
@@ -56,7 +59,7 @@ Scene figure() {
 
 TEST_SUITE("raster") {
 
-TEST_CASE("tile_loss_frame: uniform tiles of the commonest value are not stored; each pixel reads its own halves") {
+TEST_CASE("tile_loss_frame: uniform tiles are held as their values, the commonest first; each pixel reads its own halves") {
   // 40 x 20: tiles 3 x 2, the last column 8 pixels wide, the last row 4 high.
   Frame f(40, 20, 7);
   f.set(20, 3, 9);   // tile (1, 0) differs inside
@@ -66,8 +69,7 @@ TEST_CASE("tile_loss_frame: uniform tiles of the commonest value are not stored;
   CHECK(t.tiles_y == 2);
   CHECK(t.tile == std::vector<int>{-1, 0, -1, -1, -1, 1});
   CHECK(t.stored() == 2);
-  CHECK(t.q_const == std::array<uint16_t, 4>{7, 7, 7, 0});
-  CHECK(t.r_const == std::array<uint16_t, 4>{8, 8, 8, 0});
+  CHECK(t.values == std::vector<std::array<uint16_t, 8>>{{7, 7, 7, 0, 8, 8, 8, 0}});
   for (int y = 0; y < f.H; ++y)
     for (int x = 0; x < f.W; ++x) {
       std::array<uint16_t, 4> want;
@@ -78,13 +80,15 @@ TEST_CASE("tile_loss_frame: uniform tiles of the commonest value are not stored;
   CHECK(t.q[(size_t(1) * T * T + 4 * T + 0) * 4] == 0);  // tile (2, 1), row 4: below the frame
   CHECK(t.q[(size_t(1) * T * T + 0 * T + 8) * 4] == 0);  // tile (2, 1), column 8: right of it
 
-  // A uniform tile of another value is stored; every_tile stores all of them in order.
+  // A uniform tile of another value is held as that value too (a flat fill's inside), after
+  // the commonest; every_tile stores all of them in order.
   Frame g(40, 20, 7);
   for (int y = 16; y < 20; ++y)
     for (int x = 0; x < 16; ++x) g.set(x, y, 3);  // tile (0, 1), all 3
   const LossTiles u = tile_loss_frame(g.q.data(), g.r.data(), g.W, g.H);
-  CHECK(u.tile == std::vector<int>{-1, -1, -1, 0, -1, -1});
-  CHECK(u.q[0] == 3);
+  CHECK(u.tile == std::vector<int>{-1, -1, -1, -2, -1, -1});
+  CHECK(u.stored() == 0);
+  CHECK(u.values == std::vector<std::array<uint16_t, 8>>{{7, 7, 7, 0, 8, 8, 8, 0}, {3, 3, 3, 0, 4, 4, 4, 0}});
   const LossTiles every = tile_loss_frame(g.q.data(), g.r.data(), g.W, g.H, true);
   CHECK(every.tile == std::vector<int>{0, 1, 2, 3, 4, 5});
   for (int y = 0; y < g.H; ++y)
@@ -126,9 +130,43 @@ TEST_CASE("tiled Q and R: the same loss, frame losses and gradient bits as every
     // stored: at most the border ring (24 of 48 tiles a frame) and the figure's 4 x 4.
     CHECK(stored[0] <= size_t{kK} * (24 + 16));
     CHECK(stored[0] >= size_t{kK} * 4);  // the figure's tiles at least
-    // Q and R are T² pixels of 8 bytes a stored tile each.
-    CHECK(bytes[1] - bytes[0] == (stored[1] - stored[0]) * T * T * 16);
+    // Q and R are T² pixels of 8 bytes a stored tile each, the uniform tiles' values a tile
+    // more (fewer than T² values: a few per frame), none when every tile is stored.
+    CHECK(bytes[1] - bytes[0] == (stored[1] - stored[0] - 1) * T * T * 16);
   }
+}
+
+TEST_CASE("tiled Q and R: a flat fill's inside is held as its value, with the same loss and gradient bits") {
+  // 192 x 128 (12 x 8 tiles), an opaque rectangle over (32, 32)-(128, 96) on the pixel grid.
+  // On white paper Q and R are 0 (the white target blurred less the white paper blurred), so
+  // the commonest value is the paper's. The blurs (the target's σ 1, the render's σ 1 with a
+  // chroma σ 1.6) reach under 16 px from the rectangle's edges: they touch its 8 x 6 tiles
+  // (16 px around it), while the 4 x 2 tiles of (48, 48)-(112, 80) take the fill's one value.
+  // Stored: the 40 others of the 8 x 6 (48 a frame while a value other than the commonest
+  // made a tile stored).
+  constexpr int W = 192, H = 128;
+  const RasterPlan plan = plan_raster(
+      scene_of(W, H, {filled(polygon({{32, 32}, {128, 32}, {128, 96}, {32, 96}}), {0.2f, 0.6f, 0.3f, 1})}), Affine{},
+      W, H);
+  const std::vector<float> targets = targets_on_white(plan, kK, 0, 0);
+  const std::vector<float> cp = shifted_cp(plan, kK, 0.5f, 0.75f);
+  std::vector<float> bits[2];
+  size_t stored[2] = {};
+  for (int every = 0; every < 2; ++every) {
+    ClRaster r(runtime(), plan, kK, kLossSigma, 1.6, 0.25);
+    r.set_every_loss_tile(every == 1);
+    r.set_control_points(cp);
+    r.set_active_frames(kK);
+    r.set_targets(targets);
+    const float loss = r.loss_and_gradient(1000.0f, kWhite);
+    bits[every] = r.read_cp_gradient();
+    bits[every].push_back(loss);
+    for (float l : r.read_frame_losses()) bits[every].push_back(l);
+    stored[every] = r.loss_tiles_stored();
+  }
+  CHECK(same_bits(bits[0], bits[1]));
+  CHECK(stored[1] == size_t{kK} * (W / T) * (H / T));
+  CHECK(stored[0] == size_t{kK} * 40);
 }
 
 }  // TEST_SUITE

@@ -38,19 +38,29 @@ LossTiles tile_loss_frame(const uint16_t* q, const uint16_t* r, int W, int H, bo
       ++it->second;
       uniform[static_cast<size_t>(ty) * out.tiles_x + tx] = static_cast<int>(it - values.begin());
     }
-  // The constant: the most common uniform value (the first seen among equals).
+  // The values held: the commonest first (the first seen among equals), then the others in
+  // the order seen; every uniform tile is one of them (a flat fill's inside as well as the
+  // paper: issue 38, the twemoji dog's 34 keyframes at 512 px).
   int best = -1;
   for (size_t i = 0; i < values.size(); ++i)
     if (best < 0 || values[i].second > values[static_cast<size_t>(best)].second) best = static_cast<int>(i);
+  std::vector<int> slot(values.size(), -1);
   if (best >= 0) {
-    std::copy_n(values[static_cast<size_t>(best)].first.begin(), 4, out.q_const.begin());
-    std::copy_n(values[static_cast<size_t>(best)].first.begin() + 4, 4, out.r_const.begin());
+    slot[static_cast<size_t>(best)] = 0;
+    out.values.push_back(values[static_cast<size_t>(best)].first);
+    for (size_t i = 0; i < values.size(); ++i)
+      if (static_cast<int>(i) != best) {
+        slot[i] = static_cast<int>(out.values.size());
+        out.values.push_back(values[i].first);
+      }
   }
   out.tile.assign(static_cast<size_t>(n), -1);
   const size_t tile_halves = size_t{T} * T * 4;
   int stored = 0;
-  for (int i = 0; i < n; ++i)
-    if (uniform[static_cast<size_t>(i)] < 0 || uniform[static_cast<size_t>(i)] != best) out.tile[static_cast<size_t>(i)] = stored++;
+  for (int i = 0; i < n; ++i) {
+    const int u = uniform[static_cast<size_t>(i)];
+    out.tile[static_cast<size_t>(i)] = u < 0 ? stored++ : -1 - slot[static_cast<size_t>(u)];
+  }
   out.q.assign(static_cast<size_t>(stored) * tile_halves, 0);
   out.r.assign(static_cast<size_t>(stored) * tile_halves, 0);
   for (int ty = 0; ty < out.tiles_y; ++ty)

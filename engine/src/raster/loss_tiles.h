@@ -1,10 +1,12 @@
 // The loss's constants Q and R (kernels/loss.cl) stored by tiles: most of a clipart frame is
 // white paper far from any ink, where Q and R take one value (the blurred background less the
-// blurred white target). A frame's Q and R (four halves a pixel each, as the device reads them)
-// are cut into kLossTile x kLossTile tiles; a tile whose every pixel holds the frame's most
-// common uniform value is not stored, the others are, whole. The device reads a pixel through
-// the frame's tile index (loss.cl's loss_tile_pixel): the same halves as the dense layout, so
-// the same loss and gradient bits. At 512 px the bundled example's Q and R were 88 MB dense.
+// blurred white target), and so do they inside a flat fill, far from its edges (the colour
+// blurred less itself). A frame's Q and R (four halves a pixel each, as the device reads them)
+// are cut into kLossTile x kLossTile tiles; a tile whose every pixel holds one value (Q's and
+// R's halves alike) is held as that value, one pixel, the others are stored whole. The device
+// reads a pixel through the frame's tile index (loss.cl's loss_tile_pixel): the same halves as
+// the dense layout, so the same loss and gradient bits. At 512 px the bundled example's Q and R
+// were 88 MB dense.
 #pragma once
 
 #include <array>
@@ -22,9 +24,10 @@ constexpr int kLossTile = 16;
 // One frame's Q and R by tiles.
 struct LossTiles {
   int tiles_x = 0, tiles_y = 0;
-  // The value of the tiles not stored: Q's and R's four halves.
-  std::array<uint16_t, 4> q_const{}, r_const{};
-  // Per tile, row-major: its number among the stored tiles, or -1 for the constant.
+  // The values of the uniform tiles (not stored), each Q's four halves then R's; the commonest
+  // first (the white paper's, on a clipart frame), then in the order first seen.
+  std::vector<std::array<uint16_t, 8>> values;
+  // Per tile, row-major: its number among the stored tiles, or -1 - j for values[j].
   std::vector<int> tile;
   // The stored tiles, kLossTile² pixels of four halves each, rows of the tile in order;
   // pixels outside the frame (a frame not a multiple of the tile) are zero.

@@ -207,6 +207,9 @@ class ClRaster {
   cl::Buffer qr_tiles_;  // per frame and tile: its number in q_ and r_, or −1 − frame
   bool every_loss_tile_ = false;
   size_t loss_tiles_stored_ = 0;
+  // What device_bytes_ counts for each of Q's and R's pools: what is written of them (their
+  // reservation's other pages are never touched; prepare_loss_constants).
+  size_t qr_pool_bytes_ = 0;
   // The loss chunk's residuals (set_loss_chunk_frames): X' (the x-blurred render, written by
   // raster_taped) and E' (resid_, its y-blur), chunk_ frames each.
   int chunk_ = 0;  // 0: chosen by init_backward

@@ -131,6 +131,7 @@ void ClRaster::make_loss_buffers() {
   // prepare_loss_constants, which knows how many tiles it stores.
   q_ = make(0);
   r_ = make(0);
+  qr_pool_bytes_ = kMinBufferBytes;  // each pool's as counted (prepare_loss_constants)
   qr_tiles_ = make(0);
   // X' and E' for one chunk of frames (set_loss_chunk_frames).
   const size_t chunk_pixels = static_cast<size_t>(chunk_) * plan_.height * plan_.width;
@@ -162,7 +163,7 @@ void ClRaster::release_loss_buffers() {
   // The Float renders' image_ too: a fitter that waits or only renders makes it again.
   for (cl::Buffer* b : {&q_, &r_, &qr_tiles_, &xres_, &resid_, &partial_, &pool_, &pool_aux_, &image_}) {
     if (!(*b)()) continue;
-    device_bytes_ -= b->getInfo<CL_MEM_SIZE>();
+    device_bytes_ -= b == &q_ || b == &r_ ? qr_pool_bytes_ : b->getInfo<CL_MEM_SIZE>();
     *b = cl::Buffer();
   }
   q_background_ = {-1, -1, -1, -1};  // Q and R are made again on the next loss pass
@@ -273,7 +274,27 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
   // the dense device copies 16 (88 MB).
   std::vector<uint16_t> qh(px * 4, 0), rh(px * 4, 0);
   std::vector<float> qsum(K);
-  std::vector<LossTiles> tiles(static_cast<size_t>(K));
+  // The device's layout (loss.cl's loss_tile_pixel): Q's pool and R's, each every frame's
+  // stored tiles in frame order, then the uniform tiles' values, a pixel each; the index holds,
+  // per frame and tile, the tile's number in the pool, or −1 − c for the value at pool pixel c.
+  // Each frame's stored tiles go to the device as they are made (a frame's host copy at a time:
+  // all of them held until the pools' size was known were the twemoji dog's peak with 34
+  // keyframes at 512 px), into pools reserved at the most they could take (every tile and a
+  // value per tile): a reservation's pages past what is written are never touched, so never
+  // resident, and device_bytes() counts what is written.
+  constexpr size_t kTilePixels = size_t{kLossTile} * kLossTile;
+  const size_t tile_bytes = kTilePixels * 4 * sizeof(uint16_t);
+  const size_t per_frame = static_cast<size_t>((W + kLossTile - 1) / kLossTile) * ((H + kLossTile - 1) / kLossTile);
+  const size_t most_tiles = static_cast<size_t>(K) * per_frame;
+  const size_t reserve = (most_tiles + (most_tiles + kTilePixels - 1) / kTilePixels) * tile_bytes;
+  device_bytes_ -= 2 * qr_pool_bytes_ + qr_tiles_.getInfo<CL_MEM_SIZE>();
+  q_ = cl::Buffer(rt_.context(), CL_MEM_READ_WRITE, reserve);
+  r_ = cl::Buffer(rt_.context(), CL_MEM_READ_WRITE, reserve);
+  auto& queue = rt_.queue();
+  std::vector<std::vector<int>> frame_tiles(static_cast<size_t>(K));
+  std::vector<std::vector<std::array<uint16_t, 8>>> frame_values(static_cast<size_t>(K));
+  std::vector<size_t> first_stored(static_cast<size_t>(K));
+  size_t n_stored = 0;
   for (int k = 0; k < K; ++k) {
     targets_(k, frame.data());
     {
@@ -305,46 +326,43 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
     }
     qsum[k] = static_cast<float>(sum);
     for (size_t i = 0; i < r.size(); ++i) rh[i / 3 * 4 + i % 3] = float_to_half(static_cast<float>(r[i]));
-    tiles[static_cast<size_t>(k)] = tile_loss_frame(qh.data(), rh.data(), W, H, every_loss_tile_);
-  }
-  // The device's layout (loss.cl's loss_tile_pixel): Q's pool and R's, each the frames'
-  // constants (pixel k: frame k's) in the first `c0` tiles, then every frame's stored tiles in
-  // frame order; the index holds, per frame and tile, the tile's number in the pool or −1 − k.
-  constexpr size_t kTilePixels = size_t{kLossTile} * kLossTile;
-  const size_t c0 = (static_cast<size_t>(K) + kTilePixels - 1) / kTilePixels;
-  size_t n_tiles = c0;
-  for (const LossTiles& f : tiles) n_tiles += static_cast<size_t>(f.stored());
-  const size_t per_frame = tiles[0].tile.size();
-  std::vector<int> index(static_cast<size_t>(K) * per_frame);
-  std::vector<uint16_t> consts_q(c0 * kTilePixels * 4, 0), consts_r(consts_q.size(), 0);
-  for (int k = 0, next = static_cast<int>(c0); k < K; ++k) {
-    const LossTiles& f = tiles[static_cast<size_t>(k)];
-    for (size_t i = 0; i < per_frame; ++i) index[k * per_frame + i] = f.tile[i] < 0 ? -1 - k : next + f.tile[i];
-    next += f.stored();
-    std::copy(f.q_const.begin(), f.q_const.end(), consts_q.begin() + 4 * k);
-    std::copy(f.r_const.begin(), f.r_const.end(), consts_r.begin() + 4 * k);
-  }
-  const size_t tile_bytes = kTilePixels * 4 * sizeof(uint16_t);
-  for (cl::Buffer* b : {&q_, &r_, &qr_tiles_}) device_bytes_ -= b->getInfo<CL_MEM_SIZE>();
-  q_ = make(n_tiles * tile_bytes);
-  r_ = make(n_tiles * tile_bytes);
-  qr_tiles_ = make(index.size() * sizeof(int));
-  auto& queue = rt_.queue();
-  queue.enqueueWriteBuffer(q_, CL_TRUE, 0, consts_q.size() * sizeof(uint16_t), consts_q.data());
-  queue.enqueueWriteBuffer(r_, CL_TRUE, 0, consts_r.size() * sizeof(uint16_t), consts_r.data());
-  size_t at = c0 * tile_bytes;
-  for (LossTiles& f : tiles) {
+    r = std::vector<double>();
+    LossTiles f = tile_loss_frame(qh.data(), rh.data(), W, H, every_loss_tile_);
     const size_t bytes = f.q.size() * sizeof(uint16_t);
     if (bytes) {
-      queue.enqueueWriteBuffer(q_, CL_TRUE, at, bytes, f.q.data());
-      queue.enqueueWriteBuffer(r_, CL_TRUE, at, bytes, f.r.data());
+      queue.enqueueWriteBuffer(q_, CL_TRUE, n_stored * tile_bytes, bytes, f.q.data());
+      queue.enqueueWriteBuffer(r_, CL_TRUE, n_stored * tile_bytes, bytes, f.r.data());
     }
-    at += bytes;
-    f = LossTiles{};  // each frame's host copy freed once written
+    first_stored[static_cast<size_t>(k)] = n_stored;
+    n_stored += static_cast<size_t>(f.stored());
+    frame_tiles[static_cast<size_t>(k)] = std::move(f.tile);
+    frame_values[static_cast<size_t>(k)] = std::move(f.values);
   }
+  // The values after the stored tiles; the index made now that their place is known.
+  std::vector<int> index(most_tiles);
+  std::vector<uint16_t> consts_q, consts_r;
+  for (int k = 0; k < K; ++k) {
+    const size_t base = n_stored * kTilePixels + consts_q.size() / 4;
+    const std::vector<int>& tile = frame_tiles[static_cast<size_t>(k)];
+    for (size_t i = 0; i < per_frame; ++i)
+      index[k * per_frame + i] = tile[i] >= 0 ? static_cast<int>(first_stored[static_cast<size_t>(k)]) + tile[i]
+                                              : -1 - static_cast<int>(base + static_cast<size_t>(-1 - tile[i]));
+    for (const auto& v : frame_values[static_cast<size_t>(k)]) {
+      consts_q.insert(consts_q.end(), v.begin(), v.begin() + 4);
+      consts_r.insert(consts_r.end(), v.begin() + 4, v.end());
+    }
+  }
+  if (!consts_q.empty()) {
+    queue.enqueueWriteBuffer(q_, CL_TRUE, n_stored * tile_bytes, consts_q.size() * sizeof(uint16_t), consts_q.data());
+    queue.enqueueWriteBuffer(r_, CL_TRUE, n_stored * tile_bytes, consts_r.size() * sizeof(uint16_t), consts_r.data());
+  }
+  const size_t c0 = (consts_q.size() / 4 + kTilePixels - 1) / kTilePixels;  // the values' tiles
+  qr_pool_bytes_ = std::max((n_stored + c0) * tile_bytes, kMinBufferBytes);
+  device_bytes_ += 2 * qr_pool_bytes_;
+  qr_tiles_ = make(index.size() * sizeof(int));
   queue.enqueueWriteBuffer(qr_tiles_, CL_TRUE, 0, index.size() * sizeof(int), index.data());
   queue.enqueueWriteBuffer(qsum_, CL_TRUE, 0, qsum.size() * sizeof(float), qsum.data());
-  loss_tiles_stored_ = n_tiles - c0;
+  loss_tiles_stored_ = n_stored;
   set_args_at(k_blur_y_loss_, 2, q_);
   set_args_at(k_blur_y_loss_, 9, qr_tiles_);
   set_args_at(k_backward_, 8, r_);

@@ -7,6 +7,7 @@
 
 #include "fit/target/heap_trim.h"
 #include "fit/target/colour_correction.h"
+#include "fit/target/deflated_bytes.h"
 #include "fit/target/distance_field.h"
 #include "fit/target/stabilise.h"
 #include "fit/target/temporal_denoise.h"
@@ -689,9 +690,8 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   };
   auto keep = [&](int k, int frame_index, cv::Mat frame) {
     if (denoise && options.keep_denoised) {
-      const auto* f = frame.ptr<float>(0);  // continuous: made by resize / average_aligned
-      CV_Assert(frame.isContinuous() && frame.type() == CV_32FC3);
-      t.denoised.emplace_back(f, f + frame.total() * 3);
+      CV_Assert(frame.isContinuous() && frame.type() == CV_32FC3);  // made by resize / average_aligned
+      t.denoised.push_back(deflate_floats(frame.ptr<float>(0), frame.total() * 3));
       t.denoised_frame.push_back(frame_index);
     }
     if (!options.stabilise) {
@@ -723,7 +723,7 @@ TargetFrames load_target(const fs::path& source, int width, int height,
   // shake_from, as the keyframes' retimed indices come from the first load).
   TargetFrames* from = options.denoised_from;
   const size_t work_floats = static_cast<size_t>(work.width) * work.height * 3;
-  auto whole = [&](const std::vector<float>& d) { return d.size() == work_floats; };  // none taken yet
+  auto whole = [&](const std::vector<uint8_t>& d) { return !d.empty(); };  // none taken yet
   const bool reuse = denoise && from && static_cast<int>(from->denoised.size()) == K &&
                      std::all_of(from->denoised.begin(), from->denoised.end(), whole) && from->denoised_width == work.width &&
                      from->denoised_height == work.height && from->keyframes == K && from->source_frames == N &&
@@ -737,9 +737,11 @@ TargetFrames load_target(const fs::path& source, int width, int height,
     t.source_index = from->source_index;
     t.held_frames = from->held_frames;
     for (int k = 0; k < K; ++k) {
-      std::vector<float>& d = from->denoised[static_cast<size_t>(k)];
-      keep(denoised_k++, from->denoised_frame[static_cast<size_t>(k)], cv::Mat(work.height, work.width, CV_32FC3, d.data()).clone());
-      std::vector<float>().swap(d);  // taken: 3 MB at 512 px, from the heap, returned now
+      std::vector<uint8_t>& d = from->denoised[static_cast<size_t>(k)];
+      cv::Mat frame(work.height, work.width, CV_32FC3);
+      inflate_floats(d, frame.ptr<float>(0), work_floats);  // the same bits (throws if not this size)
+      keep(denoised_k++, from->denoised_frame[static_cast<size_t>(k)], std::move(frame));
+      std::vector<uint8_t>().swap(d);  // taken, from the heap, returned now
       trim_heap();
     }
     from->denoised.clear();
