@@ -286,7 +286,17 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
   const size_t tile_bytes = kTilePixels * 4 * sizeof(uint16_t);
   const size_t per_frame = static_cast<size_t>((W + kLossTile - 1) / kLossTile) * ((H + kLossTile - 1) / kLossTile);
   const size_t most_tiles = static_cast<size_t>(K) * per_frame;
-  const size_t reserve = (most_tiles + (most_tiles + kTilePixels - 1) / kTilePixels) * tile_bytes;
+  // The reservation is capped at the device's largest buffer (a GPU's is a quarter of its
+  // memory or so): what is stored never exceeded one buffer before either, and only a
+  // reservation past the cap that the stored tiles would not have filled is spared.
+  const size_t largest = rt_.device().getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>() / tile_bytes * tile_bytes;
+  const size_t reserve = std::min((most_tiles + (most_tiles + kTilePixels - 1) / kTilePixels) * tile_bytes, largest);
+  const auto check_fits = [&](size_t end) {
+    if (end > reserve)
+      throw Error("the loss constants of " + std::to_string(K) + " frames at " + std::to_string(W) + "x" + std::to_string(H) +
+                  " px need more than the device's largest buffer (" + std::to_string(largest >> 20) +
+                  " MB): fewer keyframes or a smaller fitting size");
+  };
   device_bytes_ -= 2 * qr_pool_bytes_ + qr_tiles_.getInfo<CL_MEM_SIZE>();
   q_ = cl::Buffer(rt_.context(), CL_MEM_READ_WRITE, reserve);
   r_ = cl::Buffer(rt_.context(), CL_MEM_READ_WRITE, reserve);
@@ -329,6 +339,7 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
     r = std::vector<double>();
     LossTiles f = tile_loss_frame(qh.data(), rh.data(), W, H, every_loss_tile_);
     const size_t bytes = f.q.size() * sizeof(uint16_t);
+    check_fits(n_stored * tile_bytes + bytes);
     if (bytes) {
       queue.enqueueWriteBuffer(q_, CL_TRUE, n_stored * tile_bytes, bytes, f.q.data());
       queue.enqueueWriteBuffer(r_, CL_TRUE, n_stored * tile_bytes, bytes, f.r.data());
@@ -352,6 +363,7 @@ void ClRaster::prepare_loss_constants(const std::array<float, 4>& bg) {
       consts_r.insert(consts_r.end(), v.begin() + 4, v.end());
     }
   }
+  check_fits(n_stored * tile_bytes + consts_q.size() * sizeof(uint16_t));
   if (!consts_q.empty()) {
     queue.enqueueWriteBuffer(q_, CL_TRUE, n_stored * tile_bytes, consts_q.size() * sizeof(uint16_t), consts_q.data());
     queue.enqueueWriteBuffer(r_, CL_TRUE, n_stored * tile_bytes, consts_r.size() * sizeof(uint16_t), consts_r.data());
