@@ -54,7 +54,9 @@ std::string ground_words(const ParsedPrompt& prompt, const Rig& rig) {
     const bool leaves = std::any_of(c.verbs.begin(), c.verbs.end(), [](const Verb* v) { return v && (v->name == "takeoff" || v->name == "land"); });
     // A figure that leaves untold which way ("the ship sails away": leave_way.h) leaves its
     // ground as a launch does: the sea stays while the ship goes.
-    launch = launch || leaves || (c.mods.travel == 0 && says_leaving(c));
+    // So does a thing going into the distance or coming nearer (depth_travel.h: the sea and
+    // the track stay as the ship recedes).
+    launch = launch || leaves || (c.mods.travel == 0 && (says_leaving(c) || (c.mods.depth != 0 && !is_creature(c.figure))));
     // A thing sent a way told ("the ship sails away to the left", "glides across the water",
     // "the train pulls away to the left") leaves the ground it goes on as well: the sea and the
     // track went along with the ship and the train, as if painted on them. Not a creature's gait,
