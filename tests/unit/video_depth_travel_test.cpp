@@ -50,7 +50,10 @@ TEST_CASE("depth travel: a bus seen head-on that drives away recedes towards the
   CHECK_FALSE(slides_off(plan));
   // The vanishing point: above the bus's middle (x 50), on its road's top (y 70).
   for (const auto& a : plan.actions)
-    if (a.goes && a.primitive == Primitive::Pulse) CHECK(a.vanish.x == doctest::Approx(50).epsilon(0.01)), CHECK(a.vanish.y == doctest::Approx(70).epsilon(0.01));
+    if (a.goes && a.primitive == Primitive::Pulse) {
+      CHECK(a.vanish.x == doctest::Approx(50).epsilon(0.01));
+      CHECK(a.vanish.y == doctest::Approx(70).epsilon(0.01));
+    }
   const std::vector<double> moved = d.travel(plan, 13);
   CHECK(moved[0] < 0.5);  // the road stays
   // The body's top corners (20, 10) and (80, 10), 67.1 from (50, 70), go 1 - kFarScale of it
