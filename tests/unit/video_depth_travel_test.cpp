@@ -48,11 +48,12 @@ TEST_CASE("depth travel: a bus seen head-on that drives away recedes towards the
   CAPTURE(plan.summary());
   REQUIRE(depth_ways(plan) == std::vector<int>{-1});
   CHECK_FALSE(slides_off(plan));
-  // The vanishing point: above the bus's middle (x 50), on its road's top (y 70).
+  // The vanishing point: above the bus's middle (x 50), on its road's top (y 70); in the scene's
+  // units, from the viewBox's corner (-30, -10): (80, 80).
   for (const auto& a : plan.actions)
     if (a.goes && a.primitive == Primitive::Pulse) {
-      CHECK(a.vanish.x == doctest::Approx(50).epsilon(0.01));
-      CHECK(a.vanish.y == doctest::Approx(70).epsilon(0.01));
+      CHECK(a.vanish.x == doctest::Approx(50 + 30).epsilon(0.01));
+      CHECK(a.vanish.y == doctest::Approx(70 + 10).epsilon(0.01));
     }
   const std::vector<double> moved = d.travel(plan, 13);
   CHECK(moved[0] < 0.5);  // the road stays
