@@ -354,10 +354,12 @@ std::vector<uint32_t> Lexicon::noun_senses(const std::string& lemma) const {
   // Not an animal sense the anchors class as no creature: "baby" 6, a young mammal, is filed
   // under "young" apart from the mammals (an object), and the infant of the first sense, a person,
   // was read so.
-  // With no sense ranked, the things the lemma names first are its own meaning, before those
-  // that list it as another name ("scooter": the kick scooter before the water scooter, the
-  // motor scooter, the iceboat and the scoter, a duck).
-  if (tagged == 0) std::stable_partition(order.begin(), order.end(), [](const Sense& s) { return !s.clipped && s.named_first; });
+  // With no sense ranked, a vehicle (the anchors' wheeled) the lemma names first is its own
+  // meaning, before those that list it as another name ("scooter": the kick scooter before the
+  // water scooter, the motor scooter, the iceboat and the scoter, a duck). Only a vehicle: every
+  // unranked word's own senses first read "stalk" as a plant's stem, not chaff, and its bend changed.
+  if (tagged == 0)
+    std::stable_partition(order.begin(), order.end(), [&](const Sense& s) { return !s.clipped && s.named_first && sense_class(s.offset) == FigureClass::Wheeled; });
   // Nor ahead of a vehicle (the anchors' wheeled) of the same word with no rank: it is no figure
   // of speech. "scooter" is also the scoter: moved ahead of the scooters, a scooter was read as
   // a bird.
