@@ -39,7 +39,9 @@ TEST_CASE("sense by context: a drone with rotors is an aircraft, a drone alone t
 
 TEST_CASE("sense by context: a scooter with wheels is a wheeled vehicle, not the sea duck") {
   if (!wordnet_or_skip()) return;
-  CHECK(first_class("the scooter glides") == FigureClass::Bird);  // WordNet's first scooter: a scoter
+  // No sense of "scooter" is ranked; the kick scooter is the one it names first, the scoter (a
+  // duck) only another name of (motion_lexicon_test: a vehicle goes before a rare animal).
+  CHECK(first_class("the scooter glides") == FigureClass::Wheeled);
   CHECK(first_class("the kick scooter's wheels spin") == FigureClass::Wheeled);
 }
 

@@ -330,6 +330,7 @@ std::vector<uint32_t> Lexicon::noun_senses(const std::string& lemma) const {
     uint32_t offset;
     int rank, lex_file;
     bool clipped;
+    bool named_first;  // the synset's first word is the lemma (not another name it goes by)
   };
   std::vector<Sense> order;
   for (size_t r = 0; r < senses.size(); ++r) {
@@ -344,7 +345,7 @@ std::vector<uint32_t> Lexicon::noun_senses(const std::string& lemma) const {
       const std::string first = w.substr(0, w.find('_'));
       return first == lemma || db_->senses(first, Pos::Adj).empty();
     });
-    order.push_back({senses[r], static_cast<int>(r), s->lex_file, clipped});
+    order.push_back({senses[r], static_cast<int>(r), s->lex_file, clipped, !s->words.empty() && s->words.front() == lemma});
   }
   std::stable_partition(order.begin(), order.end(), [](const Sense& s) { return !s.clipped; });
   // An animal comes before the senses ahead of it that are people ("whale", "snake", "crab"
@@ -353,10 +354,19 @@ std::vector<uint32_t> Lexicon::noun_senses(const std::string& lemma) const {
   // Not an animal sense the anchors class as no creature: "baby" 6, a young mammal, is filed
   // under "young" apart from the mammals (an object), and the infant of the first sense, a person,
   // was read so.
+  // With no sense ranked, a vehicle (the anchors' wheeled) the lemma names first is its own
+  // meaning, before those that list it as another name ("scooter": the kick scooter before the
+  // water scooter, the motor scooter, the iceboat and the scoter, a duck). Only a vehicle: every
+  // unranked word's own senses first read "stalk" as a plant's stem, not chaff, and its bend changed.
+  if (tagged == 0)
+    std::stable_partition(order.begin(), order.end(), [&](const Sense& s) { return !s.clipped && s.named_first && sense_class(s.offset) == FigureClass::Wheeled; });
+  // Nor ahead of a vehicle (the anchors' wheeled) of the same word with no rank: it is no figure
+  // of speech. "scooter" is also the scoter: moved ahead of the scooters, a scooter was read as
+  // a bird.
   for (size_t i = 0; i < order.size(); ++i) {
     if (order[i].lex_file != kAnimalFile || !is_creature(sense_class(order[i].offset))) continue;
     const bool before_ok = std::all_of(order.begin(), order.begin() + static_cast<long>(i), [&](const Sense& s) {
-      return s.lex_file == kPersonFile || s.lex_file == kFoodFile || s.rank >= tagged;
+      return s.lex_file == kPersonFile || s.lex_file == kFoodFile || (s.rank >= tagged && sense_class(s.offset) != FigureClass::Wheeled);
     });
     if (before_ok) std::rotate(order.begin(), order.begin() + static_cast<long>(i), order.begin() + static_cast<long>(i) + 1);
     break;

@@ -111,19 +111,40 @@ double end_width(const std::vector<Vec2>& cells, Vec2 c, Vec2 d, double from, do
   return n > 0 ? sum / n : 0;
 }
 
+// The occupied cells' centres and their centroid (empty when the shape is unread).
+std::vector<Vec2> shape_cells(const Grid& g, Vec2& c) {
+  std::vector<Vec2> cells;
+  c = {0, 0};
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i)
+      if (g.at(i, j)) cells.push_back(g.centre(i, j)), c = c + g.centre(i, j);
+  if (!cells.empty()) c = (1.0 / static_cast<double>(cells.size())) * c;
+  return cells;
+}
+
 }  // namespace
+
+UprightMirror upright_mirror(const Rig& rig) {
+  UprightMirror out;
+  if (rig.figure.empty() || rig.figure.w() <= 0 || rig.figure.h() <= 0) return out;
+  const Grid g = shape_grid(rig);
+  Vec2 c;
+  const std::vector<Vec2> cells = shape_cells(g, c);
+  if (cells.size() < 8) return out;
+  RigBox box;
+  for (Vec2 p : cells) box.add(p);
+  out.wide = (box.w() + g.cell) / (box.h() + g.cell);
+  out.cover = mirror_cover(g, cells, c, {0, 1});
+  return out;
+}
 
 FlightAxis flight_axis(const Rig& rig) {
   FlightAxis out;
   if (rig.figure.empty() || rig.figure.w() <= 0 || rig.figure.h() <= 0) return out;
   const Grid g = shape_grid(rig);
-  std::vector<Vec2> cells;
-  Vec2 c{0, 0};
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i)
-      if (g.at(i, j)) cells.push_back(g.centre(i, j)), c = c + g.centre(i, j);
+  Vec2 c;
+  const std::vector<Vec2> cells = shape_cells(g, c);
   if (cells.size() < 8) return out;
-  c = (1.0 / static_cast<double>(cells.size())) * c;
   // The mirror line, every 3 degrees.
   double best = 0;
   Vec2 axis{0, 0};

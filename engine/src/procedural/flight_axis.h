@@ -47,4 +47,12 @@ struct FlightAxis {
 // The rig's figure's axis and nose (see above).
 FlightAxis flight_axis(const Rig& rig);
 
+// The same shape's mirror cover (IoU) about the vertical line through its centroid, and its width
+// over its height (its cells' box): what depth_travel.h reads a figure seen head-on from.
+struct UprightMirror {
+  double cover = 0;   // 0 when the shape is too small to read
+  double wide = 0;    // width / height of the shape
+};
+UprightMirror upright_mirror(const Rig& rig);
+
 }  // namespace svgm

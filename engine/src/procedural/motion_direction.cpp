@@ -50,6 +50,7 @@ std::string direction_words(const PlannedAction& a) {
     case Primitive::Fall: return "down, each element in its own phase";
     case Primitive::Shake: return "a small jitter";
     case Primitive::Pulse:
+      if (a.goes) return a.direction > 0 ? "grows from far off on its horizon to its size (coming nearer)" : "shrinks towards its horizon (going away) and comes back";
       return a.vertical == 1 && a.amp < 0 ? "smaller toward its top and back (away)" : "larger and smaller about its centre";
     case Primitive::Stretch:
       return a.inches ? std::string("longer ") + (a.direction > 0 ? "right" : "left") + " ahead of its rear, then gathered up"

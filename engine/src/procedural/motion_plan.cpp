@@ -15,6 +15,7 @@
 #include "procedural/front_face.h"
 #include "procedural/figure_pieces.h"
 #include "procedural/flight_aim.h"
+#include "procedural/depth_travel.h"
 #include "procedural/leave_way.h"
 #include "procedural/invisible_spin.h"
 #include "procedural/gait_travel.h"
@@ -576,6 +577,9 @@ void travel_where_told(Builder& b, const Clause& c, size_t from, const ParsedPro
   std::string why = "told where it goes: the figure goes there steadily and glides back";
   // A swimmer's strokes (toss_and_stroke.h) loop in place: gliding back, a crawl swam backwards.
   // A figure told it leaves ("sails away", "flies off") goes the way it faces (leave_way.h).
+  // A thing seen head-on going away, or anything coming nearer, goes in depth (depth_travel.h).
+  if (std::string deep; mods.travel == 0 && !stroke_reading(c))
+    if (const int way = depth_way(prompt, c, b.rig, &deep)) return travel_in_depth(b.plan, from, way, b.rig, mover->name, c.text, deep);
   if (mods.travel == 0 && !stroke_reading(c)) mods.travel = leaving_side(prompt, c, b.rig, &why);
   if (mods.travel == 0 && (!is_gait(*mover, c.figure) || stroke_reading(c) || (mods.travel = untold_travel(prompt, c, b.rig, &why)) == 0)) return;
   static const Action kTravelSlide{Primitive::Slide, Target::Whole, kTravelReach, 1};

@@ -85,6 +85,9 @@ struct PlannedAction {
   bool rolls = false;           // Spin of wheels: they roll with the figure's Slide of the same
                                 // words (the turn follows the distance, both ways), instead of
                                 // whole turns
+  Vec2 vanish{0, 0};            // Pulse of the whole figure that goes (goes): the point on its
+                                // horizon it shrinks towards, going away (direction -1), or grows
+                                // from, coming nearer (+1) (depth_travel.h)
   Vec2 heading{0, 0};           // Bob of the whole figure (a launch's climb, a landing): the
                                 // unit way it goes, towards its nose (flight_axis.h), instead of
                                 // straight up or down; {0, 0}: none

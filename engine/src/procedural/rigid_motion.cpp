@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "procedural/depth_travel.h"
 #include "procedural/motion_plan_internal.h"
 #include "procedural/travel_profile.h"
 
@@ -43,6 +44,11 @@ Affine rigid(const PlannedAction& a, double amp, double sign, double phase, doub
     case Primitive::Shake:  // on the ground (vertical != 0: a launch's rumble), only sideways
       return Affine::translate(amp * H * s, a.vertical != 0 ? 0 : 0.6 * amp * H * std::sin(kTau * (std::max(1, a.cycles - 1) * t + phase)));
     case Primitive::Pulse: {
+      // Going away or coming nearer: about its vanishing point (depth_travel.h).
+      if (a.goes) {
+        const double f = depth_scale(a, amp, u);
+        return about(a.vanish, Affine::scale(f, f));
+      }
       // Shrinking up (vertical 1): about the top's middle, a launch going away into the sky.
       const double f = 1 + amp * k;
       return about(a.vertical == 1 && amp < 0 ? Vec2{centre.x, box.y0} : centre, Affine::scale(f, f));
