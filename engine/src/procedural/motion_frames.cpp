@@ -258,6 +258,17 @@ Vec2 motion_plan_internal::bend_region(const PlannedAction& a, double amp, doubl
   for (const ArmLobe& l : a.lobes)
     if (l.kind == LobeKind::Blaze) return flame_lick(l, a, amp, t, q);
   const RegionTurn r = region_turn(a, amp, t, box, q, path);
+  // A portrait's head nodding or shaking (head_turn.h): out of the picture's plane, not about the pivot in it.
+  if (a.head_axis != HeadAxis::Plane && a.lobes.size() == 1) {
+    if (r.weight <= 0) return q;
+    RigBox head;
+    for (Vec2 p : a.lobes[0].outline) head.add(p);
+    const double degrees = amp * oscillation(a, a.cycles * t) * (a.head_axis == HeadAxis::Yaw ? a.direction : 1);
+    HeadPath own;  // a point of no path of the head's (a part carried by it): the outline's
+    if (auto it = std::lower_bound(a.lobe_paths.begin(), a.lobe_paths.end(), path); it != a.lobe_paths.end() && *it == path)
+      if (static_cast<size_t>(it - a.lobe_paths.begin()) < a.head_paths.size()) own = a.head_paths[static_cast<size_t>(it - a.lobe_paths.begin())];
+    return head_turn_point(head, a.lobes[0].pivot, a.head_axis, degrees, own, q);
+  }
   if (r.pulse && a.primitive == Primitive::Stretch) {
     // Along the blade's line only (the lobe's pivot to its tip).
     for (const ArmLobe& l : a.lobes)
