@@ -36,7 +36,9 @@ Vec2 head_turn_point(const RigBox& head, Vec2 neck, HeadAxis axis, double degree
     if (axis == HeadAxis::Yaw) return {q.x + (p.middle.x - c.x) * (cs - 1) + p.depth * rx * sn, q.y};
     return {q.x, q.y + (p.middle.y - c.y) * (cs - 1) + p.depth * ry * sn};
   }
-  if (axis == HeadAxis::Pitch) return {q.x, neck.y + (q.y - neck.y) * cs};
+  // Hair hanging below the neck (behind the shoulders) is not on the ball: it stays (shortened
+  // with the head, it slid up over openmoji 1F469-200D-1F9B1's shoulders: still share 0.29).
+  if (axis == HeadAxis::Pitch) return {q.x, q.y < neck.y ? neck.y + (q.y - neck.y) * cs : q.y};
   // Yawing, the outline's points turn on the ball too (the face's outline slides across the hair
   // behind it), each by a depth that falls to nothing at the rim as smoothly as 1 - r^2: by the
   // ball's own depth, sqrt(1 - r^2), a handle beside the rim slid much farther than its end on it.

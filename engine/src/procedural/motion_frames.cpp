@@ -720,7 +720,8 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
               if (a.region != Region::None) {
                 const int use = region_use(rig, a, src, by, bg, spinning, loads);
                 const RigBox& hb = rig.parts[a.parts[0]].box;
-                if (use == 1) q = mesh[ai] ? mesh[ai]->apply(bent[ai], q) : bend_region(a, amp, t, hb, q, static_cast<int>(src));
+                // A head's feature turns as itself, not as the face it is drawn on (head_turn.h).
+                if (use == 1) q = mesh[ai] ? mesh[ai]->apply(bent[ai], q) : bend_region(a, amp, t, hb, q, static_cast<int>(a.head_axis != HeadAxis::Plane ? pi : src));
                 else if (use == 2)
                   q = mesh[ai] ? mesh[ai]->carry(bent[ai], rig.parts[by].pivot, q) : carried_by_bend(a, amp, t, hb, rig.parts[by].pivot, q);
               } else if (a.parts.empty()) {
