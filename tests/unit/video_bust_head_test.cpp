@@ -26,7 +26,8 @@ TEST_CASE("bust head: on a bust the head above the shoulders turns about the mid
   CHECK(head.lobes[0].pivot.x == doctest::Approx(100));  // the middle of the head's box (42 .. 158)
   CHECK(head.lobes[0].pivot.y == doctest::Approx(140));  // the shoulders' top
   CHECK(head.paths == std::vector<int>{0, 1, 2, 3});     // hair, face, two eyes; not the shoulders (4)
-  for (const char* prompt : {"she nods her head", "he shakes his head"}) {
+  // A tilt turns it in the picture's plane (a nod or a shake turns it out of it: head_turn_test).
+  for (const char* prompt : {"she tilts her head", "he tips his head"}) {
     CAPTURE(prompt);
     const MotionPlan plan = plan_from_prompt(parse_prompt(prompt), d.rig, 1);
     REQUIRE(plan.actions.size() == 1);

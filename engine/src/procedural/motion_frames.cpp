@@ -259,6 +259,17 @@ Vec2 motion_plan_internal::bend_region(const PlannedAction& a, double amp, doubl
   for (const ArmLobe& l : a.lobes)
     if (l.kind == LobeKind::Blaze) return flame_lick(l, a, amp, t, q);
   const RegionTurn r = region_turn(a, amp, t, box, q, path);
+  // A portrait's head nodding or shaking (head_turn.h): out of the picture's plane, not about the pivot in it.
+  if (a.head_axis != HeadAxis::Plane && a.lobes.size() == 1) {
+    if (r.weight <= 0) return q;
+    RigBox head;
+    for (Vec2 p : a.lobes[0].outline) head.add(p);
+    const double degrees = amp * oscillation(a, a.cycles * t) * (a.head_axis == HeadAxis::Yaw ? a.direction : 1);
+    HeadPath own;  // a point of no path of the head's (a part carried by it): the outline's
+    if (auto it = std::lower_bound(a.lobe_paths.begin(), a.lobe_paths.end(), path); it != a.lobe_paths.end() && *it == path)
+      if (static_cast<size_t>(it - a.lobe_paths.begin()) < a.head_paths.size()) own = a.head_paths[static_cast<size_t>(it - a.lobe_paths.begin())];
+    return head_turn_point(head, a.lobes[0].pivot, a.head_axis, degrees, own, q);
+  }
   if (r.pulse && a.primitive == Primitive::Stretch) {
     // Along the blade's line only (the lobe's pivot to its tip).
     for (const ArmLobe& l : a.lobes)
@@ -711,7 +722,8 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
               if (a.region != Region::None) {
                 const int use = region_use(rig, a, src, by, bg, spinning, loads);
                 const RigBox& hb = rig.parts[a.parts[0]].box;
-                if (use == 1) q = mesh[ai] ? mesh[ai]->apply(bent[ai], q) : bend_region(a, amp, t, hb, q, static_cast<int>(src));
+                // A head's feature turns as itself, not as the face it is drawn on (head_turn.h).
+                if (use == 1) q = mesh[ai] ? mesh[ai]->apply(bent[ai], q) : bend_region(a, amp, t, hb, q, static_cast<int>(a.head_axis != HeadAxis::Plane ? pi : src));
                 else if (use == 2)
                   q = mesh[ai] ? mesh[ai]->carry(bent[ai], rig.parts[by].pivot, q) : carried_by_bend(a, amp, t, hb, rig.parts[by].pivot, q);
               } else if (a.parts.empty()) {

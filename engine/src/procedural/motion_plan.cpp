@@ -294,7 +294,7 @@ struct Builder {
     a.travel = mods.travel;
     std::string note;
     if (located) {
-      // Its lobes turn, on the root's box for the frames (bend_region); only its paths move.
+      // Its lobes turn, on the root's box for the frames (bend_region); only its paths move; a portrait's head nods out of the plane (head_turn.h).
       a.parts = {rig.root};
       a.region = Region::Located;
       a.lobes = located->lobes;
@@ -303,7 +303,7 @@ struct Builder {
       a.held_paths = located->holds;
       a.sign = {1};
       a.phase = {0};
-      note = "the " + (target_word.empty() ? std::string("head") : target_word) + " found as " + part_shape_name(located->shape) + ": " + located->why;
+      note = "the " + (target_word.empty() ? std::string("head") : target_word) + " found as " + part_shape_name(located->shape) + ": " + located->why + plan_head_turn(rig, *located, verb.name, mods.size, a);
     } else if (target == Target::Named) a.parts = named_parts;
     else if (target != Target::Whole && target != Target::Repeated) a.parts = parts_for(rig, target, target_word, &note);
     // "its hind legs": which of them, by where they are on the figure.

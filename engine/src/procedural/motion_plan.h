@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "motion/motion_verbs.h"
+#include "procedural/head_turn.h"
 #include "procedural/part_rig.h"
 #include "procedural/prompt_parse.h"
 #include "procedural/tossed_things.h"
@@ -70,6 +71,9 @@ struct PlannedAction {
   bool silhouette = false;      // lobes are Rig::limbs: the points of every part within them bend
   std::vector<int> lobe_paths;  // when not empty, only these scene paths' points bend (sorted)
   std::vector<int> held_paths;  // scene paths that ride on none of lobe_paths (LocatedPart::holds)
+  HeadAxis head_axis = HeadAxis::Plane;  // a portrait's head (bust_head.h) nodding (Pitch) or
+                                         // shaking (Yaw) out of the picture's plane (head_turn.h)
+  std::vector<HeadPath> head_paths;      // its paths' features and outline, as lobe_paths
   double scale = 1;             // this action's own amplitude factor (fit_plan), times plan.scale
   int one_sided = 0;            // Swing, Rock, Bend, Sway, region bends: 0 back and forth about
                                 // rest; +1 / -1 out to one side only and back (fit_plan: the

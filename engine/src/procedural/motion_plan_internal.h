@@ -154,6 +154,12 @@ inline constexpr double kRockToPartMax = 4;
 // the body's middle.
 inline constexpr double kHeadOffCentre = 0.1;
 
+// A portrait's head (bust_head.h: one rigid head lobe) nodding or shaking out of the picture's
+// plane (head_turn.h) for verb `verb`: sets `a`'s head axis, its paths' features, at least
+// kHeadTurnDeg (times `size`) and a nod's one-sided dip; returns the note's addition ("; it
+// dips forward (a pitch)"), empty when the head turns in the plane.
+std::string plan_head_turn(const Rig& rig, const LocatedPart& located, const std::string& verb, double size, PlannedAction& a);
+
 // The unit of a primitive's amplitude (motion_verbs.h), as motion.json names it.
 const char* unit_of(Primitive p);
 std::string join(const std::vector<std::string>& v, const char* sep);

@@ -176,6 +176,22 @@ LocatedPart bloom_or_bust_head(const Rig& rig, Primitive primitive, Target targe
   return bloom.lobes.empty() && target == Target::Head && person ? bust_head(rig) : bloom;
 }
 
+std::string plan_head_turn(const Rig& rig, const LocatedPart& located, const std::string& verb, double size, PlannedAction& a) {
+  if (located.lobes.size() != 1 || !located.lobes[0].rigid || located.lobes[0].kind != LobeKind::Head) return "";
+  if ((a.head_axis = head_axis_of(verb)) == HeadAxis::Plane) return "";
+  a.amp = std::max(a.amp, kHeadTurnDeg * size);
+  if (a.head_axis == HeadAxis::Pitch) a.one_sided = 1;  // a nod dips and comes back up
+  // Each path's box, from its elements (a.lobe_paths: the head's paths, sorted).
+  std::vector<RigBox> boxes(a.lobe_paths.size());
+  for (const RigElement& e : rig.elements)
+    if (auto it = std::lower_bound(a.lobe_paths.begin(), a.lobe_paths.end(), e.path); it != a.lobe_paths.end() && *it == e.path)
+      boxes[static_cast<size_t>(it - a.lobe_paths.begin())].add(e.box);
+  RigBox head;
+  for (Vec2 q : located.lobes[0].outline) head.add(q);
+  a.head_paths = head_paths(head, boxes);
+  return a.head_axis == HeadAxis::Pitch ? "; it dips forward (a pitch)" : "; it turns aside (a yaw)";
+}
+
 }  // namespace motion_plan_internal
 
 }  // namespace svgm
