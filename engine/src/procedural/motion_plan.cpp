@@ -627,7 +627,7 @@ void sway_or_name_missed(Builder& b, const ParsedPrompt& prompt, const std::vect
 
 MotionPlan plan_from_prompt(const ParsedPrompt& said, const Rig& rig, uint32_t seed) {
   const ParsedPrompt prompt = travel_across(said, rig);
-  Builder b{rig, std::mt19937(seed), {}};
+  Builder b{rig, std::mt19937(seed), {}, FigureClass::None, {}};
   for (const Clause& c : prompt.clauses)
     if (b.figure == FigureClass::None) b.figure = c.figure;
   b.plan.source = "prompt";
@@ -732,7 +732,7 @@ MotionPlan plan_from_prompt(const ParsedPrompt& said, const Rig& rig, uint32_t s
 }
 
 MotionPlan plan_from_steps(const std::vector<ExplicitStep>& steps, const Rig& rig, uint32_t seed) {
-  Builder b{rig, std::mt19937(seed), {}};
+  Builder b{rig, std::mt19937(seed), {}, FigureClass::None, {}};
   b.plan.source = "stages.video.options.motion";
   for (const auto& s : steps) {
     const Verb* v = find_verb_by_name(s.verb);
