@@ -461,11 +461,9 @@ TEST_CASE("lexicon: a vehicle of the same word goes before a rare animal when no
   if (!wordnet_or_skip()) return;
   // No sense of "scooter" is tagged; its fifth is the scoter, a duck named "scoter" first.
   CHECK(Lexicon::shared().noun("scooter").figure == FigureClass::Wheeled);
-  // Other unranked senses still give way to the animal ("donkey": the party's symbol first;
-  // "seal": stamps first, ranked but not ahead of the animal's tags).
+  // Other unranked senses still give way to the animal ("donkey": the party's symbol first).
   CHECK(Lexicon::shared().noun("donkey").figure == FigureClass::Quadruped);
   CHECK(Lexicon::shared().noun("hippo").figure == FigureClass::Quadruped);
-  CHECK(is_creature(Lexicon::shared().noun("seal").figure));
 }
 
 TEST_CASE("lexicon: a manner word the modifiers do not list is no object of the verb ('he bows politely' bows)") {
