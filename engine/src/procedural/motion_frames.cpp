@@ -597,6 +597,15 @@ std::vector<RigBox> element_subpaths(const Scene& scene, const Rig& rig, std::ve
   return element_box;
 }
 
+// The parts a spin turns as themselves (a rotor's spin of a region turns its blades, not its part).
+std::vector<char> spinning_parts(const MotionPlan& plan, int G) {
+  std::vector<char> spinning(G, 0);
+  for (const auto& a : plan.actions)
+    if (a.primitive == Primitive::Spin && a.region == Region::None)
+      for (int p : a.parts) spinning[p] = 1;
+  return spinning;
+}
+
 }  // namespace
 
 std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionPlan& plan, int frames, std::vector<BendFold>* folds) {
@@ -632,10 +641,7 @@ std::vector<Vec2> animate_plan(const Scene& scene, const Rig& rig, const MotionP
     planted[g] = rig.parts[g].parent == rig.root && rig.root >= 0 && !reach[g].empty() && reach[g].y1 >= rig.figure.y1 - kPlanted * rig.figure.h();
   std::vector<int> piece_of;
   const std::vector<RigBox> piece_box = piece_boxes(rig, plan, piece_of);
-  std::vector<char> spinning(G, 0);
-  for (const auto& a : plan.actions)
-    if (a.primitive == Primitive::Spin && a.region == Region::None)  // a rotor's spin turns its blades, not its part
-      for (int p : a.parts) spinning[p] = 1;
+  const std::vector<char> spinning = spinning_parts(plan, G);
   const WheelLoads loads = wheel_loads(rig, spinning);
   // Line art moves as the fill it is drawn on, and a still fill as the moving line tracing it
   // (detail_binding.h): every motion below is applied to a point as its host path's. Parts
