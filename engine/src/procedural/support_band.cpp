@@ -32,6 +32,9 @@ constexpr double kCrest = 0.05;
 // whales' bellies 0.19 and 0.28. Read as ground, the mermaid's tail was left out of her
 // silhouette and "flicks her tail" bent the far end of her body instead.
 constexpr double kSlab = 0.4;
+// A band starting above kTop is still the ground when the rest of the figure stands on it
+// (rest_stands_on): what stands on it reaches at most this share of its height into it.
+constexpr double kSunk = 0.5;
 
 }  // namespace
 
@@ -76,13 +79,9 @@ std::string ground_words(const ParsedPrompt& prompt, const Rig& rig) {
 namespace {
 
 // Whether the figure's paths other than `band` stand on the band whose box is B: more of them
-// lie above it (starting above its top, their middles above its middle: a hull sits in the
-// water, however deep, and may be drawn on through it) than within it, and none starts within
-// its height reaching past its sides or stands lower. A tall sea (62 % of a motorboat's drawing)
-// starts above kTop; a vehicle's body reaching its bottom holds most of its paths (windows,
-// wheels) within; a hull taken for the band has its sea starting within it, wider. A bow-on
-// liner's hull sinks 60 % of its sea's height into it, a ship's is drawn down through its sea:
-// read as hanging lower (at most half the sea's height in it, before), the sea went with them.
+// lie above it (reaching at most kSunk of its height into it: a hull sits in the water) than
+// within it, and none hangs lower. A tall sea (62 % of a motorboat's drawing) starts above
+// kTop; a vehicle's body reaching its bottom holds most of its paths (windows, wheels) within.
 bool rest_stands_on(const std::vector<RigBox>& box, const std::function<bool(size_t)>& figure_path, size_t band, double eps) {
   const RigBox& B = box[band];
   int above = 0, within = 0;
@@ -90,22 +89,10 @@ bool rest_stands_on(const std::vector<RigBox>& box, const std::function<bool(siz
     const RigBox& b = box[i];
     if (i == band || !figure_path(i) || b.empty()) continue;
     if (b.y0 >= B.y0 - eps && b.x0 >= B.x0 - eps && b.x1 <= B.x1 + eps) ++within;
-    else if (b.y0 < B.y0 - eps && b.centre().y <= B.centre().y) ++above;
+    else if (b.y1 <= B.y0 + kSunk * B.h()) ++above;
     else return false;
   }
   return above > within;
-}
-
-// Whether every figure path reaching below the band whose box is B starts above it (a hull drawn
-// down through its sea, past the canvas as twemoji's ship's is): the band is still the bottom
-// the figure stands on, though the figure's box reaches lower.
-bool only_crossed_below(const std::vector<RigBox>& box, const std::function<bool(size_t)>& figure_path, size_t band, double eps) {
-  const RigBox& B = box[band];
-  for (size_t i = 0; i < box.size(); ++i) {
-    const RigBox& b = box[i];
-    if (i != band && figure_path(i) && !b.empty() && b.y1 > B.y1 + eps && b.y0 >= B.y0 - eps) return false;
-  }
-  return true;
 }
 
 // The band at least `wide` of the figure's width among the paths whose boxes are `box` and
@@ -125,7 +112,7 @@ std::vector<char> band_of(const std::vector<RigBox>& box, const std::vector<doub
   for (size_t i = 0; i < n; ++i) {
     const RigBox& b = box[i];
     if (!figure_path(i) || b.empty()) continue;
-    if (b.w() < wide * W || (b.y1 < F.y1 - kBottom * H && !only_crossed_below(box, figure_path, i, eps))) continue;
+    if (b.w() < wide * W || b.y1 < F.y1 - kBottom * H) continue;
     // A ground is one piece across: two wheels drawn as one path span the width in two.
     if (i < piece.size() && piece[i] < wide * W) continue;
     if (b.y0 < F.y0 + kTop * H && !rest_stands_on(box, figure_path, i, eps)) continue;
