@@ -55,6 +55,25 @@ Scene figure() {
                            filled(polygon({{56, 40}, {74, 44}, {62, 60}}), {0.1f, 0.3f, 0.8f, 0.6f})});
 }
 
+// One loss-and-gradient pass with the uniform tiles held as values (`every` false) or every tile
+// stored: the gradient with the loss after it, the frame losses, the tiles stored, the device bytes.
+struct TiledPass {
+  std::vector<float> bits, losses;
+  size_t stored = 0, bytes = 0;
+};
+TiledPass tiled_pass(const RasterPlan& plan, const std::vector<float>& targets, const std::vector<float>& cp, double chroma_sigma,
+                     double chroma_weight, bool every) {
+  ClRaster r(runtime(), plan, kK, kLossSigma, chroma_sigma, chroma_weight);
+  r.set_every_loss_tile(every);
+  r.set_control_points(cp);
+  r.set_active_frames(kK);
+  r.set_targets(targets);
+  const float loss = r.loss_and_gradient(1000.0f, kWhite);
+  TiledPass out{r.read_cp_gradient(), r.read_frame_losses(), r.loss_tiles_stored(), r.device_bytes()};
+  out.bits.push_back(loss);
+  return out;
+}
+
 }  // namespace
 
 TEST_SUITE("raster") {
@@ -107,17 +126,8 @@ TEST_CASE("tiled Q and R: the same loss, frame losses and gradient bits as every
     std::vector<float> bits[2], losses[2];
     size_t stored[2] = {}, bytes[2] = {};
     for (int every = 0; every < 2; ++every) {
-      ClRaster r(runtime(), plan, kK, kLossSigma, chroma_sigma, chroma_weight);
-      r.set_every_loss_tile(every == 1);
-      r.set_control_points(cp);
-      r.set_active_frames(kK);
-      r.set_targets(targets);
-      const float loss = r.loss_and_gradient(1000.0f, kWhite);
-      bits[every] = r.read_cp_gradient();
-      bits[every].push_back(loss);
-      losses[every] = r.read_frame_losses();
-      stored[every] = r.loss_tiles_stored();
-      bytes[every] = r.device_bytes();
+      TiledPass t = tiled_pass(plan, targets, cp, chroma_sigma, chroma_weight, every == 1);
+      bits[every] = std::move(t.bits), losses[every] = std::move(t.losses), stored[every] = t.stored, bytes[every] = t.bytes;
     }
     CHECK(same_bits(bits[0], bits[1]));
     CHECK(same_bits(losses[0], losses[1]));
@@ -150,23 +160,11 @@ TEST_CASE("tiled Q and R: a flat fill's inside is held as its value, with the sa
       W, H);
   const std::vector<float> targets = targets_on_white(plan, kK, 0, 0);
   const std::vector<float> cp = shifted_cp(plan, kK, 0.5f, 0.75f);
-  std::vector<float> bits[2];
-  size_t stored[2] = {};
-  for (int every = 0; every < 2; ++every) {
-    ClRaster r(runtime(), plan, kK, kLossSigma, 1.6, 0.25);
-    r.set_every_loss_tile(every == 1);
-    r.set_control_points(cp);
-    r.set_active_frames(kK);
-    r.set_targets(targets);
-    const float loss = r.loss_and_gradient(1000.0f, kWhite);
-    bits[every] = r.read_cp_gradient();
-    bits[every].push_back(loss);
-    for (float l : r.read_frame_losses()) bits[every].push_back(l);
-    stored[every] = r.loss_tiles_stored();
-  }
-  CHECK(same_bits(bits[0], bits[1]));
-  CHECK(stored[1] == size_t{kK} * (W / T) * (H / T));
-  CHECK(stored[0] == size_t{kK} * 40);
+  const TiledPass held = tiled_pass(plan, targets, cp, 1.6, 0.25, false), every = tiled_pass(plan, targets, cp, 1.6, 0.25, true);
+  CHECK(same_bits(held.bits, every.bits));
+  CHECK(same_bits(held.losses, every.losses));
+  CHECK(every.stored == size_t{kK} * (W / T) * (H / T));
+  CHECK(held.stored == size_t{kK} * 40);
 }
 
 }  // TEST_SUITE
