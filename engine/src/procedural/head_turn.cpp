@@ -30,7 +30,7 @@ Vec2 head_turn_point(const RigBox& head, Vec2 neck, HeadAxis axis, double degree
   if (axis == HeadAxis::Plane || degrees == 0 || head.empty()) return q;
   const Vec2 c = head.centre();
   const double rx = 0.5 * head.w(), ry = 0.5 * head.h();
-  const double th = degrees * 3.14159265358979323846 / 180, cs = std::cos(th), sn = std::sin(th);
+  const double th = degrees * M_PI / 180, cs = std::cos(th), sn = std::sin(th);
   if (p.depth > 0) {
     // The feature's middle turned on the ball (about its middle), the feature carried whole.
     if (axis == HeadAxis::Yaw) return {q.x + (p.middle.x - c.x) * (cs - 1) + p.depth * rx * sn, q.y};
